@@ -1,0 +1,21 @@
+# Every dependency comes from a Debian 12 -dev package (scripts/install-deps.sh).
+# Quirks noted here were measured on that platform.
+find_package(CLI11 CONFIG REQUIRED)
+find_package(fmt CONFIG REQUIRED)
+find_package(Eigen3 3.4 CONFIG REQUIRED NO_MODULE)
+find_package(nlohmann_json 3.10 CONFIG REQUIRED)
+find_package(OpenMesh CONFIG REQUIRED)   # Debian ships no version file: no version here
+find_package(draco CONFIG REQUIRED)
+find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(OpenEXR 3 CONFIG REQUIRED)
+find_package(ZLIB REQUIRED)
+find_package(VTK 9.1 REQUIRED COMPONENTS
+  CommonCore CommonDataModel CommonExecutionModel IOLegacy IOXML)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(GPIOD  REQUIRED IMPORTED_TARGET libgpiod>=1.6)
+pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0>=1.0.26)
+find_package(Threads REQUIRED)
+if(FEST_TESTS)
+  find_package(GTest CONFIG REQUIRED)
+  include(GoogleTest)
+endif()

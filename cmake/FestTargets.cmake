@@ -1,0 +1,29 @@
+# Helpers that give every fest target the same warnings and sanitizer flags.
+# Third-party headers arrive through imported targets with -isystem, so -Werror
+# only ever judges fest's own code.
+
+set(FEST_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor)
+if(FEST_WERROR)
+  list(APPEND FEST_WARNINGS -Werror)
+endif()
+
+if(FEST_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# fest_library(NAME ALIAS SOURCES ... ) -- a static library with fest's warnings.
+function(fest_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
+  add_library(${name} STATIC ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${FEST_WARNINGS})
+endfunction()
+
+# fest_tool(NAME SOURCES ...) -- an executable in bin/ with fest's warnings.
+function(fest_tool name)
+  cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${FEST_WARNINGS})
+  target_compile_definitions(${name} PRIVATE FEST_VERSION="${PROJECT_VERSION}")
+  install(TARGETS ${name} RUNTIME DESTINATION bin)
+endfunction()

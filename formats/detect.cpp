@@ -1,0 +1,282 @@
+#include "formats/detect.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+
+#include "core/error.hpp"
+
+namespace fest::formats {
+
+namespace {
+
+struct FormatRow {
+  Format format;
+  Kind kind;
+  const char* name;       // the --to name
+  const char* extension;  // written by default
+  const char* aliases;    // other names and extensions accepted, space separated
+};
+
+constexpr FormatRow kFormats[] = {
+    {Format::ply, Kind::mesh, "ply", ".ply", ""},
+    {Format::obj, Kind::mesh, "obj", ".obj", ""},
+    {Format::off, Kind::mesh, "off", ".off", ""},
+    {Format::stl, Kind::mesh, "stl", ".stl", ""},
+    {Format::drc, Kind::mesh, "drc", ".drc", "draco"},
+    {Format::png, Kind::image, "png", ".png", ""},
+    {Format::pgm, Kind::image, "pgm", ".pgm", ""},
+    {Format::ppm, Kind::image, "ppm", ".ppm", "pnm"},
+    {Format::pam, Kind::image, "pam", ".pam", ""},
+    {Format::pfm, Kind::image, "pfm", ".pfm", ""},
+    {Format::exr, Kind::image, "exr", ".exr", "openexr"},
+    {Format::tiff, Kind::image, "tiff", ".tif", "tif"},
+    {Format::nifti, Kind::volume, "nifti", ".nii", "nii"},
+    {Format::nrrd, Kind::volume, "nrrd", ".nrrd", ""},
+    {Format::mha, Kind::volume, "mha", ".mha", "metaimage"},
+    {Format::vtu, Kind::dataset, "vtu", ".vtu", ""},
+    {Format::vti, Kind::dataset, "vti", ".vti", ""},
+    {Format::vtp, Kind::dataset, "vtp", ".vtp", ""},
+    {Format::vtk, Kind::dataset, "vtk", ".vtk", ""},
+    {Format::csv, Kind::table, "csv", ".csv", ""},
+    {Format::tsv, Kind::table, "tsv", ".tsv", "tab"},
+    {Format::json, Kind::json, "json", ".json", ""},
+};
+
+const FormatRow& row(Format f) {
+  for (const FormatRow& r : kFormats)
+    if (r.format == f) return r;
+  return kFormats[0];  // unreachable: every enumerator has a row
+}
+
+bool starts_with(std::string_view s, std::string_view prefix) {
+  return s.size() >= prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
+}
+
+bool name_matches(const FormatRow& r, const std::string& name) {
+  if (name == r.name || name == r.extension + 1) return true;
+  std::string_view aliases = r.aliases;
+  while (!aliases.empty()) {
+    std::size_t sp = aliases.find(' ');
+    if (aliases.substr(0, sp) == name) return true;
+    if (sp == std::string_view::npos) break;
+    aliases.remove_prefix(sp + 1);
+  }
+  return false;
+}
+
+// The first bytes as a short printable excerpt for error messages.
+std::string excerpt(std::string_view bytes) {
+  std::string out;
+  for (unsigned char c : bytes.substr(0, 16)) {
+    if (c >= 0x20 && c < 0x7f && c != '\\')
+      out += static_cast<char>(c);
+    else
+      out += fmt::format("\\x{:02x}", c);
+  }
+  return out;
+}
+
+// Skips whitespace and lines starting with '#'.
+std::string_view skip_blank_and_comments(std::string_view s) {
+  for (;;) {
+    std::size_t i = 0;
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    s.remove_prefix(i);
+    if (!s.empty() && s.front() == '#') {
+      std::size_t nl = s.find('\n');
+      if (nl == std::string_view::npos) return {};
+      s.remove_prefix(nl + 1);
+      continue;
+    }
+    return s;
+  }
+}
+
+std::string_view first_line(std::string_view s) {
+  std::size_t nl = s.find('\n');
+  std::string_view line = s.substr(0, nl);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  return line;
+}
+
+std::string_view first_token(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+  return s.substr(0, i);
+}
+
+bool is_binary_stl(std::string_view b) {
+  if (b.size() < 84) return false;
+  std::uint32_t n;
+  std::memcpy(&n, b.data() + 80, 4);  // little-endian on every platform fest builds for
+  return 84ull + 50ull * n == b.size();
+}
+
+bool is_nifti1(std::string_view b) {
+  if (b.size() < 348) return false;
+  std::int32_t hdr;
+  std::memcpy(&hdr, b.data(), 4);
+  const std::int32_t swapped = static_cast<std::int32_t>(__builtin_bswap32(static_cast<std::uint32_t>(hdr)));
+  if (hdr != 348 && swapped != 348) return false;
+  return std::memcmp(b.data() + 344, "n+1\0", 4) == 0 || std::memcmp(b.data() + 344, "ni1\0", 4) == 0;
+}
+
+// OFF variants: OFF, COFF, NOFF, CNOFF, STOFF, 4OFF, nOFF, ... (the keyword ends in OFF).
+bool is_off(std::string_view text) {
+  std::string_view tok = first_token(skip_blank_and_comments(text));
+  return tok.size() >= 3 && tok.size() <= 8 && tok.substr(tok.size() - 3) == "OFF";
+}
+
+// OBJ has no magic: accept text whose first statement is an OBJ keyword.
+bool is_obj(std::string_view text) {
+  std::string_view tok = first_token(skip_blank_and_comments(text));
+  static const char* keywords[] = {"v", "vt", "vn", "vp", "f", "o", "g", "s", "l", "p", "mtllib", "usemtl"};
+  for (const char* k : keywords)
+    if (tok == k) return true;
+  return false;
+}
+
+Format detect_xml(std::string_view b, const std::string& where) {
+  std::size_t vtk = b.substr(0, 4096).find("<VTKFile");
+  if (vtk == std::string_view::npos)
+    throw bad_input("{}", with_location("XML input is not a VTK file (no <VTKFile> element)", where));
+  std::string_view tag = b.substr(vtk, b.substr(vtk).find('>'));
+  if (tag.find("\"UnstructuredGrid\"") != std::string_view::npos) return Format::vtu;
+  if (tag.find("\"ImageData\"") != std::string_view::npos) return Format::vti;
+  if (tag.find("\"PolyData\"") != std::string_view::npos) return Format::vtp;
+  throw bad_input("{}", with_location("unsupported VTK XML dataset type (fest reads UnstructuredGrid, "
+                                      "ImageData and PolyData)", where));
+}
+
+// CSV/TSV: a header line of names, then lines of numbers; decided by the delimiter
+// the header uses. Binary data (a NUL byte early on) is never a table.
+bool looks_like_table(std::string_view b, Format& out) {
+  std::string_view head = b.substr(0, 4096);
+  if (head.find('\0') != std::string_view::npos) return false;
+  std::string_view line = first_line(skip_blank_and_comments(b));
+  if (line.empty()) return false;
+  for (unsigned char c : line)
+    if (c < 0x09 || (c > 0x0d && c < 0x20)) return false;
+  if (line.find('\t') != std::string_view::npos) {
+    out = Format::tsv;
+    return true;
+  }
+  if (line.find(',') != std::string_view::npos) {
+    out = Format::csv;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Kind kind_of(Format f) noexcept { return row(f).kind; }
+
+const char* kind_name(Kind k) noexcept {
+  switch (k) {
+    case Kind::mesh: return "mesh";
+    case Kind::image: return "image";
+    case Kind::volume: return "volume";
+    case Kind::dataset: return "dataset";
+    case Kind::table: return "table";
+    case Kind::json: return "json";
+  }
+  return "unknown";
+}
+
+const char* format_name(Format f) noexcept { return row(f).name; }
+const char* format_extension(Format f) noexcept { return row(f).extension; }
+
+Format detect_format(std::string_view b, const std::string& where) {
+  if (b.empty()) throw bad_input("{}", with_location("empty input", where));
+
+  // Binary signatures first: they are unambiguous.
+  if (starts_with(b, "\x89PNG\r\n\x1a\n")) return Format::png;
+  if (starts_with(b, std::string_view("\x76\x2f\x31\x01", 4))) return Format::exr;
+  if (starts_with(b, std::string_view("II*\0", 4)) || starts_with(b, std::string_view("MM\0*", 4)))
+    return Format::tiff;
+  if (starts_with(b, "DRACO")) return Format::drc;
+  if (starts_with(b, "NRRD000")) return Format::nrrd;
+  if (is_nifti1(b)) {
+    if (std::memcmp(b.data() + 344, "ni1\0", 4) == 0)
+      throw bad_input("{}", with_location("NIfTI header/image pairs (.hdr/.img) are not supported; "
+                                          "convert to a single .nii file", where));
+    return Format::nifti;
+  }
+  if (starts_with(b, "\x1f\x8b"))
+    throw bad_input("{}", with_location("gzip data inside gzip data is not supported", where));
+  if (starts_with(b, "ply\n") || starts_with(b, "ply\r\n")) return Format::ply;
+  if (b.size() >= 3 && b[0] == 'P' && std::isspace(static_cast<unsigned char>(b[2]))) {
+    switch (b[1]) {
+      case '2': case '5': return Format::pgm;
+      case '3': case '6': return Format::ppm;
+      case '7': return Format::pam;
+      case 'F': case 'f': return Format::pfm;
+      default: break;
+    }
+  }
+  if (starts_with(b, "# vtk DataFile Version")) return Format::vtk;
+  // Binary STL: an 80-byte header (which may itself begin with "solid") and a count that
+  // accounts for the file size exactly. Checked before ascii STL for that reason.
+  if (is_binary_stl(b)) return Format::stl;
+
+  std::string_view text = skip_blank_and_comments(b);
+  if (starts_with(b, "solid") && b.substr(0, 1024).find("facet") != std::string_view::npos) return Format::stl;
+  if (starts_with(b, "solid") && b.size() < 1024 && b.find("endsolid") != std::string_view::npos)
+    return Format::stl;  // an empty ascii STL: still an STL (the reader reports it)
+  if (starts_with(text, "<?xml") || starts_with(text, "<VTKFile")) return detect_xml(text, where);
+  if (starts_with(b, "ObjectType") || starts_with(b, "NDims")) return Format::mha;
+  if (!text.empty() && (text.front() == '{' || text.front() == '[')) return Format::json;
+  if (is_off(b)) return Format::off;
+  if (is_obj(b)) return Format::obj;
+  Format table;
+  if (looks_like_table(b, table)) return table;
+  throw bad_input("{}", with_location("unrecognised input format (starts with \"" + excerpt(b) + "\")", where));
+}
+
+OutputFormat output_format_from_name(std::string_view name_in) {
+  std::string name = lower(name_in);
+  OutputFormat out{Format::ply, false};
+  if (name.size() > 3 && name.compare(name.size() - 3, 3, ".gz") == 0) {
+    out.gzip = true;
+    name.resize(name.size() - 3);
+  } else if (name == "gz") {
+    throw usage_error("'gz' names a compression, not a format: say e.g. nii.gz");
+  }
+  if (!name.empty() && name.front() == '.') name.erase(0, 1);
+  for (const FormatRow& r : kFormats) {
+    if (name_matches(r, name)) {
+      out.format = r.format;
+      return out;
+    }
+  }
+  throw usage_error("unknown output format '{}'", std::string(name_in));
+}
+
+OutputFormat output_format_from_path(std::string_view path) {
+  std::string_view base = path.substr(path.find_last_of('/') == std::string_view::npos ? 0 : path.find_last_of('/') + 1);
+  std::string lowered = lower(base);
+  bool gz = false;
+  if (lowered.size() > 3 && lowered.compare(lowered.size() - 3, 3, ".gz") == 0) {
+    gz = true;
+    lowered.resize(lowered.size() - 3);
+  }
+  std::size_t dot = lowered.find_last_of('.');
+  if (dot == std::string::npos || dot == 0)
+    throw usage_error("cannot tell the output format from '{}': give it an extension or --to", std::string(path));
+  std::string ext = lowered.substr(dot + 1);
+  for (const FormatRow& r : kFormats) {
+    if (name_matches(r, ext)) return OutputFormat{r.format, gz};
+  }
+  throw usage_error("unknown output extension '.{}' ({}); use --to to name the format", ext, std::string(path));
+}
+
+}  // namespace fest::formats

@@ -1,0 +1,41 @@
+#pragma once
+// Images: PNG, PGM/PPM/PAM (8/16-bit), PFM, EXR, TIFF.
+
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "core/image.hpp"
+#include "formats/detect.hpp"
+
+namespace fest::formats {
+
+struct ImageHeader {
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  int bits = 0;          // 8, 16 or 32 (float)
+  bool is_float = false;
+};
+
+struct ImageWriteOptions {
+  bool ascii = false;      // PGM/PPM: plain (P2/P3) instead of raw (P5/P6)
+  bool exr_half = false;   // EXR: 16-bit half channels instead of 32-bit float
+};
+
+// Reads only the header (dimensions, channels, depth) and checks it is plausible:
+// cheap, and the first line of defence against absurd sizes.
+ImageHeader read_image_header(std::string_view bytes, Format format);
+
+// Throws fest::Error(Status::bad_input) for malformed input. Pixels come back in RGB(A)
+// order (core/image.hpp).
+Image read_image(std::string_view bytes, Format format);
+
+// Throws Status::bad_input when the format cannot hold the image (a float image as PNG,
+// 4 channels as PGM) -- convert explicitly instead of silently losing data.
+std::string write_image(const Image& image, Format format, const ImageWriteOptions& options = {});
+
+nlohmann::json describe_image(const Image& image);
+
+}  // namespace fest::formats

@@ -1,0 +1,138 @@
+#include "core/file_io.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace fest {
+
+namespace {
+
+std::string errno_text() { return std::strerror(errno); }
+
+std::string display_name(const std::string& path) {
+  return is_stdio(path) ? std::string("standard input") : path;
+}
+
+void write_all(int fd, std::string_view bytes, const std::string& where) {
+  const char* p = bytes.data();
+  std::size_t left = bytes.size();
+  while (left > 0) {
+    ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw io_error("cannot write: {} ({})", errno_text(), where);
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+bool is_stdio(std::string_view path) noexcept { return path.empty() || path == "-"; }
+
+std::uint64_t max_input_bytes() {
+  // 8 GiB: a third of the project's reference machine; anything larger is almost
+  // certainly a corrupt size field or a decompression bomb.
+  constexpr std::uint64_t fallback = 8ull << 30;
+  const char* env = std::getenv("FEST_MAX_INPUT_BYTES");
+  if (env == nullptr || *env == '\0') return fallback;
+  char* end = nullptr;
+  unsigned long long v = std::strtoull(env, &end, 10);
+  if (end == env || *end != '\0' || v == 0) return fallback;
+  return v;
+}
+
+std::string read_input(const std::string& path) {
+  const bool from_stdin = is_stdio(path);
+  int fd = from_stdin ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw io_error("cannot open: {} ({})", errno_text(), path);
+
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
+    if (!from_stdin) ::close(fd);
+    throw io_error("is a directory ({})", display_name(path));
+  }
+  const std::uint64_t limit = max_input_bytes();
+  std::string data;
+  if (S_ISREG(st.st_mode) && st.st_size > 0) {
+    if (static_cast<std::uint64_t>(st.st_size) > limit) {
+      if (!from_stdin) ::close(fd);
+      throw bad_input("input of {} bytes exceeds the limit of {} bytes; raise FEST_MAX_INPUT_BYTES ({})",
+                      st.st_size, limit, display_name(path));
+    }
+    data.reserve(static_cast<std::size_t>(st.st_size));
+  }
+  std::vector<char> chunk(1 << 16);
+  for (;;) {
+    ssize_t n = ::read(fd, chunk.data(), chunk.size());
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      int saved = errno;
+      if (!from_stdin) ::close(fd);
+      errno = saved;
+      throw io_error("cannot read: {} ({})", errno_text(), display_name(path));
+    }
+    if (data.size() + static_cast<std::size_t>(n) > limit) {
+      if (!from_stdin) ::close(fd);
+      throw bad_input("input exceeds the limit of {} bytes; raise FEST_MAX_INPUT_BYTES ({})", limit,
+                      display_name(path));
+    }
+    data.append(chunk.data(), static_cast<std::size_t>(n));
+  }
+  if (!from_stdin) ::close(fd);
+  return data;
+}
+
+AtomicFile::AtomicFile(const std::string& path) : path_(path) {
+  std::string pattern = path + ".tmp.XXXXXX";
+  std::vector<char> buf(pattern.begin(), pattern.end());
+  buf.push_back('\0');
+  int fd = ::mkstemp(buf.data());
+  if (fd < 0) throw io_error("cannot create a file next to it: {} ({})", errno_text(), path);
+  ::close(fd);
+  temp_.assign(buf.data());
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) ::unlink(temp_.c_str());
+}
+
+void AtomicFile::commit() {
+  // mkstemp creates 0600; give the result the permissions a plain creat() would.
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(temp_.c_str(), 0666 & ~mask);
+  if (::rename(temp_.c_str(), path_.c_str()) != 0)
+    throw io_error("cannot rename into place: {} ({})", errno_text(), path_);
+  committed_ = true;
+}
+
+void write_output(const std::string& path, std::string_view bytes) {
+  if (is_stdio(path)) {
+    write_all(STDOUT_FILENO, bytes, "standard output");
+    return;
+  }
+  AtomicFile file(path);
+  int fd = ::open(file.temp_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) throw io_error("cannot open: {} ({})", errno_text(), path);
+  try {
+    write_all(fd, bytes, path);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) throw io_error("cannot write: {} ({})", errno_text(), path);
+  file.commit();
+}
+
+}  // namespace fest

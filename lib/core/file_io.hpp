@@ -1,0 +1,46 @@
+#pragma once
+// Whole-file input and atomic output: the only file access in lib/ (DESIGN.md keeps the
+// algorithms free of I/O; tools and formats/ call these).
+//
+// A path of "-" or "" means standard input / standard output.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace fest {
+
+bool is_stdio(std::string_view path) noexcept;
+
+// Upper bound on what one input may occupy in memory once read (and, in formats/, once
+// decompressed). Overridden by the environment variable FEST_MAX_INPUT_BYTES.
+std::uint64_t max_input_bytes();
+
+// Reads a whole file (or standard input) into memory. Throws Status::io when it cannot be
+// opened or read, Status::bad_input when it is larger than max_input_bytes().
+std::string read_input(const std::string& path);
+
+// Writes bytes to a file atomically (a temporary name in the same folder, renamed over
+// the destination once complete and flushed), or to standard output. Throws Status::io.
+void write_output(const std::string& path, std::string_view bytes);
+
+// Lower-level piece of write_output for callers that produce a file by other means
+// (a library that insists on writing to a path): gives a temporary path next to
+// `path`; commit() renames it into place, the destructor removes it otherwise.
+class AtomicFile {
+ public:
+  explicit AtomicFile(const std::string& path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  const std::string& temp_path() const noexcept { return temp_; }
+  void commit();
+
+ private:
+  std::string path_;
+  std::string temp_;
+  bool committed_ = false;
+};
+
+}  // namespace fest

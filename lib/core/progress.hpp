@@ -1,0 +1,43 @@
+#pragma once
+// A progress bar on standard error, shown only when standard error is a terminal or the
+// user asked with --progress (DESIGN.md: silent in pipelines otherwise).
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace fest {
+
+// Whether a tool should draw progress: asked for explicitly, or stderr is a terminal.
+bool progress_wanted(bool requested);
+
+class Progress {
+ public:
+  // total == 0 means unknown: a counter is drawn instead of a bar.
+  Progress(std::string label, std::uint64_t total, bool enabled, std::FILE* out = stderr);
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  void advance(std::uint64_t steps = 1);
+  void set(std::uint64_t done);
+  void finish();  // draws 100 % and ends the line; idempotent
+
+  // The line that would be drawn for `done` of `total`; exposed for tests.
+  static std::string render(const std::string& label, std::uint64_t done, std::uint64_t total,
+                            int width = 30);
+
+ private:
+  void draw(bool force);
+
+  std::string label_;
+  std::uint64_t total_;
+  std::uint64_t done_ = 0;
+  bool enabled_;
+  bool finished_ = false;
+  std::FILE* out_;
+  std::chrono::steady_clock::time_point last_draw_{};
+};
+
+}  // namespace fest

@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Unpack real test data (meshes, MRI heads, DEMs, HDR images, photos, a CFD mesh) from
+# Debian packages into a cache folder outside the source tree. Installs nothing:
+# `apt-get download` + `dpkg-deb --fsys-tarfile`.
+#
+#   scripts/fetch-test-data.sh [DIR]    DIR defaults to $FEST_TESTDATA, else
+#                                       ${XDG_CACHE_HOME:-~/.cache}/fest/testdata
+#
+# About 200 MB of .deb files are downloaded into a temporary folder and about 24 MB kept.
+# Nothing is done when DIR/MANIFEST already lists the same package versions. Tests that
+# need the data skip with a message when DIR/MANIFEST is missing.
+set -euo pipefail
+case "${1:-}" in -h|--help) sed -n '2,11p' "$0"; exit 0 ;; esac
+test_data_dir="${1:-${FEST_TESTDATA:-${XDG_CACHE_HOME:-$HOME/.cache}/fest/testdata}}"
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null 2>&1; then SUDO="sudo"; fi
+apt_updated=0
+apt_update_once() {
+  if [ "$apt_updated" -eq 0 ]; then
+    $SUDO apt-get update -qq
+    apt_updated=1
+  fi
+}
+
+
+# package  path-inside-package  destination (relative to DIR)
+DATA_FILES=$(cat <<'EOF'
+insighttoolkit5-examples usr/share/doc/insighttoolkit5-examples/examples/Data/KmeansTest_T1UCharRaw.nii.gz mri/t1_head.nii.gz
+insighttoolkit5-examples usr/share/doc/insighttoolkit5-examples/examples/Data/KmeansTest_T1KmeansPrelimSegmentation.nii.gz mri/t1_kmeans_labels.nii.gz
+insighttoolkit5-examples usr/share/doc/insighttoolkit5-examples/examples/Data/KmeansTest_T1RawSkullStrip.nii.gz mri/t1_skullstrip_labels.nii.gz
+insighttoolkit5-examples usr/share/doc/insighttoolkit5-examples/examples/Data/BrainT1Slice.png mri/brain_t1_slice.png
+insighttoolkit5-examples usr/share/doc/insighttoolkit5-examples/examples/Data/BrainProtonDensitySlice.png mri/brain_pd_slice.png
+python-matplotlib-data usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz dem/jacksboro_fault_dem.npz
+python-matplotlib-data usr/share/matplotlib/mpl-data/sample_data/topobathy.npz dem/topobathy.npz
+python-matplotlib-data usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg faces/grace_hopper.jpg
+r-cran-stars usr/lib/R/site-library/stars/tif/olinda_dem_utm25s.tif dem/olinda_dem_utm25s.tif
+r-cran-terra usr/lib/R/site-library/terra/ex/elev.tif dem/luxembourg_elev.tif
+blender-data usr/share/blender/datafiles/studiolights/world/city.exr hdr/city.exr
+blender-data usr/share/blender/datafiles/studiolights/world/courtyard.exr hdr/courtyard.exr
+blender-data usr/share/blender/datafiles/studiolights/world/forest.exr hdr/forest.exr
+blender-data usr/share/blender/datafiles/studiolights/world/interior.exr hdr/interior.exr
+blender-data usr/share/blender/datafiles/studiolights/world/night.exr hdr/night.exr
+blender-data usr/share/blender/datafiles/studiolights/world/studio.exr hdr/studio.exr
+blender-data usr/share/blender/datafiles/studiolights/world/sunrise.exr hdr/sunrise.exr
+blender-data usr/share/blender/datafiles/studiolights/world/sunset.exr hdr/sunset.exr
+blender-data usr/share/blender/datafiles/studiolights/matcap/metal_shiny.exr hdr/matcap_metal_shiny.exr
+blender-data usr/share/blender/datafiles/studiolights/matcap/clay_studio.exr hdr/matcap_clay_studio.exr
+python3-skimage usr/lib/python3/dist-packages/skimage/data/astronaut.png faces/astronaut.png
+python3-skimage usr/lib/python3/dist-packages/skimage/data/camera.png images/camera.png
+opencv-data usr/share/opencv4/haarcascades/haarcascade_frontalface_default.xml faces/haarcascade_frontalface_default.xml
+opencv-data usr/share/opencv4/lbpcascades/lbpcascade_frontalface_improved.xml faces/lbpcascade_frontalface_improved.xml
+opencv-doc usr/share/doc/opencv-doc/examples/viz/data/bunny.ply meshes/bunny_scan.ply
+opencv-doc usr/share/doc/opencv-doc/examples/data/messi5.jpg faces/messi5.jpg
+mricron-data usr/share/mricron/templates/ch2.nii.gz mri/ch2.nii.gz
+mricron-data usr/share/mricron/templates/ch2bet.nii.gz mri/ch2bet.nii.gz
+mricron-data usr/share/mricron/templates/aal.nii.gz mri/aal.nii.gz
+mricron-data usr/share/mricron/templates/aal.nii.txt mri/aal.nii.txt
+mricron-data usr/share/mricron/templates/jhu189.nii.gz mri/jhu189.nii.gz
+opencv-doc usr/share/doc/opencv-doc/examples/data/aloeL.jpg images/aloeL.jpg
+opencv-doc usr/share/doc/opencv-doc/examples/data/aloeR.jpg images/aloeR.jpg
+dolfin-doc usr/share/dolfin/demo/undocumented/advection-diffusion/dolfin_fine.xml.gz cfd/dolfin_fine_mesh.xml.gz
+dolfin-doc usr/share/dolfin/demo/undocumented/advection-diffusion/dolfin_fine_velocity.xml.gz cfd/dolfin_fine_velocity.xml.gz
+dolfin-doc usr/share/dolfin/demo/documented/bcs/aneurysm.xml.gz cfd/aneurysm_mesh.xml.gz
+EOF
+)
+CGAL_MESHES="bunny00.off armadillo.off ChineseDragon-10kv.off elephant.off elephant-with-holes.off fandisk.off cow.off eight.off femur.off mushroom.off lion.off camel.off bull.off homer.off man.off mannequin-devil.off knot1.off turbine.off head.off hand.off bones.off ellipsoid.off icosahedron.off octahedron.off cube.off blobby.off"
+CALIB_IMAGES="left01 left02 left03 left04 left05 left06 left07 left08 left09 left11 left12 left13 left14"
+DATA_PKGS="$(echo "$DATA_FILES" | awk '{print $1}' | sort -u | tr '\n' ' ')libcgal-demo"
+
+mkdir -p "$test_data_dir"
+test_data_dir="$(cd "$test_data_dir" && pwd)"
+data_manifest() {  # "<package> <candidate version>" per line, sorted
+  # shellcheck disable=SC2086
+  apt-cache policy $DATA_PKGS 2>/dev/null |
+    awk '/^[^ ].*:$/{sub(":$","");p=$0} /Candidate:/{print p, $2}' | sort
+}
+manifest_new="$(data_manifest)"
+if [ -f "$test_data_dir/MANIFEST" ] && [ "$(cat "$test_data_dir/MANIFEST")" = "$manifest_new" ]; then
+  echo "fetch-test-data.sh: test data in $test_data_dir is up to date"
+  exit 0
+fi
+apt_update_once
+manifest_new="$(data_manifest)"
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+chmod 755 "$work"
+chown _apt "$work" 2>/dev/null || true   # lets apt download without its sandbox warning
+echo "fetch-test-data.sh: downloading test data packages: $DATA_PKGS"
+# shellcheck disable=SC2086  # word splitting of the package list is intended
+(cd "$work" && apt-get download -qq $DATA_PKGS)
+
+# one pass over each package: unpack only the wanted paths, then copy them into place
+for n in $CALIB_IMAGES; do
+  DATA_FILES+=$'\n'"opencv-doc usr/share/doc/opencv-doc/examples/data/$n.jpg calib/$n.jpg"
+done
+DATA_FILES+=$'\n'"libcgal-demo usr/share/doc/libcgal-dev/data.tar.gz cgal-data.tar.gz"
+for pkg in $DATA_PKGS; do
+  mapfile -t paths < <(echo "$DATA_FILES" | awk -v p="$pkg" '$1==p{print "./"$2}')
+  mkdir -p "$work/x/$pkg"
+  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb)" | tar -x -C "$work/x/$pkg" "${paths[@]}"
+done
+while read -r pkg path dest; do
+  [ -n "$pkg" ] || continue
+  mkdir -p "$test_data_dir/$(dirname "$dest")"
+  cp "$work/x/$pkg/$path" "$test_data_dir/$dest"
+done <<< "$DATA_FILES"
+# CGAL's demo data is a tarball inside the package
+mkdir -p "$test_data_dir/meshes"
+for m in $CGAL_MESHES; do
+  tar -xzf "$test_data_dir/cgal-data.tar.gz" -O "data/meshes/$m" > "$test_data_dir/meshes/$m"
+done
+mkdir -p "$test_data_dir/points" "$test_data_dir/volumes"
+for p in kitten.xyz sphere_1k.xyz; do
+  tar -xzf "$test_data_dir/cgal-data.tar.gz" -O "data/points_3/$p" > "$test_data_dir/points/$p"
+done
+tar -xzf "$test_data_dir/cgal-data.tar.gz" -O data/images/liver.inr.gz > "$test_data_dir/volumes/liver.inr.gz"
+rm -f "$test_data_dir/cgal-data.tar.gz"
+
+echo "$manifest_new" > "$test_data_dir/MANIFEST"
+echo "fetch-test-data.sh: test data ready in $test_data_dir ($(du -sh "$test_data_dir" | cut -f1))"
