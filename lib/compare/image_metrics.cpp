@@ -1,1 +1,76 @@
-// placeholder
+#include <cmath>
+#include <limits>
+
+#include "compare/image_compare.hpp"
+#include "core/error.hpp"
+
+namespace fest::compare {
+
+namespace {
+
+double psnr(double rmse, double peak) {
+  if (rmse == 0) return std::numeric_limits<double>::infinity();
+  return 20.0 * std::log10(peak / rmse);
+}
+
+struct Accumulator {
+  double sum_sq = 0;
+  double max_abs = 0;
+  std::size_t n = 0;
+  void add(double x, double y) {
+    double diff;
+    if (std::isnan(x) || std::isnan(y))
+      diff = (std::isnan(x) && std::isnan(y)) ? 0.0 : std::numeric_limits<double>::infinity();
+    else
+      diff = std::abs(x - y);
+    max_abs = std::max(max_abs, diff);
+    sum_sq += diff * diff;
+    ++n;
+  }
+  ChannelError result(double peak) const {
+    ChannelError e;
+    e.max_abs = max_abs;
+    e.rmse = n ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0;
+    e.psnr = psnr(e.rmse, peak);
+    return e;
+  }
+};
+
+}  // namespace
+
+double default_peak(int depth) {
+  switch (depth) {
+    case CV_8U: return 255.0;
+    case CV_16U: return 65535.0;
+    default: return 1.0;
+  }
+}
+
+ImageError image_error(const cv::Mat& a, const cv::Mat& b, double peak) {
+  if (a.size() != b.size())
+    throw runtime_failure("image sizes differ: {}x{} and {}x{}", a.cols, a.rows, b.cols, b.rows);
+  if (a.channels() != b.channels())
+    throw runtime_failure("channel counts differ: {} and {}", a.channels(), b.channels());
+  if (a.depth() != b.depth()) throw runtime_failure("sample depths differ");
+  ImageError out;
+  out.peak = peak > 0 ? peak : default_peak(a.depth());
+  const int channels = a.channels();
+  cv::Mat da, db;
+  a.convertTo(da, CV_64F);
+  b.convertTo(db, CV_64F);
+  std::vector<Accumulator> per(static_cast<std::size_t>(channels));
+  Accumulator all;
+  for (int y = 0; y < da.rows; ++y) {
+    const double* pa = da.ptr<double>(y);
+    const double* pb = db.ptr<double>(y);
+    for (int x = 0; x < da.cols * channels; ++x) {
+      per[static_cast<std::size_t>(x % channels)].add(pa[x], pb[x]);
+      all.add(pa[x], pb[x]);
+    }
+  }
+  for (const Accumulator& acc : per) out.channels.push_back(acc.result(out.peak));
+  out.all = all.result(out.peak);
+  return out;
+}
+
+}  // namespace fest::compare

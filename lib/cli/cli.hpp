@@ -1,0 +1,60 @@
+#pragma once
+// The command-line conventions every fest tool shares (DESIGN.md "How every tool
+// behaves"), on top of CLI11. Include only from tools/*/main.cpp.
+//
+//   int main(int argc, char** argv) {
+//     CLI::App app{"one-line description", "tool"};
+//     fest::cli::Common common;
+//     fest::cli::add_common(app, common);
+//     ... app.add_option(...) ...
+//     return fest::cli::run(app, argc, argv, [&] { ...; return 0; });
+//   }
+
+#include <cstdio>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "core/error.hpp"
+#include "core/tool_main.hpp"
+
+#ifndef FEST_VERSION
+#define FEST_VERSION "0"
+#endif
+
+namespace fest::cli {
+
+struct Common {
+  bool quiet = false;
+  bool verbose = false;
+  bool progress = false;
+};
+
+inline void add_common(CLI::App& app, Common& common, bool with_progress = false) {
+  app.set_version_flag("--version", std::string(app.get_name()) + " (fest) " FEST_VERSION);
+  app.add_flag("-q,--quiet", common.quiet, "Print nothing but errors");
+  app.add_flag("-v,--verbose", common.verbose, "Describe what is being done on standard error");
+  if (with_progress) app.add_flag("--progress", common.progress, "Show a progress bar even when standard error is not a terminal");
+  app.get_formatter()->column_width(28);
+}
+
+inline void add_threads(CLI::App& app, int& threads) {
+  app.add_option("--threads", threads, "Worker threads (0 = all cores)")->default_val(0);
+}
+
+// Parses argv; help and --version go to standard output with status 0; a usage error is
+// one line on standard error and status 2 (DESIGN.md), not CLI11's own codes.
+template <typename Body>
+int run(CLI::App& app, int argc, char** argv, Body&& body) {
+  const std::string tool = app.get_name();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::fprintf(stderr, "%s: error: %s (see %s --help)\n", tool.c_str(), e.what(), tool.c_str());
+    return static_cast<int>(Status::usage);
+  }
+  return run_tool(tool, std::forward<Body>(body));
+}
+
+}  // namespace fest::cli

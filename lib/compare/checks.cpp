@@ -1,0 +1,125 @@
+#include "compare/checks.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace fest::compare {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+std::string format_value(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (std::isnan(v)) return "nan";
+  return fmt::format("{:.9g}", v);
+}
+
+}  // namespace
+
+Check parse_threshold(const std::string& text) {
+  std::size_t pos = text.find("<=");
+  bool at_most = true;
+  if (pos == std::string::npos) {
+    pos = text.find(">=");
+    at_most = false;
+  }
+  if (pos == std::string::npos)
+    throw usage_error("threshold '{}' is not METRIC<=VALUE or METRIC>=VALUE", text);
+  Check c;
+  c.metric = trim(text.substr(0, pos));
+  c.at_most = at_most;
+  const std::string value = trim(text.substr(pos + 2));
+  char* end = nullptr;
+  errno = 0;
+  c.limit = std::strtod(value.c_str(), &end);
+  if (c.metric.empty() || value.empty() || *end != '\0' || errno == ERANGE || std::isnan(c.limit))
+    throw usage_error("threshold '{}' is not METRIC<=VALUE or METRIC>=VALUE", text);
+  return c;
+}
+
+nlohmann::json json_number(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  return v;
+}
+
+void Metrics::set(const std::string& name, double value) {
+  for (auto& [n, v] : values_) {
+    if (n == name) {
+      v = value;
+      return;
+    }
+  }
+  values_.emplace_back(name, value);
+}
+
+void Metrics::require(const std::string& metric, const std::string& op, double limit) {
+  checks_.push_back({metric, op == "<=", limit});
+}
+
+void Metrics::require(const Check& check) {
+  checks_.erase(std::remove_if(checks_.begin(), checks_.end(),
+                               [&](const Check& c) { return c.metric == check.metric; }),
+                checks_.end());
+  checks_.push_back(check);
+}
+
+const double* Metrics::find(const std::string& name) const {
+  for (const auto& [n, v] : values_)
+    if (n == name) return &v;
+  return nullptr;
+}
+
+std::vector<std::string> Metrics::evaluate() const {
+  std::vector<std::string> failures;
+  for (const Check& c : checks_) {
+    const double* v = find(c.metric);
+    if (v == nullptr) {
+      std::string known;
+      for (const auto& [n, value] : values_) known += (known.empty() ? "" : ", ") + n;
+      throw usage_error("no metric '{}' for these files (measured: {})", c.metric, known);
+    }
+    // NaN fails every check: an undefined error is not a small one.
+    const bool ok = c.at_most ? (*v <= c.limit) : (*v >= c.limit);
+    if (!ok)
+      failures.push_back(fmt::format("{} = {} {} {}", c.metric, format_value(*v),
+                                     c.at_most ? "exceeds" : "is below", format_value(c.limit)));
+  }
+  return failures;
+}
+
+std::string Metrics::summary() const {
+  std::string out;
+  for (const auto& [n, v] : values_) out += n + " " + format_value(v) + "\n";
+  return out;
+}
+
+nlohmann::json Metrics::to_json() const {
+  nlohmann::json metrics = nlohmann::json::object();
+  for (const auto& [n, v] : values_) metrics[n] = json_number(v);
+  nlohmann::json checks = nlohmann::json::array();
+  bool pass = true;
+  for (const Check& c : checks_) {
+    const double* v = find(c.metric);
+    const bool ok = v && (c.at_most ? (*v <= c.limit) : (*v >= c.limit));
+    pass = pass && ok;
+    checks.push_back({{"metric", c.metric},
+                      {"op", c.at_most ? "<=" : ">="},
+                      {"limit", json_number(c.limit)},
+                      {"value", v ? json_number(*v) : nlohmann::json(nullptr)},
+                      {"pass", ok}});
+  }
+  return {{"metrics", metrics}, {"checks", checks}, {"details", details}, {"pass", pass}};
+}
+
+}  // namespace fest::compare

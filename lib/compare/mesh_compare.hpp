@@ -1,0 +1,48 @@
+#pragma once
+// Mesh comparison: symmetric surface distance by sampling, and the topology that a
+// golden-file test should see unchanged (counts, genus, boundaries, manifoldness).
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/mesh.hpp"
+
+namespace fest::compare {
+
+struct SurfaceDistance {
+  double hausdorff = 0;  // max of the two one-sided maxima
+  double rms = 0;        // root mean square over the samples of both sides
+  double mean = 0;
+  double max_a_to_b = 0;
+  double max_b_to_a = 0;
+  std::size_t samples_a = 0;
+  std::size_t samples_b = 0;
+  // Distances below this are floating-point noise of projecting a point onto its own
+  // triangle and are reported as 0 (1e-12 of the larger bounding-box diagonal).
+  double resolution = 0;
+};
+
+// Samples every vertex and `extra_samples` area-weighted random points (fixed seed) on
+// each mesh, and measures each sample's distance to the other surface (exact
+// point-triangle distance through an AABB tree; polygons are fan-triangulated).
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra_samples = 100000,
+                                 std::uint64_t seed = 1);
+
+struct MeshTopology {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  std::size_t edges = 0;
+  std::size_t isolated_vertices = 0;
+  std::size_t boundary_edges = 0;
+  std::size_t boundary_loops = 0;
+  std::size_t components = 0;         // connected components of faces
+  std::size_t nonmanifold_vertices = 0;
+  long euler = 0;                     // V - E + F over the vertices used by faces
+  long genus = 0;                     // from euler = sum over components (2 - 2g - b)
+  bool manifold() const noexcept { return nonmanifold_vertices == 0; }
+  bool closed() const noexcept { return boundary_edges == 0; }
+};
+
+MeshTopology mesh_topology(const Mesh& mesh);
+
+}  // namespace fest::compare

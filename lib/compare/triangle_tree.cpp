@@ -1,0 +1,98 @@
+#include "compare/triangle_tree.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace fest::compare {
+
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = va + vb + vc;
+  if (!(denom > 0)) return a;  // degenerate (zero-area) triangle: its vertices were sampled anyway
+  const double v = vb / denom, w = vc / denom;
+  return a + ab * v + ac * w;
+}
+
+TriangleTree::TriangleTree(std::vector<Triangle> triangles) : triangles_(std::move(triangles)) {
+  if (triangles_.empty()) return;
+  nodes_.reserve(triangles_.size() / 2 + 8);
+  build(0, static_cast<std::uint32_t>(triangles_.size()));
+}
+
+std::uint32_t TriangleTree::build(std::uint32_t first, std::uint32_t count) {
+  const std::uint32_t index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.push_back({});
+  Eigen::AlignedBox3d box;
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    box.extend(triangles_[i].a);
+    box.extend(triangles_[i].b);
+    box.extend(triangles_[i].c);
+  }
+  nodes_[index].box = box;
+  if (count <= 4) {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
+    return index;
+  }
+  int axis;
+  box.sizes().maxCoeff(&axis);
+  const std::uint32_t half = count / 2;
+  auto centroid = [axis](const Triangle& t) { return t.a[axis] + t.b[axis] + t.c[axis]; };
+  std::nth_element(triangles_.begin() + first, triangles_.begin() + first + half, triangles_.begin() + first + count,
+                   [&](const Triangle& x, const Triangle& y) { return centroid(x) < centroid(y); });
+  const std::uint32_t left = build(first, half);
+  const std::uint32_t right = build(first + half, count - half);
+  nodes_[index].first = left;
+  nodes_[index].count = 0;
+  nodes_[index].right = right;
+  return index;
+}
+
+double TriangleTree::squared_distance(const Vec3& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  if (nodes_.empty()) return best;
+  // Explicit stack; children are visited nearer box first so pruning bites early.
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (node.box.squaredExteriorDistance(p) >= best) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const Triangle& t = triangles_[i];
+        best = std::min(best, (closest_point_on_triangle(p, t.a, t.b, t.c) - p).squaredNorm());
+      }
+      continue;
+    }
+    const std::uint32_t left = node.first;
+    const std::uint32_t right = node.right;
+    const double dl = nodes_[left].box.squaredExteriorDistance(p);
+    const double dr = nodes_[right].box.squaredExteriorDistance(p);
+    if (top + 2 > 128) continue;  // depth is ~2 log2(n): unreachable for any real mesh
+    if (dl < dr) {
+      stack[top++] = right;
+      stack[top++] = left;
+    } else {
+      stack[top++] = left;
+      stack[top++] = right;
+    }
+  }
+  return best;
+}
+
+}  // namespace fest::compare

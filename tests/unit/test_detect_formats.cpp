@@ -1,0 +1,147 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "core/error.hpp"
+#include "formats/detect.hpp"
+
+using fest::formats::Format;
+using fest::formats::detect_format;
+
+namespace {
+
+Format detect(const std::string& s) { return detect_format(s, "test"); }
+
+std::string nifti_header(bool big_endian) {
+  std::string h(352, '\0');
+  std::int32_t n = 348;
+  if (big_endian) n = static_cast<std::int32_t>(__builtin_bswap32(348u));
+  std::memcpy(h.data(), &n, 4);
+  std::memcpy(h.data() + 344, "n+1\0", 4);
+  return h;
+}
+
+std::string binary_stl(std::uint32_t triangles, const char* header_text) {
+  std::string s(80, ' ');
+  std::memcpy(s.data(), header_text, std::strlen(header_text));
+  s.append(reinterpret_cast<const char*>(&triangles), 4);
+  s.append(50 * triangles, '\0');
+  return s;
+}
+
+}  // namespace
+
+TEST(Detect, BinarySignatures) {
+  EXPECT_EQ(detect("\x89PNG\r\n\x1a\n...."), Format::png);
+  EXPECT_EQ(detect(std::string("\x76\x2f\x31\x01\x02\0\0\0", 8)), Format::exr);
+  EXPECT_EQ(detect(std::string("II*\0\x08\0\0\0", 8)), Format::tiff);
+  EXPECT_EQ(detect(std::string("MM\0*\0\0\0\x08", 8)), Format::tiff);
+  EXPECT_EQ(detect("DRACO\x02\x02"), Format::drc);
+  EXPECT_EQ(detect("NRRD0004\ntype: float\n"), Format::nrrd);
+  EXPECT_EQ(detect(nifti_header(false)), Format::nifti);
+  EXPECT_EQ(detect(nifti_header(true)), Format::nifti);
+}
+
+TEST(Detect, NetpbmFamily) {
+  EXPECT_EQ(detect("P5\n2 2\n255\n...."), Format::pgm);
+  EXPECT_EQ(detect("P2 2 2 255 0 0 0 0"), Format::pgm);
+  EXPECT_EQ(detect("P6\n1 1\n255\nabc"), Format::ppm);
+  EXPECT_EQ(detect("P3\n1 1\n255\n1 2 3"), Format::ppm);
+  EXPECT_EQ(detect("P7\nWIDTH 1\n"), Format::pam);
+  EXPECT_EQ(detect("PF\n1 1\n-1.0\n"), Format::pfm);
+  EXPECT_EQ(detect("Pf\n1 1\n-1.0\n"), Format::pfm);
+}
+
+TEST(Detect, MeshText) {
+  EXPECT_EQ(detect("ply\nformat ascii 1.0\n"), Format::ply);
+  EXPECT_EQ(detect("ply\r\nformat ascii 1.0\r\n"), Format::ply);
+  EXPECT_EQ(detect("OFF\n3 1 0\n"), Format::off);
+  EXPECT_EQ(detect("# comment\nCOFF\n"), Format::off);
+  EXPECT_EQ(detect("NOFF 3 1 0"), Format::off);
+  EXPECT_EQ(detect("# made by hand\nv 0 0 0\nv 1 0 0\nf 1 2 3\n"), Format::obj);
+  EXPECT_EQ(detect("mtllib a.mtl\no thing\n"), Format::obj);
+  EXPECT_EQ(detect("solid cube\n  facet normal 0 0 1\n"), Format::stl);
+}
+
+TEST(Detect, BinaryStlIsRecognisedByItsSizeEvenIfItSaysSolid) {
+  EXPECT_EQ(detect(binary_stl(2, "solid but binary")), Format::stl);
+  EXPECT_EQ(detect(binary_stl(0, "")), Format::stl);
+}
+
+TEST(Detect, VolumesDatasetsTablesJson) {
+  EXPECT_EQ(detect("ObjectType = Image\nNDims = 3\n"), Format::mha);
+  EXPECT_EQ(detect("# vtk DataFile Version 3.0\nx\nASCII\n"), Format::vtk);
+  EXPECT_EQ(detect("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">"), Format::vtu);
+  EXPECT_EQ(detect("<VTKFile type=\"ImageData\">"), Format::vti);
+  EXPECT_EQ(detect("<VTKFile type=\"PolyData\">"), Format::vtp);
+  EXPECT_EQ(detect("x,y,z\n1,2,3\n"), Format::csv);
+  EXPECT_EQ(detect("x\ty\n1\t2\n"), Format::tsv);
+  EXPECT_EQ(detect("  {\"a\": 1}"), Format::json);
+  EXPECT_EQ(detect("[1,2]"), Format::json);
+}
+
+TEST(Detect, UnknownAndEmptyInputAreBadInput) {
+  for (const std::string& s : {std::string(), std::string("hello world"), std::string("\x01\x02\x03", 3),
+                              std::string("<?xml version=\"1.0\"?><svg/>")}) {
+    try {
+      detect(s);
+      FAIL() << "accepted: " << s;
+    } catch (const fest::Error& e) {
+      EXPECT_EQ(e.status(), fest::Status::bad_input);
+      EXPECT_NE(std::string(e.what()).find("(test)"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Detect, AnalyzeHeaderPairsAreRefusedClearly) {
+  std::string h = nifti_header(false);
+  std::memcpy(h.data() + 344, "ni1\0", 4);
+  try {
+    detect(h);
+    FAIL();
+  } catch (const fest::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(".hdr"), std::string::npos);
+  }
+}
+
+TEST(OutputFormat, FromNames) {
+  using fest::formats::output_format_from_name;
+  EXPECT_EQ(output_format_from_name("off").format, Format::off);
+  EXPECT_EQ(output_format_from_name(".OFF").format, Format::off);
+  auto nii = output_format_from_name("nii.gz");
+  EXPECT_EQ(nii.format, Format::nifti);
+  EXPECT_TRUE(nii.gzip);
+  EXPECT_EQ(output_format_from_name("tif").format, Format::tiff);
+  EXPECT_THROW(output_format_from_name("bmp"), fest::Error);
+  EXPECT_THROW(output_format_from_name("gz"), fest::Error);
+}
+
+TEST(OutputFormat, FromPaths) {
+  using fest::formats::output_format_from_path;
+  EXPECT_EQ(output_format_from_path("dir.v2/bunny.ply").format, Format::ply);
+  auto p = output_format_from_path("/tmp/head.nii.gz");
+  EXPECT_EQ(p.format, Format::nifti);
+  EXPECT_TRUE(p.gzip);
+  EXPECT_EQ(output_format_from_path("scan.TIFF").format, Format::tiff);
+  try {
+    output_format_from_path("noextension");
+    FAIL();
+  } catch (const fest::Error& e) {
+    EXPECT_EQ(e.status(), fest::Status::usage);
+  }
+  EXPECT_THROW(output_format_from_path("a.docx"), fest::Error);
+  EXPECT_THROW(output_format_from_path(".hidden"), fest::Error);
+}
+
+TEST(OutputFormat, NamesAndKindsAgree) {
+  using namespace fest::formats;
+  EXPECT_EQ(kind_of(Format::drc), Kind::mesh);
+  EXPECT_EQ(kind_of(Format::exr), Kind::image);
+  EXPECT_EQ(kind_of(Format::mha), Kind::volume);
+  EXPECT_EQ(kind_of(Format::vtk), Kind::dataset);
+  EXPECT_STREQ(format_name(Format::nifti), "nifti");
+  EXPECT_STREQ(format_extension(Format::nifti), ".nii");
+  EXPECT_STREQ(kind_name(Kind::table), "table");
+}

@@ -1,0 +1,154 @@
+// fconv: convert a mesh, image, volume, VTK dataset, table or JSON file to another
+// format of the same kind, or describe it as JSON (--info).
+//
+// Wiring only: formats/ recognises, reads and writes; this file maps flags onto it.
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+#include <vtkDataSet.h>
+
+#include "cli/cli.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "formats/dataset/dataset_io.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
+#include "formats/mesh/mesh_io.hpp"
+#include "formats/table/table_io.hpp"
+#include "formats/volume/volume_io.hpp"
+
+namespace {
+
+using namespace fest;
+using namespace fest::formats;
+
+struct Options {
+  std::string input = "-";
+  std::string output = "-";
+  std::string to;
+  bool info = false;
+  bool ascii = false;
+  bool compress = false;
+  bool half = false;
+  std::string volume_type;
+  int draco_bits = 0;
+  int draco_speed = 5;
+};
+
+// What is known about the input before its content is parsed.
+nlohmann::json file_facts(const Input& in) {
+  return {{"file", in.name},
+          {"kind", kind_name(kind_of(in.format))},
+          {"format", format_name(in.format)},
+          {"gzip", in.was_gzip},
+          {"bytes", in.bytes.size()}};
+}
+
+nlohmann::json describe(const Input& in) {
+  nlohmann::json facts = file_facts(in);
+  nlohmann::json content;
+  switch (kind_of(in.format)) {
+    case Kind::mesh: content = describe_mesh(read_mesh(in.bytes, in.format)); break;
+    case Kind::image: content = describe_image(read_image(in.bytes, in.format)); break;
+    case Kind::volume: content = describe_volume(read_volume(in.bytes, in.format)); break;
+    case Kind::dataset: content = describe_dataset(read_dataset(in.bytes, in.format)); break;
+    case Kind::table: content = describe_table(read_table(in.bytes, in.format)); break;
+    case Kind::json: {
+      nlohmann::json doc = read_json(in.bytes);
+      content = {{"type", doc.type_name()}, {"size", doc.size()}};
+      break;
+    }
+  }
+  facts.update(content);
+  return facts;
+}
+
+std::string convert(const Input& in, Format to, const Options& opt) {
+  switch (kind_of(in.format)) {
+    case Kind::mesh: {
+      MeshWriteOptions w;
+      w.ascii = opt.ascii;
+      w.draco_position_bits = opt.draco_bits;
+      w.draco_speed = opt.draco_speed;
+      return write_mesh(read_mesh(in.bytes, in.format), to, w);
+    }
+    case Kind::image: {
+      ImageWriteOptions w;
+      w.ascii = opt.ascii;
+      w.exr_half = opt.half;
+      return write_image(read_image(in.bytes, in.format), to, w);
+    }
+    case Kind::volume: {
+      VolumeWriteOptions w;
+      w.compress = opt.compress;
+      if (!opt.volume_type.empty()) {
+        ScalarType t;
+        if (!parse_scalar_type(opt.volume_type, t))
+          throw usage_error("--type: unknown value type '{}' (uint8, int8, uint16, int16, uint32, int32, "
+                            "uint64, int64, float32, float64)",
+                            opt.volume_type);
+        w.type = t;
+      }
+      return write_volume(read_volume(in.bytes, in.format), to, w);
+    }
+    case Kind::dataset: {
+      DatasetWriteOptions w;
+      w.ascii = opt.ascii;
+      return write_dataset(read_dataset(in.bytes, in.format), to, w);
+    }
+    case Kind::table: return write_table(read_table(in.bytes, in.format), to);
+    case Kind::json: return write_json(read_json(in.bytes));
+  }
+  throw usage_error("unsupported conversion");
+}
+
+int run(const Options& opt) {
+  const Input in = load_input(opt.input);
+  if (opt.info) {
+    write_output(opt.output, describe(in).dump(2) + "\n");
+    return 0;
+  }
+  // The output format: --to, else the output file's extension, else (standard output
+  // with no --to) the input's own format, so `fconv < a > b` normalises a file.
+  OutputFormat out{in.format, false};
+  if (!opt.to.empty())
+    out = output_format_from_name(opt.to);
+  else if (!is_stdio(opt.output))
+    out = output_format_from_path(opt.output);
+  if (kind_of(out.format) != kind_of(in.format))
+    throw usage_error("cannot convert {} ({}) to {} (a {} format)", kind_name(kind_of(in.format)),
+                      format_name(in.format), format_name(out.format), kind_name(kind_of(out.format)));
+  // Convert completely before writing anything: bad input leaves no partial output.
+  const std::string bytes = convert(in, out.format, opt);
+  store_output(opt.output, bytes, out.gzip);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Convert a file to another format of the same kind, or describe it (--info).\n"
+               "Input is recognised by its content; gzip-compressed input is unpacked.",
+               "fconv"};
+  fest::cli::Common common;
+  fest::cli::add_common(app, common);
+  Options opt;
+  app.add_option("input", opt.input, "Input file, or - for standard input")->default_val("-");
+  app.add_option("-o,--output", opt.output, "Output file, or - for standard output")->default_val("-");
+  app.add_option("--to", opt.to,
+                 "Output format: ply obj off stl drc | png pgm ppm pam pfm exr tiff | nifti (nii) nrrd mha | "
+                 "vtu vti vtp vtk | csv tsv json; append .gz to compress (nii.gz)");
+  app.add_flag("--info", opt.info, "Print the input's metadata as JSON instead of converting");
+  app.add_flag("--ascii", opt.ascii, "Text variant where the format has one (PLY, STL, PGM/PPM, VTK)");
+  app.add_flag("--compress", opt.compress, "Compress the data inside NRRD (gzip) and MHA (zlib) files");
+  app.add_option("--type", opt.volume_type, "Volume value type to write (uint8 ... float64)");
+  app.add_flag("--half", opt.half, "EXR: 16-bit half channels instead of 32-bit float");
+  app.add_option("--draco-bits", opt.draco_bits, "Draco position quantization bits (0 = lossless)")
+      ->check(CLI::Range(0, 30));
+  app.add_option("--draco-speed", opt.draco_speed, "Draco encoder speed, 0 (smallest) to 10 (fastest)")
+      ->check(CLI::Range(0, 10));
+  app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See fconv(1), fest-formats(5).");
+  return fest::cli::run(app, argc, argv, [&] { return run(opt); });
+}
