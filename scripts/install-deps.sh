@@ -35,6 +35,7 @@ BUILD_PKGS=(
 TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware
   xvfb xauth                 # X server for VTK rendering tests (Debian's VTK is X11-only)
+  jq                         # CLI tests read the JSON that tools print
 )
 
 # --- arguments ----------------------------------------------------------------

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# fcompare on inputs whose differences are known by construction.
+. "$(dirname "$0")/lib.sh"
+
+# Two unit squares, the second lifted by 0.25: every point is exactly 0.25 from the
+# other surface, so Hausdorff = RMS = 0.25.
+square() {
+  printf 'OFF\n4 2 0\n0 0 %s\n1 0 %s\n1 1 %s\n0 1 %s\n3 0 1 2\n3 0 2 3\n' "$1" "$1" "$1" "$1"
+}
+square 0 >"$WORK/a.off"
+square 0.25 >"$WORK/b.off"
+
+case_ "identical meshes"
+run fcompare "$WORK/a.off" "$WORK/a.off"
+expect_status 0
+check "hausdorff 0" grep -qx "hausdorff 0" "$out"
+
+case_ "lifted square: within a loose tolerance"
+run fcompare --tol 0.3 "$WORK/a.off" "$WORK/b.off"
+expect_status 0
+check "hausdorff 0.25" grep -qx "hausdorff 0.25" "$out"
+check "rms 0.25" grep -qx "rms 0.25" "$out"
+
+case_ "lifted square: outside a tight tolerance"
+run fcompare --tol 0.1 "$WORK/a.off" "$WORK/b.off"
+expect_status 1
+expect_stderr_has "^fcompare: hausdorff = 0.25 exceeds 0.1"
+
+case_ "per-metric threshold replaces the default"
+run fcompare -t 'hausdorff<=0.3' -t 'rms<=0.26' "$WORK/a.off" "$WORK/b.off" --report "$WORK/r.json"
+expect_status 0
+check "report has both checks" test "$(jq '[.checks[] | select(.metric=="rms" or .metric=="hausdorff")] | length' "$WORK/r.json")" = 2
+check "report rms" test "$(jq .metrics.rms "$WORK/r.json")" = "0.25"
+
+case_ "different counts fail unless ignored"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n' >"$WORK/tri.off"
+run fcompare --tol 1 "$WORK/a.off" "$WORK/tri.off"
+expect_status 1
+expect_stderr_has "vertex_count_diff"
+run fcompare --tol 1 --ignore-counts --ignore-topology "$WORK/a.off" "$WORK/tri.off"
+expect_status 0
+
+# Images: 2x2 grey PGMs differing by 3 in one pixel: RMSE = sqrt(9/4) = 1.5,
+# PSNR = 20 log10(255/1.5) = 44.6090..., max abs 3.
+printf 'P2\n2 2\n255\n10 20\n30 40\n' >"$WORK/a.pgm"
+printf 'P2\n2 2\n255\n10 20\n30 43\n' >"$WORK/b.pgm"
+case_ "images: RMSE, PSNR, max abs"
+run fcompare "$WORK/a.pgm" "$WORK/b.pgm" -t 'max_abs<=3' -t 'psnr>=44.6' --report "$WORK/img.json"
+expect_status 0
+check "rmse 1.5" grep -qx "rmse 1.5" "$out"
+check "psnr" test "$(jq '.metrics.psnr * 1000 | floor' "$WORK/img.json")" = "44609"
+run fcompare "$WORK/a.pgm" "$WORK/b.pgm" -t 'psnr>=50'
+expect_status 1
+expect_stderr_has "psnr = 44.6"
+
+case_ "images of different sizes differ (status 1)"
+printf 'P2\n1 1\n255\n10\n' >"$WORK/c.pgm"
+run fcompare "$WORK/a.pgm" "$WORK/c.pgm"
+expect_status 1
+
+# Label volumes 4x1x1: a = 1 1 2 0, b = 1 2 2 0 -> Dice 2/3 for both labels.
+printf 'NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 1 1\nencoding: ascii\n\n1 1 2 0\n' >"$WORK/a.nrrd"
+printf 'NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 1 1\nencoding: ascii\n\n1 2 2 0\n' >"$WORK/b.nrrd"
+case_ "volumes: Dice per label"
+run fcompare "$WORK/a.nrrd" "$WORK/b.nrrd" -t 'dice>=0.66' -t 'max_abs<=1' --report "$WORK/vol.json"
+expect_status 0
+check "dice 2/3" test "$(jq '.details.dice_per_label["1"] * 3 | round' "$WORK/vol.json")" = "2"
+run fcompare "$WORK/a.nrrd" "$WORK/b.nrrd" -t 'dice>=0.9'
+expect_status 1
+
+case_ "tables: max abs per column"
+printf 'x,y\n1,2\n3,4\n' >"$WORK/a.csv"
+printf 'x,y\n1,2.5\n3,4\n' >"$WORK/b.csv"
+run fcompare "$WORK/a.csv" "$WORK/b.csv" --tol 0.5
+expect_status 0
+run fcompare "$WORK/a.csv" "$WORK/b.csv" --tol 0.4
+expect_status 1
+expect_stderr_has "max_abs = 0.5 exceeds 0.4"
+
+case_ "bad usage and bad input"
+run fcompare "$WORK/a.off" "$WORK/a.pgm"
+expect_clean_failure 3 fcompare
+run fcompare -t 'hausdorff=1' "$WORK/a.off" "$WORK/a.off"
+expect_clean_failure 2 fcompare
+run fcompare -t 'dice>=1' "$WORK/a.off" "$WORK/a.off"
+expect_clean_failure 2 fcompare
+run fcompare --tol -1 "$WORK/a.off" "$WORK/a.off"
+expect_clean_failure 2 fcompare
+run_stdin /dev/null fcompare - "$WORK/a.off"
+expect_clean_failure 3 fcompare
+
+finish

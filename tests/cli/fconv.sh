@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# fconv on small hand-made inputs: conversions whose results are known exactly,
+# standard input/output pipelines, and bad input.
+. "$(dirname "$0")/lib.sh"
+
+# A unit tetrahedron: 4 vertices, 4 triangles, closed, genus 0.
+cat >"$WORK/tet.off" <<'OFF'
+OFF
+4 4 6
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+3 0 2 1
+3 0 1 3
+3 0 3 2
+3 1 2 3
+OFF
+
+case_ "info on an OFF file"
+run fconv --info "$WORK/tet.off"
+expect_status 0
+expect_json '.kind' '"mesh"'
+expect_json '.format' '"off"'
+expect_json '.vertices' '4'
+expect_json '.faces' '4'
+expect_json '.bbox.min' '[0,0,0]'
+expect_json '.bbox.max' '[1,1,1]'
+
+case_ "OFF -> PLY (binary) -> OBJ -> OFF through pipes keeps every coordinate"
+"$FEST_BIN/fconv" --to ply <"$WORK/tet.off" | "$FEST_BIN/fconv" --to obj | "$FEST_BIN/fconv" --to off >"$WORK/back.off"
+check "pipeline succeeded" test -s "$WORK/back.off"
+run fcompare "$WORK/tet.off" "$WORK/back.off"
+expect_status 0
+check "zero Hausdorff distance" grep -qx "hausdorff 0" "$out"
+check "identical vertices" grep -qx "vertex_max_abs 0" "$out"
+
+case_ "output format from the file extension, written atomically"
+run fconv "$WORK/tet.off" -o "$WORK/tet.ply"
+expect_status 0
+expect_stdout_empty
+check "PLY written" grep -q "^ply" "$WORK/tet.ply"
+check "no temporary left behind" test -z "$(ls "$WORK" | grep '\.tmp\.')"
+
+case_ "gzip output by extension and transparent gzip input"
+run fconv "$WORK/tet.off" -o "$WORK/tet.off.gz"
+expect_status 0
+check "gzip magic" test "$(head -c 2 "$WORK/tet.off.gz" | od -An -tx1 | tr -d ' ')" = "1f8b"
+run_stdin "$WORK/tet.off.gz" fconv --info
+expect_json '.gzip' 'true'
+expect_json '.vertices' '4'
+
+case_ "a CSV table survives TSV and back"
+printf 'x,y\n1,2.5\n-3,1e-300\n' >"$WORK/t.csv"
+"$FEST_BIN/fconv" --to tsv <"$WORK/t.csv" | "$FEST_BIN/fconv" --to csv >"$WORK/t2.csv"
+run fcompare "$WORK/t.csv" "$WORK/t2.csv"
+expect_status 0
+
+case_ "empty input"
+run_stdin /dev/null fconv --to off
+expect_clean_failure 3 fconv
+expect_stderr_has "empty input"
+
+case_ "unrecognised input"
+printf 'hello, world\x01' >"$WORK/junk"
+run fconv "$WORK/junk" --to off
+expect_clean_failure 3 fconv
+
+case_ "truncated mesh leaves no output file"
+head -c 40 "$WORK/tet.ply" >"$WORK/cut.ply"
+run fconv "$WORK/cut.ply" -o "$WORK/cut.off"
+expect_clean_failure 3 fconv
+check "no partial output" test ! -e "$WORK/cut.off"
+
+case_ "a mesh cannot become an image"
+run fconv "$WORK/tet.off" --to png
+expect_clean_failure 2 fconv
+expect_stderr_has "cannot convert a mesh"
+
+case_ "unknown output format"
+run fconv "$WORK/tet.off" --to docx
+expect_clean_failure 2 fconv
+
+case_ "unknown output extension"
+run fconv "$WORK/tet.off" -o "$WORK/x.docx"
+expect_clean_failure 2 fconv
+check "nothing written" test ! -e "$WORK/x.docx"
+
+case_ "unwritable output"
+run fconv "$WORK/tet.off" -o "$WORK/no/such/dir/x.ply"
+expect_clean_failure 4 fconv
+
+case_ "bad --type value"
+printf 'NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 1 1\nencoding: ascii\n\n1 2\n' >"$WORK/v.nrrd"
+run fconv "$WORK/v.nrrd" --to mha --type complex
+expect_clean_failure 2 fconv
+
+finish
