@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang and runs each for SECONDS (default 600).
+#   scripts/fuzz.sh [SECONDS] [TARGET...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-600}"
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_json)
+
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build-fuzz --target "${targets[@]}"
+
+seed_dirs() {  # the fixture folders whose files seed each target
+  case "$1" in
+    fuzz_mesh) echo tests/data/mesh tests/data/regress/mesh examples/data ;;
+    fuzz_image_header) echo tests/data/image tests/data/regress/image ;;
+    fuzz_volume) echo tests/data/volume tests/data/regress/volume ;;
+    fuzz_json) echo tests/data/table tests/data/regress/json ;;
+  esac
+}
+
+mkdir -p build-fuzz/findings
+run_one() {
+  local t="$1" corpus="build-fuzz/corpus/$1"
+  mkdir -p "$corpus"
+  for d in $(seed_dirs "$t"); do
+    [ -d "$d" ] && find "$d" -type f -size -1M -exec cp -n {} "$corpus/" \; 2>/dev/null
+  done
+  echo "fuzz.sh: $t for ${seconds}s"
+  "build-fuzz/bin/$t" "$corpus" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+    -timeout=10 -artifact_prefix="build-fuzz/findings/$t-" -print_final_stats=1 \
+    >"build-fuzz/$t.log" 2>&1 || echo "fuzz.sh: $t stopped with a finding (see build-fuzz/$t.log)"
+  grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "build-fuzz/$t.log" | tail -2 | sed "s/^/$t: /"
+}
+
+# Two at a time: the reference machine has two cores.
+pids=()
+for t in "${targets[@]}"; do
+  run_one "$t" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge 2 ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
+done
+wait
+ls build-fuzz/findings
