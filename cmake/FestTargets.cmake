@@ -7,7 +7,12 @@ if(FEST_WERROR)
   list(APPEND FEST_WARNINGS -Werror)
 endif()
 
-if(FEST_SANITIZE)
+if(FEST_FUZZ)
+  # Instrument every fest library for coverage and sanitizers, not only the fuzzer's
+  # own file: the readers under test live in the libraries.
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+elseif(FEST_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   add_link_options(-fsanitize=address,undefined)
 endif()
