@@ -1,0 +1,140 @@
+// EXR through OpenEXR directly (not OpenCV) so that half/float and the channel layout
+// are ours to choose, on in-memory streams so no temporary file is involved. Every
+// channel is read as 32-bit float; files hold R,G,B(,A) or Y(,A) (header_exr.cpp).
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include <ImfChannelList.h>
+#include <ImfCompression.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <Iex.h>
+#include <half.h>
+
+#include "core/error.hpp"
+#include "formats/image/exr_channels.hpp"
+#include "formats/image/image_codecs.hpp"
+
+namespace fest::formats::image_detail {
+namespace {
+
+class MemoryInput : public Imf::IStream {
+ public:
+  explicit MemoryInput(std::string_view bytes) : Imf::IStream("<memory>"), bytes_(bytes) {}
+
+  bool read(char c[], int n) override {
+    if (n < 0 || pos_ > bytes_.size() || std::uint64_t(n) > bytes_.size() - pos_)
+      throw Iex::InputExc("unexpected end of file");
+    std::memcpy(c, bytes_.data() + pos_, std::size_t(n));
+    pos_ += std::uint64_t(n);
+    return pos_ < bytes_.size();
+  }
+  std::uint64_t tellg() override { return pos_; }
+  void seekg(std::uint64_t pos) override { pos_ = pos; }  // read() checks the bounds
+
+ private:
+  std::string_view bytes_;
+  std::uint64_t pos_ = 0;
+};
+
+class MemoryOutput : public Imf::OStream {
+ public:
+  MemoryOutput() : Imf::OStream("<memory>") {}
+
+  void write(const char c[], int n) override {
+    if (n <= 0) return;
+    if (pos_ + std::uint64_t(n) > data_.size()) data_.resize(pos_ + std::size_t(n));
+    std::memcpy(data_.data() + pos_, c, std::size_t(n));
+    pos_ += std::uint64_t(n);
+  }
+  std::uint64_t tellp() override { return pos_; }
+  // OpenEXR seeks back to fill in the chunk offset table once the pixels are written.
+  void seekp(std::uint64_t pos) override { pos_ = pos; }
+  std::string take() { return std::move(data_); }
+
+ private:
+  std::string data_;
+  std::uint64_t pos_ = 0;
+};
+
+// The channels an image of n channels is stored as.
+std::vector<const char*> channel_names(int n) {
+  switch (n) {
+    case 1: return {"Y"};
+    case 2: return {"Y", "A"};
+    case 3: return {"R", "G", "B"};
+    default: return {"R", "G", "B", "A"};
+  }
+}
+
+}  // namespace
+
+cv::Mat decode_exr(std::string_view bytes) {
+  const ExrLayout layout = read_exr_layout(bytes);
+  const ImageHeader& h = layout.header;
+  try {
+    MemoryInput stream(bytes);
+    Imf::InputFile file(stream);
+    // OpenEXR parsed the header itself; it must agree with ours, which sized the image.
+    const Imath::Box2i window = file.header().dataWindow();
+    if (window.min.x != layout.data_window[0] || window.min.y != layout.data_window[1] ||
+        window.max.x != layout.data_window[2] || window.max.y != layout.data_window[3])
+      throw bad_input("EXR header: inconsistent data window");
+    cv::Mat out(h.height, h.width, CV_MAKETYPE(CV_32F, h.channels), cv::Scalar::all(0));
+    const std::size_t x_stride = sizeof(float) * std::size_t(h.channels);
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < h.channels; ++c) {
+      const std::string& name = layout.channels[std::size_t(c)].name;
+      if (!file.header().channels().findChannel(name))
+        throw bad_input("EXR header: inconsistent channel list (no '{}')", name);
+      frame.insert(name, Imf::Slice::Make(Imf::FLOAT, out.ptr<float>() + c, window, x_stride, x_stride * h.width));
+    }
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    return out;
+  } catch (const fest::Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw bad_input("EXR data: {}", e.what());
+  }
+}
+
+std::string encode_exr(const cv::Mat& pixels, bool half) {
+  const std::vector<const char*> names = channel_names(pixels.channels());
+  const cv::Mat continuous = pixels.isContinuous() ? pixels : pixels.clone();
+  MemoryOutput stream;
+  try {
+    Imf::Header header(continuous.cols, continuous.rows);
+    // ZIP is lossless and deterministic; it compresses 16 lines at a time.
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const char* name : names) header.channels().insert(name, Imf::Channel(half ? Imf::HALF : Imf::FLOAT));
+    // OutputFile does not convert float slices to half channels, so halves are made
+    // here (Imath rounds to nearest, ties to even).
+    const std::size_t samples = continuous.total() * names.size();
+    std::vector<Imath::half> halves;
+    if (half) {
+      halves.resize(samples);
+      const float* from = continuous.ptr<float>();
+      for (std::size_t i = 0; i < samples; ++i) halves[i] = Imath::half(from[i]);
+    }
+    const std::size_t sample_size = half ? sizeof(Imath::half) : sizeof(float);
+    char* base = half ? reinterpret_cast<char*>(halves.data()) : const_cast<char*>(continuous.ptr<char>());
+    const std::size_t x_stride = sample_size * names.size();
+    Imf::FrameBuffer frame;
+    for (std::size_t c = 0; c < names.size(); ++c)
+      frame.insert(names[c], Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * sample_size, x_stride,
+                                        x_stride * std::size_t(continuous.cols)));
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(frame);
+    file.writePixels(continuous.rows);
+  } catch (const std::exception& e) {
+    throw runtime_failure("EXR writer: {}", e.what());
+  }
+  return stream.take();
+}
+
+}  // namespace fest::formats::image_detail

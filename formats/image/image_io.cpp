@@ -1,0 +1,126 @@
+// Dispatch of the image API (image_io.hpp) to the per-format header parsers and codecs.
+// Every read parses and checks the header first, so no decoder sees an absurd one.
+#include "formats/image/image_io.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/error.hpp"
+#include "formats/image/image_codecs.hpp"
+#include "formats/image/image_headers.hpp"
+
+namespace fest::formats {
+namespace {
+
+using namespace image_detail;
+
+bool is_netpbm(Format f) { return f == Format::pgm || f == Format::ppm || f == Format::pam; }
+
+const char* depth_label(int depth) {
+  switch (depth) {
+    case CV_8U: return "8-bit";
+    case CV_16U: return "16-bit";
+    case CV_32F: return "float";
+    default: return "unsupported";
+  }
+}
+
+[[noreturn]] void refuse(const cv::Mat& m, Format f, const char* why) {
+  throw bad_input("cannot write a {}-channel {} image as {}: {}", m.channels(), depth_label(m.depth()),
+                  format_name_of(f), why);
+}
+
+}  // namespace
+
+namespace image_detail {
+const char* format_name_of(Format f) {
+  switch (f) {
+    case Format::png: return "PNG";
+    case Format::pgm: return "PGM";
+    case Format::ppm: return "PPM";
+    case Format::pam: return "PAM";
+    case Format::pfm: return "PFM";
+    case Format::exr: return "EXR";
+    case Format::tiff: return "TIFF";
+    default: return "a non-image format";
+  }
+}
+}  // namespace image_detail
+
+ImageHeader read_image_header(std::string_view bytes, Format format) {
+  if (bytes.empty()) throw bad_input("{} header: the input is empty", format_name_of(format));
+  switch (format) {
+    case Format::png: return read_png_header(bytes);
+    case Format::tiff: return read_tiff_header(bytes);
+    case Format::exr: return read_exr_header(bytes);
+    case Format::pfm: return read_netpbm_layout(bytes, true).header;
+    case Format::pgm: case Format::ppm: case Format::pam: return read_netpbm_layout(bytes, false).header;
+    default: throw bad_input("{} is not an image format", format_name_of(format));
+  }
+}
+
+Image read_image(std::string_view bytes, Format format) {
+  Image image;
+  if (is_netpbm(format)) {
+    if (bytes.empty()) throw bad_input("{} header: the input is empty", format_name_of(format));
+    image.pixels = decode_netpbm(bytes, read_netpbm_layout(bytes, false));
+    return image;
+  }
+  if (format == Format::pfm) {
+    if (bytes.empty()) throw bad_input("PFM header: the input is empty");
+    image.pixels = decode_pfm(bytes, read_netpbm_layout(bytes, true));
+    image.color_space = ColorSpace::linear;
+    return image;
+  }
+  if (format == Format::exr) {
+    if (bytes.empty()) throw bad_input("EXR header: the input is empty");
+    image.pixels = decode_exr(bytes);
+    image.color_space = ColorSpace::linear;
+    return image;
+  }
+  const ImageHeader header = read_image_header(bytes, format);
+  image.pixels = decode_with_opencv(bytes, header, format_name_of(format));
+  // Float TIFF holds scene-referred values.
+  if (header.is_float) image.color_space = ColorSpace::linear;
+  return image;
+}
+
+std::string write_image(const Image& image, Format format, const ImageWriteOptions& options) {
+  const cv::Mat& m = image.pixels;
+  if (m.empty() || m.dims != 2) throw bad_input("cannot write an empty image");
+  const int depth = m.depth(), channels = m.channels();
+  if (depth != CV_8U && depth != CV_16U && depth != CV_32F)
+    refuse(m, format, "fest images are 8-bit, 16-bit or float");
+  const bool integer = depth != CV_32F;
+  switch (format) {
+    case Format::png:
+      if (!integer) refuse(m, format, "PNG holds 8 or 16-bit integers; convert explicitly");
+      if (channels == 2) return encode_png_grey_alpha(m);
+      return encode_with_opencv(m, ".png", {cv::IMWRITE_PNG_COMPRESSION, 6});
+    case Format::pgm:
+    case Format::ppm: {
+      const int wanted = format == Format::pgm ? 1 : 3;
+      if (!integer) refuse(m, format, "PGM/PPM hold 8 or 16-bit integers; use PFM for float");
+      if (channels != wanted) refuse(m, format, format == Format::pgm ? "PGM holds one channel" : "PPM holds RGB");
+      return encode_pnm(m, options.ascii);
+    }
+    case Format::pam:
+      if (!integer) refuse(m, format, "PAM holds 8 or 16-bit integers; use PFM or EXR for float");
+      return encode_pam(m);
+    case Format::pfm:
+      if (integer) refuse(m, format, "PFM holds float; convert explicitly");
+      if (channels != 1 && channels != 3) refuse(m, format, "PFM holds grey or RGB");
+      // OpenCV writes PFM correctly: little-endian (scale -1), rows bottom to top.
+      return encode_with_opencv(m, ".pfm", {});
+    case Format::exr:
+      if (integer) refuse(m, format, "EXR is written as half or float; convert explicitly");
+      return encode_exr(m, options.exr_half);
+    case Format::tiff:
+      if (channels == 2) refuse(m, format, "OpenCV's TIFF writer takes 1, 3 or 4 channels");
+      // No compression for float: OpenCV would otherwise pick lossy SGILOG for RGB float.
+      return encode_with_opencv(m, ".tiff", {cv::IMWRITE_TIFF_COMPRESSION, integer ? 5 /* LZW */ : 1 /* none */});
+    default:
+      throw bad_input("cannot write an image as {}", format_name_of(format));
+  }
+}
+
+}  // namespace fest::formats
