@@ -144,6 +144,19 @@ bool is_obj(std::string_view text) {
   return false;
 }
 
+// MetaImage headers are "Key = value" lines in any order; accept the keys that can
+// open one (ITK writes ObjectType first, other writers start with a Comment).
+bool is_metaimage(std::string_view b) {
+  static const char* keys[] = {"ObjectType", "NDims", "Comment", "ObjectSubType", "TransformType", "DimSize"};
+  for (const char* k : keys) {
+    if (!starts_with(b, k)) continue;
+    std::string_view rest = b.substr(std::strlen(k));
+    while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+    if (!rest.empty() && rest.front() == '=') return true;
+  }
+  return false;
+}
+
 Format detect_xml(std::string_view b, const std::string& where) {
   std::size_t vtk = b.substr(0, 4096).find("<VTKFile");
   if (vtk == std::string_view::npos)
@@ -233,7 +246,7 @@ Format detect_format(std::string_view b, const std::string& where) {
   if (starts_with(b, "solid") && b.size() < 1024 && b.find("endsolid") != std::string_view::npos)
     return Format::stl;  // an empty ascii STL: still an STL (the reader reports it)
   if (starts_with(text, "<?xml") || starts_with(text, "<VTKFile")) return detect_xml(text, where);
-  if (starts_with(b, "ObjectType") || starts_with(b, "NDims")) return Format::mha;
+  if (is_metaimage(b)) return Format::mha;
   if (!text.empty() && (text.front() == '{' || text.front() == '[')) return Format::json;
   if (is_off(b)) return Format::off;
   if (is_obj(b)) return Format::obj;

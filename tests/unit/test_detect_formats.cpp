@@ -72,6 +72,7 @@ TEST(Detect, BinaryStlIsRecognisedByItsSizeEvenIfItSaysSolid) {
 
 TEST(Detect, VolumesDatasetsTablesJson) {
   EXPECT_EQ(detect("ObjectType = Image\nNDims = 3\n"), Format::mha);
+  EXPECT_EQ(detect("Comment = made by hand\nObjectType = Image\n"), Format::mha);
   EXPECT_EQ(detect("# vtk DataFile Version 3.0\nx\nASCII\n"), Format::vtk);
   EXPECT_EQ(detect("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">"), Format::vtu);
   EXPECT_EQ(detect("<VTKFile type=\"ImageData\">"), Format::vti);
