@@ -1,0 +1,330 @@
+// PLY reader: ascii, binary little endian and binary big endian. The header is
+// parsed and size-checked by ply_header.cpp; this walks the body element by element.
+// Known properties: vertex x y z, nx ny nz, red green blue, s t / u v / texture_u
+// texture_v / texture_s texture_t; face vertex_indices (or vertex_index), red green
+// blue. Everything else (other properties, other elements) is read and skipped.
+
+#include <cmath>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "formats/mesh/mesh_builder.hpp"
+#include "formats/mesh/mesh_formats.hpp"
+#include "formats/mesh/ply_header.hpp"
+#include "formats/mesh/text_cursor.hpp"
+
+namespace fest::formats::mesh_detail {
+namespace {
+
+class BinarySource {
+ public:
+  BinarySource(std::string_view bytes, std::size_t start, bool big_endian)
+      : bytes_(bytes), pos_(start), big_endian_(big_endian) {}
+
+  bool read(PlyType type, double& out) {
+    const std::size_t size = ply_type_size(type);
+    if (bytes_.size() - pos_ < size) return false;
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + pos_, size);
+    pos_ += size;
+    if (big_endian_ != host_is_big_endian()) {
+      for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
+    }
+    switch (type) {
+      case PlyType::int8: { std::int8_t v; std::memcpy(&v, raw, 1); out = v; break; }
+      case PlyType::uint8: out = raw[0]; break;
+      case PlyType::int16: { std::int16_t v; std::memcpy(&v, raw, 2); out = v; break; }
+      case PlyType::uint16: { std::uint16_t v; std::memcpy(&v, raw, 2); out = v; break; }
+      case PlyType::int32: { std::int32_t v; std::memcpy(&v, raw, 4); out = v; break; }
+      case PlyType::uint32: { std::uint32_t v; std::memcpy(&v, raw, 4); out = v; break; }
+      case PlyType::float32: { float v; std::memcpy(&v, raw, 4); out = static_cast<double>(v); break; }
+      case PlyType::float64: std::memcpy(&out, raw, 8); break;
+    }
+    return true;
+  }
+  // Whether `count` items of `type` can still be there (checked before a list loop).
+  bool can_hold(std::uint64_t count, PlyType type) const {
+    return count <= (bytes_.size() - pos_) / ply_type_size(type);
+  }
+  // Binary files must end exactly after the last element.
+  std::size_t trailing() const { return bytes_.size() - pos_; }
+
+ private:
+  static bool host_is_big_endian() {
+    const std::uint16_t probe = 1;
+    unsigned char first;
+    std::memcpy(&first, &probe, 1);
+    return first == 0;
+  }
+  std::string_view bytes_;
+  std::size_t pos_;
+  bool big_endian_;
+};
+
+class AsciiSource {
+ public:
+  AsciiSource(std::string_view bytes, std::size_t start) : cursor_(bytes, start) {}
+
+  bool read(PlyType type, double& out) {
+    std::string_view token = cursor_.next_token();
+    if (!parse_double(token, out)) return false;
+    return !ply_type_is_integer(type) || std::floor(out) == out;
+  }
+  bool can_hold(std::uint64_t count, PlyType) const { return count <= cursor_.remaining() / 2 + 1; }
+  // Trailing whitespace is fine in a text file; anything else is not.
+  std::size_t trailing() {
+    cursor_.skip_whitespace();
+    return cursor_.remaining();
+  }
+
+ private:
+  TextCursor cursor_;
+};
+
+enum class Role { skip, x, y, z, nx, ny, nz, red, green, blue, u, v, indices };
+
+Role vertex_role(const std::string& name) {
+  struct Entry { const char* name; Role role; };
+  static const Entry entries[] = {
+      {"x", Role::x},          {"y", Role::y},          {"z", Role::z},
+      {"nx", Role::nx},        {"ny", Role::ny},        {"nz", Role::nz},
+      {"red", Role::red},      {"green", Role::green},  {"blue", Role::blue},
+      {"diffuse_red", Role::red}, {"diffuse_green", Role::green}, {"diffuse_blue", Role::blue},
+      {"s", Role::u},          {"t", Role::v},          {"u", Role::u},
+      {"v", Role::v},          {"texture_u", Role::u},  {"texture_v", Role::v},
+      {"texture_s", Role::u},  {"texture_t", Role::v},
+  };
+  for (const Entry& e : entries)
+    if (name == e.name) return e.role;
+  return Role::skip;
+}
+
+Role face_role(const std::string& name) {
+  if (name == "vertex_indices" || name == "vertex_index") return Role::indices;
+  if (name == "red") return Role::red;
+  if (name == "green") return Role::green;
+  if (name == "blue") return Role::blue;
+  return Role::skip;
+}
+
+struct Layout {
+  std::vector<Role> roles;
+  bool has(Role r) const {
+    for (Role role : roles)
+      if (role == r) return true;
+    return false;
+  }
+};
+
+Layout vertex_layout(const PlyElement& e) {
+  Layout layout;
+  for (const PlyProperty& p : e.properties) {
+    Role role = vertex_role(p.name);
+    if (role != Role::skip && p.is_list)
+      throw bad_input("PLY header: vertex property {} is a list, expected a scalar", p.name);
+    layout.roles.push_back(role);
+  }
+  if (e.count > 0 && !(layout.has(Role::x) && layout.has(Role::y) && layout.has(Role::z)))
+    throw bad_input("PLY header: vertex element lacks an x, y or z property");
+  return layout;
+}
+
+Layout face_layout(const PlyElement& e) {
+  Layout layout;
+  for (const PlyProperty& p : e.properties) {
+    Role role = face_role(p.name);
+    if (role == Role::indices && (!p.is_list || !ply_type_is_integer(p.type)))
+      throw bad_input("PLY header: face property {} must be a list of integers", p.name);
+    if (role != Role::skip && role != Role::indices && p.is_list)
+      throw bad_input("PLY header: face property {} is a list, expected a scalar", p.name);
+    layout.roles.push_back(role);
+  }
+  if (e.count > 0 && !layout.has(Role::indices)) throw bad_input("PLY header: face element has no vertex_indices list");
+  return layout;
+}
+
+std::uint8_t to_color(double value, PlyType type) {
+  return ply_type_is_integer(type) ? color_from_byte_range(value) : color_from_unit(value);
+}
+
+struct Faces {
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets{0};
+  std::vector<Mesh::Color> colors;
+};
+
+template <class Source>
+class BodyReader {
+ public:
+  BodyReader(Source& source, const PlyHeader& header, Mesh& mesh)
+      : source_(source), header_(header), mesh_(mesh) {}
+
+  void read_all(Faces& faces) {
+    for (const PlyElement& e : header_.elements) {
+      if (e.properties.empty()) continue;  // nothing stored per instance
+      if (e.name == "vertex") read_vertices(e);
+      else if (e.name == "face") read_faces(e, faces);
+      else skip_element(e);
+    }
+    if (std::size_t extra = source_.trailing(); extra != 0)
+      throw bad_input("PLY: {} bytes of unexpected data after the last element", extra);
+  }
+
+  std::uint64_t vertex_count() const {
+    for (const PlyElement& e : header_.elements)
+      if (e.name == "vertex") return e.count;
+    return 0;
+  }
+
+ private:
+  [[noreturn]] void truncated(const PlyElement& e, std::uint64_t i) {
+    throw bad_input("PLY body: {} {} of {} is truncated or not a valid number", e.name, i + 1, e.count);
+  }
+
+  double value(const PlyElement& e, std::uint64_t i, PlyType type) {
+    double v;
+    if (!source_.read(type, v)) truncated(e, i);
+    return v;
+  }
+
+  std::uint64_t list_length(const PlyElement& e, std::uint64_t i, const PlyProperty& p) {
+    double n = value(e, i, p.count_type);
+    // `n` is an integer (checked by the source); bound it before converting.
+    if (!(n >= 0) || n > 4294967295.0 || !source_.can_hold(static_cast<std::uint64_t>(n), p.type))
+      throw bad_input("PLY body: {} {} has a {} list of length {}, more than the file holds", e.name, i + 1, p.name, n);
+    return static_cast<std::uint64_t>(n);
+  }
+
+  void skip_list(const PlyElement& e, std::uint64_t i, const PlyProperty& p) {
+    std::uint64_t n = list_length(e, i, p);
+    for (std::uint64_t k = 0; k < n; ++k) value(e, i, p.type);
+  }
+
+  void read_vertices(const PlyElement& e) {
+    if (e.count > max_element_count) throw bad_input("PLY header: {} vertices are more than fest can hold", e.count);
+    Layout layout = vertex_layout(e);
+    const bool normals = layout.has(Role::nx) || layout.has(Role::ny) || layout.has(Role::nz);
+    const bool colors = layout.has(Role::red) || layout.has(Role::green) || layout.has(Role::blue);
+    const bool texcoords = layout.has(Role::u) || layout.has(Role::v);
+    if (normals) mesh_.request_vertex_normals();
+    if (colors) mesh_.request_vertex_colors();
+    if (texcoords) mesh_.request_vertex_texcoords2D();
+    mesh_.reserve(e.count, mesh_.n_edges(), mesh_.n_faces());
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      Mesh::Point point(0, 0, 0);
+      Mesh::Normal normal(0, 0, 0);
+      Mesh::Color color(0, 0, 0);
+      Mesh::TexCoord2D uv(0, 0);
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
+        if (p.is_list) {
+          skip_list(e, i, p);
+          continue;
+        }
+        double v = value(e, i, p.type);
+        switch (layout.roles[k]) {
+          case Role::x: point[0] = v; break;
+          case Role::y: point[1] = v; break;
+          case Role::z: point[2] = v; break;
+          case Role::nx: normal[0] = v; break;
+          case Role::ny: normal[1] = v; break;
+          case Role::nz: normal[2] = v; break;
+          case Role::red: color[0] = to_color(v, p.type); break;
+          case Role::green: color[1] = to_color(v, p.type); break;
+          case Role::blue: color[2] = to_color(v, p.type); break;
+          case Role::u: uv[0] = narrow_to_float(v); break;
+          case Role::v: uv[1] = narrow_to_float(v); break;
+          default: break;
+        }
+      }
+      Mesh::VertexHandle vh = mesh_.add_vertex(point);
+      if (normals) mesh_.set_normal(vh, normal);
+      if (colors) mesh_.set_color(vh, color);
+      if (texcoords) mesh_.set_texcoord2D(vh, uv);
+    }
+  }
+
+  void read_faces(const PlyElement& e, Faces& faces) {
+    if (e.count > max_element_count) throw bad_input("PLY header: {} faces are more than fest can hold", e.count);
+    Layout layout = face_layout(e);
+    const bool colors = layout.has(Role::red) || layout.has(Role::green) || layout.has(Role::blue);
+    const std::uint64_t n_vertices = vertex_count();
+    faces.offsets.reserve(e.count + 1);
+    if (colors) faces.colors.reserve(e.count);
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      Mesh::Color color(0, 0, 0);
+      bool have_indices = false;
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
+        if (layout.roles[k] == Role::indices && !have_indices) {
+          // A second vertex_indices list (nonsense, but possible) is skipped.
+          have_indices = true;
+          std::uint64_t n = list_length(e, i, p);
+          for (std::uint64_t j = 0; j < n; ++j) {
+            double index = value(e, i, p.type);
+            if (index < 0 || index >= static_cast<double>(n_vertices))
+              throw bad_input("PLY face {}: vertex index {} is out of range (the file has {} vertices)", i + 1, index,
+                              n_vertices);
+            faces.indices.push_back(static_cast<std::uint32_t>(index));
+          }
+          continue;
+        }
+        if (p.is_list) {
+          skip_list(e, i, p);
+          continue;
+        }
+        double v = value(e, i, p.type);
+        switch (layout.roles[k]) {
+          case Role::red: color[0] = to_color(v, p.type); break;
+          case Role::green: color[1] = to_color(v, p.type); break;
+          case Role::blue: color[2] = to_color(v, p.type); break;
+          default: break;
+        }
+      }
+      faces.offsets.push_back(faces.indices.size());
+      if (colors) faces.colors.push_back(color);
+    }
+  }
+
+  void skip_element(const PlyElement& e) {
+    for (std::uint64_t i = 0; i < e.count; ++i)
+      for (const PlyProperty& p : e.properties) {
+        if (p.is_list) skip_list(e, i, p);
+        else value(e, i, p.type);
+      }
+  }
+
+  Source& source_;
+  const PlyHeader& header_;
+  Mesh& mesh_;
+};
+
+}  // namespace
+
+Mesh read_ply(std::string_view bytes) {
+  PlyHeader header = parse_ply_header(bytes);
+  Mesh mesh;
+  Faces faces;
+  if (header.encoding == PlyEncoding::ascii) {
+    AsciiSource source(bytes, header.body_offset);
+    BodyReader<AsciiSource>(source, header, mesh).read_all(faces);
+  } else {
+    BinarySource source(bytes, header.body_offset, header.encoding == PlyEncoding::binary_big_endian);
+    BodyReader<BinarySource>(source, header, mesh).read_all(faces);
+  }
+  // Faces are added after every element is read: a file may list faces first.
+  const std::size_t n_faces = faces.offsets.size() - 1;
+  const bool colors = !faces.colors.empty();
+  if (colors) mesh.request_face_colors();
+  mesh.reserve(mesh.n_vertices(), mesh.n_vertices() + n_faces, n_faces);
+  MeshBuilder builder(mesh, "PLY");
+  for (std::size_t f = 0; f < n_faces; ++f) {
+    Mesh::FaceHandle fh =
+        builder.add_face(faces.indices.data() + faces.offsets[f], faces.offsets[f + 1] - faces.offsets[f], f + 1);
+    if (colors && fh.is_valid()) mesh.set_color(fh, faces.colors[f]);
+  }
+  builder.finish();
+  return mesh;
+}
+
+}  // namespace fest::formats::mesh_detail

@@ -1,0 +1,119 @@
+// PLY writer: ascii, or binary little endian. Positions and normals are stored as
+// `float` when every value is exactly a float and as `double` otherwise, so binary
+// output never rounds; ascii output writes shortest round-trip numbers.
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "formats/mesh/mesh_builder.hpp"
+#include "formats/mesh/mesh_formats.hpp"
+
+namespace fest::formats::mesh_detail {
+namespace {
+
+bool host_is_little_endian() {
+  const std::uint16_t probe = 1;
+  unsigned char first;
+  std::memcpy(&first, &probe, 1);
+  return first == 1;
+}
+
+template <typename T>
+void put_le(std::string& out, T value) {
+  unsigned char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  if (!host_is_little_endian())
+    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(raw[i], raw[sizeof(T) - 1 - i]);
+  out.append(reinterpret_cast<const char*>(raw), sizeof(T));
+}
+
+// A value that is float or double on output, as the header declared.
+void put_real(std::string& out, double value, bool as_float, bool ascii) {
+  if (ascii) append_number(out, value);
+  else if (as_float) put_le(out, narrow_to_float(value));
+  else put_le(out, value);
+}
+
+}  // namespace
+
+std::string write_ply(const Mesh& input, bool ascii) {
+  std::optional<Mesh> storage;
+  const Mesh& mesh = compacted(input, storage);
+  const bool normals = mesh.has_vertex_normals();
+  const bool colors = mesh.has_vertex_colors();
+  const bool texcoords = mesh.has_vertex_texcoords2D();
+  const bool face_colors = mesh.has_face_colors();
+  // Ascii text is exact either way; the declared type then only tells readers what
+  // precision to expect.
+  const bool float_points = points_are_floats(mesh);
+  const bool float_normals = normals_are_floats(mesh);
+  std::size_t max_valence = 0;
+  for (auto f : mesh.faces()) max_valence = std::max<std::size_t>(max_valence, mesh.valence(f));
+  const bool small_lists = max_valence <= 255;
+
+  std::string out = "ply\n";
+  out += ascii ? "format ascii 1.0\n" : "format binary_little_endian 1.0\n";
+  out += "comment written by fest\n";
+  fmt::format_to(std::back_inserter(out), "element vertex {}\n", mesh.n_vertices());
+  const char* point_type = float_points ? "float" : "double";
+  fmt::format_to(std::back_inserter(out), "property {0} x\nproperty {0} y\nproperty {0} z\n", point_type);
+  if (normals)
+    fmt::format_to(std::back_inserter(out), "property {0} nx\nproperty {0} ny\nproperty {0} nz\n",
+                   float_normals ? "float" : "double");
+  if (colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  if (texcoords) out += "property float s\nproperty float t\n";
+  fmt::format_to(std::back_inserter(out), "element face {}\n", mesh.n_faces());
+  out += small_lists ? "property list uchar int vertex_indices\n" : "property list int int vertex_indices\n";
+  if (face_colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  out += "end_header\n";
+
+  auto put_color = [&](const Mesh::Color& c) {
+    for (int k = 0; k < 3; ++k) {
+      if (ascii) fmt::format_to(std::back_inserter(out), " {}", static_cast<unsigned>(c[k]));
+      else out.push_back(static_cast<char>(c[k]));
+    }
+  };
+  for (auto v : mesh.vertices()) {
+    const Mesh::Point& p = mesh.point(v);
+    for (int k = 0; k < 3; ++k) {
+      if (ascii && k > 0) out.push_back(' ');
+      put_real(out, p[k], float_points, ascii);
+    }
+    if (normals) {
+      const Mesh::Normal& n = mesh.normal(v);
+      for (int k = 0; k < 3; ++k) {
+        if (ascii) out.push_back(' ');
+        put_real(out, n[k], float_normals, ascii);
+      }
+    }
+    if (colors) put_color(mesh.color(v));
+    if (texcoords) {
+      const Mesh::TexCoord2D& t = mesh.texcoord2D(v);
+      for (int k = 0; k < 2; ++k) {
+        if (ascii) {
+          out.push_back(' ');
+          append_number(out, t[k]);
+        } else {
+          put_le(out, t[k]);
+        }
+      }
+    }
+    if (ascii) out.push_back('\n');
+  }
+  for (auto f : mesh.faces()) {
+    const std::size_t valence = mesh.valence(f);
+    if (ascii) fmt::format_to(std::back_inserter(out), "{}", valence);
+    else if (small_lists) out.push_back(static_cast<char>(valence));
+    else put_le(out, static_cast<std::int32_t>(valence));
+    for (auto v : mesh.fv_range(f)) {
+      if (ascii) fmt::format_to(std::back_inserter(out), " {}", v.idx());
+      else put_le(out, static_cast<std::int32_t>(v.idx()));
+    }
+    if (face_colors) put_color(mesh.color(f));
+    if (ascii) out.push_back('\n');
+  }
+  return out;
+}
+
+}  // namespace fest::formats::mesh_detail
