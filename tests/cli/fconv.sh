@@ -4,7 +4,7 @@
 . "$(dirname "$0")/lib.sh"
 
 # A unit tetrahedron: 4 vertices, 4 triangles, closed, genus 0.
-cat >"$WORK/tet.off" <<'OFF'
+cat >"$WORK/tet.off" <<'MESH'
 OFF
 4 4 6
 0 0 0
@@ -15,7 +15,7 @@ OFF
 3 0 1 3
 3 0 3 2
 3 1 2 3
-OFF
+MESH
 
 case_ "info on an OFF file"
 run fconv --info "$WORK/tet.off"

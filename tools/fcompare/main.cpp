@@ -189,7 +189,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("-t,--threshold", opt.thresholds,
                  "Extra check METRIC<=VALUE or METRIC>=VALUE, e.g. 'psnr>=40', 'rms<=1e-4', 'dice>=0.9'; "
-                 "replaces the default check of the same metric");
+                 "replaces the default check of the same metric")
+      ->allow_extra_args(false);
   app.add_option("--samples", opt.samples, "Meshes: random surface samples per mesh besides the vertices")
       ->default_val(100000);
   app.add_flag("--ignore-counts", opt.ignore_counts, "Meshes: allow different vertex and face counts");

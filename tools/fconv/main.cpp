@@ -37,6 +37,8 @@ struct Options {
   int draco_speed = 5;
 };
 
+const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
+
 // What is known about the input before its content is parsed.
 nlohmann::json file_facts(const Input& in) {
   return {{"file", in.name},
@@ -118,8 +120,9 @@ int run(const Options& opt) {
   else if (!is_stdio(opt.output))
     out = output_format_from_path(opt.output);
   if (kind_of(out.format) != kind_of(in.format))
-    throw usage_error("cannot convert {} ({}) to {} (a {} format)", kind_name(kind_of(in.format)),
-                      format_name(in.format), format_name(out.format), kind_name(kind_of(out.format)));
+    throw usage_error("cannot convert {} {} ({}) to {}, which is {} {} format", article(kind_of(in.format)),
+                      kind_name(kind_of(in.format)), format_name(in.format), format_name(out.format),
+                      article(kind_of(out.format)), kind_name(kind_of(out.format)));
   // Convert completely before writing anything: bad input leaves no partial output.
   const std::string bytes = convert(in, out.format, opt);
   store_output(opt.output, bytes, out.gzip);
