@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "formats/table/table_io.hpp"
+#include "expect_error.hpp"
 #include "testdata.hpp"
 
 using fest::formats::read_json;
@@ -14,15 +15,7 @@ using fest::formats::write_json;
 
 namespace {
 
-void expect_bad_input(const std::function<void()>& f, const std::string& needle = "") {
-  try {
-    f();
-    ADD_FAILURE() << "no error thrown (expected one mentioning '" << needle << "')";
-  } catch (const fest::Error& e) {
-    EXPECT_EQ(e.status(), fest::Status::bad_input) << e.what();
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << "message: " << e.what();
-  }
-}
+using fest::test::expect_bad_input;
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "formats/gzip.hpp"
 #include "formats/volume/volume_io.hpp"
+#include "expect_error.hpp"
 #include "testdata.hpp"
 
 using fest::ScalarType;
@@ -17,15 +18,7 @@ using fest::formats::write_volume;
 
 namespace {
 
-void expect_bad_input(const std::function<void()>& f, const std::string& needle = "") {
-  try {
-    f();
-    ADD_FAILURE() << "no error thrown (expected one mentioning '" << needle << "')";
-  } catch (const fest::Error& e) {
-    EXPECT_EQ(e.status(), fest::Status::bad_input) << e.what();
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << "message: " << e.what();
-  }
-}
+using fest::test::expect_bad_input;
 
 Volume mha(const std::string& text) { return read_volume(text, Format::mha); }
 
