@@ -25,8 +25,10 @@ struct SurfaceDistance {
 // Samples every vertex and `extra_samples` area-weighted random points (fixed seed) on
 // each mesh, and measures each sample's distance to the other surface (exact
 // point-triangle distance through an AABB tree; polygons are fan-triangulated).
+// The samples are split into fixed chunks whose partial sums are added in order, so
+// the figures are identical for every thread count.
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra_samples = 100000,
-                                 std::uint64_t seed = 1);
+                                 std::uint64_t seed = 1, int threads = 1);
 
 struct MeshTopology {
   std::size_t vertices = 0;

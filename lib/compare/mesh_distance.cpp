@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <cmath>
 #include <vector>
 
@@ -74,7 +76,48 @@ double bbox_diagonal(const Mesh& mesh) {
 
 }  // namespace
 
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra_samples, std::uint64_t seed) {
+namespace {
+
+struct SideResult {
+  double worst = 0, sum_sq = 0, sum = 0;
+};
+
+// Distances of `samples` to `other`, in kChunks fixed slices handed to `threads`
+// workers; slices are combined in index order (deterministic floating-point sums).
+SideResult one_side(const std::vector<Vec3>& samples, const TriangleTree& other, double resolution, int threads) {
+  constexpr std::size_t kChunks = 64;
+  std::vector<SideResult> parts(kChunks);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t c; (c = next.fetch_add(1)) < kChunks;) {
+      const std::size_t begin = samples.size() * c / kChunks, end = samples.size() * (c + 1) / kChunks;
+      SideResult& r = parts[c];
+      for (std::size_t i = begin; i < end; ++i) {
+        double dist = std::sqrt(other.squared_distance(samples[i]));
+        if (dist <= resolution) dist = 0;
+        r.worst = std::max(r.worst, dist);
+        r.sum_sq += dist * dist;
+        r.sum += dist;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  SideResult total;
+  for (const SideResult& r : parts) {
+    total.worst = std::max(total.worst, r.worst);
+    total.sum_sq += r.sum_sq;
+    total.sum += r.sum;
+  }
+  return total;
+}
+
+}  // namespace
+
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra_samples, std::uint64_t seed,
+                                 int threads) {
   SurfaceDistance d;
   std::vector<Triangle> ta = triangles_of(a), tb = triangles_of(b);
   const std::vector<Vec3> sa = sample_surface(a, ta, extra_samples, seed);
@@ -84,25 +127,16 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra
   d.samples_a = sa.size();
   d.samples_b = sb.size();
 
-  double sum_sq = 0, sum = 0;
-  auto one_side = [&](const std::vector<Vec3>& samples, const TriangleTree& other) {
-    double worst = 0;
-    for (const Vec3& p : samples) {
-      double dist = std::sqrt(other.squared_distance(p));
-      if (dist <= d.resolution) dist = 0;
-      worst = std::max(worst, dist);
-      sum_sq += dist * dist;
-      sum += dist;
-    }
-    return worst;
-  };
-  d.max_a_to_b = one_side(sa, tree_b);
-  d.max_b_to_a = one_side(sb, tree_a);
+  threads = std::max(threads, 1);
+  const SideResult ab = one_side(sa, tree_b, d.resolution, threads);
+  const SideResult ba = one_side(sb, tree_a, d.resolution, threads);
+  d.max_a_to_b = ab.worst;
+  d.max_b_to_a = ba.worst;
   d.hausdorff = std::max(d.max_a_to_b, d.max_b_to_a);
   const double n = static_cast<double>(sa.size() + sb.size());
   if (n > 0) {
-    d.rms = std::sqrt(sum_sq / n);
-    d.mean = sum / n;
+    d.rms = std::sqrt((ab.sum_sq + ba.sum_sq) / n);
+    d.mean = (ab.sum + ba.sum) / n;
   }
   return d;
 }

@@ -133,3 +133,12 @@ TEST(Topology, TwoComponentsAndAnIsolatedVertex) {
   EXPECT_EQ(t.genus, 0);
   EXPECT_EQ(t.euler, 3);  // sphere 2 + disc 1
 }
+
+TEST(SurfaceDistance, SameFiguresForEveryThreadCount) {
+  const Mesh a = torus(24, 12), b = cube(-1, 1);
+  const auto one = fest::compare::surface_distance(a, b, 5000, 7, 1);
+  const auto four = fest::compare::surface_distance(a, b, 5000, 7, 4);
+  EXPECT_EQ(one.hausdorff, four.hausdorff);
+  EXPECT_EQ(one.rms, four.rms);  // bit-identical: fixed chunks, ordered sums
+  EXPECT_EQ(one.mean, four.mean);
+}

@@ -17,6 +17,7 @@
 #include "compare/volume_compare.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/threads.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -34,6 +35,7 @@ struct Options {
   double tol = 0;
   std::vector<std::string> thresholds;
   std::size_t samples = 100000;
+  int threads = 0;
   bool ignore_counts = false;
   bool ignore_topology = false;
   std::string report;
@@ -71,7 +73,7 @@ void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metric
     }
     m.set("vertex_max_abs", worst);
   }
-  const auto d = compare::surface_distance(a, b, opt.samples);
+  const auto d = compare::surface_distance(a, b, opt.samples, 1, resolve_threads(opt.threads));
   m.set("hausdorff", d.hausdorff);
   m.set("rms", d.rms);
   m.set("mean", d.mean);
@@ -193,6 +195,7 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   app.add_option("--samples", opt.samples, "Meshes: random surface samples per mesh besides the vertices")
       ->default_val(100000);
+  fest::cli::add_threads(app, opt.threads);
   app.add_flag("--ignore-counts", opt.ignore_counts, "Meshes: allow different vertex and face counts");
   app.add_flag("--ignore-topology", opt.ignore_topology, "Meshes: allow different genus, boundaries, components");
   app.add_option("--report", opt.report, "Write every metric and check as JSON to this file");
