@@ -3,7 +3,9 @@
 // and the format they are in.
 
 #include <string>
+#include <utility>
 
+#include "core/error.hpp"
 #include "formats/detect.hpp"
 
 namespace fest::formats {
@@ -21,6 +23,18 @@ Input load_input(const std::string& path);
 
 // The same for bytes already in memory (tests, fuzzers).
 Input recognise(std::string bytes, const std::string& name = "-");
+
+// Runs a reader on an input, naming the input in any bad-input error it throws
+// ("PLY header: ... (bunny.ply)"): parse(in, read_mesh).
+template <typename Reader>
+auto parse(const Input& in, Reader&& read) -> decltype(read(in.bytes, in.format)) {
+  try {
+    return std::forward<Reader>(read)(in.bytes, in.format);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), in.name));
+  }
+}
 
 // Writes bytes to a path or standard output ("-"), gzip-compressing first when asked;
 // atomically for files.

@@ -51,8 +51,8 @@ nlohmann::json topology_json(const compare::MeshTopology& t) {
 }
 
 void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
-  const Mesh a = read_mesh(ia.bytes, ia.format);
-  const Mesh b = read_mesh(ib.bytes, ib.format);
+  const Mesh a = parse(ia, read_mesh);
+  const Mesh b = parse(ib, read_mesh);
   const auto ta = compare::mesh_topology(a), tb = compare::mesh_topology(b);
   m.details["topology_a"] = topology_json(ta);
   m.details["topology_b"] = topology_json(tb);
@@ -93,8 +93,8 @@ void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metric
 }
 
 void compare_images(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
-  const Image a = read_image(ia.bytes, ia.format);
-  const Image b = read_image(ib.bytes, ib.format);
+  const Image a = parse(ia, read_image);
+  const Image b = parse(ib, read_image);
   const auto e = compare::image_error(a.pixels, b.pixels);
   m.set("rmse", e.all.rmse);
   m.set("psnr", e.all.psnr);
@@ -108,8 +108,8 @@ void compare_images(const Input& ia, const Input& ib, const Options& opt, Metric
 }
 
 void compare_volumes(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
-  const Volume a = read_volume(ia.bytes, ia.format);
-  const Volume b = read_volume(ib.bytes, ib.format);
+  const Volume a = parse(ia, read_volume);
+  const Volume b = parse(ib, read_volume);
   const auto e = compare::volume_error(a, b);
   m.set("max_abs", e.max_abs);
   m.set("rmse", e.rmse);
@@ -128,8 +128,8 @@ void compare_volumes(const Input& ia, const Input& ib, const Options& opt, Metri
 }
 
 void compare_tables(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
-  const Table a = read_table(ia.bytes, ia.format);
-  const Table b = read_table(ib.bytes, ib.format);
+  const Table a = parse(ia, read_table);
+  const Table b = parse(ib, read_table);
   const auto e = compare::table_error(a, b);
   m.set("max_abs", e.max_abs);
   m.set("max_rel", e.max_rel);

@@ -37,6 +37,9 @@ struct Options {
   int draco_speed = 5;
 };
 
+// read_json takes no format; this gives it the reader shape parse() expects.
+nlohmann::json read_json_as(std::string_view bytes, Format) { return read_json(bytes); }
+
 const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
 
 // What is known about the input before its content is parsed.
@@ -52,13 +55,13 @@ nlohmann::json describe(const Input& in) {
   nlohmann::json facts = file_facts(in);
   nlohmann::json content;
   switch (kind_of(in.format)) {
-    case Kind::mesh: content = describe_mesh(read_mesh(in.bytes, in.format)); break;
-    case Kind::image: content = describe_image(read_image(in.bytes, in.format)); break;
-    case Kind::volume: content = describe_volume(read_volume(in.bytes, in.format)); break;
-    case Kind::dataset: content = describe_dataset(read_dataset(in.bytes, in.format)); break;
-    case Kind::table: content = describe_table(read_table(in.bytes, in.format)); break;
+    case Kind::mesh: content = describe_mesh(parse(in, read_mesh)); break;
+    case Kind::image: content = describe_image(parse(in, read_image)); break;
+    case Kind::volume: content = describe_volume(parse(in, read_volume)); break;
+    case Kind::dataset: content = describe_dataset(parse(in, read_dataset)); break;
+    case Kind::table: content = describe_table(parse(in, read_table)); break;
     case Kind::json: {
-      nlohmann::json doc = read_json(in.bytes);
+      nlohmann::json doc = parse(in, read_json_as);
       content = {{"type", doc.type_name()}, {"size", doc.size()}};
       break;
     }
@@ -74,13 +77,13 @@ std::string convert(const Input& in, Format to, const Options& opt) {
       w.ascii = opt.ascii;
       w.draco_position_bits = opt.draco_bits;
       w.draco_speed = opt.draco_speed;
-      return write_mesh(read_mesh(in.bytes, in.format), to, w);
+      return write_mesh(parse(in, read_mesh), to, w);
     }
     case Kind::image: {
       ImageWriteOptions w;
       w.ascii = opt.ascii;
       w.exr_half = opt.half;
-      return write_image(read_image(in.bytes, in.format), to, w);
+      return write_image(parse(in, read_image), to, w);
     }
     case Kind::volume: {
       VolumeWriteOptions w;
@@ -93,15 +96,15 @@ std::string convert(const Input& in, Format to, const Options& opt) {
                             opt.volume_type);
         w.type = t;
       }
-      return write_volume(read_volume(in.bytes, in.format), to, w);
+      return write_volume(parse(in, read_volume), to, w);
     }
     case Kind::dataset: {
       DatasetWriteOptions w;
       w.ascii = opt.ascii;
-      return write_dataset(read_dataset(in.bytes, in.format), to, w);
+      return write_dataset(parse(in, read_dataset), to, w);
     }
-    case Kind::table: return write_table(read_table(in.bytes, in.format), to);
-    case Kind::json: return write_json(read_json(in.bytes));
+    case Kind::table: return write_table(parse(in, read_table), to);
+    case Kind::json: return write_json(parse(in, read_json_as));
   }
   throw usage_error("unsupported conversion");
 }
