@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "formats/mesh/mesh_builder.hpp"
+#include "formats/mesh/draco_counts.hpp"
 #include "formats/mesh/mesh_formats.hpp"
 
 namespace fest::formats::mesh_detail {
@@ -117,6 +118,7 @@ Mesh read_drc(std::string_view bytes) {
   buffer.Init(bytes.data(), bytes.size());
   auto type = draco::Decoder::GetEncodedGeometryType(&buffer);
   if (!type.ok()) throw bad_input("Draco header: {}", type.status().error_msg_string());
+  check_draco_counts(bytes);
   draco::Decoder decoder;
   if (type.value() == draco::TRIANGULAR_MESH) {
     auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
