@@ -202,8 +202,10 @@ TEST(ImageMalformed, AbsurdDimensions) {
 }
 
 TEST(ImageMalformed, MaxvalOutOfRange) {
-  for (const char* s : {"P5\n2 1\n0\n\0\0", "P5\n2 1\n70000\n\0\0\0\0", "P2\n2 1\n0\n0 0\n", "P2\n2 1\n-1\n0 0\n"})
-    expect_rejected(std::string(s, std::char_traits<char>::length(s) + 4), Format::pgm);
+  // std::string literals keep the embedded NUL pixel bytes (a const char* would stop at them).
+  using namespace std::string_literals;
+  for (const std::string& s : {"P5\n2 1\n0\n\0\0"s, "P5\n2 1\n70000\n\0\0\0\0"s, "P2\n2 1\n0\n0 0\n"s, "P2\n2 1\n-1\n0 0\n"s})
+    expect_rejected(s, Format::pgm);
   expect_rejected("P7\nWIDTH 1\nHEIGHT 1\nDEPTH 1\nMAXVAL 70000\nENDHDR\n\0\0", Format::pam);
   expect_rejected("P7\nWIDTH 1\nHEIGHT 1\nDEPTH 1\nMAXVAL 0\nENDHDR\n\0", Format::pam);
 }
