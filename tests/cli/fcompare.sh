@@ -77,6 +77,40 @@ run fcompare "$WORK/a.csv" "$WORK/b.csv" --tol 0.4
 expect_status 1
 expect_stderr_has "max_abs = 0.5 exceeds 0.4"
 
+# The committed two-tetrahedron grid, and copies with one velocity component changed by
+# 0.25 and with the cells' shared face reordered.
+vtu="$FEST_FIXTURES/dataset/rotating_tets.vtu"
+sed 's/^          -1 1 0$/          -1 1.25 0/' "$vtu" >"$WORK/moved.vtu"
+sed 's/^          1 2 3 4$/          1 3 2 4/' "$vtu" >"$WORK/flipped.vtu"
+case_ "datasets: identical through another format"
+"$FEST_BIN/fconv" --to vtk <"$vtu" >"$WORK/tets.vtk"
+run fcompare "$vtu" "$WORK/tets.vtk"
+expect_status 0
+check "no cell differences" grep -qx "cell_diffs 0" "$out"
+case_ "datasets: an array value off by 0.25"
+run fcompare "$vtu" "$WORK/moved.vtu" --report "$WORK/ds.json"
+expect_status 1
+expect_stderr_has "max_abs = 0.25 exceeds 0"
+check "the array is named" test "$(jq '.details.arrays["point:velocity"]' "$WORK/ds.json")" = "0.25"
+run fcompare --tol 0.25 "$vtu" "$WORK/moved.vtu"
+expect_status 0
+case_ "datasets: a reordered cell"
+run fcompare "$vtu" "$WORK/flipped.vtu"
+expect_status 1
+expect_stderr_has "cell_diffs = 1 exceeds 0"
+
+case_ "JSON: numbers by tolerance, structure exactly"
+printf '{"a": 1, "b": [1, 2], "s": "x"}' >"$WORK/a.json"
+printf '{"b": [1, 2.5], "a": 1, "s": "x"}' >"$WORK/b.json"
+printf '{"a": 1, "b": [1, 2], "s": "y"}' >"$WORK/c.json"
+run fcompare "$WORK/a.json" "$WORK/b.json" --tol 0.5
+expect_status 0
+run fcompare "$WORK/a.json" "$WORK/b.json"
+expect_status 1
+run fcompare "$WORK/a.json" "$WORK/c.json" --tol 1 --report "$WORK/j.json"
+expect_status 1
+check "first structural difference" test "$(jq -r .details.first_structural_diff "$WORK/j.json")" = "/s"
+
 case_ "bad usage and bad input"
 run fcompare "$WORK/a.off" "$WORK/a.pgm"
 expect_clean_failure 3 fcompare

@@ -5,6 +5,7 @@
 
 #include "compare/checks.hpp"
 #include "compare/image_compare.hpp"
+#include "compare/json_compare.hpp"
 #include "compare/table_compare.hpp"
 #include "compare/volume_compare.hpp"
 #include "core/error.hpp"
@@ -113,4 +114,18 @@ TEST(Checks, NanFailsAndJsonHasNoInfinity) {
   EXPECT_EQ(m.evaluate().size(), 1u);
   EXPECT_TRUE(m.to_json()["metrics"]["rmse"].is_null());
   EXPECT_FALSE(m.to_json()["pass"].get<bool>());
+}
+
+TEST(JsonDifference, NumbersByValueStructureExactly) {
+  const auto a = nlohmann::json::parse(R"({"x": 1, "y": [1, 2, {"z": 3}], "s": "t"})");
+  const auto same_keys_reordered = nlohmann::json::parse(R"({"s": "t", "y": [1, 2, {"z": 3.5}], "x": 1})");
+  auto d = json_difference(a, same_keys_reordered);
+  EXPECT_EQ(d.max_abs, 0.5);
+  EXPECT_EQ(d.numbers, 4u);
+  EXPECT_EQ(d.structural, 0u);
+
+  d = json_difference(a, nlohmann::json::parse(R"({"x": "1", "y": [1, 2], "s": "t", "extra": null})"));
+  // "x" changes kind, "y" loses an element, "extra" is new: three structural differences.
+  EXPECT_EQ(d.structural, 3u);
+  EXPECT_EQ(d.first_structural_path, "/x");
 }
