@@ -37,9 +37,6 @@ struct Options {
   int draco_speed = 5;
 };
 
-// read_json takes no format; this gives it the reader shape parse() expects.
-nlohmann::json read_json_as(std::string_view bytes, Format) { return read_json(bytes); }
-
 const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
 
 // What is known about the input before its content is parsed.
@@ -61,7 +58,7 @@ nlohmann::json describe(const Input& in) {
     case Kind::dataset: content = describe_dataset(parse(in, read_dataset)); break;
     case Kind::table: content = describe_table(parse(in, read_table)); break;
     case Kind::json: {
-      nlohmann::json doc = parse(in, read_json_as);
+      nlohmann::json doc = parse(in, read_json_document);
       content = {{"type", doc.type_name()}, {"size", doc.size()}};
       break;
     }
@@ -104,7 +101,7 @@ std::string convert(const Input& in, Format to, const Options& opt) {
       return write_dataset(parse(in, read_dataset), to, w);
     }
     case Kind::table: return write_table(parse(in, read_table), to);
-    case Kind::json: return write_json(parse(in, read_json_as));
+    case Kind::json: return write_json(parse(in, read_json_document));
   }
   throw usage_error("unsupported conversion");
 }
