@@ -1,0 +1,108 @@
+#include "sampling/float_image.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/error.hpp"
+#include "sampling/srgb.hpp"
+
+namespace fest::sampling {
+
+int alpha_channel(int channels) {
+  if (channels == 2) return 1;
+  if (channels == 4) return 3;
+  return -1;
+}
+
+void check_supported(const Image& in) {
+  const cv::Mat& m = in.pixels;
+  if (m.empty() || m.rows <= 0 || m.cols <= 0) throw bad_input("resize: the input image is empty");
+  if (m.dims != 2) throw bad_input("resize: the input is not a 2-D image ({} dimensions)", m.dims);
+  if (m.channels() < 1 || m.channels() > 4)
+    throw bad_input("resize: {} channels are not supported (1 to 4)", m.channels());
+  const int d = m.depth();
+  if (d != CV_8U && d != CV_16U && d != CV_32F)
+    throw bad_input("resize: pixel depth {} is not supported (8-bit, 16-bit or 32-bit float)", d);
+}
+
+namespace {
+
+template <typename T>
+void decode_rows(const cv::Mat& m, FloatImage& out, const Encoding& enc, float (*decode)(T), float scale) {
+  const int c = out.channels, a = alpha_channel(c);
+  for (int y = 0; y < m.rows; ++y) {
+    const T* src = m.ptr<T>(y);
+    float* dst = out.row(y);
+    for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
+      for (int ch = 0; ch < c; ++ch) {
+        const bool colour = ch != a;
+        dst[ch] = (colour && enc.decode_srgb) ? decode(src[ch]) : static_cast<float>(src[ch]) * scale;
+      }
+      if (enc.premultiply && a >= 0)
+        for (int ch = 0; ch < c; ++ch)
+          if (ch != a) dst[ch] *= dst[a];
+    }
+  }
+}
+
+float decode_float(float v) { return srgb_to_linear(v); }
+
+template <typename T>
+T quantise(float v, float max_code) {
+  const float scaled = v * max_code + 0.5f;  // round half up: 127.5 -> 128
+  if (!(scaled > 0)) return 0;                // also maps NaN to 0
+  if (scaled >= max_code) return static_cast<T>(max_code);
+  return static_cast<T>(std::floor(scaled));
+}
+
+}  // namespace
+
+FloatImage to_working(const Image& in, const Encoding& enc) {
+  check_supported(in);
+  const cv::Mat& m = in.pixels;
+  FloatImage out(m.cols, m.rows, m.channels());
+  switch (m.depth()) {
+    case CV_8U:
+      decode_rows<std::uint8_t>(m, out, enc, srgb8_to_linear, 1.0f / 255);
+      break;
+    case CV_16U:
+      decode_rows<std::uint16_t>(m, out, enc, srgb16_to_linear, 1.0f / 65535);
+      break;
+    default:
+      decode_rows<float>(m, out, enc, decode_float, 1.0f);
+      break;
+  }
+  return out;
+}
+
+cv::Mat from_working(const FloatImage& img, int depth, const Encoding& enc) {
+  const int c = img.channels, a = alpha_channel(c);
+  cv::Mat out(img.height, img.width, CV_MAKETYPE(depth, c));
+  std::vector<float> px(static_cast<std::size_t>(c));
+  for (int y = 0; y < img.height; ++y) {
+    const float* src = img.row(y);
+    for (int x = 0; x < img.width; ++x, src += c) {
+      for (int ch = 0; ch < c; ++ch) px[static_cast<std::size_t>(ch)] = src[ch];
+      if (enc.premultiply && a >= 0) {
+        const float alpha = px[static_cast<std::size_t>(a)];
+        for (int ch = 0; ch < c; ++ch)
+          if (ch != a) px[static_cast<std::size_t>(ch)] = alpha < 1e-6f ? 0.0f : px[static_cast<std::size_t>(ch)] / alpha;
+      }
+      if (enc.decode_srgb)
+        for (int ch = 0; ch < c; ++ch)
+          if (ch != a) px[static_cast<std::size_t>(ch)] = linear_to_srgb(px[static_cast<std::size_t>(ch)]);
+      for (int ch = 0; ch < c; ++ch) {
+        const float v = px[static_cast<std::size_t>(ch)];
+        if (depth == CV_8U)
+          out.ptr<std::uint8_t>(y)[x * c + ch] = quantise<std::uint8_t>(v, 255.0f);
+        else if (depth == CV_16U)
+          out.ptr<std::uint16_t>(y)[x * c + ch] = quantise<std::uint16_t>(v, 65535.0f);
+        else
+          out.ptr<float>(y)[x * c + ch] = v;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace fest::sampling

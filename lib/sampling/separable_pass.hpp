@@ -1,0 +1,17 @@
+#pragma once
+// One axis of the separable resize (spec §2.4 step 5). Rows are independent, so they are
+// split across threads; each output value is summed in the same order whatever the
+// thread count, which keeps the output bit-identical for any --threads.
+
+#include "sampling/float_image.hpp"
+#include "sampling/weight_table.hpp"
+
+namespace fest::sampling {
+
+// Resamples along x: table.n_in == in.width; the result is table.n_out wide.
+FloatImage resample_rows(const FloatImage& in, const WeightTable& table, int threads);
+
+// Resamples along y: table.n_in == in.height; the result is table.n_out high.
+FloatImage resample_columns(const FloatImage& in, const WeightTable& table, int threads);
+
+}  // namespace fest::sampling
