@@ -8,7 +8,7 @@
 
 namespace fest::sampling {
 
-// Anti-ringing clamp (§2.4 step 7). `local` is not implemented yet.
+// Anti-ringing clamp (§2.4 step 7). The spec's fourth mode, `local`, is not offered yet.
 enum class ClampMode {
   automatic,  // `range` for integer outputs (saturation does it), `none` for float
   none,       // keep negative lobes' overshoot
