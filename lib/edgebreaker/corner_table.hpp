@@ -1,0 +1,32 @@
+#pragma once
+// Rossignac's corner table (spec 2.1) and the checks that make a triangle list one the
+// chapter's coder can take: closed, manifold, oriented, connected, genus 0.
+
+#include <vector>
+
+#include "edgebreaker/clers.hpp"
+
+namespace fest::edgebreaker {
+
+// Triangle t owns corners 3t, 3t+1, 3t+2 in the input's vertex order, so orientation is
+// kept. O[c] is the corner across the edge (V[next(c)], V[prev(c)]), or -1 while open.
+struct CornerTable {
+  std::vector<int> V;
+  std::vector<int> O;
+  int vertex_count = 0;
+
+  int corners() const { return static_cast<int>(V.size()); }
+  int triangles() const { return corners() / 3; }
+};
+
+inline int next(int c) { return c - c % 3 + (c + 1) % 3; }
+inline int prev(int c) { return next(next(c)); }
+// right(c): the corner across the edge (V[c], V[prev(c)]); left(c): across (V[next(c)], V[c]).
+inline int right(const CornerTable& t, int c) { return t.O[static_cast<std::size_t>(next(c))]; }
+inline int left(const CornerTable& t, int c) { return t.O[static_cast<std::size_t>(prev(c))]; }
+
+// Builds the table and checks the mesh; throws fest::Error(bad_input) naming the first
+// offending triangle, edge or vertex. O(t log t): sorting the directed edges.
+CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count);
+
+}  // namespace fest::edgebreaker
