@@ -12,6 +12,7 @@
 #include "formats/volume/volume_io.hpp"
 #include "expect_error.hpp"
 #include "testdata.hpp"
+#include "volume_fixtures.hpp"
 
 using fest::ScalarType;
 using fest::Volume;
@@ -43,11 +44,7 @@ void put_f32(std::string& b, std::size_t off, float v) { std::memcpy(&b[off], &v
 
 TEST(VolumeNifti, BigEndianFixtureHasFormulaValuesAndSform) {
   const Volume v = read_volume(fest::test::slurp(fest::test::fixture("volume/be_int16.nii")), Format::nifti);
-  ASSERT_EQ(v.dims, (std::array<std::size_t, 3>{4, 3, 2}));
-  EXPECT_EQ(v.type, ScalarType::i16);
-  for (std::size_t z = 0; z < 2; ++z)
-    for (std::size_t y = 0; y < 3; ++y)
-      for (std::size_t x = 0; x < 4; ++x) EXPECT_EQ(v.at(x, y, z), double(x) + 10.0 * y + 100.0 * z - 50.0);
+  fest::test::expect_formula_int16_fixture(v);
   EXPECT_EQ(v.spacing, (std::array<double, 3>{1.5, 2.0, 2.5}));
   EXPECT_EQ(v.origin, (std::array<double, 3>{10.0, -20.0, 5.0}));
   EXPECT_EQ(v.direction, (std::array<double, 9>{-1, 0, 0, 0, 1, 0, 0, 0, 1}));
