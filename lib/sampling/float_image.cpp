@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/error.hpp"
+#include "sampling/sample_patterns.hpp"
 #include "sampling/srgb.hpp"
 
 namespace fest::sampling {
@@ -46,6 +47,14 @@ void decode_rows(const cv::Mat& m, FloatImage& out, const Encoding& enc, float (
 }
 
 float decode_float(float v) { return srgb_to_linear(v); }
+
+// Triangular noise on [-½, ½] (the difference of two uniforms, halved): it decorrelates
+// the rounding error from the signal without the noise floor of a wider dither.
+float dither_noise(std::uint64_t seed, int x, int y, int ch) {
+  const std::uint64_t h = hash64(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y), static_cast<std::uint64_t>(ch));
+  const double u1 = static_cast<double>(h >> 40) * 0x1.0p-24, u2 = static_cast<double>(h & 0xffffffu) * 0x1.0p-24;
+  return static_cast<float>(0.5 * (u1 - u2));
+}
 
 template <typename T>
 T quantise(float v, float max_code) {
@@ -92,7 +101,8 @@ cv::Mat from_working(const FloatImage& img, int depth, const Encoding& enc) {
         for (int ch = 0; ch < c; ++ch)
           if (ch != a) px[static_cast<std::size_t>(ch)] = linear_to_srgb(px[static_cast<std::size_t>(ch)]);
       for (int ch = 0; ch < c; ++ch) {
-        const float v = px[static_cast<std::size_t>(ch)];
+        float v = px[static_cast<std::size_t>(ch)];
+        if (enc.dither && depth != CV_32F) v += dither_noise(enc.seed, x, y, ch) / (depth == CV_8U ? 255.0f : 65535.0f);
         if (depth == CV_8U)
           out.ptr<std::uint8_t>(y)[x * c + ch] = quantise<std::uint8_t>(v, 255.0f);
         else if (depth == CV_16U)

@@ -3,6 +3,7 @@
 // top-down, in linear light with premultiplied alpha unless told otherwise.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/image.hpp"
@@ -25,6 +26,8 @@ struct FloatImage {
 struct Encoding {
   bool decode_srgb = false;  // colour channels are sRGB codes: decode to linear and back
   bool premultiply = false;  // an alpha channel exists and colour is multiplied by it
+  bool dither = false;       // from_working: triangular noise of ±½ LSB before rounding
+  std::uint64_t seed = 1;    // of the dither noise (a pure function of seed and position)
 };
 
 // The channel that holds alpha (grey+alpha or RGBA), or -1.
@@ -37,7 +40,8 @@ void check_supported(const Image& in);
 FloatImage to_working(const Image& in, const Encoding& enc);
 
 // The inverse of to_working, into an image of the given depth: un-premultiply (α < 1e-6
-// gives colour 0), sRGB-encode, and round to nearest (saturating) for integer depths.
+// gives colour 0), sRGB-encode, and round to nearest (saturating) for integer depths,
+// dithered when `enc.dither`.
 cv::Mat from_working(const FloatImage& img, int depth, const Encoding& enc);
 
 }  // namespace fest::sampling

@@ -17,6 +17,9 @@ struct Kernel {
   double radius = 0;
   bool interpolating = false;  // k(0) = 1 and k(n) = 0 at the other integers
   bool nearest = false;        // `point`: pick the nearest sample, no filtering
+  // dual:R only: the spelling of the display's reconstruction filter R (resize correlates
+  // with R, then applies the discrete inverse of R's sampled autocorrelation, §2.2).
+  std::string reconstruction;
   // k(x), not normalised (resize normalises its weights; responses divide by K(0)).
   // Empty where the kernel has no finite spatial form (dual:*).
   std::function<double(double)> spatial;

@@ -161,6 +161,7 @@ Kernel dual(const KernelSpelling& s) {
   }
   Kernel k;
   k.name = "dual:" + r.name;
+  k.reconstruction = r.name;
   k.radius = infinity;  // an IIR filter
   k.response = [r](double f) {
     double a = 0;

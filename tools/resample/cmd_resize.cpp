@@ -1,0 +1,138 @@
+// resample resize / display / mip: images through the separable resize of lib/sampling.
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "image_files.hpp"
+#include "sampling/display_model.hpp"
+#include "sampling/resize.hpp"
+#include "sizes.hpp"
+
+namespace resample_tool {
+
+using namespace fest;
+using namespace fest::sampling;
+
+namespace {
+
+EdgeMode parse_edge(const std::string& s) {
+  if (s == "clamp") return EdgeMode::clamp;
+  if (s == "reflect") return EdgeMode::reflect;
+  if (s == "wrap") return EdgeMode::wrap;
+  if (s == "zero") return EdgeMode::zero;
+  throw usage_error("--edge: '{}' is not one of clamp, reflect, wrap, zero", s);
+}
+
+ClampMode parse_clamp(const std::string& s) {
+  if (s == "auto") return ClampMode::automatic;
+  if (s == "none") return ClampMode::none;
+  if (s == "range") return ClampMode::range;
+  if (s == "local") return ClampMode::local;
+  throw usage_error("--clamp: '{}' is not one of none, range, local", s);
+}
+
+// The target size from --size / --width / --height / --scale.
+std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
+  const int given = (!a.size.empty()) + (a.width > 0 || a.height > 0) + (!a.scale.empty());
+  if (given != 1) throw usage_error("give exactly one of --size, --width/--height, --scale");
+  if (!a.size.empty()) return parse_size(a.size, "--size");
+  if (!a.scale.empty()) {
+    if (a.scale.size() > 2) throw usage_error("--scale takes S or Sx,Sy");
+    const double sx = a.scale[0], sy = a.scale.size() == 2 ? a.scale[1] : a.scale[0];
+    if (!(sx > 0 && sy > 0) || !std::isfinite(sx) || !std::isfinite(sy))
+      throw usage_error("--scale {},{} must be positive", sx, sy);
+    return {checked_dimension(std::llround(w_in * sx), "--scale"), checked_dimension(std::llround(h_in * sy), "--scale")};
+  }
+  if (a.width < 0 || a.height < 0) throw usage_error("--width/--height must be positive");
+  if (a.width > 0 && a.height > 0) return {a.width, a.height};
+  if (a.width > 0) return {a.width, checked_dimension(std::llround(static_cast<double>(h_in) * a.width / w_in), "--width")};
+  return {checked_dimension(std::llround(static_cast<double>(w_in) * a.height / h_in), "--height"), a.height};
+}
+
+}  // namespace
+
+int run_resize(const ResizeArgs& a) {
+  ResizeOptions o;
+  o.kernel = make_kernel(a.filter);  // usage errors before the input is read
+  o.edge = parse_edge(a.edge);
+  o.clamp = parse_clamp(a.clamp);
+  if (a.colorspace != "auto" && a.colorspace != "srgb" && a.colorspace != "linear" && a.colorspace != "codes")
+    throw usage_error("--colorspace: '{}' is not one of auto, srgb, linear, codes", a.colorspace);
+  if (a.alpha != "premul" && a.alpha != "straight" && a.alpha != "none")
+    throw usage_error("--alpha: '{}' is not one of premul, straight, none", a.alpha);
+  o.premultiply_alpha = a.alpha == "premul";
+  o.linear_light = a.colorspace != "codes";
+  o.hicomp = a.hicomp;
+  o.dither = a.dither;
+  o.seed = a.seed;
+  o.threads = a.threads;
+  if (!a.shift.empty()) {
+    if (a.shift.size() != 2) throw usage_error("--shift takes dx,dy");
+    o.shift_x = a.shift[0];
+    o.shift_y = a.shift[1];
+  }
+  const Depth depth = parse_depth(a.out.depth);
+  if (!a.size.empty()) parse_size(a.size, "--size");  // a bad --size is a usage error even before input
+
+  LoadedImage in = load_image(a.input);
+  if (a.colorspace == "srgb") in.image.color_space = ColorSpace::srgb;
+  if (a.colorspace == "linear") in.image.color_space = ColorSpace::linear;
+  const auto [w, h] = target_size(a, in.image.pixels.cols, in.image.pixels.rows);
+  const int image_depth = depth.cv_depth >= 0 ? depth.cv_depth : in.image.pixels.depth();
+  const auto f = output_format(a.out.to, a.out.output, image_depth);
+  o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, in.image.pixels.depth());
+  const Image out = resize(in.image, w, h, o);
+  store_image(out, a.out.output, f, depth.half);
+  return 0;
+}
+
+int run_display(const DisplayArgs& a) {
+  if (a.factor < 1 || a.factor > 64) throw usage_error("--factor {} is out of range [1, 64]", a.factor);
+  const DisplayModel model = make_display_model(a.model);
+  const Depth depth = parse_depth(a.out.depth);
+  LoadedImage in = load_image(a.input);
+  const cv::Mat& m = in.image.pixels;
+  if (static_cast<long long>(m.cols) * a.factor * m.rows * a.factor > (1LL << 31))
+    throw usage_error("display: {}x{} magnified {} times exceeds 2^31 pixels", m.cols, m.rows, a.factor);
+  ResizeOptions o;
+  o.kernel = model.x;
+  o.kernel_y = model.y;
+  o.threads = a.threads;
+  o.clamp = ClampMode::none;  // the viewer sees the display's overshoot too
+  const int image_depth = depth.cv_depth >= 0 ? depth.cv_depth : m.depth();
+  const auto f = output_format(a.out.to, a.out.output, image_depth);
+  o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, m.depth());
+  const Image out = resize(in.image, m.cols * a.factor, m.rows * a.factor, o);
+  store_image(out, a.out.output, f, depth.half);
+  return 0;
+}
+
+int run_mip(const MipArgs& a) {
+  if (a.prefix.empty()) throw usage_error("mip build needs -o PREFIX");
+  if (a.filter != "box" && a.filter != "gaussian" && a.filter != "lanczos3")
+    throw usage_error("mip --filter: '{}' is not one of box, gaussian, lanczos3", a.filter);
+  if (a.levels < 0 || a.levels > 40) throw usage_error("--levels {} is out of range", a.levels);
+  ResizeOptions o;
+  o.kernel = make_kernel(a.filter == "gaussian" ? "gaussian:sigma=0.5" : a.filter);
+  o.threads = a.threads;
+  const LoadedImage in = load_image(a.input);
+  const bool is_float = in.image.pixels.depth() == CV_32F;
+  const auto f = output_format(a.to, is_float ? "x.exr" : "x.png", in.image.pixels.depth());
+  // Every level is made from the previous one (the pyramid of §2.7) and written only
+  // once all of them exist: a failure leaves no partial pyramid behind.
+  std::vector<Image> levels{in.image};
+  while (levels.back().pixels.cols > 1 || levels.back().pixels.rows > 1) {
+    if (a.levels > 0 && static_cast<int>(levels.size()) >= a.levels) break;
+    const cv::Mat& m = levels.back().pixels;
+    levels.push_back(resize(levels.back(), std::max(1, m.cols / 2), std::max(1, m.rows / 2), o));
+  }
+  for (std::size_t k = 0; k < levels.size(); ++k)
+    store_image(levels[k], fmt::format("{}_{}{}", a.prefix, k, formats::format_extension(f)), f, false);
+  return 0;
+}
+
+}  // namespace resample_tool

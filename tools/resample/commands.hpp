@@ -1,0 +1,102 @@
+#pragma once
+// The subcommands of resample (spec §4): option structs filled by main.cpp's CLI11
+// parser, and one function per subcommand that wires formats -> lib/sampling -> output.
+
+#include <string>
+#include <vector>
+
+namespace resample_tool {
+
+struct ImageOutput {
+  std::string output = "-";
+  std::string to;      // --to / --format
+  std::string depth;   // 8 | 16 | f16 | f32
+};
+
+struct ResizeArgs {
+  std::string input = "-";
+  ImageOutput out;
+  std::string size;                 // WxH
+  int width = 0, height = 0;        // --width / --height (the other keeps the aspect)
+  std::vector<double> scale;        // S or Sx,Sy
+  std::string filter = "mitchell";
+  std::vector<double> shift;        // dx,dy in input pixels
+  std::string edge = "clamp";
+  std::string colorspace = "auto";  // auto | srgb | linear | codes
+  std::string alpha = "premul";     // premul | straight | none
+  std::string clamp = "auto";       // none | range | local (auto: range for integer output)
+  bool hicomp = false, dither = false;
+  unsigned long long seed = 1;
+  int threads = 0;
+};
+
+struct DisplayArgs {
+  std::string input = "-";
+  ImageOutput out;
+  std::string model = "lcd";
+  int factor = 8;
+  int threads = 0;
+};
+
+struct MipArgs {
+  std::string input = "-";
+  std::string prefix;
+  std::string filter = "box";
+  int levels = 0;  // 0: down to 1x1
+  std::string to;
+  int threads = 0;
+};
+
+struct RenderArgs {
+  ImageOutput out;
+  std::string scene = "zoneplate";
+  std::vector<std::string> params;  // key=value
+  std::string size = "256x256";
+  int spp = 16;
+  std::string pattern = "jitter";
+  std::string pixel_filter = "box";
+  unsigned long long seed = 1;
+  bool ground_truth = false;
+  int gt_spp = 1024;
+  int threads = 0;
+};
+
+struct KernelArgs {
+  std::string filter;
+  bool response = false, step = false, csv = false;
+  std::string output = "-";
+};
+
+struct ChainArgs {
+  std::string prefilter, recon;
+  std::vector<double> freq, edge;
+  int terms = 2000;
+  bool amplitudes = false;
+};
+
+struct MipKernelArgs {
+  double level = 0;
+  std::vector<double> pos;
+  std::string build = "box";
+  int dims = 1;
+};
+
+struct MetricsArgs {
+  std::string input = "-";
+  std::string ref;
+  std::string zoneplate;  // numax=1[,width=W,height=H]
+  std::vector<double> alias_band{0.6, 1.0}, pass_band{0.0, 0.2};
+  std::string mask;
+  std::string domain = "linear";
+};
+
+int run_resize(const ResizeArgs& a);
+int run_display(const DisplayArgs& a);
+int run_mip(const MipArgs& a);
+int run_render(const RenderArgs& a);
+int run_kernel(const KernelArgs& a);
+int run_chain1d(const ChainArgs& a);
+int run_mipkernel(const MipKernelArgs& a);
+int run_metrics(const MetricsArgs& a);
+
+}  // namespace resample_tool

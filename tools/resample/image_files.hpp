@@ -1,0 +1,38 @@
+#pragma once
+// resample's image input and output, all through formats/image (DESIGN.md): recognised by
+// content, written atomically, the output format from --to, the -o extension, or the
+// input's family.
+
+#include <optional>
+#include <string>
+
+#include "core/image.hpp"
+#include "formats/detect.hpp"
+
+namespace resample_tool {
+
+struct LoadedImage {
+  fest::Image image;
+  fest::formats::Format format;
+};
+
+LoadedImage load_image(const std::string& path);
+
+// The --depth spellings: "8", "16", "f16", "f32" -> OpenCV depth; f16 sets `half`.
+struct Depth {
+  int cv_depth = -1;  // -1: not given
+  bool half = false;
+};
+Depth parse_depth(const std::string& text);
+
+// Picks the output format: --to (or --format) name, else the -o path's extension, else
+// PNG for integer images and PFM for float ones.
+fest::formats::Format output_format(const std::string& to, const std::string& path, int cv_depth);
+
+// The depth a format can hold when --depth was not given: float formats get f32, integer
+// formats keep an integer depth (8 when the image is float).
+int default_depth(fest::formats::Format f, int image_depth);
+
+void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half);
+
+}  // namespace resample_tool
