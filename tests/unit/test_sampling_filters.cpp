@@ -1,0 +1,193 @@
+// Dual prefilters, the ideal (DCT) resampler, the local clamp, highlight compression and
+// kernel analysis (spec §2.2, §2.4, §2.10, §5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "sampling/image_metrics.hpp"
+#include "sampling/kernel_analysis.hpp"
+#include "sampling/line_filters.hpp"
+#include "sampling/local_clamp.hpp"
+#include "sampling/mip_kernel.hpp"
+#include "sampling/resize.hpp"
+#include "sampling/scenes.hpp"
+
+using namespace fest::sampling;
+
+namespace {
+const double pi = std::acos(-1.0);
+
+FloatImage line(const std::vector<float>& v) {
+  FloatImage img(static_cast<int>(v.size()), 1, 1);
+  img.data = v;
+  return img;
+}
+}  // namespace
+
+TEST(SamplingLineFilters, RecursiveInverseUndoesTheTentAutocorrelation) {
+  // a = {1/6, 4/6, 1/6} with mirror boundaries, then the pole √3 − 2: identity.
+  const std::vector<float> x{0.2f, 0.9f, -0.3f, 0.5f, 0.5f, 1.7f, 0.0f, 0.4f, -1.0f, 0.8f, 0.1f};
+  const int n = static_cast<int>(x.size());
+  std::vector<float> blurred(x.size());
+  for (int i = 0; i < n; ++i) {
+    const float l = x[static_cast<std::size_t>(i == 0 ? 1 : i - 1)], r = x[static_cast<std::size_t>(i == n - 1 ? n - 2 : i + 1)];
+    blurred[static_cast<std::size_t>(i)] = (l + 4 * x[static_cast<std::size_t>(i)] + r) / 6;
+  }
+  FloatImage img = line(blurred);
+  recursive_inverse(img, Axis::x, {std::sqrt(3.0) - 2}, 1);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(img.data[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(i)], 1e-5);
+}
+
+TEST(SamplingLineFilters, SpectralResampleKeepsABandLimitedCosine) {
+  // A cosine on the DCT basis: k = 5 over 64 samples is read back exactly at 48 and 96.
+  const int n = 64, k = 5;
+  std::vector<float> v(n);
+  for (int i = 0; i < n; ++i) v[static_cast<std::size_t>(i)] = static_cast<float>(std::cos(pi * k * (i + 0.5) / n));
+  for (int m : {48, 96}) {
+    const FloatImage out = spectral_resample(line(v), Axis::x, m, 1);
+    for (int i = 0; i < m; ++i) EXPECT_NEAR(out.data[static_cast<std::size_t>(i)], std::cos(pi * k * (i + 0.5) / m), 1e-5);
+  }
+  // k = 40 lies beyond the Nyquist frequency of 32 samples: removed entirely.
+  for (int i = 0; i < n; ++i) v[static_cast<std::size_t>(i)] = static_cast<float>(std::cos(pi * 40 * (i + 0.5) / n));
+  const FloatImage out = spectral_resample(line(v), Axis::x, 32, 1);
+  for (float y : out.data) EXPECT_NEAR(y, 0, 1e-5);
+}
+
+TEST(SamplingDual, DualBoxIsBox) {
+  FloatImage img(37, 23, 1);
+  for (std::size_t i = 0; i < img.data.size(); ++i) img.data[i] = static_cast<float>(std::sin(0.37 * i));
+  ResizeOptions a, b;
+  a.kernel = make_kernel("dual:box");
+  b.kernel = make_kernel("box");
+  EXPECT_EQ(resize_working(img, 11, 7, a).data, resize_working(img, 11, 7, b).data);
+}
+
+TEST(SamplingDual, DualTentThenTentDisplayReproducesTentSplines) {
+  // s(x) = Σ c_n tent(x − n) on the output grid, rendered 4x finer and shrunk by 4 with
+  // dual:tent: the samples are the coefficients c_n (projection onto span{tent shifts}).
+  const std::vector<double> c{0.3, 0.8, 0.1, 0.9, 0.5, 0.5, 0.2, 0.7, 0.4, 0.6, 0.0, 1.0, 0.3, 0.3, 0.9, 0.2, 0.6, 0.1, 0.8, 0.4, 0.4, 0.7, 0.2, 0.9};
+  const int n = static_cast<int>(c.size()), f = 64;
+  FloatImage fine(n * f, 1, 1);
+  for (int i = 0; i < n * f; ++i) {
+    const double x = (i + 0.5) / f - 0.5;  // output-pixel coordinate of the fine sample
+    double v = 0;
+    for (int k = 0; k < n; ++k) v += c[static_cast<std::size_t>(k)] * std::max(0.0, 1 - std::fabs(x - k));
+    fine.data[static_cast<std::size_t>(i)] = static_cast<float>(v);
+  }
+  ResizeOptions o;
+  o.kernel = make_kernel("dual:tent");
+  o.edge = EdgeMode::reflect;
+  const FloatImage out = resize_working(fine, n, 1, o);
+  // Interior samples: how the spline continues beyond the ends reaches inwards only
+  // through the decay |z|^k = 0.268^k of the recursive filter.
+  for (int k = 7; k < n - 7; ++k) EXPECT_NEAR(out.data[static_cast<std::size_t>(k)], c[static_cast<std::size_t>(k)], 2e-4) << k;
+}
+
+TEST(SamplingDual, SpectralDualOfTheTentMatchesTheRecursiveOne) {
+  FloatImage img(40, 3, 1);
+  for (std::size_t i = 0; i < img.data.size(); ++i) img.data[i] = static_cast<float>(0.5 + 0.4 * std::sin(0.9 * i));
+  FloatImage a = img, b = img;
+  recursive_inverse(a, Axis::x, {std::sqrt(3.0) - 2}, 1);
+  // 1/A_r(f) for the tent: A_r = (2 + cos 2πf)/3.
+  spectral_filter(b, Axis::x, [](double f) { return 3 / (2 + std::cos(2 * pi * f)); }, 1);
+  // They mirror differently at the ends (whole- vs half-sample symmetry); the difference
+  // decays like 0.268^k inwards.
+  for (int y = 0; y < 3; ++y)
+    for (int x = 10; x < 30; ++x) EXPECT_NEAR(a.row(y)[x], b.row(y)[x], 1e-4);
+}
+
+TEST(SamplingClamp, LocalClampRemovesLanczosRingingAtAStep) {
+  FloatImage step(64, 4, 1);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 64; ++x) step.row(y)[x] = x < 32 ? 0.0f : 1.0f;
+  ResizeOptions o;
+  o.kernel = make_kernel("lanczos3");
+  o.clamp = ClampMode::none;
+  const FloatImage ringing = resize_working(step, 150, 4, o);
+  float lo = 1, hi = 0;
+  for (float v : ringing.data) lo = std::min(lo, v), hi = std::max(hi, v);
+  EXPECT_LT(lo, -0.01f);
+  EXPECT_GT(hi, 1.01f);
+  o.clamp = ClampMode::local;
+  const FloatImage clamped = resize_working(step, 150, 4, o);
+  for (float v : clamped.data) EXPECT_TRUE(v >= 0 && v <= 1) << v;
+  // Far from the step nothing changes: the local range there is a single value.
+  EXPECT_EQ(clamped.row(0)[10], ringing.row(0)[10] < 0 ? 0.0f : std::min(ringing.row(0)[10], 0.0f));
+}
+
+TEST(SamplingClamp, HighlightCompressionIsInvertibleAndC1) {
+  FloatImage img(4, 1, 1);
+  img.data = {0.25f, 1.0f, 2.0f, 1000.0f};
+  FloatImage c = img;
+  compress_highlights(c);
+  EXPECT_FLOAT_EQ(c.data[0], 0.25f);
+  EXPECT_FLOAT_EQ(c.data[2], static_cast<float>(1 + std::log(2.0)));
+  expand_highlights(c);
+  for (std::size_t i = 0; i < img.data.size(); ++i) EXPECT_NEAR(c.data[i], img.data[i], 1e-4 * img.data[i]);
+}
+
+TEST(SamplingAnalysis, ResponsesMatchClosedForms) {
+  const auto box = analyse_kernel(make_kernel("box"));
+  EXPECT_NEAR(box.k_quarter, std::sin(pi / 4) / (pi / 4), 1e-4);
+  EXPECT_NEAR(box.k_half, 2 / pi, 1e-4);
+  EXPECT_NEAR(box.stop_max, std::sin(0.75 * pi) / (0.75 * pi), 1e-4);
+  EXPECT_EQ(box.overshoot, 0);
+  const auto bs = analyse_kernel(make_kernel("bspline"));
+  EXPECT_NEAR(bs.k_half, std::pow(2 / pi, 4), 1e-5);
+  // Lanczos3's step response overshoots by the spec table's 0.0731.
+  const auto l3 = analyse_kernel(make_kernel("lanczos3"));
+  EXPECT_NEAR(l3.overshoot, 0.0731, 1e-4);
+  EXPECT_NEAR(l3.k_quarter, 1.0114, 1e-4);
+  // The ideal low-pass has no spatial form: the closed form is used.
+  const auto ideal = analyse_kernel(make_kernel("sinc"));
+  EXPECT_EQ(ideal.k_quarter, 1);
+  EXPECT_EQ(ideal.stop_max, 0);
+}
+
+TEST(SamplingMipKernel, BoxPyramidKernelIsASpaceVariantBlendOfTwoBoxes) {
+  // Spec C4 (Fig. 10.12): level 3, positions 12.0 and 14.4.
+  const auto a = mip_kernel_1d(3, 12.0, MipBuild::box), b = mip_kernel_1d(3, 14.4, MipBuild::box);
+  double sa = 0, sb = 0;
+  for (double w : a) sa += w;
+  for (double w : b) sb += w;
+  EXPECT_NEAR(sa, 1, 1e-12);
+  EXPECT_NEAR(sb, 1, 1e-12);
+  // x = 14.4: t = 14.4/8 − ½ = 1.3 -> 0.7 of block 1 and 0.3 of block 2, 1/8 per texel.
+  EXPECT_NEAR(b[8], 0.7 / 8, 1e-12);
+  EXPECT_NEAR(b[16], 0.3 / 8, 1e-12);
+  // Not a shift of a: the best-aligned L1 distance exceeds 0.2.
+  const int n = static_cast<int>(a.size());
+  double best = 1e9;
+  for (int s = 0; s < n; ++s) {
+    double d = 0;
+    for (int i = 0; i < n; ++i) d += std::fabs(a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>((i + s) % n)]);
+    best = std::min(best, d);
+  }
+  EXPECT_GT(best, 0.2);
+  // Periodic with the block size: w(x + 8) = shift(w(x), 8).
+  const auto c = mip_kernel_1d(3, 22.4, MipBuild::box);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(c[static_cast<std::size_t>((i + 8) % n)], b[static_cast<std::size_t>(i)], 1e-12);
+}
+
+TEST(SamplingMipKernel, GaussianPyramidKernelSumsToOne) {
+  const auto w = mip_kernel_1d(3, 13.0, MipBuild::gaussian);
+  double s = 0, neg = 0;
+  for (double v : w) s += v, neg = std::min(neg, v);
+  EXPECT_NEAR(s, 1, 1e-6);
+  EXPECT_GE(neg, 0);
+}
+
+TEST(SamplingMetrics, IdealZonePlateHasNoAliasAndFullPassBand) {
+  const int n = 128;
+  FloatImage img(n, n, 1);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) img.row(y)[x] = static_cast<float>(zoneplate_value(1, n, n, x + 0.5, y + 0.5));
+  const auto z = zoneplate_measures(img, 1);
+  EXPECT_NEAR(z.pr, 1, 1e-6);
+  // Point samples of the ideal plate beyond Nyquist are pure alias: AE ≈ 1.
+  EXPECT_NEAR(z.ae, 1, 0.1);
+  FloatImage grey(n, n, 1);
+  for (auto& v : grey.data) v = 0.5f;
+  EXPECT_EQ(zoneplate_measures(grey, 1).ae, 0);
+}
