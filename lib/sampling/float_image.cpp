@@ -29,20 +29,17 @@ void check_supported(const Image& in) {
 namespace {
 
 template <typename T>
-void decode_rows(const cv::Mat& m, FloatImage& out, const Encoding& enc, float (*decode)(T), float scale) {
-  const int c = out.channels, a = alpha_channel(c);
-  for (int y = 0; y < m.rows; ++y) {
-    const T* src = m.ptr<T>(y);
-    float* dst = out.row(y);
-    for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
-      for (int ch = 0; ch < c; ++ch) {
-        const bool colour = ch != a;
-        dst[ch] = (colour && enc.decode_srgb) ? decode(src[ch]) : static_cast<float>(src[ch]) * scale;
-      }
-      if (enc.premultiply && a >= 0)
-        for (int ch = 0; ch < c; ++ch)
-          if (ch != a) dst[ch] *= dst[a];
+void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, float (*decode)(T), float scale, float* dst) {
+  const int c = m.channels(), a = alpha_channel(c);
+  const T* src = m.ptr<T>(y);
+  for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
+    for (int ch = 0; ch < c; ++ch) {
+      const bool colour = ch != a;
+      dst[ch] = (colour && enc.decode_srgb) ? decode(src[ch]) : static_cast<float>(src[ch]) * scale;
     }
+    if (enc.premultiply && a >= 0)
+      for (int ch = 0; ch < c; ++ch)
+        if (ch != a) dst[ch] *= dst[a];
   }
 }
 
@@ -66,21 +63,22 @@ T quantise(float v, float max_code) {
 
 }  // namespace
 
+void decode_row(const cv::Mat& m, int y, const Encoding& enc, float* dst) {
+  switch (m.depth()) {
+    case CV_8U:
+      return decode_one_row<std::uint8_t>(m, y, enc, srgb8_to_linear, 1.0f / 255, dst);
+    case CV_16U:
+      return decode_one_row<std::uint16_t>(m, y, enc, srgb16_to_linear, 1.0f / 65535, dst);
+    default:
+      return decode_one_row<float>(m, y, enc, decode_float, 1.0f, dst);
+  }
+}
+
 FloatImage to_working(const Image& in, const Encoding& enc) {
   check_supported(in);
   const cv::Mat& m = in.pixels;
   FloatImage out(m.cols, m.rows, m.channels());
-  switch (m.depth()) {
-    case CV_8U:
-      decode_rows<std::uint8_t>(m, out, enc, srgb8_to_linear, 1.0f / 255);
-      break;
-    case CV_16U:
-      decode_rows<std::uint16_t>(m, out, enc, srgb16_to_linear, 1.0f / 65535);
-      break;
-    default:
-      decode_rows<float>(m, out, enc, decode_float, 1.0f);
-      break;
-  }
+  for (int y = 0; y < m.rows; ++y) decode_row(m, y, enc, out.row(y));
   return out;
 }
 

@@ -39,6 +39,10 @@ void check_supported(const Image& in);
 // Integer codes are scaled to [0, 1]; sRGB-decoded and premultiplied as `enc` says.
 FloatImage to_working(const Image& in, const Encoding& enc);
 
+// One row of to_working into dst (width × channels floats): lets a first resize pass
+// stream over the stored pixels instead of holding a float copy of the whole input.
+void decode_row(const cv::Mat& m, int y, const Encoding& enc, float* dst);
+
 // The inverse of to_working, into an image of the given depth: un-premultiply (α < 1e-6
 // gives colour 0), sRGB-encode, and round to nearest (saturating) for integer depths,
 // dithered when `enc.dither`.

@@ -133,7 +133,25 @@ Image resize(const Image& in, int width, int height, const ResizeOptions& option
   Encoding decode;
   decode.decode_srgb = options.linear_light && in.color_space == ColorSpace::srgb;
   decode.premultiply = options.premultiply_alpha && alpha_channel(m.channels()) >= 0;
-  const FloatImage out = resize_working(to_working(in, decode), width, height, options, !float_in, !float_out);
+  FloatImage out;
+  const bool streaming = !options.hicomp && options.clamp != ClampMode::local && options.kernel.reconstruction.empty() &&
+                         options.kernel.name != "sinc" && !options.kernel_y;
+  if (streaming) {
+    // The common case: rows first, straight from the stored pixels (no float copy of
+    // the input), then columns; the clamp needs only the [0, 1] range of integer input.
+    const int threads = resolve_threads(options.threads);
+    const WeightTable tx = make_weight_table(m.cols, width, options.kernel, options.shift_x, options.edge);
+    const WeightTable ty = make_weight_table(m.rows, height, options.kernel, options.shift_y, options.edge);
+    out = resample_columns(resample_rows_decoded(m, decode, tx, threads), ty, threads);
+    if (options.clamp == ClampMode::range || (options.clamp == ClampMode::automatic && !float_out)) {
+      if (float_in)
+        clamp_to_input_range(to_working(in, decode), false, out);
+      else
+        clamp_to_input_range(FloatImage(1, 1, m.channels()), true, out);
+    }
+  } else {
+    out = resize_working(to_working(in, decode), width, height, options, !float_in, !float_out);
+  }
 
   // Float outputs hold linear light; integer outputs are sRGB codes when the input was
   // sRGB or (linear) float, and keep the input's coding when it was linear integers.

@@ -26,22 +26,50 @@ void for_row_blocks(int rows, int threads, const std::function<void(int, int)>& 
   for (auto& th : pool) th.join();
 }
 
+// One row through the weight table, with the channel count known at compile time so
+// that the per-tap channel loop unrolls (C = 0: any count, at run time).
+template <int C>
+void filter_row(const float* src, float* dst, const WeightTable& t, int channels) {
+  const int c = C > 0 ? C : channels;
+  for (int o = 0; o < t.n_out; ++o, dst += c) {
+    float acc[4] = {0, 0, 0, 0};
+    const std::size_t end = t.offset[static_cast<std::size_t>(o) + 1];
+    for (std::size_t j = t.offset[static_cast<std::size_t>(o)]; j < end; ++j) {
+      const float w = t.weight[j];
+      const float* p = src + static_cast<std::size_t>(t.index[j]) * static_cast<std::size_t>(c);
+      for (int ch = 0; ch < c; ++ch) acc[ch] += w * p[ch];
+    }
+    for (int ch = 0; ch < c; ++ch) dst[ch] = acc[ch];
+  }
+}
+
+void filter_row_any(const float* src, float* dst, const WeightTable& t, int c) {
+  switch (c) {
+    case 1: return filter_row<1>(src, dst, t, c);
+    case 2: return filter_row<2>(src, dst, t, c);
+    case 3: return filter_row<3>(src, dst, t, c);
+    case 4: return filter_row<4>(src, dst, t, c);
+    default: return filter_row<0>(src, dst, t, c);
+  }
+}
+
 }  // namespace
 
 FloatImage resample_rows(const FloatImage& in, const WeightTable& table, int threads) {
   FloatImage out(table.n_out, in.height, in.channels);
-  const int c = in.channels;
   for_row_blocks(in.height, threads, [&](int begin, int end) {
+    for (int y = begin; y < end; ++y) filter_row_any(in.row(y), out.row(y), table, in.channels);
+  });
+  return out;
+}
+
+FloatImage resample_rows_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads) {
+  FloatImage out(table.n_out, in.rows, in.channels());
+  for_row_blocks(in.rows, threads, [&](int begin, int end) {
+    std::vector<float> row(static_cast<std::size_t>(in.cols) * static_cast<std::size_t>(in.channels()));
     for (int y = begin; y < end; ++y) {
-      const float* src = in.row(y);
-      float* dst = out.row(y);
-      for (int o = 0; o < table.n_out; ++o, dst += c) {
-        for (std::size_t j = table.offset[static_cast<std::size_t>(o)]; j < table.offset[static_cast<std::size_t>(o) + 1]; ++j) {
-          const float w = table.weight[j];
-          const float* p = src + static_cast<std::size_t>(table.index[j]) * static_cast<std::size_t>(c);
-          for (int ch = 0; ch < c; ++ch) dst[ch] += w * p[ch];
-        }
-      }
+      decode_row(in, y, enc, row.data());
+      filter_row_any(row.data(), out.row(y), table, in.channels());
     }
   });
   return out;

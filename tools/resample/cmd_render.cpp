@@ -65,6 +65,8 @@ std::pair<Kernel, double> pixel_filter(const std::string& spec) {
 
 int run_render(const RenderArgs& a) {
   const auto [w, h] = parse_size(a.size, "--size");
+  if (a.colorspace != "srgb" && a.colorspace != "linear")
+    throw usage_error("--colorspace: '{}' is not srgb or linear", a.colorspace);
   const auto params = parse_params(a.params);
   RenderOptions o;
   o.width = w;
@@ -102,10 +104,11 @@ int run_render(const RenderArgs& a) {
   Image out;
   out.color_space = ColorSpace::linear;
   Encoding enc;
-  // Integer outputs are sRGB codes of the linear scene values.
-  enc.decode_srgb = depth.cv_depth != CV_32F;
+  // Integer outputs are sRGB codes of the linear scene values, or the plain values
+  // (--colorspace linear: what other tools filter without decoding).
+  enc.decode_srgb = depth.cv_depth != CV_32F && a.colorspace == "srgb";
   out.pixels = from_working(img, depth.cv_depth, enc);
-  if (depth.cv_depth != CV_32F) out.color_space = ColorSpace::srgb;
+  if (enc.decode_srgb) out.color_space = ColorSpace::srgb;
   store_image(out, a.out.output, f, depth.half);
   return 0;
 }

@@ -58,6 +58,7 @@ struct RenderArgs {
   unsigned long long seed = 1;
   bool ground_truth = false;
   int gt_spp = 1024;
+  std::string colorspace = "srgb";  // integer output: sRGB codes, or linear (plain values)
   int threads = 0;
 };
 

@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
   render->add_option("--pixel-filter", rd.pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
+  render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
   render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(1024);
   fest::cli::add_threads(*render, rd.threads);
 
