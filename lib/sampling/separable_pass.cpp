@@ -31,6 +31,16 @@ void for_row_blocks(int rows, int threads, const std::function<void(int, int)>& 
 template <int C>
 void filter_row(const float* src, float* dst, const WeightTable& t, int channels) {
   const int c = C > 0 ? C : channels;
+  if (C == 0) {  // any channel count: accumulate in the output directly
+    for (int o = 0; o < t.n_out; ++o, dst += c) {
+      for (int ch = 0; ch < c; ++ch) dst[ch] = 0;
+      for (std::size_t j = t.offset[static_cast<std::size_t>(o)]; j < t.offset[static_cast<std::size_t>(o) + 1]; ++j) {
+        const float* p = src + static_cast<std::size_t>(t.index[j]) * static_cast<std::size_t>(c);
+        for (int ch = 0; ch < c; ++ch) dst[ch] += t.weight[j] * p[ch];
+      }
+    }
+    return;
+  }
   for (int o = 0; o < t.n_out; ++o, dst += c) {
     float acc[4] = {0, 0, 0, 0};
     const std::size_t end = t.offset[static_cast<std::size_t>(o) + 1];

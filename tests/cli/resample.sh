@@ -154,6 +154,18 @@ run resample mip build "$WORK/half.png" -o "$WORK/lvl"
 expect_status 0
 check "level 8 is 1x1" test "$("$F" --info "$WORK/lvl_8.png" | jq -c '[.width, .height]')" = "[1,1]"
 
+case_ "normalmip keeps the slope variance of a sine height field (spec N1)"
+"$R" render --scene sine --param f=0.0625 --size 1024x1024 --spp 1 --pattern regular -o "$WORK/h.pfm"
+run resample normalmip --height-map --height-scale 2 "$WORK/h.pfm" -o "$WORK/nm"
+expect_status 0
+run fconv --info "$WORK/nm_4_cov.exr"
+near '.max[0]' 0.0732233 2e-6   # sin²(2π/16)/2
+near '.min[0]' 0.0732233 2e-6
+near '.max[1]' 0 1e-6
+run resample normalmip --height-map --height-scale 2 --naive "$WORK/h.pfm" -o "$WORK/naive"
+run fconv --info "$WORK/naive_4_cov.exr"
+near '.max[0]' 0 1e-12
+
 # --- bad input -----------------------------------------------------------------------------
 case_ "empty standard input"
 run_stdin /dev/null resample resize --size 10x10

@@ -12,6 +12,7 @@
 #include "sampling/mip_kernel.hpp"
 #include "sampling/resize.hpp"
 #include "sampling/scenes.hpp"
+#include "sampling/slope_pyramid.hpp"
 
 using namespace fest::sampling;
 
@@ -190,4 +191,32 @@ TEST(SamplingMetrics, IdealZonePlateHasNoAliasAndFullPassBand) {
   FloatImage grey(n, n, 1);
   for (auto& v : grey.data) v = 0.5f;
   EXPECT_EQ(zoneplate_measures(grey, 1).ae, 0);
+}
+
+TEST(SamplingSlopePyramid, KeepsTheRoughnessOfASineHeightField) {
+  // Spec N1: h = sin(2πx/16) on 1024² texels. Central differences give slopes
+  // cos(·) sin(2π/16); levels ≥ 4 hold whole periods: mean 0, S.xx = sin²(2π/16)/2.
+  const int n = 1024;
+  FloatImage h(n, n, 1);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) h.row(y)[x] = static_cast<float>(std::sin(2 * pi * x / 16));
+  const auto levels = slope_pyramid(slopes_from_height(h, 1), false, 1);
+  ASSERT_EQ(levels.size(), 11u);  // 1024 .. 1
+  EXPECT_NEAR(levels[0].covariance.data[0], 0, 1e-6);
+  for (std::size_t l = 4; l < levels.size(); ++l) {
+    EXPECT_NEAR(levels[l].covariance.data[0], std::pow(std::sin(2 * pi / 16), 2) / 2, 1e-6) << l;
+    EXPECT_NEAR(levels[l].covariance.data[1], 0, 1e-6);
+    EXPECT_NEAR(levels[l].covariance.data[2], 0, 1e-6);
+    EXPECT_NEAR(levels[l].normal.data[2], 1, 1e-6);  // flat on average
+  }
+  // Analytic slopes (2π/16) cos(·): S.xx = (2π/16)²/2.
+  FloatImage s(n, 4, 2);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < n; ++x) s.row(y)[2 * x] = static_cast<float>(2 * pi / 16 * std::cos(2 * pi * (x + 0.5) / 16));
+  const auto analytic = slope_pyramid(s, false, 1);
+  EXPECT_NEAR(analytic[4].covariance.data[0], std::pow(2 * pi / 16, 2) / 2, 1e-6);
+  // The naive pyramid loses it: flat normal, no covariance.
+  const auto naive = slope_pyramid(slopes_from_height(h, 1), true, 1);
+  EXPECT_NEAR(naive[4].normal.data[2], 1, 1e-6);
+  EXPECT_EQ(naive[4].covariance.data[0], 0);
 }

@@ -91,6 +91,15 @@ struct MetricsArgs {
   std::string domain = "linear";
 };
 
+struct NormalMipArgs {
+  std::string input = "-";
+  std::string prefix;
+  bool normal_map = false, height_map = false, naive = false;
+  double height_scale = 1;
+  int threads = 0;
+};
+
+int run_normalmip(const NormalMipArgs& a);
 int run_resize(const ResizeArgs& a);
 int run_display(const DisplayArgs& a);
 int run_mip(const MipArgs& a);

@@ -83,6 +83,16 @@ int main(int argc, char** argv) {
   render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(1024);
   fest::cli::add_threads(*render, rd.threads);
 
+  NormalMipArgs nm;
+  auto* normalmip = app.add_subcommand("normalmip", "Slope-moment pyramid of a normal or height map: PREFIX_<k>_normal.exr, PREFIX_<k>_cov.exr");
+  normalmip->add_option("input", nm.input, "Normal or height map, or - for standard input")->default_val("-");
+  normalmip->add_option("-o,--output", nm.prefix, "Prefix of the level files")->required();
+  normalmip->add_flag("--normal-map", nm.normal_map, "The input is a normal map (integer codes: n = 2c - 1)");
+  normalmip->add_flag("--height-map", nm.height_map, "The input is a height map (channel 0)");
+  normalmip->add_option("--height-scale", nm.height_scale, "Height units per texel")->default_val(1);
+  normalmip->add_flag("--naive", nm.naive, "Average normals instead (loses the slope covariance)");
+  fest::cli::add_threads(*normalmip, nm.threads);
+
   KernelArgs kn;
   auto* kernel = app.add_subcommand("kernel", "Frequency and step response of a kernel, as JSON (or CSV)");
   kernel->add_option("--filter", kn.filter, "Kernel NAME[:k=v,...]")->required();
@@ -123,6 +133,7 @@ int main(int argc, char** argv) {
       return run_mip(mp);
     }
     if (*render) return run_render(rd);
+    if (*normalmip) return run_normalmip(nm);
     if (*kernel) return run_kernel(kn);
     if (*chain) return run_chain1d(ch);
     if (*mipkernel) return run_mipkernel(mk);
