@@ -1,0 +1,161 @@
+#include "lemtrace/exit_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fest::lemtrace {
+namespace {
+
+constexpr double kDetect = 1e-12;   // beta below -kDetect counts as outside
+constexpr double kValid = 1e-10;    // tolerance of the validation of an exit
+
+struct Sample {
+  double tau;
+  Eigen::Vector4d beta;
+  Eigen::Vector4d rate;  // d beta / d tau
+  Vec3 x, v;
+};
+
+Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+  Sample s;
+  s.tau = tau;
+  path.eval(tau, s.x, s.v);
+  s.beta = g.bary(s.x);
+  s.rate = g.bary_rate(s.v);
+  ++evals;
+  return s;
+}
+
+// Root of beta_k in [lo, hi] with beta_k(lo) >= 0 > beta_k(hi).
+double refine_root(const TetGeometry& g, const CellPath& path, int k, double lo, double hi, double flo,
+                   double tol, int& evals) {
+  if (flo <= 0) return lo;
+  double tau = hi;
+  // Start from the secant point of the bracket.
+  Sample s_hi = sample(g, path, hi, evals);
+  double fhi = s_hi.beta[k];
+  tau = lo + (hi - lo) * flo / (flo - fhi);
+  for (int it = 0; it < 60; ++it) {
+    Sample s = sample(g, path, tau, evals);
+    const double f = s.beta[k], df = s.rate[k];
+    if (f == 0) return tau;
+    if (f > 0) lo = tau;
+    else hi = tau;
+    double next = df != 0 ? tau - f / df : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const double step = std::abs(next - tau);
+    tau = next;
+    if (step < tol || hi - lo < tol) break;
+  }
+  return tau;
+}
+
+ExitResult finish(const TetGeometry& g, const CellPath& path, double tau, int face, int evals) {
+  ExitResult r;
+  r.kind = ExitResult::exit;
+  r.tau = tau;
+  r.face = face;
+  r.evaluations = evals;
+  Eigen::Vector4d beta = g.bary(path.position(tau));
+  // Snap onto the face: beta_face = 0, the others clamped at 0 and renormalised.
+  beta[face] = 0;
+  for (int k = 0; k < 4; ++k) beta[k] = std::max(beta[k], 0.0);
+  const double sum = beta.sum();
+  if (sum > 0) beta /= sum;
+  r.beta = beta;
+  r.x = beta[0] * g.V[0] + beta[1] * g.V[1] + beta[2] * g.V[2] + beta[3] * g.V[3];
+  return r;
+}
+
+bool validates(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+  for (double f : {0.25, 0.5, 0.75, 1.0}) {
+    ++evals;
+    if (g.bary(path.position(f * tau)).minCoeff() < -kValid) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params) {
+  int evals = 0;
+  const double tauT = g.transit_time();
+  const double rate = path.rate();
+  if (!std::isfinite(tauT)) {
+    ExitResult r;
+    r.kind = ExitResult::stalled;
+    return r;
+  }
+  const double tol = params.eps_newton * tauT;
+
+  if (params.paper_newton) {
+    const Sample s0 = sample(g, path, 0, evals);
+    double best = std::numeric_limits<double>::infinity();
+    int best_face = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (s0.beta[k] <= kDetect && s0.rate[k] >= 0) continue;  // entry face
+      double tau = 0, f = s0.beta[k], df = s0.rate[k];
+      bool converged = false;
+      for (int it = 0; it < 30 && df != 0; ++it) {
+        const double step = -f / df;
+        tau += step;
+        if (std::abs(step) < tol) {
+          converged = true;
+          break;
+        }
+        Sample s = sample(g, path, tau, evals);
+        f = s.beta[k];
+        df = s.rate[k];
+      }
+      if (converged && tau > 0 && tau < best && validates(g, path, tau, evals)) {
+        best = tau;
+        best_face = k;
+      }
+    }
+    if (best_face >= 0) return finish(g, path, best, best_face, evals);
+  }
+
+  // Bracket search.
+  double delta = tauT / 4;
+  if (rate > 0) delta = std::min(delta, 0.25 / rate);
+  const double delta_cap = rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity();
+  Sample prev = sample(g, path, 0, evals);
+  for (int k = 0; k < 4; ++k) prev.beta[k] = std::max(prev.beta[k], 0.0);
+  for (int j = 1; j <= params.max_samples; ++j) {
+    Sample cur = sample(g, path, prev.tau + delta, evals);
+    if (!cur.x.allFinite()) break;
+    if (cur.beta.minCoeff() < -kDetect) {
+      double best = std::numeric_limits<double>::infinity();
+      int best_face = -1;
+      for (int k = 0; k < 4; ++k) {
+        if (cur.beta[k] >= -kDetect) continue;
+        const double root = refine_root(g, path, k, prev.tau, cur.tau, prev.beta[k], tol, evals);
+        if (root < best) {
+          best = root;
+          best_face = k;
+        }
+      }
+      return finish(g, path, best, best_face, evals);
+    }
+    // A path that has come to rest (a sink inside the cell) is trapped.
+    if (cur.v.norm() <= 1e-12 * g.v_max) {
+      ExitResult r;
+      r.kind = ExitResult::stalled;
+      r.tau = cur.tau;
+      r.x = cur.x;
+      r.evaluations = evals;
+      return r;
+    }
+    prev = cur;
+    if (j % 16 == 0) delta = std::min(2 * delta, std::max(delta, delta_cap));
+  }
+  ExitResult r;
+  r.kind = ExitResult::trapped;
+  r.tau = prev.tau;
+  r.x = prev.x;
+  r.evaluations = evals;
+  return r;
+}
+
+}  // namespace fest::lemtrace
