@@ -30,7 +30,24 @@ Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals
 // Root of beta_k in [lo, hi] with beta_k(lo) >= 0 > beta_k(hi).
 double refine_root(const TetGeometry& g, const CellPath& path, int k, double lo, double hi, double flo,
                    double tol, int& evals) {
-  if (flo <= 0) return lo;
+  if (flo <= 0) {
+    // The bracket starts on the face (the entry face, or a face the path touches): a
+    // path that enters and curves back out within the bracket is positive in between.
+    // Look for that positive stretch towards lo before calling the exit immediate.
+    bool found = false;
+    for (int j = 1; j <= 50 && !found; ++j) {
+      const double m = lo + (hi - lo) * std::ldexp(1.0, -j);
+      const double fm = sample(g, path, m, evals).beta[k];
+      if (fm > 0) {
+        lo = m;
+        flo = fm;
+        found = true;
+      } else if (fm < -kDetect) {
+        hi = m;
+      }
+    }
+    if (!found) return lo;
+  }
   double tau = hi;
   // Start from the secant point of the bracket.
   Sample s_hi = sample(g, path, hi, evals);
@@ -49,6 +66,28 @@ double refine_root(const TetGeometry& g, const CellPath& path, int k, double lo,
     if (step < tol || hi - lo < tol) break;
   }
   return tau;
+}
+
+// A path can cross a face and come back within one sampling step (it grazes the face):
+// beta_k is positive at both ends but its rate turns from negative to positive. Find the
+// minimum of beta_k there (bisection on the rate); if it is negative, the step is cut at
+// that point so that the caller sees the crossing.
+void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
+  for (int k = 0; k < 4; ++k) {
+    if (!(prev.rate[k] < 0 && cur.rate[k] > 0 && cur.beta[k] >= -kDetect)) continue;
+    double a = prev.tau, b = cur.tau;
+    const double width = b - a;
+    for (int it = 0; it < 40 && b - a > 1e-6 * width; ++it) {
+      const double m = 0.5 * (a + b);
+      Sample s = sample(g, path, m, evals);
+      if (s.beta[k] < -kDetect) {
+        cur = s;
+        return;
+      }
+      if (s.rate[k] < 0) a = m;
+      else b = m;
+    }
+  }
 }
 
 ExitResult finish(const TetGeometry& g, const CellPath& path, double tau, int face, int evals) {
@@ -125,6 +164,7 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
   for (int j = 1; j <= params.max_samples; ++j) {
     Sample cur = sample(g, path, prev.tau + delta, evals);
     if (!cur.x.allFinite()) break;
+    dip_below(g, path, prev, cur, evals);
     if (cur.beta.minCoeff() < -kDetect) {
       double best = std::numeric_limits<double>::infinity();
       int best_face = -1;

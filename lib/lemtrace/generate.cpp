@@ -132,3 +132,17 @@ GeneratedGrid generate(const GenOptions& o) {
 }
 
 }  // namespace fest::lemtrace
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace fest::lemtrace {
+
+Vec3 linear_flow(const LinearField& field, const Vec3& x0, double t) {
+  Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+  M.topLeftCorner<3, 3>() = field.A * t;
+  M.topRightCorner<3, 1>() = field.b * t;
+  const Eigen::Matrix4d E = M.exp();
+  return E.topLeftCorner<3, 3>() * x0 + E.topRightCorner<3, 1>();
+}
+
+}  // namespace fest::lemtrace

@@ -45,3 +45,8 @@ Vec3 sphere_potential_velocity(const Vec3& x);   // U = e_z, R = 0.4
 Vec3 abc_velocity(const Vec3& x);
 
 }  // namespace fest::lemtrace
+
+namespace fest::lemtrace {
+// x(t) = exp(tA) x0 + t phi1(tA) b, from the exponential of [[A, b], [0, 0]] t.
+Vec3 linear_flow(const LinearField& field, const Vec3& x0, double t);
+}  // namespace fest::lemtrace
