@@ -13,6 +13,23 @@ double psi(double lambda, double s) {
   return std::expm1(ls) / lambda;
 }
 
+namespace {
+
+// e^{l s} and psi(l, s) from one expm1.
+inline void exp_and_psi(double l, double s, double& e, double& p) {
+  const double ls = l * s;
+  if (std::abs(ls) < 1e-5) {
+    p = s * (1.0 + ls * (0.5 + ls / 6.0));
+    e = 1.0 + l * p;
+    return;
+  }
+  const double m = std::expm1(ls);
+  e = 1.0 + m;
+  p = m / l;
+}
+
+}  // namespace
+
 CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(record), x0_(x0), dir_(dir) {
   switch (rec_.type) {
     case CellType::normal_real:
@@ -26,6 +43,11 @@ CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(
     case CellType::extraordinary:
       break;
   }
+}
+
+Vec3 CellPath::entry_velocity(const Vec3& field) const {
+  if (rec_.type == CellType::parallel) return Vec3(rec_.lam[0], rec_.lam[1], rec_.lam[2]) * (dir_ * s0_);
+  return dir_ * field;
 }
 
 double CellPath::rate() const {
@@ -52,7 +74,9 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
       double z[3], dz[3];
       for (int i = 0; i < 3; ++i) {
         const double l = rec_.lam[i];
-        z[i] = std::exp(l * s) * z0_[i] + psi(l, s) * rec_.c[i];
+        double e, p;
+        exp_and_psi(l, s, e, p);
+        z[i] = e * z0_[i] + p * rec_.c[i];
         dz[i] = l * z[i] + rec_.c[i];
       }
       for (int r = 0; r < 3; ++r) {
@@ -63,10 +87,14 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
     }
     case CellType::normal_complex: {
       const double a = rec_.lam[0], b = rec_.lam[1], l3 = rec_.lam[2];
-      const double ea = std::exp(a * s), cs = std::cos(b * s), sn = std::sin(b * s);
-      const double half = std::sin(0.5 * b * s);
+      // One sincos of the half angle gives sin, cos and cos - 1 without cancellation.
+      double sh, ch;
+      sincos(0.5 * b * s, &sh, &ch);
+      const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
+      const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
+      const double ea = 1.0 + em1;
       // e^{a s} R(b s) - I without cancellation for small s.
-      const double d11 = std::expm1(a * s) * cs - 2.0 * half * half;
+      const double d11 = em1 * cs - 2.0 * sh * sh;
       const double d12 = ea * sn;
       const double n2 = a * a + b * b;
       // Psi_c = M2^{-1} (e^{a s} R - I), M2^{-1} = [[a, -b], [b, a]] / n2, R = [[cs, sn], [-sn, cs]]
@@ -75,7 +103,9 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
       double z[3], dz[3];
       z[0] = ea * (cs * z0_[0] + sn * z0_[1]) + p11 * rec_.c[0] + p12 * rec_.c[1];
       z[1] = ea * (-sn * z0_[0] + cs * z0_[1]) + p21 * rec_.c[0] + p22 * rec_.c[1];
-      z[2] = std::exp(l3 * s) * z0_[2] + psi(l3, s) * rec_.c[2];
+      double e3, p3;
+      exp_and_psi(l3, s, e3, p3);
+      z[2] = e3 * z0_[2] + p3 * rec_.c[2];
       dz[0] = a * z[0] + b * z[1] + rec_.c[0];
       dz[1] = -b * z[0] + a * z[1] + rec_.c[1];
       dz[2] = l3 * z[2] + rec_.c[2];

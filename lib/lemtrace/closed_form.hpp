@@ -24,6 +24,9 @@ class CellPath {
     eval(tau, x, v);
     return x;
   }
+  const Vec3& entry() const noexcept { return x0_; }
+  // dx/dtau at the entry from the interpolated field there (parallel cells move along d).
+  Vec3 entry_velocity(const Vec3& field) const;
   // Largest rate of the cell's dynamics (1/time): bounds the sampling step.
   double rate() const;
 

@@ -27,36 +27,49 @@ Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals
   return s;
 }
 
-// Root of beta_k in [lo, hi] with beta_k(lo) >= 0 > beta_k(hi).
-double refine_root(const TetGeometry& g, const CellPath& path, int k, double lo, double hi, double flo,
-                   double tol, int& evals) {
-  if (flo <= 0) {
+// At tau = 0 the closed form is the entry point itself.
+Sample entry_sample(const TetGeometry& g, const CellPath& path) {
+  Sample s;
+  s.tau = 0;
+  s.x = path.entry();
+  s.beta = g.bary(s.x);
+  s.v = path.entry_velocity(g.interpolate(s.beta));
+  s.rate = g.bary_rate(s.v);
+  return s;
+}
+
+// Root of beta_k in [lo, hi] with beta_k(lo) >= 0 > beta_k(hi) = fhi: safeguarded
+// Newton from the secant point. Returns the sample at the root (its position is the
+// closed form at the returned time, so the exit point needs no further evaluation).
+Sample refine_root(const TetGeometry& g, const CellPath& path, int k, double lo, double hi, double flo,
+                   double fhi, double tol, int& evals) {
+  if (flo <= kDetect) {
     // The bracket starts on the face (the entry face, or a face the path touches): a
     // path that enters and curves back out within the bracket is positive in between.
     // Look for that positive stretch towards lo before calling the exit immediate.
     bool found = false;
     for (int j = 1; j <= 50 && !found; ++j) {
       const double m = lo + (hi - lo) * std::ldexp(1.0, -j);
-      const double fm = sample(g, path, m, evals).beta[k];
-      if (fm > 0) {
+      const Sample s = sample(g, path, m, evals);
+      const double fm = s.beta[k];
+      if (fm > kDetect) {
         lo = m;
         flo = fm;
         found = true;
       } else if (fm < -kDetect) {
         hi = m;
+        fhi = fm;
       }
     }
-    if (!found) return lo;
+    if (!found) return sample(g, path, lo, evals);
   }
-  double tau = hi;
-  // Start from the secant point of the bracket.
-  Sample s_hi = sample(g, path, hi, evals);
-  double fhi = s_hi.beta[k];
-  tau = lo + (hi - lo) * flo / (flo - fhi);
+  double tau = lo + (hi - lo) * flo / (flo - fhi);
+  Sample s;
   for (int it = 0; it < 60; ++it) {
-    Sample s = sample(g, path, tau, evals);
+    s = sample(g, path, tau, evals);
     const double f = s.beta[k], df = s.rate[k];
-    if (f == 0) return tau;
+    // |beta| at round-off: the point is on the face to within 1e-15 of the cell size.
+    if (std::abs(f) <= 1e-15) return s;
     if (f > 0) lo = tau;
     else hi = tau;
     double next = df != 0 ? tau - f / df : 0.5 * (lo + hi);
@@ -65,7 +78,7 @@ double refine_root(const TetGeometry& g, const CellPath& path, int k, double lo,
     tau = next;
     if (step < tol || hi - lo < tol) break;
   }
-  return tau;
+  return sample(g, path, tau, evals);
 }
 
 // A path can cross a face and come back within one sampling step (it grazes the face):
@@ -90,13 +103,13 @@ void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, S
   }
 }
 
-ExitResult finish(const TetGeometry& g, const CellPath& path, double tau, int face, int evals) {
+ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
   ExitResult r;
   r.kind = ExitResult::exit;
-  r.tau = tau;
+  r.tau = at.tau;
   r.face = face;
   r.evaluations = evals;
-  Eigen::Vector4d beta = g.bary(path.position(tau));
+  Eigen::Vector4d beta = g.bary(at.x);
   // Snap onto the face: beta_face = 0, the others clamped at 0 and renormalised.
   beta[face] = 0;
   for (int k = 0; k < 4; ++k) beta[k] = std::max(beta[k], 0.0);
@@ -152,31 +165,38 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
         best_face = k;
       }
     }
-    if (best_face >= 0) return finish(g, path, best, best_face, evals);
+    if (best_face >= 0) return finish(g, sample(g, path, best, evals), best_face, evals);
   }
 
-  // Bracket search.
-  double delta = tauT / 4;
-  if (rate > 0) delta = std::min(delta, 0.25 / rate);
-  const double delta_cap = rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity();
-  Sample prev = sample(g, path, 0, evals);
+  // Bracket search. The first step is a little beyond the exit of the straight ray
+  // x0 + tau v0 (where a nearly straight path leaves), the later ones double; no step is
+  // longer than 0.25/rate, over which the path turns by at most about 0.25 rad, so a
+  // face cannot be crossed three times inside one step.
+  Sample prev = entry_sample(g, path);
   for (int k = 0; k < 4; ++k) prev.beta[k] = std::max(prev.beta[k], 0.0);
+  const double delta_cap = rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity();
+  double ray = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 4; ++k)
+    if (prev.rate[k] < 0) ray = std::min(ray, prev.beta[k] / -prev.rate[k]);
+  double delta = std::isfinite(ray) && ray > 1e-3 * tauT ? 1.1 * ray : tauT / 4;
+  delta = std::min(delta, delta_cap);
   for (int j = 1; j <= params.max_samples; ++j) {
     Sample cur = sample(g, path, prev.tau + delta, evals);
     if (!cur.x.allFinite()) break;
     dip_below(g, path, prev, cur, evals);
     if (cur.beta.minCoeff() < -kDetect) {
-      double best = std::numeric_limits<double>::infinity();
+      Sample best;
+      best.tau = std::numeric_limits<double>::infinity();
       int best_face = -1;
       for (int k = 0; k < 4; ++k) {
         if (cur.beta[k] >= -kDetect) continue;
-        const double root = refine_root(g, path, k, prev.tau, cur.tau, prev.beta[k], tol, evals);
-        if (root < best) {
+        const Sample root = refine_root(g, path, k, prev.tau, cur.tau, prev.beta[k], cur.beta[k], tol, evals);
+        if (root.tau < best.tau) {
           best = root;
           best_face = k;
         }
       }
-      return finish(g, path, best, best_face, evals);
+      return finish(g, best, best_face, evals);
     }
     // A path that has come to rest (a sink inside the cell) is trapped.
     if (cur.v.norm() <= 1e-12 * g.v_max) {
@@ -188,7 +208,7 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
       return r;
     }
     prev = cur;
-    if (j % 16 == 0) delta = std::min(2 * delta, std::max(delta, delta_cap));
+    delta = std::min(2 * delta, std::max(delta, delta_cap));
   }
   ExitResult r;
   r.kind = ExitResult::trapped;

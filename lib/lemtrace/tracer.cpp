@@ -60,7 +60,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     const CellRecord& rec = grid.record(cell, scratch);
     emit(line, x, t, cell, rec.type);
   }
-  int hops = 0;
+  int hops = 0, stuck = 0;
   for (;;) {
     if (line.cells >= o.max_steps) {
       line.reason = Reason::out_of_steps;
@@ -125,6 +125,13 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
       return;
     }
     if (!e.x.allFinite()) {
+      line.reason = Reason::unexpected_value;
+      return;
+    }
+    // A path that makes no progress (it alternates between cells at one point, which
+    // round-off on a face can cause) is stopped rather than spun to --max-steps.
+    stuck = (e.x - x).norm() == 0 ? stuck + 1 : 0;
+    if (stuck > 64) {
       line.reason = Reason::unexpected_value;
       return;
     }
