@@ -10,7 +10,8 @@ find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
 find_package(OpenEXR 3 CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(VTK 9.1 REQUIRED COMPONENTS
-  CommonCore CommonDataModel CommonExecutionModel IOLegacy IOXML)
+  CommonCore CommonDataModel CommonExecutionModel IOLegacy IOXML
+  FiltersFlowPaths)  # vtkStreamTracer: the anchor of tests/bench/bench_lemtrace
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(GPIOD  REQUIRED IMPORTED_TARGET libgpiod>=1.6)
 pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0>=1.0.26)

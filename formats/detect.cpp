@@ -39,6 +39,7 @@ constexpr FormatRow kFormats[] = {
     {Format::vti, Kind::dataset, "vti", ".vti", ""},
     {Format::vtp, Kind::dataset, "vtp", ".vtp", ""},
     {Format::vtk, Kind::dataset, "vtk", ".vtk", ""},
+    {Format::vts, Kind::dataset, "vts", ".vts", ""},
     {Format::csv, Kind::table, "csv", ".csv", ""},
     {Format::tsv, Kind::table, "tsv", ".tsv", "tab"},
     {Format::json, Kind::json, "json", ".json", ""},
@@ -165,8 +166,9 @@ Format detect_xml(std::string_view b, const std::string& where) {
   if (tag.find("\"UnstructuredGrid\"") != std::string_view::npos) return Format::vtu;
   if (tag.find("\"ImageData\"") != std::string_view::npos) return Format::vti;
   if (tag.find("\"PolyData\"") != std::string_view::npos) return Format::vtp;
+  if (tag.find("\"StructuredGrid\"") != std::string_view::npos) return Format::vts;
   throw bad_input("{}", with_location("unsupported VTK XML dataset type (fest reads UnstructuredGrid, "
-                                      "ImageData and PolyData)", where));
+                                      "ImageData, PolyData and StructuredGrid)", where));
 }
 
 // CSV/TSV: a header line of names, then lines of numbers; decided by the delimiter

@@ -17,7 +17,7 @@ enum class Format {
   // volumes
   nifti, nrrd, mha,
   // VTK datasets
-  vtu, vti, vtp, vtk,
+  vtu, vti, vtp, vtk, vts,
   // tables and documents
   csv, tsv, json,
 };

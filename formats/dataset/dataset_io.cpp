@@ -28,6 +28,8 @@
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLStructuredGridReader.h>
+#include <vtkXMLStructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -270,6 +272,8 @@ vtkSmartPointer<vtkDataSet> read_dataset(std::string_view bytes, Format format) 
       return read_xml<vtkXMLImageDataReader>(bytes, "ImageData", "vtkImageData", "vti");
     case Format::vtp:
       return read_xml<vtkXMLPolyDataReader>(bytes, "PolyData", "vtkPolyData", "vtp");
+    case Format::vts:
+      return read_xml<vtkXMLStructuredGridReader>(bytes, "StructuredGrid", "vtkStructuredGrid", "vts");
     case Format::vtk:
       return read_legacy(bytes);
     default:
@@ -289,6 +293,9 @@ std::string write_dataset(vtkDataSet* dataset, Format format, const DatasetWrite
     case Format::vtp:
       require_class(dataset, "vtkPolyData", "vtp", "polygonal data");
       return write_xml<vtkXMLPolyDataWriter>(dataset, options.ascii, "vtp");
+    case Format::vts:
+      require_class(dataset, "vtkStructuredGrid", "vts", "structured grids");
+      return write_xml<vtkXMLStructuredGridWriter>(dataset, options.ascii, "vts");
     case Format::vtk:
       if (!dataset->IsA("vtkPolyData") && !dataset->IsA("vtkImageData") && !dataset->IsA("vtkStructuredGrid") &&
           !dataset->IsA("vtkRectilinearGrid") && !dataset->IsA("vtkUnstructuredGrid"))

@@ -1,5 +1,5 @@
 #pragma once
-// VTK datasets: XML .vtu/.vti/.vtp and legacy .vtk. Only code that includes this header
+// VTK datasets: XML .vtu/.vti/.vtp/.vts and legacy .vtk. Only code that includes this header
 // pays for VTK (a forward declaration keeps vtkDataSet.h out).
 
 #include <string>

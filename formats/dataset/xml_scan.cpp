@@ -203,7 +203,7 @@ class XmlScanner {
         throw bad_input("{}: this is a VTK XML {} file, not {}", format_, type.empty() ? "untyped" : type,
                         expected_);
       compressed_ = tag.has("compressor") && !tag.get("compressor").empty();
-    } else if (tag.name == "ImageData" && tag.has("WholeExtent")) {
+    } else if ((tag.name == "ImageData" || tag.name == "StructuredGrid") && tag.has("WholeExtent")) {
       extent_points(tag, "WholeExtent");
     } else if (tag.name == "Piece") {
       piece(tag);
@@ -213,7 +213,7 @@ class XmlScanner {
   }
 
   void piece(const Tag& tag) {
-    if (expected_ == "ImageData") {
+    if (expected_ == "ImageData" || expected_ == "StructuredGrid") {
       points_ = extent_points(tag, "Extent");
       cells_ = points_;  // never more cells than points in a grid
       return;

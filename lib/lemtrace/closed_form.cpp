@@ -1,0 +1,140 @@
+#include "lemtrace/closed_form.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace fest::lemtrace {
+
+double psi(double lambda, double s) {
+  const double ls = lambda * s;
+  if (std::abs(ls) < 1e-5) return s * (1.0 + ls * (0.5 + ls / 6.0));
+  return std::expm1(ls) / lambda;
+}
+
+namespace {
+
+// e^{l s} and psi(l, s) from one expm1.
+inline void exp_and_psi(double l, double s, double& e, double& p) {
+  const double ls = l * s;
+  if (std::abs(ls) < 1e-5) {
+    p = s * (1.0 + ls * (0.5 + ls / 6.0));
+    e = 1.0 + l * p;
+    return;
+  }
+  const double m = std::expm1(ls);
+  e = 1.0 + m;
+  p = m / l;
+}
+
+}  // namespace
+
+CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(record), x0_(x0), dir_(dir) {
+  switch (rec_.type) {
+    case CellType::normal_real:
+    case CellType::normal_complex:
+      for (int i = 0; i < 3; ++i)
+        z0_[i] = rec_.Sinv[3 * i] * x0[0] + rec_.Sinv[3 * i + 1] * x0[1] + rec_.Sinv[3 * i + 2] * x0[2];
+      break;
+    case CellType::parallel:
+      s0_ = rec_.S[0] * x0[0] + rec_.S[1] * x0[1] + rec_.S[2] * x0[2] + rec_.c[0];
+      break;
+    case CellType::extraordinary:
+      break;
+  }
+}
+
+Vec3 CellPath::entry_velocity(const Vec3& field) const {
+  if (rec_.type == CellType::parallel) return Vec3(rec_.lam[0], rec_.lam[1], rec_.lam[2]) * (dir_ * s0_);
+  return dir_ * field;
+}
+
+double CellPath::rate() const {
+  switch (rec_.type) {
+    case CellType::normal_real:
+      return std::max({std::abs(rec_.lam[0]), std::abs(rec_.lam[1]), std::abs(rec_.lam[2])});
+    case CellType::normal_complex:
+      return std::max(std::hypot(rec_.lam[0], rec_.lam[1]), std::abs(rec_.lam[2]));
+    case CellType::parallel:
+      return std::abs(rec_.c[1]);
+    case CellType::extraordinary: {
+      double m = 0;
+      for (int i = 0; i < 9; ++i) m = std::max(m, std::abs(rec_.S[i]));
+      return 3 * m;
+    }
+  }
+  return 0;
+}
+
+void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
+  const double s = dir_ * tau;
+  switch (rec_.type) {
+    case CellType::normal_real: {
+      double z[3], dz[3];
+      for (int i = 0; i < 3; ++i) {
+        const double l = rec_.lam[i];
+        double e, p;
+        exp_and_psi(l, s, e, p);
+        z[i] = e * z0_[i] + p * rec_.c[i];
+        dz[i] = l * z[i] + rec_.c[i];
+      }
+      for (int r = 0; r < 3; ++r) {
+        x[r] = rec_.S[3 * r] * z[0] + rec_.S[3 * r + 1] * z[1] + rec_.S[3 * r + 2] * z[2];
+        v[r] = dir_ * (rec_.S[3 * r] * dz[0] + rec_.S[3 * r + 1] * dz[1] + rec_.S[3 * r + 2] * dz[2]);
+      }
+      return;
+    }
+    case CellType::normal_complex: {
+      const double a = rec_.lam[0], b = rec_.lam[1], l3 = rec_.lam[2];
+      // One sincos of the half angle gives sin, cos and cos - 1 without cancellation.
+      double sh, ch;
+      sincos(0.5 * b * s, &sh, &ch);
+      const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
+      const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
+      const double ea = 1.0 + em1;
+      // e^{a s} R(b s) - I without cancellation for small s.
+      const double d11 = em1 * cs - 2.0 * sh * sh;
+      const double d12 = ea * sn;
+      const double n2 = a * a + b * b;
+      // Psi_c = M2^{-1} (e^{a s} R - I), M2^{-1} = [[a, -b], [b, a]] / n2, R = [[cs, sn], [-sn, cs]]
+      const double p11 = (a * d11 + b * d12) / n2, p12 = (a * d12 - b * d11) / n2;
+      const double p21 = (b * d11 - a * d12) / n2, p22 = (b * d12 + a * d11) / n2;
+      double z[3], dz[3];
+      z[0] = ea * (cs * z0_[0] + sn * z0_[1]) + p11 * rec_.c[0] + p12 * rec_.c[1];
+      z[1] = ea * (-sn * z0_[0] + cs * z0_[1]) + p21 * rec_.c[0] + p22 * rec_.c[1];
+      double e3, p3;
+      exp_and_psi(l3, s, e3, p3);
+      z[2] = e3 * z0_[2] + p3 * rec_.c[2];
+      dz[0] = a * z[0] + b * z[1] + rec_.c[0];
+      dz[1] = -b * z[0] + a * z[1] + rec_.c[1];
+      dz[2] = l3 * z[2] + rec_.c[2];
+      for (int r = 0; r < 3; ++r) {
+        x[r] = rec_.S[3 * r] * z[0] + rec_.S[3 * r + 1] * z[1] + rec_.S[3 * r + 2] * z[2];
+        v[r] = dir_ * (rec_.S[3 * r] * dz[0] + rec_.S[3 * r + 1] * dz[1] + rec_.S[3 * r + 2] * dz[2]);
+      }
+      return;
+    }
+    case CellType::parallel: {
+      const Vec3 d(rec_.lam[0], rec_.lam[1], rec_.lam[2]);
+      const double mu = rec_.c[1];
+      x = x0_ + d * (s0_ * psi(mu, s));
+      v = d * (dir_ * s0_ * std::exp(mu * s));
+      return;
+    }
+    case CellType::extraordinary: {
+      Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+      Mat3 A;
+      for (int i = 0; i < 9; ++i) A(i / 3, i % 3) = rec_.S[i];
+      const Vec3 b(rec_.c[0], rec_.c[1], rec_.c[2]);
+      M.topLeftCorner<3, 3>() = A * s;
+      M.topRightCorner<3, 1>() = b * s;
+      const Eigen::Matrix4d E = M.exp();
+      x = E.topLeftCorner<3, 3>() * x0_ + E.topRightCorner<3, 1>();
+      v = dir_ * (A * x + b);
+      return;
+    }
+  }
+}
+
+}  // namespace fest::lemtrace

@@ -1,0 +1,41 @@
+#pragma once
+// The path through one cell in closed form (spec §2.2): x(tau) from the entry point x0.
+//
+// normal_real:    z_i(s) = e^{lambda_i s} z_i(0) + psi(lambda_i, s) c_i,  x = S z
+// normal_complex: (z1, z2)(s) = e^{alpha s} R(beta s) z(0) + M2^{-1}(e^{alpha s} R(beta s) - I) c
+// parallel:       x(s) = x0 + d u(s),  u(s) = s(x0) psi(mu, s)   (ray with exact timing)
+// extraordinary:  [x(s); 1] = exp(s [[A, b], [0, 0]]) [x0; 1]      (Pade scaling-and-squaring)
+// with s = dir * tau (dir = -1 traces backward) and psi(lambda, s) = expm1(lambda s)/lambda.
+
+#include "lemtrace/cell_field.hpp"
+
+namespace fest::lemtrace {
+
+// (e^{lambda s} - 1) / lambda, accurate for small lambda s and equal to s at lambda = 0.
+double psi(double lambda, double s);
+
+class CellPath {
+ public:
+  CellPath(const CellRecord& record, const Vec3& x0, double dir);
+  // Position at time tau after entry, and the velocity dx/dtau there.
+  void eval(double tau, Vec3& x, Vec3& v) const;
+  Vec3 position(double tau) const {
+    Vec3 x, v;
+    eval(tau, x, v);
+    return x;
+  }
+  const Vec3& entry() const noexcept { return x0_; }
+  // dx/dtau at the entry from the interpolated field there (parallel cells move along d).
+  Vec3 entry_velocity(const Vec3& field) const;
+  // Largest rate of the cell's dynamics (1/time): bounds the sampling step.
+  double rate() const;
+
+ private:
+  const CellRecord& rec_;
+  Vec3 x0_;
+  Vec3 z0_;       // S^{-1} x0 (normal cells)
+  double s0_ = 0; // parallel: speed at x0
+  double dir_;
+};
+
+}  // namespace fest::lemtrace

@@ -1,0 +1,221 @@
+#include "lemtrace/exit_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fest::lemtrace {
+namespace {
+
+constexpr double kDetect = 1e-12;   // beta below -kDetect counts as outside
+constexpr double kValid = 1e-10;    // tolerance of the validation of an exit
+
+struct Sample {
+  double tau;
+  Eigen::Vector4d beta;
+  Eigen::Vector4d rate;  // d beta / d tau
+  Vec3 x, v;
+};
+
+Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+  Sample s;
+  s.tau = tau;
+  path.eval(tau, s.x, s.v);
+  s.beta = g.bary(s.x);
+  s.rate = g.bary_rate(s.v);
+  ++evals;
+  return s;
+}
+
+// At tau = 0 the closed form is the entry point itself.
+Sample entry_sample(const TetGeometry& g, const CellPath& path) {
+  Sample s;
+  s.tau = 0;
+  s.x = path.entry();
+  s.beta = g.bary(s.x);
+  s.v = path.entry_velocity(g.interpolate(s.beta));
+  s.rate = g.bary_rate(s.v);
+  return s;
+}
+
+// Root of beta_k in [lo, hi] with beta_k(lo) >= 0 > beta_k(hi) = fhi: safeguarded
+// Newton from the secant point. Returns the sample at the root (its position is the
+// closed form at the returned time, so the exit point needs no further evaluation).
+Sample refine_root(const TetGeometry& g, const CellPath& path, int k, double lo, double hi, double flo,
+                   double fhi, double tol, int& evals) {
+  if (flo <= kDetect) {
+    // The bracket starts on the face (the entry face, or a face the path touches): a
+    // path that enters and curves back out within the bracket is positive in between.
+    // Look for that positive stretch towards lo before calling the exit immediate.
+    bool found = false;
+    for (int j = 1; j <= 50 && !found; ++j) {
+      const double m = lo + (hi - lo) * std::ldexp(1.0, -j);
+      const Sample s = sample(g, path, m, evals);
+      const double fm = s.beta[k];
+      if (fm > kDetect) {
+        lo = m;
+        flo = fm;
+        found = true;
+      } else if (fm < -kDetect) {
+        hi = m;
+        fhi = fm;
+      }
+    }
+    if (!found) return sample(g, path, lo, evals);
+  }
+  double tau = lo + (hi - lo) * flo / (flo - fhi);
+  Sample s;
+  for (int it = 0; it < 60; ++it) {
+    s = sample(g, path, tau, evals);
+    const double f = s.beta[k], df = s.rate[k];
+    // |beta| at round-off: the point is on the face to within 1e-15 of the cell size.
+    if (std::abs(f) <= 1e-15) return s;
+    if (f > 0) lo = tau;
+    else hi = tau;
+    double next = df != 0 ? tau - f / df : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const double step = std::abs(next - tau);
+    tau = next;
+    if (step < tol || hi - lo < tol) break;
+  }
+  return sample(g, path, tau, evals);
+}
+
+// A path can cross a face and come back within one sampling step (it grazes the face):
+// beta_k is positive at both ends but its rate turns from negative to positive. Find the
+// minimum of beta_k there (bisection on the rate); if it is negative, the step is cut at
+// that point so that the caller sees the crossing.
+void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
+  for (int k = 0; k < 4; ++k) {
+    if (!(prev.rate[k] < 0 && cur.rate[k] > 0 && cur.beta[k] >= -kDetect)) continue;
+    double a = prev.tau, b = cur.tau;
+    const double width = b - a;
+    for (int it = 0; it < 40 && b - a > 1e-6 * width; ++it) {
+      const double m = 0.5 * (a + b);
+      Sample s = sample(g, path, m, evals);
+      if (s.beta[k] < -kDetect) {
+        cur = s;
+        return;
+      }
+      if (s.rate[k] < 0) a = m;
+      else b = m;
+    }
+  }
+}
+
+ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
+  ExitResult r;
+  r.kind = ExitResult::exit;
+  r.tau = at.tau;
+  r.face = face;
+  r.evaluations = evals;
+  Eigen::Vector4d beta = g.bary(at.x);
+  // Snap onto the face: beta_face = 0, the others clamped at 0 and renormalised.
+  beta[face] = 0;
+  for (int k = 0; k < 4; ++k) beta[k] = std::max(beta[k], 0.0);
+  const double sum = beta.sum();
+  if (sum > 0) beta /= sum;
+  r.beta = beta;
+  r.x = beta[0] * g.V[0] + beta[1] * g.V[1] + beta[2] * g.V[2] + beta[3] * g.V[3];
+  return r;
+}
+
+bool validates(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+  for (double f : {0.25, 0.5, 0.75, 1.0}) {
+    ++evals;
+    if (g.bary(path.position(f * tau)).minCoeff() < -kValid) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params) {
+  int evals = 0;
+  const double tauT = g.transit_time();
+  const double rate = path.rate();
+  if (!std::isfinite(tauT)) {
+    ExitResult r;
+    r.kind = ExitResult::stalled;
+    return r;
+  }
+  const double tol = params.eps_newton * tauT;
+
+  if (params.paper_newton) {
+    const Sample s0 = sample(g, path, 0, evals);
+    double best = std::numeric_limits<double>::infinity();
+    int best_face = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (s0.beta[k] <= kDetect && s0.rate[k] >= 0) continue;  // entry face
+      double tau = 0, f = s0.beta[k], df = s0.rate[k];
+      bool converged = false;
+      for (int it = 0; it < 30 && df != 0; ++it) {
+        const double step = -f / df;
+        tau += step;
+        if (std::abs(step) < tol) {
+          converged = true;
+          break;
+        }
+        Sample s = sample(g, path, tau, evals);
+        f = s.beta[k];
+        df = s.rate[k];
+      }
+      if (converged && tau > 0 && tau < best && validates(g, path, tau, evals)) {
+        best = tau;
+        best_face = k;
+      }
+    }
+    if (best_face >= 0) return finish(g, sample(g, path, best, evals), best_face, evals);
+  }
+
+  // Bracket search. The first step is a little beyond the exit of the straight ray
+  // x0 + tau v0 (where a nearly straight path leaves), the later ones double; no step is
+  // longer than 0.25/rate, over which the path turns by at most about 0.25 rad, so a
+  // face cannot be crossed three times inside one step.
+  Sample prev = entry_sample(g, path);
+  for (int k = 0; k < 4; ++k) prev.beta[k] = std::max(prev.beta[k], 0.0);
+  const double delta_cap = rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity();
+  double ray = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 4; ++k)
+    if (prev.rate[k] < 0) ray = std::min(ray, prev.beta[k] / -prev.rate[k]);
+  double delta = std::isfinite(ray) && ray > 1e-3 * tauT ? 1.1 * ray : tauT / 4;
+  delta = std::min(delta, delta_cap);
+  for (int j = 1; j <= params.max_samples; ++j) {
+    Sample cur = sample(g, path, prev.tau + delta, evals);
+    if (!cur.x.allFinite()) break;
+    dip_below(g, path, prev, cur, evals);
+    if (cur.beta.minCoeff() < -kDetect) {
+      Sample best;
+      best.tau = std::numeric_limits<double>::infinity();
+      int best_face = -1;
+      for (int k = 0; k < 4; ++k) {
+        if (cur.beta[k] >= -kDetect) continue;
+        const Sample root = refine_root(g, path, k, prev.tau, cur.tau, prev.beta[k], cur.beta[k], tol, evals);
+        if (root.tau < best.tau) {
+          best = root;
+          best_face = k;
+        }
+      }
+      return finish(g, best, best_face, evals);
+    }
+    // A path that has come to rest (a sink inside the cell) is trapped.
+    if (cur.v.norm() <= 1e-12 * g.v_max) {
+      ExitResult r;
+      r.kind = ExitResult::stalled;
+      r.tau = cur.tau;
+      r.x = cur.x;
+      r.evaluations = evals;
+      return r;
+    }
+    prev = cur;
+    delta = std::min(2 * delta, std::max(delta, delta_cap));
+  }
+  ExitResult r;
+  r.kind = ExitResult::trapped;
+  r.tau = prev.tau;
+  r.x = prev.x;
+  r.evaluations = evals;
+  return r;
+}
+
+}  // namespace fest::lemtrace

@@ -1,0 +1,344 @@
+#include "lemtrace/tracer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace fest::lemtrace {
+
+const char* method_name(Method m) noexcept {
+  switch (m) {
+    case Method::lem: return "lem";
+    case Method::euler: return "euler";
+    case Method::heun: return "heun";
+    case Method::rk3: return "rk3";
+    case Method::rk4: return "rk4";
+    case Method::rk45: return "rk45";
+  }
+  return "?";
+}
+
+const char* reason_name(Reason r) noexcept {
+  switch (r) {
+    case Reason::none: return "none";
+    case Reason::out_of_domain: return "out_of_domain";
+    case Reason::not_initialized: return "not_initialized";
+    case Reason::unexpected_value: return "unexpected_value";
+    case Reason::out_of_length: return "out_of_length";
+    case Reason::out_of_steps: return "out_of_steps";
+    case Reason::stagnation: return "stagnation";
+    case Reason::critical_point: return "critical_point";
+    case Reason::out_of_time: return "out_of_time";
+  }
+  return "?";
+}
+
+namespace {
+
+void emit(Polyline& line, const Vec3& x, double t, int32_t cell, CellType type) {
+  line.x.push_back(x);
+  line.t.push_back(t);
+  line.cell.push_back(cell);
+  line.type.push_back(static_cast<uint8_t>(type));
+}
+
+double terminal_speed(const FieldGrid& grid, const TraceOptions& o) {
+  return o.terminal_speed >= 0 ? o.terminal_speed : 1e-12 * grid.max_speed();
+}
+
+// ---- locally exact method -------------------------------------------------------------
+
+void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir,
+               const TraceOptions& o, Polyline& line) {
+  const TetMesh& mesh = grid.mesh();
+  const double v_stop = terminal_speed(grid, o);
+  CellRecord scratch;
+  Vec3 x = seed;
+  double t = t0, length = 0;
+  {
+    const CellRecord& rec = grid.record(cell, scratch);
+    emit(line, x, t, cell, rec.type);
+  }
+  int hops = 0, stuck = 0;
+  for (;;) {
+    if (line.cells >= o.max_steps) {
+      line.reason = Reason::out_of_steps;
+      return;
+    }
+    const TetGeometry g = tet_geometry(mesh, cell);
+    const CellRecord& rec = grid.record(cell, scratch);
+    const Eigen::Vector4d beta = g.bary(x);
+    const Vec3 v = g.interpolate(beta);
+    const double speed = v.norm();
+    if (!std::isfinite(speed)) {
+      line.reason = Reason::unexpected_value;
+      return;
+    }
+    if (speed <= v_stop) {
+      line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
+      return;
+    }
+    // On an edge or vertex the path may leave at once through another face of this
+    // cell (the edge/vertex ambiguity rule): hop there without a step.
+    const Eigen::Vector4d rate = g.bary_rate(dir * v);
+    int leave = -1;
+    double most = 0;
+    for (int k = 0; k < 4; ++k) {
+      if (beta[k] <= 1e-13 && rate[k] * g.h_min < -1e-12 * speed && rate[k] < most) {
+        most = rate[k];
+        leave = k;
+      }
+    }
+    if (leave >= 0 && hops < 16) {
+      const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][leave];
+      if (next < 0) {
+        line.reason = Reason::out_of_domain;
+        return;
+      }
+      cell = next;
+      ++hops;
+      continue;
+    }
+    hops = 0;
+
+    const CellPath path(rec, x, dir);
+    const ExitResult e = find_exit(g, path, o.exit);
+    ++line.cells;
+    line.evaluations += e.evaluations;
+    const double elapsed = std::abs(t - t0);
+    const double tau = e.tau;
+    if (elapsed + tau > o.max_time) {
+      const double rest = o.max_time - elapsed;
+      emit(line, path.position(rest), t + dir * rest, cell, rec.type);
+      line.reason = Reason::out_of_time;
+      return;
+    }
+    if (o.samples_per_cell > 1 && tau > 0)
+      for (int j = 1; j < o.samples_per_cell; ++j) {
+        const double s = tau * j / o.samples_per_cell;
+        emit(line, path.position(s), t + dir * s, cell, rec.type);
+      }
+    if (e.kind != ExitResult::exit) {
+      if (e.tau > 0) emit(line, e.x, t + dir * e.tau, cell, rec.type);
+      line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
+      return;
+    }
+    if (!e.x.allFinite()) {
+      line.reason = Reason::unexpected_value;
+      return;
+    }
+    // A path that makes no progress (it alternates between cells at one point, which
+    // round-off on a face can cause) is stopped rather than spun to --max-steps.
+    stuck = (e.x - x).norm() == 0 ? stuck + 1 : 0;
+    if (stuck > 64) {
+      line.reason = Reason::unexpected_value;
+      return;
+    }
+    length += (e.x - x).norm();
+    x = e.x;
+    t += dir * tau;
+    if (tau > 0 || line.x.size() == 1) emit(line, x, t, cell, rec.type);
+    if (length > o.max_length) {
+      line.reason = Reason::out_of_length;
+      return;
+    }
+    const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
+    if (next < 0) {
+      line.reason = Reason::out_of_domain;
+      return;
+    }
+    cell = next;
+  }
+}
+
+// ---- Runge-Kutta baselines -------------------------------------------------------------
+
+struct Sampler {
+  const FieldGrid& grid;
+  Polyline& line;
+  double dir;
+  int32_t cell;
+  // v at x (times dir); false outside the grid.
+  bool operator()(const Vec3& x, Vec3& v) {
+    const int32_t c = grid.locator().walk(cell, x, &line.locator_calls);
+    if (c < 0) return false;
+    cell = c;
+    const TetGeometry g = tet_geometry(grid.mesh(), c);
+    v = dir * g.interpolate(g.bary(x));
+    return v.allFinite();
+  }
+};
+
+void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir, const TraceOptions& o,
+              Polyline& line) {
+  const double v_stop = terminal_speed(grid, o);
+  Sampler field{grid, line, dir, cell};
+  CellRecord scratch;
+  Vec3 x = seed;
+  double t = t0, length = 0;
+  emit(line, x, t, cell, grid.record(cell, scratch).type);
+  double h_adapt = -1;
+  for (;;) {
+    if (line.cells >= o.max_steps) {
+      line.reason = Reason::out_of_steps;
+      return;
+    }
+    Vec3 k1;
+    if (!field(x, k1)) {
+      line.reason = Reason::out_of_domain;
+      return;
+    }
+    const double speed = k1.norm();
+    if (speed <= v_stop) {
+      line.reason = Reason::stagnation;
+      return;
+    }
+    double h = o.step;
+    if (o.step_unit == StepUnit::length) h = o.step / speed;
+    if (o.step_unit == StepUnit::cell) h = o.step * tet_geometry(grid.mesh(), field.cell).h_min / speed;
+    if (o.method == Method::rk45 && h_adapt > 0) h = h_adapt;
+    const double elapsed = std::abs(t - t0);
+    bool last = false;
+    if (elapsed + h >= o.max_time) {
+      h = o.max_time - elapsed;
+      last = true;
+    }
+    Vec3 next = x, k2 = Vec3::Zero(), k3 = Vec3::Zero(), k4 = Vec3::Zero();
+    bool ok = true;
+    switch (o.method) {
+      case Method::euler:
+        next = x + h * k1;
+        break;
+      case Method::heun:
+        ok = field(x + h * k1, k2);
+        next = x + 0.5 * h * (k1 + k2);
+        break;
+      case Method::rk3:
+        ok = field(x + 0.5 * h * k1, k2) && field(x - h * k1 + 2 * h * k2, k3);
+        next = x + h / 6 * (k1 + 4 * k2 + k3);
+        break;
+      case Method::rk4:
+        ok = field(x + 0.5 * h * k1, k2) && field(x + 0.5 * h * k2, k3) && field(x + h * k3, k4);
+        next = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        break;
+      case Method::rk45: {
+        // Dormand-Prince 5(4) with step control.
+        Vec3 k[7];
+        k[0] = k1;
+        static const double a[6][6] = {{1.0 / 5},
+                                       {3.0 / 40, 9.0 / 40},
+                                       {44.0 / 45, -56.0 / 15, 32.0 / 9},
+                                       {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
+                                       {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
+                                       {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
+        static const double e[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525,
+                                    -1.0 / 40};
+        for (int s = 1; s < 7 && ok; ++s) {
+          Vec3 y = x;
+          for (int j = 0; j < s; ++j) y += h * a[s - 1][j] * k[j];
+          ok = field(y, k[s]);
+          if (s == 6) next = y;
+        }
+        if (ok) {
+          Vec3 err = Vec3::Zero();
+          for (int s = 0; s < 7; ++s) err += h * e[s] * k[s];
+          const double en = err.norm();
+          const double factor = en > 0 ? std::clamp(0.9 * std::pow(o.tolerance / en, 0.2), 0.2, 5.0) : 5.0;
+          if (en > o.tolerance && !last) {
+            h_adapt = h * factor;
+            continue;  // reject, retry smaller
+          }
+          h_adapt = h * factor;
+        }
+        break;
+      }
+      case Method::lem:
+        break;
+    }
+    if (!ok || !field(next, k2)) {
+      line.reason = Reason::out_of_domain;
+      return;
+    }
+    ++line.cells;
+    length += (next - x).norm();
+    x = next;
+    t += dir * h;
+    emit(line, x, t, field.cell, grid.record(field.cell, scratch).type);
+    if (last) {
+      line.reason = Reason::out_of_time;
+      return;
+    }
+    if (length > o.max_length) {
+      line.reason = Reason::out_of_length;
+      return;
+    }
+  }
+}
+
+Polyline trace_one(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir,
+                   const TraceOptions& o) {
+  Polyline line;
+  if (o.method == Method::lem) trace_lem(grid, cell, seed, t0, dir, o, line);
+  else trace_rk(grid, cell, seed, t0, dir, o, line);
+  return line;
+}
+
+}  // namespace
+
+Polyline trace(const FieldGrid& grid, const Vec3& seed, double t0, const TraceOptions& options) {
+  Polyline line;
+  int64_t calls = 0;
+  const int32_t cell = seed.allFinite() ? grid.locator().locate(seed) : -1;
+  ++calls;
+  if (cell < 0) {
+    line.reason = Reason::not_initialized;
+    line.locator_calls = calls;
+    return line;
+  }
+  if (options.direction == Direction::forward) line = trace_one(grid, cell, seed, t0, 1.0, options);
+  else if (options.direction == Direction::backward) line = trace_one(grid, cell, seed, t0, -1.0, options);
+  else {
+    Polyline back = trace_one(grid, cell, seed, t0, -1.0, options);
+    line = trace_one(grid, cell, seed, t0, 1.0, options);
+    // Join: the backward half reversed, then the forward half (the seed once).
+    Polyline joined;
+    for (std::size_t i = back.x.size(); i-- > 1;) {
+      joined.x.push_back(back.x[i]);
+      joined.t.push_back(back.t[i]);
+      joined.cell.push_back(back.cell[i]);
+      joined.type.push_back(back.type[i]);
+    }
+    joined.x.insert(joined.x.end(), line.x.begin(), line.x.end());
+    joined.t.insert(joined.t.end(), line.t.begin(), line.t.end());
+    joined.cell.insert(joined.cell.end(), line.cell.begin(), line.cell.end());
+    joined.type.insert(joined.type.end(), line.type.begin(), line.type.end());
+    joined.reason = line.reason;
+    joined.reason_backward = back.reason;
+    joined.cells = line.cells + back.cells;
+    joined.locator_calls = line.locator_calls + back.locator_calls;
+    joined.evaluations = line.evaluations + back.evaluations;
+    line = std::move(joined);
+  }
+  line.locator_calls += calls;
+  return line;
+}
+
+std::vector<Polyline> trace_all(const FieldGrid& grid, const std::vector<Vec3>& seeds, const std::vector<double>& t0,
+                                const TraceOptions& options, int threads) {
+  std::vector<Polyline> lines(seeds.size());
+  grid.locator();
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < seeds.size();)
+      lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options);
+  };
+  const int n = std::max(1, std::min<int>(threads, static_cast<int>(seeds.size())));
+  std::vector<std::thread> pool;
+  for (int w = 1; w < n; ++w) pool.emplace_back(work);
+  work();
+  for (auto& th : pool) th.join();
+  return lines;
+}
+
+}  // namespace fest::lemtrace

@@ -1,0 +1,130 @@
+// lemtrace: streamlines of a vector field on an unstructured grid with the locally exact
+// method (one closed-form step per tetrahedron), plus cell classification, a benchmark
+// against Runge-Kutta at equal step count, and synthetic grids (specs/lemtrace.md).
+//
+// Wiring only: this file maps flags onto commands.hpp.
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "cli/cli.hpp"
+#include "commands.hpp"
+
+namespace {
+
+using namespace fest::lemtrace_tool;
+
+void add_grid_options(CLI::App* cmd, GridArgs& g, bool with_precompute) {
+  cmd->add_option("--vectors", g.vectors, "Point vector array (default: active vectors, else the only 3-component one)");
+  cmd->add_option("--split", g.split, "Non-tetrahedral cells: conforming split, or none to reject them")
+      ->check(CLI::IsMember({"conforming", "none"}));
+  cmd->add_option("--eps-parallel", g.eps_parallel, "epsilon_P: eigenvalue threshold for parallel cells")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--eps-mode", g.eps_mode, "abs: |lambda| < eps (the paper's); rel: |lambda| tau_T < eps")
+      ->check(CLI::IsMember({"abs", "rel"}));
+  if (with_precompute)
+    cmd->add_option("--precompute", g.precompute, "Per-cell records: all, lazy (first visit) or none (every visit)")
+        ->check(CLI::IsMember({"all", "lazy", "none"}));
+  cmd->add_option("--threads", g.threads, "Worker threads (0 = all cores)")->default_val(0);
+}
+
+void add_trace_options(CLI::App* cmd, TraceArgs& t, bool seeds_required) {
+  add_grid_options(cmd, t.grid, true);
+  cmd->add_option("grid", t.grid.grid, "Grid: .vtu .vtk .vti .vts, or - for legacy .vtk on standard input")->required();
+  auto* seeds = cmd->add_option("seeds", t.seeds, "Seeds: CSV x,y,z[,id][,t0] or .vtp/.vtk points; - = standard input");
+  if (seeds_required) seeds->required();
+  cmd->add_option("--seed-point", t.seed_points, "A seed x,y,z (repeatable)")->allow_extra_args(false);
+  cmd->add_option("--seed-line", t.seed_lines, "n seeds on a segment: x0,y0,z0:x1,y1,z1:n (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--root", t.root, "Exit-time solver: bracket (safe) or newton (the paper's, validated)")
+      ->check(CLI::IsMember({"bracket", "newton"}));
+  cmd->add_option("--eps-newton", t.eps_newton, "Root tolerance relative to the cell's transit time")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--extraordinary", t.extraordinary, "Extraordinary cells: expm (generic closed form)")
+      ->check(CLI::IsMember({"expm"}));
+  cmd->add_option("--direction", t.direction, "forward, backward or both")
+      ->check(CLI::IsMember({"forward", "backward", "both"}));
+  cmd->add_option("--max-steps", t.max_steps, "Cells (LEM) or steps (RK) per line")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-length", t.max_length, "Stop after this arc length")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-time", t.max_time, "Stop after this integration time")->check(CLI::PositiveNumber);
+  cmd->add_option("--terminal-speed", t.terminal_speed, "Stop below this speed (default 1e-12 x max vertex speed)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--step", t.step, "Step of the RK methods")->check(CLI::PositiveNumber);
+  cmd->add_option("--step-unit", t.step_unit, "time, length or cell (fraction of h_T/|v|)")
+      ->check(CLI::IsMember({"time", "length", "cell"}));
+  cmd->add_option("--tol", t.tolerance, "RK45 error tolerance per step")->check(CLI::PositiveNumber);
+  cmd->add_option("--samples-per-cell", t.samples_per_cell, "Closed-form points per cell (LEM; 0 = exits only)")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_option("-o,--output", t.output, "Output file (.csv .vtp .vtk .json), - = standard output");
+  cmd->add_option("--to", t.to, "Output format: csv, vtp, vtk or json")->check(CLI::IsMember({"csv", "vtp", "vtk", "json"}));
+  cmd->add_option("--report", t.report, "JSON summary: cell types, reasons, timings, memory");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // `lemtrace GRID ...` means `lemtrace trace GRID ...` (trace is the default subcommand).
+  std::vector<char*> args(argv, argv + argc);
+  static char trace_name[] = "trace";
+  if (argc > 1) {
+    const std::string first = argv[1];
+    const bool known = first == "trace" || first == "classify" || first == "bench" || first == "gen" ||
+                       first == "--help" || first == "-h" || first == "--version";
+    if (!known) args.insert(args.begin() + 1, trace_name);
+  }
+  std::string command_line;
+  for (int i = 1; i < argc; ++i) command_line += (i > 1 ? " " : "") + std::string(argv[i]);
+
+  CLI::App app{"Streamlines on unstructured grids with the locally exact method: the field is linear in each\n"
+               "tetrahedron, the path through it is solved in closed form, one step per cell.",
+               "lemtrace"};
+  fest::cli::Common common;
+  fest::cli::add_common(app, common);
+  app.require_subcommand(1);
+
+  TraceArgs trace;
+  trace.command_line = command_line;
+  auto* trace_cmd = app.add_subcommand("trace", "Trace streamlines from seeds (the default subcommand)");
+  add_trace_options(trace_cmd, trace, false);
+  trace_cmd->add_option("--method", trace.method, "lem, euler, heun, rk3, rk4 or rk45")
+      ->check(CLI::IsMember({"lem", "euler", "heun", "rk3", "rk4", "rk45"}));
+
+  ClassifyArgs classify;
+  auto* classify_cmd = app.add_subcommand("classify", "Cell types and their statistics (Tables 9.1/9.2)");
+  add_grid_options(classify_cmd, classify.grid, false);
+  classify_cmd->add_option("grid", classify.grid.grid, "Grid file")->required();
+  classify_cmd->add_option("--sweep-parallel", classify.sweep, "Count parallel cells for eps = 10^a .. 10^b: 1e-7:1e-1");
+  classify_cmd->add_option("-o,--output", classify.output, "Write the grid with LemType, Eigenvalues, CriticalPointInside (.vtu)");
+
+  BenchArgs bench;
+  bench.trace.command_line = command_line;
+  auto* bench_cmd = app.add_subcommand("bench", "LEM against Euler/Heun/RK3/RK4 at equal step count (Table 9.4)");
+  add_trace_options(bench_cmd, bench.trace, false);
+  bench_cmd->add_option("--repeat", bench.repeat, "Run each method this many times, report the fastest")
+      ->check(CLI::Range(1, 100));
+
+  GenArgs gen;
+  auto* gen_cmd = app.add_subcommand("gen", "Synthetic grid with an analytic field");
+  gen_cmd->add_option("kind", gen.kind,
+                      "rotation helix saddle node spiral shear uniform jordan sphere-rotation sphere-potential abc")
+      ->required();
+  gen_cmd->add_option("--n", gen.n, "Cubes per side")->check(CLI::Range(1, 400));
+  gen_cmd->add_option("--tets", gen.tets, "Tetrahedra per cube (6: Kuhn split)")->check(CLI::IsMember({6}));
+  gen_cmd->add_option("--jitter", gen.jitter, "Random interior vertex displacement, fraction of the cell size")
+      ->check(CLI::Range(0.0, 0.49));
+  gen_cmd->add_option("--seed", gen.seed, "Random seed of the jitter");
+  gen_cmd->add_flag("--hex", gen.hex, "Write hexahedra instead of tetrahedra");
+  gen_cmd->add_option("-o,--output", gen.output, "Output grid (.vtu or .vtk), - = standard output");
+  gen_cmd->add_option("--to", gen.to, "Output format: vtu or vtk")->check(CLI::IsMember({"vtu", "vtk"}));
+
+  app.footer("Exit status: 0 success (lines that stop early say why), 1 numerical failure, 2 usage error,\n"
+             "3 bad input, 4 I/O error. See lemtrace(1).");
+  const int n = static_cast<int>(args.size());
+  return fest::cli::run(app, n, args.data(), [&] {
+    if (trace_cmd->parsed()) return run_trace(trace);
+    if (classify_cmd->parsed()) return run_classify(classify);
+    if (bench_cmd->parsed()) return run_bench(bench);
+    return run_gen(gen);
+  });
+}
