@@ -55,6 +55,9 @@ CameraMatrix fit_scaled_orthographic(const Eigen::Matrix3Xd& points, const Eigen
   const Eigen::Index f = points.cols();
   if (f < 4) throw runtime_failure("the affine camera needs at least 4 landmarks, got {}", f);
   const Eigen::VectorXd wt = w.size() == f ? w : Eigen::VectorXd::Ones(f);
+  const Eigen::Vector2d centroid = image.rowwise().mean();
+  if ((image.colwise() - centroid).cwiseAbs().maxCoeff() <= 1e-9 * std::max(1.0, centroid.cwiseAbs().maxCoeff()))
+    throw runtime_failure("degenerate affine camera: all landmarks lie on one image point");
   Eigen::MatrixXd A(f, 4);
   Eigen::MatrixXd B(f, 2);
   for (Eigen::Index a = 0; a < f; ++a) {
