@@ -20,3 +20,4 @@ if(FEST_TESTS)
   find_package(GTest CONFIG REQUIRED)
   include(GoogleTest)
 endif()
+pkg_check_modules(MINIZIP REQUIRED IMPORTED_TARGET minizip)   # facefit: .npz (zip) model import

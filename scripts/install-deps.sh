@@ -28,6 +28,7 @@ BUILD_PKGS=(
   libgdal-dev           # GDAL 3.6.2   find_package(GDAL)    -> GDAL::GDAL (DEMs, GeoTIFF)
   libfftw3-dev          # FFTW 3.3.10  pkg-config fftw3 / fftw3f
   zlib1g-dev            # .nii.gz, .nrrd gzip encoding
+  libminizip-dev        # minizip 1.1  pkg-config minizip (facefit: .npz model import)
   ccache                # faster rebuilds on 2 cores
   clang libclang-rt-14-dev   # libFuzzer and sanitizer runtimes for the fuzz targets
   make                  # examples/Makefile and Makefile.inc

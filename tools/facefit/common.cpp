@@ -1,0 +1,123 @@
+#include "common.hpp"
+
+#include <cstdlib>
+
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/tool_main.hpp"
+#include "formats/facemodel/landmarks_io.hpp"
+#include "formats/facemodel/mmb.hpp"
+#include "formats/input.hpp"
+#include "formats/mesh/mesh_io.hpp"
+
+namespace facefit_tool {
+
+using namespace fest;
+
+void warn(const std::string& message) { fest::warn(tool, message); }
+
+std::string model_path(const std::string& option) {
+  if (!option.empty()) return option;
+  if (const char* env = std::getenv("FACEFIT_MODEL"); env && *env) return env;
+  throw usage_error("no model: give -m MODEL.mmb or set FACEFIT_MODEL");
+}
+
+facefit::Model load_model(const std::string& option, bool fix_basis) {
+  std::string warnings;
+  formats::MmbReadOptions o;
+  o.fix_basis = fix_basis;
+  facefit::Model m = formats::read_mmb(model_path(option), o, &warnings);
+  if (!warnings.empty()) warn(warnings.substr(0, warnings.size() - 2));
+  return m;
+}
+
+Mesh shape_to_mesh(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  Mesh mesh;
+  const Eigen::Index p = shape.size() / dims;
+  std::vector<Mesh::VertexHandle> vh(static_cast<std::size_t>(p));
+  for (Eigen::Index j = 0; j < p; ++j)
+    vh[static_cast<std::size_t>(j)] = mesh.add_vertex(Mesh::Point(shape(dims * j), shape(dims * j + 1), dims == 3 ? shape(dims * j + 2) : 0.0));
+  for (const auto& t : triangles) mesh.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+  return mesh;
+}
+
+Eigen::VectorXd read_shape(const std::string& path, std::vector<std::array<std::uint32_t, 3>>* triangles) {
+  const formats::Input in = formats::load_input(path);
+  if (formats::kind_of(in.format) != formats::Kind::mesh) throw bad_input("'{}' is not a mesh ({})", path, formats::format_name(in.format));
+  const Mesh mesh = formats::parse(in, formats::read_mesh);
+  Eigen::VectorXd v(3 * static_cast<Eigen::Index>(mesh.n_vertices()));
+  for (auto vh : mesh.vertices()) {
+    const auto& p = mesh.point(vh);
+    for (int e = 0; e < 3; ++e) v(3 * vh.idx() + e) = p[e];
+  }
+  if (!v.allFinite()) throw bad_input("non-finite vertex coordinates ({})", path);
+  if (triangles) {
+    triangles->clear();
+    for (auto fh : mesh.faces()) {
+      std::vector<std::uint32_t> idx;
+      for (auto fv : mesh.fv_range(fh)) idx.push_back(static_cast<std::uint32_t>(fv.idx()));
+      for (std::size_t i = 1; i + 1 < idx.size(); ++i) triangles->push_back({idx[0], idx[i], idx[i + 1]});
+    }
+  }
+  return v;
+}
+
+void write_mesh_to(const Mesh& mesh, const std::string& path, const std::string& to) {
+  formats::OutputFormat out{formats::Format::ply, false};
+  if (!to.empty()) {
+    out = formats::output_format_from_name(to == "plya" ? "ply" : to);
+  } else if (!is_stdio(path)) {
+    out = formats::output_format_from_path(path);
+  }
+  if (formats::kind_of(out.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", to);
+  formats::MeshWriteOptions w;
+  w.ascii = to == "plya";
+  formats::store_output(path, formats::write_mesh(mesh, out.format, w), out.gzip);
+}
+
+std::string read_text(const std::string& path) { return read_input(path); }
+
+std::vector<std::string> read_list(const std::string& path) {
+  const std::string text = read_input(path);
+  std::string dir;
+  if (const auto slash = path.rfind('/'); slash != std::string::npos) dir = path.substr(0, slash + 1);
+  std::vector<std::string> out;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    out.push_back(line[0] == '/' ? line : dir + line);
+  }
+  if (out.empty()) throw bad_input("list '{}' names no files", path);
+  return out;
+}
+
+std::vector<std::uint32_t> read_vertex_indices(const std::string& path) {
+  std::vector<std::uint32_t> out;
+  for (const auto& nv : formats::read_vertex_set(read_input(path), path)) out.push_back(nv.vertex);
+  return out;
+}
+
+facefit::LandmarkMap read_map(const std::string& path) { return formats::read_landmark_map(read_input(path), path); }
+
+std::vector<double> parse_numbers(const std::string& text, const char* option) {
+  std::vector<double> out;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    std::size_t end = text.find(',', pos);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(pos, end - pos);
+    char* stop = nullptr;
+    const double v = std::strtod(item.c_str(), &stop);
+    if (item.empty() || *stop != '\0' || !std::isfinite(v)) throw usage_error("{}: '{}' is not a number", option, item);
+    out.push_back(v);
+    pos = end + 1;
+  }
+  return out;
+}
+
+}  // namespace facefit_tool

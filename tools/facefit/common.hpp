@@ -1,0 +1,40 @@
+#pragma once
+// Wiring shared by facefit's subcommands: model loading (path or $FACEFIT_MODEL),
+// shapes <-> meshes, mesh output, small text files.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/mesh.hpp"
+#include "facefit/landmark_set.hpp"
+#include "facefit/model.hpp"
+
+namespace facefit_tool {
+
+inline constexpr const char* tool = "facefit";
+
+void warn(const std::string& message);
+
+// -m FILE, else $FACEFIT_MODEL; usage error when neither is given.
+std::string model_path(const std::string& option);
+fest::facefit::Model load_model(const std::string& option, bool fix_basis = false);
+
+// A shape vector (interleaved xyz) with the model's triangles as a mesh.
+fest::Mesh shape_to_mesh(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles);
+// Vertex positions of a mesh file as a shape vector (3 per vertex).
+Eigen::VectorXd read_shape(const std::string& path, std::vector<std::array<std::uint32_t, 3>>* triangles = nullptr);
+// Writes a mesh to a path or stdout; format from --to, else the extension, else binary PLY.
+void write_mesh_to(const fest::Mesh& mesh, const std::string& path, const std::string& to);
+
+// Reads a whole text file ("-" = stdin).
+std::string read_text(const std::string& path);
+std::vector<std::string> read_list(const std::string& path);  // one path per line; relative to the list's folder
+std::vector<std::uint32_t> read_vertex_indices(const std::string& path);  // a vertex set or mask file
+fest::facefit::LandmarkMap read_map(const std::string& path);
+
+// "0,1e-4,1" -> numbers; usage error naming the option when malformed.
+std::vector<double> parse_numbers(const std::string& text, const char* option);
+
+}  // namespace facefit_tool
