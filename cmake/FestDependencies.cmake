@@ -19,3 +19,7 @@ if(FEST_TESTS)
   find_package(GTest CONFIG REQUIRED)
   include(GoogleTest)
 endif()
+
+# ODE (libode-dev): only the lmfsim benchmark links it, as a same-run anchor (spec lmfsim §6).
+pkg_check_modules(ODE IMPORTED_TARGET ode>=0.16)
+set(FEST_ODE_FOUND ${ODE_FOUND})

@@ -15,7 +15,77 @@
 namespace fest::lmfsim {
 namespace {
 
+// Inverse of a block of at most 6x6 by Gauss-Jordan with partial pivoting. Written out
+// because Eigen's dynamic-size LU and GEMM dispatch cost more than the arithmetic for
+// blocks this small (the solver's time is almost all in these blocks).
+void small_inverse(const Blk& D, Blk& out) {
+  const int n = static_cast<int>(D.rows());
+  double a[6][12];
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      a[i][j] = D(i, j);
+      a[i][n + j] = i == j ? 1.0 : 0.0;
+    }
+  for (int c = 0; c < n; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < n; ++r)
+      if (std::abs(a[r][c]) > std::abs(a[piv][c])) piv = r;
+    if (piv != c)
+      for (int j = 0; j < 2 * n; ++j) std::swap(a[c][j], a[piv][j]);
+    const double inv = 1.0 / a[c][c];
+    for (int j = 0; j < 2 * n; ++j) a[c][j] *= inv;
+    for (int r = 0; r < n; ++r) {
+      if (r == c || a[r][c] == 0) continue;
+      const double f = a[r][c];
+      for (int j = 0; j < 2 * n; ++j) a[r][j] -= f * a[c][j];
+    }
+  }
+  out.resize(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out(i, j) = a[i][n + j];
+}
+
+// Cholesky factor of sign*A (sign = +1 for body blocks, which are SPD, -1 for
+// constraint blocks, which are negative definite); false when not definite (degenerate
+// rows), in which case the caller falls back to small_inverse.
+bool cholesky(const Blk& A, double sign, double* c) {
+  const int n = static_cast<int>(A.rows());
+  for (int j = 0; j < n; ++j) {
+    double d = sign * A(j, j);
+    for (int k = 0; k < j; ++k) d -= c[j * 6 + k] * c[j * 6 + k];
+    if (!(d > 0)) return false;
+    // The diagonal holds 1/l: the solves multiply instead of dividing.
+    const double inv = 1.0 / std::sqrt(d);
+    c[j * 6 + j] = inv;
+    for (int i = j + 1; i < n; ++i) {
+      double v = sign * A(i, j);
+      for (int k = 0; k < j; ++k) v -= c[i * 6 + k] * c[j * 6 + k];
+      c[i * 6 + j] = v * inv;
+    }
+  }
+  return true;
+}
+
+// x := A^-1 x with sign*A = C C^T (diagonal of C stored inverted).
+void cholesky_solve(const double* c, int n, double sign, double* x) {
+  for (int i = 0; i < n; ++i) {
+    double v = x[i];
+    for (int k = 0; k < i; ++k) v -= c[i * 6 + k] * x[k];
+    x[i] = v * c[i * 6 + i];
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double v = x[i];
+    for (int k = i + 1; k < n; ++k) v -= c[k * 6 + i] * x[k];
+    x[i] = v * c[i * 6 + i];
+  }
+  if (sign < 0)
+    for (int i = 0; i < n; ++i) x[i] = -x[i];
+}
+
 struct Node {
+  double chol[36] = {};
+  bool use_chol = false;
+  double sign = 1;
   int dim = 0;
   int parent = -1;
   int constraint = -1;  // index into cons for constraint nodes, -1 for bodies
@@ -171,23 +241,57 @@ class BaraffSolver final : public Solver {
     }
     for (int i : order_) {
       Node& n = nodes_[static_cast<std::size_t>(i)];
-      n.Dinv = n.D.inverse();
+      n.sign = n.constraint < 0 ? 1.0 : -1.0;
+      n.use_chol = cholesky(n.D, n.sign, n.chol);
+      if (!n.use_chol) small_inverse(n.D, n.Dinv);
       if (n.parent < 0) continue;
-      n.L.noalias() = n.Dinv * n.Hp;
-      nodes_[static_cast<std::size_t>(n.parent)].D.noalias() -= n.Hp.transpose() * n.L;
+      // L = D^-1 H_ip, column by column; then D_parent -= H_ip^T L.
+      const int d = n.dim, dp = static_cast<int>(n.Hp.cols());
+      n.L.resize(d, dp);
+      if (n.use_chol) {
+        for (int col = 0; col < dp; ++col) {
+          double x[6];
+          for (int r = 0; r < d; ++r) x[r] = n.Hp(r, col);
+          cholesky_solve(n.chol, d, n.sign, x);
+          for (int r = 0; r < d; ++r) n.L(r, col) = x[r];
+        }
+      } else {
+        n.L = n.Dinv.lazyProduct(n.Hp);
+      }
+      Blk& Dp = nodes_[static_cast<std::size_t>(n.parent)].D;
+      for (int a = 0; a < dp; ++a)
+        for (int b = 0; b < dp; ++b) {
+          double v = 0;
+          for (int r = 0; r < d; ++r) v += n.Hp(r, a) * n.L(r, b);
+          Dp(a, b) -= v;
+        }
     }
   }
 
   void solve_in_place(std::vector<Vecx>& x) const {
     for (int i : order_) {
       const Node& n = nodes_[static_cast<std::size_t>(i)];
-      if (n.parent >= 0) x[static_cast<std::size_t>(n.parent)].noalias() -= n.L.transpose() * x[static_cast<std::size_t>(i)];
+      if (n.parent < 0) continue;
+      Vecx& xp = x[static_cast<std::size_t>(n.parent)];
+      const Vecx& xi = x[static_cast<std::size_t>(i)];
+      for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) {
+        double v = 0;
+        for (int r = 0; r < n.dim; ++r) v += n.L(r, a) * xi[r];
+        xp[a] -= v;
+      }
     }
     for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
       const Node& n = nodes_[static_cast<std::size_t>(*it)];
       Vecx& xi = x[static_cast<std::size_t>(*it)];
-      xi = n.Dinv * xi;
-      if (n.parent >= 0) xi.noalias() -= n.L * x[static_cast<std::size_t>(n.parent)];
+      if (n.use_chol) cholesky_solve(n.chol, n.dim, n.sign, xi.data());
+      else xi = n.Dinv.lazyProduct(xi).eval();
+      if (n.parent < 0) continue;
+      const Vecx& xp = x[static_cast<std::size_t>(n.parent)];
+      for (int r = 0; r < n.dim; ++r) {
+        double v = 0;
+        for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) v += n.L(r, a) * xp[a];
+        xi[r] -= v;
+      }
     }
   }
 

@@ -63,6 +63,7 @@ System::System(Scene scene) : scene_(std::move(scene)) {
 
   solver_ = scene_.sim.solver == SolverKind::dense ? make_dense_solver(scene_.sim.svd_tol)
                                                    : make_baraff_solver(scene_.sim.svd_tol);
+  for (const Body& b : scene_.bodies) inertia_inv_.push_back(b.kind == BodyKind::rigid ? Mat3(b.inertia.inverse()) : Mat3::Zero());
   kin_.resize(nb);
   bodies_.resize(moving_body_.size());
   lambda_.resize(scene_.constraints.size());
@@ -182,7 +183,7 @@ void System::build_problem(double t, const Eigen::VectorXd& s) {
     if (k.dof == 6) {
       const Mat3 Iw = k.R * b.inertia * k.R.transpose();
       sb.M.bottomRightCorner<3, 3>() = Iw;
-      sb.Minv.bottomRightCorner<3, 3>() = k.R * b.inertia.inverse() * k.R.transpose();
+      sb.Minv.bottomRightCorner<3, 3>() = k.R * inertia_inv_[static_cast<std::size_t>(bi)] * k.R.transpose();
       sb.F.tail<3>() = -k.w.cross(Iw * k.w);
     }
   }

@@ -103,6 +103,7 @@ class System {
   bool topology_changed_ = true;
   std::vector<int> active_;  // indices of active constraints
   // Workspace (allocated once, reused every evaluation).
+  std::vector<Mat3> inertia_inv_;  // body-frame inverse inertia, per scene body
   std::vector<BodyKin> kin_;
   std::vector<SolveBody> bodies_;
   std::vector<ConstraintEval> evals_;

@@ -17,7 +17,7 @@ struct Motion {
     BodyKin k;
     k.p = p0 + v * t;
     const double ang = w.norm() * t;
-    const Quat dq = ang > 0 ? Quat(Eigen::AngleAxisd(ang, w.normalized())) : Quat::Identity();
+    const Quat dq = ang != 0 ? Quat(Eigen::AngleAxisd(ang, w.normalized())) : Quat::Identity();
     k.R = (dq * q0).toRotationMatrix();
     k.v = v;
     k.w = w;
