@@ -45,47 +45,7 @@ void small_inverse(const Blk& D, Blk& out) {
     for (int j = 0; j < n; ++j) out(i, j) = a[i][n + j];
 }
 
-// Cholesky factor of sign*A (sign = +1 for body blocks, which are SPD, -1 for
-// constraint blocks, which are negative definite); false when not definite (degenerate
-// rows), in which case the caller falls back to small_inverse.
-bool cholesky(const Blk& A, double sign, double* c) {
-  const int n = static_cast<int>(A.rows());
-  for (int j = 0; j < n; ++j) {
-    double d = sign * A(j, j);
-    for (int k = 0; k < j; ++k) d -= c[j * 6 + k] * c[j * 6 + k];
-    if (!(d > 0)) return false;
-    // The diagonal holds 1/l: the solves multiply instead of dividing.
-    const double inv = 1.0 / std::sqrt(d);
-    c[j * 6 + j] = inv;
-    for (int i = j + 1; i < n; ++i) {
-      double v = sign * A(i, j);
-      for (int k = 0; k < j; ++k) v -= c[i * 6 + k] * c[j * 6 + k];
-      c[i * 6 + j] = v * inv;
-    }
-  }
-  return true;
-}
-
-// x := A^-1 x with sign*A = C C^T (diagonal of C stored inverted).
-void cholesky_solve(const double* c, int n, double sign, double* x) {
-  for (int i = 0; i < n; ++i) {
-    double v = x[i];
-    for (int k = 0; k < i; ++k) v -= c[i * 6 + k] * x[k];
-    x[i] = v * c[i * 6 + i];
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    double v = x[i];
-    for (int k = i + 1; k < n; ++k) v -= c[k * 6 + i] * x[k];
-    x[i] = v * c[i * 6 + i];
-  }
-  if (sign < 0)
-    for (int i = 0; i < n; ++i) x[i] = -x[i];
-}
-
 struct Node {
-  double chol[36] = {};
-  bool use_chol = false;
-  double sign = 1;
   int dim = 0;
   int parent = -1;
   int constraint = -1;  // index into cons for constraint nodes, -1 for bodies
@@ -93,6 +53,86 @@ struct Node {
   Blk Hp;               // H_ip: dim x dim(parent)
   Blk D, Dinv, L;
 };
+
+// D^-1 of a node's block: Cholesky of +D (bodies, SPD) or -D (constraints, negative
+// definite) at fixed size, Gauss-Jordan when the block is not definite (degenerate rows).
+template <int d>
+void invert_fixed(Node& n) {
+  // Gauss-Jordan without pivoting on sign*D, which is positive definite for a
+  // well-posed system (every pivot > 0); at fixed size the loops unroll.
+  const double sign = n.constraint < 0 ? 1.0 : -1.0;
+  double a[d][d], inv[d][d];
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) {
+      a[i][j] = sign * n.D(i, j);
+      inv[i][j] = i == j ? 1.0 : 0.0;
+    }
+  for (int c = 0; c < d; ++c) {
+    if (!(a[c][c] > 1e-300)) {  // not definite: degenerate rows, pivoting fallback
+      small_inverse(n.D, n.Dinv);
+      return;
+    }
+    const double r = 1.0 / a[c][c];
+    for (int j = 0; j < d; ++j) a[c][j] *= r, inv[c][j] *= r;
+    for (int i = 0; i < d; ++i) {
+      if (i == c) continue;
+      const double f = a[i][c];
+      for (int j = 0; j < d; ++j) a[i][j] -= f * a[c][j], inv[i][j] -= f * inv[c][j];
+    }
+  }
+  n.Dinv.resize(d, d);
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) n.Dinv(i, j) = sign * inv[i][j];
+}
+
+void invert_block(Node& n) {
+  switch (n.dim) {
+    case 1: invert_fixed<1>(n); break;
+    case 2: invert_fixed<2>(n); break;
+    case 3: invert_fixed<3>(n); break;
+    case 4: invert_fixed<4>(n); break;
+    case 5: invert_fixed<5>(n); break;
+    default: invert_fixed<6>(n); break;
+  }
+}
+
+// Eliminates node n into its parent: L = D^-1 H_ip, D_parent -= H_ip^T L. Fixed-size
+// kernels (blocks are at most 6x6; Eigen unrolls and vectorises them).
+template <int d, int p>
+void factor_fixed(Node& n, Blk& Dp) {
+  invert_fixed<d>(n);
+  using Md = Eigen::Matrix<double, d, d>;
+  using Mdp = Eigen::Matrix<double, d, p>;
+  using Mp = Eigen::Matrix<double, p, p>;
+  const Eigen::Map<const Mdp> H(n.Hp.data());
+  n.L.resize(d, p);
+  Eigen::Map<Mdp> L(n.L.data());
+  L.noalias() = Eigen::Map<const Md>(n.Dinv.data()) * H;
+  Eigen::Map<Mp>(Dp.data()).noalias() -= H.transpose() * L;
+}
+
+template <int d>
+void factor_p(Node& n, Blk& Dp) {
+  switch (Dp.rows()) {
+    case 1: factor_fixed<d, 1>(n, Dp); break;
+    case 2: factor_fixed<d, 2>(n, Dp); break;
+    case 3: factor_fixed<d, 3>(n, Dp); break;
+    case 4: factor_fixed<d, 4>(n, Dp); break;
+    case 5: factor_fixed<d, 5>(n, Dp); break;
+    default: factor_fixed<d, 6>(n, Dp); break;
+  }
+}
+
+void factor_block(Node& n, Blk& Dp) {
+  switch (n.dim) {
+    case 1: factor_p<1>(n, Dp); break;
+    case 2: factor_p<2>(n, Dp); break;
+    case 3: factor_p<3>(n, Dp); break;
+    case 4: factor_p<4>(n, Dp); break;
+    case 5: factor_p<5>(n, Dp); break;
+    default: factor_p<6>(n, Dp); break;
+  }
+}
 
 class BaraffSolver final : public Solver {
  public:
@@ -241,30 +281,11 @@ class BaraffSolver final : public Solver {
     }
     for (int i : order_) {
       Node& n = nodes_[static_cast<std::size_t>(i)];
-      n.sign = n.constraint < 0 ? 1.0 : -1.0;
-      n.use_chol = cholesky(n.D, n.sign, n.chol);
-      if (!n.use_chol) small_inverse(n.D, n.Dinv);
-      if (n.parent < 0) continue;
-      // L = D^-1 H_ip, column by column; then D_parent -= H_ip^T L.
-      const int d = n.dim, dp = static_cast<int>(n.Hp.cols());
-      n.L.resize(d, dp);
-      if (n.use_chol) {
-        for (int col = 0; col < dp; ++col) {
-          double x[6];
-          for (int r = 0; r < d; ++r) x[r] = n.Hp(r, col);
-          cholesky_solve(n.chol, d, n.sign, x);
-          for (int r = 0; r < d; ++r) n.L(r, col) = x[r];
-        }
-      } else {
-        n.L = n.Dinv.lazyProduct(n.Hp);
+      if (n.parent < 0) {
+        invert_block(n);
+        continue;
       }
-      Blk& Dp = nodes_[static_cast<std::size_t>(n.parent)].D;
-      for (int a = 0; a < dp; ++a)
-        for (int b = 0; b < dp; ++b) {
-          double v = 0;
-          for (int r = 0; r < d; ++r) v += n.Hp(r, a) * n.L(r, b);
-          Dp(a, b) -= v;
-        }
+      factor_block(n, nodes_[static_cast<std::size_t>(n.parent)].D);
     }
   }
 
@@ -283,8 +304,13 @@ class BaraffSolver final : public Solver {
     for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
       const Node& n = nodes_[static_cast<std::size_t>(*it)];
       Vecx& xi = x[static_cast<std::size_t>(*it)];
-      if (n.use_chol) cholesky_solve(n.chol, n.dim, n.sign, xi.data());
-      else xi = n.Dinv.lazyProduct(xi).eval();
+      double y[6];
+      for (int r = 0; r < n.dim; ++r) {
+        double v = 0;
+        for (int k = 0; k < n.dim; ++k) v += n.Dinv(r, k) * xi[k];
+        y[r] = v;
+      }
+      for (int r = 0; r < n.dim; ++r) xi[r] = y[r];
       if (n.parent < 0) continue;
       const Vecx& xp = x[static_cast<std::size_t>(n.parent)];
       for (int r = 0; r < n.dim; ++r) {
