@@ -46,6 +46,8 @@ void small_inverse(const Blk& D, Blk& out) {
 }
 
 struct Node {
+  double chol[36] = {};
+  bool chol_ok = false;
   int dim = 0;
   int parent = -1;
   int constraint = -1;  // index into cons for constraint nodes, -1 for bodies
@@ -56,33 +58,72 @@ struct Node {
 
 // D^-1 of a node's block: Cholesky of +D (bodies, SPD) or -D (constraints, negative
 // definite) at fixed size, Gauss-Jordan when the block is not definite (degenerate rows).
+// Cholesky factor of sign*D (sign +1 for body blocks, which are SPD; -1 for constraint
+// blocks, which are negative definite), row-major lower triangle with the diagonal stored
+// inverted so that solves multiply; fixed size so that the loops unroll. False when the
+// block is not definite (degenerate rows): the caller falls back to a pivoting inverse.
 template <int d>
-void invert_fixed(Node& n) {
-  // Gauss-Jordan without pivoting on sign*D, which is positive definite for a
-  // well-posed system (every pivot > 0); at fixed size the loops unroll.
+bool cholesky_fixed(Node& n) {
   const double sign = n.constraint < 0 ? 1.0 : -1.0;
-  double a[d][d], inv[d][d];
-  for (int i = 0; i < d; ++i)
-    for (int j = 0; j < d; ++j) {
-      a[i][j] = sign * n.D(i, j);
-      inv[i][j] = i == j ? 1.0 : 0.0;
-    }
-  for (int c = 0; c < d; ++c) {
-    if (!(a[c][c] > 1e-300)) {  // not definite: degenerate rows, pivoting fallback
-      small_inverse(n.D, n.Dinv);
-      return;
-    }
-    const double r = 1.0 / a[c][c];
-    for (int j = 0; j < d; ++j) a[c][j] *= r, inv[c][j] *= r;
-    for (int i = 0; i < d; ++i) {
-      if (i == c) continue;
-      const double f = a[i][c];
-      for (int j = 0; j < d; ++j) a[i][j] -= f * a[c][j], inv[i][j] -= f * inv[c][j];
+  double* c = n.chol;
+  for (int j = 0; j < d; ++j) {
+    double diag = sign * n.D(j, j);
+    for (int k = 0; k < j; ++k) diag -= c[j * 6 + k] * c[j * 6 + k];
+    if (!(diag > 0)) return false;
+    const double inv = 1.0 / std::sqrt(diag);
+    c[j * 6 + j] = inv;
+    for (int i = j + 1; i < d; ++i) {
+      double v = sign * n.D(i, j);
+      for (int k = 0; k < j; ++k) v -= c[i * 6 + k] * c[j * 6 + k];
+      c[i * 6 + j] = v * inv;
     }
   }
-  n.Dinv.resize(d, d);
-  for (int i = 0; i < d; ++i)
-    for (int j = 0; j < d; ++j) n.Dinv(i, j) = sign * inv[i][j];
+  return true;
+}
+
+// x := D^-1 x from the factor of sign*D.
+template <int d>
+void cholesky_solve_fixed(const Node& n, double* x) {
+  const double* c = n.chol;
+  for (int i = 0; i < d; ++i) {
+    double v = x[i];
+    for (int k = 0; k < i; ++k) v -= c[i * 6 + k] * x[k];
+    x[i] = v * c[i * 6 + i];
+  }
+  for (int i = d - 1; i >= 0; --i) {
+    double v = x[i];
+    for (int k = i + 1; k < d; ++k) v -= c[k * 6 + i] * x[k];
+    x[i] = v * c[i * 6 + i];
+  }
+  if (n.constraint >= 0)
+    for (int i = 0; i < d; ++i) x[i] = -x[i];
+}
+
+template <int d>
+void invert_fixed(Node& n) {
+  n.chol_ok = cholesky_fixed<d>(n);
+  if (!n.chol_ok) small_inverse(n.D, n.Dinv);
+}
+
+void solve_block(const Node& n, double* x) {
+  if (!n.chol_ok) {
+    double y[6];
+    for (int r = 0; r < n.dim; ++r) {
+      double v = 0;
+      for (int k = 0; k < n.dim; ++k) v += n.Dinv(r, k) * x[k];
+      y[r] = v;
+    }
+    for (int r = 0; r < n.dim; ++r) x[r] = y[r];
+    return;
+  }
+  switch (n.dim) {
+    case 1: cholesky_solve_fixed<1>(n, x); break;
+    case 2: cholesky_solve_fixed<2>(n, x); break;
+    case 3: cholesky_solve_fixed<3>(n, x); break;
+    case 4: cholesky_solve_fixed<4>(n, x); break;
+    case 5: cholesky_solve_fixed<5>(n, x); break;
+    default: cholesky_solve_fixed<6>(n, x); break;
+  }
 }
 
 void invert_block(Node& n) {
@@ -107,7 +148,16 @@ void factor_fixed(Node& n, Blk& Dp) {
   const Eigen::Map<const Mdp> H(n.Hp.data());
   n.L.resize(d, p);
   Eigen::Map<Mdp> L(n.L.data());
-  L.noalias() = Eigen::Map<const Md>(n.Dinv.data()) * H;
+  if (n.chol_ok) {
+    for (int col = 0; col < p; ++col) {
+      double x[d];
+      for (int r = 0; r < d; ++r) x[r] = H(r, col);
+      cholesky_solve_fixed<d>(n, x);
+      for (int r = 0; r < d; ++r) L(r, col) = x[r];
+    }
+  } else {
+    L.noalias() = Eigen::Map<const Md>(n.Dinv.data()) * H;
+  }
   Eigen::Map<Mp>(Dp.data()).noalias() -= H.transpose() * L;
 }
 
@@ -304,13 +354,7 @@ class BaraffSolver final : public Solver {
     for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
       const Node& n = nodes_[static_cast<std::size_t>(*it)];
       Vecx& xi = x[static_cast<std::size_t>(*it)];
-      double y[6];
-      for (int r = 0; r < n.dim; ++r) {
-        double v = 0;
-        for (int k = 0; k < n.dim; ++k) v += n.Dinv(r, k) * xi[k];
-        y[r] = v;
-      }
-      for (int r = 0; r < n.dim; ++r) xi[r] = y[r];
+      solve_block(n, xi.data());
       if (n.parent < 0) continue;
       const Vecx& xp = x[static_cast<std::size_t>(n.parent)];
       for (int r = 0; r < n.dim; ++r) {
