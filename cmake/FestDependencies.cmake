@@ -21,3 +21,7 @@ if(FEST_TESTS)
   include(GoogleTest)
 endif()
 pkg_check_modules(MINIZIP REQUIRED IMPORTED_TARGET minizip)   # facefit: .npz (zip) model import
+
+# ODE (libode-dev): only the lmfsim benchmark links it, as a same-run anchor (spec lmfsim §6).
+pkg_check_modules(ODE IMPORTED_TARGET ode>=0.16)
+set(FEST_ODE_FOUND ${ODE_FOUND})

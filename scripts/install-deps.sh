@@ -32,6 +32,7 @@ BUILD_PKGS=(
   ccache                # faster rebuilds on 2 cores
   clang libclang-rt-14-dev   # libFuzzer and sanitizer runtimes for the fuzz targets
   make                  # examples/Makefile and Makefile.inc
+  libode-dev            # ODE 0.16.2  pkg-config ode (lmfsim benchmark anchor only)
 )
 TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware

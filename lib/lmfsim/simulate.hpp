@@ -1,0 +1,27 @@
+#pragma once
+// The run loop (spec §2.6, §2.8): fixed steps of `dt` (rk45 adapts inside each), events
+// at the first step boundary at or after their time, a frame every `every` steps, and
+// the run-time checks of §4 (non-finite state, |C| above the limit).
+
+#include <functional>
+
+#include <Eigen/Core>
+
+#include "lmfsim/integrators.hpp"
+#include "lmfsim/system.hpp"
+
+namespace fest::lmfsim {
+
+struct RunSummary {
+  long steps = 0, evals = 0;
+  double wall_s = 0;
+  double max_C = 0;  // over steps
+};
+
+using FrameCallback = std::function<void(int frame, double t, const Eigen::VectorXd& s)>;
+
+// Throws runtime_failure when the state becomes non-finite or a holonomic constraint
+// is violated by more than settings().max_violation.
+RunSummary simulate(System& sys, const FrameCallback& on_frame);
+
+}  // namespace fest::lmfsim

@@ -1,0 +1,381 @@
+// Baraff's linear-time solver (Baraff 1996; spec §2.3). The KKT matrix
+//   H = [[M, J^T], [J, 0]]
+// restricted to the primary constraints is the adjacency pattern of a forest whose
+// nodes are bodies and constraints. Eliminating children before parents (block LDL^T)
+// costs O(n) with blocks of at most 6x6. Auxiliary rows (loops, redundancies) enter
+// through the k x k Schur complement K = B^T H_p^-1 B, solved by truncated SVD so that
+// redundant or ill-conditioned loops lose rank gracefully instead of failing.
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "lmfsim/solver.hpp"
+
+namespace fest::lmfsim {
+namespace {
+
+// Inverse of a block of at most 6x6 by Gauss-Jordan with partial pivoting. Written out
+// because Eigen's dynamic-size LU and GEMM dispatch cost more than the arithmetic for
+// blocks this small (the solver's time is almost all in these blocks).
+void small_inverse(const Blk& D, Blk& out) {
+  const int n = static_cast<int>(D.rows());
+  double a[6][12];
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      a[i][j] = D(i, j);
+      a[i][n + j] = i == j ? 1.0 : 0.0;
+    }
+  for (int c = 0; c < n; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < n; ++r)
+      if (std::abs(a[r][c]) > std::abs(a[piv][c])) piv = r;
+    if (piv != c)
+      for (int j = 0; j < 2 * n; ++j) std::swap(a[c][j], a[piv][j]);
+    const double inv = 1.0 / a[c][c];
+    for (int j = 0; j < 2 * n; ++j) a[c][j] *= inv;
+    for (int r = 0; r < n; ++r) {
+      if (r == c || a[r][c] == 0) continue;
+      const double f = a[r][c];
+      for (int j = 0; j < 2 * n; ++j) a[r][j] -= f * a[c][j];
+    }
+  }
+  out.resize(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out(i, j) = a[i][n + j];
+}
+
+struct Node {
+  double chol[36] = {};
+  bool chol_ok = false;
+  int dim = 0;
+  int parent = -1;
+  int constraint = -1;  // index into cons for constraint nodes, -1 for bodies
+  int body = -1;        // index of the body for body nodes
+  Blk Hp;               // H_ip: dim x dim(parent)
+  Blk D, Dinv, L;
+};
+
+// D^-1 of a node's block: Cholesky of +D (bodies, SPD) or -D (constraints, negative
+// definite) at fixed size, Gauss-Jordan when the block is not definite (degenerate rows).
+// Cholesky factor of sign*D (sign +1 for body blocks, which are SPD; -1 for constraint
+// blocks, which are negative definite), row-major lower triangle with the diagonal stored
+// inverted so that solves multiply; fixed size so that the loops unroll. False when the
+// block is not definite (degenerate rows): the caller falls back to a pivoting inverse.
+template <int d>
+bool cholesky_fixed(Node& n) {
+  const double sign = n.constraint < 0 ? 1.0 : -1.0;
+  double* c = n.chol;
+  for (int j = 0; j < d; ++j) {
+    double diag = sign * n.D(j, j);
+    for (int k = 0; k < j; ++k) diag -= c[j * 6 + k] * c[j * 6 + k];
+    if (!(diag > 0)) return false;
+    const double inv = 1.0 / std::sqrt(diag);
+    c[j * 6 + j] = inv;
+    for (int i = j + 1; i < d; ++i) {
+      double v = sign * n.D(i, j);
+      for (int k = 0; k < j; ++k) v -= c[i * 6 + k] * c[j * 6 + k];
+      c[i * 6 + j] = v * inv;
+    }
+  }
+  return true;
+}
+
+// x := D^-1 x from the factor of sign*D.
+template <int d>
+void cholesky_solve_fixed(const Node& n, double* x) {
+  const double* c = n.chol;
+  for (int i = 0; i < d; ++i) {
+    double v = x[i];
+    for (int k = 0; k < i; ++k) v -= c[i * 6 + k] * x[k];
+    x[i] = v * c[i * 6 + i];
+  }
+  for (int i = d - 1; i >= 0; --i) {
+    double v = x[i];
+    for (int k = i + 1; k < d; ++k) v -= c[k * 6 + i] * x[k];
+    x[i] = v * c[i * 6 + i];
+  }
+  if (n.constraint >= 0)
+    for (int i = 0; i < d; ++i) x[i] = -x[i];
+}
+
+template <int d>
+void invert_fixed(Node& n) {
+  n.chol_ok = cholesky_fixed<d>(n);
+  if (!n.chol_ok) small_inverse(n.D, n.Dinv);
+}
+
+void solve_block(const Node& n, double* x) {
+  if (!n.chol_ok) {
+    double y[6];
+    for (int r = 0; r < n.dim; ++r) {
+      double v = 0;
+      for (int k = 0; k < n.dim; ++k) v += n.Dinv(r, k) * x[k];
+      y[r] = v;
+    }
+    for (int r = 0; r < n.dim; ++r) x[r] = y[r];
+    return;
+  }
+  switch (n.dim) {
+    case 1: cholesky_solve_fixed<1>(n, x); break;
+    case 2: cholesky_solve_fixed<2>(n, x); break;
+    case 3: cholesky_solve_fixed<3>(n, x); break;
+    case 4: cholesky_solve_fixed<4>(n, x); break;
+    case 5: cholesky_solve_fixed<5>(n, x); break;
+    default: cholesky_solve_fixed<6>(n, x); break;
+  }
+}
+
+void invert_block(Node& n) {
+  switch (n.dim) {
+    case 1: invert_fixed<1>(n); break;
+    case 2: invert_fixed<2>(n); break;
+    case 3: invert_fixed<3>(n); break;
+    case 4: invert_fixed<4>(n); break;
+    case 5: invert_fixed<5>(n); break;
+    default: invert_fixed<6>(n); break;
+  }
+}
+
+// Eliminates node n into its parent: L = D^-1 H_ip, D_parent -= H_ip^T L. Fixed-size
+// kernels (blocks are at most 6x6; Eigen unrolls and vectorises them).
+template <int d, int p>
+void factor_fixed(Node& n, Blk& Dp) {
+  invert_fixed<d>(n);
+  using Md = Eigen::Matrix<double, d, d>;
+  using Mdp = Eigen::Matrix<double, d, p>;
+  using Mp = Eigen::Matrix<double, p, p>;
+  const Eigen::Map<const Mdp> H(n.Hp.data());
+  n.L.resize(d, p);
+  Eigen::Map<Mdp> L(n.L.data());
+  if (n.chol_ok) {
+    for (int col = 0; col < p; ++col) {
+      double x[d];
+      for (int r = 0; r < d; ++r) x[r] = H(r, col);
+      cholesky_solve_fixed<d>(n, x);
+      for (int r = 0; r < d; ++r) L(r, col) = x[r];
+    }
+  } else {
+    L.noalias() = Eigen::Map<const Md>(n.Dinv.data()) * H;
+  }
+  Eigen::Map<Mp>(Dp.data()).noalias() -= H.transpose() * L;
+}
+
+template <int d>
+void factor_p(Node& n, Blk& Dp) {
+  switch (Dp.rows()) {
+    case 1: factor_fixed<d, 1>(n, Dp); break;
+    case 2: factor_fixed<d, 2>(n, Dp); break;
+    case 3: factor_fixed<d, 3>(n, Dp); break;
+    case 4: factor_fixed<d, 4>(n, Dp); break;
+    case 5: factor_fixed<d, 5>(n, Dp); break;
+    default: factor_fixed<d, 6>(n, Dp); break;
+  }
+}
+
+void factor_block(Node& n, Blk& Dp) {
+  switch (n.dim) {
+    case 1: factor_p<1>(n, Dp); break;
+    case 2: factor_p<2>(n, Dp); break;
+    case 3: factor_p<3>(n, Dp); break;
+    case 4: factor_p<4>(n, Dp); break;
+    case 5: factor_p<5>(n, Dp); break;
+    default: factor_p<6>(n, Dp); break;
+  }
+}
+
+class BaraffSolver final : public Solver {
+ public:
+  explicit BaraffSolver(double tol) : tol_(tol) {}
+
+  void solve(const std::vector<SolveBody>& bodies, const std::vector<SolveConstraint>& cons, bool topology_changed,
+             SolveResult& out) override {
+    if (topology_changed || nodes_.empty() || bodies.size() != n_bodies_) build_topology(bodies, cons);
+    fill_and_factor(bodies, cons);
+    // Primary-only answer z0 = H_p^-1 [F; -c_p].
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const Node& n = nodes_[i];
+      if (n.constraint < 0) z0_[i] = bodies[static_cast<std::size_t>(n.body)].F;
+      else z0_[i] = -cons[static_cast<std::size_t>(n.constraint)].c;
+    }
+    solve_in_place(z0_);
+
+    out.rank_deficiency = 0;
+    out.residual = 0;
+    out.lambda.resize(cons.size());
+    const int k = static_cast<int>(aux_index_.size());
+    if (k > 0) solve_auxiliary(bodies, cons, out);
+    out.acc.resize(bodies.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const Node& n = nodes_[i];
+      if (n.constraint < 0) out.acc[static_cast<std::size_t>(n.body)] = z0_[i];
+      else out.lambda[static_cast<std::size_t>(n.constraint)] = -z0_[i];  // mu = -lambda
+    }
+  }
+
+ private:
+  double brow(const SolveConstraint& sc, int r, const std::vector<SolveBody>& bodies, const std::vector<Vecx>& v) const {
+    double s = 0;
+    if (sc.a >= 0) s += sc.Ja->row(r).head(bodies[static_cast<std::size_t>(sc.a)].dof).dot(v[static_cast<std::size_t>(sc.a)]);
+    if (sc.b >= 0) s += sc.Jb->row(r).head(bodies[static_cast<std::size_t>(sc.b)].dof).dot(v[static_cast<std::size_t>(sc.b)]);
+    return s;
+  }
+
+  void solve_auxiliary(const std::vector<SolveBody>& bodies, const std::vector<SolveConstraint>& cons, SolveResult& out) {
+    const int k = static_cast<int>(aux_index_.size());
+    // Y = H_p^-1 B, one column per auxiliary row (B = [J_x^T; 0]).
+    Y_.resize(static_cast<std::size_t>(k));
+    for (int col = 0; col < k; ++col) {
+      auto& y = Y_[static_cast<std::size_t>(col)];
+      y.resize(nodes_.size());
+      for (std::size_t i = 0; i < nodes_.size(); ++i) y[i].setZero(nodes_[i].dim);
+      const auto [j, r] = aux_index_[static_cast<std::size_t>(col)];
+      const SolveConstraint& sc = cons[j];
+      if (sc.a >= 0) y[static_cast<std::size_t>(sc.a)] += sc.Ja->row(r).head(bodies[static_cast<std::size_t>(sc.a)].dof).transpose();
+      if (sc.b >= 0) y[static_cast<std::size_t>(sc.b)] += sc.Jb->row(r).head(bodies[static_cast<std::size_t>(sc.b)].dof).transpose();
+      solve_in_place(y);
+    }
+    // K lambda_x = -(c_x + J_x xdd0), K = B^T Y (symmetric PSD).
+    Eigen::MatrixXd K(k, k);
+    Eigen::VectorXd r(k);
+    for (int row = 0; row < k; ++row) {
+      const auto [j, rr] = aux_index_[static_cast<std::size_t>(row)];
+      for (int col = 0; col < k; ++col) K(row, col) = brow(cons[j], rr, bodies, Y_[static_cast<std::size_t>(col)]);
+      r[row] = -(cons[j].c[rr] + brow(cons[j], rr, bodies, z0_));
+    }
+    K = 0.5 * (K + K.transpose());
+    Eigen::VectorXd lx;
+    out.rank_deficiency = truncated_svd_solve(K, r, tol_, lx);
+    const double scale = std::max(r.cwiseAbs().maxCoeff(), 1e-9);
+    out.residual = (K * lx - r).cwiseAbs().maxCoeff() / scale;
+    for (int col = 0; col < k; ++col)
+      for (std::size_t i = 0; i < nodes_.size(); ++i) z0_[i] += lx[col] * Y_[static_cast<std::size_t>(col)][i];
+    for (int row = 0; row < k; ++row) {
+      const auto [j, rr] = aux_index_[static_cast<std::size_t>(row)];
+      if (out.lambda[j].size() != cons[j].rows()) out.lambda[j].setZero(cons[j].rows());
+      out.lambda[j][rr] = lx[row];
+    }
+  }
+
+  void build_topology(const std::vector<SolveBody>& bodies, const std::vector<SolveConstraint>& cons) {
+    n_bodies_ = bodies.size();
+    const std::vector<bool> primary = primary_constraints(static_cast<int>(bodies.size()), cons);
+    nodes_.assign(bodies.size(), Node());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      nodes_[i].body = static_cast<int>(i);
+      nodes_[i].dim = bodies[i].dof;
+    }
+    aux_index_.clear();
+    std::vector<std::vector<int>> adj(bodies.size());
+    std::vector<int> ground_nodes;  // constraint nodes attached to ground: the roots
+    for (std::size_t j = 0; j < cons.size(); ++j) {
+      if (!primary[j]) {
+        for (int r = 0; r < cons[j].rows(); ++r) aux_index_.push_back({j, r});
+        continue;
+      }
+      Node n;
+      n.constraint = static_cast<int>(j);
+      n.dim = cons[j].rows();
+      const int id = static_cast<int>(nodes_.size());
+      nodes_.push_back(n);
+      adj.emplace_back();
+      for (int body : {cons[j].a, cons[j].b}) {
+        if (body < 0) continue;
+        adj[static_cast<std::size_t>(body)].push_back(id);
+        adj.back().push_back(body);
+      }
+      if (cons[j].a < 0 || cons[j].b < 0) ground_nodes.push_back(id);
+    }
+    // Breadth-first from the roots (a ground-attached constraint, so that no constraint
+    // node is a leaf with a zero pivot; else any body). Reversed, the BFS order visits
+    // children before parents.
+    std::vector<bool> seen(nodes_.size(), false);
+    order_.clear();
+    auto bfs = [&](int root) {
+      std::size_t head = order_.size();
+      order_.push_back(root);
+      seen[static_cast<std::size_t>(root)] = true;
+      nodes_[static_cast<std::size_t>(root)].parent = -1;
+      while (head < order_.size()) {
+        const int i = order_[head++];
+        for (int nb : adj[static_cast<std::size_t>(i)]) {
+          if (seen[static_cast<std::size_t>(nb)]) continue;
+          seen[static_cast<std::size_t>(nb)] = true;
+          nodes_[static_cast<std::size_t>(nb)].parent = i;
+          order_.push_back(nb);
+        }
+      }
+    };
+    for (int g : ground_nodes)
+      if (!seen[static_cast<std::size_t>(g)]) bfs(g);
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      if (!seen[i]) bfs(static_cast<int>(i));
+    std::reverse(order_.begin(), order_.end());
+    z0_.assign(nodes_.size(), Vecx());
+  }
+
+  void fill_and_factor(const std::vector<SolveBody>& bodies, const std::vector<SolveConstraint>& cons) {
+    for (Node& n : nodes_) {
+      if (n.constraint < 0) n.D = bodies[static_cast<std::size_t>(n.body)].M;
+      else n.D.setZero(n.dim, n.dim);
+      if (n.parent < 0) continue;
+      const Node& p = nodes_[static_cast<std::size_t>(n.parent)];
+      // Block between a constraint and a body: J_side (rows x dof) or its transpose.
+      const Node& cn = n.constraint >= 0 ? n : p;
+      const Node& bn = n.constraint >= 0 ? p : n;
+      const SolveConstraint& sc = cons[static_cast<std::size_t>(cn.constraint)];
+      const Blk* J = sc.a == bn.body ? sc.Ja : sc.Jb;
+      const int dof = bodies[static_cast<std::size_t>(bn.body)].dof;
+      if (n.constraint >= 0) n.Hp = J->leftCols(dof);
+      else n.Hp = J->leftCols(dof).transpose();
+    }
+    for (int i : order_) {
+      Node& n = nodes_[static_cast<std::size_t>(i)];
+      if (n.parent < 0) {
+        invert_block(n);
+        continue;
+      }
+      factor_block(n, nodes_[static_cast<std::size_t>(n.parent)].D);
+    }
+  }
+
+  void solve_in_place(std::vector<Vecx>& x) const {
+    for (int i : order_) {
+      const Node& n = nodes_[static_cast<std::size_t>(i)];
+      if (n.parent < 0) continue;
+      Vecx& xp = x[static_cast<std::size_t>(n.parent)];
+      const Vecx& xi = x[static_cast<std::size_t>(i)];
+      for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) {
+        double v = 0;
+        for (int r = 0; r < n.dim; ++r) v += n.L(r, a) * xi[r];
+        xp[a] -= v;
+      }
+    }
+    for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
+      const Node& n = nodes_[static_cast<std::size_t>(*it)];
+      Vecx& xi = x[static_cast<std::size_t>(*it)];
+      solve_block(n, xi.data());
+      if (n.parent < 0) continue;
+      const Vecx& xp = x[static_cast<std::size_t>(n.parent)];
+      for (int r = 0; r < n.dim; ++r) {
+        double v = 0;
+        for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) v += n.L(r, a) * xp[a];
+        xi[r] -= v;
+      }
+    }
+  }
+
+  double tol_;
+  std::size_t n_bodies_ = 0;
+  std::vector<Node> nodes_;
+  std::vector<int> order_;
+  std::vector<std::pair<std::size_t, int>> aux_index_;  // (constraint, row) of auxiliary rows
+  std::vector<Vecx> z0_;
+  std::vector<std::vector<Vecx>> Y_;
+};
+
+}  // namespace
+
+std::unique_ptr<Solver> make_baraff_solver(double svd_tol) { return std::make_unique<BaraffSolver>(svd_tol); }
+
+}  // namespace fest::lmfsim

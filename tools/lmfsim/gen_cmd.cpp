@@ -1,0 +1,154 @@
+// lmfsim gen: the scenes of the golden and analytic tests (spec §4 `gen`).
+#include <cmath>
+#include <sstream>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "formats/table/table_io.hpp"
+#include "lmfsim/reduced.hpp"
+
+namespace lmfsim_tool {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+json v3(double x, double y, double z) { return json::array({x, y, z}); }
+
+// Quaternion of a rotation about +y by `a` radians (x -> (cos a, 0, -sin a)).
+json quat_y(double a) { return json::array({std::cos(a / 2), 0.0, std::sin(a / 2), 0.0}); }
+
+json sim_block() {
+  return {{"t_end", 1.0}, {"dt", 1e-3}, {"every", 10}, {"integrator", "rk4"},
+          {"stab", {{"mode", "baumgarte"}, {"alpha", 10.0}, {"beta", 10.0}}}, {"solver", "baraff"}};
+}
+
+json gen_chain(const GenOptions& o) {
+  if (o.n < 1) throw fest::usage_error("--n must be >= 1");
+  const bool particle = o.type == "particle";
+  if (o.type != "box" && o.type != "rod" && !particle) throw fest::usage_error("--type must be box, rod or particle");
+  std::string joint = o.joint.empty() ? (particle ? "distance" : (o.planar ? "hinge" : "ball")) : o.joint;
+  if (joint != "ball" && joint != "hinge" && joint != "distance") throw fest::usage_error("--joint must be ball, hinge or distance");
+  if (particle && joint != "distance") throw fest::usage_error("a particle chain needs --joint distance");
+  if (!particle && joint == "distance") throw fest::usage_error("--joint distance needs --type particle");
+  if (!(o.mass > 0) || !(o.length > 0)) throw fest::usage_error("--mass and --length must be positive");
+  const double L = o.length / o.n, m = o.mass / o.n, th = o.angle * kPi / 180;
+  const double dx = std::sin(th), dz = -std::cos(th);  // link direction from the downward vertical
+  json bodies = json::array(), cons = json::array();
+  for (int i = 0; i < o.n; ++i) {
+    const std::string name = "l" + std::to_string(i + 1);
+    json b = {{"name", name}, {"type", particle ? "particle" : "rigid"}, {"mass", m}};
+    const double along = particle ? (i + 1) * L : (i + 0.5) * L;
+    b["pos"] = v3(along * dx, 0, along * dz);
+    if (!particle) {
+      if (o.type == "box") b["shape"] = {{"box", v3(L, 0.02, 0.02)}};
+      else b["shape"] = {{"rod", L}};
+      b["inertia"] = "auto";
+      b["quat"] = quat_y(kPi / 2 - th);
+    }
+    bodies.push_back(b);
+    const std::string prev = i == 0 ? "world" : "l" + std::to_string(i);
+    json c = {{"name", "j" + std::to_string(i)}, {"type", joint}, {"a", prev}, {"b", name}};
+    if (particle) {
+      c["length"] = L;
+    } else {
+      c["pa"] = i == 0 ? v3(0, 0, 0) : v3(L / 2, 0, 0);
+      c["pb"] = v3(-L / 2, 0, 0);
+      if (joint == "hinge") {
+        c["axis_a"] = v3(0, 1, 0);
+        c["axis_b"] = v3(0, 1, 0);
+      }
+    }
+    cons.push_back(c);
+  }
+  json sim = sim_block();
+  return {{"gravity", v3(0, 0, o.gravity ? -9.81 : 0.0)}, {"bodies", bodies}, {"constraints", cons}, {"sim", sim}};
+}
+
+json gen_fourbar(const GenOptions& o) {
+  double v[4];
+  {
+    std::stringstream ss(o.abcd);
+    std::string item;
+    int k = 0;
+    while (std::getline(ss, item, ',')) {
+      if (k >= 4) throw fest::usage_error("--abcd needs four lengths a,b,c,d");
+      try {
+        v[k++] = std::stod(item);
+      } catch (...) {
+        throw fest::usage_error("--abcd: '{}' is not a number", item);
+      }
+    }
+    if (k != 4) throw fest::usage_error("--abcd needs four lengths a,b,c,d");
+    for (double x : v) if (!(x > 0)) throw fest::usage_error("--abcd lengths must be positive");
+  }
+  fest::lmfsim::FourBar fb;
+  fb.a = v[0], fb.b = v[1], fb.c = v[2], fb.d = v[3];
+  fb.branch = 1;
+  const double phi = o.angle * kPi / 180;
+  fest::lmfsim::FourBar::Pose p;
+  try {
+    p = fb.pose(phi);
+  } catch (const fest::Error&) {
+    throw fest::usage_error("the four-bar {} cannot close at crank angle {} deg", o.abcd, o.angle);
+  }
+  // Velocities for the crank rate omega0 by a central difference of the closed loop.
+  const double eps = 1e-6;
+  const auto p1 = fb.pose(phi + eps), p0 = fb.pose(phi - eps);
+  const char* names[3] = {"crank", "coupler", "rocker"};
+  const double len[3] = {fb.a, fb.b, fb.c};
+  json bodies = json::array();
+  for (int i = 0; i < 3; ++i) {
+    const double m = len[i] * 1.0;  // uniform rods of 1 kg/m
+    const Eigen::Vector2d vc = (p1.com[i] - p0.com[i]) / (2 * eps) * o.omega0;
+    const double rate = std::remainder(p1.angle[i] - p0.angle[i], 2 * kPi) / (2 * eps) * o.omega0;
+    // Link angle gamma (from +x toward +z) is a rotation about y by -gamma.
+    bodies.push_back({{"name", names[i]}, {"type", "rigid"}, {"mass", m},
+                      {"shape", {{"box", v3(len[i], 0.02, 0.02)}}}, {"inertia", "auto"},
+                      {"pos", v3(p.com[i].x(), 0, p.com[i].y())}, {"quat", quat_y(-p.angle[i])},
+                      {"vel", v3(vc.x(), 0, vc.y())}, {"omega", v3(0, -rate, 0)}});
+  }
+  auto hinge = [&](const char* name, const char* a, json pa, const char* b, json pb) {
+    return json{{"name", name}, {"type", "hinge"}, {"a", a}, {"pa", pa}, {"b", b}, {"pb", pb},
+                {"axis_a", v3(0, 1, 0)}, {"axis_b", v3(0, 1, 0)}};
+  };
+  json cons = json::array({hinge("h0", "world", v3(0, 0, 0), "crank", v3(-fb.a / 2, 0, 0)),
+                           hinge("h1", "crank", v3(fb.a / 2, 0, 0), "coupler", v3(-fb.b / 2, 0, 0)),
+                           hinge("h2", "coupler", v3(fb.b / 2, 0, 0), "rocker", v3(fb.c / 2, 0, 0)),
+                           hinge("h3", "world", v3(fb.d, 0, 0), "rocker", v3(-fb.c / 2, 0, 0))});
+  return {{"gravity", v3(0, 0, o.gravity ? -9.81 : 0.0)}, {"bodies", bodies}, {"constraints", cons}, {"sim", sim_block()}};
+}
+
+// Baumgarte activation: a particle 1.1 m from a pivot, moving at 0.3 m/s perpendicular
+// to the (inactive) rod of length 1 m, which an event switches on at t = 0.5 s.
+json gen_activation(const GenOptions& o) {
+  json bodies = json::array({{{"name", "bob"}, {"type", "particle"}, {"mass", 1.0}, {"pos", v3(1.1, 0, 0)}, {"vel", v3(0, 0.3, 0)}}});
+  json cons = json::array({{{"name", "rod"}, {"type", "distance"}, {"a", "world"}, {"b", "bob"}, {"length", 1.0}, {"active", false}}});
+  json events = json::array({{{"t", 0.5}, {"action", "activate"}, {"target", "rod"}}});
+  json sim = sim_block();
+  sim["t_end"] = 3.0;
+  sim["stab"] = {{"mode", "baumgarte"}, {"alpha", 5.0}, {"beta", 5.0}};
+  return {{"gravity", v3(0, 0, o.gravity ? -9.81 : 0.0)}, {"bodies", bodies}, {"constraints", cons},
+          {"events", events}, {"sim", sim}};
+}
+
+}  // namespace
+
+int cmd_gen(const GenOptions& o) {
+  json doc;
+  if (o.kind == "chain") doc = gen_chain(o);
+  else if (o.kind == "fourbar") doc = gen_fourbar(o);
+  else if (o.kind == "activation") {
+    GenOptions g = o;
+    doc = gen_activation(g);
+  } else {
+    throw fest::usage_error("unknown scene '{}' (chain, fourbar, activation)", o.kind);
+  }
+  fest::write_output("-", fest::formats::write_json(doc));
+  return 0;
+}
+
+}  // namespace lmfsim_tool
