@@ -19,3 +19,6 @@ if(FEST_TESTS)
   find_package(GTest CONFIG REQUIRED)
   include(GoogleTest)
 endif()
+# fluidsim: FFTW 3 for the fast Poisson/Helmholtz transforms, OpenMP for the parallel step.
+pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+find_package(OpenMP REQUIRED COMPONENTS CXX)
