@@ -42,7 +42,7 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
   const int rows = L.size[1] * L.size[2];
   // About four chunks per thread, as the seed found necessary for saturation.
   const int chunk = std::max(1, rows / (4 * omp_get_max_threads()));
-#pragma omp parallel for schedule(dynamic, chunk)
+#pragma omp parallel for schedule(dynamic, chunk) if (L.count() >= kParallelNodes)
   for (int r = 0; r < rows; ++r) {
     const int j = r % L.size[1], k = r / L.size[1];
     for (int i = 0; i < L.size[0]; ++i) {

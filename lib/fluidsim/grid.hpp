@@ -15,6 +15,10 @@ namespace fest::fluidsim {
 
 enum class Boundary { closed, periodic };
 
+// Grids with fewer nodes run their loops on one thread: there a parallel region (and, on
+// a loaded machine, waiting for descheduled threads) costs more than the work.
+constexpr std::size_t kParallelNodes = 32768;
+
 using Field = std::vector<double>;
 using Velocity = std::array<Field, 3>;
 

@@ -11,7 +11,7 @@ void divergence(const Layout& L, const Velocity& u, Field& out) {
     const AxisNeighbours nb = neighbours(L, a, 1);
     const Field& ua = u[a];
     // The normal component is odd: a folded neighbour changes sign.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
     for (int k = 0; k < L.size[2]; ++k)
       for (int j = 0; j < L.size[1]; ++j)
         for (int i = 0; i < L.size[0]; ++i) {
@@ -31,7 +31,7 @@ void subtract_gradient(const Layout& L, const Field& q, Velocity& u) {
   for (int a = 0; a < L.dim; ++a) {
     const AxisNeighbours nb = neighbours(L, a, 1);
     Field& ua = u[a];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
     for (int k = 0; k < L.size[2]; ++k)
       for (int j = 0; j < L.size[1]; ++j)
         for (int i = 0; i < L.size[0]; ++i) {

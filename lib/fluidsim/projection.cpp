@@ -88,7 +88,7 @@ void Projector::apply_laplacian(const Field& q, Field& out) const {
   const Layout& L = layout_;
   out.assign(L.count(), 0.0);
   const double c = 1.0 / ((reach_ * L.h) * (reach_ * L.h));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
   for (int k = 0; k < L.size[2]; ++k)
     for (int j = 0; j < L.size[1]; ++j)
       for (int i = 0; i < L.size[0]; ++i) {
@@ -133,7 +133,7 @@ int Projector::iterate(const Field& rhs, Field& q) const {
   for (int it = 0; it < options_.iters; ++it) {
     if (jacobi) {
       next.resize(q.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
       for (int k = 0; k < L.size[2]; ++k)
         for (int j = 0; j < L.size[1]; ++j)
           for (int i = 0; i < L.size[0]; ++i) relax(q, next, i, j, k);
@@ -154,7 +154,7 @@ int Projector::solve(const Field& rhs, Field& q) const {
     int cycles = 0;
     std::exception_ptr failure;
     // The 2^d classes are independent: one task each (the seed's 8 sub-tasks).
-#pragma omp parallel for schedule(dynamic, 1) reduction(max : cycles)
+#pragma omp parallel for schedule(dynamic, 1) reduction(max : cycles) if (layout_.count() >= kParallelNodes)
     for (int c = 0; c < static_cast<int>(multigrid_.size()); ++c) {
       try {
         cycles = std::max(cycles, multigrid_[c]->solve(layout_, rhs, q));
@@ -166,7 +166,7 @@ int Projector::solve(const Field& rhs, Field& q) const {
     if (failure) std::rethrow_exception(failure);
     return cycles;
   }
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (layout_.count() >= kParallelNodes)
   for (int c = 0; c < static_cast<int>(classes_.size()); ++c) classes_[c]->solve(layout_, rhs, q);
   return 0;
 }

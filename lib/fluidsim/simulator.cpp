@@ -128,7 +128,7 @@ void Simulator::add_forces(const State& st, double dt, Velocity& u) const {
         for (int c = 0; c < L.dim; ++c) {
           if (f.up[c] == 0.0) continue;
           const double k = dt * f.beta * f.up[c];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
           for (std::size_t n = 0; n < s.size(); ++n) u[c][n] += k * (s[n] - f.ambient);
         }
         break;
@@ -224,7 +224,7 @@ StepStats Simulator::step(State& st, double dt) const {
     if (scene_.viscosity > 0.0) {
       const Diffuser* d = diffuser(scene_.viscosity * dt);
       // The d components are independent solves.
-#pragma omp parallel for schedule(static, 1)
+#pragma omp parallel for schedule(static, 1) if (L.count() >= kParallelNodes)
       for (int c = 0; c < L.dim; ++c) d->velocity(c, v[c]);
       enforce_walls(L, v, scene_.no_slip);
     }
