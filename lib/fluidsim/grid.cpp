@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -87,6 +88,13 @@ std::array<double, 3> confine(const Layout& layout, std::array<double, 3> p) noe
 }
 
 Corners corners(const Layout& layout, const std::array<double, 3>& q) noexcept {
+  if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2])) {
+    // A trace through a non-finite velocity: propagate NaN into the sample so the step's
+    // finiteness check reports it (instead of indexing with an undefined position).
+    Corners bad;
+    bad.weight.fill(std::numeric_limits<double>::quiet_NaN());
+    return bad;
+  }
   const std::array<double, 3> p = confine(layout, q);
   int i0[3], i1[3];
   double t[3];
