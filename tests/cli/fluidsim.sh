@@ -102,6 +102,13 @@ run fluidsim render "$WORK/one.stream" --mode mip --to pfm -o "$WORK/r.pfm"
 expect_status 0
 
 # --- bad input: one line, the right status, nothing on stdout, no partial file ---
+case_ "--help and a missing scene file"
+run fluidsim run --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run fluidsim run "$WORK/does-not-exist.json"
+expect_clean_failure 4 fluidsim
+expect_stderr_has "does-not-exist"
 case_ "empty scene"
 run_stdin /dev/null fluidsim run
 expect_clean_failure 3 fluidsim
