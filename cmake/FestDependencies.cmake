@@ -25,3 +25,6 @@ pkg_check_modules(MINIZIP REQUIRED IMPORTED_TARGET minizip)   # facefit: .npz (z
 # ODE (libode-dev): only the lmfsim benchmark links it, as a same-run anchor (spec lmfsim §6).
 pkg_check_modules(ODE IMPORTED_TARGET ode>=0.16)
 set(FEST_ODE_FOUND ${ODE_FOUND})
+# fluidsim: FFTW 3 for the fast Poisson/Helmholtz transforms, OpenMP for the parallel step.
+pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+find_package(OpenMP REQUIRED COMPONENTS CXX)

@@ -1,0 +1,117 @@
+#include "fluidsim/advection.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <omp.h>
+
+namespace fest::fluidsim {
+
+namespace {
+
+// Trilinear interpolation set up once per position and applied to several fields: the
+// base node, the offsets to its neighbours along each axis (a periodic wrap makes the
+// offset negative) and the fractions. Nested lerps need 7 multiply-adds per field.
+struct Lerp3 {
+  std::size_t base = 0;
+  std::ptrdiff_t off[3] = {0, 0, 0};
+  double t[3] = {0, 0, 0};
+  bool bad = false;
+
+  Lerp3(const Layout& L, const std::array<double, 3>& q) noexcept {
+    std::ptrdiff_t stride = 1;
+    for (int a = 0; a < 3; ++a) {
+      const int s = L.size[a];
+      if (s == 1) {
+        stride *= s;
+        continue;
+      }
+      double p = q[a];
+      if (!std::isfinite(p)) {
+        bad = true;
+        return;
+      }
+      int i0;
+      if (L.bc[a] == Boundary::closed) {
+        p = p < 0.0 ? 0.0 : (p > s - 1.0 ? s - 1.0 : p);
+        i0 = static_cast<int>(p);
+        if (i0 > s - 2) i0 = s - 2;
+        off[a] = stride;
+      } else {
+        p = std::fmod(p, static_cast<double>(s));
+        if (p < 0.0) p += s;
+        i0 = static_cast<int>(p);
+        if (i0 >= s) i0 = s - 1;
+        off[a] = i0 + 1 == s ? -static_cast<std::ptrdiff_t>(s - 1) * stride : stride;
+      }
+      t[a] = p - i0;
+      base += static_cast<std::size_t>(i0) * stride;
+      stride *= s;
+    }
+  }
+
+  double operator()(const double* f) const noexcept {
+    if (bad) return std::numeric_limits<double>::quiet_NaN();
+    const double* p = f + base;
+    auto lerp = [](double a, double b, double s) { return a + s * (b - a); };
+    const double x00 = lerp(p[0], p[off[0]], t[0]);
+    const double x10 = lerp(p[off[1]], p[off[1] + off[0]], t[0]);
+    const double y0 = lerp(x00, x10, t[1]);
+    if (off[2] == 0) return y0;
+    const double* r = p + off[2];
+    const double x01 = lerp(r[0], r[off[0]], t[0]);
+    const double x11 = lerp(r[off[1]], r[off[1] + off[0]], t[0]);
+    return lerp(y0, lerp(x01, x11, t[1]), t[2]);
+  }
+};
+
+// Velocity in index units per second at a position.
+inline std::array<double, 3> velocity_at(const Layout& L, const Velocity& vel, const std::array<double, 3>& p,
+                                         double inv_h) noexcept {
+  const Lerp3 s(L, p);
+  std::array<double, 3> v{0, 0, 0};
+  for (int a = 0; a < L.dim; ++a) v[a] = s(vel[a].data()) * inv_h;
+  return v;
+}
+
+}  // namespace
+
+std::array<double, 3> trace_back(const Layout& L, const Velocity& vel, int i, int j, int k, double dt,
+                                 int substeps) noexcept {
+  std::array<double, 3> x{double(i), double(j), double(k)};
+  const double h = -dt / substeps;  // backwards in time
+  const double inv_h = 1.0 / L.h;
+  for (int s = 0; s < substeps; ++s) {
+    auto at = [&](const std::array<double, 3>& kk, double f) {
+      std::array<double, 3> p = x;
+      for (int a = 0; a < 3; ++a) p[a] += f * h * kk[a];
+      return p;
+    };
+    const auto k1 = velocity_at(L, vel, x, inv_h);
+    const auto k2 = velocity_at(L, vel, at(k1, 0.5), inv_h);
+    const auto k3 = velocity_at(L, vel, at(k2, 0.5), inv_h);
+    const auto k4 = velocity_at(L, vel, at(k3, 1.0), inv_h);
+    for (int a = 0; a < 3; ++a) x[a] += h / 6.0 * (k1[a] + 2.0 * k2[a] + 2.0 * k3[a] + k4[a]);
+    if (substeps > 1) x = confine(L, x);
+  }
+  return x;
+}
+
+void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const std::vector<const Field*>& in,
+            const std::vector<Field*>& out) {
+  const std::size_t nf = in.size();
+  const int rows = L.size[1] * L.size[2];
+  // About four chunks per thread, as the seed found necessary for saturation.
+  const int chunk = std::max(1, rows / (4 * omp_get_max_threads()));
+#pragma omp parallel for schedule(dynamic, chunk) if (L.count() >= kParallelNodes)
+  for (int r = 0; r < rows; ++r) {
+    const int j = r % L.size[1], k = r / L.size[1];
+    for (int i = 0; i < L.size[0]; ++i) {
+      const Lerp3 s(L, trace_back(L, vel, i, j, k, dt, substeps));
+      const std::size_t n = L.index(i, j, k);
+      for (std::size_t f = 0; f < nf; ++f) (*out[f])[n] = s(in[f]->data());
+    }
+  }
+}
+
+}  // namespace fest::fluidsim

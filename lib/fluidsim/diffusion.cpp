@@ -1,0 +1,52 @@
+#include "fluidsim/diffusion.hpp"
+
+#include <map>
+
+namespace fest::fluidsim {
+
+namespace {
+
+std::vector<int> diffusion_nodes(const Layout& L, int axis, Parity parity) {
+  std::vector<int> nodes;
+  const bool dirichlet = L.closed(axis) && parity == Parity::odd;
+  for (int i = dirichlet ? 1 : 0; i < (dirichlet ? L.size[axis] - 1 : L.size[axis]); ++i) nodes.push_back(i);
+  return nodes;
+}
+
+}  // namespace
+
+Diffuser::Diffuser(const Layout& layout, double coefficient, Transform kind, bool no_slip)
+    : layout_(layout), coefficient_(coefficient) {
+  std::map<std::pair<int, int>, std::shared_ptr<const AxisBasis>> bases;
+  auto basis = [&](int axis, Parity p) {
+    const auto key = std::make_pair(axis, static_cast<int>(p));
+    auto it = bases.find(key);
+    if (it != bases.end()) return it->second;
+    auto b = std::make_shared<const AxisBasis>(layout_, axis, diffusion_nodes(layout_, axis, p), 1, p, kind);
+    bases.emplace(key, b);
+    return std::shared_ptr<const AxisBasis>(b);
+  };
+  for (int c = 0; c < layout_.dim; ++c) {
+    std::array<std::shared_ptr<const AxisBasis>, 3> axes;
+    for (int a = 0; a < 3; ++a)
+      axes[a] = basis(a, layout_.active(a) ? velocity_parity(c, a, no_slip) : Parity::even);
+    velocity_[c] = std::make_unique<BoxSolver>(axes, 1.0, -coefficient_);
+  }
+  std::array<std::shared_ptr<const AxisBasis>, 3> axes{basis(0, Parity::even), basis(1, Parity::even),
+                                                       basis(2, Parity::even)};
+  scalar_ = std::make_unique<BoxSolver>(axes, 1.0, -coefficient_);
+}
+
+Diffuser::~Diffuser() = default;
+
+void Diffuser::velocity(int component, Field& f) const {
+  const Field b = f;
+  velocity_[component]->solve(layout_, b, f);
+}
+
+void Diffuser::scalar(Field& f) const {
+  const Field b = f;
+  scalar_->solve(layout_, b, f);
+}
+
+}  // namespace fest::fluidsim

@@ -1,0 +1,292 @@
+#include "fluidsim/simulator.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "core/error.hpp"
+#include "fluidsim/advection.hpp"
+#include "fluidsim/operators.hpp"
+
+namespace fest::fluidsim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Calls f(n, weight) for every node of a source region.
+template <typename F>
+void for_region(const Layout& L, const Source& src, F&& f) {
+  std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0};
+  double reach = 0.0;
+  if (src.shape == Source::Shape::box) {
+    for (int a = 0; a < L.dim; ++a) {
+      lo[a] = static_cast<int>(std::ceil(src.min[a]));
+      hi[a] = static_cast<int>(std::floor(src.max[a]));
+    }
+  } else {
+    reach = src.shape == Source::Shape::sphere ? src.radius : 3.0 * src.radius;
+    for (int a = 0; a < L.dim; ++a) {
+      lo[a] = std::max(0, static_cast<int>(std::ceil(src.centre[a] - reach)));
+      hi[a] = std::min(L.size[a] - 1, static_cast<int>(std::floor(src.centre[a] + reach)));
+    }
+  }
+  for (int k = lo[2]; k <= hi[2]; ++k)
+    for (int j = lo[1]; j <= hi[1]; ++j)
+      for (int i = lo[0]; i <= hi[0]; ++i) {
+        double w = 1.0;
+        if (src.shape != Source::Shape::box) {
+          const double d[3] = {i - src.centre[0], j - src.centre[1], L.dim == 3 ? k - src.centre[2] : 0.0};
+          const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+          if (src.shape == Source::Shape::sphere) {
+            if (r2 > src.radius * src.radius) continue;
+          } else {
+            w = std::exp(-0.5 * r2 / (src.radius * src.radius));
+          }
+        }
+        f(L.index(i, j, k), w);
+      }
+}
+
+bool active_at(const Source& src, double t) { return t >= src.start && t < src.end; }
+
+void check_finite(const Layout& L, const State& s) {
+  for (int c = 0; c < L.dim; ++c)
+    for (double v : s.u[c])
+      if (!std::isfinite(v)) throw runtime_failure("state became non-finite at step {} (velocity)", s.step);
+  for (const Field& f : s.s)
+    for (double v : f)
+      if (!std::isfinite(v)) throw runtime_failure("state became non-finite at step {} (scalar)", s.step);
+}
+
+}  // namespace
+
+Simulator::Simulator(const Scene& scene, const SimOptions& options)
+    : scene_(scene), options_(options), layout_(scene.layout()) {
+  ProjectionOptions po = options_.projection;
+  po.compact = options_.stam03;
+  projector_ = std::make_unique<Projector>(layout_, po);
+}
+
+Simulator::~Simulator() = default;
+
+void taylor_green(const Layout& L, Velocity& u) {
+  for (int k = 0; k < L.size[2]; ++k)
+    for (int j = 0; j < L.size[1]; ++j)
+      for (int i = 0; i < L.size[0]; ++i) {
+        const double x = 2.0 * M_PI * i / L.size[0], y = 2.0 * M_PI * j / L.size[1];
+        u[0][L.index(i, j, k)] = std::sin(x) * std::cos(y);
+        u[1][L.index(i, j, k)] = -std::cos(x) * std::sin(y);
+      }
+}
+
+void abc_flow(const Layout& L, Velocity& u) {
+  for (int k = 0; k < L.size[2]; ++k)
+    for (int j = 0; j < L.size[1]; ++j)
+      for (int i = 0; i < L.size[0]; ++i) {
+        const double x = 2.0 * M_PI * i / L.size[0], y = 2.0 * M_PI * j / L.size[1], z = 2.0 * M_PI * k / L.size[2];
+        const std::size_t n = L.index(i, j, k);
+        u[0][n] = std::sin(z) + std::cos(y);
+        u[1][n] = std::sin(x) + std::cos(z);
+        u[2][n] = std::sin(y) + std::cos(x);
+      }
+}
+
+State Simulator::initial_state() const {
+  State s;
+  for (int c = 0; c < 3; ++c) s.u[c] = c < layout_.dim ? layout_.zeros() : Field();
+  const std::string& kind = scene_.init.kind;
+  if (kind == "taylor-green") {
+    taylor_green(layout_, s.u);
+  } else if (kind == "abc") {
+    if (layout_.dim != 3) throw bad_input("init \"abc\" needs a 3-D grid");
+    abc_flow(layout_, s.u);
+  } else if (kind == "noise") {
+    std::mt19937_64 rng(scene_.init.seed);
+    std::uniform_real_distribution<double> U(-scene_.init.amp, scene_.init.amp);
+    for (int c = 0; c < layout_.dim; ++c)
+      for (double& v : s.u[c]) v = U(rng);
+    projector_->project(s.u);
+  }
+  enforce_walls(layout_, s.u, scene_.no_slip);
+  for (const ScalarSpec& sc : scene_.scalars) s.s.emplace_back(layout_.count(), sc.init);
+  return s;
+}
+
+void Simulator::add_forces(const State& st, double dt, Velocity& u) const {
+  const Layout& L = layout_;
+  for (const Force& f : scene_.forces) {
+    switch (f.type) {
+      case Force::Type::buoyancy: {
+        std::size_t which = 0;
+        for (std::size_t i = 0; i < scene_.scalars.size(); ++i)
+          if (scene_.scalars[i].name == f.scalar) which = i;
+        const Field& s = st.s[which];
+        for (int c = 0; c < L.dim; ++c) {
+          if (f.up[c] == 0.0) continue;
+          const double k = dt * f.beta * f.up[c];
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
+          for (std::size_t n = 0; n < s.size(); ++n) u[c][n] += k * (s[n] - f.ambient);
+        }
+        break;
+      }
+      case Force::Type::gravity:
+      case Force::Type::constant:
+        for (int c = 0; c < L.dim; ++c)
+          for (double& v : u[c]) v += dt * f.value[c];
+        break;
+      case Force::Type::vortex: {
+        // Swirl about the axis `up` through `centre`: f = strength (up x r) exp(-|r|^2/R^2).
+        for (int k = 0; k < L.size[2]; ++k)
+          for (int j = 0; j < L.size[1]; ++j)
+            for (int i = 0; i < L.size[0]; ++i) {
+              const double r[3] = {i - f.centre[0], j - f.centre[1], L.dim == 3 ? k - f.centre[2] : 0.0};
+              const double g = f.strength * std::exp(-(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) / (f.radius * f.radius));
+              const double up[3] = {f.up[0], f.up[1], L.dim == 3 ? f.up[2] : 1.0};
+              const double cr[3] = {up[1] * r[2] - up[2] * r[1], up[2] * r[0] - up[0] * r[2], up[0] * r[1] - up[1] * r[0]};
+              const std::size_t n = L.index(i, j, k);
+              for (int c = 0; c < L.dim; ++c) u[c][n] += dt * g * cr[c];
+            }
+        break;
+      }
+    }
+  }
+  // Jets: the velocity inside a source region is set, every step the source is active.
+  for (const ScalarSpec& sc : scene_.scalars)
+    for (const Source& src : sc.sources)
+      if (src.jet && active_at(src, st.t))
+        for_region(L, src, [&](std::size_t n, double) {
+          for (int c = 0; c < L.dim; ++c) u[c][n] = src.velocity[c];
+        });
+  enforce_walls(L, u, scene_.no_slip);
+}
+
+void Simulator::scalar_step(const State& st, double dt, std::vector<Field>& out) const {
+  const Layout& L = layout_;
+  std::vector<Field> src = st.s;
+  for (std::size_t i = 0; i < scene_.scalars.size(); ++i)
+    for (const Source& s : scene_.scalars[i].sources)
+      if (active_at(s, st.t) && s.rate != 0.0)
+        for_region(L, s, [&](std::size_t n, double w) { src[i][n] += dt * s.rate * w; });
+  out.assign(src.size(), L.zeros());
+  std::vector<const Field*> in;
+  std::vector<Field*> to;
+  for (std::size_t i = 0; i < src.size(); ++i) {
+    in.push_back(&src[i]);
+    to.push_back(&out[i]);
+  }
+  if (!in.empty()) advect(L, st.u, dt, scene_.substeps, in, to);
+  for (std::size_t i = 0; i < src.size(); ++i) {
+    const ScalarSpec& sc = scene_.scalars[i];
+    if (options_.mass_correct) {
+      const double before = weighted_sum(L, src[i]), after = weighted_sum(L, out[i]);
+      if (after != 0.0 && before != 0.0)
+        for (double& v : out[i]) v *= before / after;
+    }
+    if (sc.kappa > 0.0) {
+      diffuser(sc.kappa * dt)->scalar(out[i]);
+    }
+    if (sc.alpha > 0.0) {
+      const double f = 1.0 / (1.0 + sc.alpha * dt);
+      for (double& v : out[i]) v *= f;
+    }
+  }
+}
+
+const Diffuser* Simulator::diffuser(double c) const {
+  for (const auto& d : diffusers_)
+    if (d->coefficient() == c) return d.get();
+  diffusers_.push_back(std::make_unique<Diffuser>(
+      layout_, c, options_.projection.solver == PoissonSolver::fft ? Transform::fftw : Transform::dense,
+      scene_.no_slip));
+  return diffusers_.back().get();
+}
+
+StepStats Simulator::step(State& st, double dt) const {
+  const Layout& L = layout_;
+  StepStats stats;
+  auto t0 = Clock::now();
+  Velocity w = st.u;
+  add_forces(st, dt, w);
+  stats.ms_force = ms_since(t0);
+
+  // Scalars to level n+1 with the velocity of level n (independent of the vector step).
+  t0 = Clock::now();
+  std::vector<Field> s_next;
+  scalar_step(st, dt, s_next);
+  stats.ms_scalars = ms_since(t0);
+
+  auto diffuse = [&](Velocity& v) {
+    const auto t = Clock::now();
+    if (scene_.viscosity > 0.0) {
+      const Diffuser* d = diffuser(scene_.viscosity * dt);
+      // The d components are independent solves.
+#pragma omp parallel for schedule(static, 1) if (L.count() >= kParallelNodes)
+      for (int c = 0; c < L.dim; ++c) d->velocity(c, v[c]);
+      enforce_walls(L, v, scene_.no_slip);
+    }
+    stats.ms_diffuse += ms_since(t);
+  };
+  auto advect_self = [&](Velocity& v) {
+    const auto t = Clock::now();
+    Velocity out;
+    std::vector<const Field*> in;
+    std::vector<Field*> to;
+    for (int c = 0; c < L.dim; ++c) {
+      out[c] = L.zeros();
+      in.push_back(&v[c]);
+      to.push_back(&out[c]);
+    }
+    advect(L, v, dt, scene_.substeps, in, to);
+    for (int c = 0; c < L.dim; ++c) v[c].swap(out[c]);
+    enforce_walls(L, v, scene_.no_slip);
+    stats.ms_advect += ms_since(t);
+  };
+  auto project = [&](Velocity& v) {
+    const auto t = Clock::now();
+    stats.projection = projector_->project(v);
+    stats.ms_project += ms_since(t);
+  };
+
+  if (options_.stam03) {
+    diffuse(w);
+    project(w);
+    advect_self(w);
+    project(w);
+  } else {
+    advect_self(w);
+    diffuse(w);
+    project(w);
+  }
+  st.u = std::move(w);
+  st.s = std::move(s_next);
+  st.t += dt;
+  st.step += 1;
+  check_finite(L, st);
+  return stats;
+}
+
+State blend(const State& x, const State& y, double a) {
+  State out = x;
+  for (int c = 0; c < 3; ++c)
+    for (std::size_t n = 0; n < out.u[c].size(); ++n) out.u[c][n] = (1.0 - a) * x.u[c][n] + a * y.u[c][n];
+  for (std::size_t i = 0; i < out.s.size(); ++i)
+    for (std::size_t n = 0; n < out.s[i].size(); ++n) out.s[i][n] = (1.0 - a) * x.s[i][n] + a * y.s[i][n];
+  out.t = (1.0 - a) * x.t + a * y.t;
+  return out;
+}
+
+double max_speed(const Layout& L, const Velocity& u) {
+  double m = 0.0;
+  for (std::size_t n = 0; n < L.count(); ++n) {
+    double s = 0.0;
+    for (int c = 0; c < L.dim; ++c) s += u[c][n] * u[c][n];
+    m = std::max(m, s);
+  }
+  return std::sqrt(m);
+}
+
+}  // namespace fest::fluidsim

@@ -1,0 +1,76 @@
+#pragma once
+// Fast diagonalization of separable operators (specs/fluidsim.md 2.5, solvers `fdm` and
+// `fft`). An operator on a box of nodes that is a Kronecker sum Tx (+) Ty (+) Tz of 1-D
+// operators is diagonalized axis by axis: transform, divide by the eigenvalue sums,
+// transform back. Used for the 2^d parity classes of the wide Laplacian (projection) and
+// for the compact Laplacian of implicit diffusion.
+//
+// Each 1-D operator is a second difference of reach r (r = 2: wide, r = 1: compact) on a
+// set of stored nodes of one axis, with the grid's mirror/wrap rules and a field parity.
+// It is symmetric in the trapezoid-weighted inner product W (1/2 on wall nodes), so
+// T = V diag(lambda) V^-1 with V = W^-1/2 U.
+
+#include <memory>
+#include <vector>
+
+#include "fluidsim/grid.hpp"
+
+namespace fest::fluidsim {
+
+enum class Transform { dense, fftw };
+
+// One axis: the node set, the eigenvalues and the transform in and out of eigen space.
+class AxisBasis {
+ public:
+  // nodes: stored indices of the axis, increasing, every r-th (a parity class for r = 2,
+  // all interior or all stored nodes for r = 1). Odd parity drops wall neighbours (their
+  // value is 0).
+  AxisBasis(const Layout& layout, int axis, std::vector<int> nodes, int reach, Parity parity,
+            Transform kind);
+  ~AxisBasis();
+  AxisBasis(const AxisBasis&) = delete;
+  AxisBasis& operator=(const AxisBasis&) = delete;
+
+  int size() const noexcept { return static_cast<int>(nodes_.size()); }
+  const std::vector<int>& nodes() const noexcept { return nodes_; }
+  const std::vector<double>& eigenvalues() const noexcept { return lambda_; }
+  // The dense 1-D operator (for tests).
+  const std::vector<double>& matrix() const noexcept { return matrix_; }
+  bool uses_fftw() const noexcept { return fft_ != nullptr; }
+
+  // Transforms `count` lines of this axis in place: line l starts at data + l*dist (given
+  // per line by `starts`), elements `stride` apart. `work` holds at least 2*size()+2.
+  void forward(double* line, std::ptrdiff_t stride, double* work) const;
+  void inverse(double* line, std::ptrdiff_t stride, double* work) const;
+  // Dense matrices (row-major, size x size): coefficients = F x, x = B coefficients.
+  const std::vector<double>& forward_matrix() const noexcept { return fwd_; }
+  const std::vector<double>& inverse_matrix() const noexcept { return inv_; }
+
+  struct Fft;
+
+ private:
+  std::vector<int> nodes_;
+  std::vector<double> matrix_, fwd_, inv_, lambda_;
+  std::unique_ptr<Fft> fft_;
+};
+
+// The solve of (a + b * (lambda_x + lambda_y + lambda_z)) x = rhs on the box of nodes
+// nodes_x * nodes_y * nodes_z of a field; modes whose factor is 0 (the Neumann/periodic
+// null space of a Poisson problem) are set to 0.
+class BoxSolver {
+ public:
+  BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, double a, double b);
+  // Gathers the box from `rhs`, solves, and scatters the solution into `x` (other nodes
+  // untouched). Not thread-safe per instance only for its scratch: call solve from one
+  // thread per BoxSolver, or use separate instances.
+  void solve(const Layout& layout, const Field& rhs, Field& x) const;
+  std::size_t count() const noexcept { return count_; }
+  const std::array<std::shared_ptr<const AxisBasis>, 3>& axes() const noexcept { return axes_; }
+
+ private:
+  std::array<std::shared_ptr<const AxisBasis>, 3> axes_;
+  std::vector<double> inv_factor_;  // 1 / (a + b * lambda sum), 0 for null modes
+  std::size_t count_ = 0;
+};
+
+}  // namespace fest::fluidsim

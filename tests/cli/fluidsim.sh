@@ -1,0 +1,164 @@
+#!/usr/bin/env bash
+# fluidsim end to end: the analytic self-checks, the frame stream's definition, exact
+# interpolation, thread-count determinism, output formats, and bad input.
+. "$(dirname "$0")/lib.sh"
+
+SCENE2D="$WORK/smoke2d.json"
+cat >"$SCENE2D" <<'JSON'
+{ "dims": [32, 32], "frame_dt": 0.05, "frames": 10, "viscosity": 0.001,
+  "scalars": [ { "name": "density", "alpha": 0.05,
+                 "sources": [ { "shape": "sphere", "centre": [16, 5], "radius": 3, "rate": 10 } ] } ],
+  "forces": [ { "type": "buoyancy", "scalar": "density", "beta": 1.0 } ] }
+JSON
+SCENE3D="$WORK/smoke3d.json"
+cat >"$SCENE3D" <<'JSON'
+{ "dims": [32, 32, 32], "frame_dt": 0.05, "frames": 3,
+  "scalars": [ { "name": "density",
+                 "sources": [ { "shape": "box", "min": [14, 14, 2], "max": [18, 18, 5], "rate": 10, "velocity": [0, 0, 0.5] } ] } ],
+  "forces": [ { "type": "buoyancy", "scalar": "density", "beta": 1.0 } ] }
+JSON
+
+case_ "check all: every analytic criterion of the spec holds"
+run fluidsim check all --threads 1
+expect_status 0
+expect_json '.pass' 'true'
+expect_json '[.cases[].check]' '["projection","taylor-green","abc","mass","stability","interp"]'
+expect_json '[.cases[] | select(.check=="taylor-green") | .error_ratios[] >= 1.5] | all' 'true'
+
+case_ "the frame stream: one complete NRRD per frame, header as man 5 fest-frame defines it"
+run fluidsim run "$SCENE2D" --threads 1
+expect_status 0
+check "10 frames" test "$(grep -c '^NRRD0004$' "$out")" -eq 10
+check "frame 0 header" grep -qx '# fest-frame: index=0 time=0 fields=velocity:3,density:1' "$out"
+check "frame 9 header" grep -qx '# fest-frame: index=9 time=0.45 fields=velocity:3,density:1' "$out"
+check "channel axis first, wall nodes included" grep -qx 'sizes: 4 34 34' "$out"
+
+case_ "render reads the stream: one PNG per frame, 34x34 for a 2-D frame"
+mkdir -p "$WORK/png"
+"$FEST_BIN/fluidsim" run "$SCENE2D" --threads 1 | "$FEST_BIN/fluidsim" render -o "$WORK/png/f%03d.png"
+check "ten images" test "$(ls "$WORK/png" | wc -l)" -eq 10
+run fconv --info "$WORK/png/f009.png"
+expect_json '[.width, .height, .channels]' '[34,34,3]'
+
+case_ "interpolated frames: states exact, frame 2 = 0.6 X0 + 0.4 X1, and 'interp' agrees"
+mkdir -p "$WORK/i"
+run fluidsim run "$SCENE2D" --interp 5 --frames 11 --precision double --fields velocity -o "$WORK/i/f%02d.nrrd" --threads 1 --report "$WORK/i.json"
+expect_status 0
+check "2 simulation steps for 11 frames at K=5" test "$(jq .simulation_steps "$WORK/i.json")" -eq 2
+run fluidsim interp "$WORK/i/f00_velocity.nrrd" "$WORK/i/f05_velocity.nrrd" --alpha 0.4 -o "$WORK/i/mix.nrrd"
+expect_status 0
+data_bytes=$((34 * 34 * 3 * 8))
+check "interp equals the in-run frame 2 bit for bit" cmp <(tail -c $data_bytes "$WORK/i/mix.nrrd") <(tail -c $data_bytes "$WORK/i/f02_velocity.nrrd")
+run fluidsim interp "$WORK/i/f00_velocity.nrrd" "$WORK/i/f05_velocity.nrrd" --alpha 1 -o "$WORK/i/one.nrrd"
+check "alpha 1 gives the next state" cmp <(tail -c $data_bytes "$WORK/i/one.nrrd") <(tail -c $data_bytes "$WORK/i/f05_velocity.nrrd")
+
+case_ "determinism: --threads 1 and 2 give identical bytes (3-D, parallel loops active)"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --threads 1 >"$WORK/t1.stream"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 >"$WORK/t2.stream"
+check "identical streams" cmp "$WORK/t1.stream" "$WORK/t2.stream"
+
+case_ "VTI frames: image data with the wall nodes, spacing h, velocity and density arrays"
+mkdir -p "$WORK/v"
+run fluidsim run "$SCENE3D" -o "$WORK/v/f%05d.vti" --frames 2 --threads 2
+expect_status 0
+run fconv --info "$WORK/v/f00001.vti"
+expect_status 0
+check "34^3 points" grep -q '"points": *39304' "$out"
+check "velocity array" grep -q 'velocity' "$out"
+
+case_ "2-D PFM and EXR frames"
+mkdir -p "$WORK/p"
+run fluidsim run "$SCENE2D" -o "$WORK/p/d%02d.pfm" --frames 2 --threads 1
+expect_status 0
+run fconv --info "$WORK/p/d01.pfm"
+expect_json '[.width, .height, .channels]' '[34,34,1]'
+run fluidsim run "$SCENE2D" -o "$WORK/p/v%02d.exr" --fields velocity --frames 1 --threads 1
+expect_status 0
+run fconv --info "$WORK/p/v00.exr"
+expect_json '.channels' '3'
+
+case_ "the paper's projection is exact; Stam 2003 (20 Gauss-Seidel sweeps) is not"
+run fluidsim run "$SCENE2D" -o "$WORK/p/x%02d.pfm" --frames 3 --report "$WORK/paper.json" --threads 1
+check "paper: max_div_rel < 1e-10" jq -e '.max_div_rel < 1e-10' "$WORK/paper.json"
+run fluidsim run "$SCENE2D" -o "$WORK/p/y%02d.pfm" --frames 3 --order stam03 --poisson gs --iters 20 --report "$WORK/stam.json" --threads 1
+expect_status 0
+check "stam03: residual divergence > 1e-4 relative" jq -e '.max_div_rel > 1e-4' "$WORK/stam.json"
+for s in fft mg jacobi; do
+  run fluidsim run "$SCENE2D" -o "$WORK/p/z%02d.pfm" --frames 2 --poisson $s --report "$WORK/$s.json" --threads 1
+  expect_status 0
+done
+check "fft exact" jq -e '.max_div_rel < 1e-10' "$WORK/fft.json"
+check "mg to its tolerance" jq -e '.max_div_rel < 1e-6' "$WORK/mg.json"
+
+case_ "render: slice, MIP and absorb of a 3-D stream; PFM output is the unmapped integral"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --frames 1 --threads 2 >"$WORK/one.stream"
+for m in slice mip absorb; do
+  run fluidsim render "$WORK/one.stream" --mode $m --axis y -o "$WORK/r_$m.png"
+  expect_status 0
+done
+run fconv --info "$WORK/r_absorb.png"
+expect_json '[.width, .height]' '[34,34]'
+run fluidsim render "$WORK/one.stream" --mode mip --to pfm -o "$WORK/r.pfm"
+expect_status 0
+
+# --- bad input: one line, the right status, nothing on stdout, no partial file ---
+case_ "--help and a missing scene file"
+run fluidsim run --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run fluidsim run "$WORK/does-not-exist.json"
+expect_clean_failure 4 fluidsim
+expect_stderr_has "does-not-exist"
+case_ "empty scene"
+run_stdin /dev/null fluidsim run
+expect_clean_failure 3 fluidsim
+case_ "invalid JSON"
+echo '{"dims": [8, 8' >"$WORK/bad.json"; run fluidsim run "$WORK/bad.json"
+expect_clean_failure 3 fluidsim
+case_ "unknown scene key, with the did-you-mean hint"
+echo '{"dims": [8, 8], "viscocity": 0.1}' >"$WORK/bad.json"; run fluidsim run "$WORK/bad.json"
+expect_clean_failure 3 fluidsim
+expect_stderr_has 'scene key "viscocity" is unknown \(did you mean "viscosity"\?\)'
+for doc in '{"dims": [8]}' '{"dims": [8, 8, 8, 8]}' '{"dims": [0, 8]}' '{"dims": [2000, 8]}'; do
+  case_ "bad dims $doc"
+  echo "$doc" >"$WORK/bad.json"; run fluidsim run "$WORK/bad.json"
+  expect_clean_failure 3 fluidsim
+  expect_stderr_has 'dims must be 2 or 3 integers in \[3, 1024\]'
+done
+for doc in '{"dims": [8, 8], "viscosity": -1}' '{"dims": [8, 8], "frame_dt": 0}' '{"dims": [8, 8], "interp": 0}' \
+           '{"dims": [8, 8], "scalars": [{"alpha": -1}]}' '{"dims": [8, 8], "scalars": [{"sources": [{"min": [50, 50], "max": [60, 60]}]}]}'; do
+  case_ "bad value $doc"
+  echo "$doc" >"$WORK/bad.json"; run fluidsim run "$WORK/bad.json"
+  expect_clean_failure 3 fluidsim
+done
+case_ "pattern without %d for several frames"
+run fluidsim run "$SCENE2D" -o "$WORK/nopattern.pfm"
+expect_clean_failure 2 fluidsim
+check "no file left" test ! -e "$WORK/nopattern.pfm"
+case_ "unsupported solver and unknown flag"
+run fluidsim run "$SCENE2D" --poisson pcg
+expect_clean_failure 2 fluidsim
+run fluidsim run "$SCENE2D" --no-such-flag
+expect_clean_failure 2 fluidsim
+case_ "a state that becomes non-finite: exit 1, completed frames only"
+echo '{"dims": [8, 8], "h": 1e-300, "frames": 5, "forces": [{"type": "constant", "value": [1e30, 1e30]}]}' >"$WORK/nan.json"
+mkdir -p "$WORK/nan"
+run fluidsim run "$WORK/nan.json" -o "$WORK/nan/f%d.pfm"
+expect_status 1
+expect_stderr_has '^fluidsim: error: state became non-finite at step 1 \(velocity\)$'
+check "frame 0 complete, nothing else" test "$(ls "$WORK/nan")" = "f0.pfm"
+case_ "truncated NRRD frame into render"
+head -c 20000 "$WORK/t1.stream" >"$WORK/trunc.stream"
+run fluidsim render "$WORK/trunc.stream" -o "$WORK/trunc.png"
+expect_clean_failure 3 fluidsim
+expect_stderr_has 'truncated NRRD frame: expected [0-9]+ bytes, got [0-9]+ \(.*, frame 0\)'
+check "no image" test ! -e "$WORK/trunc.png"
+case_ "render --index out of range"
+run fluidsim render "$WORK/one.stream" --mode slice --index 99 -o "$WORK/idx.png"
+expect_clean_failure 2 fluidsim
+case_ "interp of frames of different shape"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --frames 1 --fields density -o "$WORK/d3.nrrd" --threads 2
+run fluidsim interp "$WORK/i/f00_velocity.nrrd" "$WORK/d3_density.nrrd" --alpha 0.5
+expect_clean_failure 3 fluidsim
+
+finish

@@ -1,0 +1,170 @@
+// fluidsim render (field file or frame stream -> PNG/PFM) and fluidsim interp (blend two
+// frames).
+#include <algorithm>
+#include <cmath>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "fluidsim/frame.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
+#include "formats/volume/volume_io.hpp"
+
+namespace fest::fluidsim_tool {
+
+using namespace fest::fluidsim;
+
+cv::Mat plane_to_rgb(const Plane& p, double lo, double hi, const std::string& map, int depth) {
+  cv::Mat m(p.height, p.width, depth == 16 ? CV_16UC3 : CV_8UC3);
+  const double top = depth == 16 ? 65535.0 : 255.0;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      const double t = (p.values[static_cast<std::size_t>(y) * p.width + x] - lo) / (hi - lo);
+      const auto rgb = colour(map, t);
+      for (int k = 0; k < 3; ++k) {
+        const double v = std::lround(rgb[k] * top);
+        if (depth == 16)
+          m.ptr<std::uint16_t>(y)[3 * x + k] = static_cast<std::uint16_t>(v);
+        else
+          m.ptr<std::uint8_t>(y)[3 * x + k] = static_cast<std::uint8_t>(v);
+      }
+    }
+  return m;
+}
+
+cv::Mat plane_to_float(const Plane& p) {
+  cv::Mat m(p.height, p.width, CV_32FC1);
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) m.ptr<float>(y)[x] = static_cast<float>(p.values[static_cast<std::size_t>(y) * p.width + x]);
+  return m;
+}
+
+namespace {
+
+// Every frame of the input: a frame stream (NRRD files with "# fest-frame:" headers) or
+// one scalar volume (NRRD, NIfTI, MHA) read by formats/.
+std::vector<Frame> load_frames(const std::string& path) {
+  const std::string where = path == "-" ? "stdin" : path;
+  std::string bytes = read_input(path);
+  if (bytes.empty()) throw bad_input("empty input ({})", where);
+  std::vector<Frame> frames;
+  const auto header_end = bytes.find("\n\n");
+  const bool stream = bytes.rfind("NRRD", 0) == 0 && bytes.find("# fest-frame:") < header_end;
+  if (stream) {
+    std::size_t pos = 0;
+    long n = 0;
+    while (pos < bytes.size()) {
+      Frame f;
+      pos = decode_frame(bytes, pos, f, where, n++);
+      frames.push_back(std::move(f));
+    }
+    return frames;
+  }
+  formats::Input in = formats::recognise(std::move(bytes), where);
+  if (formats::kind_of(in.format) != formats::Kind::volume)
+    throw bad_input("render reads a frame stream or a volume (NRRD, NIfTI, MHA), not {} ({})",
+                    formats::format_name(in.format), where);
+  const Volume v = formats::parse(in, formats::read_volume);
+  Frame f;
+  f.dim = v.dims[2] == 1 ? 2 : 3;
+  f.size = {static_cast<int>(v.dims[0]), static_cast<int>(v.dims[1]), static_cast<int>(v.dims[2])};
+  f.spacing = v.spacing[0];
+  f.fields = {{"value", 1}};
+  f.data = v.voxels;
+  frames.push_back(std::move(f));
+  return frames;
+}
+
+}  // namespace
+
+int render_command(const RenderOptions& o) {
+  fluidsim::RenderOptions ro;
+  if (o.mode == "slice") ro.mode = RenderMode::slice;
+  else if (o.mode == "mip") ro.mode = RenderMode::mip;
+  else if (o.mode == "absorb") ro.mode = RenderMode::absorb;
+  else throw usage_error("--mode must be slice, mip or absorb");
+  if (o.axis == "x") ro.axis = 0;
+  else if (o.axis == "y") ro.axis = 1;
+  else if (o.axis == "z") ro.axis = 2;
+  else throw usage_error("--axis must be x, y or z");
+  if (o.to != "png" && o.to != "pfm") throw usage_error("--to must be png or pfm");
+  check_colormap(o.colormap);
+  if (!o.range.empty() && !(o.range[1] > o.range[0])) throw usage_error("--range lo,hi needs lo < hi");
+  ro.index = o.index;
+
+  const std::vector<Frame> frames = load_frames(o.input);
+  const bool many = frames.size() > 1;
+  if (many && o.output != "-" && !has_index_conversion(o.output))
+    throw usage_error("-o \"{}\" needs a %d for {} frames", o.output, frames.size());
+  std::string field = o.field;
+  if (frames.front().channel_of(field) < 0) {
+    if (frames.front().fields.size() == 1 && o.field == "density")
+      field = frames.front().fields.front().name;  // a plain volume: its only field
+    else
+      throw usage_error("--field \"{}\" is not in the input", o.field);
+  }
+  if (ro.mode == RenderMode::slice && o.index >= 0) {
+    const Frame& f = frames.front();
+    const int depth = f.dim == 2 ? 1 : f.size[ro.axis];
+    if (o.index >= depth) throw usage_error("--index {} is out of range [0, {}]", o.index, depth - 1);
+  }
+  // Render everything before writing anything: no partial output on bad input.
+  std::vector<std::string> images;
+  double lo = 0.0, hi = 1.0;
+  bool range_set = !o.range.empty();
+  if (range_set) {
+    lo = o.range[0];
+    hi = o.range[1];
+  }
+  for (const Frame& f : frames) {
+    const Frame& ref = frames.front();
+    if (f.size != ref.size || f.dim != ref.dim || f.channel_of(field) < 0)
+      throw bad_input("frame {} differs in shape or fields from frame 0", f.index);
+    ro.spacing = f.spacing;
+    ro.sigma = o.sigma > 0 ? o.sigma : 4.0 / (f.spacing * std::max({f.size[0], f.size[1], f.size[2]}));
+    const Plane p = render_plane(f.magnitude(field), f.size, f.dim, ro);
+    if (o.to == "pfm") {
+      images.push_back(formats::write_image(Image{plane_to_float(p), ColorSpace::linear}, formats::Format::pfm));
+      continue;
+    }
+    if (!range_set) {
+      // One range for the whole sequence (from the first frame), so frames do not flicker.
+      if (ro.mode != RenderMode::absorb) {
+        lo = *std::min_element(p.values.begin(), p.values.end());
+        hi = *std::max_element(p.values.begin(), p.values.end());
+        if (!(hi > lo)) hi = lo + 1.0;
+      }
+      range_set = true;
+    }
+    images.push_back(formats::write_image(Image{plane_to_rgb(p, lo, hi, o.colormap, o.depth), ColorSpace::srgb},
+                                          formats::Format::png));
+  }
+  if (o.output == "-") {
+    std::string all;
+    for (const auto& im : images) all += im;
+    write_output("-", all);
+  } else {
+    for (std::size_t i = 0; i < images.size(); ++i)
+      write_output(expand_pattern(o.output, many ? frames[i].index : frames[i].index), images[i]);
+  }
+  return 0;
+}
+
+int interp_command(const InterpOptions& o) {
+  auto one = [](const std::string& path) {
+    const std::string where = path == "-" ? "stdin" : path;
+    const std::string bytes = read_input(path);
+    if (bytes.empty()) throw bad_input("empty input ({})", where);
+    Frame f;
+    decode_frame(bytes, 0, f, where, 0);
+    return f;
+  };
+  const Frame a = one(o.a), b = one(o.b);
+  Frame out = blend_frames(a, b, o.alpha);
+  out.float64 = a.float64 || b.float64;
+  write_output(o.output, encode_frame(out));
+  return 0;
+}
+
+}  // namespace fest::fluidsim_tool

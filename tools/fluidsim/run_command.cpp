@@ -1,0 +1,355 @@
+// fluidsim run: scene JSON -> simulation -> frames (files or the frame stream).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/progress.hpp"
+#include "core/tool_main.hpp"
+#include "fluidsim/frame.hpp"
+#include "fluidsim/operators.hpp"
+#include "fluidsim/simulator.hpp"
+#include "formats/dataset/dataset_io.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/volume/volume_io.hpp"
+
+namespace fest::fluidsim_tool {
+
+using namespace fest::fluidsim;
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+std::string extension_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  return path.substr(dot + 1);
+}
+
+Scene load_scene(const std::string& path) {
+  const std::string where = path == "-" ? "stdin" : path;
+  const std::string text = read_input(path);
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw bad_input("empty scene ({})", where);
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    const auto colon = what.find("parse error");
+    throw bad_input("invalid scene JSON: {} ({})", colon == std::string::npos ? what : what.substr(colon), where);
+  }
+  return parse_scene(doc, where);
+}
+
+vtkSmartPointer<vtkImageData> frame_to_vti(const Frame& f, bool float64) {
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(f.size[0], f.size[1], f.size[2]);
+  img->SetSpacing(f.spacing, f.spacing, f.spacing);
+  img->SetOrigin(0, 0, 0);
+  const int C = f.channels();
+  int c0 = 0;
+  for (const FrameField& ff : f.fields) {
+    vtkSmartPointer<vtkDataArray> arr;
+    if (float64)
+      arr = vtkSmartPointer<vtkDoubleArray>::New();
+    else
+      arr = vtkSmartPointer<vtkFloatArray>::New();
+    arr->SetName(ff.name.c_str());
+    arr->SetNumberOfComponents(ff.components);
+    arr->SetNumberOfTuples(static_cast<vtkIdType>(f.nodes()));
+    for (std::size_t n = 0; n < f.nodes(); ++n)
+      for (int k = 0; k < ff.components; ++k)
+        arr->SetComponent(static_cast<vtkIdType>(n), k, f.data[n * C + c0 + k]);
+    img->GetPointData()->AddArray(arr);
+    if (ff.name == "velocity") img->GetPointData()->SetActiveVectors("velocity");
+    if (ff.components == 1 && !img->GetPointData()->GetScalars()) img->GetPointData()->SetActiveScalars(ff.name.c_str());
+    c0 += ff.components;
+  }
+  return img;
+}
+
+// 2-D frames as images: one scalar (1 channel) or velocity (u, v, 0).
+Image frame_to_image(const Frame& f, const std::string& field) {
+  const int c0 = f.channel_of(field);
+  int comps = 1;
+  for (const auto& ff : f.fields)
+    if (ff.name == field) comps = ff.components;
+  const int channels = comps == 1 ? 1 : 3;
+  cv::Mat m(f.size[1], f.size[0], CV_32FC(channels));
+  const int C = f.channels();
+  for (int y = 0; y < f.size[1]; ++y)
+    for (int x = 0; x < f.size[0]; ++x) {
+      float* px = m.ptr<float>(f.size[1] - 1 - y) + static_cast<std::size_t>(x) * channels;
+      const std::size_t n = x + static_cast<std::size_t>(f.size[0]) * y;
+      for (int k = 0; k < channels; ++k) px[k] = k < comps ? static_cast<float>(f.data[n * C + c0 + k]) : 0.0f;
+    }
+  return Image{m, ColorSpace::linear};
+}
+
+struct Output {
+  std::string pattern;
+  std::string format;  // stream, vti, nrrd, pfm, exr, png
+};
+
+void write_frame(const Output& out, const Frame& f, const std::string& main_field, bool float64) {
+  if (out.format == "stream") {
+    const std::string bytes = encode_frame(f);
+    if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() || std::fflush(stdout) != 0)
+      throw io_error("cannot write the frame stream (stdout)");
+    return;
+  }
+  const std::string path = expand_pattern(out.pattern, f.index);
+  if (out.format == "vti") {
+    write_output(path, formats::write_dataset(frame_to_vti(f, float64), formats::Format::vti));
+  } else if (out.format == "nrrd") {
+    // One file per field: f00000_density.nrrd, f00000_velocity.nrrd.
+    const auto dot = path.find_last_of('.');
+    for (const FrameField& ff : f.fields) {
+      const std::string name = path.substr(0, dot) + "_" + ff.name + path.substr(dot);
+      if (ff.components == 1) {
+        Volume v;
+        v.dims = {static_cast<std::size_t>(f.size[0]), static_cast<std::size_t>(f.size[1]),
+                  static_cast<std::size_t>(f.size[2])};
+        v.spacing = {f.spacing, f.spacing, f.spacing};
+        v.type = float64 ? ScalarType::f64 : ScalarType::f32;
+        v.voxels = f.component(f.channel_of(ff.name));
+        write_output(name, formats::write_volume(v, formats::Format::nrrd));
+      } else {
+        Frame one = f;
+        one.fields = {ff};
+        const int c0 = f.channel_of(ff.name), C = f.channels();
+        one.data.resize(f.nodes() * ff.components);
+        for (std::size_t n = 0; n < f.nodes(); ++n)
+          for (int k = 0; k < ff.components; ++k) one.data[n * ff.components + k] = f.data[n * C + c0 + k];
+        write_output(name, encode_frame(one));
+      }
+    }
+  } else if (out.format == "pfm" || out.format == "exr") {
+    write_output(path, formats::write_image(frame_to_image(f, main_field),
+                                            out.format == "pfm" ? formats::Format::pfm : formats::Format::exr));
+  } else {  // png preview with the render defaults
+    fluidsim::RenderOptions ro;
+    ro.axis = 1;
+    ro.spacing = f.spacing;
+    ro.sigma = 4.0 / (f.spacing * std::max({f.size[0], f.size[1], f.size[2]}));
+    const std::vector<double> values = f.magnitude(main_field);
+    const Plane p = render_plane(values, f.size, f.dim, ro);
+    double lo = 0.0, hi = 1.0;
+    if (f.dim == 2) {
+      hi = *std::max_element(p.values.begin(), p.values.end());
+      lo = std::min(0.0, *std::min_element(p.values.begin(), p.values.end()));
+      if (hi <= lo) hi = lo + 1.0;
+    }
+    Image img{plane_to_rgb(p, lo, hi, "inferno", 8), ColorSpace::srgb};
+    write_output(path, formats::write_image(img, formats::Format::png));
+  }
+}
+
+}  // namespace
+
+int run_command(const RunOptions& o) {
+  // Flags first (usage errors), then the scene (bad input).
+  if (o.order != "paper" && o.order != "stam03") throw usage_error("--order must be paper or stam03");
+  if (o.grid == "mac") throw usage_error("--grid mac is unsupported in this build (use collocated)");
+  if (o.grid != "collocated") throw usage_error("--grid must be collocated");
+  if (o.precision != "float" && o.precision != "double") throw usage_error("--precision must be float or double");
+  Output out;
+  out.pattern = o.output;
+  if (o.output == "-" || o.output.empty()) {
+    out.format = "stream";
+    if (!o.to.empty() && o.to != "nrrd") throw usage_error("standard output carries the NRRD frame stream only");
+  } else {
+    out.format = o.to.empty() ? extension_of(o.output) : o.to;
+    if (out.format != "vti" && out.format != "nrrd" && out.format != "pfm" && out.format != "exr" && out.format != "png")
+      throw usage_error("output format must be vti, nrrd, pfm, exr or png (from --to or the extension of \"{}\")",
+                        o.output);
+  }
+  std::optional<PoissonSolver> solver;
+  if (!o.poisson.empty()) solver = parse_poisson(o.poisson);
+
+  Scene scene = load_scene(o.scene);
+  if (o.frames > 0) scene.frames = o.frames;
+  if (o.interp > 0) scene.interp = o.interp;
+  for (const std::string& w : scene.warnings) warn("fluidsim", w);
+  if (scene.interp > 8) warn("fluidsim", fmt::format("--interp {} > 8 interpolates over long steps (quality)", scene.interp));
+  if (out.format != "stream" && scene.frames > 1 && !has_index_conversion(out.pattern))
+    throw usage_error("-o \"{}\" needs a %d for {} frames", out.pattern, scene.frames);
+  if ((out.format == "pfm" || out.format == "exr") && scene.dim != 2)
+    throw usage_error("{} output is for 2-D scenes; use vti or nrrd", out.format);
+  const Layout layout = scene.layout();
+  for (int a = 0; a < scene.dim; ++a)
+    if (scene.bc[a] == Boundary::periodic && scene.dims[a] % 2 == 1)
+      warn("fluidsim", fmt::format("periodic axis {} has odd size {}: its parity classes join (no split)", a, scene.dims[a]));
+
+  int nmax = 0;
+  for (int a = 0; a < scene.dim; ++a) nmax = std::max(nmax, scene.dims[a]);
+  SimOptions so;
+  so.projection.solver = solver ? *solver : (nmax <= 64 ? PoissonSolver::fdm : PoissonSolver::fft);
+  so.projection.iters = o.iters;
+  so.projection.tol = o.tol;
+  so.stam03 = o.order == "stam03";
+  so.mass_correct = o.mass_correct;
+
+  std::vector<std::string> scalar_names;
+  for (const auto& s : scene.scalars) scalar_names.push_back(s.name);
+  std::vector<std::string> fields;
+  if (o.fields.empty()) {
+    fields.push_back("velocity");
+    for (const auto& n : scalar_names) fields.push_back(n);
+  } else {
+    std::string item;
+    for (std::size_t i = 0; i <= o.fields.size(); ++i) {
+      if (i == o.fields.size() || o.fields[i] == ',') {
+        if (item.empty()) throw usage_error("--fields has an empty name");
+        if (item != "velocity" && std::find(scalar_names.begin(), scalar_names.end(), item) == scalar_names.end())
+          throw usage_error("--fields names \"{}\", which the scene does not have", item);
+        fields.push_back(item);
+        item.clear();
+      } else {
+        item += o.fields[i];
+      }
+    }
+  }
+  // The field that 1-field outputs (pfm, exr, png) show.
+  std::string main_field = fields.front();
+  for (const auto& f : fields)
+    if (f != "velocity") {
+      main_field = f;
+      break;
+    }
+
+  const Simulator sim(scene, so);
+  const int K = scene.interp;
+  const double dt = K * scene.frame_dt;
+  State cur = sim.initial_state();
+  std::optional<State> next;
+  long cur_level = 0;
+
+  json stats_lines = json::array();
+  std::string stats_text;
+  double max_div = 0.0, max_div_rel = 0.0, peak_speed = 0.0;
+  double total_ms[7] = {0, 0, 0, 0, 0, 0, 0};  // force advect diffuse project scalars interp write
+  long sim_steps = 0;
+  const auto t_start = Clock::now();
+  Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress) && !o.quiet);
+
+  auto advance = [&](const State& from) {
+    State s = from;
+    const StepStats st = sim.step(s, dt);
+    ++sim_steps;
+    total_ms[0] += st.ms_force;
+    total_ms[1] += st.ms_advect;
+    total_ms[2] += st.ms_diffuse;
+    total_ms[3] += st.ms_project;
+    total_ms[4] += st.ms_scalars;
+    max_div = std::max(max_div, st.projection.max_div_after);
+    if (st.projection.max_div_before > 0)
+      max_div_rel = std::max(max_div_rel, st.projection.max_div_after / st.projection.max_div_before);
+    return std::make_pair(s, st);
+  };
+
+  for (long f = 0; f < scene.frames; ++f) {
+    const long level = f / K;
+    const int phase = static_cast<int>(f % K);
+    StepStats last{};
+    bool stepped = false;
+    while (cur_level < level) {
+      if (!next) {
+        auto [s, st] = advance(cur);
+        next = std::move(s);
+        last = st;
+        stepped = true;
+      }
+      cur = std::move(*next);
+      next.reset();
+      ++cur_level;
+    }
+    if (phase != 0 && !next) {
+      auto [s, st] = advance(cur);
+      next = std::move(s);
+      last = st;
+      stepped = true;
+    }
+    auto t0 = Clock::now();
+    // Frame time f * frame_dt: the state itself, or (1 - a) X^n + a X^(n+1).
+    const State frame_state = phase == 0 ? cur : blend(cur, *next, static_cast<double>(phase) / K);
+    const double ms_interp = phase == 0 ? 0.0 : ms_since(t0);
+    total_ms[5] += ms_interp;
+    Frame frame = make_frame(layout, frame_state, scalar_names, fields, f, f * scene.frame_dt);
+    frame.float64 = o.precision == "double";
+    t0 = Clock::now();
+    write_frame(out, frame, main_field, frame.float64);
+    const double ms_write = ms_since(t0);
+    total_ms[6] += ms_write;
+
+    const double speed = max_speed(layout, frame_state.u);
+    peak_speed = std::max(peak_speed, speed);
+    if (!o.stats.empty() || !o.report.empty()) {
+      Field div;
+      divergence(layout, frame_state.u, div);
+      json line = {{"frame", f},
+                   {"time", f * scene.frame_dt},
+                   {"sim_step", level},
+                   {"interpolated", phase != 0},
+                   {"max_speed", speed},
+                   {"kinetic_energy", kinetic_energy(layout, frame_state.u)},
+                   {"max_div", max_abs(div)}};
+      for (std::size_t i = 0; i < scalar_names.size(); ++i)
+        line["mass." + scalar_names[i]] = weighted_sum(layout, frame_state.s[i]);
+      line["ms"] = {{"force", stepped ? last.ms_force : 0.0},   {"advect", stepped ? last.ms_advect : 0.0},
+                    {"diffuse", stepped ? last.ms_diffuse : 0.0}, {"project", stepped ? last.ms_project : 0.0},
+                    {"scalars", stepped ? last.ms_scalars : 0.0}, {"interp", ms_interp},
+                    {"write", ms_write}};
+      stats_text += line.dump() + "\n";
+      stats_lines.push_back(std::move(line));
+    }
+    progress.advance();
+  }
+  progress.finish();
+  if (!o.stats.empty()) write_output(o.stats, stats_text);
+  if (!o.report.empty()) {
+    const double steps = std::max<long>(1, sim_steps);
+    json rep = {{"frames", scene.frames},
+                {"simulation_steps", sim_steps},
+                {"interp", K},
+                {"dt", dt},
+                {"wall_ms", ms_since(t_start)},
+                {"max_div", max_div},
+                {"max_div_rel", max_div_rel},
+                {"max_speed", peak_speed},
+                {"solver", poisson_name(so.projection.solver)},
+                {"order", o.order},
+                {"threads", omp_threads()},
+                {"dims", std::vector<int>(scene.dims.begin(), scene.dims.begin() + scene.dim)},
+                {"mean_ms",
+                 {{"force", total_ms[0] / steps},
+                  {"advect", total_ms[1] / steps},
+                  {"diffuse", total_ms[2] / steps},
+                  {"project", total_ms[3] / steps},
+                  {"scalars", total_ms[4] / steps},
+                  {"step", (total_ms[0] + total_ms[1] + total_ms[2] + total_ms[3] + total_ms[4]) / steps},
+                  {"interp_frame", total_ms[5] / std::max<double>(1.0, scene.frames - std::ceil(scene.frames / double(K)))},
+                  {"write_frame", total_ms[6] / scene.frames}}},
+                {"peak_rss_mb", peak_rss_mb()}};
+    for (const auto& n : scalar_names) rep["mass." + n] = stats_lines.back()["mass." + n];
+    write_output(o.report, rep.dump(2) + "\n");
+  }
+  return 0;
+}
+
+}  // namespace fest::fluidsim_tool
