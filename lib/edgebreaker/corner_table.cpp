@@ -106,7 +106,7 @@ void check_connected(const CornerTable& table) {
 
 }  // namespace
 
-CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count) {
+CornerTable build_closed_corner_table(const std::vector<Triangle>& triangles, int vertex_count) {
   if (vertex_count < 0) throw bad_input("vertex count {} is negative", vertex_count);
   if (triangles.empty()) throw bad_input("the mesh has no triangles");
   if (triangles.size() > max_triangles)
@@ -121,6 +121,11 @@ CornerTable build_corner_table(const std::vector<Triangle>& triangles, int verte
 
   link_opposites(table);
   check_vertex_fans(table);
+  return table;
+}
+
+CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count) {
+  CornerTable table = build_closed_corner_table(triangles, vertex_count);
   check_connected(table);
 
   // Closed, connected and oriented: Euler's formula gives the genus. e = 3t/2 because every

@@ -29,4 +29,9 @@ inline int left(const CornerTable& t, int c) { return t.O[static_cast<std::size_
 // offending triangle, edge or vertex. O(t log t): sorting the directed edges.
 CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count);
 
+// The same checks without "connected" and "genus 0": any number of closed, oriented,
+// edge- and vertex-manifold components of any genus, every vertex used. This is what the
+// general traversal (traversal.hpp) takes.
+CornerTable build_closed_corner_table(const std::vector<Triangle>& triangles, int vertex_count);
+
 }  // namespace fest::edgebreaker
