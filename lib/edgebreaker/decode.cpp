@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "edgebreaker/clers.hpp"
+#include "edgebreaker/corner_table.hpp"
 #include "edgebreaker/reverse_decoder.hpp"
 
 namespace fest::edgebreaker {
@@ -12,9 +13,12 @@ std::vector<Triangle> decode(const Clers& clers) {
   if (clers.empty()) throw bad_input("invalid CLERS string: empty (a closed mesh has at least one E)");
   DecodedConnectivity out;
   try {
-    ReverseDecoder decoder(clers.size(), {});
+    ReverseDecoder decoder(clers.size(), {}, true);
     for (std::size_t i = clers.size(); i-- > 0;) decoder.step(clers[i]);
     out = decoder.finish(true);
+    // The chapter's triangulations are simple: no multi-edges, which the general decoder
+    // accepts (they arise from cut non-manifold input).
+    if (out.components == 1) build_corner_table(out.triangles, out.vertex_count);
   } catch (const Error& e) {
     // Same reasons, in the words of this string-level interface.
     std::string why = e.what();

@@ -12,8 +12,8 @@
 
 namespace fest::edgebreaker {
 
-ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events)
-    : symbols_(symbols), position_(symbols), events_(std::move(events)), next_event_(events_.size()) {
+ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events, bool simple)
+    : simple_(simple), symbols_(symbols), position_(symbols), events_(std::move(events)), next_event_(events_.size()) {
   decoded_.reserve(symbols);
   // Corner ids are ints: 3 per triangle, at most symbols + components triangles.
   if (symbols > static_cast<std::size_t>(std::numeric_limits<int>::max() / 16))
@@ -143,7 +143,10 @@ void ReverseDecoder::inverse_R() {
 
 void ReverseDecoder::inverse_C() {
   Loop& loop = top("C with no open loop");
-  if (loop.length >= 0 && loop.length <= 3) fail("C on a loop of 3 edges");
+  // C on a 3-loop leaves a 2-loop: only meshes with multi-edges do that (the chapter's
+  // constraint 1a, which the context models exploit); C on a 2-loop would repeat a vertex.
+  if (loop.length >= 0 && loop.length <= (simple_ ? 3 : 2))
+    fail(simple_ ? "C on a loop of 3 edges" : "C on a loop of 2 edges");
   const int a = loop.gate;
   const int x = find(V_[static_cast<std::size_t>(next(a))]);
   if (closed_[static_cast<std::size_t>(x)]) fail("a vertex is closed twice");
@@ -170,6 +173,9 @@ void ReverseDecoder::inverse_S() {
   if (event != pending_.end()) {  // the right branch was reached through a handle
     right_branch.gate = event->second;
     pending_.erase(event);
+    // The corner may lie on any loop of the stack, which this S joins to the current one:
+    // from here on no tracked length can be trusted.
+    for (Loop& loop : loops_) loop.length = -1;
     if (O_[static_cast<std::size_t>(right_branch.gate)] != -1) fail("a handle event names a closed edge");
   } else {
     if (loops_.empty()) fail("S without two open loops (no matching E)");
@@ -226,7 +232,7 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
   while (!loops_.empty()) {
     const Loop loop = loops_.back();
     loops_.pop_back();
-    if (loop.length >= 0 && loop.length != 3) fail("a last open loop has more than 3 edges");
+    if (loop.length >= 0 && loop.length != 3) fail("a last open loop is not 3 edges long");
     const int a = loop.gate;
     const int e = incoming_open_edge(a);  // w -> x
     const int f = incoming_open_edge(e);  // p -> w
@@ -300,24 +306,38 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
                                       : std::array<int, 3>{id(next(c)), id(prev(c)), id(O_[static_cast<std::size_t>(c)])});
 
   // Output faces: per component the start triangle, then its symbols in forward order
-  // (symbol i was triangle symbol_triangles - 1 - i).
+  // (symbol i was triangle symbol_triangles - 1 - i). new_index maps this decoder's
+  // triangles to output positions, for the verification's corner table.
   out.triangles.reserve(static_cast<std::size_t>(t));
+  std::vector<int> new_index(static_cast<std::size_t>(t), -1);
   std::size_t symbol = 0;
   for (int j = 0; j < out.components; ++j) {
     const int s = start_corner[static_cast<std::size_t>(j)];
+    new_index[static_cast<std::size_t>(s / 3)] = static_cast<int>(out.triangles.size());
     out.triangles.push_back({id(s), id(s + 1), id(s + 2)});
     for (; symbol < symbols_; ++symbol) {
       const int tri = symbol_triangles - 1 - static_cast<int>(symbol);
       if (component[static_cast<std::size_t>(tri)] != j) break;
+      new_index[static_cast<std::size_t>(tri)] = static_cast<int>(out.triangles.size());
       out.triangles.push_back({id(3 * tri), id(3 * tri + 1), id(3 * tri + 2)});
     }
   }
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
   if (verify) {
+    // Re-encode the decoded corner table itself (not a table rebuilt from the faces, which
+    // could not tell the two edges of a multi-edge apart).
     CornerTable table;
+    table.vertex_count = out.vertex_count;
+    table.V.resize(static_cast<std::size_t>(3 * t));
+    table.O.resize(static_cast<std::size_t>(3 * t));
+    const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
+    for (int c = 0; c < 3 * t; ++c) {
+      table.V[static_cast<std::size_t>(moved(c))] = id(c);
+      table.O[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
+    }
     try {
-      table = build_closed_corner_table(out.triangles, out.vertex_count);
+      check_closed_manifold(table);
     } catch (const Error& e) {
       throw bad_input("invalid connectivity: it decodes to a mesh the coder does not take: {}", e.what());
     }

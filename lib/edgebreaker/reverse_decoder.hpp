@@ -29,8 +29,10 @@ struct DecodedConnectivity {
 class ReverseDecoder {
  public:
   // `symbols` is the total number of symbols that step() will be given; `events` sorted by
-  // source (as traverse() emits them). Throws bad_input for counts beyond what fits.
-  ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events);
+  // source (as traverse() emits them). With `simple`, C on a 3-loop is rejected (simple
+  // triangulations, the chapter's setting); otherwise it is allowed, since meshes cut from
+  // non-manifold input may have multi-edges. Throws bad_input for counts beyond what fits.
+  ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events, bool simple = false);
 
   // Context of the next symbol: valence class 0..5 of the last triangle's left vertex
   // (spec 2.7), the previous decoded symbol (0 none, else 1 + Symbol), and whether C is
@@ -69,6 +71,7 @@ class ReverseDecoder {
   void inverse_C();
   void inverse_S();
 
+  bool simple_;
   std::size_t symbols_;
   std::size_t position_;  // forward index of the symbol being decoded
   std::vector<HandleEvent> events_;
