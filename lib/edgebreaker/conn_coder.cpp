@@ -145,9 +145,9 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
     }
     if (mode == ConnMode::static_model) machine.advance(s);
     decoder.step(s);
-    if (dec.overrun() > 8) throw bad_input("connectivity section is truncated");
+    if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
   }
-  if (dec.overrun() > 0) throw bad_input("connectivity section is truncated");
+  if (dec.truncated()) throw bad_input("connectivity section is truncated");
   return decoder.finish(verify);
 }
 

@@ -136,9 +136,9 @@ std::vector<char> decode_hole_flags(std::string_view bytes, const std::vector<in
   std::vector<char> dummy(valence.size(), 0);
   for (std::size_t g = 0; g < dummy.size(); ++g) {
     dummy[g] = static_cast<char>(dec.bit(p[static_cast<std::size_t>(std::min(valence[g], 16))]));
-    if (dec.overrun() > 8) break;
+    if (dec.overrun() > 12) break;
   }
-  if (dec.overrun() > 0) throw bad_input("hole section is truncated");
+  if (dec.truncated()) throw bad_input("hole section is truncated");
   return dummy;
 }
 

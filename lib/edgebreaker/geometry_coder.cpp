@@ -192,11 +192,11 @@ std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan&
         if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
         q[g][static_cast<std::size_t>(k)] = v;
       }
-      if (dec.overrun() > 8) throw bad_input("geometry section is truncated");
+      if (dec.overrun() > 12) throw bad_input("geometry section is truncated");
     }
     previous = q[g];
   }
-  if (dec.overrun() > 0) throw bad_input("geometry section is truncated");
+  if (dec.truncated()) throw bad_input("geometry section is truncated");
   return q;
 }
 

@@ -48,8 +48,23 @@ class RangeEncoder {
   void bypass_bits(std::uint32_t value, int count) {
     for (int i = count - 1; i >= 0; --i) bypass(static_cast<int>((value >> i) & 1u));
   }
+  // Ends the stream with as few bytes as identify a value in [low, low + range): the
+  // decoder reads missing trailing bytes as zeros. The first byte LZMA-style coders write
+  // is always 0 (no carry can reach it) and is left out too; the decoder implies it.
   std::string finish() {
-    for (int i = 0; i < 5; ++i) shift_low();
+    int bytes = 4;
+    for (int k = 1; k <= 4; ++k) {
+      const int s = 32 - 8 * k;
+      const std::uint64_t unit = std::uint64_t{1} << s;
+      const std::uint64_t v = (low_ + unit - 1) & ~(unit - 1);
+      if (v < low_ + range_) {
+        low_ = v;
+        bytes = k;
+        break;
+      }
+    }
+    for (int i = 0; i <= bytes; ++i) shift_low();
+    out_.erase(0, 1);
     return std::move(out_);
   }
 
@@ -84,7 +99,7 @@ class RangeEncoder {
 class RangeDecoder {
  public:
   explicit RangeDecoder(std::string_view bytes) : bytes_(bytes) {
-    for (int i = 0; i < 5; ++i) code_ = (code_ << 8) | next_byte();
+    for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | next_byte();  // after the implied 0
   }
   // The cumulative count the next symbol falls in; call consume() with its interval.
   std::uint32_t target(std::uint32_t total) {
@@ -128,8 +143,10 @@ class RangeDecoder {
     for (int i = 0; i < count; ++i) v = (v << 1) | static_cast<std::uint32_t>(bypass());
     return v;
   }
-  // Bytes read beyond the end (a complete stream needs none beyond its 5 flush bytes).
+  // Bytes read beyond the end. The encoder leaves out trailing zero bytes, so a complete
+  // stream may need up to 4 (the width of the code register); more means it was cut short.
   std::size_t overrun() const noexcept { return overrun_; }
+  bool truncated() const noexcept { return overrun_ > 4; }
 
  private:
   std::uint32_t next_byte() {
