@@ -36,6 +36,7 @@ TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware
   xvfb xauth                 # X server for VTK rendering tests (Debian's VTK is X11-only)
   jq                         # CLI tests read the JSON that tools print
+  draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
 )
 
 # --- arguments ----------------------------------------------------------------

@@ -287,8 +287,10 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   const std::size_t symbols = trav.code.clers.size();
   std::optional<ConnEncoded> conn;
   int conn_mode = 0;
+  bool verified = false;  // the symbols decode the same whatever the coder: check once
   const auto consider = [&](ConnMode mode) {
-    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify);
+    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify && !verified);
+    verified = true;
     if (!conn || c.bytes.size() < conn->bytes.size()) {
       conn = std::move(c);
       conn_mode = static_cast<int>(mode);

@@ -14,10 +14,16 @@ namespace fest::edgebreaker {
 
 ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events, bool simple)
     : simple_(simple), symbols_(symbols), position_(symbols), events_(std::move(events)), next_event_(events_.size()) {
-  decoded_.reserve(symbols);
   // Corner ids are ints: 3 per triangle, at most symbols + components triangles.
   if (symbols > static_cast<std::size_t>(std::numeric_limits<int>::max() / 16))
     throw bad_input("invalid connectivity: {} symbols, more than supported", symbols);
+  decoded_.reserve(symbols);
+  // The caller has checked `symbols` against the bytes it came from.
+  V_.reserve(3 * (symbols + 2));
+  O_.reserve(3 * (symbols + 2));
+  parent_.reserve(symbols + 3);
+  degree_.reserve(symbols + 3);
+  closed_.reserve(symbols + 3);
   for (std::size_t k = 0; k < events_.size(); ++k) {
     const HandleEvent& e = events_[k];
     if (e.source >= symbols || e.split >= e.source)
