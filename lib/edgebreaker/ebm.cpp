@@ -258,6 +258,12 @@ const char* conn_mode_name(int mode) {
 
 }  // namespace
 
+void reseal_ebm(std::string& bytes) {
+  if (bytes.size() < 8) return;
+  const std::uint32_t crc = crc32_of(std::string_view(bytes).substr(0, bytes.size() - 4));
+  for (int k = 0; k < 4; ++k) bytes[bytes.size() - 4 + static_cast<std::size_t>(k)] = static_cast<char>((crc >> (8 * k)) & 0xFFu);
+}
+
 bool is_ebm(std::string_view bytes) { return bytes.size() >= 8 && std::memcmp(bytes.data(), magic, 8) == 0; }
 
 Clers mesh_symbols(const MeshSoup& mesh, bool strict) {

@@ -84,4 +84,8 @@ Clers mesh_symbols(const MeshSoup& mesh, bool strict = false);
 
 bool is_ebm(std::string_view bytes);
 
+// Rewrites the CRC at the end of a stream (at least 8 bytes) to match its content, so
+// tests and fuzzers can reach the decoder behind the CRC with damaged or lying sections.
+void reseal_ebm(std::string& bytes);
+
 }  // namespace fest::edgebreaker
