@@ -39,6 +39,7 @@ TEST_TOOL_PKGS=(
   xvfb xauth                 # X server for VTK rendering tests (Debian's VTK is X11-only)
   jq                         # CLI tests read the JSON that tools print
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
+  draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
 )
 
 # --- arguments ----------------------------------------------------------------

@@ -44,17 +44,22 @@ Mesh::FaceHandle MeshBuilder::add_face(const std::uint32_t* indices, std::size_t
     std::sort(sorted_.begin(), sorted_.end());
     repeated = std::adjacent_find(sorted_.begin(), sorted_.end()) != sorted_.end();
   }
-  if (count < 3 || repeated) {
+  Mesh::FaceHandle face;
+  if (count >= 3 && !repeated) face = mesh_.add_face(handles_);
+  if (!face.is_valid()) {
     ++skipped_;
-    return Mesh::FaceHandle();
+    skipped_list_.emplace_back(indices, indices + count);
   }
-  Mesh::FaceHandle face = mesh_.add_face(handles_);
-  if (!face.is_valid()) ++skipped_;
   return face;
 }
 
 void MeshBuilder::finish() {
   if (skipped_ > 0) set_skipped_faces_property(mesh_, skipped_);
+  if (!skipped_list_.empty()) {
+    OpenMesh::MPropHandleT<std::vector<std::vector<int>>> handle;
+    if (!mesh_.get_property_handle(handle, skipped_face_list_property)) mesh_.add_property(handle, skipped_face_list_property);
+    mesh_.property(handle) = std::move(skipped_list_);
+  }
 }
 
 void set_skipped_faces_property(Mesh& mesh, std::size_t count) {

@@ -38,6 +38,7 @@ class MeshBuilder {
   std::vector<Mesh::VertexHandle> handles_;
   std::vector<std::uint32_t> sorted_;
   std::size_t skipped_ = 0;
+  std::vector<std::vector<int>> skipped_list_;  // their vertex indices, for skipped_face_list()
 };
 
 void set_skipped_faces_property(Mesh& mesh, std::size_t count);

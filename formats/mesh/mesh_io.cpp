@@ -47,6 +47,24 @@ std::string write_mesh(const Mesh& mesh, Format format, const MeshWriteOptions& 
   throw bad_input("cannot write a mesh as {}", format_name(format));
 }
 
+std::vector<std::vector<int>> skipped_face_list(const Mesh& mesh) {
+  OpenMesh::MPropHandleT<std::vector<std::vector<int>>> handle;
+  if (!mesh.get_property_handle(handle, skipped_face_list_property)) return {};
+  return mesh.property(handle);
+}
+
+void set_extra_faces(Mesh& mesh, std::vector<std::vector<int>> faces) {
+  OpenMesh::MPropHandleT<std::vector<std::vector<int>>> handle;
+  if (!mesh.get_property_handle(handle, extra_faces_property)) mesh.add_property(handle, extra_faces_property);
+  mesh.property(handle) = std::move(faces);
+}
+
+std::vector<std::vector<int>> extra_faces(const Mesh& mesh) {
+  OpenMesh::MPropHandleT<std::vector<std::vector<int>>> handle;
+  if (!mesh.get_property_handle(handle, extra_faces_property)) return {};
+  return mesh.property(handle);
+}
+
 std::size_t skipped_faces(const Mesh& mesh) {
   OpenMesh::MPropHandleT<std::size_t> handle;
   if (!mesh.get_property_handle(handle, skipped_faces_property)) return 0;

@@ -37,6 +37,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -72,5 +73,18 @@ nlohmann::json describe_mesh(const Mesh& mesh);
 inline constexpr const char* skipped_faces_property = "fest:skipped_faces";
 // That number, 0 when the property is absent.
 std::size_t skipped_faces(const Mesh& mesh);
+
+// The skipped faces themselves (vertex indices as in the file, in file order), for tools
+// that keep non-manifold input exactly (ebcode). Mesh property
+// "fest:skipped_face_list" (std::vector<std::vector<int>>); empty when absent.
+inline constexpr const char* skipped_face_list_property = "fest:skipped_face_list";
+std::vector<std::vector<int>> skipped_face_list(const Mesh& mesh);
+
+// Faces the writers of PLY, OFF and OBJ append after the mesh's own faces: the way to
+// write faces OpenMesh's halfedge structure cannot hold (non-manifold output, ebdecode).
+// Mesh property "fest:extra_faces" (std::vector<std::vector<int>>, vertex indices).
+inline constexpr const char* extra_faces_property = "fest:extra_faces";
+void set_extra_faces(Mesh& mesh, std::vector<std::vector<int>> faces);
+std::vector<std::vector<int>> extra_faces(const Mesh& mesh);
 
 }  // namespace fest::formats

@@ -202,6 +202,17 @@ std::string write_obj(const Mesh& input) {
     }
     out.push_back('\n');
   }
+  for (const auto& f : extra_faces(mesh)) {
+    out.push_back('f');
+    for (int v : f) {
+      const int i = v + 1;
+      if (texcoords && normals) fmt::format_to(std::back_inserter(out), " {0}/{0}/{0}", i);
+      else if (texcoords) fmt::format_to(std::back_inserter(out), " {0}/{0}", i);
+      else if (normals) fmt::format_to(std::back_inserter(out), " {0}//{0}", i);
+      else fmt::format_to(std::back_inserter(out), " {}", i);
+    }
+    out.push_back('\n');
+  }
   return out;
 }
 

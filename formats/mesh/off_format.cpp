@@ -179,10 +179,11 @@ std::string write_off(const Mesh& input) {
   const bool colors = mesh.has_vertex_colors();
   const bool texcoords = mesh.has_vertex_texcoords2D();
   const bool face_colors = mesh.has_face_colors();
+  const std::vector<std::vector<int>> extra = extra_faces(mesh);
   std::string out;
   out.reserve(mesh.n_vertices() * 40 + mesh.n_faces() * 20 + 32);
   fmt::format_to(std::back_inserter(out), "{}{}{}OFF\n{} {} 0\n", texcoords ? "ST" : "", colors ? "C" : "",
-                 normals ? "N" : "", mesh.n_vertices(), mesh.n_faces());
+                 normals ? "N" : "", mesh.n_vertices(), mesh.n_faces() + extra.size());
   auto put_color = [&](const Mesh::Color& c) {
     fmt::format_to(std::back_inserter(out), " {} {} {} 255", static_cast<unsigned>(c[0]), static_cast<unsigned>(c[1]),
                    static_cast<unsigned>(c[2]));
@@ -211,6 +212,12 @@ std::string write_off(const Mesh& input) {
     fmt::format_to(std::back_inserter(out), "{}", mesh.valence(f));
     for (auto v : mesh.fv_range(f)) fmt::format_to(std::back_inserter(out), " {}", v.idx());
     if (face_colors) put_color(mesh.color(f));
+    out.push_back('\n');
+  }
+  for (const auto& f : extra) {
+    fmt::format_to(std::back_inserter(out), "{}", f.size());
+    for (int v : f) fmt::format_to(std::back_inserter(out), " {}", v);
+    if (face_colors) put_color(Mesh::Color(255, 255, 255));
     out.push_back('\n');
   }
   return out;

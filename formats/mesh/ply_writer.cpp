@@ -48,8 +48,10 @@ std::string write_ply(const Mesh& input, bool ascii) {
   // precision to expect.
   const bool float_points = points_are_floats(mesh);
   const bool float_normals = normals_are_floats(mesh);
+  const std::vector<std::vector<int>> extra = extra_faces(mesh);
   std::size_t max_valence = 0;
   for (auto f : mesh.faces()) max_valence = std::max<std::size_t>(max_valence, mesh.valence(f));
+  for (const auto& f : extra) max_valence = std::max(max_valence, f.size());
   const bool small_lists = max_valence <= 255;
 
   std::string out = "ply\n";
@@ -63,7 +65,7 @@ std::string write_ply(const Mesh& input, bool ascii) {
                    float_normals ? "float" : "double");
   if (colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   if (texcoords) out += "property float s\nproperty float t\n";
-  fmt::format_to(std::back_inserter(out), "element face {}\n", mesh.n_faces());
+  fmt::format_to(std::back_inserter(out), "element face {}\n", mesh.n_faces() + extra.size());
   out += small_lists ? "property list uchar int vertex_indices\n" : "property list int int vertex_indices\n";
   if (face_colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   out += "end_header\n";
@@ -111,6 +113,17 @@ std::string write_ply(const Mesh& input, bool ascii) {
       else put_le(out, static_cast<std::int32_t>(v.idx()));
     }
     if (face_colors) put_color(mesh.color(f));
+    if (ascii) out.push_back('\n');
+  }
+  for (const auto& f : extra) {
+    if (ascii) fmt::format_to(std::back_inserter(out), "{}", f.size());
+    else if (small_lists) out.push_back(static_cast<char>(f.size()));
+    else put_le(out, static_cast<std::int32_t>(f.size()));
+    for (int v : f) {
+      if (ascii) fmt::format_to(std::back_inserter(out), " {}", v);
+      else put_le(out, static_cast<std::int32_t>(v));
+    }
+    if (face_colors) put_color(Mesh::Color(255, 255, 255));
     if (ascii) out.push_back('\n');
   }
   return out;

@@ -78,6 +78,18 @@ void check_vertex_fans(const CornerTable& table) {
   }
 }
 
+void check_opposites(const CornerTable& table) {
+  const int n = table.corners();
+  for (int c = 0; c < n; ++c) {
+    const int d = table.O[static_cast<std::size_t>(c)];
+    if (d < 0 || d >= n || d / 3 == c / 3 || table.O[static_cast<std::size_t>(d)] != c)
+      throw bad_input("corner {} has no proper opposite corner", c);
+    if (table.V[static_cast<std::size_t>(next(c))] != table.V[static_cast<std::size_t>(prev(d))] ||
+        table.V[static_cast<std::size_t>(prev(c))] != table.V[static_cast<std::size_t>(next(d))])
+      throw bad_input("corners {} and {} are opposite across different edges", c, d);
+  }
+}
+
 void check_connected(const CornerTable& table) {
   const int t = table.triangles();
   std::vector<char> reached(static_cast<std::size_t>(t), 0);
@@ -106,7 +118,19 @@ void check_connected(const CornerTable& table) {
 
 }  // namespace
 
-CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count) {
+void check_closed_manifold(const CornerTable& table) {
+  for (int v : table.V)
+    if (v < 0 || v >= table.vertex_count) throw bad_input("a corner refers to vertex {}, outside 0..{}", v, table.vertex_count - 1);
+  for (int c = 0; c < table.corners(); c += 3)
+    if (table.V[static_cast<std::size_t>(c)] == table.V[static_cast<std::size_t>(c + 1)] ||
+        table.V[static_cast<std::size_t>(c + 1)] == table.V[static_cast<std::size_t>(c + 2)] ||
+        table.V[static_cast<std::size_t>(c + 2)] == table.V[static_cast<std::size_t>(c)])
+      throw bad_input("triangle {} repeats a vertex", c / 3);
+  check_opposites(table);
+  check_vertex_fans(table);
+}
+
+CornerTable build_closed_corner_table(const std::vector<Triangle>& triangles, int vertex_count) {
   if (vertex_count < 0) throw bad_input("vertex count {} is negative", vertex_count);
   if (triangles.empty()) throw bad_input("the mesh has no triangles");
   if (triangles.size() > max_triangles)
@@ -121,6 +145,11 @@ CornerTable build_corner_table(const std::vector<Triangle>& triangles, int verte
 
   link_opposites(table);
   check_vertex_fans(table);
+  return table;
+}
+
+CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count) {
+  CornerTable table = build_closed_corner_table(triangles, vertex_count);
   check_connected(table);
 
   // Closed, connected and oriented: Euler's formula gives the genus. e = 3t/2 because every

@@ -29,4 +29,16 @@ inline int left(const CornerTable& t, int c) { return t.O[static_cast<std::size_
 // offending triangle, edge or vertex. O(t log t): sorting the directed edges.
 CornerTable build_corner_table(const std::vector<Triangle>& triangles, int vertex_count);
 
+// The same checks without "connected" and "genus 0": any number of closed, oriented,
+// edge- and vertex-manifold components of any genus, every vertex used. This is what the
+// general traversal (traversal.hpp) takes.
+// Checks a table whose O is already filled in (the decoder's): every corner has an
+// opposite, O is an involution between corners of reversed edges, every vertex is used and
+// its corners form one fan. Multi-edges (two edges between the same vertices) are allowed:
+// cutting non-manifold input can leave them, and the corner table does not mind.
+// Throws bad_input naming the first problem. O(t).
+void check_closed_manifold(const CornerTable& table);
+
+CornerTable build_closed_corner_table(const std::vector<Triangle>& triangles, int vertex_count);
+
 }  // namespace fest::edgebreaker

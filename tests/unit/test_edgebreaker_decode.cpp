@@ -89,7 +89,7 @@ TEST(EdgebreakerDecode, RejectsInvalidStrings) {
   reject("CREE", "#E - #S is 2");
   reject("SE", "S without two open loops");  // an S with no E to match it
   reject("CSRE", "S without two open loops");
-  reject("RE", "more than 3 edges");         // the last loop is not the start triangle
+  reject("RE", "not 3 edges long");       // the last loop is not the start triangle
   reject("CE", "C on a loop of 3 edges");    // constraint 1a: no C right after E^-1
   reject("C", "C with no open loop");
   reject("L", "L with no open loop");

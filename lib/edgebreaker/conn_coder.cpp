@@ -1,0 +1,154 @@
+// The three connectivity coders of spec 2.7 over one range coder.
+#include "edgebreaker/conn_coder.hpp"
+
+#include <array>
+
+#include "core/error.hpp"
+#include "edgebreaker/range_coder.hpp"
+#include "edgebreaker/state_machine.hpp"
+
+namespace fest::edgebreaker {
+namespace {
+
+constexpr int symbol_count = 5;
+
+// Rossignac's code, MSB first: C = 0, S = 100, R = 101, L = 110, E = 111.
+void put_raw(RangeEncoder& enc, Symbol s) {
+  switch (s) {
+    case Symbol::C: enc.bypass(0); break;
+    case Symbol::S: enc.bypass_bits(0b100, 3); break;
+    case Symbol::R: enc.bypass_bits(0b101, 3); break;
+    case Symbol::L: enc.bypass_bits(0b110, 3); break;
+    case Symbol::E: enc.bypass_bits(0b111, 3); break;
+  }
+}
+Symbol get_raw(RangeDecoder& dec) {
+  if (dec.bypass() == 0) return Symbol::C;
+  switch (dec.bypass_bits(2)) {
+    case 0: return Symbol::S;
+    case 1: return Symbol::R;
+    case 2: return Symbol::L;
+    default: return Symbol::E;
+  }
+}
+
+// Adaptive frequencies per context (valence class x previous symbol x C possible):
+// 16 per symbol at the start, +32 per occurrence, halved (rounding up) past 2^16 - 32.
+class AdaptiveModel {
+ public:
+  AdaptiveModel() {
+    for (auto& c : counts_) c.fill(16);
+  }
+  static int context(const ReverseDecoder& d, bool exclusion) {
+    return (d.valence_class() * 6 + d.previous()) * 2 + (exclusion && !d.c_possible() ? 1 : 0);
+  }
+  // Frequencies in Symbol order with C zeroed when excluded; returns the total.
+  std::uint32_t table(int ctx, std::array<std::uint32_t, symbol_count>& f) const {
+    std::uint32_t total = 0;
+    for (int s = 0; s < symbol_count; ++s) {
+      f[static_cast<std::size_t>(s)] = (s == 0 && (ctx & 1)) ? 0 : counts_[static_cast<std::size_t>(ctx)][static_cast<std::size_t>(s)];
+      total += f[static_cast<std::size_t>(s)];
+    }
+    return total;
+  }
+  void update(int ctx, Symbol s) {
+    auto& c = counts_[static_cast<std::size_t>(ctx)];
+    c[static_cast<std::size_t>(s)] += 32;
+    std::uint32_t total = 0;
+    for (auto v : c) total += v;
+    if (total > 65536 - 32)
+      for (auto& v : c) v = static_cast<std::uint16_t>((v + 1) / 2);
+  }
+
+ private:
+  std::array<std::array<std::uint16_t, symbol_count>, 72> counts_{};
+};
+
+struct Violation {};
+
+}  // namespace
+
+ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify) {
+  for (bool exclusion : {true, false}) {
+    if (!exclusion && mode == ConnMode::static_model)
+      throw runtime_failure("the static model cannot code this mesh (a symbol it excludes occurs)");
+    try {
+      RangeEncoder enc;
+      ReverseDecoder decoder(code.clers.size(), code.events);
+      AdaptiveModel adaptive;
+      StaticCoderState machine(mode == ConnMode::static_model ? model : 0);
+      std::array<std::uint32_t, symbol_count> f{};
+      for (std::size_t i = code.clers.size(); i-- > 0;) {
+        const Symbol s = code.clers[i];
+        if (i + 1 == code.clers.size()) {
+          if (s != Symbol::E) throw runtime_failure("internal: the last symbol is not E");
+          // Not coded: the first decoded symbol is always E.
+        } else if (mode == ConnMode::raw) {
+          put_raw(enc, s);
+        } else if (mode == ConnMode::adaptive) {
+          const int ctx = AdaptiveModel::context(decoder, exclusion);
+          const std::uint32_t total = adaptive.table(ctx, f);
+          if (f[static_cast<std::size_t>(s)] == 0) throw Violation{};
+          std::uint32_t cum = 0;
+          for (int k = 0; k < static_cast<int>(s); ++k) cum += f[static_cast<std::size_t>(k)];
+          enc.encode(cum, f[static_cast<std::size_t>(s)], total);
+          adaptive.update(ctx, s);
+        } else {
+          const StaticFrequencies& sf = machine.frequencies();
+          if (sf.f[static_cast<std::size_t>(s)] == 0) throw Violation{};
+          enc.encode(sf.cum[static_cast<std::size_t>(s)], sf.f[static_cast<std::size_t>(s)], static_total);
+        }
+        if (mode == ConnMode::static_model) machine.advance(s);
+        decoder.step(s);
+      }
+      ConnEncoded out;
+      out.bytes = enc.finish();
+      out.exclusion = exclusion;
+      out.decoded = decoder.finish(verify);
+      return out;
+    } catch (const Violation&) {
+    }
+  }
+  throw runtime_failure("internal: connectivity coding failed without exclusion");
+}
+
+DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
+                                        ConnMode mode, int model, bool exclusion, bool verify) {
+  RangeDecoder dec(bytes);
+  ReverseDecoder decoder(symbols, std::move(events));
+  AdaptiveModel adaptive;
+  StaticCoderState machine(mode == ConnMode::static_model ? model : 0);
+  std::array<std::uint32_t, symbol_count> f{};
+  for (std::size_t i = symbols; i-- > 0;) {
+    Symbol s = Symbol::E;
+    if (i + 1 == symbols) {
+      // the first decoded symbol is E, not stored
+    } else if (mode == ConnMode::raw) {
+      s = get_raw(dec);
+    } else if (mode == ConnMode::adaptive) {
+      const int ctx = AdaptiveModel::context(decoder, exclusion);
+      const std::uint32_t total = adaptive.table(ctx, f);
+      const std::uint32_t v = dec.target(total);
+      std::uint32_t cum = 0;
+      int k = 0;
+      while (k < symbol_count - 1 && cum + f[static_cast<std::size_t>(k)] <= v) cum += f[static_cast<std::size_t>(k++)];
+      s = static_cast<Symbol>(k);
+      dec.consume(cum, f[static_cast<std::size_t>(k)]);
+      adaptive.update(ctx, s);
+    } else {
+      const StaticFrequencies& sf = machine.frequencies();
+      const std::uint32_t v = dec.target(static_total);
+      int k = 0;
+      while (k < symbol_count - 1 && sf.cum[static_cast<std::size_t>(k)] + sf.f[static_cast<std::size_t>(k)] <= v) ++k;
+      s = static_cast<Symbol>(k);
+      dec.consume(sf.cum[static_cast<std::size_t>(k)], sf.f[static_cast<std::size_t>(k)]);
+    }
+    if (mode == ConnMode::static_model) machine.advance(s);
+    decoder.step(s);
+    if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
+  }
+  if (dec.truncated()) throw bad_input("connectivity section is truncated");
+  return decoder.finish(verify);
+}
+
+}  // namespace fest::edgebreaker

@@ -1,0 +1,34 @@
+#pragma once
+// Entropy coding of the CLERS string (spec 2.7): the raw 1/3-bit code, the chapter's
+// static state-machine coder (state_machine.hpp) and the adaptive valence-context coder.
+// Symbols are coded in decoding order; the encoder runs the same ReverseDecoder as the
+// decoder to know each symbol's context, so the two cannot drift apart.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "edgebreaker/reverse_decoder.hpp"
+#include "edgebreaker/traversal.hpp"
+
+namespace fest::edgebreaker {
+
+enum class ConnMode : std::uint8_t { raw = 0, static_model = 1, adaptive = 2 };
+
+struct ConnEncoded {
+  std::string bytes;
+  bool exclusion = true;  // C was excluded where the decoder knows it impossible
+  DecodedConnectivity decoded;  // what the decoder will rebuild (G ids)
+};
+
+// `model` names a static model (state_machine.hpp) for ConnMode::static_model. With
+// exclusion, the adaptive coder gives C no probability where c_possible() is false; an
+// input that violates this (only non-simple meshes can) is coded again without it, and
+// the static mode then throws runtime_failure (the caller falls back to adaptive).
+ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify);
+
+// Inverse; throws bad_input for any stream that is not one encode_connectivity wrote.
+DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
+                                        ConnMode mode, int model, bool exclusion, bool verify);
+
+}  // namespace fest::edgebreaker

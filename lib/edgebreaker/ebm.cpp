@@ -1,0 +1,688 @@
+// The .ebm container and the pipeline around the connectivity coder (spec 2.8-2.11):
+// prepare -> traverse -> code connectivity (running the decoder alongside) -> side
+// sections -> quantised geometry in G order; and the exact inverse.
+#include "edgebreaker/ebm.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <zlib.h>
+
+#include "core/error.hpp"
+#include "edgebreaker/prepare.hpp"
+#include "edgebreaker/range_coder.hpp"
+#include "edgebreaker/state_machine.hpp"
+
+namespace fest::edgebreaker {
+namespace {
+
+constexpr unsigned char magic[8] = {0x89, 'E', 'B', 'M', 0x0D, 0x0A, 0x1A, 0x0A};
+constexpr std::size_t max_elements = static_cast<std::size_t>(std::numeric_limits<int>::max() / 16);
+
+// ---- little-endian writing and bounded reading -------------------------------------
+
+void put_u8(std::string& out, unsigned v) { out.push_back(static_cast<char>(v & 0xFFu)); }
+void put_u16(std::string& out, unsigned v) {
+  put_u8(out, v);
+  put_u8(out, v >> 8);
+}
+void put_u32(std::string& out, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) put_u8(out, v >> (8 * k));
+}
+void put_varint(std::string& out, std::uint64_t v) {
+  while (v >= 0x80) {
+    put_u8(out, static_cast<unsigned>(v & 0x7F) | 0x80u);
+    v >>= 7;
+  }
+  put_u8(out, static_cast<unsigned>(v));
+}
+void put_f32(std::string& out, float f) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, 4);
+  put_u32(out, bits);
+}
+
+class Reader {
+ public:
+  Reader(std::string_view bytes, const char* what) : bytes_(bytes), what_(what) {}
+  std::size_t left() const { return bytes_.size() - pos_; }
+  bool done() const { return pos_ == bytes_.size(); }
+  std::uint8_t u8() {
+    need(1);
+    return static_cast<std::uint8_t>(bytes_[pos_++]);
+  }
+  std::uint16_t u16() {
+    const std::uint16_t lo = u8();
+    return static_cast<std::uint16_t>(lo | (u8() << 8));
+  }
+  std::uint32_t u32() {
+    std::uint32_t v = 0;
+    for (int k = 0; k < 4; ++k) v |= static_cast<std::uint32_t>(u8()) << (8 * k);
+    return v;
+  }
+  float f32() {
+    const std::uint32_t bits = u32();
+    float f;
+    std::memcpy(&f, &bits, 4);
+    return f;
+  }
+  std::uint64_t varint() {
+    std::uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      const std::uint8_t b = u8();
+      v |= static_cast<std::uint64_t>(b & 0x7F) << shift;
+      if (!(b & 0x80)) return v;
+    }
+    throw bad_input("{}: a number is too long", what_);
+  }
+  std::string_view bytes(std::size_t n) {
+    need(n);
+    const std::string_view out = bytes_.substr(pos_, n);
+    pos_ += n;
+    return out;
+  }
+
+ private:
+  void need(std::size_t n) const {
+    if (left() < n) throw bad_input("{} is truncated", what_);
+  }
+  std::string_view bytes_;
+  std::size_t pos_ = 0;
+  const char* what_;
+};
+
+std::uint32_t crc32_of(std::string_view bytes) {
+  uLong crc = crc32(0L, Z_NULL, 0);
+  // zlib takes uInt lengths: feed in chunks.
+  std::size_t pos = 0;
+  while (pos < bytes.size()) {
+    const std::size_t n = std::min<std::size_t>(bytes.size() - pos, 1u << 30);
+    crc = crc32(crc, reinterpret_cast<const Bytef*>(bytes.data() + pos), static_cast<uInt>(n));
+    pos += n;
+  }
+  return static_cast<std::uint32_t>(crc);
+}
+
+void put_section(std::string& out, const char* tag, const std::string& payload) {
+  out.append(tag, 4);
+  put_u32(out, static_cast<std::uint32_t>(payload.size()));
+  out += payload;
+}
+
+// ---- hole flags: one adaptive bit per G vertex, context min(valence, 16) -------------
+
+std::vector<int> valences(const std::vector<Triangle>& triangles, int vertex_count) {
+  std::vector<int> v(static_cast<std::size_t>(vertex_count), 0);
+  for (const Triangle& t : triangles)
+    for (int x : t) ++v[static_cast<std::size_t>(x)];
+  return v;
+}
+
+std::string encode_hole_flags(const std::vector<char>& dummy, const std::vector<int>& valence) {
+  RangeEncoder enc;
+  std::array<std::uint16_t, 17> p;
+  p.fill(probability_half);
+  for (std::size_t g = 0; g < dummy.size(); ++g)
+    enc.bit(p[static_cast<std::size_t>(std::min(valence[g], 16))], dummy[g] ? 1 : 0);
+  return enc.finish();
+}
+
+std::vector<char> decode_hole_flags(std::string_view bytes, const std::vector<int>& valence) {
+  RangeDecoder dec(bytes);
+  std::array<std::uint16_t, 17> p;
+  p.fill(probability_half);
+  std::vector<char> dummy(valence.size(), 0);
+  for (std::size_t g = 0; g < dummy.size(); ++g) {
+    dummy[g] = static_cast<char>(dec.bit(p[static_cast<std::size_t>(std::min(valence[g], 16))]));
+    if (dec.overrun() > 12) break;
+  }
+  if (dec.truncated()) throw bad_input("hole section is truncated");
+  return dummy;
+}
+
+// ---- quantisation ---------------------------------------------------------------------
+
+// Lossless: float bits as monotone signed integers.
+std::int64_t monotone(float f) {
+  std::uint32_t i;
+  std::memcpy(&i, &f, 4);
+  const auto s = static_cast<std::int32_t>(i);
+  return s < 0 ? static_cast<std::int64_t>(s ^ 0x7FFFFFFF) : s;
+}
+float from_monotone(std::int64_t m) {
+  auto s = static_cast<std::int32_t>(m);
+  if (s < 0) s ^= 0x7FFFFFFF;
+  std::uint32_t i = static_cast<std::uint32_t>(s);
+  float f;
+  std::memcpy(&f, &i, 4);
+  return f;
+}
+
+float float_down(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+float float_up(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+struct Quantiser {
+  std::array<float, 4> box{};
+  int bits = 14;
+  double steps() const { return std::ldexp(1.0, bits) - 1.0; }
+  QPoint quantise(const std::array<double, 3>& x) const {
+    QPoint q{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (bits == 0) {
+        q[k] = monotone(static_cast<float>(x[k]));
+      } else if (box[3] <= 0) {
+        q[k] = 0;
+      } else {
+        const double t = (x[k] - static_cast<double>(box[k])) / static_cast<double>(box[3]) * steps();
+        q[k] = static_cast<std::int64_t>(std::clamp(std::llround(t), 0LL, static_cast<long long>(steps())));
+      }
+    }
+    return q;
+  }
+  std::array<double, 3> restore(const QPoint& q) const {
+    std::array<double, 3> x{};
+    for (std::size_t k = 0; k < 3; ++k)
+      x[k] = bits == 0 ? static_cast<double>(from_monotone(q[k]))
+                       : static_cast<double>(box[k]) + static_cast<double>(q[k]) * static_cast<double>(box[3]) / steps();
+    return x;
+  }
+};
+
+std::array<float, 4> bounding_box(const std::vector<std::array<double, 3>>& p) {
+  if (p.empty()) return {0, 0, 0, 0};
+  std::array<double, 3> lo = p[0], hi = p[0];
+  for (const auto& x : p)
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], x[k]);
+      hi[k] = std::max(hi[k], x[k]);
+    }
+  std::array<float, 4> box{};
+  double extent = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    box[k] = float_down(lo[k]);
+    extent = std::max(extent, hi[k] - static_cast<double>(box[k]));
+  }
+  box[3] = float_up(extent);
+  return box;
+}
+
+// ---- the pieces both directions agree on ------------------------------------------------
+
+// Output numbering of G vertices: non-dummy, non-copy vertices in G order; a copy takes
+// its original's number (stitch) or its own in G order (no stitch); dummies get -1.
+struct Numbering {
+  std::vector<int> output;   // per G vertex
+  std::vector<int> same_as;  // per G vertex: the first G vertex of its stitch group if earlier
+  int count = 0;
+};
+
+Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>& original_of, bool stitch) {
+  const std::size_t n = dummy.size();
+  Numbering num;
+  num.output.assign(n, -1);
+  num.same_as.assign(n, -1);
+  for (std::size_t g = 0; g < n; ++g)
+    if (!dummy[g] && (original_of[g] < 0 || !stitch)) num.output[g] = num.count++;
+  std::vector<int> first(n, -1);  // per group root (the original): first G member
+  for (std::size_t g = 0; g < n; ++g) {
+    if (dummy[g]) continue;
+    const int root = original_of[g] >= 0 ? original_of[g] : static_cast<int>(g);
+    if (stitch && original_of[g] >= 0) num.output[g] = num.output[static_cast<std::size_t>(root)];
+    int& f = first[static_cast<std::size_t>(root)];
+    if (f == -1)
+      f = static_cast<int>(g);
+    else
+      num.same_as[g] = f;
+  }
+  return num;
+}
+
+const char* conn_mode_name(int mode) {
+  switch (mode) {
+    case 0: return "raw";
+    case 1: return "static";
+    case 2: return "adaptive";
+    default: return "?";
+  }
+}
+
+}  // namespace
+
+void reseal_ebm(std::string& bytes) {
+  if (bytes.size() < 8) return;
+  const std::uint32_t crc = crc32_of(std::string_view(bytes).substr(0, bytes.size() - 4));
+  for (int k = 0; k < 4; ++k) bytes[bytes.size() - 4 + static_cast<std::size_t>(k)] = static_cast<char>((crc >> (8 * k)) & 0xFFu);
+}
+
+bool is_ebm(std::string_view bytes) { return bytes.size() >= 8 && std::memcmp(bytes.data(), magic, 8) == 0; }
+
+Clers mesh_symbols(const MeshSoup& mesh, bool strict) {
+  const PreparedMesh prepared =
+      prepare_mesh(mesh.triangles, static_cast<int>(mesh.positions.size()), strict);
+  return traverse(prepared.table).code.clers;
+}
+
+std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, EncodeStats* stats) {
+  if (options.qp < 0 || options.qp > 30) throw usage_error("--qp {} is outside 0..30", options.qp);
+  if (options.predictor == Predictor::multi) throw usage_error("--predict multi is unsupported (use para)");
+  if (mesh.positions.size() > max_elements) throw bad_input("{} vertices, more than supported", mesh.positions.size());
+  if (options.geometry)
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+      for (double x : mesh.positions[v])
+        if (!std::isfinite(x)) throw bad_input("vertex {} has a coordinate that is not finite ({})", v, x);
+  if (options.geometry && options.qp == 0)
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+      for (double x : mesh.positions[v])
+        if (static_cast<double>(static_cast<float>(x)) != x)
+          throw bad_input("--qp 0 stores float32 exactly, but vertex {} has the double coordinate {}", v, x);
+
+  const PreparedMesh prepared = prepare_mesh(mesh.triangles, static_cast<int>(mesh.positions.size()), options.strict);
+  const Traversal trav = traverse(prepared.table);
+
+  // Connectivity, with the decoder run alongside (contexts, and the G-order result).
+  const std::size_t symbols = trav.code.clers.size();
+  std::optional<ConnEncoded> conn;
+  int conn_mode = 0;
+  bool verified = false;  // the symbols decode the same whatever the coder: check once
+  const auto consider = [&](ConnMode mode) {
+    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify && !verified);
+    verified = true;
+    if (!conn || c.bytes.size() < conn->bytes.size()) {
+      conn = std::move(c);
+      conn_mode = static_cast<int>(mode);
+    }
+  };
+  switch (options.conn) {
+    case ConnChoice::raw: consider(ConnMode::raw); break;
+    case ConnChoice::adaptive: consider(ConnMode::adaptive); break;
+    case ConnChoice::static_model:
+      try {
+        consider(ConnMode::static_model);
+      } catch (const Error& e) {
+        if (e.status() != Status::failure) throw;
+        throw bad_input("{}: use --conn adaptive or auto", e.what());
+      }
+      break;
+    case ConnChoice::automatic:
+      consider(ConnMode::adaptive);
+      try {
+        consider(ConnMode::static_model);
+      } catch (const Error& e) {
+        if (e.status() != Status::failure) throw;  // a violation: keep the adaptive code
+      }
+      break;
+  }
+  const DecodedConnectivity& dec = conn->decoded;
+
+  // Self-check: the decoder's faces are the prepared faces in traversal order.
+  const int g_count = dec.vertex_count;
+  if (g_count != static_cast<int>(trav.vertex_order.size()) || dec.triangles.size() != trav.triangle_order.size())
+    throw runtime_failure("internal: decoded connectivity has other counts than the input");
+  for (std::size_t k = 0; k < dec.triangles.size(); ++k) {
+    const int t = trav.triangle_order[k];
+    std::array<int, 3> want{};
+    for (int j = 0; j < 3; ++j) want[static_cast<std::size_t>(j)] = prepared.table.V[static_cast<std::size_t>(3 * t + j)];
+    const Triangle& got = dec.triangles[k];
+    bool same = false;
+    for (int r = 0; r < 3 && !same; ++r)
+      same = trav.vertex_order[static_cast<std::size_t>(got[static_cast<std::size_t>(r)])] == want[0] &&
+             trav.vertex_order[static_cast<std::size_t>(got[static_cast<std::size_t>((r + 1) % 3)])] == want[1] &&
+             trav.vertex_order[static_cast<std::size_t>(got[static_cast<std::size_t>((r + 2) % 3)])] == want[2];
+    if (!same) throw runtime_failure("internal: self-verification failed at face {}", k);
+  }
+
+  // Per G vertex: dummy, copy (-> original's G id), input vertex.
+  std::vector<int> g_of_table(static_cast<std::size_t>(prepared.table.vertex_count), -1);
+  for (int g = 0; g < g_count; ++g) g_of_table[static_cast<std::size_t>(trav.vertex_order[static_cast<std::size_t>(g)])] = g;
+  std::vector<char> dummy(static_cast<std::size_t>(g_count), 0);
+  std::vector<int> original_of(static_cast<std::size_t>(g_count), -1);
+  std::vector<int> input_of(static_cast<std::size_t>(g_count), -1);
+  std::vector<std::pair<int, int>> stitch_pairs;  // (copy G, original G)
+  for (int g = 0; g < g_count; ++g) {
+    const int tv = trav.vertex_order[static_cast<std::size_t>(g)];
+    if (prepared.is_dummy(tv)) {
+      dummy[static_cast<std::size_t>(g)] = 1;
+    } else if (tv >= prepared.input_vertices) {
+      const int orig = prepared.copy_of[static_cast<std::size_t>(tv - prepared.input_vertices)];
+      input_of[static_cast<std::size_t>(g)] = orig;
+      if (options.stitch) {
+        original_of[static_cast<std::size_t>(g)] = g_of_table[static_cast<std::size_t>(orig)];
+        stitch_pairs.emplace_back(g, original_of[static_cast<std::size_t>(g)]);
+      }
+    } else {
+      input_of[static_cast<std::size_t>(g)] = tv;
+    }
+  }
+  const Numbering num = number_vertices(dummy, original_of, options.stitch);
+  const std::vector<int> isolated = options.drop_isolated ? std::vector<int>{} : prepared.isolated;
+
+  std::size_t out_faces = 0;
+  for (const Triangle& t : dec.triangles)
+    if (!dummy[static_cast<std::size_t>(t[0])] && !dummy[static_cast<std::size_t>(t[1])] &&
+        !dummy[static_cast<std::size_t>(t[2])])
+      ++out_faces;
+
+  // Geometry.
+  Quantiser quant;
+  quant.bits = options.qp;
+  quant.box = options.box ? *options.box : bounding_box(mesh.positions);
+  if (options.box && !(quant.box[3] >= 0)) throw usage_error("--box: the extent must be >= 0");
+  std::string geom, isol;
+  double max_error = 0, sum_sq = 0;
+  std::size_t n_coords = 0;
+  if (options.geometry) {
+    std::vector<QPoint> q(static_cast<std::size_t>(g_count), QPoint{0, 0, 0});
+    for (int g = 0; g < g_count; ++g)
+      if (!dummy[static_cast<std::size_t>(g)])
+        q[static_cast<std::size_t>(g)] = quant.quantise(mesh.positions[static_cast<std::size_t>(input_of[static_cast<std::size_t>(g)])]);
+    GeometryPlan plan;
+    plan.parallelogram = dec.parallelogram;
+    plan.unusable = dummy;
+    plan.same_as = num.same_as;
+    geom = encode_positions(q, plan, options.qp, options.predictor);
+    std::vector<QPoint> iq;
+    for (int v : isolated) iq.push_back(quant.quantise(mesh.positions[static_cast<std::size_t>(v)]));
+    if (!iq.empty()) isol = encode_point_list(iq, options.qp);
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const auto back = quant.restore(quant.quantise(mesh.positions[v]));
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double e = std::fabs(back[k] - mesh.positions[v][k]);
+        max_error = std::max(max_error, e);
+        sum_sq += e * e;
+        ++n_coords;
+      }
+    }
+  }
+
+  // Header.
+  std::uint16_t flags = 0;
+  if (options.geometry) flags |= ebm_flags::geometry;
+  if (options.qp == 0) flags |= ebm_flags::lossless;
+  if (!stitch_pairs.empty()) flags |= ebm_flags::stitch;
+  if (prepared.holes > 0) flags |= ebm_flags::holes;
+  if (!trav.code.events.empty()) flags |= ebm_flags::events;
+  if (!isolated.empty()) flags |= ebm_flags::isolated;
+  if (conn->exclusion) flags |= ebm_flags::exclusion;
+  std::string header;
+  put_varint(header, static_cast<std::uint64_t>(num.count) + isolated.size());
+  put_varint(header, out_faces);
+  put_varint(header, static_cast<std::uint64_t>(trav.components));
+  put_varint(header, prepared.holes);
+  put_varint(header, stitch_pairs.size());
+  put_varint(header, trav.code.events.size());
+  put_varint(header, isolated.size());
+  put_varint(header, symbols);
+  put_varint(header, static_cast<std::uint64_t>(conn_mode));
+  put_varint(header, conn_mode == static_cast<int>(ConnMode::static_model) ? static_cast<std::uint64_t>(options.model_id) : 0u);
+  put_varint(header, static_cast<std::uint64_t>(options.qp));
+  put_varint(header, static_cast<std::uint64_t>(options.predictor));
+  put_varint(header, 0);  // attributes
+  for (float f : quant.box) put_f32(header, f);
+
+  std::string out(reinterpret_cast<const char*>(magic), 8);
+  put_u8(out, 1);
+  put_u8(out, 0);
+  put_u16(out, flags);
+  put_u32(out, static_cast<std::uint32_t>(header.size()));
+  out += header;
+  std::map<std::string, std::size_t> sizes;
+  const auto section = [&](const char* tag, const std::string& payload) {
+    put_section(out, tag, payload);
+    sizes[tag] = payload.size();
+  };
+  if (!stitch_pairs.empty()) {
+    std::string s;
+    int previous = 0;
+    for (const auto& [copy, orig] : stitch_pairs) {  // copies ascend in G order
+      put_varint(s, static_cast<std::uint64_t>(copy - previous));
+      put_varint(s, static_cast<std::uint64_t>(orig));
+      previous = copy;
+    }
+    section("STCH", s);
+  }
+  if (!trav.code.events.empty()) {
+    std::string s;
+    std::uint32_t previous = 0;
+    for (const HandleEvent& e : trav.code.events) {
+      put_varint(s, e.source - previous);
+      put_varint(s, e.source - e.split);
+      put_u8(s, e.right_edge ? 1 : 0);
+      previous = e.source;
+    }
+    section("HNDL", s);
+  }
+  section("CONN", conn->bytes);
+  if (prepared.holes > 0) section("HOLE", encode_hole_flags(dummy, valences(dec.triangles, g_count)));
+  if (options.geometry) section("GEOM", geom);
+  if (!isol.empty()) section("ISOL", isol);
+  out += "END!";
+  put_u32(out, crc32_of(out));
+
+  if (stats) {
+    stats->input_vertices = mesh.positions.size();
+    stats->input_faces = mesh.triangles.size();
+    stats->components = static_cast<std::size_t>(trav.components);
+    stats->holes = prepared.holes;
+    stats->stitch = prepared.copy_of.size();
+    stats->events = trav.code.events.size();
+    stats->isolated = prepared.isolated.size();
+    stats->dropped_degenerate = prepared.dropped_degenerate;
+    stats->symbols = symbols;
+    stats->histogram = {};
+    for (Symbol s : trav.code.clers) ++stats->histogram[static_cast<std::size_t>(s)];
+    stats->genus_sum = static_cast<int>(trav.code.events.size() / 2);
+    stats->conn_mode = conn_mode_name(conn_mode);
+    stats->section_bytes = sizes;
+    stats->total_bytes = out.size();
+    stats->max_error = max_error;
+    stats->rms_error = n_coords ? std::sqrt(sum_sq / static_cast<double>(n_coords)) : 0.0;
+  }
+  return out;
+}
+
+namespace {
+
+struct Parsed {
+  EbmHeader header;
+  std::map<std::string, std::string_view> sections;
+};
+
+Parsed parse(std::string_view bytes) {
+  if (!is_ebm(bytes)) throw bad_input("not an .ebm stream (bad magic)");
+  if (bytes.size() < 8 + 2 + 2 + 4 + 8) throw bad_input(".ebm stream is truncated ({} bytes)", bytes.size());
+  Parsed p;
+  EbmHeader& h = p.header;
+  h.total_bytes = bytes.size();
+  Reader r(bytes.substr(8), ".ebm stream");
+  h.major = r.u8();
+  h.minor = r.u8();
+  if (h.major != 1) throw bad_input(".ebm major version {} is not supported (this decoder reads version 1)", h.major);
+  // The CRC covers everything before it: check it before trusting any length.
+  const std::string_view body = bytes.substr(0, bytes.size() - 4);
+  Reader tail(bytes.substr(bytes.size() - 8), ".ebm trailer");
+  const std::string_view end_tag = tail.bytes(4);
+  const std::uint32_t stored = tail.u32();
+  if (end_tag != "END!") throw bad_input(".ebm stream is truncated (no END! trailer)");
+  const std::uint32_t computed = crc32_of(body);
+  if (stored != computed) throw bad_input("CRC mismatch (stored 0x{:08x}, computed 0x{:08x})", stored, computed);
+
+  h.flags = r.u16();
+  const std::uint32_t header_len = r.u32();
+  Reader hr(r.bytes(header_len), ".ebm header");
+  h.vertices = hr.varint();
+  h.faces = hr.varint();
+  h.components = hr.varint();
+  h.dummies = hr.varint();
+  h.stitch = hr.varint();
+  h.events = hr.varint();
+  h.isolated = hr.varint();
+  h.symbols = hr.varint();
+  const auto small = [&](const char* what, std::uint64_t max) {
+    const std::uint64_t v = hr.varint();
+    if (v > max) throw bad_input(".ebm header: {} {} is out of range", what, v);
+    return static_cast<int>(v);
+  };
+  h.conn_mode = small("connectivity mode", 2);
+  h.model_id = small("model id", 255);
+  h.qp = small("quantisation bits", 30);
+  h.predictor = small("predictor", 3);
+  h.attributes = hr.varint();
+  for (float& f : h.box) f = hr.f32();
+  // Later minor versions may append header fields: ignore them.
+  while (r.left() > 8) {
+    const std::string tag(r.bytes(4));
+    const std::uint32_t len = r.u32();
+    if (r.left() < static_cast<std::size_t>(len) + 8) throw bad_input(".ebm section {} is truncated", tag);
+    const std::string_view payload = r.bytes(len);
+    if (p.sections.count(tag)) throw bad_input(".ebm section {} occurs twice", tag);
+    p.sections.emplace(tag, payload);
+    h.section_bytes[tag] = len;
+  }
+  if (r.left() != 8) throw bad_input(".ebm stream is truncated");
+  if (h.attributes != 0) throw bad_input(".ebm stream has {} attributes; this decoder reads none", h.attributes);
+
+  // Counts against what the bytes can hold, before anything is allocated from them.
+  const auto bytes_of = [&](const char* tag) {
+    const auto it = p.sections.find(tag);
+    return it == p.sections.end() ? std::size_t{0} : it->second.size();
+  };
+  const std::size_t conn_bytes = bytes_of("CONN");
+  if (!p.sections.count("CONN")) throw bad_input(".ebm stream has no CONN section");
+  if (h.symbols > max_elements || h.symbols > 256 * (conn_bytes + 16))
+    throw bad_input(".ebm header: {} symbols cannot come from {} connectivity bytes", h.symbols, conn_bytes);
+  if (h.components > h.symbols + 1 || (h.symbols > 0 && h.components == 0))
+    throw bad_input(".ebm header: {} components for {} symbols", h.components, h.symbols);
+  if (h.events > h.symbols || h.events * 3 > bytes_of("HNDL"))
+    throw bad_input(".ebm header: {} handle events in {} bytes", h.events, bytes_of("HNDL"));
+  if (h.stitch > 3 * (h.symbols + h.components) || h.stitch * 2 > bytes_of("STCH"))
+    throw bad_input(".ebm header: {} stitch pairs in {} bytes", h.stitch, bytes_of("STCH"));
+  if (h.dummies > h.symbols + 3 * h.components)
+    throw bad_input(".ebm header: {} holes for {} symbols", h.dummies, h.symbols);
+  if (h.isolated > max_elements || h.isolated > 64 * (bytes_of("ISOL") + 16))
+    throw bad_input(".ebm header: {} isolated vertices in {} bytes", h.isolated, bytes_of("ISOL"));
+  if (h.vertices > max_elements || h.faces > max_elements) throw bad_input(".ebm header: counts out of range");
+  if ((h.flags & ebm_flags::geometry) && (!std::isfinite(h.box[0]) || !std::isfinite(h.box[1]) ||
+                                          !std::isfinite(h.box[2]) || !(h.box[3] >= 0) || !std::isfinite(h.box[3])))
+    throw bad_input(".ebm header: the quantisation box is not finite");
+  if (h.conn_mode == 1 && static_model_table(h.model_id) == nullptr)
+    throw bad_input(".ebm header: unknown static model {}", h.model_id);
+  return p;
+}
+
+}  // namespace
+
+EbmHeader read_ebm_header(std::string_view bytes) { return parse(bytes).header; }
+
+MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader* header_out) {
+  const Parsed p = parse(bytes);
+  const EbmHeader& h = p.header;
+  const auto section = [&](const char* tag) {
+    const auto it = p.sections.find(tag);
+    return it == p.sections.end() ? std::string_view{} : it->second;
+  };
+
+  std::vector<HandleEvent> events;
+  {
+    Reader r(section("HNDL"), "HNDL section");
+    std::uint64_t source = 0;
+    for (std::uint64_t k = 0; k < h.events; ++k) {
+      source += r.varint();
+      const std::uint64_t back = r.varint();
+      const unsigned side = r.u8();
+      if (source >= h.symbols || back == 0 || back > source || side > 1)
+        throw bad_input("HNDL section: event {} is out of range", k);
+      events.push_back({static_cast<std::uint32_t>(source - back), static_cast<std::uint32_t>(source), side == 1});
+    }
+  }
+  DecodedConnectivity dec;
+  if (h.symbols == 0) {
+    if (h.components != 0) throw bad_input(".ebm header: components without symbols");
+  } else {
+    dec = decode_connectivity(section("CONN"), static_cast<std::size_t>(h.symbols), std::move(events),
+                              static_cast<ConnMode>(h.conn_mode), h.model_id, (h.flags & ebm_flags::exclusion) != 0,
+                              verify);
+  }
+  if (static_cast<std::uint64_t>(dec.components) != h.components)
+    throw bad_input("connectivity has {} components, the header says {}", dec.components, h.components);
+  const int g_count = dec.vertex_count;
+
+  std::vector<char> dummy(static_cast<std::size_t>(g_count), 0);
+  if (h.dummies > 0) {
+    dummy = decode_hole_flags(section("HOLE"), valences(dec.triangles, g_count));
+    const auto n = static_cast<std::uint64_t>(std::count(dummy.begin(), dummy.end(), 1));
+    if (n != h.dummies) throw bad_input("HOLE section marks {} dummy vertices, the header says {}", n, h.dummies);
+    // A dummy's triangles form one fan around it: no two dummies share a triangle.
+    for (const Triangle& t : dec.triangles)
+      if (dummy[static_cast<std::size_t>(t[0])] + dummy[static_cast<std::size_t>(t[1])] + dummy[static_cast<std::size_t>(t[2])] > 1)
+        throw bad_input("HOLE section: two dummy vertices share a triangle");
+  }
+  std::vector<int> original_of(static_cast<std::size_t>(g_count), -1);
+  {
+    Reader r(section("STCH"), "STCH section");
+    std::uint64_t copy = 0;
+    for (std::uint64_t k = 0; k < h.stitch; ++k) {
+      const std::uint64_t step = r.varint();
+      if (k > 0 && step == 0) throw bad_input("STCH section: pair {} repeats a copy", k);
+      copy += step;
+      const std::uint64_t orig = r.varint();
+      if (copy >= static_cast<std::uint64_t>(g_count) || orig >= static_cast<std::uint64_t>(g_count) || copy == orig)
+        throw bad_input("STCH section: pair {} is out of range", k);
+      if (dummy[static_cast<std::size_t>(copy)] || dummy[static_cast<std::size_t>(orig)])
+        throw bad_input("STCH section: pair {} names a dummy vertex", k);
+      original_of[static_cast<std::size_t>(copy)] = static_cast<int>(orig);
+    }
+    for (int g = 0; g < g_count; ++g) {
+      const int o = original_of[static_cast<std::size_t>(g)];
+      if (o >= 0 && original_of[static_cast<std::size_t>(o)] >= 0) throw bad_input("STCH section: a copy of a copy");
+    }
+  }
+  const Numbering num = number_vertices(dummy, original_of, stitch);
+  const std::uint64_t expected_vertices = h.vertices;
+  const std::uint64_t stitched_count = static_cast<std::uint64_t>(number_vertices(dummy, original_of, true).count);
+  if (stitched_count + h.isolated != expected_vertices)
+    throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
+
+  MeshSoup out;
+  out.positions.assign(static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated), {0.0, 0.0, 0.0});
+  if (h.flags & ebm_flags::geometry) {
+    if (!p.sections.count("GEOM")) throw bad_input(".ebm stream has no GEOM section");
+    Quantiser quant;
+    quant.bits = h.qp;
+    quant.box = h.box;
+    GeometryPlan plan;
+    plan.parallelogram = dec.parallelogram;
+    plan.unusable = dummy;
+    plan.same_as = num.same_as;
+    const std::vector<QPoint> q =
+        decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor));
+    for (int g = 0; g < g_count; ++g)
+      if (num.output[static_cast<std::size_t>(g)] >= 0)
+        out.positions[static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)])] = quant.restore(q[static_cast<std::size_t>(g)]);
+    if (h.isolated > 0) {
+      const std::vector<QPoint> iq = decode_point_list(section("ISOL"), static_cast<std::size_t>(h.isolated), h.qp);
+      for (std::size_t k = 0; k < iq.size(); ++k) out.positions[static_cast<std::size_t>(num.count) + k] = quant.restore(iq[k]);
+    }
+  }
+  out.triangles.reserve(dec.triangles.size());
+  for (const Triangle& t : dec.triangles) {
+    if (dummy[static_cast<std::size_t>(t[0])] || dummy[static_cast<std::size_t>(t[1])] || dummy[static_cast<std::size_t>(t[2])]) continue;
+    out.triangles.push_back({num.output[static_cast<std::size_t>(t[0])], num.output[static_cast<std::size_t>(t[1])],
+                             num.output[static_cast<std::size_t>(t[2])]});
+  }
+  if (out.triangles.size() != h.faces)
+    throw bad_input("connectivity gives {} faces, the header says {}", out.triangles.size(), h.faces);
+  if (header_out) *header_out = h;
+  return out;
+}
+
+}  // namespace fest::edgebreaker

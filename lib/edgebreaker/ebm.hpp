@@ -1,0 +1,91 @@
+#pragma once
+// The .ebm bitstream (spec 2.11, documented in man/man5/ebm.5): a whole mesh -- general
+// connectivity, quantised positions, the side information that restores non-manifold
+// input exactly -- in one CRC-protected container. The format is this algorithm's own
+// output, so it lives here with it (DESIGN.md), in memory only: bytes in, bytes out.
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "edgebreaker/clers.hpp"
+#include "edgebreaker/conn_coder.hpp"
+#include "edgebreaker/geometry_coder.hpp"
+
+namespace fest::edgebreaker {
+
+// A triangle soup with positions: what goes in and comes out. Vertex ids index positions.
+struct MeshSoup {
+  std::vector<std::array<double, 3>> positions;
+  std::vector<Triangle> triangles;
+};
+
+enum class ConnChoice { automatic, static_model, adaptive, raw };
+
+struct EncodeOptions {
+  ConnChoice conn = ConnChoice::automatic;
+  int model_id = 4;  // m236 (state_machine.hpp named_models)
+  int qp = 14;       // 0 lossless (float32 exact), 1..30 bits
+  Predictor predictor = Predictor::parallelogram;
+  bool stitch = true;           // store stitch pairs so the decoder merges copies back
+  bool drop_isolated = false;
+  bool geometry = true;
+  bool strict = false;
+  std::optional<std::array<float, 4>> box;  // min x, y, z and extent
+  bool verify = true;
+};
+
+struct EbmHeader {
+  int major = 1, minor = 0;
+  std::uint16_t flags = 0;
+  std::uint64_t vertices = 0, faces = 0, components = 0, dummies = 0, stitch = 0, events = 0, isolated = 0,
+                symbols = 0;
+  int conn_mode = 0, model_id = 0, qp = 0, predictor = 0;
+  std::uint64_t attributes = 0;
+  std::array<float, 4> box{};  // min x, y, z, extent
+  std::map<std::string, std::size_t> section_bytes;  // payload bytes per tag
+  std::size_t total_bytes = 0;
+};
+
+namespace ebm_flags {
+constexpr std::uint16_t geometry = 1u << 0, lossless = 1u << 1, stitch = 1u << 2, holes = 1u << 3,
+                        events = 1u << 4, isolated = 1u << 5, preserve_order = 1u << 6, exclusion = 1u << 7;
+}
+
+struct EncodeStats {
+  std::size_t input_vertices = 0, input_faces = 0, components = 0, holes = 0, stitch = 0, events = 0, isolated = 0,
+              dropped_degenerate = 0, symbols = 0;
+  std::array<std::size_t, 5> histogram{};  // C, L, E, R, S
+  int genus_sum = 0;                       // sum over closed components (after hole filling)
+  std::string conn_mode;
+  std::map<std::string, std::size_t> section_bytes;
+  std::size_t total_bytes = 0;
+  double max_error = 0, rms_error = 0;  // per coordinate, after quantisation
+};
+
+// Throws bad_input for bad mesh data (index out of range, non-finite coordinates, --strict
+// violations), usage_error for options out of range, runtime_failure if the
+// self-verification fails.
+std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, EncodeStats* stats = nullptr);
+
+// Checks magic, version, lengths and CRC; parses the header. Throws bad_input.
+EbmHeader read_ebm_header(std::string_view bytes);
+
+// Decodes completely (everything is checked before anything is returned). With stitch
+// false, non-manifold copies stay separate vertices. Throws bad_input.
+MeshSoup decode_ebm(std::string_view bytes, bool stitch = true, bool verify = true, EbmHeader* header = nullptr);
+
+// The CLERS string of a mesh (forward order, all components) as ebcode --symbols shows it.
+Clers mesh_symbols(const MeshSoup& mesh, bool strict = false);
+
+bool is_ebm(std::string_view bytes);
+
+// Rewrites the CRC at the end of a stream (at least 8 bytes) to match its content, so
+// tests and fuzzers can reach the decoder behind the CRC with damaged or lying sections.
+void reseal_ebm(std::string& bytes);
+
+}  // namespace fest::edgebreaker

@@ -1,0 +1,219 @@
+// Position coding (spec 2.9).
+#include "edgebreaker/geometry_coder.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "edgebreaker/range_coder.hpp"
+
+namespace fest::edgebreaker {
+namespace {
+
+constexpr int length_levels = 6;  // bit lengths 0..63 (lossless residuals reach 34 bits)
+
+// Adaptive contexts of the residual coder: the bit length through a binary tree per
+// (axis, previous length on that axis), the two bits below the leading one per (axis, length).
+struct ResidualContexts {
+  std::array<std::array<std::array<std::uint16_t, 1 << length_levels>, 16>, 3> length;
+  std::array<std::array<std::array<std::uint16_t, 4>, 64>, 3> high;
+  std::array<int, 3> previous{};
+  ResidualContexts() {
+    for (auto& a : length)
+      for (auto& b : a) b.fill(probability_half);
+    for (auto& a : high)
+      for (auto& b : a) b.fill(probability_half);
+  }
+};
+
+int bit_length(std::uint64_t z) {
+  int k = 0;
+  while (z != 0) {
+    ++k;
+    z >>= 1;
+  }
+  return k;
+}
+
+void put_residual(RangeEncoder& enc, ResidualContexts& ctx, int axis, std::int64_t r) {
+  const std::uint64_t z = r >= 0 ? static_cast<std::uint64_t>(r) << 1 : (static_cast<std::uint64_t>(-(r + 1)) << 1) | 1u;
+  const int k = bit_length(z);
+  auto& tree = ctx.length[static_cast<std::size_t>(axis)][static_cast<std::size_t>(std::min(ctx.previous[static_cast<std::size_t>(axis)], 15))];
+  int node = 1;
+  for (int level = length_levels - 1; level >= 0; --level) {
+    const int b = (k >> level) & 1;
+    enc.bit(tree[static_cast<std::size_t>(node)], b);
+    node = node * 2 + b;
+  }
+  ctx.previous[static_cast<std::size_t>(axis)] = k;
+  if (k <= 1) return;
+  // Bits below the leading one: the top two adaptive, the rest bypass.
+  auto& high = ctx.high[static_cast<std::size_t>(axis)][static_cast<std::size_t>(k)];
+  int below = k - 1;
+  int hnode = 1;
+  for (int h = 0; h < 2 && below > 0; ++h) {
+    --below;
+    const int b = static_cast<int>((z >> below) & 1u);
+    enc.bit(high[static_cast<std::size_t>(hnode)], b);
+    hnode = std::min(hnode * 2 + b, 3);
+  }
+  while (below > 0) {
+    const int chunk = std::min(below, 16);
+    below -= chunk;
+    enc.bypass_bits(static_cast<std::uint32_t>((z >> below) & ((1u << chunk) - 1u)), chunk);
+  }
+}
+
+std::int64_t get_residual(RangeDecoder& dec, ResidualContexts& ctx, int axis) {
+  auto& tree = ctx.length[static_cast<std::size_t>(axis)][static_cast<std::size_t>(std::min(ctx.previous[static_cast<std::size_t>(axis)], 15))];
+  int node = 1;
+  for (int level = 0; level < length_levels; ++level) node = node * 2 + dec.bit(tree[static_cast<std::size_t>(node)]);
+  const int k = node - (1 << length_levels);
+  ctx.previous[static_cast<std::size_t>(axis)] = k;
+  if (k > 40) throw bad_input("geometry: a residual of {} bits", k);
+  std::uint64_t z = k == 0 ? 0 : 1;
+  if (k > 1) {
+    auto& high = ctx.high[static_cast<std::size_t>(axis)][static_cast<std::size_t>(k)];
+    int below = k - 1;
+    int hnode = 1;
+    for (int h = 0; h < 2 && below > 0; ++h) {
+      --below;
+      const int b = dec.bit(high[static_cast<std::size_t>(hnode)]);
+      z = (z << 1) | static_cast<std::uint64_t>(b);
+      hnode = std::min(hnode * 2 + b, 3);
+    }
+    while (below > 0) {
+      const int chunk = std::min(below, 16);
+      below -= chunk;
+      z = (z << chunk) | dec.bypass_bits(chunk);
+    }
+  }
+  return (z & 1u) ? -static_cast<std::int64_t>(z >> 1) - 1 : static_cast<std::int64_t>(z >> 1);
+}
+
+// Value range of one coordinate: [lo, hi]; residuals are wrapped into it when quantised.
+struct Domain {
+  std::int64_t lo, hi;
+  bool wrap;
+  explicit Domain(int bits)
+      : lo(bits == 0 ? -(std::int64_t{1} << 31) : 0),
+        hi(bits == 0 ? (std::int64_t{1} << 31) - 1 : (std::int64_t{1} << bits) - 1),
+        wrap(bits != 0) {}
+  std::int64_t clamp(std::int64_t v) const { return std::clamp(v, lo, hi); }
+  std::int64_t centre() const { return bits_zero() ? 0 : (hi + 1) / 2; }
+  bool bits_zero() const { return !wrap; }
+  std::int64_t wrap_residual(std::int64_t r) const {
+    if (!wrap) return r;
+    const std::int64_t size = hi + 1, half = size / 2;
+    r = ((r % size) + size) % size;
+    return r >= half ? r - size : r;
+  }
+  std::int64_t unwrap(std::int64_t prediction, std::int64_t r) const {
+    if (!wrap) return prediction + r;
+    const std::int64_t size = hi + 1;
+    return (((prediction + r) % size) + size) % size;
+  }
+};
+
+// floor((a + b) / 2) without overflow surprises for the value ranges here.
+std::int64_t mean2(std::int64_t a, std::int64_t b) {
+  const std::int64_t s = a + b;
+  return s >= 0 ? s / 2 : -((-s + 1) / 2);
+}
+
+class Prediction {
+ public:
+  Prediction(const GeometryPlan& plan, const Domain& domain, Predictor predictor)
+      : plan_(plan), domain_(domain), predictor_(predictor) {}
+  QPoint operator()(const std::vector<QPoint>& q, int g, const QPoint& previous) const {
+    if (predictor_ == Predictor::none) return {0, 0, 0};
+    if (predictor_ == Predictor::delta) return previous;
+    const auto& pg = plan_.parallelogram[static_cast<std::size_t>(g)];
+    if (pg[0] < 0) return previous;  // a start vertex
+    const bool a = usable(pg[0]), b = usable(pg[1]), o = usable(pg[2]);
+    QPoint out{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (a && b && o)
+        out[k] = domain_.clamp(q[static_cast<std::size_t>(pg[0])][k] + q[static_cast<std::size_t>(pg[1])][k] -
+                               q[static_cast<std::size_t>(pg[2])][k]);
+      else if (a && b)
+        out[k] = mean2(q[static_cast<std::size_t>(pg[0])][k], q[static_cast<std::size_t>(pg[1])][k]);
+      else if (a || b)
+        out[k] = q[static_cast<std::size_t>(a ? pg[0] : pg[1])][k];
+      else
+        out[k] = previous[k];
+    }
+    return out;
+  }
+
+ private:
+  bool usable(int v) const { return !plan_.unusable[static_cast<std::size_t>(v)]; }
+  const GeometryPlan& plan_;
+  const Domain& domain_;
+  Predictor predictor_;
+};
+
+}  // namespace
+
+std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor) {
+  const Domain domain(bits);
+  const Prediction predict(plan, domain, predictor);
+  RangeEncoder enc;
+  ResidualContexts ctx;
+  QPoint previous{domain.centre(), domain.centre(), domain.centre()};
+  for (std::size_t g = 0; g < q.size(); ++g) {
+    if (plan.unusable[g]) continue;
+    if (plan.same_as[g] < 0) {
+      const QPoint p = predict(q, static_cast<int>(g), previous);
+      for (int k = 0; k < 3; ++k)
+        put_residual(enc, ctx, k, domain.wrap_residual(q[g][static_cast<std::size_t>(k)] - p[static_cast<std::size_t>(k)]));
+    }
+    previous = q[g];
+  }
+  return enc.finish();
+}
+
+std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+  const Domain domain(bits);
+  const Prediction predict(plan, domain, predictor);
+  RangeDecoder dec(bytes);
+  ResidualContexts ctx;
+  std::vector<QPoint> q(plan.unusable.size(), QPoint{0, 0, 0});
+  QPoint previous{domain.centre(), domain.centre(), domain.centre()};
+  for (std::size_t g = 0; g < q.size(); ++g) {
+    if (plan.unusable[g]) continue;
+    const int same = plan.same_as[g];
+    if (same >= 0) {
+      if (static_cast<std::size_t>(same) >= g) throw bad_input("geometry: a stitch partner comes later");
+      q[g] = q[static_cast<std::size_t>(same)];
+    } else {
+      const QPoint p = predict(q, static_cast<int>(g), previous);
+      for (int k = 0; k < 3; ++k) {
+        const std::int64_t v = domain.unwrap(p[static_cast<std::size_t>(k)], get_residual(dec, ctx, k));
+        if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
+        q[g][static_cast<std::size_t>(k)] = v;
+      }
+      if (dec.overrun() > 12) throw bad_input("geometry section is truncated");
+    }
+    previous = q[g];
+  }
+  if (dec.truncated()) throw bad_input("geometry section is truncated");
+  return q;
+}
+
+std::string encode_point_list(const std::vector<QPoint>& q, int bits) {
+  GeometryPlan plan;
+  plan.parallelogram.assign(q.size(), {-1, -1, -1});
+  plan.unusable.assign(q.size(), 0);
+  plan.same_as.assign(q.size(), -1);
+  return encode_positions(q, plan, bits, Predictor::delta);
+}
+
+std::vector<QPoint> decode_point_list(std::string_view bytes, std::size_t count, int bits) {
+  GeometryPlan plan;
+  plan.parallelogram.assign(count, {-1, -1, -1});
+  plan.unusable.assign(count, 0);
+  plan.same_as.assign(count, -1);
+  return decode_positions(bytes, plan, bits, Predictor::delta);
+}
+
+}  // namespace fest::edgebreaker

@@ -1,0 +1,39 @@
+#pragma once
+// Quantised positions with parallelogram prediction (spec 2.9; project engineering, after
+// Touma & Gotsman and Draco): per axis residual r = q - prediction, wrapped into the
+// quantisation range, zigzagged, its bit length coded with adaptive binary contexts and
+// the bits below the leading one as two adaptive and the rest bypass bits.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fest::edgebreaker {
+
+enum class Predictor : std::uint8_t { parallelogram = 0, multi = 1, delta = 2, none = 3 };
+
+using QPoint = std::array<std::int64_t, 3>;
+
+// What the geometry coder needs of the connectivity, per G vertex.
+struct GeometryPlan {
+  std::vector<std::array<int, 3>> parallelogram;  // (a, b, o) or -1s (DecodedConnectivity)
+  std::vector<char> unusable;  // dummies: no position, never a predictor
+  std::vector<int> same_as;    // an earlier G vertex at the same input vertex (stitch), or -1
+};
+
+// `bits` 1..30 quantised (values 0 .. 2^bits - 1), 0 lossless (monotone int32 of float
+// bits). Entries of q for unusable vertices are ignored; a vertex with same_as >= 0 costs
+// nothing (the decoder copies the earlier value).
+std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor);
+
+// Inverse: returns q per G vertex (zeros for unusable ones). Throws bad_input for a
+// truncated stream.
+std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor);
+
+// Isolated vertices: delta-coded in order, after the others.
+std::string encode_point_list(const std::vector<QPoint>& q, int bits);
+std::vector<QPoint> decode_point_list(std::string_view bytes, std::size_t count, int bits);
+
+}  // namespace fest::edgebreaker

@@ -1,0 +1,172 @@
+#pragma once
+// The byte-oriented range coder all .ebm sections share (spec 2.7): LZMA-style, 32-bit
+// range, carry propagated through a cached byte and a count of pending 0xFF bytes
+// (arithmetic coding after Witten, Neal & Cleary 1987, which the seed cites). Multi-symbol
+// frequencies (total <= 2^16), adaptive binary decisions (11-bit probabilities, shift 5)
+// and bypass bits. Header-only: these are the inner loops of both coders.
+//
+// The decoder never reads outside its bytes: past the end it reads zeros and counts them,
+// and overrun() tells the caller that the stream was cut short.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace fest::edgebreaker {
+
+constexpr std::uint32_t range_top = 1u << 24;
+constexpr int probability_bits = 11;
+constexpr std::uint16_t probability_half = 1u << (probability_bits - 1);
+constexpr int adapt_shift = 5;
+
+class RangeEncoder {
+ public:
+  void encode(std::uint32_t cum, std::uint32_t freq, std::uint32_t total) {
+    const std::uint32_t r = range_ / total;
+    low_ += static_cast<std::uint64_t>(r) * cum;
+    range_ = r * freq;
+    normalise();
+  }
+  void bit(std::uint16_t& p, int b) {
+    const std::uint32_t bound = (range_ >> probability_bits) * p;
+    if (b == 0) {
+      range_ = bound;
+      p = static_cast<std::uint16_t>(p + (((1u << probability_bits) - p) >> adapt_shift));
+    } else {
+      low_ += bound;
+      range_ -= bound;
+      p = static_cast<std::uint16_t>(p - (p >> adapt_shift));
+    }
+    normalise();
+  }
+  void bypass(int b) {
+    range_ >>= 1;
+    if (b) low_ += range_;
+    normalise();
+  }
+  // `count` (<= 32) low bits of `value`, most significant first.
+  void bypass_bits(std::uint32_t value, int count) {
+    for (int i = count - 1; i >= 0; --i) bypass(static_cast<int>((value >> i) & 1u));
+  }
+  // Ends the stream with as few bytes as identify a value in [low, low + range): the
+  // decoder reads missing trailing bytes as zeros. The first byte LZMA-style coders write
+  // is always 0 (no carry can reach it) and is left out too; the decoder implies it.
+  std::string finish() {
+    int bytes = 4;
+    for (int k = 1; k <= 4; ++k) {
+      const int s = 32 - 8 * k;
+      const std::uint64_t unit = std::uint64_t{1} << s;
+      const std::uint64_t v = (low_ + unit - 1) & ~(unit - 1);
+      if (v < low_ + range_) {
+        low_ = v;
+        bytes = k;
+        break;
+      }
+    }
+    for (int i = 0; i <= bytes; ++i) shift_low();
+    out_.erase(0, 1);
+    return std::move(out_);
+  }
+
+ private:
+  void normalise() {
+    while (range_ < range_top) {
+      range_ <<= 8;
+      shift_low();
+    }
+  }
+  void shift_low() {
+    if (static_cast<std::uint32_t>(low_) < 0xFF000000u || (low_ >> 32) != 0) {
+      const auto carry = static_cast<std::uint8_t>(low_ >> 32);
+      std::uint8_t byte = cache_;
+      do {
+        out_.push_back(static_cast<char>(static_cast<std::uint8_t>(byte + carry)));
+        byte = 0xFF;
+      } while (--pending_ != 0);
+      cache_ = static_cast<std::uint8_t>(low_ >> 24);
+    }
+    ++pending_;
+    low_ = (low_ & 0x00FFFFFFu) << 8;
+  }
+
+  std::uint64_t low_ = 0;
+  std::uint32_t range_ = 0xFFFFFFFFu;
+  std::uint8_t cache_ = 0;
+  std::uint64_t pending_ = 1;
+  std::string out_;
+};
+
+class RangeDecoder {
+ public:
+  explicit RangeDecoder(std::string_view bytes) : bytes_(bytes) {
+    for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | next_byte();  // after the implied 0
+  }
+  // The cumulative count the next symbol falls in; call consume() with its interval.
+  std::uint32_t target(std::uint32_t total) {
+    r_ = range_ / total;
+    const std::uint32_t v = code_ / r_;
+    return v < total ? v : total - 1;
+  }
+  void consume(std::uint32_t cum, std::uint32_t freq) {
+    code_ -= r_ * cum;
+    range_ = r_ * freq;
+    normalise();
+  }
+  int bit(std::uint16_t& p) {
+    const std::uint32_t bound = (range_ >> probability_bits) * p;
+    int b;
+    if (code_ < bound) {
+      range_ = bound;
+      p = static_cast<std::uint16_t>(p + (((1u << probability_bits) - p) >> adapt_shift));
+      b = 0;
+    } else {
+      code_ -= bound;
+      range_ -= bound;
+      p = static_cast<std::uint16_t>(p - (p >> adapt_shift));
+      b = 1;
+    }
+    normalise();
+    return b;
+  }
+  int bypass() {
+    range_ >>= 1;
+    int b = 0;
+    if (code_ >= range_) {
+      code_ -= range_;
+      b = 1;
+    }
+    normalise();
+    return b;
+  }
+  std::uint32_t bypass_bits(int count) {
+    std::uint32_t v = 0;
+    for (int i = 0; i < count; ++i) v = (v << 1) | static_cast<std::uint32_t>(bypass());
+    return v;
+  }
+  // Bytes read beyond the end. The encoder leaves out trailing zero bytes, so a complete
+  // stream may need up to 4 (the width of the code register); more means it was cut short.
+  std::size_t overrun() const noexcept { return overrun_; }
+  bool truncated() const noexcept { return overrun_ > 4; }
+
+ private:
+  std::uint32_t next_byte() {
+    if (pos_ < bytes_.size()) return static_cast<std::uint8_t>(bytes_[pos_++]);
+    ++overrun_;
+    return 0;
+  }
+  void normalise() {
+    while (range_ < range_top) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | next_byte();
+    }
+  }
+
+  std::string_view bytes_;
+  std::size_t pos_ = 0;
+  std::size_t overrun_ = 0;
+  std::uint32_t code_ = 0;
+  std::uint32_t range_ = 0xFFFFFFFFu;
+  std::uint32_t r_ = 1;
+};
+
+}  // namespace fest::edgebreaker

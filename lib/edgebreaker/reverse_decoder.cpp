@@ -1,0 +1,362 @@
+// Spirale Reversi (Isenburg & Snoeyink; spec 2.3), generalised to several components and
+// to handles (spec 2.8). Robustness against hostile strings: every inverse operation
+// checks what it needs (a loop to work on, C only on a loop longer than 3 while lengths
+// are known, links only between open corners), every swing is bounded, and finish()
+// re-encodes the result, so only exact encodings are accepted.
+#include "edgebreaker/reverse_decoder.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/error.hpp"
+
+namespace fest::edgebreaker {
+
+ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events, bool simple)
+    : simple_(simple), symbols_(symbols), position_(symbols), events_(std::move(events)), next_event_(events_.size()) {
+  // Corner ids are ints: 3 per triangle, at most symbols + components triangles.
+  if (symbols > static_cast<std::size_t>(std::numeric_limits<int>::max() / 16))
+    throw bad_input("invalid connectivity: {} symbols, more than supported", symbols);
+  decoded_.reserve(symbols);
+  // The caller has checked `symbols` against the bytes it came from.
+  V_.reserve(3 * (symbols + 2));
+  O_.reserve(3 * (symbols + 2));
+  parent_.reserve(symbols + 3);
+  degree_.reserve(symbols + 3);
+  closed_.reserve(symbols + 3);
+  for (std::size_t k = 0; k < events_.size(); ++k) {
+    const HandleEvent& e = events_[k];
+    if (e.source >= symbols || e.split >= e.source)
+      throw bad_input("invalid handle event {}: split {} and source {} (of {} symbols)", k, e.split, e.source, symbols);
+    if (k > 0 && (events_[k - 1].source > e.source ||
+                  (events_[k - 1].source == e.source && events_[k - 1].right_edge >= e.right_edge)))
+      throw bad_input("invalid handle event {}: events are not in order", k);
+  }
+}
+
+void ReverseDecoder::fail(const char* why) const {
+  if (position_ >= symbols_) throw bad_input("invalid connectivity: {} (when closing the start triangles)", why);
+  throw bad_input("invalid connectivity: {} (symbol {} of {})", why, position_, symbols_);
+}
+
+int ReverseDecoder::new_triangle() {
+  const int c = static_cast<int>(V_.size());
+  V_.insert(V_.end(), {-1, -1, -1});
+  O_.insert(O_.end(), {-1, -1, -1});
+  return c;
+}
+
+int ReverseDecoder::new_vertex() {
+  const int v = static_cast<int>(parent_.size());
+  parent_.push_back(v);
+  degree_.push_back(0);
+  closed_.push_back(0);
+  return v;
+}
+
+int ReverseDecoder::find(int v) {
+  while (parent_[static_cast<std::size_t>(v)] != v) {
+    const int up = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(v)])];
+    parent_[static_cast<std::size_t>(v)] = up;  // path halving
+    v = up;
+  }
+  return v;
+}
+
+void ReverseDecoder::link(int a, int b) {
+  if (O_[static_cast<std::size_t>(a)] != -1 || O_[static_cast<std::size_t>(b)] != -1)
+    fail("an edge would get a third triangle");
+  O_[static_cast<std::size_t>(a)] = b;
+  O_[static_cast<std::size_t>(b)] = a;
+}
+
+ReverseDecoder::Loop& ReverseDecoder::top(const char* op) {
+  if (loops_.empty()) fail(op);
+  return loops_.back();
+}
+
+// The open edge y -> x that ends at x = V[next(a)], other than a's gate; returns the
+// corner opposite it. A manifold vertex is swung around at most twice in all.
+int ReverseDecoder::incoming_open_edge(int a) {
+  int k = next(a);
+  const int limit = static_cast<int>(V_.size());
+  for (int step = 0; step <= limit; ++step) {
+    const int j = next(k);
+    const int o = O_[static_cast<std::size_t>(j)];
+    if (o == -1) {
+      if (j == a) fail("a loop closed on itself");
+      return j;
+    }
+    k = next(o);
+  }
+  fail("a vertex fan does not end");
+}
+
+// Valence context (spec 2.7): decoded triangles at the new triangle's left vertex.
+void ReverseDecoder::count_triangle(int c) {
+  for (int k = 0; k < 3; ++k) ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c + k)]))];
+  const int d = degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(next(c))]))];
+  valence_class_ = std::clamp(d + 1, 2, 7) - 2;
+}
+
+// Handle events whose source is the symbol just decoded: the corner across the edge
+// towards the S waits for that S.
+void ReverseDecoder::remember_events(int c) {
+  while (next_event_ > 0 && events_[next_event_ - 1].source == position_) {
+    const HandleEvent& e = events_[--next_event_];
+    const int corner = e.right_edge ? next(c) : prev(c);
+    if (!pending_.emplace(e.split, corner).second) fail("two handle events for one S");
+  }
+}
+
+bool ReverseDecoder::c_possible() const noexcept {
+  if (loops_.empty() || last_was_L_) return false;
+  const int length = loops_.back().length;
+  return length == -1 || length > 3;
+}
+
+void ReverseDecoder::inverse_E() {
+  const int c = new_triangle();
+  for (int k = 0; k < 3; ++k) V_[static_cast<std::size_t>(c + k)] = new_vertex();
+  loops_.push_back({c, 3});
+  count_triangle(c);
+  remember_events(c);
+}
+
+void ReverseDecoder::inverse_L() {
+  Loop& loop = top("L with no open loop");
+  const int a = loop.gate, c = new_triangle();
+  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(a))];
+  V_[static_cast<std::size_t>(prev(c))] = V_[static_cast<std::size_t>(prev(a))];
+  V_[static_cast<std::size_t>(next(c))] = new_vertex();
+  link(next(c), a);
+  loop = {c, loop.length < 0 ? -1 : loop.length + 1};
+  count_triangle(c);
+  remember_events(c);
+}
+
+void ReverseDecoder::inverse_R() {
+  Loop& loop = top("R with no open loop");
+  const int a = loop.gate, c = new_triangle();
+  V_[static_cast<std::size_t>(next(c))] = V_[static_cast<std::size_t>(next(a))];
+  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(prev(a))];
+  V_[static_cast<std::size_t>(prev(c))] = new_vertex();
+  link(prev(c), a);
+  loop = {c, loop.length < 0 ? -1 : loop.length + 1};
+  count_triangle(c);
+  remember_events(c);
+}
+
+void ReverseDecoder::inverse_C() {
+  Loop& loop = top("C with no open loop");
+  // C on a 3-loop leaves a 2-loop: only meshes with multi-edges do that (the chapter's
+  // constraint 1a, which the context models exploit); C on a 2-loop would repeat a vertex.
+  if (loop.length >= 0 && loop.length <= (simple_ ? 3 : 2))
+    fail(simple_ ? "C on a loop of 3 edges" : "C on a loop of 2 edges");
+  const int a = loop.gate;
+  const int x = find(V_[static_cast<std::size_t>(next(a))]);
+  if (closed_[static_cast<std::size_t>(x)]) fail("a vertex is closed twice");
+  closed_[static_cast<std::size_t>(x)] = 1;
+  const int e = incoming_open_edge(a);  // the open edge y -> x
+  const int c = new_triangle();
+  V_[static_cast<std::size_t>(c)] = x;
+  V_[static_cast<std::size_t>(next(c))] = V_[static_cast<std::size_t>(next(e))];
+  V_[static_cast<std::size_t>(prev(c))] = V_[static_cast<std::size_t>(prev(a))];
+  link(next(c), a);
+  link(prev(c), e);
+  closed_at_.push_back(c);
+  loop = {c, loop.length < 0 ? -1 : loop.length - 1};
+  count_triangle(c);
+  remember_events(c);
+}
+
+void ReverseDecoder::inverse_S() {
+  if (loops_.empty()) fail("S without an open loop");
+  const Loop left_branch = loops_.back();  // continued first by the encoder, so decoded last
+  loops_.pop_back();
+  Loop right_branch{-1, -1};
+  const auto event = pending_.find(static_cast<std::uint32_t>(position_));
+  if (event != pending_.end()) {  // the right branch was reached through a handle
+    right_branch.gate = event->second;
+    pending_.erase(event);
+    // The corner may lie on any loop of the stack, which this S joins to the current one:
+    // from here on no tracked length can be trusted.
+    for (Loop& loop : loops_) loop.length = -1;
+    if (O_[static_cast<std::size_t>(right_branch.gate)] != -1) fail("a handle event names a closed edge");
+  } else {
+    if (loops_.empty()) fail("S without two open loops (no matching E)");
+    right_branch = loops_.back();
+    loops_.pop_back();
+  }
+  const int at = left_branch.gate, ab = right_branch.gate;
+  // The chapter's "unifies two vertices from the two loops": the split vertex.
+  const int u = find(V_[static_cast<std::size_t>(prev(at))]), w = find(V_[static_cast<std::size_t>(next(ab))]);
+  if (closed_[static_cast<std::size_t>(u)] || closed_[static_cast<std::size_t>(w)])
+    fail("S joins at a vertex that is already closed");
+  if (u != w) {
+    parent_[static_cast<std::size_t>(u)] = w;
+    degree_[static_cast<std::size_t>(w)] += degree_[static_cast<std::size_t>(u)];
+  }
+  const int c = new_triangle();
+  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(ab))];
+  V_[static_cast<std::size_t>(next(c))] = V_[static_cast<std::size_t>(next(at))];
+  V_[static_cast<std::size_t>(prev(c))] = V_[static_cast<std::size_t>(prev(ab))];
+  link(prev(c), at);
+  link(next(c), ab);
+  const bool known = left_branch.length >= 0 && right_branch.length >= 0;
+  loops_.push_back({c, known ? left_branch.length + right_branch.length - 1 : -1});
+  count_triangle(c);
+  remember_events(c);
+}
+
+void ReverseDecoder::step(Symbol s) {
+  if (position_ == 0) throw bad_input("invalid connectivity: more symbols than announced");
+  --position_;
+  switch (s) {
+    case Symbol::E: inverse_E(); break;
+    case Symbol::L: inverse_L(); break;
+    case Symbol::R: inverse_R(); break;
+    case Symbol::C: inverse_C(); break;
+    case Symbol::S: inverse_S(); break;
+    default: fail("not a CLERS symbol");
+  }
+  decoded_.push_back(s);
+  previous_ = 1 + static_cast<int>(s);
+  last_was_L_ = s == Symbol::L;
+}
+
+DecodedConnectivity ReverseDecoder::finish(bool verify) {
+  if (position_ != 0) throw bad_input("invalid connectivity: {} symbols missing", position_);
+  position_ = symbols_;
+  if (!pending_.empty() || next_event_ != 0) fail("a handle event has no S");
+  const int symbol_triangles = static_cast<int>(V_.size() / 3);
+
+  // Each remaining loop, popped in order, is one component's start triangle.
+  DecodedConnectivity out;
+  out.components = static_cast<int>(loops_.size());
+  std::vector<int> start_corner;
+  while (!loops_.empty()) {
+    const Loop loop = loops_.back();
+    loops_.pop_back();
+    if (loop.length >= 0 && loop.length != 3) fail("a last open loop is not 3 edges long");
+    const int a = loop.gate;
+    const int e = incoming_open_edge(a);  // w -> x
+    const int f = incoming_open_edge(e);  // p -> w
+    if (f == e || find(V_[static_cast<std::size_t>(next(f))]) != find(V_[static_cast<std::size_t>(prev(a))]))
+      fail("a last open loop is not a triangle");
+    const int s = new_triangle();
+    V_[static_cast<std::size_t>(s)] = V_[static_cast<std::size_t>(next(e))];
+    V_[static_cast<std::size_t>(next(s))] = V_[static_cast<std::size_t>(prev(a))];
+    V_[static_cast<std::size_t>(prev(s))] = V_[static_cast<std::size_t>(next(a))];
+    link(s, a);
+    link(next(s), e);
+    link(prev(s), f);
+    start_corner.push_back(s);
+  }
+  for (int o : O_)
+    if (o == -1) fail("an edge is left open");
+
+  // Components: label triangles from each start triangle.
+  const int t = static_cast<int>(V_.size() / 3);
+  std::vector<int> component(static_cast<std::size_t>(t), -1);
+  std::vector<int> todo;
+  for (int j = 0; j < out.components; ++j) {
+    const int s0 = start_corner[static_cast<std::size_t>(j)] / 3;
+    if (component[static_cast<std::size_t>(s0)] != -1) fail("two start triangles in one component");
+    component[static_cast<std::size_t>(s0)] = j;
+    todo.push_back(s0);
+    while (!todo.empty()) {
+      const int f = todo.back();
+      todo.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int g = O_[static_cast<std::size_t>(3 * f + k)] / 3;
+        if (component[static_cast<std::size_t>(g)] == -1) {
+          component[static_cast<std::size_t>(g)] = j;
+          todo.push_back(g);
+        }
+      }
+    }
+  }
+
+  // G numbering: per component its three start vertices, then its C vertices in forward
+  // order (the reverse of the closing order), which must come grouped by component.
+  std::vector<int> final_id(parent_.size(), -1);
+  int next_id = 0;
+  std::size_t next_c = closed_at_.size();  // walk closed_at_ backwards = forward order
+  out.parallelogram.reserve(parent_.size());
+  std::vector<int> g_corner;  // per G vertex: the C tip corner, or -1
+  for (int j = 0; j < out.components; ++j) {
+    const int s = start_corner[static_cast<std::size_t>(j)];
+    for (int k = 0; k < 3; ++k) {
+      const int r = find(V_[static_cast<std::size_t>(s + k)]);
+      if (final_id[static_cast<std::size_t>(r)] != -1 || closed_[static_cast<std::size_t>(r)])
+        fail("a start triangle's vertex is used twice");
+      final_id[static_cast<std::size_t>(r)] = next_id++;
+      g_corner.push_back(-1);
+    }
+    while (next_c > 0 && component[static_cast<std::size_t>(closed_at_[next_c - 1] / 3)] == j) {
+      const int c = closed_at_[--next_c];
+      const int r = find(V_[static_cast<std::size_t>(c)]);
+      if (final_id[static_cast<std::size_t>(r)] != -1) fail("a vertex is closed twice");
+      final_id[static_cast<std::size_t>(r)] = next_id++;
+      g_corner.push_back(c);
+    }
+  }
+  if (next_c != 0) fail("the C symbols of the components are interleaved");
+  for (std::size_t v = 0; v < parent_.size(); ++v)
+    if (final_id[static_cast<std::size_t>(find(static_cast<int>(v)))] == -1) fail("a vertex is never closed by a C");
+  out.vertex_count = next_id;
+  const auto id = [&](int corner) { return final_id[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(corner)]))]; };
+  for (int c : g_corner)
+    out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1}
+                                      : std::array<int, 3>{id(next(c)), id(prev(c)), id(O_[static_cast<std::size_t>(c)])});
+
+  // Output faces: per component the start triangle, then its symbols in forward order
+  // (symbol i was triangle symbol_triangles - 1 - i). new_index maps this decoder's
+  // triangles to output positions, for the verification's corner table.
+  out.triangles.reserve(static_cast<std::size_t>(t));
+  std::vector<int> new_index(static_cast<std::size_t>(t), -1);
+  std::size_t symbol = 0;
+  for (int j = 0; j < out.components; ++j) {
+    const int s = start_corner[static_cast<std::size_t>(j)];
+    new_index[static_cast<std::size_t>(s / 3)] = static_cast<int>(out.triangles.size());
+    out.triangles.push_back({id(s), id(s + 1), id(s + 2)});
+    for (; symbol < symbols_; ++symbol) {
+      const int tri = symbol_triangles - 1 - static_cast<int>(symbol);
+      if (component[static_cast<std::size_t>(tri)] != j) break;
+      new_index[static_cast<std::size_t>(tri)] = static_cast<int>(out.triangles.size());
+      out.triangles.push_back({id(3 * tri), id(3 * tri + 1), id(3 * tri + 2)});
+    }
+  }
+  if (symbol != symbols_) fail("the symbols of the components are interleaved");
+
+  if (verify) {
+    // Re-encode the decoded corner table itself (not a table rebuilt from the faces, which
+    // could not tell the two edges of a multi-edge apart).
+    CornerTable table;
+    table.vertex_count = out.vertex_count;
+    table.V.resize(static_cast<std::size_t>(3 * t));
+    table.O.resize(static_cast<std::size_t>(3 * t));
+    const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
+    for (int c = 0; c < 3 * t; ++c) {
+      table.V[static_cast<std::size_t>(moved(c))] = id(c);
+      table.O[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
+    }
+    try {
+      check_closed_manifold(table);
+    } catch (const Error& e) {
+      throw bad_input("invalid connectivity: it decodes to a mesh the coder does not take: {}", e.what());
+    }
+    const Traversal again = traverse(table);
+    for (std::size_t g = 0; g < again.vertex_order.size(); ++g)
+      if (again.vertex_order[g] != static_cast<int>(g)) fail("the decoded vertex numbering differs from the visit order");
+    for (std::size_t k = 0; k < again.triangle_order.size(); ++k)
+      if (again.triangle_order[k] != static_cast<int>(k)) fail("the decoded face order differs from the traversal");
+    if (again.code.events != events_) fail("the decoded mesh has other handle events");
+    if (!std::equal(again.code.clers.begin(), again.code.clers.end(), decoded_.rbegin(), decoded_.rend()))
+      fail("the decoded mesh encodes to another symbol string");
+  }
+  return out;
+}
+
+}  // namespace fest::edgebreaker
