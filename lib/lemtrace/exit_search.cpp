@@ -41,9 +41,33 @@ Sample entry_sample(const TetGeometry& g, const CellPath& path) {
 // Root of beta_k in [lo, hi] with beta_k(lo) >= 0 > beta_k(hi) = fhi: safeguarded
 // Newton from the secant point. Returns the sample at the root (its position is the
 // closed form at the returned time, so the exit point needs no further evaluation).
-Sample refine_root(const TetGeometry& g, const CellPath& path, int k, double lo, double hi, double flo,
-                   double fhi, double tol, int& evals) {
+// First guess for the root of beta_k in [a, b]: the root of the cubic Hermite
+// interpolant of beta_k and its rate at both ends (a few Newton steps on the cubic, no
+// evaluation of the path), which for the gently curved paths inside one cell is close
+// enough that one or two Newton steps on the path finish the job. Falls back to the
+// secant point when the cubic misbehaves.
+double hermite_guess(const Sample& a, const Sample& b, int k) {
+  const double h = b.tau - a.tau;
+  const double f0 = a.beta[k], f1 = b.beta[k], d0 = a.rate[k] * h, d1 = b.rate[k] * h;
+  double u = f0 / (f0 - f1);  // secant, in [0, 1]
+  const double secant = u;
+  for (int it = 0; it < 8; ++it) {
+    const double u2 = u * u, u3 = u2 * u;
+    const double p = (2 * u3 - 3 * u2 + 1) * f0 + (u3 - 2 * u2 + u) * d0 + (-2 * u3 + 3 * u2) * f1 + (u3 - u2) * d1;
+    const double dp = (6 * u2 - 6 * u) * f0 + (3 * u2 - 4 * u + 1) * d0 + (-6 * u2 + 6 * u) * f1 + (3 * u2 - 2 * u) * d1;
+    if (dp == 0) break;
+    u -= p / dp;
+    if (!(u > 0 && u < 1)) return a.tau + secant * h;
+  }
+  return a.tau + u * h;
+}
+
+Sample refine_root(const TetGeometry& g, const CellPath& path, int k, const Sample& left, const Sample& right,
+                   double tol, int& evals) {
+  double lo = left.tau, hi = right.tau, flo = left.beta[k], fhi = right.beta[k];
+  bool hermite = true;
   if (flo <= kDetect) {
+    hermite = false;
     // The bracket starts on the face (the entry face, or a face the path touches): a
     // path that enters and curves back out within the bracket is positive in between.
     // Look for that positive stretch towards lo before calling the exit immediate.
@@ -63,7 +87,7 @@ Sample refine_root(const TetGeometry& g, const CellPath& path, int k, double lo,
     }
     if (!found) return sample(g, path, lo, evals);
   }
-  double tau = lo + (hi - lo) * flo / (flo - fhi);
+  double tau = hermite ? hermite_guess(left, right, k) : lo + (hi - lo) * flo / (flo - fhi);
   Sample s;
   for (int it = 0; it < 60; ++it) {
     s = sample(g, path, tau, evals);
@@ -190,7 +214,7 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
       int best_face = -1;
       for (int k = 0; k < 4; ++k) {
         if (cur.beta[k] >= -kDetect) continue;
-        const Sample root = refine_root(g, path, k, prev.tau, cur.tau, prev.beta[k], cur.beta[k], tol, evals);
+        const Sample root = refine_root(g, path, k, prev, cur, tol, evals);
         if (root.tau < best.tau) {
           best = root;
           best_face = k;

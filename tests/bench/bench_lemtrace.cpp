@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
+
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -40,6 +42,15 @@ using namespace fest::lemtrace;
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// CPU time of the whole process (user + system): on a shared machine it says more about
+// the cost of single-threaded work than the wall clock does.
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
 
 double rss_mb(const char* key) {
   std::ifstream status("/proc/self/status");
@@ -99,9 +110,11 @@ void vtk_case(vtkUnstructuredGrid* grid, const std::vector<Vec3>& seeds, bool rk
   tracer->SetIntegrationDirectionToForward();
   tracer->SetComputeVorticity(false);
   const double rss0 = rss_mb("VmRSS:");
+  const double cpu0 = cpu_seconds();
   auto t0 = Clock::now();
   tracer->Update();
   const double seconds = since(t0);
+  const double cpu = cpu_seconds() - cpu0;
   vtkPolyData* out = tracer->GetOutput();
   vtkDataArray* time = out->GetPointData()->GetArray("IntegrationTime");
   vtkDataArray* seed_ids = out->GetCellData()->GetArray("SeedIds");
@@ -118,8 +131,8 @@ void vtk_case(vtkUnstructuredGrid* grid, const std::vector<Vec3>& seeds, bool rk
     }
   }
   std::printf("{\"case\": \"vtk_stream_tracer_%s\", \"seeds\": %zu, \"step\": \"0.2 cell lengths\", \"seconds\": %.3f, "
-              "\"points\": %lld, \"max_position_error\": %.3g, \"max_radial_error\": %.3g, \"rss_growth_mb\": %.1f}\n",
-              rk2 ? "rk2" : "rk4", seeds.size(), seconds, static_cast<long long>(out->GetNumberOfPoints()),
+              "\"cpu_seconds\": %.3f, \"points\": %lld, \"max_position_error\": %.3g, \"max_radial_error\": %.3g, \"rss_growth_mb\": %.1f}\n",
+              rk2 ? "rk2" : "rk4", seeds.size(), seconds, cpu, static_cast<long long>(out->GetNumberOfPoints()),
               err.position, err.radial, rss_mb("VmRSS:") - rss0);
   std::fflush(stdout);
 }
@@ -152,6 +165,7 @@ int main(int argc, char** argv) {
   // Preprocessing: connectivity and all records (the generated arrays are input, as a
   // file read would be; their memory is not counted).
   const double rss_before = rss_mb("VmRSS:");
+  const double cpu_before = cpu_seconds();
   auto t0 = Clock::now();
   TetMesh mesh = build_tet_mesh(std::move(g.points), std::move(g.vectors), g.cells, BuildOptions{}, nullptr);
   g.cells = RawCells{};
@@ -159,23 +173,26 @@ int main(int argc, char** argv) {
   t0 = Clock::now();
   FieldGrid grid(std::move(mesh), ClassifyParams{}, Precompute::all, threads);
   const double records_s = since(t0);
+  const double preprocess_cpu = cpu_seconds() - cpu_before;
   t0 = Clock::now();
   grid.locator();
   const double locator_s = since(t0);
   std::printf("{\"case\": \"lem_preprocess\", \"tets\": %zu, \"points\": %zu, \"threads\": %d, \"connectivity_s\": %.3f, "
-              "\"records_s\": %.3f, \"locator_s\": %.3f, \"grid_bytes_per_tet\": %.1f, \"rss_growth_mb\": %.1f, "
+              "\"records_s\": %.3f, \"connectivity_and_records_cpu_s\": %.3f, \"locator_s\": %.3f, \"grid_bytes_per_tet\": %.1f, \"rss_growth_mb\": %.1f, "
               "\"peak_rss_mb\": %.1f}\n",
-              grid.mesh().tets.size(), grid.mesh().points.size(), threads, build_s, records_s, locator_s,
+              grid.mesh().tets.size(), grid.mesh().points.size(), threads, build_s, records_s, preprocess_cpu, locator_s,
               static_cast<double>(grid.bytes()) / static_cast<double>(grid.mesh().tets.size()),
               rss_mb("VmRSS:") - rss_before, rss_mb("VmHWM:"));
   std::fflush(stdout);
 
   for (int th : {1, threads}) {
     TraceOptions o;
+    const double cpu0 = cpu_seconds();
     t0 = Clock::now();
     const std::vector<double> t_start(seeds.size(), 0.0);
     const std::vector<Polyline> lines = trace_all(grid, seeds, t_start, o, th);
     const double seconds = since(t0);
+    const double cpu = cpu_seconds() - cpu0;
     Errors err;
     long long points = 0, cells = 0, evals = 0, ended = 0;
     for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -185,10 +202,10 @@ int main(int argc, char** argv) {
       ended += lines[i].reason == Reason::out_of_domain;
       for (std::size_t k = 0; k < lines[i].x.size(); ++k) err.add(seeds[i], lines[i].x[k], lines[i].t[k]);
     }
-    std::printf("{\"case\": \"lem_trace\", \"seeds\": %zu, \"threads\": %d, \"seconds\": %.3f, \"cells_crossed\": %lld, "
+    std::printf("{\"case\": \"lem_trace\", \"seeds\": %zu, \"threads\": %d, \"seconds\": %.3f, \"cpu_seconds\": %.3f, \"cells_crossed\": %lld, "
                 "\"crossings_per_s_per_thread\": %.0f, \"evaluations_per_cell\": %.2f, \"points\": %lld, "
                 "\"lines_out_of_domain\": %lld, \"max_position_error\": %.3g, \"max_radial_error\": %.3g}\n",
-                seeds.size(), th, seconds, cells, static_cast<double>(cells) / seconds / th,
+                seeds.size(), th, seconds, cpu, cells, static_cast<double>(cells) / seconds / th,
                 static_cast<double>(evals) / static_cast<double>(cells), points, ended, err.position, err.radial);
     std::fflush(stdout);
     if (th == threads) break;

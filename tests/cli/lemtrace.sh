@@ -99,6 +99,41 @@ check "48 tets" jq -e '.tetrahedra == 48 and .split_cells == 8' "$WORK/img.json"
 # x = t, y = 0.1 + 0.5 t, z = 0.1 + 0.25 t: x reaches 1 first, at t = 1.
 check "leaves at x = 1, t = 1" test "$(tail -1 "$out" | awk -F, '{ printf "%.12f %.12f %.12f %.12f", $4, $5, $6, $7 }')" = "1.000000000000 0.600000000000 0.350000000000 1.000000000000"
 
+case_ "curvilinear structured grid (.vts): hexahedra split, linear field, LEM = RK45(1e-13)"
+cat >"$WORK/sg.vtk" <<'VTK'
+# vtk DataFile Version 3.0
+curvilinear
+ASCII
+DATASET STRUCTURED_GRID
+DIMENSIONS 3 2 2
+POINTS 12 double
+0 0 0
+0.5 0.1 0
+1 0 0
+0 1 0
+0.5 1.1 0
+1 1 0
+0 0 1
+0.5 0.1 1
+1 0 1
+0 1 1
+0.5 1.1 1
+1 1 1
+POINT_DATA 12
+VECTORS v double
+VTK
+# v = (1.2 - 0.1 y + 0.3 z, 0.1 x + 0.05, 0.2 y + 0.1): linear, so exact in every tet.
+awk 'NR >= 7 && NR <= 18 { print 1.2 - 0.1 * $2 + 0.3 * $3, 0.1 * $1 + 0.05, 0.2 * $2 + 0.1 }' "$WORK/sg.vtk" >>"$WORK/sg.vtk"
+run fconv "$WORK/sg.vtk" -o "$WORK/sg.vts"
+expect_status 0
+run lemtrace "$WORK/sg.vts" --seed-point 0.01,0.5,0.5 --max-time 0.5 --to json --report "$WORK/sg.json"
+expect_status 0
+cp "$out" "$WORK/sg_lem.json"
+check "12 tets from 2 hexahedra" jq -e '.tetrahedra == 12 and .split_cells == 2' "$WORK/sg.json"
+run lemtrace "$WORK/sg.vts" --seed-point 0.01,0.5,0.5 --max-time 0.5 --to json --method rk45 --tol 1e-14
+check "end points agree to 1e-9" jq -e --slurpfile r "$out" \
+  '(.[0].points[-1]) as $a | ($r[0][0].points[-1]) as $b | ([0, 1, 2, 3] | map(($a[.] - $b[.]) | fabs) | max) < 1e-9' "$WORK/sg_lem.json"
+
 case_ "golden: helix n=6 jitter 0.2 seed 1, ten seeds (numeric comparison, 1e-9)"
 run lemtrace gen helix --n 6 --jitter 0.2 --seed 1 -o "$WORK/h6.vtu"
 run lemtrace "$WORK/h6.vtu" --seed-line 0.2,0,-0.9:0.8,0.1,-0.8:10

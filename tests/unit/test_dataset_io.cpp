@@ -92,7 +92,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"structured_vtk_binary", structured, Format::vtk, false},
                       Case{"structured_vtk_ascii", structured, Format::vtk, true},
                       Case{"rectilinear_vtk_binary", rectilinear, Format::vtk, false},
-                      Case{"rectilinear_vtk_ascii", rectilinear, Format::vtk, true}),
+                      Case{"rectilinear_vtk_ascii", rectilinear, Format::vtk, true},
+                      Case{"structured_vts_binary", structured, Format::vts, false},
+                      Case{"structured_vts_ascii", structured, Format::vts, true}),
     [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
 
 // Files from older VTK (version 4.2: cells as "n id id ..." lists, not offsets).

@@ -192,3 +192,49 @@ TEST(LemtraceAnalytic, RungeKuttaConvergesToTheSamePath) {
 }
 
 }  // namespace
+
+namespace {
+
+// Stokes stream function of potential flow past a sphere (R = 0.4, U = e_z), constant
+// on every streamline: psi = 1/2 rho^2 (1 - R^3 / r^3).
+double stream_function(const Vec3& x) {
+  const double r = x.norm(), R3 = 0.4 * 0.4 * 0.4;
+  return 0.5 * (x[0] * x[0] + x[1] * x[1]) * (1.0 - R3 / (r * r * r));
+}
+
+TEST(LemtraceAnalytic, NonlinearFieldConvergesAtTheInterpolationOrder) {
+  // Spec §5.3: the LEM is exact for the piecewise-linear field, so its drift in psi is
+  // the interpolation error, O(h^2): from n = 8 to n = 32 (two halvings of h) it must
+  // shrink by at least 3.5^2.
+  double drift[2] = {0, 0};
+  int which = 0;
+  for (int n : {8, 32}) {
+    const FieldGrid grid = make_grid("sphere-potential", n, 0.2, false);
+    for (double rho : {0.5, 0.6, 0.7})
+      for (double phi : {0.3, 1.3, 2.9, 4.0}) {
+        const Vec3 seed(rho * std::cos(phi), rho * std::sin(phi), -0.9);
+        const Polyline line = trace(grid, seed, 0.0, TraceOptions{});
+        EXPECT_EQ(line.reason, Reason::out_of_domain);
+        for (const Vec3& x : line.x)
+          drift[which] = std::max(drift[which], std::abs(stream_function(x) - stream_function(seed)));
+      }
+    ++which;
+  }
+  EXPECT_GT(drift[0], 0);
+  EXPECT_GE(drift[0] / drift[1], 3.5 * 3.5) << drift[0] << " -> " << drift[1];
+}
+
+TEST(LemtraceAnalytic, SamplesInsideCellsAreOnThePath) {
+  bool linear = false;
+  const LinearField f = linear_kind("spiral", &linear);
+  const FieldGrid grid = make_grid("spiral", 5, 0.2, false);
+  TraceOptions o;
+  o.samples_per_cell = 4;
+  o.max_time = 8;
+  Polyline line;
+  EXPECT_LE(max_error(grid, f, Vec3(0.6, -0.3, 0.4), o, &line), 1e-10);
+  // Three interior points and the exit per cell; the last cell ends at --max-time.
+  EXPECT_GE(line.x.size(), 4 * static_cast<std::size_t>(line.cells - 1));
+}
+
+}  // namespace

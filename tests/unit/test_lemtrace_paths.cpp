@@ -1,0 +1,100 @@
+// Path properties on fields that are linear only cell by cell (spec §5, tests 6, 8, 10):
+// random vertex vectors on a jittered grid, random seeds. No NaN, a termination reason
+// on every line, time monotone, every exit point on a face of the cell it leaves and
+// the next cell's face; the paper's Newton agrees with the bracketing search where it
+// validates, and the bracketing search never reports an exit outside the cell.
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "lemtrace/exit_search.hpp"
+#include "lemtrace/field_grid.hpp"
+#include "lemtrace/generate.hpp"
+#include "lemtrace/locator.hpp"
+#include "lemtrace/tracer.hpp"
+
+namespace {
+
+using namespace fest::lemtrace;
+
+FieldGrid random_field_grid(uint64_t seed, int n) {
+  GenOptions o;
+  o.kind = "uniform";
+  o.n = n;
+  o.jitter = 0.2;
+  o.seed = seed;
+  GeneratedGrid g = generate(o);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> u(0.0, 1.0);
+  for (Vec3& v : g.vectors) v = Vec3(u(rng), u(rng), u(rng)) + Vec3(0.8, 0.3, 0.1);
+  return FieldGrid(build_tet_mesh(g.points, g.vectors, g.cells, BuildOptions{}, nullptr), ClassifyParams{},
+                   Precompute::lazy, 1);
+}
+
+TEST(LemtracePaths, RandomPiecewiseLinearFields) {
+  for (uint64_t seed : {1u, 2u, 3u}) {
+    const FieldGrid grid = random_field_grid(seed, 6);
+    std::mt19937_64 rng(seed + 100);
+    std::uniform_real_distribution<double> pos(-0.95, 0.95);
+    int reasons[9] = {0};
+    for (int s = 0; s < 60; ++s) {
+      TraceOptions o;
+      o.max_time = 20;
+      o.direction = s % 3 == 0 ? Direction::backward : Direction::forward;
+      const Vec3 seed_point(pos(rng), pos(rng), pos(rng));
+      const Polyline line = trace(grid, seed_point, 0.0, o);
+      ASSERT_NE(line.reason, Reason::none);
+      ASSERT_NE(line.reason, Reason::not_initialized);
+      ++reasons[static_cast<int>(line.reason)];
+      for (std::size_t i = 0; i < line.x.size(); ++i) {
+        ASSERT_TRUE(line.x[i].allFinite());
+        if (i > 0) {
+          if (o.direction == Direction::forward) EXPECT_GE(line.t[i], line.t[i - 1]);
+          else EXPECT_LE(line.t[i], line.t[i - 1]);
+        }
+      }
+      // Exit points lie on the boundary of the cell they leave (some beta = 0) and
+      // inside it (all beta >= 0), up to round-off.
+      const bool ends_inside = line.reason == Reason::critical_point || line.reason == Reason::stagnation ||
+                               line.reason == Reason::out_of_time;
+      for (std::size_t i = 1; i + (ends_inside ? 1 : 0) < line.x.size(); ++i) {
+        const Eigen::Vector4d b = barycentric(grid.mesh(), line.cell[i], line.x[i]);
+        EXPECT_GE(b.minCoeff(), -1e-10);
+        EXPECT_LE(b.minCoeff(), 1e-10) << "vertex " << i << " is not on a face of cell " << line.cell[i];
+      }
+    }
+    EXPECT_GT(reasons[static_cast<int>(Reason::out_of_domain)], 0);
+  }
+}
+
+TEST(LemtracePaths, NewtonAgreesWithBracketWhereItValidates) {
+  const FieldGrid grid = random_field_grid(9, 4);
+  std::mt19937_64 rng(5);
+  int compared = 0;
+  CellRecord scratch;
+  for (std::size_t c = 0; c < grid.mesh().tets.size(); ++c) {
+    const TetGeometry g = tet_geometry(grid.mesh(), static_cast<int32_t>(c));
+    const CellRecord& rec = grid.record(static_cast<int32_t>(c), scratch);
+    if (rec.type != CellType::normal_real && rec.type != CellType::normal_complex) continue;
+    std::uniform_real_distribution<double> w(0.05, 1.0);
+    Eigen::Vector4d beta(w(rng), w(rng), w(rng), w(rng));
+    beta /= beta.sum();
+    const Vec3 x0 = beta[0] * g.V[0] + beta[1] * g.V[1] + beta[2] * g.V[2] + beta[3] * g.V[3];
+    const CellPath path(rec, x0, 1.0);
+    ExitParams bracket, newton;
+    newton.paper_newton = true;
+    const ExitResult a = find_exit(g, path, bracket);
+    const ExitResult b = find_exit(g, path, newton);
+    if (a.kind != ExitResult::exit) continue;
+    EXPECT_GE(g.bary(path.position(a.tau)).minCoeff(), -1e-10);
+    if (b.kind == ExitResult::exit) {
+      EXPECT_NEAR(a.tau, b.tau, 1e-10 * a.tau) << "cell " << c;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 50);
+}
+
+}  // namespace
