@@ -132,7 +132,7 @@ int run_full_shape(const FitArgs& a, const facefit::Model& model) {
     r.c = c;
     write_output(a.coeffs, coeffs_tsv(r, model));
   }
-  write_mesh_to(shape_to_mesh(out, model.dims, model.triangles), a.output, a.to);
+  write_shape(out, model.dims, model.triangles, a.output, a.to);
   return 0;
 }
 
@@ -173,7 +173,7 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
     if (coeffs_only)
       write_output(out, coeffs_tsv(r, model));
     else
-      write_mesh_to(shape_to_mesh(r.shape, model.dims, model.triangles), out, a.to);
+      write_shape(r.shape, model.dims, model.triangles, out, a.to);
   }
   return 0;
 }
@@ -201,7 +201,7 @@ int run_fit(const FitArgs& a) {
     for (std::size_t j = 0; j < sigma.size(); ++j) text += fmt::format("{}\t{:.6g}\n", j, sigma[j]);
     write_output(a.uncertainty, text);
   }
-  write_mesh_to(shape_to_mesh(r.shape, model.dims, model.triangles), a.output, a.to);
+  write_shape(r.shape, model.dims, model.triangles, a.output, a.to);
   if (!a.report.empty()) {
     nlohmann::json j = report_of(r, lm, model);
     j["timings_ms"] = {{"load", ms_load}, {"build_Q", r.ms_build_q}, {"svd", r.ms_svd}, {"reconstruct", r.ms_reconstruct},
