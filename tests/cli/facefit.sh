@@ -33,6 +33,12 @@ expect_status 0
 check "E_r below 1e-3 px" jq -e '.E_r < 1e-3' "$WORK/fit5.json"
 check "report names l and k" jq -e '.l == 100 and .k == 99 and .eta_source == "given"' "$WORK/fit5.json"
 
+case_ "image space: the fitted landmark vertices land on the clicked points"
+run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --camera fixed --eta 0 --space image --to plya -o "$WORK/img.ply"
+expect_status 0
+v=$(awk 'NR==2 {print $2}' "$S/set50.tsv"); u0=$(awk 'NR==2 {print $2}' "$WORK/lm5.tsv"); v0=$(awk 'NR==2 {print $3}' "$WORK/lm5.tsv")
+check "vertex $v at ($u0, $v0)" awk -v n="$v" -v u="$u0" -v w="$v0" '/end_header/ {h=NR} h && NR == h + 1 + n {d = ($1-u)^2 + ($2-w)^2; ok = (d < 1e-6)} END {exit !ok}' "$WORK/img.ply"
+
 case_ "pipeline: project | fit | eval through standard streams"
 "$F" project --mesh "$S/face105.ply" --vertices "$S/set50.tsv" | "$F" fit -m "$S/model.mmb" --camera fixed --eta 2 --eta-units px2 \
   | "$F" eval --truth "$S/face105.ply" --estimate - --mask "$S/evalmask.tsv" >"$out"
@@ -83,6 +89,15 @@ run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --uncertainty "$WO
 expect_status 0
 check "one uncertainty per vertex" test "$(tail -n +2 "$WORK/unc.tsv" | wc -l)" -eq 1024
 check "99 coefficients" test "$(tail -n +2 "$WORK/c.tsv" | wc -l)" -eq 99
+
+case_ "batch: one model load, a mesh and a coefficient file, equal to single fits"
+printf '%s %s\n' "$WORK/lm5.tsv" "$WORK/batch_a.ply" "$WORK/lm5.tsv" "$WORK/batch_b.tsv" >"$WORK/batch.txt"
+run facefit fit -m "$S/model.mmb" --batch "$WORK/batch.txt"
+expect_status 0
+expect_stdout_empty
+run fcompare "$WORK/u.ply" "$WORK/batch_a.ply"
+expect_status 0
+check "coefficients equal" cmp "$WORK/c.tsv" "$WORK/batch_b.tsv"
 
 case_ "sweep: U-shaped E_full against eta on novel faces (T2)"
 run facefit sweep -m "$S/model.mmb" --faces "$S/test.txt" --vertices "$S/set50.tsv" --summary

@@ -189,6 +189,8 @@ int run_fit(const FitArgs& a) {
   if (!a.full_shape.empty()) return run_full_shape(a, model);
   if (!a.batch.empty()) return run_batch(a, model, opt);
 
+  if (a.space != "model" && a.space != "image") throw usage_error("--space must be model or image, not '{}'", a.space);
+  if (a.space == "image" && model.dims != 3) throw usage_error("--space image needs a 3-D model");
   const auto lm = load_landmarks(a, a.landmarks, model);
   const auto r = facefit::fit_landmarks(model, lm, opt);
   std::vector<double> sigma;
@@ -201,7 +203,7 @@ int run_fit(const FitArgs& a) {
     for (std::size_t j = 0; j < sigma.size(); ++j) text += fmt::format("{}\t{:.6g}\n", j, sigma[j]);
     write_output(a.uncertainty, text);
   }
-  write_shape(r.shape, model.dims, model.triangles, a.output, a.to);
+  write_shape(a.space == "image" ? facefit::to_image_space(r.camera, r.shape) : r.shape, model.dims, model.triangles, a.output, a.to);
   if (!a.report.empty()) {
     nlohmann::json j = report_of(r, lm, model);
     j["timings_ms"] = {{"load", ms_load}, {"build_Q", r.ms_build_q}, {"svd", r.ms_svd}, {"reconstruct", r.ms_reconstruct},
