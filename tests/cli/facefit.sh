@@ -39,6 +39,18 @@ expect_status 0
 v=$(awk 'NR==2 {print $2}' "$S/set50.tsv"); u0=$(awk 'NR==2 {print $2}' "$WORK/lm5.tsv"); v0=$(awk 'NR==2 {print $3}' "$WORK/lm5.tsv")
 check "vertex $v at ($u0, $v0)" awk -v n="$v" -v u="$u0" -v w="$v0" '/end_header/ {h=NR} h && NR == h + 1 + n {d = ($1-u)^2 + ($2-w)^2; ok = (d < 1e-6)} END {exit !ok}' "$WORK/img.ply"
 
+case_ "texture: a photo whose colours encode pixel position colours each vertex by where it projects"
+awk 'BEGIN {print "P3\n300 300\n255"; for (y = 0; y < 300; y++) for (x = 0; x < 300; x++) print int(x * 255 / 299 + 0.5), int(y * 255 / 299 + 0.5), 0}' >"$WORK/photo.ppm"
+run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --camera fixed --eta 0 --texture "$WORK/photo.ppm" --to plya -o "$WORK/tex.ply" --report "$WORK/tex.json"
+expect_status 0
+nv=$(awk '$1 == "nose_tip" {print $2}' "$S/set50.tsv"); nu=$(awk '$1 == "nose_tip" {print $2}' "$WORK/lm5.tsv"); nvv=$(awk '$1 == "nose_tip" {print $3}' "$WORK/lm5.tsv")
+check "nose tip coloured by its image position" awk -v n="$nv" -v u="$nu" -v w="$nvv" '/end_header/ {h=NR} h && NR == h + 1 + n {ok = ($4 - u * 255 / 299)^2 < 2.5 && ($5 - w * 255 / 299)^2 < 2.5} END {exit !ok}' "$WORK/tex.ply"
+check "most vertices visible in the frontal view" jq -e '.texture.visible_vertices > 800' "$WORK/tex.json"
+case_ "unreadable texture image"
+run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --texture "$WORK/no_such_photo.png" --coeffs "$WORK/never.tsv"
+expect_clean_failure 4 facefit
+check "no coefficient file written" test ! -e "$WORK/never.tsv"
+
 case_ "pipeline: project | fit | eval through standard streams"
 "$F" project --mesh "$S/face105.ply" --vertices "$S/set50.tsv" | "$F" fit -m "$S/model.mmb" --camera fixed --eta 2 --eta-units px2 \
   | "$F" eval --truth "$S/face105.ply" --estimate - --mask "$S/evalmask.tsv" >"$out"
