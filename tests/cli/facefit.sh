@@ -134,6 +134,21 @@ expect_status 0
 run fcompare "$FEST_FIXTURES/facefit/golden_fit_set17.ply" "$WORK/golden.ply" --tol 1e-5 -t 'vertex_max_abs<=1e-5'
 expect_status 0
 
+case_ "conventions: --help, --version, unknown flag, unknown subcommand"
+run facefit --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run facefit fit --help
+expect_status 0
+check "fit usage names --eta" grep -q -- "--eta" "$out"
+run facefit --version
+expect_status 0
+check "version names fest" grep -q "(fest)" "$out"
+run facefit fit --no-such-flag
+expect_clean_failure 2 facefit
+run facefit frobnicate
+expect_clean_failure 2 facefit
+
 # ---- bad input: one line on stderr, the right status, nothing on stdout ----
 case_ "unknown landmark id"
 printf 'id\tu\tv\nnose_tip\t150\t140\near_lobe\t10\t10\n' >"$WORK/unknown.tsv"
