@@ -209,7 +209,9 @@ facefit::Model read_mmb(const std::string& path, const MmbReadOptions& options, 
     ::close(fd);
     throw bad_input("model file is empty ({})", path);
   }
-  void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+  // MAP_POPULATE: every page of the basis is read by the first fit anyway; faulting them
+  // in at once is several times cheaper than one fault per page.
+  void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
   ::close(fd);
   if (map == MAP_FAILED) throw io_error("cannot map model '{}': {}", path, std::strerror(errno));
   std::shared_ptr<const void> keep(map, [size](const void* p) { ::munmap(const_cast<void*>(p), size); });

@@ -84,6 +84,19 @@ CameraMatrix fit_scaled_orthographic(const Eigen::Matrix3Xd& points, const Eigen
   return P;
 }
 
+Eigen::VectorXd to_image_space(const CameraMatrix& P, const Eigen::VectorXd& shape) {
+  const Eigen::Vector3d r0 = P.block<1, 3>(0, 0).transpose(), r1 = -P.block<1, 3>(1, 0).transpose();
+  const double s = (r0.norm() + r1.norm()) / 2;
+  const Eigen::Vector3d axis = r0.cross(r1).normalized() * s;
+  Eigen::VectorXd out(shape.size());
+  for (Eigen::Index j = 0; j + 2 < shape.size(); j += 3) {
+    const Eigen::Vector3d x = shape.segment<3>(j);
+    out.segment<2>(j) = P.leftCols<3>() * x + P.col(3);
+    out(j + 2) = axis.dot(x);
+  }
+  return out;
+}
+
 CameraPose decompose_camera(const CameraMatrix& P) {
   CameraPose pose;
   const Eigen::Vector3d r0 = P.block<1, 3>(0, 0).transpose();

@@ -26,6 +26,10 @@ CameraMatrix fit_similarity(const Eigen::Matrix3Xd& points, const Eigen::Matrix2
 // Throws runtime_failure when the points are degenerate.
 CameraMatrix fit_scaled_orthographic(const Eigen::Matrix3Xd& points, const Eigen::Matrix2Xd& image, const Eigen::VectorXd& w);
 
+// A shape (interleaved xyz) in image space: (u, v, depth) per vertex, u and v in pixels,
+// depth = s·(r₀ × r₁)·x towards the viewer in pixels (the camera's third axis).
+Eigen::VectorXd to_image_space(const CameraMatrix& P, const Eigen::VectorXd& shape);
+
 // Scale and angles of a scaled orthographic camera built like orthographic_camera().
 struct CameraPose {
   double scale = 0;

@@ -112,6 +112,66 @@ Solve solve_once(const Model& model, const Landmarks& lm, const CameraMatrix& P,
   return s;
 }
 
+// The default camera (similarity, free nuisance) in one SVD. For P = s·[[1,0,0],[0,−1,0]]
+// + t, Q = s·Q₀ and the nuisance columns span the same space for every s, so
+// min ‖sQ₀c + Tt − r‖² + η‖c‖² is min ‖Q₀c + T₀t₀ − r/s‖² + (η/s²)‖c‖²: the refinement
+// passes only change r/s, and the solver keeps its SVD.
+Solve solve_similarity(const Model& model, const Landmarks& lm, const Eigen::VectorXd& weight, const FitOptions& opt,
+                       CameraMatrix& P, int passes, int& iterations) {
+  const auto t0 = Clock::now();
+  const Eigen::Index f = static_cast<Eigen::Index>(lm.size());
+  CameraMatrix unit = CameraMatrix::Zero();
+  unit(0, 0) = 1;
+  unit(1, 1) = -1;
+  Eigen::MatrixXd Q0;
+  Eigen::VectorXd ignored;
+  build_measurement(model, lm, unit, weight, Q0, ignored);
+  Eigen::MatrixXd T0 = Eigen::MatrixXd::Zero(2 * f, 3);
+  for (Eigen::Index a = 0; a < f; ++a) {
+    const Eigen::Vector3d vm = mean_point(model, lm.vertex[static_cast<std::size_t>(a)]);
+    T0(2 * a, 0) = weight(a);
+    T0(2 * a + 1, 1) = weight(a);
+    T0(2 * a, 2) = weight(a) * vm.x();
+    T0(2 * a + 1, 2) = -weight(a) * vm.y();
+  }
+  const double ms_build = ms_since(t0);
+  const auto t1 = Clock::now();
+  RidgeSolver solver(Q0, Eigen::VectorXd::Zero(2 * f), T0, opt.eps_rank);
+  Solve s;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.components));
+  P = fit_similarity(landmark_points(model, lm, zero), lm.uv, weight);
+  for (int pass = 0; pass <= passes; ++pass) {
+    const double scale = P(0, 0);
+    if (!(std::abs(scale) > 0)) throw runtime_failure("all singular values of Q are zero: the landmarks see no model variation");
+    Eigen::VectorXd r(2 * f);
+    for (Eigen::Index a = 0; a < f; ++a) {
+      const Eigen::Vector3d vm = mean_point(model, lm.vertex[static_cast<std::size_t>(a)]);
+      for (int d = 0; d < 2; ++d) r(2 * a + d) = weight(a) * (lm.uv(d, a) - P.row(d).head<3>().dot(vm) - P(d, 3));
+    }
+    solver.set_measurement(r / scale);
+    const double s2 = scale * scale;
+    switch (opt.eta_mode) {
+      case EtaMode::given: s.eta_px = opt.eta_in_model_units ? opt.eta * s2 : opt.eta; break;
+      case EtaMode::gcv: s.eta_px = solver.eta_by_gcv() * s2; break;
+      case EtaMode::evidence: s.eta_px = solver.eta_by_evidence() * s2; break;
+    }
+    s.c = solver.coefficients(s.eta_px / s2);
+    const Eigen::VectorXd t = solver.nuisance(s.c);
+    s.t = Eigen::Vector3d(scale * t(0), scale * t(1), t(2));
+    s.residual = scale * (Q0 * s.c + T0 * t) - r;
+    iterations = pass + 1;
+    if (pass < passes) P = fit_similarity(landmark_points(model, lm, s.c), lm.uv, weight);
+  }
+  const double scale = P(0, 0);
+  s.E_r = s.residual.norm();
+  s.dof = solver.effective_dof(s.eta_px / (scale * scale));
+  s.w = solver.singular_values() * std::abs(scale);
+  s.V = solver.V().topRows(static_cast<Eigen::Index>(model.components));
+  s.ms_build = ms_build;
+  s.ms_svd = ms_since(t1);
+  return s;
+}
+
 }  // namespace
 
 void check_landmarks(const Model& model, const Landmarks& lm) {
@@ -169,8 +229,12 @@ FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOption
       break;
     case CameraKind::similarity: {
       const bool nuisance = opt.nuisance != NuisanceKind::none;
-      P = fit_similarity(landmark_points(model, lm, zero), lm.uv, weight);
-      for (int pass = 0; pass <= opt.similarity_passes; ++pass) {
+      if (opt.nuisance == NuisanceKind::free) {
+        s = solve_similarity(model, lm, weight, opt, P, opt.similarity_passes, out.iterations);
+      } else {
+        P = fit_similarity(landmark_points(model, lm, zero), lm.uv, weight);
+      }
+      for (int pass = 0; opt.nuisance != NuisanceKind::free && pass <= opt.similarity_passes; ++pass) {
         s = solve_once(model, lm, P, weight, nuisance, opt);
         out.iterations = pass + 1;
         if (pass < opt.similarity_passes) P = fit_similarity(landmark_points(model, lm, s.c), lm.uv, weight);

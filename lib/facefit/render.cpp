@@ -53,4 +53,25 @@ Raster rasterise(const Eigen::VectorXd& shape, const std::vector<std::array<std:
   return r;
 }
 
+std::vector<std::uint8_t> vertex_visibility(const Eigen::VectorXd& image_shape,
+                                            const std::vector<std::array<std::uint32_t, 3>>& triangles, int width,
+                                            int height, double tolerance) {
+  // The rasteriser works in model space with v = −s·y + c; feeding it (u, −v, depth)
+  // with s = 1 and c = 0 puts every vertex at its own pixel.
+  Eigen::VectorXd flipped = image_shape;
+  for (Eigen::Index j = 1; j < flipped.size(); j += 3) flipped(j) = -flipped(j);
+  std::vector<double> depth_of(static_cast<std::size_t>(image_shape.size() / 3));
+  for (std::size_t j = 0; j < depth_of.size(); ++j) depth_of[j] = image_shape(3 * static_cast<Eigen::Index>(j) + 2);
+  const Raster r = rasterise(flipped, triangles, depth_of, width, height, 1.0, Eigen::Vector2d::Zero());
+  std::vector<std::uint8_t> visible(depth_of.size(), 0);
+  for (std::size_t j = 0; j < visible.size(); ++j) {
+    const double u = image_shape(3 * static_cast<Eigen::Index>(j)), v = image_shape(3 * static_cast<Eigen::Index>(j) + 1);
+    const long px = std::lround(u), py = std::lround(v);
+    if (px < 0 || py < 0 || px >= width || py >= height) continue;
+    const float z = r.value[static_cast<std::size_t>(py) * static_cast<std::size_t>(width) + static_cast<std::size_t>(px)];
+    visible[j] = std::isnan(z) || depth_of[j] >= z - tolerance ? 1 : 0;
+  }
+  return visible;
+}
+
 }  // namespace fest::facefit

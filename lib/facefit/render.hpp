@@ -21,4 +21,12 @@ struct Raster {
 Raster rasterise(const Eigen::VectorXd& shape, const std::vector<std::array<std::uint32_t, 3>>& triangles,
                  const std::vector<double>& values, int width, int height, double scale, const Eigen::Vector2d& center);
 
+// Which vertices of a shape given in image space (u, v, depth towards the viewer, as
+// to_image_space makes it) are seen by the camera: a depth buffer at image resolution,
+// a vertex is visible when nothing lies in front of it by more than `tolerance` (px).
+// Vertices outside the image are not visible.
+std::vector<std::uint8_t> vertex_visibility(const Eigen::VectorXd& image_shape,
+                                            const std::vector<std::array<std::uint32_t, 3>>& triangles, int width,
+                                            int height, double tolerance);
+
 }  // namespace fest::facefit

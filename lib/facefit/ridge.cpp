@@ -12,10 +12,8 @@ namespace fest::facefit {
 
 RidgeSolver::RidgeSolver(const Eigen::MatrixXd& Q, const Eigen::VectorXd& r, const Eigen::MatrixXd& T, double eps_rank)
     : l_(Q.rows()), Q_(Q), T_(T), r_(r) {
-  if (r.size() != l_) throw bad_input("measurement has {} components, Q has {} rows", r.size(), l_);
-  if (!Q.allFinite() || !r.allFinite()) throw bad_input("non-finite values in the measurement");
+  if (!Q.allFinite()) throw bad_input("non-finite values in the measurement matrix");
   Eigen::MatrixXd Qp = Q;
-  Eigen::VectorXd rp = r;
   if (T.cols() > 0) {
     // Rank-revealing QR drops zero or collinear nuisance columns (L s_tz = 0 in frontal view).
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(T);
@@ -23,7 +21,6 @@ RidgeSolver::RidgeSolver(const Eigen::MatrixXd& Q, const Eigen::VectorXd& r, con
     q_ = qr.rank();
     Tbasis_ = (qr.householderQ() * Eigen::MatrixXd::Identity(l_, T.cols())).leftCols(q_);
     Qp -= Tbasis_ * (Tbasis_.transpose() * Q);
-    rp -= Tbasis_ * (Tbasis_.transpose() * r);
   }
   Eigen::BDCSVD<Eigen::MatrixXd> svd(Qp, Eigen::ComputeThinU | Eigen::ComputeThinV);
   U_ = svd.matrixU();
@@ -34,6 +31,15 @@ RidgeSolver::RidgeSolver(const Eigen::MatrixXd& Q, const Eigen::VectorXd& r, con
   while (rank_ < w_.size() && w_(rank_) > eps_rank * w1) ++rank_;
   if (rank_ == 0) throw runtime_failure("all singular values of Q are zero: the landmarks see no model variation");
   for (Eigen::Index i = rank_; i < w_.size(); ++i) w_(i) = 0;  // the threshold of eq. 17
+  set_measurement(r);
+}
+
+void RidgeSolver::set_measurement(const Eigen::VectorXd& r) {
+  if (r.size() != l_) throw bad_input("measurement has {} components, Q has {} rows", r.size(), l_);
+  if (!r.allFinite()) throw bad_input("non-finite values in the measurement");
+  r_ = r;
+  Eigen::VectorXd rp = r;
+  if (q_ > 0) rp -= Tbasis_ * (Tbasis_.transpose() * r);
   Utr_ = U_.transpose() * rp;
   for (Eigen::Index i = rank_; i < Utr_.size(); ++i) Utr_(i) = 0;
   perp_residual2_ = std::max(0.0, rp.squaredNorm() - Utr_.head(rank_).squaredNorm());

@@ -16,6 +16,9 @@ class RidgeSolver {
   RidgeSolver(const Eigen::MatrixXd& Q, const Eigen::VectorXd& r, const Eigen::MatrixXd& T = Eigen::MatrixXd(),
               double eps_rank = 1e-10);
 
+  // Replaces r, keeping Q, T and the SVD (a new measurement costs O(l·k), not an SVD).
+  void set_measurement(const Eigen::VectorXd& r);
+
   Eigen::VectorXd coefficients(double eta) const;              // c(η)
   Eigen::VectorXd nuisance(const Eigen::VectorXd& c) const;    // t = T⁺ (r − Q c)
   double residual_norm(double eta) const;                       // E_r = ‖Qc + Tt − r‖

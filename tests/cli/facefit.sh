@@ -33,6 +33,24 @@ expect_status 0
 check "E_r below 1e-3 px" jq -e '.E_r < 1e-3' "$WORK/fit5.json"
 check "report names l and k" jq -e '.l == 100 and .k == 99 and .eta_source == "given"' "$WORK/fit5.json"
 
+case_ "image space: the fitted landmark vertices land on the clicked points"
+run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --camera fixed --eta 0 --space image --to plya -o "$WORK/img.ply"
+expect_status 0
+v=$(awk 'NR==2 {print $2}' "$S/set50.tsv"); u0=$(awk 'NR==2 {print $2}' "$WORK/lm5.tsv"); v0=$(awk 'NR==2 {print $3}' "$WORK/lm5.tsv")
+check "vertex $v at ($u0, $v0)" awk -v n="$v" -v u="$u0" -v w="$v0" '/end_header/ {h=NR} h && NR == h + 1 + n {d = ($1-u)^2 + ($2-w)^2; ok = (d < 1e-6)} END {exit !ok}' "$WORK/img.ply"
+
+case_ "texture: a photo whose colours encode pixel position colours each vertex by where it projects"
+awk 'BEGIN {print "P3\n300 300\n255"; for (y = 0; y < 300; y++) for (x = 0; x < 300; x++) print int(x * 255 / 299 + 0.5), int(y * 255 / 299 + 0.5), 0}' >"$WORK/photo.ppm"
+run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --camera fixed --eta 0 --texture "$WORK/photo.ppm" --to plya -o "$WORK/tex.ply" --report "$WORK/tex.json"
+expect_status 0
+nv=$(awk '$1 == "nose_tip" {print $2}' "$S/set50.tsv"); nu=$(awk '$1 == "nose_tip" {print $2}' "$WORK/lm5.tsv"); nvv=$(awk '$1 == "nose_tip" {print $3}' "$WORK/lm5.tsv")
+check "nose tip coloured by its image position" awk -v n="$nv" -v u="$nu" -v w="$nvv" '/end_header/ {h=NR} h && NR == h + 1 + n {ok = ($4 - u * 255 / 299)^2 < 2.5 && ($5 - w * 255 / 299)^2 < 2.5} END {exit !ok}' "$WORK/tex.ply"
+check "most vertices visible in the frontal view" jq -e '.texture.visible_vertices > 800' "$WORK/tex.json"
+case_ "unreadable texture image"
+run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --texture "$WORK/no_such_photo.png" --coeffs "$WORK/never.tsv"
+expect_clean_failure 4 facefit
+check "no coefficient file written" test ! -e "$WORK/never.tsv"
+
 case_ "pipeline: project | fit | eval through standard streams"
 "$F" project --mesh "$S/face105.ply" --vertices "$S/set50.tsv" | "$F" fit -m "$S/model.mmb" --camera fixed --eta 2 --eta-units px2 \
   | "$F" eval --truth "$S/face105.ply" --estimate - --mask "$S/evalmask.tsv" >"$out"
@@ -84,6 +102,15 @@ expect_status 0
 check "one uncertainty per vertex" test "$(tail -n +2 "$WORK/unc.tsv" | wc -l)" -eq 1024
 check "99 coefficients" test "$(tail -n +2 "$WORK/c.tsv" | wc -l)" -eq 99
 
+case_ "batch: one model load, a mesh and a coefficient file, equal to single fits"
+printf '%s %s\n' "$WORK/lm5.tsv" "$WORK/batch_a.ply" "$WORK/lm5.tsv" "$WORK/batch_b.tsv" >"$WORK/batch.txt"
+run facefit fit -m "$S/model.mmb" --batch "$WORK/batch.txt"
+expect_status 0
+expect_stdout_empty
+run fcompare "$WORK/u.ply" "$WORK/batch_a.ply"
+expect_status 0
+check "coefficients equal" cmp "$WORK/c.tsv" "$WORK/batch_b.tsv"
+
 case_ "sweep: U-shaped E_full against eta on novel faces (T2)"
 run facefit sweep -m "$S/model.mmb" --faces "$S/test.txt" --vertices "$S/set50.tsv" --summary
 expect_status 0
@@ -106,6 +133,21 @@ run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm17.tsv" --eta 2 -o "$WORK
 expect_status 0
 run fcompare "$FEST_FIXTURES/facefit/golden_fit_set17.ply" "$WORK/golden.ply" --tol 1e-5 -t 'vertex_max_abs<=1e-5'
 expect_status 0
+
+case_ "conventions: --help, --version, unknown flag, unknown subcommand"
+run facefit --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run facefit fit --help
+expect_status 0
+check "fit usage names --eta" grep -q -- "--eta" "$out"
+run facefit --version
+expect_status 0
+check "version names fest" grep -q "(fest)" "$out"
+run facefit fit --no-such-flag
+expect_clean_failure 2 facefit
+run facefit frobnicate
+expect_clean_failure 2 facefit
 
 # ---- bad input: one line on stderr, the right status, nothing on stdout ----
 case_ "unknown landmark id"

@@ -152,3 +152,22 @@ TEST(FacefitFit, UnknownLandmarkIdsAreReportedOrSkipped) {
   ASSERT_EQ(lm.size(), 2u);
   EXPECT_EQ(lm.vertex[1], 9u);
 }
+
+TEST(FacefitFit, FreeNuisanceIsTheLimitOfAVeryWidePrior) {
+  // The one-SVD similarity path (free translation and scale) against the paper-literal
+  // variant that appends the nuisance vectors to the basis with prior std S: as S grows
+  // the penalty on them vanishes and both minimise the same objective.
+  const Model m = g1_model();
+  Rng rng(14);
+  const Eigen::VectorXd face = reconstruct(m, random_coefficients(rng, 30));
+  Landmarks lm = project(face, every_nth_vertex(7, 25), orthographic_camera(1.7, {160, 140}));
+  for (Eigen::Index a = 0; a < lm.uv.cols(); ++a) lm.uv.col(a) += 0.3 * Eigen::Vector2d(rng.normal(), rng.normal());
+  FitOptions free_opt;
+  FitOptions wide = free_opt;
+  wide.nuisance = NuisanceKind::penalized;
+  wide.nuisance_sigma = 1e6;
+  const FitResult a = fit_landmarks(m, lm, free_opt), b = fit_landmarks(m, lm, wide);
+  EXPECT_LT((a.shape - b.shape).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_NEAR(a.E_r, b.E_r, 1e-6 * a.E_r);
+  EXPECT_NEAR(decompose_camera(a.camera).scale, decompose_camera(b.camera).scale, 1e-6);
+}

@@ -1,7 +1,9 @@
 // facefit fit: landmarks -> complete mesh (spec sections 2.4-2.7, 4).
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,7 +14,10 @@
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
 #include "facefit/fit.hpp"
+#include "facefit/render.hpp"
 #include "formats/facemodel/landmarks_io.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace facefit_tool {
@@ -118,6 +123,44 @@ std::string coeffs_tsv(const facefit::FitResult& r, const facefit::Model& model)
   return out;
 }
 
+// Texture transfer (spec 2.7, the chapter's figure 1.1): each vertex projected with the
+// fitted camera, tested against a depth buffer at the photo's resolution, coloured by a
+// bilinear sample of the photo; hidden vertices stay grey (128).
+fest::Mesh textured_mesh(const std::string& path, const facefit::Model& model, const facefit::FitResult& r,
+                         const Eigen::VectorXd& output_shape, std::size_t* visible_count) {
+  const formats::Input in = formats::load_input(path);
+  if (formats::kind_of(in.format) != formats::Kind::image) throw bad_input("--texture: '{}' is not an image", path);
+  const Image img = formats::parse(in, formats::read_image);
+  cv::Mat rgb;
+  const cv::Mat& px = img.pixels;
+  double scale = px.depth() == CV_8U ? 1.0 : px.depth() == CV_16U ? 1.0 / 257 : 255.0;
+  px.convertTo(rgb, CV_MAKETYPE(CV_32F, px.channels()), scale);
+  const Eigen::VectorXd image_shape = facefit::to_image_space(r.camera, r.shape);
+  const auto visible = facefit::vertex_visibility(image_shape, model.triangles, rgb.cols, rgb.rows, 0.5);
+  Mesh mesh = shape_to_mesh(output_shape, model.dims, model.triangles);
+  mesh.request_vertex_colors();
+  *visible_count = 0;
+  for (auto vh : mesh.vertices()) {
+    const auto j = static_cast<std::size_t>(vh.idx());
+    Mesh::Color c(128, 128, 128);
+    if (visible[j]) {
+      ++*visible_count;
+      const double u = std::clamp(image_shape(3 * vh.idx()), 0.0, rgb.cols - 1.0), v = std::clamp(image_shape(3 * vh.idx() + 1), 0.0, rgb.rows - 1.0);
+      const int x0 = static_cast<int>(u), y0 = static_cast<int>(v);
+      const int x1 = std::min(x0 + 1, rgb.cols - 1), y1 = std::min(y0 + 1, rgb.rows - 1);
+      const double fx = u - x0, fy = v - y0;
+      for (int ch = 0; ch < 3; ++ch) {
+        const int k = std::min(ch, rgb.channels() - 1);
+        auto at = [&](int y, int x) { return static_cast<double>(rgb.ptr<float>(y)[x * rgb.channels() + k]); };
+        const double value = (1 - fy) * ((1 - fx) * at(y0, x0) + fx * at(y0, x1)) + fy * ((1 - fx) * at(y1, x0) + fx * at(y1, x1));
+        c[ch] = static_cast<unsigned char>(std::clamp(std::lround(value), 0L, 255L));
+      }
+    }
+    mesh.set_color(vh, c);
+  }
+  return mesh;
+}
+
 int run_full_shape(const FitArgs& a, const facefit::Model& model) {
   const Eigen::VectorXd shape = read_shape(a.full_shape);
   if (static_cast<std::size_t>(shape.size()) != 3 * model.points)
@@ -132,7 +175,7 @@ int run_full_shape(const FitArgs& a, const facefit::Model& model) {
     r.c = c;
     write_output(a.coeffs, coeffs_tsv(r, model));
   }
-  write_mesh_to(shape_to_mesh(out, model.dims, model.triangles), a.output, a.to);
+  write_shape(out, model.dims, model.triangles, a.output, a.to);
   return 0;
 }
 
@@ -173,7 +216,7 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
     if (coeffs_only)
       write_output(out, coeffs_tsv(r, model));
     else
-      write_mesh_to(shape_to_mesh(r.shape, model.dims, model.triangles), out, a.to);
+      write_shape(r.shape, model.dims, model.triangles, out, a.to);
   }
   return 0;
 }
@@ -189,21 +232,34 @@ int run_fit(const FitArgs& a) {
   if (!a.full_shape.empty()) return run_full_shape(a, model);
   if (!a.batch.empty()) return run_batch(a, model, opt);
 
+  if (a.space != "model" && a.space != "image") throw usage_error("--space must be model or image, not '{}'", a.space);
+  if (a.space == "image" && model.dims != 3) throw usage_error("--space image needs a 3-D model");
   const auto lm = load_landmarks(a, a.landmarks, model);
   const auto r = facefit::fit_landmarks(model, lm, opt);
   std::vector<double> sigma;
   if (!a.uncertainty.empty()) sigma = facefit::vertex_uncertainty(model, r, resolve_threads(a.threads));
+  // Everything is computed (the textured mesh too) before the first byte is written.
+  const Eigen::VectorXd shape_out = a.space == "image" ? facefit::to_image_space(r.camera, r.shape) : r.shape;
+  std::size_t visible = 0;
+  std::optional<Mesh> textured;
+  if (!a.texture.empty()) {
+    if (model.dims != 3 || model.triangles.empty()) throw usage_error("--texture needs a 3-D model with triangles");
+    textured = textured_mesh(a.texture, model, r, shape_out, &visible);
+  }
   t0 = Clock::now();
-  // Everything computed: now write, files first, the mesh (maybe stdout) last.
   if (!a.coeffs.empty()) write_output(a.coeffs, coeffs_tsv(r, model));
   if (!a.uncertainty.empty()) {
     std::string text = "vertex\tsigma\n";
     for (std::size_t j = 0; j < sigma.size(); ++j) text += fmt::format("{}\t{:.6g}\n", j, sigma[j]);
     write_output(a.uncertainty, text);
   }
-  write_mesh_to(shape_to_mesh(r.shape, model.dims, model.triangles), a.output, a.to);
+  if (textured)
+    write_mesh_to(*textured, a.output, a.to);
+  else
+    write_shape(shape_out, model.dims, model.triangles, a.output, a.to);
   if (!a.report.empty()) {
     nlohmann::json j = report_of(r, lm, model);
+    if (!a.texture.empty()) j["texture"] = {{"file", a.texture}, {"visible_vertices", visible}};
     j["timings_ms"] = {{"load", ms_load}, {"build_Q", r.ms_build_q}, {"svd", r.ms_svd}, {"reconstruct", r.ms_reconstruct},
                        {"write", ms_since(t0)}};
     write_output(a.report, formats::write_json(j));

@@ -167,7 +167,7 @@ int run_sample(const SampleArgs& a) {
     coeffs.push_back(Eigen::VectorXd::Zero(k));  // the mean face
   }
   if (coeffs.size() == 1) {
-    write_mesh_to(shape_to_mesh(facefit::reconstruct(m, coeffs[0]), m.dims, m.triangles), a.output, a.to);
+    write_shape(facefit::reconstruct(m, coeffs[0]), m.dims, m.triangles, a.output, a.to);
     return 0;
   }
   if (is_stdio(a.output)) throw usage_error("--random {} writes several meshes: -o must name a folder", a.random);

@@ -8,6 +8,7 @@ namespace facefit_tool {
 
 struct FitArgs {
   std::string model, landmarks = "-", map, camera = "similarity", center = "150,150", eta = "2", eta_units = "mm2";
+  std::string space = "model", texture;
   std::string nuisance = "free", full_shape, coeffs, report, batch, output = "-", to, uncertainty;
   double scale = 1, yaw = 0, noise_sigma = 0, nuisance_sigma = 100, pts_origin = 1;
   bool noise_sigma_given = false, eta_given = false, skip_unmapped = false, fix_basis = false;

@@ -8,6 +8,7 @@
 #include "formats/facemodel/landmarks_io.hpp"
 #include "formats/facemodel/mmb.hpp"
 #include "formats/input.hpp"
+#include "formats/mesh/indexed_ply.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
 namespace facefit_tool {
@@ -73,6 +74,24 @@ void write_mesh_to(const Mesh& mesh, const std::string& path, const std::string&
   formats::MeshWriteOptions w;
   w.ascii = to == "plya";
   formats::store_output(path, formats::write_mesh(mesh, out.format, w), out.gzip);
+}
+
+void write_shape(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                 const std::string& path, const std::string& to) {
+  bool fast = to == "ply" || to == ".ply";
+  if (to.empty()) {
+    fast = is_stdio(path);
+    if (!fast) {
+      const formats::OutputFormat out = formats::output_format_from_path(path);
+      fast = out.format == formats::Format::ply && !out.gzip;
+    }
+  }
+  if (!fast) return write_mesh_to(shape_to_mesh(shape, dims, triangles), path, to);
+  const std::size_t p = static_cast<std::size_t>(shape.size() / dims);
+  std::vector<float> xyz(3 * p, 0.0f);
+  for (std::size_t j = 0; j < p; ++j)
+    for (int e = 0; e < dims; ++e) xyz[3 * j + static_cast<std::size_t>(e)] = static_cast<float>(shape(static_cast<Eigen::Index>(j) * dims + e));
+  write_output(path, formats::write_indexed_ply(xyz, triangles));
 }
 
 std::string read_text(const std::string& path) { return read_input(path); }

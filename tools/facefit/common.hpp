@@ -27,6 +27,10 @@ fest::Mesh shape_to_mesh(const Eigen::VectorXd& shape, int dims, const std::vect
 Eigen::VectorXd read_shape(const std::string& path, std::vector<std::array<std::uint32_t, 3>>* triangles = nullptr);
 // Writes a mesh to a path or stdout; format from --to, else the extension, else binary PLY.
 void write_mesh_to(const fest::Mesh& mesh, const std::string& path, const std::string& to);
+// A shape with triangles: binary PLY (float32 coordinates) straight from the arrays when
+// that is the output format, else through write_mesh_to (text formats keep doubles).
+void write_shape(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                 const std::string& path, const std::string& to);
 
 // Reads a whole text file ("-" = stdin).
 std::string read_text(const std::string& path);

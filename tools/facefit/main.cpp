@@ -37,6 +37,8 @@ int main(int argc, char** argv) {
   f->add_option("--uncertainty", fit.uncertainty, "Write per-vertex posterior std (model units) as TSV");
   f->add_option("--coeffs", fit.coeffs, "Write the coefficients as TSV (index c sigma)");
   f->add_option("--report", fit.report, "Write a JSON report (η, camera, errors, timings)");
+  f->add_option("--texture", fit.texture, "Photo the landmarks come from: visible vertices get its colours (PLY red green blue)");
+  f->add_option("--space", fit.space, "Output vertices in model space (mm) or image space (u, v px, depth)")->default_val("model");
   f->add_option("--batch", fit.batch, "File of 'landmarks output' lines; output .tsv = coefficients only");
   f->add_option("-o,--output", fit.output, "Mesh output (- = stdout, binary PLY)")->default_val("-");
   f->add_option("--to", fit.to, "Mesh format: ply | plya | obj | off");
