@@ -89,6 +89,11 @@ run_stdin "$WORK/fb_fixed.json" lmfsim check
 c=$(jq '.initial_C_max' "$out")
 if near "$c" 0 1e-9; then pass; else fail "C after assemble $c"; fi
 
+case_ "deterministic: two runs give byte-identical output"
+"$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r1.csv"
+"$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r2.csv"
+if cmp -s "$WORK/r1.csv" "$WORK/r2.csv"; then pass; else fail "outputs differ"; fi
+
 # --- bad input: one line, right status, nothing on standard output --------------------
 bad() {  # bad STATUS REGEX JSON [args]
   local status="$1" regex="$2" json="$3"; shift 3
