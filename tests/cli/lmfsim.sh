@@ -89,6 +89,22 @@ run_stdin "$WORK/fb_fixed.json" lmfsim check
 c=$(jq '.initial_C_max' "$out")
 if near "$c" 0 1e-9; then pass; else fail "C after assemble $c"; fi
 
+case_ "gen sleigh: the knife edge keeps the COM on a circle of radius v/omega = 2 m"
+"$L" gen sleigh --omega0 0.5 > "$WORK/sleigh.json"
+run_stdin "$WORK/sleigh.json" lmfsim run --t-end 5 --every 500
+expect_status 0
+r=$(awk -F, '$1==10 {print sqrt($4*$4 + ($5-2)*($5-2) + $6*$6)}' "$out")
+if near "$r" 2 1e-7; then pass; else fail "distance from the centre $r"; fi
+
+case_ "gen ring: an 8-link closed ring swings with its loop closed (auxiliary rows, rank deficiency 3)"
+"$L" gen ring --n 8 > "$WORK/ring.json"
+run_stdin "$WORK/ring.json" lmfsim check
+expect_json '.rank_deficiency' '3'
+run_stdin "$WORK/ring.json" lmfsim run --t-end 1 --report "$WORK/ring_rep.json"
+expect_status 0
+c=$(jq '.max_C' "$WORK/ring_rep.json")
+if near "$c" 0 1e-6; then pass; else fail "ring max |C| $c"; fi
+
 case_ "deterministic: two runs give byte-identical output"
 "$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r1.csv"
 "$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r2.csv"
