@@ -164,7 +164,15 @@ void eliminate(Node& n, Blk& Dp, const HExpr& H) {
   } else {
     L.noalias() = Eigen::Map<const Md>(n.Dinv.data()) * H;
   }
-  Eigen::Map<Mp>(Dp.data()).noalias() -= H.transpose() * L;
+  // D_parent -= H^T L (symmetric: the lower triangle is computed and mirrored).
+  Eigen::Map<Mp> P(Dp.data());
+  for (int b = 0; b < p; ++b)
+    for (int a = b; a < p; ++a) {
+      double v = 0;
+      for (int r = 0; r < d; ++r) v += H(r, a) * L(r, b);
+      P(a, b) -= v;
+      if (a != b) P(b, a) -= v;
+    }
 }
 
 template <int d, int p>
@@ -199,6 +207,55 @@ void factor_block(Node& n, Blk& Dp) {
     default: factor_p<6>(n, Dp); break;
   }
 }
+
+// Calls f.run<d, p>() with the block sizes as compile-time constants (1..6 each).
+template <int d, typename F>
+void with_parent_size(int p, const F& f) {
+  switch (p) {
+    case 1: f.template run<d, 1>(); break;
+    case 2: f.template run<d, 2>(); break;
+    case 3: f.template run<d, 3>(); break;
+    case 4: f.template run<d, 4>(); break;
+    case 5: f.template run<d, 5>(); break;
+    default: f.template run<d, 6>(); break;
+  }
+}
+
+template <typename F>
+void with_sizes(int d, int p, const F& f) {
+  switch (d) {
+    case 1: with_parent_size<1>(p, f); break;
+    case 2: with_parent_size<2>(p, f); break;
+    case 3: with_parent_size<3>(p, f); break;
+    case 4: with_parent_size<4>(p, f); break;
+    case 5: with_parent_size<5>(p, f); break;
+    default: with_parent_size<6>(p, f); break;
+  }
+}
+
+// Forward sweep of the block solve: x_parent -= L^T x_i.
+struct PushUp {
+  const Node& n;
+  const double* xi;
+  double* xp;
+  template <int d, int p>
+  void run() const {
+    Eigen::Map<Eigen::Matrix<double, p, 1>>(xp).noalias() -=
+        Eigen::Map<const Eigen::Matrix<double, d, p>>(n.L.data()).transpose() * Eigen::Map<const Eigen::Matrix<double, d, 1>>(xi);
+  }
+};
+
+// Backward sweep: x_i -= L x_parent.
+struct PullDown {
+  const Node& n;
+  double* xi;
+  const double* xp;
+  template <int d, int p>
+  void run() const {
+    Eigen::Map<Eigen::Matrix<double, d, 1>>(xi).noalias() -=
+        Eigen::Map<const Eigen::Matrix<double, d, p>>(n.L.data()) * Eigen::Map<const Eigen::Matrix<double, p, 1>>(xp);
+  }
+};
 
 class BaraffSolver final : public Solver {
  public:
@@ -356,25 +413,15 @@ class BaraffSolver final : public Solver {
     for (int i : order_) {
       const Node& n = nodes_[static_cast<std::size_t>(i)];
       if (n.parent < 0) continue;
-      Vecx& xp = x[static_cast<std::size_t>(n.parent)];
-      const Vecx& xi = x[static_cast<std::size_t>(i)];
-      for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) {
-        double v = 0;
-        for (int r = 0; r < n.dim; ++r) v += n.L(r, a) * xi[r];
-        xp[a] -= v;
-      }
+      with_sizes(n.dim, static_cast<int>(n.L.cols()),
+                 PushUp{n, x[static_cast<std::size_t>(i)].data(), x[static_cast<std::size_t>(n.parent)].data()});
     }
     for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
       const Node& n = nodes_[static_cast<std::size_t>(*it)];
       Vecx& xi = x[static_cast<std::size_t>(*it)];
       solve_block(n, xi.data());
       if (n.parent < 0) continue;
-      const Vecx& xp = x[static_cast<std::size_t>(n.parent)];
-      for (int r = 0; r < n.dim; ++r) {
-        double v = 0;
-        for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) v += n.L(r, a) * xp[a];
-        xi[r] -= v;
-      }
+      with_sizes(n.dim, static_cast<int>(n.L.cols()), PullDown{n, xi.data(), x[static_cast<std::size_t>(n.parent)].data()});
     }
   }
 
