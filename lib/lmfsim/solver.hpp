@@ -1,7 +1,7 @@
 #pragma once
 // Solvers of the LMF system (spec §2.3): given M, F, J and c, find xdd and lambda with
 //   M xdd = F + J^T lambda,   J xdd + c = 0.
-// DenseSolver: assemble A = J M^-1 J^T, LDL^T, truncated-SVD fallback (reference).
+// DenseSolver: assemble A = J M^-1 J^T, Cholesky, truncated-SVD fallback (reference).
 // BaraffSolver: Baraff's O(n) block elimination on the KKT graph of a spanning forest
 // of primary constraints, auxiliary rows through a k x k SVD-solved Schur complement.
 

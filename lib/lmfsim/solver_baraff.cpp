@@ -46,13 +46,14 @@ void small_inverse(const Blk& D, Blk& out) {
 }
 
 struct Node {
-  double chol[36] = {};
   bool chol_ok = false;
   int dim = 0;
   int parent = -1;
   int constraint = -1;  // index into cons for constraint nodes, -1 for bodies
   int body = -1;        // index of the body for body nodes
-  Blk Hp;               // H_ip: dim x dim(parent)
+  // H_ip (dim x dim(parent)) is the constraint's Jacobian block on the body, read in
+  // place: J_side->leftCols(dof) for a constraint node, its transpose for a body node.
+  const Blk* J = nullptr;
   Blk D, Dinv, L;
 };
 
@@ -65,35 +66,42 @@ struct Node {
 template <int d>
 bool cholesky_fixed(Node& n) {
   const double sign = n.constraint < 0 ? 1.0 : -1.0;
-  double* c = n.chol;
+  // Factor into a local array, then store it over D's lower triangle (column-major,
+  // leading dimension d): a node keeps no separate factor, so long chains stay in cache,
+  // and D survives for the pivoting fallback when the block is not definite.
+  const double* D = n.D.data();
+  double c[d * d] = {};
   for (int j = 0; j < d; ++j) {
-    double diag = sign * n.D(j, j);
-    for (int k = 0; k < j; ++k) diag -= c[j * 6 + k] * c[j * 6 + k];
+    double diag = sign * D[j + j * d];
+    for (int k = 0; k < j; ++k) diag -= c[j + k * d] * c[j + k * d];
     if (!(diag > 0)) return false;
     const double inv = 1.0 / std::sqrt(diag);
-    c[j * 6 + j] = inv;
+    c[j + j * d] = inv;
     for (int i = j + 1; i < d; ++i) {
-      double v = sign * n.D(i, j);
-      for (int k = 0; k < j; ++k) v -= c[i * 6 + k] * c[j * 6 + k];
-      c[i * 6 + j] = v * inv;
+      double v = sign * D[i + j * d];
+      for (int k = 0; k < j; ++k) v -= c[i + k * d] * c[j + k * d];
+      c[i + j * d] = v * inv;
     }
   }
+  double* out = n.D.data();
+  for (int j = 0; j < d; ++j)
+    for (int i = j; i < d; ++i) out[i + j * d] = c[i + j * d];
   return true;
 }
 
 // x := D^-1 x from the factor of sign*D.
 template <int d>
 void cholesky_solve_fixed(const Node& n, double* x) {
-  const double* c = n.chol;
+  const double* c = n.D.data();
   for (int i = 0; i < d; ++i) {
     double v = x[i];
-    for (int k = 0; k < i; ++k) v -= c[i * 6 + k] * x[k];
-    x[i] = v * c[i * 6 + i];
+    for (int k = 0; k < i; ++k) v -= c[i + k * d] * x[k];
+    x[i] = v * c[i + i * d];
   }
   for (int i = d - 1; i >= 0; --i) {
     double v = x[i];
-    for (int k = i + 1; k < d; ++k) v -= c[k * 6 + i] * x[k];
-    x[i] = v * c[i * 6 + i];
+    for (int k = i + 1; k < d; ++k) v -= c[k + i * d] * x[k];
+    x[i] = v * c[i + i * d];
   }
   if (n.constraint >= 0)
     for (int i = 0; i < d; ++i) x[i] = -x[i];
@@ -139,13 +147,11 @@ void invert_block(Node& n) {
 
 // Eliminates node n into its parent: L = D^-1 H_ip, D_parent -= H_ip^T L. Fixed-size
 // kernels (blocks are at most 6x6; Eigen unrolls and vectorises them).
-template <int d, int p>
-void factor_fixed(Node& n, Blk& Dp) {
-  invert_fixed<d>(n);
+template <int d, int p, typename HExpr>
+void eliminate(Node& n, Blk& Dp, const HExpr& H) {
   using Md = Eigen::Matrix<double, d, d>;
   using Mdp = Eigen::Matrix<double, d, p>;
   using Mp = Eigen::Matrix<double, p, p>;
-  const Eigen::Map<const Mdp> H(n.Hp.data());
   n.L.resize(d, p);
   Eigen::Map<Mdp> L(n.L.data());
   if (n.chol_ok) {
@@ -158,7 +164,25 @@ void factor_fixed(Node& n, Blk& Dp) {
   } else {
     L.noalias() = Eigen::Map<const Md>(n.Dinv.data()) * H;
   }
-  Eigen::Map<Mp>(Dp.data()).noalias() -= H.transpose() * L;
+  // D_parent -= H^T L (symmetric: the lower triangle is computed and mirrored).
+  Eigen::Map<Mp> P(Dp.data());
+  for (int b = 0; b < p; ++b)
+    for (int a = b; a < p; ++a) {
+      double v = 0;
+      for (int r = 0; r < d; ++r) v += H(r, a) * L(r, b);
+      P(a, b) -= v;
+      if (a != b) P(b, a) -= v;
+    }
+}
+
+template <int d, int p>
+void factor_fixed(Node& n, Blk& Dp) {
+  invert_fixed<d>(n);
+  if (n.constraint < 0) {  // body node under a constraint: H = J^T (J is p x 6)
+    eliminate<d, p>(n, Dp, Eigen::Map<const Eigen::Matrix<double, p, d>>(n.J->data()).transpose());
+  } else {  // constraint node under a body: H = J.leftCols(p) (J is d x 6)
+    eliminate<d, p>(n, Dp, Eigen::Map<const Eigen::Matrix<double, d, p>>(n.J->data()));
+  }
 }
 
 template <int d>
@@ -183,6 +207,55 @@ void factor_block(Node& n, Blk& Dp) {
     default: factor_p<6>(n, Dp); break;
   }
 }
+
+// Calls f.run<d, p>() with the block sizes as compile-time constants (1..6 each).
+template <int d, typename F>
+void with_parent_size(int p, const F& f) {
+  switch (p) {
+    case 1: f.template run<d, 1>(); break;
+    case 2: f.template run<d, 2>(); break;
+    case 3: f.template run<d, 3>(); break;
+    case 4: f.template run<d, 4>(); break;
+    case 5: f.template run<d, 5>(); break;
+    default: f.template run<d, 6>(); break;
+  }
+}
+
+template <typename F>
+void with_sizes(int d, int p, const F& f) {
+  switch (d) {
+    case 1: with_parent_size<1>(p, f); break;
+    case 2: with_parent_size<2>(p, f); break;
+    case 3: with_parent_size<3>(p, f); break;
+    case 4: with_parent_size<4>(p, f); break;
+    case 5: with_parent_size<5>(p, f); break;
+    default: with_parent_size<6>(p, f); break;
+  }
+}
+
+// Forward sweep of the block solve: x_parent -= L^T x_i.
+struct PushUp {
+  const Node& n;
+  const double* xi;
+  double* xp;
+  template <int d, int p>
+  void run() const {
+    Eigen::Map<Eigen::Matrix<double, p, 1>>(xp).noalias() -=
+        Eigen::Map<const Eigen::Matrix<double, d, p>>(n.L.data()).transpose() * Eigen::Map<const Eigen::Matrix<double, d, 1>>(xi);
+  }
+};
+
+// Backward sweep: x_i -= L x_parent.
+struct PullDown {
+  const Node& n;
+  double* xi;
+  const double* xp;
+  template <int d, int p>
+  void run() const {
+    Eigen::Map<Eigen::Matrix<double, d, 1>>(xi).noalias() -=
+        Eigen::Map<const Eigen::Matrix<double, d, p>>(n.L.data()) * Eigen::Map<const Eigen::Matrix<double, p, 1>>(xp);
+  }
+};
 
 class BaraffSolver final : public Solver {
  public:
@@ -324,10 +397,7 @@ class BaraffSolver final : public Solver {
       const Node& cn = n.constraint >= 0 ? n : p;
       const Node& bn = n.constraint >= 0 ? p : n;
       const SolveConstraint& sc = cons[static_cast<std::size_t>(cn.constraint)];
-      const Blk* J = sc.a == bn.body ? sc.Ja : sc.Jb;
-      const int dof = bodies[static_cast<std::size_t>(bn.body)].dof;
-      if (n.constraint >= 0) n.Hp = J->leftCols(dof);
-      else n.Hp = J->leftCols(dof).transpose();
+      n.J = sc.a == bn.body ? sc.Ja : sc.Jb;
     }
     for (int i : order_) {
       Node& n = nodes_[static_cast<std::size_t>(i)];
@@ -343,25 +413,15 @@ class BaraffSolver final : public Solver {
     for (int i : order_) {
       const Node& n = nodes_[static_cast<std::size_t>(i)];
       if (n.parent < 0) continue;
-      Vecx& xp = x[static_cast<std::size_t>(n.parent)];
-      const Vecx& xi = x[static_cast<std::size_t>(i)];
-      for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) {
-        double v = 0;
-        for (int r = 0; r < n.dim; ++r) v += n.L(r, a) * xi[r];
-        xp[a] -= v;
-      }
+      with_sizes(n.dim, static_cast<int>(n.L.cols()),
+                 PushUp{n, x[static_cast<std::size_t>(i)].data(), x[static_cast<std::size_t>(n.parent)].data()});
     }
     for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
       const Node& n = nodes_[static_cast<std::size_t>(*it)];
       Vecx& xi = x[static_cast<std::size_t>(*it)];
       solve_block(n, xi.data());
       if (n.parent < 0) continue;
-      const Vecx& xp = x[static_cast<std::size_t>(n.parent)];
-      for (int r = 0; r < n.dim; ++r) {
-        double v = 0;
-        for (int a = 0; a < static_cast<int>(n.L.cols()); ++a) v += n.L(r, a) * xp[a];
-        xi[r] -= v;
-      }
+      with_sizes(n.dim, static_cast<int>(n.L.cols()), PullDown{n, xi.data(), x[static_cast<std::size_t>(n.parent)].data()});
     }
   }
 

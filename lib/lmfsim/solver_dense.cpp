@@ -1,5 +1,5 @@
 // Reference solver: A = J M^-1 J^T assembled block by block (only constraint pairs that
-// share a body contribute), LDL^T, truncated SVD when the pivots say A is singular.
+// share a body contribute), Cholesky, truncated SVD when the pivots say A is singular.
 #include <cmath>
 
 #include <Eigen/Cholesky>
@@ -41,13 +41,18 @@ class DenseSolver final : public Solver {
       }
     }
     out.rank_deficiency = 0;
-    Eigen::LDLT<Eigen::MatrixXd> ldlt(A_);
-    const auto D = ldlt.vectorD().cwiseAbs();
-    const bool singular = m > 0 && (D.minCoeff() < 1e-12 * D.maxCoeff() || ldlt.info() != Eigen::Success);
+    // Cholesky (blocked, no pivoting: A is SPD for independent rows); a pivot ratio
+    // below 1e-12 means redundant rows, answered by the truncated SVD.
+    llt_.compute(A_);
+    bool singular = m > 0 && llt_.info() != Eigen::Success;
+    if (m > 0 && !singular) {
+      const auto d = llt_.matrixLLT().diagonal().cwiseAbs2();
+      singular = d.minCoeff() < 1e-12 * d.maxCoeff();
+    }
     if (m == 0) {
       lambda_.resize(0);
     } else if (!singular) {
-      lambda_ = ldlt.solve(rhs_);
+      lambda_ = llt_.solve(rhs_);
     } else {
       out.rank_deficiency = truncated_svd_solve(A_, rhs_, tol_, lambda_);
     }
@@ -68,6 +73,7 @@ class DenseSolver final : public Solver {
   std::vector<int> offset_;
   std::vector<std::vector<std::pair<std::size_t, const Blk*>>> touching_;
   Eigen::MatrixXd A_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::VectorXd rhs_, lambda_;
 };
 

@@ -46,6 +46,19 @@ expect_status 0
 d=$(jq '.max_pos' "$out")
 if near "$d" 0 1e-6; then pass; else fail "max position difference $d m"; fi
 
+# Every integrator and stabilisation against the reduced reference (tolerances from their
+# orders at h = 1e-3: rk45 adaptive to 1e-8, rk4 ~1e-8, first-order Euler variants ~1e-2).
+for spec in "--integrator rk45:1e-7" "--stab force:1e-7" "--stab project:1e-7" "--stab none:1e-7" \
+            "--solver dense:1e-7" "--integrator symplectic:0.1" "--integrator euler --max-violation 1:0.2"; do
+  opts="${spec%%:*}"; tol="${spec##*:}"
+  case_ "run $opts agrees with the reduced double pendulum at t = 3 s within $tol m"
+  # shellcheck disable=SC2086
+  "$L" run --t-end 3 $opts < "$WORK/dpp.json" > "$WORK/opt.csv"
+  run lmfsim diff "$WORK/opt.csv" "$WORK/ref.csv" --at 3
+  d=$(jq '.at.max_pos' "$out")
+  if near "$d" 0 "$tol"; then pass; else fail "difference $d m"; fi
+done
+
 case_ "run agrees with the reduced four-bar (loop through auxiliary rows, 2 s)"
 # RK4 error at h = 1e-3 is 1.9e-6 m here (fourth order: 1.3e-7 at 5e-4), so half the step.
 "$L" run --t-end 2 --dt 5e-4 --every 20 < "$WORK/fb.json" > "$WORK/fb_lmf.csv"
@@ -88,6 +101,27 @@ jq '.bodies[1].pos[2] += 0.01' "$WORK/fb.json" > "$WORK/fb_bad.json"
 run_stdin "$WORK/fb_fixed.json" lmfsim check
 c=$(jq '.initial_C_max' "$out")
 if near "$c" 0 1e-9; then pass; else fail "C after assemble $c"; fi
+
+case_ "gen sleigh: the knife edge keeps the COM on a circle of radius v/omega = 2 m"
+"$L" gen sleigh --omega0 0.5 > "$WORK/sleigh.json"
+run_stdin "$WORK/sleigh.json" lmfsim run --t-end 5 --every 500
+expect_status 0
+r=$(awk -F, '$1==10 {print sqrt($4*$4 + ($5-2)*($5-2) + $6*$6)}' "$out")
+if near "$r" 2 1e-7; then pass; else fail "distance from the centre $r"; fi
+
+case_ "gen ring: an 8-link closed ring swings with its loop closed (auxiliary rows, rank deficiency 3)"
+"$L" gen ring --n 8 > "$WORK/ring.json"
+run_stdin "$WORK/ring.json" lmfsim check
+expect_json '.rank_deficiency' '3'
+run_stdin "$WORK/ring.json" lmfsim run --t-end 1 --report "$WORK/ring_rep.json"
+expect_status 0
+c=$(jq '.max_C' "$WORK/ring_rep.json")
+if near "$c" 0 1e-6; then pass; else fail "ring max |C| $c"; fi
+
+case_ "deterministic: two runs give byte-identical output"
+"$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r1.csv"
+"$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r2.csv"
+if cmp -s "$WORK/r1.csv" "$WORK/r2.csv"; then pass; else fail "outputs differ"; fi
 
 # --- bad input: one line, right status, nothing on standard output --------------------
 bad() {  # bad STATUS REGEX JSON [args]

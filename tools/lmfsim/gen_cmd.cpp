@@ -135,6 +135,82 @@ json gen_activation(const GenOptions& o) {
           {"events", events}, {"sim", sim}};
 }
 
+// Knife edge (spec §5): a box held on z = 0 (point_on_plane at the COM, body z parallel
+// to world z) with a blade along body x through the COM; speed 1 m/s, yaw rate --omega0:
+// the COM runs on a circle of radius 1/omega0.
+json gen_sleigh(const GenOptions& o) {
+  json bodies = json::array({{{"name", "sleigh"}, {"type", "rigid"}, {"mass", o.mass},
+                              {"shape", {{"box", v3(0.6, 0.3, 0.1)}}}, {"inertia", "auto"},
+                              {"pos", v3(0, 0, 0)}, {"vel", v3(1, 0, 0)}, {"omega", v3(0, 0, o.omega0)}}});
+  json cons = json::array({{{"name", "plane"}, {"type", "point_on_plane"}, {"a", "sleigh"},
+                            {"plane", {{"o", v3(0, 0, 0)}, {"n", v3(0, 0, 1)}}}},
+                           {{"name", "upright"}, {"type", "axis_parallel"}, {"a", "sleigh"}, {"b", "world"},
+                            {"axis_a", v3(0, 0, 1)}, {"axis_b", v3(0, 0, 1)}},
+                           {{"name", "blade"}, {"type", "knife_edge"}, {"a", "sleigh"}, {"pa", v3(0, 0, 0)},
+                            {"axis_a", v3(0, 1, 0)}}});
+  json sim = sim_block();
+  sim["t_end"] = 10.0;
+  return {{"gravity", v3(0, 0, 0)}, {"bodies", bodies}, {"constraints", cons}, {"sim", sim}};
+}
+
+// A bead (particle) on a vertical circle of radius --length through the origin's plane.
+json gen_bead(const GenOptions& o) {
+  const double th = o.angle * kPi / 180, r = o.length;
+  json bodies = json::array({{{"name", "bead"}, {"type", "particle"}, {"mass", o.mass},
+                              {"pos", v3(r * std::sin(th), 0, -r * std::cos(th))}}});
+  json cons = json::array({{{"name", "wire"}, {"type", "point_on_circle"}, {"a", "bead"},
+                            {"circle", {{"o", v3(0, 0, 0)}, {"n", v3(0, 1, 0)}, {"r", r}}}}});
+  return {{"gravity", v3(0, 0, o.gravity ? -9.81 : 0.0)}, {"bodies", bodies}, {"constraints", cons}, {"sim", sim_block()}};
+}
+
+// An arm on a hinge whose motor (2 rad/s) is switched on at t = 0.5 s.
+json gen_motorarm(const GenOptions& o) {
+  const double L = o.length;
+  json bodies = json::array({{{"name", "arm"}, {"type", "rigid"}, {"mass", o.mass},
+                              {"shape", {{"box", v3(L, 0.05, 0.05)}}}, {"inertia", "auto"}, {"pos", v3(L / 2, 0, 0)}}});
+  json cons = json::array({{{"name", "pivot"}, {"type", "hinge"}, {"a", "world"}, {"b", "arm"}, {"pb", v3(-L / 2, 0, 0)},
+                            {"axis_a", v3(0, 1, 0)}, {"axis_b", v3(0, 1, 0)}},
+                           {{"name", "motor"}, {"type", "motor"}, {"a", "world"}, {"b", "arm"}, {"axis_a", v3(0, 1, 0)},
+                            {"omega", o.omega0 != 0 ? o.omega0 : 2.0}, {"active", false}}});
+  json events = json::array({{{"t", 0.5}, {"action", "activate"}, {"target", "motor"}}});
+  json sim = sim_block();
+  sim["t_end"] = 2.0;
+  return {{"gravity", v3(0, 0, o.gravity ? -9.81 : 0.0)}, {"bodies", bodies}, {"constraints", cons},
+          {"events", events}, {"sim", sim}};
+}
+
+// A closed ring of N box links joined by hinges about y, hanging from a hinge to the
+// world at its top: one loop, closed through auxiliary rows.
+json gen_ring(const GenOptions& o) {
+  const int n = o.n < 3 ? 8 : o.n;
+  const double L = o.length / n, m = o.mass / n, R = L / (2 * std::sin(kPi / n));
+  json bodies = json::array(), cons = json::array();
+  // Vertices of a regular polygon in the x-z plane, vertex 0 at the pivot (origin), the
+  // whole ring turned 30 degrees about the pivot so that it swings.
+  const double tilt = kPi / 6;
+  auto vertex = [&](int k) {
+    const double a = 2 * kPi * k / n;
+    const Eigen::Vector2d p(R * std::sin(a), R * std::cos(a) - R);
+    return Eigen::Vector2d(p.x() * std::cos(tilt) - p.y() * std::sin(tilt), p.x() * std::sin(tilt) + p.y() * std::cos(tilt));
+  };
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = vertex(i), b = vertex((i + 1) % n), c = 0.5 * (a + b);
+    const double gamma = std::atan2(b.y() - a.y(), b.x() - a.x());
+    bodies.push_back({{"name", "k" + std::to_string(i)}, {"type", "rigid"}, {"mass", m},
+                      {"shape", {{"box", v3(L, 0.02, 0.02)}}}, {"inertia", "auto"},
+                      {"pos", v3(c.x(), 0, c.y())}, {"quat", quat_y(-gamma)}});
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    cons.push_back({{"name", "h" + std::to_string(i)}, {"type", "hinge"}, {"a", "k" + std::to_string(i)},
+                    {"pa", v3(L / 2, 0, 0)}, {"b", "k" + std::to_string(j)}, {"pb", v3(-L / 2, 0, 0)},
+                    {"axis_a", v3(0, 1, 0)}, {"axis_b", v3(0, 1, 0)}});
+  }
+  cons.push_back({{"name", "top"}, {"type", "hinge"}, {"a", "world"}, {"pa", v3(0, 0, 0)}, {"b", "k0"},
+                  {"pb", v3(-L / 2, 0, 0)}, {"axis_a", v3(0, 1, 0)}, {"axis_b", v3(0, 1, 0)}});
+  return {{"gravity", v3(0, 0, o.gravity ? -9.81 : 0.0)}, {"bodies", bodies}, {"constraints", cons}, {"sim", sim_block()}};
+}
+
 }  // namespace
 
 int cmd_gen(const GenOptions& o) {
@@ -144,8 +220,16 @@ int cmd_gen(const GenOptions& o) {
   else if (o.kind == "activation") {
     GenOptions g = o;
     doc = gen_activation(g);
+  } else if (o.kind == "sleigh") {
+    doc = gen_sleigh(o);
+  } else if (o.kind == "bead") {
+    doc = gen_bead(o);
+  } else if (o.kind == "motorarm") {
+    doc = gen_motorarm(o);
+  } else if (o.kind == "ring") {
+    doc = gen_ring(o);
   } else {
-    throw fest::usage_error("unknown scene '{}' (chain, fourbar, activation)", o.kind);
+    throw fest::usage_error("unknown scene '{}' (chain, fourbar, activation, sleigh, bead, motorarm, ring)", o.kind);
   }
   fest::write_output("-", fest::formats::write_json(doc));
   return 0;

@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
   auto* assemble_cmd = app.add_subcommand("assemble", "Project the initial state onto the constraints; scene JSON out");
 
   GenOptions gen;
-  auto* gen_cmd = app.add_subcommand("gen", "Write a test scene: chain, fourbar or activation");
-  gen_cmd->add_option("kind", gen.kind, "chain, fourbar or activation")->required();
+  auto* gen_cmd = app.add_subcommand("gen", "Write a test scene: chain, fourbar, activation, sleigh, bead, motorarm, ring");
+  gen_cmd->add_option("kind", gen.kind, "chain, fourbar, activation, sleigh, bead, motorarm or ring")->required();
   gen_cmd->add_option("--n", gen.n, "Links (chain)");
   gen_cmd->add_option("--type", gen.type, "Link type: box, rod or particle")->check(CLI::IsMember({"box", "rod", "particle"}));
   gen_cmd->add_option("--joint", gen.joint, "ball, hinge or distance (default: ball; hinge with --planar; distance for particles)");
