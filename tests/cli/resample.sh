@@ -166,6 +166,28 @@ run resample normalmip --height-map --height-scale 2 --naive "$WORK/h.pfm" -o "$
 run fconv --info "$WORK/naive_4_cov.exr"
 near '.max[0]' 0 1e-12
 
+case_ "texture: EWA and trilinear beat the aliasing lookups on an oblique checker plane (spec T1, small)"
+awk 'BEGIN { print "P2\n256 256\n255"; for (y = 0; y < 256; y++) { s = ""; for (x = 0; x < 256; x++) s = s ((int(x / 8) + int(y / 8)) % 2 ? "255 " : "0 "); print s } }' >"$WORK/chk.pgm"
+MAP=plane:h=1,pitch=15,fov=60,period=2
+"$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --aniso-mask 4 -o "$WORK/mask.pgm"
+"$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --ground-truth -o "$WORK/gt.pfm"
+for m in nearest bilinear trilinear aniso:1 aniso:16 ewa; do
+  "$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --method $m -o "$WORK/tex_$m.pfm"
+  eval "rmse_${m%%:*}${m#*:}=$("$R" metrics "$WORK/tex_$m.pfm" --ref "$WORK/gt.pfm" --mask "$WORK/mask.pgm" | jq .rmse)"
+done
+lt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
+check "ewa < trilinear ($rmse_ewaewa < $rmse_trilineartrilinear)" lt "$rmse_ewaewa" "$rmse_trilineartrilinear"
+check "ewa < aniso:16" lt "$rmse_ewaewa" "$rmse_aniso16"
+check "trilinear < bilinear" lt "$rmse_trilineartrilinear" "$rmse_bilinearbilinear"
+check "trilinear < nearest" lt "$rmse_trilineartrilinear" "$rmse_nearestnearest"
+check "aniso:1 is trilinear" cmp "$WORK/tex_aniso:1.pfm" "$WORK/tex_trilinear.pfm"
+
+case_ "texture without a mapping, and --uv with one channel"
+run resample texture --tex "$WORK/chk.pgm" --size 64x48
+expect_clean_failure 2 resample
+run resample texture --tex "$WORK/chk.pgm" --uv "$WORK/chk.pgm" --size 256x256
+expect_clean_failure 3 resample
+
 # --- bad input -----------------------------------------------------------------------------
 case_ "empty standard input"
 run_stdin /dev/null resample resize --size 10x10
