@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   RenderArgs rd;
   auto* render = app.add_subcommand("render", "Render an analytic scene with supersampling");
   add_output(render, rd.out);
-  render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point")->default_val("zoneplate");
+  render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
   render->add_option("--param", rd.params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
   render->add_option("--size", rd.size, "Image size WxH")->default_val("256x256");
   render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
