@@ -85,6 +85,49 @@ FloatImage resample_rows_decoded(const cv::Mat& in, const Encoding& enc, const W
   return out;
 }
 
+FloatImage resample_columns_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads) {
+  const int c = in.channels();
+  FloatImage out(in.cols, table.n_out, c);
+  const std::size_t row_len = static_cast<std::size_t>(in.cols) * static_cast<std::size_t>(c);
+  for_row_blocks(table.n_out, threads, [&](int begin, int end) {
+    // Decoded input rows kept while output rows still read them: the taps of successive
+    // outputs move forward, so a row is decoded once per block.
+    struct Slot {
+      int row = -1;
+      std::vector<float> values;
+    };
+    std::vector<Slot> slots;
+    auto decoded = [&](int row) -> const float* {
+      Slot* free_slot = nullptr;
+      for (auto& s : slots) {
+        if (s.row == row) return s.values.data();
+        if (!free_slot && s.row < 0) free_slot = &s;
+      }
+      if (!free_slot) {
+        slots.push_back({-1, std::vector<float>(row_len)});
+        free_slot = &slots.back();
+      }
+      free_slot->row = row;
+      decode_row(in, row, enc, free_slot->values.data());
+      return free_slot->values.data();
+    };
+    for (int o = begin; o < end; ++o) {
+      const std::size_t first = table.offset[static_cast<std::size_t>(o)], last = table.offset[static_cast<std::size_t>(o) + 1];
+      int lo = in.rows;
+      for (std::size_t j = first; j < last; ++j) lo = std::min(lo, table.index[j]);
+      for (auto& s : slots)
+        if (s.row < lo) s.row = -1;  // no later output reads rows above this one's first
+      float* dst = out.row(o);
+      for (std::size_t j = first; j < last; ++j) {
+        const float w = table.weight[j];
+        const float* src = decoded(table.index[j]);
+        for (std::size_t i = 0; i < row_len; ++i) dst[i] += w * src[i];
+      }
+    }
+  });
+  return out;
+}
+
 FloatImage resample_columns(const FloatImage& in, const WeightTable& table, int threads) {
   FloatImage out(in.width, table.n_out, in.channels);
   const std::size_t row_len = static_cast<std::size_t>(in.width) * static_cast<std::size_t>(in.channels);
