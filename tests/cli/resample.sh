@@ -168,7 +168,7 @@ near '.max[0]' 0 1e-12
 
 case_ "texture: EWA and trilinear beat the aliasing lookups on an oblique checker plane (spec T1, small)"
 awk 'BEGIN { print "P2\n256 256\n255"; for (y = 0; y < 256; y++) { s = ""; for (x = 0; x < 256; x++) s = s ((int(x / 8) + int(y / 8)) % 2 ? "255 " : "0 "); print s } }' >"$WORK/chk.pgm"
-MAP=plane:h=1,pitch=15,fov=60,period=2
+MAP=plane:h=1,pitch=30,fov=60,period=16
 "$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --aniso-mask 4 -o "$WORK/mask.pgm"
 "$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --ground-truth -o "$WORK/gt.pfm"
 for m in nearest bilinear trilinear aniso:1 aniso:16 ewa; do
