@@ -141,6 +141,20 @@ run resample display "$WORK/half.png" --model lcd --factor 2 -o "$WORK/shown.png
 expect_status 0
 check "512x512 of 188" test "$(histogram "$WORK/shown.png")" = "188:262144"
 
+"$R" render --scene siemens --size 512x512 --spp 4 -o "$WORK/star.pfm"
+display_rmse() {  # prefilter display: the A -> D error of the 2-D chain (§10.5 in 2-D)
+  "$R" resize --size 64x64 --filter "$1" <"$WORK/star.pfm" | "$R" display --model "$2" --factor 8 |
+    "$R" metrics --ref "$WORK/star.pfm" | jq .rmse
+}
+case_ "the dual prefilter has the smallest error on its own display (§10.5, 2-D)"
+for d in tent gaussian:sigma=0.4; do
+  dual=$(display_rmse "dual:$d" "$d")
+  for other in box lanczos3 "$d"; do
+    e=$(display_rmse "$other" "$d")
+    check "dual:$d ($dual) < $other ($e) on a $d display" awk -v a="$dual" -v b="$e" 'BEGIN { exit !(a < b) }'
+  done
+done
+
 case_ "mipkernel: Σw = 1, periodic with 2^L, not shift-invariant (spec C4)"
 run resample mipkernel --level 3 --pos 12.0,20.0,14.4
 expect_status 0
