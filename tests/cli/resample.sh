@@ -155,6 +155,17 @@ for d in tent gaussian:sigma=0.4; do
   done
 done
 
+"$R" render --scene sine --param f=0.1 --size 1000x2 --spp 64 --pattern regular -o "$WORK/sine.pfm"
+case_ "spectrum: a box-filtered sine keeps sinc(f) of its amplitude"
+run resample metrics "$WORK/sine.pfm" --beat 0.1,0
+near '.beat_power' 0.120937 2e-4   # (½ sinc(0.1))² / 2
+
+case_ "beat of two gratings appears when filtering ignores gamma (§10.4.4)"
+"$R" render --scene sine --param f=0.30,f2=0.32 --size 1000x8 --spp 16 --depth 8 -o "$WORK/beat.png"
+codes=$("$R" resize "$WORK/beat.png" --size 500x4 --filter box --colorspace codes | "$R" metrics --beat 0.6,0.64 | jq .beat_power)
+linear=$("$R" resize "$WORK/beat.png" --size 500x4 --filter box | "$R" metrics --beat 0.6,0.64 | jq .beat_power)
+check "beat power in codes ($codes) > 100 x linear light ($linear)" awk -v a="$codes" -v b="$linear" 'BEGIN { exit !(a > 100 * b) }'
+
 case_ "mipkernel: Σw = 1, periodic with 2^L, not shift-invariant (spec C4)"
 run resample mipkernel --level 3 --pos 12.0,20.0,14.4
 expect_status 0

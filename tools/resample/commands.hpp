@@ -90,6 +90,8 @@ struct MetricsArgs {
   std::vector<double> alias_band{0.6, 1.0}, pass_band{0.0, 0.2};
   std::string mask;
   std::string domain = "linear";
+  bool spectrum = false;
+  std::vector<double> beat;  // f1,f2: report the power at |f1 − f2|
 };
 
 struct TextureArgs {

@@ -139,6 +139,9 @@ int main(int argc, char** argv) {
   metrics->add_option("--pass-band", mt.pass_band, "Pass band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--mask", mt.mask, "One-channel image: compare where non-zero");
   metrics->add_option("--domain", mt.domain, "linear or encoded")->default_val("linear");
+  metrics->add_flag("--spectrum", mt.spectrum, "Add the horizontal power spectrum (f, power)");
+  metrics->add_option("--beat", mt.beat, "f1,f2 in cycles per pixel: add the power at |f1 - f2| (the beat of §10.4.4)")
+      ->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {
     if (*resize) return run_resize(rz);
