@@ -166,6 +166,15 @@ codes=$("$R" resize "$WORK/beat.png" --size 500x4 --filter box --colorspace code
 linear=$("$R" resize "$WORK/beat.png" --size 500x4 --filter box | "$R" metrics --beat 0.6,0.64 | jq .beat_power)
 check "beat power in codes ($codes) > 100 x linear light ($linear)" awk -v a="$codes" -v b="$linear" 'BEGIN { exit !(a > 100 * b) }'
 
+"$R" render --scene point --param w=1000,zoom=1 --pixel-filter box --size 64x64 -o "$WORK/spot.exr"
+case_ "--hicomp keeps an HDR highlight from ringing below zero"
+"$R" resize "$WORK/spot.exr" --size 16x16 --filter lanczos3 -o "$WORK/ring.pfm"
+run fconv --info "$WORK/ring.pfm"
+check "lanczos3 rings negative without it" jq -e '.min[0] < -1' "$out"
+"$R" resize "$WORK/spot.exr" --size 16x16 --filter lanczos3 --hicomp -o "$WORK/noring.pfm"
+run fconv --info "$WORK/noring.pfm"
+check "non-negative with --hicomp" jq -e '.min[0] >= 0' "$out"
+
 case_ "mipkernel: Σw = 1, periodic with 2^L, not shift-invariant (spec C4)"
 run resample mipkernel --level 3 --pos 12.0,20.0,14.4
 expect_status 0
