@@ -119,6 +119,22 @@ expect_status 0
 run fcompare "$WORK/cb.png" "$WORK/same.png"
 expect_status 0
 
+case_ "formats in and out: 16-bit PNG identity, EXR half, float TIFF, PGM on stdout"
+"$R" render --scene siemens --size 64x64 --spp 4 --depth 16 -o "$WORK/s16.png"
+run resample resize "$WORK/s16.png" --size 64x64 --filter box -o "$WORK/s16b.png"
+check "16-bit box identity is bit-exact" cmp "$WORK/s16.png" "$WORK/s16b.png"
+run resample resize "$WORK/s16.png" --size 32x32 --depth f16 -o "$WORK/h.exr"
+expect_status 0
+run fconv --info "$WORK/h.exr"
+expect_json '.width' '32'
+run resample resize "$WORK/h.exr" --size 16x16 --to tiff -o "$WORK/f.tif"
+run fconv --info "$WORK/f.tif"
+expect_json '.depth' '"float32"'
+run resample resize "$WORK/s16.png" --size 32x32 --to pgm
+check "16-bit PGM on standard output" test "$(head -c 2 "$out")" = "P5"
+run resample resize "$WORK/h.exr" --size 16x16 --depth f16 --to png
+expect_clean_failure 2 resample
+
 case_ "threads 1 and 2 give identical bytes"
 "$R" resize --size 301x177 --filter lanczos3 --threads 1 <"$WORK/zp.pfm" >"$WORK/t1.pfm"
 "$R" resize --size 301x177 --filter lanczos3 --threads 2 <"$WORK/zp.pfm" >"$WORK/t2.pfm"
