@@ -28,14 +28,24 @@ void check_supported(const Image& in) {
 
 namespace {
 
+// `lut`: decoded values by code (integer input with sRGB decoding), else nullptr and the
+// values are scaled; the table is fetched once per row, not per value.
 template <typename T>
-void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, float (*decode)(T), float scale, float* dst) {
+void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, const float* lut, float scale, float* dst) {
   const int c = m.channels(), a = alpha_channel(c);
   const T* src = m.ptr<T>(y);
+  if (!lut && (a < 0 || !enc.premultiply)) {  // plain values: one vectorisable loop
+    const std::size_t n = static_cast<std::size_t>(m.cols) * static_cast<std::size_t>(c);
+    for (std::size_t i = 0; i < n; ++i) dst[i] = static_cast<float>(src[i]) * scale;
+    return;
+  }
   for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
     for (int ch = 0; ch < c; ++ch) {
       const bool colour = ch != a;
-      dst[ch] = (colour && enc.decode_srgb) ? decode(src[ch]) : static_cast<float>(src[ch]) * scale;
+      if (colour && lut)
+        dst[ch] = lut[static_cast<std::size_t>(src[ch])];
+      else
+        dst[ch] = static_cast<float>(src[ch]) * scale;
     }
     if (enc.premultiply && a >= 0)
       for (int ch = 0; ch < c; ++ch)
@@ -43,7 +53,17 @@ void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, float (*decode
   }
 }
 
-float decode_float(float v) { return srgb_to_linear(v); }
+// Float input with sRGB decoding (--colorspace srgb on float data): per value.
+void decode_float_row(const cv::Mat& m, int y, const Encoding& enc, float* dst) {
+  const int c = m.channels(), a = alpha_channel(c);
+  const float* src = m.ptr<float>(y);
+  for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
+    for (int ch = 0; ch < c; ++ch) dst[ch] = (ch != a && enc.decode_srgb) ? srgb_to_linear(src[ch]) : src[ch];
+    if (enc.premultiply && a >= 0)
+      for (int ch = 0; ch < c; ++ch)
+        if (ch != a) dst[ch] *= dst[a];
+  }
+}
 
 // Triangular noise on [-½, ½] (the difference of two uniforms, halved): it decorrelates
 // the rounding error from the signal without the noise floor of a wider dither.
@@ -66,11 +86,12 @@ T quantise(float v, float max_code) {
 void decode_row(const cv::Mat& m, int y, const Encoding& enc, float* dst) {
   switch (m.depth()) {
     case CV_8U:
-      return decode_one_row<std::uint8_t>(m, y, enc, srgb8_to_linear, 1.0f / 255, dst);
+      return decode_one_row<std::uint8_t>(m, y, enc, enc.decode_srgb ? srgb8_table() : nullptr, 1.0f / 255, dst);
     case CV_16U:
-      return decode_one_row<std::uint16_t>(m, y, enc, srgb16_to_linear, 1.0f / 65535, dst);
+      return decode_one_row<std::uint16_t>(m, y, enc, enc.decode_srgb ? srgb16_table() : nullptr, 1.0f / 65535, dst);
     default:
-      return decode_one_row<float>(m, y, enc, decode_float, 1.0f, dst);
+      if (enc.decode_srgb) return decode_float_row(m, y, enc, dst);
+      return decode_one_row<float>(m, y, enc, nullptr, 1.0f, dst);
   }
 }
 

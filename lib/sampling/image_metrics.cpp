@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <opencv2/core.hpp>
+
 #include "core/error.hpp"
 #include "sampling/scenes.hpp"
 
@@ -47,6 +49,26 @@ ErrorMeasures compare_images(const FloatImage& test, const FloatImage& ref, cons
   m.rmse = std::sqrt(sum / static_cast<double>(values));
   m.psnr = m.rmse > 0 ? 20 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
   return m;
+}
+
+std::vector<double> row_power_spectrum(const FloatImage& img) {
+  if (img.width < 2) throw bad_input("metrics --spectrum: the image must be at least 2 pixels wide");
+  cv::Mat rows(img.height, img.width, CV_64F);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      rows.at<double>(y, x) = grey(img, static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x));
+  cv::Mat spec;
+  cv::dft(rows, spec, cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
+  const int n = img.width;
+  std::vector<double> power(static_cast<std::size_t>(n / 2 + 1), 0.0);
+  for (int y = 0; y < img.height; ++y)
+    for (int k = 0; k <= n / 2; ++k) {
+      const cv::Vec2d v = spec.at<cv::Vec2d>(y, k);
+      const bool paired = k > 0 && 2 * k != n;  // ±k both hold this frequency
+      power[static_cast<std::size_t>(k)] += (v[0] * v[0] + v[1] * v[1]) / (double(n) * n) * (paired ? 2 : 1);
+    }
+  for (auto& p : power) p /= img.height;
+  return power;
 }
 
 ZonePlateMeasures zoneplate_measures(const FloatImage& img, double numax, Band alias, Band pass) {

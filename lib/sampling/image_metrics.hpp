@@ -33,4 +33,10 @@ struct ZonePlateMeasures {
 ZonePlateMeasures zoneplate_measures(const FloatImage& img, double numax, Band alias = {0.6, 1.0},
                                      Band pass = {0.0, 0.2});
 
+// Horizontal power spectrum: the mean over rows (first channel, or the mean of R, G, B) of
+// the one-sided periodogram of each row, normalised so that a cosine of amplitude A at a
+// bin frequency contributes its mean square A²/2. Index k is frequency k / width cycles
+// per pixel, k = 0 .. width/2.
+std::vector<double> row_power_spectrum(const FloatImage& img);
+
 }  // namespace fest::sampling

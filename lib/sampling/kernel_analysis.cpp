@@ -57,14 +57,14 @@ KernelAnalysis analyse_kernel(const Kernel& k) {
   if (!has_finite_spatial(k)) {
     a.k_quarter = frequency_response(k, 0.25);
     a.k_half = frequency_response(k, 0.5);
-    for (double f = 0.75; f <= 4.0 + 1e-9; f += 0.005) a.stop_max = std::max(a.stop_max, std::fabs(frequency_response(k, f)));
+    for (double f = 0.75; f <= 3.0 + 1e-9; f += 0.005) a.stop_max = std::max(a.stop_max, std::fabs(frequency_response(k, f)));
     return a;
   }
   a.has_spatial = true;
   const Samples s = sample(k);
   a.k_quarter = response(s, 0.25);
   a.k_half = response(s, 0.5);
-  for (int i = 0; i <= 650; ++i) a.stop_max = std::max(a.stop_max, std::fabs(response(s, 0.75 + 0.005 * i)));
+  for (int i = 0; i <= 450; ++i) a.stop_max = std::max(a.stop_max, std::fabs(response(s, 0.75 + 0.005 * i)));
   // Step response S(x) = ∫_{-r}^{x} k / ∫k by the trapezoid rule on the same nodes.
   double total = 0;
   for (std::size_t i = 1; i < s.x.size(); ++i) total += 0.5 * s.h * (k.spatial(s.x[i - 1]) + k.spatial(s.x[i]));

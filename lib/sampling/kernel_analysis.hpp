@@ -20,7 +20,7 @@ struct KernelAnalysis {
 
 // Responses come from Simpson integration of k(x) with a 1e-4 px step (the kernel that
 // resize applies, truncation included); kernels without a spatial form use their closed
-// form. The stop band is scanned up to f = 4 in steps of 0.005.
+// form. The stop band is scanned up to f = 3 in steps of 0.005 (beyond, every catalogue kernel is far below its maximum).
 KernelAnalysis analyse_kernel(const Kernel& k);
 
 // Tabulations for --csv: k(x) normalised to unit area at `count` points over

@@ -142,7 +142,18 @@ Image resize(const Image& in, int width, int height, const ResizeOptions& option
     const int threads = resolve_threads(options.threads);
     const WeightTable tx = make_weight_table(m.cols, width, options.kernel, options.shift_x, options.edge);
     const WeightTable ty = make_weight_table(m.rows, height, options.kernel, options.shift_y, options.edge);
-    out = resample_columns(resample_rows_decoded(m, decode, tx, threads), ty, threads);
+    // Columns first moves the larger share of the work into the contiguous, vectorised
+    // column loop (counted ~4x cheaper per tap than the per-pixel row loop); it needs taps
+    // that move forward, so wrap and reflect edges keep rows first.
+    const double c = m.channels();
+    const double taps_x = static_cast<double>(tx.index.size()) / width, taps_y = static_cast<double>(ty.index.size()) / height;
+    const double rows_first = double(m.rows) * width * taps_x * c + double(width) * c * height * taps_y / 4;
+    const double cols_first = double(m.cols) * c * height * taps_y / 4 + double(height) * width * taps_x * c;
+    const bool forward_taps = options.edge == EdgeMode::clamp || options.edge == EdgeMode::zero;
+    if (forward_taps && cols_first < rows_first)
+      out = resample_rows(resample_columns_decoded(m, decode, ty, threads), tx, threads);
+    else
+      out = resample_columns(resample_rows_decoded(m, decode, tx, threads), ty, threads);
     if (options.clamp == ClampMode::range || (options.clamp == ClampMode::automatic && !float_out)) {
       if (float_in)
         clamp_to_input_range(to_working(in, decode), false, out);

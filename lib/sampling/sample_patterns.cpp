@@ -110,6 +110,8 @@ void check_sample_count(Pattern p, int n) {
   if (n < 1 || n > 65536) throw usage_error("{} samples per pixel is out of range [1, 65536]", n);
   if ((p == Pattern::regular || p == Pattern::jitter) && grid_side(n) * grid_side(n) != n)
     throw usage_error("pattern '{}' needs a square number of samples per pixel (got {})", pattern_name(p), n);
+  // Dart throwing costs O(N²) tests per pixel and nears its jamming limit: keep it small.
+  if (p == Pattern::poisson && n > 1024) throw usage_error("pattern 'poisson' takes at most 1024 samples per pixel (got {})", n);
   if (p == Pattern::rgss && n != 4) throw usage_error("pattern 'rgss' has exactly 4 samples per pixel (got {})", n);
 }
 

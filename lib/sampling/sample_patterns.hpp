@@ -19,7 +19,8 @@ struct Point2 {
 Pattern parse_pattern(const std::string& name);
 const char* pattern_name(Pattern p);
 
-// Checks N for the pattern (regular and jitter need a square, rgss exactly 4; 1..65536).
+// Checks N for the pattern (regular and jitter need a square, rgss exactly 4, poisson at
+// most 1024; 1..65536).
 void check_sample_count(Pattern p, int n);
 
 // The N samples of pixel (px, py).

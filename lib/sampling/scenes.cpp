@@ -38,7 +38,7 @@ double radial_lowpass(double rho, double r) {
 
 }  // namespace
 
-std::vector<std::string> scene_names() { return {"zoneplate", "sine", "siemens", "edges", "point"}; }
+std::vector<std::string> scene_names() { return {"zoneplate", "sine", "siemens", "edges", "point", "checker-plane"}; }
 
 double zoneplate_frequency(double numax, int width, int height, int i, int j) {
   const double dx = i + 0.5 - width / 2.0, dy = j + 0.5 - height / 2.0;
@@ -120,6 +120,24 @@ Scene make_scene(const std::string& name, const std::map<std::string, double>& g
       h = [k, area](double u, double v) { return k.spatial(u) * k.spatial(v) / (area * area); };
     }
     s.value = [=](double x, double y) { return 0.5 + w * h((x - x0) / zoom, (y - y0) / zoom); };
+  } else if (name == "checker-plane") {
+    // The chapter's "chequerboard pattern of any size" (§10.3.1): the plane z = 0 seen by a
+    // pinhole camera at height h pitched down by `pitch` degrees, vertical field of view
+    // `fov`; squares of side `square`; above the horizon 0.5.
+    const auto p = with_defaults(name, given, {{"h", 1}, {"pitch", 15}, {"fov", 60}, {"square", 0.5}});
+    const double h = p.at("h"), sq = p.at("square");
+    if (!(h > 0) || !(sq > 0) || !(p.at("fov") > 0 && p.at("fov") < 180) || std::fabs(p.at("pitch")) >= 90)
+      throw usage_error("scene 'checker-plane': need h > 0, square > 0, 0 < fov < 180, |pitch| < 90");
+    const double tan_half = std::tan(p.at("fov") * pi / 360), aspect = static_cast<double>(width) / height;
+    const double cp = std::cos(p.at("pitch") * pi / 180), sp = std::sin(p.at("pitch") * pi / 180);
+    s.value = [=](double x, double y) {
+      const double sx = (2 * x / width - 1) * tan_half * aspect, sy = (1 - 2 * y / height) * tan_half;
+      const double dz = -sp + sy * cp;
+      if (dz >= -1e-12) return 0.5;
+      const double t = h / -dz;
+      const long i = static_cast<long>(std::floor(t * sx / sq)), j = static_cast<long>(std::floor(t * (cp + sy * sp) / sq));
+      return ((i + j) % 2 == 0) ? 1.0 : 0.0;
+    };
   } else {
     std::string names;
     for (const auto& n : scene_names()) names += (names.empty() ? "" : ", ") + n;

@@ -63,6 +63,23 @@ void filter_row_any(const float* src, float* dst, const WeightTable& t, int c) {
   }
 }
 
+// dst[i] = Σ_j w[j] src[j][i] over whole rows: contiguous and vectorisable. Done in
+// chunks that stay in the L1 cache while every tap adds into them, instead of streaming
+// the whole output row through memory once per tap. The order of the additions per value
+// is the taps' order whatever the chunking, so results do not depend on it.
+void accumulate_rows(float* dst, const float* const* src, const float* w, std::size_t taps, std::size_t row_len) {
+  constexpr std::size_t chunk = 1024;
+  for (std::size_t i0 = 0; i0 < row_len; i0 += chunk) {
+    const std::size_t i1 = std::min(row_len, i0 + chunk);
+    for (std::size_t i = i0; i < i1; ++i) dst[i] = 0;
+    for (std::size_t j = 0; j < taps; ++j) {
+      const float wj = w[j];
+      const float* s = src[j];
+      for (std::size_t i = i0; i < i1; ++i) dst[i] += wj * s[i];
+    }
+  }
+}
+
 }  // namespace
 
 FloatImage resample_rows(const FloatImage& in, const WeightTable& table, int threads) {
@@ -85,18 +102,57 @@ FloatImage resample_rows_decoded(const cv::Mat& in, const Encoding& enc, const W
   return out;
 }
 
+FloatImage resample_columns_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads) {
+  const int c = in.channels();
+  FloatImage out(in.cols, table.n_out, c);
+  const std::size_t row_len = static_cast<std::size_t>(in.cols) * static_cast<std::size_t>(c);
+  for_row_blocks(table.n_out, threads, [&](int begin, int end) {
+    // Decoded input rows kept while output rows still read them: the taps of successive
+    // outputs move forward, so a row is decoded once per block.
+    struct Slot {
+      int row = -1;
+      std::vector<float> values;
+    };
+    std::vector<Slot> slots;
+    std::vector<const float*> sources;
+    auto decoded = [&](int row) -> const float* {
+      Slot* free_slot = nullptr;
+      for (auto& s : slots) {
+        if (s.row == row) return s.values.data();
+        if (!free_slot && s.row < 0) free_slot = &s;
+      }
+      if (!free_slot) {
+        slots.push_back({-1, std::vector<float>(row_len)});
+        free_slot = &slots.back();
+      }
+      free_slot->row = row;
+      decode_row(in, row, enc, free_slot->values.data());
+      return free_slot->values.data();
+    };
+    for (int o = begin; o < end; ++o) {
+      const std::size_t first = table.offset[static_cast<std::size_t>(o)], last = table.offset[static_cast<std::size_t>(o) + 1];
+      int lo = in.rows;
+      for (std::size_t j = first; j < last; ++j) lo = std::min(lo, table.index[j]);
+      for (auto& s : slots)
+        if (s.row < lo) s.row = -1;  // no later output reads rows above this one's first
+      sources.clear();
+      for (std::size_t j = first; j < last; ++j) sources.push_back(decoded(table.index[j]));
+      accumulate_rows(out.row(o), sources.data(), table.weight.data() + first, last - first, row_len);
+    }
+  });
+  return out;
+}
+
 FloatImage resample_columns(const FloatImage& in, const WeightTable& table, int threads) {
   FloatImage out(in.width, table.n_out, in.channels);
   const std::size_t row_len = static_cast<std::size_t>(in.width) * static_cast<std::size_t>(in.channels);
   for_row_blocks(table.n_out, threads, [&](int begin, int end) {
+    std::vector<const float*> sources;
     for (int o = begin; o < end; ++o) {
-      float* dst = out.row(o);
-      // Whole input rows are accumulated at once: contiguous memory, vectorisable.
-      for (std::size_t j = table.offset[static_cast<std::size_t>(o)]; j < table.offset[static_cast<std::size_t>(o) + 1]; ++j) {
-        const float w = table.weight[j];
-        const float* src = in.row(table.index[j]);
-        for (std::size_t i = 0; i < row_len; ++i) dst[i] += w * src[i];
-      }
+      const std::size_t first = table.offset[static_cast<std::size_t>(o)], last = table.offset[static_cast<std::size_t>(o) + 1];
+      sources.clear();
+      for (std::size_t j = first; j < last; ++j) sources.push_back(in.row(table.index[j]));
+      accumulate_rows(out.row(o), sources.data(), table.weight.data() + first, last - first, row_len);
     }
   });
   return out;

@@ -11,6 +11,8 @@ float linear_to_srgb(float l);
 // Table lookups for integer codes: decoding every pixel through pow() would dominate the
 // cost of a small kernel.
 float srgb8_to_linear(std::uint8_t code);
+const float* srgb8_table();   // the 256 decoded values, for loops that look up many codes
+const float* srgb16_table();  // the 65536 decoded values
 float srgb16_to_linear(std::uint16_t code);
 
 }  // namespace fest::sampling

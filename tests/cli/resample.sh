@@ -119,6 +119,22 @@ expect_status 0
 run fcompare "$WORK/cb.png" "$WORK/same.png"
 expect_status 0
 
+case_ "formats in and out: 16-bit PNG identity, EXR half, float TIFF, PGM on stdout"
+"$R" render --scene siemens --size 64x64 --spp 4 --depth 16 -o "$WORK/s16.png"
+run resample resize "$WORK/s16.png" --size 64x64 --filter box -o "$WORK/s16b.png"
+check "16-bit box identity is bit-exact" cmp "$WORK/s16.png" "$WORK/s16b.png"
+run resample resize "$WORK/s16.png" --size 32x32 --depth f16 -o "$WORK/h.exr"
+expect_status 0
+run fconv --info "$WORK/h.exr"
+expect_json '.width' '32'
+run resample resize "$WORK/h.exr" --size 16x16 --to tiff -o "$WORK/f.tif"
+run fconv --info "$WORK/f.tif"
+expect_json '.depth' '"float32"'
+run resample resize "$WORK/s16.png" --size 32x32 --to pgm
+check "16-bit PGM on standard output" test "$(head -c 2 "$out")" = "P5"
+run resample resize "$WORK/h.exr" --size 16x16 --depth f16 --to png
+expect_clean_failure 2 resample
+
 case_ "threads 1 and 2 give identical bytes"
 "$R" resize --size 301x177 --filter lanczos3 --threads 1 <"$WORK/zp.pfm" >"$WORK/t1.pfm"
 "$R" resize --size 301x177 --filter lanczos3 --threads 2 <"$WORK/zp.pfm" >"$WORK/t2.pfm"
@@ -140,6 +156,40 @@ case_ "display lcd replicates pixels"
 run resample display "$WORK/half.png" --model lcd --factor 2 -o "$WORK/shown.png"
 expect_status 0
 check "512x512 of 188" test "$(histogram "$WORK/shown.png")" = "188:262144"
+
+"$R" render --scene siemens --size 512x512 --spp 4 -o "$WORK/star.pfm"
+display_rmse() {  # prefilter display: the A -> D error of the 2-D chain (§10.5 in 2-D)
+  "$R" resize --size 64x64 --filter "$1" <"$WORK/star.pfm" | "$R" display --model "$2" --factor 8 |
+    "$R" metrics --ref "$WORK/star.pfm" | jq .rmse
+}
+case_ "the dual prefilter has the smallest error on its own display (§10.5, 2-D)"
+for d in tent gaussian:sigma=0.4; do
+  dual=$(display_rmse "dual:$d" "$d")
+  for other in box lanczos3 "$d"; do
+    e=$(display_rmse "$other" "$d")
+    check "dual:$d ($dual) < $other ($e) on a $d display" awk -v a="$dual" -v b="$e" 'BEGIN { exit !(a < b) }'
+  done
+done
+
+"$R" render --scene sine --param f=0.1 --size 1000x2 --spp 64 --pattern regular -o "$WORK/sine.pfm"
+case_ "spectrum: a box-filtered sine keeps sinc(f) of its amplitude"
+run resample metrics "$WORK/sine.pfm" --beat 0.1,0
+near '.beat_power' 0.120937 2e-4   # (½ sinc(0.1))² / 2
+
+case_ "beat of two gratings appears when filtering ignores gamma (§10.4.4)"
+"$R" render --scene sine --param f=0.30,f2=0.32 --size 1000x8 --spp 16 --depth 8 -o "$WORK/beat.png"
+codes=$("$R" resize "$WORK/beat.png" --size 500x4 --filter box --colorspace codes | "$R" metrics --beat 0.6,0.64 | jq .beat_power)
+linear=$("$R" resize "$WORK/beat.png" --size 500x4 --filter box | "$R" metrics --beat 0.6,0.64 | jq .beat_power)
+check "beat power in codes ($codes) > 100 x linear light ($linear)" awk -v a="$codes" -v b="$linear" 'BEGIN { exit !(a > 100 * b) }'
+
+"$R" render --scene point --param w=1000,zoom=1 --pixel-filter box --size 64x64 -o "$WORK/spot.exr"
+case_ "--hicomp keeps an HDR highlight from ringing below zero"
+"$R" resize "$WORK/spot.exr" --size 16x16 --filter lanczos3 -o "$WORK/ring.pfm"
+run fconv --info "$WORK/ring.pfm"
+check "lanczos3 rings negative without it" jq -e '.min[0] < -1' "$out"
+"$R" resize "$WORK/spot.exr" --size 16x16 --filter lanczos3 --hicomp -o "$WORK/noring.pfm"
+run fconv --info "$WORK/noring.pfm"
+check "non-negative with --hicomp" jq -e '.min[0] >= 0' "$out"
 
 case_ "mipkernel: Σw = 1, periodic with 2^L, not shift-invariant (spec C4)"
 run resample mipkernel --level 3 --pos 12.0,20.0,14.4
@@ -165,6 +215,28 @@ near '.max[1]' 0 1e-6
 run resample normalmip --height-map --height-scale 2 --naive "$WORK/h.pfm" -o "$WORK/naive"
 run fconv --info "$WORK/naive_4_cov.exr"
 near '.max[0]' 0 1e-12
+
+case_ "texture: EWA and trilinear beat the aliasing lookups on an oblique checker plane (spec T1, small)"
+awk 'BEGIN { print "P2\n256 256\n255"; for (y = 0; y < 256; y++) { s = ""; for (x = 0; x < 256; x++) s = s ((int(x / 8) + int(y / 8)) % 2 ? "255 " : "0 "); print s } }' >"$WORK/chk.pgm"
+MAP=plane:h=1,pitch=30,fov=60,period=16
+"$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --aniso-mask 4 -o "$WORK/mask.pgm"
+"$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --ground-truth -o "$WORK/gt.pfm"
+for m in nearest bilinear trilinear aniso:1 aniso:16 ewa; do
+  "$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --method $m -o "$WORK/tex_$m.pfm"
+  eval "rmse_${m%%:*}${m#*:}=$("$R" metrics "$WORK/tex_$m.pfm" --ref "$WORK/gt.pfm" --mask "$WORK/mask.pgm" | jq .rmse)"
+done
+lt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
+check "ewa < trilinear ($rmse_ewaewa < $rmse_trilineartrilinear)" lt "$rmse_ewaewa" "$rmse_trilineartrilinear"
+check "ewa < aniso:16" lt "$rmse_ewaewa" "$rmse_aniso16"
+check "trilinear < bilinear" lt "$rmse_trilineartrilinear" "$rmse_bilinearbilinear"
+check "trilinear < nearest" lt "$rmse_trilineartrilinear" "$rmse_nearestnearest"
+check "aniso:1 is trilinear" cmp "$WORK/tex_aniso:1.pfm" "$WORK/tex_trilinear.pfm"
+
+case_ "texture without a mapping, and --uv with one channel"
+run resample texture --tex "$WORK/chk.pgm" --size 64x48
+expect_clean_failure 2 resample
+run resample texture --tex "$WORK/chk.pgm" --uv "$WORK/chk.pgm" --size 256x256
+expect_clean_failure 3 resample
 
 # --- bad input -----------------------------------------------------------------------------
 case_ "empty standard input"

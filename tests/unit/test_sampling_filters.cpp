@@ -220,3 +220,35 @@ TEST(SamplingSlopePyramid, KeepsTheRoughnessOfASineHeightField) {
   EXPECT_NEAR(naive[4].normal.data[2], 1, 1e-6);
   EXPECT_EQ(naive[4].covariance.data[0], 0);
 }
+
+TEST(SamplingResize, HalfPixelShiftOfABandLimitedSine) {
+  // Spec §5 translation consistency: --shift 0.5 of a sine of f = 0.1 is the sine shifted by
+  // half a pixel, in phase exactly (the taps are symmetric about the new centre), with the
+  // amplitude the normalised half-sample taps give: Σ w cos(2πfd) / Σ w over d = ±½, ±3/2, ...
+  // That is 1.0034 for lanczos3 -- the spec's 1e-3 does not hold for it -- and closer to 1
+  // for longer windows.
+  const int n = 200;
+  const double f = 0.1;
+  FloatImage img(n, 1, 1);
+  for (int x = 0; x < n; ++x) img.data[static_cast<std::size_t>(x)] = static_cast<float>(std::cos(2 * pi * f * (x + 0.5)));
+  double previous = 1;
+  for (double a : {3.0, 8.0}) {
+    double sw = 0, sc = 0;
+    for (double d = 0.5; d < a; d += 1) {
+      const double w = std::sin(pi * d) / (pi * d) * std::sin(pi * d / a) / (pi * d / a);
+      sw += 2 * w;
+      sc += 2 * w * std::cos(2 * pi * f * d);
+    }
+    const double gain = sc / sw;
+    ResizeOptions o;
+    o.kernel = make_kernel(a == 3 ? "lanczos3" : "lanczos:a=8");
+    o.shift_x = 0.5;
+    o.clamp = ClampMode::none;
+    const FloatImage out = resize_working(img, n, 1, o);
+    for (int x = 10; x < n - 10; ++x)  // away from the clamped ends
+      EXPECT_NEAR(out.data[static_cast<std::size_t>(x)], gain * std::cos(2 * pi * f * (x + 1.0)), 1e-5) << a;
+    EXPECT_LT(std::fabs(gain - 1), 4e-3);
+    EXPECT_LT(std::fabs(gain - 1), previous);
+    previous = std::fabs(gain - 1);
+  }
+}

@@ -210,7 +210,7 @@ TEST(SamplingResize, AbsurdSizesAndInputs) {
   expect_status([&] { resize(in, 0, 10); }, fest::Status::usage, "must be positive");
   expect_status([&] { resize(in, 10, -1); }, fest::Status::usage, "must be positive");
   expect_status([&] { resize(in, 70000, 70000); }, fest::Status::usage, "2^31");
-  expect_status([&] { resize(in, 4, 4, with_kernel("sinc")); }, fest::Status::usage, "finite support");
+  EXPECT_NO_THROW(resize(in, 2, 2, with_kernel("sinc")));  // the DCT path (no finite support needed)
   expect_status([&] { resize(Image{}, 4, 4); }, fest::Status::bad_input, "empty");
   Image doubles;
   doubles.pixels = cv::Mat(4, 4, CV_64FC1, cv::Scalar(0));

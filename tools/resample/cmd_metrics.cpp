@@ -38,7 +38,10 @@ nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(
 
 int run_metrics(const MetricsArgs& a) {
   if (a.domain != "linear" && a.domain != "encoded") throw usage_error("--domain: '{}' is not linear or encoded", a.domain);
-  if (a.ref.empty() && a.zoneplate.empty()) throw usage_error("metrics needs --ref and/or --zoneplate");
+  if (a.ref.empty() && a.zoneplate.empty() && !a.spectrum && a.beat.empty())
+    throw usage_error("metrics needs --ref, --zoneplate, --spectrum or --beat");
+  if (!a.beat.empty() && (a.beat.size() != 2 || !std::isfinite(a.beat[0]) || !std::isfinite(a.beat[1])))
+    throw usage_error("--beat takes f1,f2");
   if (a.alias_band.size() != 2 || a.pass_band.size() != 2) throw usage_error("a band is lo,hi");
   std::map<std::string, double> zp;
   if (!a.zoneplate.empty())
@@ -74,6 +77,21 @@ int run_metrics(const MetricsArgs& a) {
     j["pr"] = z.pr;
     j["n_alias"] = z.n_alias;
     j["n_pass"] = z.n_pass;
+  }
+  if (a.spectrum || !a.beat.empty()) {
+    const std::vector<double> power = row_power_spectrum(t);
+    if (a.spectrum) {
+      std::vector<double> f(power.size());
+      for (std::size_t k = 0; k < f.size(); ++k) f[k] = static_cast<double>(k) / t.width;
+      j["spectrum"] = {{"f", f}, {"power", power}};
+    }
+    if (!a.beat.empty()) {
+      const double df = std::fabs(a.beat[0] - a.beat[1]);
+      const auto k = static_cast<std::size_t>(std::lround(df * t.width));
+      if (k >= power.size()) throw usage_error("--beat: |f1 - f2| = {} is beyond the Nyquist frequency", df);
+      j["beat_frequency"] = static_cast<double>(k) / t.width;
+      j["beat_power"] = power[k];
+    }
   }
   write_output("-", j.dump() + "\n");
   return 0;

@@ -2,6 +2,7 @@
 // The subcommands of resample (spec §4): option structs filled by main.cpp's CLI11
 // parser, and one function per subcommand that wires formats -> lib/sampling -> output.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,7 @@ struct RenderArgs {
   std::string pixel_filter = "box";
   unsigned long long seed = 1;
   bool ground_truth = false;
-  int gt_spp = 1024;
+  int gt_spp = 4096;
   std::string colorspace = "srgb";  // integer output: sRGB codes, or linear (plain values)
   int threads = 0;
 };
@@ -89,7 +90,24 @@ struct MetricsArgs {
   std::vector<double> alias_band{0.6, 1.0}, pass_band{0.0, 0.2};
   std::string mask;
   std::string domain = "linear";
+  bool spectrum = false;
+  std::vector<double> beat;  // f1,f2: report the power at |f1 − f2|
 };
+
+struct TextureArgs {
+  ImageOutput out;
+  std::string tex, map, uv;
+  std::string size = "512x384";
+  std::string method = "trilinear";
+  std::string mip = "box";
+  double lod_bias = 0;
+  bool ground_truth = false;
+  double aniso_mask = 0;  // > 0: write the mask of pixels whose anisotropy exceeds it
+  unsigned long long seed = 1;
+  int threads = 0;
+};
+
+int run_texture(const TextureArgs& a);
 
 struct NormalMipArgs {
   std::string input = "-";

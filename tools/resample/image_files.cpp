@@ -43,8 +43,8 @@ Format output_format(const std::string& to, const std::string& path, int cv_dept
 int default_depth(Format f, int image_depth) {
   const bool float_format = f == Format::pfm || f == Format::exr;
   if (float_format) return CV_32F;
+  if (f == Format::tiff) return image_depth;  // TIFF holds 8, 16 bits and float alike
   if (image_depth == CV_32F) return CV_8U;
-  if (f == Format::pfm) return CV_32F;
   return image_depth;
 }
 

@@ -29,8 +29,8 @@ Depth parse_depth(const std::string& text);
 // PNG for integer images and PFM for float ones.
 fest::formats::Format output_format(const std::string& to, const std::string& path, int cv_depth);
 
-// The depth a format can hold when --depth was not given: float formats get f32, integer
-// formats keep an integer depth (8 when the image is float).
+// The depth a format can hold when --depth was not given: float formats get f32, TIFF
+// keeps the image's depth, integer formats keep an integer depth (8 when it is float).
 int default_depth(fest::formats::Format f, int image_depth);
 
 void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half);

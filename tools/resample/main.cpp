@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   RenderArgs rd;
   auto* render = app.add_subcommand("render", "Render an analytic scene with supersampling");
   add_output(render, rd.out);
-  render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point")->default_val("zoneplate");
+  render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
   render->add_option("--param", rd.params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
   render->add_option("--size", rd.size, "Image size WxH")->default_val("256x256");
   render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
@@ -80,8 +80,23 @@ int main(int argc, char** argv) {
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
   render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
-  render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(1024);
+  render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(4096);
   fest::cli::add_threads(*render, rd.threads);
+
+  TextureArgs tx;
+  auto* texture = app.add_subcommand("texture", "Texture minification through mip-map lookups, EWA or dense ground truth");
+  add_output(texture, tx.out);
+  texture->add_option("--tex", tx.tex, "Texture image (filtered in linear light, one channel)")->required();
+  texture->add_option("--map", tx.map, "plane:h=1,pitch=10,fov=60,period=1 (ground plane seen by a pinhole camera)");
+  texture->add_option("--uv", tx.uv, "Per-pixel texture coordinates in [0,1]: a 2-channel image of --size");
+  texture->add_option("--size", tx.size, "Screen size WxH")->default_val("512x384");
+  texture->add_option("--method", tx.method, "nearest, bilinear, trilinear, aniso:N[:gauss], ewa[:maxaniso=16]")->default_val("trilinear");
+  texture->add_option("--mip", tx.mip, "Pyramid filter: box, gaussian, lanczos3")->default_val("box");
+  texture->add_option("--lod-bias", tx.lod_bias, "Added to the mip level")->default_val(0);
+  texture->add_flag("--ground-truth", tx.ground_truth, "Dense supersampled reference instead of a lookup");
+  texture->add_option("--aniso-mask", tx.aniso_mask, "Write the mask (0/255) of pixels whose footprint anisotropy exceeds this");
+  texture->add_option("--seed", tx.seed, "Seed of the ground truth's samples")->default_val(1);
+  fest::cli::add_threads(*texture, tx.threads);
 
   NormalMipArgs nm;
   auto* normalmip = app.add_subcommand("normalmip", "Slope-moment pyramid of a normal or height map: PREFIX_<k>_normal.exr, PREFIX_<k>_cov.exr");
@@ -124,6 +139,9 @@ int main(int argc, char** argv) {
   metrics->add_option("--pass-band", mt.pass_band, "Pass band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--mask", mt.mask, "One-channel image: compare where non-zero");
   metrics->add_option("--domain", mt.domain, "linear or encoded")->default_val("linear");
+  metrics->add_flag("--spectrum", mt.spectrum, "Add the horizontal power spectrum (f, power)");
+  metrics->add_option("--beat", mt.beat, "f1,f2 in cycles per pixel: add the power at |f1 - f2| (the beat of §10.4.4)")
+      ->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {
     if (*resize) return run_resize(rz);
@@ -134,6 +152,7 @@ int main(int argc, char** argv) {
     }
     if (*render) return run_render(rd);
     if (*normalmip) return run_normalmip(nm);
+    if (*texture) return run_texture(tx);
     if (*kernel) return run_kernel(kn);
     if (*chain) return run_chain1d(ch);
     if (*mipkernel) return run_mipkernel(mk);

@@ -1,0 +1,82 @@
+// Compute-only benchmark of resample's resize (spec resample.md §7 R1/R2: "compute only
+// (no I/O), 1 thread, codes mode: ≤ 120 ms"), in process on synthetic images, so the
+// figures exclude file I/O and process start-up; tests/bench/resample_bench.sh measures
+// end to end against the anchors. One JSON line per case, minimum of 3 runs, in ms.
+//
+//   build/bin/bench_resample
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "core/image.hpp"
+#include "sampling/resize.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double min_ms(int runs, const std::function<void()>& f) {
+  double best = 1e300;
+  for (int i = 0; i < runs; ++i) {
+    const auto start = Clock::now();
+    f();
+    best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  return best;
+}
+
+// A photo-sized RGB8 image with detail at every scale (three zone plates).
+fest::Image r1_input() {
+  fest::Image img;
+  img.pixels.create(3279, 4928, CV_8UC3);
+  for (int y = 0; y < img.pixels.rows; ++y)
+    for (int x = 0; x < img.pixels.cols; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double r2 = std::pow(x - 2464.0, 2) + std::pow(y - 1639.5, 2);
+        img.pixels.ptr<std::uint8_t>(y)[3 * x + c] =
+            static_cast<std::uint8_t>(127.5 + 127.5 * std::cos(3.14159265358979 * (0.03 + 0.01 * c) * r2 / 2464));
+      }
+  return img;
+}
+
+fest::Image r2_input() {
+  fest::Image img;
+  img.color_space = fest::ColorSpace::linear;
+  img.pixels.create(8192, 8192, CV_32FC1);
+  for (int y = 0; y < 8192; ++y)
+    for (int x = 0; x < 8192; ++x) img.pixels.ptr<float>(y)[x] = static_cast<float>(0.5 + 0.5 * std::sin(0.001 * x * y));
+  return img;
+}
+
+void report(const char* name, const char* mode, int threads, double ms) {
+  std::printf("{\"bench\":\"bench_resample\",\"case\":\"%s\",\"mode\":\"%s\",\"threads\":%d,\"ms\":%.1f}\n", name, mode, threads, ms);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main() {
+  using namespace fest::sampling;
+  {
+    const fest::Image in = r1_input();
+    for (int threads : {1, 2})
+      for (bool linear : {false, true}) {
+        ResizeOptions o;
+        o.kernel = make_kernel("lanczos3");
+        o.linear_light = linear;
+        o.threads = threads;
+        report("R1", linear ? "linear" : "codes", threads, min_ms(3, [&] { resize(in, 852, 567, o); }));
+      }
+  }
+  {
+    const fest::Image in = r2_input();
+    ResizeOptions o;
+    o.kernel = make_kernel("mitchell");
+    o.threads = 2;
+    report("R2", "float", 2, min_ms(3, [&] { resize(in, 1024, 1024, o); }));
+  }
+  return 0;
+}

@@ -1,0 +1,90 @@
+// resample texture: a texture seen through a screen mapping, filtered by mip-map lookups
+// (or the dense ground truth), as an image; optionally the mask of anisotropic pixels.
+#include <string>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "image_files.hpp"
+#include "sampling/float_image.hpp"
+#include "sampling/kernel_params.hpp"
+#include "sampling/texture.hpp"
+#include "sizes.hpp"
+
+namespace resample_tool {
+
+using namespace fest;
+using namespace fest::sampling;
+
+namespace {
+
+// One channel in linear light: grey as is, colour as the mean of R, G, B.
+FloatImage grey_linear(const Image& img) {
+  Encoding enc;
+  enc.decode_srgb = img.color_space == ColorSpace::srgb && img.pixels.depth() != CV_32F;
+  const FloatImage f = to_working(img, enc);
+  if (f.channels <= 2) {
+    FloatImage g(f.width, f.height, 1);
+    for (std::size_t i = 0; i < g.data.size(); ++i) g.data[i] = f.data[i * static_cast<std::size_t>(f.channels)];
+    return g;
+  }
+  FloatImage g(f.width, f.height, 1);
+  for (std::size_t i = 0; i < g.data.size(); ++i) {
+    const float* p = f.data.data() + i * static_cast<std::size_t>(f.channels);
+    g.data[i] = (p[0] + p[1] + p[2]) / 3;
+  }
+  return g;
+}
+
+}  // namespace
+
+int run_texture(const TextureArgs& a) {
+  if (a.tex.empty()) throw usage_error("texture needs --tex");
+  if (a.map.empty() == a.uv.empty()) throw usage_error("texture needs exactly one of --map and --uv");
+  const auto [w, h] = parse_size(a.size, "--size");
+  TextureOptions o = parse_texture_method(a.method);
+  o.lod_bias = a.lod_bias;
+  o.threads = a.threads;
+  if (!std::isfinite(a.lod_bias)) throw usage_error("--lod-bias must be finite");
+  std::map<std::string, double> plane;
+  if (!a.map.empty()) {
+    const KernelSpelling s = split_kernel_spelling(a.map);
+    if (s.name != "plane") throw usage_error("--map: unknown mapping '{}' (plane:h=..,pitch=..,fov=..,period=..)", s.name);
+    plane = parse_kernel_params("plane", s.rest, {{"h", 1}, {"pitch", 10}, {"fov", 60}, {"period", 1}});
+  }
+  const Depth depth = parse_depth(a.out.depth.empty() ? "" : a.out.depth);
+
+  const LoadedImage tex = load_image(a.tex);
+  const FloatImage texture = grey_linear(tex.image);
+  FloatImage uv;
+  if (!a.uv.empty()) {
+    const LoadedImage u = load_image(a.uv);
+    if (u.image.pixels.channels() != 2)
+      throw bad_input("--uv needs an image with 2 channels (u, v), got {} ({})", u.image.pixels.channels(), a.uv);
+    uv = to_working(u.image, Encoding{});
+    if (uv.width != w || uv.height != h) throw bad_input("--uv is {}x{}, --size {}x{}", uv.width, uv.height, w, h);
+  }
+  const TextureMap map = a.uv.empty() ? plane_map(plane.at("h"), plane.at("pitch"), plane.at("fov"), plane.at("period"), w, h,
+                                                  texture.width, texture.height)
+                                      : table_map(uv, texture.width, texture.height);
+  FloatImage screen;
+  if (a.aniso_mask > 0) {
+    const FloatImage aniso = footprint_anisotropy(map, w, h);
+    screen = FloatImage(w, h, 1);
+    for (std::size_t i = 0; i < aniso.data.size(); ++i) screen.data[i] = aniso.data[i] > a.aniso_mask ? 1.0f : 0.0f;
+  } else if (a.ground_truth) {
+    screen = texture_ground_truth(texture, map, w, h, a.seed, a.threads);
+  } else {
+    screen = texture_screen(build_pyramid(texture, a.mip, a.threads), map, w, h, o);
+  }
+  const int out_depth = a.aniso_mask > 0 ? CV_8U : depth.cv_depth >= 0 ? depth.cv_depth : CV_32F;
+  const auto f = output_format(a.out.to, a.out.output, out_depth);
+  Image out;
+  Encoding enc;
+  enc.decode_srgb = out_depth != CV_32F && a.aniso_mask <= 0;  // integer images hold sRGB codes
+  out.pixels = from_working(screen, out_depth, enc);
+  out.color_space = enc.decode_srgb ? ColorSpace::srgb : ColorSpace::linear;
+  store_image(out, a.out.output, f, depth.half);
+  return 0;
+}
+
+}  // namespace resample_tool
