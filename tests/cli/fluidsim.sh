@@ -101,6 +101,15 @@ expect_json '[.width, .height]' '[34,34]'
 run fluidsim render "$WORK/one.stream" --mode mip --to pfm -o "$WORK/r.pfm"
 expect_status 0
 
+case_ "render reads VTI, PFM and volumes: the same field gives the same image"
+run fluidsim render "$WORK/v/f00001.vti" --mode slice --axis z --to pfm -o "$WORK/from_vti.pfm"
+expect_status 0
+"$FEST_BIN/fluidsim" run "$SCENE3D" --frames 2 --threads 2 | "$FEST_BIN/fluidsim" render --mode slice --axis z --to pfm -o "$WORK/from_stream%d.pfm"
+check "VTI and stream give the same slice" cmp "$WORK/from_vti.pfm" "$WORK/from_stream1.pfm"
+run fluidsim render "$WORK/p/d01.pfm" --mode slice --to pfm -o "$WORK/d01_again.pfm"
+expect_status 0
+check "a 2-D slice of a PFM field is the field itself" cmp "$WORK/p/d01.pfm" "$WORK/d01_again.pfm"
+
 # --- bad input: one line, the right status, nothing on stdout, no partial file ---
 case_ "--help and a missing scene file"
 run fluidsim run --help
