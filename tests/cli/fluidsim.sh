@@ -56,6 +56,9 @@ case_ "determinism: --threads 1 and 2 give identical bytes (3-D, parallel loops 
 "$FEST_BIN/fluidsim" run "$SCENE3D" --threads 1 >"$WORK/t1.stream"
 "$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 >"$WORK/t2.stream"
 check "identical streams" cmp "$WORK/t1.stream" "$WORK/t2.stream"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 --interp 2 >"$WORK/p_on.stream"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 --interp 2 --pipeline off >"$WORK/p_off.stream"
+check "--pipeline on (solver thread ahead of the writer) and off give identical bytes" cmp "$WORK/p_on.stream" "$WORK/p_off.stream"
 
 case_ "VTI frames: image data with the wall nodes, spacing h, velocity and density arrays"
 mkdir -p "$WORK/v"

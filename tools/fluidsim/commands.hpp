@@ -20,6 +20,7 @@ struct RunOptions {
   std::string grid = "collocated";
   std::string precision = "float";
   bool mass_correct = false;
+  std::string pipeline = "on";
   std::string report, stats;
   bool progress = false;
   bool quiet = false;

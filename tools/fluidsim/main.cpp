@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   r->add_option("--grid", run.grid, "Grid: collocated (the paper's)");
   r->add_option("--precision", run.precision, "Output values: float or double");
   r->add_flag("--mass-correct", run.mass_correct, "Rescale each scalar after advection to keep its weighted sum");
+  r->add_option("--pipeline", run.pipeline, "on: the solver thread runs ahead of the frame writer (3-slot ring); off: one thread")
+      ->check(CLI::IsMember({"on", "off"}));
   r->add_option("--report", run.report, "Write totals and figures as JSON");
   r->add_option("--stats", run.stats, "Write one JSON line of figures per frame");
   r->add_flag("--progress", run.progress, "Show a progress bar");

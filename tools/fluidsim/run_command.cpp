@@ -3,7 +3,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <optional>
+#include <thread>
+
+#include <omp.h>
 
 #include <nlohmann/json.hpp>
 #include <vtkDoubleArray.h>
@@ -20,6 +24,7 @@
 #include "fluidsim/frame.hpp"
 #include "fluidsim/operators.hpp"
 #include "fluidsim/simulator.hpp"
+#include "fluidsim/state_ring.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/volume/volume_io.hpp"
@@ -236,21 +241,78 @@ int run_command(const RunOptions& o) {
   const Simulator sim(scene, so);
   const int K = scene.interp;
   const double dt = K * scene.frame_dt;
-  State cur = sim.initial_state();
-  std::optional<State> next;
-  long cur_level = 0;
+  // The last simulation level a frame needs (the next one when the last frame lies
+  // between two states).
+  const long last_frame = scene.frames - 1;
+  const long last_level = last_frame / K + (last_frame % K ? 1 : 0);
+
+  // States come from the solver through the 3-slot ring (the solver thread runs ahead
+  // while this thread interpolates and writes), or, with --pipeline off, are computed
+  // here on demand. Both give the same bytes.
+  const bool pipeline = o.pipeline == "on";
+  StateRing ring(3);
+  const int nthreads = omp_threads();
+  auto produce = [&] {
+    try {
+      omp_set_num_threads(nthreads);  // a new thread starts from the default
+      State s = sim.initial_state();
+      ring.push({0, s, {}});
+      for (long l = 1; l <= last_level && !ring.cancelled(); ++l) {
+        const StepStats st = sim.step(s, dt);
+        ring.push({l, s, st});
+      }
+      ring.finish();
+    } catch (...) {
+      ring.finish(std::current_exception());
+    }
+  };
+  std::thread solver_thread;
+  struct Joiner {
+    StateRing& ring;
+    std::thread& t;
+    ~Joiner() {
+      ring.cancel();
+      if (t.joinable()) t.join();
+    }
+  } joiner{ring, solver_thread};
+  std::deque<RingEntry> inline_states;  // --pipeline off
+  auto get_level = [&](long level) -> const RingEntry& {
+    if (pipeline) return ring.get(level);
+    while (inline_states.empty() || inline_states.back().level < level) {
+      if (inline_states.empty()) {
+        inline_states.push_back({0, sim.initial_state(), {}});
+      } else {
+        RingEntry next{inline_states.back().level + 1, inline_states.back().state, {}};
+        next.stats = sim.step(next.state, dt);
+        inline_states.push_back(std::move(next));
+      }
+    }
+    for (const RingEntry& e : inline_states)
+      if (e.level == level) return e;
+    throw runtime_failure("internal: level {} was released", level);
+  };
+  auto release_below = [&](long level) {
+    if (pipeline) {
+      ring.release_below(level);
+      return;
+    }
+    while (!inline_states.empty() && inline_states.front().level < level) inline_states.pop_front();
+  };
+  if (pipeline) solver_thread = std::thread(produce);
 
   json stats_lines = json::array();
   std::string stats_text;
   double max_div = 0.0, max_div_rel = 0.0, peak_speed = 0.0;
   double total_ms[7] = {0, 0, 0, 0, 0, 0, 0};  // force advect diffuse project scalars interp write
-  long sim_steps = 0;
+  long sim_steps = 0, counted = 0;
   const auto t_start = Clock::now();
   Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress) && !o.quiet);
 
-  auto advance = [&](const State& from) {
-    State s = from;
-    const StepStats st = sim.step(s, dt);
+  // Adds a level's step figures to the totals once; returns them when new.
+  auto account = [&](const RingEntry& e, StepStats& last) {
+    if (e.level <= counted) return false;
+    counted = e.level;
+    const StepStats& st = e.stats;
     ++sim_steps;
     total_ms[0] += st.ms_force;
     total_ms[1] += st.ms_advect;
@@ -260,7 +322,8 @@ int run_command(const RunOptions& o) {
     max_div = std::max(max_div, st.projection.max_div_after);
     if (st.projection.max_div_before > 0)
       max_div_rel = std::max(max_div_rel, st.projection.max_div_after / st.projection.max_div_before);
-    return std::make_pair(s, st);
+    last = st;
+    return true;
   };
 
   for (long f = 0; f < scene.frames; ++f) {
@@ -268,26 +331,18 @@ int run_command(const RunOptions& o) {
     const int phase = static_cast<int>(f % K);
     StepStats last{};
     bool stepped = false;
-    while (cur_level < level) {
-      if (!next) {
-        auto [s, st] = advance(cur);
-        next = std::move(s);
-        last = st;
-        stepped = true;
-      }
-      cur = std::move(*next);
-      next.reset();
-      ++cur_level;
-    }
-    if (phase != 0 && !next) {
-      auto [s, st] = advance(cur);
-      next = std::move(s);
-      last = st;
-      stepped = true;
+    const RingEntry& a = get_level(level);
+    stepped = account(a, last) || stepped;
+    const RingEntry* b = nullptr;
+    if (phase != 0) {
+      b = &get_level(level + 1);
+      stepped = account(*b, last) || stepped;
     }
     auto t0 = Clock::now();
     // Frame time f * frame_dt: the state itself, or (1 - a) X^n + a X^(n+1).
-    const State frame_state = phase == 0 ? cur : blend(cur, *next, static_cast<double>(phase) / K);
+    State blended;
+    if (phase != 0) blended = blend(a.state, b->state, static_cast<double>(phase) / K);
+    const State& frame_state = phase == 0 ? a.state : blended;
     const double ms_interp = phase == 0 ? 0.0 : ms_since(t0);
     total_ms[5] += ms_interp;
     Frame frame = make_frame(layout, frame_state, scalar_names, fields, f, f * scene.frame_dt);
@@ -318,6 +373,7 @@ int run_command(const RunOptions& o) {
       stats_text += line.dump() + "\n";
       stats_lines.push_back(std::move(line));
     }
+    release_below(level);
     progress.advance();
   }
   progress.finish();
@@ -335,6 +391,7 @@ int run_command(const RunOptions& o) {
                 {"solver", poisson_name(so.projection.solver)},
                 {"order", o.order},
                 {"threads", omp_threads()},
+                {"pipeline", pipeline},
                 {"dims", std::vector<int>(scene.dims.begin(), scene.dims.begin() + scene.dim)},
                 {"mean_ms",
                  {{"force", total_ms[0] / steps},
