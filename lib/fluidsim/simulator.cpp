@@ -95,10 +95,31 @@ void abc_flow(const Layout& L, Velocity& u) {
       }
 }
 
-State Simulator::initial_state() const {
+State Simulator::initial_state(const State* given) const {
   State s;
   for (int c = 0; c < 3; ++c) s.u[c] = c < layout_.dim ? layout_.zeros() : Field();
   const std::string& kind = scene_.init.kind;
+  if (given) {
+    const std::string where = scene_.init.file.empty() ? std::string("init") : scene_.init.file;
+    auto check = [&](const Field& f) {
+      if (f.size() != layout_.count())
+        throw bad_input("init file has {} nodes, the scene's grid stores {} ({})", f.size(), layout_.count(), where);
+      for (double v : f)
+        if (!std::isfinite(v)) throw bad_input("init file holds non-finite values ({})", where);
+    };
+    for (int c = 0; c < layout_.dim; ++c) {
+      check(given->u[c]);
+      s.u[c] = given->u[c];
+    }
+    if (given->s.size() != scene_.scalars.size())
+      throw bad_input("init gives {} scalars, the scene has {} ({})", given->s.size(), scene_.scalars.size(), where);
+    for (const Field& f : given->s) check(f);
+    s.s = given->s;
+    enforce_walls(layout_, s.u, scene_.no_slip);
+    projector_->project(s.u);
+    return s;
+  }
+  if (kind == "file") throw bad_input("init names a file ({}) but no fields were read from it", scene_.init.file);
   if (kind == "taylor-green") {
     taylor_green(layout_, s.u);
   } else if (kind == "abc") {

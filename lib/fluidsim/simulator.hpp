@@ -41,7 +41,10 @@ class Simulator {
 
   const Layout& layout() const noexcept { return layout_; }
   const Scene& scene() const noexcept { return scene_; }
-  State initial_state() const;
+  // The scene's initial state; `given` (fields read from an init file by the caller, on
+  // the stored grid) replaces the analytic ones. Throws Status::bad_input when its sizes
+  // differ from the grid or it holds non-finite values. The velocity is projected.
+  State initial_state(const State* given = nullptr) const;
   // Advances the state by dt. Throws Status::failure when the state becomes non-finite.
   StepStats step(State& state, double dt) const;
 

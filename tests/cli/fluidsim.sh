@@ -113,6 +113,15 @@ run fluidsim render "$WORK/p/d01.pfm" --mode slice --to pfm -o "$WORK/d01_again.
 expect_status 0
 check "a 2-D slice of a PFM field is the field itself" cmp "$WORK/p/d01.pfm" "$WORK/d01_again.pfm"
 
+case_ "restart from a written frame: init names a VTI file; scalars carry over exactly"
+mkdir -p "$WORK/rs"
+"$FEST_BIN/fluidsim" run "$SCENE2D" --frames 4 --precision double -o "$WORK/rs/f%d.vti" --threads 1
+sed 's/"frames": 10,/"frames": 1, "init": "f3.vti",/' "$SCENE2D" >"$WORK/rs/restart.json"
+run fluidsim run "$WORK/rs/restart.json" -o "$WORK/rs/again.pfm" --threads 1
+expect_status 0
+run fluidsim render "$WORK/rs/f3.vti" --mode slice --to pfm -o "$WORK/rs/f3.pfm"
+check "frame 0 of the restart is the saved density" cmp "$WORK/rs/again.pfm" "$WORK/rs/f3.pfm"
+
 # --- bad input: one line, the right status, nothing on stdout, no partial file ---
 case_ "--help and a missing scene file"
 run fluidsim run --help
@@ -159,6 +168,18 @@ run fluidsim run "$WORK/nan.json" -o "$WORK/nan/f%d.pfm"
 expect_status 1
 expect_stderr_has '^fluidsim: error: state became non-finite at step 1 \(velocity\)$'
 check "frame 0 complete, nothing else" test "$(ls "$WORK/nan")" = "f0.pfm"
+case_ "init file on another grid, and one with a NaN"
+echo '{"dims": [20, 20], "frames": 1, "init": "f3.vti"}' >"$WORK/rs/wrong.json"
+run fluidsim run "$WORK/rs/wrong.json" -o "$WORK/rs/w.pfm"
+expect_clean_failure 3 fluidsim
+expect_stderr_has 'init file has 34x34x1 nodes, the scene.s grid stores 22x22x1'
+{ printf 'NRRD0004\n# fest-frame: index=0 time=0 fields=density:1\ntype: float\ndimension: 3\nsizes: 1 10 10\nendian: little\nencoding: raw\n\n'
+  printf '\000\000\300\177'; head -c 396 /dev/zero; } >"$WORK/rs/nan.nrrd"
+echo '{"dims": [8, 8], "frames": 1, "init": "nan.nrrd"}' >"$WORK/rs/nan.json"
+run fluidsim run "$WORK/rs/nan.json" -o "$WORK/rs/n.pfm"
+expect_clean_failure 3 fluidsim
+expect_stderr_has 'init file holds non-finite values'
+check "no output file" test ! -e "$WORK/rs/n.pfm"
 case_ "truncated NRRD frame into render"
 head -c 20000 "$WORK/t1.stream" >"$WORK/trunc.stream"
 run fluidsim render "$WORK/trunc.stream" -o "$WORK/trunc.png"

@@ -27,6 +27,7 @@
 #include "fluidsim/state_ring.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
 #include "formats/volume/volume_io.hpp"
 
 namespace fest::fluidsim_tool {
@@ -104,6 +105,59 @@ Image frame_to_image(const Frame& f, const std::string& field) {
       for (int k = 0; k < channels; ++k) px[k] = k < comps ? static_cast<float>(f.data[n * C + c0 + k]) : 0.0f;
     }
   return Image{m, ColorSpace::linear};
+}
+
+// Reads an init file into a State on the grid of `layout`: velocity (3 components) and
+// the scene's scalars by name; absent fields start at zero / the scalar's init value.
+State read_init_file(const std::string& path, const Layout& layout, const std::vector<std::string>& scalar_names,
+                     const Scene& scene) {
+  const std::string bytes = read_input(path);
+  if (bytes.empty()) throw bad_input("empty init file ({})", path);
+  Frame f;
+  if (bytes.rfind("NRRD", 0) == 0) {
+    decode_frame(bytes, 0, f, path, 0);
+  } else {
+    const formats::Input in = formats::recognise(std::string(bytes), path);
+    if (in.format != formats::Format::vti) throw bad_input("init file must be a .vti or an NRRD frame ({})", path);
+    vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+    auto* img = vtkImageData::SafeDownCast(ds);
+    if (!img) throw bad_input("init file holds no image data ({})", path);
+    int dims[3];
+    img->GetDimensions(dims);
+    f.dim = dims[2] == 1 ? 2 : 3;
+    f.size = {dims[0], dims[1], dims[2]};
+    vtkPointData* pd = img->GetPointData();
+    std::vector<vtkDataArray*> arrays;
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+      if (vtkDataArray* arr = pd->GetArray(a); arr && arr->GetName()) {
+        f.fields.push_back({arr->GetName(), arr->GetNumberOfComponents()});
+        arrays.push_back(arr);
+      }
+    const int C = f.channels();
+    f.data.resize(f.nodes() * C);
+    int c0 = 0;
+    for (vtkDataArray* arr : arrays) {
+      for (std::size_t n = 0; n < f.nodes(); ++n)
+        for (int k = 0; k < arr->GetNumberOfComponents(); ++k)
+          f.data[n * C + c0 + k] = arr->GetComponent(static_cast<vtkIdType>(n), k);
+      c0 += arr->GetNumberOfComponents();
+    }
+  }
+  if (f.size != layout.size)
+    throw bad_input("init file has {}x{}x{} nodes, the scene's grid stores {}x{}x{} ({})", f.size[0], f.size[1],
+                    f.size[2], layout.size[0], layout.size[1], layout.size[2], path);
+  State s;
+  for (int c = 0; c < 3; ++c) s.u[c] = c < layout.dim ? layout.zeros() : Field();
+  for (const FrameField& ff : f.fields)
+    if (ff.name == "velocity" && ff.components != 3)
+      throw bad_input("init file: velocity has {} components, not 3 ({})", ff.components, path);
+  if (const int v = f.channel_of("velocity"); v >= 0)
+    for (int c = 0; c < layout.dim; ++c) s.u[c] = f.component(v + c);
+  for (std::size_t i = 0; i < scalar_names.size(); ++i) {
+    const int c = f.channel_of(scalar_names[i]);
+    s.s.push_back(c >= 0 ? f.component(c) : Field(layout.count(), scene.scalars[i].init));
+  }
+  return s;
 }
 
 struct Output {
@@ -239,6 +293,15 @@ int run_command(const RunOptions& o) {
     }
 
   const Simulator sim(scene, so);
+  // An init file: a frame written by fluidsim (VTI or NRRD frame) on the same grid;
+  // relative names are relative to the scene file's folder.
+  std::optional<State> given;
+  if (scene.init.kind == "file") {
+    std::string path = scene.init.file;
+    const auto slash = o.scene.find_last_of('/');
+    if (path.front() != '/' && o.scene != "-" && slash != std::string::npos) path = o.scene.substr(0, slash + 1) + path;
+    given = read_init_file(path, layout, scalar_names, scene);
+  }
   const int K = scene.interp;
   const double dt = K * scene.frame_dt;
   // The last simulation level a frame needs (the next one when the last frame lies
@@ -255,7 +318,7 @@ int run_command(const RunOptions& o) {
   auto produce = [&] {
     try {
       omp_set_num_threads(nthreads);  // a new thread starts from the default
-      State s = sim.initial_state();
+      State s = sim.initial_state(given ? &*given : nullptr);
       ring.push({0, s, {}});
       for (long l = 1; l <= last_level && !ring.cancelled(); ++l) {
         const StepStats st = sim.step(s, dt);
@@ -280,7 +343,7 @@ int run_command(const RunOptions& o) {
     if (pipeline) return ring.get(level);
     while (inline_states.empty() || inline_states.back().level < level) {
       if (inline_states.empty()) {
-        inline_states.push_back({0, sim.initial_state(), {}});
+        inline_states.push_back({0, sim.initial_state(given ? &*given : nullptr), {}});
       } else {
         RingEntry next{inline_states.back().level + 1, inline_states.back().state, {}};
         next.stats = sim.step(next.state, dt);
