@@ -58,6 +58,7 @@ struct BenchOptions {
   std::vector<int> sizes{31, 64};
   std::vector<int> threads{1, 2};
   int steps = 5;
+  double nu = 1e-4;
   std::vector<std::string> poisson{"fdm", "fft", "mg", "gs"};
 };
 

@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
   b->add_option("--sizes", bo.sizes, "Cubic grid sizes")->delimiter(',')->allow_extra_args(false)->check(CLI::Range(3, 1024));
   b->add_option("--threads", bo.threads, "Thread counts")->delimiter(',')->allow_extra_args(false)->check(CLI::Range(1, 1024));
   b->add_option("--steps", bo.steps, "Steps per measurement")->check(CLI::Range(1, 100000));
+  b->add_option("--nu", bo.nu, "Viscosity of the bench scene (0: no diffusion stage)")->check(CLI::Range(0.0, 1.0));
   b->add_option("--poisson", bo.poisson, "Solvers to compare")->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {
