@@ -264,6 +264,12 @@ int run_command(const RunOptions& o) {
   so.stam03 = o.order == "stam03";
   so.mass_correct = o.mass_correct;
 
+  if (so.projection.solver == PoissonSolver::fft)
+    for (int a = 0; a < scene.dim; ++a)
+      if (scene.bc[a] == Boundary::closed && !fft_friendly(scene.dims[a]))
+        warn("fluidsim", fmt::format("fft: dims[{}] = {}: {} has a prime factor above 7 (slower transforms); "
+                                     "{} would not",
+                                     a, scene.dims[a], scene.dims[a] + 1, nearest_fft_friendly(scene.dims[a])));
   std::vector<std::string> scalar_names;
   for (const auto& s : scene.scalars) scalar_names.push_back(s.name);
   std::vector<std::string> fields;
