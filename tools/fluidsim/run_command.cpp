@@ -264,12 +264,15 @@ int run_command(const RunOptions& o) {
   so.stam03 = o.order == "stam03";
   so.mass_correct = o.mass_correct;
 
-  if (so.projection.solver == PoissonSolver::fft)
+  if (so.projection.solver == PoissonSolver::fft) {
+    std::string slow;
     for (int a = 0; a < scene.dim; ++a)
       if (scene.bc[a] == Boundary::closed && !fft_friendly(scene.dims[a]))
-        warn("fluidsim", fmt::format("fft: dims[{}] = {}: {} has a prime factor above 7 (slower transforms); "
-                                     "{} would not",
-                                     a, scene.dims[a], scene.dims[a] + 1, nearest_fft_friendly(scene.dims[a])));
+        slow += fmt::format("{}{} ({} would do)", slow.empty() ? "" : ", ", scene.dims[a],
+                            nearest_fft_friendly(scene.dims[a]));
+    if (!slow.empty())
+      warn("fluidsim", "fft: n + 1 has a prime factor above 7 for dims " + slow + ": slower transforms");
+  }
   std::vector<std::string> scalar_names;
   for (const auto& s : scene.scalars) scalar_names.push_back(s.name);
   std::vector<std::string> fields;
