@@ -33,6 +33,21 @@ check "frame 0 header" grep -qx '# fest-frame: index=0 time=0 fields=velocity:3,
 check "frame 9 header" grep -qx '# fest-frame: index=9 time=0.45 fields=velocity:3,density:1' "$out"
 check "channel axis first, wall nodes included" grep -qx 'sizes: 4 34 34' "$out"
 
+case_ "two scalars: temperature drives the buoyancy, both are in the stream"
+cat >"$WORK/hot.json" <<'JSON'
+{ "dims": [16, 16], "frames": 3,
+  "scalars": [ { "name": "density" },
+               { "name": "temperature", "kappa": 0.001, "alpha": 0.1,
+                 "sources": [ { "shape": "gauss", "centre": [8, 3], "radius": 2, "rate": 5 } ] } ],
+  "forces": [ { "type": "buoyancy", "scalar": "temperature", "beta": 1.0, "ambient": 0.0 } ] }
+JSON
+run fluidsim run "$WORK/hot.json" --threads 1
+expect_status 0
+check "header lists both scalars" grep -qx '# fest-frame: index=2 time=0.08 fields=velocity:3,density:1,temperature:1' "$out"
+cp "$out" "$WORK/hot.stream"
+run fluidsim render "$WORK/hot.stream" --field temperature --mode slice -o "$WORK/hot%d.png"
+expect_status 0
+
 case_ "render reads the stream: one PNG per frame, 34x34 for a 2-D frame"
 mkdir -p "$WORK/png"
 "$FEST_BIN/fluidsim" run "$SCENE2D" --threads 1 | "$FEST_BIN/fluidsim" render -o "$WORK/png/f%03d.png"
