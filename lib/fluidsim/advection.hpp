@@ -10,9 +10,10 @@
 
 namespace fest::fluidsim {
 
-// The departure point of node (i,j,k) in index coordinates.
+// The departure point of node (i,j,k) in index coordinates (one node; advect() traces
+// every node without repacking the velocity each time).
 std::array<double, 3> trace_back(const Layout& layout, const Velocity& vel, int i, int j, int k, double dt,
-                                 int substeps) noexcept;
+                                 int substeps);
 
 // out[f] = in[f] sampled at the departure points through `vel`; in and out must differ.
 void advect(const Layout& layout, const Velocity& vel, double dt, int substeps, const std::vector<const Field*>& in,

@@ -180,7 +180,6 @@ json run_decay(int dim, int n, double dt, double nu, double t_end, double rate) 
   const double e0 = kinetic_energy(L, st.u);
   double max_div = 0.0, max_energy_ratio = 0.0;
   const int steps = static_cast<int>(std::lround(t_end / dt));
-  Scene no_scalars = sc;
   for (int s = 0; s < steps; ++s) {
     const StepStats ss = sim.step(st, dt);
     max_div = std::max(max_div, ss.projection.max_div_after);
@@ -246,7 +245,7 @@ json check_mass(const CheckOptions&) {
   advect(L, u, dt, 1, {&ones}, {&adv});
   double adv_dev = 0.0;
   for (double v : adv) adv_dev = std::max(adv_dev, std::fabs(v - 1.0));
-  const Diffuser D(L, 0.01 * dt / (L.h * L.h) * L.h * L.h * 50.0, Transform::dense, false);
+  const Diffuser D(L, 0.5 * dt, Transform::dense, false);  // kappa = 0.5: strong smoothing
   Field diffused = ones;
   D.scalar(diffused);
   double diff_dev = 0.0;
@@ -395,10 +394,15 @@ json check_interp(const CheckOptions&) {
     for (int c = 0; c < 3; ++c) exact = exact && b.u[c] == states[fr / K].u[c];
     exact = exact && b.s == states[fr / K].s;
   }
-  double interp_ms = 0.0;
-  const auto t0 = Clock::now();
-  const State f2 = blend(states[0], states[1], 2.0 / K);
-  interp_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  // The cheaper of 5 repetitions: one blend is short enough for scheduler noise to
+  // dominate a single measurement on a shared machine.
+  double interp_ms = INFINITY;
+  State f2;
+  for (int rep = 0; rep < 5; ++rep) {
+    const auto t0 = Clock::now();
+    f2 = blend(states[0], states[1], 2.0 / K);
+    interp_ms = std::min(interp_ms, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  }
   double ulp_err = 0.0;
   for (int c = 0; c < 3; ++c)
     for (std::size_t n = 0; n < f2.u[c].size(); ++n) {

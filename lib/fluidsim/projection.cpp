@@ -31,6 +31,22 @@ const char* poisson_name(PoissonSolver s) noexcept {
   return "?";
 }
 
+bool fft_friendly(int n) noexcept {
+  auto smooth = [](int m) {
+    for (int p : {2, 3, 5, 7})
+      while (m % p == 0) m /= p;
+    return m == 1;
+  };
+  return smooth(n + 1);
+}
+
+int nearest_fft_friendly(int n) noexcept {
+  for (int d = 0;; ++d) {
+    if (n - d >= 3 && fft_friendly(n - d)) return n - d;
+    if (fft_friendly(n + d)) return n + d;
+  }
+}
+
 int classes_along(const Layout& L, int axis, int reach) {
   if (!L.active(axis) || reach == 1) return 1;
   if (L.bc[axis] == Boundary::periodic && L.n[axis] % 2 == 1) return 1;  // wrap joins parities

@@ -41,6 +41,14 @@ std::vector<int> class_nodes(const Layout& layout, int axis, int parity, int rea
 // How many classes an axis splits into (2 for reach 2 unless periodic with odd n).
 int classes_along(const Layout& layout, int axis, int reach);
 
+// The seed's size rule ("the largest prime factor of dimension + 1"), as it comes out for
+// the FFTW transforms of a closed axis: odd n gives a DCT-I over (n+1)/2 intervals and a
+// DCT-II of (n+1)/2 nodes, even n two odd-period real DFTs of length n+1; all are fast
+// when n+1 has no prime factor above 7.
+bool fft_friendly(int n) noexcept;
+// The closest n (smaller one on ties) that is fft_friendly.
+int nearest_fft_friendly(int n) noexcept;
+
 class MultigridClass;
 
 class Projector {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <nlohmann/json.hpp>
 
@@ -261,6 +262,13 @@ Scene parse_scene(const json& doc, const std::string& where) {
     const json& in = doc["init"];
     if (in.is_string()) {
       s.init.kind = in.get<std::string>();
+      const std::string& v = s.init.kind;
+      const auto ends = [&](const char* e) { return v.size() > std::strlen(e) && v.compare(v.size() - std::strlen(e), std::string::npos, e) == 0; };
+      if (ends(".vti") || ends(".nrrd")) {
+        // A frame written by fluidsim (VTI, or an NRRD frame): the tool reads it.
+        s.init.file = v;
+        s.init.kind = "file";
+      }
     } else if (in.is_object() && in.contains("noise")) {
       p.check_keys(in, {"noise"}, "init");
       p.check_keys(in["noise"], {"seed", "amp"}, "init.noise");
@@ -270,8 +278,9 @@ Scene parse_scene(const json& doc, const std::string& where) {
     } else {
       p.fail("must be \"zero\", \"taylor-green\", \"abc\" or {\"noise\": {...}}", "init");
     }
-    if (s.init.kind != "zero" && s.init.kind != "taylor-green" && s.init.kind != "abc" && s.init.kind != "noise")
-      p.fail("must be \"zero\", \"taylor-green\", \"abc\" or {\"noise\": {...}} (init files are unsupported)", "init");
+    if (s.init.kind != "zero" && s.init.kind != "taylor-green" && s.init.kind != "abc" && s.init.kind != "noise" &&
+        s.init.kind != "file")
+      p.fail("must be \"zero\", \"taylor-green\", \"abc\", {\"noise\": {...}} or a .vti/.nrrd frame file", "init");
   }
   return s;
 }

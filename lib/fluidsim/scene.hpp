@@ -45,7 +45,8 @@ struct Force {
 };
 
 struct InitSpec {
-  std::string kind = "zero";  // zero | taylor-green | abc | noise
+  std::string kind = "zero";  // zero | taylor-green | abc | noise | file
+  std::string file;           // kind "file": a .vti or .nrrd frame, read by the tool
   unsigned seed = 1;
   double amp = 1.0;
 };

@@ -95,10 +95,31 @@ void abc_flow(const Layout& L, Velocity& u) {
       }
 }
 
-State Simulator::initial_state() const {
+State Simulator::initial_state(const State* given) const {
   State s;
   for (int c = 0; c < 3; ++c) s.u[c] = c < layout_.dim ? layout_.zeros() : Field();
   const std::string& kind = scene_.init.kind;
+  if (given) {
+    const std::string where = scene_.init.file.empty() ? std::string("init") : scene_.init.file;
+    auto check = [&](const Field& f) {
+      if (f.size() != layout_.count())
+        throw bad_input("init file has {} nodes, the scene's grid stores {} ({})", f.size(), layout_.count(), where);
+      for (double v : f)
+        if (!std::isfinite(v)) throw bad_input("init file holds non-finite values ({})", where);
+    };
+    for (int c = 0; c < layout_.dim; ++c) {
+      check(given->u[c]);
+      s.u[c] = given->u[c];
+    }
+    if (given->s.size() != scene_.scalars.size())
+      throw bad_input("init gives {} scalars, the scene has {} ({})", given->s.size(), scene_.scalars.size(), where);
+    for (const Field& f : given->s) check(f);
+    s.s = given->s;
+    enforce_walls(layout_, s.u, scene_.no_slip);
+    projector_->project(s.u);
+    return s;
+  }
+  if (kind == "file") throw bad_input("init names a file ({}) but no fields were read from it", scene_.init.file);
   if (kind == "taylor-green") {
     taylor_green(layout_, s.u);
   } else if (kind == "abc") {
@@ -164,34 +185,28 @@ void Simulator::add_forces(const State& st, double dt, Velocity& u) const {
   enforce_walls(L, u, scene_.no_slip);
 }
 
-void Simulator::scalar_step(const State& st, double dt, std::vector<Field>& out) const {
-  const Layout& L = layout_;
+std::vector<Field> Simulator::scalar_sources(const State& st, double dt) const {
   std::vector<Field> src = st.s;
   for (std::size_t i = 0; i < scene_.scalars.size(); ++i)
     for (const Source& s : scene_.scalars[i].sources)
       if (active_at(s, st.t) && s.rate != 0.0)
-        for_region(L, s, [&](std::size_t n, double w) { src[i][n] += dt * s.rate * w; });
-  out.assign(src.size(), L.zeros());
-  std::vector<const Field*> in;
-  std::vector<Field*> to;
-  for (std::size_t i = 0; i < src.size(); ++i) {
-    in.push_back(&src[i]);
-    to.push_back(&out[i]);
-  }
-  if (!in.empty()) advect(L, st.u, dt, scene_.substeps, in, to);
-  for (std::size_t i = 0; i < src.size(); ++i) {
+        for_region(layout_, s, [&](std::size_t n, double w) { src[i][n] += dt * s.rate * w; });
+  return src;
+}
+
+void Simulator::finish_scalars(const std::vector<Field>& before, std::vector<Field>& s, double dt) const {
+  const Layout& L = layout_;
+  for (std::size_t i = 0; i < s.size(); ++i) {
     const ScalarSpec& sc = scene_.scalars[i];
     if (options_.mass_correct) {
-      const double before = weighted_sum(L, src[i]), after = weighted_sum(L, out[i]);
-      if (after != 0.0 && before != 0.0)
-        for (double& v : out[i]) v *= before / after;
+      const double b = weighted_sum(L, before[i]), a = weighted_sum(L, s[i]);
+      if (a != 0.0 && b != 0.0)
+        for (double& v : s[i]) v *= b / a;
     }
-    if (sc.kappa > 0.0) {
-      diffuser(sc.kappa * dt)->scalar(out[i]);
-    }
+    if (sc.kappa > 0.0) diffuser(sc.kappa * dt)->scalar(s[i]);
     if (sc.alpha > 0.0) {
       const double f = 1.0 / (1.0 + sc.alpha * dt);
-      for (double& v : out[i]) v *= f;
+      for (double& v : s[i]) v *= f;
     }
   }
 }
@@ -213,10 +228,9 @@ StepStats Simulator::step(State& st, double dt) const {
   add_forces(st, dt, w);
   stats.ms_force = ms_since(t0);
 
-  // Scalars to level n+1 with the velocity of level n (independent of the vector step).
   t0 = Clock::now();
-  std::vector<Field> s_next;
-  scalar_step(st, dt, s_next);
+  const std::vector<Field> sources = scalar_sources(st, dt);
+  std::vector<Field> s_next(sources.size(), L.zeros());
   stats.ms_scalars = ms_since(t0);
 
   auto diffuse = [&](Velocity& v) {
@@ -230,7 +244,9 @@ StepStats Simulator::step(State& st, double dt) const {
     }
     stats.ms_diffuse += ms_since(t);
   };
-  auto advect_self = [&](Velocity& v) {
+  // One RK4 back-trace per node through v serves the velocity and, when `with_scalars`,
+  // every scalar: they all take their value at the same departure point.
+  auto advect_self = [&](Velocity& v, bool with_scalars) {
     const auto t = Clock::now();
     Velocity out;
     std::vector<const Field*> in;
@@ -240,6 +256,11 @@ StepStats Simulator::step(State& st, double dt) const {
       in.push_back(&v[c]);
       to.push_back(&out[c]);
     }
+    if (with_scalars)
+      for (std::size_t i = 0; i < sources.size(); ++i) {
+        in.push_back(&sources[i]);
+        to.push_back(&s_next[i]);
+      }
     advect(L, v, dt, scene_.substeps, in, to);
     for (int c = 0; c < L.dim; ++c) v[c].swap(out[c]);
     enforce_walls(L, v, scene_.no_slip);
@@ -252,15 +273,30 @@ StepStats Simulator::step(State& st, double dt) const {
   };
 
   if (options_.stam03) {
+    // Stam's order; the scalars are traced through the velocity of level n.
+    t0 = Clock::now();
+    std::vector<const Field*> in;
+    std::vector<Field*> to;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      in.push_back(&sources[i]);
+      to.push_back(&s_next[i]);
+    }
+    if (!in.empty()) advect(L, st.u, dt, scene_.substeps, in, to);
+    stats.ms_scalars += ms_since(t0);
     diffuse(w);
     project(w);
-    advect_self(w);
+    advect_self(w, false);
     project(w);
   } else {
-    advect_self(w);
+    // Force -> advect (velocity and scalars along the same characteristics of w1 =
+    // u^n + dt f(s^n), which depends on level n only) -> diffuse -> project.
+    advect_self(w, true);
     diffuse(w);
     project(w);
   }
+  t0 = Clock::now();
+  finish_scalars(sources, s_next, dt);
+  stats.ms_scalars += ms_since(t0);
   st.u = std::move(w);
   st.s = std::move(s_next);
   st.t += dt;
@@ -270,12 +306,16 @@ StepStats Simulator::step(State& st, double dt) const {
 }
 
 State blend(const State& x, const State& y, double a) {
-  State out = x;
-  for (int c = 0; c < 3; ++c)
-    for (std::size_t n = 0; n < out.u[c].size(); ++n) out.u[c][n] = (1.0 - a) * x.u[c][n] + a * y.u[c][n];
-  for (std::size_t i = 0; i < out.s.size(); ++i)
-    for (std::size_t n = 0; n < out.s[i].size(); ++n) out.s[i][n] = (1.0 - a) * x.s[i][n] + a * y.s[i][n];
+  State out;
+  auto mix = [a](const Field& p, const Field& q) {
+    Field r(p.size());
+    for (std::size_t n = 0; n < r.size(); ++n) r[n] = (1.0 - a) * p[n] + a * q[n];
+    return r;
+  };
+  for (int c = 0; c < 3; ++c) out.u[c] = mix(x.u[c], y.u[c]);
+  for (std::size_t i = 0; i < x.s.size(); ++i) out.s.push_back(mix(x.s[i], y.s[i]));
   out.t = (1.0 - a) * x.t + a * y.t;
+  out.step = x.step;
   return out;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // One simulation step of the chapter (specs/fluidsim.md 2.2-2.3): velocity
 // force -> advect -> diffuse -> project, scalars source -> advect -> diffuse -> dissipate.
-// The scalar step to level n+1 uses the velocity of level n and the vector step uses the
-// scalars of level n (buoyancy), so the two are independent of each other.
+// Velocity and scalars are advected along the same back-traced characteristics of
+// w1 = u^n + dt f(s^n), which depends on level n only, so one RK4 trace per node serves
+// all 3 + S fields (the cost model of spec section 7).
 
 #include <memory>
 #include <string>
@@ -40,13 +41,19 @@ class Simulator {
 
   const Layout& layout() const noexcept { return layout_; }
   const Scene& scene() const noexcept { return scene_; }
-  State initial_state() const;
+  // The scene's initial state; `given` (fields read from an init file by the caller, on
+  // the stored grid) replaces the analytic ones. Throws Status::bad_input when its sizes
+  // differ from the grid or it holds non-finite values. The velocity is projected.
+  State initial_state(const State* given = nullptr) const;
   // Advances the state by dt. Throws Status::failure when the state becomes non-finite.
   StepStats step(State& state, double dt) const;
 
  private:
   void add_forces(const State& state, double dt, Velocity& u) const;
-  void scalar_step(const State& state, double dt, std::vector<Field>& out) const;
+  // s + dt S (sources active at the state's time).
+  std::vector<Field> scalar_sources(const State& state, double dt) const;
+  // After advection: optional mass correction, implicit diffusion, dissipation.
+  void finish_scalars(const std::vector<Field>& before, std::vector<Field>& s, double dt) const;
   const Diffuser* diffuser(double coefficient) const;  // nu dt or kappa dt
 
   Scene scene_;

@@ -12,4 +12,6 @@ BIN=${1:-build/bin}
 SIZES=${2:-16,31,50,64}
 THREADS=${3:-1,2}
 STEPS=${4:-5}
-"$BIN/fluidsim" bench --sizes "$SIZES" --threads "$THREADS" --steps "$STEPS" --poisson fdm,fft,mg,gs,jacobi
+# nu = 0 (the paper's air: no diffusion stage) and nu > 0 (three Helmholtz solves a step).
+"$BIN/fluidsim" bench --sizes "$SIZES" --threads "$THREADS" --steps "$STEPS" --poisson fdm,fft,mg,gs,jacobi --nu 0
+"$BIN/fluidsim" bench --sizes "$SIZES" --threads "$THREADS" --steps "$STEPS" --poisson fdm,fft --nu 1e-4

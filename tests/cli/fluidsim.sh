@@ -33,6 +33,21 @@ check "frame 0 header" grep -qx '# fest-frame: index=0 time=0 fields=velocity:3,
 check "frame 9 header" grep -qx '# fest-frame: index=9 time=0.45 fields=velocity:3,density:1' "$out"
 check "channel axis first, wall nodes included" grep -qx 'sizes: 4 34 34' "$out"
 
+case_ "two scalars: temperature drives the buoyancy, both are in the stream"
+cat >"$WORK/hot.json" <<'JSON'
+{ "dims": [16, 16], "frames": 3,
+  "scalars": [ { "name": "density" },
+               { "name": "temperature", "kappa": 0.001, "alpha": 0.1,
+                 "sources": [ { "shape": "gauss", "centre": [8, 3], "radius": 2, "rate": 5 } ] } ],
+  "forces": [ { "type": "buoyancy", "scalar": "temperature", "beta": 1.0, "ambient": 0.0 } ] }
+JSON
+run fluidsim run "$WORK/hot.json" --threads 1
+expect_status 0
+check "header lists both scalars" grep -qx '# fest-frame: index=2 time=0.08 fields=velocity:3,density:1,temperature:1' "$out"
+cp "$out" "$WORK/hot.stream"
+run fluidsim render "$WORK/hot.stream" --field temperature --mode slice -o "$WORK/hot%d.png"
+expect_status 0
+
 case_ "render reads the stream: one PNG per frame, 34x34 for a 2-D frame"
 mkdir -p "$WORK/png"
 "$FEST_BIN/fluidsim" run "$SCENE2D" --threads 1 | "$FEST_BIN/fluidsim" render -o "$WORK/png/f%03d.png"
@@ -56,6 +71,9 @@ case_ "determinism: --threads 1 and 2 give identical bytes (3-D, parallel loops 
 "$FEST_BIN/fluidsim" run "$SCENE3D" --threads 1 >"$WORK/t1.stream"
 "$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 >"$WORK/t2.stream"
 check "identical streams" cmp "$WORK/t1.stream" "$WORK/t2.stream"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 --interp 2 >"$WORK/p_on.stream"
+"$FEST_BIN/fluidsim" run "$SCENE3D" --threads 2 --interp 2 --pipeline off >"$WORK/p_off.stream"
+check "--pipeline on (solver thread ahead of the writer) and off give identical bytes" cmp "$WORK/p_on.stream" "$WORK/p_off.stream"
 
 case_ "VTI frames: image data with the wall nodes, spacing h, velocity and density arrays"
 mkdir -p "$WORK/v"
@@ -100,6 +118,24 @@ run fconv --info "$WORK/r_absorb.png"
 expect_json '[.width, .height]' '[34,34]'
 run fluidsim render "$WORK/one.stream" --mode mip --to pfm -o "$WORK/r.pfm"
 expect_status 0
+
+case_ "render reads VTI, PFM and volumes: the same field gives the same image"
+run fluidsim render "$WORK/v/f00001.vti" --mode slice --axis z --to pfm -o "$WORK/from_vti.pfm"
+expect_status 0
+"$FEST_BIN/fluidsim" run "$SCENE3D" --frames 2 --threads 2 | "$FEST_BIN/fluidsim" render --mode slice --axis z --to pfm -o "$WORK/from_stream%d.pfm"
+check "VTI and stream give the same slice" cmp "$WORK/from_vti.pfm" "$WORK/from_stream1.pfm"
+run fluidsim render "$WORK/p/d01.pfm" --mode slice --to pfm -o "$WORK/d01_again.pfm"
+expect_status 0
+check "a 2-D slice of a PFM field is the field itself" cmp "$WORK/p/d01.pfm" "$WORK/d01_again.pfm"
+
+case_ "restart from a written frame: init names a VTI file; scalars carry over exactly"
+mkdir -p "$WORK/rs"
+"$FEST_BIN/fluidsim" run "$SCENE2D" --frames 4 --precision double -o "$WORK/rs/f%d.vti" --threads 1
+sed 's/"frames": 10,/"frames": 1, "init": "f3.vti",/' "$SCENE2D" >"$WORK/rs/restart.json"
+run fluidsim run "$WORK/rs/restart.json" -o "$WORK/rs/again.pfm" --threads 1
+expect_status 0
+run fluidsim render "$WORK/rs/f3.vti" --mode slice --to pfm -o "$WORK/rs/f3.pfm"
+check "frame 0 of the restart is the saved density" cmp "$WORK/rs/again.pfm" "$WORK/rs/f3.pfm"
 
 # --- bad input: one line, the right status, nothing on stdout, no partial file ---
 case_ "--help and a missing scene file"
@@ -147,6 +183,18 @@ run fluidsim run "$WORK/nan.json" -o "$WORK/nan/f%d.pfm"
 expect_status 1
 expect_stderr_has '^fluidsim: error: state became non-finite at step 1 \(velocity\)$'
 check "frame 0 complete, nothing else" test "$(ls "$WORK/nan")" = "f0.pfm"
+case_ "init file on another grid, and one with a NaN"
+echo '{"dims": [20, 20], "frames": 1, "init": "f3.vti"}' >"$WORK/rs/wrong.json"
+run fluidsim run "$WORK/rs/wrong.json" -o "$WORK/rs/w.pfm"
+expect_clean_failure 3 fluidsim
+expect_stderr_has 'init file has 34x34x1 nodes, the scene.s grid stores 22x22x1'
+{ printf 'NRRD0004\n# fest-frame: index=0 time=0 fields=density:1\ntype: float\ndimension: 3\nsizes: 1 10 10\nendian: little\nencoding: raw\n\n'
+  printf '\000\000\300\177'; head -c 396 /dev/zero; } >"$WORK/rs/nan.nrrd"
+echo '{"dims": [8, 8], "frames": 1, "init": "nan.nrrd"}' >"$WORK/rs/nan.json"
+run fluidsim run "$WORK/rs/nan.json" -o "$WORK/rs/n.pfm"
+expect_clean_failure 3 fluidsim
+expect_stderr_has 'init file holds non-finite values'
+check "no output file" test ! -e "$WORK/rs/n.pfm"
 case_ "truncated NRRD frame into render"
 head -c 20000 "$WORK/t1.stream" >"$WORK/trunc.stream"
 run fluidsim render "$WORK/trunc.stream" -o "$WORK/trunc.png"

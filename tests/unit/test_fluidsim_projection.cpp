@@ -117,3 +117,13 @@ TEST(FluidsimProjection, CheckerboardIsInTheNullSpaceOfCentralDivergence) {
   for (int c = 0; c < 3; ++c)
     for (std::size_t n = 0; n < u[c].size(); ++n) EXPECT_NEAR(p[c][n], u[c][n], 1e-12);
 }
+
+TEST(FluidsimProjection, SizeRuleOfTheSeed) {
+  // The seed: 31 (32 = 2^5) is fast, 30 (31 prime) slow; 63 (64) fast, 64 (65 = 5 x 13) slow.
+  EXPECT_TRUE(fft_friendly(31));
+  EXPECT_FALSE(fft_friendly(30));
+  EXPECT_TRUE(fft_friendly(63));
+  EXPECT_FALSE(fft_friendly(64));
+  EXPECT_EQ(nearest_fft_friendly(30), 29);
+  EXPECT_TRUE(fft_friendly(nearest_fft_friendly(100)));
+}

@@ -20,6 +20,7 @@ struct RunOptions {
   std::string grid = "collocated";
   std::string precision = "float";
   bool mass_correct = false;
+  std::string pipeline = "on";
   std::string report, stats;
   bool progress = false;
   bool quiet = false;
@@ -57,6 +58,7 @@ struct BenchOptions {
   std::vector<int> sizes{31, 64};
   std::vector<int> threads{1, 2};
   int steps = 5;
+  double nu = 1e-4;
   std::vector<std::string> poisson{"fdm", "fft", "mg", "gs"};
 };
 

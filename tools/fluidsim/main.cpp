@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   r->add_option("--grid", run.grid, "Grid: collocated (the paper's)");
   r->add_option("--precision", run.precision, "Output values: float or double");
   r->add_flag("--mass-correct", run.mass_correct, "Rescale each scalar after advection to keep its weighted sum");
+  r->add_option("--pipeline", run.pipeline, "on: the solver thread runs ahead of the frame writer (3-slot ring); off: one thread")
+      ->check(CLI::IsMember({"on", "off"}));
   r->add_option("--report", run.report, "Write totals and figures as JSON");
   r->add_option("--stats", run.stats, "Write one JSON line of figures per frame");
   r->add_flag("--progress", run.progress, "Show a progress bar");
@@ -78,6 +80,7 @@ int main(int argc, char** argv) {
   b->add_option("--sizes", bo.sizes, "Cubic grid sizes")->delimiter(',')->allow_extra_args(false)->check(CLI::Range(3, 1024));
   b->add_option("--threads", bo.threads, "Thread counts")->delimiter(',')->allow_extra_args(false)->check(CLI::Range(1, 1024));
   b->add_option("--steps", bo.steps, "Steps per measurement")->check(CLI::Range(1, 100000));
+  b->add_option("--nu", bo.nu, "Viscosity of the bench scene (0: no diffusion stage)")->check(CLI::Range(0.0, 1.0));
   b->add_option("--poisson", bo.poisson, "Solvers to compare")->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {

@@ -3,10 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "fluidsim/frame.hpp"
+#include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/volume/volume_io.hpp"
@@ -62,16 +68,58 @@ std::vector<Frame> load_frames(const std::string& path) {
     return frames;
   }
   formats::Input in = formats::recognise(std::move(bytes), where);
-  if (formats::kind_of(in.format) != formats::Kind::volume)
-    throw bad_input("render reads a frame stream or a volume (NRRD, NIfTI, MHA), not {} ({})",
-                    formats::format_name(in.format), where);
-  const Volume v = formats::parse(in, formats::read_volume);
+  const formats::Kind kind = formats::kind_of(in.format);
   Frame f;
-  f.dim = v.dims[2] == 1 ? 2 : 3;
-  f.size = {static_cast<int>(v.dims[0]), static_cast<int>(v.dims[1]), static_cast<int>(v.dims[2])};
-  f.spacing = v.spacing[0];
-  f.fields = {{"value", 1}};
-  f.data = v.voxels;
+  if (kind == formats::Kind::volume) {
+    const Volume v = formats::parse(in, formats::read_volume);
+    f.dim = v.dims[2] == 1 ? 2 : 3;
+    f.size = {static_cast<int>(v.dims[0]), static_cast<int>(v.dims[1]), static_cast<int>(v.dims[2])};
+    f.spacing = v.spacing[0];
+    f.fields = {{"value", 1}};
+    f.data = v.voxels;
+  } else if (in.format == formats::Format::vti) {
+    // VTK image data as fluidsim writes it: every point array becomes a field.
+    vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+    auto* img = vtkImageData::SafeDownCast(ds);
+    if (!img) throw bad_input("VTI input holds no image data ({})", where);
+    int dims[3];
+    img->GetDimensions(dims);
+    f.dim = dims[2] == 1 ? 2 : 3;
+    f.size = {dims[0], dims[1], dims[2]};
+    f.spacing = img->GetSpacing()[0];
+    vtkPointData* pd = img->GetPointData();
+    std::vector<vtkDataArray*> arrays;
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+      if (vtkDataArray* arr = pd->GetArray(a)) {
+        f.fields.push_back({arr->GetName() ? arr->GetName() : fmt::format("array{}", a), arr->GetNumberOfComponents()});
+        arrays.push_back(arr);
+      }
+    if (arrays.empty()) throw bad_input("VTI input has no point arrays ({})", where);
+    const int C = f.channels();
+    f.data.resize(f.nodes() * C);
+    int c0 = 0;
+    for (vtkDataArray* arr : arrays) {
+      for (std::size_t n = 0; n < f.nodes(); ++n)
+        for (int k = 0; k < arr->GetNumberOfComponents(); ++k)
+          f.data[n * C + c0 + k] = arr->GetComponent(static_cast<vtkIdType>(n), k);
+      c0 += arr->GetNumberOfComponents();
+    }
+  } else if (in.format == formats::Format::pfm || in.format == formats::Format::exr) {
+    // A 2-D field image (row 0 at the top, as fluidsim writes it): channel 0.
+    const Image im = formats::parse(in, formats::read_image);
+    cv::Mat m;
+    im.pixels.convertTo(m, CV_64F);
+    f.dim = 2;
+    f.size = {m.cols, m.rows, 1};
+    f.fields = {{"value", 1}};
+    f.data.resize(f.nodes());
+    const int ch = m.channels();
+    for (int y = 0; y < m.rows; ++y)
+      for (int x = 0; x < m.cols; ++x) f.data[x + static_cast<std::size_t>(m.cols) * (m.rows - 1 - y)] = m.ptr<double>(y)[x * ch];
+  } else {
+    throw bad_input("render reads a frame stream, a volume (NRRD, NIfTI, MHA), VTI, PFM or EXR, not {} ({})",
+                    formats::format_name(in.format), where);
+  }
   frames.push_back(std::move(f));
   return frames;
 }

@@ -3,7 +3,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <optional>
+#include <thread>
+
+#include <omp.h>
 
 #include <nlohmann/json.hpp>
 #include <vtkDoubleArray.h>
@@ -20,8 +24,10 @@
 #include "fluidsim/frame.hpp"
 #include "fluidsim/operators.hpp"
 #include "fluidsim/simulator.hpp"
+#include "fluidsim/state_ring.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
 #include "formats/volume/volume_io.hpp"
 
 namespace fest::fluidsim_tool {
@@ -99,6 +105,59 @@ Image frame_to_image(const Frame& f, const std::string& field) {
       for (int k = 0; k < channels; ++k) px[k] = k < comps ? static_cast<float>(f.data[n * C + c0 + k]) : 0.0f;
     }
   return Image{m, ColorSpace::linear};
+}
+
+// Reads an init file into a State on the grid of `layout`: velocity (3 components) and
+// the scene's scalars by name; absent fields start at zero / the scalar's init value.
+State read_init_file(const std::string& path, const Layout& layout, const std::vector<std::string>& scalar_names,
+                     const Scene& scene) {
+  const std::string bytes = read_input(path);
+  if (bytes.empty()) throw bad_input("empty init file ({})", path);
+  Frame f;
+  if (bytes.rfind("NRRD", 0) == 0) {
+    decode_frame(bytes, 0, f, path, 0);
+  } else {
+    const formats::Input in = formats::recognise(std::string(bytes), path);
+    if (in.format != formats::Format::vti) throw bad_input("init file must be a .vti or an NRRD frame ({})", path);
+    vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+    auto* img = vtkImageData::SafeDownCast(ds);
+    if (!img) throw bad_input("init file holds no image data ({})", path);
+    int dims[3];
+    img->GetDimensions(dims);
+    f.dim = dims[2] == 1 ? 2 : 3;
+    f.size = {dims[0], dims[1], dims[2]};
+    vtkPointData* pd = img->GetPointData();
+    std::vector<vtkDataArray*> arrays;
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+      if (vtkDataArray* arr = pd->GetArray(a); arr && arr->GetName()) {
+        f.fields.push_back({arr->GetName(), arr->GetNumberOfComponents()});
+        arrays.push_back(arr);
+      }
+    const int C = f.channels();
+    f.data.resize(f.nodes() * C);
+    int c0 = 0;
+    for (vtkDataArray* arr : arrays) {
+      for (std::size_t n = 0; n < f.nodes(); ++n)
+        for (int k = 0; k < arr->GetNumberOfComponents(); ++k)
+          f.data[n * C + c0 + k] = arr->GetComponent(static_cast<vtkIdType>(n), k);
+      c0 += arr->GetNumberOfComponents();
+    }
+  }
+  if (f.size != layout.size)
+    throw bad_input("init file has {}x{}x{} nodes, the scene's grid stores {}x{}x{} ({})", f.size[0], f.size[1],
+                    f.size[2], layout.size[0], layout.size[1], layout.size[2], path);
+  State s;
+  for (int c = 0; c < 3; ++c) s.u[c] = c < layout.dim ? layout.zeros() : Field();
+  for (const FrameField& ff : f.fields)
+    if (ff.name == "velocity" && ff.components != 3)
+      throw bad_input("init file: velocity has {} components, not 3 ({})", ff.components, path);
+  if (const int v = f.channel_of("velocity"); v >= 0)
+    for (int c = 0; c < layout.dim; ++c) s.u[c] = f.component(v + c);
+  for (std::size_t i = 0; i < scalar_names.size(); ++i) {
+    const int c = f.channel_of(scalar_names[i]);
+    s.s.push_back(c >= 0 ? f.component(c) : Field(layout.count(), scene.scalars[i].init));
+  }
+  return s;
 }
 
 struct Output {
@@ -205,6 +264,15 @@ int run_command(const RunOptions& o) {
   so.stam03 = o.order == "stam03";
   so.mass_correct = o.mass_correct;
 
+  if (so.projection.solver == PoissonSolver::fft) {
+    std::string slow;
+    for (int a = 0; a < scene.dim; ++a)
+      if (scene.bc[a] == Boundary::closed && !fft_friendly(scene.dims[a]))
+        slow += fmt::format("{}{} ({} would do)", slow.empty() ? "" : ", ", scene.dims[a],
+                            nearest_fft_friendly(scene.dims[a]));
+    if (!slow.empty())
+      warn("fluidsim", "fft: n + 1 has a prime factor above 7 for dims " + slow + ": slower transforms");
+  }
   std::vector<std::string> scalar_names;
   for (const auto& s : scene.scalars) scalar_names.push_back(s.name);
   std::vector<std::string> fields;
@@ -234,23 +302,89 @@ int run_command(const RunOptions& o) {
     }
 
   const Simulator sim(scene, so);
+  // An init file: a frame written by fluidsim (VTI or NRRD frame) on the same grid;
+  // relative names are relative to the scene file's folder.
+  std::optional<State> given;
+  if (scene.init.kind == "file") {
+    std::string path = scene.init.file;
+    const auto slash = o.scene.find_last_of('/');
+    if (path.front() != '/' && o.scene != "-" && slash != std::string::npos) path = o.scene.substr(0, slash + 1) + path;
+    given = read_init_file(path, layout, scalar_names, scene);
+  }
   const int K = scene.interp;
   const double dt = K * scene.frame_dt;
-  State cur = sim.initial_state();
-  std::optional<State> next;
-  long cur_level = 0;
+  // The last simulation level a frame needs (the next one when the last frame lies
+  // between two states).
+  const long last_frame = scene.frames - 1;
+  const long last_level = last_frame / K + (last_frame % K ? 1 : 0);
+
+  // States come from the solver through the 3-slot ring (the solver thread runs ahead
+  // while this thread interpolates and writes), or, with --pipeline off, are computed
+  // here on demand. Both give the same bytes.
+  const bool pipeline = o.pipeline == "on";
+  StateRing ring(3);
+  const int nthreads = omp_threads();
+  auto produce = [&] {
+    try {
+      omp_set_num_threads(nthreads);  // a new thread starts from the default
+      State s = sim.initial_state(given ? &*given : nullptr);
+      ring.push({0, s, {}});
+      for (long l = 1; l <= last_level && !ring.cancelled(); ++l) {
+        const StepStats st = sim.step(s, dt);
+        ring.push({l, s, st});
+      }
+      ring.finish();
+    } catch (...) {
+      ring.finish(std::current_exception());
+    }
+  };
+  std::thread solver_thread;
+  struct Joiner {
+    StateRing& ring;
+    std::thread& t;
+    ~Joiner() {
+      ring.cancel();
+      if (t.joinable()) t.join();
+    }
+  } joiner{ring, solver_thread};
+  std::deque<RingEntry> inline_states;  // --pipeline off
+  auto get_level = [&](long level) -> const RingEntry& {
+    if (pipeline) return ring.get(level);
+    while (inline_states.empty() || inline_states.back().level < level) {
+      if (inline_states.empty()) {
+        inline_states.push_back({0, sim.initial_state(given ? &*given : nullptr), {}});
+      } else {
+        RingEntry next{inline_states.back().level + 1, inline_states.back().state, {}};
+        next.stats = sim.step(next.state, dt);
+        inline_states.push_back(std::move(next));
+      }
+    }
+    for (const RingEntry& e : inline_states)
+      if (e.level == level) return e;
+    throw runtime_failure("internal: level {} was released", level);
+  };
+  auto release_below = [&](long level) {
+    if (pipeline) {
+      ring.release_below(level);
+      return;
+    }
+    while (!inline_states.empty() && inline_states.front().level < level) inline_states.pop_front();
+  };
+  if (pipeline) solver_thread = std::thread(produce);
 
   json stats_lines = json::array();
   std::string stats_text;
   double max_div = 0.0, max_div_rel = 0.0, peak_speed = 0.0;
   double total_ms[7] = {0, 0, 0, 0, 0, 0, 0};  // force advect diffuse project scalars interp write
-  long sim_steps = 0;
+  long sim_steps = 0, counted = 0;
   const auto t_start = Clock::now();
   Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress) && !o.quiet);
 
-  auto advance = [&](const State& from) {
-    State s = from;
-    const StepStats st = sim.step(s, dt);
+  // Adds a level's step figures to the totals once; returns them when new.
+  auto account = [&](const RingEntry& e, StepStats& last) {
+    if (e.level <= counted) return false;
+    counted = e.level;
+    const StepStats& st = e.stats;
     ++sim_steps;
     total_ms[0] += st.ms_force;
     total_ms[1] += st.ms_advect;
@@ -260,7 +394,8 @@ int run_command(const RunOptions& o) {
     max_div = std::max(max_div, st.projection.max_div_after);
     if (st.projection.max_div_before > 0)
       max_div_rel = std::max(max_div_rel, st.projection.max_div_after / st.projection.max_div_before);
-    return std::make_pair(s, st);
+    last = st;
+    return true;
   };
 
   for (long f = 0; f < scene.frames; ++f) {
@@ -268,26 +403,18 @@ int run_command(const RunOptions& o) {
     const int phase = static_cast<int>(f % K);
     StepStats last{};
     bool stepped = false;
-    while (cur_level < level) {
-      if (!next) {
-        auto [s, st] = advance(cur);
-        next = std::move(s);
-        last = st;
-        stepped = true;
-      }
-      cur = std::move(*next);
-      next.reset();
-      ++cur_level;
-    }
-    if (phase != 0 && !next) {
-      auto [s, st] = advance(cur);
-      next = std::move(s);
-      last = st;
-      stepped = true;
+    const RingEntry& a = get_level(level);
+    stepped = account(a, last) || stepped;
+    const RingEntry* b = nullptr;
+    if (phase != 0) {
+      b = &get_level(level + 1);
+      stepped = account(*b, last) || stepped;
     }
     auto t0 = Clock::now();
     // Frame time f * frame_dt: the state itself, or (1 - a) X^n + a X^(n+1).
-    const State frame_state = phase == 0 ? cur : blend(cur, *next, static_cast<double>(phase) / K);
+    State blended;
+    if (phase != 0) blended = blend(a.state, b->state, static_cast<double>(phase) / K);
+    const State& frame_state = phase == 0 ? a.state : blended;
     const double ms_interp = phase == 0 ? 0.0 : ms_since(t0);
     total_ms[5] += ms_interp;
     Frame frame = make_frame(layout, frame_state, scalar_names, fields, f, f * scene.frame_dt);
@@ -318,6 +445,7 @@ int run_command(const RunOptions& o) {
       stats_text += line.dump() + "\n";
       stats_lines.push_back(std::move(line));
     }
+    release_below(level);
     progress.advance();
   }
   progress.finish();
@@ -335,6 +463,7 @@ int run_command(const RunOptions& o) {
                 {"solver", poisson_name(so.projection.solver)},
                 {"order", o.order},
                 {"threads", omp_threads()},
+                {"pipeline", pipeline},
                 {"dims", std::vector<int>(scene.dims.begin(), scene.dims.begin() + scene.dim)},
                 {"mean_ms",
                  {{"force", total_ms[0] / steps},
