@@ -185,7 +185,7 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
                     ExitResult& out) {
   const Vec3 a0 = path.apply_A(entry.v), j0 = path.apply_A(a0);
   const Eigen::Vector4d q = g.bary_rate(a0), jr = g.bary_rate(j0);
-  const double speed = entry.v.norm();
+  const double speed = entry.v.norm(), jerk = j0.norm();
   const double tiny = 1e-13 * g.v_max / g.h_min;  // a rate of beta at round-off
   double tau = std::numeric_limits<double>::infinity();
   int face = -1;
@@ -198,20 +198,27 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
         std::abs(jr[k]) * g.h_min * g.h_min <= tiny * speed * speed)
       continue;
     if (c <= 1e-9 && !(r * g.h_min > 1e-6 * speed)) return false;
-    double t = quadratic_root(c, r, q[k]);
-    if (!std::isfinite(t)) continue;
-    // Two Newton steps on the Taylor cubic; kept only while they stay positive.
-    for (int it = 0; it < 2; ++it) {
-      const double f = c + t * (r + t * (0.5 * q[k] + t * jr[k] / 6));
-      const double df = r + t * (q[k] + 0.5 * t * jr[k]);
-      if (df == 0) break;
-      const double next = t - f / df;
-      if (!(next > 0)) break;
-      t = next;
-    }
+    // A face the path moves away from with non-negative curvature has no positive
+    // root of its Taylor quadratic: skip it without a square root.
+    if (r >= 0 && q[k] >= 0) continue;
+    const double t = quadratic_root(c, r, q[k]);
     if (t < tau) {
       tau = t;
       face = k;
+    }
+  }
+  if (face < 0) return false;
+  {
+    // Two Newton steps on the Taylor cubic of the chosen face; kept while positive.
+    const int k = face;
+    const double c = entry.beta[k], r = entry.rate[k];
+    for (int it = 0; it < 2; ++it) {
+      const double f = c + tau * (r + tau * (0.5 * q[k] + tau * jr[k] / 6));
+      const double df = r + tau * (q[k] + 0.5 * tau * jr[k]);
+      if (df == 0) break;
+      const double next = tau - f / df;
+      if (!(next > 0)) break;
+      tau = next;
     }
   }
   if (face < 0 || !(tau < cap)) return false;
@@ -225,7 +232,9 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
     delta = -f / (df + 0.5 * d2f * delta);
     const double next = tau + delta;
     if (!(next > 0 && next < cap)) return false;
-    const double err = path.apply_A(a).norm() * std::abs(delta * delta * delta) / 6;
+    // |x'''| along a step shorter than 0.25 / rate stays within a small factor of its
+    // value at the entry (j0); 2 |j0| bounds it without one more product with A.
+    const double err = 2 * jerk * std::abs(delta * delta * delta) / 6;
     if (err > 1e-15 * g.h_min || std::abs(delta) > 1e-3 * tau) {
       tau = next;
       continue;
