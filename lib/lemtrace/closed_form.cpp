@@ -67,6 +67,37 @@ double CellPath::rate() const {
   return 0;
 }
 
+Vec3 CellPath::apply_A(const Vec3& w) const {
+  const double* S = rec_.S;
+  const double* Si = rec_.Sinv;
+  switch (rec_.type) {
+    case CellType::normal_real:
+    case CellType::normal_complex: {
+      double z[3], y[3];
+      for (int i = 0; i < 3; ++i) z[i] = Si[3 * i] * w[0] + Si[3 * i + 1] * w[1] + Si[3 * i + 2] * w[2];
+      if (rec_.type == CellType::normal_real) {
+        for (int i = 0; i < 3; ++i) y[i] = rec_.lam[i] * z[i];
+      } else {
+        const double a = rec_.lam[0], b = rec_.lam[1];
+        y[0] = a * z[0] + b * z[1];
+        y[1] = -b * z[0] + a * z[1];
+        y[2] = rec_.lam[2] * z[2];
+      }
+      Vec3 r;
+      for (int i = 0; i < 3; ++i) r[i] = dir_ * (S[3 * i] * y[0] + S[3 * i + 1] * y[1] + S[3 * i + 2] * y[2]);
+      return r;
+    }
+    case CellType::parallel:  // A = d a^T
+      return Vec3(rec_.lam[0], rec_.lam[1], rec_.lam[2]) * (dir_ * (S[0] * w[0] + S[1] * w[1] + S[2] * w[2]));
+    case CellType::extraordinary: {
+      Vec3 r;
+      for (int i = 0; i < 3; ++i) r[i] = dir_ * (S[3 * i] * w[0] + S[3 * i + 1] * w[1] + S[3 * i + 2] * w[2]);
+      return r;
+    }
+  }
+  return Vec3::Zero();
+}
+
 void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
   const double s = dir_ * tau;
   switch (rec_.type) {

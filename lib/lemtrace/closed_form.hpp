@@ -29,6 +29,10 @@ class CellPath {
   Vec3 entry_velocity(const Vec3& field) const;
   // Largest rate of the cell's dynamics (1/time): bounds the sampling step.
   double rate() const;
+  // The derivative along the path of a quantity w that moves with the flow's linear
+  // part: dir * A w. Applied to the velocity it gives the acceleration (x'' = dir A x'),
+  // applied twice the jerk. Uses the precomputed eigen form, no transcendental function.
+  Vec3 apply_A(const Vec3& w) const;
 
  private:
   const CellRecord& rec_;

@@ -110,8 +110,11 @@ Sample refine_root(const TetGeometry& g, const CellPath& path, int k, const Samp
 // minimum of beta_k there (bisection on the rate); if it is negative, the step is cut at
 // that point so that the caller sees the crossing.
 void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
+  // Rates at round-off of the cell's (a path in a face's plane) cannot take beta_k
+  // below -kDetect within a step: no search for them.
+  const double tiny = 1e-13 * g.v_max / g.h_min;
   for (int k = 0; k < 4; ++k) {
-    if (!(prev.rate[k] < 0 && cur.rate[k] > 0 && cur.beta[k] >= -kDetect)) continue;
+    if (!(prev.rate[k] < -tiny && cur.rate[k] > tiny && cur.beta[k] >= -kDetect)) continue;
     double a = prev.tau, b = cur.tau;
     const double width = b - a;
     for (int it = 0; it < 40 && b - a > 1e-6 * width; ++it) {
@@ -150,6 +153,106 @@ bool validates(const TetGeometry& g, const CellPath& path, double tau, int& eval
     if (g.bary(path.position(f * tau)).minCoeff() < -kValid) return false;
   }
   return true;
+}
+
+// Smallest root tau > 0 of c + r tau + q tau^2 / 2 (infinity if none), in the form that
+// does not cancel.
+double quadratic_root(double c, double r, double q) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (q == 0) return r < 0 && c >= 0 ? -c / r : inf;
+  const double disc = r * r - 2 * q * c;
+  if (disc < 0) return inf;
+  const double s = -(r + std::copysign(std::sqrt(disc), r));
+  const double t1 = s / q, t2 = s != 0 ? 2 * c / s : inf;
+  double best = inf;
+  if (t1 > 0) best = std::min(best, t1);
+  if (t2 > 0) best = std::min(best, t2);
+  return best;
+}
+
+// Predicted exit (the fast path of the bracket search). Inside a cell the field is
+// linear, so every time derivative of the path at the entry is a product with A, which
+// the precomputed eigen form applies without a transcendental function: beta_k(tau) is
+// predicted by its Taylor cubic, whose first root is a guess at the exit good to about
+// (rate tau)^3 / 24 of tau. ONE closed-form evaluation there gives beta_k and its first
+// two derivatives, a Halley correction delta, and the exit point by the Taylor
+// polynomial x + v delta + a delta^2 / 2, whose error |x'''| |delta|^3 / 6 must be below
+// round-off of the cell size (else one more evaluation at the corrected time). The
+// result is kept only under the bracket search's own safety rules (a step shorter than
+// 0.25 / rate, no other face below zero, no face whose rate turned from negative to
+// positive); otherwise the caller falls back to the bracket search.
+bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& entry, double cap, int& evals,
+                    ExitResult& out) {
+  const Vec3 a0 = path.apply_A(entry.v), j0 = path.apply_A(a0);
+  const Eigen::Vector4d q = g.bary_rate(a0), jr = g.bary_rate(j0);
+  const double speed = entry.v.norm(), jerk = j0.norm();
+  const double tiny = 1e-13 * g.v_max / g.h_min;  // a rate of beta at round-off
+  double tau = std::numeric_limits<double>::infinity();
+  int face = -1;
+  for (int k = 0; k < 4; ++k) {
+    const double c = entry.beta[k], r = entry.rate[k];
+    // On a face (entry face, edge, vertex) the path must clearly move inwards, or move
+    // within the face's plane (a path in a grid plane: beta_k and its first three
+    // derivatives vanish; the check at the end rejects it if it leaves after all).
+    if (c <= 1e-9 && std::abs(r) <= tiny && std::abs(q[k]) * g.h_min <= tiny * speed &&
+        std::abs(jr[k]) * g.h_min * g.h_min <= tiny * speed * speed)
+      continue;
+    if (c <= 1e-9 && !(r * g.h_min > 1e-6 * speed)) return false;
+    // A face the path moves away from with non-negative curvature has no positive
+    // root of its Taylor quadratic: skip it without a square root.
+    if (r >= 0 && q[k] >= 0) continue;
+    const double t = quadratic_root(c, r, q[k]);
+    if (t < tau) {
+      tau = t;
+      face = k;
+    }
+  }
+  if (face < 0) return false;
+  {
+    // Two Newton steps on the Taylor cubic of the chosen face; kept while positive.
+    const int k = face;
+    const double c = entry.beta[k], r = entry.rate[k];
+    for (int it = 0; it < 2; ++it) {
+      const double f = c + tau * (r + tau * (0.5 * q[k] + tau * jr[k] / 6));
+      const double df = r + tau * (q[k] + 0.5 * tau * jr[k]);
+      if (df == 0) break;
+      const double next = tau - f / df;
+      if (!(next > 0)) break;
+      tau = next;
+    }
+  }
+  if (face < 0 || !(tau < cap)) return false;
+  for (int it = 0; it < 3; ++it) {
+    const Sample s = sample(g, path, tau, evals);
+    if (!s.x.allFinite()) return false;
+    const Vec3 a = path.apply_A(s.v);
+    const double f = s.beta[face], df = s.rate[face], d2f = g.bary_rate(a)[face];
+    if (!(df < 0)) return false;
+    double delta = -f / df;
+    delta = -f / (df + 0.5 * d2f * delta);
+    const double next = tau + delta;
+    if (!(next > 0 && next < cap)) return false;
+    // |x'''| along a step shorter than 0.25 / rate stays within a small factor of its
+    // value at the entry (j0); 2 |j0| bounds it without one more product with A.
+    const double err = 2 * jerk * std::abs(delta * delta * delta) / 6;
+    if (err > 1e-15 * g.h_min || std::abs(delta) > 1e-3 * tau) {
+      tau = next;
+      continue;
+    }
+    Sample e;
+    e.tau = next;
+    e.x = s.x + delta * (s.v + 0.5 * delta * a);
+    const Eigen::Vector4d beta = g.bary(e.x);
+    const Eigen::Vector4d rate = g.bary_rate(s.v + delta * a);
+    for (int k = 0; k < 4; ++k) {
+      if (k == face) continue;
+      if (beta[k] < -kDetect) return false;                // an earlier exit elsewhere
+      if (entry.rate[k] < -tiny && rate[k] > tiny) return false;  // a face grazed in between
+    }
+    out = finish(g, e, face, evals);
+    return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -199,6 +302,10 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
   Sample prev = entry_sample(g, path);
   for (int k = 0; k < 4; ++k) prev.beta[k] = std::max(prev.beta[k], 0.0);
   const double delta_cap = rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity();
+  if (params.predict) {
+    ExitResult fast;
+    if (predicted_exit(g, path, prev, std::min(delta_cap, 64 * tauT), evals, fast)) return fast;
+  }
   double ray = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 4; ++k)
     if (prev.rate[k] < 0) ray = std::min(ray, prev.beta[k] / -prev.rate[k]);

@@ -5,6 +5,9 @@
 // bracket (default): sample the closed form at growing steps until some beta_k < 0, then
 //   safeguarded Newton inside the first bracket (Newton step when it stays inside,
 //   bisection otherwise). It cannot converge to a negative or later root.
+// Before the bracket search, a predicted exit (Taylor cubic of beta_k from the entry,
+//   one evaluation, Halley correction) is tried and kept when it passes the bracket
+//   search's safety checks; see predicted_exit() in exit_search.cpp.
 // newton (the paper's, §9.3.4): Newton from tau = 0 on each face; the smallest positive
 //   root that validates (all beta >= 0 at tau*/4, tau*/2, 3tau*/4 and tau*) is taken,
 //   otherwise the bracket search runs.
@@ -17,6 +20,7 @@ struct ExitParams {
   bool paper_newton = false;
   double eps_newton = 1e-12;  // relative to tau_T
   int max_samples = 4096;
+  bool predict = true;        // try the Taylor-predicted exit (one evaluation) first
 };
 
 struct ExitResult {

@@ -161,6 +161,7 @@ struct Sampler {
   int32_t cell;
   // v at x (times dir); false outside the grid.
   bool operator()(const Vec3& x, Vec3& v) {
+    ++line.evaluations;
     const int32_t c = grid.locator().walk(cell, x, &line.locator_calls);
     if (c < 0) return false;
     cell = c;
@@ -179,14 +180,16 @@ void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, 
   double t = t0, length = 0;
   emit(line, x, t, cell, grid.record(cell, scratch).type);
   double h_adapt = -1;
+  // The field at the end of a step (evaluated there to see that the step stays in the
+  // grid) is the next step's k1: one field evaluation per stage, as the methods count.
+  Vec3 k1;
+  if (!field(x, k1)) {
+    line.reason = Reason::out_of_domain;
+    return;
+  }
   for (;;) {
     if (line.cells >= o.max_steps) {
       line.reason = Reason::out_of_steps;
-      return;
-    }
-    Vec3 k1;
-    if (!field(x, k1)) {
-      line.reason = Reason::out_of_domain;
       return;
     }
     const double speed = k1.norm();
@@ -256,10 +259,12 @@ void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, 
       case Method::lem:
         break;
     }
-    if (!ok || !field(next, k2)) {
+    Vec3 k_next;
+    if (!ok || !field(next, k_next)) {
       line.reason = Reason::out_of_domain;
       return;
     }
+    k1 = k_next;
     ++line.cells;
     length += (next - x).norm();
     x = next;

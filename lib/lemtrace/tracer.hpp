@@ -54,7 +54,7 @@ struct Polyline {
   Reason reason_backward = Reason::none;  // for Direction::both
   int64_t cells = 0;            // cells crossed (LEM) or steps taken (RK)
   int64_t locator_calls = 0;    // barycentric tests for point location
-  int64_t evaluations = 0;      // closed-form evaluations (LEM)
+  int64_t evaluations = 0;      // closed-form evaluations (LEM), field evaluations (RK)
 };
 
 Polyline trace(const FieldGrid& grid, const Vec3& seed, double t0, const TraceOptions& options);
