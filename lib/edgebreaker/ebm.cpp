@@ -558,7 +558,12 @@ Parsed parse(std::string_view bytes) {
   };
   const std::size_t conn_bytes = bytes_of("CONN");
   if (!p.sections.count("CONN")) throw bad_input(".ebm stream has no CONN section");
-  if (h.symbols > max_elements || h.symbols > 256 * (conn_bytes + 16))
+  // Raw symbols take at least a bit each; the entropy coders can code a very regular mesh
+  // in 1e-4 bits per symbol (the adaptive counts saturate at 65504 : 4), so their bound is
+  // loose, and the decoder's memory grows with what it decodes, not with this count.
+  const std::uint64_t symbol_bound =
+      h.conn_mode == 0 ? 8 * (conn_bytes + 4) + 2 : (std::uint64_t{1} << 17) * (conn_bytes + 16);
+  if (h.symbols > max_elements || h.symbols > symbol_bound)
     throw bad_input(".ebm header: {} symbols cannot come from {} connectivity bytes", h.symbols, conn_bytes);
   if (h.components > h.symbols + 1 || (h.symbols > 0 && h.components == 0))
     throw bad_input(".ebm header: {} components for {} symbols", h.components, h.symbols);
@@ -568,7 +573,7 @@ Parsed parse(std::string_view bytes) {
     throw bad_input(".ebm header: {} stitch pairs in {} bytes", h.stitch, bytes_of("STCH"));
   if (h.dummies > h.symbols + 3 * h.components)
     throw bad_input(".ebm header: {} holes for {} symbols", h.dummies, h.symbols);
-  if (h.isolated > max_elements || h.isolated > 64 * (bytes_of("ISOL") + 16))
+  if (h.isolated > max_elements || h.isolated > 256 * (bytes_of("ISOL") + 16))
     throw bad_input(".ebm header: {} isolated vertices in {} bytes", h.isolated, bytes_of("ISOL"));
   if (h.vertices > max_elements || h.faces > max_elements) throw bad_input(".ebm header: counts out of range");
   if ((h.flags & ebm_flags::geometry) && (!std::isfinite(h.box[0]) || !std::isfinite(h.box[1]) ||

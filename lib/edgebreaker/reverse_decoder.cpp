@@ -17,13 +17,15 @@ ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> eve
   // Corner ids are ints: 3 per triangle, at most symbols + components triangles.
   if (symbols > static_cast<std::size_t>(std::numeric_limits<int>::max() / 16))
     throw bad_input("invalid connectivity: {} symbols, more than supported", symbols);
-  decoded_.reserve(symbols);
-  // The caller has checked `symbols` against the bytes it came from.
-  V_.reserve(3 * (symbols + 2));
-  O_.reserve(3 * (symbols + 2));
-  parent_.reserve(symbols + 3);
-  degree_.reserve(symbols + 3);
-  closed_.reserve(symbols + 3);
+  // Reserve for what is announced, up to a limit: beyond it memory grows only with the
+  // symbols actually decoded, so a lying count costs nothing.
+  const std::size_t expected = std::min<std::size_t>(symbols, std::size_t{1} << 22);
+  decoded_.reserve(expected);
+  V_.reserve(3 * (expected + 2));
+  O_.reserve(3 * (expected + 2));
+  parent_.reserve(expected + 3);
+  degree_.reserve(expected + 3);
+  closed_.reserve(expected + 3);
   for (std::size_t k = 0; k < events_.size(); ++k) {
     const HandleEvent& e = events_[k];
     if (e.source >= symbols || e.split >= e.source)
