@@ -486,6 +486,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     stats->total_bytes = out.size();
     stats->max_error = max_error;
     stats->rms_error = n_coords ? std::sqrt(sum_sq / static_cast<double>(n_coords)) : 0.0;
+    stats->error_bound = options.qp == 0 ? 0.0 : static_cast<double>(quant.box[3]) / (2.0 * quant.steps());
   }
   return out;
 }

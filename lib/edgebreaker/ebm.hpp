@@ -65,6 +65,7 @@ struct EncodeStats {
   std::map<std::string, std::size_t> section_bytes;
   std::size_t total_bytes = 0;
   double max_error = 0, rms_error = 0;  // per coordinate, after quantisation
+  double error_bound = 0;  // half a quantisation step: extent / (2 (2^qp - 1)); 0 for qp 0
 };
 
 // Throws bad_input for bad mesh data (index out of range, non-finite coordinates, --strict

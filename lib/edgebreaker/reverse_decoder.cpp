@@ -19,7 +19,7 @@ ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> eve
     throw bad_input("invalid connectivity: {} symbols, more than supported", symbols);
   // Reserve for what is announced, up to a limit: beyond it memory grows only with the
   // symbols actually decoded, so a lying count costs nothing.
-  const std::size_t expected = std::min<std::size_t>(symbols, std::size_t{1} << 22);
+  const std::size_t expected = std::min<std::size_t>(symbols, std::size_t{1} << 16);
   decoded_.reserve(expected);
   V_.reserve(3 * (expected + 2));
   O_.reserve(3 * (expected + 2));

@@ -179,8 +179,7 @@ int encode(const Options& opt) {
     r["bpv"] = {{"connectivity", bpv(section("CONN"))},
                 {"geometry", bpv(section("GEOM"))},
                 {"total", bpv(stats.total_bytes)}};
-    r["error"] = {{"max", stats.max_error}, {"rms", stats.rms_error},
-                  {"bound", opt.qp == 0 ? 0.0 : 0.0}};
+    r["error"] = {{"max", stats.max_error}, {"rms", stats.rms_error}, {"bound", stats.error_bound}};
     r["ms"] = {{"read", read_ms}, {"encode", encode_ms}, {"write", write_ms}};
     r["triangles_per_s"] = encode_ms > 0 ? static_cast<double>(stats.input_faces) / (encode_ms / 1000.0) : 0.0;
     r["peak_rss_kb"] = peak_rss_kb();
