@@ -274,7 +274,6 @@ Clers mesh_symbols(const MeshSoup& mesh, bool strict) {
 
 std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, EncodeStats* stats) {
   if (options.qp < 0 || options.qp > 30) throw usage_error("--qp {} is outside 0..30", options.qp);
-  if (options.predictor == Predictor::multi) throw usage_error("--predict multi is unsupported (use para)");
   if (mesh.positions.size() > max_elements) throw bad_input("{} vertices, more than supported", mesh.positions.size());
   if (options.geometry)
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
@@ -389,6 +388,8 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
+    plan.triangles = &dec.triangles;
+    plan.opposite = &dec.opposite;
     geom = encode_positions(q, plan, options.qp, options.predictor);
     std::vector<QPoint> iq;
     for (int v : isolated) iq.push_back(quant.quantise(mesh.positions[static_cast<std::size_t>(v)]));
@@ -669,6 +670,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
+    plan.triangles = &dec.triangles;
+    plan.opposite = &dec.opposite;
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor));
     for (int g = 0; g < g_count; ++g)

@@ -332,6 +332,10 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
   }
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
+  const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
+  out.opposite.resize(static_cast<std::size_t>(3 * t));
+  for (int c = 0; c < 3 * t; ++c) out.opposite[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
+
   if (verify) {
     // Re-encode the decoded corner table itself (not a table rebuilt from the faces, which
     // could not tell the two edges of a multi-edge apart).
@@ -339,11 +343,8 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
     table.vertex_count = out.vertex_count;
     table.V.resize(static_cast<std::size_t>(3 * t));
     table.O.resize(static_cast<std::size_t>(3 * t));
-    const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
-    for (int c = 0; c < 3 * t; ++c) {
-      table.V[static_cast<std::size_t>(moved(c))] = id(c);
-      table.O[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
-    }
+    for (int c = 0; c < 3 * t; ++c) table.V[static_cast<std::size_t>(moved(c))] = id(c);
+    table.O = out.opposite;
     try {
       check_closed_manifold(table);
     } catch (const Error& e) {

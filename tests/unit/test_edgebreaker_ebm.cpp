@@ -51,10 +51,12 @@ std::vector<Point> point_set(const MeshSoup& m) {
   return p;
 }
 
-void expect_exact_round_trip(const MeshSoup& in, ConnChoice conn = ConnChoice::automatic) {
+void expect_exact_round_trip(const MeshSoup& in, ConnChoice conn = ConnChoice::automatic,
+                             Predictor predictor = Predictor::parallelogram) {
   EncodeOptions o;
   o.qp = 0;  // lossless: positions identify vertices
   o.conn = conn;
+  o.predictor = predictor;
   EncodeStats stats;
   const std::string bytes = encode_ebm(in, o, &stats);
   const MeshSoup out = decode_ebm(bytes);
@@ -82,6 +84,14 @@ std::vector<Triangle> torus(int n, int m) {
       t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   return t;
+}
+
+TEST(EdgebreakerEbm, EveryPredictorRoundTrips) {
+  const auto m = fest::test::eb::subdivided_icosahedron(2);
+  std::vector<Triangle> t = m.triangles;
+  t.push_back({0, 1, 60});  // a fin: holes, dummies and copies around the predictions
+  for (Predictor p : {Predictor::parallelogram, Predictor::multi, Predictor::delta, Predictor::none})
+    expect_exact_round_trip(with_positions(t, m.vertex_count), ConnChoice::automatic, p);
 }
 
 TEST(EdgebreakerEbm, HandlesGiveTwoEventsPerGenus) {
@@ -183,6 +193,7 @@ TEST(EdgebreakerEbm, QuantisationErrorIsAtMostHalfAStep) {
   for (int bits : {4, 11, 14, 20}) {
     EncodeOptions o;
     o.qp = bits;
+    o.predictor = bits == 11 ? Predictor::multi : Predictor::parallelogram;
     const std::string bytes = encode_ebm(m, o);
     const EbmHeader h = read_ebm_header(bytes);
     const MeshSoup out = decode_ebm(bytes);

@@ -93,8 +93,8 @@ Predictor parse_predictor(const std::string& name) {
   if (name == "para") return Predictor::parallelogram;
   if (name == "delta") return Predictor::delta;
   if (name == "none") return Predictor::none;
-  if (name == "multi") throw usage_error("--predict multi is unsupported in this version (para, delta, none)");
-  throw usage_error("--predict: unknown predictor '{}' (para, delta, none)", name);
+  if (name == "multi") return Predictor::multi;
+  throw usage_error("--predict: unknown predictor '{}' (para, multi, delta, none)", name);
 }
 
 ConnChoice parse_conn(const std::string& name) {
@@ -288,7 +288,7 @@ int main(int argc, char** argv) {
   app.add_option("--model", opt.model, "Static state machine: m2, m26, m68, m236, m240x")->default_val("m236");
   app.add_option("--qp", opt.qp, "Position bits 1..30; 0 = lossless float32")->default_val(14)->check(CLI::Range(0, 30));
   app.add_option("--box", opt.box, "Quantisation box X,Y,Z,EXT instead of the bounding box");
-  app.add_option("--predict", opt.predict, "Position predictor: para, delta, none")->default_val("para");
+  app.add_option("--predict", opt.predict, "Position predictor: para, multi (mean of all parallelograms), delta, none")->default_val("para");
   app.add_flag("--no-stitch", opt.no_stitch, "Keep the copies of non-manifold vertices as separate vertices");
   app.add_flag("--drop-isolated", opt.drop_isolated, "Drop vertices no face uses");
   app.add_flag("--no-geometry", opt.no_geometry, "Connectivity only");
