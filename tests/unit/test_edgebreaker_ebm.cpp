@@ -284,6 +284,7 @@ TEST(EdgebreakerEbm, CommittedStreamsDecode) {
                                          {"tetrahedron_raw_lossless.ebm", 4, 4},
                                          {"icosahedron_static.ebm", 12, 20},
                                          {"eight_genus2.ebm", 315, 634},
+                                         {"eight_multi.ebm", 315, 634},
                                          {"mushroom_hole.ebm", 2337, 4608},
                                          {"bowtie_stitch.ebm", 7, 8}}) {
     SCOPED_TRACE(c.file);
