@@ -38,6 +38,8 @@ struct Options {
   std::string conn = "auto";
   std::string model = "m236";
   int qp = 14;
+  int qn = 10;
+  int qt = 12;
   std::string box;
   std::string predict = "para";
   bool no_stitch = false;
@@ -114,8 +116,8 @@ int encode(const Options& opt) {
   const MeshSoup soup = tools::to_soup(mesh);
   const double read_ms = ms_since(t0);
   if (soup.positions.empty()) throw bad_input("the mesh is empty ({})", in.name);
-  if (!opt.quiet && (mesh.has_vertex_normals() || mesh.has_vertex_colors() || mesh.has_vertex_texcoords2D()))
-    warn("ebcode", "vertex normals, colours and texture coordinates are not coded; only positions are kept");
+  if (!opt.quiet && (mesh.has_face_colors() || mesh.has_face_normals()))
+    warn("ebcode", "face colours and normals are not coded; vertex attributes are");
 
   if (opt.symbols) {
     write_output(opt.output, to_string(mesh_symbols(soup, opt.strict)) + "\n");
@@ -134,6 +136,8 @@ int encode(const Options& opt) {
   e.conn = parse_conn(opt.conn);
   e.model_id = named_model(opt.model).id;
   e.qp = opt.qp;
+  e.qn = opt.qn;
+  e.qt = opt.qt;
   if (!opt.box.empty()) e.box = parse_box(opt.box);
   e.predictor = parse_predictor(opt.predict);
   e.stitch = !opt.no_stitch;
@@ -287,6 +291,8 @@ int main(int argc, char** argv) {
       ->default_val("auto");
   app.add_option("--model", opt.model, "Static state machine: m2, m26, m68, m236, m240x")->default_val("m236");
   app.add_option("--qp", opt.qp, "Position bits 1..30; 0 = lossless float32")->default_val(14)->check(CLI::Range(0, 30));
+  app.add_option("--qn", opt.qn, "Vertex normal bits per component (over [-1, 1])")->default_val(10)->check(CLI::Range(1, 30));
+  app.add_option("--qt", opt.qt, "Texture coordinate bits (over their own box)")->default_val(12)->check(CLI::Range(1, 30));
   app.add_option("--box", opt.box, "Quantisation box X,Y,Z,EXT instead of the bounding box");
   app.add_option("--predict", opt.predict, "Position predictor: para, multi (mean of all parallelograms), delta, none")->default_val("para");
   app.add_flag("--no-stitch", opt.no_stitch, "Keep the copies of non-manifold vertices as separate vertices");
