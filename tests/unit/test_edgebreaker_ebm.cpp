@@ -317,7 +317,8 @@ TEST(EdgebreakerEbm, CommittedStreamsDecode) {
                                          {"eight_genus2.ebm", 315, 634},
                                          {"eight_multi.ebm", 315, 634},
                                          {"mushroom_hole.ebm", 2337, 4608},
-                                         {"bowtie_stitch.ebm", 7, 8}}) {
+                                         {"bowtie_stitch.ebm", 7, 8},
+                                         {"tetrahedron_attributes.ebm", 4, 4}}) {
     SCOPED_TRACE(c.file);
     const std::string bytes = slurp(dir + c.file);
     ASSERT_FALSE(bytes.empty());
