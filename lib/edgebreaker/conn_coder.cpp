@@ -15,11 +15,11 @@ constexpr int symbol_count = 5;
 // Rossignac's code, MSB first: C = 0, S = 100, R = 101, L = 110, E = 111.
 void put_raw(RangeEncoder& enc, Symbol s) {
   switch (s) {
-    case Symbol::C: enc.bypass(0); break;
-    case Symbol::S: enc.bypass_bits(0b100, 3); break;
-    case Symbol::R: enc.bypass_bits(0b101, 3); break;
-    case Symbol::L: enc.bypass_bits(0b110, 3); break;
-    case Symbol::E: enc.bypass_bits(0b111, 3); break;
+    case Symbol::C: enc.bypass(0); return;
+    case Symbol::S: enc.bypass(1), enc.bypass_bits(0b00, 2); return;
+    case Symbol::R: enc.bypass(1), enc.bypass_bits(0b01, 2); return;
+    case Symbol::L: enc.bypass(1), enc.bypass_bits(0b10, 2); return;
+    case Symbol::E: enc.bypass(1), enc.bypass_bits(0b11, 2); return;
   }
 }
 Symbol get_raw(RangeDecoder& dec) {

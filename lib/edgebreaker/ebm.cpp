@@ -256,6 +256,81 @@ const char* conn_mode_name(int mode) {
   }
 }
 
+
+// ---- per-vertex attributes (spec 2.10) ---------------------------------------------------
+
+// kind 1 normal (3 components over [-1, 1]), 2 colour (3 bytes, exact), 3 texcoord (2
+// components over their own box). One section each: NRML, COLR, TEXC.
+struct Attribute {
+  int kind = 0;
+  int bits = 0;
+  int components = 3;
+  std::array<float, 3> box{};  // min of the first two components, extent
+  const char* tag() const { return kind == 1 ? "NRML" : kind == 2 ? "COLR" : "TEXC"; }
+  const char* name() const { return kind == 1 ? "normal" : kind == 2 ? "color" : "texcoord"; }
+  double steps() const { return std::ldexp(1.0, bits) - 1.0; }
+  double lo(std::size_t k) const { return kind == 1 ? -1.0 : kind == 2 ? 0.0 : static_cast<double>(box[k]); }
+  double extent() const { return kind == 1 ? 2.0 : kind == 2 ? 255.0 : static_cast<double>(box[2]); }
+  QPoint quantise(const double* x) const {
+    QPoint q{0, 0, 0};
+    for (std::size_t k = 0; k < static_cast<std::size_t>(components); ++k) {
+      const double t = extent() > 0 ? (x[k] - lo(k)) / extent() * steps() : 0.0;
+      q[k] = std::clamp<std::int64_t>(std::llround(std::isfinite(t) ? t : 0.0), 0, static_cast<std::int64_t>(steps()));
+    }
+    return q;
+  }
+  double restore(const QPoint& q, std::size_t k) const { return lo(k) + static_cast<double>(q[k]) * extent() / steps(); }
+};
+
+std::vector<Attribute> attributes_of(const MeshSoup& mesh, const EncodeOptions& options) {
+  std::vector<Attribute> out;
+  const std::size_t n = mesh.positions.size();
+  if (!mesh.normals.empty()) {
+    if (mesh.normals.size() != n) throw bad_input("{} normals for {} vertices", mesh.normals.size(), n);
+    Attribute a;
+    a.kind = 1;
+    a.bits = options.qn;
+    out.push_back(a);
+  }
+  if (!mesh.colors.empty()) {
+    if (mesh.colors.size() != n) throw bad_input("{} colours for {} vertices", mesh.colors.size(), n);
+    Attribute a;
+    a.kind = 2;
+    a.bits = 8;
+    out.push_back(a);
+  }
+  if (!mesh.texcoords.empty()) {
+    if (mesh.texcoords.size() != n) throw bad_input("{} texture coordinates for {} vertices", mesh.texcoords.size(), n);
+    Attribute a;
+    a.kind = 3;
+    a.bits = options.qt;
+    a.components = 2;
+    double lo[2] = {0, 0}, hi[2] = {0, 0};
+    for (std::size_t v = 0; v < n; ++v)
+      for (std::size_t k = 0; k < 2; ++k) {
+        const double x = mesh.texcoords[v][k];
+        if (!std::isfinite(x)) throw bad_input("vertex {} has a texture coordinate that is not finite", v);
+        lo[k] = v == 0 ? x : std::min(lo[k], x);
+        hi[k] = v == 0 ? x : std::max(hi[k], x);
+      }
+    a.box[0] = float_down(lo[0]);
+    a.box[1] = float_down(lo[1]);
+    a.box[2] = float_up(std::max(hi[0] - static_cast<double>(a.box[0]), hi[1] - static_cast<double>(a.box[1])));
+    out.push_back(a);
+  }
+  return out;
+}
+
+void attribute_values(const MeshSoup& mesh, const Attribute& a, std::size_t v, double* x) {
+  if (a.kind == 1)
+    for (std::size_t k = 0; k < 3; ++k) x[k] = mesh.normals[v][k];
+  else if (a.kind == 2)
+    for (std::size_t k = 0; k < 3; ++k) x[k] = mesh.colors[v][k];
+  else
+    for (std::size_t k = 0; k < 2; ++k) x[k] = mesh.texcoords[v][k];
+}
+
+
 }  // namespace
 
 void reseal_ebm(std::string& bytes) {
@@ -274,7 +349,8 @@ Clers mesh_symbols(const MeshSoup& mesh, bool strict) {
 
 std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, EncodeStats* stats) {
   if (options.qp < 0 || options.qp > 30) throw usage_error("--qp {} is outside 0..30", options.qp);
-  if (options.predictor == Predictor::multi) throw usage_error("--predict multi is unsupported (use para)");
+  if (options.qn < 1 || options.qn > 30) throw usage_error("--qn {} is outside 1..30", options.qn);
+  if (options.qt < 1 || options.qt > 30) throw usage_error("--qt {} is outside 1..30", options.qt);
   if (mesh.positions.size() > max_elements) throw bad_input("{} vertices, more than supported", mesh.positions.size());
   if (options.geometry)
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
@@ -389,6 +465,8 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
+    plan.triangles = &dec.triangles;
+    plan.opposite = &dec.opposite;
     geom = encode_positions(q, plan, options.qp, options.predictor);
     std::vector<QPoint> iq;
     for (int v : isolated) iq.push_back(quant.quantise(mesh.positions[static_cast<std::size_t>(v)]));
@@ -402,6 +480,34 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
         ++n_coords;
       }
     }
+  }
+
+  // Attributes, in G order with the positions' plan (parallelogram in their own domain).
+  const std::vector<Attribute> attrs = attributes_of(mesh, options);
+  std::vector<std::string> attr_payloads;
+  for (const Attribute& a : attrs) {
+    std::vector<QPoint> q(static_cast<std::size_t>(g_count), QPoint{0, 0, 0});
+    double x[3] = {0, 0, 0};
+    for (int g = 0; g < g_count; ++g)
+      if (!dummy[static_cast<std::size_t>(g)]) {
+        attribute_values(mesh, a, static_cast<std::size_t>(input_of[static_cast<std::size_t>(g)]), x);
+        q[static_cast<std::size_t>(g)] = a.quantise(x);
+      }
+    GeometryPlan plan;
+    plan.parallelogram = dec.parallelogram;
+    plan.unusable = dummy;
+    plan.same_as = num.same_as;
+    const std::string main = encode_positions(q, plan, a.bits, Predictor::parallelogram);
+    std::vector<QPoint> iq;
+    for (int v : isolated) {
+      attribute_values(mesh, a, static_cast<std::size_t>(v), x);
+      iq.push_back(a.quantise(x));
+    }
+    std::string payload;
+    put_varint(payload, main.size());
+    payload += main;
+    if (!iq.empty()) payload += encode_point_list(iq, a.bits);
+    attr_payloads.push_back(std::move(payload));
   }
 
   // Header.
@@ -426,8 +532,13 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   put_varint(header, conn_mode == static_cast<int>(ConnMode::static_model) ? static_cast<std::uint64_t>(options.model_id) : 0u);
   put_varint(header, static_cast<std::uint64_t>(options.qp));
   put_varint(header, static_cast<std::uint64_t>(options.predictor));
-  put_varint(header, 0);  // attributes
+  put_varint(header, attrs.size());
   for (float f : quant.box) put_f32(header, f);
+  for (const Attribute& a : attrs) {
+    put_u8(header, static_cast<unsigned>(a.kind));
+    put_u8(header, static_cast<unsigned>(a.bits));
+    for (float f : a.box) put_f32(header, f);
+  }
 
   std::string out(reinterpret_cast<const char*>(magic), 8);
   put_u8(out, 1);
@@ -465,6 +576,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   if (prepared.holes > 0) section("HOLE", encode_hole_flags(dummy, valences(dec.triangles, g_count)));
   if (options.geometry) section("GEOM", geom);
   if (!isol.empty()) section("ISOL", isol);
+  for (std::size_t k = 0; k < attrs.size(); ++k) section(attrs[k].tag(), attr_payloads[k]);
   out += "END!";
   put_u32(out, crc32_of(out));
 
@@ -486,6 +598,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     stats->total_bytes = out.size();
     stats->max_error = max_error;
     stats->rms_error = n_coords ? std::sqrt(sum_sq / static_cast<double>(n_coords)) : 0.0;
+    stats->error_bound = options.qp == 0 ? 0.0 : static_cast<double>(quant.box[3]) / (2.0 * quant.steps());
   }
   return out;
 }
@@ -495,6 +608,7 @@ namespace {
 struct Parsed {
   EbmHeader header;
   std::map<std::string, std::string_view> sections;
+  std::vector<Attribute> attributes;
 };
 
 Parsed parse(std::string_view bytes) {
@@ -537,7 +651,23 @@ Parsed parse(std::string_view bytes) {
   h.qp = small("quantisation bits", 30);
   h.predictor = small("predictor", 3);
   h.attributes = hr.varint();
+  if (h.attributes > 3) throw bad_input(".ebm header: {} attributes (at most normals, colours, texture coordinates)", h.attributes);
   for (float& f : h.box) f = hr.f32();
+  for (std::uint64_t k = 0; k < h.attributes; ++k) {
+    Attribute a;
+    a.kind = hr.u8();
+    a.bits = hr.u8();
+    for (float& f : a.box) f = hr.f32();
+    a.components = a.kind == 3 ? 2 : 3;
+    if (a.kind < 1 || a.kind > 3 || a.bits < 1 || a.bits > 30 || (a.kind == 2 && a.bits != 8))
+      throw bad_input(".ebm header: attribute {} has kind {} and {} bits", k, a.kind, a.bits);
+    for (const Attribute& b : p.attributes)
+      if (b.kind == a.kind) throw bad_input(".ebm header: attribute kind {} twice", a.kind);
+    if (!std::isfinite(a.box[0]) || !std::isfinite(a.box[1]) || !std::isfinite(a.box[2]) || !(a.box[2] >= 0))
+      throw bad_input(".ebm header: attribute {} has a box that is not finite", k);
+    p.attributes.push_back(a);
+    h.attribute_names.push_back(a.name());
+  }
   // Later minor versions may append header fields: ignore them.
   while (r.left() > 8) {
     const std::string tag(r.bytes(4));
@@ -549,7 +679,6 @@ Parsed parse(std::string_view bytes) {
     h.section_bytes[tag] = len;
   }
   if (r.left() != 8) throw bad_input(".ebm stream is truncated");
-  if (h.attributes != 0) throw bad_input(".ebm stream has {} attributes; this decoder reads none", h.attributes);
 
   // Counts against what the bytes can hold, before anything is allocated from them.
   const auto bytes_of = [&](const char* tag) {
@@ -558,7 +687,12 @@ Parsed parse(std::string_view bytes) {
   };
   const std::size_t conn_bytes = bytes_of("CONN");
   if (!p.sections.count("CONN")) throw bad_input(".ebm stream has no CONN section");
-  if (h.symbols > max_elements || h.symbols > 256 * (conn_bytes + 16))
+  // Raw symbols take at least a bit each; the entropy coders can code a very regular mesh
+  // in 1e-4 bits per symbol (the adaptive counts saturate at 65504 : 4), so their bound is
+  // loose, and the decoder's memory grows with what it decodes, not with this count.
+  const std::uint64_t symbol_bound =
+      h.conn_mode == 0 ? 8 * (conn_bytes + 4) + 2 : (std::uint64_t{1} << 17) * (conn_bytes + 16);
+  if (h.symbols > max_elements || h.symbols > symbol_bound)
     throw bad_input(".ebm header: {} symbols cannot come from {} connectivity bytes", h.symbols, conn_bytes);
   if (h.components > h.symbols + 1 || (h.symbols > 0 && h.components == 0))
     throw bad_input(".ebm header: {} components for {} symbols", h.components, h.symbols);
@@ -568,7 +702,7 @@ Parsed parse(std::string_view bytes) {
     throw bad_input(".ebm header: {} stitch pairs in {} bytes", h.stitch, bytes_of("STCH"));
   if (h.dummies > h.symbols + 3 * h.components)
     throw bad_input(".ebm header: {} holes for {} symbols", h.dummies, h.symbols);
-  if (h.isolated > max_elements || h.isolated > 64 * (bytes_of("ISOL") + 16))
+  if (h.isolated > max_elements || h.isolated > 256 * (bytes_of("ISOL") + 16))
     throw bad_input(".ebm header: {} isolated vertices in {} bytes", h.isolated, bytes_of("ISOL"));
   if (h.vertices > max_elements || h.faces > max_elements) throw bad_input(".ebm header: counts out of range");
   if ((h.flags & ebm_flags::geometry) && (!std::isfinite(h.box[0]) || !std::isfinite(h.box[1]) ||
@@ -663,6 +797,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
+    plan.triangles = &dec.triangles;
+    plan.opposite = &dec.opposite;
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor));
     for (int g = 0; g < g_count; ++g)
@@ -672,6 +808,38 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
       const std::vector<QPoint> iq = decode_point_list(section("ISOL"), static_cast<std::size_t>(h.isolated), h.qp);
       for (std::size_t k = 0; k < iq.size(); ++k) out.positions[static_cast<std::size_t>(num.count) + k] = quant.restore(iq[k]);
     }
+  }
+  for (const Attribute& a : p.attributes) {
+    if (!p.sections.count(a.tag())) throw bad_input(".ebm stream has no {} section", a.tag());
+    Reader r(section(a.tag()), a.tag());
+    const std::uint64_t main_len = r.varint();
+    if (main_len > r.left()) throw bad_input("{} section is truncated", a.tag());
+    const std::string_view main = r.bytes(static_cast<std::size_t>(main_len));
+    const std::string_view rest = r.bytes(r.left());
+    GeometryPlan plan;
+    plan.parallelogram = dec.parallelogram;
+    plan.unusable = dummy;
+    plan.same_as = num.same_as;
+    const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram);
+    const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits)
+                                                   : std::vector<QPoint>{};
+    const std::size_t n = out.positions.size();
+    const auto store = [&](std::size_t v, const QPoint& x) {
+      if (a.kind == 1) {
+        out.normals[v] = {a.restore(x, 0), a.restore(x, 1), a.restore(x, 2)};
+      } else if (a.kind == 2) {
+        out.colors[v] = {static_cast<std::uint8_t>(x[0]), static_cast<std::uint8_t>(x[1]), static_cast<std::uint8_t>(x[2])};
+      } else {
+        out.texcoords[v] = {a.restore(x, 0), a.restore(x, 1)};
+      }
+    };
+    if (a.kind == 1) out.normals.assign(n, {0.0, 0.0, 0.0});
+    if (a.kind == 2) out.colors.assign(n, {0, 0, 0});
+    if (a.kind == 3) out.texcoords.assign(n, {0.0, 0.0});
+    for (int g = 0; g < g_count; ++g)
+      if (num.output[static_cast<std::size_t>(g)] >= 0)
+        store(static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)]), q[static_cast<std::size_t>(g)]);
+    for (std::size_t k = 0; k < iq.size(); ++k) store(static_cast<std::size_t>(num.count) + k, iq[k]);
   }
   out.triangles.reserve(dec.triangles.size());
   for (const Triangle& t : dec.triangles) {

@@ -22,6 +22,10 @@ namespace fest::edgebreaker {
 struct MeshSoup {
   std::vector<std::array<double, 3>> positions;
   std::vector<Triangle> triangles;
+  // Per-vertex attributes (spec 2.10): each empty, or one entry per position.
+  std::vector<std::array<double, 3>> normals;         // quantised over [-1, 1] (clamped)
+  std::vector<std::array<std::uint8_t, 3>> colors;    // exact
+  std::vector<std::array<double, 2>> texcoords;       // quantised over their own box
 };
 
 enum class ConnChoice { automatic, static_model, adaptive, raw };
@@ -30,6 +34,8 @@ struct EncodeOptions {
   ConnChoice conn = ConnChoice::automatic;
   int model_id = 4;  // m236 (state_machine.hpp named_models)
   int qp = 14;       // 0 lossless (float32 exact), 1..30 bits
+  int qn = 10;       // normal bits per component, 1..30
+  int qt = 12;       // texture coordinate bits, 1..30
   Predictor predictor = Predictor::parallelogram;
   bool stitch = true;           // store stitch pairs so the decoder merges copies back
   bool drop_isolated = false;
@@ -46,6 +52,7 @@ struct EbmHeader {
                 symbols = 0;
   int conn_mode = 0, model_id = 0, qp = 0, predictor = 0;
   std::uint64_t attributes = 0;
+  std::vector<std::string> attribute_names;  // "normal", "color", "texcoord"
   std::array<float, 4> box{};  // min x, y, z, extent
   std::map<std::string, std::size_t> section_bytes;  // payload bytes per tag
   std::size_t total_bytes = 0;
@@ -65,6 +72,7 @@ struct EncodeStats {
   std::map<std::string, std::size_t> section_bytes;
   std::size_t total_bytes = 0;
   double max_error = 0, rms_error = 0;  // per coordinate, after quantisation
+  double error_bound = 0;  // half a quantisation step: extent / (2 (2^qp - 1)); 0 for qp 0
 };
 
 // Throws bad_input for bad mesh data (index out of range, non-finite coordinates, --strict

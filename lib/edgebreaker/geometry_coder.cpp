@@ -123,10 +123,54 @@ std::int64_t mean2(std::int64_t a, std::int64_t b) {
 class Prediction {
  public:
   Prediction(const GeometryPlan& plan, const Domain& domain, Predictor predictor)
-      : plan_(plan), domain_(domain), predictor_(predictor) {}
+      : plan_(plan), domain_(domain), predictor_(predictor) {
+    if (predictor_ == Predictor::multi) {
+      if (!plan.triangles || !plan.opposite) throw bad_input("geometry: the multi-way predictor needs connectivity");
+      // Corners per vertex (CSR), for the triangles around the vertex being predicted.
+      const auto& tris = *plan.triangles;
+      start_.assign(plan.unusable.size() + 1, 0);
+      for (const auto& t : tris)
+        for (int v : t) ++start_[static_cast<std::size_t>(v) + 1];
+      for (std::size_t v = 0; v + 1 < start_.size(); ++v) start_[v + 1] += start_[v];
+      corners_.resize(3 * tris.size());
+      std::vector<int> fill(start_.begin(), start_.end() - 1);
+      for (std::size_t f = 0; f < tris.size(); ++f)
+        for (int j = 0; j < 3; ++j)
+          corners_[static_cast<std::size_t>(fill[static_cast<std::size_t>(tris[f][static_cast<std::size_t>(j)])]++)] =
+              static_cast<int>(3 * f) + j;
+    }
+  }
   QPoint operator()(const std::vector<QPoint>& q, int g, const QPoint& previous) const {
     if (predictor_ == Predictor::none) return {0, 0, 0};
     if (predictor_ == Predictor::delta) return previous;
+    if (predictor_ == Predictor::multi) {
+      // Cohen-Or / Isenburg-style: the mean of every parallelogram around g whose three
+      // other vertices are already decoded (earlier in G, not dummies).
+      const auto& tris = *plan_.triangles;
+      const auto known = [&](int v) { return v < g && !plan_.unusable[static_cast<std::size_t>(v)]; };
+      std::array<std::int64_t, 3> sum{0, 0, 0};
+      std::int64_t count = 0;
+      for (int k = start_[static_cast<std::size_t>(g)]; k < start_[static_cast<std::size_t>(g) + 1]; ++k) {
+        const int c = corners_[static_cast<std::size_t>(k)];
+        const int n = c - c % 3 + (c + 1) % 3, p = c - c % 3 + (c + 2) % 3;
+        const int y = tris[static_cast<std::size_t>(n / 3)][static_cast<std::size_t>(n % 3)];
+        const int z = tris[static_cast<std::size_t>(p / 3)][static_cast<std::size_t>(p % 3)];
+        const int oc = (*plan_.opposite)[static_cast<std::size_t>(c)];
+        const int o = tris[static_cast<std::size_t>(oc / 3)][static_cast<std::size_t>(oc % 3)];
+        if (!known(y) || !known(z) || !known(o)) continue;
+        for (std::size_t a = 0; a < 3; ++a)
+          sum[a] += q[static_cast<std::size_t>(y)][a] + q[static_cast<std::size_t>(z)][a] - q[static_cast<std::size_t>(o)][a];
+        ++count;
+      }
+      if (count > 0) {
+        QPoint out{};
+        for (std::size_t a = 0; a < 3; ++a) {
+          const std::int64_t m = sum[a] >= 0 ? sum[a] / count : -((-sum[a] + count - 1) / count);  // floor
+          out[a] = domain_.clamp(m);
+        }
+        return out;
+      }
+    }
     const auto& pg = plan_.parallelogram[static_cast<std::size_t>(g)];
     if (pg[0] < 0) return previous;  // a start vertex
     const bool a = usable(pg[0]), b = usable(pg[1]), o = usable(pg[2]);
@@ -150,6 +194,7 @@ class Prediction {
   const GeometryPlan& plan_;
   const Domain& domain_;
   Predictor predictor_;
+  std::vector<int> start_, corners_;  // multi: corners of each vertex
 };
 
 }  // namespace

@@ -21,6 +21,9 @@ struct GeometryPlan {
   std::vector<std::array<int, 3>> parallelogram;  // (a, b, o) or -1s (DecodedConnectivity)
   std::vector<char> unusable;  // dummies: no position, never a predictor
   std::vector<int> same_as;    // an earlier G vertex at the same input vertex (stitch), or -1
+  // For Predictor::multi only: the closed mesh's triangles (G ids) and opposite corners.
+  const std::vector<std::array<int, 3>>* triangles = nullptr;
+  const std::vector<int>* opposite = nullptr;
 };
 
 // `bits` 1..30 quantised (values 0 .. 2^bits - 1), 0 lossless (monotone int32 of float

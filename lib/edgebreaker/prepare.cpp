@@ -35,35 +35,44 @@ struct UnionFind {
 };
 
 // Pairs u->v with v->u per undirected edge, first with first, in face order (step 3).
+// Half-edges are bucketed by their first vertex (a counting sort, so corners stay in face
+// order within a bucket); each undirected edge is handled once, from its smaller vertex,
+// by scanning the two buckets: O(sum of valence^2), linear on real meshes.
 void pair_edges(CornerTable& table) {
   const int n = table.corners();
-  struct Half {
-    std::uint64_t edge;  // min * 2^32 + max
-    int corner;          // opposite the half-edge, so it is V[next] -> V[prev]
-  };
-  std::vector<Half> halves(static_cast<std::size_t>(n));
-  for (int c = 0; c < n; ++c) {
-    const auto a = static_cast<std::uint64_t>(table.V[static_cast<std::size_t>(next(c))]);
-    const auto b = static_cast<std::uint64_t>(table.V[static_cast<std::size_t>(prev(c))]);
-    halves[static_cast<std::size_t>(c)] = {std::min(a, b) << 32 | std::max(a, b), c};
+  const auto from = [&](int c) { return table.V[static_cast<std::size_t>(next(c))]; };
+  const auto to = [&](int c) { return table.V[static_cast<std::size_t>(prev(c))]; };
+  std::vector<int> start(static_cast<std::size_t>(table.vertex_count) + 1, 0);
+  for (int c = 0; c < n; ++c) ++start[static_cast<std::size_t>(from(c)) + 1];
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+  std::vector<int> bucket(static_cast<std::size_t>(n));
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int c = 0; c < n; ++c) bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(from(c))]++)] = c;
   }
-  std::sort(halves.begin(), halves.end(),
-            [](const Half& x, const Half& y) { return x.edge != y.edge ? x.edge < y.edge : x.corner < y.corner; });
   std::vector<int> forward, backward;
-  for (std::size_t i = 0; i < halves.size();) {
-    std::size_t j = i;
-    forward.clear();
-    backward.clear();
-    for (; j < halves.size() && halves[j].edge == halves[i].edge; ++j) {
-      const int c = halves[j].corner;
-      (table.V[static_cast<std::size_t>(next(c))] < table.V[static_cast<std::size_t>(prev(c))] ? forward : backward)
-          .push_back(c);
+  for (int u = 0; u < table.vertex_count; ++u) {
+    const int* ub = bucket.data() + start[static_cast<std::size_t>(u)];
+    const int un = start[static_cast<std::size_t>(u) + 1] - start[static_cast<std::size_t>(u)];
+    for (int i = 0; i < un; ++i) {
+      const int v = to(ub[i]);
+      if (v < u) continue;  // from the smaller vertex only
+      bool first = true;    // handle each (u, v) at its first u->v half-edge
+      for (int k = 0; k < i && first; ++k) first = to(ub[k]) != v;
+      if (!first) continue;
+      forward.clear();
+      backward.clear();
+      for (int k = i; k < un; ++k)
+        if (to(ub[k]) == v) forward.push_back(ub[k]);
+      const int* vb = bucket.data() + start[static_cast<std::size_t>(v)];
+      const int vn = start[static_cast<std::size_t>(v) + 1] - start[static_cast<std::size_t>(v)];
+      for (int k = 0; k < vn; ++k)
+        if (to(vb[k]) == u) backward.push_back(vb[k]);
+      for (std::size_t k = 0; k < std::min(forward.size(), backward.size()); ++k) {
+        table.O[static_cast<std::size_t>(forward[k])] = backward[k];
+        table.O[static_cast<std::size_t>(backward[k])] = forward[k];
+      }
     }
-    for (std::size_t k = 0; k < std::min(forward.size(), backward.size()); ++k) {
-      table.O[static_cast<std::size_t>(forward[k])] = backward[k];
-      table.O[static_cast<std::size_t>(backward[k])] = forward[k];
-    }
-    i = j;
   }
 }
 
@@ -95,6 +104,7 @@ PreparedMesh prepare_mesh(const std::vector<Triangle>& faces, int vertex_count, 
   for (int v = 0; v < vertex_count; ++v)
     if (!used[static_cast<std::size_t>(v)]) out.isolated.push_back(v);
   table.O.assign(table.V.size(), -1);
+  table.vertex_count = vertex_count;  // input ids for now; copies and dummies follow
   pair_edges(table);
   const int kept_corners = table.corners();
 

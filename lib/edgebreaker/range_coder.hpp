@@ -44,9 +44,12 @@ class RangeEncoder {
     if (b) low_ += range_;
     normalise();
   }
-  // `count` (<= 32) low bits of `value`, most significant first.
+  // `count` (1..16) low bits of `value` at once, as one uniform decision over 2^count
+  // values (the decoder must read them with the same count).
   void bypass_bits(std::uint32_t value, int count) {
-    for (int i = count - 1; i >= 0; --i) bypass(static_cast<int>((value >> i) & 1u));
+    range_ >>= count;
+    low_ += static_cast<std::uint64_t>(value & ((1u << count) - 1u)) * range_;
+    normalise();
   }
   // Ends the stream with as few bytes as identify a value in [low, low + range): the
   // decoder reads missing trailing bytes as zeros. The first byte LZMA-style coders write
@@ -139,8 +142,12 @@ class RangeDecoder {
     return b;
   }
   std::uint32_t bypass_bits(int count) {
-    std::uint32_t v = 0;
-    for (int i = 0; i < count; ++i) v = (v << 1) | static_cast<std::uint32_t>(bypass());
+    range_ >>= count;
+    std::uint32_t v = code_ / range_;
+    const std::uint32_t top = (1u << count) - 1u;
+    if (v > top) v = top;  // only a damaged stream gets here
+    code_ -= v * range_;
+    normalise();
     return v;
   }
   // Bytes read beyond the end. The encoder leaves out trailing zero bytes, so a complete

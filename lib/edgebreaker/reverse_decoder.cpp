@@ -17,13 +17,15 @@ ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> eve
   // Corner ids are ints: 3 per triangle, at most symbols + components triangles.
   if (symbols > static_cast<std::size_t>(std::numeric_limits<int>::max() / 16))
     throw bad_input("invalid connectivity: {} symbols, more than supported", symbols);
-  decoded_.reserve(symbols);
-  // The caller has checked `symbols` against the bytes it came from.
-  V_.reserve(3 * (symbols + 2));
-  O_.reserve(3 * (symbols + 2));
-  parent_.reserve(symbols + 3);
-  degree_.reserve(symbols + 3);
-  closed_.reserve(symbols + 3);
+  // Reserve for what is announced, up to a limit: beyond it memory grows only with the
+  // symbols actually decoded, so a lying count costs nothing.
+  const std::size_t expected = std::min<std::size_t>(symbols, std::size_t{1} << 16);
+  decoded_.reserve(expected);
+  V_.reserve(3 * (expected + 2));
+  O_.reserve(3 * (expected + 2));
+  parent_.reserve(expected + 3);
+  degree_.reserve(expected + 3);
+  closed_.reserve(expected + 3);
   for (std::size_t k = 0; k < events_.size(); ++k) {
     const HandleEvent& e = events_[k];
     if (e.source >= symbols || e.split >= e.source)
@@ -330,6 +332,10 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
   }
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
+  const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
+  out.opposite.resize(static_cast<std::size_t>(3 * t));
+  for (int c = 0; c < 3 * t; ++c) out.opposite[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
+
   if (verify) {
     // Re-encode the decoded corner table itself (not a table rebuilt from the faces, which
     // could not tell the two edges of a multi-edge apart).
@@ -337,11 +343,8 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
     table.vertex_count = out.vertex_count;
     table.V.resize(static_cast<std::size_t>(3 * t));
     table.O.resize(static_cast<std::size_t>(3 * t));
-    const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
-    for (int c = 0; c < 3 * t; ++c) {
-      table.V[static_cast<std::size_t>(moved(c))] = id(c);
-      table.O[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
-    }
+    for (int c = 0; c < 3 * t; ++c) table.V[static_cast<std::size_t>(moved(c))] = id(c);
+    table.O = out.opposite;
     try {
       check_closed_manifold(table);
     } catch (const Error& e) {

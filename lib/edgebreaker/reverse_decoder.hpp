@@ -24,6 +24,8 @@ struct DecodedConnectivity {
   // (a, b) and the vertex o across it, all earlier in G -- or {-1,-1,-1} for a component's
   // start vertices.
   std::vector<std::array<int, 3>> parallelogram;
+  // Per corner of `triangles` (3k + j): the opposite corner, for the multi-way predictor.
+  std::vector<int> opposite;
 };
 
 class ReverseDecoder {

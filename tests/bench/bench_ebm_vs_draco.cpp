@@ -1,7 +1,8 @@
 // ebcode against Draco 1.5.5 (specs/ebcode.md section 7) on the spec's real meshes and the
 // 1.2 M-triangle subdivided bunny, in the same process: one JSON line per mesh and
 // quantisation, with bytes, bits per vertex (connectivity and total), encode and decode
-// throughput (median of 5 runs, one thread) for ebcode --conn auto and Draco cl7/cl10
+// throughput (median of 5 runs, one thread) for ebcode --conn auto (and the size with
+// --predict multi against Draco cl10) and Draco cl7/cl10
 // through libdraco, and draco_encoder's file size at cl7 when Debian's `draco` is installed.
 //
 //   build/bin/bench_ebm_vs_draco [TESTDATA_DIR] [--quick]     (default: $FEST_TESTDATA)
@@ -167,6 +168,9 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
   const double dec_ms = median_ms(runs, [&] { decode_ebm(ebm, true, false); });
   const double dec_verified_ms = median_ms(runs, [&] { decode_ebm(ebm, true, true); });
   const std::size_t conn = stats.section_bytes.count("CONN") ? stats.section_bytes.at("CONN") : 0;
+  EncodeOptions om = o;
+  om.predictor = Predictor::multi;
+  const std::size_t multi_bytes = encode_ebm(soup, om).size();
 
   const auto draco_mesh = to_draco(soup, false);
   const auto draco_flat = to_draco(soup, true);
@@ -185,13 +189,13 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
       "\"draco_cl7\":{\"bytes\":%zu,\"conn_bpv_flat\":%.4f,\"total_bpv\":%.3f,\"encode_ms\":%.2f,\"decode_ms\":%.2f,"
       "\"encode_mtri_s\":%.3f,\"decode_mtri_s\":%.3f},"
       "\"draco_cl10\":{\"bytes\":%zu,\"total_bpv\":%.3f,\"encode_ms\":%.2f,\"decode_ms\":%.2f},"
-      "\"draco_encoder_cl7_bytes\":%ld,\"draco_conn_bpv_spec\":%.3f,"
+      "\"ebm_multi_bytes\":%zu,\"ebm_multi_over_draco_cl10\":%.4f,\"draco_encoder_cl7_bytes\":%ld,\"draco_conn_bpv_spec\":%.3f,"
       "\"ebm_over_draco_cl7_bytes\":%.4f,\"conn_vs_draco_cl7\":%.4f,\"peak_rss_kb\":%ld%s}\n",
       name.c_str(), v, t, qp, ebm.size(), stats.conn_mode.c_str(), 8.0 * static_cast<double>(conn) / v,
       8.0 * static_cast<double>(ebm.size()) / v, enc_ms, dec_ms, dec_verified_ms, t / enc_ms / 1000.0, t / dec_ms / 1000.0,
       d7.size(), 8.0 * static_cast<double>(d7_conn) / v, 8.0 * static_cast<double>(d7.size()) / v, d7_enc, d7_dec,
       t / d7_enc / 1000.0, t / d7_dec / 1000.0, d10.size(), 8.0 * static_cast<double>(d10.size()) / v, d10_enc, d10_dec,
-      cli, spec_draco_conn(name), static_cast<double>(ebm.size()) / static_cast<double>(d7.size()),
+      multi_bytes, static_cast<double>(multi_bytes) / static_cast<double>(d10.size()), cli, spec_draco_conn(name), static_cast<double>(ebm.size()) / static_cast<double>(d7.size()),
       static_cast<double>(conn) / static_cast<double>(d7_conn), peak_rss_kb(),
       cli < 0 ? ",\"note\":\"draco_encoder not installed (Debian package draco)\"" : "");
   std::fflush(stdout);

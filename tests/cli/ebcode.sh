@@ -88,6 +88,43 @@ run ebdecode --info "$WORK/r.ebm"
 expect_json '.vertices' '8'
 expect_json '.faces' '5'
 
+case_ "vertex colours and normals travel with their vertices"
+cat >"$WORK/colored.ply" <<'PLY'
+ply
+format ascii 1.0
+element vertex 4
+property float x
+property float y
+property float z
+property float nx
+property float ny
+property float nz
+property uchar red
+property uchar green
+property uchar blue
+element face 4
+property list uchar int vertex_indices
+end_header
+0 0 0 0 0 -1 10 20 30
+1 0 0 1 0 0 40 50 60
+0 1 0 0 1 0 70 80 90
+0 0 1 0 0 1 100 110 120
+3 0 2 1
+3 0 1 3
+3 0 3 2
+3 1 2 3
+PLY
+run ebcode --qp 0 "$WORK/colored.ply" -o "$WORK/colored.ebm"
+expect_status 0
+run ebdecode --info "$WORK/colored.ebm"
+expect_json '.attributes' '["normal","color"]'
+run ebdecode --to plya "$WORK/colored.ebm"
+expect_status 0
+# Each vertex keeps its colour exactly and its normal within half a step (2/1023/2 at 10
+# bits: 1 stays 1, 0 becomes 0.000977).
+check "vertex (1,0,0) keeps colour 40 50 60 and normal (1,0,0)" grep -Eqx "1 0 0 1 0\.000977[0-9]* 0\.000977[0-9]* 40 50 60" "$out"
+check "vertex (0,0,1) keeps colour 100 110 120 and normal (0,0,1)" grep -Eqx "0 0 1 0\.000977[0-9]* 0\.000977[0-9]* 1 100 110 120" "$out"
+
 case_ "pipes: standard input to standard output"
 "$FEST_BIN/ebcode" <"$WORK/tet.off" | "$FEST_BIN/ebdecode" --to off >"$WORK/pipe.off"
 check "4 vertices" test "$(vertex_count "$WORK/pipe.off")" = 4

@@ -54,6 +54,27 @@ eight 0 2.198
 elephant-with-holes 0 2.765
 LIST
 
+case_ "cow: the report's largest quantisation error is at most half a step"
+"$FEST_BIN/ebcode" --qp 10 --report "$WORK/q.json" "$M/cow.off" -o "$WORK/q.ebm"
+check "max <= bound" test "$(jq '.error.max <= .error.bound and .error.bound > 0' "$WORK/q.json")" = true
+
+case_ "Draco interoperability: ebcode --to drc | ebdecode"
+run ebcode --qp 11 --to drc "$M/cow.off" -o "$WORK/cow.drc"
+expect_status 0
+run ebdecode "$WORK/cow.drc" -o "$WORK/cow_drc.ply"
+expect_status 0
+extent=$("$FEST_BIN/ebdecode" --info "$WORK/q.ebm" | jq '.box[3]')
+run fcompare --tol "$(awk -v e="$extent" 'BEGIN { printf "%.9g", e / (2 * 2047) * sqrt(3) * 1.01 }')" "$M/cow.off" "$WORK/cow_drc.ply"
+expect_status 0
+if command -v draco_encoder >/dev/null 2>&1; then
+  case_ "ebdecode reads draco_encoder's output"
+  "$FEST_BIN/ebdecode" "$WORK/q.ebm" --to obj -o "$WORK/cow.obj"
+  draco_encoder -i "$WORK/cow.obj" -o "$WORK/cow_cli.drc" -cl 7 -qp 11 >/dev/null 2>&1
+  run ebdecode --to off "$WORK/cow_cli.drc"
+  expect_status 0
+  check "2904 vertices" test "$(awk 'NR == 2 { print $1 }' "$out")" = 2904
+fi
+
 case_ "the raw Stanford scan: holes and non-manifold vertices restored"
 if f=$(need_testdata meshes/bunny_scan.ply 2>/dev/null) || [ -f "$M/bunny_scan.ply" ]; then
   f="$M/bunny_scan.ply"

@@ -51,10 +51,12 @@ std::vector<Point> point_set(const MeshSoup& m) {
   return p;
 }
 
-void expect_exact_round_trip(const MeshSoup& in, ConnChoice conn = ConnChoice::automatic) {
+void expect_exact_round_trip(const MeshSoup& in, ConnChoice conn = ConnChoice::automatic,
+                             Predictor predictor = Predictor::parallelogram) {
   EncodeOptions o;
   o.qp = 0;  // lossless: positions identify vertices
   o.conn = conn;
+  o.predictor = predictor;
   EncodeStats stats;
   const std::string bytes = encode_ebm(in, o, &stats);
   const MeshSoup out = decode_ebm(bytes);
@@ -82,6 +84,45 @@ std::vector<Triangle> torus(int n, int m) {
       t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   return t;
+}
+
+TEST(EdgebreakerEbm, EveryPredictorRoundTrips) {
+  const auto m = fest::test::eb::subdivided_icosahedron(2);
+  std::vector<Triangle> t = m.triangles;
+  t.push_back({0, 1, 60});  // a fin: holes, dummies and copies around the predictions
+  for (Predictor p : {Predictor::parallelogram, Predictor::multi, Predictor::delta, Predictor::none})
+    expect_exact_round_trip(with_positions(t, m.vertex_count), ConnChoice::automatic, p);
+}
+
+// spec 2.10: colours exact, normals and texture coordinates within half a step, kept
+// through holes, stitching and isolated vertices.
+TEST(EdgebreakerEbm, VertexAttributesComeBackWithTheirVertices) {
+  std::vector<Triangle> t = fest::test::eb::subdivided_icosahedron(1).triangles;
+  t.push_back({0, 1, 40});  // a fin: a hole, a dummy and copies
+  MeshSoup m = with_positions(t, 43);  // 41, 42 isolated
+  for (std::size_t v = 0; v < m.positions.size(); ++v) {
+    const double a = 0.3 * static_cast<double>(v);
+    m.normals.push_back({std::cos(a), std::sin(a) * 0.6, std::sin(a) * 0.8});
+    m.colors.push_back({static_cast<std::uint8_t>(v * 5), static_cast<std::uint8_t>(255 - v), 7});
+    m.texcoords.push_back({0.01 * static_cast<double>(v), 2.0 - 0.02 * static_cast<double>(v)});
+  }
+  EncodeOptions o;
+  o.qp = 0;
+  o.qn = 10;
+  o.qt = 12;
+  const std::string bytes = encode_ebm(m, o);
+  EXPECT_EQ(read_ebm_header(bytes).attribute_names, (std::vector<std::string>{"normal", "color", "texcoord"}));
+  const MeshSoup out = decode_ebm(bytes);
+  ASSERT_EQ(out.positions.size(), m.positions.size());
+  std::map<Point, std::size_t> input_of;  // positions are distinct and exact at qp 0
+  for (std::size_t v = 0; v < m.positions.size(); ++v) input_of[m.positions[v]] = v;
+  const double normal_step = 2.0 / (std::ldexp(1.0, 10) - 1), tex_step = 1.99 / (std::ldexp(1.0, 12) - 1);
+  for (std::size_t v = 0; v < out.positions.size(); ++v) {
+    const std::size_t i = input_of.at(out.positions[v]);
+    EXPECT_EQ(out.colors[v], m.colors[i]);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_LE(std::fabs(out.normals[v][k] - m.normals[i][k]), normal_step / 2 + 1e-12);
+    for (std::size_t k = 0; k < 2; ++k) EXPECT_LE(std::fabs(out.texcoords[v][k] - m.texcoords[i][k]), tex_step / 2 * 1.0001);
+  }
 }
 
 TEST(EdgebreakerEbm, HandlesGiveTwoEventsPerGenus) {
@@ -183,6 +224,7 @@ TEST(EdgebreakerEbm, QuantisationErrorIsAtMostHalfAStep) {
   for (int bits : {4, 11, 14, 20}) {
     EncodeOptions o;
     o.qp = bits;
+    o.predictor = bits == 11 ? Predictor::multi : Predictor::parallelogram;
     const std::string bytes = encode_ebm(m, o);
     const EbmHeader h = read_ebm_header(bytes);
     const MeshSoup out = decode_ebm(bytes);
@@ -273,8 +315,10 @@ TEST(EdgebreakerEbm, CommittedStreamsDecode) {
                                          {"tetrahedron_raw_lossless.ebm", 4, 4},
                                          {"icosahedron_static.ebm", 12, 20},
                                          {"eight_genus2.ebm", 315, 634},
+                                         {"eight_multi.ebm", 315, 634},
                                          {"mushroom_hole.ebm", 2337, 4608},
-                                         {"bowtie_stitch.ebm", 7, 8}}) {
+                                         {"bowtie_stitch.ebm", 7, 8},
+                                         {"tetrahedron_attributes.ebm", 4, 4}}) {
     SCOPED_TRACE(c.file);
     const std::string bytes = slurp(dir + c.file);
     ASSERT_FALSE(bytes.empty());

@@ -38,6 +38,8 @@ struct Options {
   std::string conn = "auto";
   std::string model = "m236";
   int qp = 14;
+  int qn = 10;
+  int qt = 12;
   std::string box;
   std::string predict = "para";
   bool no_stitch = false;
@@ -93,8 +95,8 @@ Predictor parse_predictor(const std::string& name) {
   if (name == "para") return Predictor::parallelogram;
   if (name == "delta") return Predictor::delta;
   if (name == "none") return Predictor::none;
-  if (name == "multi") throw usage_error("--predict multi is unsupported in this version (para, delta, none)");
-  throw usage_error("--predict: unknown predictor '{}' (para, delta, none)", name);
+  if (name == "multi") return Predictor::multi;
+  throw usage_error("--predict: unknown predictor '{}' (para, multi, delta, none)", name);
 }
 
 ConnChoice parse_conn(const std::string& name) {
@@ -114,8 +116,8 @@ int encode(const Options& opt) {
   const MeshSoup soup = tools::to_soup(mesh);
   const double read_ms = ms_since(t0);
   if (soup.positions.empty()) throw bad_input("the mesh is empty ({})", in.name);
-  if (!opt.quiet && (mesh.has_vertex_normals() || mesh.has_vertex_colors() || mesh.has_vertex_texcoords2D()))
-    warn("ebcode", "vertex normals, colours and texture coordinates are not coded; only positions are kept");
+  if (!opt.quiet && (mesh.has_face_colors() || mesh.has_face_normals()))
+    warn("ebcode", "face colours and normals are not coded; vertex attributes are");
 
   if (opt.symbols) {
     write_output(opt.output, to_string(mesh_symbols(soup, opt.strict)) + "\n");
@@ -134,6 +136,8 @@ int encode(const Options& opt) {
   e.conn = parse_conn(opt.conn);
   e.model_id = named_model(opt.model).id;
   e.qp = opt.qp;
+  e.qn = opt.qn;
+  e.qt = opt.qt;
   if (!opt.box.empty()) e.box = parse_box(opt.box);
   e.predictor = parse_predictor(opt.predict);
   e.stitch = !opt.no_stitch;
@@ -179,8 +183,7 @@ int encode(const Options& opt) {
     r["bpv"] = {{"connectivity", bpv(section("CONN"))},
                 {"geometry", bpv(section("GEOM"))},
                 {"total", bpv(stats.total_bytes)}};
-    r["error"] = {{"max", stats.max_error}, {"rms", stats.rms_error},
-                  {"bound", opt.qp == 0 ? 0.0 : 0.0}};
+    r["error"] = {{"max", stats.max_error}, {"rms", stats.rms_error}, {"bound", stats.error_bound}};
     r["ms"] = {{"read", read_ms}, {"encode", encode_ms}, {"write", write_ms}};
     r["triangles_per_s"] = encode_ms > 0 ? static_cast<double>(stats.input_faces) / (encode_ms / 1000.0) : 0.0;
     r["peak_rss_kb"] = peak_rss_kb();
@@ -288,8 +291,10 @@ int main(int argc, char** argv) {
       ->default_val("auto");
   app.add_option("--model", opt.model, "Static state machine: m2, m26, m68, m236, m240x")->default_val("m236");
   app.add_option("--qp", opt.qp, "Position bits 1..30; 0 = lossless float32")->default_val(14)->check(CLI::Range(0, 30));
+  app.add_option("--qn", opt.qn, "Vertex normal bits per component (over [-1, 1])")->default_val(10)->check(CLI::Range(1, 30));
+  app.add_option("--qt", opt.qt, "Texture coordinate bits (over their own box)")->default_val(12)->check(CLI::Range(1, 30));
   app.add_option("--box", opt.box, "Quantisation box X,Y,Z,EXT instead of the bounding box");
-  app.add_option("--predict", opt.predict, "Position predictor: para, delta, none")->default_val("para");
+  app.add_option("--predict", opt.predict, "Position predictor: para, multi (mean of all parallelograms), delta, none")->default_val("para");
   app.add_flag("--no-stitch", opt.no_stitch, "Keep the copies of non-manifold vertices as separate vertices");
   app.add_flag("--drop-isolated", opt.drop_isolated, "Drop vertices no face uses");
   app.add_flag("--no-geometry", opt.no_geometry, "Connectivity only");

@@ -58,6 +58,7 @@ nlohmann::json header_json(const EbmHeader& h) {
   j["geometry"] = (h.flags & ebm_flags::geometry) != 0;
   j["exclusion"] = (h.flags & ebm_flags::exclusion) != 0;
   j["box"] = {h.box[0], h.box[1], h.box[2], h.box[3]};
+  j["attributes"] = h.attribute_names;
   nlohmann::json sections = nlohmann::json::object();
   for (const auto& [tag, n] : h.section_bytes) sections[tag] = n;
   j["sections"] = sections;
