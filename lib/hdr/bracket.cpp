@@ -21,8 +21,10 @@ cv::Mat expose(const cv::Mat& radiance, double time, const CameraModel& camera, 
   cv::RNG rng(seed);
   const double inverse_gamma = 1 / camera.gamma;
   for (std::size_t i = 0; i < n; ++i) {
-    const double x = double(in[i]);
-    if (!(x >= 0 && std::isfinite(x))) throw bad_input("radiance value {} at sample {} is negative or not finite", x, i);
+    // Real maps carry small negative values (ringing of their filtering); a sensor sees
+    // no negative light, so they expose as 0.
+    if (!std::isfinite(in[i])) throw bad_input("radiance value at sample {} is not finite", i);
+    const double x = std::max(0.0, double(in[i]));
     const double v = 255.0 * std::pow(std::min(1.0, x * time), inverse_gamma) +
                      (camera.noise_dn > 0 ? rng.gaussian(camera.noise_dn) : 0.0);
     out[i] = std::uint8_t(std::lround(std::clamp(v, 0.0, 255.0)));

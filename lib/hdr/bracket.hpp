@@ -15,8 +15,8 @@ struct CameraModel {
   double noise_dn = 0.5;  // read noise, standard deviation in digital numbers
 };
 
-// radiance: CV_32FC1 or CV_32FC3, not negative. Deterministic for a given seed. Throws
-// bad_input for other depths and negative or non-finite radiance, usage_error for a bad
+// radiance: CV_32FC1 or CV_32FC3; negative values count as 0. Deterministic for a given
+// seed. Throws bad_input for other depths and non-finite radiance, usage_error for a bad
 // model or time.
 cv::Mat expose(const cv::Mat& radiance, double time, const CameraModel& camera, std::uint64_t seed);
 

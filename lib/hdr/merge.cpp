@@ -1,6 +1,7 @@
 #include "hdr/merge.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <thread>
 
@@ -16,42 +17,52 @@ struct Tables {
   std::array<float, kCodes> weight{};
 };
 
+// One row at a time, exposures outermost: each pass streams one 8-bit row and adds two
+// table lookups per sample into float accumulators; the exponential runs once per row
+// through OpenCV's vectorised cv::exp.
 void merge_rows(const ExposureStack& stack, const Response& response, const Tables& tables, int row_begin,
                 int row_end, MergeResult& out) {
   const int p = int(stack.images.size());
   const int channels = response.channels();
   const int width = stack.images.front().cols;
+  const std::size_t samples = std::size_t(width) * std::size_t(channels);
   const double log_short = std::log(stack.times.front()), log_long = std::log(stack.times.back());
   const float full_weight = float(p * kMaxHatWeight);
-  std::vector<const std::uint8_t*> rows(std::size_t(p), nullptr);
+  cv::Mat numerator(1, int(samples), CV_32F), denominator(1, int(samples), CV_32F);
+  float* num = numerator.ptr<float>();
+  float* den = denominator.ptr<float>();
   for (int y = row_begin; y < row_end; ++y) {
-    for (int j = 0; j < p; ++j) rows[std::size_t(j)] = stack.images[std::size_t(j)].ptr<std::uint8_t>(y);
-    float* radiance = out.radiance.ptr<float>(y);
+    std::fill(num, num + samples, 0.0f);
+    std::fill(den, den + samples, 0.0f);
+    for (int j = 0; j < p; ++j) {
+      const std::uint8_t* z = stack.images[std::size_t(j)].ptr<std::uint8_t>(y);
+      for (int c = 0; c < channels; ++c) {
+        const float* table = tables.weighted_log[std::size_t(c * p + j)].data();
+        for (std::size_t i = std::size_t(c); i < samples; i += std::size_t(channels)) {
+          num[i] += table[z[i]];
+          den[i] += tables.weight[z[i]];
+        }
+      }
+    }
     float* valid = out.valid.ptr<float>(y);
+    const std::uint8_t* shortest = stack.images.front().ptr<std::uint8_t>(y);
+    const std::uint8_t* longest = stack.images.back().ptr<std::uint8_t>(y);
     for (int x = 0; x < width; ++x) {
       float least = 1;
       for (int c = 0; c < channels; ++c) {
-        const std::size_t at = std::size_t(x) * std::size_t(channels) + std::size_t(c);
-        float numerator = 0, denominator = 0;
-        const std::array<float, kCodes>* table = &tables.weighted_log[std::size_t(c * p)];
-        for (int j = 0; j < p; ++j) {
-          const std::uint8_t z = rows[std::size_t(j)][at];
-          numerator += table[j][z];
-          denominator += tables.weight[z];
-        }
-        double log_e;
-        if (denominator > 0) {
-          log_e = numerator / denominator;
+        const std::size_t i = std::size_t(x) * std::size_t(channels) + std::size_t(c);
+        if (den[i] > 0) {
+          num[i] /= den[i];
         } else {
-          const std::uint8_t z_short = rows.front()[at];
-          log_e = 2 * z_short > kZmin + kZmax ? response.g[std::size_t(c)][z_short] - log_short
-                                              : response.g[std::size_t(c)][rows.back()[at]] - log_long;
+          const Curve& g = response.g[std::size_t(c)];
+          num[i] = float(2 * shortest[i] > kZmin + kZmax ? g[shortest[i]] - log_short : g[longest[i]] - log_long);
         }
-        radiance[at] = float(std::exp(log_e));
-        least = std::min(least, denominator / full_weight);
+        least = std::min(least, den[i] / full_weight);
       }
       valid[x] = least;
     }
+    cv::Mat row(1, int(samples), CV_32F, out.radiance.ptr<float>(y));
+    cv::exp(numerator, row);
   }
 }
 

@@ -3,8 +3,10 @@
 //
 //   hdr_check ramp W H OUT.pfm        radiance E = 10^(-2 + 4 u), u a ramp in x with a
 //                                     ripple in y; channels scaled 1, 0.8, 0.6
-//   hdr_check logrms MERGED TRUTH     "rms offset valid_fraction": RMS of ln(merged/truth)
-//                                     minus its mean, over pixels finite and > 0
+//   hdr_check logrms MERGED TRUTH [VALID MIN]
+//                                     "rms offset used_fraction": RMS of ln(merged/truth)
+//                                     minus its mean, over samples finite and > 0 (and
+//                                     whose validity map value is at least MIN)
 //   hdr_check curve RESPONSE.csv G    worst |exp(g(z) - G ln(z/128)) - 1| over z 10..245
 
 #include <cmath>
@@ -33,8 +35,10 @@ int ramp(int w, int h, const std::string& out) {
   return 0;
 }
 
-int logrms(const std::string& merged_path, const std::string& truth_path) {
+int logrms(const std::string& merged_path, const std::string& truth_path, const std::string& valid_path,
+           double min_valid) {
   const cv::Mat m = load(merged_path), t = load(truth_path);
+  const cv::Mat v = valid_path.empty() ? cv::Mat() : load(valid_path);
   if (m.size() != t.size() || m.channels() != t.channels()) return std::fprintf(stderr, "size mismatch\n"), 1;
   const std::size_t n = m.total() * std::size_t(m.channels());
   double sum = 0, sum2 = 0;
@@ -42,6 +46,7 @@ int logrms(const std::string& merged_path, const std::string& truth_path) {
   for (std::size_t i = 0; i < n; ++i) {
     const double a = m.ptr<float>()[i], b = t.ptr<float>()[i];
     if (!(a > 0 && std::isfinite(a) && b > 0)) continue;
+    if (!v.empty() && !(v.ptr<float>()[i / std::size_t(m.channels())] >= min_valid)) continue;
     const double d = std::log(a / b);
     sum += d;
     sum2 += d * d;
@@ -69,7 +74,8 @@ int main(int argc, char** argv) {
   try {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "ramp" && argc == 5) return ramp(std::stoi(argv[2]), std::stoi(argv[3]), argv[4]);
-    if (mode == "logrms" && argc == 4) return logrms(argv[2], argv[3]);
+    if (mode == "logrms" && argc == 4) return logrms(argv[2], argv[3], "", 0);
+    if (mode == "logrms" && argc == 6) return logrms(argv[2], argv[3], argv[4], std::stod(argv[5]));
     if (mode == "curve" && argc == 4) return curve(argv[2], std::stod(argv[3]));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hdr_check: %s\n", e.what());

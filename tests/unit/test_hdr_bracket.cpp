@@ -47,7 +47,10 @@ TEST(HdrBracket, NoiseHasTheRequestedSpreadAndIsSeeded) {
 
 TEST(HdrBracket, RejectsBadInput) {
   EXPECT_THROW(expose(cv::Mat(2, 2, CV_8UC1, cv::Scalar(1)), 1.0, {}, 1), fest::Error);
-  EXPECT_THROW(expose(cv::Mat(2, 2, CV_32FC1, cv::Scalar(-1)), 1.0, {}, 1), fest::Error);
+  EXPECT_THROW(expose(cv::Mat(2, 2, CV_32FC1, cv::Scalar(std::nan(""))), 1.0, {}, 1), fest::Error);
+  CameraModel noiseless;
+  noiseless.noise_dn = 0;
+  EXPECT_EQ(cv::countNonZero(expose(cv::Mat(2, 2, CV_32FC1, cv::Scalar(-1)), 1.0, noiseless, 1)), 0);
   EXPECT_THROW(expose(cv::Mat(2, 2, CV_32FC1, cv::Scalar(1)), 0.0, {}, 1), fest::Error);
 }
 
