@@ -36,6 +36,12 @@ le "$worst" 0.02 && pass || fail "response error $worst > 0.02"
 truth_worst=$("$check_tool" curve "$WORK/true.csv" 2.2)
 le "$truth_worst" 1e-12 && pass || fail "bracket's true curve is not gamma 2.2 ($truth_worst)"
 
+case_ "calibrate --method robertson: response within 2 % too"
+run hdrmerge calibrate "$WORK"/s/e*.png -t "$T" --method robertson
+expect_status 0
+worst=$("$check_tool" curve "$out" 2.2)
+le "$worst" 0.02 && pass || fail "Robertson response error $worst > 0.02"
+
 case_ "merge: log-radiance RMS within 2.5 %"
 run hdrmerge "$WORK"/s/e*.png -t "$T" -o "$WORK/m.exr" --float --valid "$WORK/valid.exr" --response-out "$WORK/r.csv"
 expect_status 0
@@ -97,6 +103,7 @@ bad "response table with 10 rows" 3 "$WORK/s/e00.png" "$WORK/s/e01.png" -t 0.001
 bad "time is not a number" 2 "$WORK/s/e00.png" "$WORK/s/e01.png" -t 0.001,abc
 bad "zero time" 2 "$WORK/s/e00.png" "$WORK/s/e01.png" -t 0,0.001
 bad "unknown flag" 2 "$WORK/s/e00.png" "$WORK/s/e01.png" -t 0.001,0.002 --bogus
+bad "unknown method" 2 "$WORK/s/e00.png" "$WORK/s/e01.png" -t 0.001,0.002 --method mertens
 bad "missing file" 4 "$WORK/s/e00.png" "$WORK/nope.png" -t 0.001,0.002
 case_ "radiance as PNG is refused"
 run hdrmerge "$WORK/s/e00.png" "$WORK/s/e01.png" -t 0.001,0.002 -o "$WORK/bad.png"

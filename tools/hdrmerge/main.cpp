@@ -16,6 +16,7 @@
 #include "formats/table/table_io.hpp"
 #include "hdr/bracket.hpp"
 #include "hdr/merge.hpp"
+#include "hdr/robertson.hpp"
 #include "stack_files.hpp"
 
 namespace {
@@ -28,6 +29,7 @@ struct SeriesArgs {
   std::vector<std::string> times;
   int samples = hdr::DebevecOptions{}.samples;
   double lambda = hdr::DebevecOptions{}.lambda;
+  std::string method = "debevec";
 };
 
 struct MergeArgs {
@@ -48,6 +50,8 @@ void add_series(CLI::App* cmd, SeriesArgs& s) {
   cmd->add_option("--samples", s.samples, "Sample pixels per channel for response recovery")->check(CLI::Range(1, 100000));
   cmd->add_option("--lambda", s.lambda, "Smoothness weight of the response (as in Debevec-Malik's gsolve)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--method", s.method, "Response recovery: debevec (Debevec-Malik) or robertson (Robertson et al.)")
+      ->check(CLI::IsMember({"debevec", "robertson"}));
 }
 
 hdr::DebevecOptions options_of(const SeriesArgs& s) {
@@ -55,6 +59,11 @@ hdr::DebevecOptions options_of(const SeriesArgs& s) {
   o.samples = s.samples;
   o.lambda = s.lambda;
   return o;
+}
+
+hdr::Response recover(const hdr::ExposureStack& stack, const SeriesArgs& s) {
+  if (s.method == "robertson") return hdr::recover_response_robertson(stack);
+  return hdr::recover_response_debevec(stack, options_of(s));
 }
 
 formats::Format radiance_format(const MergeArgs& a) {
@@ -74,7 +83,7 @@ int run_merge(const MergeArgs& a) {
   const hdr::ExposureStack stack = read_stack(a.series.images, a.series.times);
   const hdr::Response response =
       a.response_in.empty()
-          ? hdr::recover_response_debevec(stack, options_of(a.series))
+          ? recover(stack, a.series)
           : response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
   const hdr::MergeResult merged = hdr::merge_debevec(stack, response, threads);
   formats::ImageWriteOptions w;
@@ -92,7 +101,7 @@ int run_merge(const MergeArgs& a) {
 
 int run_calibrate(const SeriesArgs& s, const std::string& output) {
   const hdr::ExposureStack stack = read_stack(s.images, s.times);
-  const hdr::Response response = hdr::recover_response_debevec(stack, options_of(s));
+  const hdr::Response response = recover(stack, s);
   write_output(output, formats::write_table(response_table(response), formats::Format::csv));
   return 0;
 }
