@@ -7,6 +7,8 @@ find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(OpenMesh CONFIG REQUIRED)   # Debian ships no version file: no version here
 find_package(draco CONFIG REQUIRED)
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
+# photo: CalibrateDebevec/MergeDebevec, the anchor of tests/bench/bench_hdrmerge only.
+find_package(OpenCV 4 REQUIRED COMPONENTS photo)
 find_package(OpenEXR 3 CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(VTK 9.1 REQUIRED COMPONENTS
