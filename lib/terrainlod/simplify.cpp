@@ -1,0 +1,185 @@
+#include "terrainlod/simplify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "core/mesh.hpp"
+
+namespace fest::terrainlod {
+namespace {
+
+constexpr double kInfinite = std::numeric_limits<double>::infinity();
+// Smallest accepted xy area (twice the area, grid units): lattice triangles have at least
+// 1, so this only rejects degenerate (collinear) results.
+constexpr double kMinTwiceArea = 1e-9;
+
+GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
+  const auto& p = m.point(v);
+  return {p[0], p[1], p[2]};
+}
+
+class CollapseEngine {
+ public:
+  CollapseEngine(const HeightGrid& grid, const SimplifyOptions& options, double tolerance)
+      : ref_(grid, options.diagonal), limit_(options.max_error + tolerance) {
+    build(grid);
+  }
+
+  SimplifyResult run() {
+    SimplifyResult result;
+    for (auto v : m_.vertices()) refresh(v);
+    while (!heap_.empty()) {
+      const auto [cost, vi, wi, version] = heap_.top();
+      heap_.pop();
+      const auto v = TriMesh::VertexHandle(vi);
+      if (m_.status(v).deleted() || version != version_[vi]) continue;
+      const auto w = TriMesh::VertexHandle(wi);
+      const auto heh = m_.find_halfedge(v, w);
+      // The link condition can change without v's star changing (a collapse next to w);
+      // the error of the collapse cannot, as it depends on v's star and w's position only.
+      if (!heh.is_valid() || !m_.is_collapse_ok(heh)) {
+        refresh(v);
+        continue;
+      }
+      m_.collapse(heh);
+      ++result.collapses;
+      result.max_error = std::max(result.max_error, cost);
+      refresh(w);
+      for (auto u : m_.vv_range(w)) refresh(u);
+    }
+    m_.garbage_collection();
+    for (auto v : m_.vertices()) result.mesh.vertices.push_back(grid_point(m_, v));
+    for (auto f : m_.faces()) {
+      std::array<int, 3> t{};
+      int k = 0;
+      for (auto v : m_.fv_range(f)) t[k++] = v.idx();
+      result.mesh.triangles.push_back(t);
+    }
+    return result;
+  }
+
+ private:
+  void build(const HeightGrid& grid) {
+    m_.request_vertex_status();
+    m_.request_edge_status();
+    m_.request_face_status();
+    const Tin fine = finest_triangulation(grid, DiagonalRule::ne);  // vertices only; faces below
+    for (const auto& p : fine.vertices) m_.add_vertex(TriMesh::Point(p.x, p.y, p.z));
+    const int w = grid.width;
+    auto vh = [&](int i, int j) { return TriMesh::VertexHandle(j * w + i); };
+    for (int j = 0; j + 1 < grid.height; ++j)
+      for (int i = 0; i + 1 < w; ++i) {
+        if (ref_.ne_diagonal(i, j)) {
+          m_.add_face(vh(i, j), vh(i + 1, j), vh(i + 1, j + 1));
+          m_.add_face(vh(i, j), vh(i + 1, j + 1), vh(i, j + 1));
+        } else {
+          m_.add_face(vh(i, j), vh(i + 1, j), vh(i, j + 1));
+          m_.add_face(vh(i + 1, j), vh(i + 1, j + 1), vh(i, j + 1));
+        }
+      }
+    locked_.assign(m_.n_vertices(), 0);
+    for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked_[c] = 1;
+    version_.assign(m_.n_vertices(), 0);
+  }
+
+  // Error of collapsing v onto w (kInfinite when not allowed or above the bound).
+  double collapse_cost(TriMesh::HalfedgeHandle heh) {  // non-const: OpenMesh's is_collapse_ok is
+    const auto v = m_.from_vertex_handle(heh), w = m_.to_vertex_handle(heh);
+    if (locked_[v.idx()]) return kInfinite;
+    // Border vertices slide along their border only: the edge must be a border edge.
+    if (m_.is_boundary(v) && !m_.is_boundary(m_.edge_handle(heh))) return kInfinite;
+    const GridPoint pw = grid_point(m_, w);
+    double worst = 0;
+    for (auto f : m_.vf_range(v)) {
+      GridPoint corner[3];
+      bool has_w = false;
+      int k = 0;
+      for (auto u : m_.fv_range(f)) {
+        if (u == w) has_w = true;
+        corner[k++] = (u == v) ? pw : grid_point(m_, u);
+      }
+      if (has_w) continue;  // the two triangles on edge v-w disappear
+      if (twice_area(corner[0], corner[1], corner[2]) < kMinTwiceArea) return kInfinite;  // fold-over
+      worst = std::max(worst, triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+      if (worst > limit_) return kInfinite;
+    }
+    if (!m_.is_collapse_ok(heh)) return kInfinite;
+    return worst;
+  }
+
+  // Recomputes v's cheapest collapse and queues it; older queue entries go stale.
+  void refresh(TriMesh::VertexHandle v) {
+    const int vi = v.idx();
+    ++version_[vi];
+    if (locked_[vi]) return;
+    double best = kInfinite;
+    int target = -1;
+    for (auto heh : m_.voh_range(v)) {
+      const double c = collapse_cost(heh);
+      const int ti = m_.to_vertex_handle(heh).idx();
+      if (c < best || (c == best && c < kInfinite && ti < target)) {
+        best = c;
+        target = ti;
+      }
+    }
+    if (target >= 0) heap_.push({best, vi, target, version_[vi]});
+  }
+
+  using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
+  ReferenceSurface ref_;
+  double limit_;
+  TriMesh m_;
+  std::vector<std::uint8_t> locked_;
+  std::vector<std::uint32_t> version_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+};
+
+}  // namespace
+
+Tin finest_triangulation(const HeightGrid& grid, DiagonalRule diagonal) {
+  Tin tin;
+  tin.vertices.reserve(grid.size());
+  for (int j = 0; j < grid.height; ++j)
+    for (int i = 0; i < grid.width; ++i) tin.vertices.push_back({double(i), double(j), grid.at(i, j)});
+  const ReferenceSurface ref(grid, diagonal);
+  const int w = grid.width;
+  for (int j = 0; j + 1 < grid.height; ++j)
+    for (int i = 0; i + 1 < w; ++i) {
+      const int a = j * w + i, b = a + 1, c = a + w, d = a + w + 1;
+      if (ref.ne_diagonal(i, j)) {
+        tin.triangles.push_back({a, b, d});
+        tin.triangles.push_back({a, d, c});
+      } else {
+        tin.triangles.push_back({a, b, c});
+        tin.triangles.push_back({b, d, c});
+      }
+    }
+  return tin;
+}
+
+SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& options) {
+  if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
+    throw usage_error("--max-error must be a finite number >= 0 (got {})", options.max_error);
+  double lo = grid.h.empty() ? 0 : grid.h[0], hi = lo;
+  for (double z : grid.h) lo = std::min(lo, z), hi = std::max(hi, z);
+  const double tolerance = 1e-9 * std::max(1.0, hi - lo);
+  CollapseEngine engine(grid, options, tolerance);
+  SimplifyResult result = engine.run();
+  result.tolerance = tolerance;
+  return result;
+}
+
+double tin_error(const ReferenceSurface& reference, const Tin& tin) {
+  double worst = 0;
+  for (const auto& t : tin.triangles)
+    worst = std::max(worst, triangle_error(reference, tin.vertices[t[0]], tin.vertices[t[1]], tin.vertices[t[2]],
+                                           kInfinite));
+  return worst;
+}
+
+}  // namespace fest::terrainlod
