@@ -5,6 +5,7 @@
 #include "formats/dem/dem_io.hpp"
 
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -20,17 +21,22 @@
 namespace fest::formats {
 namespace {
 
-DemRaster read_pfm_dem(std::string_view bytes) {
-  const Image img = read_image(bytes, Format::pfm);
+// PFM and PGM (plain P2 and raw P5, 8 or 16 bit; GDAL reads only raw PNM) through fest's
+// image readers.
+DemRaster read_image_dem(std::string_view bytes, Format format) {
+  const Image img = read_image(bytes, format);
   if (img.pixels.channels() != 1)
-    throw bad_input("PFM DEM has {} channels; a single-channel (Pf) image is needed", img.pixels.channels());
+    throw bad_input("{} DEM has {} channels; a single-channel image is needed", format_name(format), img.pixels.channels());
   DemRaster r;
-  r.format = "pfm";
+  r.format = format_name(format);
+  r.integer = format != Format::pfm;
+  cv::Mat values;
+  img.pixels.convertTo(values, CV_32F);
   r.width = img.pixels.cols;
   r.height = img.pixels.rows;
   r.values.reserve(static_cast<std::size_t>(r.width) * r.height);
   for (int y = 0; y < r.height; ++y)
-    for (int x = 0; x < r.width; ++x) r.values.push_back(img.pixels.at<float>(y, x));
+    for (int x = 0; x < r.width; ++x) r.values.push_back(values.at<float>(y, x));
   return r;
 }
 
@@ -126,7 +132,10 @@ DemRaster read_dem(const std::string& path, std::optional<double> nodata) {
     if (bytes.size() >= 6 && bytes.compare(0, 6, "\x93NUMPY") == 0) r = read_npy(bytes);
     else if (bytes.size() >= 3 && bytes[0] == 'P' && (bytes[1] == 'f' || bytes[1] == 'F') &&
              (bytes[2] == '\n' || bytes[2] == '\r' || bytes[2] == ' '))
-      r = read_pfm_dem(bytes);
+      r = read_image_dem(bytes, Format::pfm);
+    else if (bytes.size() >= 3 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5') &&
+             std::isspace(static_cast<unsigned char>(bytes[2])))
+      r = read_image_dem(bytes, Format::pgm);
     else r = read_gdal(path, bytes);
   } catch (const Error& e) {
     if (e.status() != Status::bad_input) throw;
