@@ -23,10 +23,53 @@ GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
   return {p[0], p[1], p[2]};
 }
 
+// Open-addressing hash table from a triangle (three vertex ids of 21 bits packed in 64) to
+// its error; NaN = not yet known. Disabled for meshes of 2^21 vertices or more.
+class TriangleErrorCache {
+ public:
+  explicit TriangleErrorCache(std::size_t vertices) : enabled_(vertices < (std::size_t{1} << 21)) {
+    if (enabled_) resize(std::size_t{1} << 16);
+  }
+  bool enabled() const { return enabled_; }
+  double* find_or_insert(std::uint64_t key) {
+    if (2 * (used_ + 1) > keys_.size()) resize(2 * keys_.size());
+    std::size_t i = slot_of(key);
+    while (keys_[i] != kEmpty && keys_[i] != key) i = (i + 1) & (keys_.size() - 1);
+    if (keys_[i] == kEmpty) {
+      keys_[i] = key;
+      values_[i] = std::numeric_limits<double>::quiet_NaN();
+      ++used_;
+    }
+    return &values_[i];
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::size_t slot_of(std::uint64_t key) const {
+    key ^= key >> 33;
+    key *= 0xff51afd7ed558ccdull;
+    key ^= key >> 33;
+    return static_cast<std::size_t>(key) & (keys_.size() - 1);
+  }
+  void resize(std::size_t n) {
+    std::vector<std::uint64_t> keys(n, kEmpty);
+    std::vector<double> values(n);
+    keys.swap(keys_);
+    values.swap(values_);
+    used_ = 0;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kEmpty) *find_or_insert(keys[i]) = values[i];
+  }
+  bool enabled_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<double> values_;
+  std::size_t used_ = 0;
+};
+
 class CollapseEngine {
  public:
   CollapseEngine(const HeightGrid& grid, const SimplifyOptions& options, double tolerance)
-      : ref_(grid, options.diagonal), limit_(options.max_error + tolerance) {
+      : ref_(grid, options.diagonal), limit_(options.max_error + tolerance), cache_(grid.size()) {
     build(grid);
   }
 
@@ -105,12 +148,33 @@ class CollapseEngine {
       }
       if (has_w) continue;  // the two triangles on edge v-w disappear
       if (twice_area(corner[0], corner[1], corner[2]) < kMinTwiceArea) return kInfinite;  // fold-over
-      worst = std::max(worst, triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+      worst = std::max(worst, cached_error(v, f, w, corner));
       if (worst > limit_) return kInfinite;
     }
     if (!m_.is_collapse_ok(heh)) return kInfinite;
     return worst;
   }
+
+  // Error of the triangle `corner` (face f with v replaced by w). A triangle's error
+  // depends only on its three vertices, which never move, so it is computed once: the
+  // same candidate triangles come back every time a neighbourhood is re-examined.
+  double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
+                      const GridPoint (&corner)[3]) {
+    if (!cache_.enabled()) return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+    std::uint64_t id[3];
+    int k = 0;
+    for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
+    if (id[0] > id[1]) std::swap(id[0], id[1]);
+    if (id[1] > id[2]) std::swap(id[1], id[2]);
+    if (id[0] > id[1]) std::swap(id[0], id[1]);
+    const std::uint64_t key = (id[0] << 42) | (id[1] << 21) | id[2];
+    double* slot = cache_.find_or_insert(key);
+    if (std::isnan(*slot)) *slot = clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+    return *slot;
+  }
+
+  // An early stop is only a lower bound of the error: remember it as "too big".
+  double clamp_error(double e) const { return e > limit_ ? kInfinite : e; }
 
   // Recomputes v's cheapest collapse and queues it; older queue entries go stale.
   void refresh(TriMesh::VertexHandle v) {
@@ -137,6 +201,7 @@ class CollapseEngine {
   std::vector<std::uint8_t> locked_;
   std::vector<std::uint32_t> version_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+  TriangleErrorCache cache_;
 };
 
 }  // namespace

@@ -45,10 +45,28 @@ double triangle_error(const ReferenceSurface& ref, const GridPoint& a, const Gri
   const int y0 = static_cast<int>(std::ceil(std::min({a.y, b.y, c.y})));
   const int y1 = static_cast<int>(std::floor(std::max({a.y, b.y, c.y})));
   double worst = 0;
-  // Samples inside or on the triangle. Edge functions of integer points are exact in
-  // double, so "on an edge" is decided exactly.
+  // Samples inside or on the triangle, row by row over the span the edges cut from the
+  // row (widened by a hair; the exact edge functions below decide). Edge functions of
+  // integer points are exact in double, so "on an edge" is decided exactly.
+  const GridPoint* v[3] = {&a, &b, &c};
   for (int j = y0; j <= y1; ++j) {
-    for (int i = x0; i <= x1; ++i) {
+    double xl = x1 + 1.0, xr = x0 - 1.0;
+    for (int e = 0; e < 3; ++e) {
+      const GridPoint& p = *v[e];
+      const GridPoint& q = *v[(e + 1) % 3];
+      if (j < std::min(p.y, q.y) || j > std::max(p.y, q.y)) continue;
+      if (p.y == q.y) {
+        xl = std::min({xl, p.x, q.x});
+        xr = std::max({xr, p.x, q.x});
+      } else {
+        const double x = p.x + (j - p.y) * (q.x - p.x) / (q.y - p.y);
+        xl = std::min(xl, x);
+        xr = std::max(xr, x);
+      }
+    }
+    const int i0 = std::max(x0, static_cast<int>(std::ceil(xl - 1e-7)));
+    const int i1 = std::min(x1, static_cast<int>(std::floor(xr + 1e-7)));
+    for (int i = i0; i <= i1; ++i) {
       const GridPoint p{static_cast<double>(i), static_cast<double>(j), 0};
       const double wa = twice_area(p, b, c), wb = twice_area(a, p, c), wc = twice_area(a, b, p);
       if (wa < 0 || wb < 0 || wc < 0) continue;
