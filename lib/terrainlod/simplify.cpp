@@ -89,11 +89,15 @@ class CollapseEngine {
         refresh(v);
         continue;
       }
+      // Only the stars of v's neighbours change (v becomes w in them); w's other
+      // neighbours keep their stars and so their costs (a link condition that changes
+      // for them is caught when their entry is popped).
+      ring_.clear();
+      for (auto u : m_.vv_range(v)) ring_.push_back(u);
       m_.collapse(heh);
       ++result.collapses;
       result.max_error = std::max(result.max_error, cost);
-      refresh(w);
-      for (auto u : m_.vv_range(w)) refresh(u);
+      for (auto u : ring_) refresh(u);
     }
     m_.garbage_collection();
     for (auto v : m_.vertices()) result.mesh.vertices.push_back(grid_point(m_, v));
@@ -202,6 +206,7 @@ class CollapseEngine {
   std::vector<std::uint32_t> version_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
   TriangleErrorCache cache_;
+  std::vector<TriMesh::VertexHandle> ring_;
 };
 
 }  // namespace
