@@ -22,4 +22,14 @@ check "measured error <= bound" jq -e '.measured_error <= .max_error + .toleranc
 check "fewer triangles than the finest mesh (2 x 110^2)" jq -e '.triangles < 24200' "$out"
 expect_json '.dem.format' '"GTiff"'
 
+case_ "Jacksboro .npy (python-matplotlib-data) straight from the .npz: int16 344 x 403"
+# (simplify on Jacksboro is timed in tests/bench/terrainlod.sh, not here: too slow for the suite)
+npz=$(need_testdata dem/jacksboro_fault_dem.npz) || exit 77
+unzip -p "$npz" elevation.npy >"$WORK/jb.npy"
+run terrainlod stats "$WORK/jb.npy" --cell-size 74.5,92.5
+expect_status 0
+expect_json '[.dem.format, .dem.width, .dem.height, .dem.integer, .dem.z_min, .dem.z_max]' '["npy",403,344,true,236,1076]'
+# 402 cells -> 64 x 2^3 = 512: L = 3; eps_0 = 512 x 74.5 / 64 = 596 (the smaller side is x)
+expect_json '[.levels, .level[0].eps, .level[2].eps, .level[3].eps]' '[3,596,149,0]'
+
 finish
