@@ -17,6 +17,8 @@ constexpr double kInfinite = std::numeric_limits<double>::infinity();
 // Smallest accepted xy area (twice the area, grid units): lattice triangles have at least
 // 1, so this only rejects degenerate (collinear) results.
 constexpr double kMinTwiceArea = 1e-9;
+// Triangles with a bounding box of at most this many cells are measured, not cached.
+constexpr double kDirectBoxCells = 32;
 
 GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
   const auto& p = m.point(v);
@@ -164,7 +166,12 @@ class CollapseEngine {
   // same candidate triangles come back every time a neighbourhood is re-examined.
   double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
                       const GridPoint (&corner)[3]) {
-    if (!cache_.enabled()) return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+    // Small triangles are cheaper to measure again than to look up in a large table
+    // (a cache miss); only those whose bounding box spans many cells are remembered.
+    const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
+                       (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
+    if (!cache_.enabled() || box <= kDirectBoxCells)
+      return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
     std::uint64_t id[3];
     int k = 0;
     for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
