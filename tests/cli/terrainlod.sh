@@ -57,6 +57,14 @@ run terrainlod stats "$WORK/t.npy" --tile 4
 expect_status 0
 expect_json '[.dem.width, .dem.height, .dem.integer, .levels]' '[3,2,true,0]'
 
+case_ "16-bit PNG through GDAL (made by fconv from a plain PGM), with --z-scale/--z-offset"
+printf 'P2\n3 2\n65535\n0 1000 65535\n7 8 9\n' >"$WORK/p16.pgm"
+if "$FEST_BIN/fconv" "$WORK/p16.pgm" -o "$WORK/p16.png" 2>/dev/null; then
+  run terrainlod stats "$WORK/p16.png" --tile 4 --z-scale 0.1 --z-offset -100
+  expect_status 0
+  expect_json '[.dem.format, .dem.z_min, .dem.z_max]' '["PNG",-100,6453.5]'
+fi
+
 case_ "stats: level plan of a 257 x 257 grid, B = 64: eps halves per level, 0 at the leaves"
 awk 'BEGIN { print "ncols 257\nnrows 257\nxllcorner 0\nyllcorner 0\ncellsize 10";
   for (r = 0; r < 257; r++) { s = ""; for (c = 0; c < 257; c++) s = s (c ? " " : "") (r + c) % 7; print s } }' >"$WORK/g257.asc"
