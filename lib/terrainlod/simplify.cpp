@@ -19,6 +19,8 @@ constexpr double kInfinite = std::numeric_limits<double>::infinity();
 constexpr double kMinTwiceArea = 1e-9;
 // Triangles with a bounding box of at most this many cells are measured, not cached.
 constexpr double kDirectBoxCells = 32;
+// Largest valence of a vertex whose collapse is considered.
+constexpr int kMaxFan = 64;
 
 GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
   const auto& p = m.point(v);
@@ -142,8 +144,16 @@ class CollapseEngine {
     if (locked_[v.idx()]) return kInfinite;
     // Border vertices slide along their border only: the edge must be a border edge.
     if (m_.is_boundary(v) && !m_.is_boundary(m_.edge_handle(heh))) return kInfinite;
-    const GridPoint pw = grid_point(m_, w);
-    double worst = 0;
+    const GridPoint pw = grid_point(m_, w), pv = grid_point(m_, v);
+    // First the new triangles' shapes and a cheap lower bound of the error: the removed
+    // sample v lies in one of them, and the new surface must pass within the bound of it.
+    // Most rejected candidates fail here, before any scan.
+    struct NewTriangle {
+      TriMesh::FaceHandle face;
+      GridPoint corner[3];
+    };
+    NewTriangle fan[kMaxFan];
+    int n = 0;
     for (auto f : m_.vf_range(v)) {
       GridPoint corner[3];
       bool has_w = false;
@@ -153,8 +163,21 @@ class CollapseEngine {
         corner[k++] = (u == v) ? pw : grid_point(m_, u);
       }
       if (has_w) continue;  // the two triangles on edge v-w disappear
-      if (twice_area(corner[0], corner[1], corner[2]) < kMinTwiceArea) return kInfinite;  // fold-over
-      worst = std::max(worst, cached_error(v, f, w, corner));
+      const double d = twice_area(corner[0], corner[1], corner[2]);
+      if (d < kMinTwiceArea) return kInfinite;  // fold-over
+      const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
+                   wc = twice_area(corner[0], corner[1], pv);
+      if (wa >= 0 && wb >= 0 && wc >= 0 &&
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > limit_)
+        return kInfinite;
+      if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
+      fan[n].face = f;
+      std::copy(corner, corner + 3, fan[n].corner);
+      ++n;
+    }
+    double worst = 0;
+    for (int t = 0; t < n; ++t) {
+      worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner));
       if (worst > limit_) return kInfinite;
     }
     if (!m_.is_collapse_ok(heh)) return kInfinite;
