@@ -138,8 +138,10 @@ class CollapseEngine {
     version_.assign(m_.n_vertices(), 0);
   }
 
-  // Error of collapsing v onto w (kInfinite when not allowed or above the bound).
-  double collapse_cost(TriMesh::HalfedgeHandle heh) {  // non-const: OpenMesh's is_collapse_ok is
+  // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
+  // `stop` (<= the bound: a candidate worse than the best one found so far need not be
+  // measured to the end).
+  double collapse_cost(TriMesh::HalfedgeHandle heh, double stop) {  // non-const: OpenMesh's is_collapse_ok is
     const auto v = m_.from_vertex_handle(heh), w = m_.to_vertex_handle(heh);
     if (locked_[v.idx()]) return kInfinite;
     // Border vertices slide along their border only: the edge must be a border edge.
@@ -168,7 +170,7 @@ class CollapseEngine {
       const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
                    wc = twice_area(corner[0], corner[1], pv);
       if (wa >= 0 && wb >= 0 && wc >= 0 &&
-          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > limit_)
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > stop)
         return kInfinite;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
       fan[n].face = f;
@@ -177,8 +179,8 @@ class CollapseEngine {
     }
     double worst = 0;
     for (int t = 0; t < n; ++t) {
-      worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner));
-      if (worst > limit_) return kInfinite;
+      worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner, stop));
+      if (worst > stop) return kInfinite;
     }
     if (!m_.is_collapse_ok(heh)) return kInfinite;
     return worst;
@@ -188,13 +190,13 @@ class CollapseEngine {
   // depends only on its three vertices, which never move, so it is computed once: the
   // same candidate triangles come back every time a neighbourhood is re-examined.
   double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
-                      const GridPoint (&corner)[3]) {
+                      const GridPoint (&corner)[3], double stop) {
     // Small triangles are cheaper to measure again than to look up in a large table
     // (a cache miss); only those whose bounding box spans many cells are remembered.
     const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
                        (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
     if (!cache_.enabled() || box <= kDirectBoxCells)
-      return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+      return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], stop));
     std::uint64_t id[3];
     int k = 0;
     for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
@@ -203,7 +205,11 @@ class CollapseEngine {
     if (id[0] > id[1]) std::swap(id[0], id[1]);
     const std::uint64_t key = (id[0] << 42) | (id[1] << 21) | id[2];
     double* slot = cache_.find_or_insert(key);
-    if (std::isnan(*slot)) *slot = clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], limit_));
+    if (!std::isnan(*slot)) return *slot;
+    const double e = triangle_error(ref_, corner[0], corner[1], corner[2], stop);
+    // Stopped early below the bound: e is only a lower bound, not worth remembering.
+    if (e > stop && stop < limit_) return kInfinite;
+    *slot = clamp_error(e);
     return *slot;
   }
 
@@ -218,7 +224,7 @@ class CollapseEngine {
     double best = kInfinite;
     int target = -1;
     for (auto heh : m_.voh_range(v)) {
-      const double c = collapse_cost(heh);
+      const double c = collapse_cost(heh, std::min(best, limit_));
       const int ti = m_.to_vertex_handle(heh).idx();
       if (c < best || (c == best && c < kInfinite && ti < target)) {
         best = c;
