@@ -30,3 +30,5 @@ set(FEST_ODE_FOUND ${ODE_FOUND})
 # fluidsim: FFTW 3 for the fast Poisson/Helmholtz transforms, OpenMP for the parallel step.
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
+# terrainlod: DEMs through GDAL (GeoTIFF georeference, nodata, every raster GDAL reads).
+find_package(GDAL CONFIG REQUIRED)

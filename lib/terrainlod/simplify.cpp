@@ -1,0 +1,291 @@
+#include "terrainlod/simplify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "core/mesh.hpp"
+
+namespace fest::terrainlod {
+namespace {
+
+constexpr double kInfinite = std::numeric_limits<double>::infinity();
+// Smallest accepted xy area (twice the area, grid units): lattice triangles have at least
+// 1, so this only rejects degenerate (collinear) results.
+constexpr double kMinTwiceArea = 1e-9;
+// Triangles with a bounding box of at most this many cells are measured, not cached.
+constexpr double kDirectBoxCells = 32;
+// Largest valence of a vertex whose collapse is considered.
+constexpr int kMaxFan = 64;
+
+GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
+  const auto& p = m.point(v);
+  return {p[0], p[1], p[2]};
+}
+
+// Open-addressing hash table from a triangle (three vertex ids of 21 bits packed in 64) to
+// its error; NaN = not yet known. Disabled for meshes of 2^21 vertices or more.
+class TriangleErrorCache {
+ public:
+  explicit TriangleErrorCache(std::size_t vertices) : enabled_(vertices < (std::size_t{1} << 21)) {
+    if (enabled_) resize(std::size_t{1} << 16);
+  }
+  bool enabled() const { return enabled_; }
+  double* find_or_insert(std::uint64_t key) {
+    if (2 * (used_ + 1) > keys_.size()) resize(2 * keys_.size());
+    std::size_t i = slot_of(key);
+    while (keys_[i] != kEmpty && keys_[i] != key) i = (i + 1) & (keys_.size() - 1);
+    if (keys_[i] == kEmpty) {
+      keys_[i] = key;
+      values_[i] = std::numeric_limits<double>::quiet_NaN();
+      ++used_;
+    }
+    return &values_[i];
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::size_t slot_of(std::uint64_t key) const {
+    key ^= key >> 33;
+    key *= 0xff51afd7ed558ccdull;
+    key ^= key >> 33;
+    return static_cast<std::size_t>(key) & (keys_.size() - 1);
+  }
+  void resize(std::size_t n) {
+    std::vector<std::uint64_t> keys(n, kEmpty);
+    std::vector<double> values(n);
+    keys.swap(keys_);
+    values.swap(values_);
+    used_ = 0;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kEmpty) *find_or_insert(keys[i]) = values[i];
+  }
+  bool enabled_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<double> values_;
+  std::size_t used_ = 0;
+};
+
+class CollapseEngine {
+ public:
+  CollapseEngine(const HeightGrid& grid, const SimplifyOptions& options, double tolerance)
+      : ref_(grid, options.diagonal), limit_(options.max_error + tolerance), cache_(grid.size()) {
+    build(grid);
+  }
+
+  SimplifyResult run() {
+    SimplifyResult result;
+    for (auto v : m_.vertices()) refresh(v);
+    while (!heap_.empty()) {
+      const auto [cost, vi, wi, version] = heap_.top();
+      heap_.pop();
+      const auto v = TriMesh::VertexHandle(vi);
+      if (m_.status(v).deleted() || version != version_[vi]) continue;
+      const auto w = TriMesh::VertexHandle(wi);
+      const auto heh = m_.find_halfedge(v, w);
+      // The link condition can change without v's star changing (a collapse next to w);
+      // the error of the collapse cannot, as it depends on v's star and w's position only.
+      if (!heh.is_valid() || !m_.is_collapse_ok(heh)) {
+        refresh(v);
+        continue;
+      }
+      // Only the stars of v's neighbours change (v becomes w in them); w's other
+      // neighbours keep their stars and so their costs (a link condition that changes
+      // for them is caught when their entry is popped).
+      ring_.clear();
+      for (auto u : m_.vv_range(v)) ring_.push_back(u);
+      m_.collapse(heh);
+      ++result.collapses;
+      result.max_error = std::max(result.max_error, cost);
+      for (auto u : ring_) refresh(u);
+    }
+    m_.garbage_collection();
+    for (auto v : m_.vertices()) result.mesh.vertices.push_back(grid_point(m_, v));
+    for (auto f : m_.faces()) {
+      std::array<int, 3> t{};
+      int k = 0;
+      for (auto v : m_.fv_range(f)) t[k++] = v.idx();
+      result.mesh.triangles.push_back(t);
+    }
+    return result;
+  }
+
+ private:
+  void build(const HeightGrid& grid) {
+    m_.request_vertex_status();
+    m_.request_edge_status();
+    m_.request_face_status();
+    const Tin fine = finest_triangulation(grid, DiagonalRule::ne);  // vertices only; faces below
+    for (const auto& p : fine.vertices) m_.add_vertex(TriMesh::Point(p.x, p.y, p.z));
+    const int w = grid.width;
+    auto vh = [&](int i, int j) { return TriMesh::VertexHandle(j * w + i); };
+    for (int j = 0; j + 1 < grid.height; ++j)
+      for (int i = 0; i + 1 < w; ++i) {
+        if (ref_.ne_diagonal(i, j)) {
+          m_.add_face(vh(i, j), vh(i + 1, j), vh(i + 1, j + 1));
+          m_.add_face(vh(i, j), vh(i + 1, j + 1), vh(i, j + 1));
+        } else {
+          m_.add_face(vh(i, j), vh(i + 1, j), vh(i, j + 1));
+          m_.add_face(vh(i + 1, j), vh(i + 1, j + 1), vh(i, j + 1));
+        }
+      }
+    locked_.assign(m_.n_vertices(), 0);
+    for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked_[c] = 1;
+    version_.assign(m_.n_vertices(), 0);
+  }
+
+  // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
+  // `stop` (<= the bound: a candidate worse than the best one found so far need not be
+  // measured to the end).
+  double collapse_cost(TriMesh::HalfedgeHandle heh, double stop) {  // non-const: OpenMesh's is_collapse_ok is
+    const auto v = m_.from_vertex_handle(heh), w = m_.to_vertex_handle(heh);
+    if (locked_[v.idx()]) return kInfinite;
+    // Border vertices slide along their border only: the edge must be a border edge.
+    if (m_.is_boundary(v) && !m_.is_boundary(m_.edge_handle(heh))) return kInfinite;
+    const GridPoint pw = grid_point(m_, w), pv = grid_point(m_, v);
+    // First the new triangles' shapes and a cheap lower bound of the error: the removed
+    // sample v lies in one of them, and the new surface must pass within the bound of it.
+    // Most rejected candidates fail here, before any scan.
+    struct NewTriangle {
+      TriMesh::FaceHandle face;
+      GridPoint corner[3];
+    };
+    NewTriangle fan[kMaxFan];
+    int n = 0;
+    for (auto f : m_.vf_range(v)) {
+      GridPoint corner[3];
+      bool has_w = false;
+      int k = 0;
+      for (auto u : m_.fv_range(f)) {
+        if (u == w) has_w = true;
+        corner[k++] = (u == v) ? pw : grid_point(m_, u);
+      }
+      if (has_w) continue;  // the two triangles on edge v-w disappear
+      const double d = twice_area(corner[0], corner[1], corner[2]);
+      if (d < kMinTwiceArea) return kInfinite;  // fold-over
+      const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
+                   wc = twice_area(corner[0], corner[1], pv);
+      if (wa >= 0 && wb >= 0 && wc >= 0 &&
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > stop)
+        return kInfinite;
+      if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
+      fan[n].face = f;
+      std::copy(corner, corner + 3, fan[n].corner);
+      ++n;
+    }
+    double worst = 0;
+    for (int t = 0; t < n; ++t) {
+      worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner, stop));
+      if (worst > stop) return kInfinite;
+    }
+    if (!m_.is_collapse_ok(heh)) return kInfinite;
+    return worst;
+  }
+
+  // Error of the triangle `corner` (face f with v replaced by w). A triangle's error
+  // depends only on its three vertices, which never move, so it is computed once: the
+  // same candidate triangles come back every time a neighbourhood is re-examined.
+  double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
+                      const GridPoint (&corner)[3], double stop) {
+    // Small triangles are cheaper to measure again than to look up in a large table
+    // (a cache miss); only those whose bounding box spans many cells are remembered.
+    const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
+                       (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
+    if (!cache_.enabled() || box <= kDirectBoxCells)
+      return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], stop));
+    std::uint64_t id[3];
+    int k = 0;
+    for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
+    if (id[0] > id[1]) std::swap(id[0], id[1]);
+    if (id[1] > id[2]) std::swap(id[1], id[2]);
+    if (id[0] > id[1]) std::swap(id[0], id[1]);
+    const std::uint64_t key = (id[0] << 42) | (id[1] << 21) | id[2];
+    double* slot = cache_.find_or_insert(key);
+    if (!std::isnan(*slot)) return *slot;
+    const double e = triangle_error(ref_, corner[0], corner[1], corner[2], stop);
+    // Stopped early below the bound: e is only a lower bound, not worth remembering.
+    if (e > stop && stop < limit_) return kInfinite;
+    *slot = clamp_error(e);
+    return *slot;
+  }
+
+  // An early stop is only a lower bound of the error: remember it as "too big".
+  double clamp_error(double e) const { return e > limit_ ? kInfinite : e; }
+
+  // Recomputes v's cheapest collapse and queues it; older queue entries go stale.
+  void refresh(TriMesh::VertexHandle v) {
+    const int vi = v.idx();
+    ++version_[vi];
+    if (locked_[vi]) return;
+    double best = kInfinite;
+    int target = -1;
+    for (auto heh : m_.voh_range(v)) {
+      const double c = collapse_cost(heh, std::min(best, limit_));
+      const int ti = m_.to_vertex_handle(heh).idx();
+      if (c < best || (c == best && c < kInfinite && ti < target)) {
+        best = c;
+        target = ti;
+      }
+    }
+    if (target >= 0) heap_.push({best, vi, target, version_[vi]});
+  }
+
+  using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
+  ReferenceSurface ref_;
+  double limit_;
+  TriMesh m_;
+  std::vector<std::uint8_t> locked_;
+  std::vector<std::uint32_t> version_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+  TriangleErrorCache cache_;
+  std::vector<TriMesh::VertexHandle> ring_;
+};
+
+}  // namespace
+
+Tin finest_triangulation(const HeightGrid& grid, DiagonalRule diagonal) {
+  Tin tin;
+  tin.vertices.reserve(grid.size());
+  for (int j = 0; j < grid.height; ++j)
+    for (int i = 0; i < grid.width; ++i) tin.vertices.push_back({double(i), double(j), grid.at(i, j)});
+  const ReferenceSurface ref(grid, diagonal);
+  const int w = grid.width;
+  for (int j = 0; j + 1 < grid.height; ++j)
+    for (int i = 0; i + 1 < w; ++i) {
+      const int a = j * w + i, b = a + 1, c = a + w, d = a + w + 1;
+      if (ref.ne_diagonal(i, j)) {
+        tin.triangles.push_back({a, b, d});
+        tin.triangles.push_back({a, d, c});
+      } else {
+        tin.triangles.push_back({a, b, c});
+        tin.triangles.push_back({b, d, c});
+      }
+    }
+  return tin;
+}
+
+SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& options) {
+  if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
+    throw usage_error("--max-error must be a finite number >= 0 (got {})", options.max_error);
+  double lo = grid.h.empty() ? 0 : grid.h[0], hi = lo;
+  for (double z : grid.h) lo = std::min(lo, z), hi = std::max(hi, z);
+  const double tolerance = 1e-9 * std::max(1.0, hi - lo);
+  CollapseEngine engine(grid, options, tolerance);
+  SimplifyResult result = engine.run();
+  result.tolerance = tolerance;
+  return result;
+}
+
+double tin_error(const ReferenceSurface& reference, const Tin& tin) {
+  double worst = 0;
+  for (const auto& t : tin.triangles)
+    worst = std::max(worst, triangle_error(reference, tin.vertices[t[0]], tin.vertices[t[1]], tin.vertices[t[2]],
+                                           kInfinite));
+  return worst;
+}
+
+}  // namespace fest::terrainlod

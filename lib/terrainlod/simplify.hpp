@@ -1,0 +1,52 @@
+#pragma once
+// Greedy half-edge-collapse simplification of a DEM with a guaranteed vertical error
+// (spec terrainlod 2.6, the engine of `simplify` and of the tiles): start from the finest
+// triangulation (every sample a vertex, every cell split by one diagonal), repeatedly
+// remove the vertex whose cheapest collapse onto a neighbour changes the surface least,
+// where "least" is the exact vertical L-infinity distance of the new triangles from the
+// reference surface (triangle_error.hpp), and stop when no collapse stays within the bound.
+// Vertices never move (half-edge collapses), so every height stays a DEM sample, and
+// every triangle of the result was measured against the reference when it was made: the
+// bound holds for the whole mesh by construction, not by an estimate.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "terrainlod/height_grid.hpp"
+#include "terrainlod/reference_surface.hpp"
+#include "terrainlod/triangle_error.hpp"
+
+namespace fest::terrainlod {
+
+// A triangulated irregular network in grid units: vertices are DEM samples (integer x, y),
+// triangles counter-clockwise seen from above (north = +y).
+struct Tin {
+  std::vector<GridPoint> vertices;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+struct SimplifyOptions {
+  double max_error = 0;  // vertical bound in height units (>= 0)
+  DiagonalRule diagonal = DiagonalRule::shortest;
+};
+
+struct SimplifyResult {
+  Tin mesh;
+  std::size_t collapses = 0;
+  double tolerance = 0;      // round-off allowance added to max_error (1e-9 x height range)
+  double max_error = 0;      // largest error of a collapse that was taken
+};
+
+// The finest triangulation of the grid (what simplification starts from).
+Tin finest_triangulation(const HeightGrid& grid, DiagonalRule diagonal);
+
+// Simplifies the whole grid as one free tile: the four corners stay, border vertices only
+// move along their border (the outline stays the DEM's rectangle), no xy rounding.
+// Throws usage_error for a negative or non-finite bound.
+SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& options);
+
+// Largest vertical distance of a TIN from the reference surface, triangle by triangle.
+double tin_error(const ReferenceSurface& reference, const Tin& tin);
+
+}  // namespace fest::terrainlod

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# terrainlod simplify against Martini and Delatin on the Jacksboro crop (specs/terrainlod.md
+# §3, §7: rows 40-296, columns 70-326 of python-matplotlib-data's jacksboro_fault_dem.npz,
+# 257 x 257 samples), one JSON line per system and error. Run by hand:
+#   tests/bench/terrainlod.sh [build/bin] [node_modules dir with @mapbox/martini and delatin]
+# The anchors are skipped with a JSON note when Node or the packages are missing.
+set -euo pipefail
+BIN=${1:-build/bin}
+MODULES=${2:-${ANCHOR_MODULES:-}}
+TESTDATA=${FEST_TESTDATA:-${XDG_CACHE_HOME:-$HOME/.cache}/fest/testdata}
+npz=$TESTDATA/dem/jacksboro_fault_dem.npz
+[ -f "$npz" ] || { echo '{"bench":"terrainlod_simplify","skipped":"jacksboro_fault_dem.npz not fetched (scripts/fetch-test-data.sh)"}'; exit 0; }
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+unzip -p "$npz" elevation.npy >"$work/jb.npy"
+# Crop with the .npy layout (int16, 344 x 403, C order; the header is 80 bytes, version 1).
+node -e '
+const fs = require("fs"); const b = fs.readFileSync(process.argv[1]);
+const hl = b.readUInt16LE(8), W = 403, off = 10 + hl; const rows = [];
+for (let r = 40; r <= 296; r++) { const v = [];
+  for (let c = 70; c <= 326; c++) v.push(b.readInt16LE(off + 2 * (r * W + c))); rows.push(v.join(" ")); }
+fs.writeFileSync(process.argv[2], "ncols 257\nnrows 257\nxllcorner 0\nyllcorner 0\ncellsize 1\n" + rows.join("\n") + "\n");
+' "$work/jb.npy" "$work/jb257.asc"
+
+ERRORS="5 10 20"
+for e in $ERRORS; do
+  # CPU seconds of the whole process beside the wall time: the shared machine's load
+  # inflates wall times (the anchors' too), CPU time much less.
+  /usr/bin/time -f '%U %M' -o "$work/cpu" \
+    "$BIN/terrainlod" simplify "$work/jb257.asc" --max-error "$e" -o "$work/m.ply" --report "$work/r.json"
+  read -r cpu rss <"$work/cpu"
+  jq -c --arg e "$e" --argjson cpu "$cpu" --argjson rss "$rss" '{bench: "terrainlod_simplify", system: "terrainlod",
+    max_error: ($e | tonumber), vertices, triangles, ms: .time_ms.simplify, cpu_s: $cpu, peak_rss_kb: $rss,
+    measured_error}' "$work/r.json"
+done
+if command -v node >/dev/null && [ -n "$MODULES" ] && [ -d "$MODULES/@mapbox/martini" ] && [ -d "$MODULES/delatin" ]; then
+  ANCHOR_MODULES=$MODULES node "$(dirname "$0")/terrain_anchors.mjs" "$work/jb257.asc" $ERRORS
+else
+  echo '{"bench":"terrainlod_simplify","anchors":"skipped: pass a node_modules folder with @mapbox/martini and delatin (npm install @mapbox/martini delatin)"}'
+fi

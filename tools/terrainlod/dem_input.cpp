@@ -1,0 +1,94 @@
+#include "dem_input.hpp"
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+
+namespace fest::terrainlod_tool {
+namespace {
+
+std::vector<double> numbers(const std::string& text, const char* flag) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || !std::isfinite(v))
+      throw usage_error("{} expects numbers separated by commas (got '{}')", flag, text);
+    out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace
+
+terrainlod::DiagonalRule diagonal_rule(const std::string& name) {
+  if (name == "short") return terrainlod::DiagonalRule::shortest;
+  if (name == "alternate") return terrainlod::DiagonalRule::alternate;
+  if (name == "ne") return terrainlod::DiagonalRule::ne;
+  throw usage_error("--diagonal must be short, alternate or ne (got '{}')", name);
+}
+
+LoadedDem load_dem(const DemArgs& args) {
+  LoadedDem d;
+  d.name = is_stdio(args.path) ? "-" : args.path;
+  std::optional<double> nodata;
+  bool nan_is_nodata = false;
+  if (!args.nodata.empty()) {
+    if (args.nodata == "nan" || args.nodata == "NaN") nan_is_nodata = true;
+    else nodata = numbers(args.nodata, "--nodata").at(0);
+  }
+  // Flags are checked before the (possibly large) DEM is read.
+  std::vector<double> cell, origin;
+  if (!args.cell_size.empty()) {
+    cell = numbers(args.cell_size, "--cell-size");
+    if (cell.size() > 2 || cell[0] <= 0 || cell.back() <= 0)
+      throw usage_error("--cell-size expects dx or dx,dy, both positive (got '{}')", args.cell_size);
+  }
+  if (!args.origin.empty()) {
+    origin = numbers(args.origin, "--origin");
+    if (origin.size() != 2) throw usage_error("--origin expects x0,y0 (got '{}')", args.origin);
+  }
+  if (!std::isfinite(args.z_scale) || args.z_scale == 0 || !std::isfinite(args.z_offset))
+    throw usage_error("--z-scale must be finite and non-zero, --z-offset finite");
+  diagonal_rule(args.diagonal);
+
+  d.raster = formats::read_dem(args.path, nodata);
+  auto& r = d.raster;
+  if (r.nan_count > 0 && !nan_is_nodata)
+    throw bad_input("DEM has {} NaN height{}; pass --nodata nan to treat them as nodata ({})", r.nan_count,
+                    r.nan_count == 1 ? "" : "s", d.name);
+  d.dx = r.dx, d.dy = r.dy, d.origin_x = r.origin_x, d.origin_y = r.origin_y;
+  if (!cell.empty()) d.dx = cell[0], d.dy = cell.back();
+  if (!origin.empty()) d.origin_x = origin[0], d.origin_y = origin[1];
+
+  // Rows arrive north first; the grid counts rows from the south.
+  d.grid.width = r.width;
+  d.grid.height = r.height;
+  d.grid.h.resize(static_cast<std::size_t>(r.width) * r.height);
+  for (int row = 0; row < r.height; ++row)
+    for (int i = 0; i < r.width; ++i) {
+      const double v = r.values[static_cast<std::size_t>(row) * r.width + i];
+      d.grid.h[static_cast<std::size_t>(r.height - 1 - row) * r.width + i] = v * args.z_scale + args.z_offset;
+    }
+  r.values.clear();
+  r.values.shrink_to_fit();
+  try {
+    d.condition = terrainlod::condition_grid(d.grid);
+  } catch (const Error& e) {
+    throw Error(e.status(), with_location(e.what(), d.name));
+  }
+  return d;
+}
+
+}  // namespace fest::terrainlod_tool
