@@ -38,6 +38,7 @@ TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware
   xvfb xauth                 # X server for VTK rendering tests (Debian's VTK is X11-only)
   jq                         # CLI tests read the JSON that tools print
+  unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
 )
