@@ -1,0 +1,60 @@
+#pragma once
+// The blackboard of named objects (spec §2.2) and the methods pool registered into the
+// engine as foreign predicates. Objects created by an operator are released when the
+// engine backtracks over the creation, so a retry can reuse the name.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "segbrain/engine.hpp"
+#include "segbrain/grid.hpp"
+
+namespace fest::segbrain {
+
+struct Object {
+  bool is_mask = false;
+  Image image;  // when !is_mask
+  Mask mask;    // when is_mask
+};
+
+struct Emitted {
+  std::string object;
+  int label = 0;
+};
+
+class Workspace {
+ public:
+  explicit Workspace(Grid grid) : grid_(grid) {}
+
+  const Grid& grid() const { return grid_; }
+  bool has(const std::string& name) const { return objects_.count(name) != 0; }
+  const Object& get(const std::string& name) const;
+  const Image& image(const std::string& name) const;
+  const Mask& mask(const std::string& name) const;
+  // Adds an object that lives for the whole run (the input volume).
+  void put_root(const std::string& name, Object obj);
+  std::size_t size() const { return objects_.size(); }
+  const std::vector<Emitted>& emitted() const { return emitted_; }
+
+  // Registers the operators of spec §2.4 that this version provides.
+  void register_operators(Engine& engine);
+
+ private:
+  // Creates `out` (an unbound variable gets a fresh atom; a bound atom names it) and
+  // trails its removal.
+  bool create(Engine& e, const Term& out, Object obj);
+  std::string name_of(const Term& t) const;
+
+  Grid grid_;
+  std::map<std::string, std::shared_ptr<const Object>> objects_;
+  std::vector<Emitted> emitted_;
+  int fresh_ = 0;
+};
+
+// Label volume from the emitted objects, in emit order (later objects overwrite earlier
+// ones, so the knowledge base emits from the outside in: deepest object wins).
+std::vector<std::uint16_t> assemble_labels(const Workspace& ws);
+
+}  // namespace fest::segbrain
