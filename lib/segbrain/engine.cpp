@@ -389,7 +389,8 @@ Engine::Res Engine::solve(const Term& goal0, std::uint64_t cut_barrier, int dept
       return Res{Sig::fail, 0};
     }
     emit("exit", depth, goal, ctx, now_ms() - t0);
-    measure_.clear();
+    // The measurement stays until the next operator call, so the comparison that
+    // checks it can name it when it fails.
     Res rr = k();
     if (rr.sig != Sig::stop) undo_to(m);
     return rr;

@@ -70,21 +70,26 @@ double otsu_threshold(const Image& img, const Mask& mask) {
     total += h[b];
     sum_all += h[b] * (lo + (b + 0.5) * width);
   }
+  std::vector<double> between(kBins - 1, -1);
   double w0 = 0, s0 = 0, best = -1;
-  int best_b = 0;
   for (int b = 0; b < kBins - 1; ++b) {
     w0 += h[b];
     s0 += h[b] * (lo + (b + 0.5) * width);
     double w1 = total - w0;
     if (w0 == 0 || w1 == 0) continue;
     double m0 = s0 / w0, m1 = (sum_all - s0) / w1;
-    double between = w0 * w1 * (m0 - m1) * (m0 - m1);
-    if (between > best) {
-      best = between;
-      best_b = b;
-    }
+    between[b] = w0 * w1 * (m0 - m1) * (m0 - m1);
+    best = std::max(best, between[b]);
   }
-  return lo + (best_b + 1) * width;
+  // Empty bins between the classes give a plateau of equal values; its middle is the
+  // threshold farthest from both classes.
+  int first = -1, last = -1;
+  for (int b = 0; b < kBins - 1; ++b)
+    if (between[b] >= best * (1 - 1e-12)) {
+      if (first < 0) first = b;
+      last = b;
+    }
+  return lo + (0.5 * (first + last) + 1) * width;
 }
 
 Mask threshold(const Image& img, double lo, double hi) {

@@ -28,7 +28,10 @@ double deep_intensity(const Grid& g, const Image& img, const Mask& mask, double 
 }
 
 double skin_contact_fraction(const Grid& g, const Mask& m, const Mask& head, double dist_mm) {
-  std::vector<double> d = depth(g, head);
+  return skin_contact_fraction(m, depth(g, head), dist_mm);
+}
+
+double skin_contact_fraction(const Mask& m, const std::vector<double>& d, double dist_mm) {
   std::size_t n = 0, near = 0;
   for (std::size_t i = 0; i < m.size(); ++i)
     if (m[i]) {
@@ -62,14 +65,18 @@ constexpr double kMinSliceAreaMM2 = 1000.0;  // 10 cm²
 }  // namespace
 
 double contour_length_ratio(const Grid& g, const Mask& m, const Mask& head) {
-  double worst = 0;
+  std::vector<double> r;
   for (std::size_t z = 0; z < g.n[2]; ++z) {
     auto [pm, am] = slice_shape(g, m, z);
     auto [ph, ah] = slice_shape(g, head, z);
     if (am < kMinSliceAreaMM2 || ah <= 0) continue;
-    worst = std::max(worst, (pm / std::sqrt(am)) / (ph / std::sqrt(ah)));
+    r.push_back((pm / std::sqrt(am)) / (ph / std::sqrt(ah)));
   }
-  return worst;
+  if (r.empty()) return 0;
+  // The median: below the orbits a correct brain section is legitimately ragged
+  // (temporal lobes, cerebellum), so one slice must not decide.
+  std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2), r.end());
+  return r[r.size() / 2];
 }
 
 std::pair<double, double> slice_consistency(const Grid& g, const Mask& m) {

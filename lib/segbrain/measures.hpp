@@ -4,6 +4,7 @@
 // length", "comparable to adjacent slices").
 
 #include <utility>
+#include <vector>
 
 #include "segbrain/grid.hpp"
 
@@ -15,9 +16,11 @@ double deep_intensity(const Grid& g, const Image& img, const Mask& mask, double 
 
 // Fraction of `m` voxels within dist_mm of the outline of `head` (depth <= dist_mm).
 double skin_contact_fraction(const Grid& g, const Mask& m, const Mask& head, double dist_mm);
+// The same with the head's depth map already computed.
+double skin_contact_fraction(const Mask& m, const std::vector<double>& head_depth, double dist_mm);
 
-// Over axial slices where m covers at least 10 cm², the largest ratio of m's
-// compactness perimeter/sqrt(area) to head's: leaks through thin bridges make it large.
+// Over axial slices where m covers at least 10 cm², the median ratio of m's
+// compactness perimeter/sqrt(area) to head's: ragged, leaking masks make it large.
 double contour_length_ratio(const Grid& g, const Mask& m, const Mask& head);
 
 // Over adjacent axial slice pairs both >= 10 cm²: the largest relative area change and

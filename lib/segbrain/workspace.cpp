@@ -38,6 +38,15 @@ std::string Workspace::name_of(const Term& t) const {
   return d->name;
 }
 
+const std::vector<double>& Workspace::depth_of(const std::string& name) {
+  mask(name);  // the right message when it is missing or not a mask
+  const auto& obj = objects_.at(name);
+  auto& slot = depth_cache_[name];
+  // A weak reference: a released object (and a new one under the same name) misses.
+  if (slot.first.lock() != obj) slot = {obj, std::make_shared<const std::vector<double>>(depth(grid_, obj->mask))};
+  return *slot.second;
+}
+
 bool Workspace::create(Engine& e, const Term& out, Object obj) {
   Term d = deref(out);
   std::string name;
@@ -210,12 +219,12 @@ void Workspace::register_operators(Engine& engine) {
   reg("skin_contact_fraction", 4, "+Mask, +Head, +DistMM, -F",
       "fraction of the mask within DistMM of the head outline (inside the field of view)",
       [this](Engine& e, const std::vector<Term>& a) {
-        double f = skin_contact_fraction(grid_, mask(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]));
+        double f = skin_contact_fraction(mask(name_of(a[0])), depth_of(name_of(a[1])), num(e, a[2]));
         e.measure() = {{"skin_contact_fraction", f}};
         return e.unify(a[3], make_real(f));
       });
   reg("contour_length_ratio", 4, "+Mask, +Head, +axial, -R",
-      "largest per-slice ratio of the compactness (perimeter / sqrt(area)) of Mask to that of Head",
+      "median per-slice ratio of the compactness (perimeter / sqrt(area)) of Mask to that of Head",
       [this](Engine& e, const std::vector<Term>& a) {
         if (!is_atom(a[2], "axial")) throw bad_input("contour_length_ratio: only axial slices are supported");
         double r = contour_length_ratio(grid_, mask(name_of(a[0])), mask(name_of(a[1])));

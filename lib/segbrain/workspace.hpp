@@ -47,7 +47,12 @@ class Workspace {
   bool create(Engine& e, const Term& out, Object obj);
   std::string name_of(const Term& t) const;
 
+  // Depth maps of masks, kept while the mask object lives (several checks of one run
+  // measure against the same head outline).
+  const std::vector<double>& depth_of(const std::string& name);
+
   Grid grid_;
+  std::map<std::string, std::pair<std::weak_ptr<const Object>, std::shared_ptr<const std::vector<double>>>> depth_cache_;
   std::map<std::string, std::shared_ptr<const Object>> objects_;
   std::vector<Emitted> emitted_;
   int fresh_ = 0;
