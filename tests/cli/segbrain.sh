@@ -50,6 +50,23 @@ run_stdin "$P" segbrain run - -o "$WORK/labels_stdin.mha"
 expect_status 0
 check "stdin input gives the same labels" "$FEST_BIN/fcompare" "$WORK/labels_stdin.mha" "$WORK/labels.nii.gz"
 
+case_ "orientation invariance: the same head stored PSR (permuted, flipped) gives the same labels"
+R="$(dirname "$0")/segbrain/reorient.py"
+"$S" synth -o "$WORK/ph.nii" --truth "$WORK/tr.nii" --size 80,96,80 --spacing 2,2,2 --seed 1
+python3 "$R" permute "$WORK/ph.nii" "$WORK/psr.nii"
+run segbrain run "$WORK/psr.nii" -o "$WORK/psr_labels.nii" --report "$WORK/psr.json"
+expect_status 0
+check "orientation code PSR" test "$(jq -r .input.orientation "$WORK/psr.json")" = PSR
+"$S" run "$WORK/ph.nii" -o "$WORK/ras_labels.nii"
+check "labels identical voxel by voxel after mapping back" python3 "$R" compare "$WORK/ras_labels.nii" "$WORK/psr_labels.nii"
+
+case_ "a stronger bias field (0.4) and more noise (0.05): brain Dice still >= 0.97"
+"$S" synth -o "$WORK/biased.nii.gz" --truth "$WORK/biased_truth.nii.gz" --size 80,96,80 --spacing 2,2,2 --bias 0.4 --noise 0.05 --seed 2
+run segbrain run "$WORK/biased.nii.gz" -o "$WORK/biased_labels.nii.gz"
+expect_status 0
+"$S" eval --ref "$WORK/biased_truth.nii.gz" --seg "$WORK/biased_labels.nii.gz" --map "brain=2,3" --ref-map "brain=3,6" >"$WORK/biased.tsv"
+check "biased brain Dice >= 0.97 ($(dice_of brain "$WORK/biased.tsv"))" at_least "$(dice_of brain "$WORK/biased.tsv")" 0.97
+
 case_ "a failed verification is retried with the next candidate (visible in the trace)"
 run segbrain run "$P" -o "$WORK/retry.nii.gz" --set "bg_fraction=[0.97, 0.10]" --trace "$WORK/retry.jsonl"
 expect_status 0
