@@ -126,7 +126,24 @@ void Workspace::register_operators(Engine& engine) {
   reg("deep_intensity", 4, "+Img, +Mask, +Frac, -Ref",
       "median of the upper half of intensities among the deepest Frac of the mask",
       [this](Engine& e, const std::vector<Term>& a) {
-        double w = deep_intensity(grid_, image(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]));
+        std::string in = name_of(a[0]), mn = name_of(a[1]);
+        image(in);
+        mask(mn);
+        const auto& io = objects_.at(in);
+        const auto& mo = objects_.at(mn);
+        const double frac = num(e, a[2]);
+        double w = std::nan("");
+        bool hit = false;
+        for (const auto& m : deep_memo_)
+          if (m.image.lock() == io && m.mask.lock() == mo && m.frac == frac) {
+            w = m.value;
+            hit = true;
+            ++memo_hits_;
+          }
+        if (!hit) {
+          w = deep_intensity(grid_, io->image, mo->mask, frac);
+          deep_memo_.push_back({io, mo, frac, w});
+        }
         if (std::isnan(w)) return false;
         e.measure() = {{"deep_intensity", w}};
         return e.unify(a[3], make_real(w));

@@ -37,6 +37,7 @@ class Workspace {
   void put_root(const std::string& name, Object obj);
   std::size_t size() const { return objects_.size(); }
   const std::vector<Emitted>& emitted() const { return emitted_; }
+  std::size_t memo_hits() const { return memo_hits_; }
 
   // Registers the operators of spec §2.4 that this version provides.
   void register_operators(Engine& engine);
@@ -50,6 +51,15 @@ class Workspace {
   // Depth maps of masks, kept while the mask object lives (several checks of one run
   // measure against the same head outline).
   const std::vector<double>& depth_of(const std::string& name);
+
+  // deep_intensity results by (image, mask, fraction), kept while both objects live:
+  // the white-matter reference is asked for by several rules of one run.
+  struct DeepMemo {
+    std::weak_ptr<const Object> image, mask;
+    double frac, value;
+  };
+  std::vector<DeepMemo> deep_memo_;
+  std::size_t memo_hits_ = 0;
 
   Grid grid_;
   std::map<std::string, std::pair<std::weak_ptr<const Object>, std::shared_ptr<const std::vector<double>>>> depth_cache_;

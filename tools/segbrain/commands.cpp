@@ -245,7 +245,7 @@ int run_segment(const RunArgs& a) {
     rep["accepted_by"] = engine.accepted_by();
     rep["skipped"] = engine.skipped();
     rep["counts"] = {{"inferences", engine.counters().inferences}, {"backtracks", engine.counters().backtracks},
-                     {"operator_calls", engine.counters().foreign_calls}};
+                     {"operator_calls", engine.counters().foreign_calls}, {"cache_hits", ws.memo_hits()}};
     rep["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_output(a.report, rep.dump(2) + "\n");
   }
