@@ -116,20 +116,31 @@ std::vector<double> squared_distance(const Grid& g, const Mask& target) {
   std::vector<double> d(g.size());
   for (std::size_t i = 0; i < g.size(); ++i) d[i] = target[i] ? 0.0 : INFINITY;
   std::size_t nmax = std::max({g.n[0], g.n[1], g.n[2]});
-  std::vector<double> f(nmax), out(nmax), z(nmax + 1);
+  std::vector<double> out(nmax), z(nmax + 1);
   std::vector<int> v(nmax);
+  // Lines along y and z are gathered kBlock at a time from consecutive x, so every
+  // cache line read from the strided axis is used whole.
+  constexpr std::size_t kBlock = 16;
+  std::vector<std::vector<double>> f(kBlock, std::vector<double>(nmax));
   for (int axis = 0; axis < 3; ++axis) {
     const std::size_t n = g.n[axis];
     const std::size_t stride = axis == 0 ? 1 : axis == 1 ? g.n[0] : g.n[0] * g.n[1];
-    f.resize(n);
     out.resize(n);
+    for (auto& fb : f) fb.resize(n);
+    const std::size_t xstep = axis == 0 ? 1 : kBlock;
     for (std::size_t zc = 0; zc < (axis == 2 ? 1 : g.n[2]); ++zc)
       for (std::size_t y = 0; y < (axis == 1 ? 1 : g.n[1]); ++y)
-        for (std::size_t x = 0; x < (axis == 0 ? 1 : g.n[0]); ++x) {
-          const std::size_t base = g.index(x, y, zc);
-          for (std::size_t i = 0; i < n; ++i) f[i] = d[base + i * stride];
-          edt_line(f, g.spacing[axis], out, v, z);
-          for (std::size_t i = 0; i < n; ++i) d[base + i * stride] = out[i];
+        for (std::size_t x0 = 0; x0 < (axis == 0 ? 1 : g.n[0]); x0 += xstep) {
+          const std::size_t nb = axis == 0 ? 1 : std::min(kBlock, g.n[0] - x0);
+          const std::size_t base = g.index(x0, y, zc);
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t b = 0; b < nb; ++b) f[b][i] = d[base + b + i * stride];
+          for (std::size_t b = 0; b < nb; ++b) {
+            edt_line(f[b], g.spacing[axis], out, v, z);
+            std::copy(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n), f[b].begin());
+          }
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t b = 0; b < nb; ++b) d[base + b + i * stride] = f[b][i];
         }
   }
   return d;
