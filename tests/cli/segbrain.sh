@@ -38,8 +38,8 @@ check "every trace line is JSON with a port" sh -c "jq -e '.port and .goal and .
 check "trace has verify_brain_result exit" has_port exit verify_brain_result "$WORK/trace.jsonl"
 check "trace carries the skin-contact measure" grep -q '"skin_contact_fraction":' "$WORK/trace.jsonl"
 
-case_ "labels to standard output; the same from NRRD input and through stdin"
-run segbrain run "$P"
+case_ "labels to standard output (run implied); the same from NRRD input and through stdin"
+run segbrain "$P"
 expect_status 0
 check "stdout is a NIfTI label volume" "$FEST_BIN/fcompare" "$out" "$WORK/labels.nii.gz"
 "$FEST_BIN/fconv" "$P" -o "$WORK/phantom.nrrd" 2>/dev/null
@@ -127,6 +127,22 @@ case_ "bad input: truncated .nii.gz"
 head -c 20000 "$P" >"$WORK/truncated.nii.gz"
 run segbrain run "$WORK/truncated.nii.gz"
 expect_clean_failure 3 segbrain
+
+case_ "bad input: every voxel NaN"
+python3 - "$WORK/nan.nii" <<'PY'
+import struct, sys
+h = bytearray(352)
+struct.pack_into('<i', h, 0, 348)
+struct.pack_into('<8h', h, 40, 3, 8, 8, 8, 1, 1, 1, 1)
+struct.pack_into('<hh', h, 70, 16, 32)                     # float32
+struct.pack_into('<8f', h, 76, 1, 1, 1, 1, 1, 1, 1, 1)
+struct.pack_into('<f', h, 108, 352)
+h[344:348] = b'n+1\0'
+open(sys.argv[1], 'wb').write(bytes(h) + struct.pack('<512f', *([float('nan')] * 512)))
+PY
+run segbrain run "$WORK/nan.nii"
+expect_clean_failure 3 segbrain
+expect_stderr_has "NaN"
 
 case_ "an all-zero volume: find_head fails (exit 1)"
 python3 - "$WORK/blank.nii" <<'PY'

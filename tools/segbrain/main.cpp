@@ -1,6 +1,9 @@
 // segbrain: knowledge-based extraction of head and brain from MRI head volumes
 // (Ehricke, seed 000 chapter 2; specs/segbrain.md). This file only declares the flags.
 
+#include <cstring>
+#include <vector>
+
 #include "cli/cli.hpp"
 #include "commands.hpp"
 
@@ -17,7 +20,8 @@ int main(int argc, char** argv) {
              "4 I/O error. See segbrain(1).");
 
   RunArgs run;
-  auto* r = app.add_subcommand("run", "Segment a volume; the label volume to standard output or -o");
+  auto* r = app.add_subcommand("run", "Segment a volume (the default subcommand); the label volume to standard output or -o");
+  r->fallthrough();  // -q/-v of the main command also after "run"
   r->add_option("input", run.input, "Input volume (NIfTI .nii/.nii.gz, NRRD, MHA; - = stdin)")->default_val("-");
   r->add_option("-i", run.input, "Alias of the input argument");
   r->add_option("-o,--output", run.output, "Label volume output (- = stdout)")->default_val("-");
@@ -57,7 +61,18 @@ int main(int argc, char** argv) {
   e->add_option("--map", ev.map, "Objects of the segmentation: \"name=v1,v2,a-b;...\" (default: nonzero)");
   e->add_option("--ref-map", ev.ref_map, "Objects of the reference, same syntax (default: --map)");
 
-  return fest::cli::run(app, argc, argv, [&]() -> int {
+  // `segbrain IN ...` means `segbrain run IN ...` (spec §4): without a subcommand name
+  // anywhere on the line, "run" is implied unless help or the version is asked for.
+  std::vector<char*> args(argv, argv + argc);
+  bool named = false, meta = false;
+  for (int i = 1; i < argc; ++i) {
+    for (const char* sub : {"run", "kb-check", "ops", "synth", "eval"}) named = named || std::strcmp(argv[i], sub) == 0;
+    for (const char* m : {"-h", "--help", "--version"}) meta = meta || std::strcmp(argv[i], m) == 0;
+  }
+  static char run_word[] = "run";
+  if (!named && !meta && argc > 1) args.insert(args.begin() + 1, run_word);
+
+  return fest::cli::run(app, static_cast<int>(args.size()), args.data(), [&]() -> int {
     if (*r) {
       run.quiet = common.quiet;
       return run_segment(run);
