@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <stdexcept>
 
@@ -28,21 +27,27 @@ std::vector<Offset> neighbourhood(int conn) {
   return o;
 }
 
-// Breadth-first labelling with an explicit queue (no recursion on big volumes).
+// Flood fill with an explicit stack (no recursion on big volumes). Interior voxels take
+// the precomputed linear offsets without bounds checks; only border voxels check.
 template <typename Visit>
 void flood(const Grid& g, std::size_t start, const std::vector<Offset>& nb, Visit&& accept) {
-  std::deque<std::size_t> q{start};
   const long nx = static_cast<long>(g.n[0]), ny = static_cast<long>(g.n[1]), nz = static_cast<long>(g.n[2]);
-  while (!q.empty()) {
-    std::size_t i = q.front();
-    q.pop_front();
-    long x = static_cast<long>(i % g.n[0]), y = static_cast<long>((i / g.n[0]) % g.n[1]),
-         z = static_cast<long>(i / (g.n[0] * g.n[1]));
-    for (const auto& o : nb) {
-      long a = x + o.dx, b = y + o.dy, c = z + o.dz;
-      if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz) continue;
-      std::size_t j = g.index(static_cast<std::size_t>(a), static_cast<std::size_t>(b), static_cast<std::size_t>(c));
-      if (accept(j)) q.push_back(j);
+  std::vector<long> lin;
+  for (const auto& o : nb) lin.push_back(o.dx + nx * (o.dy + ny * o.dz));
+  std::vector<std::size_t> stack{start};
+  while (!stack.empty()) {
+    std::size_t i = stack.back();
+    stack.pop_back();
+    const long x = static_cast<long>(i % g.n[0]), yz = static_cast<long>(i / g.n[0]);
+    const long y = yz % ny, z = yz / ny;
+    const bool interior = x > 0 && y > 0 && z > 0 && x + 1 < nx && y + 1 < ny && z + 1 < nz;
+    for (std::size_t k = 0; k < nb.size(); ++k) {
+      if (!interior) {
+        long a = x + nb[k].dx, b = y + nb[k].dy, c = z + nb[k].dz;
+        if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz) continue;
+      }
+      std::size_t j = static_cast<std::size_t>(static_cast<long>(i) + lin[k]);
+      if (accept(j)) stack.push_back(j);
     }
   }
 }
