@@ -8,8 +8,12 @@
 namespace fest::segbrain {
 
 Image gaussian_smooth(const Grid& g, const Image& img, double sigma_mm) {
-  Image cur = img, next(img.size());
+  Image cur = img;
   if (sigma_mm <= 0) return cur;
+  // Lines along y and z are gathered kBlock at a time from consecutive x so the strided
+  // reads use whole cache lines; the line is padded by replicating its ends, so the
+  // convolution itself needs no bounds checks.
+  constexpr std::size_t kBlock = 16;
   for (int axis = 0; axis < 3; ++axis) {
     const double s = sigma_mm / g.spacing[axis];
     const int r = static_cast<int>(std::ceil(3 * s));
@@ -19,23 +23,32 @@ Image gaussian_smooth(const Grid& g, const Image& img, double sigma_mm) {
     for (auto& x : w) x /= sum;
     const std::size_t n = g.n[axis];
     const std::size_t stride = axis == 0 ? 1 : axis == 1 ? g.n[0] : g.n[0] * g.n[1];
-    std::vector<double> line(n);
-    // Every line along `axis` starts at a voxel whose coordinate on that axis is 0.
+    std::vector<std::vector<double>> line(kBlock, std::vector<double>(n + 2 * r));
+    std::vector<std::vector<float>> res(kBlock, std::vector<float>(n));
+    const std::size_t xstep = axis == 0 ? 1 : kBlock;
     for (std::size_t z = 0; z < (axis == 2 ? 1 : g.n[2]); ++z)
       for (std::size_t y = 0; y < (axis == 1 ? 1 : g.n[1]); ++y)
-        for (std::size_t x = 0; x < (axis == 0 ? 1 : g.n[0]); ++x) {
-          const std::size_t base = g.index(x, y, z);
-          for (std::size_t i = 0; i < n; ++i) line[i] = cur[base + i * stride];
-          for (std::size_t i = 0; i < n; ++i) {
-            double acc = 0;
-            for (int k = -r; k <= r; ++k) {
-              long j = std::clamp<long>(static_cast<long>(i) + k, 0, static_cast<long>(n) - 1);
-              acc += w[k + r] * line[static_cast<std::size_t>(j)];
+        for (std::size_t x0 = 0; x0 < (axis == 0 ? 1 : g.n[0]); x0 += xstep) {
+          const std::size_t nb = axis == 0 ? 1 : std::min(kBlock, g.n[0] - x0);
+          const std::size_t base = g.index(x0, y, z);
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t b = 0; b < nb; ++b) line[b][i + r] = cur[base + b + i * stride];
+          for (std::size_t b = 0; b < nb; ++b) {
+            auto& l = line[b];
+            for (int k = 0; k < r; ++k) {
+              l[k] = l[r];
+              l[n + r + k] = l[n + r - 1];
             }
-            next[base + i * stride] = static_cast<float>(acc);
+            for (std::size_t i = 0; i < n; ++i) {
+              double acc = 0;
+              const double* p = &l[i];
+              for (int k = 0; k <= 2 * r; ++k) acc += w[k] * p[k];
+              res[b][i] = static_cast<float>(acc);
+            }
           }
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t b = 0; b < nb; ++b) cur[base + b + i * stride] = res[b][i];
         }
-    std::swap(cur, next);
   }
   return cur;
 }
