@@ -249,10 +249,7 @@ int run_segment(const RunArgs& a) {
     rep["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_output(a.report, rep.dump(2) + "\n");
   }
-  if (!ok) {
-    if (a.allow_partial) write_volume_output(label_volume(in, ro, labels), a.output, a.to);
-    throw runtime_failure("{}", failure);
-  }
+  if (!ok) throw runtime_failure("{}", failure);
   write_volume_output(label_volume(in, ro, labels), a.output, a.to);
   return 0;
 }

@@ -18,7 +18,6 @@ struct RunArgs {
   std::vector<std::string> sets;
   std::string report;
   std::string trace;
-  bool allow_partial = false;
   int max_depth = 10000;
   double max_inferences = 1e7;
   double time_limit = 0;

@@ -31,7 +31,6 @@ int main(int argc, char** argv) {
   r->add_option("--set", run.sets, "NAME=VALUE: replace candidates/2, limit/2 or NAME/1 facts")->allow_extra_args(false);
   r->add_option("--report", run.report, "Write a JSON report");
   r->add_option("--trace", run.trace, "Write the proof trace as JSON lines");
-  r->add_flag("--allow-partial", run.allow_partial, "On failure still write the labels proved so far (exit 1)");
   r->add_option("--max-depth", run.max_depth, "Deepest proof")->default_val(10000);
   r->add_option("--max-inferences", run.max_inferences, "Most inferences")->default_val(1e7);
   r->add_option("--time-limit", run.time_limit, "Seconds (0 = none)")->default_val(0);
