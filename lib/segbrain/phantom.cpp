@@ -1,0 +1,102 @@
+// Synthetic head: shapes are defined in mm around the grid centre.
+#include "segbrain/phantom.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace fest::segbrain {
+namespace {
+
+// SplitMix64 and Box-Muller: a deterministic generator of our own, identical everywhere.
+struct Rng {
+  std::uint64_t s;
+  std::uint64_t next() {
+    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return (static_cast<double>(next() >> 11) + 0.5) / 9007199254740992.0; }
+  double gauss() { return std::sqrt(-2 * std::log(uniform())) * std::cos(2 * M_PI * uniform()); }
+};
+
+// Normalised ellipsoid radius: < 1 inside.
+double ell(double x, double y, double z, double a, double b, double c) {
+  return std::sqrt((x / a) * (x / a) + (y / b) * (y / b) + (z / c) * (z / c));
+}
+
+}  // namespace
+
+Phantom make_phantom(const PhantomOptions& o) {
+  for (int a = 0; a < 3; ++a)
+    if (o.size[a] < 8 || o.spacing[a] <= 0) throw bad_input("phantom grid must be >= 8 voxels with positive spacing");
+  Phantom p;
+  p.grid.n = o.size;
+  p.grid.spacing = o.spacing;
+  const Grid& g = p.grid;
+  p.t1.assign(g.size(), 0);
+  p.truth.assign(g.size(), 0);
+  const double WM = 110, GM = 80, CSF = 30, FAT = 180, BONE = 20, MUSCLE = 60;
+  Rng rng{o.seed * 7919 + 17};
+  for (std::size_t k = 0; k < g.n[2]; ++k)
+    for (std::size_t j = 0; j < g.n[1]; ++j)
+      for (std::size_t i = 0; i < g.n[0]; ++i) {
+        double x = (i - 0.5 * (g.n[0] - 1)) * g.spacing[0];
+        double y = (j - 0.5 * (g.n[1] - 1)) * g.spacing[1];
+        double z = (k - 0.5 * (g.n[2] - 1)) * g.spacing[2];
+        double hz = z - 5;                           // head centre 5 mm above the grid centre
+        double rh = ell(x, y, hz, 72, 90, 70);       // outer scalp
+        // Brain surface with sulci: a cosine-modulated ellipsoid (radius ±4 %).
+        double th = std::atan2(y, x), ph = std::atan2(hz, std::hypot(x, y));
+        double rb = ell(x, y, hz, 58, 76, 56) / (1 + 0.04 * std::cos(9 * th) * std::cos(7 * ph));
+        double rwm = ell(x, y, hz, 52, 70, 50);
+        double rskull_in = ell(x, y, hz, 62, 80, 60);
+        double rskull_out = ell(x, y, hz, 68, 86, 66);
+        bool neck = hz < -20 && std::hypot(x, (y + 10) * 0.9) < 45;
+        double v = 0;
+        int lab = 0;
+        // Eyes: vitreous balls (r 12 mm) in orbital fat, in front of the brain.
+        bool eye = false, orbit = false;
+        for (int s : {-1, 1}) {
+          double d = std::sqrt((x - s * 32) * (x - s * 32) + (y - 70) * (y - 70) + (hz + 30) * (hz + 30));
+          eye = eye || d < 12;
+          orbit = orbit || d < 16;
+        }
+        if (rh < 1 || neck) {
+          lab = 1;
+          v = neck && rh >= 1 ? MUSCLE : FAT;
+          if (rh < 1 && neck && ell(x, y, hz, 66, 84, 64) < 1) v = MUSCLE;
+          if (rskull_out < 1) v = BONE;
+          if (rskull_in < 1) {
+            v = CSF;
+            lab = 2;
+          }
+          if (rb < 1) {
+            v = rwm < 1 ? WM : GM;
+            lab = 3;
+            for (int s : {-1, 1})
+              if (ell(x - s * 10, y + 5, hz - 8, 6, 22, 9) < 1) {
+                v = CSF;
+                lab = 6;
+              }
+          }
+          if (orbit && lab <= 1) v = FAT;
+          if (eye && lab <= 1) {
+            v = CSF;
+            lab = 10;
+          }
+        }
+        // Low-order polynomial bias field, 1 ± bias/2 across the head.
+        double b = 1 + 0.5 * o.bias * (0.6 * x / 80 + 0.3 * y / 96 - 0.4 * (z / 80) * (z / 80) + 0.2);
+        v *= b;
+        const double sd = o.noise * WM;
+        double n1 = rng.gauss() * sd, n2 = rng.gauss() * sd;
+        std::size_t idx = g.index(i, j, k);
+        p.t1[idx] = static_cast<float>(std::sqrt((v + n1) * (v + n1) + n2 * n2));  // Rician magnitude
+        p.truth[idx] = static_cast<std::uint8_t>(lab);
+      }
+  return p;
+}
+
+}  // namespace fest::segbrain

@@ -1,0 +1,293 @@
+// Workspace objects and the foreign predicates that operate on them.
+#include "segbrain/workspace.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "segbrain/filters.hpp"
+#include "segbrain/measures.hpp"
+#include "segbrain/morphology.hpp"
+
+namespace fest::segbrain {
+
+const Object& Workspace::get(const std::string& name) const {
+  auto it = objects_.find(name);
+  if (it == objects_.end()) throw bad_input("no object named '{}' in the workspace", name);
+  return *it->second;
+}
+const Image& Workspace::image(const std::string& name) const {
+  const Object& o = get(name);
+  if (o.is_mask) throw bad_input("object '{}' is a mask, an image is needed", name);
+  return o.image;
+}
+const Mask& Workspace::mask(const std::string& name) const {
+  const Object& o = get(name);
+  if (!o.is_mask) throw bad_input("object '{}' is an image, a mask is needed", name);
+  return o.mask;
+}
+void Workspace::put_root(const std::string& name, Object obj) {
+  objects_[name] = std::make_shared<const Object>(std::move(obj));
+}
+
+std::string Workspace::name_of(const Term& t) const {
+  Term d = deref(t);
+  if (d->kind != Kind::atom) throw bad_input("expected an object name, got {}", to_string(d));
+  return d->name;
+}
+
+const std::vector<double>& Workspace::depth_of(const std::string& name) {
+  mask(name);  // the right message when it is missing or not a mask
+  const auto& obj = objects_.at(name);
+  auto& slot = depth_cache_[name];
+  // A weak reference: a released object (and a new one under the same name) misses.
+  if (slot.first.lock() != obj) slot = {obj, std::make_shared<const std::vector<double>>(depth(grid_, obj->mask))};
+  return *slot.second;
+}
+
+bool Workspace::create(Engine& e, const Term& out, Object obj) {
+  Term d = deref(out);
+  std::string name;
+  if (d->kind == Kind::var) {
+    name = fmt::format("_obj{}", ++fresh_);
+    e.unify(d, make_atom(name));
+  } else if (d->kind == Kind::atom) {
+    name = d->name;
+    if (objects_.count(name)) throw bad_input("object '{}' exists already", name);
+  } else {
+    throw bad_input("output must be an unbound variable or an atom, got {}", to_string(d));
+  }
+  objects_[name] = std::make_shared<const Object>(std::move(obj));
+  e.on_backtrack([this, name] { objects_.erase(name); });
+  return true;
+}
+
+namespace {
+
+Object mask_object(Mask m) {
+  Object o;
+  o.is_mask = true;
+  o.mask = std::move(m);
+  return o;
+}
+Object image_object(Image i) {
+  Object o;
+  o.image = std::move(i);
+  return o;
+}
+double num(Engine& e, const Term& t) { return e.eval(t); }
+int conn_of(Engine& e, const Term& t) {
+  int c = static_cast<int>(num(e, t));
+  if (c != 4 && c != 8 && c != 6 && c != 18 && c != 26) throw bad_input("connectivity {} (4, 8, 6, 18 or 26)", c);
+  return c;
+}
+bool slice_scope(const Term& t) {
+  Term d = deref(t);
+  if (d->kind == Kind::atom && d->name == "volume") return false;
+  if (d->kind == Kind::compound && d->name == "slice" && d->args.size() == 1 && is_atom(d->args[0], "axial")) return true;
+  throw bad_input("scope must be volume or slice(axial), got {}", to_string(d));
+}
+
+}  // namespace
+
+void Workspace::register_operators(Engine& engine) {
+  auto reg = [&](const char* name, int arity, const char* modes, const char* doc, Foreign fn) {
+    engine.register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
+  };
+  const Grid& g = grid_;
+  auto ml = [&g](const Mask& m) { return static_cast<double>(count(m)) * g.voxel_ml(); };
+
+  // --- segmentation / feature operators ---
+  reg("robust_range", 4, "+Img, +Mask|all, -P2, -P98", "2nd and 98th intensity percentiles",
+      [this](Engine& e, const std::vector<Term>& a) {
+        const Image& img = image(name_of(a[0]));
+        Mask empty;
+        const Mask& m = is_atom(a[1], "all") ? empty : mask(name_of(a[1]));
+        double p2 = percentile(img, m, 2), p98 = percentile(img, m, 98);
+        if (std::isnan(p2)) return false;
+        return e.unify(a[2], make_real(p2)) && e.unify(a[3], make_real(p98));
+      });
+  reg("smooth", 3, "+Img, +SigmaMM, -Out", "separable Gaussian, radius ceil(3 sigma / spacing)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[2], image_object(gaussian_smooth(grid_, image(name_of(a[0])), num(e, a[1]))));
+      });
+  reg("threshold", 4, "+Img, +Lo, +Hi, -Mask", "Lo <= I <= Hi (inf allowed)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[3], mask_object(threshold(image(name_of(a[0])), num(e, a[1]), num(e, a[2]))));
+      });
+  reg("otsu", 3, "+Img, +Mask|all, -T", "Otsu threshold on a 256-bin histogram",
+      [this](Engine& e, const std::vector<Term>& a) {
+        Mask empty;
+        const Mask& m = is_atom(a[1], "all") ? empty : mask(name_of(a[1]));
+        return e.unify(a[2], make_real(otsu_threshold(image(name_of(a[0])), m)));
+      });
+  reg("deep_intensity", 4, "+Img, +Mask, +Frac, -Ref",
+      "median of the upper half of intensities among the deepest Frac of the mask",
+      [this](Engine& e, const std::vector<Term>& a) {
+        std::string in = name_of(a[0]), mn = name_of(a[1]);
+        image(in);
+        mask(mn);
+        const auto& io = objects_.at(in);
+        const auto& mo = objects_.at(mn);
+        const double frac = num(e, a[2]);
+        double w = std::nan("");
+        bool hit = false;
+        for (const auto& m : deep_memo_)
+          if (m.image.lock() == io && m.mask.lock() == mo && m.frac == frac) {
+            w = m.value;
+            hit = true;
+            ++memo_hits_;
+          }
+        if (!hit) {
+          w = deep_intensity(grid_, io->image, mo->mask, frac);
+          deep_memo_.push_back({io, mo, frac, w});
+        }
+        if (std::isnan(w)) return false;
+        e.measure() = {{"deep_intensity", w}};
+        return e.unify(a[3], make_real(w));
+      });
+  reg("region_grow", 7, "+Img, +Seeds, +Lo, +Hi, +Conn, +Within|all, -Mask", "flood fill over Lo <= I <= Hi",
+      [this](Engine& e, const std::vector<Term>& a) {
+        Mask empty;
+        const Mask& within = is_atom(a[5], "all") ? empty : mask(name_of(a[5]));
+        return create(e, a[6], mask_object(region_grow(grid_, image(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]),
+                                                       num(e, a[3]), conn_of(e, a[4]), within)));
+      });
+  reg("largest_component", 3, "+Mask, +Conn, -Out", "largest connected component",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[2], mask_object(largest_component(grid_, mask(name_of(a[0])), conn_of(e, a[1]))));
+      });
+  reg("largest_fraction", 2, "+Mask, -Q", "fraction of the mask in its largest 26-connected component",
+      [this](Engine& e, const std::vector<Term>& a) {
+        const Mask& m = mask(name_of(a[0]));
+        std::size_t n = count(m);
+        double q = n ? double(count(largest_component(grid_, m, 26))) / double(n) : 0.0;
+        e.measure() = {{"largest_fraction", q}};
+        return e.unify(a[1], make_real(q));
+      });
+  reg("fill_holes", 3, "+Mask, +Scope, -Out", "fill background not connected to the grid border",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[2], mask_object(fill_holes(grid_, mask(name_of(a[0])), slice_scope(a[1]))));
+      });
+  // --- post-processing: morphology on the exact distance transform ---
+  auto morph = [&](const char* name, Mask (*op)(const Grid&, const Mask&, double)) {
+    reg(name, 3, "+Mask, +RadiusMM, -Out", "ball morphology via the exact distance transform",
+        [this, op](Engine& e, const std::vector<Term>& a) {
+          return create(e, a[2], mask_object(op(grid_, mask(name_of(a[0])), num(e, a[1]))));
+        });
+  };
+  morph("erode", &erode);
+  morph("dilate", &dilate);
+  morph("open", &open);
+  morph("close", &close);
+  auto logic = [&](const char* name, int which) {
+    reg(name, 3, "+A, +B, -Out", "voxel-wise logic", [this, which](Engine& e, const std::vector<Term>& a) {
+      const Mask& x = mask(name_of(a[0]));
+      const Mask& y = mask(name_of(a[1]));
+      Mask m(x.size());
+      for (std::size_t i = 0; i < m.size(); ++i)
+        m[i] = which == 0 ? (x[i] && y[i]) : which == 1 ? (x[i] || y[i]) : (x[i] && !y[i]);
+      return create(e, a[2], mask_object(std::move(m)));
+    });
+  };
+  logic("and", 0);
+  logic("or", 1);
+  logic("and_not", 2);
+  reg("copy", 2, "+Obj, -Out", "duplicate an object under a new name", [this](Engine& e, const std::vector<Term>& a) {
+    return create(e, a[1], get(name_of(a[0])));
+  });
+  reg("exists", 1, "+Name", "the workspace holds the object", [this](Engine&, const std::vector<Term>& a) {
+    Term d = deref(a[0]);
+    return d->kind == Kind::atom && has(d->name);
+  });
+  reg("emit", 2, "+Obj, +Label", "mark a mask as an output label (later emits overwrite earlier ones)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        std::string n = name_of(a[0]);
+        mask(n);
+        int label = static_cast<int>(num(e, a[1]));
+        if (label < 0 || label > 65535) throw bad_input("label {} out of range 0..65535", label);
+        emitted_.push_back({n, label});
+        e.on_backtrack([this] { emitted_.pop_back(); });
+        return true;
+      });
+  // --- measurements (verification operators read these) ---
+  reg("volume_ml", 2, "+Mask, -V", "volume in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
+    double v = ml(mask(name_of(a[0])));
+    e.measure() = {{"volume_ml", v}};
+    return e.unify(a[1], make_real(v));
+  });
+  reg("ratio_ml", 3, "+A, +B, -Q", "volume of A over volume of B", [this, ml](Engine& e, const std::vector<Term>& a) {
+    double vb = ml(mask(name_of(a[1])));
+    double q = vb > 0 ? ml(mask(name_of(a[0]))) / vb : 0.0;
+    e.measure() = {{"volume_ratio", q}};
+    return e.unify(a[2], make_real(q));
+  });
+  reg("overlap_ml", 3, "+A, +B, -V", "volume of A and B in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
+    const Mask& x = mask(name_of(a[0]));
+    const Mask& y = mask(name_of(a[1]));
+    Mask m(x.size());
+    for (std::size_t i = 0; i < m.size(); ++i) m[i] = x[i] && y[i];
+    double v = ml(m);
+    e.measure() = {{"overlap_ml", v}};
+    return e.unify(a[2], make_real(v));
+  });
+  reg("skin_contact_fraction", 4, "+Mask, +Head, +DistMM, -F",
+      "fraction of the mask within DistMM of the head outline (inside the field of view)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        double f = skin_contact_fraction(mask(name_of(a[0])), depth_of(name_of(a[1])), num(e, a[2]));
+        e.measure() = {{"skin_contact_fraction", f}};
+        return e.unify(a[3], make_real(f));
+      });
+  reg("contour_length_ratio", 4, "+Mask, +Head, +axial, -R",
+      "median per-slice ratio of the compactness (perimeter / sqrt(area)) of Mask to that of Head",
+      [this](Engine& e, const std::vector<Term>& a) {
+        if (!is_atom(a[2], "axial")) throw bad_input("contour_length_ratio: only axial slices are supported");
+        double r = contour_length_ratio(grid_, mask(name_of(a[0])), mask(name_of(a[1])));
+        e.measure() = {{"contour_length_ratio", r}};
+        return e.unify(a[3], make_real(r));
+      });
+  reg("slice_consistency", 4, "+Mask, +axial, -MaxChange, -MinDice",
+      "largest relative area change and smallest Dice between adjacent axial slices (>= 10 cm2)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        if (!is_atom(a[1], "axial")) throw bad_input("slice_consistency: only axial slices are supported");
+        auto [c, d] = slice_consistency(grid_, mask(name_of(a[0])));
+        e.measure() = {{"slice_change", c}, {"slice_dice", d}};
+        return e.unify(a[2], make_real(c)) && e.unify(a[3], make_real(d));
+      });
+  reg("depth_shell", 4, "+Mask, +D0, +D1, -Out", "mask voxels whose depth lies in [D0, D1] mm",
+      [this](Engine& e, const std::vector<Term>& a) {
+        const Mask& m = mask(name_of(a[0]));
+        double d0 = num(e, a[1]), d1 = num(e, a[2]);
+        std::vector<double> d = depth(grid_, m);
+        Mask out(m.size());
+        for (std::size_t i = 0; i < m.size(); ++i) out[i] = m[i] && d[i] >= d0 && d[i] <= d1;
+        return create(e, a[3], mask_object(std::move(out)));
+      });
+  reg("fraction_within", 5, "+Img, +Mask, +Lo, +Hi, -F", "fraction of mask voxels with Lo <= I <= Hi",
+      [this](Engine& e, const std::vector<Term>& a) {
+        double f = fraction_within(image(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]), num(e, a[3]));
+        e.measure() = {{"fraction_within", f}};
+        return e.unify(a[4], make_real(f));
+      });
+  reg("fraction_above", 4, "+Img, +Mask, +T, -F", "fraction of mask voxels with I > T",
+      [this](Engine& e, const std::vector<Term>& a) {
+        double f = 1.0 - fraction_within(image(name_of(a[0])), mask(name_of(a[1])), -INFINITY, num(e, a[2]));
+        if (count(mask(name_of(a[1]))) == 0) f = 0;
+        e.measure() = {{"fraction_above", f}};
+        return e.unify(a[3], make_real(f));
+      });
+}
+
+std::vector<std::uint16_t> assemble_labels(const Workspace& ws) {
+  std::vector<std::uint16_t> out(ws.grid().size(), 0);
+  for (const auto& em : ws.emitted()) {
+    const Mask& m = ws.mask(em.object);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (m[i]) out[i] = static_cast<std::uint16_t>(em.label);
+  }
+  return out;
+}
+
+}  // namespace fest::segbrain

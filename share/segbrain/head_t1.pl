@@ -1,0 +1,119 @@
+% head_t1.pl -- default knowledge base of segbrain for T1-weighted MRI heads.
+%
+% The strategy is the chapter's (Ehricke, seed 000 ch. 2): top-down refinement, head
+% first, then the brain inside the head outline, every result verified and retried with
+% other parameters when a check fails. Everything numeric below is a RECONSTRUCTION
+% (specs/segbrain.md §2.5): the chapter gives rules by name, not thresholds.
+%
+% This version ships head and brain. The chapter's edge-based find_brain clause
+% (Marr-Hildreth, region division and aggregation) and the goals for eyes, ventricles,
+% cerebellum, brainstem and optic nerves are not part of it yet.
+
+% --- anatomic model (figure 2.2) ---
+part_of(background, image).        part_of(head, image).
+part_of(intracranial, head).       part_of(extracranial, head).
+part_of(brain, intracranial).      part_of(csf, intracranial).
+part_of(white_matter, brain).      part_of(gray_matter, brain).
+part_of(ventricles, csf).          part_of(subarachnoid_csf, csf).
+part_of(cerebellum, brain).        part_of(brainstem, brain).
+part_of(eye, extracranial).        part_of(optic_nerve, head).
+
+% --- MR physics, T1 (reconstruction) ---
+brighter(t1, fat, white_matter).   brighter(t1, white_matter, gray_matter).
+brighter(t1, gray_matter, csf).    similar(t1, vitreous, csf).
+dark(t1, cortical_bone).           dark(t1, air).
+% Intensity windows relative to the white-matter reference W.
+window(t1, brain, 0.55, 1.25).
+window(t1, csf, 0.0, 0.50).
+window(t1, white_matter, 0.85, 1.25).
+
+% --- parameter candidates, tried in order (reconstruction; --set replaces them) ---
+candidates(bg_fraction, [0.10, 0.05, 0.15]).
+candidates(separation_mm, [2, 3, 4]).
+candidates(brain_window, [(0.55, 1.25), (0.60, 1.20), (0.50, 1.30)]).
+
+% --- verification limits (reconstruction) ---
+limit(skin_contact_max, 0.003).
+limit(contour_ratio_max, 1.8).
+limit(slice_change_max, 0.6).
+limit(slice_dice_min, 0.55).
+limit(head_min_ml, 1500).          limit(head_max_ml, 8000).
+limit(brain_min_ml, 900).          limit(brain_max_ml, 2100).
+limit(brain_head_ratio_min, 0.30). limit(brain_head_ratio_max, 0.60).
+
+% --- goals ---
+segment_head :- find_head, find_brain, emit_objects.
+
+% Foreground above a fraction of the robust intensity range; the largest 26-connected
+% part with its holes filled (slice-wise first: the neck cut leaves the volume open).
+find_head :-
+    robust_range(t1, all, P2, P98),
+    candidates(bg_fraction, Fs), member(F, Fs),
+    T is P2 + F * (P98 - P2),
+    threshold(t1, T, inf, fg),
+    largest_component(fg, 26, h0),
+    fill_holes(h0, slice(axial), h1),
+    fill_holes(h1, volume, head),
+    verify_head(head), !.
+
+verify_head(H) :-
+    volume_ml(H, V), limit(head_min_ml, Lo), limit(head_max_ml, Hi), V >= Lo, V =< Hi,
+    largest_fraction(fg, Q), Q >= 0.9.
+
+% The deep centre of the head is white matter (and ventricles) on T1.
+wm_reference(W) :- deep_intensity(t1, head, 0.10, W).
+
+% Input that is already brain-only: 2-10 mm below its outline lies cortex, not scalp
+% fat and skull.
+find_brain :- already_skull_stripped, copy(head, brain_filled), !.
+
+% Window on intensity, then separation of the brain from extracerebral tissue of the
+% same intensity by erosion, the largest core, and dilation back (reconstruction).
+find_brain :-
+    wm_reference(W),
+    candidates(brain_window, Ws), member((A, B), Ws),
+    candidates(separation_mm, Rs), member(R, Rs),
+    Lo is A * W, Hi is B * W,
+    threshold(t1, Lo, Hi, c0), and(c0, head, cand),
+    erode(cand, R, e), largest_component(e, 6, core), dilate(core, R, d), and(d, cand, b0),
+    close(b0, 3, b1), fill_holes(b1, volume, brain_raw),
+    verify_brain_result(brain_raw),
+    copy(brain_raw, brain_filled), !.
+
+already_skull_stripped :-
+    wm_reference(W),
+    depth_shell(head, 2, 10, shell),
+    Lo is 0.45 * W, Hi is 1.15 * W, fraction_within(t1, shell, Lo, Hi, F), F >= 0.90,
+    T is 1.2 * W, fraction_above(t1, shell, T, B), B =< 0.02.
+
+% The chapter's verification rule, in the chapter's order, plus a size prior.
+verify_brain_result(M) :-
+    no_connection_to_skincontour(M),
+    no_overlap_with_eye_region(M),
+    reasonable_contour_length(M),
+    comparable_to_adjacent_slices(M),
+    plausible_brain_size(M).
+
+no_connection_to_skincontour(M) :-
+    skin_contact_fraction(M, head, 3.0, F), limit(skin_contact_max, X), F =< X.
+no_overlap_with_eye_region(_) :- \+ exists(eyes), !.
+no_overlap_with_eye_region(M) :-
+    dilate(eyes, 2, ez), overlap_ml(M, ez, V), V =< 0.05.
+reasonable_contour_length(M) :-
+    contour_length_ratio(M, head, axial, R), limit(contour_ratio_max, X), R =< X.
+comparable_to_adjacent_slices(M) :-
+    slice_consistency(M, axial, C, D),
+    limit(slice_change_max, Cx), C =< Cx, limit(slice_dice_min, Dm), D >= Dm.
+plausible_brain_size(M) :-
+    volume_ml(M, V), limit(brain_min_ml, Vlo), limit(brain_max_ml, Vhi), V >= Vlo, V =< Vhi,
+    ratio_ml(M, head, Q), limit(brain_head_ratio_min, Qlo), limit(brain_head_ratio_max, Qhi),
+    Q >= Qlo, Q =< Qhi.
+
+% Labels of spec §2.6, outside in (a later emit overwrites an earlier one).
+emit_objects :-
+    wm_reference(W),
+    emit(head, 1),
+    emit(brain_filled, 3),
+    window(t1, csf, A, B), Lo is A * W, Hi is B * W,
+    threshold(t1, Lo, Hi, dark), and(dark, brain_filled, inner_csf),
+    emit(inner_csf, 2).

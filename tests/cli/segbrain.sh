@@ -1,0 +1,163 @@
+#!/usr/bin/env bash
+# segbrain end to end on the synthetic head (80x96x80 voxels of 2 mm): head and brain
+# Dice against the phantom's known labels, the report and trace, format and storage
+# invariance, the retry of a failed verification visible in the trace, and bad input.
+. "$(dirname "$0")/lib.sh"
+S="$FEST_BIN/segbrain"
+P="$WORK/phantom.nii.gz"
+T="$WORK/truth.nii.gz"
+
+# Dice of one object from `segbrain eval` output (second column of the named row).
+dice_of() { awk -v o="$1" '$1 == o { print $2 }' "$2"; }
+# The trace has a line of that port for a goal of that predicate.
+has_port() { jq -e --arg p "$1" --arg g "$2" 'select(.port == $p and (.goal | startswith($g)))' "$3" | grep -q .; }
+at_least() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a >= b) }'; }
+
+case_ "synth writes a phantom and its truth"
+run segbrain synth -o "$P" --truth "$T" --size 80,96,80 --spacing 2,2,2 --seed 1
+expect_status 0
+expect_stdout_empty
+check "phantom written" test -s "$P"
+check "truth written" test -s "$T"
+
+case_ "run: head and brain of the phantom against the known labels"
+run segbrain run "$P" -o "$WORK/labels.nii.gz" --report "$WORK/report.json" --trace "$WORK/trace.jsonl"
+expect_status 0
+expect_stdout_empty
+"$S" eval --ref "$T" --seg "$WORK/labels.nii.gz" --map "brain=2,3;head=1-10" --ref-map "brain=3,6;head=1-10" >"$WORK/eval.tsv"
+# Truth brain_filled = brain tissue (3) + ventricles (6); ours = labels 2 (CSF inside) + 3.
+check "brain Dice >= 0.97 ($(dice_of brain "$WORK/eval.tsv"))" at_least "$(dice_of brain "$WORK/eval.tsv")" 0.97
+check "head Dice >= 0.99 ($(dice_of head "$WORK/eval.tsv"))" at_least "$(dice_of head "$WORK/eval.tsv")" 0.99
+cp "$WORK/report.json" "$out"
+expect_json '.proved' 'true'
+expect_json '.input.orientation' '"RAS"'
+expect_json '.objects.brain_filled.label' '3'
+expect_json '.accepted_by.verify_brain_result | startswith("head_t1.pl:")' 'true'
+check "brain volume 0.9-2.1 l" at_least "$(jq '.objects.brain_filled.volume_ml' "$WORK/report.json")" 900
+check "every trace line is JSON with a port" sh -c "jq -e '.port and .goal and .clause' '$WORK/trace.jsonl' >/dev/null"
+check "trace has verify_brain_result exit" has_port exit verify_brain_result "$WORK/trace.jsonl"
+check "trace carries the skin-contact measure" grep -q '"skin_contact_fraction":' "$WORK/trace.jsonl"
+
+case_ "labels to standard output (run implied); the same from NRRD input and through stdin"
+run segbrain "$P"
+expect_status 0
+check "stdout is a NIfTI label volume" "$FEST_BIN/fcompare" "$out" "$WORK/labels.nii.gz"
+"$FEST_BIN/fconv" "$P" -o "$WORK/phantom.nrrd" 2>/dev/null
+run segbrain run "$WORK/phantom.nrrd" -o "$WORK/labels_nrrd.nrrd"
+expect_status 0
+check "NRRD input gives the same labels" "$FEST_BIN/fcompare" "$WORK/labels_nrrd.nrrd" "$WORK/labels.nii.gz"
+run_stdin "$P" segbrain run - -o "$WORK/labels_stdin.mha"
+expect_status 0
+check "stdin input gives the same labels" "$FEST_BIN/fcompare" "$WORK/labels_stdin.mha" "$WORK/labels.nii.gz"
+
+case_ "orientation invariance: the same head stored PSR (permuted, flipped) gives the same labels"
+R="$(dirname "$0")/segbrain/reorient.py"
+"$S" synth -o "$WORK/ph.nii" --truth "$WORK/tr.nii" --size 80,96,80 --spacing 2,2,2 --seed 1
+python3 "$R" permute "$WORK/ph.nii" "$WORK/psr.nii"
+run segbrain run "$WORK/psr.nii" -o "$WORK/psr_labels.nii" --report "$WORK/psr.json"
+expect_status 0
+check "orientation code PSR" test "$(jq -r .input.orientation "$WORK/psr.json")" = PSR
+"$S" run "$WORK/ph.nii" -o "$WORK/ras_labels.nii"
+check "labels identical voxel by voxel after mapping back" python3 "$R" compare "$WORK/ras_labels.nii" "$WORK/psr_labels.nii"
+
+case_ "a stronger bias field (0.4) and more noise (0.05): brain Dice still >= 0.97"
+"$S" synth -o "$WORK/biased.nii.gz" --truth "$WORK/biased_truth.nii.gz" --size 80,96,80 --spacing 2,2,2 --bias 0.4 --noise 0.05 --seed 2
+run segbrain run "$WORK/biased.nii.gz" -o "$WORK/biased_labels.nii.gz"
+expect_status 0
+"$S" eval --ref "$WORK/biased_truth.nii.gz" --seg "$WORK/biased_labels.nii.gz" --map "brain=2,3" --ref-map "brain=3,6" >"$WORK/biased.tsv"
+check "biased brain Dice >= 0.97 ($(dice_of brain "$WORK/biased.tsv"))" at_least "$(dice_of brain "$WORK/biased.tsv")" 0.97
+
+case_ "a failed verification is retried with the next candidate (visible in the trace)"
+run segbrain run "$P" -o "$WORK/retry.nii.gz" --set "bg_fraction=[0.97, 0.10]" --trace "$WORK/retry.jsonl"
+expect_status 0
+check "verify_head fails first" has_port fail verify_head "$WORK/retry.jsonl"
+check "then a redo" grep -q '"port":"redo"' "$WORK/retry.jsonl"
+check "and the same labels in the end" "$FEST_BIN/fcompare" "$WORK/retry.nii.gz" "$WORK/labels.nii.gz"
+
+case_ "kb-check and ops"
+run segbrain kb-check
+expect_status 0
+run segbrain ops --json
+expect_status 0
+check "ops lists threshold/4" sh -c "jq -e 'map(.predicate) | index(\"threshold/4\")' '$out'"
+
+case_ "bad input: KB syntax error names file:line:col"
+printf 'segment_head :- find_head.\nfind_head :- threshold(t1, 1 inf, m).\n' >"$WORK/bad.pl"
+run segbrain run "$P" --kb "$WORK/bad.pl"
+expect_clean_failure 3 segbrain
+expect_stderr_has "bad.pl:2:30: syntax error"
+run segbrain kb-check "$WORK/bad.pl"
+expect_clean_failure 3 segbrain
+
+case_ "bad input: unknown predicate names the calling clause"
+printf 'segment_head :- robust_range(t1, all, A, B),\n    no_such_operator(A, B).\n' >"$WORK/unknown.pl"
+run segbrain run "$P" --kb "$WORK/unknown.pl"
+expect_clean_failure 3 segbrain
+expect_stderr_has "unknown.pl:1: unknown predicate no_such_operator/2"
+run segbrain kb-check "$WORK/unknown.pl"
+expect_status 3
+expect_stderr_has "unknown predicate"
+
+case_ "a goal that fails after all alternatives: exit 1, last failing check named"
+run segbrain run "$P" --set "brain_min_ml=5000"
+expect_clean_failure 1 segbrain
+expect_stderr_has "goal segment_head failed after [0-9]+ alternatives; last failing check: plausible_brain_size"
+
+case_ "--set of an unknown fact is a usage error"
+run segbrain run "$P" --set "no_such_fact=3"
+expect_clean_failure 2 segbrain
+
+case_ "bad input: zero-size volume"
+python3 - "$WORK/zero.nii" <<'PY'
+import struct, sys
+h = bytearray(352)
+struct.pack_into('<i', h, 0, 348)
+struct.pack_into('<8h', h, 40, 3, 0, 10, 10, 1, 1, 1, 1)   # dim[1] = 0
+struct.pack_into('<h', h, 70, 2)                           # uint8
+struct.pack_into('<h', h, 72, 8)
+struct.pack_into('<8f', h, 76, 1, 1, 1, 1, 1, 1, 1, 1)
+struct.pack_into('<f', h, 108, 352)
+h[344:348] = b'n+1\0'
+open(sys.argv[1], 'wb').write(bytes(h))
+PY
+run segbrain run "$WORK/zero.nii"
+expect_clean_failure 3 segbrain
+
+case_ "bad input: truncated .nii.gz"
+head -c 20000 "$P" >"$WORK/truncated.nii.gz"
+run segbrain run "$WORK/truncated.nii.gz"
+expect_clean_failure 3 segbrain
+
+case_ "bad input: every voxel NaN"
+python3 - "$WORK/nan.nii" <<'PY'
+import struct, sys
+h = bytearray(352)
+struct.pack_into('<i', h, 0, 348)
+struct.pack_into('<8h', h, 40, 3, 8, 8, 8, 1, 1, 1, 1)
+struct.pack_into('<hh', h, 70, 16, 32)                     # float32
+struct.pack_into('<8f', h, 76, 1, 1, 1, 1, 1, 1, 1, 1)
+struct.pack_into('<f', h, 108, 352)
+h[344:348] = b'n+1\0'
+open(sys.argv[1], 'wb').write(bytes(h) + struct.pack('<512f', *([float('nan')] * 512)))
+PY
+run segbrain run "$WORK/nan.nii"
+expect_clean_failure 3 segbrain
+expect_stderr_has "NaN"
+
+case_ "an all-zero volume: find_head fails (exit 1)"
+python3 - "$WORK/blank.nii" <<'PY'
+import struct, sys
+h = bytearray(352)
+struct.pack_into('<i', h, 0, 348)
+struct.pack_into('<8h', h, 40, 3, 16, 16, 16, 1, 1, 1, 1)
+struct.pack_into('<h', h, 70, 2)
+struct.pack_into('<h', h, 72, 8)
+struct.pack_into('<8f', h, 76, 1, 1, 1, 1, 1, 1, 1, 1)
+struct.pack_into('<f', h, 108, 352)
+h[344:348] = b'n+1\0'
+open(sys.argv[1], 'wb').write(bytes(h) + bytes(16 * 16 * 16))
+PY
+run segbrain run "$WORK/blank.nii"
+expect_clean_failure 1 segbrain
+
+finish

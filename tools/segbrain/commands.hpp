@@ -1,0 +1,54 @@
+#pragma once
+// Wiring of segbrain's subcommands (specs/segbrain.md §4).
+
+#include <string>
+#include <vector>
+
+namespace segbrain_tool {
+
+extern const char* const kDefaultKbName;
+extern const char* const kDefaultKb;
+
+struct RunArgs {
+  std::string input = "-";
+  std::string output = "-";
+  std::string to;
+  std::vector<std::string> kb;
+  std::string goal = "segment_head";
+  std::vector<std::string> sets;
+  std::string report;
+  std::string trace;
+  int max_depth = 10000;
+  double max_inferences = 1e7;
+  double time_limit = 0;
+  bool quiet = false;
+};
+
+struct KbCheckArgs {
+  std::vector<std::string> files;
+};
+
+struct SynthArgs {
+  std::string output;
+  std::string truth;
+  std::string size = "160,192,160";
+  std::string spacing = "1,1,1";
+  double noise = 0.03;
+  double bias = 0.2;
+  unsigned long long seed = 1;
+};
+
+struct EvalArgs {
+  std::string ref;
+  std::string seg;
+  std::string map;
+  std::string ref_map;
+};
+
+int run_segment(const RunArgs& a);
+int run_kb_check(const KbCheckArgs& a);
+int run_ops(bool json);
+int run_synth(const SynthArgs& a);
+int run_eval(const EvalArgs& a);
+
+}  // namespace segbrain_tool
