@@ -396,7 +396,15 @@ double System::max_violation(double t, const Eigen::VectorXd& s) const {
   for (int j : active_) {
     const Constraint& c = scene_.constraints[static_cast<std::size_t>(j)];
     if (is_velocity_constraint(c.type)) continue;
-    eval_constraint(c, c.a < 0 ? world : kinematics(c.a, s), c.b < 0 ? world : kinematics(c.b, s), t, e);
+    const BodyKin ka = c.a < 0 ? world : kinematics(c.a, s), kb = c.b < 0 ? world : kinematics(c.b, s);
+    if (c.type == ConstraintType::ball) {
+      // Checked after every step: only C = P_a - P_b is needed, not the Jacobian rows
+      // and acceleration terms that eval_constraint also forms (same arithmetic for C).
+      const Vec3 C = (ka.p + ka.R * c.pa) - (kb.p + kb.R * c.pb);
+      worst = std::max(worst, C.cwiseAbs().maxCoeff());
+      continue;
+    }
+    eval_constraint(c, ka, kb, t, e);
     worst = std::max(worst, e.C.cwiseAbs().maxCoeff());
   }
   return worst;
