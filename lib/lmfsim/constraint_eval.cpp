@@ -64,11 +64,21 @@ void orientation_rows(ConstraintEval& e, int row, const Constraint& c, const Bod
 void eval_constraint(const Constraint& c, const BodyKin& ka, const BodyKin& kb, double t, ConstraintEval& e) {
   const int m = constraint_rows(c.type);
   e.rows = m;
-  e.C.setZero(m);
-  e.Cdot.setZero(m);
-  e.c.setZero(m);
-  e.Ja.setZero(m, 6);
-  e.Jb.setZero(m, 6);
+  if (c.type == ConstraintType::ball) {
+    // ball_rows writes every entry; zeroing first cost five memset calls per joint
+    // per evaluation, a visible share of a long chain's step.
+    e.C.resize(m);
+    e.Cdot.resize(m);
+    e.c.resize(m);
+    e.Ja.resize(m, 6);
+    e.Jb.resize(m, 6);
+  } else {
+    e.C.setZero(m);
+    e.Cdot.setZero(m);
+    e.c.setZero(m);
+    e.Ja.setZero(m, 6);
+    e.Jb.setZero(m, 6);
+  }
   const Anchor A = anchor(ka, c.pa), B = anchor(kb, c.pb);
   switch (c.type) {
     case ConstraintType::ball: ball_rows(e, 0, A, B); break;

@@ -66,26 +66,31 @@ struct Node {
 template <int d>
 bool cholesky_fixed(Node& n) {
   const double sign = n.constraint < 0 ? 1.0 : -1.0;
-  // Factor into a local array, then store it over D's lower triangle (column-major,
-  // leading dimension d): a node keeps no separate factor, so long chains stay in cache,
-  // and D survives for the pivoting fallback when the block is not definite.
-  const double* D = n.D.data();
-  double c[d * d] = {};
+  // Factor in place over D's lower triangle (column-major, leading dimension d): a node
+  // keeps no separate factor, so long chains stay in cache. D is symmetric, so its strict
+  // upper triangle still holds the original values; on failure the lower triangle is
+  // restored from it (and the diagonal from a copy) for the pivoting fallback.
+  double* c = n.D.data();
+  double diag0[d];
+  for (int j = 0; j < d; ++j) diag0[j] = c[j + j * d];
   for (int j = 0; j < d; ++j) {
-    double diag = sign * D[j + j * d];
+    double diag = sign * c[j + j * d];
     for (int k = 0; k < j; ++k) diag -= c[j + k * d] * c[j + k * d];
-    if (!(diag > 0)) return false;
+    if (!(diag > 0)) {
+      for (int jj = 0; jj < d; ++jj) {
+        c[jj + jj * d] = diag0[jj];
+        for (int i = jj + 1; i < d; ++i) c[i + jj * d] = c[jj + i * d];
+      }
+      return false;
+    }
     const double inv = 1.0 / std::sqrt(diag);
     c[j + j * d] = inv;
     for (int i = j + 1; i < d; ++i) {
-      double v = sign * D[i + j * d];
+      double v = sign * c[i + j * d];
       for (int k = 0; k < j; ++k) v -= c[i + k * d] * c[j + k * d];
       c[i + j * d] = v * inv;
     }
   }
-  double* out = n.D.data();
-  for (int j = 0; j < d; ++j)
-    for (int i = j; i < d; ++i) out[i + j * d] = c[i + j * d];
   return true;
 }
 

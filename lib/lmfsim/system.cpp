@@ -167,6 +167,10 @@ void System::kinematic_rate(double t, const Eigen::VectorXd& s, Eigen::VectorXd&
 
 void System::build_problem(double t, const Eigen::VectorXd& s) {
   compute_kinematics(s, kin_);
+  // M^-1 is read only by the dense solver, the penalty formulation and force
+  // stabilisation; the Baraff solver factors M itself, so it is not formed for it.
+  const bool need_minv = scene_.sim.solver == SolverKind::dense || scene_.sim.formulation == Formulation::penalty ||
+                         scene_.sim.stab == Stabilization::force;
   // Mass blocks and applied forces (gravity, gyroscopic term, force elements).
   for (std::size_t m = 0; m < moving_body_.size(); ++m) {
     const int bi = moving_body_[m];
@@ -175,15 +179,18 @@ void System::build_problem(double t, const Eigen::VectorXd& s) {
     SolveBody& sb = bodies_[m];
     sb.dof = k.dof;
     sb.M.setZero(k.dof, k.dof);
-    sb.Minv.setZero(k.dof, k.dof);
     sb.F.setZero(k.dof);
     sb.M.topLeftCorner<3, 3>() = b.mass * Mat3::Identity();
-    sb.Minv.topLeftCorner<3, 3>() = Mat3::Identity() / b.mass;
     sb.F.head<3>() = b.mass * scene_.gravity;
+    if (need_minv) {
+      sb.Minv.setZero(k.dof, k.dof);
+      sb.Minv.topLeftCorner<3, 3>() = Mat3::Identity() / b.mass;
+    }
     if (k.dof == 6) {
       const Mat3 Iw = k.R * b.inertia * k.R.transpose();
       sb.M.bottomRightCorner<3, 3>() = Iw;
-      sb.Minv.bottomRightCorner<3, 3>() = k.R * inertia_inv_[static_cast<std::size_t>(bi)] * k.R.transpose();
+      if (need_minv)
+        sb.Minv.bottomRightCorner<3, 3>() = k.R * inertia_inv_[static_cast<std::size_t>(bi)] * k.R.transpose();
       sb.F.tail<3>() = -k.w.cross(Iw * k.w);
     }
   }
@@ -389,7 +396,15 @@ double System::max_violation(double t, const Eigen::VectorXd& s) const {
   for (int j : active_) {
     const Constraint& c = scene_.constraints[static_cast<std::size_t>(j)];
     if (is_velocity_constraint(c.type)) continue;
-    eval_constraint(c, c.a < 0 ? world : kinematics(c.a, s), c.b < 0 ? world : kinematics(c.b, s), t, e);
+    const BodyKin ka = c.a < 0 ? world : kinematics(c.a, s), kb = c.b < 0 ? world : kinematics(c.b, s);
+    if (c.type == ConstraintType::ball) {
+      // Checked after every step: only C = P_a - P_b is needed, not the Jacobian rows
+      // and acceleration terms that eval_constraint also forms (same arithmetic for C).
+      const Vec3 C = (ka.p + ka.R * c.pa) - (kb.p + kb.R * c.pb);
+      worst = std::max(worst, C.cwiseAbs().maxCoeff());
+      continue;
+    }
+    eval_constraint(c, ka, kb, t, e);
     worst = std::max(worst, e.C.cwiseAbs().maxCoeff());
   }
   return worst;
