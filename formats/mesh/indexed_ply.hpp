@@ -9,11 +9,27 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fest::formats {
 
 // xyz: 3 floats per vertex. Throws bad_input when a triangle names a vertex >= vertices.
 std::string write_indexed_ply(const std::vector<float>& xyz, const std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+// The same file for many vertex sets over one triangle list (facefit fit --batch): the
+// header and the face block are encoded once, into a buffer kept between calls; each
+// encode() only copies the positions in. Throws bad_input like write_indexed_ply.
+class IndexedPlyEncoder {
+ public:
+  IndexedPlyEncoder(std::size_t vertices, const std::vector<std::array<std::uint32_t, 3>>& triangles);
+  // xyz: 3 floats per vertex. The view stays valid until the next encode().
+  std::string_view encode(const float* xyz);
+  std::size_t vertices() const noexcept { return vertices_; }
+
+ private:
+  std::string buffer_;  // header, vertex block, face block
+  std::size_t header_ = 0, vertices_ = 0;
+};
 
 }  // namespace fest::formats

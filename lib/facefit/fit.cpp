@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <thread>
 #include <unordered_set>
 
@@ -112,31 +113,81 @@ Solve solve_once(const Model& model, const Landmarks& lm, const CameraMatrix& P,
   return s;
 }
 
+}  // namespace
+
+// Q₀, T₀ and the solver of the unit similarity camera for one set of landmark vertices
+// and weights (FitCache in fit.hpp says why this is worth keeping).
+struct FitCache::SimilarityPlan {
+  const void* basis = nullptr;
+  std::size_t components = 0;
+  double eps_rank = 0;
+  std::vector<std::uint32_t> vertex;
+  Eigen::VectorXd weight;
+  Eigen::MatrixXd Q0, T0;
+  std::optional<RidgeSolver> solver;
+  double ms_build = 0;
+
+  bool matches(const Model& model, const Landmarks& lm, const Eigen::VectorXd& w, double eps) const {
+    return basis == model.basis && components == model.components && eps_rank == eps && vertex == lm.vertex &&
+           weight.size() == w.size() && weight == w;
+  }
+};
+
+FitCache::FitCache() = default;
+FitCache::~FitCache() = default;
+
+namespace {
+
+std::unique_ptr<FitCache::SimilarityPlan> similarity_plan(const Model& model, const Landmarks& lm, const Eigen::VectorXd& weight,
+                                                          double eps_rank) {
+  const auto t0 = Clock::now();
+  auto plan = std::make_unique<FitCache::SimilarityPlan>();
+  plan->basis = model.basis;
+  plan->components = model.components;
+  plan->eps_rank = eps_rank;
+  plan->vertex = lm.vertex;
+  plan->weight = weight;
+  const Eigen::Index f = static_cast<Eigen::Index>(lm.size());
+  CameraMatrix unit = CameraMatrix::Zero();
+  unit(0, 0) = 1;
+  unit(1, 1) = -1;
+  Eigen::VectorXd ignored;
+  build_measurement(model, lm, unit, weight, plan->Q0, ignored);
+  plan->T0 = Eigen::MatrixXd::Zero(2 * f, 3);
+  for (Eigen::Index a = 0; a < f; ++a) {
+    const Eigen::Vector3d vm = mean_point(model, lm.vertex[static_cast<std::size_t>(a)]);
+    plan->T0(2 * a, 0) = weight(a);
+    plan->T0(2 * a + 1, 1) = weight(a);
+    plan->T0(2 * a, 2) = weight(a) * vm.x();
+    plan->T0(2 * a + 1, 2) = -weight(a) * vm.y();
+  }
+  plan->ms_build = ms_since(t0);
+  plan->solver.emplace(plan->Q0, Eigen::VectorXd::Zero(2 * f), plan->T0, eps_rank);
+  return plan;
+}
+
 // The default camera (similarity, free nuisance) in one SVD. For P = s·[[1,0,0],[0,−1,0]]
 // + t, Q = s·Q₀ and the nuisance columns span the same space for every s, so
 // min ‖sQ₀c + Tt − r‖² + η‖c‖² is min ‖Q₀c + T₀t₀ − r/s‖² + (η/s²)‖c‖²: the refinement
 // passes only change r/s, and the solver keeps its SVD.
 Solve solve_similarity(const Model& model, const Landmarks& lm, const Eigen::VectorXd& weight, const FitOptions& opt,
-                       CameraMatrix& P, int passes, int& iterations) {
-  const auto t0 = Clock::now();
-  const Eigen::Index f = static_cast<Eigen::Index>(lm.size());
-  CameraMatrix unit = CameraMatrix::Zero();
-  unit(0, 0) = 1;
-  unit(1, 1) = -1;
-  Eigen::MatrixXd Q0;
-  Eigen::VectorXd ignored;
-  build_measurement(model, lm, unit, weight, Q0, ignored);
-  Eigen::MatrixXd T0 = Eigen::MatrixXd::Zero(2 * f, 3);
-  for (Eigen::Index a = 0; a < f; ++a) {
-    const Eigen::Vector3d vm = mean_point(model, lm.vertex[static_cast<std::size_t>(a)]);
-    T0(2 * a, 0) = weight(a);
-    T0(2 * a + 1, 1) = weight(a);
-    T0(2 * a, 2) = weight(a) * vm.x();
-    T0(2 * a + 1, 2) = -weight(a) * vm.y();
-  }
-  const double ms_build = ms_since(t0);
+                       CameraMatrix& P, int passes, int& iterations, FitCache* cache) {
   const auto t1 = Clock::now();
-  RidgeSolver solver(Q0, Eigen::VectorXd::Zero(2 * f), T0, opt.eps_rank);
+  const Eigen::Index f = static_cast<Eigen::Index>(lm.size());
+  std::unique_ptr<FitCache::SimilarityPlan> local;
+  FitCache::SimilarityPlan* plan = nullptr;
+  const bool reuse = cache && cache->similarity && cache->similarity->matches(model, lm, weight, opt.eps_rank);
+  if (reuse) {
+    plan = cache->similarity.get();
+  } else {
+    local = similarity_plan(model, lm, weight, opt.eps_rank);
+    plan = local.get();
+    if (cache) cache->similarity = std::move(local);
+  }
+  const Eigen::MatrixXd& Q0 = plan->Q0;
+  const Eigen::MatrixXd& T0 = plan->T0;
+  RidgeSolver& solver = *plan->solver;
+  const double ms_build = reuse ? 0.0 : plan->ms_build;  // a reused plan cost nothing this time
   Solve s;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.components));
   P = fit_similarity(landmark_points(model, lm, zero), lm.uv, weight);
@@ -168,7 +219,7 @@ Solve solve_similarity(const Model& model, const Landmarks& lm, const Eigen::Vec
   s.w = solver.singular_values() * std::abs(scale);
   s.V = solver.V().topRows(static_cast<Eigen::Index>(model.components));
   s.ms_build = ms_build;
-  s.ms_svd = ms_since(t1);
+  s.ms_svd = std::max(0.0, ms_since(t1) - ms_build);
   return s;
 }
 
@@ -211,7 +262,7 @@ void build_measurement(const Model& model, const Landmarks& lm, const CameraMatr
   }
 }
 
-FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOptions& opt) {
+FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOptions& opt, FitCache* cache) {
   check_landmarks(model, lm);
   const auto f = static_cast<Eigen::Index>(lm.size());
   Eigen::VectorXd weight = Eigen::VectorXd::Ones(f);
@@ -230,7 +281,7 @@ FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOption
     case CameraKind::similarity: {
       const bool nuisance = opt.nuisance != NuisanceKind::none;
       if (opt.nuisance == NuisanceKind::free) {
-        s = solve_similarity(model, lm, weight, opt, P, opt.similarity_passes, out.iterations);
+        s = solve_similarity(model, lm, weight, opt, P, opt.similarity_passes, out.iterations, cache);
       } else {
         P = fit_similarity(landmark_points(model, lm, zero), lm.uv, weight);
       }

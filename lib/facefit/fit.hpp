@@ -6,6 +6,7 @@
 // affine (unknown pose, alternating camera and shape; an extension, not in the chapter).
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,7 +67,22 @@ struct FitResult {
 void build_measurement(const Model& model, const Landmarks& lm, const CameraMatrix& P, const Eigen::VectorXd& weight,
                        Eigen::MatrixXd& Q, Eigen::VectorXd& r);
 
-FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOptions& options);
+// What a run of fits can share. For the similarity camera with free nuisance (the
+// default), Q₀, T₀ and the SVD of P⊥Q₀ depend only on the landmark vertices and their
+// weights, not on the image positions; a batch over one landmark map therefore needs one
+// SVD, and each further fit costs O(l·k). The cache keeps the last such plan and is
+// rebuilt when the vertices, weights, model or eps_rank change. Not thread-safe.
+class FitCache {
+ public:
+  FitCache();
+  ~FitCache();
+  FitCache(const FitCache&) = delete;
+  FitCache& operator=(const FitCache&) = delete;
+  struct SimilarityPlan;
+  std::unique_ptr<SimilarityPlan> similarity;
+};
+
+FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOptions& options, FitCache* cache = nullptr);
 
 // The L = id special case (eq. 44-46): shrink a complete shape towards the model,
 // x = Σ ⟨s_i, r⟩ s_i / (1 + η/σ_i²); η = 0 projects orthogonally into the span.

@@ -118,6 +118,21 @@ Eigen::VectorXd reconstruct(const Model& model, const Eigen::VectorXd& c) {
   return v;
 }
 
+void reconstruct_f32(const Model& model, const Eigen::VectorXd& c, float* out) {
+  const auto n = static_cast<Eigen::Index>(model.n());
+  if (model.basis_type != Dtype::f32) {
+    Eigen::Map<Eigen::VectorXf>(out, n) = reconstruct(model, c).cast<float>();
+    return;
+  }
+  const Eigen::Index k = c.size();
+  const Eigen::VectorXf scaled = c.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(model.sigma.data(), k)).cast<float>();
+  Eigen::Map<const Eigen::MatrixXf> S(static_cast<const float*>(model.basis), n, static_cast<Eigen::Index>(model.components));
+  Eigen::Map<Eigen::VectorXf> v(out, n);
+  v.noalias() = S.leftCols(k) * scaled;  // one float GEMV over the (memory-mapped) basis
+  const double* mean = model.mean.data();
+  for (Eigen::Index i = 0; i < n; ++i) out[i] = static_cast<float>(mean[i] + static_cast<double>(out[i]));
+}
+
 Eigen::VectorXd coefficients_of(const Model& model, const Eigen::VectorXd& shape) {
   const auto n = static_cast<Eigen::Index>(model.n());
   const auto k = static_cast<Eigen::Index>(model.components);

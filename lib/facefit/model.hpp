@@ -64,6 +64,10 @@ CheckResult check_model(Model& model, bool fix_basis);
 
 // v = v̄ + S diag(σ) c for the first c.size() components (the rest are 0).
 Eigen::VectorXd reconstruct(const Model& model, const Eigen::VectorXd& c);
+// The same shape as float32 into out (n() floats, the caller's buffer): what binary PLY
+// output stores, without a double copy of the mesh per fit. For a float32 basis the
+// values equal float(reconstruct(model, c)) exactly (same GEMV, mean added in double).
+void reconstruct_f32(const Model& model, const Eigen::VectorXd& c, float* out);
 
 // S^T (v - v̄) / σ: the standardised coefficients of a complete shape (exact for shapes
 // inside the span when S is orthonormal).

@@ -171,3 +171,38 @@ TEST(FacefitFit, FreeNuisanceIsTheLimitOfAVeryWidePrior) {
   EXPECT_NEAR(a.E_r, b.E_r, 1e-6 * a.E_r);
   EXPECT_NEAR(decompose_camera(a.camera).scale, decompose_camera(b.camera).scale, 1e-6);
 }
+
+TEST(FacefitFit, CachedSimilarityPlanGivesTheSameFits) {
+  // A batch reuses Q₀, T₀ and the SVD while the landmark vertices and weights stay the
+  // same; the result must not depend on what was fitted before (bit for bit: the same
+  // arithmetic on the same matrices), and a new vertex set or weights must rebuild it.
+  const Model m = g1_model();
+  Rng rng(21);
+  FitCache cache;
+  const FitOptions o;
+  std::vector<Landmarks> runs;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::VectorXd face = reconstruct(m, random_coefficients(rng, 30));
+    runs.push_back(project(face, every_nth_vertex(7, 25), orthographic_camera(1.2 + 0.3 * i, {150.0 + 5 * i, 140})));
+  }
+  runs.push_back(project(reconstruct(m, random_coefficients(rng, 30)), every_nth_vertex(11, 30), orthographic_camera(1.5, {150, 150})));
+  runs.push_back(runs[0]);
+  runs.back().sigma = Eigen::VectorXd::LinSpaced(25, 0.5, 2.0);
+  for (const Landmarks& lm : runs) {
+    const FitResult cached = fit_landmarks(m, lm, o, &cache), fresh = fit_landmarks(m, lm, o);
+    EXPECT_EQ(cached.c, fresh.c);
+    EXPECT_EQ(cached.shape, fresh.shape);
+    EXPECT_EQ(cached.camera, fresh.camera);
+    EXPECT_EQ(cached.singular_values, fresh.singular_values);
+  }
+}
+
+TEST(FacefitFit, Float32ReconstructionIsTheRoundedDoubleOne) {
+  const Model m = g1_model();
+  Rng rng(22);
+  const Eigen::VectorXd c = random_coefficients(rng, 30);
+  std::vector<float> out(m.n());
+  reconstruct_f32(m, c, out.data());
+  const Eigen::VectorXf expected = reconstruct(m, c).cast<float>();
+  EXPECT_EQ(Eigen::Map<const Eigen::VectorXf>(out.data(), static_cast<Eigen::Index>(out.size())), expected);
+}

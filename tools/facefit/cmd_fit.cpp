@@ -17,6 +17,7 @@
 #include "facefit/render.hpp"
 #include "formats/facemodel/landmarks_io.hpp"
 #include "formats/image/image_io.hpp"
+#include "formats/mesh/indexed_ply.hpp"
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 
@@ -208,15 +209,29 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
     auto rel = [&](const std::string& p) { return p[0] == '/' ? p : dir + p; };
     jobs.emplace_back(rel(f[0]), rel(f[1]));
   }
+  // Shared across the batch: the similarity plan (one SVD for one landmark map), the
+  // float32 vertex buffer and the PLY encoder with its face block (same triangles every fit).
+  facefit::FitCache cache;
+  std::vector<float> xyz;
+  std::optional<formats::IndexedPlyEncoder> ply;
   for (const auto& [in, out] : jobs) {
     const auto lm = load_landmarks(a, in, model);
     const bool coeffs_only = out.size() > 4 && out.compare(out.size() - 4, 4, ".tsv") == 0;
-    opt.reconstruct = !coeffs_only;
-    const auto r = facefit::fit_landmarks(model, lm, opt);
-    if (coeffs_only)
+    const bool direct_ply = !coeffs_only && model.dims == 3 && writes_binary_ply(out, a.to);
+    opt.reconstruct = !coeffs_only && !direct_ply;
+    const auto r = facefit::fit_landmarks(model, lm, opt, &cache);
+    if (coeffs_only) {
       write_output(out, coeffs_tsv(r, model));
-    else
+    } else if (direct_ply) {
+      if (!ply) ply.emplace(model.points, model.triangles);
+      xyz.resize(model.n());
+      facefit::reconstruct_f32(model, r.c, xyz.data());
+      if (!Eigen::Map<const Eigen::VectorXf>(xyz.data(), static_cast<Eigen::Index>(xyz.size())).allFinite())
+        throw runtime_failure("the fit produced non-finite coordinates ({})", in);
+      write_output(out, ply->encode(xyz.data()));
+    } else {
       write_shape(r.shape, model.dims, model.triangles, out, a.to);
+    }
   }
   return 0;
 }

@@ -76,17 +76,16 @@ void write_mesh_to(const Mesh& mesh, const std::string& path, const std::string&
   formats::store_output(path, formats::write_mesh(mesh, out.format, w), out.gzip);
 }
 
+bool writes_binary_ply(const std::string& path, const std::string& to) {
+  if (!to.empty()) return to == "ply" || to == ".ply";
+  if (is_stdio(path)) return true;
+  const formats::OutputFormat out = formats::output_format_from_path(path);
+  return out.format == formats::Format::ply && !out.gzip;
+}
+
 void write_shape(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles,
                  const std::string& path, const std::string& to) {
-  bool fast = to == "ply" || to == ".ply";
-  if (to.empty()) {
-    fast = is_stdio(path);
-    if (!fast) {
-      const formats::OutputFormat out = formats::output_format_from_path(path);
-      fast = out.format == formats::Format::ply && !out.gzip;
-    }
-  }
-  if (!fast) return write_mesh_to(shape_to_mesh(shape, dims, triangles), path, to);
+  if (!writes_binary_ply(path, to)) return write_mesh_to(shape_to_mesh(shape, dims, triangles), path, to);
   const std::size_t p = static_cast<std::size_t>(shape.size() / dims);
   std::vector<float> xyz(3 * p, 0.0f);
   for (std::size_t j = 0; j < p; ++j)

@@ -29,6 +29,8 @@ Eigen::VectorXd read_shape(const std::string& path, std::vector<std::array<std::
 void write_mesh_to(const fest::Mesh& mesh, const std::string& path, const std::string& to);
 // A shape with triangles: binary PLY (float32 coordinates) straight from the arrays when
 // that is the output format, else through write_mesh_to (text formats keep doubles).
+// Whether write_shape writes PATH (with --to TO) as binary PLY straight from the arrays.
+bool writes_binary_ply(const std::string& path, const std::string& to);
 void write_shape(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles,
                  const std::string& path, const std::string& to);
 
