@@ -4,15 +4,27 @@
 // end to end against the anchors. One JSON line per case, minimum of 3 runs, in ms.
 //
 //   build/bin/bench_resample
+//   build/bin/bench_resample R1 codes 1   # that case only, once (for callgrind / time)
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <functional>
 
 #include "core/image.hpp"
 #include "sampling/resize.hpp"
+
+// Under `valgrind --tool=callgrind --instr-atstart=no` the single-case mode switches
+// instrumentation on around the resize only: building the input is not simulated.
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#endif
 
 namespace {
 
@@ -58,8 +70,21 @@ void report(const char* name, const char* mode, int threads, double ms) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   using namespace fest::sampling;
+  if (argc == 4 && std::strcmp(argv[1], "R1") == 0) {  // one case, one run: for profilers
+    const fest::Image in = r1_input();
+    ResizeOptions o;
+    o.kernel = make_kernel("lanczos3");
+    o.linear_light = std::strcmp(argv[2], "linear") == 0;
+    o.threads = std::atoi(argv[3]);
+    report("R1", argv[2], o.threads, min_ms(1, [&] {
+             CALLGRIND_START_INSTRUMENTATION;
+             resize(in, 852, 567, o);
+             CALLGRIND_STOP_INSTRUMENTATION;
+           }));
+    return 0;
+  }
   {
     const fest::Image in = r1_input();
     for (int threads : {1, 2})
