@@ -78,7 +78,7 @@ T quantise(float v, float max_code) {
   const float scaled = v * max_code + 0.5f;  // round half up: 127.5 -> 128
   if (!(scaled > 0)) return 0;                // also maps NaN to 0
   if (scaled >= max_code) return static_cast<T>(max_code);
-  return static_cast<T>(std::floor(scaled));
+  return static_cast<T>(scaled);  // truncation is floor here (scaled > 0), without a call
 }
 
 }  // namespace
@@ -106,6 +106,22 @@ FloatImage to_working(const Image& in, const Encoding& enc) {
 cv::Mat from_working(const FloatImage& img, int depth, const Encoding& enc) {
   const int c = img.channels, a = alpha_channel(c);
   cv::Mat out(img.height, img.width, CV_MAKETYPE(depth, c));
+  if (depth == CV_8U && !enc.dither && (a < 0 || !enc.premultiply)) {
+    // The common 8-bit case value by value: the sRGB encoding through thresholds
+    // (linear_to_srgb8) instead of a pow() per value, with the same rounding.
+    const std::size_t n = static_cast<std::size_t>(img.width) * static_cast<std::size_t>(c);
+    for (int y = 0; y < img.height; ++y) {
+      const float* src = img.row(y);
+      std::uint8_t* dst = out.ptr<std::uint8_t>(y);
+      if (enc.decode_srgb && a < 0)
+        for (std::size_t i = 0; i < n; ++i) dst[i] = linear_to_srgb8(src[i]);
+      else
+        for (std::size_t i = 0; i < n; ++i)
+          dst[i] = enc.decode_srgb && static_cast<int>(i % static_cast<std::size_t>(c)) != a ? linear_to_srgb8(src[i])
+                                                                                            : quantise<std::uint8_t>(src[i], 255.0f);
+    }
+    return out;
+  }
   std::vector<float> px(static_cast<std::size_t>(c));
   for (int y = 0; y < img.height; ++y) {
     const float* src = img.row(y);
