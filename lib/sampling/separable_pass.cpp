@@ -1,6 +1,7 @@
 #include "sampling/separable_pass.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <thread>
 #include <vector>
@@ -26,6 +27,11 @@ void for_row_blocks(int rows, int threads, const std::function<void(int, int)>& 
   for (auto& th : pool) th.join();
 }
 
+// Four floats as one SSE/NEON register (GCC/Clang vector extension): element-wise
+// arithmetic, so per channel exactly the scalar operations.
+typedef float Lanes4 __attribute__((vector_size(16)));
+typedef float Lanes8 __attribute__((vector_size(32)));
+
 // One row through the weight table, with the channel count known at compile time so
 // that the per-tap channel loop unrolls (C = 0: any count, at run time).
 template <int C>
@@ -44,6 +50,20 @@ void filter_row(const float* src, float* dst, const WeightTable& t, int channels
   for (int o = 0; o < t.n_out; ++o, dst += c) {
     float acc[4] = {0, 0, 0, 0};
     const std::size_t end = t.offset[static_cast<std::size_t>(o) + 1];
+    if ((C == 3 || C == 4) && end > t.offset[static_cast<std::size_t>(o)] && (C == 4 || t.index[end - 1] < t.n_in - 1)) {
+      // A pixel as one 4-lane vector (RGB: the fourth lane reads the next pixel's red and
+      // is dropped): one vector multiply-add per tap, in the same order per channel as
+      // the scalar loop below. RGB outputs whose taps reach the last pixel take that loop.
+      Lanes4 sum = {0, 0, 0, 0};
+      for (std::size_t j = t.offset[static_cast<std::size_t>(o)]; j < end; ++j) {
+        Lanes4 p;
+        std::memcpy(&p, src + static_cast<std::size_t>(t.index[j]) * C, sizeof p);
+        sum += t.weight[j] * p;
+      }
+      std::memcpy(acc, &sum, sizeof acc);
+      for (int ch = 0; ch < c; ++ch) dst[ch] = acc[ch];
+      continue;
+    }
     for (std::size_t j = t.offset[static_cast<std::size_t>(o)]; j < end; ++j) {
       const float w = t.weight[j];
       const float* p = src + static_cast<std::size_t>(t.index[j]) * static_cast<std::size_t>(c);
@@ -63,27 +83,51 @@ void filter_row_any(const float* src, float* dst, const WeightTable& t, int c) {
   }
 }
 
-// dst[i] = Σ_j w[j] src[j][i] over whole rows: contiguous and vectorisable. A block of
-// outputs stays in registers while every tap adds into it, so each tap costs one load,
-// one multiply and one add per value (no reload and store of dst per tap). The additions
-// per value run in the taps' order whatever the blocking, so results do not depend on it.
-void accumulate_rows(float* dst, const float* const* src, const float* w, std::size_t taps, std::size_t row_len) {
-  constexpr std::size_t block = 16;  // four SSE or two AVX registers of accumulators
-  std::size_t i0 = 0;
-  for (; i0 + block <= row_len; i0 += block) {
-    float acc[block] = {};
+// dst[i] = Σ_j w[j] src[j][i] for i in [begin, end): contiguous and vectorisable. A block
+// of outputs stays in registers (four vectors V) while every tap adds into it, so each tap
+// costs one load, one multiply and one add per value (no reload and store of dst per
+// tap). The additions per value run in the taps' order whatever the blocking or vector
+// width, and no FMA is used, so results are bit-identical on every path.
+template <typename V>
+[[gnu::always_inline]] inline void accumulate_rows_with(float* dst, const float* const* src, const float* w, std::size_t taps,
+                                                        std::size_t begin, std::size_t end) {
+  constexpr std::size_t lanes = sizeof(V) / sizeof(float), block = 4 * lanes;
+  std::size_t i0 = begin;
+  for (; i0 + block <= end; i0 += block) {
+    V acc[4] = {};
     for (std::size_t j = 0; j < taps; ++j) {
       const float wj = w[j];
       const float* s = src[j] + i0;
-      for (std::size_t k = 0; k < block; ++k) acc[k] += wj * s[k];
+      for (std::size_t k = 0; k < 4; ++k) {
+        V v;
+        std::memcpy(&v, s + k * lanes, sizeof v);
+        acc[k] += wj * v;
+      }
     }
-    for (std::size_t k = 0; k < block; ++k) dst[i0 + k] = acc[k];
+    std::memcpy(dst + i0, acc, sizeof acc);
   }
-  for (std::size_t i = i0; i < row_len; ++i) {
+  for (std::size_t i = i0; i < end; ++i) {
     float acc = 0;
     for (std::size_t j = 0; j < taps; ++j) acc += w[j] * src[j][i];
     dst[i] = acc;
   }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// The optional AVX2 path of spec §7: 8-lane vectors where the CPU has them.
+__attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const float* const* src, const float* w,
+                                                          std::size_t taps, std::size_t begin, std::size_t end) {
+  accumulate_rows_with<Lanes8>(dst, src, w, taps, begin, end);
+}
+const bool has_avx2 = __builtin_cpu_supports("avx2");
+#endif
+
+void accumulate_rows(float* dst, const float* const* src, const float* w, std::size_t taps, std::size_t begin,
+                     std::size_t end) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (has_avx2) return accumulate_rows_avx2(dst, src, w, taps, begin, end);
+#endif
+  accumulate_rows_with<Lanes4>(dst, src, w, taps, begin, end);
 }
 
 }  // namespace
@@ -135,15 +179,33 @@ FloatImage resample_columns_decoded(const cv::Mat& in, const Encoding& enc, cons
       decode_row(in, row, enc, free_slot->values.data());
       return free_slot->values.data();
     };
-    for (int o = begin; o < end; ++o) {
-      const std::size_t first = table.offset[static_cast<std::size_t>(o)], last = table.offset[static_cast<std::size_t>(o) + 1];
+    // Groups of output rows, each swept in column strips: a strip of the group's input
+    // rows (~75 rows x 4 KiB for R1) stays in L2 while all the group's outputs read it,
+    // instead of every output streaming its ~35 full rows (2 MiB) from L3.
+    constexpr int group = 8;
+    constexpr std::size_t strip = 1024;
+    std::vector<std::size_t> starts;
+    for (int g = begin; g < end; g += group) {
+      const int g_end = std::min(end, g + group);
       int lo = in.rows;
-      for (std::size_t j = first; j < last; ++j) lo = std::min(lo, table.index[j]);
+      for (std::size_t j = table.offset[static_cast<std::size_t>(g)]; j < table.offset[static_cast<std::size_t>(g_end)]; ++j)
+        lo = std::min(lo, table.index[j]);
       for (auto& s : slots)
-        if (s.row < lo) s.row = -1;  // no later output reads rows above this one's first
+        if (s.row < lo) s.row = -1;  // no later output reads rows above this group's first
       sources.clear();
-      for (std::size_t j = first; j < last; ++j) sources.push_back(decoded(table.index[j]));
-      accumulate_rows(out.row(o), sources.data(), table.weight.data() + first, last - first, row_len);
+      starts.clear();
+      for (int o = g; o < g_end; ++o) {
+        starts.push_back(sources.size());
+        for (std::size_t j = table.offset[static_cast<std::size_t>(o)]; j < table.offset[static_cast<std::size_t>(o) + 1]; ++j)
+          sources.push_back(decoded(table.index[j]));
+      }
+      for (std::size_t i0 = 0; i0 < row_len; i0 += strip)
+        for (int o = g; o < g_end; ++o) {
+          const std::size_t first = table.offset[static_cast<std::size_t>(o)];
+          const std::size_t taps = table.offset[static_cast<std::size_t>(o) + 1] - first;
+          accumulate_rows(out.row(o), sources.data() + starts[static_cast<std::size_t>(o - g)], table.weight.data() + first,
+                          taps, i0, std::min(row_len, i0 + strip));
+        }
     }
   });
   return out;
@@ -158,7 +220,7 @@ FloatImage resample_columns(const FloatImage& in, const WeightTable& table, int 
       const std::size_t first = table.offset[static_cast<std::size_t>(o)], last = table.offset[static_cast<std::size_t>(o) + 1];
       sources.clear();
       for (std::size_t j = first; j < last; ++j) sources.push_back(in.row(table.index[j]));
-      accumulate_rows(out.row(o), sources.data(), table.weight.data() + first, last - first, row_len);
+      accumulate_rows(out.row(o), sources.data(), table.weight.data() + first, last - first, 0, row_len);
     }
   });
   return out;
