@@ -63,6 +63,11 @@ void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, const float* l
     scale_row(src, static_cast<std::size_t>(m.cols) * static_cast<std::size_t>(c), scale, dst);
     return;
   }
+  if (a < 0) {  // sRGB codes without alpha: one lookup per value, no per-channel branches
+    const std::size_t n = static_cast<std::size_t>(m.cols) * static_cast<std::size_t>(c);
+    for (std::size_t i = 0; i < n; ++i) dst[i] = lut[static_cast<std::size_t>(src[i])];
+    return;
+  }
   for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
     for (int ch = 0; ch < c; ++ch) {
       const bool colour = ch != a;
@@ -138,7 +143,7 @@ cv::Mat from_working(const FloatImage& img, int depth, const Encoding& enc) {
       const float* src = img.row(y);
       std::uint8_t* dst = out.ptr<std::uint8_t>(y);
       if (enc.decode_srgb && a < 0)
-        for (std::size_t i = 0; i < n; ++i) dst[i] = linear_to_srgb8(src[i]);
+        linear_to_srgb8_row(src, n, dst);
       else
         for (std::size_t i = 0; i < n; ++i)
           dst[i] = enc.decode_srgb && static_cast<int>(i % static_cast<std::size_t>(c)) != a ? linear_to_srgb8(src[i])

@@ -81,14 +81,25 @@ const Srgb8Encoder& srgb8_encoder() {
 
 }  // namespace
 
-std::uint8_t linear_to_srgb8(float l) {
-  const Srgb8Encoder& e = srgb8_encoder();
+namespace {
+
+inline std::uint8_t encode8(const Srgb8Encoder& e, float l) {
   if (!(l >= e.threshold[1])) return 0;  // also NaN
-  // l / coarse_steps-ths: i/coarse_steps <= l, so the code is at least start[i].
+  // l * coarse_steps is exact and truncates down, so i / coarse_steps <= l and the code is
+  // at least start[i].
   const int i = l >= 1.0f ? coarse_steps : static_cast<int>(l * coarse_steps);
   int code = e.start[static_cast<std::size_t>(i)];
   while (code < 255 && l >= e.threshold[static_cast<std::size_t>(code) + 1]) ++code;
   return static_cast<std::uint8_t>(code);
+}
+
+}  // namespace
+
+std::uint8_t linear_to_srgb8(float l) { return encode8(srgb8_encoder(), l); }
+
+void linear_to_srgb8_row(const float* src, std::size_t n, std::uint8_t* dst) {
+  const Srgb8Encoder& e = srgb8_encoder();
+  for (std::size_t i = 0; i < n; ++i) dst[i] = encode8(e, src[i]);
 }
 
 float srgb8_to_linear(std::uint8_t code) { return srgb8_table()[code]; }

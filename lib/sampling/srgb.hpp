@@ -1,6 +1,7 @@
 #pragma once
 // sRGB transfer functions (IEC 61966-2-1), as spec §2.4 steps 1 and 8 state them.
 
+#include <cstddef>
 #include <cstdint>
 
 namespace fest::sampling {
@@ -20,5 +21,6 @@ float srgb16_to_linear(std::uint16_t code);
 // is monotone, so the code is the number of the 255 thresholds (the smallest float that
 // reaches each code) at or below l; a coarse table gives the start of the count.
 std::uint8_t linear_to_srgb8(float l);
+void linear_to_srgb8_row(const float* src, std::size_t n, std::uint8_t* dst);  // n values
 
 }  // namespace fest::sampling
