@@ -40,6 +40,10 @@ void clamp_to_input_range(const FloatImage& in, bool integer, FloatImage& out) {
     lo[ch] = std::min(lo[ch], in.data[i]);
     hi[ch] = std::max(hi[ch], in.data[i]);
   }
+  if (integer) {  // one range for every channel: a loop without the channel index
+    for (float& v : out.data) v = std::min(std::max(v, 0.0f), 1.0f);
+    return;
+  }
   for (std::size_t i = 0; i < out.data.size(); ++i) {
     const auto ch = i % static_cast<std::size_t>(c);
     out.data[i] = std::clamp(out.data[i], lo[ch], hi[ch]);
