@@ -63,6 +63,52 @@ struct Lerp3 {
     const double x11 = lerp(r[off[1]], r[off[1] + off[0]], t[0]);
     return lerp(y0, lerp(x01, x11, t[1]), t[2]);
   }
+
+  Lerp3() = default;
+};
+
+// The common case, made cheap: on a 3-D grid almost every back-traced position lies
+// strictly inside the node box, where no axis needs clamping (closed) or wrapping
+// (periodic) and the cell index and weights follow from one truncation per axis. The
+// general Lerp3 constructor gives the same base, offsets and weights there (fmod of a
+// position in [0, s) is the position itself), so results do not change; positions near
+// or beyond a wall, and NaN (every comparison false), take the general path.
+struct InteriorBox {
+  bool usable = false;  // dim 3 with at least two nodes on every axis
+  double hi[3] = {0, 0, 0};  // s - 1 per axis: the upper corner of the last whole cell
+  std::ptrdiff_t stride[3] = {1, 0, 0};
+
+  explicit InteriorBox(const Layout& L) noexcept {
+    usable = L.dim == 3 && L.size[0] > 1 && L.size[1] > 1 && L.size[2] > 1;
+    std::ptrdiff_t st = 1;
+    for (int a = 0; a < 3; ++a) {
+      hi[a] = L.size[a] - 1.0;
+      stride[a] = st;
+      st *= L.size[a];
+    }
+  }
+
+  bool contains(const std::array<double, 3>& p) const noexcept {
+    return usable && p[0] >= 0.0 && p[0] < hi[0] && p[1] >= 0.0 && p[1] < hi[1] && p[2] >= 0.0 && p[2] < hi[2];
+  }
+
+  // The interpolation set-up at a position for which contains() holds.
+  Lerp3 lerp_at(const std::array<double, 3>& p) const noexcept {
+    Lerp3 s;
+    const int i = static_cast<int>(p[0]), j = static_cast<int>(p[1]), k = static_cast<int>(p[2]);
+    s.t[0] = p[0] - i;
+    s.t[1] = p[1] - j;
+    s.t[2] = p[2] - k;
+    s.off[0] = stride[0];
+    s.off[1] = stride[1];
+    s.off[2] = stride[2];
+    s.base = static_cast<std::size_t>(i * stride[0] + j * stride[1] + k * stride[2]);
+    return s;
+  }
+
+  Lerp3 lerp_any(const Layout& L, const std::array<double, 3>& p) const noexcept {
+    return contains(p) ? lerp_at(p) : Lerp3(L, p);
+  }
 };
 
 // The velocity interleaved (x, y, z per node) and in index units per second: the RK4
@@ -78,13 +124,29 @@ std::vector<double> pack_velocity(const Layout& L, const Velocity& vel) {
   return packed;
 }
 
-inline std::array<double, 3> velocity_at(const Layout& L, const double* packed, const std::array<double, 3>& p) noexcept {
+inline std::array<double, 3> velocity_at(const Layout& L, const InteriorBox& box, const double* packed,
+                                         const std::array<double, 3>& p) noexcept {
+  auto lerp = [](double a, double b, double t) { return a + t * (b - a); };
+  if (box.contains(p)) {
+    // Interior fast path: three components from the same 8 interleaved corners, no
+    // per-axis branches.
+    const Lerp3 s = box.lerp_at(p);
+    const double* q = packed + 3 * s.base;
+    const std::ptrdiff_t o0 = 3 * s.off[0], o1 = 3 * s.off[1], o2 = 3 * s.off[2];
+    std::array<double, 3> v;
+    for (int a = 0; a < 3; ++a) {
+      const double* r = q + a;
+      const double* w = r + o2;
+      const double y0 = lerp(lerp(r[0], r[o0], s.t[0]), lerp(r[o1], r[o1 + o0], s.t[0]), s.t[1]);
+      v[a] = lerp(y0, lerp(lerp(w[0], w[o0], s.t[0]), lerp(w[o1], w[o1 + o0], s.t[0]), s.t[1]), s.t[2]);
+    }
+    return v;
+  }
   const Lerp3 s(L, p);
   std::array<double, 3> v{0, 0, 0};
   if (s.bad) return {NAN, NAN, NAN};
   const double* q = packed + 3 * s.base;
   const std::ptrdiff_t o0 = 3 * s.off[0], o1 = 3 * s.off[1], o2 = 3 * s.off[2];
-  auto lerp = [](double a, double b, double t) { return a + t * (b - a); };
   for (int a = 0; a < L.dim; ++a) {
     const double* r = q + a;
     const double y0 = lerp(lerp(r[0], r[o0], s.t[0]), lerp(r[o1], r[o1 + o0], s.t[0]), s.t[1]);
@@ -98,8 +160,8 @@ inline std::array<double, 3> velocity_at(const Layout& L, const double* packed, 
   return v;
 }
 
-std::array<double, 3> trace_packed(const Layout& L, const double* packed, int i, int j, int k, double dt,
-                                   int substeps) noexcept {
+std::array<double, 3> trace_packed(const Layout& L, const InteriorBox& box, const double* packed, int i, int j,
+                                   int k, double dt, int substeps) noexcept {
   std::array<double, 3> x{double(i), double(j), double(k)};
   const double h = -dt / substeps;  // backwards in time
   for (int s = 0; s < substeps; ++s) {
@@ -108,10 +170,10 @@ std::array<double, 3> trace_packed(const Layout& L, const double* packed, int i,
       for (int a = 0; a < 3; ++a) p[a] += f * h * kk[a];
       return p;
     };
-    const auto k1 = velocity_at(L, packed, x);
-    const auto k2 = velocity_at(L, packed, at(k1, 0.5));
-    const auto k3 = velocity_at(L, packed, at(k2, 0.5));
-    const auto k4 = velocity_at(L, packed, at(k3, 1.0));
+    const auto k1 = velocity_at(L, box, packed, x);
+    const auto k2 = velocity_at(L, box, packed, at(k1, 0.5));
+    const auto k3 = velocity_at(L, box, packed, at(k2, 0.5));
+    const auto k4 = velocity_at(L, box, packed, at(k3, 1.0));
     for (int a = 0; a < 3; ++a) x[a] += h / 6.0 * (k1[a] + 2.0 * k2[a] + 2.0 * k3[a] + k4[a]);
     if (substeps > 1) x = confine(L, x);
   }
@@ -123,13 +185,14 @@ std::array<double, 3> trace_packed(const Layout& L, const double* packed, int i,
 std::array<double, 3> trace_back(const Layout& L, const Velocity& vel, int i, int j, int k, double dt,
                                  int substeps) {
   const std::vector<double> packed = pack_velocity(L, vel);
-  return trace_packed(L, packed.data(), i, j, k, dt, substeps);
+  return trace_packed(L, InteriorBox(L), packed.data(), i, j, k, dt, substeps);
 }
 
 void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const std::vector<const Field*>& in,
             const std::vector<Field*>& out) {
   const std::size_t nf = in.size();
   const std::vector<double> packed = pack_velocity(L, vel);
+  const InteriorBox box(L);
   const int rows = L.size[1] * L.size[2];
   // About four chunks per thread, as the seed found necessary for saturation.
   const int chunk = std::max(1, rows / (4 * omp_get_max_threads()));
@@ -137,7 +200,7 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
   for (int r = 0; r < rows; ++r) {
     const int j = r % L.size[1], k = r / L.size[1];
     for (int i = 0; i < L.size[0]; ++i) {
-      const Lerp3 s(L, trace_packed(L, packed.data(), i, j, k, dt, substeps));
+      const Lerp3 s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
       const std::size_t n = L.index(i, j, k);
       for (std::size_t f = 0; f < nf; ++f) (*out[f])[n] = s(in[f]->data());
     }
