@@ -1,5 +1,6 @@
 #include "fluidsim/advection.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -68,14 +69,16 @@ struct Lerp3 {
 };
 
 // The common case, made cheap: on a 3-D grid almost every back-traced position lies
-// strictly inside the node box, where no axis needs clamping (closed) or wrapping
-// (periodic) and the cell index and weights follow from one truncation per axis. The
-// general Lerp3 constructor gives the same base, offsets and weights there (fmod of a
-// position in [0, s) is the position itself), so results do not change; positions near
-// or beyond a wall, and NaN (every comparison false), take the general path.
+// inside the node box, where no axis needs clamping (closed) or wrapping (periodic) and
+// the cell index and weights follow from one truncation per axis (capped at the last
+// cell, so a position on a closed axis's far wall node is inside too). The general
+// Lerp3 constructor gives the same base, offsets and weights there (fmod of a position
+// in [0, s) is the position itself), so results do not change; positions beyond a wall,
+// in a periodic axis's wrap cell, and NaN (every comparison false) take the general path.
 struct InteriorBox {
   bool usable = false;  // dim 3 with at least two nodes on every axis
-  double hi[3] = {0, 0, 0};  // s - 1 per axis: the upper corner of the last whole cell
+  double hi[3] = {0, 0, 0};  // largest position inside: s - 1 (closed), just below it (periodic)
+  int last[3] = {0, 0, 0};   // s - 2: the first node of the last cell
   std::ptrdiff_t stride[3] = {1, 0, 0};
 
   explicit InteriorBox(const Layout& L) noexcept {
@@ -83,19 +86,22 @@ struct InteriorBox {
     std::ptrdiff_t st = 1;
     for (int a = 0; a < 3; ++a) {
       hi[a] = L.size[a] - 1.0;
+      if (L.bc[a] != Boundary::closed) hi[a] = std::nextafter(hi[a], 0.0);
+      last[a] = L.size[a] - 2;
       stride[a] = st;
       st *= L.size[a];
     }
   }
 
   bool contains(const std::array<double, 3>& p) const noexcept {
-    return usable && p[0] >= 0.0 && p[0] < hi[0] && p[1] >= 0.0 && p[1] < hi[1] && p[2] >= 0.0 && p[2] < hi[2];
+    return usable && p[0] >= 0.0 && p[0] <= hi[0] && p[1] >= 0.0 && p[1] <= hi[1] && p[2] >= 0.0 && p[2] <= hi[2];
   }
 
   // The interpolation set-up at a position for which contains() holds.
   Lerp3 lerp_at(const std::array<double, 3>& p) const noexcept {
     Lerp3 s;
-    const int i = static_cast<int>(p[0]), j = static_cast<int>(p[1]), k = static_cast<int>(p[2]);
+    const int i = std::min(static_cast<int>(p[0]), last[0]), j = std::min(static_cast<int>(p[1]), last[1]),
+              k = std::min(static_cast<int>(p[2]), last[2]);
     s.t[0] = p[0] - i;
     s.t[1] = p[1] - j;
     s.t[2] = p[2] - k;
@@ -155,6 +161,9 @@ inline std::array<double, 3> velocity_at(const Layout& L, const InteriorBox& box
 
 std::array<double, 3> trace_packed(const Layout& L, const InteriorBox& box, const Float4* packed, int i, int j,
                                    int k, double dt, int substeps) noexcept {
+  // The first RK4 stage of the first substep sits on the node itself: its velocity is
+  // the node's value (what the trilinear sample with zero weights returns), no lookup.
+  const Float4 at_node = packed[L.index(i, j, k)];
   std::array<double, 3> x{double(i), double(j), double(k)};
   const double h = -dt / substeps;  // backwards in time
   for (int s = 0; s < substeps; ++s) {
@@ -163,7 +172,8 @@ std::array<double, 3> trace_packed(const Layout& L, const InteriorBox& box, cons
       for (int a = 0; a < 3; ++a) p[a] += f * h * kk[a];
       return p;
     };
-    const auto k1 = velocity_at(L, box, packed, x);
+    const auto k1 = s == 0 ? std::array<double, 3>{double(at_node[0]), double(at_node[1]), double(at_node[2])}
+                           : velocity_at(L, box, packed, x);
     const auto k2 = velocity_at(L, box, packed, at(k1, 0.5));
     const auto k3 = velocity_at(L, box, packed, at(k2, 0.5));
     const auto k4 = velocity_at(L, box, packed, at(k3, 1.0));
