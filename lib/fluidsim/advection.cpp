@@ -194,6 +194,16 @@ std::array<double, 3> trace_back(const Layout& L, const Velocity& vel, int i, in
 void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const std::vector<const Field*>& in,
             const std::vector<Field*>& out) {
   const std::size_t nf = in.size();
+  // Raw pointers once, outside the node loop: through the vectors of Field pointers the
+  // compiler must reload both after every store (a store may alias them).
+  std::vector<const double*> src(nf);
+  std::vector<double*> dst(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    src[f] = in[f]->data();
+    dst[f] = out[f]->data();
+  }
+  const double* const* const srcp = src.data();
+  double* const* const dstp = dst.data();
   const std::vector<Float4> packed = pack_velocity(L, vel);
   const InteriorBox box(L);
   const int rows = L.size[1] * L.size[2];
@@ -202,10 +212,10 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
 #pragma omp parallel for schedule(dynamic, chunk) if (L.count() >= kParallelNodes)
   for (int r = 0; r < rows; ++r) {
     const int j = r % L.size[1], k = r / L.size[1];
+    const std::size_t row = L.index(0, j, k);
     for (int i = 0; i < L.size[0]; ++i) {
       const Lerp3 s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
-      const std::size_t n = L.index(i, j, k);
-      for (std::size_t f = 0; f < nf; ++f) (*out[f])[n] = s(in[f]->data());
+      for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i] = s(srcp[f]);
     }
   }
 }
