@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "fluidsim/frame.hpp"
+#include "image_data_frame.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -82,28 +83,8 @@ std::vector<Frame> load_frames(const std::string& path) {
     vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
     auto* img = vtkImageData::SafeDownCast(ds);
     if (!img) throw bad_input("VTI input holds no image data ({})", where);
-    int dims[3];
-    img->GetDimensions(dims);
-    f.dim = dims[2] == 1 ? 2 : 3;
-    f.size = {dims[0], dims[1], dims[2]};
-    f.spacing = img->GetSpacing()[0];
-    vtkPointData* pd = img->GetPointData();
-    std::vector<vtkDataArray*> arrays;
-    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-      if (vtkDataArray* arr = pd->GetArray(a)) {
-        f.fields.push_back({arr->GetName() ? arr->GetName() : fmt::format("array{}", a), arr->GetNumberOfComponents()});
-        arrays.push_back(arr);
-      }
-    if (arrays.empty()) throw bad_input("VTI input has no point arrays ({})", where);
-    const int C = f.channels();
-    f.data.resize(f.nodes() * C);
-    int c0 = 0;
-    for (vtkDataArray* arr : arrays) {
-      for (std::size_t n = 0; n < f.nodes(); ++n)
-        for (int k = 0; k < arr->GetNumberOfComponents(); ++k)
-          f.data[n * C + c0 + k] = arr->GetComponent(static_cast<vtkIdType>(n), k);
-      c0 += arr->GetNumberOfComponents();
-    }
+    read_image_data_frame(img, f, UnnamedArrays::name_by_index);
+    if (f.fields.empty()) throw bad_input("VTI input has no point arrays ({})", where);
   } else if (in.format == formats::Format::pfm || in.format == formats::Format::exr) {
     // A 2-D field image (row 0 at the top, as fluidsim writes it): channel 0.
     const Image im = formats::parse(in, formats::read_image);

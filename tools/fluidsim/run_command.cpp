@@ -29,6 +29,7 @@
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/volume/volume_io.hpp"
+#include "image_data_frame.hpp"
 
 namespace fest::fluidsim_tool {
 
@@ -122,26 +123,7 @@ State read_init_file(const std::string& path, const Layout& layout, const std::v
     vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
     auto* img = vtkImageData::SafeDownCast(ds);
     if (!img) throw bad_input("init file holds no image data ({})", path);
-    int dims[3];
-    img->GetDimensions(dims);
-    f.dim = dims[2] == 1 ? 2 : 3;
-    f.size = {dims[0], dims[1], dims[2]};
-    vtkPointData* pd = img->GetPointData();
-    std::vector<vtkDataArray*> arrays;
-    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-      if (vtkDataArray* arr = pd->GetArray(a); arr && arr->GetName()) {
-        f.fields.push_back({arr->GetName(), arr->GetNumberOfComponents()});
-        arrays.push_back(arr);
-      }
-    const int C = f.channels();
-    f.data.resize(f.nodes() * C);
-    int c0 = 0;
-    for (vtkDataArray* arr : arrays) {
-      for (std::size_t n = 0; n < f.nodes(); ++n)
-        for (int k = 0; k < arr->GetNumberOfComponents(); ++k)
-          f.data[n * C + c0 + k] = arr->GetComponent(static_cast<vtkIdType>(n), k);
-      c0 += arr->GetNumberOfComponents();
-    }
+    read_image_data_frame(img, f, UnnamedArrays::skip);
   }
   if (f.size != layout.size)
     throw bad_input("init file has {}x{}x{} nodes, the scene's grid stores {}x{}x{} ({})", f.size[0], f.size[1],
