@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/resource.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -19,6 +18,7 @@
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/resources.hpp"
 #include "core/tool_main.hpp"
 #include "edgebreaker/ebm.hpp"
 #include "edgebreaker/state_machine.hpp"
@@ -63,12 +63,6 @@ struct ModelOptions {
 };
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-long peak_rss_kb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss;
-}
 
 std::array<float, 4> parse_box(const std::string& text) {
   std::array<float, 4> box{};

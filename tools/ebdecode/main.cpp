@@ -6,7 +6,6 @@
 #include <chrono>
 #include <string>
 
-#include <sys/resource.h>
 
 #include <nlohmann/json.hpp>
 #include <OpenMesh/Core/System/omstream.hh>
@@ -15,6 +14,7 @@
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/resources.hpp"
 #include "edgebreaker/ebm.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -127,9 +127,7 @@ int run(const Options& opt) {
   const std::string bytes = formats::write_mesh(mesh, out_format, w);  // complete before any output
   formats::store_output(opt.output, bytes, false);
   if (!opt.report.empty()) {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    report["peak_rss_kb"] = u.ru_maxrss;
+    report["peak_rss_kb"] = peak_rss_kb();
     write_output(opt.report, report.dump(2) + "\n");
   }
   return 0;

@@ -6,13 +6,13 @@
 #include <map>
 
 #include <omp.h>
-#include <sys/resource.h>
 
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/resources.hpp"
 #include "fluidsim/checks.hpp"
 #include "fluidsim/simulator.hpp"
 
@@ -23,11 +23,7 @@ using nlohmann::json;
 
 int omp_threads() { return omp_get_max_threads(); }
 
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
+double peak_rss_mb() { return peak_rss_kb() / 1024.0; }
 
 int check_command(const CheckOptions& o) {
   fluidsim::CheckOptions co;
