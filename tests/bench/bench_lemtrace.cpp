@@ -35,6 +35,7 @@
 #include "lemtrace/field_grid.hpp"
 #include "lemtrace/generate.hpp"
 #include "lemtrace/tracer.hpp"
+#include "lemtrace/vtk/tet_grid.hpp"
 
 namespace {
 
@@ -70,26 +71,6 @@ struct Errors {
   }
 };
 
-vtkSmartPointer<vtkUnstructuredGrid> to_vtk(const TetMesh& mesh) {
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  auto vel = vtkSmartPointer<vtkDoubleArray>::New();
-  vel->SetName("velocity");
-  vel->SetNumberOfComponents(3);
-  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-    points->InsertNextPoint(mesh.points[i].data());
-    vel->InsertNextTuple(mesh.vectors[i].data());
-  }
-  grid->SetPoints(points);
-  grid->GetPointData()->SetVectors(vel);
-  grid->Allocate(static_cast<vtkIdType>(mesh.tets.size()));
-  for (const Tet& t : mesh.tets) {
-    const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
-    grid->InsertNextCell(10, 4, ids);
-  }
-  return grid;
-}
 
 void vtk_case(vtkUnstructuredGrid* grid, const std::vector<Vec3>& seeds, bool rk2) {
   auto source = vtkSmartPointer<vtkPolyData>::New();
@@ -214,7 +195,7 @@ int main(int argc, char** argv) {
     std::printf("{\"case\": \"vtk_stream_tracer_rk4\", \"note\": \"skipped (--no-vtk)\"}\n");
     return 0;
   }
-  vtkSmartPointer<vtkUnstructuredGrid> vgrid = to_vtk(grid.mesh());
+  vtkSmartPointer<vtkUnstructuredGrid> vgrid = tet_mesh_to_vtk(grid.mesh());
   vtk_case(vgrid, seeds, false);
   if (rk2) vtk_case(vgrid, seeds, true);
   return 0;

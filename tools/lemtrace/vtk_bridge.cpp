@@ -20,6 +20,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "core/error.hpp"
+#include "lemtrace/vtk/tet_grid.hpp"
 
 namespace fest::lemtrace_tool {
 namespace {
@@ -248,19 +249,7 @@ vtkSmartPointer<vtkPolyData> polylines_to_dataset(const FieldGrid& grid, const L
 
 vtkSmartPointer<vtkUnstructuredGrid> classified_dataset(const FieldGrid& grid, const std::vector<CellRecord>& records) {
   const TetMesh& mesh = grid.mesh();
-  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  auto vel = vtkSmartPointer<vtkDoubleArray>::New();
-  vel->SetName("velocity");
-  vel->SetNumberOfComponents(3);
-  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-    points->InsertNextPoint(mesh.points[i].data());
-    vel->InsertNextTuple(mesh.vectors[i].data());
-  }
-  ug->SetPoints(points);
-  ug->GetPointData()->SetVectors(vel);
-  ug->Allocate(static_cast<vtkIdType>(mesh.tets.size()));
+  vtkSmartPointer<vtkUnstructuredGrid> ug = tet_mesh_to_vtk(mesh);
   auto type = vtkSmartPointer<vtkUnsignedCharArray>::New();
   type->SetName("LemType");
   auto eig = vtkSmartPointer<vtkDoubleArray>::New();
@@ -269,8 +258,6 @@ vtkSmartPointer<vtkUnstructuredGrid> classified_dataset(const FieldGrid& grid, c
   auto crit = vtkSmartPointer<vtkUnsignedCharArray>::New();
   crit->SetName("CriticalPointInside");
   for (std::size_t c = 0; c < mesh.tets.size(); ++c) {
-    const vtkIdType ids[4] = {mesh.tets[c][0], mesh.tets[c][1], mesh.tets[c][2], mesh.tets[c][3]};
-    ug->InsertNextCell(10, 4, ids);
     const CellRecord& r = records[c];
     type->InsertNextValue(static_cast<unsigned char>(r.type));
     const bool normal = r.type == CellType::normal_real || r.type == CellType::normal_complex;
