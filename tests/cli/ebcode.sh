@@ -190,6 +190,12 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$WORK/bad_index.off"
 run ebcode "$WORK/bad_index.off"
 expect_clean_failure 3 ebcode
 
+case_ "NaN vertex coordinate"
+printf 'OFF\n3 1 0\nnan 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$WORK/nan.off"
+run ebcode "$WORK/nan.off"
+expect_clean_failure 3 ebcode
+expect_stderr_has "not finite"
+
 case_ "OFF with wrong counts"
 printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$WORK/bad_counts.off"
 run ebcode "$WORK/bad_counts.off"
