@@ -1,0 +1,28 @@
+#pragma once
+// The camera every backend implements (specs/capture.md §2.2): set an exposure time, take
+// a picture. Pictures are fest::Image (8- or 16-bit, 1 or 3 channels, R,G,B order).
+
+#include <string>
+
+#include "core/image.hpp"
+
+namespace fest::capture {
+
+struct CameraInfo {
+  int width = 0, height = 0;
+  int channels = 3;
+  int bits = 16;  // 8 or 16: the depth capture() returns
+  std::string name;
+};
+
+// Backends throw fest::Error with the device statuses of DESIGN.md: device_not_found (5),
+// device_error (6), timeout (7, the camera did not deliver), permission (8).
+class Camera {
+ public:
+  virtual ~Camera() = default;
+  virtual CameraInfo info() = 0;
+  virtual void set_exposure(double seconds) = 0;
+  virtual Image capture() = 0;
+};
+
+}  // namespace fest::capture
