@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
 #include <omp.h>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 namespace fest::fluidsim {
 
@@ -225,8 +229,12 @@ struct FastTrace {
   }
 
   static bool inside(const Node& n, Float4 d) noexcept {
-    const Int4 in = (d >= n.lo) & (d <= n.hi);
+    const Int4 in = (d >= n.lo) & (d <= n.hi);  // lane 3 (0 within [0, 0]) is always in
+#if defined(__SSE__)
+    return _mm_movemask_ps(reinterpret_cast<__m128>(in)) == 0xF;
+#else
     return (in[0] & in[1] & in[2]) != 0;
+#endif
   }
 
   // Cell offset (floor of d, capped at the last cell) and the fractions within the cell.
@@ -245,9 +253,7 @@ struct FastTrace {
     cell(n, d, c, t);
     const Float4* q = packed + (n.index + c[0] + c[1] * s1 + c[2] * s2);
     const Float4* w = q + s2;
-    const Float4 t0 = __builtin_shuffle(t, Int4{0, 0, 0, 0});
-    const Float4 t1 = __builtin_shuffle(t, Int4{1, 1, 1, 1});
-    const Float4 t2 = __builtin_shuffle(t, Int4{2, 2, 2, 2});
+    const Float4 t0 = {t[0], t[0], t[0], t[0]}, t1 = {t[1], t[1], t[1], t[1]}, t2 = {t[2], t[2], t[2], t[2]};
     auto lerp = [](Float4 a, Float4 b, Float4 s) { return a + s * (b - a); };
     const Float4 y0 = lerp(lerp(q[0], q[1], t0), lerp(q[s1], q[s1 + 1], t0), t1);
     const Float4 y1 = lerp(lerp(w[0], w[1], t0), lerp(w[s1], w[s1 + 1], t0), t1);
@@ -280,6 +286,31 @@ struct FastTrace {
     return true;
   }
 };
+
+// Lerp3::operator() for a 3-D cell with unit offsets {1, s1, s2} (no wrap), two lanes at
+// a time: each x pair of corners is one 16-byte load, the x lerps of the z0 and z1 layers
+// run side by side, then the y lerps; the z lerp is scalar. Lane by lane the operations
+// are those of operator(), so the result is bit-identical.
+using Double2 = double __attribute__((vector_size(16)));
+
+inline Double2 load2(const double* p) noexcept {
+  Double2 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+inline double sample_unwrapped(const Lerp3& s, const double* f) noexcept {
+  const double* p = f + s.base;
+  const std::ptrdiff_t o1 = s.off[1], o2 = s.off[2];
+  const Double2 a00 = load2(p), a10 = load2(p + o1), a01 = load2(p + o2), a11 = load2(p + o1 + o2);
+  // (x0 at z0, x0 at z1) and (x1 at z0, x1 at z1) for the y0 and y1 rows.
+  const Double2 y0x0 = {a00[0], a01[0]}, y0x1 = {a00[1], a01[1]};
+  const Double2 y1x0 = {a10[0], a11[0]}, y1x1 = {a10[1], a11[1]};
+  const Double2 t0 = {s.t[0], s.t[0]}, t1 = {s.t[1], s.t[1]};
+  auto lerp = [](Double2 a, Double2 b, Double2 t) { return a + t * (b - a); };
+  const Double2 y = lerp(lerp(y0x0, y0x1, t0), lerp(y1x0, y1x1, t0), t1);  // (z0, z1)
+  return y[0] + s.t[2] * (y[1] - y[0]);
+}
 
 }  // namespace
 
@@ -317,8 +348,11 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
     const std::size_t row = L.index(0, j, k);
     for (int i = 0; i < L.size[0]; ++i) {
       Lerp3 s;
-      if (!fast || !fast->trace(fast->node(i, j, k, row + i), fdt, s))
-        s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
+      if (fast && fast->trace(fast->node(i, j, k, row + i), fdt, s)) {
+        for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i] = sample_unwrapped(s, srcp[f]);
+        continue;
+      }
+      s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
       for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i] = s(srcp[f]);
     }
   }
