@@ -307,22 +307,29 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
 
 namespace {
 
-// Applies a dense m x m matrix (row-major) along one axis of a box array (x fastest).
-void dense_along(const std::vector<double>& M, int axis, const int dims[3], std::vector<double>& X) {
+// Applies a dense m x m matrix (row-major) along one axis of a box array (x fastest),
+// from X into Y (the product is written in place of Y, no temporary), then swaps them.
+void dense_along(const std::vector<double>& M, int axis, const int dims[3], std::vector<double>& X,
+                 std::vector<double>& Y) {
   const int m = dims[axis];
   Eigen::Map<const RowMatrix> A(M.data(), m, m);
   if (axis == 0) {
-    Eigen::Map<Eigen::MatrixXd> B(X.data(), dims[0], dims[1] * dims[2]);
-    B = (A * B).eval();
+    Eigen::Map<const Eigen::MatrixXd> B(X.data(), dims[0], dims[1] * dims[2]);
+    Eigen::Map<Eigen::MatrixXd> C(Y.data(), dims[0], dims[1] * dims[2]);
+    C.noalias() = A * B;
   } else if (axis == 2) {
-    Eigen::Map<Eigen::MatrixXd> B(X.data(), dims[0] * dims[1], dims[2]);
-    B = (B * A.transpose()).eval();
+    Eigen::Map<const Eigen::MatrixXd> B(X.data(), dims[0] * dims[1], dims[2]);
+    Eigen::Map<Eigen::MatrixXd> C(Y.data(), dims[0] * dims[1], dims[2]);
+    C.noalias() = B * A.transpose();
   } else {
     for (int k = 0; k < dims[2]; ++k) {
-      Eigen::Map<Eigen::MatrixXd> B(X.data() + static_cast<std::size_t>(k) * dims[0] * dims[1], dims[0], dims[1]);
-      B = (B * A.transpose()).eval();
+      const std::size_t slab = static_cast<std::size_t>(k) * dims[0] * dims[1];
+      Eigen::Map<const Eigen::MatrixXd> B(X.data() + slab, dims[0], dims[1]);
+      Eigen::Map<Eigen::MatrixXd> C(Y.data() + slab, dims[0], dims[1]);
+      C.noalias() = B * A.transpose();
     }
   }
+  X.swap(Y);
 }
 
 void fft_along(const AxisBasis& basis, bool forward, int axis, const int dims[3], std::vector<double>& X,
@@ -348,7 +355,7 @@ void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
   const auto& n0 = axes_[0]->nodes();
   const auto& n1 = axes_[1]->nodes();
   const auto& n2 = axes_[2]->nodes();
-  std::vector<double> X(count_);
+  std::vector<double> X(count_), Y(count_);  // Y: the other half of a ping-pong pair
   std::size_t n = 0;
   for (int k = 0; k < dims[2]; ++k)
     for (int j = 0; j < dims[1]; ++j)
@@ -365,11 +372,10 @@ void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
     if (axes_[a]->uses_fftw())
       fft_along(*axes_[a], true, a, dims, X, work);
     else
-      dense_along(axes_[a]->forward_matrix(), a, dims, X);
+      dense_along(axes_[a]->forward_matrix(), a, dims, X, Y);
   }
   if (tridiagonal_z_) {
-    std::vector<double> scratch(count_);
-    solve_z_tridiagonal(X.data(), scratch.data());
+    solve_z_tridiagonal(X.data(), Y.data());
   } else {
     for (std::size_t i = 0; i < count_; ++i) X[i] *= inv_factor_[i];
   }
@@ -378,7 +384,7 @@ void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
     if (axes_[a]->uses_fftw())
       fft_along(*axes_[a], false, a, dims, X, work);
     else
-      dense_along(axes_[a]->inverse_matrix(), a, dims, X);
+      dense_along(axes_[a]->inverse_matrix(), a, dims, X, Y);
   }
   n = 0;
   for (int k = 0; k < dims[2]; ++k)
