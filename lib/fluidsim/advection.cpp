@@ -260,30 +260,51 @@ struct FastTrace {
     return lerp(y0, y1, t2);
   }
 
-  // One RK4 step backwards over dt from the node; false if a sample left the box.
-  bool trace(const Node& n, float dt, Lerp3& out) const noexcept {
+  // d itself where it is inside the node's box, else the nearest bound (NaN: the lower
+  // one), so that a sample never reads outside the grid.
+  static Float4 clamped(const Node& n, Float4 d) noexcept {
+    const Float4 c = d >= n.lo ? d : n.lo;
+    return c <= n.hi ? c : n.hi;
+  }
+
+  // One RK4 step backwards over dt from each of N nodes, stage by stage across the
+  // nodes: every stage is a chain of dependent loads, and N independent chains side by
+  // side keep the core busy while one waits. ok[q] is false if a sample of node q left
+  // the box (its samples were then taken at clamped positions and are discarded).
+  template <int N>
+  void trace(const Node* n, float dt, Lerp3* out, bool* ok) const noexcept {
     const float h = -dt;
-    const Float4 k1 = packed[n.index];
-    Float4 d = (0.5f * h) * k1;
-    if (!inside(n, d)) return false;
-    const Float4 k2 = velocity(n, d);
-    d = (0.5f * h) * k2;
-    if (!inside(n, d)) return false;
-    const Float4 k3 = velocity(n, d);
-    d = h * k3;
-    if (!inside(n, d)) return false;
-    const Float4 k4 = velocity(n, d);
-    d = (h / 6.0f) * (k1 + 2.0f * k2 + 2.0f * k3 + k4);
-    if (!inside(n, d)) return false;
-    Int4 c;
-    Float4 t;
-    cell(n, d, c, t);
-    out.base = static_cast<std::size_t>(n.index + c[0] + c[1] * s1 + c[2] * s2);
-    out.off[0] = 1;
-    out.off[1] = s1;
-    out.off[2] = s2;
-    for (int a = 0; a < 3; ++a) out.t[a] = t[a];
-    return true;
+    Float4 k1[N], k2[N], k3[N], k4[N], d[N];
+    for (int q = 0; q < N; ++q) {
+      k1[q] = packed[n[q].index];
+      d[q] = (0.5f * h) * k1[q];
+      ok[q] = inside(n[q], d[q]);
+    }
+    for (int q = 0; q < N; ++q) {
+      k2[q] = velocity(n[q], clamped(n[q], d[q]));
+      d[q] = (0.5f * h) * k2[q];
+      ok[q] &= inside(n[q], d[q]);
+    }
+    for (int q = 0; q < N; ++q) {
+      k3[q] = velocity(n[q], clamped(n[q], d[q]));
+      d[q] = h * k3[q];
+      ok[q] &= inside(n[q], d[q]);
+    }
+    for (int q = 0; q < N; ++q) {
+      k4[q] = velocity(n[q], clamped(n[q], d[q]));
+      d[q] = (h / 6.0f) * (k1[q] + 2.0f * k2[q] + 2.0f * k3[q] + k4[q]);
+      ok[q] &= inside(n[q], d[q]);
+    }
+    for (int q = 0; q < N; ++q) {
+      Int4 c;
+      Float4 t;
+      cell(n[q], clamped(n[q], d[q]), c, t);
+      out[q].base = static_cast<std::size_t>(n[q].index + c[0] + c[1] * s1 + c[2] * s2);
+      out[q].off[0] = 1;
+      out[q].off[1] = s1;
+      out[q].off[2] = s2;
+      for (int a = 0; a < 3; ++a) out[q].t[a] = t[a];
+    }
   }
 };
 
@@ -346,15 +367,31 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
   for (int r = 0; r < rows; ++r) {
     const int j = r % L.size[1], k = r / L.size[1];
     const std::size_t row = L.index(0, j, k);
-    for (int i = 0; i < L.size[0]; ++i) {
-      Lerp3 s;
-      if (fast && fast->trace(fast->node(i, j, k, row + i), fdt, s)) {
-        for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i] = sample_unwrapped(s, srcp[f]);
-        continue;
-      }
-      s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
+    auto general = [&](int i) {
+      const Lerp3 s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
       for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i] = s(srcp[f]);
+    };
+    int i = 0;
+    if (fast) {
+      // Nodes in pairs through the fast trace; a node whose samples left the box is
+      // redone alone on the general path.
+      constexpr int kPair = 2;
+      for (; i + kPair <= L.size[0]; i += kPair) {
+        FastTrace::Node nodes[kPair];
+        Lerp3 s[kPair];
+        bool ok[kPair];
+        for (int q = 0; q < kPair; ++q) nodes[q] = fast->node(i + q, j, k, row + i + q);
+        fast->trace<kPair>(nodes, fdt, s, ok);
+        for (int q = 0; q < kPair; ++q) {
+          if (!ok[q]) {
+            general(i + q);
+            continue;
+          }
+          for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i + q] = sample_unwrapped(s[q], srcp[f]);
+        }
+      }
     }
+    for (; i < L.size[0]; ++i) general(i);
   }
 }
 
