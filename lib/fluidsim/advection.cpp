@@ -135,6 +135,14 @@ std::vector<Float4> pack_velocity(const Layout& L, const Velocity& vel) {
   const std::size_t N = L.count();
   std::vector<Float4> packed(N);
   const double inv_h = 1.0 / L.h;
+  if (L.dim == 3) {  // the common case without the per-lane loop
+    const double *u = vel[0].data(), *v = vel[1].data(), *w = vel[2].data();
+#pragma omp parallel for schedule(static) if (N >= kParallelNodes)
+    for (std::size_t n = 0; n < N; ++n)
+      packed[n] = Float4{static_cast<float>(u[n] * inv_h), static_cast<float>(v[n] * inv_h),
+                         static_cast<float>(w[n] * inv_h), 0.0f};
+    return packed;
+  }
 #pragma omp parallel for schedule(static) if (N >= kParallelNodes)
   for (std::size_t n = 0; n < N; ++n) {
     Float4 v = {0.0f, 0.0f, 0.0f, 0.0f};
