@@ -374,6 +374,48 @@ Mask select(const Volume& v, const std::vector<std::pair<double, double>>& range
   return m;
 }
 
+bool same_grid(const Volume& a, const Volume& b) {
+  if (a.dims != b.dims) return false;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(a.spacing[i] - b.spacing[i]) > 1e-4 || std::abs(a.origin[i] - b.origin[i]) > 1e-3) return false;
+  for (int i = 0; i < 9; ++i)
+    if (std::abs(a.direction[i] - b.direction[i]) > 1e-5) return false;
+  return true;
+}
+
+// The reference on the segmentation's grid: each voxel takes the value of the reference
+// voxel nearest to its world position (0 outside the reference), so label volumes of
+// other voxel sizes, orientations or fields of view compare by anatomy (spec §4 eval).
+Volume resample_nearest(const Volume& ref, const Volume& grid) {
+  // Inverse of world = origin + D diag(s) ijk.
+  double m[9];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) m[3 * r + c] = ref.direction[3 * r + c] * ref.spacing[c];
+  const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
+  if (std::abs(det) < 1e-12) throw bad_input("the reference's voxel axes are degenerate");
+  const double inv[9] = {(m[4] * m[8] - m[5] * m[7]) / det, (m[2] * m[7] - m[1] * m[8]) / det, (m[1] * m[5] - m[2] * m[4]) / det,
+                         (m[5] * m[6] - m[3] * m[8]) / det, (m[0] * m[8] - m[2] * m[6]) / det, (m[2] * m[3] - m[0] * m[5]) / det,
+                         (m[3] * m[7] - m[4] * m[6]) / det, (m[1] * m[6] - m[0] * m[7]) / det, (m[0] * m[4] - m[1] * m[3]) / det};
+  Volume out = grid;
+  out.type = ref.type;
+  for (std::size_t k = 0; k < grid.dims[2]; ++k)
+    for (std::size_t j = 0; j < grid.dims[1]; ++j)
+      for (std::size_t i = 0; i < grid.dims[0]; ++i) {
+        auto w = grid.world(double(i), double(j), double(k));
+        const double d[3] = {w[0] - ref.origin[0], w[1] - ref.origin[1], w[2] - ref.origin[2]};
+        double v = 0;
+        long long p[3];
+        bool inside = true;
+        for (int r = 0; r < 3; ++r) {
+          p[r] = std::llround(inv[3 * r] * d[0] + inv[3 * r + 1] * d[1] + inv[3 * r + 2] * d[2]);
+          inside = inside && p[r] >= 0 && p[r] < static_cast<long long>(ref.dims[r]);
+        }
+        if (inside) v = ref.at(std::size_t(p[0]), std::size_t(p[1]), std::size_t(p[2]));
+        out.at(i, j, k) = v;
+      }
+  return out;
+}
+
 }  // namespace
 
 int run_synth(const SynthArgs& a) {
@@ -399,9 +441,7 @@ int run_synth(const SynthArgs& a) {
 int run_eval(const EvalArgs& a) {
   Volume ref = read_volume_input(a.ref);
   Volume seg = read_volume_input(a.seg);
-  if (ref.dims != seg.dims)
-    throw bad_input("reference {}x{}x{} and segmentation {}x{}x{} differ in size (resampling to the segmentation grid is not supported yet)",
-                    ref.dims[0], ref.dims[1], ref.dims[2], seg.dims[0], seg.dims[1], seg.dims[2]);
+  if (!same_grid(ref, seg)) ref = resample_nearest(ref, seg);
   auto smap = parse_map(a.map, "--map");
   auto rmap = parse_map(a.ref_map.empty() ? a.map : a.ref_map, "--ref-map");
   std::string out = "object\tdice\tjaccard\tvolume_seg_ml\tvolume_ref_ml\tvolume_diff_pct\n";
