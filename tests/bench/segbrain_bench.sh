@@ -20,7 +20,7 @@ case_run() {  # name input reference extra-args...
   done
   local med; med=$(printf '%s\n' "${walls[@]}" | sort -n | sed -n 3p)
   local peak; peak=$(printf '%s\n' "${rss[@]}" | sort -n | tail -1)
-  local dice; dice=$("$BIN/segbrain" eval --ref "$ref" --seg "$W/l.nii.gz" --map "brain=2,3" --ref-map "brain=1-1000" 2>/dev/null | awk '$1=="brain"{print $2}')
+  local dice; dice=$("$BIN/segbrain" eval --ref "$ref" --seg "$W/l.nii.gz" --map "brain=2-8" --ref-map "brain=1-1000" 2>/dev/null | awk '$1=="brain"{print $2}')
   jq -c --arg n "$name" --argjson wall "$med" --argjson rss "$peak" --arg dice "${dice:-null}" \
     '{bench: "segbrain", case: $n, wall_s_median: $wall, peak_rss_mb: ($rss / 1024 | floor), dice_brain: ($dice | tonumber? // null),
       inferences: .counts.inferences, backtracks: .counts.backtracks, accepted_by: .accepted_by.find_brain}' "$W/r.json"

@@ -1,6 +1,7 @@
 // Subcommands: formats -> lib/segbrain -> formats.
 #include "commands.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -131,6 +132,64 @@ Volume label_volume(const Volume& in, const Reorientation& r, const std::vector<
   return out;
 }
 
+// --objects a,b,c -> segment_objects([a, b, c]); every name must be a known_object/1
+// fact of the knowledge base (which objects it can find is knowledge, not code).
+Term objects_goal(Engine& engine, const std::string& list) {
+  std::vector<Term> names;
+  std::size_t pos = 0;
+  while (pos <= list.size()) {
+    std::size_t comma = list.find(',', pos);
+    std::string name = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    if (name.empty()) throw usage_error("--objects: empty object name in '{}'", list);
+    Term t = make_atom(name);
+    if (!engine.defines("known_object", 1) || !engine.prove(make_compound("known_object", {t}))) {
+      std::string known;
+      Term all = make_var("L"), x = make_var("X");
+      if (engine.defines("known_object", 1) &&
+          engine.prove(make_compound("findall", {x, make_compound("known_object", {x}), all}))) {
+        std::vector<Term> items;
+        list_items(deref(all), items);
+        for (const auto& it : items) known += (known.empty() ? "" : ", ") + to_string(it);
+      }
+      throw usage_error("--objects: the knowledge base has no rules for '{}' (it knows: {})", name, known.empty() ? "none" : known);
+    }
+    names.push_back(t);
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return make_compound("segment_objects", {make_list(names)});
+}
+
+struct LabelEntry {
+  int index = 0;
+  std::string name, parent;
+  std::array<int, 3> rgb{0, 0, 0};
+};
+
+// label(Index, Name, Parent, [R, G, B]) facts of the knowledge base, in file order.
+std::vector<LabelEntry> label_entries(Engine& engine) {
+  std::vector<LabelEntry> out;
+  if (!engine.defines("label", 4)) return out;
+  Term all = make_var("L");
+  Term tmpl = make_compound("label", {make_var("I"), make_var("N"), make_var("P"), make_var("C")});
+  if (!engine.prove(make_compound("findall", {tmpl, tmpl, all}))) return out;
+  std::vector<Term> items;
+  list_items(deref(all), items);
+  for (const auto& it : items) {
+    Term t = deref(it);
+    std::vector<Term> rgb;
+    if (!is_number(t->args[0]) || deref(t->args[1])->kind != Kind::atom || !list_items(deref(t->args[3]), rgb) || rgb.size() != 3)
+      throw bad_input("label/4 expects label(Index, name, parent, [R, G, B]), got {}", to_string(t));
+    LabelEntry e;
+    e.index = static_cast<int>(number_value(t->args[0]));
+    e.name = deref(t->args[1])->name;
+    e.parent = to_string(deref(t->args[2]));
+    for (int c = 0; c < 3; ++c) e.rgb[c] = static_cast<int>(number_value(rgb[c]));
+    out.push_back(e);
+  }
+  return out;
+}
+
 json trace_json(const TraceEvent& e) {
   json j = {{"t_ms", std::round(e.t_ms * 1000) / 1000}, {"port", e.port}, {"depth", e.depth},
             {"goal", e.goal}, {"clause", e.clause}};
@@ -156,6 +215,8 @@ int run_segment(const RunArgs& a) {
   } catch (const Error& e) {
     throw usage_error("{}", e.what());
   }
+  if (!a.objects.empty()) goal = objects_goal(engine, a.objects);
+  const std::vector<LabelEntry> table = label_entries(engine);
 
   Volume in = read_volume_input(a.input);
   if (in.size() == 0) throw bad_input("volume has no voxels ({})", a.input);
@@ -242,6 +303,9 @@ int run_segment(const RunArgs& a) {
       objs[em.object] = o;
     }
     rep["objects"] = objs;
+    json labs = json::array();
+    for (const auto& l : table) labs.push_back({{"index", l.index}, {"name", l.name}, {"parent", l.parent}, {"rgb", l.rgb}});
+    rep["labels"] = labs;
     rep["accepted_by"] = engine.accepted_by();
     rep["skipped"] = engine.skipped();
     rep["counts"] = {{"inferences", engine.counters().inferences}, {"backtracks", engine.counters().backtracks},
@@ -250,6 +314,20 @@ int run_segment(const RunArgs& a) {
     write_output(a.report, rep.dump(2) + "\n");
   }
   if (!ok) throw runtime_failure("{}", failure);
+  if (!a.label_table.empty()) {
+    std::string text = "# segbrain label table (index name R G B A); parents in the JSON report\n";
+    for (const auto& l : table) text += fmt::format("{} {} {} {} {} 255\n", l.index, l.name, l.rgb[0], l.rgb[1], l.rgb[2]);
+    write_output(a.label_table, text);
+  }
+  if (!a.masks.empty()) {
+    std::set<std::string> written;
+    for (const auto& em : ws.emitted()) {
+      if (!written.insert(em.object).second) continue;
+      const Mask& m = ws.mask(em.object);
+      write_volume_output(label_volume(in, ro, std::vector<std::uint16_t>(m.begin(), m.end())),
+                          a.masks + "/" + em.object + ".nii.gz", "");
+    }
+  }
   write_volume_output(label_volume(in, ro, labels), a.output, a.to);
   return 0;
 }

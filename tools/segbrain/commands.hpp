@@ -16,6 +16,9 @@ struct RunArgs {
   std::vector<std::string> kb;
   std::string goal = "segment_head";
   std::vector<std::string> sets;
+  std::string objects;      // --objects head,brain,...: goal segment_objects([...])
+  std::string masks;        // --masks DIR
+  std::string label_table;  // --label-table FILE
   std::string report;
   std::string trace;
   int max_depth = 10000;
