@@ -97,6 +97,18 @@ expect_stderr_has "no rules for 'eyes'"
 run segbrain run "$P" --objects head --masks "$WORK/no/such/dir"
 expect_clean_failure 4 segbrain
 
+case_ "slices: PNG of three orthogonal slices with the labels overlaid"
+run segbrain slices "$P" --labels "$WORK/labels.nii.gz" -o "$WORK/slices.png"
+expect_status 0
+expect_stdout_empty
+# Panels at 1 mm pixels (2 per 2 mm voxel): axial 160x192, coronal 160x160, sagittal
+# 192x160 side by side -> 512 x 192.
+size=$(python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]))' "$WORK/slices.png")
+check "PNG of 512x192 pixels ($size)" test "$size" = 512x192
+run segbrain slices "$P" --labels "$WORK/aniso_labels.nii.gz" -o "$WORK/bad.png"
+expect_clean_failure 3 segbrain
+check "no PNG written on failure" test ! -e "$WORK/bad.png"
+
 case_ "a stronger bias field (0.4) and more noise (0.05): brain Dice still >= 0.97"
 "$S" synth -o "$WORK/biased.nii.gz" --truth "$WORK/biased_truth.nii.gz" --size 80,96,80 --spacing 2,2,2 --bias 0.4 --noise 0.05 --seed 2
 run segbrain run "$WORK/biased.nii.gz" -o "$WORK/biased_labels.nii.gz"

@@ -160,12 +160,6 @@ Term objects_goal(Engine& engine, const std::string& list) {
   return make_compound("segment_objects", {make_list(names)});
 }
 
-struct LabelEntry {
-  int index = 0;
-  std::string name, parent;
-  std::array<int, 3> rgb{0, 0, 0};
-};
-
 // label(Index, Name, Parent, [R, G, B]) facts of the knowledge base, in file order.
 std::vector<LabelEntry> label_entries(Engine& engine) {
   std::vector<LabelEntry> out;
@@ -330,6 +324,12 @@ int run_segment(const RunArgs& a) {
   }
   write_volume_output(label_volume(in, ro, labels), a.output, a.to);
   return 0;
+}
+
+std::vector<LabelEntry> kb_labels(const std::vector<std::string>& kb) {
+  Engine engine;
+  for (const auto& p : load_kb(kb)) engine.consult(p);
+  return label_entries(engine);
 }
 
 int run_kb_check(const KbCheckArgs& a) {

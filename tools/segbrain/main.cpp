@@ -57,6 +57,14 @@ int main(int argc, char** argv) {
   s->add_option("--bias", syn.bias, "Bias field peak-to-peak")->default_val(0.2);
   s->add_option("--seed", syn.seed, "Random seed")->default_val(1);
 
+  SlicesArgs sl;
+  auto* sv = app.add_subcommand("slices", "PNG of three orthogonal slices (axial, coronal, sagittal) with the labels overlaid");
+  sv->add_option("input", sl.input, "The volume that was segmented")->required();
+  sv->add_option("--labels", sl.labels, "Its label volume (from segbrain run)")->required();
+  sv->add_option("-o,--output", sl.output, "PNG output (- = stdout)")->default_val("-");
+  sv->add_option("--kb", sl.kb, "Knowledge base whose label/4 facts give the colours")->allow_extra_args(false);
+  sv->add_option("--scale", sl.scale, "Pixels per smallest voxel size")->default_val(2)->check(CLI::Range(0.25, 8.0));
+
   EvalArgs ev;
   auto* e = app.add_subcommand("eval", "Dice, Jaccard and volume difference of a segmentation against a reference");
   e->add_option("--ref", ev.ref, "Reference label volume")->required();
@@ -69,7 +77,7 @@ int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   bool named = false, meta = false;
   for (int i = 1; i < argc; ++i) {
-    for (const char* sub : {"run", "kb-check", "ops", "synth", "eval"}) named = named || std::strcmp(argv[i], sub) == 0;
+    for (const char* sub : {"run", "kb-check", "ops", "synth", "eval", "slices"}) named = named || std::strcmp(argv[i], sub) == 0;
     for (const char* m : {"-h", "--help", "--version"}) meta = meta || std::strcmp(argv[i], m) == 0;
   }
   static char run_word[] = "run";
@@ -84,6 +92,7 @@ int main(int argc, char** argv) {
     if (*o) return run_ops(ops_json);
     if (*s) return run_synth(syn);
     if (*e) return run_eval(ev);
+    if (*sv) return run_slices(sl);
     return 2;
   });
 }
