@@ -20,7 +20,7 @@ constexpr double kMinTwiceArea = 1e-9;
 // Triangles with a bounding box of at most this many cells are measured, not cached.
 constexpr double kDirectBoxCells = 32;
 // Largest valence of a vertex whose collapse is considered.
-constexpr int kMaxFan = 64;
+constexpr int kMaxFan = 1024;
 
 GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
   const auto& p = m.point(v);

@@ -400,7 +400,7 @@ int run_verify(const VerifyArgs& args) {
     cam.fovy_deg = 30 + 60 * u(rng);
     cam.width = 640, cam.height = 480;
     cam.near = 1e-3 * std::max(wx, wy);
-    cam.tau_px = 0.25 + 4 * u(rng);
+    cam.tau_px = 0.25 * std::pow(256.0, u(rng));  // 0.25 .. 64 px: fine and coarse selections
     const Extraction x = extract_view(pyr, cam);
     std::vector<terrainlod::DrawnTriangle> tris;
     for (const auto& [id, tri] : x.parts)
