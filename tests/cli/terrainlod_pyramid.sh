@@ -57,6 +57,22 @@ check "PNG written" test -s "$WORK/view.png"
 cp "$WORK/x.json" "$out"
 check "triangles extracted" jq -e '.triangles > 0 and .tiles > 0' "$out"
 
+case_ "extract --path: after the first frame, steps of 1 % of a leaf tile load no new tiles"
+# Leaf tiles are 16 cells x 10 m = 160 m: steps of 1.6 m.
+awk 'BEGIN { for (k = 0; k < 6; k++) printf "{\"eye\": [%.1f, 1600, 300], \"target\": [1300, 2300, 0], \"width\": 320, \"height\": 200, \"tau_px\": 2}\n", 1300 + 1.6 * k }' >"$WORK/path.jsonl"
+mkdir -p "$WORK/frames"
+run terrainlod extract "$WORK/bumps.tlp" --path "$WORK/path.jsonl" -o "$WORK/frames/%03d.ply" --report "$WORK/p.json"
+expect_status 0
+check "six frames" test -s "$WORK/frames/005.ply"
+cp "$WORK/p.json" "$out"
+check "frame 0 loads tiles" jq -e '.frames[0].tiles_loaded > 0' "$out"
+expect_json '[.frames[1:][] | .tiles_loaded] | add' '0'
+bad_pattern_out=$(mktemp -d)
+run terrainlod extract "$WORK/bumps.tlp" --path "$WORK/path.jsonl" -o "$bad_pattern_out/frame.ply"
+expect_clean_failure 2 terrainlod
+expect_stderr_has 'needs one %d or %0Nd'
+check "nothing written" test -z "$(ls "$bad_pattern_out")"
+
 # --- bad input ------------------------------------------------------------------------
 bad() {  # bad STATUS REGEX ARGS...
   local status="$1" regex="$2"; shift 2

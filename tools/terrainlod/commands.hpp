@@ -57,6 +57,7 @@ struct DecodeArgs {
 struct ExtractArgs {
   std::string pyramid;
   std::string camera;     // JSON object
+  std::string path;       // JSON lines, one camera per frame
   std::string output = "-";
   std::string to;
   double tau = 0;         // 0 = the camera's tau_px (default 1)

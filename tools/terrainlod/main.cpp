@@ -69,8 +69,11 @@ int main(int argc, char** argv) {
   ExtractArgs extract;
   auto* x = app.add_subcommand("extract", "The crack-free mesh a camera needs (view-dependent level of detail)");
   x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp)")->required();
-  x->add_option("--camera", extract.camera, "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px")
-      ->required();
+  auto* cam_opt = x->add_option("--camera", extract.camera, "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px");
+  auto* path_opt = x->add_option("--path", extract.path,
+                                 "Camera path: JSON lines, one camera per frame (-o and --png then take a %d / %04d pattern)");
+  cam_opt->excludes(path_opt);
+  path_opt->excludes(cam_opt);
   x->add_option("-o,--output", extract.output, "Mesh file; - = standard output (PLY); faces coloured by tile level");
   x->add_option("--to", extract.to, "Output format: ply, obj, off, stl or drc");
   x->add_option("--tau", extract.tau, "Pixels per texel threshold (overrides the camera's tau_px)");

@@ -103,6 +103,19 @@ PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move
   }
 }
 
+std::size_t PyramidFile::keep_only(const std::set<terrainlod::TileId>& keep) {
+  std::size_t evicted = 0;
+  for (auto it = cache_.begin(); it != cache_.end();) {
+    if (keep.count(it->first)) {
+      ++it;
+    } else {
+      it = cache_.erase(it);
+      ++evicted;
+    }
+  }
+  return evicted;
+}
+
 terrainlod::TileGeometry PyramidFile::geometry(int level) const {
   return {layout_.cells[static_cast<std::size_t>(level)], manifest_.at("z_quantum").get<double>()};
 }
@@ -119,6 +132,7 @@ const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {
   if (it != cache_.end()) return it->second;
   const std::string_view b = tile_bytes(id);
   touched_ += b.size();
+  ++decoded_;
   terrainlod::Tile t;
   try {
     t = terrainlod::decode_tile(b);

@@ -3,6 +3,7 @@
 // JSON (length-prefixed), an index of tiles in transmission order, then the tile blobs.
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ class PyramidFile {
   const terrainlod::Tile& tile(const terrainlod::TileId& id);  // decoded once, cached
   std::string_view tile_bytes(const terrainlod::TileId& id) const;
   std::size_t bytes_touched() const { return touched_; }
+  std::size_t tiles_decoded() const { return decoded_; }
+  std::size_t tiles_cached() const { return cache_.size(); }
+  // Drops decoded tiles not in `keep` (the tile cache of a camera path); returns how many.
+  std::size_t keep_only(const std::set<terrainlod::TileId>& keep);
   std::size_t size() const { return bytes_.size(); }
   const std::string& name() const { return name_; }
 
@@ -50,6 +55,7 @@ class PyramidFile {
   std::map<terrainlod::TileId, terrainlod::Tile> cache_;
   terrainlod::PyramidLayout layout_;
   std::size_t touched_ = 0;
+  std::size_t decoded_ = 0;
 };
 
 bool looks_like_archive(std::string_view bytes);
