@@ -3,14 +3,14 @@
 // a byte-aligned header, then three bit-packed sections.
 //
 // - vertices: the 4n border lattice points are implicit (counter-clockwise from the
-//   south-west corner); only their heights G are sent, zig-zag deltas along the border.
-//   Interior vertices follow in order of first use by the connectivity: X, Y with
-//   lattice_bits bits each, then zig-zag deltas of H.
+//   south-west corner); only their heights G are sent, deltas along the border. Interior
+//   vertices follow in order of first use by the connectivity: X, Y, H as residuals from a
+//   parallelogram prediction over the strip's shared edge. All residuals Rice coded.
 // - connectivity: generalized triangle strips. Per triangle one bit (continue the strip /
 //   restart); continuing, one bit names the shared edge of the previous triangle, (b, c)
 //   or (a, c), then the third vertex; restarting, three vertices. A vertex is one bit
-//   "the next interior vertex not used yet" or a 0 bit and its index. Orientation comes
-//   from geometry (counter-clockwise in xy).
+//   "the next interior vertex not used yet", or an index among the known neighbours of the
+//   shared edge, or a distance back. Orientation comes from geometry (counter-clockwise).
 // - refinement: per refinable border the finer neighbours' inserted points (G deltas);
 //   the transitions themselves are implied (tile.hpp), so the 16 triangulations come
 //   from the one stream with no stored conditions.
