@@ -3,6 +3,7 @@
 // with a board lying on it, chrome spheres and a light. Lengths in mm.
 
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include <opencv2/calib3d.hpp>
@@ -55,6 +56,20 @@ struct TurntableScene {
     return capture::Pose{R_T0 * Rz * R_BT, R_T0 * (Rz * t_BT) + t_T0};
   }
 };
+
+// Ten views of a 9x6x25mm board about 0.5 m away, tilted up to 35 degrees about both
+// image axes: what a camera calibration session looks like.
+inline std::vector<capture::Pose> calibration_poses() {
+  std::vector<capture::Pose> poses;
+  const cv::Vec3d centre(4 * 25, 2.5 * 25, 0);
+  const double tilts[][2] = {{0, 0}, {30, 0}, {-30, 0}, {0, 30}, {0, -30}, {25, 25}, {-25, 20}, {20, -25}, {-20, -30}, {35, 10}};
+  for (std::size_t i = 0; i < std::size(tilts); ++i) {
+    const cv::Matx33d R = rot({1, 0, 0}, tilts[i][0]) * rot({0, 1, 0}, tilts[i][1]) * rot({0, 0, 1}, 5.0 * double(i) - 20);
+    const cv::Vec3d where(15.0 * double(i % 3) - 15, 10.0 * double(i % 2) - 5, 480 + 12.0 * double(i));
+    poses.push_back(capture::Pose{R, where - R * centre});
+  }
+  return poses;
+}
 
 // Three chrome spheres of radius 25 mm about 0.5 m from the camera and the light.
 struct SphereScene {

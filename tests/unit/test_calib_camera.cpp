@@ -13,19 +13,7 @@ namespace {
 using namespace fest;
 using namespace fest::capture;
 
-std::vector<Pose> calibration_poses() {
-  // The board about 0.5 m away, tilted up to 35 degrees about both image axes.
-  std::vector<Pose> poses;
-  const BoardSpec b{9, 6, 25};
-  const cv::Vec3d centre(4 * b.square, 2.5 * b.square, 0);
-  const double tilts[][2] = {{0, 0}, {30, 0}, {-30, 0}, {0, 30}, {0, -30}, {25, 25}, {-25, 20}, {20, -25}, {-20, -30}, {35, 10}};
-  for (std::size_t i = 0; i < std::size(tilts); ++i) {
-    const cv::Matx33d R = test::rot({1, 0, 0}, tilts[i][0]) * test::rot({0, 1, 0}, tilts[i][1]) * test::rot({0, 0, 1}, 5.0 * i - 20);
-    const cv::Vec3d where(15.0 * (i % 3) - 15, 10.0 * (i % 2) - 5, 480 + 12.0 * i);
-    poses.push_back(Pose{R, where - R * centre});
-  }
-  return poses;
-}
+using test::calibration_poses;
 
 TEST(CalibCamera, RecoversKnownIntrinsics) {
   const Intrinsics truth = test::camera(700, 640, 480, -0.15, 0.08);
