@@ -88,6 +88,34 @@ bool find_highlight(const cv::Mat& grey, cv::Point2d c, double radius, cv::Point
   if (sw <= 0) return false;
   centroid = cv::Point2d(sx / sw, sy / sw);
   peak = hi;
+  // The mirror point is where the highlight peaks; a highlight foreshortened on the
+  // sphere is lopsided, so its centroid lies a little off the peak. Unless it is
+  // saturated (flat top), take the vertex of a quadratic fitted by least squares to
+  // the log of the excess brightness over the 5x5 pixels around the brightest one.
+  if (hi < 0.98 && at.x >= 2 && at.y >= 2 && at.x + 2 < grey.cols && at.y + 2 < grey.rows) {
+    cv::Mat A(25, 6, CV_64F), b(25, 1, CV_64F);
+    int row = 0;
+    bool positive = true;
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx, ++row) {
+        const double v = grey.at<float>(at.y + dy, at.x + dx) - median;
+        positive = positive && v > 0;
+        const double q[6] = {1.0, double(dx), double(dy), double(dx * dx), double(dx * dy), double(dy * dy)};
+        for (int k = 0; k < 6; ++k) A.at<double>(row, k) = q[k];
+        b.at<double>(row) = std::log(std::max(v, 1e-6));
+      }
+    cv::Mat f;
+    if (positive && cv::solve(A, b, f, cv::DECOMP_SVD)) {
+      // Vertex of c0 + c1 x + c2 y + c3 x^2 + c4 xy + c5 y^2 (a maximum: negative definite).
+      const double a = 2 * f.at<double>(3), bb = f.at<double>(4), cc = 2 * f.at<double>(5);
+      const double det = a * cc - bb * bb;
+      if (a < 0 && det > 0) {
+        const double x = (-f.at<double>(1) * cc + f.at<double>(2) * bb) / det;
+        const double y = (-f.at<double>(2) * a + f.at<double>(1) * bb) / det;
+        if (std::abs(x) <= 1 && std::abs(y) <= 1) centroid = cv::Point2d(at.x + x, at.y + y);
+      }
+    }
+  }
   return true;
 }
 

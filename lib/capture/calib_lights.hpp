@@ -17,7 +17,7 @@ struct SphereImage {
   cv::Point2d centre;                // of the outline (image of the sphere, not of its centre)
   double radius = 0;                 // mean outline radius
   std::vector<cv::Point2d> outline;  // sub-pixel edge points
-  cv::Point2d highlight;             // intensity-weighted centroid of the brightest blob
+  cv::Point2d highlight;             // peak of the brightest blob (its centroid when saturated)
   double highlight_peak = 0;         // its brightest value, 0..1
 };
 
