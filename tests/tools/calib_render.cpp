@@ -6,13 +6,10 @@
 //                                DIR/truth.json {"axis", "t_T0"}
 //   calib_render spheres DIR     DIR/cam.json, DIR/s0.png (three spheres), DIR/s1.png
 //                                (the same spheres moved), DIR/truth.json {"light"}
-//   calib_render jpeg2png IN OUT a JPEG (the opencv-doc chessboards) as PNG: fest's
-//                                image formats do not read JPEG
 #include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "calib_scenes.hpp"
 #include "capture/calib_synth.hpp"
@@ -46,7 +43,7 @@ void write_png(const std::string& path, const cv::Mat& grey) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: calib_render camera|turntable|spheres DIR | jpeg2png IN OUT\n");
+    std::fprintf(stderr, "usage: calib_render camera|turntable|spheres DIR\n");
     return 2;
   }
   const std::string what = argv[1], dir = argv[2];
@@ -78,13 +75,6 @@ int main(int argc, char** argv) {
       for (auto& s : scene.spheres) s.centre += cv::Vec3d(30, 40, -20);
       write_png(dir + "/s1.png", capture::render_spheres(cam, scene.spheres, scene.light, 2.0, 3));
       write_output(dir + "/truth.json", formats::write_json({{"light", array(scene.light)}}));
-    } else if (what == "jpeg2png" && argc == 4) {
-      const cv::Mat m = cv::imread(dir, cv::IMREAD_GRAYSCALE);
-      if (m.empty()) {
-        std::fprintf(stderr, "calib_render: cannot read %s\n", dir.c_str());
-        return 4;
-      }
-      write_png(argv[3], m);
     } else {
       std::fprintf(stderr, "calib_render: unknown scene '%s'\n", what.c_str());
       return 2;
