@@ -47,6 +47,18 @@ le "$(jq -n "($cy - 237.5) | fabs")" 1.5 && pass || fail "cy $cy, expected 237.5
 le "$(jq -n "($k1 + 0.15) | fabs")" 0.01 && pass || fail "k1 $k1, expected -0.15 within 0.01"
 le "$rms" 0.1 && pass || fail "RMS reprojection error $rms px > 0.1"
 
+case_ "calib-camera: an image without the board is left out, with a warning unless -q"
+{ printf 'P5\n640 480\n255\n'; head -c 307200 /dev/zero; } >"$WORK/blank.pgm"
+run capture calib-camera --board 9x6x25mm --fix-k3 "$WORK/blank.pgm" "$WORK"/c/c*.png
+expect_status 0
+expect_json '.left_out | length' 1
+expect_json '.views | length' 10
+expect_stderr_has "^capture: warning: no 9x6 board found; image left out \\(.*blank.pgm\\)$"
+check "the same calibration" cmp -s <(jq -c '{K, dist, rms}' "$out") <(jq -c '{K, dist, rms}' "$WORK/camera.json")
+run capture calib-camera --board 9x6x25mm --fix-k3 -q "$WORK/blank.pgm" "$WORK"/c/c*.png
+expect_status 0
+check "-q: nothing on standard error" test ! -s "$err"
+
 case_ "calib-turntable: axis within 0.05 degrees, centre within 0.1 mm"
 run capture calib-turntable --camera "$WORK/t/cam.json" --board 9x6x25mm --angles 12 "$WORK"/t/t*.png
 expect_status 0

@@ -333,6 +333,8 @@ void add_calib_commands(CLI::App& app) {
   s.lights_cmd->add_option("--ball-radius", s.lights.ball_radius, "Sphere radius in mm")->required();
   s.lights_cmd->add_option("--id", s.lights.id, "Id of the light the images show");
   s.lights_cmd->add_option("images", s.lights.images, "Images of the spheres lit by this light alone")->required();
+  // -q, -v and the other common flags of the app are accepted after the subcommand too.
+  for (CLI::App* cmd : {s.camera_cmd, s.turntable_cmd, s.lights_cmd}) cmd->fallthrough();
 }
 
 int run_calib_command(const CLI::App& app) {
