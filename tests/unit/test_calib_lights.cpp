@@ -40,6 +40,37 @@ TEST(CalibLights, MirrorPointReflectsTowardTheLight) {
   }
 }
 
+// The exact image of a sphere: its outline is where the tangent cone's rays land, its
+// highlight where the mirror point does. sphere_ray must give back the centre and a ray
+// through the light, through lens distortion too.
+TEST(CalibLights, ExactOutlineAndHighlightGiveExactRay) {
+  const test::SphereScene scene;
+  const Intrinsics cam = test::camera(1600, 1280, 960, -0.05, 0.01);
+  for (const Sphere& sp : scene.spheres) {
+    const double d = cv::norm(sp.centre), sin_a = sp.radius / d, cos_a = std::sqrt(1 - sin_a * sin_a);
+    const cv::Vec3d w = sp.centre / d;
+    const cv::Vec3d u = cv::normalize(w.cross(cv::Vec3d(0, 1, 0))), v = w.cross(u);
+    std::vector<cv::Point3d> points;
+    for (int i = 0; i < 360; ++i) {
+      const double phi = 2 * test::kPi * i / 360;
+      const cv::Vec3d r = cos_a * w + sin_a * (std::cos(phi) * u + std::sin(phi) * v);
+      points.emplace_back(r[0], r[1], r[2]);
+    }
+    const cv::Vec3d h = mirror_point(sp, scene.light);
+    points.emplace_back(h[0], h[1], h[2]);
+    std::vector<cv::Point2d> pixels;
+    cv::projectPoints(points, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), cv::Mat(cam.K), cv::Mat(cam.dist), pixels);
+    SphereImage image;
+    image.highlight = pixels.back();
+    pixels.pop_back();
+    image.outline = pixels;
+    const SphereRay ray = sphere_ray(image, cam, sp.radius);
+    EXPECT_LT(cv::norm(ray.centre - sp.centre), 1e-6);
+    EXPECT_LT(cv::norm(ray.origin - h), 1e-6);
+    EXPECT_NEAR(ray.direction.dot(cv::normalize(scene.light - h)), 1.0, 1e-12);
+  }
+}
+
 TEST(CalibLights, RenderedSpheresWithinSpec) {
   const test::SphereScene scene;
   const Intrinsics cam = test::camera(1600, 1280, 960, -0.05, 0.0);
