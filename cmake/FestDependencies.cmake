@@ -32,3 +32,5 @@ pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 # terrainlod: DEMs through GDAL (GeoTIFF georeference, nodata, every raster GDAL reads).
 find_package(GDAL CONFIG REQUIRED)
+# capture calib-*: chessboard corners, Zhang's calibration, solvePnP (lib/capture calib).
+find_package(OpenCV 4 REQUIRED COMPONENTS calib3d)
