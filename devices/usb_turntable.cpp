@@ -2,6 +2,7 @@
 
 #include <libusb.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <thread>
@@ -55,13 +56,36 @@ std::string where_of(const UsbSelector& sel, libusb_device* dev) {
                      libusb_get_device_address(dev));
 }
 
-// iProduct/iSerialNumber as ASCII; index 0 means "no string".
-std::string read_string(libusb_device_handle* h, std::uint8_t index, const char* what, const std::string& where) {
+// String descriptors by explicit GET_DESCRIPTOR requests (not libusb's ascii helper), so
+// the exact transfers are part of TTP/1's documented start-up sequence (man 7 ttp):
+// LANGID table once, then iProduct and iSerialNumber in its first language, 255 bytes
+// asked each time.
+int get_descriptor(libusb_device_handle* h, std::uint16_t value, std::uint16_t index, unsigned char* buf) {
+  return libusb_control_transfer(h, LIBUSB_ENDPOINT_IN | LIBUSB_REQUEST_TYPE_STANDARD | LIBUSB_RECIPIENT_DEVICE,
+                                 LIBUSB_REQUEST_GET_DESCRIPTOR, value, index, buf, 255, ttp1::kTimeoutMs);
+}
+
+std::uint16_t read_langid(libusb_device_handle* h, const std::string& where) {
+  unsigned char buf[256];
+  const int rc = get_descriptor(h, LIBUSB_DT_STRING << 8, 0, buf);
+  if (rc < 0) throw_usb(rc, "reading the string language table", where);
+  if (rc < 4 || buf[1] != LIBUSB_DT_STRING)
+    throw make_error(Status::device_error, "bad string language table ({} bytes) ({})", rc, where);
+  return std::uint16_t(buf[2] | (buf[3] << 8));
+}
+
+// A string descriptor as ASCII (other characters become '?'); index 0 means none.
+std::string read_string(libusb_device_handle* h, std::uint8_t index, std::uint16_t langid, const char* what,
+                        const std::string& where) {
   if (index == 0) return {};
   unsigned char buf[256];
-  const int rc = libusb_get_string_descriptor_ascii(h, index, buf, sizeof buf);
+  const int rc = get_descriptor(h, std::uint16_t((LIBUSB_DT_STRING << 8) | index), langid, buf);
   if (rc < 0) throw_usb(rc, what, where);
-  return std::string(reinterpret_cast<const char*>(buf), std::size_t(rc));
+  if (rc < 2 || buf[1] != LIBUSB_DT_STRING) throw make_error(Status::device_error, "{}: not a string descriptor ({})", what, where);
+  const int n = std::min(rc, int(buf[0]));
+  std::string s;
+  for (int k = 2; k + 1 < n; k += 2) s.push_back(buf[k + 1] == 0 && buf[k] < 0x80 ? char(buf[k]) : '?');
+  return s;
 }
 
 struct Context {
@@ -110,8 +134,9 @@ std::vector<Candidate> scan(libusb_context* ctx, const UsbSelector& sel, std::ve
     const int rc = libusb_open(dev, &c.handle);
     try {
       if (rc < 0) throw_usb(rc, "opening the device", c.where);
-      c.product = read_string(c.handle, d.iProduct, "reading iProduct", c.where);
-      c.serial = read_string(c.handle, d.iSerialNumber, "reading iSerialNumber", c.where);
+      const std::uint16_t langid = d.iProduct || d.iSerialNumber ? read_langid(c.handle, c.where) : 0;
+      c.product = read_string(c.handle, d.iProduct, langid, "reading iProduct", c.where);
+      c.serial = read_string(c.handle, d.iSerialNumber, langid, "reading iSerialNumber", c.where);
     } catch (const Error& e) {
       if (c.handle) libusb_close(c.handle);
       problems.push_back(e);
@@ -201,6 +226,7 @@ UsbTurntable::UsbTurntable(const UsbSelector& sel) : usb_(std::make_unique<Handl
     // A device that is there but could not be opened says more than "not found".
     for (const Error& e : problems)
       if (e.status() != Status::device_not_found) throw e;
+    if (!problems.empty() && sel.serial.empty()) throw problems.front();  // e.g. "not a TTP/1 device"
     if (!sel.serial.empty() && !serials.empty())
       throw make_error(Status::device_not_found, "no TTP/1 turntable with serial '{}' at usb {}:{} (found: {})", sel.serial,
                        hex4(sel.vid), hex4(sel.pid), fmt::join(serials, ", "));
