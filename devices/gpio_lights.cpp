@@ -130,6 +130,9 @@ GpioLightBank::GpioLightBank(const std::vector<GpioLightSpec>& lights) {
       lights_.push_back({spec.id, where, line, spec.initial_on});
     }
   } catch (...) {
+    // Lines already requested lit must not stay lit because a later one failed.
+    for (Light& l : lights_)
+      if (l.on) gpiod_line_set_value(l.line, 0);
     release();
     throw;
   }
@@ -138,7 +141,7 @@ GpioLightBank::GpioLightBank(const std::vector<GpioLightSpec>& lights) {
 GpioLightBank::~GpioLightBank() {
   if (!keep_) {
     for (Light& l : lights_)
-      if (l.line) gpiod_line_set_value(l.line, 0);  // best effort: nothing to report to
+      if (l.line && l.on) gpiod_line_set_value(l.line, 0);  // best effort: nothing to report to
   }
   release();
 }

@@ -10,6 +10,17 @@
 #include "devices/usb_turntable.hpp"
 
 namespace fest::devices {
+namespace {
+
+// The scheme only: gpio: URIs have a bare ",active_low" flag that the generic URI
+// parser rejects, so each backend parses its own URIs.
+std::string scheme_of(const std::string& uri) {
+  const std::size_t colon = uri.find(':');
+  if (colon == std::string::npos || colon == 0) return capture::parse_device_uri(uri).scheme;  // reports the error
+  return uri.substr(0, colon);
+}
+
+}  // namespace
 
 std::unique_ptr<capture::Turntable> open_turntable(const std::string& uri) {
   const capture::DeviceUri d = capture::parse_device_uri(uri);
@@ -27,7 +38,7 @@ std::unique_ptr<capture::LightBank> open_lights(const std::vector<LightConfig>& 
   if (lights.empty()) throw usage_error("no lights to open (the station's \"lights\" array is empty)");
   std::string kind;
   for (const LightConfig& l : lights) {
-    const std::string scheme = capture::parse_device_uri(l.uri).scheme;
+    const std::string scheme = scheme_of(l.uri);
     if (scheme != "gpio" && scheme != "sim")
       throw usage_error("light {}: URI scheme '{}:' is not supported by this build (gpio:, sim:)", l.id, scheme);
     if (!kind.empty() && scheme != kind)

@@ -16,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "capture/device_uri.hpp"
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "devices/gpio_lights.hpp"
@@ -97,7 +96,7 @@ int cmd_list(const std::vector<LightConfig>& lights) {
   // Looks without requesting: requesting a GPIO output would switch it.
   std::string text = "id,uri,state\n";
   for (const LightConfig& l : lights) {
-    const std::string scheme = capture::parse_device_uri(l.uri).scheme;
+    const std::string scheme = l.uri.substr(0, l.uri.find(':'));
     std::string state;
     if (scheme == "gpio") {
       devices::GpioLineRef ref = devices::parse_gpio_uri(l.uri);
@@ -132,9 +131,9 @@ int main(int argc, char** argv) {
 
   auto* list = app.add_subcommand("list", "id,uri,state of every light as CSV (state of GPIO lines: free / used by ...)");
   auto* on = app.add_subcommand("on", "Switch these lights on and leave them on (see hold)");
-  on->add_option("ids", a.ids, "Light ids")->required()->allow_extra_args(false);
+  on->add_option("ids", a.ids, "Light ids")->required();
   auto* off = app.add_subcommand("off", "Switch these lights (or --all) off");
-  off->add_option("ids", a.ids, "Light ids")->allow_extra_args(false);
+  off->add_option("ids", a.ids, "Light ids");
   off->add_flag("--all", a.all, "Every light of the station");
   auto* only = app.add_subcommand("only", "This light on, every other light of the station off");
   only->add_option("id", a.ids, "Light id")->required()->expected(1);
@@ -142,7 +141,7 @@ int main(int argc, char** argv) {
   pulse->add_option("id", a.ids, "Light id")->required()->expected(1);
   pulse->add_option("--ms", a.ms, "Duration in milliseconds")->required()->check(CLI::Range(1L, 86400000L));
   auto* hold = app.add_subcommand("hold", "Keep lights on until --time passes or SIGINT/SIGTERM/SIGHUP, then off");
-  hold->add_option("ids", a.ids, "Light ids")->required()->allow_extra_args(false);
+  hold->add_option("ids", a.ids, "Light ids")->required();
   hold->add_option("--time", a.time_s, "Seconds (default: until a signal)")->check(CLI::PositiveNumber);
 
   return fest::cli::run(app, argc, argv, [&] {
