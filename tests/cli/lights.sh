@@ -78,4 +78,12 @@ case_ "pulse needs --ms"
 run lights --station "$WORK/sim.json" pulse L0
 expect_clean_failure 2 lights
 
+case_ "conventions: --help, --version, unknown flag, missing subcommand"
+run lights --help; expect_status 0
+check "help names the subcommands" grep -q "Subcommands" "$out"
+run lights --version; expect_status 0
+check "version names fest" grep -q "(fest)" "$out"
+run lights --no-such-flag; expect_clean_failure 2 lights
+run lights; expect_clean_failure 2 lights
+
 finish

@@ -77,4 +77,12 @@ printf '{"turntable": ' >"$WORK/bad.json"
 run turntable --station "$WORK/bad.json" info
 expect_clean_failure 3 turntable
 
+case_ "conventions: --help, --version, unknown flag, missing subcommand"
+run turntable --help; expect_status 0
+check "help names the subcommands" grep -q "Subcommands" "$out"
+run turntable --version; expect_status 0
+check "version names fest" grep -q "(fest)" "$out"
+run turntable --no-such-flag; expect_clean_failure 2 turntable
+run turntable; expect_clean_failure 2 turntable
+
 finish
