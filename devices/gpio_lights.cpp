@@ -7,9 +7,10 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "devices/gpio_util.hpp"
 
 namespace fest::devices {
-namespace {
+namespace gpio {
 
 const char* const kGpioHint =
     "add your user to the gpio group, or give the chip to a group with a udev rule such as "
@@ -75,7 +76,19 @@ std::string describe(const GpioLineRef& ref, gpiod_line* line) {
   return fmt::format("{} line {}{}{}{}", ref.chip, gpiod_line_offset(line), name ? " (" : "", name ? name : "", name ? ")" : "");
 }
 
-}  // namespace
+void request_output(gpiod_line* line, const std::string& who, bool active_low, bool initial, const std::string& where) {
+  const int flags = active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
+  errno = 0;
+  if (gpiod_line_request_output_flags(line, "capture", flags, initial ? 1 : 0) < 0) {
+    const int err = errno;
+    if (err == EBUSY) throw make_error(Status::device_error, "{}: {} is busy, held by '{}'", who, where, consumer_of(line));
+    throw_errno(err, who + ": cannot request the line", where);
+  }
+}
+
+}  // namespace gpio
+
+using namespace gpio;
 
 GpioLineRef parse_gpio_uri(const std::string& uri) {
   if (uri.rfind("gpio:", 0) != 0) throw usage_error("not a gpio: light URI: {}", uri);
@@ -119,14 +132,7 @@ GpioLightBank::GpioLightBank(const std::vector<GpioLightSpec>& lights) {
       const std::string where = describe(spec.ref, line);
       for (const Light& l : lights_)
         if (l.line == line) throw usage_error("lights '{}' and '{}' are both on {}", l.id, spec.id, where);
-      const int flags = spec.ref.active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
-      errno = 0;
-      if (gpiod_line_request_output_flags(line, "capture", flags, spec.initial_on ? 1 : 0) < 0) {
-        const int err = errno;
-        if (err == EBUSY)
-          throw make_error(Status::device_error, "light {}: {} is busy, held by '{}'", spec.id, where, consumer_of(line));
-        throw_errno(err, "light " + spec.id + ": cannot request the line", where);
-      }
+      request_output(line, "light " + spec.id, spec.ref.active_low, spec.initial_on, where);
       lights_.push_back({spec.id, where, line, spec.initial_on});
     }
   } catch (...) {

@@ -7,6 +7,7 @@
 #include "capture/sim_turntable.hpp"
 #include "core/error.hpp"
 #include "devices/gpio_lights.hpp"
+#include "devices/gpio_stepper.hpp"
 #include "devices/usb_turntable.hpp"
 
 namespace fest::devices {
@@ -23,10 +24,11 @@ std::string scheme_of(const std::string& uri) {
 }  // namespace
 
 std::unique_ptr<capture::Turntable> open_turntable(const std::string& uri) {
-  const capture::DeviceUri d = capture::parse_device_uri(uri);
+  const capture::DeviceUri d = capture::parse_device_uri(uri.rfind("gpio-stepper:", 0) == 0 ? "gpio-stepper:" : uri);
   if (d.scheme == "usb") return std::make_unique<UsbTurntable>(parse_usb_uri(uri));
+  if (d.scheme == "gpio-stepper") return std::make_unique<GpioStepper>(parse_gpio_stepper_uri(uri));
   if (d.scheme == "sim") return std::make_unique<capture::SimTurntable>(capture::parse_sim_turntable_uri(uri));
-  throw usage_error("turntable URI scheme '{}:' is not supported by this build (usb:, sim:)", d.scheme);
+  throw usage_error("turntable URI scheme '{}:' is not supported by this build (usb:, gpio-stepper:, sim:)", d.scheme);
 }
 
 std::unique_ptr<capture::LightBank> open_lights(const std::vector<LightConfig>& lights) {

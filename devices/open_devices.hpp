@@ -3,6 +3,7 @@
 // capture). specs/capture.md §2.2 lists the URIs.
 //
 //   open_turntable("usb:1209:0001#SN7")  TTP/1 over libusb       (devices/usb_turntable)
+//   open_turntable("gpio-stepper:chip=gpiochip0,step=17,dir=27,steps=3200")  (devices/gpio_stepper)
 //   open_turntable("sim:speed=90")       in-process simulator    (lib/capture/sim_turntable)
 //   open_lights({{"L0", "gpio:chip=gpiochip0,line=GPIO17", false}, ...})
 //   open_lights({{"L0", "sim:", false}, ...})
@@ -25,7 +26,8 @@ struct LightConfig {
   bool active_low = false;  // or ",active_low" in the URI
 };
 
-// usb:, sim: (gpio-stepper: is not built: usage_error naming the schemes that are).
+// usb: (TTP/1 over libusb), gpio-stepper: (step/dir driver on GPIO lines), sim:;
+// usage_error for other schemes.
 std::unique_ptr<capture::Turntable> open_turntable(const std::string& uri);
 
 // All lights of one bank must be of one kind, all gpio: or all sim: (a usage_error

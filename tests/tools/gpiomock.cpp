@@ -10,10 +10,12 @@
 // request is answered with a fd on a second emulated node /dev/gpiochip0-handleK whose
 // handler takes GPIOHANDLE_SET/GET_LINE_VALUES. Environment:
 //   GPIOMOCK=1                 build the testbed (cleared at once, so children do not)
-//   GPIOMOCK_LOG=FILE          append "request|set OFFSET NAME LEVEL" per request and write,
+//   GPIOMOCK_LOG=FILE          append "request|request-input|set OFFSET NAME LEVEL" per event,
 //                              LEVEL being the physical pin level (active-low applied)
 //   GPIOMOCK_BUSY=N:CONSUMER   line N is already held by CONSUMER (request -> EBUSY)
 //   GPIOMOCK_DENY=1            the chip refuses every ioctl with EACCES
+//   GPIOMOCK_HOME=L:S:N        input line L (a home switch) reads high once output line S
+//                              (a STEP line) has had N rising edges
 
 #include <fcntl.h>
 #include <ftw.h>
@@ -35,13 +37,14 @@ namespace {
 constexpr unsigned kLines = 32;
 // Line handles are fds on emulated nodes /dev/gpiochip0-handleK, one node per request;
 // umockdev needs ~25 ms per node to set up, so there are only a few.
-constexpr unsigned kSlots = 4;
+constexpr unsigned kSlots = 6;
 
 // Plain zero-initialised data only: the constructor below may run before this file's
 // dynamic initialisers, which would reset anything with a constructor.
 struct Line {
-  bool requested, active_low, busy;
+  bool requested, active_low, busy, input;
   int level;  // physical
+  unsigned rising_edges;
   char consumer[32];
 };
 
@@ -50,6 +53,9 @@ unsigned g_slot_line[kSlots];
 unsigned g_slots_used;
 char g_log[4096];
 bool g_deny;
+// GPIOMOCK_HOME=LINE:STEPLINE:N -- input LINE reads high once STEPLINE had N rising edges.
+bool g_home;
+unsigned g_home_line, g_home_step_line, g_home_after;
 UMockdevTestbed* g_testbed;
 char g_root[4096];
 
@@ -108,7 +114,8 @@ gboolean chip_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer) {
     auto* req = arg_data<gpiohandle_request>(client, &d);
     if (!req) return FALSE;
     const unsigned off = req->lineoffsets[0];
-    if (req->lines != 1 || off >= kLines || !(req->flags & GPIOHANDLE_REQUEST_OUTPUT)) {
+    const bool input = req->flags & GPIOHANDLE_REQUEST_INPUT;
+    if (req->lines != 1 || off >= kLines || (!input && !(req->flags & GPIOHANDLE_REQUEST_OUTPUT))) {
       umockdev_ioctl_client_complete(client, -1, EINVAL);
       return TRUE;
     }
@@ -120,8 +127,13 @@ gboolean chip_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer) {
     l.requested = true;
     l.active_low = req->flags & GPIOHANDLE_REQUEST_ACTIVE_LOW;
     std::snprintf(l.consumer, sizeof l.consumer, "%s", req->consumer_label);
-    l.level = (req->default_values[0] ? 1 : 0) ^ (l.active_low ? 1 : 0);
-    log_event("request", off);
+    l.input = input;
+    if (input) {
+      log_event("request-input", off);
+    } else {
+      l.level = (req->default_values[0] ? 1 : 0) ^ (l.active_low ? 1 : 0);
+      log_event("request", off);
+    }
     if (g_slots_used == kSlots) {
       umockdev_ioctl_client_complete(client, -1, ENOMEM);
       return TRUE;
@@ -147,10 +159,13 @@ gboolean handle_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer 
   auto* data = arg_data<gpiohandle_data>(client, &d);
   if (!data) return FALSE;
   Line& l = g_lines[off];
-  if (request == GPIOHANDLE_SET_LINE_VALUES_IOCTL) {
-    l.level = (data->values[0] ? 1 : 0) ^ (l.active_low ? 1 : 0);
+  if (request == GPIOHANDLE_SET_LINE_VALUES_IOCTL && !l.input) {
+    const int level = (data->values[0] ? 1 : 0) ^ (l.active_low ? 1 : 0);
+    if (level == 1 && l.level == 0) ++l.rising_edges;
+    l.level = level;
     log_event("set", off);
   } else if (request == GPIOHANDLE_GET_LINE_VALUES_IOCTL) {
+    if (l.input && g_home && off == g_home_line) l.level = g_lines[g_home_step_line].rising_edges >= g_home_after ? 1 : 0;
     data->values[0] = std::uint8_t(l.level ^ (l.active_low ? 1 : 0));
   } else {
     return FALSE;
@@ -198,6 +213,9 @@ __attribute__((constructor)) void gpiomock_init() {
   sigaddset(&stop, SIGTERM);
   sigaddset(&stop, SIGHUP);
   pthread_sigmask(SIG_BLOCK, &stop, &old);
+  if (const char* home = std::getenv("GPIOMOCK_HOME"))
+    g_home = std::sscanf(home, "%u:%u:%u", &g_home_line, &g_home_step_line, &g_home_after) == 3 && g_home_line < kLines &&
+             g_home_step_line < kLines;
   g_testbed = umockdev_testbed_new();
   std::string desc =
       "P: /devices/platform/gpio-mock/gpiochip0\nN: gpiochip0\nE: SUBSYSTEM=gpio\nE: DEVNAME=/dev/gpiochip0\n"

@@ -11,6 +11,7 @@
 #include "capture/sim_turntable.hpp"
 #include "core/error.hpp"
 #include "devices/gpio_lights.hpp"
+#include "devices/gpio_stepper.hpp"
 #include "devices/open_devices.hpp"
 #include "devices/usb_turntable.hpp"
 
@@ -100,6 +101,26 @@ TEST(DevicesUri, Usb) {
   EXPECT_EQ(s.serial, "SN1");
   for (const char* bad : {"usb:1209", "usb:12g9:0001", "usb:12090:1", "usb:1209:0001#", "sim:"})
     EXPECT_EQ(status_of([&] { parse_usb_uri(bad); }), Status::usage) << bad;
+}
+
+TEST(DevicesUri, GpioStepper) {
+  const GpioStepperConfig c =
+      parse_gpio_stepper_uri("gpio-stepper:chip=gpiochip1,step=17,dir=GPIO27,en=22,home=23,steps=51200,speed=1500,accel=900,home_active_low");
+  EXPECT_EQ(c.chip, "gpiochip1");
+  EXPECT_EQ(c.step, "17");
+  EXPECT_EQ(c.dir, "GPIO27");
+  EXPECT_EQ(c.en, "22");
+  EXPECT_EQ(c.home, "23");
+  EXPECT_EQ(c.steps_per_rev, 51200u);
+  EXPECT_EQ(c.max_speed, 1500u);
+  EXPECT_EQ(c.max_accel, 900u);
+  EXPECT_TRUE(c.home_active_low);
+  EXPECT_FALSE(c.en_active_high);
+  for (const char* bad : {"gpio-stepper:step=1", "gpio-stepper:dir=1", "gpio-stepper:step=1,dir=2,steps=-4",
+                          "gpio-stepper:step=1,dir=2,speed=fast", "gpio-stepper:step=1,dir=2,x=1", "gpio-stepper:step=1,dir=2,invert"})
+    EXPECT_EQ(status_of([&] { parse_gpio_stepper_uri(bad); }), Status::usage) << bad;
+  // No such chip on a test machine: the backend's ENOENT path through the factory.
+  EXPECT_EQ(status_of([] { open_turntable("gpio-stepper:chip=gpiochip97,step=1,dir=2"); }), Status::device_not_found);
 }
 
 TEST(DevicesUri, Gpio) {
