@@ -1,5 +1,7 @@
 #include "devices/gpio_stepper.hpp"
 
+#include <pthread.h>
+#include <sched.h>
 #include <time.h>
 
 #include <cerrno>
@@ -151,7 +153,14 @@ void GpioStepper::pulse(int direction) {
   position_ += direction;
 }
 
+void GpioStepper::make_realtime() {
+  sched_param p{};
+  p.sched_priority = 50;
+  if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &p) != 0) realtime_ = false;
+}
+
 void GpioStepper::run_move(std::int32_t target, double speed) {
+  make_realtime();
   try {
     const std::int64_t distance = std::int64_t(target) - position_.load();
     const int direction = distance >= 0 ? 1 : -1;
@@ -184,6 +193,7 @@ void GpioStepper::run_move(std::int32_t target, double speed) {
 }
 
 void GpioStepper::run_home(bool clockwise, double speed) {
+  make_realtime();
   try {
     const int direction = clockwise ? -1 : 1;
     const std::uint32_t limit = std::uint32_t(std::ceil(1.1 * config_.steps_per_rev));

@@ -56,7 +56,12 @@ class GpioStepper : public capture::Turntable {
   void set_zero() override;
   void enable(bool on) override;
 
+  // False once a step train ran without SCHED_FIFO (not permitted: no CAP_SYS_NICE or
+  // RLIMIT_RTPRIO), so the tool can warn that step timing may jitter.
+  bool realtime() const { return realtime_; }
+
  private:
+  void make_realtime();
   struct Lines;
   void halt(bool immediate);
   void run_move(std::int32_t target, double speed);
@@ -69,7 +74,8 @@ class GpioStepper : public capture::Turntable {
   std::thread worker_;
   std::mutex mutex_;  // guards everything below and the line writes
   std::atomic<std::int32_t> position_{0};
-  std::atomic<int> stop_request_{0};  // 0 none, 1 decelerate, 2 immediate
+  std::atomic<int> stop_request_{0};
+  std::atomic<bool> realtime_{true};  // 0 none, 1 decelerate, 2 immediate
   std::int32_t target_ = 0;
   capture::MotionState state_ = capture::MotionState::idle;
   bool homed_ = false, enabled_ = true;

@@ -113,6 +113,26 @@ device --product "Some other gadget"
 tt info
 expect_tool_error 5 'not a TTP/1 device'
 
+case_ "device node not accessible -> exit 8 naming the udev rule and the plugdev group"
+# The replayed node is made unreadable; root ignores file modes, so as root the case
+# runs as nobody (setpriv), on copies of the replay files that nobody can read.
+device "$INFO"
+pdir=$(mktemp -d "${TMPDIR:-/tmp}/fest-ttp-perm.XXXXXX")
+chmod 755 "$pdir"; cp "$WORK/tt.umockdev" "$WORK/tt.pcap" "$pdir"/; chmod 644 "$pdir"/*
+as_user=()
+if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null 2>&1; then
+  as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups --inh-caps=-all --bounding-set=-all env HOME=/tmp TMPDIR=/tmp)
+fi
+if [ "$(id -u)" != 0 ] || [ ${#as_user[@]} -gt 0 ]; then
+  "${as_user[@]}" umockdev-run --device "$pdir/tt.umockdev" --pcap "$sysfs=$pdir/tt.pcap" -- \
+    sh -c 'chmod 000 "$UMOCKDEV_DIR/dev/bus/usb/001/002" && exec "$0" --device usb: info' "$FEST_BIN/turntable" >"$out" 2>"$err"
+  rc=$?
+  expect_tool_error 8 'permission denied.*70-ttp.rules.*plugdev group'
+else
+  echo "note: permission case not run (root without setpriv)"
+fi
+rm -rf "$pdir"
+
 case_ "wrong serial -> exit 5 naming the serials found"
 device
 umockdev-run --device "$WORK/tt.umockdev" --pcap "$sysfs=$WORK/tt.pcap" -- \

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "devices/open_devices.hpp"
+#include "devices/gpio_stepper.hpp"
 #include "devices/station_lights.hpp"
 #include "devices/usb_turntable.hpp"
 
@@ -228,6 +230,16 @@ int main(int argc, char** argv) {
   return fest::cli::run(app, argc, argv, [&] {
     if (*list) return cmd_list(a);
     const std::unique_ptr<capture::Turntable> t = devices::open_turntable(device_uri(a));
+    // A host-generated step train without real-time priority may jitter (spec §2.4).
+    // Said after a command that worked: a failure keeps its one diagnostic line.
+    struct JitterWarning {
+      capture::Turntable* t;
+      bool quiet;
+      ~JitterWarning() {
+        if (auto* g = dynamic_cast<devices::GpioStepper*>(t); g && !g->realtime() && !quiet && std::uncaught_exceptions() == 0)
+          fest::warn("turntable", "SCHED_FIFO not permitted: step timing may jitter (grant CAP_SYS_NICE or an rtprio limit)");
+      }
+    } jitter_warning{t.get(), common.quiet};
     if (*info) return cmd_info(a, *t);
     if (*status) return cmd_status(a, *t);
     if (*home) return cmd_home(a, *t);
