@@ -1,6 +1,5 @@
 #include "capture/step_profile.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"

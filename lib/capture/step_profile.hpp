@@ -13,9 +13,8 @@ namespace fest::capture {
 // steps (the first at t = 0). usage_error for speed or acceleration <= 0.
 std::vector<double> trapezoid_step_times(std::uint32_t steps, double max_speed, double accel);
 
-// Duration of such a move (time of the last pulse plus the interval the motor needs to
-// complete that step at rest speed): steps/v + v/a when the cruise speed is reached,
-// 2 sqrt(steps/a) otherwise.
+// Duration of such a move, the time the ideal profile takes to cover all `steps`:
+// steps/v + v/a when the cruise speed is reached, 2 sqrt(steps/a) otherwise.
 double trapezoid_duration(std::uint32_t steps, double max_speed, double accel);
 
 }  // namespace fest::capture
