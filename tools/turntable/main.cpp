@@ -159,6 +159,9 @@ int cmd_move(const Args& a, capture::Turntable& t) {
   capture::MotionPolicy p;
   p.backlash_deg = a.backlash_deg;
   p.speed = speed_steps(a.speed_deg_s, info.steps_per_rev);
+  // Move timeout = distance / speed + acceleration time + 2 s (spec §2.3).
+  const double v = p.speed ? p.speed : info.max_speed;
+  if (info.max_accel > 0) p.extra_timeout_s += v / info.max_accel;
   double target = a.degrees;
   if (a.relative || a.approach == "shortest") {
     const double here = capture::angle_for_steps(t.status().position, info.steps_per_rev);
