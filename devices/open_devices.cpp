@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "devices/gpio_lights.hpp"
 #include "devices/gpio_stepper.hpp"
+#include "devices/usb_aux_lights.hpp"
 #include "devices/usb_turntable.hpp"
 
 namespace fest::devices {
@@ -41,11 +42,11 @@ std::unique_ptr<capture::LightBank> open_lights(const std::vector<LightConfig>& 
   std::string kind;
   for (const LightConfig& l : lights) {
     const std::string scheme = scheme_of(l.uri);
-    if (scheme != "gpio" && scheme != "sim")
-      throw usage_error("light {}: URI scheme '{}:' is not supported by this build (gpio:, sim:)", l.id, scheme);
+    if (scheme != "gpio" && scheme != "sim" && scheme != "usb-aux")
+      throw usage_error("light {}: URI scheme '{}:' is not supported by this build (gpio:, usb-aux:, sim:)", l.id, scheme);
     if (!kind.empty() && scheme != kind)
-      throw usage_error("light {} is {}: but light {} is {}: -- one bank must be all gpio: or all sim:", l.id, scheme,
-                        lights.front().id, kind);
+      throw usage_error("light {} is {}: but light {} is {}: -- one bank must be all gpio:, all usb-aux: or all sim:", l.id,
+                        scheme, lights.front().id, kind);
     kind = scheme;
   }
   for (const std::string& id : initially_on)
@@ -65,6 +66,14 @@ std::unique_ptr<capture::LightBank> open_lights(const std::vector<LightConfig>& 
     for (const LightConfig& l : lights)
       if (lit(l.id)) bank->set(l.id, true);
     return bank;
+  }
+  if (kind == "usb-aux") {
+    std::vector<UsbAuxLightSpec> specs;
+    for (const LightConfig& l : lights) {
+      if (l.active_low) throw usage_error("light {}: active_low has no meaning for a usb-aux light", l.id);
+      specs.push_back({l.id, parse_usb_aux_uri(l.uri), lit(l.id)});
+    }
+    return std::make_unique<UsbAuxLightBank>(specs);
   }
   std::vector<GpioLightSpec> specs;
   for (const LightConfig& l : lights) {

@@ -6,6 +6,7 @@
 //   open_turntable("gpio-stepper:chip=gpiochip0,step=17,dir=27,steps=3200")  (devices/gpio_stepper)
 //   open_turntable("sim:speed=90")       in-process simulator    (lib/capture/sim_turntable)
 //   open_lights({{"L0", "gpio:chip=gpiochip0,line=GPIO17", false}, ...})
+//   open_lights({{"L0", "usb-aux:0", false}, ...})    aux outputs of a TTP/1 controller
 //   open_lights({{"L0", "sim:", false}, ...})
 //
 // Errors are fest::Error with DESIGN.md's statuses (2 for a bad URI, 5-8 from devices).
@@ -30,8 +31,8 @@ struct LightConfig {
 // usage_error for other schemes.
 std::unique_ptr<capture::Turntable> open_turntable(const std::string& uri);
 
-// All lights of one bank must be of one kind, all gpio: or all sim: (a usage_error
-// otherwise). Every light starts off.
+// All lights of one bank must be of one kind, all gpio:, all usb-aux: (one controller)
+// or all sim: (a usage_error otherwise). Every light starts off.
 std::unique_ptr<capture::LightBank> open_lights(const std::vector<LightConfig>& lights);
 
 // The same, with the lights named in `initially_on` requested lit (no off->on glitch for

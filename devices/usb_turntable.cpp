@@ -204,7 +204,7 @@ struct UsbTurntable::Handle {
   }
 };
 
-UsbTurntable::UsbTurntable(const UsbSelector& sel) : usb_(std::make_unique<Handle>()) {
+UsbTurntable::UsbTurntable(const UsbSelector& sel, bool claim_interface) : usb_(std::make_unique<Handle>()) {
   std::vector<Error> problems;
   std::vector<Candidate> found = scan(usb_->context.ctx, sel, problems);
   std::vector<std::string> serials;
@@ -236,9 +236,11 @@ UsbTurntable::UsbTurntable(const UsbSelector& sel) : usb_(std::make_unique<Handl
   usb_->handle = found[0].handle;
   serial_ = found[0].serial;
   where_ = found[0].where;
-  const int rc = libusb_claim_interface(usb_->handle, 0);
-  if (rc < 0) throw_usb(rc, "claiming interface 0", where_);
-  usb_->claimed = true;
+  if (claim_interface) {
+    const int rc = libusb_claim_interface(usb_->handle, 0);
+    if (rc < 0) throw_usb(rc, "claiming interface 0", where_);
+    usb_->claimed = true;
+  }
   info_ = ttp1::decode_info(request_in(ttp1::get_info(), "GET_INFO"));
 }
 
@@ -304,6 +306,7 @@ void UsbTurntable::stop(bool immediate) { request_out(ttp1::stop(immediate), "ST
 void UsbTurntable::home(bool clockwise, std::uint32_t speed) { request_out(ttp1::home(clockwise, speed), "HOME"); }
 void UsbTurntable::set_zero() { request_out(ttp1::set_zero(), "SET_ZERO"); }
 void UsbTurntable::enable(bool on) { request_out(ttp1::enable(on), "ENABLE"); }
+void UsbTurntable::set_aux(std::uint16_t mask, std::uint16_t values) { request_out(ttp1::set_aux(mask, values), "SET_AUX"); }
 void UsbTurntable::wait_ms(unsigned ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
 
 }  // namespace fest::devices

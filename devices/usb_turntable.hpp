@@ -39,8 +39,11 @@ std::vector<UsbTurntableListing> list_usb_turntables(const UsbSelector& sel);
 
 class UsbTurntable : public capture::Turntable {
  public:
-  // Opens the device, checks iProduct and reads GET_INFO (cached for info()).
-  explicit UsbTurntable(const UsbSelector& sel);
+  // Opens the device, checks iProduct and reads GET_INFO (cached for info()). Without
+  // claim_interface the handle only sends control requests to the device recipient,
+  // which needs no claim, so a light bank on the aux outputs can share the controller
+  // with the process's turntable handle.
+  explicit UsbTurntable(const UsbSelector& sel, bool claim_interface = true);
   ~UsbTurntable() override;
   UsbTurntable(const UsbTurntable&) = delete;
   UsbTurntable& operator=(const UsbTurntable&) = delete;
@@ -55,6 +58,8 @@ class UsbTurntable : public capture::Turntable {
   void enable(bool on) override;
 
   const capture::ttp1::Info& ttp_info() const { return info_; }
+  // SET_AUX: the aux outputs in `mask` take the bits of `values`.
+  void set_aux(std::uint16_t mask, std::uint16_t values);
 
  private:
   struct Handle;

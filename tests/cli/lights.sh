@@ -45,7 +45,7 @@ cat >"$WORK/mixed.json" <<'JSON'
 JSON
 run lights --station "$WORK/mixed.json" only A
 expect_clean_failure 2 lights
-expect_stderr_has 'all gpio: or all sim:'
+expect_stderr_has 'one bank must be all gpio:, all usb-aux: or all sim:'
 
 case_ "unknown key inside a light: bad input naming key and JSON path"
 cat >"$WORK/typo.json" <<'JSON'
@@ -69,7 +69,7 @@ run lights --station "$WORK/low.json" list; expect_clean_failure 3 lights
 case_ "bad light URIs: usage errors"
 echo '{"lights": [{"id": "A", "uri": "gpio:chip=gpiochip0"}]}' >"$WORK/u1.json"
 run lights --station "$WORK/u1.json" on A; expect_clean_failure 2 lights
-echo '{"lights": [{"id": "A", "uri": "usb-aux:3"}]}' >"$WORK/u2.json"
+echo '{"lights": [{"id": "A", "uri": "exec:lampctl on"}]}' >"$WORK/u2.json"
 run lights --station "$WORK/u2.json" on A; expect_clean_failure 2 lights
 echo '{"lights": [{"id": "A", "uri": "sim:speed=3"}]}' >"$WORK/u3.json"
 run lights --station "$WORK/u3.json" on A; expect_clean_failure 2 lights

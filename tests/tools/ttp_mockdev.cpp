@@ -14,7 +14,8 @@
 //   status:pos=N,target=N,state=idle|moving|homing|fault,homed=0|1,switch=0|1,
 //          stalled=0|1,enabled=0|1,fault=N,seq=N           GET_STATUS and its reply
 //   move_abs:TARGET[,speed=STEPS_S]  move_rel:DELTA[,speed=]  home[:cw][,speed=]
-//   stop[:now]  zero  enable:0|1
+//   stop[:now]  zero  enable:0|1  set_aux:mask=M,values=V
+//   (info also takes aux=N: has_aux with N outputs)
 // suffixes (comma-separated, on any exchange):
 //   !stall     the device answers with a STALL (completion status -32, EPIPE)
 //   !gone      the device is unplugged (completion status -19, ENODEV; 'C' record only)
@@ -179,11 +180,11 @@ Exchange parse_exchange(const std::string& spec) {
   if (kind == "info") {
     x = from_transfer(ttp1::get_info());
     Bytes r{1, 0};                                                       // proto 1.0
-    le(r, num(o, "home", 1) ? 1 : 0, 2);                                 // flags: b0 has_home
+    le(r, (num(o, "home", 1) ? 1 : 0) | (num(o, "aux", 0) ? 4 : 0), 2);  // flags: b0 has_home, b2 has_aux
     le(r, std::uint32_t(num(o, "steps", 3200)), 4);
     le(r, std::uint32_t(num(o, "speed", 1600)), 4);
     le(r, std::uint32_t(num(o, "accel", 3200)), 4);
-    r.push_back(0);                                                      // n_aux
+    r.push_back(std::uint8_t(num(o, "aux", 0)));                         // n_aux
     r.insert(r.end(), 3, 0);                                             // reserved
     const std::string name = o.count("name") ? o.at("name") : "fest mock turntable";
     for (std::size_t k = 0; k < 32; ++k) r.push_back(k < name.size() ? std::uint8_t(name[k]) : 0);
@@ -211,6 +212,8 @@ Exchange parse_exchange(const std::string& spec) {
     x = from_transfer(ttp1::home(head == "cw", speed));
   } else if (kind == "stop") {
     x = from_transfer(ttp1::stop(head == "now"));
+  } else if (kind == "set_aux") {
+    x = from_transfer(ttp1::set_aux(std::uint16_t(num(o, "mask", 0)), std::uint16_t(num(o, "values", 0))));
   } else if (kind == "zero") {
     x = from_transfer(ttp1::set_zero());
   } else if (kind == "enable") {

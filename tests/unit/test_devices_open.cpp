@@ -13,6 +13,7 @@
 #include "devices/gpio_lights.hpp"
 #include "devices/gpio_stepper.hpp"
 #include "devices/open_devices.hpp"
+#include "devices/usb_aux_lights.hpp"
 #include "devices/usb_turntable.hpp"
 
 namespace {
@@ -77,7 +78,10 @@ TEST(DevicesOpen, SimLightsStartOffAndHonourInitiallyOn) {
 TEST(DevicesOpen, LightKindsMustNotMix) {
   EXPECT_EQ(status_of([] { open_lights({{"A", "sim:", false}, {"B", "gpio:line=3", false}}); }), Status::usage);
   EXPECT_EQ(status_of([] { open_lights({}); }), Status::usage);
-  EXPECT_EQ(status_of([] { open_lights({{"A", "usb-aux:1", false}}); }), Status::usage);
+  EXPECT_EQ(status_of([] { open_lights({{"A", "exec:lampctl", false}}); }), Status::usage);
+  EXPECT_EQ(status_of([] { open_lights({{"A", "usb-aux:1", false}, {"B", "sim:", false}}); }), Status::usage);
+  EXPECT_EQ(status_of([] { open_lights({{"A", "usb-aux:1", false}, {"B", "usb-aux:1", false}}); }), Status::usage);
+  EXPECT_EQ(status_of([] { open_lights({{"A", "usb-aux:1", true}}); }), Status::usage);  // active_low: meaningless
   EXPECT_EQ(status_of([] { open_lights({{"A", "sim:", false}}, {"Z"}); }), Status::usage);
   EXPECT_EQ(status_of([] { open_lights({{"A", "sim:x=1", false}}); }), Status::usage);
 }
@@ -121,6 +125,18 @@ TEST(DevicesUri, GpioStepper) {
     EXPECT_EQ(status_of([&] { parse_gpio_stepper_uri(bad); }), Status::usage) << bad;
   // No such chip on a test machine: the backend's ENOENT path through the factory.
   EXPECT_EQ(status_of([] { open_turntable("gpio-stepper:chip=gpiochip97,step=1,dir=2"); }), Status::device_not_found);
+}
+
+TEST(DevicesUri, UsbAux) {
+  UsbAuxRef r = parse_usb_aux_uri("usb-aux:3");
+  EXPECT_EQ(r.aux, 3u);
+  EXPECT_EQ(r.device.vid, 0x1209);
+  r = parse_usb_aux_uri("usb-aux:15,usb=16c0:05dc#D1");
+  EXPECT_EQ(r.aux, 15u);
+  EXPECT_EQ(r.device.pid, 0x05dc);
+  EXPECT_EQ(r.device.serial, "D1");
+  for (const char* bad : {"usb-aux:", "usb-aux:16", "usb-aux:x", "usb-aux:1,dev=1", "usb-aux:1,usb=1209"})
+    EXPECT_EQ(status_of([&] { parse_usb_aux_uri(bad); }), Status::usage) << bad;
 }
 
 TEST(DevicesUri, Gpio) {

@@ -21,6 +21,7 @@
 #include "devices/gpio_lights.hpp"
 #include "devices/open_devices.hpp"
 #include "devices/station_lights.hpp"
+#include "devices/usb_aux_lights.hpp"
 
 namespace {
 
@@ -103,8 +104,11 @@ int cmd_list(const std::vector<LightConfig>& lights) {
       state = devices::probe_gpio_line(ref);
     } else if (scheme == "sim") {
       state = "off";
+    } else if (scheme == "usb-aux") {
+      devices::parse_usb_aux_uri(l.uri);
+      state = "unknown";  // TTP/1 has no request that reads the aux outputs back
     } else {
-      throw usage_error("light {}: URI scheme '{}:' is not supported by this build (gpio:, sim:)", l.id, scheme);
+      throw usage_error("light {}: URI scheme '{}:' is not supported by this build (gpio:, usb-aux:, sim:)", l.id, scheme);
     }
     text += csv_field(l.id) + "," + csv_field(l.uri) + "," + csv_field(state) + "\n";
   }
