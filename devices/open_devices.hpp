@@ -23,7 +23,7 @@ namespace fest::devices {
 // One entry of a station's "lights" array (the keys a backend needs).
 struct LightConfig {
   std::string id;
-  std::string uri;          // "gpio:chip=...,line=..." or "sim:"
+  std::string uri;          // "gpio:chip=...,line=...", "usb-aux:N" or "sim:"
   bool active_low = false;  // or ",active_low" in the URI
 };
 
