@@ -183,7 +183,8 @@ double quadratic_root(double c, double r, double q) {
 // positive); otherwise the caller falls back to the bracket search.
 bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& entry, double cap, int& evals,
                     ExitResult& out) {
-  const Vec3 a0 = path.apply_A(entry.v), j0 = path.apply_A(a0);
+  Vec3 a0, j0;
+  path.apply_A2(entry.v, a0, j0);
   const Eigen::Vector4d q = g.bary_rate(a0), jr = g.bary_rate(j0);
   const double speed = entry.v.norm(), jerk = j0.norm();
   const double tiny = 1e-13 * g.v_max / g.h_min;  // a rate of beta at round-off
@@ -223,9 +224,14 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
   }
   if (face < 0 || !(tau < cap)) return false;
   for (int it = 0; it < 3; ++it) {
-    const Sample s = sample(g, path, tau, evals);
+    Sample s;
+    Vec3 a;
+    s.tau = tau;
+    path.eval(tau, s.x, s.v, a);
+    s.beta = g.bary(s.x);
+    s.rate = g.bary_rate(s.v);
+    ++evals;
     if (!s.x.allFinite()) return false;
-    const Vec3 a = path.apply_A(s.v);
     const double f = s.beta[face], df = s.rate[face], d2f = g.bary_rate(a)[face];
     if (!(df < 0)) return false;
     double delta = -f / df;
