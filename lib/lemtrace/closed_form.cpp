@@ -15,6 +15,22 @@ double psi(double lambda, double s) {
 
 namespace {
 
+// sin and cos of a small angle by their Taylor series (|t| <= 0.5: the first omitted
+// term is below 2e-20 relative), much cheaper than the library's sincos; the half angle
+// of one cell's rotation is nearly always this small. Larger angles use sincos.
+inline void small_sincos(double t, double* sn, double* cs) {
+  if (!(std::abs(t) <= 0.5)) {
+    sincos(t, sn, cs);
+    return;
+  }
+  const double u = t * t;
+  // Horner in t^2 with the coefficients 1/n! (sin: odd n to 15, cos: even n to 16).
+  *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880 + u * (-1.0 / 39916800 +
+            u * (1.0 / 6227020800 + u * (-1.0 / 1307674368000))))))));
+  *cs = 1 + u * (-0.5 + u * (1.0 / 24 + u * (-1.0 / 720 + u * (1.0 / 40320 + u * (-1.0 / 3628800 +
+            u * (1.0 / 479001600 + u * (-1.0 / 87178291200 + u * (1.0 / 20922789888000))))))));
+}
+
 // e^{l s} and psi(l, s) from one expm1.
 inline void exp_and_psi(double l, double s, double& e, double& p) {
   const double ls = l * s;
@@ -55,7 +71,8 @@ double CellPath::rate() const {
     case CellType::normal_real:
       return std::max({std::abs(rec_.lam[0]), std::abs(rec_.lam[1]), std::abs(rec_.lam[2])});
     case CellType::normal_complex:
-      return std::max(std::hypot(rec_.lam[0], rec_.lam[1]), std::abs(rec_.lam[2]));
+      // |alpha + i beta| (no over/underflow concern at the rates of a cell: no hypot call)
+      return std::max(std::sqrt(rec_.lam[0] * rec_.lam[0] + rec_.lam[1] * rec_.lam[1]), std::abs(rec_.lam[2]));
     case CellType::parallel:
       return std::abs(rec_.c[1]);
     case CellType::extraordinary: {
@@ -98,7 +115,39 @@ Vec3 CellPath::apply_A(const Vec3& w) const {
   return Vec3::Zero();
 }
 
-void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
+void CellPath::apply_A2(const Vec3& w, Vec3& Aw, Vec3& AAw) const {
+  if (rec_.type != CellType::normal_real && rec_.type != CellType::normal_complex) {
+    Aw = apply_A(w);
+    AAw = apply_A(Aw);
+    return;
+  }
+  const double* S = rec_.S;
+  const double* Si = rec_.Sinv;
+  double z[3], y1[3], y2[3];
+  for (int i = 0; i < 3; ++i) z[i] = Si[3 * i] * w[0] + Si[3 * i + 1] * w[1] + Si[3 * i + 2] * w[2];
+  auto lambda = [&](const double* in, double* out) {
+    if (rec_.type == CellType::normal_real) {
+      for (int i = 0; i < 3; ++i) out[i] = rec_.lam[i] * in[i];
+    } else {
+      const double a = rec_.lam[0], b = rec_.lam[1];
+      out[0] = a * in[0] + b * in[1];
+      out[1] = -b * in[0] + a * in[1];
+      out[2] = rec_.lam[2] * in[2];
+    }
+  };
+  lambda(z, y1);
+  lambda(y1, y2);
+  for (int i = 0; i < 3; ++i) {
+    Aw[i] = dir_ * (S[3 * i] * y1[0] + S[3 * i + 1] * y1[1] + S[3 * i + 2] * y1[2]);
+    AAw[i] = dir_ * dir_ * (S[3 * i] * y2[0] + S[3 * i + 1] * y2[1] + S[3 * i + 2] * y2[2]);
+  }
+}
+
+void CellPath::eval(double tau, Vec3& x, Vec3& v) const { eval_impl(tau, x, v, nullptr); }
+
+void CellPath::eval(double tau, Vec3& x, Vec3& v, Vec3& a) const { eval_impl(tau, x, v, &a); }
+
+void CellPath::eval_impl(double tau, Vec3& x, Vec3& v, Vec3* acc) const {
   const double s = dir_ * tau;
   switch (rec_.type) {
     case CellType::normal_real: {
@@ -114,13 +163,18 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
         x[r] = rec_.S[3 * r] * z[0] + rec_.S[3 * r + 1] * z[1] + rec_.S[3 * r + 2] * z[2];
         v[r] = dir_ * (rec_.S[3 * r] * dz[0] + rec_.S[3 * r + 1] * dz[1] + rec_.S[3 * r + 2] * dz[2]);
       }
+      if (acc) {  // a = dir A v = S Lambda dz (dir^2 = 1)
+        const double d2[3] = {rec_.lam[0] * dz[0], rec_.lam[1] * dz[1], rec_.lam[2] * dz[2]};
+        for (int r = 0; r < 3; ++r)
+          (*acc)[r] = rec_.S[3 * r] * d2[0] + rec_.S[3 * r + 1] * d2[1] + rec_.S[3 * r + 2] * d2[2];
+      }
       return;
     }
     case CellType::normal_complex: {
       const double a = rec_.lam[0], b = rec_.lam[1], l3 = rec_.lam[2];
       // One sincos of the half angle gives sin, cos and cos - 1 without cancellation.
       double sh, ch;
-      sincos(0.5 * b * s, &sh, &ch);
+      small_sincos(0.5 * b * s, &sh, &ch);
       const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
       const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
       const double ea = 1.0 + em1;
@@ -144,6 +198,11 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
         x[r] = rec_.S[3 * r] * z[0] + rec_.S[3 * r + 1] * z[1] + rec_.S[3 * r + 2] * z[2];
         v[r] = dir_ * (rec_.S[3 * r] * dz[0] + rec_.S[3 * r + 1] * dz[1] + rec_.S[3 * r + 2] * dz[2]);
       }
+      if (acc) {  // a = dir A v = S Lambda dz (dir^2 = 1)
+        const double d2[3] = {a * dz[0] + b * dz[1], -b * dz[0] + a * dz[1], l3 * dz[2]};
+        for (int r = 0; r < 3; ++r)
+          (*acc)[r] = rec_.S[3 * r] * d2[0] + rec_.S[3 * r + 1] * d2[1] + rec_.S[3 * r + 2] * d2[2];
+      }
       return;
     }
     case CellType::parallel: {
@@ -151,6 +210,7 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
       const double mu = rec_.c[1];
       x = x0_ + d * (s0_ * psi(mu, s));
       v = d * (dir_ * s0_ * std::exp(mu * s));
+      if (acc) *acc = apply_A(v);
       return;
     }
     case CellType::extraordinary: {
@@ -163,6 +223,7 @@ void CellPath::eval(double tau, Vec3& x, Vec3& v) const {
       const Eigen::Matrix4d E = M.exp();
       x = E.topLeftCorner<3, 3>() * x0_ + E.topRightCorner<3, 1>();
       v = dir_ * (A * x + b);
+      if (acc) *acc = apply_A(v);
       return;
     }
   }

@@ -19,6 +19,9 @@ class CellPath {
   CellPath(const CellRecord& record, const Vec3& x0, double dir);
   // Position at time tau after entry, and the velocity dx/dtau there.
   void eval(double tau, Vec3& x, Vec3& v) const;
+  // The same and the acceleration a = dir A v there (normal cells: from the eigen-space
+  // derivative eval has at hand, one product with S instead of apply_A's two).
+  void eval(double tau, Vec3& x, Vec3& v, Vec3& a) const;
   Vec3 position(double tau) const {
     Vec3 x, v;
     eval(tau, x, v);
@@ -33,8 +36,13 @@ class CellPath {
   // part: dir * A w. Applied to the velocity it gives the acceleration (x'' = dir A x'),
   // applied twice the jerk. Uses the precomputed eigen form, no transcendental function.
   Vec3 apply_A(const Vec3& w) const;
+  // A w and A A w (dir included in each application) with one change of basis.
+  void apply_A2(const Vec3& w, Vec3& Aw, Vec3& AAw) const;
 
  private:
+  // Position, velocity and, when `a` is given, acceleration at time tau.
+  void eval_impl(double tau, Vec3& x, Vec3& v, Vec3* a) const;
+
   const CellRecord& rec_;
   Vec3 x0_;
   Vec3 z0_;       // S^{-1} x0 (normal cells)

@@ -28,12 +28,12 @@ Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals
 }
 
 // At tau = 0 the closed form is the entry point itself.
-Sample entry_sample(const TetGeometry& g, const CellPath& path) {
+Sample entry_sample(const TetGeometry& g, const CellPath& path, const EntryValues* known) {
   Sample s;
   s.tau = 0;
   s.x = path.entry();
-  s.beta = g.bary(s.x);
-  s.v = path.entry_velocity(g.interpolate(s.beta));
+  s.beta = known ? known->beta : g.bary(s.x);
+  s.v = path.entry_velocity(known ? known->field : g.interpolate(s.beta));
   s.rate = g.bary_rate(s.v);
   return s;
 }
@@ -136,7 +136,7 @@ ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
   r.tau = at.tau;
   r.face = face;
   r.evaluations = evals;
-  Eigen::Vector4d beta = g.bary(at.x);
+  Eigen::Vector4d beta = at.beta;  // every sample holds g.bary(at.x)
   // Snap onto the face: beta_face = 0, the others clamped at 0 and renormalised.
   beta[face] = 0;
   for (int k = 0; k < 4; ++k) beta[k] = std::max(beta[k], 0.0);
@@ -183,7 +183,8 @@ double quadratic_root(double c, double r, double q) {
 // positive); otherwise the caller falls back to the bracket search.
 bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& entry, double cap, int& evals,
                     ExitResult& out) {
-  const Vec3 a0 = path.apply_A(entry.v), j0 = path.apply_A(a0);
+  Vec3 a0, j0;
+  path.apply_A2(entry.v, a0, j0);
   const Eigen::Vector4d q = g.bary_rate(a0), jr = g.bary_rate(j0);
   const double speed = entry.v.norm(), jerk = j0.norm();
   const double tiny = 1e-13 * g.v_max / g.h_min;  // a rate of beta at round-off
@@ -223,9 +224,14 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
   }
   if (face < 0 || !(tau < cap)) return false;
   for (int it = 0; it < 3; ++it) {
-    const Sample s = sample(g, path, tau, evals);
+    Sample s;
+    Vec3 a;
+    s.tau = tau;
+    path.eval(tau, s.x, s.v, a);
+    s.beta = g.bary(s.x);
+    s.rate = g.bary_rate(s.v);
+    ++evals;
     if (!s.x.allFinite()) return false;
-    const Vec3 a = path.apply_A(s.v);
     const double f = s.beta[face], df = s.rate[face], d2f = g.bary_rate(a)[face];
     if (!(df < 0)) return false;
     double delta = -f / df;
@@ -242,7 +248,8 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
     Sample e;
     e.tau = next;
     e.x = s.x + delta * (s.v + 0.5 * delta * a);
-    const Eigen::Vector4d beta = g.bary(e.x);
+    e.beta = g.bary(e.x);
+    const Eigen::Vector4d& beta = e.beta;
     const Eigen::Vector4d rate = g.bary_rate(s.v + delta * a);
     for (int k = 0; k < 4; ++k) {
       if (k == face) continue;
@@ -257,7 +264,8 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
 
 }  // namespace
 
-ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params) {
+ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params,
+                     const EntryValues* entry) {
   int evals = 0;
   const double tauT = g.transit_time();
   const double rate = path.rate();
@@ -299,7 +307,7 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
   // x0 + tau v0 (where a nearly straight path leaves), the later ones double; no step is
   // longer than 0.25/rate, over which the path turns by at most about 0.25 rad, so a
   // face cannot be crossed three times inside one step.
-  Sample prev = entry_sample(g, path);
+  Sample prev = entry_sample(g, path, entry);
   for (int k = 0; k < 4; ++k) prev.beta[k] = std::max(prev.beta[k], 0.0);
   const double delta_cap = rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity();
   if (params.predict) {

@@ -32,6 +32,14 @@ struct ExitResult {
   int evaluations = 0;            // closed-form evaluations (cost measure, Table 9.3)
 };
 
-ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params);
+// What the caller already knows at the entry point (barycentric coordinates and the
+// interpolated field there), so that the search does not compute it again.
+struct EntryValues {
+  Eigen::Vector4d beta;
+  Vec3 field;
+};
+
+ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params,
+                     const EntryValues* entry = nullptr);
 
 }  // namespace fest::lemtrace

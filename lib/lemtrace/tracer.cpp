@@ -103,7 +103,8 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     hops = 0;
 
     const CellPath path(rec, x, dir);
-    const ExitResult e = find_exit(g, path, o.exit);
+    const EntryValues entry{beta, v};
+    const ExitResult e = find_exit(g, path, o.exit, &entry);
     ++line.cells;
     line.evaluations += e.evaluations;
     const double elapsed = std::abs(t - t0);
