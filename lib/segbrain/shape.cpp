@@ -79,6 +79,18 @@ Mask components_near(const Grid& g, const Mask& m, int conn, double min_ml, cons
   return out;
 }
 
+Mask components_sized(const Grid& g, const Mask& m, int conn, double min_ml, double max_ml) {
+  Components c = connected_components(g, m, conn);
+  std::vector<std::uint8_t> keep(c.size.size(), 0);
+  for (std::size_t id = 1; id < c.size.size(); ++id) {
+    const double ml = double(c.size[id]) * g.voxel_ml();
+    keep[id] = ml >= min_ml && ml <= max_ml;
+  }
+  Mask out(m.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = keep[c.label[i]];
+  return out;
+}
+
 Mask geodesic_dilate(const Grid& g, const Mask& m, const Mask& within, double r_mm) {
   // Dijkstra over 26-neighbour steps restricted to `within`, cut at r_mm.
   std::vector<float> dist(g.size(), std::numeric_limits<float>::infinity());

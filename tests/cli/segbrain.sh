@@ -109,6 +109,16 @@ run segbrain slices "$P" --labels "$WORK/aniso_labels.nii.gz" -o "$WORK/bad.png"
 expect_clean_failure 3 segbrain
 check "no PNG written on failure" test ! -e "$WORK/bad.png"
 
+case_ "-o onto a FIFO writes into it (a device node is never replaced by a file)"
+mkfifo "$WORK/pipe"
+wc -c <"$WORK/pipe" >"$WORK/pipe.count" &
+reader=$!
+run segbrain run "$P" --objects head -o "$WORK/pipe" --to nii
+expect_status 0
+wait "$reader"
+check "still a FIFO" test -p "$WORK/pipe"
+check "the reader got header + 80x96x80 uint8 labels" test "$(tr -d ' ' <"$WORK/pipe.count")" = 614752
+
 case_ "a stronger bias field (0.4) and more noise (0.05): brain Dice still >= 0.97"
 "$S" synth -o "$WORK/biased.nii.gz" --truth "$WORK/biased_truth.nii.gz" --size 80,96,80 --spacing 2,2,2 --bias 0.4 --noise 0.05 --seed 2
 run segbrain run "$WORK/biased.nii.gz" -o "$WORK/biased_labels.nii.gz"

@@ -69,6 +69,17 @@ TEST(SegbrainShape, ComponentsNearKeepsCloseLargeParts) {
   EXPECT_FALSE(kept[g.index(31, 2, 2)]);
 }
 
+TEST(SegbrainShape, ComponentsSizedKeepsTheVolumeRange) {
+  Grid g = grid(40, 10, 10, 1, 1, 1);
+  Mask m = box(g, 1, 4, 1, 4, 1, 4);                    // 64 voxels = 0.064 ml
+  Mask big = box(g, 10, 19, 1, 8, 1, 8);                // 640 voxels
+  Mask tiny = box(g, 30, 30, 2, 2, 2, 2);               // 1 voxel
+  for (std::size_t i = 0; i < m.size(); ++i) m[i] |= big[i] | tiny[i];
+  EXPECT_EQ(count(components_sized(g, m, 6, 0.01, 0.1)), 64u);
+  EXPECT_EQ(count(components_sized(g, m, 26, 0.0005, 1.0)), 64u + 640u + 1u);
+  EXPECT_EQ(count(components_sized(g, m, 6, 1.0, 2.0)), 0u);
+}
+
 TEST(SegbrainShape, GeodesicDilationFollowsItsDomain) {
   // A U-shaped corridor: straight-line distance from the seed to the far arm is small,
   // the path inside the corridor long.
