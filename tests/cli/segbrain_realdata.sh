@@ -72,7 +72,7 @@ check "the leaking candidate is worse by >= 0.03 Dice ($bad vs $good)" at_least 
 # atlas (another subject, so loose targets; spec §5).
 ch2=$(need_testdata mri/ch2.nii.gz) && ch2bet=$(need_testdata mri/ch2bet.nii.gz) &&
     aal=$(need_testdata mri/aal.nii.gz) && jhu=$(need_testdata mri/jhu189.nii.gz) && {
-case_ "Colin27: brain, ventricles and cerebellum against ch2bet, JHU and AAL"
+case_ "Colin27: brain, ventricles, cerebellum and brainstem against ch2bet, JHU and AAL"
 run segbrain run "$ch2" -o "$WORK/ch2_labels.nii.gz" --report "$WORK/ch2.json"
 expect_status 0
 E="$FEST_BIN/segbrain"
@@ -84,6 +84,14 @@ check "cerebellum Dice >= 0.75 vs AAL ($(dice_of cerebellum "$WORK/ch2_cb.tsv"))
 check "ventricles Dice >= 0.40 vs JHU ($(dice_of ventricles "$WORK/ch2_v.tsv"))" at_least "$(dice_of ventricles "$WORK/ch2_v.tsv")" 0.40
 vv=$(jq '.objects.ventricles.volume_ml' "$WORK/ch2.json")
 check "ventricles 15-60 ml ($vv)" awk -v v="$vv" 'BEGIN { exit !(v >= 15 && v <= 60) }'
+# Brainstem: the JHU labels (midbrain 99/100, pons and medulla 113-116) cover only about
+# 9 ml of it, so the spec asks for its centroid within 10 mm and 15-50 ml.
+bv=$(jq '.objects.brainstem.volume_ml' "$WORK/ch2.json")
+check "brainstem 15-50 ml ($bv)" awk -v v="$bv" 'BEGIN { exit !(v >= 15 && v <= 50) }'
+ref_c=$(python3 "$(dirname "$0")/segbrain/reorient.py" centroid "$jhu" 99 100 113 116)
+our_c=$(jq -r '.objects.brainstem.centroid_mm | map(tostring) | join(" ")' "$WORK/ch2.json")
+d=$(echo "$ref_c $our_c" | awk '{ print sqrt(($1 - $4)^2 + ($2 - $5)^2 + ($3 - $6)^2) }')
+check "brainstem centroid within 10 mm of JHU's ($d mm)" awk -v d="$d" 'BEGIN { exit !(d <= 10) }'
 }
 
 finish

@@ -11,19 +11,22 @@
                                        the sform rewritten to keep every voxel's world place;
   reorient.py unshuffled A.nii B.nii   A labels of IN, B labels of OUT: exit 0 when they
                                        agree voxel by voxel after undoing the shuffle;
+  reorient.py centroid IN.nii[.gz] LO HI [LO HI ...]  world (sform) centroid of the
+                                       voxels with LO <= value <= HI, printed "R A S";
   reorient.py bias IN.nii OUT.nii G    intensities times a smooth field, linear along the
                                        three voxel axes, from 1 - G to 1 + G corner to
                                        corner (the shading of a receive coil).
 Only files written by fest (vox_offset 352, sform set, little-endian) are handled.
 """
+import gzip
 import struct
 import sys
 
-TYPES = {2: ('B', 1), 4: ('h', 2), 16: ('f', 4)}
+TYPES = {2: ('B', 1), 4: ('h', 2), 8: ('i', 4), 16: ('f', 4), 512: ('H', 2)}
 
 
 def read(path):
-    data = open(path, 'rb').read()
+    data = gzip.open(path).read() if path.endswith('.gz') else open(path, 'rb').read()
     dims = struct.unpack_from('<8h', data, 40)
     dtype = struct.unpack_from('<h', data, 70)[0]
     pix = struct.unpack_from('<8f', data, 76)
@@ -121,6 +124,20 @@ def unshuffled(a_path, b_path):
     return 1 if bad else 0
 
 
+def centroid(path, ranges):
+    _, dims, _, srow, _, v = read(path)
+    s = [0.0, 0.0, 0.0]
+    n = 0
+    for i, x in enumerate(v):
+        if any(lo <= x <= hi for lo, hi in ranges):
+            s[0] += i % dims[0]
+            s[1] += (i // dims[0]) % dims[1]
+            s[2] += i // (dims[0] * dims[1])
+            n += 1
+    c = [t / n for t in s]
+    print(' '.join('%.3f' % (srow[r][0] * c[0] + srow[r][1] * c[1] + srow[r][2] * c[2] + srow[r][3]) for r in range(3)))
+
+
 def bias(src, dst, g):
     data, dims, _, _, dtype, v = read(src)
     code, _ = TYPES[dtype]
@@ -139,6 +156,9 @@ if __name__ == '__main__':
         permute(sys.argv[2], sys.argv[3])
     elif sys.argv[1] == 'shuffle':
         shuffle(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == 'centroid':
+        vals = [float(t) for t in sys.argv[3:]]
+        centroid(sys.argv[2], list(zip(vals[0::2], vals[1::2])))
     elif sys.argv[1] == 'bias':
         bias(sys.argv[2], sys.argv[3], float(sys.argv[4]))
     elif sys.argv[1] == 'unshuffled':
