@@ -91,9 +91,9 @@ for m in head brain_filled ventricles; do check "mask $m written" test -s "$WORK
 check "the ventricles mask is the label-6 region" test "$(dice_of v "$WORK/mask.tsv")" = 1.0000
 check "label table row of the ventricles (index name R G B A)" grep -qx '6 ventricles 30 60 255 255' "$WORK/labels.txt"
 check "label table has the 11 labels of spec 2.6" test "$(grep -vc '^#' "$WORK/labels.txt")" = 11
-run segbrain run "$P" --objects head,eyes
+run segbrain run "$P" --objects head,optic_nerve
 expect_clean_failure 2 segbrain
-expect_stderr_has "no rules for 'eyes'"
+expect_stderr_has "no rules for 'optic_nerve'"
 run segbrain run "$P" --objects head --masks "$WORK/no/such/dir"
 expect_clean_failure 4 segbrain
 

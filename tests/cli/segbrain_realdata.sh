@@ -55,7 +55,7 @@ check "verify_brain_result succeeds after it (line $accept)" test "$accept" -gt 
 m=$(jq -s -c '[.[] | select(.port == "fail" and .goal == "no_connection_to_skincontour(brain_raw)")][0].measure' "$WORK/retry.jsonl")
 check "the failure carries its measure and limit ($m)" \
     jq -n -e --argjson m "$m" '$m.skin_contact_fraction > $m.max and $m.max == 0.003'
-windows=$(jq -s -c '[.[] | select(.port == "exit" and (.goal | startswith("member((")) ) | .goal | capture("member\\(\\((?<w>[^)]*)\\)").w] | unique' "$WORK/retry.jsonl")
+windows=$(jq -s -c '[.[] | select(.port == "exit" and (.goal | startswith("member((") and endswith("[(0.5, 1.3), (0.55, 1.25)])"))) | .goal | capture("member\\(\\((?<w>[^)]*)\\)").w] | unique' "$WORK/retry.jsonl")
 check "both windows were tried ($windows)" test "$windows" = '["0.5, 1.3","0.55, 1.25"]'
 "$FEST_BIN/segbrain" eval --ref "$ref" --seg "$WORK/retry.nii.gz" --map "brain=2-8" --ref-map "brain=1-1000" >"$WORK/retry.tsv"
 good=$(dice_of brain "$WORK/retry.tsv")
@@ -84,6 +84,9 @@ check "cerebellum Dice >= 0.75 vs AAL ($(dice_of cerebellum "$WORK/ch2_cb.tsv"))
 check "ventricles Dice >= 0.40 vs JHU ($(dice_of ventricles "$WORK/ch2_v.tsv"))" at_least "$(dice_of ventricles "$WORK/ch2_v.tsv")" 0.40
 vv=$(jq '.objects.ventricles.volume_ml' "$WORK/ch2.json")
 check "ventricles 15-60 ml ($vv)" awk -v v="$vv" 'BEGIN { exit !(v >= 15 && v <= 60) }'
+# Eyes: no reference labels; the spec asks for two globes of radius 10-14 mm.
+ev=$(jq '.objects.eyes.volume_ml' "$WORK/ch2.json")
+check "eyes: two globes of radius 10-14 mm ($ev ml)" awk -v v="$ev" 'BEGIN { r = (3 * v / 2 / (4 * 3.14159265)) ^ (1 / 3) * 10; exit !(r >= 10 && r <= 14) }'
 # Brainstem: the JHU labels (midbrain 99/100, pons and medulla 113-116) cover only about
 # 9 ml of it, so the spec asks for its centroid within 10 mm and 15-50 ml.
 bv=$(jq '.objects.brainstem.volume_ml' "$WORK/ch2.json")
