@@ -271,4 +271,4 @@ find_eyes :-
     verify_eyes(eyes), !.
 verify_eyes(E) :-
     volume_ml(E, V), limit(eyes_min_ml, Lo), limit(eyes_max_ml, Hi), V >= Lo, V =< Hi,
-    components(E, 6, 2).
+    components(E, 26, 2).   % the growth steps are 26-neighbours

@@ -28,8 +28,9 @@ expect_stdout_empty
 # Truth brain_filled = brain tissue (3) + ventricles (6); ours = labels 2 (CSF inside) + 3.
 check "brain Dice >= 0.97 ($(dice_of brain "$WORK/eval.tsv"))" at_least "$(dice_of brain "$WORK/eval.tsv")" 0.97
 check "head Dice >= 0.99 ($(dice_of head "$WORK/eval.tsv"))" at_least "$(dice_of head "$WORK/eval.tsv")" 0.99
-"$S" eval --ref "$T" --seg "$WORK/labels.nii.gz" --map "ventricles=6" >"$WORK/eval_v.tsv"
+"$S" eval --ref "$T" --seg "$WORK/labels.nii.gz" --map "ventricles=6;eyes=10" >"$WORK/eval_v.tsv"
 check "ventricles Dice >= 0.85 ($(dice_of ventricles "$WORK/eval_v.tsv"))" at_least "$(dice_of ventricles "$WORK/eval_v.tsv")" 0.85
+check "eyes Dice >= 0.90 ($(dice_of eyes "$WORK/eval_v.tsv"))" at_least "$(dice_of eyes "$WORK/eval_v.tsv")" 0.90
 cp "$WORK/report.json" "$out"
 expect_json '.proved' 'true'
 expect_json '.input.orientation' '"RAS"'
