@@ -79,6 +79,45 @@ Mask components_near(const Grid& g, const Mask& m, int conn, double min_ml, cons
   return out;
 }
 
+Mask components_sized(const Grid& g, const Mask& m, int conn, double min_ml, double max_ml) {
+  Components c = connected_components(g, m, conn);
+  std::vector<std::uint8_t> keep(c.size.size(), 0);
+  for (std::size_t id = 1; id < c.size.size(); ++id) {
+    const double ml = double(c.size[id]) * g.voxel_ml();
+    keep[id] = ml >= min_ml && ml <= max_ml;
+  }
+  Mask out(m.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = keep[c.label[i]];
+  return out;
+}
+
+Mask symmetric_pair(const Grid& g, const Mask& m, int conn, double plane_r_mm, double min_dist_mm, double max_dist_mm,
+                    double& score_mm) {
+  Components c = connected_components(g, m, conn);
+  const std::size_t k = c.size.size();
+  std::vector<Point> cen(k, Point{0, 0, 0});
+  for (std::size_t z = 0; z < g.n[2]; ++z)
+    for (std::size_t y = 0; y < g.n[1]; ++y)
+      for (std::size_t x = 0; x < g.n[0]; ++x)
+        if (std::uint32_t id = c.label[g.index(x, y, z)]) cen[id][0] += double(x), cen[id][1] += double(y), cen[id][2] += double(z);
+  for (std::size_t id = 1; id < k; ++id)
+    for (int a = 0; a < 3; ++a) cen[id][a] = cen[id][a] / double(c.size[id]) * g.spacing[a];
+  score_mm = std::numeric_limits<double>::infinity();
+  std::size_t bi = 0, bj = 0;
+  for (std::size_t i = 1; i < k; ++i)
+    for (std::size_t j = i + 1; j < k; ++j) {
+      const double dr = std::abs(cen[i][0] - cen[j][0]);
+      if (dr < min_dist_mm || dr > max_dist_mm) continue;
+      const double s = std::abs(0.5 * (cen[i][0] + cen[j][0]) - plane_r_mm) + std::abs(cen[i][1] - cen[j][1]) +
+                       std::abs(cen[i][2] - cen[j][2]);
+      if (s < score_mm) score_mm = s, bi = i, bj = j;
+    }
+  Mask out(m.size());
+  if (bi)
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = c.label[i] == bi || c.label[i] == bj;
+  return out;
+}
+
 Mask geodesic_dilate(const Grid& g, const Mask& m, const Mask& within, double r_mm) {
   // Dijkstra over 26-neighbour steps restricted to `within`, cut at r_mm.
   std::vector<float> dist(g.size(), std::numeric_limits<float>::infinity());

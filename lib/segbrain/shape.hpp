@@ -27,6 +27,16 @@ Mask halfspace(const Grid& g, int axis, bool below, double value_mm);
 // of `near`.
 Mask components_near(const Grid& g, const Mask& m, int conn, double min_ml, const Point& near, double max_dist_mm);
 
+// The components (conn 6/18/26) whose volume lies in [min_ml, max_ml].
+Mask components_sized(const Grid& g, const Mask& m, int conn, double min_ml, double max_ml);
+
+// The two components (conn 6/18/26) that mirror each other best about the sagittal
+// plane R = plane_r_mm: left-right distance of their centroids within [min_dist_mm,
+// max_dist_mm], smallest |midpoint R - plane| + |dA| + |dS|. Empty when no pair fits;
+// `score_mm` receives that sum (infinity when empty).
+Mask symmetric_pair(const Grid& g, const Mask& m, int conn, double plane_r_mm, double min_dist_mm, double max_dist_mm,
+                    double& score_mm);
+
 // Voxels of `within` reachable from `m` by a path inside `within` no longer than r_mm
 // (26-neighbour steps of their Euclidean length; m itself is kept).
 Mask geodesic_dilate(const Grid& g, const Mask& m, const Mask& within, double r_mm);

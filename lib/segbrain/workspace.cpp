@@ -242,6 +242,25 @@ void Workspace::register_operators(Engine& engine) {
         return create(e, a[5], mask_object(components_near(grid_, mask(name_of(a[0])), conn_of(e, a[1]), num(e, a[2]),
                                                            point_of(e, a[3]), num(e, a[4]))));
       });
+  reg("components_sized", 5, "+Mask, +Conn, +MinMl, +MaxMl, -Out", "components whose volume lies in [MinMl, MaxMl]",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[4], mask_object(components_sized(grid_, mask(name_of(a[0])), conn_of(e, a[1]), num(e, a[2]), num(e, a[3]))));
+      });
+  reg("components", 3, "+Mask, +Conn, -N", "number of connected components",
+      [this](Engine& e, const std::vector<Term>& a) {
+        const double n = double(connected_components(grid_, mask(name_of(a[0])), conn_of(e, a[1])).size.size() - 1);
+        e.measure() = {{"components", n}};
+        return e.unify(a[2], make_int(static_cast<std::int64_t>(n)));
+      });
+  reg("symmetric_pair", 7, "+Mask, +Conn, +PlaneRMM, +MinDistMM, +MaxDistMM, -Out, -ScoreMM",
+      "the two components mirroring each other best about the plane (fails when no pair fits)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        double score = 0;
+        Mask m = symmetric_pair(grid_, mask(name_of(a[0])), conn_of(e, a[1]), num(e, a[2]), num(e, a[3]), num(e, a[4]), score);
+        if (!std::isfinite(score)) return false;
+        e.measure() = {{"pair_asymmetry_mm", score}};
+        return create(e, a[5], mask_object(std::move(m))) && e.unify(a[6], make_real(score));
+      });
   reg("geodesic_dilate", 4, "+Mask, +Within, +RadiusMM, -Out", "growth by at most RadiusMM along paths inside Within",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[3], mask_object(geodesic_dilate(grid_, mask(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]))));

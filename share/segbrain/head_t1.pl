@@ -5,10 +5,11 @@
 % other parameters when a check fails. Everything numeric below is a RECONSTRUCTION
 % (specs/segbrain.md §2.5): the chapter gives rules by name, not thresholds.
 %
-% This version ships head, brain, the midsagittal plane, the ventricles and the
-% cerebellum. The chapter's edge-based find_brain clause (Marr-Hildreth, region division
-% and aggregation) and the goals for eyes, brainstem and optic nerves are not part of it
-% yet.
+% This version ships head, brain, the midsagittal plane, the eyes, the ventricles, the
+% cerebellum and the brainstem. The chapter's edge-based find_brain clause
+% (Marr-Hildreth, region division and aggregation) and the optic nerves are not part of
+% it yet. The eyes are found after the brain (their search region is placed relative to
+% it), so the brain check no_overlap_with_eye_region has no eyes to test against yet.
 
 % --- anatomic model (figure 2.2) ---
 part_of(background, image).        part_of(head, image).
@@ -34,6 +35,7 @@ label(10, eye, extracranial, [90, 220, 90]).
 
 % Objects that --objects may ask for (the goals below find them).
 known_object(head).  known_object(brain).  known_object(ventricles).  known_object(cerebellum).
+known_object(brainstem).  known_object(eyes).
 
 % --- MR physics, T1 (reconstruction) ---
 brighter(t1, fat, white_matter).   brighter(t1, white_matter, gray_matter).
@@ -67,16 +69,18 @@ limit(brain_min_ml, 900).          limit(brain_max_ml, 2100).
 limit(brain_head_ratio_min, 0.30). limit(brain_head_ratio_max, 0.60).
 
 % --- goals ---
-segment_head :- find_head, find_brain, find_midsagittal, find_ventricles,
-    optional(find_cerebellum), emit_objects.
+segment_head :- find_head, find_brain, find_midsagittal, optional(find_eyes), find_ventricles,
+    optional(find_cerebellum), optional(find_brainstem), emit_objects.
 
 % --objects: only the goals the requested objects need; an object asked for by name must
 % be found (no optional/1 here).
 segment_objects(Os) :-
     find_head,
     ( member(O, Os), O \== head -> find_brain, find_midsagittal ; true ),
-    ( member(O2, [ventricles, cerebellum]), memberchk(O2, Os) -> find_ventricles ; true ),
+    ( member(O2, [ventricles, cerebellum, brainstem]), memberchk(O2, Os) -> find_ventricles ; true ),
     ( memberchk(cerebellum, Os) -> find_cerebellum ; true ),
+    ( memberchk(brainstem, Os) -> find_brainstem ; true ),
+    ( memberchk(eyes, Os) -> find_eyes ; true ),
     emit_objects.
 
 % The plane R = c of greatest left-right symmetry of the brain, kept as a fact for the
@@ -154,9 +158,11 @@ plausible_brain_size(M) :-
 % Labels of spec §2.6, outside in (a later emit overwrites an earlier one).
 emit_objects :-
     emit(head, 1),
+    ( exists(eyes) -> emit(eyes, 10) ; true ),
     ( exists(brain_filled) -> emit_brain ; true ),
     ( exists(ventricles) -> emit(ventricles, 6) ; true ),
-    ( exists(cerebellum) -> emit(cerebellum, 7) ; true ).
+    ( exists(cerebellum) -> emit(cerebellum, 7) ; true ),
+    ( exists(brainstem) -> emit(brainstem, 8) ; true ).
 emit_brain :-
     wm_reference(W),
     emit(brain_filled, 3),
@@ -207,3 +213,62 @@ find_cerebellum :-
 verify_cerebellum(C) :-
     volume_ml(C, V), limit(cerebellum_min_ml, Lo), limit(cerebellum_max_ml, Hi), V >= Lo, V =< Hi,
     midsagittal_r(Rm), mirror_dice(C, Rm, D), limit(cerebellum_mirror_dice_min, Dm), D >= Dm.
+
+% Brainstem (figure 2.1), a RECONSTRUCTION calibrated on Colin27 (20 ml, centroid 8 mm
+% from that of the JHU atlas's midbrain, pons and medulla): brain tissue in a column of
+% +-15 mm about the midsagittal plane, below and not in front of the ventricles, apart
+% from the cerebellum; an opening cuts the peduncles; verified by volume and by being
+% taller than deep (elongated along S-I).
+limit(brainstem_top_below_ventricles_mm, 10).
+limit(brainstem_front_of_ventricles_mm, 5).
+limit(brainstem_half_width_mm, 15).
+limit(brainstem_min_ml, 15).  limit(brainstem_max_ml, 50).
+candidates(brainstem_opening_mm, [3, 4, 2]).
+
+find_brainstem :-
+    wm_reference(W), window(t1, brain, A, B), Lo is A * W, Hi is B * W,
+    midsagittal_r(Rm), centroid_mm(ventricles, [_, Av, Sv]),
+    limit(brainstem_top_below_ventricles_mm, Dt), St is Sv - Dt,
+    limit(brainstem_front_of_ventricles_mm, Df), Af is Av + Df,
+    limit(brainstem_half_width_mm, Hw), R0 is Rm - Hw, R1 is Rm + Hw,
+    halfspace(s, below, St, bs1), halfspace(a, below, Af, bs2),
+    halfspace(r, above, R0, bs3), halfspace(r, below, R1, bs4),
+    threshold(t1, Lo, Hi, btis), and(btis, brain_filled, bt0),
+    ( exists(cerebellum) -> dilate(cerebellum, 2, cbz), and_not(bt0, cbz, bt1) ; copy(bt0, bt1) ),
+    and(bt1, bs1, bt2), and(bt2, bs2, bt3), and(bt3, bs3, bt4), and(bt4, bs4, bt5),
+    candidates(brainstem_opening_mm, Os), member(O, Os),
+    open(bt5, O, bt6), largest_component(bt6, 6, brainstem),
+    verify_brainstem(brainstem), !.
+verify_brainstem(M) :-
+    volume_ml(M, V), limit(brainstem_min_ml, Lo), limit(brainstem_max_ml, Hi), V >= Lo, V =< Hi,
+    bbox_mm(M, [_, _, A0, A1, S0, S1]), Ea is A1 - A0, Es is S1 - S0, Es >= Ea.
+
+% Eyes (figure 2.5), a RECONSTRUCTION: on T1 the vitreous is dark like CSF inside bright
+% orbital fat. Dark voxels outside the brain, anterior and inferior to its centre, opened
+% to drop thin dark structures; globe-sized components; the pair that mirrors best
+% about the midsagittal plane, 45-75 mm apart; grown back by 3 mm inside the dark
+% window. Colin27: two globes of 5.2 ml (radius 10.8 mm).
+limit(eye_pair_distance_min_mm, 45).  limit(eye_pair_distance_max_mm, 75).
+limit(eye_pair_asymmetry_max_mm, 15).
+limit(eye_globe_min_ml, 2).           limit(eye_globe_max_ml, 16).
+limit(eyes_min_ml, 4).                limit(eyes_max_ml, 25).
+candidates(eye_window, [(0.15, 0.6), (0.10, 0.5), (0.15, 0.5)]).
+candidates(eye_opening_mm, [3, 2]).
+
+find_eyes :-
+    wm_reference(W), midsagittal_r(Rm), centroid_mm(brain_filled, [_, Ab, Sb]),
+    dilate(brain_filled, 3, ebz), and_not(head, ebz, eout),
+    halfspace(a, above, Ab, efront), halfspace(s, below, Sb, elow),
+    and(eout, efront, eo1), and(eo1, elow, eregion),
+    candidates(eye_window, Ws), member((L, H), Ws), Lo is L * W, Hi is H * W,
+    threshold(t1, Lo, Hi, edark), and(edark, eregion, ev),
+    candidates(eye_opening_mm, Os), member(O, Os), open(ev, O, evo),
+    limit(eye_globe_min_ml, G0), limit(eye_globe_max_ml, G1), components_sized(evo, 6, G0, G1, ecand),
+    limit(eye_pair_distance_min_mm, D0), limit(eye_pair_distance_max_mm, D1),
+    symmetric_pair(ecand, 6, Rm, D0, D1, epair, Score),
+    limit(eye_pair_asymmetry_max_mm, Smax), Score =< Smax,
+    geodesic_dilate(epair, ev, 3, eyes),
+    verify_eyes(eyes), !.
+verify_eyes(E) :-
+    volume_ml(E, V), limit(eyes_min_ml, Lo), limit(eyes_max_ml, Hi), V >= Lo, V =< Hi,
+    components(E, 26, 2).   % the growth steps are 26-neighbours

@@ -28,8 +28,9 @@ expect_stdout_empty
 # Truth brain_filled = brain tissue (3) + ventricles (6); ours = labels 2 (CSF inside) + 3.
 check "brain Dice >= 0.97 ($(dice_of brain "$WORK/eval.tsv"))" at_least "$(dice_of brain "$WORK/eval.tsv")" 0.97
 check "head Dice >= 0.99 ($(dice_of head "$WORK/eval.tsv"))" at_least "$(dice_of head "$WORK/eval.tsv")" 0.99
-"$S" eval --ref "$T" --seg "$WORK/labels.nii.gz" --map "ventricles=6" >"$WORK/eval_v.tsv"
+"$S" eval --ref "$T" --seg "$WORK/labels.nii.gz" --map "ventricles=6;eyes=10" >"$WORK/eval_v.tsv"
 check "ventricles Dice >= 0.85 ($(dice_of ventricles "$WORK/eval_v.tsv"))" at_least "$(dice_of ventricles "$WORK/eval_v.tsv")" 0.85
+check "eyes Dice >= 0.90 ($(dice_of eyes "$WORK/eval_v.tsv"))" at_least "$(dice_of eyes "$WORK/eval_v.tsv")" 0.90
 cp "$WORK/report.json" "$out"
 expect_json '.proved' 'true'
 expect_json '.input.orientation' '"RAS"'
@@ -91,9 +92,9 @@ for m in head brain_filled ventricles; do check "mask $m written" test -s "$WORK
 check "the ventricles mask is the label-6 region" test "$(dice_of v "$WORK/mask.tsv")" = 1.0000
 check "label table row of the ventricles (index name R G B A)" grep -qx '6 ventricles 30 60 255 255' "$WORK/labels.txt"
 check "label table has the 11 labels of spec 2.6" test "$(grep -vc '^#' "$WORK/labels.txt")" = 11
-run segbrain run "$P" --objects head,eyes
+run segbrain run "$P" --objects head,optic_nerve
 expect_clean_failure 2 segbrain
-expect_stderr_has "no rules for 'eyes'"
+expect_stderr_has "no rules for 'optic_nerve'"
 run segbrain run "$P" --objects head --masks "$WORK/no/such/dir"
 expect_clean_failure 4 segbrain
 
@@ -108,6 +109,16 @@ check "PNG of 512x192 pixels ($size)" test "$size" = 512x192
 run segbrain slices "$P" --labels "$WORK/aniso_labels.nii.gz" -o "$WORK/bad.png"
 expect_clean_failure 3 segbrain
 check "no PNG written on failure" test ! -e "$WORK/bad.png"
+
+case_ "-o onto a FIFO writes into it (a device node is never replaced by a file)"
+mkfifo "$WORK/pipe"
+wc -c <"$WORK/pipe" >"$WORK/pipe.count" &
+reader=$!
+run segbrain run "$P" --objects head -o "$WORK/pipe" --to nii
+expect_status 0
+wait "$reader"
+check "still a FIFO" test -p "$WORK/pipe"
+check "the reader got header + 80x96x80 uint8 labels" test "$(tr -d ' ' <"$WORK/pipe.count")" = 614752
 
 case_ "a stronger bias field (0.4) and more noise (0.05): brain Dice still >= 0.97"
 "$S" synth -o "$WORK/biased.nii.gz" --truth "$WORK/biased_truth.nii.gz" --size 80,96,80 --spacing 2,2,2 --bias 0.4 --noise 0.05 --seed 2

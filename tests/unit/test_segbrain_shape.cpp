@@ -69,6 +69,35 @@ TEST(SegbrainShape, ComponentsNearKeepsCloseLargeParts) {
   EXPECT_FALSE(kept[g.index(31, 2, 2)]);
 }
 
+TEST(SegbrainShape, ComponentsSizedKeepsTheVolumeRange) {
+  Grid g = grid(40, 10, 10, 1, 1, 1);
+  Mask m = box(g, 1, 4, 1, 4, 1, 4);                    // 64 voxels = 0.064 ml
+  Mask big = box(g, 10, 19, 1, 8, 1, 8);                // 640 voxels
+  Mask tiny = box(g, 30, 30, 2, 2, 2, 2);               // 1 voxel
+  for (std::size_t i = 0; i < m.size(); ++i) m[i] |= big[i] | tiny[i];
+  EXPECT_EQ(count(components_sized(g, m, 6, 0.01, 0.1)), 64u);
+  EXPECT_EQ(count(components_sized(g, m, 26, 0.0005, 1.0)), 64u + 640u + 1u);
+  EXPECT_EQ(count(components_sized(g, m, 6, 1.0, 2.0)), 0u);
+}
+
+TEST(SegbrainShape, SymmetricPairPicksTheMirroredComponents) {
+  Grid g = grid(60, 20, 20);
+  // Mirror plane x = 30: boxes centred at x 12 and 48 (same y, z) form the pair; a box at
+  // x 40 shifted in y does not mirror the one at x 12 as well, nor one at x 20 (too close).
+  Mask m = box(g, 10, 14, 4, 8, 4, 8);
+  for (auto b : {box(g, 46, 50, 4, 8, 4, 8), box(g, 38, 42, 12, 16, 4, 8), box(g, 18, 22, 12, 16, 12, 16)})
+    for (std::size_t i = 0; i < m.size(); ++i) m[i] |= b[i];
+  double score = 0;
+  Mask pair = symmetric_pair(g, m, 6, 30, 30, 40, score);
+  EXPECT_EQ(count(pair), 2u * 125);
+  EXPECT_TRUE(pair[g.index(12, 6, 6)]);
+  EXPECT_TRUE(pair[g.index(48, 6, 6)]);
+  EXPECT_NEAR(score, 0, 1e-9);
+  // No pair at a left-right distance of 50-60 mm.
+  EXPECT_EQ(count(symmetric_pair(g, m, 6, 30, 50, 60, score)), 0u);
+  EXPECT_TRUE(std::isinf(score));
+}
+
 TEST(SegbrainShape, GeodesicDilationFollowsItsDomain) {
   // A U-shaped corridor: straight-line distance from the seed to the far arm is small,
   // the path inside the corridor long.
