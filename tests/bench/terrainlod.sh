@@ -43,10 +43,10 @@ fi
   "$BIN/terrainlod" build "$work/jb.npy" --cell-size 74.5,92.5 -o "$work/jb.tlp" --threads 1 --report "$work/b.json"
 read -r user sys wall rss <"$work/cpu"
 "$BIN/terrainlod" stats "$work/jb.tlp" >"$work/s.json"
-# Base triangulations of every tile as OBJ -> Cesium quantized-mesh-1.0, gzipped.
-jq -r '.manifest.level[] | .level as $l | range(.tiles_y) as $y | range(.tiles_x) as $x | "\($l)/\($x)/\($y)"' "$work/s.json" |
-  while read -r t; do "$BIN/terrainlod" decode "$work/jb.tlp" --tile "$t" --to obj -o "$work/tile_${t//\//_}.obj"; done
-qm=$(python3 "$(dirname "$0")/terrain_qm_size.py" "$work"/tile_*.obj)
+# Base triangulations of every tile as Cesium quantized-mesh-1.0 (export-qm), gzipped tile
+# by tile as they are served.
+"$BIN/terrainlod" export-qm "$work/jb.tlp" -o "$work/qm"
+qm=$(find "$work/qm" -name '*.terrain' -exec sh -c 'gzip -6 -c "$1" | wc -c' _ {} \; | awk '{ s += $1 } END { print s }')
 jq -c --argjson user "$user" --argjson sys "$sys" --argjson wall "$wall" --argjson rss "$rss" --argjson qm "$qm" \
   '{bench: "terrainlod_build", dem: "jacksboro 403x344", tiles: .totals.tiles, vertices: .totals.vertices,
     triangles: .totals.triangles, tile_bytes: .totals.tile_bytes, bytes_per_vertex: .totals.bytes_per_vertex,

@@ -73,6 +73,18 @@ expect_clean_failure 2 terrainlod
 expect_stderr_has 'needs one %d or %0Nd'
 check "nothing written" test -z "$(ls "$bad_pattern_out")"
 
+case_ "export-qm: one quantized-mesh tile per pyramid tile and a layer.json"
+run terrainlod export-qm "$WORK/bumps.tlp" -o "$WORK/qm"
+expect_status 0
+check "21 tiles" test "$(find "$WORK/qm" -name '*.terrain' | wc -l)" -eq 21
+check "layer.json" jq -e '.format == "quantized-mesh-1.0" and .scheme == "tms" and .maxzoom == 2' "$WORK/qm/layer.json"
+# Root tile: vertex count after the 88-byte header equals the tile's vertex count.
+run terrainlod stats "$WORK/bumps.tlp"
+check "root vertex count" test "$(od -An -tu4 -j88 -N4 "$WORK/qm/0/0/0.terrain" | tr -d ' ')" -eq "$(jq '.level[0].vertices' "$out")"
+run terrainlod export-qm "$WORK/bumps.tlp" -o "$WORK/qm"
+expect_clean_failure 4 terrainlod
+expect_stderr_has 'exists and is not an empty directory'
+
 # --- bad input ------------------------------------------------------------------------
 bad() {  # bad STATUS REGEX ARGS...
   local status="$1" regex="$2"; shift 2

@@ -5,6 +5,7 @@
 // border the two sides have the same vertices and edges, bit for bit.
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <set>
 #include <tuple>
@@ -13,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "terrainlod/pyramid_build.hpp"
+#include "terrainlod/quantized_mesh.hpp"
 #include "terrainlod/tile_codec.hpp"
 #include "terrainlod/transition.hpp"
 #include "terrainlod_fixtures.hpp"
@@ -195,6 +197,84 @@ TEST(TerrainlodPyramid, TruncatedOrForeignTileIsBadInput) {
   std::string bad = bytes;
   bad[0] = 'X';
   EXPECT_THROW(decode_tile(bad), fest::Error);
+}
+
+}  // namespace
+
+namespace {
+
+// An independent quantized-mesh-1.0 reader (layout from the format's description): the
+// exported tile decodes to the base triangulation, up to the 15-bit quantization.
+TEST(TerrainlodQuantizedMesh, DecodesToTheBaseTriangulation) {
+  using namespace fest::terrainlod;
+  const Pyramid& p = fbm_pyramid();
+  const Tile& tile = p.tiles[3];  // a level-1 tile
+  const TileGeometry g = p.geometry(tile.id.level);
+  const TileTriangulation tri = triangulate(tile, 0, g);
+  QmFrame f;
+  f.gx0 = static_cast<std::int64_t>(tile.id.x) * g.cells;
+  f.gy0 = static_cast<std::int64_t>(tile.id.y) * g.cells;
+  f.cells = g.cells;
+  const std::string b = encode_quantized_mesh(tri, f);
+  std::size_t at = 0;
+  auto rd = [&](auto& v) {
+    std::memcpy(&v, b.data() + at, sizeof(v));
+    at += sizeof(v);
+  };
+  at = 88;
+  float zmin, zmax;
+  std::memcpy(&zmin, b.data() + 24, 4);
+  std::memcpy(&zmax, b.data() + 28, 4);
+  std::uint32_t nv;
+  rd(nv);
+  ASSERT_EQ(nv, tri.vertices.size());
+  std::vector<int> uvh[3];
+  for (auto& a : uvh) {
+    int prev = 0;
+    for (std::uint32_t i = 0; i < nv; ++i) {
+      std::uint16_t z;
+      rd(z);
+      prev += (z >> 1) ^ -(z & 1);
+      a.push_back(prev);
+    }
+  }
+  std::uint32_t nt;
+  rd(nt);
+  ASSERT_EQ(nt, tri.triangles.size());
+  std::set<std::array<std::array<long, 3>, 3>> got, want;
+  std::map<std::pair<long, long>, double> got_z, want_z;
+  std::uint32_t highest = 0;
+  auto key = [](std::array<std::array<long, 3>, 3> t) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+  };
+  const double hq = (zmax - zmin) / 32767.0;
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    std::array<std::array<long, 3>, 3> tt;
+    for (int k = 0; k < 3; ++k) {
+      std::uint16_t c;
+      rd(c);
+      const std::uint32_t idx = highest - c;
+      if (c == 0) ++highest;
+      // Back to lattice steps of the tile and to heights within one height quantum.
+      tt[k] = {std::lround(uvh[0][idx] * 16.0 / 32767.0), std::lround(uvh[1][idx] * 16.0 / 32767.0), 0};
+      got_z[{tt[k][0], tt[k][1]}] = zmin + uvh[2][idx] * hq;
+    }
+    got.insert(key(tt));
+  }
+  const std::int64_t step = g.cells / 16;
+  for (const auto& t : tri.triangles) {
+    std::array<std::array<long, 3>, 3> tt;
+    for (int k = 0; k < 3; ++k) {
+      const auto& v = tri.vertices[t[k]];
+      tt[k] = {static_cast<long>((v.gx - f.gx0) / step), static_cast<long>((v.gy - f.gy0) / step), 0};
+      want_z[{tt[k][0], tt[k][1]}] = v.z;
+    }
+    want.insert(key(tt));
+  }
+  EXPECT_EQ(got, want);
+  ASSERT_EQ(got_z.size(), want_z.size());
+  for (const auto& [xy, z] : want_z) EXPECT_NEAR(got_z[xy], z, hq / 2 + 1e-4) << "height within half a 15-bit step";
 }
 
 }  // namespace
