@@ -31,7 +31,7 @@ run terrainlod build "$WORK/bumps.asc" --tile 16 -o "$WORK/bumps.tlp" --threads 
 expect_status 0
 run terrainlod verify "$WORK/bumps.tlp" --dem "$WORK/bumps.asc" --cameras 12 --seed 3
 expect_status 0
-expect_json '[.ok, .over_bound, .open_edges, .reencode_mismatches]' '[true,0,0,0]'
+expect_json '[.ok, .tiles_over_bound, .open_edges, .reencode_mismatches]' '[true,0,0,0]'
 check "max error <= 4/3 eps" jq -e '.max_err_over_eps <= 1.3333334' "$out"
 check "the cameras saw more than one level" jq -e '.camera_levels_seen >= 2' "$out"
 
