@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "core/error.hpp"
@@ -149,6 +150,35 @@ double triangulation_error(const ReferenceSurface& ref, const TileTriangulation&
   return worst;
 }
 
+TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const TileGeometry& geometry) {
+  using V = TileTriangulation::Vertex;
+  TileErrorRange r;
+  std::set<std::array<V, 3>> measured;
+  bool first = true;
+  for (unsigned m = 0; m < 16; ++m) {
+    if ((m & tile.refinable) != m) continue;
+    ++r.triangulations;
+    const TileTriangulation tri = triangulate(tile, m, geometry);
+    for (const auto& v : tri.vertices) {
+      if (first || v.z < r.z_min) r.z_min = v.z;
+      if (first || v.z > r.z_max) r.z_max = v.z;
+      first = false;
+    }
+    for (const auto& t : tri.triangles) {
+      std::array<V, 3> key{tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+                           tri.vertices[static_cast<std::size_t>(t[2])]};
+      std::sort(key.begin(), key.end());
+      if (!measured.insert(key).second) continue;
+      GridPoint p[3];
+      for (int k = 0; k < 3; ++k) p[k] = {double(key[static_cast<std::size_t>(k)].gx), double(key[static_cast<std::size_t>(k)].gy), key[static_cast<std::size_t>(k)].z};
+      // The error of a triangle does not depend on its orientation.
+      if (twice_area(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
+      r.err = std::max(r.err, triangle_error(ref, p[0], p[1], p[2], std::numeric_limits<double>::infinity()));
+    }
+  }
+  return r;
+}
+
 Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
                       const std::function<void(std::size_t, std::size_t)>& progress) {
   const PyramidPlan plan = plan_pyramid(grid.width, grid.height, dx, dy, params.pyramid);
@@ -216,22 +246,10 @@ Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildP
                           pyr.delta_min, tolerance);
       // The tile's own figures: the largest error over its triangulations (with quantized
       // heights) and its height range, for stats and culling.
-      const TileGeometry g = pyr.geometry(job.level);
-      double err = 0, zlo = 0, zhi = 0;
-      bool first = true;
-      for (unsigned m = 0; m < 16; ++m) {
-        if ((m & t.refinable) != m) continue;
-        const TileTriangulation tri = triangulate(t, m, g);
-        err = std::max(err, triangulation_error(ref, tri));
-        for (const auto& v : tri.vertices) {
-          if (first || v.z < zlo) zlo = v.z;
-          if (first || v.z > zhi) zhi = v.z;
-          first = false;
-        }
-      }
-      t.err = static_cast<float>(err);
-      t.z_min = static_cast<float>(zlo);
-      t.z_max = static_cast<float>(zhi);
+      const TileErrorRange e = tile_error(ref, t, pyr.geometry(job.level));
+      t.err = static_cast<float>(e.err);
+      t.z_min = static_cast<float>(e.z_min);
+      t.z_max = static_cast<float>(e.z_max);
       pyr.tiles[j] = std::move(t);
     } catch (...) {
       std::lock_guard<std::mutex> lock(failure_mutex);

@@ -59,4 +59,12 @@ Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildP
 // height units, measured triangle by triangle on the overlay.
 double triangulation_error(const ReferenceSurface& ref, const TileTriangulation& t);
 
+// Largest error over all triangulations of a tile (every mask of its refinable sides) and
+// its height range; a triangle shared by several triangulations is measured once.
+struct TileErrorRange {
+  double err = 0, z_min = 0, z_max = 0;
+  std::size_t triangulations = 0;
+};
+TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const TileGeometry& geometry);
+
 }  // namespace fest::terrainlod

@@ -86,6 +86,10 @@ class CollapseEngine {
       heap_.pop();
       const auto v = TriMesh::VertexHandle(vi);
       if (m_.status(v).deleted() || version != version_[vi]) continue;
+      if (dirty_[vi]) {  // its star changed since the entry was made: measure again first
+        refresh(v);
+        continue;
+      }
       const auto w = TriMesh::VertexHandle(wi);
       const auto heh = m_.find_halfedge(v, w);
       // The link condition can change without v's star changing (a collapse next to w);
@@ -96,13 +100,14 @@ class CollapseEngine {
       }
       // Only the stars of v's neighbours change (v becomes w in them); w's other
       // neighbours keep their stars and so their costs (a link condition that changes
-      // for them is caught when their entry is popped).
+      // for them is caught when their entry is popped). The neighbours are re-measured
+      // lazily, when their entry comes up: many are changed again before that.
       ring_.clear();
       for (auto u : m_.vv_range(v)) ring_.push_back(u);
       m_.collapse(heh);
       ++result.collapses;
       result.max_error = std::max(result.max_error, cost);
-      for (auto u : ring_) refresh(u);
+      for (auto u : ring_) mark_dirty(u);
     }
     m_.garbage_collection();
     for (auto v : m_.vertices()) result.mesh.vertices.push_back(grid_point(m_, v));
@@ -125,6 +130,8 @@ class CollapseEngine {
       m_.add_face(TriMesh::VertexHandle(t[0]), TriMesh::VertexHandle(t[1]), TriMesh::VertexHandle(t[2]));
     locked_ = locked;
     version_.assign(m_.n_vertices(), 0);
+    dirty_.assign(m_.n_vertices(), 0);
+    live_.assign(m_.n_vertices(), 0);
   }
 
   double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
@@ -209,10 +216,25 @@ class CollapseEngine {
   // An early stop is only a lower bound of the error: remember it as "too big".
   double clamp_error(double e) const { return e > limit_ ? kInfinite : e; }
 
+  // A vertex whose star changed: its queue entry keeps its place but is re-measured when
+  // popped. A vertex without an entry (no collapse was possible) gets one at cost 0, so it
+  // is re-measured next.
+  void mark_dirty(TriMesh::VertexHandle u) {
+    const int ui = u.idx();
+    if (locked_[ui]) return;
+    dirty_[ui] = 1;
+    if (!live_[ui]) {
+      heap_.push({0.0, ui, -1, version_[ui]});
+      live_[ui] = 1;
+    }
+  }
+
   // Recomputes v's cheapest collapse and queues it; older queue entries go stale.
   void refresh(TriMesh::VertexHandle v) {
     const int vi = v.idx();
     ++version_[vi];
+    dirty_[vi] = 0;
+    live_[vi] = 0;
     if (locked_[vi]) return;
     double best = kInfinite;
     int target = -1;
@@ -224,7 +246,10 @@ class CollapseEngine {
         target = ti;
       }
     }
-    if (target >= 0) heap_.push({best, vi, target, version_[vi]});
+    if (target >= 0) {
+      heap_.push({best, vi, target, version_[vi]});
+      live_[vi] = 1;
+    }
   }
 
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
@@ -234,6 +259,8 @@ class CollapseEngine {
   TriMesh m_;
   std::vector<std::uint8_t> locked_;
   std::vector<std::uint32_t> version_;
+  std::vector<std::uint8_t> dirty_;  // star changed since the last measurement
+  std::vector<std::uint8_t> live_;   // has a queue entry of the current version
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
   TriangleErrorCache cache_;
   std::vector<TriMesh::VertexHandle> ring_;

@@ -31,7 +31,7 @@ run terrainlod build "$WORK/bumps.asc" --tile 16 -o "$WORK/bumps.tlp" --threads 
 expect_status 0
 run terrainlod verify "$WORK/bumps.tlp" --dem "$WORK/bumps.asc" --cameras 12 --seed 3
 expect_status 0
-expect_json '[.ok, .over_bound, .open_edges, .reencode_mismatches]' '[true,0,0,0]'
+expect_json '[.ok, .tiles_over_bound, .open_edges, .reencode_mismatches]' '[true,0,0,0]'
 check "max error <= 4/3 eps" jq -e '.max_err_over_eps <= 1.3333334' "$out"
 check "the cameras saw more than one level" jq -e '.camera_levels_seen >= 2' "$out"
 
@@ -72,6 +72,18 @@ run terrainlod extract "$WORK/bumps.tlp" --path "$WORK/path.jsonl" -o "$bad_patt
 expect_clean_failure 2 terrainlod
 expect_stderr_has 'needs one %d or %0Nd'
 check "nothing written" test -z "$(ls "$bad_pattern_out")"
+
+case_ "export-qm: one quantized-mesh tile per pyramid tile and a layer.json"
+run terrainlod export-qm "$WORK/bumps.tlp" -o "$WORK/qm"
+expect_status 0
+check "21 tiles" test "$(find "$WORK/qm" -name '*.terrain' | wc -l)" -eq 21
+check "layer.json" jq -e '.format == "quantized-mesh-1.0" and .scheme == "tms" and .maxzoom == 2' "$WORK/qm/layer.json"
+# Root tile: vertex count after the 88-byte header equals the tile's vertex count.
+run terrainlod stats "$WORK/bumps.tlp"
+check "root vertex count" test "$(od -An -tu4 -j88 -N4 "$WORK/qm/0/0/0.terrain" | tr -d ' ')" -eq "$(jq '.level[0].vertices' "$out")"
+run terrainlod export-qm "$WORK/bumps.tlp" -o "$WORK/qm"
+expect_clean_failure 4 terrainlod
+expect_stderr_has 'exists and is not an empty directory'
 
 # --- bad input ------------------------------------------------------------------------
 bad() {  # bad STATUS REGEX ARGS...

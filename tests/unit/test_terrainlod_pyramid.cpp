@@ -5,6 +5,8 @@
 // border the two sides have the same vertices and edges, bit for bit.
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <map>
 #include <set>
 #include <tuple>
@@ -12,7 +14,9 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "terrainlod/extract.hpp"
 #include "terrainlod/pyramid_build.hpp"
+#include "terrainlod/quantized_mesh.hpp"
 #include "terrainlod/tile_codec.hpp"
 #include "terrainlod/transition.hpp"
 #include "terrainlod_fixtures.hpp"
@@ -195,6 +199,185 @@ TEST(TerrainlodPyramid, TruncatedOrForeignTileIsBadInput) {
   std::string bad = bytes;
   bad[0] = 'X';
   EXPECT_THROW(decode_tile(bad), fest::Error);
+}
+
+}  // namespace
+
+namespace {
+
+// An independent quantized-mesh-1.0 reader (layout from the format's description): the
+// exported tile decodes to the base triangulation, up to the 15-bit quantization.
+TEST(TerrainlodQuantizedMesh, DecodesToTheBaseTriangulation) {
+  using namespace fest::terrainlod;
+  const Pyramid& p = fbm_pyramid();
+  const Tile& tile = p.tiles[3];  // a level-1 tile
+  const TileGeometry g = p.geometry(tile.id.level);
+  const TileTriangulation tri = triangulate(tile, 0, g);
+  QmFrame f;
+  f.gx0 = static_cast<std::int64_t>(tile.id.x) * g.cells;
+  f.gy0 = static_cast<std::int64_t>(tile.id.y) * g.cells;
+  f.cells = g.cells;
+  const std::string b = encode_quantized_mesh(tri, f);
+  std::size_t at = 0;
+  auto rd = [&](auto& v) {
+    std::memcpy(&v, b.data() + at, sizeof(v));
+    at += sizeof(v);
+  };
+  at = 88;
+  float zmin, zmax;
+  std::memcpy(&zmin, b.data() + 24, 4);
+  std::memcpy(&zmax, b.data() + 28, 4);
+  std::uint32_t nv;
+  rd(nv);
+  ASSERT_EQ(nv, tri.vertices.size());
+  std::vector<int> uvh[3];
+  for (auto& a : uvh) {
+    int prev = 0;
+    for (std::uint32_t i = 0; i < nv; ++i) {
+      std::uint16_t z;
+      rd(z);
+      prev += (z >> 1) ^ -(z & 1);
+      a.push_back(prev);
+    }
+  }
+  std::uint32_t nt;
+  rd(nt);
+  ASSERT_EQ(nt, tri.triangles.size());
+  std::set<std::array<std::array<long, 3>, 3>> got, want;
+  std::map<std::pair<long, long>, double> got_z, want_z;
+  std::uint32_t highest = 0;
+  auto key = [](std::array<std::array<long, 3>, 3> t) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+  };
+  const double hq = (zmax - zmin) / 32767.0;
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    std::array<std::array<long, 3>, 3> tt;
+    for (int k = 0; k < 3; ++k) {
+      std::uint16_t c;
+      rd(c);
+      const std::uint32_t idx = highest - c;
+      if (c == 0) ++highest;
+      // Back to lattice steps of the tile and to heights within one height quantum.
+      tt[k] = {std::lround(uvh[0][idx] * 16.0 / 32767.0), std::lround(uvh[1][idx] * 16.0 / 32767.0), 0};
+      got_z[{tt[k][0], tt[k][1]}] = zmin + uvh[2][idx] * hq;
+    }
+    got.insert(key(tt));
+  }
+  const std::int64_t step = g.cells / 16;
+  for (const auto& t : tri.triangles) {
+    std::array<std::array<long, 3>, 3> tt;
+    for (int k = 0; k < 3; ++k) {
+      const auto& v = tri.vertices[t[k]];
+      tt[k] = {static_cast<long>((v.gx - f.gx0) / step), static_cast<long>((v.gy - f.gy0) / step), 0};
+      want_z[{tt[k][0], tt[k][1]}] = v.z;
+    }
+    want.insert(key(tt));
+  }
+  EXPECT_EQ(got, want);
+  ASSERT_EQ(got_z.size(), want_z.size());
+  for (const auto& [xy, z] : want_z) EXPECT_NEAR(got_z[xy], z, hq / 2 + 1e-4) << "height within half a 15-bit step";
+}
+
+}  // namespace
+
+namespace {
+
+using namespace fest::terrainlod;
+
+// A 2^6-tile-wide pyramid layout (B = 16 cells of 10 m, L = 3) over flat ground at z = 0.
+PyramidLayout flat_layout() {
+  PyramidLayout L;
+  L.levels = 3;
+  L.texels = 16;
+  L.dx = L.dy = 10;
+  for (int l = 0; l <= 3; ++l) {
+    L.tiles_x.push_back(1 << l);
+    L.tiles_y.push_back(1 << l);
+    L.cells.push_back(16 << (3 - l));
+  }
+  return L;
+}
+
+TEST(TerrainlodSelect, LookingStraightDownFollowsTheDistanceRuleAndCloses) {
+  const PyramidLayout L = flat_layout();
+  Camera c;
+  c.eye = {150, 420, 600};
+  c.target = {150, 420, 0};
+  c.up = {0, 1, 0};
+  c.fovy_deg = 120;
+  c.width = c.height = 512;
+  c.tau_px = 3;
+  const auto sel = select_tiles(L, c, [](const TileId&) { return std::array<double, 2>{0, 0}; });
+  const double f_px = 256.0 / std::tan(M_PI / 3);  // (height / 2) / tan(fovy / 2)
+  std::map<TileId, unsigned> drawn;
+  for (const auto& s : sel.tiles) drawn[s.id] = s.mask;
+  auto dist = [&](const TileId& t) {
+    const double side = L.cells[t.level] * 10.0;
+    const double x0 = t.x * side, y0 = t.y * side;
+    const double dx = std::max({x0 - 150, 0.0, 150 - (x0 + side)}), dy = std::max({y0 - 420, 0.0, 420 - (y0 + side)});
+    return std::sqrt(dx * dx + dy * dy + 600.0 * 600.0);
+  };
+  auto sufficient = [&](const TileId& t) { return t.level == L.levels || (L.cells[t.level] * 10.0 / 16) * f_px / dist(t) <= 3; };
+  ASSERT_FALSE(sel.tiles.empty());
+  std::set<int> levels;
+  for (const auto& s : sel.tiles) levels.insert(s.id.level);
+  EXPECT_GE(levels.size(), 2u) << "near tiles fine, far tiles coarse; got level " << *levels.begin() << " x " << sel.tiles.size();
+  for (const auto& s : sel.tiles) {
+    // Closed form: a tile chosen by the rule is sufficient and its parent was not.
+    if (s.closing_only) continue;  // split to close the quadtree, not by the rule
+    EXPECT_TRUE(sufficient(s.id)) << s.id.level << "/" << s.id.x << "/" << s.id.y;
+    if (s.id.level > 0) {
+      EXPECT_FALSE(sufficient({s.id.level - 1, s.id.x / 2, s.id.y / 2}));
+    }
+  }
+  // The drawn tiles tile the visible ground without overlap: no drawn tile has a drawn
+  // ancestor.
+  for (const auto& [t, m] : drawn)
+    for (TileId a{t.level - 1, t.x / 2, t.y / 2}; a.level >= 0; a = {a.level - 1, a.x / 2, a.y / 2})
+      EXPECT_FALSE(drawn.count(a));
+  // Restricted quadtree and masks: along every side, the drawn tiles touching it are
+  // at most one level apart, and the mask bit is set exactly when they are finer.
+  for (const auto& [t, m] : drawn) {
+    const int side_cells = L.cells[t.level];
+    for (int s = 0; s < 4; ++s) {
+      int finer = 0, same_or_coarser = 0;
+      for (const auto& [u, mu] : drawn) {
+        if (u == t) continue;
+        const int us = L.cells[u.level];
+        // Do the squares share a piece of side s of t?
+        const long tx0 = static_cast<long>(t.x) * side_cells, ty0 = static_cast<long>(t.y) * side_cells;
+        const long ux0 = static_cast<long>(u.x) * us, uy0 = static_cast<long>(u.y) * us;
+        const bool vertical = s == kWest || s == kEast;
+        const long line = s == kWest ? tx0 : s == kEast ? tx0 + side_cells : s == kSouth ? ty0 : ty0 + side_cells;
+        const long u_near = s == kWest ? ux0 + us : s == kEast ? ux0 : s == kSouth ? uy0 + us : uy0;
+        if (u_near != line) continue;
+        const long a0 = vertical ? ty0 : tx0, a1 = a0 + side_cells, b0 = vertical ? uy0 : ux0, b1 = b0 + us;
+        if (std::min(a1, b1) <= std::max(a0, b0)) continue;
+        EXPECT_LE(std::abs(u.level - t.level), 1) << "restricted quadtree";
+        (u.level > t.level ? finer : same_or_coarser)++;
+      }
+      EXPECT_EQ((m >> s) & 1u, finer > 0 ? 1u : 0u) << "mask of " << t.level << "/" << t.x << "/" << t.y << " side " << s;
+      if (finer) {
+        EXPECT_EQ(same_or_coarser, 0);
+      }
+    }
+  }
+}
+
+TEST(TerrainlodSelect, CullingKeepsOnlyTilesInFront) {
+  const PyramidLayout L = flat_layout();
+  Camera c;
+  c.eye = {-100, 640, 50};
+  c.target = {-200, 640, 0};  // looking west, away from the terrain
+  c.width = 640, c.height = 480;
+  const auto sel = select_tiles(L, c, [](const TileId&) { return std::array<double, 2>{0, 0}; });
+  EXPECT_TRUE(sel.tiles.empty());
+  c.up = {0, 0, 1};
+  c.target = c.eye;
+  EXPECT_THROW(check_camera(c), fest::Error);
+  c.target = {-100, 640, 0};  // straight down with up = z
+  EXPECT_THROW(check_camera(c), fest::Error);
 }
 
 }  // namespace

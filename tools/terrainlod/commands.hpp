@@ -72,6 +72,12 @@ struct VerifyArgs {
   unsigned seed = 1;
 };
 
+struct ExportQmArgs {
+  std::string pyramid;
+  std::string output;     // directory
+};
+
+int run_export_qm(const ExportQmArgs& args);
 int run_simplify(const SimplifyArgs& args);
 int run_build(const BuildArgs& args);
 int run_decode(const DecodeArgs& args);

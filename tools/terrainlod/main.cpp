@@ -92,6 +92,11 @@ int main(int argc, char** argv) {
   v->add_option("--cameras", verify.cameras, "Random cameras for the crack check");
   v->add_option("--seed", verify.seed, "Seed of the random cameras");
 
+  ExportQmArgs qm;
+  auto* q = app.add_subcommand("export-qm", "Cesium quantized-mesh-1.0 tiles (base triangulations) and layer.json");
+  q->add_option("pyramid", qm.pyramid, "Pyramid archive (.tlp)")->required();
+  q->add_option("-o,--output", qm.output, "Output directory (new or empty; written completely or not at all)")->required();
+
   StatsArgs stats;
   auto* st = app.add_subcommand("stats", "JSON statistics of a pyramid (.tlp), or of a DEM and its pyramid plan");
   add_dem_options(st, stats.dem);
@@ -105,6 +110,7 @@ int main(int argc, char** argv) {
     if (d->parsed()) return run_decode(decode);
     if (x->parsed()) return run_extract(extract);
     if (v->parsed()) return run_verify(verify);
+    if (q->parsed()) return run_export_qm(qm);
     return run_stats(stats);
   });
 }
