@@ -1,0 +1,48 @@
+#pragma once
+// The Lafortune model as a parameter vector for fitting (specs/brdffit.md §2.2): the
+// layout of the variants, their bounds, the model and its analytic derivatives per
+// channel, and the conversion to and from reflectance::LafortuneBrdf.
+//
+// Layouts (exponents are optimised as log N):
+//   per channel (default): for c in RGB: [rho_d, (Cxy, Cz, log N) x K]    -> 3 (1 + 3K)
+//   --shared-lobe:         [rho_d x3, (rho_s x3, Cxy, log N) x K]         -> 3 + 5K
+// In the shared variant Cz = 1 and a lobe is rho_s,c max(0, Cxy xy + z)^N, which is a
+// Lafortune lobe with Cxy,c = rho_s,c^(1/N) Cxy and Cz,c = rho_s,c^(1/N).
+
+#include <Eigen/Core>
+
+#include "reflectance/lafortune.hpp"
+
+namespace fest::brdffit {
+
+struct ModelSpec {
+  int lobes = 1;        // K, 1..3
+  bool shared = false;  // --shared-lobe
+};
+
+// Bounds of §2.2.
+inline constexpr double kMinExponent = 0.5;
+inline constexpr double kMaxExponent = 1e4;
+inline constexpr double kMaxCoefficient = 1e3;
+
+int parameter_count(const ModelSpec& spec);
+
+// At most this many parameters influence one channel (the gradient buffers' size).
+inline constexpr int kMaxChannelParams = 1 + 3 * 3;
+
+// Projects p onto the bounds (rho >= 0, |C| <= 1e3, 0.5 <= N <= 1e4).
+void clamp_to_bounds(const ModelSpec& spec, Eigen::VectorXd& p);
+
+// f_c and its gradient: writes the indices and derivatives of the parameters it depends
+// on into idx/grad (at most kMaxChannelParams) and returns how many.
+double channel_value(const ModelSpec& spec, const Eigen::VectorXd& p, int c, double xy, double z,
+                     int* idx, double* grad, int* n_grad);
+double channel_value(const ModelSpec& spec, const Eigen::VectorXd& p, int c, double xy, double z);
+
+reflectance::LafortuneBrdf to_brdf(const ModelSpec& spec, const Eigen::VectorXd& p);
+// The inverse of to_brdf for the default layout; for the shared layout the lobes of b
+// must have the shape it produces (Cz > 0 and Cxy/Cz and N equal across channels): the
+// first channel's ratio and exponent are taken.
+Eigen::VectorXd from_brdf(const ModelSpec& spec, const reflectance::LafortuneBrdf& b);
+
+}  // namespace fest::brdffit
