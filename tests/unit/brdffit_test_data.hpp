@@ -75,3 +75,58 @@ inline double relative_rms(const fest::reflectance::LafortuneBrdf& a, const fest
 }
 
 }  // namespace brdffit_test
+
+namespace brdffit_test {
+
+// A lumitexel set made in memory: lumitexel i has a random normal and `per` samples of
+// brdf_of(i) from random light and view directions around that normal (half near the
+// mirror direction), with multiplicative noise.
+template <typename BrdfOf>
+fest::brdffit::LumitexelSet make_set(int count, int per, unsigned seed, double noise, BrdfOf brdf_of,
+                                     std::vector<Vector3d>* true_normals = nullptr) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  fest::brdffit::LumitexelSet set;
+  for (int i = 0; i < count; ++i) {
+    Vector3d n(g(rng), g(rng), g(rng));
+    n.normalize();
+    const Eigen::Matrix3d frame = fest::reflectance::local_frame(n);
+    fest::brdffit::Lumitexel l;
+    l.n = n.cast<float>();
+    l.first_sample = set.samples.size();
+    l.count = static_cast<std::uint16_t>(per);
+    const fest::reflectance::LafortuneBrdf b = brdf_of(i);
+    for (int k = 0; k < per; ++k) {
+      const Vector3d u = hemisphere(rng, 0.1);
+      const Vector3d v = (k % 2) ? near_mirror(rng, u, 0.3, 0.1) : hemisphere(rng, 0.1);
+      Vector3d r = evaluate(b, u, v) * u.z();
+      for (int c = 0; c < 3; ++c) r[c] *= 1 + noise * g(rng);
+      fest::brdffit::Sample s;
+      s.image = static_cast<std::uint16_t>(k);
+      s.u_world = (frame * u).cast<float>();
+      s.v_world = (frame * v).cast<float>();
+      s.r = r.cast<float>();
+      set.samples.push_back(s);
+    }
+    set.lumitexels.push_back(l);
+    if (true_normals) true_normals->push_back(n);
+  }
+  return set;
+}
+
+// Three distinct materials: a red matte with a broad lobe, a shiny blue, a grey metal-like.
+inline std::vector<fest::reflectance::LafortuneBrdf> three_materials() {
+  using fest::reflectance::LafortuneBrdf;
+  using fest::reflectance::LafortuneLobe;
+  using fest::reflectance::Rgb;
+  LafortuneBrdf a, b, c;
+  a.rho_d = Rgb(0.7, 0.15, 0.1);
+  a.lobes = {LafortuneLobe{Rgb::Constant(-0.8), Rgb::Constant(0.8), Rgb::Constant(5)}};
+  b.rho_d = Rgb(0.05, 0.1, 0.5);
+  b.lobes = {LafortuneLobe{Rgb::Constant(-1.02), Rgb::Constant(1.02), Rgb::Constant(60)}};
+  c.rho_d = Rgb(0.2, 0.2, 0.2);
+  c.lobes = {LafortuneLobe{Rgb::Constant(-1.05), Rgb::Constant(1.0), Rgb::Constant(20)}};
+  return {a, b, c};
+}
+
+}  // namespace brdffit_test
