@@ -48,8 +48,12 @@ std::vector<FitSample> gather(const LumitexelSet& set, const std::vector<FitSamp
 std::vector<double> distances(const LumitexelSet& set, const std::vector<FitSample>& local, const Members& members,
                               const ModelSpec& model, const Eigen::VectorXd& p, int threads) {
   std::vector<double> d(members.size());
+  const ModelEvaluator f(model, p);
   for_each_chunk(members.size(), kChunk, threads, [&](std::size_t, std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) d[k] = lumitexel_distance(set, local, members[k], model, p);
+    for (std::size_t k = b; k < e; ++k) {
+      const FitSample* s = first_of(set, local, members[k]);
+      d[k] = mean_squared_residual(f, s, s + set.lumitexels[members[k]].count);
+    }
   });
   return d;
 }
@@ -70,12 +74,14 @@ struct Clusterer {
       throw;
     }
   }
-  FitResult refit(const Members& m, const Eigen::VectorXd& start, int id) const {
+  FitResult refit(const Members& m, const Eigen::VectorXd& start, int id, std::size_t limit = 0) const {
     FitOptions fo = o.fit;
     fo.subsample = 0;
     fo.max_iterations = o.refit_iterations;
+    fo.tolerance = o.refit_tolerance;
+    if (limit == 0 || (o.fit.subsample != 0 && o.fit.subsample < limit)) limit = o.fit.subsample;
     try {
-      return refine_brdf(gather(set, local, m, o.fit.subsample, o.fit.seed), start, fo);
+      return refine_brdf(gather(set, local, m, limit, o.fit.seed), start, fo);
     } catch (const Error& e) {
       if (e.status() == Status::failure) throw runtime_failure("the BRDF fit of cluster {} produced NaN", id);
       throw;
@@ -170,11 +176,14 @@ std::vector<std::uint16_t> nearest_clusters(const LumitexelSet& set, const std::
                                             const ModelSpec& model, const std::vector<Eigen::VectorXd>& params,
                                             int threads) {
   std::vector<std::uint16_t> a(set.lumitexels.size(), 0);
+  std::vector<ModelEvaluator> fs;
+  for (const Eigen::VectorXd& p : params) fs.emplace_back(model, p);
   for_each_chunk(a.size(), kChunk, threads, [&](std::size_t, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       double best = std::numeric_limits<double>::infinity();
+      const FitSample* s = first_of(set, local, i);
       for (std::size_t j = 0; j < params.size(); ++j) {
-        const double d = lumitexel_distance(set, local, i, model, params[j]);
+        const double d = mean_squared_residual(fs[j], s, s + set.lumitexels[i].count);
         if (d < best) best = d, a[i] = static_cast<std::uint16_t>(j);
       }
     }
@@ -227,13 +236,14 @@ bool split_cluster(const Clusterer& cl, const Members& members, const MaterialCl
     out.plus_members.clear();
     out.minus_members.clear();
     for (std::size_t k = 0; k < members.size(); ++k) (side[k] ? out.plus_members : out.minus_members).push_back(members[k]);
-    out.plus = cl.refit(out.plus_members, pp, id);
-    out.minus = cl.refit(out.minus_members, pm, id);
-    pp = out.plus.params;
-    pm = out.minus.params;
+    // Inside the loop the two BRDFs only have to divide the members: small subsets.
+    pp = cl.refit(out.plus_members, pp, id, o.split_subsample).params;
+    pm = cl.refit(out.minus_members, pm, id, o.split_subsample).params;
     out.iterations = it + 1;
     if (it > 0 && static_cast<double>(changed) < o.stable * static_cast<double>(members.size())) break;
   }
+  out.plus = cl.refit(out.plus_members, pp, id);
+  out.minus = cl.refit(out.minus_members, pm, id);
   return true;
 }
 

@@ -29,6 +29,9 @@ struct ClusterOptions {
   double min_gain = 0.02;      // auto mode: stop when a split lowers the total error by less
                                // than this fraction of the one-cluster error
   int refit_iterations = 30;   // LM iterations of warm-started refits
+  double refit_tolerance = 1e-6;  // their stopping rule (relative decrease of E)
+  std::size_t split_subsample = 25000;  // samples of the refits inside a split's loop (the
+                                        // children are refitted on fit.subsample after it)
   FitOptions fit;              // model, starts, subsample, seed, threads of every fit
 };
 

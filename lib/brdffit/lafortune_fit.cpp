@@ -197,11 +197,15 @@ std::vector<std::size_t> subsample_indices(std::size_t n, std::size_t count, std
 }
 
 double mean_squared_residual(const ModelSpec& spec, const Eigen::VectorXd& p, const FitSample* b, const FitSample* e) {
+  return mean_squared_residual(ModelEvaluator(spec, p), b, e);
+}
+
+double mean_squared_residual(const ModelEvaluator& f, const FitSample* b, const FitSample* e) {
   double sum = 0, weight = 0;
   for (const FitSample* q = b; q != e; ++q) {
     double r2 = 0;
     for (int c = 0; c < 3; ++c) {
-      const double res = q->r[c] - channel_value(spec, p, c, q->xy, q->z) * q->uz;
+      const double res = q->r[c] - f.value(c, q->xy, q->z) * q->uz;
       r2 += res * res;
     }
     sum += q->w * r2;

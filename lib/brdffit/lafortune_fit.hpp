@@ -51,6 +51,7 @@ FitResult refine_brdf(const std::vector<FitSample>& samples, const Eigen::Vector
 // channel. Returns 0 for an empty range.
 double mean_squared_residual(const ModelSpec& spec, const Eigen::VectorXd& p, const FitSample* begin,
                              const FitSample* end);
+double mean_squared_residual(const ModelEvaluator& f, const FitSample* begin, const FitSample* end);
 
 // Deterministic subsample of at most `count` indices of [0, n) (sorted), from a seed.
 std::vector<std::size_t> subsample_indices(std::size_t n, std::size_t count, std::uint64_t seed);

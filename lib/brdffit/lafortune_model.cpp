@@ -112,6 +112,23 @@ double channel_value(const ModelSpec& s, const Eigen::VectorXd& p, int c, double
   return channel_value(s, p, c, xy, z, idx, grad, &n);
 }
 
+ModelEvaluator::ModelEvaluator(const ModelSpec& s, const Eigen::VectorXd& p) {
+  lobes_ = s.lobes;
+  const int m = per_channel(s);
+  for (int c = 0; c < 3; ++c) {
+    diffuse_[c] = (s.shared ? p[c] : p[c * m]) / M_PI;
+    for (int k = 0; k < s.lobes; ++k) {
+      Lobe& l = lobe_[k][c];
+      if (!s.shared) {
+        l = {p[c * m + 1 + 3 * k], p[c * m + 2 + 3 * k], std::exp(p[c * m + 3 + 3 * k]), 1.0};
+      } else {
+        const int o = 3 + 5 * k;
+        l = {p[o + 3], 1.0, std::exp(p[o + 4]), p[o + c]};
+      }
+    }
+  }
+}
+
 reflectance::LafortuneBrdf to_brdf(const ModelSpec& s, const Eigen::VectorXd& p) {
   check(s);
   reflectance::LafortuneBrdf b;

@@ -9,6 +9,8 @@
 // In the shared variant Cz = 1 and a lobe is rho_s,c max(0, Cxy xy + z)^N, which is a
 // Lafortune lobe with Cxy,c = rho_s,c^(1/N) Cxy and Cz,c = rho_s,c^(1/N).
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "reflectance/lafortune.hpp"
@@ -38,6 +40,30 @@ void clamp_to_bounds(const ModelSpec& spec, Eigen::VectorXd& p);
 double channel_value(const ModelSpec& spec, const Eigen::VectorXd& p, int c, double xy, double z,
                      int* idx, double* grad, int* n_grad);
 double channel_value(const ModelSpec& spec, const Eigen::VectorXd& p, int c, double xy, double z);
+
+// The model with exponents and scales resolved, for evaluating many samples of one
+// parameter vector (the distances of clustering): two transcendentals per lobe and channel.
+class ModelEvaluator {
+ public:
+  ModelEvaluator(const ModelSpec& spec, const Eigen::VectorXd& p);
+  double value(int c, double xy, double z) const {
+    double f = diffuse_[c];
+    for (int k = 0; k < lobes_; ++k) {
+      const Lobe& l = lobe_[k][c];
+      const double base = l.cxy * xy + l.cz * z;
+      if (base > 0) f += l.scale * std::exp(l.n * std::log(base));
+    }
+    return f;
+  }
+
+ private:
+  struct Lobe {
+    double cxy = 0, cz = 0, n = 1, scale = 0;
+  };
+  double diffuse_[3] = {0, 0, 0};
+  Lobe lobe_[3][3];
+  int lobes_ = 0;
+};
 
 reflectance::LafortuneBrdf to_brdf(const ModelSpec& spec, const Eigen::VectorXd& p);
 // The inverse of to_brdf for the default layout; for the shared layout the lobes of b

@@ -13,14 +13,30 @@ namespace fest::brdffit {
 
 namespace {
 
+// A sample's unit directions, normalised once per lumitexel.
+struct Directions {
+  Eigen::Vector3d u, v;
+  double uv;
+};
+
+void directions(const Sample* s, std::size_t count, std::vector<Directions>& out) {
+  out.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    out[i].u = s[i].u_world.cast<double>().normalized();
+    out[i].v = s[i].v_world.cast<double>().normalized();
+    out[i].uv = out[i].u.dot(out[i].v);
+  }
+}
+
 // Residuals r_c - f_L(u', v') max(0, u'.n') of every sample and channel for normal n.
-void residuals(const Sample* s, std::size_t count, const Eigen::Vector3d& n, const BlendedBrdf& f, Eigen::VectorXd& out) {
+void residuals(const Sample* s, const std::vector<Directions>& d, const Eigen::Vector3d& n, const BlendedBrdf& f,
+               Eigen::VectorXd& out) {
+  const std::size_t count = d.size();
   out.resize(3 * static_cast<Eigen::Index>(count));
   for (std::size_t i = 0; i < count; ++i) {
-    const Eigen::Vector3d u = s[i].u_world.cast<double>().normalized(), v = s[i].v_world.cast<double>().normalized();
-    const double uz = u.dot(n), vz = v.dot(n);
-    const double xy = u.dot(v) - uz * vz;  // u_x v_x + u_y v_y in any frame around n
-    const Eigen::Vector3d fl = blended_value(f.model, f.functions, f.weights, f.mode, f.basis_size, xy, uz * vz);
+    const double uz = d[i].u.dot(n), vz = d[i].v.dot(n);
+    const double xy = d[i].uv - uz * vz;  // u_x v_x + u_y v_y in any frame around n
+    const Eigen::Vector3d fl = blended_value(f.functions, f.weights, f.mode, f.basis_size, xy, uz * vz);
     const double sw = std::sqrt(std::max(0.0f, s[i].weight));
     for (int c = 0; c < 3; ++c)
       out[static_cast<Eigen::Index>(3 * i) + c] = sw * (s[i].r[c] - fl[c] * std::max(0.0, uz));
@@ -34,8 +50,10 @@ Eigen::Vector3d tilted(const Eigen::Vector3d& n0, const Eigen::Matrix3d& frame, 
 }  // namespace
 
 double normal_residual(const Sample* s, std::size_t count, const Eigen::Vector3d& n, const BlendedBrdf& f) {
+  std::vector<Directions> d;
+  directions(s, count, d);
   Eigen::VectorXd r;
-  residuals(s, count, n, f, r);
+  residuals(s, d, n, f, r);
   return r.squaredNorm();
 }
 
@@ -48,8 +66,10 @@ Eigen::Vector3d refine_normal(const Sample* s, std::size_t count, const Eigen::V
     return len > radius ? Eigen::Vector2d(ab * (radius / len)) : ab;
   };
   Eigen::Vector2d ab = Eigen::Vector2d::Zero();
+  std::vector<Directions> dirs;
+  directions(s, count, dirs);
   Eigen::VectorXd r, rp, rm;
-  residuals(s, count, n0, f, r);
+  residuals(s, dirs, n0, f, r);
   double e = r.squaredNorm();
   if (before) *before = e;
   double mu = -1;
@@ -60,8 +80,8 @@ Eigen::Vector3d refine_normal(const Sample* s, std::size_t count, const Eigen::V
     for (int k = 0; k < 2; ++k) {
       Eigen::Vector2d d = Eigen::Vector2d::Zero();
       d[k] = h;
-      residuals(s, count, tilted(n0, frame, ab + d), f, rp);
-      residuals(s, count, tilted(n0, frame, ab - d), f, rm);
+      residuals(s, dirs, tilted(n0, frame, ab + d), f, rp);
+      residuals(s, dirs, tilted(n0, frame, ab - d), f, rm);
       j.col(k) = (rp - rm) / (2 * h);
     }
     const Eigen::Matrix2d jtj = j.transpose() * j;
@@ -72,7 +92,7 @@ Eigen::Vector3d refine_normal(const Sample* s, std::size_t count, const Eigen::V
       const Eigen::Vector2d step = (jtj + mu * Eigen::Matrix2d::Identity()).ldlt().solve(-g);
       const Eigen::Vector2d trial = clamp_tilt(ab + step);
       Eigen::VectorXd rt;
-      residuals(s, count, tilted(n0, frame, trial), f, rt);
+      residuals(s, dirs, tilted(n0, frame, trial), f, rt);
       const double et = rt.squaredNorm();
       if (std::isfinite(et) && et < e) {
         const double decrease = (e - et) / e;
@@ -81,7 +101,7 @@ Eigen::Vector3d refine_normal(const Sample* s, std::size_t count, const Eigen::V
         e = et;
         mu = std::max(mu / 10, 1e-300);
         accepted = true;
-        if (decrease < 1e-12) it = o.max_iterations;
+        if (decrease < 1e-10 || step.norm() < 1e-9) it = o.max_iterations;  // converged
       } else {
         mu *= 10;
       }
@@ -104,6 +124,7 @@ NormalResult refine_normals(const LumitexelSet& set, const Projection& p, const 
   std::vector<float> weights = p.weights;
   const int per = p.values_per_lumitexel();
   std::vector<double> before(n, 0), after(n, 0);
+  const std::vector<ModelEvaluator> ev = evaluators_of(p.basis);
   for_each_chunk(n, 512, o.threads, [&](std::size_t, std::size_t b, std::size_t e) {
     std::vector<FitSample> local;
     for (std::size_t i = b; i < e; ++i) {
@@ -111,7 +132,7 @@ NormalResult refine_normals(const LumitexelSet& set, const Projection& p, const 
       Eigen::Vector3d normal = l.n.cast<double>().normalized();
       res.normals[i] = normal.cast<float>();
       if (l.count < o.min_samples) continue;
-      BlendedBrdf f{p.basis.model, functions_of(p, i), weights.data() + i * static_cast<std::size_t>(per), p.mode,
+      BlendedBrdf f{functions_of(p, ev, i), weights.data() + i * static_cast<std::size_t>(per), p.mode,
                     p.basis_size};
       const Sample* s = set.samples.data() + l.first_sample;
       for (int round = 0; round < o.alternate; ++round) {
@@ -119,7 +140,7 @@ NormalResult refine_normals(const LumitexelSet& set, const Projection& p, const 
           local_samples_of(set, i, normal, local);
           ProjectOptions po = o.project;
           po.weights = p.mode;
-          solve_weights(local.data(), local.size(), p.basis.model, f.functions, po, p.basis_size,
+          solve_weights(local.data(), local.size(), f.functions, po, p.basis_size,
                         weights.data() + i * static_cast<std::size_t>(per));
         }
         double b0 = 0, a0 = 0;

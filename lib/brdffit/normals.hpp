@@ -34,8 +34,7 @@ struct NormalResult {
 
 // The blended BRDF of one lumitexel: basis functions and weights.
 struct BlendedBrdf {
-  ModelSpec model;
-  std::vector<const Eigen::VectorXd*> functions;
+  BasisFunctions functions;
   const float* weights = nullptr;
   WeightMode mode = WeightMode::scalar;
   int basis_size = 0;

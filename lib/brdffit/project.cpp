@@ -53,8 +53,9 @@ Basis build_basis(const LumitexelSet& set, const std::vector<FitSample>& local, 
       for (std::size_t k = 0; k < clusters.size(); ++k) {
         if (k == j) continue;
         std::vector<double> d(members[j].size());
+        const ModelEvaluator fk(model, clusters[k].params);
         for_each_chunk(members[j].size(), 1024, split.fit.threads, [&](std::size_t, std::size_t b, std::size_t e) {
-          for (std::size_t m = b; m < e; ++m) d[m] = lumitexel_distance(set, local, members[j][m], model, clusters[k].params);
+          for (std::size_t m = b; m < e; ++m) d[m] = mean_squared_residual(fk, local.data() + set.lumitexels[members[j][m]].first_sample, local.data() + set.lumitexels[members[j][m]].first_sample + set.lumitexels[members[j][m]].count);
         });
         const double mean = d.empty() ? 0 : std::accumulate(d.begin(), d.end(), 0.0) / static_cast<double>(d.size());
         near.emplace_back(mean, k);
@@ -71,8 +72,8 @@ Basis build_basis(const LumitexelSet& set, const std::vector<FitSample>& local, 
   return basis;
 }
 
-void solve_weights(const FitSample* s, std::size_t n, const ModelSpec& model,
-                   const std::vector<const Eigen::VectorXd*>& fns, const ProjectOptions& o, int basis_size, float* out) {
+void solve_weights(const FitSample* s, std::size_t n, const BasisFunctions& fns, const ProjectOptions& o, int basis_size,
+                   float* out) {
   const int nb = static_cast<int>(fns.size());
   const int per = o.weights == WeightMode::rgb ? 3 : 1;
   std::fill(out, out + per * basis_size, 0.0f);
@@ -88,7 +89,7 @@ void solve_weights(const FitSample* s, std::size_t n, const ModelSpec& model,
     for (int c = 0; c < 3; ++c) {
       const auto row = static_cast<Eigen::Index>(3 * i + static_cast<std::size_t>(c));
       r[row] = sw * s[i].r[c];
-      for (int j = 0; j < nb; ++j) f(row, j) = sw * channel_value(model, *fns[j], c, s[i].xy, s[i].z) * s[i].uz;
+      for (int j = 0; j < nb; ++j) f(row, j) = sw * fns[j]->value(c, s[i].xy, s[i].z) * s[i].uz;
     }
   }
   if (per == 1) {
@@ -108,20 +109,26 @@ void solve_weights(const FitSample* s, std::size_t n, const ModelSpec& model,
   }
 }
 
-Eigen::Vector3d blended_value(const ModelSpec& model, const std::vector<const Eigen::VectorXd*>& fns, const float* w,
-                              WeightMode mode, int basis_size, double xy, double z) {
+Eigen::Vector3d blended_value(const BasisFunctions& fns, const float* w, WeightMode mode, int basis_size, double xy,
+                              double z) {
   Eigen::Vector3d f = Eigen::Vector3d::Zero();
   for (int c = 0; c < 3; ++c)
     for (std::size_t j = 0; j < fns.size(); ++j) {
       const float t = mode == WeightMode::rgb ? w[c * basis_size + static_cast<int>(j)] : w[j];
-      if (t != 0) f[c] += t * channel_value(model, *fns[j], c, xy, z);
+      if (t != 0) f[c] += t * fns[j]->value(c, xy, z);
     }
   return f;
 }
 
-std::vector<const Eigen::VectorXd*> functions_of(const Projection& p, std::size_t i) {
-  std::vector<const Eigen::VectorXd*> fns;
-  for (int k : p.basis.cluster_basis[p.cluster[i]]) fns.push_back(&p.basis.brdfs[static_cast<std::size_t>(k)]);
+std::vector<ModelEvaluator> evaluators_of(const Basis& basis) {
+  std::vector<ModelEvaluator> ev;
+  for (const Eigen::VectorXd& b : basis.brdfs) ev.emplace_back(basis.model, b);
+  return ev;
+}
+
+BasisFunctions functions_of(const Projection& p, const std::vector<ModelEvaluator>& ev, std::size_t i) {
+  BasisFunctions fns;
+  for (int k : p.basis.cluster_basis[p.cluster[i]]) fns.push_back(&ev[static_cast<std::size_t>(k)]);
   return fns;
 }
 
@@ -140,10 +147,11 @@ Projection project_lumitexels(const LumitexelSet& set, const std::vector<FitSamp
   for (const auto& list : p.basis.cluster_basis) p.basis_size = std::max(p.basis_size, static_cast<int>(list.size()));
   const int per = p.values_per_lumitexel();
   p.weights.assign(set.lumitexels.size() * static_cast<std::size_t>(per), 0.0f);
+  const std::vector<ModelEvaluator> ev = evaluators_of(p.basis);
   for_each_chunk(set.lumitexels.size(), 1024, threads, [&](std::size_t, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       const Lumitexel& l = set.lumitexels[i];
-      solve_weights(local.data() + l.first_sample, l.count, model, functions_of(p, i), o, p.basis_size,
+      solve_weights(local.data() + l.first_sample, l.count, functions_of(p, ev, i), o, p.basis_size,
                     p.weights.data() + i * static_cast<std::size_t>(per));
     }
   });
@@ -155,17 +163,18 @@ ProjectionError projection_error(const LumitexelSet& set, const std::vector<FitS
   const std::size_t chunks = chunk_count(set.lumitexels.size(), 1024);
   std::vector<ProjectionError> parts(chunks);
   const int per = p.values_per_lumitexel();
+  const std::vector<ModelEvaluator> ev = evaluators_of(p.basis);
   for_each_chunk(set.lumitexels.size(), 1024, threads, [&](std::size_t ci, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       const Lumitexel& l = set.lumitexels[i];
-      const auto fns = functions_of(p, i);
+      const BasisFunctions fns = functions_of(p, ev, i);
       const float* w = p.weights.data() + i * static_cast<std::size_t>(per);
       for (std::size_t k = 0; k < l.count; ++k) {
         const FitSample& s = local[l.first_sample + k];
-        const Eigen::Vector3d fl = blended_value(p.basis.model, fns, w, p.mode, p.basis_size, s.xy, s.z);
+        const Eigen::Vector3d fl = blended_value(fns, w, p.mode, p.basis_size, s.xy, s.z);
         for (int c = 0; c < 3; ++c) {
           const double a = s.r[c] - fl[c] * s.uz;
-          const double q = s.r[c] - channel_value(p.basis.model, *fns[0], c, s.xy, s.z) * s.uz;
+          const double q = s.r[c] - fns[0]->value(c, s.xy, s.z) * s.uz;
           parts[ci].projected += s.w * a * a / 3;
           parts[ci].per_cluster += s.w * q * q / 3;
         }

@@ -50,22 +50,26 @@ Basis build_basis(const LumitexelSet& set, const std::vector<FitSample>& local, 
                   const std::vector<MaterialCluster>& clusters, const std::vector<std::uint16_t>& assignment,
                   const ProjectOptions& options);
 
+// The basis functions of one lumitexel, in weight order.
+using BasisFunctions = std::vector<const ModelEvaluator*>;
+
 // Weights of one lumitexel (samples in its local frame) for the given basis functions;
 // writes values_per_lumitexel() floats. Fewer samples than functions: (1, 0, ...).
-void solve_weights(const FitSample* samples, std::size_t count, const ModelSpec& model,
-                   const std::vector<const Eigen::VectorXd*>& functions, const ProjectOptions& options, int basis_size,
-                   float* out);
+void solve_weights(const FitSample* samples, std::size_t count, const BasisFunctions& functions,
+                   const ProjectOptions& options, int basis_size, float* out);
 
 // f_L per channel for a lumitexel with the given weights.
-Eigen::Vector3d blended_value(const ModelSpec& model, const std::vector<const Eigen::VectorXd*>& functions,
-                              const float* weights, WeightMode mode, int basis_size, double xy, double z);
+Eigen::Vector3d blended_value(const BasisFunctions& functions, const float* weights, WeightMode mode, int basis_size,
+                              double xy, double z);
 
 // Assigns every lumitexel to its nearest cluster, builds the bases and solves all weights.
 Projection project_lumitexels(const LumitexelSet& set, const std::vector<FitSample>& local, const ModelSpec& model,
                               const std::vector<MaterialCluster>& clusters, const ProjectOptions& options);
 
-// The basis functions of lumitexel i's cluster, in weight order.
-std::vector<const Eigen::VectorXd*> functions_of(const Projection& p, std::size_t i);
+// Evaluators of every basis BRDF (index as in basis.brdfs), and the functions of
+// lumitexel i's cluster taken from them.
+std::vector<ModelEvaluator> evaluators_of(const Basis& basis);
+BasisFunctions functions_of(const Projection& p, const std::vector<ModelEvaluator>& evaluators, std::size_t i);
 
 // Sum over lumitexels of |L| D(L, f_L) (the projected model's error) and, for comparison,
 // of |L| D(L, f_C) (the per-cluster model's error).

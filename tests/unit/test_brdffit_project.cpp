@@ -117,9 +117,9 @@ TEST(BrdffitProject, TooFewSamplesGiveThePureClusterBrdf) {
   const auto mats = brdffit_test::three_materials();
   const LumitexelSet set = brdffit_test::make_set(1, 1, 3, 0.0, [&](int) { return mats[0]; });
   const auto local = local_samples(set, 1);
-  const Eigen::VectorXd a = from_brdf(ModelSpec{}, mats[0]), b = from_brdf(ModelSpec{}, mats[1]);
+  const ModelEvaluator a(ModelSpec{}, from_brdf(ModelSpec{}, mats[0])), b(ModelSpec{}, from_brdf(ModelSpec{}, mats[1]));
   float w[2] = {-7, -7};
-  solve_weights(local.data(), 1, ModelSpec{}, {&a, &b}, ProjectOptions{}, 2, w);
+  solve_weights(local.data(), 1, {&a, &b}, ProjectOptions{}, 2, w);
   EXPECT_EQ(w[0], 1.0f);
   EXPECT_EQ(w[1], 0.0f);
 }
