@@ -30,6 +30,7 @@ Normal normal_equations(const ModelSpec& spec, const Eigen::VectorXd& p, const s
   const int np = static_cast<int>(p.size());
   const std::size_t chunks = chunk_count(s.size(), kChunk);
   std::vector<Normal> parts(chunks);
+  const ModelEvaluator model(spec, p);
   for_each_chunk(s.size(), kChunk, threads, [&](std::size_t ci, std::size_t b, std::size_t e) {
     Normal& out = parts[ci];
     out.jtj = Eigen::MatrixXd::Zero(np, np);
@@ -40,7 +41,7 @@ Normal normal_equations(const ModelSpec& spec, const Eigen::VectorXd& p, const s
     for (std::size_t i = b; i < e; ++i) {
       const FitSample& q = s[i];
       for (int c = 0; c < 3; ++c) {
-        const double f = channel_value(spec, p, c, q.xy, q.z, idx, grad, &ng);
+        const double f = model.value(c, q.xy, q.z, idx, grad, &ng);
         const double res = q.r[c] - f * q.uz;
         double w = q.w;
         if (huber > 0 && std::abs(res) > huber) {

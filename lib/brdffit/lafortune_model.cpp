@@ -116,14 +116,16 @@ ModelEvaluator::ModelEvaluator(const ModelSpec& s, const Eigen::VectorXd& p) {
   lobes_ = s.lobes;
   const int m = per_channel(s);
   for (int c = 0; c < 3; ++c) {
-    diffuse_[c] = (s.shared ? p[c] : p[c * m]) / M_PI;
+    index_rho_[c] = s.shared ? c : c * m;
+    diffuse_[c] = p[index_rho_[c]] / M_PI;
     for (int k = 0; k < s.lobes; ++k) {
       Lobe& l = lobe_[k][c];
       if (!s.shared) {
-        l = {p[c * m + 1 + 3 * k], p[c * m + 2 + 3 * k], std::exp(p[c * m + 3 + 3 * k]), 1.0};
+        const int o = c * m + 1 + 3 * k;
+        l = {p[o], p[o + 1], std::exp(p[o + 2]), 1.0, o, o + 1, o + 2, -1};
       } else {
         const int o = 3 + 5 * k;
-        l = {p[o + 3], 1.0, std::exp(p[o + 4]), p[o + c]};
+        l = {p[o + 3], 1.0, std::exp(p[o + 4]), p[o + c], o + 3, -1, o + 4, o + c};
       }
     }
   }

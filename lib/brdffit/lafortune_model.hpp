@@ -55,12 +55,48 @@ class ModelEvaluator {
     }
     return f;
   }
+  // The value and its gradient, as channel_value() gives them (same indices and order).
+  double value(int c, double xy, double z, int* idx, double* grad, int* n_grad) const {
+    int g = 0;
+    double f = diffuse_[c];
+    idx[g] = index_rho_[c];
+    grad[g++] = 1 / M_PI;
+    for (int k = 0; k < lobes_; ++k) {
+      const Lobe& l = lobe_[k][c];
+      const double base = l.cxy * xy + l.cz * z;
+      double term = 0, d_base = 0, d_logn = 0;
+      if (base > 0) {
+        const double log_b = std::log(base);
+        term = std::exp(l.n * log_b);
+        d_base = l.n * term / base;
+        d_logn = term * log_b * l.n;
+      }
+      f += l.scale * term;
+      if (l.index_scale >= 0) {  // shared: rho_s, Cxy, log N
+        idx[g] = l.index_scale;
+        grad[g++] = term;
+        idx[g] = l.index_cxy;
+        grad[g++] = l.scale * d_base * xy;
+      } else {
+        idx[g] = l.index_cxy;
+        grad[g++] = d_base * xy;
+        idx[g] = l.index_cz;
+        grad[g++] = d_base * z;
+      }
+      idx[g] = l.index_logn;
+      grad[g++] = l.scale * d_logn;
+    }
+    *n_grad = g;
+    return f;
+  }
 
  private:
   struct Lobe {
     double cxy = 0, cz = 0, n = 1, scale = 0;
+    int index_cxy = -1, index_cz = -1, index_logn = -1, index_scale = -1;
   };
   double diffuse_[3] = {0, 0, 0};
+  int index_rho_[3] = {0, 0, 0};
   Lobe lobe_[3][3];
   int lobes_ = 0;
 };

@@ -197,6 +197,17 @@ TEST(BrdffitModel, AnalyticJacobianMatchesFiniteDifferences) {
         const double fd = (channel_value(spec, hi, c, s.xy, s.z) - channel_value(spec, lo, c, s.xy, s.z)) / 2e-6;
         EXPECT_NEAR(grad[a], fd, 1e-5 * (1 + std::abs(fd))) << "parameter " << idx[a];
       }
+      // The evaluator used by the fit gives the same value, indices and derivatives.
+      int idx2[kMaxChannelParams];
+      double grad2[kMaxChannelParams];
+      int n2 = 0;
+      const ModelEvaluator ev(spec, p);
+      EXPECT_NEAR(ev.value(c, s.xy, s.z, idx2, grad2, &n2), channel_value(spec, p, c, s.xy, s.z), 1e-12);
+      ASSERT_EQ(n2, n);
+      for (int a = 0; a < n; ++a) {
+        EXPECT_EQ(idx2[a], idx[a]);
+        EXPECT_NEAR(grad2[a], grad[a], 1e-12 * (1 + std::abs(grad[a])));
+      }
     }
   }
 }
