@@ -1,0 +1,16 @@
+#pragma once
+// The materials side of brdffit (specs/brdffit.md §2.3, §2.5-2.7, §4): the subcommands
+// fit, cluster, project and normals. Include only from tools/brdffit/main.cpp.
+
+#include <CLI/CLI.hpp>
+
+namespace brdffit_tool {
+
+// Declares the four subcommands and their flags on `app`.
+void add_materials_commands(CLI::App& app);
+
+// After parsing: runs the materials subcommand that was given and returns its exit
+// status; returns -1 when none of them was given.
+int run_materials_command(const CLI::App& app);
+
+}  // namespace brdffit_tool
