@@ -32,3 +32,5 @@ pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 # terrainlod: DEMs through GDAL (GeoTIFF georeference, nodata, every raster GDAL reads).
 find_package(GDAL CONFIG REQUIRED)
+# SHA-256 checksums of capture sessions (libssl-dev: OpenSSL's libcrypto).
+find_package(OpenSSL REQUIRED COMPONENTS Crypto)

@@ -17,6 +17,7 @@
 #include "hdr/bracket.hpp"
 #include "hdr/merge.hpp"
 #include "hdr/robertson.hpp"
+#include "manifest_mode.hpp"
 #include "stack_files.hpp"
 
 namespace {
@@ -158,11 +159,16 @@ int main(int argc, char** argv) {
   // `hdrmerge IMG...` means `hdrmerge merge IMG...` (merge is the default subcommand).
   std::vector<char*> args(argv, argv + argc);
   static char merge_name[] = "merge";
+  static char session_name[] = "session";
   if (argc > 1) {
     const std::string first = argv[1];
-    const bool known = first == "merge" || first == "calibrate" || first == "bracket" || first == "--help" || first == "-h" ||
-                       first == "--version";
-    if (!known) args.insert(args.begin() + 1, merge_name);
+    const bool known = first == "merge" || first == "calibrate" || first == "bracket" || first == "session" ||
+                       first == "--help" || first == "-h" || first == "--version";
+    // `hdrmerge --manifest M` means `hdrmerge session --manifest M`.
+    bool manifest = false;
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]) == "--manifest" || std::string(argv[i]).rfind("--manifest=", 0) == 0) manifest = true;
+    if (!known) args.insert(args.begin() + 1, manifest ? session_name : merge_name);
   }
   CLI::App app{"Camera response recovery (Debevec & Malik 1997) and merging of an exposure series into\n"
                "a high-dynamic-range radiance image.",
@@ -203,12 +209,28 @@ int main(int argc, char** argv) {
   bracket_cmd->add_option("--seed", bracket.seed, "Noise seed (exposure k uses seed + k)");
   bracket_cmd->add_option("--response-out", bracket.response_out, "Also write the true response curve (CSV, g(128) = 0)");
 
+  ManifestArgs session;
+  auto* session_cmd = app.add_subcommand(
+      "session", "A capture session: merge every (angle, light) set, mask every silhouette, rig JSON on stdout "
+                 "(also: hdrmerge --manifest M)");
+  session_cmd->add_option("--manifest", session.manifest, "The session's manifest.json, - = standard input")->required();
+  session_cmd->add_option("-o,--output", session.output_dir, "Folder for the EXRs and masks (default SESSION/hdr)");
+  session_cmd->add_option("--response", session.response_in, "Use this response curve (CSV) instead of recovering one");
+  session_cmd->add_option("--method", session.method, "Response recovery: debevec or robertson")
+      ->check(CLI::IsMember({"debevec", "robertson"}));
+  session_cmd->add_option("--samples", session.samples, "Sample pixels per channel for response recovery")
+      ->check(CLI::Range(1, 100000));
+  session_cmd->add_option("--lambda", session.lambda, "Smoothness weight of the response")->check(CLI::NonNegativeNumber);
+  session_cmd->add_flag("--float", session.full_float, "EXR with 32-bit float channels instead of half");
+  cli::add_threads(*session_cmd, session.threads);
+
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error.\n"
              "See hdrmerge(1).");
   const int n = static_cast<int>(args.size());
   return cli::run(app, n, args.data(), [&] {
     if (merge_cmd->parsed()) return run_merge(merge);
     if (bracket_cmd->parsed()) return run_bracket(bracket);
+    if (session_cmd->parsed()) return run_manifest(session);
     return run_calibrate(calibrate, calibrate_output);
   });
 }
