@@ -69,6 +69,8 @@ SessionOutcome run_session(Turntable& table, LightBank& lights, Camera& camera, 
       }
       i = end;
     }
+    step = "store the last shots";
+    sink.finish();
     outcome.complete = true;
     return outcome;
   } catch (const Error& e) {

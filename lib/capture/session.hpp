@@ -29,6 +29,9 @@ class ShotSink {
   // True when the shot is already stored intact (resume): the loop skips it.
   virtual bool done(const PlannedShot& shot) = 0;
   virtual void store(const PlannedShot& shot, const ShotPose& pose, const Image& image) = 0;
+  // Called once after the last shot: a sink that stores in the background finishes here
+  // and reports its errors.
+  virtual void finish() {}
 };
 
 struct SessionOptions {

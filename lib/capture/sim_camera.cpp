@@ -237,7 +237,8 @@ cv::Mat SimCamera::expose(const cv::Mat& radiance, double seconds, std::uint64_t
     const float* n = noise.ptr<float>(y);
     for (int i = 0; i < 3 * radiance.cols; ++i) {
       const double dn = (in[i] > 0 ? r.dn(in[i] * scale) : dark) + n[i];
-      const double v = std::clamp(std::round(dn), 0.0, full);
+      // Round half up after the clamp (non-negative): cheaper than std::round.
+      const double v = std::floor(std::clamp(dn, 0.0, full) + 0.5);
       if (r.bits == 16) z.ptr<std::uint16_t>(y)[i] = std::uint16_t(v);
       else z.ptr<std::uint8_t>(y)[i] = std::uint8_t(v);
     }

@@ -108,6 +108,7 @@ int run_command(const RunOptions& o) {
 
   capture::ManifestInfo info = store.info;
   if (!outcome.complete) {
+    store.finish_quietly();  // the pictures already taken are kept
     info.status = "aborted";
     info.failure = {{"step", outcome.failed_step}, {"error", outcome.message}, {"exit_status", int(outcome.status)}};
     store.append({{"abort", info.failure}});

@@ -79,19 +79,81 @@ SessionStore::SessionStore(const std::string& folder, bool resume, const json& p
   if (journal_fd_ < 0) throw io_error("cannot open {}: {}", journal, std::strerror(errno));
   if (resume) append({{"resume", utc_now()}});
   else append(capture::journal_header(name_, started_, plan_doc));
+  writer_ = std::thread([this] { writer_loop(); });
 }
 
 SessionStore::~SessionStore() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  writer_.join();
   if (journal_fd_ >= 0) ::close(journal_fd_);
+}
+
+void SessionStore::writer_loop() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+    if (queue_.empty()) return;
+    Job job = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    const bool failed = bool(error_);
+    lock.unlock();
+    std::exception_ptr e;
+    if (!failed) {
+      try {
+        write_shot(job);
+      } catch (...) {
+        e = std::current_exception();
+      }
+    }
+    lock.lock();
+    if (e && !error_) error_ = e;
+    busy_ = false;
+    changed_.notify_all();
+  }
+}
+
+void SessionStore::finish() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return queue_.empty() && !busy_; });
+  if (error_) std::rethrow_exception(error_);
+}
+
+void SessionStore::finish_quietly() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return queue_.empty() && !busy_; });
 }
 
 void SessionStore::append(const json& entry) {
   write_all(journal_fd_, capture::journal_line(entry), folder_ + "/manifest.journal");
 }
 
-bool SessionStore::done(const capture::PlannedShot& shot) { return verified_.count(shot.file) > 0; }
+bool SessionStore::done(const capture::PlannedShot& shot) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return verified_.count(shot.file) > 0;
+}
+
+int SessionStore::kept() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return int(verified_.size());
+}
 
 void SessionStore::store(const capture::PlannedShot& shot, const capture::ShotPose& pose, const Image& image) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return queue_.size() < 2 || error_; });
+  if (error_) std::rethrow_exception(error_);
+  queue_.push_back({shot, pose, image});
+  changed_.notify_all();
+}
+
+// On the writer thread.
+void SessionStore::write_shot(const Job& job) {
+  const capture::PlannedShot& shot = job.shot;
+  const Image& image = job.image;
   // A new view: the manifest of everything so far is written first (cheap, per view).
   if (shot.angle_index != last_angle_ && last_angle_ >= 0 && !plan.empty()) {
     capture::ManifestInfo partial = info;
@@ -116,12 +178,13 @@ void SessionStore::store(const capture::PlannedShot& shot, const capture::ShotPo
   write_output(path.string(), bytes);
   capture::ShotRecord r;
   r.shot = shot;
-  r.pose = pose;
+  r.pose = job.pose;
   r.time = utc_now();
   r.sha256 = sha256_hex(bytes);
   r.bits = pixels.depth() == CV_16U ? 16 : 8;
   r.black_level = black_level;
   append({{"shot", capture::shot_to_json(r)}});
+  std::lock_guard<std::mutex> lock(mutex_);
   records_[shot.file] = r;
   verified_.insert(shot.file);
 }
@@ -129,7 +192,12 @@ void SessionStore::store(const capture::PlannedShot& shot, const capture::ShotPo
 std::string SessionStore::write_manifest(capture::ManifestInfo i, const std::vector<capture::PlannedShot>& shots) {
   i.session = name_;
   i.started = started_;
-  const std::string text = formats::write_json(capture::build_manifest(i, shots, records_));
+  std::map<std::string, capture::ShotRecord> records;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    records = records_;
+  }
+  const std::string text = formats::write_json(capture::build_manifest(i, shots, records));
   write_output((fs::path(folder_) / "manifest.json").string(), text);
   return text;
 }

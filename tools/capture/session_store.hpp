@@ -4,11 +4,18 @@
 //   SESSION/manifest.journal                   one JSON line per shot, flushed + fsync'ed
 //   SESSION/manifest.json                      rewritten atomically after every view
 // A resumed session replays the journal and keeps the shots whose files still hash
-// to their recorded SHA-256.
+// to their recorded SHA-256. Encoding, hashing and writing run on a writer thread while
+// the loop takes the next picture (at most two pictures wait), as a rig's host overlaps
+// saving with exposing.
 
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <map>
+#include <mutex>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "capture/manifest.hpp"
 #include "capture/session.hpp"
@@ -27,6 +34,10 @@ class SessionStore : public capture::ShotSink {
 
   bool done(const capture::PlannedShot& shot) override;
   void store(const capture::PlannedShot& shot, const capture::ShotPose& pose, const Image& image) override;
+  // Waits for the writer; rethrows its first error.
+  void finish() override;
+  // The same, errors dropped (an aborting session writes what it can).
+  void finish_quietly();
 
   // Records an event line ({"abort": ...}) in the journal.
   void append(const nlohmann::json& entry);
@@ -35,7 +46,7 @@ class SessionStore : public capture::ShotSink {
 
   const std::string& started() const { return started_; }
   const std::string& name() const { return name_; }
-  int kept() const { return int(verified_.size()); }
+  int kept() const;
   double black_level = 0;
   std::vector<capture::PlannedShot> plan;  // for the per-view manifest rewrite
   capture::ManifestInfo info;
@@ -46,6 +57,20 @@ class SessionStore : public capture::ShotSink {
   std::map<std::string, capture::ShotRecord> records_;
   std::set<std::string> verified_;
   int last_angle_ = -1;
+
+  struct Job {
+    capture::PlannedShot shot;
+    capture::ShotPose pose;
+    Image image;
+  };
+  void write_shot(const Job& job);
+  void writer_loop();
+  mutable std::mutex mutex_;  // guards the queue, the error and records_
+  std::condition_variable changed_;
+  std::deque<Job> queue_;
+  bool busy_ = false, stopping_ = false;
+  std::exception_ptr error_;
+  std::thread writer_;
 };
 
 // ISO 8601 UTC with milliseconds.
