@@ -32,8 +32,10 @@ expect_json '.estimate_s > 0' true
 check "dry run creates nothing" test ! -e "$WORK/never"
 
 case_ "a whole simulated session"
+# The session is named by its folder as given (-o sess): runs from two folders compare equal.
 mkdir -p "$WORK/a" "$WORK/b"
-run capture run --station "$S" --plan "$P" -o "$WORK/a/sess"
+cd "$WORK/a"
+run capture run --station "$S" --plan "$P" -o sess
 expect_status 0
 expect_json '.status' '"complete"'
 expect_json '.shots | length' 52
@@ -104,7 +106,8 @@ check "mask area $area px within 3 % of 1982" python3 -c "import sys; sys.exit(0
 
 case_ "unplug mid-session: exit 5, aborted manifest, nothing on stdout"
 station_with "sim:steps=51200,speed=90,unplug_at=60" > "$WORK/unplug.json"
-run capture run --station "$WORK/unplug.json" --plan "$P" -o "$WORK/b/sess"
+cd "$WORK/b"
+run capture run --station "$WORK/unplug.json" --plan "$P" -o sess
 expect_clean_failure 5 capture
 expect_stderr_has "unplugged"
 check "aborted manifest" test "$(jq -r .status "$WORK/b/sess/manifest.json")" = aborted
@@ -116,7 +119,7 @@ check "hdrmerge refuses an aborted session" bash -c "! '$FEST_BIN/hdrmerge' --ma
 
 case_ "--resume completes it, identical to the uninterrupted run but for timestamps"
 touch -d '2000-01-01' "$WORK/b/sess/a000/L0/e00.png"
-run capture run --station "$S" --plan "$P" -o "$WORK/b/sess" --resume
+run capture run --station "$S" --plan "$P" -o sess --resume
 expect_status 0
 norm='del(.started) | del(.shots[].time)'
 check "same manifest" cmp <(jq -S "$norm" "$out") <(jq -S "$norm" "$WORK/a.json")
@@ -125,9 +128,18 @@ check "journal: one resume line" test "$(grep -c '"resume"' "$WORK/b/sess/manife
 
 case_ "--resume re-takes a damaged shot"
 printf 'x' >> "$WORK/b/sess/a002/L0/e03.png"
-run capture run --station "$S" --plan "$P" -o "$WORK/b/sess" --resume
+run capture run --station "$S" --plan "$P" -o sess --resume
 expect_status 0
 check "same manifest after the re-take" cmp <(jq -S "$norm" "$out") <(jq -S "$norm" "$WORK/a.json")
+
+case_ "the pipeline of the spec: capture run | hdrmerge --manifest -"
+rm -rf "$WORK/b/sess/hdr"
+run_stdin "$WORK/a.json" hdrmerge --manifest - -o "$WORK/b/sess/hdr"
+expect_status 0
+expect_json '.session' '"sess"'
+expect_json '.images | length' 4
+check "rig files resolve from the session" test -s "$WORK/b/sess/hdr/a003_L0.exr"
+cd "$WORK"
 
 case_ "a move that never completes: exit 7"
 station_with "sim:steps=51200,speed=90,fail_at=3" > "$WORK/stuck.json"

@@ -50,8 +50,10 @@ void write_all(int fd, const std::string& text, const std::string& path) {
 
 SessionStore::SessionStore(const std::string& folder, bool resume, const json& plan_doc, const std::string& format)
     : folder_(folder), format_(format) {
-  name_ = fs::path(folder).filename().string();
-  if (name_.empty()) name_ = fs::path(folder).parent_path().filename().string();
+  // The session is named by its folder as given, so that `capture run -o sess | hdrmerge
+  // --manifest -` finds the files from the same working directory.
+  name_ = folder;
+  while (name_.size() > 1 && name_.back() == '/') name_.pop_back();
   const std::string journal = (fs::path(folder) / "manifest.journal").string();
   std::error_code ec;
   if (resume) {
@@ -61,7 +63,6 @@ SessionStore::SessionStore(const std::string& folder, bool resume, const json& p
     if (j.header.value("plan", json()) != plan_doc)
       throw bad_input("the plan differs from the one the session was started with ({})", journal);
     started_ = j.header.value("started", "");
-    name_ = j.header.value("session", name_);
     for (const auto& [file, record] : j.shots) {
       const fs::path p = fs::path(folder) / file;
       if (!fs::is_regular_file(p, ec)) continue;

@@ -217,7 +217,7 @@ int run_manifest(const ManifestArgs& a) {
   for (capture::RigImage& r : rig)
     if (silhouettes.count(r.angle_index))
       r.mask = relative_to((fs::path(out_dir) / fmt::format("a{:03}_mask.png", r.angle_index)).string(), session);
-  const json doc = capture::build_rig(manifest, rig, manifest.value("session", session), where);
+  const json doc = capture::build_rig(manifest, rig, session, where);
   std::fputs(formats::write_json(doc).c_str(), stdout);
   return 0;
 }
