@@ -22,7 +22,7 @@ measure() {  # measure NAME CMD... : one JSON line from GNU time's figures
   printf '{"bench":"capture","case":"%s","angles":24,"lights":1,"exposures":12,"width":640,"height":480,"wall_s":%s,"user_s":%s,"sys_s":%s,"peak_rss_mb":%.1f,"cores":%s}\n' \
     "$name" "$wall" "$user" "$sys" "$(echo "$rss / 1024" | bc -l)" "$(nproc)"
 }
-measure capture_run "$BIN/capture" run --station "$W/sim_station.json" --plan "$W/plan.json" -o "$W/sess" -q > "$W/manifest.json"
+measure capture_run "$BIN/capture" run --station "$W/sim_station.json" --plan "$W/plan.json" -o "$W/sess" > "$W/manifest.json"
 measure hdrmerge_manifest "$BIN/hdrmerge" --manifest "$W/sess/manifest.json" -o "$W/sess/hdr" > "$W/rig.json"
 rm -rf "$W/sess"
 measure pipeline bash -c "'$BIN/capture' run --station '$W/sim_station.json' --plan '$W/plan.json' -o '$W/sess' | '$BIN/hdrmerge' --manifest - -o '$W/sess/hdr' > '$W/rig.json'"
