@@ -104,6 +104,23 @@ PY
 )
 check "mask area $area px within 3 % of 1982" python3 -c "import sys; sys.exit(0 if abs($area - 1982) <= 0.03 * 1982 else 1)"
 
+case_ "hdrmerge sheet: a contact sheet of the merged EXRs"
+run hdrmerge sheet "$WORK/a/sess/hdr/a000_L0.exr" "$WORK/a/sess/hdr/a001_L0.exr" --columns 2 --width 80 -o "$WORK/sheet.png"
+expect_status 0
+check "sheet is a 160x60 PNG" bash -c "file '$WORK/sheet.png' | grep -q '160 x 60'"
+
+case_ "SIGTERM mid-session: exit 1, aborted manifest, the journal intact"
+cd "$WORK"
+jq '.angles_deg = {"count": 200}' "$P" > "$WORK/long_plan.json"
+"$FEST_BIN/capture" run --station "$S" --plan "$WORK/long_plan.json" -o "$WORK/term" >"$out" 2>"$err" &
+pid=$!
+for _ in $(seq 100); do [ -s "$WORK/term/manifest.json" ] && break; sleep 0.1; done
+kill -TERM "$pid"; wait "$pid"; rc=$?
+expect_clean_failure 1 capture
+expect_stderr_has "interrupted by a signal"
+check "aborted manifest after SIGTERM" test "$(jq -r .status "$WORK/term/manifest.json")" = aborted
+check "journal ends with the abort" bash -c "tail -1 '$WORK/term/manifest.journal' | jq -e .abort"
+
 case_ "unplug mid-session: exit 5, aborted manifest, nothing on stdout"
 station_with "sim:steps=51200,speed=90,unplug_at=60" > "$WORK/unplug.json"
 cd "$WORK/b"
