@@ -158,6 +158,18 @@ expect_json '.images | length' 4
 check "rig files resolve from the session" test -s "$WORK/b/sess/hdr/a003_L0.exr"
 cd "$WORK"
 
+case_ "exec: camera (an external command writes each picture)"
+jq --arg u "exec:cp '$WORK/a/sess/a001/L0/e06.png' {out} && test {exposure_s} != 0" '.camera.uri = $u' "$S" > "$WORK/exec.json"
+printf '{"angles_deg": [0], "lights": ["L0"], "exposures_s": [0.001, 0.004]}' > "$WORK/two.json"
+run capture run --station "$WORK/exec.json" --plan "$WORK/two.json" -o "$WORK/exec"
+expect_status 0
+expect_json '[.shots[].bits]' '[16,16]'
+expect_json '.camera.width' 160
+jq --arg u "exec:false {out}" '.camera.uri = $u' "$S" > "$WORK/exec_fail.json"
+run capture run --station "$WORK/exec_fail.json" --plan "$WORK/two.json" -o "$WORK/exec_fail"
+expect_clean_failure 6 capture
+expect_stderr_has "exec camera: the command failed"
+
 case_ "a move that never completes: exit 7"
 station_with "sim:steps=51200,speed=90,fail_at=3" > "$WORK/stuck.json"
 run capture run --station "$WORK/stuck.json" --plan "$P" -o "$WORK/stuck"

@@ -9,6 +9,7 @@
 #include "capture/sim_turntable.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "devices/exec_camera.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace fest::capture_tool {
@@ -85,6 +86,19 @@ Devices open_devices(const LoadedStation& loaded) {
   auto lights = std::make_unique<capture::SimLightBank>(ids);
 
   const capture::DeviceUri camera_uri = capture::parse_device_uri(st.camera.uri);
+  d.cal = st.turntable.calibration ? *st.turntable.calibration : capture::default_turntable_cal();
+  if (camera_uri.scheme == "exec") {
+    auto camera = std::make_unique<devices::ExecCamera>(camera_uri.path);
+    // The size is known once a picture was taken; without intrinsics, take one.
+    if (st.camera.intrinsics) d.intrinsics = *st.camera.intrinsics;
+    else {
+      const Image first = camera->capture();
+      d.intrinsics = capture::default_intrinsics(first.pixels.cols, first.pixels.rows);
+    }
+    d.camera = std::move(camera);
+    d.lights = std::move(lights);
+    return d;
+  }
   if (camera_uri.scheme != "sim")
     throw make_error(Status::device_not_found,
                      "camera {}: this capture build has only the sim: backend (hardware backends: devices/)", st.camera.uri);
@@ -95,7 +109,6 @@ Devices open_devices(const LoadedStation& loaded) {
     scene = capture::parse_sim_scene(read_json_file(f), f);
   }
   d.intrinsics = st.camera.intrinsics ? *st.camera.intrinsics : capture::default_intrinsics(scene.width, scene.height);
-  d.cal = st.turntable.calibration ? *st.turntable.calibration : capture::default_turntable_cal();
   d.black_level = scene.response.black_level;
   d.camera = std::make_unique<capture::SimCamera>(scene, d.intrinsics, d.cal, st, *d.turntable, *lights);
   d.lights = std::move(lights);
