@@ -143,6 +143,13 @@ check "same manifest" cmp <(jq -S "$norm" "$out") <(jq -S "$norm" "$WORK/a.json"
 check "kept shots were not re-taken" test "$(stat -c %Y "$WORK/b/sess/a000/L0/e00.png")" -lt 1000000000
 check "journal: one resume line" test "$(grep -c '"resume"' "$WORK/b/sess/manifest.journal")" -eq 1
 
+case_ "--resume after a crash in the middle of a journal line"
+head -c -40 "$WORK/b/sess/manifest.journal" > "$WORK/torn" && cat "$WORK/torn" > "$WORK/b/sess/manifest.journal"
+run capture run --station "$S" --plan "$P" -o sess --resume
+expect_status 0
+check "same manifest after a torn journal" cmp <(jq -S "$norm" "$out") <(jq -S "$norm" "$WORK/a.json")
+check "the journal replays cleanly again" bash -c "jq -c . '$WORK/b/sess/manifest.journal' > /dev/null"
+
 case_ "--resume re-takes a damaged shot"
 printf 'x' >> "$WORK/b/sess/a002/L0/e03.png"
 run capture run --station "$S" --plan "$P" -o sess --resume

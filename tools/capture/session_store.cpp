@@ -59,7 +59,13 @@ SessionStore::SessionStore(const std::string& folder, bool resume, const json& p
   if (resume) {
     if (!fs::is_directory(folder, ec)) throw io_error("cannot resume: no session folder {}", folder);
     if (!fs::exists(journal, ec)) throw io_error("cannot resume: no journal {}", journal);
-    const capture::Journal j = capture::replay_journal(read_input(journal), journal);
+    const std::string text = read_input(journal);
+    const capture::Journal j = capture::replay_journal(text, journal);
+    // A line torn by a crash is cut off, so that the lines appended now start clean.
+    if (j.torn_tail) {
+      fs::resize_file(journal, text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1, ec);
+      if (ec) throw io_error("cannot cut the torn last line of {}: {}", journal, ec.message());
+    }
     if (j.header.value("plan", json()) != plan_doc)
       throw bad_input("the plan differs from the one the session was started with ({})", journal);
     started_ = j.header.value("started", "");
