@@ -34,3 +34,5 @@ find_package(OpenMP REQUIRED COMPONENTS CXX)
 find_package(GDAL CONFIG REQUIRED)
 # SHA-256 checksums of capture sessions (libssl-dev: OpenSSL's libcrypto).
 find_package(OpenSSL REQUIRED COMPONENTS Crypto)
+# V4L2 cameras of capture (devices/v4l2_camera): OpenCV's VideoCapture with CAP_V4L2.
+find_package(OpenCV 4 REQUIRED COMPONENTS videoio)

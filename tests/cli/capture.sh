@@ -177,6 +177,15 @@ run capture run --station "$WORK/exec_fail.json" --plan "$WORK/two.json" -o "$WO
 expect_clean_failure 6 capture
 expect_stderr_has "exec camera: the command failed"
 
+case_ "v4l2: camera that is not there: exit 5"
+jq '.camera.uri = "v4l2:/dev/fest-no-such-video,fourcc=Y16"' "$S" > "$WORK/v4l2.json"
+run capture run --station "$WORK/v4l2.json" --plan "$WORK/two.json" -o "$WORK/v4l2"
+expect_clean_failure 5 capture
+expect_stderr_has "v4l2 camera: no device /dev/fest-no-such-video"
+jq '.camera.uri = "v4l2:/dev/null,gain=3"' "$S" > "$WORK/v4l2_key.json"
+run capture run --station "$WORK/v4l2_key.json" --plan "$WORK/two.json" -o "$WORK/v4l2_key"
+expect_clean_failure 2 capture
+
 case_ "a move that never completes: exit 7"
 station_with "sim:steps=51200,speed=90,fail_at=3" > "$WORK/stuck.json"
 run capture run --station "$WORK/stuck.json" --plan "$P" -o "$WORK/stuck"

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "devices/exec_camera.hpp"
+#include "devices/v4l2_camera.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace fest::capture_tool {
@@ -87,8 +88,10 @@ Devices open_devices(const LoadedStation& loaded) {
 
   const capture::DeviceUri camera_uri = capture::parse_device_uri(st.camera.uri);
   d.cal = st.turntable.calibration ? *st.turntable.calibration : capture::default_turntable_cal();
-  if (camera_uri.scheme == "exec") {
-    auto camera = std::make_unique<devices::ExecCamera>(camera_uri.path);
+  if (camera_uri.scheme == "exec" || camera_uri.scheme == "v4l2") {
+    std::unique_ptr<capture::Camera> camera;
+    if (camera_uri.scheme == "exec") camera = std::make_unique<devices::ExecCamera>(camera_uri.path);
+    else camera = std::make_unique<devices::V4l2Camera>(st.camera.uri);
     // The size is known once a picture was taken; without intrinsics, take one.
     if (st.camera.intrinsics) d.intrinsics = *st.camera.intrinsics;
     else {
