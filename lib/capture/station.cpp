@@ -59,7 +59,7 @@ Station parse_station(const json& doc, const std::string& where) {
   if (!doc.contains("lights")) f.fail("missing", "lights");
 
   const json& c = doc["camera"];
-  f.keys(c, "camera", {"uri", "intrinsics", "flush_frames", "format"});
+  f.keys(c, "camera", {"uri", "intrinsics", "flush_frames", "format", "png_compression"});
   if (!c.contains("uri")) f.fail("missing", "camera.uri");
   s.camera.uri = f.string(c["uri"], "camera.uri");
   if (c.contains("intrinsics")) {
@@ -67,6 +67,7 @@ Station parse_station(const json& doc, const std::string& where) {
     else s.camera.intrinsics = parse_intrinsics(c["intrinsics"], where + ": camera.intrinsics");
   }
   if (c.contains("flush_frames")) s.camera.flush_frames = f.integer(c["flush_frames"], "camera.flush_frames", 0, 100);
+  if (c.contains("png_compression")) s.camera.png_compression = f.integer(c["png_compression"], "camera.png_compression", 0, 9);
   if (c.contains("format")) {
     s.camera.format = f.string(c["format"], "camera.format");
     if (s.camera.format != "png16" && s.camera.format != "png8" && s.camera.format != "tiff16" && s.camera.format != "jpeg")

@@ -36,6 +36,7 @@ struct CameraConfig {
   std::optional<CameraIntrinsics> intrinsics;   // inline, or once the file was read
   int flush_frames = 0;                         // frames discarded after an exposure change
   std::string format = "png16";                 // png16, png8, tiff16, jpeg
+  int png_compression = 1;                      // zlib level; 0 stores: fastest, twice the disk
 };
 
 struct TurntableConfig {

@@ -29,3 +29,9 @@ rm -rf "$W/sess"
 measure pipeline /dev/null bash -c "'$BIN/capture' run --station '$W/sim_station.json' --plan '$W/plan.json' -o '$W/sess' | '$BIN/hdrmerge' --manifest - -o '$W/sess/hdr' > '$W/rig.json'"
 n=$(jq '.images | length' "$W/rig.json")
 [ "$n" -eq 24 ] || { echo "capture bench: rig has $n images, expected 24" >&2; exit 1; }
+# The same with the shots stored uncompressed (camera.png_compression 0).
+rm -rf "$W/sess"
+jq '.camera.png_compression = 0' "$D/sim_station.json" > "$W/sim_station.json"
+measure pipeline_png_stored /dev/null bash -c "'$BIN/capture' run --station '$W/sim_station.json' --plan '$W/plan.json' -o '$W/sess' | '$BIN/hdrmerge' --manifest - -o '$W/sess/hdr' > '$W/rig.json'"
+n=$(jq '.images | length' "$W/rig.json")
+[ "$n" -eq 24 ] || { echo "capture bench: rig has $n images, expected 24" >&2; exit 1; }

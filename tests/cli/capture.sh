@@ -177,6 +177,17 @@ run capture run --station "$WORK/exec_fail.json" --plan "$WORK/two.json" -o "$WO
 expect_clean_failure 6 capture
 expect_stderr_has "exec camera: the command failed"
 
+case_ "png_compression 0 stores the shots"
+jq '.camera.png_compression = 0' "$S" > "$WORK/stored.json"
+run capture run --station "$WORK/stored.json" --plan "$WORK/two.json" -o "$WORK/stored"
+expect_status 0
+check "a stored 16-bit RGB shot holds at least its 160 x 120 x 6 bytes" \
+  test "$(stat -c %s "$WORK/stored/a000/L0/e01.png")" -ge 115200
+jq '.camera.png_compression = 10' "$S" > "$WORK/level10.json"
+run capture run --station "$WORK/level10.json" --plan "$WORK/two.json" -o "$WORK/level10"
+expect_clean_failure 3 capture
+expect_stderr_has "camera.png_compression"
+
 case_ "v4l2: camera that is not there: exit 5"
 jq '.camera.uri = "v4l2:/dev/fest-no-such-video,fourcc=Y16"' "$S" > "$WORK/v4l2.json"
 run capture run --station "$WORK/v4l2.json" --plan "$WORK/two.json" -o "$WORK/v4l2"

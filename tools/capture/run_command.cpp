@@ -79,7 +79,8 @@ int run_command(const RunOptions& o) {
   // Canonical plan (counts and brackets expanded) in the journal, so a resume with an
   // equivalent plan file matches.
   const json canonical_plan = capture::plan_to_json(plan);
-  SessionStore store(o.session, o.resume, canonical_plan, loaded.station.camera.format);
+  SessionStore store(o.session, o.resume, canonical_plan, loaded.station.camera.format,
+                     loaded.station.camera.png_compression);
   store.plan = shots;
   store.info.station = loaded.document;
 

@@ -27,7 +27,8 @@ class SessionStore : public capture::ShotSink {
   // Creates SESSION (which must not hold a journal yet) and writes the journal header;
   // or, with resume, replays SESSION/manifest.journal (io_error when there is none;
   // bad_input when its plan differs from `plan`).
-  SessionStore(const std::string& folder, bool resume, const nlohmann::json& plan, const std::string& format);
+  SessionStore(const std::string& folder, bool resume, const nlohmann::json& plan, const std::string& format,
+               int png_compression = 1);
   ~SessionStore() override;
   SessionStore(const SessionStore&) = delete;
   SessionStore& operator=(const SessionStore&) = delete;
@@ -53,6 +54,7 @@ class SessionStore : public capture::ShotSink {
 
  private:
   std::string folder_, name_, started_, format_;
+  int png_compression_ = 1;
   int journal_fd_ = -1;
   std::map<std::string, capture::ShotRecord> records_;
   std::set<std::string> verified_;
