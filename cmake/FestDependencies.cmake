@@ -36,3 +36,5 @@ find_package(GDAL CONFIG REQUIRED)
 find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 # V4L2 cameras of capture (devices/v4l2_camera): OpenCV's VideoCapture with CAP_V4L2.
 find_package(OpenCV 4 REQUIRED COMPONENTS videoio)
+# capture calib-*: chessboard corners, Zhang's calibration, solvePnP (lib/capture calib).
+find_package(OpenCV 4 REQUIRED COMPONENTS calib3d)

@@ -32,6 +32,7 @@ constexpr FormatRow kFormats[] = {
     {Format::pfm, Kind::image, "pfm", ".pfm", ""},
     {Format::exr, Kind::image, "exr", ".exr", "openexr"},
     {Format::tiff, Kind::image, "tiff", ".tif", "tif"},
+    {Format::jpeg, Kind::image, "jpeg", ".jpg", "jpg"},
     {Format::nifti, Kind::volume, "nifti", ".nii", "nii"},
     {Format::nrrd, Kind::volume, "nrrd", ".nrrd", ""},
     {Format::mha, Kind::volume, "mha", ".mha", "metaimage"},
@@ -218,6 +219,7 @@ Format detect_format(std::string_view b, const std::string& where) {
   if (starts_with(b, std::string_view("\x76\x2f\x31\x01", 4))) return Format::exr;
   if (starts_with(b, std::string_view("II*\0", 4)) || starts_with(b, std::string_view("MM\0*", 4)))
     return Format::tiff;
+  if (starts_with(b, "\xff\xd8\xff")) return Format::jpeg;
   if (starts_with(b, "DRACO")) return Format::drc;
   if (starts_with(b, "NRRD000")) return Format::nrrd;
   if (is_nifti1(b)) {

@@ -13,7 +13,7 @@ enum class Format {
   // meshes
   ply, obj, off, stl, drc,
   // images
-  png, pgm, ppm, pam, pfm, exr, tiff,
+  png, pgm, ppm, pam, pfm, exr, tiff, jpeg,  // jpeg: read only
   // volumes
   nifti, nrrd, mha,
   // VTK datasets

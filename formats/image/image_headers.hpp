@@ -13,6 +13,7 @@ namespace fest::formats::image_detail {
 ImageHeader read_png_header(std::string_view bytes);
 ImageHeader read_tiff_header(std::string_view bytes);
 ImageHeader read_exr_header(std::string_view bytes);
+ImageHeader read_jpeg_header(std::string_view bytes);
 
 // The Netpbm family (P2, P3, P5, P6, P7) and PFM: everything a decoder needs to know.
 struct NetpbmLayout {

@@ -43,6 +43,7 @@ const char* format_name_of(Format f) {
     case Format::pfm: return "PFM";
     case Format::exr: return "EXR";
     case Format::tiff: return "TIFF";
+    case Format::jpeg: return "JPEG";
     default: return "a non-image format";
   }
 }
@@ -54,6 +55,7 @@ ImageHeader read_image_header(std::string_view bytes, Format format) {
     case Format::png: return read_png_header(bytes);
     case Format::tiff: return read_tiff_header(bytes);
     case Format::exr: return read_exr_header(bytes);
+    case Format::jpeg: return read_jpeg_header(bytes);
     case Format::pfm: return read_netpbm_layout(bytes, true).header;
     case Format::pgm: case Format::ppm: case Format::pam: return read_netpbm_layout(bytes, false).header;
     default: throw bad_input("{} is not an image format", format_name_of(format));
@@ -122,6 +124,9 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
       if (channels == 2) refuse(m, format, "OpenCV's TIFF writer takes 1, 3 or 4 channels");
       // No compression for float: OpenCV would otherwise pick lossy SGILOG for RGB float.
       return encode_with_opencv(m, ".tiff", {cv::IMWRITE_TIFF_COMPRESSION, integer ? 5 /* LZW */ : 1 /* none */});
+    case Format::jpeg:
+      // Lossy compression has no place in a measurement pipeline (specs/capture.md §2.5).
+      refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
     default:
       throw bad_input("cannot write an image as {}", format_name_of(format));
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Images: PNG, PGM/PPM/PAM (8/16-bit), PFM, EXR, TIFF.
+// Images: PNG, PGM/PPM/PAM (8/16-bit), PFM, EXR, TIFF; JPEG (8-bit) for reading only.
 
 #include <string>
 #include <string_view>

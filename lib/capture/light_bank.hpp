@@ -22,6 +22,11 @@ class LightBank {
   virtual std::vector<LightState> list() = 0;      // in the station's order
   virtual void set(const std::string& id, bool on) = 0;  // usage_error for an unknown id
   virtual void all_off() = 0;
+  // For one-shot commands (`lights on L0`): release the lines as they are set instead
+  // of switching everything off. Most GPIO drivers keep an output's level after release,
+  // the kernel does not promise it (`lights hold` is the guaranteed way). Simulated
+  // banks ignore it.
+  virtual void keep_state_on_release() {}
   // Exactly this light on, every other off (the acquisition loop's step, §2.5).
   void only(const std::string& id) {
     for (const LightState& l : list())

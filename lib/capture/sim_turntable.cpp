@@ -57,7 +57,7 @@ TurntableInfo SimTurntable::info() {
   TurntableInfo i;
   i.steps_per_rev = config_.steps_per_rev;
   i.max_speed = std::uint32_t(std::lround(config_.speed_deg_s / 360.0 * config_.steps_per_rev));
-  i.has_home = false;
+  i.has_home = true;
   i.name = "fest sim turntable";
   return i;
 }
@@ -69,6 +69,8 @@ TurntableStatus SimTurntable::status() {
   s.target = target_;
   s.state = motor_ == double(target_) ? MotionState::idle : MotionState::moving;
   s.homed = true;
+  s.home_switch = s.position == 0;
+  s.driver_enabled = enabled_;
   return s;
 }
 
@@ -85,6 +87,22 @@ void SimTurntable::stop(bool) {
   target_ = std::int32_t(std::lround(motor_));
   motor_ = target_;
   stuck_ = false;
+}
+
+void SimTurntable::home(bool, std::uint32_t speed_steps_s) { move_abs(0, speed_steps_s); }
+
+void SimTurntable::set_zero() {
+  count_command();
+  // Shift every coordinate so that the motor's current position becomes 0.
+  const double shift = std::round(motor_);
+  motor_ -= shift;
+  table_ -= shift;
+  target_ -= std::int32_t(shift);
+}
+
+void SimTurntable::enable(bool on) {
+  count_command();
+  enabled_ = on;
 }
 
 void SimTurntable::wait_ms(unsigned ms) {

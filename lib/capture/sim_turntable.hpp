@@ -35,6 +35,10 @@ class SimTurntable : public Turntable {
   void move_abs(std::int32_t target, std::uint32_t speed_steps_s) override;
   void stop(bool immediate) override;
   void wait_ms(unsigned ms) override;
+  // The simulator's "home switch" sits at step 0: homing is a move there.
+  void home(bool clockwise, std::uint32_t speed_steps_s) override;
+  void set_zero() override;
+  void enable(bool on) override;
 
   // Where the object really is, in motor steps (the motor position minus the play not yet
   // taken up), and the virtual time.
@@ -51,6 +55,7 @@ class SimTurntable : public Turntable {
   int commands_ = 0;
   int moves_ = 0;
   bool unplugged_ = false;
+  bool enabled_ = true;
   double clock_s_ = 0;
 };
 

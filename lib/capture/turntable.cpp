@@ -29,6 +29,12 @@ void run_leg(Turntable& table, std::int32_t target, std::uint32_t speed, const M
 
 }  // namespace
 
+void Turntable::home(bool, std::uint32_t) {
+  throw make_error(Status::device_error, "this turntable has no home switch");
+}
+void Turntable::set_zero() { throw make_error(Status::device_error, "this turntable cannot set its zero"); }
+void Turntable::enable(bool) { throw make_error(Status::device_error, "this turntable has no driver enable"); }
+
 std::int32_t steps_for_angle(double degrees, std::uint32_t steps_per_rev) {
   if (steps_per_rev == 0) throw make_error(Status::device_error, "turntable reports 0 steps per revolution");
   const double steps = std::round(degrees / 360.0 * double(steps_per_rev));

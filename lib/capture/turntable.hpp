@@ -14,6 +14,8 @@ struct TurntableInfo {
   std::uint32_t max_speed = 0;      // steps/s
   bool has_home = false;
   std::string name;
+  std::uint32_t max_accel = 0;      // steps/s^2; 0 = not reported
+  std::string serial;               // USB iSerialNumber; empty for backends without one
 };
 
 enum class MotionState { idle, moving, homing, fault };
@@ -23,6 +25,8 @@ struct TurntableStatus {
   MotionState state = MotionState::idle;
   bool homed = false;
   std::uint16_t fault = 0;
+  bool home_switch = false, stalled = false, driver_enabled = true;
+  std::uint32_t seq = 0;  // incremented by the device when a move completes
 };
 
 // Backends throw fest::Error with the device statuses of DESIGN.md: device_not_found (5)
@@ -34,6 +38,13 @@ class Turntable {
   virtual TurntableStatus status() = 0;
   virtual void move_abs(std::int32_t target, std::uint32_t speed_steps_s) = 0;
   virtual void stop(bool immediate) = 0;
+  // Start a homing run towards the home switch (returns at once; poll status() until
+  // idle and homed). Backends without a switch throw device_error.
+  virtual void home(bool clockwise, std::uint32_t speed_steps_s);
+  // Declare the current position step 0 (the homed flag is unchanged).
+  virtual void set_zero();
+  // Switch the motor driver on or off (off: the table turns freely by hand).
+  virtual void enable(bool on);
   // Host-side waiting: real backends sleep between polls, the simulator advances its
   // virtual clock instead, so tests run in no time.
   virtual void wait_ms(unsigned ms) = 0;

@@ -1,6 +1,8 @@
 #include "fluidsim/operators.hpp"
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace fest::fluidsim {
 
@@ -34,24 +36,30 @@ RowNeighbours row_neighbours(const Layout& L, const AxisNeighbours& nb, int axis
   return r;
 }
 
-}  // namespace
-
-void divergence(const Layout& L, const Velocity& u, Field& out) {
-  out.assign(L.count(), 0.0);
-  const double inv2h = 0.5 / L.h;
+// One row of D u into o[0..nx). Along x the end nodes go through the fold table; the
+// interior neighbours are i +- 1 with no sign change (what the table says there), read
+// directly so the loop vectorizes.
+struct DivergenceRows {
+  const Layout& L;
+  const Velocity& u;
+  double inv2h;
   std::array<AxisNeighbours, 3> nb;
-  for (int a = 0; a < L.dim; ++a) nb[a] = neighbours(L, a, 1);
-  const int nx = L.size[0];
-  // Row by row: along x through the fold table, along y and z whole neighbouring rows
-  // (a fold across a wall flips the sign of the odd normal component).
-  for_rows(L, [&](std::size_t row, int j, int k) {
-    double* o = out.data() + row;
+
+  DivergenceRows(const Layout& layout, const Velocity& vel) : L(layout), u(vel), inv2h(0.5 / layout.h) {
+    for (int a = 0; a < L.dim; ++a) nb[a] = neighbours(L, a, 1);
+  }
+
+  void row(std::size_t row, int j, int k, double* o) const {
+    const int nx = L.size[0];
     const double* ux = u[0].data() + row;
-    for (int i = 0; i < nx; ++i) {
+    auto folded = [&](int i) {
       const double up = ux[nb[0].plus[i]] * (nb[0].plus_flip[i] ? -1.0 : 1.0);
       const double um = ux[nb[0].minus[i]] * (nb[0].minus_flip[i] ? -1.0 : 1.0);
-      o[i] = (up - um) * inv2h;
-    }
+      return (up - um) * inv2h;
+    };
+    o[0] = folded(0);
+    for (int i = 1; i < nx - 1; ++i) o[i] = (ux[i + 1] - ux[i - 1]) * inv2h;
+    o[nx - 1] = folded(nx - 1);
     for (int a = 1; a < L.dim; ++a) {
       const RowNeighbours r = row_neighbours(L, nb[a], a, j, k);
       const double* p = u[a].data() + r.plus;
@@ -59,7 +67,49 @@ void divergence(const Layout& L, const Velocity& u, Field& out) {
       const double sp = r.plus_sign * inv2h, sm = r.minus_sign * inv2h;
       for (int i = 0; i < nx; ++i) o[i] += sp * p[i] - sm * m[i];
     }
-  });
+  }
+};
+
+// max |v| over v[0..n), or the first non-finite value.
+double max_abs(const double* v, std::size_t n) noexcept {
+  double m = 0.0;
+  bool finite = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::fabs(v[i]);
+    finite &= a <= std::numeric_limits<double>::max();  // false for inf and NaN
+    m = a > m ? a : m;
+  }
+  if (!finite)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!std::isfinite(v[i])) return v[i];
+  return m;
+}
+
+}  // namespace
+
+void divergence(const Layout& L, const Velocity& u, Field& out) {
+  out.resize(L.count());
+  const DivergenceRows D(L, u);
+  // Row by row: along x through the fold table, along y and z whole neighbouring rows
+  // (a fold across a wall flips the sign of the odd normal component).
+  for_rows(L, [&](std::size_t row, int j, int k) { D.row(row, j, k, out.data() + row); });
+}
+
+double max_abs_divergence(const Layout& L, const Velocity& u) {
+  const DivergenceRows D(L, u);
+  const int rows = L.size[1] * L.size[2];
+  std::vector<double> row_max(rows);
+#pragma omp parallel if (L.count() >= kParallelNodes)
+  {
+    std::vector<double> o(L.size[0]);
+#pragma omp for schedule(static)
+    for (int r = 0; r < rows; ++r) {
+      const int j = r % L.size[1], k = r / L.size[1];
+      D.row(L.index(0, j, k), j, k, o.data());
+      row_max[r] = max_abs(o.data(), o.size());
+    }
+  }
+  return max_abs(row_max.data(), row_max.size());  // rows in order: deterministic
 }
 
 void subtract_gradient(const Layout& L, const Field& q, Velocity& u) {
@@ -70,7 +120,10 @@ void subtract_gradient(const Layout& L, const Field& q, Velocity& u) {
   for_rows(L, [&](std::size_t row, int j, int k) {
     const double* qr = q.data() + row;
     double* ux = u[0].data() + row;
-    for (int i = 0; i < nx; ++i) ux[i] -= (qr[nb[0].plus[i]] - qr[nb[0].minus[i]]) * inv2h;
+    // Folded ends through the table, the interior directly (i +- 1 there).
+    ux[0] -= (qr[nb[0].plus[0]] - qr[nb[0].minus[0]]) * inv2h;
+    for (int i = 1; i < nx - 1; ++i) ux[i] -= (qr[i + 1] - qr[i - 1]) * inv2h;
+    ux[nx - 1] -= (qr[nb[0].plus[nx - 1]] - qr[nb[0].minus[nx - 1]]) * inv2h;
     for (int a = 1; a < L.dim; ++a) {
       const RowNeighbours r = row_neighbours(L, nb[a], a, j, k);  // q is even: no sign
       const double* p = q.data() + r.plus;
@@ -81,14 +134,7 @@ void subtract_gradient(const Layout& L, const Field& q, Velocity& u) {
   });
 }
 
-double max_abs(const Field& f) noexcept {
-  double m = 0.0;
-  for (double v : f) {
-    if (!std::isfinite(v)) return v;
-    m = std::fmax(m, std::fabs(v));
-  }
-  return m;
-}
+double max_abs(const Field& f) noexcept { return max_abs(f.data(), f.size()); }
 
 double node_weight(const Layout& L, int i, int j, int k) noexcept {
   double w = 1.0;

@@ -10,6 +10,10 @@ namespace fest::fluidsim {
 // out = D u, at every stored node (wall nodes included); u's normal components are odd.
 void divergence(const Layout& layout, const Velocity& u, Field& out);
 
+// max |D u| without storing D u (the projection's after-check); a non-finite value if
+// D u has one.
+double max_abs_divergence(const Layout& layout, const Velocity& u);
+
 // u -= G q for an even q.
 void subtract_gradient(const Layout& layout, const Field& q, Velocity& u);
 

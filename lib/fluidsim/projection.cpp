@@ -196,8 +196,7 @@ ProjectionStats Projector::project(Velocity& u) const {
   st.iterations = solve(div, q);
   subtract_gradient(layout_, q, u);
   enforce_walls(layout_, u);
-  divergence(layout_, u, div);
-  st.max_div_after = max_abs(div);
+  st.max_div_after = max_abs_divergence(layout_, u);
   return st;
 }
 

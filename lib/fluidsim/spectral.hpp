@@ -69,8 +69,16 @@ class BoxSolver {
 
  private:
   std::array<std::shared_ptr<const AxisBasis>, 3> axes_;
+  // The z solve without transforms (see solve()): line (i,j) in x/y eigen space obeys
+  // (b T_z + shift_[i + m0 j]) q = r, a tridiagonal system when T_z is (a closed axis).
+  void solve_z_tridiagonal(double* X, double* scratch) const;
+
   std::vector<double> inv_factor_;  // 1 / (a + b * lambda sum), 0 for null modes
   std::size_t count_ = 0;
+  bool tridiagonal_z_ = false;
+  std::vector<double> sub_, diag_, super_;  // b T_z, by row
+  std::vector<double> shift_;               // a + b (lambda_x + lambda_y) per x/y mode
+  std::vector<int> null_lines_;             // x/y modes with shift 0: singular lines, solved in eigen space
 };
 
 }  // namespace fest::fluidsim

@@ -130,7 +130,7 @@ class Engine {
   void bind(const Term& var, const Term& value);
   std::size_t mark() const { return trail_.size(); }
   void undo_to(std::size_t m);
-  void emit(const char* port, int depth, const Term& goal, const Clause* ctx, double dur_ms);
+  void emit(const char* port, int depth, const Term& goal, const Clause* ctx, double dur_ms, bool with_measure);
   double now_ms() const;
   void tick(int depth, const Clause* ctx, const Term& goal);
   bool compare_numbers(const std::string& op, const Term& a, const Term& b, const Clause* ctx);

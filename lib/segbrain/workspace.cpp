@@ -10,6 +10,7 @@
 #include "segbrain/filters.hpp"
 #include "segbrain/measures.hpp"
 #include "segbrain/morphology.hpp"
+#include "segbrain/shape.hpp"
 
 namespace fest::segbrain {
 
@@ -83,6 +84,22 @@ int conn_of(Engine& e, const Term& t) {
   if (c != 4 && c != 8 && c != 6 && c != 18 && c != 26) throw bad_input("connectivity {} (4, 8, 6, 18 or 26)", c);
   return c;
 }
+int axis_of(const Term& t) {
+  for (int a = 0; a < 3; ++a)
+    if (is_atom(t, a == 0 ? "r" : a == 1 ? "a" : "s")) return a;
+  throw bad_input("axis must be r, a or s, got {}", to_string(deref(t)));
+}
+Term number_list(const double* v, std::size_t n) {
+  std::vector<Term> items;
+  for (std::size_t i = 0; i < n; ++i) items.push_back(make_real(v[i]));
+  return make_list(items);
+}
+Point point_of(Engine& e, const Term& t) {
+  std::vector<Term> items;
+  if (!list_items(deref(t), items) || items.size() != 3) throw bad_input("expected a point [R, A, S], got {}", to_string(deref(t)));
+  return {e.eval(items[0]), e.eval(items[1]), e.eval(items[2])};
+}
+
 bool slice_scope(const Term& t) {
   Term d = deref(t);
   if (d->kind == Kind::atom && d->name == "volume") return false;
@@ -212,6 +229,50 @@ void Workspace::register_operators(Engine& engine) {
         e.on_backtrack([this] { emitted_.pop_back(); });
         return true;
       });
+  // --- location and shape (canonical-grid mm: index x spacing along R, A, S) ---
+  reg("halfspace", 4, "+Axis(r|a|s), +below|above, +ValueMM, -Mask", "voxels below/above a position along one axis",
+      [this](Engine& e, const std::vector<Term>& a) {
+        bool below = is_atom(a[1], "below");
+        if (!below && !is_atom(a[1], "above")) throw bad_input("halfspace: side must be below or above");
+        return create(e, a[3], mask_object(halfspace(grid_, axis_of(a[0]), below, num(e, a[2]))));
+      });
+  reg("components_near", 6, "+Mask, +Conn, +MinMl, +[R,A,S], +MaxDistMM, -Out",
+      "components of at least MinMl whose centroid lies within MaxDistMM of the point",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[5], mask_object(components_near(grid_, mask(name_of(a[0])), conn_of(e, a[1]), num(e, a[2]),
+                                                           point_of(e, a[3]), num(e, a[4]))));
+      });
+  reg("geodesic_dilate", 4, "+Mask, +Within, +RadiusMM, -Out", "growth by at most RadiusMM along paths inside Within",
+      [this](Engine& e, const std::vector<Term>& a) {
+        return create(e, a[3], mask_object(geodesic_dilate(grid_, mask(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]))));
+      });
+  reg("centroid_mm", 2, "+Mask, -[R,A,S]", "mean voxel position (fails for an empty mask)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        Point c = centroid_mm(grid_, mask(name_of(a[0])));
+        if (std::isnan(c[0])) return false;
+        return e.unify(a[1], number_list(c.data(), 3));
+      });
+  reg("bbox_mm", 2, "+Mask, -[R0,R1,A0,A1,S0,S1]", "extreme voxel positions per axis (fails for an empty mask)",
+      [this](Engine& e, const std::vector<Term>& a) {
+        auto b = bbox_mm(grid_, mask(name_of(a[0])));
+        if (std::isnan(b[0])) return false;
+        return e.unify(a[1], number_list(b.data(), 6));
+      });
+  reg("midsagittal_plane", 3, "+Img, +Mask, -PlaneRMM",
+      "sagittal plane R = c (mm, within 15 mm of the mask's centroid) of greatest mirror correlation",
+      [this](Engine& e, const std::vector<Term>& a) {
+        double c = midsagittal_r_mm(grid_, image(name_of(a[0])), mask(name_of(a[1])), 15.0);
+        if (std::isnan(c)) return false;
+        e.measure() = {{"midsagittal_r_mm", c}};
+        return e.unify(a[2], make_real(c));
+      });
+  reg("mirror_dice", 3, "+Mask, +PlaneRMM, -D", "Dice of the mask and its mirror image about the sagittal plane R = PlaneRMM",
+      [this](Engine& e, const std::vector<Term>& a) {
+        double d = mirror_dice(grid_, mask(name_of(a[0])), num(e, a[1]));
+        e.measure() = {{"mirror_dice", d}};
+        return e.unify(a[2], make_real(d));
+      });
+
   // --- measurements (verification operators read these) ---
   reg("volume_ml", 2, "+Mask, -V", "volume in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
     double v = ml(mask(name_of(a[0])));

@@ -20,7 +20,7 @@ constexpr double kMinTwiceArea = 1e-9;
 // Triangles with a bounding box of at most this many cells are measured, not cached.
 constexpr double kDirectBoxCells = 32;
 // Largest valence of a vertex whose collapse is considered.
-constexpr int kMaxFan = 64;
+constexpr int kMaxFan = 1024;
 
 GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
   const auto& p = m.point(v);
@@ -72,9 +72,10 @@ class TriangleErrorCache {
 
 class CollapseEngine {
  public:
-  CollapseEngine(const HeightGrid& grid, const SimplifyOptions& options, double tolerance)
-      : ref_(grid, options.diagonal), limit_(options.max_error + tolerance), cache_(grid.size()) {
-    build(grid);
+  CollapseEngine(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
+                 double limit, const TileFrame* frame)
+      : ref_(ref), limit_(limit), frame_(frame), cache_(start.vertices.size()) {
+    build(start, locked);
   }
 
   SimplifyResult run() {
@@ -115,27 +116,19 @@ class CollapseEngine {
   }
 
  private:
-  void build(const HeightGrid& grid) {
+  void build(const Tin& start, const std::vector<std::uint8_t>& locked) {
     m_.request_vertex_status();
     m_.request_edge_status();
     m_.request_face_status();
-    const Tin fine = finest_triangulation(grid, DiagonalRule::ne);  // vertices only; faces below
-    for (const auto& p : fine.vertices) m_.add_vertex(TriMesh::Point(p.x, p.y, p.z));
-    const int w = grid.width;
-    auto vh = [&](int i, int j) { return TriMesh::VertexHandle(j * w + i); };
-    for (int j = 0; j + 1 < grid.height; ++j)
-      for (int i = 0; i + 1 < w; ++i) {
-        if (ref_.ne_diagonal(i, j)) {
-          m_.add_face(vh(i, j), vh(i + 1, j), vh(i + 1, j + 1));
-          m_.add_face(vh(i, j), vh(i + 1, j + 1), vh(i, j + 1));
-        } else {
-          m_.add_face(vh(i, j), vh(i + 1, j), vh(i, j + 1));
-          m_.add_face(vh(i + 1, j), vh(i + 1, j + 1), vh(i, j + 1));
-        }
-      }
-    locked_.assign(m_.n_vertices(), 0);
-    for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked_[c] = 1;
+    for (const auto& p : start.vertices) m_.add_vertex(TriMesh::Point(p.x, p.y, p.z));
+    for (const auto& t : start.triangles)
+      m_.add_face(TriMesh::VertexHandle(t[0]), TriMesh::VertexHandle(t[1]), TriMesh::VertexHandle(t[2]));
+    locked_ = locked;
     version_.assign(m_.n_vertices(), 0);
+  }
+
+  double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
+    return frame_ ? transition_error(ref_, *frame_, a, b, c, stop) : triangle_error(ref_, a, b, c, stop);
   }
 
   // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
@@ -196,7 +189,7 @@ class CollapseEngine {
     const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
                        (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
     if (!cache_.enabled() || box <= kDirectBoxCells)
-      return clamp_error(triangle_error(ref_, corner[0], corner[1], corner[2], stop));
+      return clamp_error(measure(corner[0], corner[1], corner[2], stop));
     std::uint64_t id[3];
     int k = 0;
     for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
@@ -206,7 +199,7 @@ class CollapseEngine {
     const std::uint64_t key = (id[0] << 42) | (id[1] << 21) | id[2];
     double* slot = cache_.find_or_insert(key);
     if (!std::isnan(*slot)) return *slot;
-    const double e = triangle_error(ref_, corner[0], corner[1], corner[2], stop);
+    const double e = measure(corner[0], corner[1], corner[2], stop);
     // Stopped early below the bound: e is only a lower bound, not worth remembering.
     if (e > stop && stop < limit_) return kInfinite;
     *slot = clamp_error(e);
@@ -235,8 +228,9 @@ class CollapseEngine {
   }
 
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
-  ReferenceSurface ref_;
+  const ReferenceSurface& ref_;
   double limit_;
+  const TileFrame* frame_;
   TriMesh m_;
   std::vector<std::uint8_t> locked_;
   std::vector<std::uint32_t> version_;
@@ -274,10 +268,71 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
   double lo = grid.h.empty() ? 0 : grid.h[0], hi = lo;
   for (double z : grid.h) lo = std::min(lo, z), hi = std::max(hi, z);
   const double tolerance = 1e-9 * std::max(1.0, hi - lo);
-  CollapseEngine engine(grid, options, tolerance);
+  const ReferenceSurface ref(grid, options.diagonal);
+  const Tin start = finest_triangulation(grid, options.diagonal);
+  std::vector<std::uint8_t> locked(start.vertices.size(), 0);
+  const int w = grid.width;
+  for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked[static_cast<std::size_t>(c)] = 1;
+  CollapseEngine engine(ref, start, locked, options.max_error + tolerance, nullptr);
   SimplifyResult result = engine.run();
   result.tolerance = tolerance;
   return result;
+}
+
+SimplifyResult simplify_tin(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
+                            double limit, const TileFrame* frame) {
+  CollapseEngine engine(ref, start, locked, limit, frame);
+  return engine.run();
+}
+
+std::array<EdgeInsert, 3> border_inserts(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
+                                         const GridPoint& b, const GridPoint& c, std::vector<GridPoint>& points) {
+  std::array<EdgeInsert, 3> inserts;
+  if (frame.fine_step <= 0) return inserts;
+  const GridPoint* v[3] = {&a, &b, &c};
+  for (int k = 0; k < 3; ++k) {
+    const GridPoint &p = *v[k], &q = *v[(k + 1) % 3];
+    int side = -1;
+    if (p.x == frame.x0 && q.x == frame.x0) side = kWest;
+    else if (p.y == frame.y0 && q.y == frame.y0) side = kSouth;
+    else if (p.x == frame.x1 && q.x == frame.x1) side = kEast;
+    else if (p.y == frame.y1 && q.y == frame.y1) side = kNorth;
+    if (side < 0 || !(frame.refinable & (1u << side))) continue;
+    inserts[k].side = side;
+    // Lattice points strictly between p and q, in order from p.
+    const bool vertical = side == kWest || side == kEast;
+    const int from = static_cast<int>(vertical ? p.y : p.x), to = static_cast<int>(vertical ? q.y : q.x);
+    const int step = to > from ? frame.fine_step : -frame.fine_step;
+    for (int s = from + step; step > 0 ? s < to : s > to; s += step) {
+      const int x = vertical ? static_cast<int>(p.x) : s, y = vertical ? s : static_cast<int>(p.y);
+      inserts[k].points.push_back(static_cast<int>(points.size()) + 3);
+      points.push_back({double(x), double(y), ref.sample(x, y)});
+    }
+  }
+  return inserts;
+}
+
+double transition_error(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
+                        const GridPoint& b, const GridPoint& c, double stop_above) {
+  std::vector<GridPoint> extra;
+  const auto inserts = border_inserts(ref, frame, a, b, c, extra);
+  unsigned sides = 0;
+  for (const auto& e : inserts)
+    if (!e.points.empty()) sides |= 1u << e.side;
+  double worst = triangle_error(ref, a, b, c, stop_above);
+  if (sides == 0 || worst > stop_above) return worst;
+  auto point = [&](int id) -> const GridPoint& { return id == 0 ? a : id == 1 ? b : id == 2 ? c : extra[id - 3]; };
+  std::vector<std::array<int, 3>> pieces;
+  for (unsigned m = 1; m < 16; ++m) {
+    if ((m & sides) != m) continue;  // every non-empty subset of the triangle's refinable sides
+    pieces.clear();
+    refine_triangle({0, 1, 2}, inserts, m, pieces);
+    for (const auto& t : pieces) {
+      worst = std::max(worst, triangle_error(ref, point(t[0]), point(t[1]), point(t[2]), stop_above));
+      if (worst > stop_above) return worst;
+    }
+  }
+  return worst;
 }
 
 double tin_error(const ReferenceSurface& reference, const Tin& tin) {

@@ -11,10 +11,12 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "terrainlod/height_grid.hpp"
 #include "terrainlod/reference_surface.hpp"
+#include "terrainlod/transition.hpp"
 #include "terrainlod/triangle_error.hpp"
 
 namespace fest::terrainlod {
@@ -45,6 +47,34 @@ Tin finest_triangulation(const HeightGrid& grid, DiagonalRule diagonal);
 // move along their border (the outline stays the DEM's rectangle), no xy rounding.
 // Throws usage_error for a negative or non-finite bound.
 SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& options);
+
+// A tile as the engine sees it (spec terrainlod 2.6): its square in grid units and the
+// lattice step of the finer neighbour tiles. A triangle with an edge on a border that can
+// face a finer neighbour is measured in all its transition variants (that edge split at
+// the neighbour's lattice points, heights = DEM samples), so every one of the tile's 16
+// triangulations stays within the bound, not only the base one.
+struct TileFrame {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int fine_step = 0;      // grid units between the finer neighbours' border vertices; 0 = none
+  unsigned refinable = 0; // bit per Side: a finer neighbour can exist across that border
+};
+
+// The points a finer neighbour inserts on the edges of triangle (a, b, c): for each edge
+// on a refinable border, the fine lattice points strictly inside it (appended to `points`
+// with ids from 3 on; ids 0..2 are a, b, c).
+std::array<EdgeInsert, 3> border_inserts(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
+                                         const GridPoint& b, const GridPoint& c, std::vector<GridPoint>& points);
+
+// Largest error of triangle (a, b, c) over all its transition variants in `frame`
+// (stops early above `stop_above` like triangle_error).
+double transition_error(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
+                        const GridPoint& b, const GridPoint& c, double stop_above);
+
+// The engine on any start mesh (counter-clockwise triangles, a disc): `locked` vertices
+// stay; other boundary vertices slide along the boundary; every new triangle (with its
+// transition variants when `frame` is given) must stay within `limit` of `ref`.
+SimplifyResult simplify_tin(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
+                            double limit, const TileFrame* frame);
 
 // Largest vertical distance of a TIN from the reference surface, triangle by triangle.
 double tin_error(const ReferenceSurface& reference, const Tin& tin);

@@ -145,3 +145,33 @@ TEST(SegbrainEngine, OptionalRecordsSkippedGoals) {
   ASSERT_EQ(e.skipped().size(), 1u);
   EXPECT_EQ(e.skipped()[0], "fail");
 }
+
+TEST(SegbrainEngine, TraceMeasureOnOperatorExitsAndFailuresWithTheBound) {
+  Grid g;
+  g.n = {4, 4, 4};
+  Workspace ws(g);
+  Object img;
+  img.image.assign(g.size(), 1.0f);
+  ws.put_root("t1", img);
+  Engine e = with(
+      "check(M) :- volume_ml(M, V), V =< 0.01.\n"
+      "g :- threshold(t1, 0, inf, m), check(m).\n");
+  ws.register_operators(e);
+  std::vector<TraceEvent> events;
+  e.set_trace([&](const TraceEvent& ev) { events.push_back(ev); });
+  EXPECT_FALSE(e.prove(make_atom("g")));
+  bool exit_measured = false, fail_with_bound = false;
+  for (const auto& ev : events) {
+    const std::string port = ev.port;
+    if (port == "call" || port == "redo") {
+      EXPECT_TRUE(ev.measure.empty()) << ev.goal;
+    }
+    if (port == "exit" && ev.goal.rfind("volume_ml", 0) == 0)
+      exit_measured = ev.measure.size() == 1 && ev.measure[0].first == "volume_ml" && ev.measure[0].second == 0.064;
+    if (port == "fail" && ev.goal == "check(m)")
+      for (const auto& [k, v] : ev.measure) fail_with_bound = fail_with_bound || (k == "max" && v == 0.01);
+  }
+  EXPECT_TRUE(exit_measured);
+  EXPECT_TRUE(fail_with_bound);
+  EXPECT_NE(e.last_failing_check().find("check (volume_ml 0.064"), std::string::npos) << e.last_failing_check();
+}

@@ -1,12 +1,14 @@
 // capture: acquisition sessions on a turntable station (specs/capture.md §2.5, §4).
 // Flags only; the subcommands live in *_command.cpp.
 
+#include "calib_commands.hpp"
 #include "cli/cli.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
   using namespace fest::capture_tool;
-  CLI::App app{"Acquisition sessions on a turntable station: plans, runs with a journaled manifest, selftest",
+  CLI::App app{"Drive an appearance-capture station: plans, runs with a journaled manifest, selftest,\n"
+               "calibration of its camera, turntable and lights",
                "capture"};
   fest::cli::Common common;
   fest::cli::add_common(app, common);
@@ -36,8 +38,8 @@ int main(int argc, char** argv) {
   CLI::App* s = app.add_subcommand("selftest", "Check every device of the station; a JSON report");
   s->add_option("--station", self.station, "station.json")->envname("CAPTURE_STATION");
 
-  // Calibration subcommands (calib-camera, calib-turntable, calib-lights) are added here:
-  // add_calib_commands(app);   (tools/capture/calib_commands.cpp)
+  // calib-camera, calib-turntable, calib-lights (tools/capture/calib_commands.cpp).
+  add_calib_commands(app);
 
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error,\n"
              "5 device not found, 6 device error, 7 timeout, 8 permission denied. See capture(1).");
@@ -47,7 +49,7 @@ int main(int argc, char** argv) {
       if (p->parsed()) return plan_command(plan);
       if (r->parsed()) return run_command(run);
       if (s->parsed()) return selftest_command(self);
-      return 0;  // a subcommand added by add_calib_commands ran through its own callback
+      return run_calib_command(app);
     });
   });
 }

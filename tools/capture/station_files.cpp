@@ -5,11 +5,11 @@
 
 #include "capture/device_uri.hpp"
 #include "capture/sim_camera.hpp"
-#include "capture/sim_lights.hpp"
 #include "capture/sim_turntable.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "devices/exec_camera.hpp"
+#include "devices/open_devices.hpp"
 #include "devices/v4l2_camera.hpp"
 #include "formats/table/table_io.hpp"
 
@@ -33,8 +33,6 @@ std::string resolve(const std::string& folder, const std::string& name) {
   const fs::path p(name);
   return p.is_absolute() || folder.empty() ? name : (fs::path(folder) / p).string();
 }
-
-bool is_sim(const std::string& uri) { return uri == "sim" || uri.rfind("sim:", 0) == 0; }
 
 }  // namespace
 
@@ -70,21 +68,11 @@ capture::Plan load_plan(const std::string& path, json* document) {
 Devices open_devices(const LoadedStation& loaded) {
   const capture::Station& st = loaded.station;
   Devices d;
-  const std::string& table_uri = st.turntable.uri;
-  if (!is_sim(table_uri))
-    throw make_error(Status::device_not_found,
-                     "turntable {}: this capture build has only the sim: backend (hardware backends: devices/)", table_uri);
-  d.turntable = std::make_unique<capture::SimTurntable>(capture::parse_sim_turntable_uri(table_uri));
-
-  std::vector<std::string> ids;
-  for (const capture::LightConfig& l : st.lights) {
-    if (!is_sim(l.uri))
-      throw make_error(Status::device_not_found,
-                       "light {} ({}): this capture build has only the sim: backend (hardware backends: devices/)", l.id,
-                       l.uri);
-    ids.push_back(l.id);
-  }
-  auto lights = std::make_unique<capture::SimLightBank>(ids);
+  // Turntables and lights: sim:, usb:, gpio-stepper:, gpio:, usb-aux: (devices/).
+  d.turntable = devices::open_turntable(st.turntable.uri);
+  std::vector<devices::LightConfig> configs;
+  for (const capture::LightConfig& l : st.lights) configs.push_back({l.id, l.uri, l.active_low});
+  std::unique_ptr<capture::LightBank> lights = devices::open_lights(configs);
 
   const capture::DeviceUri camera_uri = capture::parse_device_uri(st.camera.uri);
   d.cal = st.turntable.calibration ? *st.turntable.calibration : capture::default_turntable_cal();
@@ -103,8 +91,7 @@ Devices open_devices(const LoadedStation& loaded) {
     return d;
   }
   if (camera_uri.scheme != "sim")
-    throw make_error(Status::device_not_found,
-                     "camera {}: this capture build has only the sim: backend (hardware backends: devices/)", st.camera.uri);
+    throw usage_error("camera {}: unknown scheme '{}' (sim:, v4l2:, exec:)", st.camera.uri, camera_uri.scheme);
   camera_uri.expect_only({});
   capture::SimScene scene = capture::default_sim_scene();
   if (!camera_uri.path.empty()) {

@@ -35,9 +35,9 @@ struct Devices {
   double black_level = 0;
 };
 
-// Opens the station's devices. `sim:` URIs give the simulated turntable, lights and
-// camera (`sim:scene.json`, relative to the station); other schemes are the hardware
-// backends' (devices/), and a build without them reports the device as not found (5).
+// Opens the station's devices: turntable and lights through devices/open_devices (usb:,
+// gpio-stepper:, gpio:, usb-aux:, sim:), the camera here: sim:[scene.json] (relative to
+// the station), v4l2:, exec:.
 Devices open_devices(const LoadedStation& station);
 
 }  // namespace fest::capture_tool

@@ -1,6 +1,7 @@
 // Subcommands: formats -> lib/segbrain -> formats.
 #include "commands.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -131,6 +132,58 @@ Volume label_volume(const Volume& in, const Reorientation& r, const std::vector<
   return out;
 }
 
+// --objects a,b,c -> segment_objects([a, b, c]); every name must be a known_object/1
+// fact of the knowledge base (which objects it can find is knowledge, not code).
+Term objects_goal(Engine& engine, const std::string& list) {
+  std::vector<Term> names;
+  std::size_t pos = 0;
+  while (pos <= list.size()) {
+    std::size_t comma = list.find(',', pos);
+    std::string name = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    if (name.empty()) throw usage_error("--objects: empty object name in '{}'", list);
+    Term t = make_atom(name);
+    if (!engine.defines("known_object", 1) || !engine.prove(make_compound("known_object", {t}))) {
+      std::string known;
+      Term all = make_var("L"), x = make_var("X");
+      if (engine.defines("known_object", 1) &&
+          engine.prove(make_compound("findall", {x, make_compound("known_object", {x}), all}))) {
+        std::vector<Term> items;
+        list_items(deref(all), items);
+        for (const auto& it : items) known += (known.empty() ? "" : ", ") + to_string(it);
+      }
+      throw usage_error("--objects: the knowledge base has no rules for '{}' (it knows: {})", name, known.empty() ? "none" : known);
+    }
+    names.push_back(t);
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return make_compound("segment_objects", {make_list(names)});
+}
+
+// label(Index, Name, Parent, [R, G, B]) facts of the knowledge base, in file order.
+std::vector<LabelEntry> label_entries(Engine& engine) {
+  std::vector<LabelEntry> out;
+  if (!engine.defines("label", 4)) return out;
+  Term all = make_var("L");
+  Term tmpl = make_compound("label", {make_var("I"), make_var("N"), make_var("P"), make_var("C")});
+  if (!engine.prove(make_compound("findall", {tmpl, tmpl, all}))) return out;
+  std::vector<Term> items;
+  list_items(deref(all), items);
+  for (const auto& it : items) {
+    Term t = deref(it);
+    std::vector<Term> rgb;
+    if (!is_number(t->args[0]) || deref(t->args[1])->kind != Kind::atom || !list_items(deref(t->args[3]), rgb) || rgb.size() != 3)
+      throw bad_input("label/4 expects label(Index, name, parent, [R, G, B]), got {}", to_string(t));
+    LabelEntry e;
+    e.index = static_cast<int>(number_value(t->args[0]));
+    e.name = deref(t->args[1])->name;
+    e.parent = to_string(deref(t->args[2]));
+    for (int c = 0; c < 3; ++c) e.rgb[c] = static_cast<int>(number_value(rgb[c]));
+    out.push_back(e);
+  }
+  return out;
+}
+
 json trace_json(const TraceEvent& e) {
   json j = {{"t_ms", std::round(e.t_ms * 1000) / 1000}, {"port", e.port}, {"depth", e.depth},
             {"goal", e.goal}, {"clause", e.clause}};
@@ -156,6 +209,8 @@ int run_segment(const RunArgs& a) {
   } catch (const Error& e) {
     throw usage_error("{}", e.what());
   }
+  if (!a.objects.empty()) goal = objects_goal(engine, a.objects);
+  const std::vector<LabelEntry> table = label_entries(engine);
 
   Volume in = read_volume_input(a.input);
   if (in.size() == 0) throw bad_input("volume has no voxels ({})", a.input);
@@ -242,6 +297,9 @@ int run_segment(const RunArgs& a) {
       objs[em.object] = o;
     }
     rep["objects"] = objs;
+    json labs = json::array();
+    for (const auto& l : table) labs.push_back({{"index", l.index}, {"name", l.name}, {"parent", l.parent}, {"rgb", l.rgb}});
+    rep["labels"] = labs;
     rep["accepted_by"] = engine.accepted_by();
     rep["skipped"] = engine.skipped();
     rep["counts"] = {{"inferences", engine.counters().inferences}, {"backtracks", engine.counters().backtracks},
@@ -250,8 +308,28 @@ int run_segment(const RunArgs& a) {
     write_output(a.report, rep.dump(2) + "\n");
   }
   if (!ok) throw runtime_failure("{}", failure);
+  if (!a.label_table.empty()) {
+    std::string text = "# segbrain label table (index name R G B A); parents in the JSON report\n";
+    for (const auto& l : table) text += fmt::format("{} {} {} {} {} 255\n", l.index, l.name, l.rgb[0], l.rgb[1], l.rgb[2]);
+    write_output(a.label_table, text);
+  }
+  if (!a.masks.empty()) {
+    std::set<std::string> written;
+    for (const auto& em : ws.emitted()) {
+      if (!written.insert(em.object).second) continue;
+      const Mask& m = ws.mask(em.object);
+      write_volume_output(label_volume(in, ro, std::vector<std::uint16_t>(m.begin(), m.end())),
+                          a.masks + "/" + em.object + ".nii.gz", "");
+    }
+  }
   write_volume_output(label_volume(in, ro, labels), a.output, a.to);
   return 0;
+}
+
+std::vector<LabelEntry> kb_labels(const std::vector<std::string>& kb) {
+  Engine engine;
+  for (const auto& p : load_kb(kb)) engine.consult(p);
+  return label_entries(engine);
 }
 
 int run_kb_check(const KbCheckArgs& a) {
@@ -374,6 +452,48 @@ Mask select(const Volume& v, const std::vector<std::pair<double, double>>& range
   return m;
 }
 
+bool same_grid(const Volume& a, const Volume& b) {
+  if (a.dims != b.dims) return false;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(a.spacing[i] - b.spacing[i]) > 1e-4 || std::abs(a.origin[i] - b.origin[i]) > 1e-3) return false;
+  for (int i = 0; i < 9; ++i)
+    if (std::abs(a.direction[i] - b.direction[i]) > 1e-5) return false;
+  return true;
+}
+
+// The reference on the segmentation's grid: each voxel takes the value of the reference
+// voxel nearest to its world position (0 outside the reference), so label volumes of
+// other voxel sizes, orientations or fields of view compare by anatomy (spec §4 eval).
+Volume resample_nearest(const Volume& ref, const Volume& grid) {
+  // Inverse of world = origin + D diag(s) ijk.
+  double m[9];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) m[3 * r + c] = ref.direction[3 * r + c] * ref.spacing[c];
+  const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
+  if (std::abs(det) < 1e-12) throw bad_input("the reference's voxel axes are degenerate");
+  const double inv[9] = {(m[4] * m[8] - m[5] * m[7]) / det, (m[2] * m[7] - m[1] * m[8]) / det, (m[1] * m[5] - m[2] * m[4]) / det,
+                         (m[5] * m[6] - m[3] * m[8]) / det, (m[0] * m[8] - m[2] * m[6]) / det, (m[2] * m[3] - m[0] * m[5]) / det,
+                         (m[3] * m[7] - m[4] * m[6]) / det, (m[1] * m[6] - m[0] * m[7]) / det, (m[0] * m[4] - m[1] * m[3]) / det};
+  Volume out = grid;
+  out.type = ref.type;
+  for (std::size_t k = 0; k < grid.dims[2]; ++k)
+    for (std::size_t j = 0; j < grid.dims[1]; ++j)
+      for (std::size_t i = 0; i < grid.dims[0]; ++i) {
+        auto w = grid.world(double(i), double(j), double(k));
+        const double d[3] = {w[0] - ref.origin[0], w[1] - ref.origin[1], w[2] - ref.origin[2]};
+        double v = 0;
+        long long p[3];
+        bool inside = true;
+        for (int r = 0; r < 3; ++r) {
+          p[r] = std::llround(inv[3 * r] * d[0] + inv[3 * r + 1] * d[1] + inv[3 * r + 2] * d[2]);
+          inside = inside && p[r] >= 0 && p[r] < static_cast<long long>(ref.dims[r]);
+        }
+        if (inside) v = ref.at(std::size_t(p[0]), std::size_t(p[1]), std::size_t(p[2]));
+        out.at(i, j, k) = v;
+      }
+  return out;
+}
+
 }  // namespace
 
 int run_synth(const SynthArgs& a) {
@@ -399,9 +519,7 @@ int run_synth(const SynthArgs& a) {
 int run_eval(const EvalArgs& a) {
   Volume ref = read_volume_input(a.ref);
   Volume seg = read_volume_input(a.seg);
-  if (ref.dims != seg.dims)
-    throw bad_input("reference {}x{}x{} and segmentation {}x{}x{} differ in size (resampling to the segmentation grid is not supported yet)",
-                    ref.dims[0], ref.dims[1], ref.dims[2], seg.dims[0], seg.dims[1], seg.dims[2]);
+  if (!same_grid(ref, seg)) ref = resample_nearest(ref, seg);
   auto smap = parse_map(a.map, "--map");
   auto rmap = parse_map(a.ref_map.empty() ? a.map : a.ref_map, "--ref-map");
   std::string out = "object\tdice\tjaccard\tvolume_seg_ml\tvolume_ref_ml\tvolume_diff_pct\n";

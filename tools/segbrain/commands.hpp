@@ -1,6 +1,7 @@
 #pragma once
 // Wiring of segbrain's subcommands (specs/segbrain.md §4).
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct RunArgs {
   std::vector<std::string> kb;
   std::string goal = "segment_head";
   std::vector<std::string> sets;
+  std::string objects;      // --objects head,brain,...: goal segment_objects([...])
+  std::string masks;        // --masks DIR
+  std::string label_table;  // --label-table FILE
   std::string report;
   std::string trace;
   int max_depth = 10000;
@@ -45,7 +49,25 @@ struct EvalArgs {
   std::string ref_map;
 };
 
+struct SlicesArgs {
+  std::string input;
+  std::string labels;
+  std::string output;
+  std::vector<std::string> kb;
+  double scale = 2;
+};
+
+// An output label of the knowledge base: label(Index, Name, Parent, [R, G, B]).
+struct LabelEntry {
+  int index = 0;
+  std::string name, parent;
+  std::array<int, 3> rgb{0, 0, 0};
+};
+// The label/4 facts of the given rule files (none: the built-in knowledge base).
+std::vector<LabelEntry> kb_labels(const std::vector<std::string>& kb);
+
 int run_segment(const RunArgs& a);
+int run_slices(const SlicesArgs& a);
 int run_kb_check(const KbCheckArgs& a);
 int run_ops(bool json);
 int run_synth(const SynthArgs& a);

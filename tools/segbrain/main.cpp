@@ -29,6 +29,10 @@ int main(int argc, char** argv) {
   r->add_option("--kb", run.kb, "Knowledge-base file(s) instead of the built-in head_t1.pl")->allow_extra_args(false);
   r->add_option("--goal", run.goal, "Goal to prove")->default_val("segment_head");
   r->add_option("--set", run.sets, "NAME=VALUE: replace candidates/2, limit/2 or NAME/1 facts")->allow_extra_args(false);
+  r->add_option("--objects", run.objects, "Comma-separated objects to find (head, brain, ventricles, cerebellum); "
+                 "proves segment_objects([...]) instead of --goal");
+  r->add_option("--masks", run.masks, "Also write each emitted object as DIR/<name>.nii.gz (uint8 0/1)");
+  r->add_option("--label-table", run.label_table, "Write the label colour table (index name R G B A) of the knowledge base");
   r->add_option("--report", run.report, "Write a JSON report");
   r->add_option("--trace", run.trace, "Write the proof trace as JSON lines");
   r->add_option("--max-depth", run.max_depth, "Deepest proof")->default_val(10000);
@@ -53,6 +57,14 @@ int main(int argc, char** argv) {
   s->add_option("--bias", syn.bias, "Bias field peak-to-peak")->default_val(0.2);
   s->add_option("--seed", syn.seed, "Random seed")->default_val(1);
 
+  SlicesArgs sl;
+  auto* sv = app.add_subcommand("slices", "PNG of three orthogonal slices (axial, coronal, sagittal) with the labels overlaid");
+  sv->add_option("input", sl.input, "The volume that was segmented")->required();
+  sv->add_option("--labels", sl.labels, "Its label volume (from segbrain run)")->required();
+  sv->add_option("-o,--output", sl.output, "PNG output (- = stdout)")->default_val("-");
+  sv->add_option("--kb", sl.kb, "Knowledge base whose label/4 facts give the colours")->allow_extra_args(false);
+  sv->add_option("--scale", sl.scale, "Pixels per smallest voxel size")->default_val(2)->check(CLI::Range(0.25, 8.0));
+
   EvalArgs ev;
   auto* e = app.add_subcommand("eval", "Dice, Jaccard and volume difference of a segmentation against a reference");
   e->add_option("--ref", ev.ref, "Reference label volume")->required();
@@ -65,7 +77,7 @@ int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   bool named = false, meta = false;
   for (int i = 1; i < argc; ++i) {
-    for (const char* sub : {"run", "kb-check", "ops", "synth", "eval"}) named = named || std::strcmp(argv[i], sub) == 0;
+    for (const char* sub : {"run", "kb-check", "ops", "synth", "eval", "slices"}) named = named || std::strcmp(argv[i], sub) == 0;
     for (const char* m : {"-h", "--help", "--version"}) meta = meta || std::strcmp(argv[i], m) == 0;
   }
   static char run_word[] = "run";
@@ -80,6 +92,7 @@ int main(int argc, char** argv) {
     if (*o) return run_ops(ops_json);
     if (*s) return run_synth(syn);
     if (*e) return run_eval(ev);
+    if (*sv) return run_slices(sl);
     return 2;
   });
 }

@@ -32,7 +32,53 @@ struct StatsArgs {
   double error_fraction = 1.0;
 };
 
+struct BuildArgs {
+  DemArgs dem;
+  std::string output;
+  int tile = 64;
+  int texels = 0;
+  double error_fraction = 1.0;
+  double height_quantum = 0.25;
+  double z_quantum = 0;   // 0 = 1 for integer DEMs, else 0.01
+  double leaf_error = 0;
+  int threads = 0;
+  std::string report;
+  bool progress = false;
+};
+
+struct DecodeArgs {
+  std::string pyramid;
+  std::string tile;       // L/X/Y
+  int mask = 0;
+  std::string output = "-";
+  std::string to;
+};
+
+struct ExtractArgs {
+  std::string pyramid;
+  std::string camera;     // JSON object
+  std::string path;       // JSON lines, one camera per frame
+  std::string output = "-";
+  std::string to;
+  double tau = 0;         // 0 = the camera's tau_px (default 1)
+  std::string report;
+  std::string png;        // software rendering of the mesh, tiles coloured by level
+};
+
+struct VerifyArgs {
+  std::string pyramid;
+  DemArgs dem;            // dem.path empty = no error check against the DEM
+  int cameras = 20;
+  unsigned seed = 1;
+};
+
 int run_simplify(const SimplifyArgs& args);
+int run_build(const BuildArgs& args);
+int run_decode(const DecodeArgs& args);
+int run_extract(const ExtractArgs& args);
+int run_verify(const VerifyArgs& args);
+// `stats` on a pyramid archive (run_stats hands over when the input is one).
+int run_pyramid_stats(const std::string& path, const std::string& bytes);
 int run_stats(const StatsArgs& args);
 
 }  // namespace fest::terrainlod_tool

@@ -1,6 +1,5 @@
 // terrainlod: multiresolution terrain with a guaranteed vertical error per tile
-// (specs/terrainlod.md). This first step has `simplify` (one free tile, exact error) and
-// `stats` (the DEM as read and the pyramid's level plan).
+// (specs/terrainlod.md): simplify, build, decode, extract, verify, stats.
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
@@ -30,7 +29,7 @@ void add_dem_options(CLI::App* cmd, DemArgs& d) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Multiresolution terrain from a DEM with a guaranteed vertical error: simplify a DEM to a\n"
-               "triangle mesh within a bound, report a DEM and its tile pyramid.",
+               "triangle mesh within a bound; build a crack-free tile pyramid and extract views from it.",
                "terrainlod"};
   fest::cli::Common common;
   fest::cli::add_common(app, common);
@@ -45,8 +44,56 @@ int main(int argc, char** argv) {
   s->add_option("--to", simplify.to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
 
+  BuildArgs build;
+  auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
+  add_dem_options(b, build.dem);
+  b->add_option("-o,--output", build.output, "Pyramid archive PYRAMID.tlp (written atomically)")->required();
+  b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
+  b->add_option("--texels", build.texels, "Texels per tile side T (power of two >= B; default B)");
+  b->add_option("--error-fraction", build.error_fraction, "Allowed error per tile in texels (f)");
+  b->add_option("--height-quantum", build.height_quantum, "Interior height quantum as a fraction of eps_l (q)");
+  b->add_option("--z-quantum", build.z_quantum, "Finest height quantum (default 1 for integer DEMs, else 0.01)");
+  b->add_option("--leaf-error", build.leaf_error, "Tolerance of the leaf level (height units)");
+  b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
+  b->add_flag("--progress", build.progress, "Progress bar on standard error");
+  fest::cli::add_threads(*b, build.threads);
+
+  DecodeArgs decode;
+  auto* d = app.add_subcommand("decode", "Decode one tile for a neighbour mask to a mesh");
+  d->add_option("pyramid", decode.pyramid, "Pyramid archive (.tlp)")->required();
+  d->add_option("--tile", decode.tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
+  d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer");
+  d->add_option("-o,--output", decode.output, "Mesh file; - = standard output (PLY)");
+  d->add_option("--to", decode.to, "Output format: ply, obj, off, stl or drc");
+
+  ExtractArgs extract;
+  auto* x = app.add_subcommand("extract", "The crack-free mesh a camera needs (view-dependent level of detail)");
+  x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp)")->required();
+  auto* cam_opt = x->add_option("--camera", extract.camera, "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px");
+  auto* path_opt = x->add_option("--path", extract.path,
+                                 "Camera path: JSON lines, one camera per frame (-o and --png then take a %d / %04d pattern)");
+  cam_opt->excludes(path_opt);
+  path_opt->excludes(cam_opt);
+  x->add_option("-o,--output", extract.output, "Mesh file; - = standard output (PLY); faces coloured by tile level");
+  x->add_option("--to", extract.to, "Output format: ply, obj, off, stl or drc");
+  x->add_option("--tau", extract.tau, "Pixels per texel threshold (overrides the camera's tau_px)");
+  x->add_option("--report", extract.report, "JSON report: tiles per level, triangles, bytes touched, times");
+  x->add_option("--png", extract.png, "Also render the mesh as the camera sees it (tiles coloured by level)");
+
+  VerifyArgs verify;
+  auto* v = app.add_subcommand("verify", "Check a pyramid: decoding, the error bound of every transition, cracks");
+  v->add_option("pyramid", verify.pyramid, "Pyramid archive (.tlp)")->required();
+  v->add_option("--dem", verify.dem.path, "The DEM it was built from: check every triangulation within 4/3 eps");
+  v->add_option("--cell-size", verify.dem.cell_size, "As for build");
+  v->add_option("--origin", verify.dem.origin, "As for build");
+  v->add_option("--z-scale", verify.dem.z_scale, "As for build");
+  v->add_option("--z-offset", verify.dem.z_offset, "As for build");
+  v->add_option("--nodata", verify.dem.nodata, "As for build");
+  v->add_option("--cameras", verify.cameras, "Random cameras for the crack check");
+  v->add_option("--seed", verify.seed, "Seed of the random cameras");
+
   StatsArgs stats;
-  auto* st = app.add_subcommand("stats", "The DEM as read (size, georeference, nodata) and its pyramid plan, as JSON");
+  auto* st = app.add_subcommand("stats", "JSON statistics of a pyramid (.tlp), or of a DEM and its pyramid plan");
   add_dem_options(st, stats.dem);
   st->add_option("--tile", stats.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
   st->add_option("--texels", stats.texels, "Texels per tile side T (power of two >= B; default B)");
@@ -54,6 +101,10 @@ int main(int argc, char** argv) {
 
   return fest::cli::run(app, argc, argv, [&] {
     if (s->parsed()) return run_simplify(simplify);
+    if (b->parsed()) return run_build(build);
+    if (d->parsed()) return run_decode(decode);
+    if (x->parsed()) return run_extract(extract);
+    if (v->parsed()) return run_verify(verify);
     return run_stats(stats);
   });
 }

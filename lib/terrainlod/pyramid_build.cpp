@@ -1,0 +1,258 @@
+#include "terrainlod/pyramid_build.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+#include "core/error.hpp"
+#include "terrainlod/simplify.hpp"
+
+namespace fest::terrainlod {
+namespace {
+
+int log2_int(int n) {
+  int b = 0;
+  while ((1 << b) < n) ++b;
+  return b;
+}
+
+std::int64_t finest_code(double z, double delta_min) { return std::llround(z / delta_min); }
+
+// The lattice mesh of a tile: (n+1)^2 DEM samples `step` cells apart, each lattice cell
+// split by its shorter diagonal (spec 2.3 on the tile's lattice), border points locked.
+struct StartMesh {
+  Tin tin;
+  std::vector<std::uint8_t> locked;
+};
+
+StartMesh lattice_mesh(const HeightGrid& padded, int x0, int y0, int n, int step) {
+  StartMesh s;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const int gx = x0 + i * step, gy = y0 + j * step;
+      s.tin.vertices.push_back({double(gx), double(gy), padded.at(gx, gy)});
+      s.locked.push_back(i == 0 || j == 0 || i == n || j == n ? 1 : 0);
+    }
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const auto& v = s.tin.vertices;
+      const double d_ne = std::abs(v[id(i + 1, j + 1)].z - v[id(i, j)].z);
+      const double d_nw = std::abs(v[id(i, j + 1)].z - v[id(i + 1, j)].z);
+      if (d_ne <= d_nw) {
+        s.tin.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        s.tin.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        s.tin.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        s.tin.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    }
+  return s;
+}
+
+TileFrame frame_of(const LevelInfo& lv, const std::vector<LevelInfo>& levels, int tx, int ty) {
+  TileFrame f;
+  f.x0 = tx * lv.cells;
+  f.y0 = ty * lv.cells;
+  f.x1 = f.x0 + lv.cells;
+  f.y1 = f.y0 + lv.cells;
+  if (lv.level + 1 < static_cast<int>(levels.size())) {
+    const LevelInfo& fine = levels[static_cast<std::size_t>(lv.level) + 1];
+    f.fine_step = fine.cells >> fine.lattice_bits;
+    if (tx > 0) f.refinable |= 1u << kWest;
+    if (ty > 0) f.refinable |= 1u << kSouth;
+    if (tx + 1 < lv.tiles_x) f.refinable |= 1u << kEast;
+    if (ty + 1 < lv.tiles_y) f.refinable |= 1u << kNorth;
+  }
+  return f;
+}
+
+// Whether the unsimplified lattice mesh of every tile of the level meets the engine's
+// limit (the engine only removes vertices, so it cannot repair a start mesh that fails).
+bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const LevelInfo& lv,
+                  const std::vector<LevelInfo>& levels) {
+  const int n = 1 << lv.lattice_bits, step = lv.cells / n;
+  for (int ty = 0; ty < lv.tiles_y; ++ty)
+    for (int tx = 0; tx < lv.tiles_x; ++tx) {
+      const StartMesh s = lattice_mesh(padded, tx * lv.cells, ty * lv.cells, n, step);
+      const TileFrame f = frame_of(lv, levels, tx, ty);
+      for (const auto& t : s.tin.triangles)
+        if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
+            lv.limit)
+          return false;
+    }
+  return true;
+}
+
+Tile build_tile(const ReferenceSurface& ref, const HeightGrid& padded, const LevelInfo& lv,
+                const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance) {
+  const int n = 1 << lv.lattice_bits, step = lv.cells / n;
+  const TileFrame frame = frame_of(lv, levels, tx, ty);
+  const StartMesh start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
+  const SimplifyResult r = simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
+
+  Tile tile;
+  tile.id = {lv.level, tx, ty};
+  tile.lattice_bits = lv.lattice_bits;
+  tile.k = lv.k;
+  tile.refinable = frame.refinable;
+  tile.eps = static_cast<float>(lv.eps);
+  if (frame.fine_step > 0) tile.fine_bits = levels[static_cast<std::size_t>(lv.level) + 1].lattice_bits;
+  for (const auto& p : r.mesh.vertices) {
+    TileVertex v;
+    v.X = (static_cast<int>(p.x) - frame.x0) / step;
+    v.Y = (static_cast<int>(p.y) - frame.y0) / step;
+    const std::int64_t g = finest_code(p.z, delta_min);
+    v.code = tile.on_border(v) ? g : (g >> lv.k);  // arithmetic shift = floor division
+    tile.vertices.push_back(v);
+  }
+  tile.triangles = r.mesh.triangles;
+  for (int s = kWest; s <= kNorth; ++s) {
+    if (!(frame.refinable & (1u << s))) continue;
+    const bool vertical = s == kWest || s == kEast;
+    const int fixed = s == kWest ? frame.x0 : s == kEast ? frame.x1 : s == kSouth ? frame.y0 : frame.y1;
+    const int from = vertical ? frame.y0 : frame.x0;
+    for (int a = from; a <= from + lv.cells; a += frame.fine_step) {
+      if ((a - from) % step == 0) continue;  // on this tile's own lattice
+      const int gx = vertical ? fixed : a, gy = vertical ? a : fixed;
+      tile.fine_G[s].push_back(finest_code(padded.at(gx, gy), delta_min));
+    }
+  }
+  return tile;
+}
+
+}  // namespace
+
+HeightGrid pad_grid(const HeightGrid& grid, int padded) {
+  HeightGrid p;
+  p.width = p.height = padded;
+  p.h.resize(static_cast<std::size_t>(padded) * padded);
+  for (int j = 0; j < padded; ++j)
+    for (int i = 0; i < padded; ++i)
+      p.h[static_cast<std::size_t>(j) * padded + i] = grid.at(std::min(i, grid.width - 1), std::min(j, grid.height - 1));
+  return p;
+}
+
+double triangulation_error(const ReferenceSurface& ref, const TileTriangulation& t) {
+  double worst = 0;
+  for (const auto& tri : t.triangles) {
+    GridPoint p[3];
+    for (int k = 0; k < 3; ++k) {
+      const auto& v = t.vertices[static_cast<std::size_t>(tri[k])];
+      p[k] = {double(v.gx), double(v.gy), v.z};
+    }
+    worst = std::max(worst, triangle_error(ref, p[0], p[1], p[2], std::numeric_limits<double>::infinity()));
+  }
+  return worst;
+}
+
+Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                      const std::function<void(std::size_t, std::size_t)>& progress) {
+  const PyramidPlan plan = plan_pyramid(grid.width, grid.height, dx, dy, params.pyramid);
+  if (!(params.z_quantum > 0) || !std::isfinite(params.z_quantum))
+    throw usage_error("--z-quantum must be a positive number (got {})", params.z_quantum);
+  if (!(params.height_quantum > 0) || !(params.height_quantum <= 1))
+    throw usage_error("--height-quantum must be in (0, 1] (got {})", params.height_quantum);
+  if (!(params.leaf_error >= 0) || !std::isfinite(params.leaf_error))
+    throw usage_error("--leaf-error must be a finite number >= 0 (got {})", params.leaf_error);
+  const int texels = params.pyramid.texels == 0 ? params.pyramid.tile : params.pyramid.texels;
+
+  Pyramid pyr;
+  pyr.levels = plan.levels;
+  pyr.padded = plan.padded;
+  pyr.width = grid.width;
+  pyr.height = grid.height;
+  pyr.delta_min = params.z_quantum;
+  const HeightGrid padded = pad_grid(grid, plan.padded);
+  const ReferenceSurface ref(padded, params.diagonal);
+  double lo = padded.h[0], hi = lo;
+  for (double z : padded.h) lo = std::min(lo, z), hi = std::max(hi, z);
+  const double tolerance = 1e-9 * std::max(1.0, hi - lo);
+
+  for (const auto& lp : plan.level) {
+    LevelInfo lv;
+    lv.level = lp.level;
+    lv.tiles_x = lp.tiles_x;
+    lv.tiles_y = lp.tiles_y;
+    lv.cells = params.pyramid.tile << (plan.levels - lp.level);
+    lv.lattice_bits = log2_int(std::min(texels, lv.cells));
+    const bool leaf = lp.level == plan.levels;
+    lv.eps = leaf ? params.leaf_error : lp.eps;
+    lv.k = leaf ? 0 : std::max(0, static_cast<int>(std::floor(std::log2(params.height_quantum * lv.eps / pyr.delta_min))));
+    // Quantization moves a height by at most half a bucket of 2^k finest steps.
+    lv.limit = leaf ? lv.eps : std::max(0.0, lv.eps - std::ldexp(pyr.delta_min, lv.k) / 2);
+    pyr.level.push_back(lv);
+  }
+  // Lattice refinement where a level's texel lattice cannot carry its budget (steep
+  // sub-texel detail): one more bit per axis until the unsimplified lattice fits (the full
+  // DEM always does), then the finer levels get at least half the coarser lattice, so
+  // every coarse border point is also a fine one.
+  for (int l = plan.levels - 1; l >= 0; --l) {
+    LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
+    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level)) ++lv.lattice_bits;
+  }
+  for (int l = 1; l <= plan.levels; ++l)
+    pyr.level[static_cast<std::size_t>(l)].lattice_bits =
+        std::max(pyr.level[static_cast<std::size_t>(l)].lattice_bits, pyr.level[static_cast<std::size_t>(l) - 1].lattice_bits - 1);
+
+  struct Job {
+    int level, x, y;
+  };
+  std::vector<Job> jobs;
+  for (const auto& lv : pyr.level)
+    for (int ty = 0; ty < lv.tiles_y; ++ty)
+      for (int tx = 0; tx < lv.tiles_x; ++tx) jobs.push_back({lv.level, tx, ty});
+  pyr.tiles.resize(jobs.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto run_job = [&](std::size_t j) {
+    try {
+      const Job& job = jobs[j];
+      Tile t = build_tile(ref, padded, pyr.level[static_cast<std::size_t>(job.level)], pyr.level, job.x, job.y,
+                          pyr.delta_min, tolerance);
+      // The tile's own figures: the largest error over its triangulations (with quantized
+      // heights) and its height range, for stats and culling.
+      const TileGeometry g = pyr.geometry(job.level);
+      double err = 0, zlo = 0, zhi = 0;
+      bool first = true;
+      for (unsigned m = 0; m < 16; ++m) {
+        if ((m & t.refinable) != m) continue;
+        const TileTriangulation tri = triangulate(t, m, g);
+        err = std::max(err, triangulation_error(ref, tri));
+        for (const auto& v : tri.vertices) {
+          if (first || v.z < zlo) zlo = v.z;
+          if (first || v.z > zhi) zhi = v.z;
+          first = false;
+        }
+      }
+      t.err = static_cast<float>(err);
+      t.z_min = static_cast<float>(zlo);
+      t.z_max = static_cast<float>(zhi);
+      pyr.tiles[j] = std::move(t);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+    ++done;
+  };
+  auto worker = [&] {
+    for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) run_job(j);
+  };
+  const int threads = std::max(1, std::min<int>(params.threads, static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  // The calling thread works too, reporting progress between its tiles.
+  for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) {
+    run_job(j);
+    if (progress) progress(done.load(), jobs.size());
+  }
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return pyr;
+}
+
+}  // namespace fest::terrainlod

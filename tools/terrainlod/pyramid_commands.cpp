@@ -1,0 +1,507 @@
+// build, decode, extract, verify and stats of a pyramid: formats/dem -> lib/terrainlod ->
+// the .tlp archive (pyramid_file) -> formats/mesh, JSON.
+
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/mesh.hpp"
+#include "core/progress.hpp"
+#include "core/resources.hpp"
+#include "core/threads.hpp"
+#include "dem_input.hpp"
+#include "formats/detect.hpp"
+#include "formats/input.hpp"
+#include "formats/mesh/mesh_io.hpp"
+#include "pyramid_file.hpp"
+#include "render.hpp"
+#include "terrainlod/extract.hpp"
+#include "terrainlod/pyramid_build.hpp"
+#include "terrainlod/tile_codec.hpp"
+
+namespace fest::terrainlod_tool {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+formats::OutputFormat mesh_output(const std::string& path, const std::string& to) {
+  formats::OutputFormat out = !to.empty() ? formats::output_format_from_name(to)
+                              : is_stdio(path) ? formats::OutputFormat{formats::Format::ply, false}
+                                               : formats::output_format_from_path(path);
+  if (formats::kind_of(out.format) != formats::Kind::mesh)
+    throw usage_error("output must be a mesh format (ply, obj, off, stl, drc), not {}", formats::format_name(out.format));
+  return out;
+}
+
+PyramidFile open_pyramid(const std::string& path) {
+  return PyramidFile(read_input(path), is_stdio(path) ? "-" : path);
+}
+
+// Level colours for the meshes and renderings (coarse = blue ... fine = red).
+OpenMesh::Vec3uc level_colour(int level, int levels) {
+  static const unsigned char palette[8][3] = {{49, 54, 149},  {69, 117, 180}, {116, 173, 209}, {171, 217, 233},
+                                              {254, 224, 144}, {253, 174, 97}, {244, 109, 67},  {215, 48, 39}};
+  const int k = levels == 0 ? 7 : static_cast<int>(std::lround(7.0 * level / levels));
+  return {palette[k][0], palette[k][1], palette[k][2]};
+}
+
+// Triangulations of several tiles -> one mesh in world coordinates; vertices shared by
+// tiles (exactly equal grid position and height) become one vertex, so a crack-free
+// selection gives a connected mesh. Faces coloured by level.
+Mesh world_mesh(const PyramidFile& pyr, const std::vector<std::pair<terrainlod::TileId, terrainlod::TileTriangulation>>& parts) {
+  const auto& L = pyr.layout();
+  Mesh mesh;
+  mesh.request_face_colors();
+  std::map<terrainlod::TileTriangulation::Vertex, Mesh::VertexHandle> ids;
+  for (const auto& [id, tri] : parts) {
+    std::vector<Mesh::VertexHandle> handles;
+    for (const auto& v : tri.vertices) {
+      auto it = ids.find(v);
+      if (it == ids.end())
+        it = ids.emplace(v, mesh.add_vertex(Mesh::Point(L.origin_x + static_cast<double>(v.gx) * L.dx,
+                                                        L.origin_y + static_cast<double>(v.gy) * L.dy, v.z)))
+                 .first;
+      handles.push_back(it->second);
+    }
+    for (const auto& t : tri.triangles) {
+      const auto f = mesh.add_face(handles[static_cast<std::size_t>(t[0])], handles[static_cast<std::size_t>(t[1])],
+                                   handles[static_cast<std::size_t>(t[2])]);
+      if (f.is_valid()) mesh.set_color(f, level_colour(id.level, L.levels));
+    }
+  }
+  return mesh;
+}
+
+terrainlod::TileId parse_tile(const std::string& s) {
+  terrainlod::TileId id;
+  char a = 0, b = 0;
+  std::istringstream in(s);
+  if (!(in >> id.level >> a >> id.x >> b >> id.y) || a != '/' || b != '/' || !in.eof() || id.level < 0 || id.x < 0 || id.y < 0)
+    throw usage_error("--tile expects L/X/Y (got '{}')", s);
+  return id;
+}
+
+terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& where) {
+  terrainlod::Camera c;
+  try {
+    auto vec3 = [&](const char* key, std::array<double, 3>& v) {
+      if (!j.contains(key)) return false;
+      const auto& a = j.at(key);
+      if (!a.is_array() || a.size() != 3) throw bad_input("camera '{}' must be [x, y, z] ({})", key, where);
+      for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(k)] = a.at(static_cast<std::size_t>(k)).get<double>();
+      return true;
+    };
+    if (!vec3("eye", c.eye) || !vec3("target", c.target)) throw bad_input("camera needs 'eye' and 'target' ({})", where);
+    vec3("up", c.up);
+    c.fovy_deg = j.value("fovy_deg", 60.0);
+    c.width = j.value("width", 1920);
+    c.height = j.value("height", 1080);
+    c.near = j.value("near", 1.0);
+    c.far = j.value("far", 1e9);
+    c.tau_px = j.value("tau_px", 1.0);
+  } catch (const nlohmann::json::exception& e) {
+    throw bad_input("camera is malformed: {} ({})", e.what(), where);
+  }
+  try {
+    terrainlod::check_camera(c);
+  } catch (const Error& e) {
+    throw Error(e.status(), fmt::format("{} ({})", e.what(), where));
+  }
+  return c;
+}
+
+struct Extraction {
+  terrainlod::Selection selection;
+  std::set<terrainlod::TileId> examined;  // tiles whose box the selection looked at
+  std::vector<std::pair<terrainlod::TileId, terrainlod::TileTriangulation>> parts;
+  std::size_t triangles = 0;
+  double select_ms = 0, decode_ms = 0;
+};
+
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
+  Extraction x;
+  const auto t0 = Clock::now();
+  x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
+    x.examined.insert(id);
+    const auto& t = pyr.tile(id);
+    // Widen the float range by a relative hair so the box holds the double heights.
+    const double pad = 1e-6 * (std::abs(t.z_min) + std::abs(t.z_max) + 1);
+    return std::array<double, 2>{t.z_min - pad, t.z_max + pad};
+  });
+  x.select_ms = ms_since(t0);
+  const auto t1 = Clock::now();
+  for (const auto& s : x.selection.tiles) {
+    x.parts.emplace_back(s.id, terrainlod::triangulate(pyr.tile(s.id), s.mask, pyr.geometry(s.id.level)));
+    x.triangles += x.parts.back().second.triangles.size();
+  }
+  x.decode_ms = ms_since(t1);
+  return x;
+}
+
+nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selection& sel) {
+  std::vector<int> n(static_cast<std::size_t>(pyr.layout().levels) + 1, 0);
+  for (const auto& s : sel.tiles) ++n[static_cast<std::size_t>(s.id.level)];
+  return n;
+}
+
+}  // namespace
+
+int run_build(const BuildArgs& args) {
+  if (args.output.empty()) throw usage_error("build needs -o PYRAMID.tlp");
+  if (is_stdio(args.output) || args.output.size() < 4 || args.output.substr(args.output.size() - 4) != ".tlp")
+    throw usage_error("build writes a .tlp archive; name the output *.tlp (directory pyramids are not supported) (got '{}')",
+                      args.output);
+  terrainlod::BuildParams params;
+  params.pyramid.tile = args.tile;
+  params.pyramid.texels = args.texels;
+  params.pyramid.error_fraction = args.error_fraction;
+  terrainlod::plan_pyramid(2, 2, 1, 1, params.pyramid);  // usage errors before reading
+  params.height_quantum = args.height_quantum;
+  params.leaf_error = args.leaf_error;
+  params.diagonal = diagonal_rule(args.dem.diagonal);
+  params.threads = resolve_threads(args.threads);
+  if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
+
+  const auto t0 = Clock::now();
+  const LoadedDem dem = load_dem(args.dem);
+  const double read_ms = ms_since(t0);
+  const bool integer = dem.raster.integer && args.dem.z_scale == 1 && std::floor(args.dem.z_offset) == args.dem.z_offset;
+  params.z_quantum = args.z_quantum > 0 ? args.z_quantum : integer ? 1.0 : 0.01;
+
+  const auto t1 = Clock::now();
+  Progress bar("build", 0, progress_wanted(args.progress));
+  const terrainlod::Pyramid pyr = terrainlod::build_pyramid(dem.grid, dem.dx, dem.dy, params, [&](std::size_t done, std::size_t) {
+    bar.set(done);
+  });
+  bar.finish();
+  const double build_ms = ms_since(t1);
+
+  nlohmann::json levels = nlohmann::json::array();
+  for (const auto& lv : pyr.level)
+    levels.push_back({{"level", lv.level}, {"tiles_x", lv.tiles_x}, {"tiles_y", lv.tiles_y}, {"cells", lv.cells},
+                      {"lattice_bits", lv.lattice_bits}, {"k", lv.k}, {"eps", lv.eps}, {"limit", lv.limit}});
+  const int texels = args.texels == 0 ? args.tile : args.texels;
+  nlohmann::json manifest = {{"format", "terrainlod-pyramid"},
+                             {"version", 1},
+                             {"width", dem.grid.width},
+                             {"height", dem.grid.height},
+                             {"origin", {dem.origin_x, dem.origin_y}},
+                             {"cell_size", {dem.dx, dem.dy}},
+                             {"crs", dem.raster.crs},
+                             {"tile", args.tile},
+                             {"texels", texels},
+                             {"error_fraction", args.error_fraction},
+                             {"height_quantum", args.height_quantum},
+                             {"z_quantum", params.z_quantum},
+                             {"leaf_error", args.leaf_error},
+                             {"diagonal", args.dem.diagonal},
+                             {"levels", pyr.levels},
+                             {"padded", pyr.padded},
+                             {"coding", "standalone"},
+                             {"connectivity", "strips"},
+                             {"reference", "original"},
+                             {"level", levels},
+                             {"tool", "terrainlod 1"}};
+  const auto t2 = Clock::now();
+  const std::string bytes = write_archive(manifest, pyr);
+  const double encode_ms = ms_since(t2);
+  write_output(args.output, bytes);
+  if (!args.report.empty()) {
+    PyramidFile file(bytes, args.output);
+    nlohmann::json r = {{"tiles", pyr.tiles.size()},
+                        {"bytes", bytes.size()},
+                        {"time_ms", {{"read", read_ms}, {"build", build_ms}, {"encode", encode_ms}}},
+                        {"threads", params.threads},
+                        {"peak_rss_kb", peak_rss_kb()}};
+    write_output(args.report, r.dump(2) + "\n");
+  }
+  return 0;
+}
+
+int run_pyramid_stats(const std::string& path, const std::string& bytes) {
+  PyramidFile pyr(bytes, is_stdio(path) ? "-" : path);
+  const int L = pyr.layout().levels;
+  struct Acc {
+    std::size_t tiles = 0, vertices = 0, border = 0, triangles = 0, header = 0, vert = 0, conn = 0, refine = 0;
+    double worst = 0;
+  };
+  std::vector<Acc> acc(static_cast<std::size_t>(L) + 1);
+  for (const auto& e : pyr.index()) {
+    const auto& t = pyr.tile(e.id);
+    auto& a = acc[static_cast<std::size_t>(e.id.level)];
+    ++a.tiles;
+    a.vertices += t.vertices.size();
+    a.border += 4 * static_cast<std::size_t>(t.n());
+    a.triangles += t.triangles.size();
+    terrainlod::TileSizes s;
+    terrainlod::encode_tile(t, &s);
+    a.header += s.header, a.vert += s.vertices, a.conn += s.connectivity, a.refine += s.refinement;
+    if (t.eps > 0) a.worst = std::max(a.worst, static_cast<double>(t.err) / t.eps);
+  }
+  nlohmann::json levels = nlohmann::json::array();
+  std::size_t total_v = 0, total_bytes = 0, total_t = 0;
+  for (int l = 0; l <= L; ++l) {
+    const auto& a = acc[static_cast<std::size_t>(l)];
+    const auto& m = pyr.manifest().at("level").at(static_cast<std::size_t>(l));
+    const std::size_t bytes_l = a.header + a.vert + a.conn + a.refine;
+    total_v += a.vertices, total_bytes += bytes_l, total_t += a.triangles;
+    levels.push_back({{"level", l},
+                      {"tiles", a.tiles},
+                      {"vertices", a.vertices},
+                      {"border_vertices", a.border},
+                      {"triangles", a.triangles},
+                      {"eps", m.at("eps")},
+                      {"lattice_bits", m.at("lattice_bits")},
+                      {"bytes", {{"total", bytes_l}, {"header", a.header}, {"vertices", a.vert}, {"connectivity", a.conn},
+                                 {"refinement", a.refine}}},
+                      {"bytes_per_vertex", a.vertices ? static_cast<double>(bytes_l) / a.vertices : 0.0},
+                      {"max_err_over_eps", l == L ? nlohmann::json(nullptr) : nlohmann::json(a.worst)}});
+  }
+  const double samples = pyr.manifest().at("width").get<double>() * pyr.manifest().at("height").get<double>();
+  nlohmann::json j = {{"manifest", pyr.manifest()},
+                      {"level", levels},
+                      {"totals",
+                       {{"tiles", pyr.index().size()},
+                        {"vertices", total_v},
+                        {"triangles", total_t},
+                        {"tile_bytes", total_bytes},
+                        {"file_bytes", pyr.size()},
+                        {"bytes_per_vertex", total_v ? static_cast<double>(total_bytes) / total_v : 0.0},
+                        {"bytes_per_sample", static_cast<double>(total_bytes) / samples},
+                        {"ratio_to_raw_int16", static_cast<double>(total_bytes) / (2 * samples)}}}};
+  const std::string text = j.dump(2) + "\n";
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  return 0;
+}
+
+int run_decode(const DecodeArgs& args) {
+  const terrainlod::TileId id = parse_tile(args.tile);
+  if (args.mask < 0 || args.mask > 15) throw usage_error("--mask must be 0..15 (got {})", args.mask);
+  const auto out = mesh_output(args.output, args.to);
+  PyramidFile pyr = open_pyramid(args.pyramid);
+  if (!pyr.has(id)) throw bad_input("pyramid has no tile {}/{}/{} ({})", id.level, id.x, id.y, pyr.name());
+  const auto& t = pyr.tile(id);
+  if ((static_cast<unsigned>(args.mask) & ~t.refinable) != 0)
+    throw bad_input("tile {} has no finer neighbour on the sides of mask {} (refinable sides: {})", args.tile, args.mask, t.refinable);
+  const std::string bytes = formats::write_mesh(
+      world_mesh(pyr, {{id, terrainlod::triangulate(t, static_cast<unsigned>(args.mask), pyr.geometry(id.level))}}), out.format);
+  formats::store_output(args.output, bytes, out.gzip);
+  return 0;
+}
+
+// A frame's file name from a pattern with one %d or %0Nd.
+std::string frame_name(const std::string& pattern, std::size_t frame, const char* flag) {
+  const auto p = pattern.find('%');
+  std::size_t q = p == std::string::npos ? p : p + 1;
+  bool zero = false;
+  if (q != std::string::npos && q < pattern.size() && pattern[q] == '0') zero = true, ++q;
+  std::size_t width = 0;
+  while (q != std::string::npos && q < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[q])))
+    width = width * 10 + static_cast<std::size_t>(pattern[q++] - '0');
+  if (p == std::string::npos || q >= pattern.size() || pattern[q] != 'd' || pattern.find('%', q) != std::string::npos || width > 12)
+    throw usage_error("{} for --path needs one %d or %0Nd for the frame number (got '{}')", flag, pattern);
+  std::string num = std::to_string(frame);
+  if (num.size() < width) num.insert(0, width - num.size(), zero ? '0' : ' ');
+  return pattern.substr(0, p) + num + pattern.substr(q + 1);
+}
+
+// extract --path: one mesh per camera; the decoded tiles persist between frames, with a
+// one-tile ring of inactive tiles around the drawn ones of every level (seed 7.3.3), so
+// small camera moves load nothing new.
+int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) {
+  if (is_stdio(args.output)) throw usage_error("--path writes one file per frame: give -o with a %d pattern");
+  frame_name(args.output, 0, "-o");
+  if (!args.png.empty()) frame_name(args.png, 0, "--png");
+  const std::string where = is_stdio(args.path) ? "-" : args.path;
+  std::vector<terrainlod::Camera> cams;
+  {
+    std::istringstream lines(read_input(args.path));
+    std::string line;
+    for (int n = 1; std::getline(lines, line); ++n) {
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      const std::string at = fmt::format("{}:{}", where, n);
+      nlohmann::json j;
+      try {
+        j = nlohmann::json::parse(line);
+      } catch (const nlohmann::json::exception& e) {
+        throw bad_input("camera is not JSON: {} ({})", e.what(), at);
+      }
+      cams.push_back(parse_camera(j, at));
+      if (args.tau > 0) cams.back().tau_px = args.tau;
+    }
+  }
+  if (cams.empty()) throw bad_input("camera path has no cameras ({})", where);
+  PyramidFile pyr = open_pyramid(args.pyramid);
+  const auto& L = pyr.layout();
+  nlohmann::json frames = nlohmann::json::array();
+  for (std::size_t k = 0; k < cams.size(); ++k) {
+    const std::size_t decoded0 = pyr.tiles_decoded(), bytes0 = pyr.bytes_touched();
+    const Extraction x = extract_view(pyr, cams[k]);
+    std::set<terrainlod::TileId> keep = x.examined;
+    for (const auto& s : x.selection.tiles) {
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const terrainlod::TileId r{s.id.level, s.id.x + dx, s.id.y + dy};
+          if (L.exists(r) && pyr.has(r)) keep.insert(r);
+        }
+    }
+    for (const auto& id : keep) pyr.tile(id);  // prefetch the ring
+    const std::size_t evicted = pyr.keep_only(keep);
+    const Mesh mesh = world_mesh(pyr, x.parts);
+    formats::store_output(frame_name(args.output, k, "-o"), formats::write_mesh(mesh, out.format), out.gzip);
+    if (!args.png.empty()) write_output(frame_name(args.png, k, "--png"), render_png(mesh, cams[k]));
+    frames.push_back({{"frame", k},
+                      {"tiles", x.selection.tiles.size()},
+                      {"tiles_per_level", tiles_per_level(pyr, x.selection)},
+                      {"triangles", x.triangles},
+                      {"tiles_loaded", pyr.tiles_decoded() - decoded0},
+                      {"bytes_loaded", pyr.bytes_touched() - bytes0},
+                      {"tiles_evicted", evicted},
+                      {"tiles_cached", pyr.tiles_cached()},
+                      {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}}}});
+  }
+  if (!args.report.empty()) write_output(args.report, nlohmann::json({{"frames", frames}}).dump(2) + "\n");
+  return 0;
+}
+
+int run_extract(const ExtractArgs& args) {
+  const auto out = mesh_output(args.output, args.to);
+  if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
+  if (!args.path.empty()) return run_extract_path(args, out);
+  if (args.camera.empty()) throw usage_error("extract needs --camera CAM.json or --path CAMS.jsonl");
+  if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
+  const std::string cam_name = is_stdio(args.camera) ? "-" : args.camera;
+  nlohmann::json cj;
+  try {
+    cj = nlohmann::json::parse(read_input(args.camera));
+  } catch (const nlohmann::json::exception& e) {
+    throw bad_input("camera is not JSON: {} ({})", e.what(), cam_name);
+  }
+  terrainlod::Camera cam = parse_camera(cj, cam_name);
+  if (args.tau > 0) cam.tau_px = args.tau;
+  PyramidFile pyr = open_pyramid(args.pyramid);
+  const Extraction x = extract_view(pyr, cam);
+  const auto t2 = Clock::now();
+  const Mesh mesh = world_mesh(pyr, x.parts);
+  const std::string bytes = formats::write_mesh(mesh, out.format);
+  std::string png;
+  if (!args.png.empty()) png = render_png(mesh, cam);
+  formats::store_output(args.output, bytes, out.gzip);
+  if (!png.empty()) write_output(args.png, png);
+  if (!args.report.empty()) {
+    std::size_t closing = 0;
+    for (const auto& s : x.selection.tiles) closing += s.closing_only;
+    nlohmann::json r = {{"tiles", x.selection.tiles.size()},
+                        {"tiles_per_level", tiles_per_level(pyr, x.selection)},
+                        {"closing_only", closing},
+                        {"visited", x.selection.visited},
+                        {"triangles", x.triangles},
+                        {"vertices", mesh.n_vertices()},
+                        {"bytes_touched", pyr.bytes_touched()},
+                        {"max_screen_error_px", pyr.manifest().at("error_fraction").get<double>() * cam.tau_px},
+                        {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}, {"write", ms_since(t2)}}}};
+    write_output(args.report, r.dump(2) + "\n");
+  }
+  return 0;
+}
+
+int run_verify(const VerifyArgs& args) {
+  if (args.cameras < 0) throw usage_error("--cameras must be >= 0 (got {})", args.cameras);
+  PyramidFile pyr = open_pyramid(args.pyramid);
+  const auto& L = pyr.layout();
+  nlohmann::json j;
+  bool ok = true;
+  // 1. Every tile decodes, re-encodes to the same bytes, and (with --dem) every one of
+  //    its transition triangulations stays within 4/3 eps_l of the DEM.
+  std::optional<LoadedDem> dem;
+  std::optional<terrainlod::HeightGrid> padded;
+  std::optional<terrainlod::ReferenceSurface> ref;
+  if (!args.dem.path.empty()) {
+    dem = load_dem(args.dem);
+    if (dem->grid.width != pyr.manifest().at("width").get<int>() || dem->grid.height != pyr.manifest().at("height").get<int>())
+      throw bad_input("DEM is {} x {} samples but the pyramid was built from {} x {} ({})", dem->grid.width, dem->grid.height,
+                      pyr.manifest().at("width").get<int>(), pyr.manifest().at("height").get<int>(), dem->name);
+    padded = terrainlod::pad_grid(dem->grid, pyr.manifest().at("padded").get<int>());
+    ref.emplace(*padded, diagonal_rule(pyr.manifest().value("diagonal", std::string("short"))));
+  }
+  std::size_t triangulations = 0, reencode_mismatch = 0, over = 0;
+  double worst_ratio = 0;
+  for (const auto& e : pyr.index()) {
+    const auto& t = pyr.tile(e.id);
+    if (terrainlod::encode_tile(t) != pyr.tile_bytes(e.id)) ++reencode_mismatch;
+    if (!ref) continue;
+    const double eps = pyr.manifest().at("level").at(static_cast<std::size_t>(e.id.level)).at("eps").get<double>();
+    const double bound = e.id.level == L.levels ? eps + 0.5 * pyr.geometry(e.id.level).delta_min : 4.0 / 3.0 * eps;
+    for (unsigned m = 0; m < 16; ++m) {
+      if ((m & t.refinable) != m) continue;
+      ++triangulations;
+      const double err = terrainlod::triangulation_error(*ref, terrainlod::triangulate(t, m, pyr.geometry(e.id.level)));
+      if (err > bound * (1 + 1e-9) + 1e-9) ++over;
+      if (eps > 0) worst_ratio = std::max(worst_ratio, err / eps);
+    }
+  }
+  j["tiles"] = pyr.index().size();
+  j["reencode_mismatches"] = reencode_mismatch;
+  ok = ok && reencode_mismatch == 0;
+  if (ref) {
+    j["triangulations_checked"] = triangulations;
+    j["over_bound"] = over;
+    j["max_err_over_eps"] = worst_ratio;
+    ok = ok && over == 0;
+  } else {
+    j["triangulations_checked"] = nullptr;
+  }
+  // 2. Random cameras: the extracted meshes have no cracks or T-junctions.
+  std::mt19937 rng(args.seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double wx = L.cells[0] * L.tiles_x[0] * L.dx, wy = L.cells[0] * L.tiles_y[0] * L.dy;
+  double zlo = 0, zhi = 0;
+  {
+    const auto& root = pyr.tile({0, 0, 0});
+    zlo = root.z_min, zhi = root.z_max;
+  }
+  std::size_t open_total = 0, tiles_total = 0;
+  std::set<int> levels_seen;
+  for (int c = 0; c < args.cameras; ++c) {
+    terrainlod::Camera cam;
+    cam.eye = {L.origin_x + u(rng) * wx, L.origin_y + u(rng) * wy, zhi + (0.02 + 0.3 * u(rng)) * std::max(wx, wy)};
+    cam.target = {L.origin_x + u(rng) * wx, L.origin_y + u(rng) * wy, zlo + u(rng) * (zhi - zlo)};
+    if (std::hypot(cam.target[0] - cam.eye[0], cam.target[1] - cam.eye[1]) < 1e-3 * std::max(wx, wy)) cam.target[0] += 0.1 * wx;
+    cam.fovy_deg = 30 + 60 * u(rng);
+    cam.width = 640, cam.height = 480;
+    cam.near = 1e-3 * std::max(wx, wy);
+    cam.tau_px = 0.25 * std::pow(256.0, u(rng));  // 0.25 .. 64 px: fine and coarse selections
+    const Extraction x = extract_view(pyr, cam);
+    std::vector<terrainlod::DrawnTriangle> tris;
+    for (const auto& [id, tri] : x.parts)
+      for (const auto& t : tri.triangles)
+        tris.push_back({{tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+                         tri.vertices[static_cast<std::size_t>(t[2])]},
+                        id});
+    open_total += terrainlod::count_open_edges(L, x.selection, tris);
+    tiles_total += x.selection.tiles.size();
+    for (const auto& s : x.selection.tiles) levels_seen.insert(s.id.level);
+  }
+  j["cameras"] = args.cameras;
+  j["camera_tiles"] = tiles_total;
+  j["camera_levels_seen"] = levels_seen.size();
+  j["open_edges"] = open_total;
+  ok = ok && open_total == 0;
+  j["ok"] = ok;
+  const std::string text = j.dump(2) + "\n";
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  return ok ? 0 : 1;
+}
+
+}  // namespace fest::terrainlod_tool
