@@ -33,6 +33,7 @@ BUILD_PKGS=(
   clang libclang-rt-14-dev   # libFuzzer and sanitizer runtimes for the fuzz targets
   make                  # examples/Makefile and Makefile.inc
   libode-dev            # ODE 0.16.2  pkg-config ode (lmfsim benchmark anchor only)
+  libssl-dev            # OpenSSL 3.0 find_package(OpenSSL) -> OpenSSL::Crypto (SHA-256 of capture files)
 )
 TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware

@@ -138,3 +138,104 @@ std::string encode_exr(const cv::Mat& pixels, bool half) {
 }
 
 }  // namespace fest::formats::image_detail
+
+// ---- EXR with extra channels and attributes (exr_extras.hpp) ----------------------
+
+#include <ImfChromaticitiesAttribute.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfFloatAttribute.h>
+#include <ImfFloatVectorAttribute.h>
+#include <ImfStandardAttributes.h>
+#include <ImfStringAttribute.h>
+
+#include "formats/image/exr_extras.hpp"
+
+namespace fest::formats {
+
+std::string write_exr_with_extras(const cv::Mat& rgb, const ExrExtras& extras, bool half) {
+  if (rgb.type() != CV_32FC3) throw bad_input("EXR writer: extras need a float RGB image");
+  std::vector<std::pair<std::string, cv::Mat>> planes;
+  {
+    std::vector<cv::Mat> split;
+    cv::split(rgb, split);
+    planes = {{"R", split[0]}, {"G", split[1]}, {"B", split[2]}};
+  }
+  for (const auto& [name, m] : extras.channels) {
+    if (m.type() != CV_32FC1 || m.size() != rgb.size())
+      throw bad_input("EXR writer: channel '{}' must be one float plane of the image's size", name);
+    planes.emplace_back(name, m.isContinuous() ? m : m.clone());
+  }
+  image_detail::MemoryOutput stream;
+  try {
+    Imf::Header header(rgb.cols, rgb.rows);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    if (extras.srgb_chromaticities) Imf::addChromaticities(header, Imf::Chromaticities());
+    for (const auto& [k, v] : extras.strings) header.insert(k, Imf::StringAttribute(v));
+    for (const auto& [k, v] : extras.doubles) header.insert(k, Imf::DoubleAttribute(v));
+    for (const auto& [k, v] : extras.float_vectors) header.insert(k, Imf::FloatVectorAttribute(v));
+    const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
+    for (const auto& p : planes) header.channels().insert(p.first, Imf::Channel(type));
+    std::vector<std::vector<Imath::half>> halves(planes.size());
+    Imf::FrameBuffer frame;
+    for (std::size_t c = 0; c < planes.size(); ++c) {
+      const float* from = planes[c].second.ptr<float>();
+      if (half) {
+        halves[c].assign(from, from + planes[c].second.total());
+        frame.insert(planes[c].first, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves[c].data()), sizeof(Imath::half),
+                                                 sizeof(Imath::half) * std::size_t(rgb.cols)));
+      } else {
+        frame.insert(planes[c].first, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(from)),
+                                                 sizeof(float), sizeof(float) * std::size_t(rgb.cols)));
+      }
+    }
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(frame);
+    file.writePixels(rgb.rows);
+  } catch (const std::exception& e) {
+    throw runtime_failure("EXR writer: {}", e.what());
+  }
+  return stream.take();
+}
+
+cv::Mat read_exr_channel(std::string_view bytes, const std::string& name) {
+  image_detail::read_exr_layout(bytes);  // the same sanity checks as read_image
+  try {
+    image_detail::MemoryInput stream(bytes);
+    Imf::InputFile file(stream);
+    if (!file.header().channels().findChannel(name)) throw bad_input("EXR data: no channel '{}'", name);
+    const Imath::Box2i window = file.header().dataWindow();
+    const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
+    cv::Mat out(height, width, CV_32FC1, cv::Scalar(0));
+    Imf::FrameBuffer frame;
+    frame.insert(name, Imf::Slice::Make(Imf::FLOAT, out.ptr<float>(), window, sizeof(float), sizeof(float) * std::size_t(width)));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    return out;
+  } catch (const fest::Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw bad_input("EXR data: {}", e.what());
+  }
+}
+
+ExrExtras read_exr_attributes(std::string_view bytes) {
+  image_detail::read_exr_layout(bytes);
+  ExrExtras out;
+  out.srgb_chromaticities = false;
+  try {
+    image_detail::MemoryInput stream(bytes);
+    Imf::InputFile file(stream);
+    for (auto it = file.header().begin(); it != file.header().end(); ++it) {
+      if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) out.strings[it.name()] = s->value();
+      else if (auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&it.attribute())) out.doubles[it.name()] = d->value();
+      else if (auto* f = dynamic_cast<const Imf::FloatAttribute*>(&it.attribute())) out.doubles[it.name()] = f->value();
+      else if (auto* v = dynamic_cast<const Imf::FloatVectorAttribute*>(&it.attribute())) out.float_vectors[it.name()] = v->value();
+      else if (std::string(it.name()) == "chromaticities") out.srgb_chromaticities = true;
+    }
+  } catch (const std::exception& e) {
+    throw bad_input("EXR data: {}", e.what());
+  }
+  return out;
+}
+
+}  // namespace fest::formats

@@ -216,7 +216,12 @@ int exr_lines_per_chunk(int compression) {
 
 // Images have R,G,B(,A) or Y(,A), in that order in memory; a file lists channels
 // alphabetically, so the order is rebuilt here.
-std::vector<ExrChannel> order_channels(const std::vector<ExrChannel>& found) {
+std::vector<ExrChannel> order_channels(const std::vector<ExrChannel>& all) {
+  // hdrmerge's per-pixel "valid" weight rides along with R,G,B; the image is the colour
+  // (read_exr_channel reads "valid" itself).
+  std::vector<ExrChannel> found;
+  for (const ExrChannel& c : all)
+    if (c.name != "valid" || all.size() == 1) found.push_back(c);
   auto has = [&](const char* n) {
     for (const ExrChannel& c : found)
       if (c.name == n) return true;

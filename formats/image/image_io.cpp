@@ -2,6 +2,8 @@
 // Every read parses and checks the header first, so no decoder sees an absurd one.
 #include "formats/image/image_io.hpp"
 
+#include <algorithm>
+
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
@@ -97,7 +99,9 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::png:
       if (!integer) refuse(m, format, "PNG holds 8 or 16-bit integers; convert explicitly");
       if (channels == 2) return encode_png_grey_alpha(m);
-      return encode_with_opencv(m, ".png", {cv::IMWRITE_PNG_COMPRESSION, 6});
+      return encode_with_opencv(m, ".png",
+                                {cv::IMWRITE_PNG_COMPRESSION, std::clamp(options.png_compression, 0, 9), cv::IMWRITE_PNG_STRATEGY,
+                                 options.png_huffman_only ? cv::IMWRITE_PNG_STRATEGY_HUFFMAN_ONLY : cv::IMWRITE_PNG_STRATEGY_DEFAULT});
     case Format::pgm:
     case Format::ppm: {
       const int wanted = format == Format::pgm ? 1 : 3;

@@ -15,8 +15,10 @@
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 #include "hdr/bracket.hpp"
+#include "hdr/contact_sheet.hpp"
 #include "hdr/merge.hpp"
 #include "hdr/robertson.hpp"
+#include "manifest_mode.hpp"
 #include "stack_files.hpp"
 
 namespace {
@@ -152,17 +154,49 @@ int run_bracket(const BracketArgs& a) {
   return 0;
 }
 
+struct SheetArgs {
+  std::vector<std::string> images;
+  std::string output;
+  int columns = 6;
+  int width = 160;
+};
+
+// A contact sheet of radiance images (e.g. a session's merged EXRs) as one PNG.
+int run_sheet(const SheetArgs& a) {
+  std::vector<cv::Mat> radiance;
+  for (const std::string& path : a.images) {
+    const Image image = formats::parse(formats::load_input(path), formats::read_image);
+    if (image.pixels.depth() != CV_32F) throw bad_input("not a radiance image (EXR or PFM) ({})", path);
+    cv::Mat m = image.pixels;
+    if (m.channels() == 4 || m.channels() == 2) {
+      std::vector<cv::Mat> planes;
+      cv::split(m, planes);
+      planes.pop_back();
+      cv::merge(planes, m);
+    }
+    radiance.push_back(m);
+  }
+  const cv::Mat sheet = hdr::contact_sheet(radiance, a.columns, a.width);
+  write_output(a.output, formats::write_image(Image{sheet, ColorSpace::srgb}, formats::Format::png));
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   // `hdrmerge IMG...` means `hdrmerge merge IMG...` (merge is the default subcommand).
   std::vector<char*> args(argv, argv + argc);
   static char merge_name[] = "merge";
+  static char session_name[] = "session";
   if (argc > 1) {
     const std::string first = argv[1];
-    const bool known = first == "merge" || first == "calibrate" || first == "bracket" || first == "--help" || first == "-h" ||
-                       first == "--version";
-    if (!known) args.insert(args.begin() + 1, merge_name);
+    const bool known = first == "merge" || first == "calibrate" || first == "bracket" || first == "session" || first == "sheet" ||
+                       first == "--help" || first == "-h" || first == "--version";
+    // `hdrmerge --manifest M` means `hdrmerge session --manifest M`.
+    bool manifest = false;
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]) == "--manifest" || std::string(argv[i]).rfind("--manifest=", 0) == 0) manifest = true;
+    if (!known) args.insert(args.begin() + 1, manifest ? session_name : merge_name);
   }
   CLI::App app{"Camera response recovery (Debevec & Malik 1997) and merging of an exposure series into\n"
                "a high-dynamic-range radiance image.",
@@ -203,12 +237,36 @@ int main(int argc, char** argv) {
   bracket_cmd->add_option("--seed", bracket.seed, "Noise seed (exposure k uses seed + k)");
   bracket_cmd->add_option("--response-out", bracket.response_out, "Also write the true response curve (CSV, g(128) = 0)");
 
+  ManifestArgs session;
+  auto* session_cmd = app.add_subcommand(
+      "session", "A capture session: merge every (angle, light) set, mask every silhouette, rig JSON on stdout "
+                 "(also: hdrmerge --manifest M)");
+  session_cmd->add_option("--manifest", session.manifest, "The session's manifest.json, - = standard input")->required();
+  session_cmd->add_option("-o,--output", session.output_dir, "Folder for the EXRs and masks (default SESSION/hdr)");
+  session_cmd->add_option("--response", session.response_in, "Use this response curve (CSV) instead of recovering one");
+  session_cmd->add_option("--method", session.method, "Response recovery: debevec or robertson")
+      ->check(CLI::IsMember({"debevec", "robertson"}));
+  session_cmd->add_option("--samples", session.samples, "Sample pixels per channel for response recovery")
+      ->check(CLI::Range(1, 100000));
+  session_cmd->add_option("--lambda", session.lambda, "Smoothness weight of the response")->check(CLI::NonNegativeNumber);
+  session_cmd->add_flag("--float", session.full_float, "EXR with 32-bit float channels instead of half");
+  cli::add_threads(*session_cmd, session.threads);
+
+  SheetArgs sheet;
+  auto* sheet_cmd = app.add_subcommand("sheet", "A contact sheet of radiance images: one exposure for all, sRGB, PNG");
+  sheet_cmd->add_option("images", sheet.images, "Radiance images (EXR, PFM)")->required();
+  sheet_cmd->add_option("-o,--output", sheet.output, "PNG file, - = standard output")->required();
+  sheet_cmd->add_option("--columns", sheet.columns, "Tiles per row")->check(CLI::Range(1, 1000));
+  sheet_cmd->add_option("--width", sheet.width, "Tile width in pixels")->check(CLI::Range(8, 10000));
+
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error.\n"
              "See hdrmerge(1).");
   const int n = static_cast<int>(args.size());
   return cli::run(app, n, args.data(), [&] {
     if (merge_cmd->parsed()) return run_merge(merge);
     if (bracket_cmd->parsed()) return run_bracket(bracket);
+    if (session_cmd->parsed()) return run_manifest(session);
+    if (sheet_cmd->parsed()) return run_sheet(sheet);
     return run_calibrate(calibrate, calibrate_output);
   });
 }

@@ -1,0 +1,66 @@
+#pragma once
+// The acquisition plan, plan.json (specs/capture.md §2.5), and its expansion into the
+// ordered list of shots the loop takes: mechanics outermost (angles), then the per-view
+// shots (silhouette, light calibration, dark), then for every light its exposure series.
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "capture/station.hpp"
+
+namespace fest::capture {
+
+struct ViewShots {
+  int count = 0;
+  double exposure_s = 0;  // 0: the plan's shortest exposure
+};
+
+struct Plan {
+  std::vector<double> angles_deg;
+  bool each_light = false;          // "lights": "each" -- every light whose role is "light"
+  std::vector<std::string> lights;  // when not each_light
+  std::vector<double> exposures_s;  // increasing
+  bool silhouette = false;
+  std::vector<std::string> silhouette_lights;  // lit for the silhouette shot
+  double silhouette_exposure_s = 0.01;
+  ViewShots lightcal, dark;
+};
+
+// Throws bad_input naming `where` and the JSON path. Refuses what is not supported yet
+// ("auto_bracket": true, "repeat" other than 1) with a message saying so.
+Plan parse_plan(const nlohmann::json& doc, const std::string& where);
+nlohmann::json plan_to_json(const Plan& plan);
+
+// `capture plan` flags: "24" (count) or "0,15,30"; "each" or "L0,L1"; "1/1000:1:12"
+// (base : stops : count) or a list "0.001,0.002". Throws usage_error.
+std::vector<double> angles_from_flag(const std::string& text);
+std::vector<double> exposures_from_flag(const std::string& text);
+double seconds_from_text(const std::string& text);  // "0.001", "1e-3", "1/1000"
+
+enum class ShotKind { hdr, silhouette, lightcal, dark };
+const char* shot_kind_name(ShotKind k);
+
+struct PlannedShot {
+  ShotKind kind = ShotKind::hdr;
+  int angle_index = 0;
+  double angle_cmd_deg = 0;
+  std::string light;                    // hdr and lightcal: the light that is on
+  std::vector<std::string> lights_on;   // every light on during the shot
+  int exposure_index = 0;               // hdr: k of e{k:02}; other kinds: their number
+  double exposure_s = 0;
+  std::string file;                     // relative to the session, extension included
+};
+
+// The shots in acquisition order. Checks the plan against the station (every light
+// named exists; silhouette lights are lit by the station; a light's on-time per series
+// stays under its max_on_s) and throws bad_input naming `where`. `extension` is ".png",
+// ".tiff" or ".jpg".
+std::vector<PlannedShot> expand_plan(const Plan& plan, const Station& station, const std::string& extension,
+                                     const std::string& where);
+
+// The lights an expanded plan switches for exposure series, in order.
+std::vector<std::string> plan_lights(const Plan& plan, const Station& station);
+
+}  // namespace fest::capture

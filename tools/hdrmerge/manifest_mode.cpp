@@ -1,0 +1,225 @@
+#include "manifest_mode.hpp"
+
+#include <atomic>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include <opencv2/imgproc.hpp>
+
+#include "capture/rig.hpp"
+#include "capture/silhouette.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/sha256.hpp"
+#include "core/threads.hpp"
+#include "formats/image/exr_extras.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
+#include "formats/table/table_io.hpp"
+#include "hdr/merge.hpp"
+#include "hdr/robertson.hpp"
+#include "stack_files.hpp"
+
+namespace fest::hdrmerge_tool {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Shot {
+  std::string file, sha256;
+  double exposure_s = 0;
+  int angle_index = 0;
+  double angle_deg = 0;
+};
+
+struct Set {
+  int angle_index = 0;
+  double angle_deg = 0;
+  std::string light;
+  std::vector<Shot> shots;
+};
+
+// A shot's picture, checked against its recorded hash, as 8-bit codes for the response
+// (16-bit values keep their top byte: round(Z / 257)).
+cv::Mat read_shot(const std::string& session, const Shot& s) {
+  const std::string path = (fs::path(session) / s.file).string();
+  const std::string bytes = read_input(path);
+  if (sha256_hex(bytes) != s.sha256) throw bad_input("file differs from the manifest's sha256 ({})", path);
+  Image image;
+  try {
+    image = formats::read_image(bytes, formats::detect_format(bytes, path));
+  } catch (const Error& e) {
+    throw Error(e.status(), with_location(e.what(), path));
+  }
+  cv::Mat m = image.pixels;
+  if (m.depth() == CV_16U) m.convertTo(m, CV_8U, 1.0 / 257.0);
+  if (m.depth() != CV_8U) throw bad_input("expected an 8 or 16-bit shot ({})", path);
+  return m;
+}
+
+Shot shot_at(const json& shots, const json& index, const std::string& where) {
+  if (!index.is_number_unsigned() || index.get<std::size_t>() >= shots.size())
+    throw bad_input("sets: shot index {} out of range ({})", index.dump(), where);
+  const json& j = shots[index.get<std::size_t>()];
+  Shot s;
+  try {
+    s.file = j.at("file").get<std::string>();
+    s.sha256 = j.at("sha256").get<std::string>();
+    s.exposure_s = j.at("exposure_s").get<double>();
+    s.angle_index = j.at("angle_index").get<int>();
+    s.angle_deg = j.at("angle_deg").get<double>();
+  } catch (const json::exception& e) {
+    throw bad_input("shots[{}]: {} ({})", index.get<std::size_t>(), e.what(), where);
+  }
+  if (s.file.empty() || s.file.front() == '/' || s.file.find("..") != std::string::npos)
+    throw bad_input("shots[{}].file must be a path inside the session ({})", index.get<std::size_t>(), where);
+  return s;
+}
+
+std::string relative_to(const std::string& path, const std::string& session) {
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
+  const fs::path base = fs::weakly_canonical(fs::absolute(session), ec);
+  const fs::path rel = p.lexically_relative(base);
+  if (rel.empty() || *rel.begin() == "..") return p.string();
+  return rel.string();
+}
+
+}  // namespace
+
+int run_manifest(const ManifestArgs& a) {
+  const std::string where = is_stdio(a.manifest) ? "<stdin>" : a.manifest;
+  const json manifest = formats::parse(formats::load_input(a.manifest), formats::read_json_document);
+  if (!manifest.is_object() || manifest.value("version", 0) != 1) throw bad_input("not a capture manifest, version 1 ({})", where);
+  const std::string status = manifest.value("status", "");
+  if (status != "complete")
+    throw bad_input("the session is not complete (status \"{}\"): finish it with capture run --resume ({})", status, where);
+  std::string session;
+  if (is_stdio(a.manifest)) session = manifest.value("session", "");
+  else session = fs::path(a.manifest).parent_path().string();
+  if (session.empty()) session = ".";
+  const std::string out_dir = a.output_dir.empty() ? (fs::path(session) / "hdr").string() : a.output_dir;
+
+  const json& shots = manifest.contains("shots") ? manifest["shots"] : json::array();
+  if (!shots.is_array() || !manifest.contains("sets") || !manifest["sets"].is_array())
+    throw bad_input("manifest needs arrays \"shots\" and \"sets\" ({})", where);
+  std::vector<Set> sets;
+  for (const json& js : manifest["sets"]) {
+    Set s;
+    if (!js.is_object() || !js.contains("shots") || !js["shots"].is_array() || !js.contains("light"))
+      throw bad_input("sets[{}] needs \"light\" and \"shots\" ({})", sets.size(), where);
+    s.light = js["light"].get<std::string>();
+    for (const json& i : js["shots"]) s.shots.push_back(shot_at(shots, i, where));
+    if (s.shots.size() < 2) throw bad_input("sets[{}] has {} exposure(s), at least 2 are needed ({})", sets.size(), s.shots.size(), where);
+    s.angle_index = s.shots.front().angle_index;
+    s.angle_deg = s.shots.front().angle_deg;
+    sets.push_back(std::move(s));
+  }
+  if (sets.empty()) throw bad_input("the manifest has no exposure set ({})", where);
+  // Silhouette shots, one per angle (the first one at that angle).
+  std::map<int, Shot> silhouettes;
+  for (std::size_t i = 0; i < shots.size(); ++i)
+    if (shots[i].value("kind", "") == "silhouette") {
+      const Shot s = shot_at(shots, json(i), where);
+      silhouettes.emplace(s.angle_index, s);
+    }
+
+  auto stack_of = [&](const Set& s) {
+    hdr::ExposureStack stack;
+    for (const Shot& shot : s.shots) {
+      stack.images.push_back(read_shot(session, shot));
+      stack.times.push_back(shot.exposure_s);
+    }
+    hdr::validate_stack(stack);
+    return stack;
+  };
+
+  // One camera, one response: recovered from the first set unless given.
+  hdr::Response response;
+  if (!a.response_in.empty()) {
+    response = response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
+  } else {
+    const hdr::ExposureStack first = stack_of(sets.front());
+    if (a.method == "robertson") response = hdr::recover_response_robertson(first);
+    else {
+      hdr::DebevecOptions o;
+      o.samples = a.samples;
+      o.lambda = a.lambda;
+      response = hdr::recover_response_debevec(first, o);
+    }
+  }
+  const std::string response_csv = formats::write_table(response_table(response), formats::Format::csv);
+  const std::string response_sha = sha256_hex(response_csv);
+
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw io_error("cannot create {}: {}", out_dir, ec.message());
+
+  // Sets (and masks) on worker threads, one set at a time each; the first error wins.
+  std::vector<capture::RigImage> rig(sets.size());
+  std::vector<int> mask_angles;
+  for (const auto& [angle, shot] : silhouettes) mask_angles.push_back(angle);
+  const std::size_t jobs = sets.size() + mask_angles.size();
+  std::atomic<std::size_t> next{0};
+  std::mutex error_mutex;
+  std::exception_ptr error;
+  auto work = [&] {
+    for (std::size_t j = next++; j < jobs; j = next++) {
+      try {
+        if (j < sets.size()) {
+          const Set& s = sets[j];
+          const hdr::MergeResult merged = hdr::merge_debevec(stack_of(s), response, 1);
+          cv::Mat rgb = merged.radiance;
+          if (rgb.channels() == 1) cv::cvtColor(rgb, rgb, cv::COLOR_GRAY2RGB);
+          formats::ExrExtras extras;
+          extras.channels = {{"valid", merged.valid}};
+          std::vector<float> exposures;
+          for (const Shot& shot : s.shots) exposures.push_back(float(shot.exposure_s));
+          extras.float_vectors["exposures"] = exposures;
+          extras.strings["responseSha256"] = response_sha;
+          extras.strings["lightId"] = s.light;
+          extras.doubles["turntableAngleDeg"] = s.angle_deg;
+          const std::string name = fmt::format("a{:03}_{}.exr", s.angle_index, s.light);
+          const std::string path = (fs::path(out_dir) / name).string();
+          write_output(path, formats::write_exr_with_extras(rgb, extras, !a.full_float));
+          rig[j] = {relative_to(path, session), "", s.angle_index, s.angle_deg, s.light};
+        } else {
+          const int angle = mask_angles[j - sets.size()];
+          const std::string path = (fs::path(out_dir) / fmt::format("a{:03}_mask.png", angle)).string();
+          const cv::Mat shot = read_shot(session, silhouettes.at(angle));
+          cv::Mat mask;
+          try {
+            mask = capture::silhouette_mask(shot);
+          } catch (const Error& e) {
+            throw Error(e.status(), with_location(e.what(), silhouettes.at(angle).file));
+          }
+          write_output(path, formats::write_image(Image{mask, ColorSpace::srgb}, formats::Format::png));
+        }
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = jobs;
+      }
+    }
+  };
+  const int threads = std::max(1, std::min<int>(resolve_threads(a.threads), int(jobs)));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+
+  for (capture::RigImage& r : rig)
+    if (silhouettes.count(r.angle_index))
+      r.mask = relative_to((fs::path(out_dir) / fmt::format("a{:03}_mask.png", r.angle_index)).string(), session);
+  const json doc = capture::build_rig(manifest, rig, session, where);
+  std::fputs(formats::write_json(doc).c_str(), stdout);
+  return 0;
+}
+
+}  // namespace fest::hdrmerge_tool
