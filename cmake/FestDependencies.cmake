@@ -32,3 +32,5 @@ pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 # terrainlod: DEMs through GDAL (GeoTIFF georeference, nodata, every raster GDAL reads).
 find_package(GDAL CONFIG REQUIRED)
+# brdffit: SHA-256 of the mesh a lumitexel file belongs to (OpenSSL libcrypto).
+find_package(OpenSSL 3 REQUIRED COMPONENTS Crypto)

@@ -126,6 +126,11 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
   LumitexelReport rep;
   if (views.size() > 65535) throw bad_input("{} images; the .ltx format indexes at most 65535", views.size());
   const double eps = o.depth_eps > 0 ? o.depth_eps : 0.002 * reflectance::bbox_diagonal(mesh);
+  int shadow_res = o.shadow_resolution;
+  if (shadow_res <= 0) {
+    for (const ImageView& v : views) shadow_res = std::max({shadow_res, 2 * v.camera.width, 2 * v.camera.height});
+    shadow_res = std::clamp(shadow_res, 512, 8192);
+  }
   auto t0 = std::chrono::steady_clock::now();
 
   // 1. Home images.
@@ -177,7 +182,7 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
     std::vector<float>& zbuf = depth[cam_of[k]];
     if (zbuf.empty()) zbuf = depth_only(mesh, view.camera, o.threads).depth;
     const reflectance::ShadowMap shadow =
-        reflectance::make_shadow_map(mesh, view.light.position, o.shadow_resolution, eps, o.threads);
+        reflectance::make_shadow_map(mesh, view.light.position, shadow_res, eps, o.threads);
     const Eigen::Vector3d eye = view.camera.centre();
     const int bands = reflectance::band_count(static_cast<int>(points.size()), o.threads);
     std::vector<std::vector<PendingSample>> band_out(static_cast<std::size_t>(bands));

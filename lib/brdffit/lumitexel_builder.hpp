@@ -46,7 +46,7 @@ struct LumitexelOptions {
   double min_cos = 0.05;
   double depth_eps = 0;      // world units; 0: 0.2 % of the bounding-box diagonal
   int min_samples = 2;
-  int shadow_resolution = 4096;
+  int shadow_resolution = 0;  // 0: twice the largest image side, within 512..8192
   int threads = 1;
 };
 
