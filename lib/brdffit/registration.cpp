@@ -127,7 +127,7 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
     Eigen::VectorXd s(7);
     s.head<3>().setConstant(o.rotation_step_deg * M_PI / 180 * shrink);
     s.segment<3>(3).setConstant(o.translation_step * distance * shrink);
-    s[6] = o.focal_step * shrink;
+    s[6] = o.fix_focal ? 0.0 : o.focal_step * shrink;  // a zero step keeps f where it is
     return s;
   };
 
@@ -161,8 +161,15 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
       const double shrink = pyr.scales[level] < 1 ? 1.0 / (1 << (pyr.masks.size() - 1 - level)) * 2 : 0.25;
       const double d = distance_of(camera_from_parameters(initial, cand.x), mesh);
       SimplexResult r = nelder_mead(cost_at(level), cand.x, steps(d, std::max(shrink, 0.05)), o.iters_per_level);
-      // A second restart at the finest level escapes the simplex's early collapse.
-      if (level + 1 == pyr.masks.size()) r = nelder_mead(cost_at(level), r.x, steps(d, 0.05), o.iters_per_level);
+      // The XOR cost is piecewise constant: the simplex collapses early. Restarts at the
+      // finest level with fresh, smaller simplices go on while they gain.
+      if (level + 1 == pyr.masks.size())
+        for (int k = 0; k < o.restarts; ++k) {
+          const SimplexResult again = nelder_mead(cost_at(level), r.x, steps(d, 0.1 / (k + 1)), o.iters_per_level);
+          const bool gained = again.value < r.value;
+          if (again.value <= r.value) r = again;
+          if (!gained && k > 0) break;
+        }
       cand.x = r.x;
       cand.cost = r.value;
     }
@@ -233,7 +240,7 @@ TurntableFit register_turntable(const TriangleMesh& mesh, const std::vector<cv::
     Eigen::VectorXd s(11);
     s.head<3>().setConstant(o.rotation_step_deg * M_PI / 180 * shrink);
     s.segment<3>(3).setConstant(o.translation_step * dist * shrink);
-    s[6] = o.focal_step * shrink;
+    s[6] = o.fix_focal ? 0.0 : o.focal_step * shrink;
     s.segment<2>(7).setConstant(o.rotation_step_deg * M_PI / 180 * shrink);
     s.segment<2>(9).setConstant(o.translation_step * radius * shrink);
     SimplexResult r = nelder_mead(cost_at(level), x, s, o.iters_per_level);

@@ -43,6 +43,8 @@ struct RegistrationOptions {
   double rotation_step_deg = 5;
   double translation_step = 0.05;  // fraction of the camera distance
   double focal_step = 0.05;        // in log f
+  bool fix_focal = false;          // f known from calibration: optimise the 6 pose parameters
+  int restarts = 4;                // extra simplex restarts at full resolution while they gain
   std::uint64_t seed = 1;
   int threads = 1;
 };
