@@ -437,6 +437,41 @@ void run_eval(const EvalArgs& a) {
   write_output(a.out, formats::write_json(j));
 }
 
+// ------------------------------------------------------------------------------ info
+
+struct InfoArgs {
+  std::string in = "-", mesh;
+};
+
+void run_info(const InfoArgs& a) {
+  const std::string bytes = read_input(a.in);
+  nlohmann::json header;
+  brdffit::LumitexelSet set;
+  try {
+    set = brdffit::decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), &header);
+  } catch (const Error& e) {
+    throw Error(e.status(), with_location(e.what(), a.in));
+  }
+  if (!a.mesh.empty()) {
+    const LoadedMesh lm = load_mesh(a.mesh);
+    if (lm.sha256 != set.mesh_sha256)
+      throw bad_input("the mesh does not match the lumitexel file: SHA-256 {} vs {} ({}, {})", lm.sha256.substr(0, 16),
+                      set.mesh_sha256.substr(0, 16), a.mesh, a.in);
+  }
+  std::size_t max_count = 0;
+  for (const auto& l : set.lumitexels) max_count = std::max<std::size_t>(max_count, l.count);
+  nlohmann::json j{{"lumitexels", set.lumitexels.size()},
+                   {"samples", set.samples.size()},
+                   {"mean_samples", set.lumitexels.empty() ? 0.0
+                                                           : static_cast<double>(set.samples.size()) /
+                                                                 static_cast<double>(set.lumitexels.size())},
+                   {"max_samples", max_count},
+                   {"images", set.images.size()},
+                   {"mesh_sha256", set.mesh_sha256},
+                   {"mesh_matches", a.mesh.empty() ? nlohmann::json(nullptr) : nlohmann::json(true)}};
+  write_output("-", formats::write_json(j));
+}
+
 }  // namespace
 
 void add_geometry_commands(CLI::App& app) {
@@ -495,6 +530,7 @@ void add_geometry_commands(CLI::App& app) {
   r->add_option("--rig", reg.rig, "Turntable mode: fit one camera and the table axis to all masks of the rig");
   r->add_option("--root", reg.root, "Folder the rig's paths are relative to (default: the rig's folder)");
   r->add_flag("--auto", reg.o.automatic, "Ignore the initial pose: search orientations on SO(3)");
+  r->add_flag("--fix-focal", reg.o.fix_focal, "Keep the camera's focal length (calibrated): fit the pose only");
   r->add_option("--orient-samples", reg.o.orient_samples, "Orientations tried by --auto")->check(CLI::Range(1, 100000));
   r->add_option("--coarse-iters", reg.o.coarse_iters, "Simplex steps per orientation at 1/8 resolution")
       ->check(CLI::Range(1, 10000));
@@ -535,6 +571,12 @@ void add_geometry_commands(CLI::App& app) {
   e->add_option("--error", ev.error, "Also write |photo - render| (EXR)");
   e->add_option("-o,--output", ev.out, "Metrics JSON, - = standard output");
   e->callback([] { run_eval(ev); });
+
+  static InfoArgs info;
+  auto* i = app.add_subcommand("info", "Describe a .ltx file as JSON; with --mesh, check that it belongs to that mesh");
+  i->add_option("input", info.in, "Lumitexel file, - = standard input");
+  i->add_option("--mesh", info.mesh, "Fail (exit 3) unless the file's mesh SHA-256 is this mesh's");
+  i->callback([] { run_info(info); });
 }
 
 }  // namespace fest::brdffit_tool
