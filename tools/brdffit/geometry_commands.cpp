@@ -492,6 +492,8 @@ void add_geometry_commands(CLI::App& app) {
       ->check(CLI::Range(-89.0, 89.0));
   s->add_option("--distance", synth.setup.distance, "Camera distance in bounding-sphere radii")
       ->check(CLI::Range(1.1, 1000.0));
+  s->add_option("--fill", synth.setup.fill, "Fraction of the shorter image side the bounding sphere spans")
+      ->check(CLI::Range(0.01, 1.0));
   s->add_option("--noise", synth.noise, "Multiplicative Gaussian noise, relative standard deviation")
       ->check(CLI::Range(0.0, 1.0));
   s->add_option("--seed", synth.seed, "Seed of every random choice (patches, noise, normal perturbation)");
