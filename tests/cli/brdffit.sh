@@ -80,6 +80,15 @@ expect_status 0
 check "frame mesh" test "$(jq -r .frame "$WORK/syn/rig_back.json")" = mesh
 check "XOR below 1 %" le "$(jq .xor "$WORK/reg.json")" 0.01
 
+case_ "export: glTF 2.0, one primitive per material, every triangle once"
+run brdffit export --mesh "$WORK/syn/mesh.ply" --materials "$WORK/syn/truth.json" --gltf "$WORK/syn.gltf"
+expect_status 0
+check "asset version 2.0" test "$(jq -r .asset.version "$WORK/syn.gltf")" = 2.0
+check "3 materials" test "$(jq '.materials | length' "$WORK/syn.gltf")" = 3
+check "indices cover 1280 triangles" test "$(jq '[.accessors[2:][].count] | add' "$WORK/syn.gltf")" = 3840
+check "roughness of the red plastic (N = 60) is sqrt(2/62)" \
+  awk -v r="$(jq '.materials[0].pbrMetallicRoughness.roughnessFactor' "$WORK/syn.gltf")" 'BEGIN { d = r - sqrt(2/62); exit !(d < 1e-9 && d > -1e-9) }'
+
 # ------------------------------------------------------------------------- bad input
 case_ "info: the .ltx belongs to its mesh, not to another"
 "$FEST_BIN/brdffit" synth --sphere 2 --materials 1 --views 2 --width 64 --height 48 -o "$WORK/tiny" 2>/dev/null

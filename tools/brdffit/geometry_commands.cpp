@@ -31,6 +31,7 @@
 #include "formats/table/table_io.hpp"
 #include "reflectance/environment.hpp"
 #include "reflectance/render.hpp"
+#include "gltf_export.hpp"
 #include "scene_io.hpp"
 
 namespace fest::brdffit_tool {
@@ -437,6 +438,18 @@ void run_eval(const EvalArgs& a) {
   write_output(a.out, formats::write_json(j));
 }
 
+// ---------------------------------------------------------------------------- export
+
+struct ExportArgs {
+  std::string mesh, materials, out;
+};
+
+void run_export(const ExportArgs& a) {
+  const LoadedMesh lm = load_mesh(a.mesh);
+  const reflectance::SurfaceMaterials mats = materials_from_json(load_json(a.materials), lm.mesh, a.materials);
+  write_output(a.out, encode_gltf(lm.mesh, mats));
+}
+
 // ------------------------------------------------------------------------------ info
 
 struct InfoArgs {
@@ -573,6 +586,13 @@ void add_geometry_commands(CLI::App& app) {
   e->add_option("--error", ev.error, "Also write |photo - render| (EXR)");
   e->add_option("-o,--output", ev.out, "Metrics JSON, - = standard output");
   e->callback([] { run_eval(ev); });
+
+  static ExportArgs ex;
+  auto* x = app.add_subcommand("export", "glTF 2.0 with a metallic-roughness approximation of the materials");
+  x->add_option("--mesh", ex.mesh, "The mesh")->required();
+  x->add_option("--materials", ex.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)")->required();
+  x->add_option("--gltf", ex.out, "Output .gltf (self-contained), - = standard output")->required();
+  x->callback([] { run_export(ex); });
 
   static InfoArgs info;
   auto* i = app.add_subcommand("info", "Describe a .ltx file as JSON; with --mesh, check that it belongs to that mesh");
