@@ -95,12 +95,12 @@ struct PendingSample {
 
 }  // namespace
 
-HomeAssignment assign_home_images(const TriangleMesh& mesh, const std::vector<ImageView>& views, double, int threads) {
+HomeAssignment assign_home_images(const TriangleMesh& mesh, const std::vector<ImageView>& views, int threads) {
   HomeAssignment home;
   home.image.assign(mesh.triangles.size(), -1);
   home.pixels.assign(mesh.triangles.size(), 0);
   std::vector<std::size_t> first_image;
-  const std::vector<std::size_t> cam_of = distinct_cameras(views, first_image);
+  distinct_cameras(views, first_image);
   for (std::size_t c = 0; c < first_image.size(); ++c) {
     const PinholeCamera& cam = views[first_image[c]].camera;
     const Fragments f = depth_only(mesh, cam, threads);
@@ -117,7 +117,6 @@ HomeAssignment assign_home_images(const TriangleMesh& mesh, const std::vector<Im
       }
     }
   }
-  (void)cam_of;
   return home;
 }
 
@@ -128,13 +127,13 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
   const double eps = o.depth_eps > 0 ? o.depth_eps : 0.002 * reflectance::bbox_diagonal(mesh);
   int shadow_res = o.shadow_resolution;
   if (shadow_res <= 0) {
-    for (const ImageView& v : views) shadow_res = std::max({shadow_res, 2 * v.camera.width, 2 * v.camera.height});
+    for (const ImageView& v : views) shadow_res = std::max({shadow_res, v.camera.width, v.camera.height});
     shadow_res = std::clamp(shadow_res, 512, 8192);
   }
   auto t0 = std::chrono::steady_clock::now();
 
   // 1. Home images.
-  const HomeAssignment home = assign_home_images(mesh, views, eps, o.threads);
+  const HomeAssignment home = assign_home_images(mesh, views, o.threads);
   for (std::int32_t h : home.image) rep.triangles_with_home += h >= 0;
   rep.seconds.push_back(seconds_since(t0));
   t0 = std::chrono::steady_clock::now();

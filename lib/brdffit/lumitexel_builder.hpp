@@ -46,7 +46,7 @@ struct LumitexelOptions {
   double min_cos = 0.05;
   double depth_eps = 0;      // world units; 0: 0.2 % of the bounding-box diagonal
   int min_samples = 2;
-  int shadow_resolution = 0;  // 0: twice the largest image side, within 512..8192
+  int shadow_resolution = 0;  // 0: the largest image side, within 512..8192
   int threads = 1;
 };
 
@@ -72,12 +72,13 @@ LumitexelSet build_lumitexels(const reflectance::TriangleMesh& mesh, const std::
                               const ImageLoader& load, const LumitexelOptions& options, LumitexelReport* report);
 
 // Step 1 alone: the home image of every triangle (-1 when it has none) and the number of
-// pixels it covers there.
+// pixels it covers there. A rasterized pixel of a triangle "passes the depth test" when
+// the triangle is the visible surface at that pixel centre.
 struct HomeAssignment {
   std::vector<std::int32_t> image;
   std::vector<std::uint32_t> pixels;
 };
 HomeAssignment assign_home_images(const reflectance::TriangleMesh& mesh, const std::vector<ImageView>& views,
-                                  double depth_eps, int threads);
+                                  int threads);
 
 }  // namespace fest::brdffit

@@ -122,7 +122,6 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
       return silhouette_xor(mesh, camera_from_parameters(initial, x), pyr, level, o.threads);
     };
   };
-  const double d0_init = distance_of(initial, mesh);
   auto steps = [&](double distance, double shrink) {
     Eigen::VectorXd s(7);
     s.head<3>().setConstant(o.rotation_step_deg * M_PI / 180 * shrink);
@@ -178,7 +177,6 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
                                      [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
   res.camera = camera_from_parameters(initial, best->x);
   res.xor_cost = best->cost;
-  (void)d0_init;
   return res;
 }
 

@@ -531,7 +531,7 @@ void add_geometry_commands(CLI::App& app) {
   l->add_option("--min-cos", ltx.o.min_cos, "Smallest cosine of light and view to the normal")->check(CLI::Range(0.0, 1.0));
   l->add_option("--depth-eps", ltx.depth_eps_rel, "Depth and shadow tolerance, fraction of the bbox diagonal")
       ->check(CLI::Range(0.0, 1.0));
-  l->add_option("--shadow-res", ltx.o.shadow_resolution, "Shadow map size (0: twice the largest image side)")
+  l->add_option("--shadow-res", ltx.o.shadow_resolution, "Shadow map size (0: the largest image side, 512..8192)")
       ->check(CLI::Range(0, 16384));
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
   cli::add_threads(*l, ltx.threads);
