@@ -56,15 +56,16 @@ if [ -f "$testdata/meshes/bunny_scan.ply" ]; then
   stage register 10 "part of the 5 h" "bunny, 3040x2008, start 10 deg / 10 % off, --fix-focal" -- \
     "$bin/brdffit" register --mesh "$testdata/meshes/bunny_scan.ply" --mask "$work/bunny/hdr/a000_mask.png" \
     --camera "$work/bunny_start.json" --fix-focal --threads "$threads" --report "$work/register.json" -o "$work/bunny_fit.json"
-  jq -c --slurpfile t "$work/bunny_cam.json" '{stage: "register_error", xor: input.xor, evaluations: input.evaluations,
+  jq -c --slurpfile t "$work/bunny_cam.json" --slurpfile r "$work/register.json" '{stage: "register_error", xor: $r[0].xor, evaluations: $r[0].evaluations,
       t_error_rel: ((([.t, $t[0].t] | transpose | map((.[0]-.[1])*(.[0]-.[1])) | add) | sqrt) / (($t[0].t | map(.*.) | add) | sqrt)),
-      R_max_abs_diff: ([.R, $t[0].R] | transpose | map((.[0]-.[1]) | fabs) | max)}' "$work/bunny_fit.json" "$work/register.json"
+      R_max_abs_diff: ([.R, $t[0].R] | transpose | map((.[0]-.[1]) | fabs) | max)}' "$work/bunny_fit.json"
   stage register_auto 10 "part of the 5 h" "bunny, 3040x2008, automatic initial guess (240 orientations), --fix-focal" -- \
     "$bin/brdffit" register --mesh "$testdata/meshes/bunny_scan.ply" --mask "$work/bunny/hdr/a000_mask.png" \
     --camera "$work/bunny_start.json" --auto --fix-focal --threads "$threads" --report "$work/register_auto.json" \
     -o "$work/bunny_auto.json" || true
-  jq -c --slurpfile t "$work/bunny_cam.json" '{stage: "register_auto_error", xor: input.xor,
-      R_max_abs_diff: ([.R, $t[0].R] | transpose | map((.[0]-.[1]) | fabs) | max)}' "$work/bunny_auto.json" "$work/register_auto.json" 2>/dev/null || true
+  jq -c --slurpfile t "$work/bunny_cam.json" --slurpfile r "$work/register_auto.json" '{stage: "register_auto_error",
+      xor: $r[0].xor, R_max_abs_diff: ([.R, $t[0].R] | transpose | map((.[0]-.[1]) | fabs) | max)}' "$work/bunny_auto.json" \
+      2>/dev/null || true
 else
   jq -cn '{stage: "register", skipped: "bunny_scan.ply not fetched (scripts/fetch-test-data.sh)"}'
 fi
