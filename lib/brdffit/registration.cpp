@@ -5,6 +5,7 @@
 #include <random>
 
 #include <Eigen/Geometry>
+#include <Eigen/QR>
 #include <opencv2/imgproc.hpp>
 
 #include "brdffit/nelder_mead.hpp"
@@ -178,6 +179,35 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
   res.camera = camera_from_parameters(initial, best->x);
   res.xor_cost = best->cost;
   return res;
+}
+
+void estimate_turntable_axis(const std::vector<PinholeCamera>& cams, const std::vector<double>& angle_deg,
+                             Eigen::Vector3d& direction, Eigen::Vector3d& point) {
+  direction = Eigen::Vector3d::UnitZ();
+  point.setZero();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t k = 1; k < cams.size(); ++k) {
+    const double dtheta = angle_deg[k] - angle_deg[0];
+    const Eigen::AngleAxisd rel(cams[0].R.transpose() * cams[k].R);
+    if (std::abs(std::sin(dtheta * M_PI / 180)) < 1e-3 || rel.angle() < 1e-6) continue;
+    // The relative rotation turns by dtheta about the axis: orient the axis accordingly.
+    const double s = std::sin(rel.angle()) * std::sin(dtheta * M_PI / 180) >= 0 ? 1.0 : -1.0;
+    sum += s * rel.axis() * std::abs(std::sin(rel.angle()));
+  }
+  if (sum.norm() < 1e-9) return;
+  direction = sum.normalized();
+  // Least squares for a, with a . d = 0 pinning the free position along the axis.
+  Eigen::MatrixXd A(3 * static_cast<Eigen::Index>(cams.size()) + 1, 3);
+  Eigen::VectorXd b(A.rows());
+  A.setZero();
+  b.setZero();
+  for (std::size_t k = 1; k < cams.size(); ++k) {
+    const Eigen::Matrix3d Rk = Eigen::AngleAxisd((angle_deg[k] - angle_deg[0]) * M_PI / 180, direction).toRotationMatrix();
+    A.block<3, 3>(3 * static_cast<Eigen::Index>(k), 0) = Eigen::Matrix3d::Identity() - Rk;
+    b.segment<3>(3 * static_cast<Eigen::Index>(k)) = cams[0].R.transpose() * (cams[k].t - cams[0].t);
+  }
+  A.row(A.rows() - 1) = direction.transpose();
+  point = A.colPivHouseholderQr().solve(b);
 }
 
 TurntableFit register_turntable(const TriangleMesh& mesh, const std::vector<cv::Mat>& masks,

@@ -76,6 +76,15 @@ TurntableFit register_turntable(const reflectance::TriangleMesh& mesh, const std
                                 const Eigen::Vector3d& axis_direction, const Eigen::Vector3d& axis_point,
                                 const RegistrationOptions& options);
 
+// The turntable axis the cameras of a rig imply: image k's camera is R0 R_axis(dtheta_k),
+// t0 + R0 (I - R_axis(dtheta_k)) a relative to image 0, so the axis direction is the
+// rotation axis of R0^T R_k and the point a (the one closest to the origin) solves the
+// stacked linear equations R0^T (t_k - t0) = (I - R_axis(dtheta_k)) a. Images at the
+// angle of image 0 carry no information; with none at another angle, z through the
+// origin is returned (hdrmerge's turntable frame).
+void estimate_turntable_axis(const std::vector<reflectance::PinholeCamera>& cameras, const std::vector<double>& angle_deg,
+                             Eigen::Vector3d& direction, Eigen::Vector3d& point);
+
 // Uniformly distributed rotations (Shoemake's subgroup algorithm) from a seeded generator.
 std::vector<Eigen::Matrix3d> random_rotations(int count, std::uint64_t seed);
 

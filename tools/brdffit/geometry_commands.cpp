@@ -304,9 +304,11 @@ void run_register(RegisterArgs a) {
       angles.push_back(ri.angle_deg);
       cams.push_back(ri.view.camera);
     }
-    // The rig's poses put the object in the turntable frame: axis z through the origin.
-    const brdffit::TurntableFit fit = brdffit::register_turntable(lm.mesh, masks, angles, cams, Eigen::Vector3d::UnitZ(),
-                                                                  Eigen::Vector3d::Zero(), a.o);
+    // The initial axis is the one the rig's cameras imply (z through the origin for
+    // hdrmerge's turntable frame); the mesh starts where the rig's frame puts it.
+    Eigen::Vector3d axis_dir, axis_point;
+    brdffit::estimate_turntable_axis(cams, angles, axis_dir, axis_point);
+    const brdffit::TurntableFit fit = brdffit::register_turntable(lm.mesh, masks, angles, cams, axis_dir, axis_point, a.o);
     if (!(fit.xor_cost <= a.max_xor))
       throw runtime_failure("registration did not converge: XOR {:.4f} > --max-xor {} ({})", fit.xor_cost, a.max_xor,
                             a.rig);
