@@ -551,6 +551,7 @@ void add_geometry_commands(CLI::App& app) {
   r->add_option("--orient-samples", reg.o.orient_samples, "Orientations tried by --auto")->check(CLI::Range(1, 100000));
   r->add_option("--coarse-iters", reg.o.coarse_iters, "Simplex steps per orientation at 1/8 resolution")
       ->check(CLI::Range(1, 10000));
+  r->add_option("--keep", reg.o.keep, "Best orientations of --auto refined at every level")->check(CLI::Range(1, 1000));
   r->add_option("--iters", reg.o.iters_per_level, "Simplex steps per pyramid level")->check(CLI::Range(1, 100000));
   r->add_option("--max-xor", reg.max_xor, "Fail (exit 1) above this XOR fraction")->check(CLI::Range(0.0, 10.0));
   r->add_option("--seed", reg.o.seed, "Seed of the orientation samples");
