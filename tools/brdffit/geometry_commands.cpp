@@ -367,6 +367,7 @@ struct RenderArgs {
 };
 
 void run_render(const RenderArgs& a) {
+  if (is_stdio(a.out) && isatty(1)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
   const LoadedMesh lm = load_mesh(a.mesh);
   const reflectance::SurfaceMaterials mats = materials_from_json(load_json(a.materials), lm.mesh, a.materials);
   brdffit::ImageView view;
@@ -405,7 +406,6 @@ void run_render(const RenderArgs& a) {
   if (!a.mask_out.empty()) mask = encode_png(r.mask);
   if (!a.png.empty()) write_output(a.png, png);
   if (!a.mask_out.empty()) write_output(a.mask_out, mask);
-  if (is_stdio(a.out) && isatty(1)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
   write_output(a.out, exr);
 }
 
