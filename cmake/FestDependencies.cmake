@@ -32,7 +32,8 @@ pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 # terrainlod: DEMs through GDAL (GeoTIFF georeference, nodata, every raster GDAL reads).
 find_package(GDAL CONFIG REQUIRED)
-# SHA-256 checksums of capture sessions (libssl-dev: OpenSSL's libcrypto).
+# SHA-256 checksums of capture sessions and of the mesh a lumitexel file belongs to
+# (libssl-dev: OpenSSL's libcrypto).
 find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 # V4L2 cameras of capture (devices/v4l2_camera): OpenCV's VideoCapture with CAP_V4L2.
 find_package(OpenCV 4 REQUIRED COMPONENTS videoio)

@@ -29,6 +29,7 @@ BUILD_PKGS=(
   libfftw3-dev          # FFTW 3.3.10  pkg-config fftw3 / fftw3f
   zlib1g-dev            # .nii.gz, .nrrd gzip encoding
   libminizip-dev        # minizip 1.1  pkg-config minizip (facefit: .npz model import)
+  libssl-dev            # OpenSSL 3.0  find_package(OpenSSL) -> OpenSSL::Crypto (brdffit: SHA-256 of meshes in .ltx)
   ccache                # faster rebuilds on 2 cores
   clang libclang-rt-14-dev   # libFuzzer and sanitizer runtimes for the fuzz targets
   make                  # examples/Makefile and Makefile.inc

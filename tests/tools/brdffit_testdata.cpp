@@ -11,12 +11,13 @@
 // The .ltx is written by the stand-in codec of tools/brdffit until the geometry side's
 // ltx_format is merged.
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
-#include "../../tools/brdffit/ltx_stand_in.hpp"
+#include "brdffit/ltx_format.hpp"
 #include "brdffit/merl.hpp"
 #include "brdffit_test_data.hpp"
 #include "formats/brdf/merl_io.hpp"
@@ -71,7 +72,12 @@ int main(int argc, char** argv) {
     }
     std::fclose(t);
     set.mesh_sha256 = "0000test";
-    std::cout << brdffit_tool::write_ltx_stand_in(set);
+    // The .ltx names the images its samples come from; these sets have no real photographs.
+    std::uint16_t images = 0;
+    for (const auto& smp : set.samples) images = std::max<std::uint16_t>(images, static_cast<std::uint16_t>(smp.image + 1));
+    for (std::uint16_t i = 0; i < images; ++i) set.images.push_back("synthetic_" + std::to_string(i));
+    const std::vector<std::uint8_t> ltx = fest::brdffit::encode_ltx(set, nlohmann::json::object());
+    std::cout.write(reinterpret_cast<const char*>(ltx.data()), static_cast<std::streamsize>(ltx.size()));
     return 0;
   }
   if (what == "samples" && argc == 6) {

@@ -15,6 +15,7 @@
 #include "brdffit/cluster.hpp"
 #include "brdffit/lafortune_fit.hpp"
 #include "brdffit/ltw_format.hpp"
+#include "brdffit/ltx_format.hpp"
 #include "brdffit/merl.hpp"
 #include "brdffit/normals.hpp"
 #include "brdffit/project.hpp"
@@ -23,7 +24,6 @@
 #include "core/threads.hpp"
 #include "formats/brdf/merl_io.hpp"
 #include "formats/table/table_io.hpp"
-#include "ltx_stand_in.hpp"
 
 namespace brdffit_tool {
 
@@ -122,7 +122,7 @@ void refuse_binary_terminal(const std::string& output) {
 LumitexelSet load_lumitexels(const std::string& path, nlohmann::json* header) {
   const std::string bytes = read_input(path);
   try {
-    return read_ltx_stand_in(bytes, header);
+    return decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), header);
   } catch (const Error& e) {
     if (e.status() != Status::bad_input) throw;
     throw Error(e.status(), with_location(e.what(), is_stdio(path) ? "standard input" : path));

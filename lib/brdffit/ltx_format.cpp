@@ -1,0 +1,187 @@
+#include "brdffit/ltx_format.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace fest::brdffit {
+namespace {
+
+// Little-endian packing independent of the host's byte order and struct padding.
+class Writer {
+ public:
+  explicit Writer(std::vector<std::uint8_t>& out) : out_(out) {}
+  void u16(std::uint16_t v) { le(v, 2); }
+  void u32(std::uint32_t v) { le(v, 4); }
+  void u64(std::uint64_t v) { le(v, 8); }
+  void f32(float v) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    le(bits, 4);
+  }
+  void vec3(const Eigen::Vector3f& v) {
+    for (int k = 0; k < 3; ++k) f32(v[k]);
+  }
+
+ private:
+  void le(std::uint64_t v, int n) {
+    for (int k = 0; k < n; ++k) out_.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
+  }
+  std::vector<std::uint8_t>& out_;
+};
+
+class Reader {
+ public:
+  Reader(const std::vector<std::uint8_t>& in, std::size_t pos) : in_(in), pos_(pos) {}
+  std::size_t pos() const { return pos_; }
+  std::uint16_t u16() { return static_cast<std::uint16_t>(le(2)); }
+  std::uint32_t u32() { return static_cast<std::uint32_t>(le(4)); }
+  std::uint64_t u64() { return le(8); }
+  float f32() {
+    const auto bits = static_cast<std::uint32_t>(le(4));
+    float v;
+    std::memcpy(&v, &bits, 4);
+    return v;
+  }
+  Eigen::Vector3f vec3() {
+    Eigen::Vector3f v;
+    for (int k = 0; k < 3; ++k) v[k] = f32();
+    return v;
+  }
+
+ private:
+  std::uint64_t le(int n) {
+    std::uint64_t v = 0;
+    for (int k = 0; k < n; ++k) v |= static_cast<std::uint64_t>(in_[pos_ + static_cast<std::size_t>(k)]) << (8 * k);
+    pos_ += static_cast<std::size_t>(n);
+    return v;
+  }
+  const std::vector<std::uint8_t>& in_;
+  std::size_t pos_;
+};
+
+nlohmann::json layouts() {
+  return {{"lumitexel_layout",
+           {"p:3xf32", "n:3xf32", "triangle:u32", "home_image:u16", "home_pixel:2xf32", "first_sample:u64",
+            "count:u16"}},
+          {"sample_layout", {"image:u16", "u_world:3xf32", "v_world:3xf32", "r:3xf32", "weight:f32"}}};
+}
+
+void check_records(const LumitexelSet& set) {
+  for (std::size_t i = 0; i < set.lumitexels.size(); ++i) {
+    const Lumitexel& l = set.lumitexels[i];
+    if (l.first_sample > set.samples.size() || l.count > set.samples.size() - l.first_sample)
+      throw bad_input("lumitexel {}: samples [{}, {}) outside the {} samples", i, l.first_sample,
+                      l.first_sample + l.count, set.samples.size());
+    if (!set.images.empty() && l.home_image >= set.images.size())
+      throw bad_input("lumitexel {}: home image {} but {} images", i, l.home_image, set.images.size());
+  }
+  for (std::size_t s = 0; s < set.samples.size(); ++s)
+    if (set.samples[s].image >= set.images.size())
+      throw bad_input("sample {}: image {} but {} images", s, set.samples[s].image, set.images.size());
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_ltx(const LumitexelSet& set, const nlohmann::json& header) {
+  check_records(set);
+  nlohmann::json h = header.is_object() ? header : nlohmann::json::object();
+  h["format"] = "ltx";
+  h["version"] = 1;
+  h["mesh_sha256"] = set.mesh_sha256;
+  h["images"] = set.images;
+  h["lumitexels"] = set.lumitexels.size();
+  h["samples"] = set.samples.size();
+  h.update(layouts());
+  const std::string text = h.dump();
+  std::vector<std::uint8_t> out;
+  out.reserve(12 + text.size() + set.lumitexels.size() * ltx_lumitexel_bytes + set.samples.size() * ltx_sample_bytes);
+  for (int k = 0; k < 8; ++k) out.push_back(static_cast<std::uint8_t>(ltx_magic[k]));
+  Writer w(out);
+  w.u32(static_cast<std::uint32_t>(text.size()));
+  for (char ch : text) out.push_back(static_cast<std::uint8_t>(ch));
+  for (const Lumitexel& l : set.lumitexels) {
+    w.vec3(l.p);
+    w.vec3(l.n);
+    w.u32(l.triangle);
+    w.u16(l.home_image);
+    w.f32(l.home_pixel.x());
+    w.f32(l.home_pixel.y());
+    w.u64(l.first_sample);
+    w.u16(l.count);
+  }
+  for (const Sample& s : set.samples) {
+    w.u16(s.image);
+    w.vec3(s.u_world);
+    w.vec3(s.v_world);
+    w.vec3(s.r);
+    w.f32(s.weight);
+  }
+  return out;
+}
+
+LumitexelSet decode_ltx(const std::vector<std::uint8_t>& bytes, nlohmann::json* header_out) {
+  if (bytes.size() < 12 || std::memcmp(bytes.data(), ltx_magic, 8) != 0)
+    throw bad_input("not a lumitexel file: the first 8 bytes are not LUMITEX1 (offset 0)");
+  const std::uint32_t hlen = Reader(bytes, 8).u32();
+  if (hlen > bytes.size() - 12) throw bad_input("header of {} bytes runs past the end of the file (offset 8)", hlen);
+  nlohmann::json h;
+  try {
+    h = nlohmann::json::parse(bytes.begin() + 12, bytes.begin() + 12 + hlen);
+  } catch (const nlohmann::json::exception& e) {
+    throw bad_input("malformed JSON header: {} (offset 12)", e.what());
+  }
+  LumitexelSet set;
+  std::uint64_t n = 0, m = 0;
+  try {
+    if (!h.is_object()) throw bad_input("the header is not a JSON object (offset 12)");
+    if (h.value("format", "") != "ltx") throw bad_input("the header's \"format\" is not \"ltx\" (offset 12)");
+    if (h.value("version", 0) != 1) throw bad_input("unsupported .ltx version {} (offset 12)", h.value("version", 0));
+    set.mesh_sha256 = h.at("mesh_sha256").get<std::string>();
+    set.images = h.at("images").get<std::vector<std::string>>();
+    n = h.at("lumitexels").get<std::uint64_t>();
+    m = h.at("samples").get<std::uint64_t>();
+  } catch (const nlohmann::json::exception& e) {
+    throw bad_input("header: {} (offset 12)", e.what());
+  }
+  const std::size_t start = 12 + hlen;
+  const std::size_t avail = bytes.size() - start;
+  // Overflow-safe size check before any allocation: counts must fit the bytes present.
+  if (n > avail / ltx_lumitexel_bytes || m > (avail - n * ltx_lumitexel_bytes) / ltx_sample_bytes)
+    throw bad_input("truncated: the header announces {} lumitexels and {} samples, {} bytes follow it (offset {})", n, m,
+                    avail, start);
+  const std::size_t expected = n * ltx_lumitexel_bytes + m * ltx_sample_bytes;
+  if (avail != expected)
+    throw bad_input("{} bytes after the records (offset {})", avail - expected, start + expected);
+  Reader r(bytes, start);
+  set.lumitexels.resize(n);
+  for (Lumitexel& l : set.lumitexels) {
+    l.p = r.vec3();
+    l.n = r.vec3();
+    l.triangle = r.u32();
+    l.home_image = r.u16();
+    l.home_pixel.x() = r.f32();
+    l.home_pixel.y() = r.f32();
+    l.first_sample = r.u64();
+    l.count = r.u16();
+  }
+  set.samples.resize(m);
+  for (Sample& s : set.samples) {
+    s.image = r.u16();
+    s.u_world = r.vec3();
+    s.v_world = r.vec3();
+    s.r = r.vec3();
+    s.weight = r.f32();
+  }
+  try {
+    check_records(set);
+  } catch (const Error& e) {
+    throw bad_input("{} (offset {})", e.what(), start);
+  }
+  if (header_out) *header_out = std::move(h);
+  return set;
+}
+
+}  // namespace fest::brdffit

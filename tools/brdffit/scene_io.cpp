@@ -1,0 +1,352 @@
+#include "scene_io.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <openssl/evp.h>
+#include <opencv2/core.hpp>
+
+#include "brdffit/image_metrics.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
+#include "formats/mesh/mesh_io.hpp"
+#include "formats/table/table_io.hpp"
+
+namespace fest::brdffit_tool {
+
+using reflectance::LafortuneBrdf;
+using reflectance::PinholeCamera;
+using reflectance::Rgb;
+
+std::string mesh_sha256(const reflectance::TriangleMesh& mesh) {
+  std::string bytes;
+  bytes.reserve(mesh.vertices.size() * 24 + mesh.triangles.size() * 12);
+  auto put = [&](std::uint64_t v, int n) {
+    for (int k = 0; k < n; ++k) bytes.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
+  };
+  for (const auto& v : mesh.vertices)
+    for (int k = 0; k < 3; ++k) {
+      std::uint64_t bits;
+      const double d = v[k];
+      std::memcpy(&bits, &d, 8);
+      put(bits, 8);
+    }
+  for (const auto& t : mesh.triangles)
+    for (std::uint32_t i : t) put(i, 4);
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int len = 0;
+  if (EVP_Digest(bytes.data(), bytes.size(), digest, &len, EVP_sha256(), nullptr) != 1)
+    throw runtime_failure("SHA-256 failed (OpenSSL)");
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (unsigned int i = 0; i < len; ++i) {
+    out.push_back(hex[digest[i] >> 4]);
+    out.push_back(hex[digest[i] & 15]);
+  }
+  return out;
+}
+
+LoadedMesh load_mesh(const std::string& path) {
+  Mesh m = formats::parse(formats::load_input(path), formats::read_mesh);
+  LoadedMesh out;
+  auto& tm = out.mesh;
+  for (auto v : m.vertices()) {
+    const auto& p = m.point(v);
+    tm.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  for (auto f : m.faces()) {
+    std::vector<std::uint32_t> idx;
+    for (auto v : m.fv_range(f)) idx.push_back(static_cast<std::uint32_t>(v.idx()));
+    for (std::size_t k = 1; k + 1 < idx.size(); ++k) tm.triangles.push_back({idx[0], idx[k], idx[k + 1]});
+  }
+  if (tm.triangles.empty()) throw bad_input("the mesh has no faces ({})", path);
+  for (const auto& v : tm.vertices)
+    if (!v.allFinite()) throw bad_input("the mesh has a non-finite vertex coordinate ({})", path);
+  out.had_normals = m.has_vertex_normals();
+  if (out.had_normals) {
+    for (auto v : m.vertices()) {
+      const auto& n = m.normal(v);
+      Eigen::Vector3d e(n[0], n[1], n[2]);
+      tm.normals.push_back(e.norm() > 0 && e.allFinite() ? Eigen::Vector3d(e.normalized()) : Eigen::Vector3d::UnitZ());
+    }
+  } else {
+    reflectance::compute_vertex_normals(tm);
+  }
+  out.sha256 = mesh_sha256(tm);
+  return out;
+}
+
+std::string encode_mesh_ply(const reflectance::TriangleMesh& tm) {
+  Mesh m;
+  m.request_vertex_normals();
+  std::vector<Mesh::VertexHandle> vh;
+  for (std::size_t i = 0; i < tm.vertices.size(); ++i) {
+    const auto& p = tm.vertices[i];
+    vh.push_back(m.add_vertex(Mesh::Point(p.x(), p.y(), p.z())));
+    const auto& n = tm.normals[i];
+    m.set_normal(vh.back(), Mesh::Normal(n.x(), n.y(), n.z()));
+  }
+  for (const auto& t : tm.triangles) m.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+  return formats::write_mesh(m, formats::Format::ply);
+}
+
+nlohmann::json load_json(const std::string& path) {
+  const formats::Input in = formats::load_input(path);
+  try {
+    return formats::read_json(in.bytes);
+  } catch (const Error& e) {
+    throw Error(e.status(), with_location(e.what(), path));
+  }
+}
+
+namespace {
+
+std::vector<double> numbers(const nlohmann::json& j, const char* key, std::size_t n, const std::string& where) {
+  if (!j.contains(key) || !j[key].is_array() || j[key].size() != n)
+    throw bad_input("\"{}\" must be an array of {} numbers ({})", key, n, where);
+  std::vector<double> v;
+  for (const auto& x : j[key]) {
+    if (!x.is_number()) throw bad_input("\"{}\" must be an array of {} numbers ({})", key, n, where);
+    v.push_back(x.get<double>());
+    if (!std::isfinite(v.back())) throw bad_input("\"{}\" holds a non-finite number ({})", key, where);
+  }
+  return v;
+}
+
+Rgb rgb_of(const nlohmann::json& j, const std::string& where, const char* key) {
+  if (!j.is_array() || j.size() != 3) throw bad_input("\"{}\" must hold RGB triples ({})", key, where);
+  Rgb c;
+  for (int k = 0; k < 3; ++k) {
+    if (!j[static_cast<std::size_t>(k)].is_number()) throw bad_input("\"{}\" must hold numbers ({})", key, where);
+    c[k] = j[static_cast<std::size_t>(k)].get<double>();
+  }
+  return c;
+}
+
+}  // namespace
+
+PinholeCamera camera_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw bad_input("a camera must be a JSON object ({})", where);
+  PinholeCamera c;
+  const auto K = numbers(j, "K", 9, where);
+  c.fx = K[0];
+  c.cx = K[2];
+  c.fy = K[4];
+  c.cy = K[5];
+  if (!(c.fx > 0 && c.fy > 0)) throw bad_input("camera focal lengths must be positive ({})", where);
+  if (j.contains("dist")) {
+    const auto d = numbers(j, "dist", 5, where);
+    for (int k = 0; k < 5; ++k) c.dist[static_cast<std::size_t>(k)] = d[static_cast<std::size_t>(k)];
+  }
+  const auto R = numbers(j, "R", 9, where);
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) c.R(r, k) = R[static_cast<std::size_t>(3 * r + k)];
+  if ((c.R * c.R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-5 || c.R.determinant() < 0)
+    throw bad_input("camera \"R\" is not a rotation ({})", where);
+  const auto t = numbers(j, "t", 3, where);
+  c.t = Eigen::Vector3d(t[0], t[1], t[2]);
+  if (!j.contains("width") || !j.contains("height") || !j["width"].is_number_integer() ||
+      !j["height"].is_number_integer())
+    throw bad_input("camera needs integer \"width\" and \"height\" ({})", where);
+  c.width = j["width"].get<int>();
+  c.height = j["height"].get<int>();
+  if (c.width < 1 || c.height < 1 || c.width > 65536 || c.height > 65536)
+    throw bad_input("camera size {}x{} is not plausible ({})", c.width, c.height, where);
+  return c;
+}
+
+nlohmann::json camera_to_json(const PinholeCamera& c) {
+  nlohmann::json j;
+  j["K"] = {c.fx, 0.0, c.cx, 0.0, c.fy, c.cy, 0.0, 0.0, 1.0};
+  j["dist"] = c.dist;
+  std::vector<double> R;
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) R.push_back(c.R(r, k));
+  j["R"] = R;
+  j["t"] = {c.t.x(), c.t.y(), c.t.z()};
+  j["width"] = c.width;
+  j["height"] = c.height;
+  return j;
+}
+
+reflectance::PointLight light_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw bad_input("a light must be a JSON object ({})", where);
+  reflectance::PointLight l;
+  const auto p = numbers(j, "position", 3, where);
+  l.position = Eigen::Vector3d(p[0], p[1], p[2]);
+  const auto i = numbers(j, "intensity", 3, where);
+  l.intensity = Rgb(i[0], i[1], i[2]);
+  if (!(l.intensity.minCoeff() > 0)) throw bad_input("light intensity must be positive ({})", where);
+  return l;
+}
+
+nlohmann::json light_to_json(const reflectance::PointLight& l, const std::string& id) {
+  nlohmann::json j;
+  if (!id.empty()) j["id"] = id;
+  j["position"] = {l.position.x(), l.position.y(), l.position.z()};
+  j["intensity"] = {l.intensity.x(), l.intensity.y(), l.intensity.z()};
+  return j;
+}
+
+LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object() || j.value("model", "") != "lafortune")
+    throw bad_input("a BRDF must be an object with \"model\": \"lafortune\" ({})", where);
+  LafortuneBrdf b;
+  b.rho_d = rgb_of(j.value("rho_d", nlohmann::json()), where, "rho_d");
+  const auto& cxy = j.value("Cxy", nlohmann::json::array());
+  const auto& cz = j.value("Cz", nlohmann::json::array());
+  const auto& n = j.value("N", nlohmann::json::array());
+  if (!cxy.is_array() || !cz.is_array() || !n.is_array() || cxy.size() != cz.size() || cz.size() != n.size())
+    throw bad_input("\"Cxy\", \"Cz\" and \"N\" must list the same number of lobes ({})", where);
+  for (std::size_t k = 0; k < cxy.size(); ++k)
+    b.lobes.push_back({rgb_of(cxy[k], where, "Cxy"), rgb_of(cz[k], where, "Cz"), rgb_of(n[k], where, "N")});
+  return b;
+}
+
+nlohmann::json brdf_to_json(const LafortuneBrdf& b) {
+  auto arr = [](const Rgb& c) { return nlohmann::json{c[0], c[1], c[2]}; };
+  nlohmann::json j{{"model", "lafortune"}, {"lobes", b.lobes.size()}, {"rho_d", arr(b.rho_d)}};
+  j["Cxy"] = nlohmann::json::array();
+  j["Cz"] = nlohmann::json::array();
+  j["N"] = nlohmann::json::array();
+  for (const auto& l : b.lobes) {
+    j["Cxy"].push_back(arr(l.cxy));
+    j["Cz"].push_back(arr(l.cz));
+    j["N"].push_back(arr(l.n));
+  }
+  return j;
+}
+
+reflectance::SurfaceMaterials materials_from_json(const nlohmann::json& j, const reflectance::TriangleMesh& mesh,
+                                                  const std::string& where) {
+  reflectance::SurfaceMaterials m;
+  if (!j.is_object() || !j.contains("materials") || !j["materials"].is_array() || j["materials"].empty())
+    throw bad_input("the materials file needs a non-empty \"materials\" array ({})", where);
+  for (std::size_t i = 0; i < j["materials"].size(); ++i)
+    m.brdfs.push_back(brdf_from_json(j["materials"][i], where + ", material " + std::to_string(i)));
+  try {
+    if (j.contains("vertex_weights")) {
+      const auto& w = j["vertex_weights"];
+      if (!w.is_array() || w.size() != mesh.vertices.size())
+        throw bad_input("\"vertex_weights\" needs one row per vertex ({} vertices) ({})", mesh.vertices.size(), where);
+      for (const auto& row : w) {
+        if (!row.is_array() || row.size() != m.brdfs.size())
+          throw bad_input("every \"vertex_weights\" row needs {} weights ({})", m.brdfs.size(), where);
+        for (const auto& x : row) m.vertex_weights.push_back(x.get<float>());
+      }
+    } else if (j.contains("triangle_material")) {
+      for (const auto& x : j["triangle_material"]) {
+        const auto id = x.get<long long>();
+        if (id < 0 || id >= static_cast<long long>(m.brdfs.size()))
+          throw bad_input("material id {} outside 0..{} ({})", id, m.brdfs.size() - 1, where);
+        m.triangle_material.push_back(static_cast<std::uint16_t>(id));
+      }
+      if (m.triangle_material.size() != mesh.triangles.size())
+        throw bad_input("{} material ids for {} triangles ({})", m.triangle_material.size(), mesh.triangles.size(),
+                        where);
+    } else if (m.brdfs.size() == 1) {
+      m.triangle_material.assign(mesh.triangles.size(), 0);
+    } else {
+      throw bad_input("several materials need \"triangle_material\" or \"vertex_weights\" ({})", where);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw bad_input("materials: {} ({})", e.what(), where);
+  }
+  return m;
+}
+
+Rig load_rig(const std::string& path, const std::string& root_arg) {
+  Rig rig;
+  rig.doc = load_json(path);
+  const nlohmann::json& j = rig.doc;
+  if (!j.is_object() || !j.contains("images") || !j["images"].is_array())
+    throw bad_input("a rig needs an \"images\" array ({})", path);
+  if (j.value("version", 1) != 1) throw bad_input("rig version {} is not supported ({})", j.value("version", 0), path);
+  rig.frame = j.value("frame", "mesh");
+  std::filesystem::path root = root_arg;
+  if (root_arg.empty()) root = is_stdio(path) ? std::filesystem::path(".") : std::filesystem::path(path).parent_path();
+  for (std::size_t k = 0; k < j["images"].size(); ++k) {
+    const auto& e = j["images"][k];
+    const std::string where = fmt::format("{}, image {}", path, k);
+    if (!e.is_object() || !e.contains("file") || !e["file"].is_string())
+      throw bad_input("rig image needs a \"file\" ({})", where);
+    RigImage img;
+    img.file = e["file"].get<std::string>();
+    img.file_path = (root / img.file).string();
+    if (e.contains("mask") && e["mask"].is_string()) {
+      img.mask = e["mask"].get<std::string>();
+      img.mask_path = (root / img.mask).string();
+    }
+    img.angle_index = e.value("angle_index", 0);
+    img.angle_deg = e.value("angle_deg", 0.0);
+    if (!e.contains("camera")) throw bad_input("rig image has no \"camera\" ({})", where);
+    img.view.camera = camera_from_json(e["camera"], where);
+    if (e.contains("light")) {
+      img.view.light = light_from_json(e["light"], where);
+      img.light_id = e["light"].value("id", "");
+    }
+    rig.images.push_back(img);
+  }
+  if (rig.images.empty()) throw bad_input("the rig lists no images ({})", path);
+  return rig;
+}
+
+void load_radiance(const std::string& path, cv::Mat& rgb, cv::Mat& valid) {
+  Image img = formats::parse(formats::load_input(path), formats::read_image);
+  cv::Mat f;
+  if (img.pixels.depth() != CV_32F)
+    throw bad_input("{}-bit integer image: radiance must be float (EXR or PFM) ({})",
+                    img.pixels.depth() == CV_8U ? 8 : 16, path);
+  f = img.pixels;
+  valid.release();
+  std::vector<cv::Mat> planes;
+  cv::split(f, planes);
+  if (planes.size() == 1 || planes.size() == 2) {
+    if (planes.size() == 2) valid = planes[1];
+    cv::merge(std::vector<cv::Mat>{planes[0], planes[0], planes[0]}, rgb);
+  } else {
+    if (planes.size() == 4) valid = planes[3];
+    cv::merge(std::vector<cv::Mat>{planes[0], planes[1], planes[2]}, rgb);
+  }
+}
+
+cv::Mat load_mask(const std::string& path) {
+  Image img = formats::parse(formats::load_input(path), formats::read_image);
+  cv::Mat m = img.pixels;
+  if (m.channels() > 1) {
+    std::vector<cv::Mat> planes;
+    cv::split(m, planes);
+    m = planes[0];
+  }
+  cv::Mat out = m > 0;  // nonzero = object, for every depth
+  return out;
+}
+
+std::string encode_exr(const cv::Mat& rgb) {
+  return formats::write_image(Image{rgb, ColorSpace::linear}, formats::Format::exr, {});
+}
+
+std::string encode_png(const cv::Mat& mat) { return formats::write_image(Image{mat, ColorSpace::srgb}, formats::Format::png); }
+
+cv::Mat tonemap(const cv::Mat& rgb, double exposure) {
+  cv::Mat out(rgb.size(), CV_8UC3);
+  for (int y = 0; y < rgb.rows; ++y)
+    for (int x = 0; x < rgb.cols; ++x) {
+      const cv::Vec3f& p = rgb.at<cv::Vec3f>(y, x);
+      cv::Vec3b& o = out.at<cv::Vec3b>(y, x);
+      for (int c = 0; c < 3; ++c)
+        o[c] = static_cast<std::uint8_t>(std::lround(255 * brdffit::srgb_encode(std::isfinite(p[c]) ? exposure * p[c] : 0)));
+    }
+  return out;
+}
+
+void write_binary(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  if (is_stdio(path) && isatty(STDOUT_FILENO)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
+  write_output(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+}  // namespace fest::brdffit_tool
