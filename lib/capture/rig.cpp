@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "capture/frames.hpp"
 #include "capture/json_fields.hpp"
 #include "capture/station.hpp"
 #include "core/error.hpp"
@@ -13,13 +14,6 @@ namespace fest::capture {
 using nlohmann::json;
 
 namespace {
-
-Eigen::Matrix3d rz(double deg) {
-  const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d m;
-  m << c, -s, 0, s, c, 0, 0, 0, 1;
-  return m;
-}
 
 std::vector<double> flat(const Eigen::Matrix3d& m) {
   std::vector<double> v;
@@ -50,8 +44,8 @@ json build_rig(const json& manifest, const std::vector<RigImage>& images, const 
     if (!l->position_mm)
       f.fail(fmt::format("light \"{}\" has no position_mm (run capture calib-lights)", im.light), "station.lights");
     const Eigen::Vector3d q((*l->position_mm)[0], (*l->position_mm)[1], (*l->position_mm)[2]);
-    const Eigen::Matrix3d R = r0 * rz(im.angle_deg);
-    const Eigen::Vector3d q_t = rz(-im.angle_deg) * r0.transpose() * (q - t0);
+    const Eigen::Matrix3d R = r0 * rotation_about_axis(im.angle_deg);
+    const Eigen::Vector3d q_t = rotation_about_axis(-im.angle_deg) * r0.transpose() * (q - t0);
     json camera = {{"K", k.K}, {"dist", k.dist}, {"R", flat(R)}, {"t", cal.t_T0}, {"width", k.width}, {"height", k.height}};
     json light = {{"id", im.light}, {"position", {q_t.x(), q_t.y(), q_t.z()}}, {"intensity", l->intensity}};
     json entry = {{"file", im.file}, {"angle_index", im.angle_index}, {"angle_deg", im.angle_deg},

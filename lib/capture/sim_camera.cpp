@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "capture/frames.hpp"
 #include "capture/json_fields.hpp"
 #include "capture/sim_turntable.hpp"
 #include "core/error.hpp"
@@ -114,13 +115,6 @@ SimScene parse_sim_scene(const json& doc, const std::string& where) {
 
 namespace {
 
-Eigen::Matrix3d rz(double deg) {
-  const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d m;
-  m << c, -s, 0, s, c, 0, 0, 0, 1;
-  return m;
-}
-
 Eigen::Matrix3d row_major(const std::array<double, 9>& m) {
   Eigen::Matrix3d r;
   r << m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8];
@@ -137,7 +131,7 @@ struct PointLight {
 cv::Mat render_sim_radiance(const SimScene& scene, const CameraIntrinsics& k, const TurntableCal& cal, double theta_deg,
                             const Station& station, const std::vector<std::string>& lights_on) {
   // C -> T: X_T = Rz(-theta) R_T0^T (X_C - t_T0).
-  const Eigen::Matrix3d to_t = rz(-theta_deg) * row_major(cal.R_T0).transpose();
+  const Eigen::Matrix3d to_t = rotation_about_axis(-theta_deg) * row_major(cal.R_T0).transpose();
   const Eigen::Vector3d t0(cal.t_T0[0], cal.t_T0[1], cal.t_T0[2]);
   std::vector<PointLight> points;
   Rgb background = Rgb::Zero();

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <filesystem>
 
-#include <openssl/evp.h>
 #include <opencv2/core.hpp>
 
 #include "brdffit/image_metrics.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/sha256.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -37,17 +37,7 @@ std::string mesh_sha256(const reflectance::TriangleMesh& mesh) {
     }
   for (const auto& t : mesh.triangles)
     for (std::uint32_t i : t) put(i, 4);
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int len = 0;
-  if (EVP_Digest(bytes.data(), bytes.size(), digest, &len, EVP_sha256(), nullptr) != 1)
-    throw runtime_failure("SHA-256 failed (OpenSSL)");
-  static const char* hex = "0123456789abcdef";
-  std::string out;
-  for (unsigned int i = 0; i < len; ++i) {
-    out.push_back(hex[digest[i] >> 4]);
-    out.push_back(hex[digest[i] & 15]);
-  }
-  return out;
+  return sha256_hex(bytes);
 }
 
 LoadedMesh load_mesh(const std::string& path) {
