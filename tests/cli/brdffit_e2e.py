@@ -8,6 +8,9 @@ expectations come from synth's truth.json / mesh_true.ply, not from brdffit's ou
       fraction of lumitexels whose cluster (from the .ltw) agrees with the true material
       of their triangle, under the best one-to-one matching of clusters to materials,
       over the lumitexels with at least MIN_SAMPLES samples (and their count)
+  materials OBJECT.ltx SVBRDF.ltw TRIANGLES
+      materials JSON (brdffit(1) MATERIALS) that render --svbrdf should derive: every
+      triangle the first basis BRDF (f_C) of its lumitexels' majority cluster
   normals OBJECT.ltx NORMALS.ply mesh_true.ply
       median angle (degrees) of refined and mesh normals to the true interpolated normal
 """
@@ -34,7 +37,7 @@ def read_ltx(path):
     return out
 
 
-def read_ltw_clusters(path):
+def read_ltw_clusters(path, with_header=False):
     """Per-lumitexel cluster of an .ltw file (u16 + f32 weights per record)."""
     data = open(path, "rb").read()
     assert data[:8] == b"LUMIWGT1", "not an .ltw file"
@@ -45,7 +48,7 @@ def read_ltw_clusters(path):
     for _ in range(header["lumitexels"]):
         out.append(struct.unpack_from("<H", data, pos)[0])
         pos += 2 + 4 * per
-    return out
+    return (out, header) if with_header else out
 
 
 def read_ply(path):
@@ -116,6 +119,22 @@ def assignment(ltx, ltw, truth_path, min_samples="0"):
     print("%.6f %d" % (best / used, used))
 
 
+def materials(ltx, ltw, triangles):
+    lum = read_ltx(ltx)
+    clusters, header = read_ltw_clusters(ltw, True)
+    k = len(header["clusters"])
+    votes = [[0] * k for _ in range(int(triangles))]
+    total = [0] * k
+    for (_, tri, n), c in zip(lum, clusters):
+        if n > 0:
+            votes[tri][c] += 1
+            total[c] += 1
+    fallback = total.index(max(total))
+    tri_mat = [v.index(max(v)) if max(v) > 0 else fallback for v in votes]
+    mats = [header["basis"][cl["basis"][0]]["brdf"] for cl in header["clusters"]]
+    print(json.dumps({"materials": mats, "triangle_material": tri_mat}))
+
+
 def angle(a, b):
     d = sum(x * y for x, y in zip(a, b)) / math.sqrt(sum(x * x for x in a) * sum(y * y for y in b))
     return math.degrees(math.acos(max(-1.0, min(1.0, d))))
@@ -152,4 +171,4 @@ def normals(ltx, normals_ply, mesh_true):
 
 
 if __name__ == "__main__":
-    {"assignment": assignment, "normals": normals}[sys.argv[1]](*sys.argv[2:])
+    {"assignment": assignment, "materials": materials, "normals": normals}[sys.argv[1]](*sys.argv[2:])

@@ -17,7 +17,9 @@
 
 #include <fmt/format.h>
 
+#include "brdffit/fitted_materials.hpp"
 #include "brdffit/image_metrics.hpp"
+#include "brdffit/ltw_format.hpp"
 #include "cli/cli.hpp"
 #include "core/tool_main.hpp"
 #include "brdffit/ltx_format.hpp"
@@ -358,7 +360,7 @@ void run_register(RegisterArgs a) {
 // ---------------------------------------------------------------------------- render
 
 struct RenderArgs {
-  std::string mesh, materials, camera, light, rig, root, out, png, mask_out, env;
+  std::string mesh, materials, svbrdf, ltx, camera, light, rig, root, out, png, mask_out, env;
   int rig_image = -1;
   double exposure = 1, env_light = 0;
   int shadow_res = 2048;
@@ -366,10 +368,45 @@ struct RenderArgs {
   int threads = 0;
 };
 
+// --materials JSON, or the fitted materials: --svbrdf (.ltw) with the --ltx it was made
+// from, each triangle taking the BRDF of its lumitexels' majority cluster.
+reflectance::SurfaceMaterials render_materials(const RenderArgs& a, const LoadedMesh& lm) {
+  if (a.materials.empty() == a.svbrdf.empty()) throw usage_error("render needs --materials or --svbrdf (not both)");
+  if (!a.materials.empty()) return materials_from_json(load_json(a.materials), lm.mesh, a.materials);
+  if (a.ltx.empty()) throw usage_error("--svbrdf needs --ltx, the lumitexel file the weights were made from");
+  nlohmann::json wh;
+  brdffit::Projection p;
+  try {
+    p = brdffit::decode_ltw(read_input(a.svbrdf), &wh);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), a.svbrdf));
+  }
+  const std::string bytes = read_input(a.ltx);
+  brdffit::LumitexelSet set;
+  try {
+    set = brdffit::decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), nullptr);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), a.ltx));
+  }
+  if (set.mesh_sha256 != lm.sha256)
+    throw bad_input("the mesh does not match the lumitexel file: SHA-256 {} vs {} ({}, {})", lm.sha256.substr(0, 16),
+                    set.mesh_sha256.substr(0, 16), a.mesh, a.ltx);
+  if (wh.contains("mesh_sha256") && wh["mesh_sha256"].is_string() && wh["mesh_sha256"] != lm.sha256)
+    throw bad_input("the weights were made for another mesh (mesh_sha256 differs) ({})", a.svbrdf);
+  try {
+    return brdffit::materials_from_projection(p, set, lm.mesh.triangles.size());
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), a.svbrdf + ", " + a.ltx));
+  }
+}
+
 void run_render(const RenderArgs& a) {
   if (is_stdio(a.out) && isatty(1)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
   const LoadedMesh lm = load_mesh(a.mesh);
-  const reflectance::SurfaceMaterials mats = materials_from_json(load_json(a.materials), lm.mesh, a.materials);
+  const reflectance::SurfaceMaterials mats = render_materials(a, lm);
   brdffit::ImageView view;
   if (!a.rig.empty()) {
     if (a.rig_image < 0) throw usage_error("--rig needs --image K");
@@ -563,8 +600,10 @@ void add_geometry_commands(CLI::App& app) {
   static RenderArgs ren;
   auto* d = app.add_subcommand("render", "Render the mesh with Lafortune materials under a point light (linear EXR)");
   d->add_option("--mesh", ren.mesh, "The mesh")->required();
-  d->add_option("--materials", ren.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)")
-      ->required();
+  d->add_option("--materials", ren.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)");
+  d->add_option("--svbrdf", ren.svbrdf, "Fitted materials instead: .ltw of brdffit project (with --ltx); every "
+                                         "triangle takes its lumitexels' majority cluster BRDF");
+  d->add_option("--ltx", ren.ltx, "The lumitexel file the --svbrdf weights were made from");
   d->add_option("--camera", ren.camera, "cam.json");
   d->add_option("--light", ren.light, "light.json");
   d->add_option("--rig", ren.rig, "Take camera and light from a rig image (with --image)");
