@@ -11,6 +11,11 @@ expectations come from synth's truth.json / mesh_true.ply, not from brdffit's ou
   materials OBJECT.ltx SVBRDF.ltw TRIANGLES
       materials JSON (brdffit(1) MATERIALS) that render --svbrdf should derive: every
       triangle the first basis BRDF (f_C) of its lumitexels' majority cluster
+  halves OBJECT.ltx SVBRDF.ltw X0 MIN_SAMPLES
+      as assignment, for capture's simulated sphere: material 1 where x < X0, else 0
+      (lib/capture/sim_camera.cpp)
+  translate MESH.ply DX DY DZ
+      the mesh's vertices moved by (DX, DY, DZ) and its faces, as ASCII PLY on stdout
   normals OBJECT.ltx NORMALS.ply mesh_true.ply
       median angle (degrees) of refined and mesh normals to the true interpolated normal
 """
@@ -135,6 +140,34 @@ def materials(ltx, ltw, triangles):
     print(json.dumps({"materials": mats, "triangle_material": tri_mat}))
 
 
+def halves(ltx, ltw, x0, min_samples):
+    lum = read_ltx(ltx)
+    clusters = read_ltw_clusters(ltw)
+    k = max(2, max(clusters) + 1)
+    counts = [[0] * k for _ in range(k)]
+    used = 0
+    for (p, _, n), c in zip(lum, clusters):
+        if n >= int(min_samples):
+            counts[c][1 if p[0] < float(x0) else 0] += 1
+            used += 1
+    best = max(sum(counts[c][perm[c]] for c in range(k)) for perm in itertools.permutations(range(k)))
+    print("%.6f %d" % (best / used, used))
+
+
+def translate(mesh_path, dx, dy, dz):
+    mesh = read_ply(mesh_path)
+    vrows, vnames = mesh["vertex"]
+    ix = vnames.index("x")
+    faces = [r[0] for r in mesh["face"][0]]
+    out = ["ply", "format ascii 1.0", "element vertex %d" % len(vrows)]
+    out += ["property double %s" % c for c in "xyz"]
+    out += ["element face %d" % len(faces), "property list uchar int vertex_indices", "end_header"]
+    d = (float(dx), float(dy), float(dz))
+    out += ["%.17g %.17g %.17g" % tuple(r[ix + i] + d[i] for i in range(3)) for r in vrows]
+    out += ["%d %s" % (len(f), " ".join(map(str, f))) for f in faces]
+    print("\n".join(out))
+
+
 def angle(a, b):
     d = sum(x * y for x, y in zip(a, b)) / math.sqrt(sum(x * x for x in a) * sum(y * y for y in b))
     return math.degrees(math.acos(max(-1.0, min(1.0, d))))
@@ -171,4 +204,5 @@ def normals(ltx, normals_ply, mesh_true):
 
 
 if __name__ == "__main__":
-    {"assignment": assignment, "materials": materials, "normals": normals}[sys.argv[1]](*sys.argv[2:])
+    {"assignment": assignment, "materials": materials, "halves": halves, "translate": translate,
+     "normals": normals}[sys.argv[1]](*sys.argv[2:])

@@ -95,4 +95,32 @@ check "the mesh normals are tilted (median above 1 degree)" lt 1 "$given"
 check "refined normals closer to the truth than the mesh normals" lt "$refined" "$given"
 check "residual decreased" lt "$(jq .residual_after "$WORK/normals.json")" "$(jq .residual_before "$WORK/normals.json")"
 
+# capture.md 5.1: the simulated station (a sphere of two Lafortune materials, material 1
+# where x < the centre's x) -> hdrmerge's rig (frame "turntable") -> lumitexels on a
+# sphere mesh placed where the scene puts it -> cluster --clusters 2 finds both halves.
+if [ -x "$FEST_BIN/capture" ] && [ -x "$FEST_BIN/hdrmerge" ]; then
+  case_ "capture run | hdrmerge --manifest - -> lumitexels -> cluster --clusters 2"
+  cp "$FEST_FIXTURES/capture/small_scene.json" "$FEST_FIXTURES/capture/small_station.json" "$WORK/"
+  scene="$WORK/small_scene.json"
+  ( cd "$WORK" && "$FEST_BIN/capture" plan --angles 8 --lights L0 --bracket 1/1000:1:12 --silhouette BG > plan.json &&
+    "$FEST_BIN/capture" run --station small_station.json --plan plan.json -o sess 2>/dev/null |
+    "$FEST_BIN/hdrmerge" --manifest - -o sess/hdr > rig.json )
+  check "hdrmerge wrote a turntable rig" test "$(jq -r .frame "$WORK/rig.json" 2>/dev/null)" = turntable
+  radius=$(jq '.object.radius_mm' "$scene")
+  "$bin" synth --sphere 4 --radius "$radius" --materials 1 --views 1 --width 16 --height 16 -o "$WORK/ball" 2>/dev/null
+  python3 "$check_py" translate "$WORK/ball/mesh.ply" $(jq -r '.object.centre_mm | map(tostring) | join(" ")' "$scene") \
+    > "$WORK/sphere_tt.ply"
+  run brdffit lumitexels --mesh "$WORK/sphere_tt.ply" --rig "$WORK/rig.json" --threads 2 -o "$WORK/cap.ltx"
+  expect_status 0
+  run brdffit cluster --clusters 2 --threads 2 "$WORK/cap.ltx"
+  expect_status 0
+  cp "$out" "$WORK/cap_clusters.json"
+  expect_json '.clusters | length' 2
+  "$bin" project --clusters "$WORK/cap_clusters.json" --threads 2 "$WORK/cap.ltx" -o "$WORK/cap.ltw"
+  read -r rate used < <(python3 "$check_py" halves "$WORK/cap.ltx" "$WORK/cap.ltw" "$(jq '.object.centre_mm[0]' "$scene")" 2)
+  echo "capture: $rate of $used lumitexels with >= 2 samples in their half's cluster"
+  check "at least 1000 lumitexels" test "$used" -ge 1000
+  check "98 % of them in the cluster of their half" le 0.98 "$rate"
+fi
+
 finish

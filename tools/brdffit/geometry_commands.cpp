@@ -564,7 +564,7 @@ void add_geometry_commands(CLI::App& app) {
   auto* l = app.add_subcommand("lumitexels", "Resample the rig's HDR images onto the mesh: .ltx lumitexels");
   l->add_option("--mesh", ltx.mesh, "The mesh the rig is registered to")->required();
   l->add_option("--rig", ltx.rig, "Rig JSON (frame mesh or turntable)")->required();
-  l->add_option("--root", ltx.root, "Folder the rig's image paths are relative to (default: the rig's folder)");
+  l->add_option("--root", ltx.root, "Folder the rig's image paths are relative to (default: the rig's session folder)");
   l->add_option("-o,--output", ltx.out, "Lumitexel file, - = standard output");
   l->add_option("--min-samples", ltx.o.min_samples, "Drop lumitexels with fewer samples")->check(CLI::Range(1, 65535));
   l->add_option("--min-cos", ltx.o.min_cos, "Smallest cosine of light and view to the normal")->check(CLI::Range(0.0, 1.0));
@@ -582,7 +582,7 @@ void add_geometry_commands(CLI::App& app) {
   r->add_option("--mask", reg.mask, "Silhouette of the photograph (nonzero = object)");
   r->add_option("--camera", reg.camera, "cam.json: intrinsics and the initial pose");
   r->add_option("--rig", reg.rig, "Turntable mode: fit one camera and the table axis to all masks of the rig");
-  r->add_option("--root", reg.root, "Folder the rig's paths are relative to (default: the rig's folder)");
+  r->add_option("--root", reg.root, "Folder the rig's paths are relative to (default: the rig's session folder)");
   r->add_flag("--auto", reg.o.automatic, "Ignore the initial pose: search orientations on SO(3)");
   r->add_flag("--fix-focal", reg.o.fix_focal, "Keep the camera's focal length (calibrated): fit the pose only");
   r->add_option("--orient-samples", reg.o.orient_samples, "Orientations tried by --auto")->check(CLI::Range(1, 100000));
