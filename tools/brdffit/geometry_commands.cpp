@@ -17,7 +17,9 @@
 
 #include <fmt/format.h>
 
+#include "brdffit/fitted_materials.hpp"
 #include "brdffit/image_metrics.hpp"
+#include "brdffit/ltw_format.hpp"
 #include "cli/cli.hpp"
 #include "core/tool_main.hpp"
 #include "brdffit/ltx_format.hpp"
@@ -358,7 +360,7 @@ void run_register(RegisterArgs a) {
 // ---------------------------------------------------------------------------- render
 
 struct RenderArgs {
-  std::string mesh, materials, camera, light, rig, root, out, png, mask_out, env;
+  std::string mesh, materials, svbrdf, ltx, camera, light, rig, root, out, png, mask_out, env;
   int rig_image = -1;
   double exposure = 1, env_light = 0;
   int shadow_res = 2048;
@@ -366,10 +368,45 @@ struct RenderArgs {
   int threads = 0;
 };
 
+// --materials JSON, or the fitted materials: --svbrdf (.ltw) with the --ltx it was made
+// from, each triangle taking the BRDF of its lumitexels' majority cluster.
+reflectance::SurfaceMaterials render_materials(const RenderArgs& a, const LoadedMesh& lm) {
+  if (a.materials.empty() == a.svbrdf.empty()) throw usage_error("render needs --materials or --svbrdf (not both)");
+  if (!a.materials.empty()) return materials_from_json(load_json(a.materials), lm.mesh, a.materials);
+  if (a.ltx.empty()) throw usage_error("--svbrdf needs --ltx, the lumitexel file the weights were made from");
+  nlohmann::json wh;
+  brdffit::Projection p;
+  try {
+    p = brdffit::decode_ltw(read_input(a.svbrdf), &wh);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), a.svbrdf));
+  }
+  const std::string bytes = read_input(a.ltx);
+  brdffit::LumitexelSet set;
+  try {
+    set = brdffit::decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), nullptr);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), a.ltx));
+  }
+  if (set.mesh_sha256 != lm.sha256)
+    throw bad_input("the mesh does not match the lumitexel file: SHA-256 {} vs {} ({}, {})", lm.sha256.substr(0, 16),
+                    set.mesh_sha256.substr(0, 16), a.mesh, a.ltx);
+  if (wh.contains("mesh_sha256") && wh["mesh_sha256"].is_string() && wh["mesh_sha256"] != lm.sha256)
+    throw bad_input("the weights were made for another mesh (mesh_sha256 differs) ({})", a.svbrdf);
+  try {
+    return brdffit::materials_from_projection(p, set, lm.mesh.triangles.size());
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), a.svbrdf + ", " + a.ltx));
+  }
+}
+
 void run_render(const RenderArgs& a) {
   if (is_stdio(a.out) && isatty(1)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
   const LoadedMesh lm = load_mesh(a.mesh);
-  const reflectance::SurfaceMaterials mats = materials_from_json(load_json(a.materials), lm.mesh, a.materials);
+  const reflectance::SurfaceMaterials mats = render_materials(a, lm);
   brdffit::ImageView view;
   if (!a.rig.empty()) {
     if (a.rig_image < 0) throw usage_error("--rig needs --image K");
@@ -527,7 +564,7 @@ void add_geometry_commands(CLI::App& app) {
   auto* l = app.add_subcommand("lumitexels", "Resample the rig's HDR images onto the mesh: .ltx lumitexels");
   l->add_option("--mesh", ltx.mesh, "The mesh the rig is registered to")->required();
   l->add_option("--rig", ltx.rig, "Rig JSON (frame mesh or turntable)")->required();
-  l->add_option("--root", ltx.root, "Folder the rig's image paths are relative to (default: the rig's folder)");
+  l->add_option("--root", ltx.root, "Folder the rig's image paths are relative to (default: the rig's session folder)");
   l->add_option("-o,--output", ltx.out, "Lumitexel file, - = standard output");
   l->add_option("--min-samples", ltx.o.min_samples, "Drop lumitexels with fewer samples")->check(CLI::Range(1, 65535));
   l->add_option("--min-cos", ltx.o.min_cos, "Smallest cosine of light and view to the normal")->check(CLI::Range(0.0, 1.0));
@@ -545,7 +582,7 @@ void add_geometry_commands(CLI::App& app) {
   r->add_option("--mask", reg.mask, "Silhouette of the photograph (nonzero = object)");
   r->add_option("--camera", reg.camera, "cam.json: intrinsics and the initial pose");
   r->add_option("--rig", reg.rig, "Turntable mode: fit one camera and the table axis to all masks of the rig");
-  r->add_option("--root", reg.root, "Folder the rig's paths are relative to (default: the rig's folder)");
+  r->add_option("--root", reg.root, "Folder the rig's paths are relative to (default: the rig's session folder)");
   r->add_flag("--auto", reg.o.automatic, "Ignore the initial pose: search orientations on SO(3)");
   r->add_flag("--fix-focal", reg.o.fix_focal, "Keep the camera's focal length (calibrated): fit the pose only");
   r->add_option("--orient-samples", reg.o.orient_samples, "Orientations tried by --auto")->check(CLI::Range(1, 100000));
@@ -563,8 +600,10 @@ void add_geometry_commands(CLI::App& app) {
   static RenderArgs ren;
   auto* d = app.add_subcommand("render", "Render the mesh with Lafortune materials under a point light (linear EXR)");
   d->add_option("--mesh", ren.mesh, "The mesh")->required();
-  d->add_option("--materials", ren.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)")
-      ->required();
+  d->add_option("--materials", ren.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)");
+  d->add_option("--svbrdf", ren.svbrdf, "Fitted materials instead: .ltw of brdffit project (with --ltx); every "
+                                         "triangle takes its lumitexels' majority cluster BRDF");
+  d->add_option("--ltx", ren.ltx, "The lumitexel file the --svbrdf weights were made from");
   d->add_option("--camera", ren.camera, "cam.json");
   d->add_option("--light", ren.light, "light.json");
   d->add_option("--rig", ren.rig, "Take camera and light from a rig image (with --image)");

@@ -258,7 +258,12 @@ Rig load_rig(const std::string& path, const std::string& root_arg) {
   if (j.value("version", 1) != 1) throw bad_input("rig version {} is not supported ({})", j.value("version", 0), path);
   rig.frame = j.value("frame", "mesh");
   std::filesystem::path root = root_arg;
-  if (root_arg.empty()) root = is_stdio(path) ? std::filesystem::path(".") : std::filesystem::path(path).parent_path();
+  if (root_arg.empty()) {
+    // capture.md 2.8: file and mask are relative to "session", itself relative to the
+    // rig's folder (hdrmerge writes "sess", synth ".").
+    root = is_stdio(path) ? std::filesystem::path(".") : std::filesystem::path(path).parent_path();
+    if (j.contains("session") && j["session"].is_string()) root /= j["session"].get<std::string>();
+  }
   for (std::size_t k = 0; k < j["images"].size(); ++k) {
     const auto& e = j["images"][k];
     const std::string where = fmt::format("{}, image {}", path, k);

@@ -1,0 +1,21 @@
+#pragma once
+// Materials for the renderer from the materials side's result (specs/brdffit.md §4,
+// `render --svbrdf`): every triangle takes the BRDF f_C of the cluster most of its
+// lumitexels belong to (the per-cluster model of the chapter's Fig. 8.6; the per-lumitexel
+// blend weights of the .ltw are not carried to the surface). Triangles without a lumitexel
+// (never seen, or dropped) take the cluster with the most lumitexels overall.
+
+#include <cstddef>
+
+#include "brdffit/lumitexel.hpp"
+#include "brdffit/project.hpp"
+#include "reflectance/render.hpp"
+
+namespace fest::brdffit {
+
+// Throws bad_input when the projection's lumitexel count differs from the set's, or a
+// lumitexel names a triangle beyond `triangles`.
+reflectance::SurfaceMaterials materials_from_projection(const Projection& projection, const LumitexelSet& set,
+                                                        std::size_t triangles);
+
+}  // namespace fest::brdffit
