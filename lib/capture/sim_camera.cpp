@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <opencv2/core/utility.hpp>
 
 #include "capture/frames.hpp"
 #include "capture/json_fields.hpp"
@@ -155,7 +156,8 @@ cv::Mat render_sim_radiance(const SimScene& scene, const CameraIntrinsics& k, co
 
   cv::Mat out(k.height, k.width, CV_32FC3);
   const double fx = k.K[0], cx = k.K[2], fy = k.K[4], cy = k.K[5];
-  for (int y = 0; y < k.height; ++y) {
+  cv::parallel_for_(cv::Range(0, k.height), [&](const cv::Range& rows) {
+  for (int y = rows.start; y < rows.end; ++y) {
     float* row = out.ptr<float>(y);
     for (int x = 0; x < k.width; ++x) {
       const Eigen::Vector3d d = (to_t * Eigen::Vector3d((x - cx) / fx, (y - cy) / fy, 1.0)).normalized();
@@ -181,6 +183,7 @@ cv::Mat render_sim_radiance(const SimScene& scene, const CameraIntrinsics& k, co
       for (int c = 0; c < 3; ++c) row[3 * x + c] = float(radiance[c]);
     }
   }
+  });  // rows are independent: the same bytes for any number of threads
   return out;
 }
 
@@ -226,17 +229,21 @@ cv::Mat SimCamera::expose(const cv::Mat& radiance, double seconds, std::uint64_t
   cv::Mat z(radiance.size(), r.bits == 16 ? CV_16UC3 : CV_8UC3);
   const double scale = scene_.gain * seconds;
   const double dark = r.dn(0);
-  for (int y = 0; y < radiance.rows; ++y) {
-    const float* in = radiance.ptr<float>(y);
-    const float* n = noise.ptr<float>(y);
-    for (int i = 0; i < 3 * radiance.cols; ++i) {
-      const double dn = (in[i] > 0 ? r.dn(in[i] * scale) : dark) + n[i];
-      // Round half up after the clamp (non-negative): cheaper than std::round.
-      const double v = std::floor(std::clamp(dn, 0.0, full) + 0.5);
-      if (r.bits == 16) z.ptr<std::uint16_t>(y)[i] = std::uint16_t(v);
-      else z.ptr<std::uint8_t>(y)[i] = std::uint8_t(v);
+  // Rows are independent (the noise is drawn above, in one sequence), so they are
+  // exposed in parallel with the same bytes for any number of threads.
+  cv::parallel_for_(cv::Range(0, radiance.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* in = radiance.ptr<float>(y);
+      const float* n = noise.ptr<float>(y);
+      for (int i = 0; i < 3 * radiance.cols; ++i) {
+        const double dn = (in[i] > 0 ? r.dn(in[i] * scale) : dark) + n[i];
+        // Round half up after the clamp (non-negative): cheaper than std::round.
+        const double v = std::floor(std::clamp(dn, 0.0, full) + 0.5);
+        if (r.bits == 16) z.ptr<std::uint16_t>(y)[i] = std::uint16_t(v);
+        else z.ptr<std::uint8_t>(y)[i] = std::uint8_t(v);
+      }
     }
-  }
+  });
   return z;
 }
 
