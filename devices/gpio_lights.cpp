@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "capture/device_uri.hpp"
 #include "core/error.hpp"
 #include "devices/gpio_util.hpp"
 
@@ -93,20 +94,17 @@ using namespace gpio;
 GpioLineRef parse_gpio_uri(const std::string& uri) {
   if (uri.rfind("gpio:", 0) != 0) throw usage_error("not a gpio: light URI: {}", uri);
   GpioLineRef r;
-  std::string rest = uri.substr(5);
   bool have_line = false;
-  while (!rest.empty()) {
-    const std::size_t comma = rest.find(',');
-    const std::string item = rest.substr(0, comma);
-    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-    const std::size_t eq = item.find('=');
-    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+  for (const capture::DeviceOption& o : capture::split_device_options(uri.substr(5))) {
+    const std::string& key = o.key;
+    const std::string& value = o.value;
+    const std::string& item = o.item;
     if (key == "chip" && !value.empty()) {
       r.chip = value;
     } else if (key == "line" && !value.empty()) {
       r.line = value;
       have_line = true;
-    } else if (key == "active_low" && (eq == std::string::npos || value == "1" || value == "true")) {
+    } else if (key == "active_low" && (!o.has_value || value == "1" || value == "true")) {
       r.active_low = true;
     } else if (key == "active_low" && (value == "0" || value == "false")) {
       r.active_low = false;

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "capture/device_uri.hpp"
 #include "capture/step_profile.hpp"
 #include "core/error.hpp"
 #include "devices/gpio_util.hpp"
@@ -51,16 +52,13 @@ void sleep_until(const timespec& t) {
 GpioStepperConfig parse_gpio_stepper_uri(const std::string& uri) {
   if (uri.rfind("gpio-stepper:", 0) != 0) throw usage_error("not a gpio-stepper: URI: {}", uri);
   GpioStepperConfig c;
-  std::string rest = uri.substr(13);
-  while (!rest.empty()) {
-    const std::size_t comma = rest.find(',');
-    const std::string item = rest.substr(0, comma);
-    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-    const std::size_t eq = item.find('=');
-    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
-    if (eq == std::string::npos && key == "home_active_low") c.home_active_low = true;
-    else if (eq == std::string::npos && key == "en_active_high") c.en_active_high = true;
-    else if (eq == std::string::npos || value.empty())
+  for (const capture::DeviceOption& o : capture::split_device_options(uri.substr(13))) {
+    const std::string& key = o.key;
+    const std::string& value = o.value;
+    const std::string& item = o.item;
+    if (!o.has_value && key == "home_active_low") c.home_active_low = true;
+    else if (!o.has_value && key == "en_active_high") c.en_active_high = true;
+    else if (!o.has_value || value.empty())
       throw usage_error("gpio-stepper: '{}' is not key=value (in {})", item, uri);
     else if (key == "chip") c.chip = value;
     else if (key == "step") c.step = value;

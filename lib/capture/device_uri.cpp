@@ -22,6 +22,23 @@ void DeviceUri::expect_only(const std::vector<std::string>& known) const {
       throw usage_error("{}: unknown device option '{}'", scheme, o.first);
 }
 
+std::vector<DeviceOption> split_device_options(const std::string& list) {
+  std::vector<DeviceOption> out;
+  std::string rest = list;
+  while (!rest.empty()) {
+    const std::size_t comma = rest.find(',');
+    DeviceOption o;
+    o.item = rest.substr(0, comma);
+    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    const std::size_t eq = o.item.find('=');
+    o.key = o.item.substr(0, eq);
+    o.has_value = eq != std::string::npos;
+    if (o.has_value) o.value = o.item.substr(eq + 1);
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
 DeviceUri parse_device_uri(const std::string& uri) {
   const std::size_t colon = uri.find(':');
   const std::string scheme = uri.substr(0, colon);
@@ -38,17 +55,13 @@ DeviceUri parse_device_uri(const std::string& uri) {
     return d;
   }
   bool first = true;
-  while (!rest.empty()) {
-    const std::size_t comma = rest.find(',');
-    const std::string item = rest.substr(0, comma);
-    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos) {
-      if (!first) throw usage_error("{}: '{}' is not key=value (in {})", scheme, item, uri);
-      d.path = item;
+  for (const DeviceOption& o : split_device_options(rest)) {
+    if (!o.has_value) {
+      if (!first) throw usage_error("{}: '{}' is not key=value (in {})", scheme, o.item, uri);
+      d.path = o.item;
     } else {
-      if (eq == 0) throw usage_error("{}: empty option name in '{}'", scheme, uri);
-      d.options.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+      if (o.key.empty()) throw usage_error("{}: empty option name in '{}'", scheme, uri);
+      d.options.emplace_back(o.key, o.value);
     }
     first = false;
   }

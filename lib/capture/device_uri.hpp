@@ -24,6 +24,15 @@ struct DeviceUri {
   void expect_only(const std::vector<std::string>& known) const;
 };
 
+// One item of a comma-separated option list: "key=value", or a bare "flag" (has_value
+// false, value empty). Backends whose URIs take bare flags (active_low) read these.
+struct DeviceOption {
+  std::string item;  // as written, for messages
+  std::string key, value;
+  bool has_value = false;
+};
+std::vector<DeviceOption> split_device_options(const std::string& list);
+
 // usage_error for a URI without a scheme ("gpiochip0") or an empty key ("sim:=3").
 // exec: URIs keep everything after "exec:" as the path (command templates contain commas).
 DeviceUri parse_device_uri(const std::string& uri);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "capture/device_uri.hpp"
 #include "core/error.hpp"
 
 namespace fest::capture {
@@ -24,15 +25,10 @@ double number(const std::string& key, const std::string& text) {
 SimTurntableConfig parse_sim_turntable_uri(const std::string& uri) {
   if (uri.rfind("sim:", 0) != 0 && uri != "sim") throw usage_error("not a sim: device URI: {}", uri);
   SimTurntableConfig c;
-  std::string rest = uri.size() > 4 ? uri.substr(4) : "";
-  while (!rest.empty()) {
-    const std::size_t comma = rest.find(',');
-    const std::string item = rest.substr(0, comma);
-    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos) throw usage_error("sim turntable: '{}' is not key=value", item);
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    const double v = number(key, value);
+  for (const DeviceOption& o : split_device_options(uri.size() > 4 ? uri.substr(4) : "")) {
+    if (!o.has_value) throw usage_error("sim turntable: '{}' is not key=value", o.item);
+    const std::string& key = o.key;
+    const double v = number(key, o.value);
     if (key == "steps") c.steps_per_rev = std::uint32_t(v);
     else if (key == "speed") c.speed_deg_s = v;
     else if (key == "backlash") c.backlash_deg = v;
