@@ -66,6 +66,25 @@ Vec3 CellPath::entry_velocity(const Vec3& field) const {
   return dir_ * field;
 }
 
+Vec3 CellPath::entry_field() const {
+  if (rec_.type == CellType::normal_real || rec_.type == CellType::normal_complex) {
+    double dz[3];
+    if (rec_.type == CellType::normal_real) {
+      for (int i = 0; i < 3; ++i) dz[i] = rec_.lam[i] * z0_[i] + rec_.c[i];
+    } else {
+      const double a = rec_.lam[0], b = rec_.lam[1];
+      dz[0] = a * z0_[0] + b * z0_[1] + rec_.c[0];
+      dz[1] = -b * z0_[0] + a * z0_[1] + rec_.c[1];
+      dz[2] = rec_.lam[2] * z0_[2] + rec_.c[2];
+    }
+    const double* S = rec_.S;
+    return {S[0] * dz[0] + S[1] * dz[1] + S[2] * dz[2], S[3] * dz[0] + S[4] * dz[1] + S[5] * dz[2],
+            S[6] * dz[0] + S[7] * dz[1] + S[8] * dz[2]};
+  }
+  if (rec_.type == CellType::parallel) return Vec3(rec_.lam[0], rec_.lam[1], rec_.lam[2]) * s0_;
+  return dir_ * apply_A(x0_) + Vec3(rec_.c[0], rec_.c[1], rec_.c[2]);  // extraordinary: A x0 + b
+}
+
 double CellPath::rate() const {
   switch (rec_.type) {
     case CellType::normal_real:

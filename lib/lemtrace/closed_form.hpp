@@ -30,6 +30,9 @@ class CellPath {
   const Vec3& entry() const noexcept { return x0_; }
   // dx/dtau at the entry from the interpolated field there (parallel cells move along d).
   Vec3 entry_velocity(const Vec3& field) const;
+  // The cell's linear field at the entry, A x0 + b, from the eigen form (normal cells:
+  // S (Lambda z0 + c), no vertex data needed).
+  Vec3 entry_field() const;
   // Largest rate of the cell's dynamics (1/time): bounds the sampling step.
   double rate() const;
   // The derivative along the path of a quantity w that moves with the flow's linear

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace fest::lemtrace {
 namespace {
@@ -17,7 +18,8 @@ struct Sample {
   Vec3 x, v;
 };
 
-Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+template <class Geo>
+Sample sample(const Geo& g, const CellPath& path, double tau, int& evals) {
   Sample s;
   s.tau = tau;
   path.eval(tau, s.x, s.v);
@@ -28,12 +30,14 @@ Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals
 }
 
 // At tau = 0 the closed form is the entry point itself.
-Sample entry_sample(const TetGeometry& g, const CellPath& path, const EntryValues* known) {
+template <class Geo>
+Sample entry_sample(const Geo& g, const CellPath& path, const EntryValues* known) {
   Sample s;
   s.tau = 0;
   s.x = path.entry();
   s.beta = known ? known->beta : g.bary(s.x);
-  s.v = path.entry_velocity(known ? known->field : g.interpolate(s.beta));
+  if constexpr (std::is_same_v<Geo, TetGeometry>) s.v = path.entry_velocity(known ? known->field : g.interpolate(s.beta));
+  else s.v = path.entry_velocity(known ? known->field : path.entry_field());
   s.rate = g.bary_rate(s.v);
   return s;
 }
@@ -62,7 +66,8 @@ double hermite_guess(const Sample& a, const Sample& b, int k) {
   return a.tau + u * h;
 }
 
-Sample refine_root(const TetGeometry& g, const CellPath& path, int k, const Sample& left, const Sample& right,
+template <class Geo>
+Sample refine_root(const Geo& g, const CellPath& path, int k, const Sample& left, const Sample& right,
                    double tol, int& evals) {
   double lo = left.tau, hi = right.tau, flo = left.beta[k], fhi = right.beta[k];
   bool hermite = true;
@@ -109,7 +114,8 @@ Sample refine_root(const TetGeometry& g, const CellPath& path, int k, const Samp
 // beta_k is positive at both ends but its rate turns from negative to positive. Find the
 // minimum of beta_k there (bisection on the rate); if it is negative, the step is cut at
 // that point so that the caller sees the crossing.
-void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
+template <class Geo>
+void dip_below(const Geo& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
   // Rates at round-off of the cell's (a path in a face's plane) cannot take beta_k
   // below -kDetect within a step: no search for them.
   const double tiny = 1e-13 * g.v_max / g.h_min;
@@ -130,7 +136,8 @@ void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, S
   }
 }
 
-ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
+template <class Geo>
+ExitResult finish(const Geo& g, const Sample& at, int face, int evals) {
   ExitResult r;
   r.kind = ExitResult::exit;
   r.tau = at.tau;
@@ -143,11 +150,12 @@ ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
   const double sum = beta.sum();
   if (sum > 0) beta /= sum;
   r.beta = beta;
-  r.x = beta[0] * g.V[0] + beta[1] * g.V[1] + beta[2] * g.V[2] + beta[3] * g.V[3];
+  r.x = g.point(beta);
   return r;
 }
 
-bool validates(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+template <class Geo>
+bool validates(const Geo& g, const CellPath& path, double tau, int& evals) {
   for (double f : {0.25, 0.5, 0.75, 1.0}) {
     ++evals;
     if (g.bary(path.position(f * tau)).minCoeff() < -kValid) return false;
@@ -181,7 +189,8 @@ double quadratic_root(double c, double r, double q) {
 // result is kept only under the bracket search's own safety rules (a step shorter than
 // 0.25 / rate, no other face below zero, no face whose rate turned from negative to
 // positive); otherwise the caller falls back to the bracket search.
-bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& entry, double cap, int& evals,
+template <class Geo>
+bool predicted_exit(const Geo& g, const CellPath& path, const Sample& entry, double cap, int& evals,
                     ExitResult& out) {
   Vec3 a0, j0;
   path.apply_A2(entry.v, a0, j0);
@@ -262,10 +271,8 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
   return false;
 }
 
-}  // namespace
-
-ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params,
-                     const EntryValues* entry) {
+template <class Geo>
+ExitResult find_exit_in(const Geo& g, const CellPath& path, const ExitParams& params, const EntryValues* entry) {
   int evals = 0;
   const double tauT = g.transit_time();
   const double rate = path.rate();
@@ -355,6 +362,22 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
   r.x = prev.x;
   r.evaluations = evals;
   return r;
+}
+
+}  // namespace
+
+double UnitGeometry::transit_time() const {
+  return v_max > 0 ? h_min / v_max : std::numeric_limits<double>::infinity();
+}
+
+ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params,
+                     const EntryValues* entry) {
+  return find_exit_in(g, path, params, entry);
+}
+
+ExitResult find_exit(const UnitGeometry& g, const CellPath& path, const ExitParams& params,
+                     const EntryValues* entry) {
+  return find_exit_in(g, path, params, entry);
 }
 
 }  // namespace fest::lemtrace

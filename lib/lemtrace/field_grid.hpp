@@ -24,7 +24,9 @@ class FieldGrid {
   const TetMesh& mesh() const noexcept { return mesh_; }
   const ClassifyParams& params() const noexcept { return params_; }
   Precompute mode() const noexcept { return mode_; }
-  // The record of a cell; `scratch` holds it when it is not (yet) in the table.
+  // The record of a cell; `scratch` holds it when it is not (yet) in the table. Normal
+  // cells come in the barycentric frame (to_barycentric_frame), the others as classify()
+  // gives them; classify() itself gives the world-frame form of any cell.
   const CellRecord& record(int32_t cell, CellRecord& scratch) const;
   const CellLocator& locator() const;  // built on first use
   double max_speed() const noexcept { return max_speed_; }
