@@ -46,6 +46,33 @@ inline void exp_and_psi(double l, double s, double& e, double& p) {
 
 }  // namespace
 
+void eigen_flow(const CellRecord& r, const double z0[3], double s, double z[3]) {
+  if (r.type == CellType::normal_real) {
+    for (int i = 0; i < 3; ++i) {
+      double e, p;
+      exp_and_psi(r.lam[i], s, e, p);
+      z[i] = e * z0[i] + p * r.c[i];
+    }
+    return;
+  }
+  // As CellPath::eval_impl's normal_complex case.
+  const double a = r.lam[0], b = r.lam[1];
+  double sh, ch;
+  small_sincos(0.5 * b * s, &sh, &ch);
+  const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
+  const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
+  const double ea = 1.0 + em1;
+  const double d11 = em1 * cs - 2.0 * sh * sh;
+  const double d12 = ea * sn;
+  const double inv_n2 = 1.0 / (a * a + b * b);
+  const double p11 = (a * d11 + b * d12) * inv_n2, p12 = (a * d12 - b * d11) * inv_n2;
+  z[0] = ea * (cs * z0[0] + sn * z0[1]) + p11 * r.c[0] + p12 * r.c[1];
+  z[1] = ea * (-sn * z0[0] + cs * z0[1]) - p12 * r.c[0] + p11 * r.c[1];
+  double e3, p3;
+  exp_and_psi(r.lam[2], s, e3, p3);
+  z[2] = e3 * z0[2] + p3 * r.c[2];
+}
+
 CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(record), x0_(x0), dir_(dir) {
   switch (rec_.type) {
     case CellType::normal_real:

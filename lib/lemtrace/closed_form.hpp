@@ -14,6 +14,10 @@ namespace fest::lemtrace {
 // (e^{lambda s} - 1) / lambda, accurate for small lambda s and equal to s at lambda = 0.
 double psi(double lambda, double s);
 
+// The closed form of a normal cell in eigen coordinates: z(s) from z(0) = z0 (s = dir tau),
+// with no change of basis (the caller applies S when it needs a position).
+void eigen_flow(const CellRecord& record, const double z0[3], double s, double z[3]);
+
 class CellPath {
  public:
   CellPath(const CellRecord& record, const Vec3& x0, double dir);

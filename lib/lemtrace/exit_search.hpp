@@ -58,4 +58,13 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
 ExitResult find_exit(const UnitGeometry& g, const CellPath& path, const ExitParams& params,
                      const EntryValues* entry = nullptr);
 
+// The predicted exit (the bracket search's fast path) of a normal cell whose record is in
+// the barycentric frame, done entirely in eigen coordinates: z0 = S_u^{-1} u0, every time
+// derivative is a product with Lambda, and each barycentric coordinate is one row of S_u
+// applied to z (beta_0 = 1 - the sum), so one crossing costs one change of basis in,
+// one closed-form evaluation (no matrix product) and one change of basis out. The rules
+// are those of the general search's prediction; false when it must decide (the caller
+// then runs find_exit on a UnitGeometry). `beta` is the entry point, out.x is u.
+bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta, double dir, ExitResult& out);
+
 }  // namespace fest::lemtrace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <thread>
 
 namespace fest::lemtrace {
@@ -121,47 +122,59 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
       line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
       return;
     }
+    // A precomputed normal cell first tries the predicted exit in eigen coordinates
+    // (no CellPath, no geometry); everything else, and whatever it declines, goes
+    // through the general search below (edge/vertex hops included).
+    ExitResult e;
+    const bool fast = local && o.exit.predict && !o.exit.paper_newton && predicted_exit_local(rec, beta, dir, e);
     const Vec3 pos = local ? Vec3(beta[1], beta[2], beta[3]) : x;
-    const CellPath path(rec, pos, dir);
-    const UnitGeometry ug(local ? rec.tau_bary : 1.0);
-    // The field in the frame of the path (u' for a local cell) and the rate of beta.
-    const Vec3 f = local ? path.entry_field() : v;
-    const Eigen::Vector4d rate = local ? ug.bary_rate(dir * f) : g.bary_rate(dir * v);
-    const double rate_scale = local ? ug.h_min * f.norm() : std::sqrt(speed2) / g.h_min;
-    // On an edge or vertex the path may leave at once through another face of this
-    // cell (the edge/vertex ambiguity rule): hop there without a step.
-    int leave = -1;
-    double most = 0;
-    for (int k = 0; k < 4; ++k) {
-      if (beta[k] <= 1e-13 && rate[k] < -1e-12 * rate_scale && rate[k] < most) {
-        most = rate[k];
-        leave = k;
+    std::optional<CellPath> lazy_path;
+    auto path_of = [&]() -> const CellPath& {
+      if (!lazy_path) lazy_path.emplace(rec, pos, dir);
+      return *lazy_path;
+    };
+    if (!fast) {
+      const CellPath& path = path_of();
+      const UnitGeometry ug(local ? rec.tau_bary : 1.0);
+      // The field in the frame of the path (u' for a local cell) and the rate of beta.
+      const Vec3 f = local ? path.entry_field() : v;
+      const Eigen::Vector4d rate = local ? ug.bary_rate(dir * f) : g.bary_rate(dir * v);
+      const double rate_scale = local ? ug.h_min * f.norm() : std::sqrt(speed2) / g.h_min;
+      // On an edge or vertex the path may leave at once through another face of this
+      // cell (the edge/vertex ambiguity rule): hop there without a step.
+      int leave = -1;
+      double most = 0;
+      for (int k = 0; k < 4; ++k) {
+        if (beta[k] <= 1e-13 && rate[k] < -1e-12 * rate_scale && rate[k] < most) {
+          most = rate[k];
+          leave = k;
+        }
       }
-    }
-    if (leave >= 0 && hops < 16) {
-      const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][leave];
-      if (next < 0) {
-        line.reason = Reason::out_of_domain;
-        return;
+      if (leave >= 0 && hops < 16) {
+        const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][leave];
+        if (next < 0) {
+          line.reason = Reason::out_of_domain;
+          return;
+        }
+        Eigen::Vector4d b = beta;
+        b[leave] = 0;
+        carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], b);
+        have_beta = true;
+        cell = next;
+        ++hops;
+        continue;
       }
-      Eigen::Vector4d b = beta;
-      b[leave] = 0;
-      carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], b);
-      have_beta = true;
-      cell = next;
-      ++hops;
-      continue;
+      const EntryValues entry{beta, f};
+      e = local ? find_exit(ug, path, o.exit, &entry) : find_exit(g, path, o.exit, &entry);
     }
     hops = 0;
 
-    const EntryValues entry{beta, f};
-    const ExitResult e = local ? find_exit(ug, path, o.exit, &entry) : find_exit(g, path, o.exit, &entry);
     const Vec3 e_x = local ? world(e.beta) : e.x;
     ++line.cells;
     line.evaluations += e.evaluations;
     const double elapsed = std::abs(t - t0);
     const double tau = e.tau;
-    auto position = [&](double s) { return local ? world_of_u(path.position(s)) : path.position(s); };
+    auto position = [&](double s) { return local ? world_of_u(path_of().position(s)) : path_of().position(s); };
     if (elapsed + tau > o.max_time) {
       const double rest = o.max_time - elapsed;
       emit(line, position(rest), t + dir * rest, cell, rec.type);
