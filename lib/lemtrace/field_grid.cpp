@@ -31,7 +31,7 @@ FieldGrid::FieldGrid(TetMesh mesh, const ClassifyParams& params, Precompute mode
   computed_ = n;
 }
 
-const CellRecord& FieldGrid::record(int32_t cell, CellRecord& scratch) const {
+const CellRecord& FieldGrid::record_slow(int32_t cell, CellRecord& scratch) const {
   const auto c = static_cast<std::size_t>(cell);
   if (mode_ != Precompute::none && state_[c].load(std::memory_order_acquire) == 2) return table_[c];
   const TetGeometry g = tet_geometry(mesh_, cell);

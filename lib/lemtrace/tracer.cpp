@@ -55,13 +55,11 @@ double terminal_speed(const FieldGrid& grid, const TraceOptions& o) {
 // opposite the face gets 0 (the chapter's C4 face correspondence, found from the four
 // vertex ids instead of stored). No point location and no geometry are needed.
 Eigen::Vector4d across_face(const Tet& from, const Tet& to, const Eigen::Vector4d& beta) {
-  Eigen::Vector4d out = Eigen::Vector4d::Zero();
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i)
-      if (to[j] == from[i]) {
-        out[j] = beta[i];
-        break;
-      }
+  Eigen::Vector4d out;
+  for (int j = 0; j < 4; ++j) {
+    const int32_t id = to[j];
+    out[j] = id == from[0] ? beta[0] : id == from[1] ? beta[1] : id == from[2] ? beta[2] : id == from[3] ? beta[3] : 0.0;
+  }
   const double sum = out.sum();
   if (sum > 0 && sum != 1.0) out /= sum;
   return out;
@@ -232,11 +230,17 @@ struct Sampler {
   // v at x (times dir); false outside the grid.
   bool operator()(const Vec3& x, Vec3& v) {
     ++line.evaluations;
-    const int32_t c = grid.locator().walk(cell, x, &line.locator_calls);
+    // Point location (the walk) is the part of each evaluation that the LEM does not
+    // pay (§9.2.1-9.2.3); its inside test gives the barycentric weights, so the
+    // interpolation itself is four vertex vectors.
+    Eigen::Vector4d beta;
+    const int32_t c = grid.locator().walk(cell, x, &line.locator_calls, &beta);
     if (c < 0) return false;
     cell = c;
-    const TetGeometry g = tet_geometry(grid.mesh(), c);
-    v = dir * g.interpolate(g.bary(x));
+    const TetMesh& mesh = grid.mesh();
+    const Tet& t = mesh.tets[static_cast<std::size_t>(c)];
+    v = dir * (beta[0] * mesh.vectors[static_cast<std::size_t>(t[0])] + beta[1] * mesh.vectors[static_cast<std::size_t>(t[1])] +
+               beta[2] * mesh.vectors[static_cast<std::size_t>(t[2])] + beta[3] * mesh.vectors[static_cast<std::size_t>(t[3])]);
     return v.allFinite();
   }
 };
