@@ -227,6 +227,7 @@ struct Sampler {
   Polyline& line;
   double dir;
   int32_t cell;
+  bool search;  // bin-grid search instead of the neighbour walk
   // v at x (times dir); false outside the grid.
   bool operator()(const Vec3& x, Vec3& v) {
     ++line.evaluations;
@@ -234,7 +235,14 @@ struct Sampler {
     // pay (§9.2.1-9.2.3); its inside test gives the barycentric weights, so the
     // interpolation itself is four vertex vectors.
     Eigen::Vector4d beta;
-    const int32_t c = grid.locator().walk(cell, x, &line.locator_calls, &beta);
+    int32_t c;
+    if (search) {
+      ++line.locator_calls;
+      c = grid.locator().locate(x);
+      if (c >= 0) beta = barycentric(grid.mesh(), c, x);
+    } else {
+      c = grid.locator().walk(cell, x, &line.locator_calls, &beta);
+    }
     if (c < 0) return false;
     cell = c;
     const TetMesh& mesh = grid.mesh();
@@ -248,7 +256,7 @@ struct Sampler {
 void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir, const TraceOptions& o,
               Polyline& line) {
   const double v_stop = terminal_speed(grid, o);
-  Sampler field{grid, line, dir, cell};
+  Sampler field{grid, line, dir, cell, o.rk_cell_search};
   CellRecord scratch;
   Vec3 x = seed;
   double t = t0, length = 0;

@@ -8,6 +8,8 @@
 //   valgrind --tool=callgrind --instr-atstart=no build/bin/bench_lemtrace_steps --repeat 1
 //       the same, and callgrind dumps one profile per method (part names "lem_precomputed",
 //       "euler", ...) whose event totals divided by the steps are the instructions per step
+// euler_cell_search is Euler with a bin-grid cell search per evaluation (the chapter's
+// §9.2.1 loop) instead of the neighbour walk.
 //
 // Each measured section holds the traces only (grid, records and locator are built
 // before; the reference LEM lines that fix the step counts are traced outside).
@@ -78,11 +80,16 @@ int main(int argc, char** argv) {
   const struct {
     const char* name;
     Method method;
-  } cases[] = {{"lem_precomputed", Method::lem}, {"euler", Method::euler}, {"heun", Method::heun},
-               {"rk3", Method::rk3},             {"rk4", Method::rk4}};
+    bool cell_search;
+  } cases[] = {{"lem_precomputed", Method::lem, false}, {"euler", Method::euler, false},
+               {"heun", Method::heun, false},           {"rk3", Method::rk3, false},
+               {"rk4", Method::rk4, false},             {"euler_cell_search", Method::euler, true}};
   for (const auto& c : cases) {
     std::vector<TraceOptions> opts;
-    for (const Polyline& ref : reference) opts.push_back(options_for(c.method, ref));
+    for (const Polyline& ref : reference) {
+      opts.push_back(options_for(c.method, ref));
+      opts.back().rk_cell_search = c.cell_search;
+    }
     int64_t steps = 0, evaluations = 0;
     double max_err = 0, best = 1e300;
     for (int rep = 0; rep < repeat; ++rep) {
