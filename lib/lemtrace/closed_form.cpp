@@ -24,6 +24,13 @@ inline void small_sincos(double t, double* sn, double* cs) {
     return;
   }
   const double u = t * t;
+  if (u <= 1.0 / 256) {
+    // |t| <= 1/16 (one cell's half angle, nearly always): sin to t^9 and cos to t^10
+    // leave out terms below 1e-19 relative.
+    *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880)))));
+    *cs = 1 + u * (-0.5 + u * (1.0 / 24 + u * (-1.0 / 720 + u * (1.0 / 40320 + u * (-1.0 / 3628800)))));
+    return;
+  }
   // Horner in t^2 with the coefficients 1/n! (sin: odd n to 15, cos: even n to 16).
   *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880 + u * (-1.0 / 39916800 +
             u * (1.0 / 6227020800 + u * (-1.0 / 1307674368000))))))));
