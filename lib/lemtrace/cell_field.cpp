@@ -198,7 +198,10 @@ CellRecord to_barycentric_frame(const TetGeometry& g, const CellRecord& world) {
   r.c[0] = c[0], r.c[1] = c[1], r.c[2] = c[2];
   double rate2 = 0;
   for (int k = 0; k < 4; ++k) rate2 = std::max(rate2, (g.G * g.v[k]).squaredNorm());
-  r.tau_bary = rate2 > 0 ? static_cast<float>(1.0 / std::sqrt(rate2)) : std::numeric_limits<float>::infinity();
+  // Clamped into float range: a finite time scale stays finite (only a field of zeros,
+  // which is never a normal cell, has none).
+  r.tau_bary = rate2 > 0 ? static_cast<float>(std::min(1.0 / std::sqrt(rate2), double{std::numeric_limits<float>::max()}))
+                         : std::numeric_limits<float>::infinity();
   r.bary_frame = true;
   return r;
 }
