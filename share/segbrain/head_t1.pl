@@ -35,7 +35,7 @@ label(10, eye, extracranial, [90, 220, 90]).
 
 % Objects that --objects may ask for (the goals below find them).
 known_object(head).  known_object(brain).  known_object(ventricles).  known_object(cerebellum).
-known_object(brainstem).  known_object(eyes).
+known_object(brainstem).  known_object(eyes).  known_object(optic_nerve).
 
 % --- MR physics, T1 (reconstruction) ---
 brighter(t1, fat, white_matter).   brighter(t1, white_matter, gray_matter).
@@ -70,7 +70,7 @@ limit(brain_head_ratio_min, 0.30). limit(brain_head_ratio_max, 0.60).
 
 % --- goals ---
 segment_head :- find_head, find_brain, find_midsagittal, optional(find_eyes), find_ventricles,
-    optional(find_cerebellum), optional(find_brainstem), emit_objects.
+    optional(find_cerebellum), optional(find_brainstem), optional(find_optic_nerves), emit_objects.
 
 % --objects: only the goals the requested objects need; an object asked for by name must
 % be found (no optional/1 here).
@@ -80,7 +80,8 @@ segment_objects(Os) :-
     ( member(O2, [ventricles, cerebellum, brainstem]), memberchk(O2, Os) -> find_ventricles ; true ),
     ( memberchk(cerebellum, Os) -> find_cerebellum ; true ),
     ( memberchk(brainstem, Os) -> find_brainstem ; true ),
-    ( memberchk(eyes, Os) -> find_eyes ; true ),
+    ( member(O3, [eyes, optic_nerve]), memberchk(O3, Os) -> find_eyes ; true ),
+    ( memberchk(optic_nerve, Os) -> find_optic_nerves ; true ),
     emit_objects.
 
 % The plane R = c of greatest left-right symmetry of the brain, kept as a fact for the
@@ -160,6 +161,8 @@ emit_objects :-
     emit(head, 1),
     ( exists(eyes) -> emit(eyes, 10) ; true ),
     ( exists(brain_filled) -> emit_brain ; true ),
+    % The nerves' intracranial part runs under the brain, inside brain_filled.
+    ( exists(optic_nerve) -> emit(optic_nerve, 9) ; true ),
     ( exists(ventricles) -> emit(ventricles, 6) ; true ),
     ( exists(cerebellum) -> emit(cerebellum, 7) ; true ),
     ( exists(brainstem) -> emit(brainstem, 8) ; true ).
@@ -272,3 +275,60 @@ find_eyes :-
 verify_eyes(E) :-
     volume_ml(E, V), limit(eyes_min_ml, Lo), limit(eyes_max_ml, Hi), V >= Lo, V =< Hi,
     components(E, 26, 2).   % the growth steps are 26-neighbours
+
+% Optic nerves (figure 2.1; the chapter's "line-tracking techniques"), a RECONSTRUCTION
+% (spec §2.5): from the posterior pole of each globe to the chiasm, the minimum-cost
+% path on cost = 1 / (0.05 + tubularity), raised where the intensity leaves the nerve
+% window (on T1 the orbital nerve is darker than the fat around it, the cisternal nerve
+% brighter than the CSF around it). The chiasm is not located on its own: each nerve
+% ends where its cheapest path reaches the chiasm zone, a strip about the midsagittal
+% plane behind and above the eyes, and the two ends must meet. The path is thickened to
+% the nerve's radius. Colin27: chiasm about 50 mm behind and 15 mm above the eye centres.
+window(t1, optic_nerve, 0.50, 1.10).
+limit(chiasm_behind_eyes_min_mm, 35).  limit(chiasm_behind_eyes_max_mm, 65).
+limit(chiasm_above_eyes_min_mm, 0).    limit(chiasm_above_eyes_max_mm, 25).
+limit(chiasm_half_width_mm, 2).
+limit(nerve_sigma_mm, 1.5).            limit(nerve_outside_window_penalty, 4).
+limit(nerve_radius_mm, 1.75).
+limit(nerve_min_mm, 35).               limit(nerve_max_mm, 65).
+limit(nerve_ends_apart_max_mm, 10).
+
+find_optic_nerves :-
+    exists(eyes), wm_reference(W), midsagittal_r(Rm),
+    component_centroids(eyes, 26, [Left, Right]),
+    volume_ml(eyes, Ve), Rg is 10 * (3 * Ve / 2 / (4 * pi)) ** (1 / 3),   % globe radius, mm
+    Left = [_, Al, Sl], Right = [_, Ar, Sr], Ae is (Al + Ar) / 2, Se is (Sl + Sr) / 2,
+    limit(chiasm_behind_eyes_min_mm, B0), limit(chiasm_behind_eyes_max_mm, B1),
+    limit(chiasm_above_eyes_min_mm, U0), limit(chiasm_above_eyes_max_mm, U1),
+    limit(chiasm_half_width_mm, Cw),
+    Cr0 is Rm - Cw, Cr1 is Rm + Cw, Ca0 is Ae - B1, Ca1 is Ae - B0, Cs0 is Se + U0, Cs1 is Se + U1,
+    box([Cr0, Cr1, Ca0, Ca1, Cs0, Cs1], chiasm_zone),
+    Left = [Rl, _, _], Right = [Rr, _, _],
+    Nr0 is Rl - 10, Nr1 is Rr + 10, Na0 is Ca0 - 10, Na1 is Ae, Ns0 is Se - 15, Ns1 is Cs1 + 10,
+    box([Nr0, Nr1, Na0, Na1, Ns0, Ns1], nerve_roi),
+    limit(nerve_sigma_mm, Sg), vesselness(t1, Sg, any, nerve_roi, nerve_tubes),
+    window(t1, optic_nerve, L, H), Lo is L * W, Hi is H * W,
+    limit(nerve_outside_window_penalty, P), tracking_cost(nerve_tubes, t1, Lo, Hi, P, nerve_cost),
+    track_optic_nerve(Left, Rg, nerve_cost, chiasm_zone, left_nerve_path),
+    track_optic_nerve(Right, Rg, nerve_cost, chiasm_zone, right_nerve_path),
+    verify_optic_nerves(left_nerve_path, right_nerve_path, Rm),
+    or(left_nerve_path, right_nerve_path, nerve_paths),
+    limit(nerve_radius_mm, Nr), dilate(nerve_paths, Nr, optic_nerve), !.
+
+% From a 2 mm ball at the posterior pole of the globe (centre minus its radius along A).
+track_optic_nerve([R, A, S], Rg, Cost, Zone, Path) :-
+    Ap is A - Rg, ball([R, Ap, S], 2, Pole), line_track(Cost, Pole, Zone, Path).
+
+% Both nerves of plausible length, heading back and towards the midline, meeting at the
+% chiasm.
+verify_optic_nerves(Pl, Pr, Rm) :-
+    limit(nerve_min_mm, L0), limit(nerve_max_mm, L1),
+    path_length_mm(Pl, Ll), Ll >= L0, Ll =< L1,
+    path_length_mm(Pr, Lr), Lr >= L0, Lr =< L1,
+    heads_back_to_midline(Pl, Rm), heads_back_to_midline(Pr, Rm),
+    path_point(Pl, last, [R1, A1, S1]), path_point(Pr, last, [R2, A2, S2]),
+    D is sqrt((R1 - R2) ** 2 + (A1 - A2) ** 2 + (S1 - S2) ** 2),
+    limit(nerve_ends_apart_max_mm, Dm), D =< Dm.
+heads_back_to_midline(P, Rm) :-
+    path_point(P, first, [R0, A0, _]), path_point(P, last, [R1, A1, _]),
+    A1 < A0, abs(R1 - Rm) < abs(R0 - Rm).
