@@ -13,11 +13,14 @@
 
 namespace fest::segbrain {
 
+struct Regions;
+
 struct Object {
   bool is_mask = false;
   Image image;  // when !is_mask
   Mask mask;    // when is_mask
   std::vector<std::size_t> path;  // a tracked line (its mask marks the same voxels), in order
+  std::shared_ptr<const Regions> regions;  // a region division (its mask: the regions' voxels)
 };
 
 struct Emitted {
@@ -46,6 +49,8 @@ class Workspace {
   // (workspace_tracking.cpp); register_operators calls them.
   void register_edge_operators(Engine& engine);
   void register_tracking_operators(Engine& engine);
+  // Region division and aggregation of the edge-based find_brain (workspace_regions.cpp).
+  void register_region_operators(Engine& engine);
 
  private:
   // Creates `out` (an unbound variable gets a fresh atom; a bound atom names it) and

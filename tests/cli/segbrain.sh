@@ -140,6 +140,16 @@ check "verify_head fails first" has_port fail verify_head "$WORK/retry.jsonl"
 check "then a redo" grep -q '"port":"redo"' "$WORK/retry.jsonl"
 check "and the same labels in the end" "$FEST_BIN/fcompare" "$WORK/retry.nii.gz" "$WORK/labels.nii.gz"
 
+case_ "the chapter's edge-based find_brain: Marr-Hildreth edges, regions, aggregation"
+# brain_window=[] leaves the window clause nothing to try, so the edge clause decides.
+run segbrain run "$P" --objects head,brain --set 'brain_window=[]' -o "$WORK/mh.nii.gz" --report "$WORK/mh.json" --trace "$WORK/mh.jsonl"
+expect_status 0
+"$S" eval --ref "$T" --seg "$WORK/mh.nii.gz" --map "brain=2-8" --ref-map "brain=3,6" >"$WORK/mh.tsv"
+check "brain Dice >= 0.97 ($(dice_of brain "$WORK/mh.tsv"))" at_least "$(dice_of brain "$WORK/mh.tsv")" 0.97
+check "trace: marr_hildreth on axial slices" has_port exit "marr_hildreth(t1, 2.0, 0.02, slice(axial)" "$WORK/mh.jsonl"
+check "trace: brain regions aggregated" has_port exit aggregate_all_brain_regions "$WORK/mh.jsonl"
+check "find_brain accepted by the edge clause" test "$(jq -r .accepted_by.aggregate_all_brain_regions "$WORK/mh.json")" != null
+
 case_ "kb-check and ops"
 run segbrain kb-check
 expect_status 0
