@@ -361,6 +361,7 @@ void Workspace::register_operators(Engine& engine) {
   register_edge_operators(engine);
   register_tracking_operators(engine);
   register_region_operators(engine);
+  register_tissue_operators(engine);
 }
 
 std::vector<std::uint16_t> assemble_labels(const Workspace& ws) {

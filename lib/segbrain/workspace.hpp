@@ -51,6 +51,8 @@ class Workspace {
   void register_tracking_operators(Engine& engine);
   // Region division and aggregation of the edge-based find_brain (workspace_regions.cpp).
   void register_region_operators(Engine& engine);
+  // Tissue classes for --tissue (workspace_tissue.cpp).
+  void register_tissue_operators(Engine& engine);
 
  private:
   // Creates `out` (an unbound variable gets a fresh atom; a bound atom names it) and

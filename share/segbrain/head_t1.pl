@@ -38,6 +38,10 @@ known_object(head).  known_object(brain).  known_object(ventricles).  known_obje
 known_object(brainstem).  known_object(eyes).  known_object(optic_nerve).
 
 % --- MR physics, T1 (reconstruction) ---
+% The modalities these rules are written for (--modality checks it; modality/1 holds
+% the one asked for).
+supported_modality(t1).
+modality(t1).
 brighter(t1, fat, white_matter).   brighter(t1, white_matter, gray_matter).
 brighter(t1, gray_matter, csf).    similar(t1, vitreous, csf).
 dark(t1, cortical_bone).           dark(t1, air).
@@ -217,7 +221,22 @@ emit_brain :-
     emit(brain_filled, 3),
     window(t1, csf, A, B), Lo is A * W, Hi is B * W,
     threshold(t1, Lo, Hi, dark), and(dark, brain_filled, inner_csf),
-    emit(inner_csf, 2).
+    emit(inner_csf, 2),
+    ( tissue_classification -> emit_tissue ; true ).
+
+% --tissue (spec §2.6 labels 4 and 5): the brain tissue (brain_filled outside the CSF
+% window, which keeps label 2) split into grey and white matter by two-class k-means of
+% its intensities and nearest mean. Verified by the order of the means (T1: GM < WM) and
+% the white-matter mean near the white-matter reference.
+:- dynamic(tissue_classification/0).
+limit(wm_class_vs_reference_max, 0.25).
+emit_tissue :-
+    wm_reference(W),
+    and_not(brain_filled, inner_csf, brain_tissue),
+    tissue_classes(t1, brain_tissue, 2, [Mg, Mw]), Mg < Mw,
+    D is abs(Mw - W) / W, limit(wm_class_vs_reference_max, Dm), D =< Dm,
+    classify(t1, brain_tissue, [Mg, Mw], 0, gray_matter), classify(t1, brain_tissue, [Mg, Mw], 1, white_matter),
+    emit(gray_matter, 4), emit(white_matter, 5).
 
 % Ventricles: CSF-dark voxels at least D mm inside brain_filled, the components near
 % the brain's centre as cores, grown geodesically by a few mm inside the CSF window

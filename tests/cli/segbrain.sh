@@ -150,6 +150,22 @@ check "trace: marr_hildreth on axial slices" has_port exit "marr_hildreth(t1, 2.
 check "trace: brain regions aggregated" has_port exit aggregate_all_brain_regions "$WORK/mh.jsonl"
 check "find_brain accepted by the edge clause" test "$(jq -r .accepted_by.aggregate_all_brain_regions "$WORK/mh.json")" != null
 
+case_ "--tissue: grey and white matter (labels 4, 5); --modality beyond the KB's is a usage error"
+run segbrain run "$P" --objects head,brain --tissue -o "$WORK/tissue.nii.gz" --report "$WORK/tissue.json"
+expect_status 0
+# The phantom's white matter: the ellipsoid of semi-axes 52, 70, 50 mm less the two
+# ventricles (6, 22, 9 mm): 4/3 pi (52*70*50 - 2*6*22*9) = 752.4 ml.
+wm=$(jq '.objects.white_matter.volume_ml' "$WORK/tissue.json")
+check "white matter within 5 % of the phantom's 752.4 ml ($wm)" awk -v v="$wm" 'BEGIN { exit !(v >= 714.8 && v <= 790.0) }'
+check "grey matter labelled 4" test "$(jq '.objects.gray_matter.label' "$WORK/tissue.json")" = 4
+"$S" eval --ref "$T" --seg "$WORK/tissue.nii.gz" --map "brain=2-8" --ref-map "brain=3,6" >"$WORK/tissue.tsv"
+check "the brain is unchanged by the split (Dice >= 0.97)" at_least "$(dice_of brain "$WORK/tissue.tsv")" 0.97
+run segbrain run "$P" --modality t2
+expect_clean_failure 2 segbrain
+expect_stderr_has "written for t1 only"
+run segbrain run "$P" --modality t1 --objects head -o "$WORK/t1_explicit.nii.gz"
+expect_status 0
+
 case_ "kb-check and ops"
 run segbrain kb-check
 expect_status 0

@@ -1,4 +1,5 @@
-// Region division and aggregation of the edge-based find_brain on hand-made slices: a
+// Region division and aggregation of the edge-based find_brain on hand-made slices (and
+// the tissue classes of --tissue on a two-Gaussian mixture): a
 // "head" square whose border ring is skin, a "brain" square divided by one edge line
 // into two brain-like regions, a dark region beside them; two slices, the upper one
 // shifted by a voxel so propagation needs the overlap rule.
@@ -6,6 +7,9 @@
 
 #include <algorithm>
 
+#include <random>
+
+#include "segbrain/classify.hpp"
 #include "segbrain/regions.hpp"
 
 using namespace fest::segbrain;
@@ -94,4 +98,23 @@ TEST(SegbrainRegions, StartingRegionAndAggregationAcrossSlices) {
       }
   // A window that excludes the brain intensity finds no start.
   EXPECT_EQ(brain_starting_region(s.g, r, s.head, 0, 50, 0.5), 0u);
+}
+
+// Tissue classes (--tissue): two-class k-means of a two-Gaussian mixture finds the two
+// means; nearest-mean labelling splits at their midpoint.
+TEST(SegbrainClassify, KMeansOfTwoGaussiansAndNearestClass) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> gm(80, 4), wm(110, 4);
+  Image img;
+  for (int i = 0; i < 20000; ++i) img.push_back(float(i % 3 == 0 ? gm(rng) : wm(rng)));
+  Mask all(img.size(), 1);
+  auto means = kmeans_1d(img, all, 2);
+  ASSERT_EQ(means.size(), 2u);
+  EXPECT_NEAR(means[0], 80, 0.5);
+  EXPECT_NEAR(means[1], 110, 0.5);
+  Mask low = nearest_class(img, all, means, 0);
+  for (std::size_t i = 0; i < img.size(); ++i) EXPECT_EQ(low[i] != 0, img[i] < 0.5 * (means[0] + means[1]));
+  EXPECT_TRUE(kmeans_1d(img, Mask(img.size(), 0), 2).empty());
+  auto three = kmeans_1d(img, all, 3);
+  EXPECT_TRUE(three[0] < three[1] && three[1] < three[2]);
 }
