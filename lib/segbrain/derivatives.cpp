@@ -41,29 +41,49 @@ std::vector<double> gaussian_derivative_kernel(double sigma_vox, int order) {
 }
 
 Image convolve_axis(const Grid& g, const Image& img, int axis, const std::vector<double>& kernel, int scale_power) {
-  const int r = static_cast<int>(kernel.size() / 2);
-  const std::size_t n = g.n[axis];
-  const std::size_t stride = axis == 0 ? 1 : axis == 1 ? g.n[0] : g.n[0] * g.n[1];
+  const long r = static_cast<long>(kernel.size() / 2);
   const double scale = 1.0 / std::pow(g.spacing[axis], scale_power);
   Image out(img.size());
-  std::vector<double> line(n + 2 * r);
-  // Every line along `axis` starts at a voxel whose coordinate on that axis is 0.
-  for (std::size_t z = 0; z < (axis == 2 ? 1 : g.n[2]); ++z)
-    for (std::size_t y = 0; y < (axis == 1 ? 1 : g.n[1]); ++y)
-      for (std::size_t x = 0; x < (axis == 0 ? 1 : g.n[0]); ++x) {
-        const std::size_t base = g.index(x, y, z);
-        for (std::size_t i = 0; i < n; ++i) line[i + r] = img[base + i * stride];
-        for (int k = 0; k < r; ++k) {
-          line[k] = line[r];
-          line[n + r + k] = line[n + r - 1];
-        }
-        // Correlation with the mirrored kernel is the convolution.
-        for (std::size_t i = 0; i < n; ++i) {
-          double acc = 0;
-          for (int k = -r; k <= r; ++k) acc += kernel[r - k] * line[i + r + k];
-          out[base + i * stride] = static_cast<float>(acc * scale);
-        }
+  if (axis == 0) {
+    const std::size_t n = g.n[0];
+    std::vector<double> line(n + 2 * std::size_t(r));
+    for (std::size_t base = 0; base < img.size(); base += n) {
+      for (std::size_t i = 0; i < n; ++i) line[i + std::size_t(r)] = img[base + i];
+      for (long k = 0; k < r; ++k) {
+        line[std::size_t(k)] = line[std::size_t(r)];
+        line[n + std::size_t(r + k)] = line[n + std::size_t(r) - 1];
       }
+      // Correlation with the mirrored kernel is the convolution.
+      for (std::size_t i = 0; i < n; ++i) {
+        double acc = 0;
+        for (long k = -r; k <= r; ++k) acc += kernel[std::size_t(r - k)] * line[i + std::size_t(r + k)];
+        out[base + i] = static_cast<float>(acc * scale);
+      }
+    }
+    return out;
+  }
+  // Along A or S whole rows (A) or planes (S) are combined at once: the reads stay
+  // contiguous instead of striding through the volume.
+  const std::size_t n = g.n[axis];
+  const std::size_t row = axis == 1 ? g.n[0] : g.n[0] * g.n[1];   // contiguous run
+  const std::size_t outer = axis == 1 ? g.n[2] : 1;                // independent blocks
+  const std::size_t block = row * n;
+  std::vector<double> acc(row);
+  for (std::size_t o = 0; o < outer; ++o) {
+    const float* src = img.data() + o * block;
+    float* dst = out.data() + o * block;
+    for (long i = 0; i < long(n); ++i) {
+      std::fill(acc.begin(), acc.end(), 0.0);
+      for (long k = -r; k <= r; ++k) {
+        const long j = std::clamp(i - k, 0L, long(n) - 1);  // replicated border
+        const double w = kernel[std::size_t(k + r)];
+        const float* s = src + std::size_t(j) * row;
+        for (std::size_t x = 0; x < row; ++x) acc[x] += w * s[x];
+      }
+      float* d = dst + std::size_t(i) * row;
+      for (std::size_t x = 0; x < row; ++x) d[x] = static_cast<float>(acc[x] * scale);
+    }
+  }
   return out;
 }
 

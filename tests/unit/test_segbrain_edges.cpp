@@ -169,3 +169,23 @@ TEST(SegbrainEdges, InPlaneScopeIgnoresChangesAlongS) {
   EXPECT_EQ(in_plane, 0u);
   EXPECT_EQ(volume, 64u);  // one voxel per column
 }
+
+TEST(SegbrainEdges, FirstDerivativesOfARampAlongEachAxis) {
+  // f = 2 R + 3 A - S (mm) on anisotropic voxels: every axis gives its slope per mm, with
+  // the same sign convention (the Hessian's mixed terms rely on it).
+  Grid g = grid(24, 20, 16, 0.8, 1.0, 1.5);
+  Image img(g.size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const double x = double(i % 24) * 0.8, y = double((i / 24) % 20), z = double(i / 480) * 1.5;
+    img[i] = static_cast<float>(2 * x + 3 * y - z);
+  }
+  const bool none[3] = {false, false, false};
+  const int ox[3] = {1, 0, 0}, oy[3] = {0, 1, 0}, oz[3] = {0, 0, 1}, oxy[3] = {1, 1, 0};
+  Image dx = gaussian_derivative(g, img, 1.0, ox, none), dy = gaussian_derivative(g, img, 1.0, oy, none);
+  Image dz = gaussian_derivative(g, img, 1.0, oz, none), dxy = gaussian_derivative(g, img, 1.0, oxy, none);
+  const std::size_t c = g.index(12, 10, 8);
+  EXPECT_NEAR(dx[c], 2.0, 1e-4);
+  EXPECT_NEAR(dy[c], 3.0, 1e-4);
+  EXPECT_NEAR(dz[c], -1.0, 1e-4);
+  EXPECT_NEAR(dxy[c], 0.0, 1e-4);
+}
