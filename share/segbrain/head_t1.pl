@@ -5,11 +5,12 @@
 % other parameters when a check fails. Everything numeric below is a RECONSTRUCTION
 % (specs/segbrain.md §2.5): the chapter gives rules by name, not thresholds.
 %
-% This version ships head, brain, the midsagittal plane, the eyes, the ventricles, the
-% cerebellum and the brainstem. The chapter's edge-based find_brain clause
-% (Marr-Hildreth, region division and aggregation) and the optic nerves are not part of
-% it yet. The eyes are found after the brain (their search region is placed relative to
-% it), so the brain check no_overlap_with_eye_region has no eyes to test against yet.
+% This version ships head, brain (by intensity window and separation, then the
+% chapter's edge-based clause: Marr-Hildreth edges, region division and aggregation),
+% the midsagittal plane, the eyes, the ventricles, the cerebellum, the brainstem, the
+% optic nerves (line tracking) and, with --tissue, grey and white matter. The eyes are
+% found after the brain (their search region is placed relative to it), so the brain
+% check no_overlap_with_eye_region has no eyes to test against yet.
 
 % --- anatomic model (figure 2.2) ---
 part_of(background, image).        part_of(head, image).
