@@ -100,6 +100,9 @@ Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent
                  .first;
       return it->second;
     };
+    // Without --clip every vertex is used: keep them in tile order.
+    if (!extent.clip)
+      for (std::size_t k = 0; k < tri.vertices.size(); ++k) handle(static_cast<int>(k));
     for (const auto& t : tri.triangles) {
       if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
                           tri.vertices[static_cast<std::size_t>(t[2])]}))

@@ -84,7 +84,9 @@ std::string render_png(const Mesh& mesh, const terrainlod::Camera& cam, const Re
         const double w0 = ((sx[1] - px) * (sy[2] - py) - (sx[2] - px) * (sy[1] - py)) / area;
         const double w1 = ((sx[2] - px) * (sy[0] - py) - (sx[0] - px) * (sy[2] - py)) / area;
         const double w2 = 1 - w0 - w1;
-        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+        // A hair of tolerance: a pixel centre on an edge shared by two triangles belongs to
+        // both (the depth test picks one) rather than, by rounding, to neither.
+        if (w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
         // Perspective-correct depth: 1/z is linear in screen space.
         const float z = static_cast<float>(1.0 / (w0 / sz[0] + w1 / sz[1] + w2 / sz[2]));
         float& zb = depth[static_cast<std::size_t>(y) * W + x];
