@@ -42,6 +42,31 @@ check "root = 2 x 2 means of the 2 x 2 means" "$FEST_BIN/fcompare" "$WORK/t000.p
 run terrainlod stats "$WORK/p.tlp"
 check "stats count the texture bytes" jq -e '.totals.texture_bytes > 0 and (.level | map(.bytes.texture) | add) == .totals.texture_bytes' "$out"
 
+case_ "--texture-mip: a prefiltered pyramid gives each level its own image"
+# PREFIX_<k>.png as `resample mip build` names them; here level k is the 2^k box mean, so
+# every tile must come out as with the box filter above.
+for k in 0 1 2; do
+  s=$((1 << k)); ppm $((128 / s)) $((128 / s)) 0 0 $s >"$WORK/mip_$k.ppm"
+  "$FEST_BIN/fconv" "$WORK/mip_$k.ppm" -o "$WORK/mip_$k.png"
+done
+run terrainlod build "$WORK/plane.asc" --tile 32 --texture-mip "$WORK/mip" -o "$WORK/mip.tlp"
+expect_status 0
+run terrainlod decode "$WORK/mip.tlp" --tile 1/0/1 --texture "$WORK/m101.png" -o "$WORK/m101.ply"
+expect_status 0
+check "level-1 tile from mip level 1" "$FEST_BIN/fcompare" "$WORK/m101.png" "$WORK/want101.ppm"
+run terrainlod decode "$WORK/mip.tlp" --tile 0/0/0 --texture "$WORK/m000.png" -o "$WORK/m000.ply"
+check "root from mip level 2" "$FEST_BIN/fcompare" "$WORK/m000.png" "$WORK/want000.ppm"
+run terrainlod decode "$WORK/mip.tlp" --tile 2/1/2 --texture "$WORK/m212.png" -o "$WORK/m212.ply"
+check "leaf from mip level 0" "$FEST_BIN/fcompare" "$WORK/m212.png" "$WORK/want212.ppm"
+cp "$WORK/mip_0.png" "$WORK/badmip_0.png"
+"$FEST_BIN/fconv" "$WORK/want212.ppm" -o "$WORK/badmip_1.png"
+run terrainlod build "$WORK/plane.asc" --tile 32 --texture-mip "$WORK/badmip" -o "$WORK/badmip.tlp"
+expect_clean_failure 3 terrainlod
+expect_stderr_has 'texture pyramid level 1 is 32 x 32 .* each level must halve the previous'
+check "no pyramid written" test ! -e "$WORK/badmip.tlp"
+run terrainlod build "$WORK/plane.asc" --tile 32 --texture hillshade --texture-mip "$WORK/mip" -o "$WORK/x.tlp"
+expect_clean_failure 2 terrainlod
+
 case_ "directory container: pyramid.json + L/X/Y.tlt + L/X/Y.png, read like the archive"
 run terrainlod build "$WORK/plane.asc" --tile 32 --texture "$WORK/tex.ppm" -o "$WORK/pdir"
 expect_status 0

@@ -45,6 +45,7 @@ struct BuildArgs {
   std::string report;
   bool progress = false;
   std::string texture;               // image file, "hillshade", or empty: no textures
+  std::string texture_mip;           // or a prefiltered pyramid PREFIX_<k>.png (resample mip build)
   std::string texture_format = "png";  // png (lossless) or jpeg
   int texture_quality = 90;          // JPEG quality
 };

@@ -48,8 +48,11 @@ int main(int argc, char** argv) {
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
   add_dem_options(b, build.dem);
   b->add_option("-o,--output", build.output, "PYRAMID.tlp archive, or a directory (pyramid.json + L/X/Y.tlt + L/X/Y.png); written atomically")->required();
-  b->add_option("--texture", build.texture,
+  auto* tex_opt = b->add_option("--texture", build.texture,
                 "Texture image covering the DEM (its edges on the outer samples, or one pixel per sample), or 'hillshade'");
+  b->add_option("--texture-mip", build.texture_mip,
+                "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
+      ->excludes(tex_opt);
   b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg")
       ->check(CLI::IsMember({"png", "jpeg"}));
   b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")

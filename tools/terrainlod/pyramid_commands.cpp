@@ -336,9 +336,51 @@ Image read_texture(const std::string& path) {
   }
 }
 
-// Every tile's texture, encoded, in the order of pyr.tiles.
+// A prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, each level about half the
+// previous), as `resample mip build` writes it. Level files are read while they exist.
+std::vector<Image> read_texture_mip(const std::string& prefix) {
+  std::vector<Image> mips;
+  std::error_code ec;
+  for (int k = 0;; ++k) {
+    const std::string png = prefix + "_" + std::to_string(k) + ".png", exr = prefix + "_" + std::to_string(k) + ".exr";
+    if (std::filesystem::exists(png, ec)) {
+      mips.push_back(read_texture(png));
+    } else if (std::filesystem::exists(exr, ec)) {
+      throw bad_input("texture pyramid level {} is floating point; texture tiles are 8-bit: build it from an 8 or 16-bit image ({})", k, exr);
+    } else {
+      break;
+    }
+  }
+  if (mips.empty()) throw io_error("no texture pyramid level {}_0.png", prefix);
+  for (std::size_t k = 1; k < mips.size(); ++k) {
+    const cv::Mat& a = mips[k - 1].pixels;
+    const cv::Mat& b = mips[k].pixels;
+    if (std::abs(b.cols - a.cols / 2) > 1 || std::abs(b.rows - a.rows / 2) > 1 || b.channels() != a.channels())
+      throw bad_input("texture pyramid level {} is {} x {} with {} channels after {} x {} with {}; each level must halve the previous ({}_{}.png)",
+                      k, b.cols, b.rows, b.channels(), a.cols, a.rows, a.channels(), prefix, k);
+  }
+  return mips;
+}
+
+// The canvas of one level from a prefiltered pyramid: its coarsest image that still has a
+// pixel per texel there (the finest, where none has), resampled like a single image with
+// the level's tiles as leaves.
+cv::Mat mip_canvas(const std::vector<Image>& mips, int level, const terrainlod::Pyramid& pyr, int tile, int texels, const LoadedDem& dem) {
+  const int cells = tile << (pyr.levels - level);
+  std::size_t k = 0;
+  while (k + 1 < mips.size() &&
+         static_cast<double>(mips[k + 1].pixels.cols) / (dem.grid.width - 1) * cells / texels >= 1.0 &&
+         static_cast<double>(mips[k + 1].pixels.rows) / (dem.grid.height - 1) * cells / texels >= 1.0)
+    ++k;
+  const cv::Mat& img = mips[k].pixels;
+  terrainlod::TextureLayout lay{level, cells, texels, dem.grid.width, dem.grid.height};
+  return terrainlod::leaf_canvas(img, terrainlod::place_image(img.cols, img.rows, dem.grid.width, dem.grid.height), lay);
+}
+
+// Every tile's texture, encoded, in the order of pyr.tiles. The canvases come from one
+// image (the leaf canvas, box-filtered per level) or from a prefiltered pyramid (`mips`).
 std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const cv::Mat& pixels, terrainlod::ImagePlacement placement,
-                                       const BuildArgs& args, int texels, const LoadedDem& dem) {
+                                       const BuildArgs& args, int texels, const LoadedDem& dem, const std::vector<Image>& mips = {}) {
   terrainlod::TextureLayout lay;
   lay.levels = pyr.levels;
   lay.tile = args.tile;
@@ -351,9 +393,10 @@ std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const cv:
   std::map<terrainlod::TileId, std::size_t> at;
   for (std::size_t i = 0; i < pyr.tiles.size(); ++i) at[pyr.tiles[i].id] = i;
   std::vector<std::string> out(pyr.tiles.size());
-  cv::Mat canvas = terrainlod::leaf_canvas(pixels, placement, lay);
+  cv::Mat canvas = mips.empty() ? terrainlod::leaf_canvas(pixels, placement, lay) : cv::Mat();
   for (int l = pyr.levels; l >= 0; --l) {
-    if (l < pyr.levels) canvas = terrainlod::halve_canvas(canvas);
+    if (!mips.empty()) canvas = mip_canvas(mips, l, pyr, args.tile, texels, dem);
+    else if (l < pyr.levels) canvas = terrainlod::halve_canvas(canvas);
     const auto& lv = pyr.level[static_cast<std::size_t>(l)];
     std::vector<std::pair<terrainlod::TileId, std::size_t>> jobs;
     for (int y = 0; y < lv.tiles_y; ++y)
@@ -406,14 +449,20 @@ int run_build(const BuildArgs& args) {
   const auto t0 = Clock::now();
   // The texture is read before the DEM's work starts, so a bad image costs nothing.
   std::optional<Image> texture_image;
+  std::vector<Image> mips;
   if (!args.texture.empty() && args.texture != "hillshade") texture_image = read_texture(args.texture);
+  if (!args.texture_mip.empty()) {
+    mips = read_texture_mip(args.texture_mip);
+    texture_image = mips[0];
+  }
   const LoadedDem dem = load_dem(args.dem);
   std::optional<terrainlod::ImagePlacement> placement;
+  const std::string texture_name = args.texture_mip.empty() ? args.texture : args.texture_mip + "_0.png";
   if (texture_image) {
     try {
       placement = terrainlod::place_image(texture_image->pixels.cols, texture_image->pixels.rows, dem.grid.width, dem.grid.height);
     } catch (const Error& e) {
-      throw Error(e.status(), fmt::format("{} ({})", e.what(), args.texture));
+      throw Error(e.status(), fmt::format("{} ({})", e.what(), texture_name));
     }
   }
   const double read_ms = ms_since(t0);
@@ -460,17 +509,17 @@ int run_build(const BuildArgs& args) {
   const auto t3 = Clock::now();
   std::vector<std::string> textures;
   std::size_t texture_bytes = 0;
-  if (!args.texture.empty()) {
+  if (!args.texture.empty() || !mips.empty()) {
     const bool hillshade = args.texture == "hillshade";
     const cv::Mat pixels = hillshade ? terrainlod::hillshade_image(dem.grid, dem.dx, dem.dy) : texture_image->pixels;
-    textures = texture_tiles(pyr, pixels, hillshade ? terrainlod::ImagePlacement::samples : *placement, args, texels, dem);
+    textures = texture_tiles(pyr, pixels, hillshade ? terrainlod::ImagePlacement::samples : *placement, args, texels, dem, mips);
     for (const auto& t : textures) texture_bytes += t.size();
     manifest["texture"] = {{"format", args.texture_format},
                            {"texels", texels},
                            {"channels", pixels.channels()},
-                           {"source", hillshade ? "hillshade" : std::filesystem::path(args.texture).filename().string()},
+                           {"source", hillshade ? "hillshade" : std::filesystem::path(texture_name).filename().string()},
                            {"placement", hillshade || *placement == terrainlod::ImagePlacement::samples ? "samples" : "extent"},
-                           {"filter", "2x2 box mean per level"}};
+                           {"filter", mips.empty() ? "2x2 box mean per level" : "prefiltered pyramid (--texture-mip), one level per tile level"}};
     if (args.texture_format == "jpeg") manifest["texture"]["quality"] = args.texture_quality;
   }
   const double texture_ms = ms_since(t3);
