@@ -47,14 +47,35 @@ cv::Mat leaf_canvas(const cv::Mat& image, ImagePlacement placement, const Textur
     cv::copyMakeBorder(image, out, n - ih, 0, 0, n - iw, cv::BORDER_REPLICATE);
     return out;
   }
-  // Image pixel coordinates (centres at integers) of grid point (gx, gy):
-  // px = gx sx + ox, py = (H - 1 - gy) sy + oy.
-  double sx = 1, sy = 1, ox = 0, oy = 0;
+  return leaf_canvas(image, placement_frame(placement, iw, ih, lay), lay);
+}
+
+ImageFrame placement_frame(ImagePlacement placement, int iw, int ih, const TextureLayout& lay) {
+  ImageFrame f;
   if (placement == ImagePlacement::extent) {
-    sx = static_cast<double>(iw) / (lay.width - 1);
-    sy = static_cast<double>(ih) / (lay.height - 1);
-    ox = oy = -0.5;
+    f.sx = static_cast<double>(iw) / (lay.width - 1);
+    f.sy = static_cast<double>(ih) / (lay.height - 1);
+    f.ox = f.oy = -0.5;
   }
+  return f;
+}
+
+ImageFrame georeferenced_frame(const GridGeoreference& dem, const GridGeoreference& img) {
+  ImageFrame f;
+  f.sx = dem.dx / img.dx;
+  f.ox = (dem.origin_x - img.origin_x) / img.dx;
+  f.sy = dem.dy / img.dy;
+  // Image row of the DEM's northern row (gy = H - 1), counted from the image's north.
+  f.oy = (img.height - 1) - (dem.origin_y + (dem.height - 1) * dem.dy - img.origin_y) / img.dy;
+  return f;
+}
+
+cv::Mat leaf_canvas(const cv::Mat& image, const ImageFrame& frame, const TextureLayout& lay) {
+  if (image.empty() || image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3))
+    throw bad_input("texture pixels must be 8-bit grey or RGB");
+  const int n = lay.canvas(lay.levels);
+  const int iw = image.cols, ih = image.rows;
+  double sx = frame.sx, sy = frame.sy, ox = frame.ox, oy = frame.oy;
   const double cells_per_texel = static_cast<double>(lay.tile) / lay.texels;
   cv::Mat src = image;
   // More than one pixel per texel: average areas first, then interpolate.

@@ -39,6 +39,28 @@ enum class ImagePlacement {
 // (W - 1) : (H - 1), to within one pixel (bad_input otherwise, naming both sizes).
 ImagePlacement place_image(int image_width, int image_height, int dem_width, int dem_height);
 
+// Where an image lies on the DEM in general: grid point (gx, gy) (DEM samples, gy from
+// the south) is at image pixel px = gx sx + ox, py = (H - 1 - gy) sy + oy (pixel centres
+// at integers, rows from the north).
+struct ImageFrame {
+  double sx = 1, ox = 0, sy = 1, oy = 0;
+};
+
+// The frame of a placement (above) for an iw x ih image.
+ImageFrame placement_frame(ImagePlacement placement, int image_width, int image_height, const TextureLayout& layout);
+
+// The frame of a georeferenced image on a georeferenced DEM: both given by the centre of
+// their south-west sample/pixel and their spacing (world units, north-up).
+struct GridGeoreference {
+  double origin_x = 0, origin_y = 0, dx = 1, dy = 1;
+  int height = 0;  // rows
+};
+ImageFrame georeferenced_frame(const GridGeoreference& dem, const GridGeoreference& image);
+
+// The leaf canvas for an image in any frame (bilinear, area-averaged first where the image
+// has more pixels than texels, edges replicated outside it).
+cv::Mat leaf_canvas(const cv::Mat& image, const ImageFrame& frame, const TextureLayout& layout);
+
 // The leaf canvas (2^L T square, north row first). Bilinear resampling at the texel
 // centres; where the image has more pixels than texels it is first reduced with area
 // averaging (cv::INTER_AREA), so no level aliases. Outside the DEM (the pyramid's padding)

@@ -42,6 +42,29 @@ check "root = 2 x 2 means of the 2 x 2 means" "$FEST_BIN/fcompare" "$WORK/t000.p
 run terrainlod stats "$WORK/p.tlp"
 check "stats count the texture bytes" jq -e '.totals.texture_bytes > 0 and (.level | map(.bytes.texture) | add) == .totals.texture_bytes' "$out"
 
+case_ "a georeferenced texture (PNG + world file) lies where its georeference says"
+# The ASCII grid's xllcorner 0 is the corner of its south-west cell: sample (0, 0) is at
+# (5, 5), sample (128, 128) at (1285, 1285). Pixel c of the texture above is centred on
+# grid x = c + 0.5, i.e. x = 10 + 10 c; the world file names the centre of the top-left
+# pixel: (10, 1280).
+"$FEST_BIN/fconv" "$WORK/tex.ppm" -o "$WORK/geo.png"
+printf '10\n0\n0\n-10\n10\n1280\n' >"$WORK/geo.pgw"
+run terrainlod build "$WORK/plane.asc" --tile 32 --texture "$WORK/geo.png" -o "$WORK/geo.tlp"
+expect_status 0
+run terrainlod decode "$WORK/geo.tlp" --tile 2/1/2 --texture "$WORK/g212.png" -o "$WORK/g212.ply"
+check "same tile as the image spanning the DEM" "$FEST_BIN/fcompare" "$WORK/g212.png" "$WORK/want212.ppm"
+# One pixel (10 m) further east: every texel takes the pixel one column to the west.
+printf '10\n0\n0\n-10\n20\n1280\n' >"$WORK/geo.pgw"
+run terrainlod build "$WORK/plane.asc" --tile 32 --texture "$WORK/geo.png" -o "$WORK/geo2.tlp"
+expect_status 0
+run terrainlod decode "$WORK/geo2.tlp" --tile 2/1/2 --texture "$WORK/g2.png" -o "$WORK/g2.ply"
+ppm 32 32 31 32 1 >"$WORK/want_shift.ppm"
+check "shifted by one pixel" "$FEST_BIN/fcompare" "$WORK/g2.png" "$WORK/want_shift.ppm"
+printf '10\n0\n0\n-10\n90000\n1280\n' >"$WORK/geo.pgw"
+run terrainlod build "$WORK/plane.asc" --tile 32 --texture "$WORK/geo.png" -o "$WORK/geo3.tlp"
+expect_clean_failure 3 terrainlod
+expect_stderr_has "georeference does not overlap the DEM"
+
 case_ "--texture-mip: a prefiltered pyramid gives each level its own image"
 # PREFIX_<k>.png as `resample mip build` names them; here level k is the 2^k box mean, so
 # every tile must come out as with the box filter above.

@@ -89,6 +89,19 @@ TEST(TerrainTexture, ResamplingReproducesALinearRamp) {
   }
 }
 
+TEST(TerrainTexture, AGeoreferencedImageMapsWorldPositionsToItsPixels) {
+  // DEM: 9 rows, samples at x = 100 + 10 i, y = 200 + 10 j. Image: 5 m pixels, south-west
+  // pixel centred on (90, 190), 40 rows.
+  const ImageFrame f = georeferenced_frame({100, 200, 10, 10, 9}, {90, 190, 5, 5, 40});
+  for (double gx : {0.0, 3.5, 8.0})
+    for (double gy : {0.0, 2.25, 8.0}) {
+      const double x = 100 + 10 * gx, y = 200 + 10 * gy;
+      const double px = (x - 90) / 5, py = 39 - (y - 190) / 5;  // rows from the north
+      EXPECT_NEAR(gx * f.sx + f.ox, px, 1e-12);
+      EXPECT_NEAR((9 - 1 - gy) * f.sy + f.oy, py, 1e-12);
+    }
+}
+
 TEST(TerrainTexture, AnImageOfTheWrongShapeIsBadInput) {
   EXPECT_EQ(place_image(129, 129, 129, 129), ImagePlacement::samples);
   EXPECT_EQ(place_image(256, 128, 129, 65), ImagePlacement::extent);

@@ -380,7 +380,8 @@ cv::Mat mip_canvas(const std::vector<Image>& mips, int level, const terrainlod::
 // Every tile's texture, encoded, in the order of pyr.tiles. The canvases come from one
 // image (the leaf canvas, box-filtered per level) or from a prefiltered pyramid (`mips`).
 std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const cv::Mat& pixels, terrainlod::ImagePlacement placement,
-                                       const BuildArgs& args, int texels, const LoadedDem& dem, const std::vector<Image>& mips = {}) {
+                                       const std::optional<terrainlod::ImageFrame>& georeferenced, const BuildArgs& args,
+                                       int texels, const LoadedDem& dem, const std::vector<Image>& mips) {
   terrainlod::TextureLayout lay;
   lay.levels = pyr.levels;
   lay.tile = args.tile;
@@ -393,7 +394,9 @@ std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const cv:
   std::map<terrainlod::TileId, std::size_t> at;
   for (std::size_t i = 0; i < pyr.tiles.size(); ++i) at[pyr.tiles[i].id] = i;
   std::vector<std::string> out(pyr.tiles.size());
-  cv::Mat canvas = mips.empty() ? terrainlod::leaf_canvas(pixels, placement, lay) : cv::Mat();
+  cv::Mat canvas = !mips.empty()     ? cv::Mat()
+                   : georeferenced ? terrainlod::leaf_canvas(pixels, *georeferenced, lay)
+                                   : terrainlod::leaf_canvas(pixels, placement, lay);
   for (int l = pyr.levels; l >= 0; --l) {
     if (!mips.empty()) canvas = mip_canvas(mips, l, pyr, args.tile, texels, dem);
     else if (l < pyr.levels) canvas = terrainlod::halve_canvas(canvas);
@@ -457,8 +460,28 @@ int run_build(const BuildArgs& args) {
   }
   const LoadedDem dem = load_dem(args.dem);
   std::optional<terrainlod::ImagePlacement> placement;
+  std::optional<terrainlod::ImageFrame> georeferenced;
   const std::string texture_name = args.texture_mip.empty() ? args.texture : args.texture_mip + "_0.png";
-  if (texture_image) {
+  // A georeferenced image (GeoTIFF, or any image with a world file) on a georeferenced DEM
+  // lies where its georeference says, whatever its size.
+  if (texture_image && mips.empty() && !is_stdio(args.texture) && (dem.raster.georeferenced || !args.dem.origin.empty())) {
+    formats::RasterGeoreference g;
+    try {
+      g = formats::read_georeference(args.texture);
+    } catch (const Error& e) {
+      if (e.status() != Status::bad_input) throw;  // GDAL cannot read it: OpenCV did, unplaced
+    }
+    if (g.georeferenced) {
+      const terrainlod::ImageFrame f = terrainlod::georeferenced_frame(
+          {dem.origin_x, dem.origin_y, dem.dx, dem.dy, dem.grid.height}, {g.origin_x, g.origin_y, g.dx, g.dy, g.height});
+      const int iw = texture_image->pixels.cols, ih = texture_image->pixels.rows;
+      const double px0 = f.ox, px1 = (dem.grid.width - 1) * f.sx + f.ox, py0 = f.oy, py1 = (dem.grid.height - 1) * f.sy + f.oy;
+      if (px1 < -0.5 || px0 > iw - 0.5 || py1 < -0.5 || py0 > ih - 0.5)
+        throw bad_input("texture's georeference does not overlap the DEM ({})", args.texture);
+      georeferenced = f;
+    }
+  }
+  if (texture_image && !georeferenced) {
     try {
       placement = terrainlod::place_image(texture_image->pixels.cols, texture_image->pixels.rows, dem.grid.width, dem.grid.height);
     } catch (const Error& e) {
@@ -512,13 +535,15 @@ int run_build(const BuildArgs& args) {
   if (!args.texture.empty() || !mips.empty()) {
     const bool hillshade = args.texture == "hillshade";
     const cv::Mat pixels = hillshade ? terrainlod::hillshade_image(dem.grid, dem.dx, dem.dy) : texture_image->pixels;
-    textures = texture_tiles(pyr, pixels, hillshade ? terrainlod::ImagePlacement::samples : *placement, args, texels, dem, mips);
+    textures = texture_tiles(pyr, pixels, hillshade || !placement ? terrainlod::ImagePlacement::samples : *placement, georeferenced,
+                             args, texels, dem, mips);
     for (const auto& t : textures) texture_bytes += t.size();
     manifest["texture"] = {{"format", args.texture_format},
                            {"texels", texels},
                            {"channels", pixels.channels()},
                            {"source", hillshade ? "hillshade" : std::filesystem::path(texture_name).filename().string()},
-                           {"placement", hillshade || *placement == terrainlod::ImagePlacement::samples ? "samples" : "extent"},
+                           {"placement", georeferenced ? "georeferenced"
+                                         : hillshade || *placement == terrainlod::ImagePlacement::samples ? "samples" : "extent"},
                            {"filter", mips.empty() ? "2x2 box mean per level" : "prefiltered pyramid (--texture-mip), one level per tile level"}};
     if (args.texture_format == "jpeg") manifest["texture"]["quality"] = args.texture_quality;
   }
