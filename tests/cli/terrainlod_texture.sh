@@ -98,7 +98,12 @@ check "manifest names the textures" jq -e '.texture.format == "png" and .texture
 check "same texture bytes as the archive" cmp -s "$WORK/pdir/2/1/2.png" "$WORK/t212.png"
 run terrainlod verify "$WORK/pdir" --cameras 3
 expect_status 0
-expect_json '[.ok, .tiles]' '[true,21]'
+expect_json '[.ok, .tiles, .bad_textures]' '[true,21,0]'
+cp -r "$WORK/pdir" "$WORK/garbled"
+printf 'not a png' >"$WORK/garbled/1/1/0.png"
+run terrainlod verify "$WORK/garbled" --cameras 0
+expect_status 1
+expect_json '[.ok, .bad_textures]' '[false,1]'
 printf '{"eye": [300, -200, 500], "target": [640, 640, 0], "fovy_deg": 60, "width": 160, "height": 120, "tau_px": 1}\n' >"$WORK/cam.json"
 run terrainlod extract "$WORK/p.tlp" --camera "$WORK/cam.json" -o "$WORK/a.ply" --atlas "$WORK/a_atlas.png" --png "$WORK/a.png"
 expect_status 0

@@ -876,6 +876,21 @@ int run_verify(const VerifyArgs& args) {
   j["tiles"] = pyr.index().size();
   j["reencode_mismatches"] = reencode_mismatch;
   ok = ok && reencode_mismatch == 0;
+  // Texture tiles: every one decodes to T x T 8-bit pixels.
+  if (pyr.textured()) {
+    std::size_t bad_textures = 0;
+    for (const auto& e : pyr.index()) {
+      try {
+        decode_texture(pyr, e.id);
+      } catch (const Error&) {
+        ++bad_textures;
+      }
+    }
+    j["bad_textures"] = bad_textures;
+    ok = ok && bad_textures == 0;
+  } else {
+    j["bad_textures"] = nullptr;
+  }
   if (ref) {
     j["triangulations_checked"] = triangulations;
     j["tiles_over_bound"] = over;
