@@ -123,6 +123,28 @@ DemRaster read_gdal(const std::string& path, const std::string& bytes) {
 
 }  // namespace
 
+RasterGeoreference read_georeference(const std::string& path) {
+  read_input(path);  // the usual I/O errors (missing, unreadable) before GDAL's own
+  QuietGdal quiet;
+  GDALDatasetH ds = GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
+  if (!ds) throw bad_input("not a raster that GDAL can read: {} ({})", QuietGdal::last("unrecognised format"), path);
+  RasterGeoreference g;
+  g.width = GDALGetRasterXSize(ds);
+  g.height = GDALGetRasterYSize(ds);
+  double gt[6];
+  const bool has = GDALGetGeoTransform(ds, gt) == CE_None;
+  GDALClose(ds);
+  if (!has) return g;
+  if (gt[2] != 0 || gt[4] != 0) throw bad_input("georeference is rotated; north-up rasters only ({})", path);
+  if (gt[1] <= 0 || gt[5] >= 0) throw bad_input("georeference is not north-up with columns running east ({})", path);
+  g.georeferenced = true;
+  g.dx = gt[1];
+  g.dy = -gt[5];
+  g.origin_x = gt[0] + 0.5 * gt[1];
+  g.origin_y = gt[3] + (g.height - 0.5) * gt[5];
+  return g;
+}
+
 DemRaster read_dem(const std::string& path, std::optional<double> nodata) {
   const std::string bytes = read_input(path);
   auto where = [&](const Error& e) { return Error(e.status(), with_location(e.what(), is_stdio(path) ? "-" : path)); };

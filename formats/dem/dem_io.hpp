@@ -34,6 +34,19 @@ struct DemRaster {
 // georeference, an unknown format); messages name `path`.
 DemRaster read_dem(const std::string& path, std::optional<double> nodata = std::nullopt);
 
+// The georeference of any raster GDAL opens, whatever its bands (an orthophoto to drape
+// over a DEM): same convention as DemRaster (centre of the south-west pixel, positive
+// spacing); `georeferenced` false when the file (or its world file) has none. Throws
+// Status::io when the file cannot be read, Status::bad_input for what GDAL cannot open and
+// for rotated or flipped georeferences.
+struct RasterGeoreference {
+  bool georeferenced = false;
+  int width = 0, height = 0;
+  double origin_x = 0, origin_y = 0;
+  double dx = 1, dy = 1;
+};
+RasterGeoreference read_georeference(const std::string& path);
+
 // The .npy reader on its own (tests): little-endian or byte-order-free integers
 // (u1, i1, i2, u2, i4, u4) and floats (f4, f8), C order, two dimensions.
 DemRaster read_npy(std::string_view bytes);

@@ -125,8 +125,11 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
       // No compression for float: OpenCV would otherwise pick lossy SGILOG for RGB float.
       return encode_with_opencv(m, ".tiff", {cv::IMWRITE_TIFF_COMPRESSION, integer ? 5 /* LZW */ : 1 /* none */});
     case Format::jpeg:
-      // Lossy compression has no place in a measurement pipeline (specs/capture.md §2.5).
-      refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
+      // Lossy compression has no place in a measurement pipeline (specs/capture.md §2.5);
+      // only a caller that asks for a quality gets it (texture tiles for display).
+      if (options.jpeg_quality <= 0) refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
+      if (depth != CV_8U || (channels != 1 && channels != 3)) refuse(m, format, "JPEG holds 8-bit grey or RGB");
+      return encode_with_opencv(m, ".jpg", {cv::IMWRITE_JPEG_QUALITY, std::clamp(options.jpeg_quality, 1, 100)});
     default:
       throw bad_input("cannot write an image as {}", format_name_of(format));
   }

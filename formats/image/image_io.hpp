@@ -1,5 +1,6 @@
 #pragma once
-// Images: PNG, PGM/PPM/PAM (8/16-bit), PFM, EXR, TIFF; JPEG (8-bit) for reading only.
+// Images: PNG, PGM/PPM/PAM (8/16-bit), PFM, EXR, TIFF; JPEG (8-bit) for reading, and for
+// writing only when asked for by ImageWriteOptions::jpeg_quality.
 
 #include <string>
 #include <string_view>
@@ -24,6 +25,7 @@ struct ImageWriteOptions {
   bool exr_half = false;   // EXR: 16-bit half channels instead of 32-bit float
   int png_compression = 6; // PNG: zlib level 0-9 (1: several times faster, e.g. capture's raw shots)
   bool png_huffman_only = false;  // PNG: zlib Huffman coding only (noisy raw data: faster and smaller)
+  int jpeg_quality = 0;    // JPEG: 1-100 opts in to lossy output (terrainlod's texture tiles); 0 refuses JPEG
 };
 
 // Reads only the header (dimensions, channels, depth) and checks it is plausible:

@@ -126,6 +126,7 @@ Selection select_tiles(const PyramidLayout& L, const Camera& camera,
   }
   // Closing: a leaf whose neighbouring area is covered by a leaf two or more levels
   // coarser splits that leaf (its children are drawn with the parent's texture).
+  std::map<TileId, TileId> texture_of;  // closing-only leaf -> the chosen ancestor
   std::vector<TileId> work;
   for (const auto& [t, c] : leaves) work.push_back(t);
   while (!work.empty()) {
@@ -137,12 +138,14 @@ Selection select_tiles(const PyramidLayout& L, const Camera& camera,
       if (!L.exists(a)) continue;
       while (a.level > 0 && !leaves.count(a)) a = parent(a);
       if (!leaves.count(a) || a.level >= t.level - 1) continue;
+      const TileId source = leaves[a] ? texture_of[a] : a;
       leaves.erase(a);
       inner.insert(a);
       for (int k = 0; k < 4; ++k) {
         const TileId ch{a.level + 1, 2 * a.x + (k & 1), 2 * a.y + (k >> 1)};
         if (!L.exists(ch)) continue;
         leaves[ch] = true;
+        texture_of[ch] = source;
         work.push_back(ch);
       }
       work.push_back(t);
@@ -150,7 +153,7 @@ Selection select_tiles(const PyramidLayout& L, const Camera& camera,
     }
   }
   for (const auto& [t, closing] : leaves) {
-    SelectedTile s{t, 0, closing};
+    SelectedTile s{t, 0, closing, closing ? texture_of.at(t) : t};
     for (int side = kWest; side <= kNorth; ++side)
       if (inner.count(neighbour(t, side))) s.mask |= 1u << side;
     sel.tiles.push_back(s);

@@ -43,6 +43,10 @@ struct SelectedTile {
   TileId id;
   unsigned mask = 0;          // bit per Side: that neighbour is one level finer
   bool closing_only = false;  // split only to close the quadtree
+  // The tile whose texture it is drawn with: itself, or for a closing-only tile the
+  // ancestor the distance rule chose (seed footnote 3: the parent's texture, mapped to
+  // the sub-square).
+  TileId texture;
 };
 
 struct Selection {

@@ -103,9 +103,13 @@ bad 3 'all samples are nodata' build "$WORK/none.asc" -o "$WORK/out.tlp"
 printf 'Pf\n2 2\n-1.0\n\x00\x00\x80\x3f\x00\x00\xc0\x7f\x00\x00\x40\x40\x00\x00\x80\x40' >"$WORK/nan.pfm"
 bad 3 'NaN height' build "$WORK/nan.pfm" -o "$WORK/out.tlp"
 
-case_ "build: tile size not a power of two, output not .tlp"
+case_ "build: tile size not a power of two, a directory pyramid over a file"
 bad 2 '--tile must be a power of two between 4 and 4096 \(got 48\)' build "$WORK/plane.asc" --tile 48 -o "$WORK/out.tlp"
-bad 2 'name the output \*.tlp' build "$WORK/plane.asc" -o "$WORK/out.ply"
+printf 'keep me\n' >"$WORK/notes.txt"
+run terrainlod build "$WORK/plane.asc" -o "$WORK/notes.txt"
+expect_clean_failure 4 terrainlod
+expect_stderr_has 'exists and is not a pyramid directory'
+check "the file is untouched" grep -q 'keep me' "$WORK/notes.txt"
 
 case_ "truncated pyramid, bad magic"
 size=$(stat -c %s "$WORK/bumps.tlp")

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
@@ -98,8 +99,10 @@ int run_simplify(const SimplifyArgs& args) {
 int run_stats(const StatsArgs& args) {
   // A pyramid archive gets its own statistics; anything else is read as a DEM.
   if (!is_stdio(args.dem.path)) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(args.dem.path, ec)) return run_pyramid_stats(args.dem.path);
     std::string head = read_input(args.dem.path);
-    if (head.size() >= 4 && head.compare(0, 4, "FTLP") == 0) return run_pyramid_stats(args.dem.path, head);
+    if (head.size() >= 4 && head.compare(0, 4, "FTLP") == 0) return run_pyramid_stats(args.dem.path);
   }
   terrainlod::PyramidParams params;
   params.tile = args.tile;

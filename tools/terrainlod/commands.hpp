@@ -44,6 +44,10 @@ struct BuildArgs {
   int threads = 0;
   std::string report;
   bool progress = false;
+  std::string texture;               // image file, "hillshade", or empty: no textures
+  std::string texture_mip;           // or a prefiltered pyramid PREFIX_<k>.png (resample mip build)
+  std::string texture_format = "png";  // png (lossless) or jpeg
+  int texture_quality = 90;          // JPEG quality
 };
 
 struct DecodeArgs {
@@ -52,6 +56,7 @@ struct DecodeArgs {
   int mask = 0;
   std::string output = "-";
   std::string to;
+  std::string texture;    // also write the tile's stored texture image here
 };
 
 struct ExtractArgs {
@@ -62,7 +67,9 @@ struct ExtractArgs {
   std::string to;
   double tau = 0;         // 0 = the camera's tau_px (default 1)
   std::string report;
-  std::string png;        // software rendering of the mesh, tiles coloured by level
+  std::string png;        // software rendering of the mesh, textured or tiles coloured by level
+  bool clip = false;      // drop triangles entirely outside the DEM (in the padding)
+  std::string atlas;      // one texture atlas for all drawn tiles (texture coordinates into it)
 };
 
 struct VerifyArgs {
@@ -84,7 +91,7 @@ int run_decode(const DecodeArgs& args);
 int run_extract(const ExtractArgs& args);
 int run_verify(const VerifyArgs& args);
 // `stats` on a pyramid archive (run_stats hands over when the input is one).
-int run_pyramid_stats(const std::string& path, const std::string& bytes);
+int run_pyramid_stats(const std::string& path);
 int run_stats(const StatsArgs& args);
 
 }  // namespace fest::terrainlod_tool

@@ -47,7 +47,16 @@ int main(int argc, char** argv) {
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
   add_dem_options(b, build.dem);
-  b->add_option("-o,--output", build.output, "Pyramid archive PYRAMID.tlp (written atomically)")->required();
+  b->add_option("-o,--output", build.output, "PYRAMID.tlp archive, or a directory (pyramid.json + L/X/Y.tlt + L/X/Y.png); written atomically")->required();
+  auto* tex_opt = b->add_option("--texture", build.texture,
+                "Texture image covering the DEM (its edges on the outer samples, or one pixel per sample), or 'hillshade'");
+  b->add_option("--texture-mip", build.texture_mip,
+                "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
+      ->excludes(tex_opt);
+  b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg")
+      ->check(CLI::IsMember({"png", "jpeg"}));
+  b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")
+      ->check(CLI::Range(1, 100));
   b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
   b->add_option("--texels", build.texels, "Texels per tile side T (power of two >= B; default B)");
   b->add_option("--error-fraction", build.error_fraction, "Allowed error per tile in texels (f)");
@@ -60,15 +69,16 @@ int main(int argc, char** argv) {
 
   DecodeArgs decode;
   auto* d = app.add_subcommand("decode", "Decode one tile for a neighbour mask to a mesh");
-  d->add_option("pyramid", decode.pyramid, "Pyramid archive (.tlp)")->required();
+  d->add_option("pyramid", decode.pyramid, "Pyramid archive (.tlp) or directory")->required();
   d->add_option("--tile", decode.tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
   d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer");
   d->add_option("-o,--output", decode.output, "Mesh file; - = standard output (PLY)");
   d->add_option("--to", decode.to, "Output format: ply, obj, off, stl or drc");
+  d->add_option("--texture", decode.texture, "Also write the tile's texture, as stored (PNG or JPEG)");
 
   ExtractArgs extract;
   auto* x = app.add_subcommand("extract", "The crack-free mesh a camera needs (view-dependent level of detail)");
-  x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp)")->required();
+  x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp) or directory")->required();
   auto* cam_opt = x->add_option("--camera", extract.camera, "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px");
   auto* path_opt = x->add_option("--path", extract.path,
                                  "Camera path: JSON lines, one camera per frame (-o and --png then take a %d / %04d pattern)");
@@ -78,11 +88,13 @@ int main(int argc, char** argv) {
   x->add_option("--to", extract.to, "Output format: ply, obj, off, stl or drc");
   x->add_option("--tau", extract.tau, "Pixels per texel threshold (overrides the camera's tau_px)");
   x->add_option("--report", extract.report, "JSON report: tiles per level, triangles, bytes touched, times");
-  x->add_option("--png", extract.png, "Also render the mesh as the camera sees it (tiles coloured by level)");
+  x->add_option("--png", extract.png, "Also render the mesh as the camera sees it (textured, or tiles coloured by level)");
+  x->add_flag("--clip", extract.clip, "Drop triangles entirely outside the DEM (in the pyramid's padding)");
+  x->add_option("--atlas", extract.atlas, "Pack the drawn tiles' textures into one PNG; texture coordinates point into it");
 
   VerifyArgs verify;
   auto* v = app.add_subcommand("verify", "Check a pyramid: decoding, the error bound of every transition, cracks");
-  v->add_option("pyramid", verify.pyramid, "Pyramid archive (.tlp)")->required();
+  v->add_option("pyramid", verify.pyramid, "Pyramid archive (.tlp) or directory")->required();
   v->add_option("--dem", verify.dem.path, "The DEM it was built from: check every triangulation within 4/3 eps");
   v->add_option("--cell-size", verify.dem.cell_size, "As for build");
   v->add_option("--origin", verify.dem.origin, "As for build");
@@ -94,7 +106,7 @@ int main(int argc, char** argv) {
 
   ExportQmArgs qm;
   auto* q = app.add_subcommand("export-qm", "Cesium quantized-mesh-1.0 tiles (base triangulations) and layer.json");
-  q->add_option("pyramid", qm.pyramid, "Pyramid archive (.tlp)")->required();
+  q->add_option("pyramid", qm.pyramid, "Pyramid archive (.tlp) or directory")->required();
   q->add_option("-o,--output", qm.output, "Output directory (new or empty; written completely or not at all)")->required();
 
   StatsArgs stats;

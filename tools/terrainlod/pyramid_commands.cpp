@@ -1,6 +1,7 @@
 // build, decode, extract, verify and stats of a pyramid: formats/dem -> lib/terrainlod ->
 // the .tlp archive (pyramid_file) -> formats/mesh, JSON.
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,10 @@
 #include <cstdio>
 #include <unistd.h>
 #include <map>
+#include <atomic>
+#include <optional>
+#include <thread>
+#include <mutex>
 #include <random>
 #include <set>
 #include <sstream>
@@ -31,7 +36,9 @@
 #include "terrainlod/extract.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/quantized_mesh.hpp"
+#include "terrainlod/texture_pyramid.hpp"
 #include "terrainlod/tile_codec.hpp"
+#include "formats/image/image_io.hpp"
 
 namespace fest::terrainlod_tool {
 namespace {
@@ -48,9 +55,7 @@ formats::OutputFormat mesh_output(const std::string& path, const std::string& to
   return out;
 }
 
-PyramidFile open_pyramid(const std::string& path) {
-  return PyramidFile(read_input(path), is_stdio(path) ? "-" : path);
-}
+PyramidFile open_pyramid(const std::string& path) { return PyramidFile::open(path); }
 
 // Level colours for the meshes and renderings (coarse = blue ... fine = red).
 OpenMesh::Vec3uc level_colour(int level, int levels) {
@@ -60,31 +65,187 @@ OpenMesh::Vec3uc level_colour(int level, int levels) {
   return {palette[k][0], palette[k][1], palette[k][2]};
 }
 
+// --clip: a triangle entirely in the padding east or north of the DEM (every vertex on or
+// beyond the last sample column, or row) covers nothing of the DEM.
+struct Extent {
+  std::int64_t last_x = 0, last_y = 0;  // grid index of the last sample column and row
+  bool clip = false;
+  bool outside(const std::array<terrainlod::TileTriangulation::Vertex, 3>& v) const {
+    return clip && ((v[0].gx >= last_x && v[1].gx >= last_x && v[2].gx >= last_x) ||
+                    (v[0].gy >= last_y && v[1].gy >= last_y && v[2].gy >= last_y));
+  }
+};
+
+Extent extent_of(const PyramidFile& pyr, bool clip) {
+  return {pyr.manifest().at("width").get<std::int64_t>() - 1, pyr.manifest().at("height").get<std::int64_t>() - 1, clip};
+}
+
+using Parts = std::vector<std::pair<terrainlod::TileId, terrainlod::TileTriangulation>>;
+
 // Triangulations of several tiles -> one mesh in world coordinates; vertices shared by
 // tiles (exactly equal grid position and height) become one vertex, so a crack-free
 // selection gives a connected mesh. Faces coloured by level.
-Mesh world_mesh(const PyramidFile& pyr, const std::vector<std::pair<terrainlod::TileId, terrainlod::TileTriangulation>>& parts) {
+Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent = {}) {
   const auto& L = pyr.layout();
   Mesh mesh;
   mesh.request_face_colors();
   std::map<terrainlod::TileTriangulation::Vertex, Mesh::VertexHandle> ids;
   for (const auto& [id, tri] : parts) {
-    std::vector<Mesh::VertexHandle> handles;
-    for (const auto& v : tri.vertices) {
+    auto handle = [&](int k) {
+      const auto& v = tri.vertices[static_cast<std::size_t>(k)];
       auto it = ids.find(v);
       if (it == ids.end())
         it = ids.emplace(v, mesh.add_vertex(Mesh::Point(L.origin_x + static_cast<double>(v.gx) * L.dx,
                                                         L.origin_y + static_cast<double>(v.gy) * L.dy, v.z)))
                  .first;
-      handles.push_back(it->second);
-    }
+      return it->second;
+    };
+    // Without --clip every vertex is used: keep them in tile order.
+    if (!extent.clip)
+      for (std::size_t k = 0; k < tri.vertices.size(); ++k) handle(static_cast<int>(k));
     for (const auto& t : tri.triangles) {
-      const auto f = mesh.add_face(handles[static_cast<std::size_t>(t[0])], handles[static_cast<std::size_t>(t[1])],
-                                   handles[static_cast<std::size_t>(t[2])]);
+      if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+                          tri.vertices[static_cast<std::size_t>(t[2])]}))
+        continue;
+      const auto f = mesh.add_face(handle(t[0]), handle(t[1]), handle(t[2]));
       if (f.is_valid()) mesh.set_color(f, level_colour(id.level, L.levels));
     }
   }
   return mesh;
+}
+
+// A textured view: every tile keeps its own vertices (a vertex on a tile border has a
+// different texture coordinate in each tile), with (u, v) in the texture of the tile it
+// is drawn with -- its own, or for a closing-only tile the chosen ancestor's, mapped to
+// the sub-square (seed footnote 3). Faces in tile order, coloured by level.
+struct TexturedMesh {
+  Mesh mesh;
+  std::vector<terrainlod::TileId> sources;  // texture tiles used, sorted
+  std::vector<int> face_source;              // per face: index into sources
+  std::vector<std::string> face_material;    // OBJ output: per face
+  std::string mtllib;
+};
+
+TexturedMesh textured_mesh(const PyramidFile& pyr, const terrainlod::Selection& sel, const Parts& parts, const Extent& extent) {
+  const auto& L = pyr.layout();
+  TexturedMesh out;
+  out.mesh.request_face_colors();
+  out.mesh.request_vertex_texcoords2D();
+  std::map<terrainlod::TileId, terrainlod::TileId> source_of;
+  for (const auto& s : sel.tiles) source_of[s.id] = s.texture;
+  for (const auto& [id, src] : source_of) out.sources.push_back(src);
+  std::sort(out.sources.begin(), out.sources.end());
+  out.sources.erase(std::unique(out.sources.begin(), out.sources.end()), out.sources.end());
+  for (const auto& [id, tri] : parts) {
+    const terrainlod::TileId src = source_of.at(id);  // parts are the selection's tiles
+    const int k = static_cast<int>(std::lower_bound(out.sources.begin(), out.sources.end(), src) - out.sources.begin());
+    // Texture coordinates in the source tile: the tile's own square is the sub-square
+    // (ox, oy) of 2^d x 2^d in its ancestor d levels up.
+    const int d = id.level - src.level;
+    const double cells = L.cells[static_cast<std::size_t>(id.level)], parts_per_side = std::ldexp(1.0, d);
+    const double ox = id.x - static_cast<double>(src.x) * parts_per_side, oy = id.y - static_cast<double>(src.y) * parts_per_side;
+    std::vector<Mesh::VertexHandle> handles(tri.vertices.size());
+    for (const auto& t : tri.triangles) {
+      if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+                          tri.vertices[static_cast<std::size_t>(t[2])]}))
+        continue;
+      for (int c = 0; c < 3; ++c) {
+        auto& h = handles[static_cast<std::size_t>(t[c])];
+        if (h.is_valid()) continue;
+        const auto& v = tri.vertices[static_cast<std::size_t>(t[c])];
+        h = out.mesh.add_vertex(Mesh::Point(L.origin_x + static_cast<double>(v.gx) * L.dx, L.origin_y + static_cast<double>(v.gy) * L.dy, v.z));
+        const double u = (ox + (static_cast<double>(v.gx) - id.x * cells) / cells) / parts_per_side;
+        const double w = (oy + (static_cast<double>(v.gy) - id.y * cells) / cells) / parts_per_side;
+        out.mesh.set_texcoord2D(h, Mesh::TexCoord2D(static_cast<float>(u), static_cast<float>(w)));
+      }
+      const auto f = out.mesh.add_face(handles[static_cast<std::size_t>(t[0])], handles[static_cast<std::size_t>(t[1])],
+                                       handles[static_cast<std::size_t>(t[2])]);
+      if (!f.is_valid()) continue;
+      out.mesh.set_color(f, level_colour(id.level, L.levels));
+      out.face_source.push_back(k);
+    }
+  }
+  return out;
+}
+
+cv::Mat decode_texture(PyramidFile& pyr, const terrainlod::TileId& id) {
+  const std::string_view bytes = pyr.texture_bytes(id);
+  Image img;
+  try {
+    img = formats::read_image(bytes, pyr.texture_extension() == "png" ? formats::Format::png : formats::Format::jpeg);
+  } catch (const Error& e) {
+    throw bad_input("texture of tile {}/{}/{}: {} ({})", id.level, id.x, id.y, e.what(), pyr.name());
+  }
+  const int T = pyr.layout().texels;
+  if (img.pixels.cols != T || img.pixels.rows != T || img.pixels.depth() != CV_8U ||
+      (img.pixels.channels() != 1 && img.pixels.channels() != 3))
+    throw bad_input("texture of tile {}/{}/{} is {} x {} pixels with {} channels; the pyramid has {} x {} 8-bit grey or RGB ({})",
+                    id.level, id.x, id.y, img.pixels.cols, img.pixels.rows, img.pixels.channels(), T, T, pyr.name());
+  return img.pixels;
+}
+
+// One atlas for the textures of a view: a grid of (T + 2)-texel cells, each texture with a
+// one-texel border of its own edge texels, so bilinear filtering at a tile's edge does not
+// bleed in the neighbouring cell. Returns the atlas; `cells` receives each texture's
+// (x0, y0) texel offset (top-left of the T x T square, rows from the top).
+cv::Mat make_atlas(const std::vector<cv::Mat>& images, int T, std::vector<std::array<int, 2>>& cells) {
+  const int n = static_cast<int>(images.size());
+  const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
+  const int rows = std::max(1, (n + cols - 1) / cols);
+  const int type = images.empty() ? CV_8UC3 : images[0].type();
+  cv::Mat atlas(rows * (T + 2), cols * (T + 2), type, cv::Scalar::all(0));
+  cells.clear();
+  for (int k = 0; k < n; ++k) {
+    const int x0 = (k % cols) * (T + 2), y0 = (k / cols) * (T + 2);
+    cv::Mat bordered;
+    cv::copyMakeBorder(images[static_cast<std::size_t>(k)], bordered, 1, 1, 1, 1, cv::BORDER_REPLICATE);
+    bordered.copyTo(atlas(cv::Rect(x0, y0, T + 2, T + 2)));
+    cells.push_back({x0 + 1, y0 + 1});
+  }
+  return atlas;
+}
+
+// Texture coordinates of every vertex moved from its tile texture into the atlas.
+void map_to_atlas(TexturedMesh& tm, cv::Size atlas, const std::vector<std::array<int, 2>>& cells, int T) {
+  std::vector<char> done(tm.mesh.n_vertices(), 0);
+  for (auto fh : tm.mesh.faces()) {
+    const auto& cell = cells[static_cast<std::size_t>(tm.face_source[static_cast<std::size_t>(fh.idx())])];
+    for (auto vh : tm.mesh.fv_range(fh)) {
+      if (done[static_cast<std::size_t>(vh.idx())]) continue;
+      done[static_cast<std::size_t>(vh.idx())] = 1;
+      const auto t = tm.mesh.texcoord2D(vh);
+      const double u = (cell[0] + t[0] * T) / atlas.width;
+      const double v = 1 - (cell[1] + (1 - t[1]) * T) / atlas.height;
+      tm.mesh.set_texcoord2D(vh, Mesh::TexCoord2D(static_cast<float>(u), static_cast<float>(v)));
+    }
+  }
+}
+
+// OBJ text with a material library: "mtllib" first, then "usemtl" before every run of
+// faces with the same material (the writer emits faces in mesh order).
+std::string obj_with_materials(const std::string& obj, const std::string& mtllib, const std::vector<std::string>& face_material) {
+  std::string out = "mtllib " + mtllib + "\n";
+  std::size_t face = 0, at = 0;
+  std::string current;
+  while (at < obj.size()) {
+    std::size_t end = obj.find('\n', at);
+    end = end == std::string::npos ? obj.size() : end + 1;
+    if (obj.compare(at, 2, "f ") == 0 && face < face_material.size()) {
+      if (face_material[face] != current) out += "usemtl " + (current = face_material[face]) + "\n";
+      ++face;
+    }
+    out.append(obj, at, end - at);
+    at = end;
+  }
+  return out;
+}
+
+std::string material_block(const std::string& name, const std::string& map) {
+  return "newmtl " + name + "\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " + map + "\n";
+}
+
+std::string tile_name(const terrainlod::TileId& id) {
+  return std::to_string(id.level) + "-" + std::to_string(id.x) + "-" + std::to_string(id.y);
 }
 
 terrainlod::TileId parse_tile(const std::string& s) {
@@ -159,13 +320,124 @@ nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selecti
   return n;
 }
 
+Image read_texture(const std::string& path) {
+  const std::string bytes = read_input(path);
+  const std::string where = is_stdio(path) ? "-" : path;
+  try {
+    const formats::Format f = formats::detect_format(bytes, where);
+    if (formats::kind_of(f) != formats::Kind::image) throw bad_input("texture is not an image but {}", formats::format_name(f));
+    Image img = formats::read_image(bytes, f);
+    img.pixels = terrainlod::texture_pixels(img.pixels);
+    return img;
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    const std::string what = e.what();
+    throw bad_input("{}", what.find(where) == std::string::npos ? fmt::format("{} ({})", what, where) : what);
+  }
+}
+
+// A prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, each level about half the
+// previous), as `resample mip build` writes it. Level files are read while they exist.
+std::vector<Image> read_texture_mip(const std::string& prefix) {
+  std::vector<Image> mips;
+  std::error_code ec;
+  for (int k = 0;; ++k) {
+    const std::string png = prefix + "_" + std::to_string(k) + ".png", exr = prefix + "_" + std::to_string(k) + ".exr";
+    if (std::filesystem::exists(png, ec)) {
+      mips.push_back(read_texture(png));
+    } else if (std::filesystem::exists(exr, ec)) {
+      throw bad_input("texture pyramid level {} is floating point; texture tiles are 8-bit: build it from an 8 or 16-bit image ({})", k, exr);
+    } else {
+      break;
+    }
+  }
+  if (mips.empty()) throw io_error("no texture pyramid level {}_0.png", prefix);
+  for (std::size_t k = 1; k < mips.size(); ++k) {
+    const cv::Mat& a = mips[k - 1].pixels;
+    const cv::Mat& b = mips[k].pixels;
+    if (std::abs(b.cols - a.cols / 2) > 1 || std::abs(b.rows - a.rows / 2) > 1 || b.channels() != a.channels())
+      throw bad_input("texture pyramid level {} is {} x {} with {} channels after {} x {} with {}; each level must halve the previous ({}_{}.png)",
+                      k, b.cols, b.rows, b.channels(), a.cols, a.rows, a.channels(), prefix, k);
+  }
+  return mips;
+}
+
+// The canvas of one level from a prefiltered pyramid: its coarsest image that still has a
+// pixel per texel there (the finest, where none has), resampled like a single image with
+// the level's tiles as leaves.
+cv::Mat mip_canvas(const std::vector<Image>& mips, int level, const terrainlod::Pyramid& pyr, int tile, int texels, const LoadedDem& dem) {
+  const int cells = tile << (pyr.levels - level);
+  std::size_t k = 0;
+  while (k + 1 < mips.size() &&
+         static_cast<double>(mips[k + 1].pixels.cols) / (dem.grid.width - 1) * cells / texels >= 1.0 &&
+         static_cast<double>(mips[k + 1].pixels.rows) / (dem.grid.height - 1) * cells / texels >= 1.0)
+    ++k;
+  const cv::Mat& img = mips[k].pixels;
+  terrainlod::TextureLayout lay{level, cells, texels, dem.grid.width, dem.grid.height};
+  return terrainlod::leaf_canvas(img, terrainlod::place_image(img.cols, img.rows, dem.grid.width, dem.grid.height), lay);
+}
+
+// Every tile's texture, encoded, in the order of pyr.tiles. The canvases come from one
+// image (the leaf canvas, box-filtered per level) or from a prefiltered pyramid (`mips`).
+std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const cv::Mat& pixels, terrainlod::ImagePlacement placement,
+                                       const std::optional<terrainlod::ImageFrame>& georeferenced, const BuildArgs& args,
+                                       int texels, const LoadedDem& dem, const std::vector<Image>& mips) {
+  terrainlod::TextureLayout lay;
+  lay.levels = pyr.levels;
+  lay.tile = args.tile;
+  lay.texels = texels;
+  lay.width = dem.grid.width;
+  lay.height = dem.grid.height;
+  formats::ImageWriteOptions opt;
+  const formats::Format format = args.texture_format == "jpeg" ? formats::Format::jpeg : formats::Format::png;
+  if (format == formats::Format::jpeg) opt.jpeg_quality = args.texture_quality;
+  std::map<terrainlod::TileId, std::size_t> at;
+  for (std::size_t i = 0; i < pyr.tiles.size(); ++i) at[pyr.tiles[i].id] = i;
+  std::vector<std::string> out(pyr.tiles.size());
+  cv::Mat canvas = !mips.empty()     ? cv::Mat()
+                   : georeferenced ? terrainlod::leaf_canvas(pixels, *georeferenced, lay)
+                                   : terrainlod::leaf_canvas(pixels, placement, lay);
+  for (int l = pyr.levels; l >= 0; --l) {
+    if (!mips.empty()) canvas = mip_canvas(mips, l, pyr, args.tile, texels, dem);
+    else if (l < pyr.levels) canvas = terrainlod::halve_canvas(canvas);
+    const auto& lv = pyr.level[static_cast<std::size_t>(l)];
+    std::vector<std::pair<terrainlod::TileId, std::size_t>> jobs;
+    for (int y = 0; y < lv.tiles_y; ++y)
+      for (int x = 0; x < lv.tiles_x; ++x) {
+        const auto it = at.find({l, x, y});
+        if (it != at.end()) jobs.push_back({it->first, it->second});
+      }
+    // Encoding is independent per tile: spread it over the build's threads.
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto work = [&] {
+      try {
+        for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) {
+          Image tile;
+          tile.pixels = terrainlod::tile_texture(canvas, l, jobs[j].first.x, jobs[j].first.y, texels);
+          out[jobs[j].second] = formats::write_image(tile, format, opt);
+        }
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = jobs.size();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < resolve_threads(args.threads); ++t) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+  }
+  return out;
+}
+
 }  // namespace
 
 int run_build(const BuildArgs& args) {
-  if (args.output.empty()) throw usage_error("build needs -o PYRAMID.tlp");
-  if (is_stdio(args.output) || args.output.size() < 4 || args.output.substr(args.output.size() - 4) != ".tlp")
-    throw usage_error("build writes a .tlp archive; name the output *.tlp (directory pyramids are not supported) (got '{}')",
-                      args.output);
+  if (args.output.empty() || is_stdio(args.output)) throw usage_error("build needs -o PYRAMID.tlp or -o DIRECTORY/");
+  const bool archive = args.output.size() >= 4 && args.output.substr(args.output.size() - 4) == ".tlp";
   terrainlod::BuildParams params;
   params.pyramid.tile = args.tile;
   params.pyramid.texels = args.texels;
@@ -178,7 +450,44 @@ int run_build(const BuildArgs& args) {
   if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
 
   const auto t0 = Clock::now();
+  // The texture is read before the DEM's work starts, so a bad image costs nothing.
+  std::optional<Image> texture_image;
+  std::vector<Image> mips;
+  if (!args.texture.empty() && args.texture != "hillshade") texture_image = read_texture(args.texture);
+  if (!args.texture_mip.empty()) {
+    mips = read_texture_mip(args.texture_mip);
+    texture_image = mips[0];
+  }
   const LoadedDem dem = load_dem(args.dem);
+  std::optional<terrainlod::ImagePlacement> placement;
+  std::optional<terrainlod::ImageFrame> georeferenced;
+  const std::string texture_name = args.texture_mip.empty() ? args.texture : args.texture_mip + "_0.png";
+  // A georeferenced image (GeoTIFF, or any image with a world file) on a georeferenced DEM
+  // lies where its georeference says, whatever its size.
+  if (texture_image && mips.empty() && !is_stdio(args.texture) && (dem.raster.georeferenced || !args.dem.origin.empty())) {
+    formats::RasterGeoreference g;
+    try {
+      g = formats::read_georeference(args.texture);
+    } catch (const Error& e) {
+      if (e.status() != Status::bad_input) throw;  // GDAL cannot read it: OpenCV did, unplaced
+    }
+    if (g.georeferenced) {
+      const terrainlod::ImageFrame f = terrainlod::georeferenced_frame(
+          {dem.origin_x, dem.origin_y, dem.dx, dem.dy, dem.grid.height}, {g.origin_x, g.origin_y, g.dx, g.dy, g.height});
+      const int iw = texture_image->pixels.cols, ih = texture_image->pixels.rows;
+      const double px0 = f.ox, px1 = (dem.grid.width - 1) * f.sx + f.ox, py0 = f.oy, py1 = (dem.grid.height - 1) * f.sy + f.oy;
+      if (px1 < -0.5 || px0 > iw - 0.5 || py1 < -0.5 || py0 > ih - 0.5)
+        throw bad_input("texture's georeference does not overlap the DEM ({})", args.texture);
+      georeferenced = f;
+    }
+  }
+  if (texture_image && !georeferenced) {
+    try {
+      placement = terrainlod::place_image(texture_image->pixels.cols, texture_image->pixels.rows, dem.grid.width, dem.grid.height);
+    } catch (const Error& e) {
+      throw Error(e.status(), fmt::format("{} ({})", e.what(), texture_name));
+    }
+  }
   const double read_ms = ms_since(t0);
   const bool integer = dem.raster.integer && args.dem.z_scale == 1 && std::floor(args.dem.z_offset) == args.dem.z_offset;
   params.z_quantum = args.z_quantum > 0 ? args.z_quantum : integer ? 1.0 : 0.01;
@@ -216,16 +525,46 @@ int run_build(const BuildArgs& args) {
                              {"connectivity", "strips"},
                              {"reference", "original"},
                              {"level", levels},
+                             {"texture", nullptr},
                              {"tool", "terrainlod 1"}};
+  // Texture tiles (spec 2.1, 2.9): the image (or a hillshade of the DEM) resampled to the
+  // leaf canvas, box-filtered level by level, cut into T x T tiles.
+  const auto t3 = Clock::now();
+  std::vector<std::string> textures;
+  std::size_t texture_bytes = 0;
+  if (!args.texture.empty() || !mips.empty()) {
+    const bool hillshade = args.texture == "hillshade";
+    const cv::Mat pixels = hillshade ? terrainlod::hillshade_image(dem.grid, dem.dx, dem.dy) : texture_image->pixels;
+    textures = texture_tiles(pyr, pixels, hillshade || !placement ? terrainlod::ImagePlacement::samples : *placement, georeferenced,
+                             args, texels, dem, mips);
+    for (const auto& t : textures) texture_bytes += t.size();
+    manifest["texture"] = {{"format", args.texture_format},
+                           {"texels", texels},
+                           {"channels", pixels.channels()},
+                           {"source", hillshade ? "hillshade" : std::filesystem::path(texture_name).filename().string()},
+                           {"placement", georeferenced ? "georeferenced"
+                                         : hillshade || *placement == terrainlod::ImagePlacement::samples ? "samples" : "extent"},
+                           {"filter", mips.empty() ? "2x2 box mean per level" : "prefiltered pyramid (--texture-mip), one level per tile level"}};
+    if (args.texture_format == "jpeg") manifest["texture"]["quality"] = args.texture_quality;
+  }
+  const double texture_ms = ms_since(t3);
   const auto t2 = Clock::now();
-  const std::string bytes = write_archive(manifest, pyr);
+  std::size_t written = 0;
+  if (archive) {
+    const std::string bytes = write_archive(manifest, pyr, textures);
+    written = bytes.size();
+    write_output(args.output, bytes);
+  } else {
+    write_directory(args.output, manifest, pyr, textures, args.texture_format == "jpeg" ? "jpg" : "png");
+    written = PyramidFile::open(args.output).size();
+  }
   const double encode_ms = ms_since(t2);
-  write_output(args.output, bytes);
   if (!args.report.empty()) {
-    PyramidFile file(bytes, args.output);
     nlohmann::json r = {{"tiles", pyr.tiles.size()},
-                        {"bytes", bytes.size()},
-                        {"time_ms", {{"read", read_ms}, {"build", build_ms}, {"encode", encode_ms}}},
+                        {"bytes", written},
+                        {"texture_bytes", texture_bytes},
+                        {"container", archive ? "archive" : "directory"},
+                        {"time_ms", {{"read", read_ms}, {"build", build_ms}, {"texture", texture_ms}, {"encode", encode_ms}}},
                         {"threads", params.threads},
                         {"peak_rss_kb", peak_rss_kb()}};
     write_output(args.report, r.dump(2) + "\n");
@@ -233,11 +572,11 @@ int run_build(const BuildArgs& args) {
   return 0;
 }
 
-int run_pyramid_stats(const std::string& path, const std::string& bytes) {
-  PyramidFile pyr(bytes, is_stdio(path) ? "-" : path);
+int run_pyramid_stats(const std::string& path) {
+  PyramidFile pyr = open_pyramid(path);
   const int L = pyr.layout().levels;
   struct Acc {
-    std::size_t tiles = 0, vertices = 0, border = 0, triangles = 0, header = 0, vert = 0, conn = 0, refine = 0;
+    std::size_t tiles = 0, vertices = 0, border = 0, triangles = 0, header = 0, vert = 0, conn = 0, refine = 0, texture = 0;
     double worst = 0;
   };
   std::vector<Acc> acc(static_cast<std::size_t>(L) + 1);
@@ -251,15 +590,16 @@ int run_pyramid_stats(const std::string& path, const std::string& bytes) {
     terrainlod::TileSizes s;
     terrainlod::encode_tile(t, &s);
     a.header += s.header, a.vert += s.vertices, a.conn += s.connectivity, a.refine += s.refinement;
+    a.texture += e.texture_length;
     if (t.eps > 0) a.worst = std::max(a.worst, static_cast<double>(t.err) / t.eps);
   }
   nlohmann::json levels = nlohmann::json::array();
-  std::size_t total_v = 0, total_bytes = 0, total_t = 0;
+  std::size_t total_v = 0, total_bytes = 0, total_t = 0, total_texture = 0;
   for (int l = 0; l <= L; ++l) {
     const auto& a = acc[static_cast<std::size_t>(l)];
     const auto& m = pyr.manifest().at("level").at(static_cast<std::size_t>(l));
     const std::size_t bytes_l = a.header + a.vert + a.conn + a.refine;
-    total_v += a.vertices, total_bytes += bytes_l, total_t += a.triangles;
+    total_v += a.vertices, total_bytes += bytes_l, total_t += a.triangles, total_texture += a.texture;
     levels.push_back({{"level", l},
                       {"tiles", a.tiles},
                       {"vertices", a.vertices},
@@ -268,7 +608,7 @@ int run_pyramid_stats(const std::string& path, const std::string& bytes) {
                       {"eps", m.at("eps")},
                       {"lattice_bits", m.at("lattice_bits")},
                       {"bytes", {{"total", bytes_l}, {"header", a.header}, {"vertices", a.vert}, {"connectivity", a.conn},
-                                 {"refinement", a.refine}}},
+                                 {"refinement", a.refine}, {"texture", a.texture}}},
                       {"bytes_per_vertex", a.vertices ? static_cast<double>(bytes_l) / a.vertices : 0.0},
                       {"max_err_over_eps", l == L ? nlohmann::json(nullptr) : nlohmann::json(a.worst)}});
   }
@@ -280,6 +620,7 @@ int run_pyramid_stats(const std::string& path, const std::string& bytes) {
                         {"vertices", total_v},
                         {"triangles", total_t},
                         {"tile_bytes", total_bytes},
+                        {"texture_bytes", total_texture},
                         {"file_bytes", pyr.size()},
                         {"bytes_per_vertex", total_v ? static_cast<double>(total_bytes) / total_v : 0.0},
                         {"bytes_per_sample", static_cast<double>(total_bytes) / samples},
@@ -300,7 +641,10 @@ int run_decode(const DecodeArgs& args) {
     throw bad_input("tile {} has no finer neighbour on the sides of mask {} (refinable sides: {})", args.tile, args.mask, t.refinable);
   const std::string bytes = formats::write_mesh(
       world_mesh(pyr, {{id, terrainlod::triangulate(t, static_cast<unsigned>(args.mask), pyr.geometry(id.level))}}), out.format);
+  std::string texture;
+  if (!args.texture.empty()) texture = std::string(pyr.texture_bytes(id));
   formats::store_output(args.output, bytes, out.gzip);
+  if (!texture.empty()) write_output(args.texture, texture);
   return 0;
 }
 
@@ -346,8 +690,10 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
     }
   }
   if (cams.empty()) throw bad_input("camera path has no cameras ({})", where);
+  if (!args.atlas.empty()) throw usage_error("--atlas is for one view (--camera), not a camera path");
   PyramidFile pyr = open_pyramid(args.pyramid);
   const auto& L = pyr.layout();
+  std::map<terrainlod::TileId, cv::Mat> texture_cache;
   nlohmann::json frames = nlohmann::json::array();
   for (std::size_t k = 0; k < cams.size(); ++k) {
     const std::size_t decoded0 = pyr.tiles_decoded(), bytes0 = pyr.bytes_touched();
@@ -362,9 +708,22 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
     }
     for (const auto& id : keep) pyr.tile(id);  // prefetch the ring
     const std::size_t evicted = pyr.keep_only(keep);
-    const Mesh mesh = world_mesh(pyr, x.parts);
+    const Extent extent = extent_of(pyr, args.clip);
+    std::optional<TexturedMesh> tm;
+    RenderTextures textures;
+    if (pyr.textured()) {
+      tm = textured_mesh(pyr, x.selection, x.parts, extent);
+      for (const auto& id : tm->sources) {
+        // A texture is loaded once, with its tile, and kept while the tile is cached.
+        if (!texture_cache.count(id)) texture_cache[id] = decode_texture(pyr, id);
+        textures.images.push_back(texture_cache[id]);
+      }
+      textures.face_image = tm->face_source;
+    }
+    const Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
     formats::store_output(frame_name(args.output, k, "-o"), formats::write_mesh(mesh, out.format), out.gzip);
-    if (!args.png.empty()) write_output(frame_name(args.png, k, "--png"), render_png(mesh, cams[k]));
+    if (!args.png.empty()) write_output(frame_name(args.png, k, "--png"), render_png(mesh, cams[k], tm ? &textures : nullptr));
+    for (auto it = texture_cache.begin(); it != texture_cache.end();) it = keep.count(it->first) ? std::next(it) : texture_cache.erase(it);
     frames.push_back({{"frame", k},
                       {"tiles", x.selection.tiles.size()},
                       {"tiles_per_level", tiles_per_level(pyr, x.selection)},
@@ -395,12 +754,72 @@ int run_extract(const ExtractArgs& args) {
   terrainlod::Camera cam = parse_camera(cj, cam_name);
   if (args.tau > 0) cam.tau_px = args.tau;
   PyramidFile pyr = open_pyramid(args.pyramid);
+  if (!args.atlas.empty() && !pyr.textured()) throw usage_error("--atlas needs a pyramid with textures (build --texture)");
   const Extraction x = extract_view(pyr, cam);
   const auto t2 = Clock::now();
-  const Mesh mesh = world_mesh(pyr, x.parts);
-  const std::string bytes = formats::write_mesh(mesh, out.format);
+  const Extent extent = extent_of(pyr, args.clip);
+  const bool obj_file = out.format == formats::Format::obj && !is_stdio(args.output);
+  std::optional<TexturedMesh> tm;
+  RenderTextures textures;
+  std::vector<std::pair<std::string, std::string>> beside;  // files written next to the mesh
+  std::size_t texture_count = 0;
+  std::vector<std::array<int, 2>> atlas_cells;
+  cv::Size atlas_size;
+  if (pyr.textured()) {
+    tm = textured_mesh(pyr, x.selection, x.parts, extent);
+    texture_count = tm->sources.size();
+    const bool need_pixels = !args.png.empty() || !args.atlas.empty();
+    std::vector<std::string> face_material(tm->face_source.size());
+    for (const auto& id : tm->sources) {
+      if (need_pixels) textures.images.push_back(decode_texture(pyr, id));
+      else pyr.texture_bytes(id);  // the bytes a viewer would load
+    }
+    textures.face_image = tm->face_source;
+    namespace fs = std::filesystem;
+    const fs::path obj_path(args.output);
+    const std::string stem = obj_path.stem().string();
+    std::string mtl;
+    if (!args.atlas.empty()) {
+      // The renderer keeps sampling the tile textures; the written mesh's coordinates
+      // point into the atlas.
+      Image atlas;
+      atlas.pixels = make_atlas(textures.images, pyr.layout().texels, atlas_cells);
+      atlas_size = atlas.pixels.size();
+      beside.push_back({args.atlas, formats::write_image(atlas, formats::Format::png)});
+      if (obj_file) {
+        const fs::path rel = fs::absolute(args.atlas).lexically_relative(fs::absolute(obj_path).parent_path());
+        mtl = material_block("atlas", rel.string());
+        std::fill(face_material.begin(), face_material.end(), "atlas");
+      }
+    } else if (obj_file) {
+      // One texture file per drawn tile texture beside the OBJ, one material each.
+      for (std::size_t k = 0; k < tm->sources.size(); ++k) {
+        const std::string name = "tile-" + tile_name(tm->sources[k]);
+        const std::string file = stem + "-" + tile_name(tm->sources[k]) + "." + pyr.texture_extension();
+        beside.push_back({(obj_path.parent_path() / file).string(), std::string(pyr.texture_bytes(tm->sources[k]))});
+        mtl += material_block(name, file);
+      }
+      for (std::size_t f = 0; f < face_material.size(); ++f)
+        face_material[f] = "tile-" + tile_name(tm->sources[static_cast<std::size_t>(tm->face_source[f])]);
+    }
+    if (obj_file) {
+      beside.push_back({(obj_path.parent_path() / (stem + ".mtl")).string(), mtl});
+      tm->face_material = std::move(face_material);
+      tm->mtllib = stem + ".mtl";
+    }
+  }
+  const Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
   std::string png;
-  if (!args.png.empty()) png = render_png(mesh, cam);
+  if (!args.png.empty()) png = render_png(mesh, cam, tm ? &textures : nullptr);
+  Mesh written = mesh;
+  if (tm && !args.atlas.empty()) {
+    TexturedMesh atlas_mesh{written, tm->sources, tm->face_source, {}, {}};
+    map_to_atlas(atlas_mesh, atlas_size, atlas_cells, pyr.layout().texels);
+    written = std::move(atlas_mesh.mesh);
+  }
+  std::string bytes = formats::write_mesh(written, out.format);
+  if (tm && obj_file) bytes = obj_with_materials(bytes, tm->mtllib, tm->face_material);
+  for (const auto& [file, content] : beside) write_output(file, content);
   formats::store_output(args.output, bytes, out.gzip);
   if (!png.empty()) write_output(args.png, png);
   if (!args.report.empty()) {
@@ -410,8 +829,9 @@ int run_extract(const ExtractArgs& args) {
                         {"tiles_per_level", tiles_per_level(pyr, x.selection)},
                         {"closing_only", closing},
                         {"visited", x.selection.visited},
-                        {"triangles", x.triangles},
+                        {"triangles", mesh.n_faces()},
                         {"vertices", mesh.n_vertices()},
+                        {"textures", texture_count},
                         {"bytes_touched", pyr.bytes_touched()},
                         {"max_screen_error_px", pyr.manifest().at("error_fraction").get<double>() * cam.tau_px},
                         {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}, {"write", ms_since(t2)}}}};
@@ -456,6 +876,21 @@ int run_verify(const VerifyArgs& args) {
   j["tiles"] = pyr.index().size();
   j["reencode_mismatches"] = reencode_mismatch;
   ok = ok && reencode_mismatch == 0;
+  // Texture tiles: every one decodes to T x T 8-bit pixels.
+  if (pyr.textured()) {
+    std::size_t bad_textures = 0;
+    for (const auto& e : pyr.index()) {
+      try {
+        decode_texture(pyr, e.id);
+      } catch (const Error&) {
+        ++bad_textures;
+      }
+    }
+    j["bad_textures"] = bad_textures;
+    ok = ok && bad_textures == 0;
+  } else {
+    j["bad_textures"] = nullptr;
+  }
   if (ref) {
     j["triangulations_checked"] = triangulations;
     j["tiles_over_bound"] = over;

@@ -1,8 +1,14 @@
 #include "pyramid_file.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
 #include "core/error.hpp"
+#include "core/file_io.hpp"
 
 namespace fest::terrainlod_tool {
+namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[4] = {'F', 'T', 'L', 'P'};
@@ -20,24 +26,42 @@ T get_le(std::string_view s, std::size_t at) {
   return static_cast<T>(v);
 }
 
-}  // namespace
-
-bool looks_like_archive(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == std::string_view(kMagic, 4); }
-
-std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
-                          std::vector<terrainlod::TileSizes>* sizes) {
+std::vector<std::string> encode_all(const terrainlod::Pyramid& pyramid, std::vector<terrainlod::TileSizes>* sizes) {
   std::vector<std::string> blobs;
   for (const auto& t : pyramid.tiles) {
     terrainlod::TileSizes s;
     blobs.push_back(terrainlod::encode_tile(t, &s));
     if (sizes) sizes->push_back(s);
   }
+  return blobs;
+}
+
+std::string relative_tile_path(const terrainlod::TileId& id, const std::string& extension) {
+  return std::to_string(id.level) + "/" + std::to_string(id.x) + "/" + std::to_string(id.y) + "." + extension;
+}
+
+void write_file(const fs::path& p, std::string_view bytes) {
+  std::ofstream out(p, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out) throw io_error("cannot write {}", p.string());
+}
+
+}  // namespace
+
+bool looks_like_archive(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == std::string_view(kMagic, 4); }
+
+std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
+                          const std::vector<std::string>& textures, std::vector<terrainlod::TileSizes>* sizes) {
+  const std::vector<std::string> blobs = encode_all(pyramid, sizes);
+  const bool textured = !textures.empty();
   const std::string m = manifest.dump();
   std::string out(kMagic, 4);
   put_le<std::uint8_t>(out, kVersion);
   put_le<std::uint32_t>(out, static_cast<std::uint32_t>(m.size()));
   out += m;
   put_le<std::uint32_t>(out, static_cast<std::uint32_t>(blobs.size()));
+  // Each tile's geometry, then its texture: a reader streaming in transmission order
+  // gets both of a tile together.
   std::uint64_t offset = out.size() + kEntryBytes * blobs.size();
   for (std::size_t i = 0; i < blobs.size(); ++i) {
     const auto& id = pyramid.tiles[i].id;
@@ -46,24 +70,60 @@ std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyra
     put_le<std::uint32_t>(out, static_cast<std::uint32_t>(id.y));
     put_le<std::uint64_t>(out, offset);
     put_le<std::uint32_t>(out, static_cast<std::uint32_t>(blobs[i].size()));
-    put_le<std::uint64_t>(out, 0);  // texture offset: no textures in this version
-    put_le<std::uint32_t>(out, 0);
     offset += blobs[i].size();
+    const std::size_t tex = textured ? textures[i].size() : 0;
+    put_le<std::uint64_t>(out, tex ? offset : 0);
+    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(tex));
+    offset += tex;
   }
-  for (const auto& b : blobs) out += b;
+  for (std::size_t i = 0; i < blobs.size(); ++i) {
+    out += blobs[i];
+    if (textured) out += textures[i];
+  }
   return out;
 }
 
-PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {
-  const std::string_view s(bytes_);
-  if (!looks_like_archive(s)) throw bad_input("not a terrainlod pyramid (bad magic) ({})", name_);
-  if (s.size() < 9) throw bad_input("pyramid is truncated: {} bytes ({})", s.size(), name_);
-  if (get_le<std::uint8_t>(s, 4) != kVersion)
-    throw bad_input("pyramid version {} is not supported (this is version {}) ({})", get_le<std::uint8_t>(s, 4), kVersion, name_);
-  const std::size_t mlen = get_le<std::uint32_t>(s, 5);
-  if (s.size() < 9 + mlen + 4) throw bad_input("pyramid is truncated in its manifest ({})", name_);
+void write_directory(const std::string& dir, const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
+                     const std::vector<std::string>& textures, const std::string& texture_extension) {
+  const fs::path norm = fs::path(dir).lexically_normal();
+  const fs::path target = norm.filename().empty() ? norm.parent_path() : norm;
+  std::error_code ec;
+  const bool replace = fs::exists(target, ec);
+  if (replace && !(fs::is_directory(target, ec) && (fs::is_empty(target, ec) || fs::exists(target / "pyramid.json", ec))))
+    throw io_error("{} exists and is not a pyramid directory; not replacing it", target.string());
+  const std::vector<std::string> blobs = encode_all(pyramid, nullptr);
+  const fs::path tmp = target.string() + ".part-" + std::to_string(::getpid());
+  fs::remove_all(tmp, ec);
   try {
-    manifest_ = nlohmann::json::parse(s.substr(9, mlen));
+    fs::create_directories(tmp);
+    write_file(tmp / "pyramid.json", manifest.dump(2) + "\n");
+    for (std::size_t i = 0; i < blobs.size(); ++i) {
+      const auto& id = pyramid.tiles[i].id;
+      const fs::path tlt = tmp / relative_tile_path(id, "tlt");
+      fs::create_directories(tlt.parent_path());
+      write_file(tlt, blobs[i]);
+      if (!textures.empty()) write_file(tmp / relative_tile_path(id, texture_extension), textures[i]);
+    }
+    const fs::path old = target.string() + ".old-" + std::to_string(::getpid());
+    if (replace) fs::rename(target, old);
+    fs::rename(tmp, target, ec);
+    if (ec) {
+      if (replace) fs::rename(old, target);
+      throw io_error("cannot rename {} to {}: {}", tmp.string(), target.string(), ec.message());
+    }
+    if (replace) fs::remove_all(old, ec);
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(tmp, ec);
+    throw io_error("cannot write the pyramid directory {}: {}", target.string(), e.code().message());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+}
+
+void PyramidFile::parse_manifest(std::string_view text) {
+  try {
+    manifest_ = nlohmann::json::parse(text);
     layout_.levels = manifest_.at("levels").get<int>();
     layout_.texels = manifest_.at("texels").get<int>();
     layout_.origin_x = manifest_.at("origin").at(0).get<double>();
@@ -76,6 +136,13 @@ PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move
       layout_.cells.push_back(lv.at("cells").get<int>());
     }
     manifest_.at("z_quantum").get<double>();
+    const auto tex = manifest_.find("texture");
+    if (tex != manifest_.end() && !tex->is_null()) {
+      const std::string format = tex->at("format").get<std::string>();
+      if (format != "png" && format != "jpeg") throw bad_input("pyramid textures are '{}', not png or jpeg ({})", format, name_);
+      textured_ = true;
+      texture_extension_ = format == "png" ? "png" : "jpg";
+    }
   } catch (const nlohmann::json::exception& e) {
     throw bad_input("pyramid manifest is malformed: {} ({})", e.what(), name_);
   }
@@ -84,6 +151,21 @@ PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move
     throw bad_input("pyramid manifest is inconsistent ({})", name_);
   for (int c : layout_.cells)
     if (c <= 0) throw bad_input("pyramid manifest is inconsistent ({})", name_);
+  for (std::size_t l = 0; l < layout_.cells.size(); ++l)
+    if (layout_.tiles_x[l] <= 0 || layout_.tiles_y[l] <= 0 || layout_.tiles_x[l] > (1 << l) || layout_.tiles_y[l] > (1 << l))
+      throw bad_input("pyramid manifest is inconsistent ({})", name_);
+}
+
+PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {
+  const std::string_view s(bytes_);
+  total_bytes_ = s.size();
+  if (!looks_like_archive(s)) throw bad_input("not a terrainlod pyramid (bad magic) ({})", name_);
+  if (s.size() < 9) throw bad_input("pyramid is truncated: {} bytes ({})", s.size(), name_);
+  if (get_le<std::uint8_t>(s, 4) != kVersion)
+    throw bad_input("pyramid version {} is not supported (this is version {}) ({})", get_le<std::uint8_t>(s, 4), kVersion, name_);
+  const std::size_t mlen = get_le<std::uint32_t>(s, 5);
+  if (s.size() < 9 + mlen + 4) throw bad_input("pyramid is truncated in its manifest ({})", name_);
+  parse_manifest(s.substr(9, mlen));
   std::size_t at = 9 + mlen;
   const std::size_t count = get_le<std::uint32_t>(s, at);
   at += 4;
@@ -94,13 +176,60 @@ PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move
             static_cast<int>(get_le<std::uint32_t>(s, at + 5))};
     e.offset = get_le<std::uint64_t>(s, at + 9);
     e.length = get_le<std::uint32_t>(s, at + 17);
+    e.texture_offset = get_le<std::uint64_t>(s, at + 21);
+    e.texture_length = get_le<std::uint32_t>(s, at + 29);
     if (!layout_.exists(e.id)) throw bad_input("pyramid index names tile {}/{}/{} outside the pyramid ({})", e.id.level, e.id.x, e.id.y, name_);
     if (e.offset > s.size() || s.size() - e.offset < e.length)
       throw bad_input("tile {}/{}/{} is truncated: {} of {} bytes ({})", e.id.level, e.id.x, e.id.y,
                       e.offset > s.size() ? 0 : s.size() - e.offset, e.length, name_);
+    if (textured_ && e.texture_length == 0)
+      throw bad_input("pyramid has textures but none for tile {}/{}/{} ({})", e.id.level, e.id.x, e.id.y, name_);
+    if (e.texture_offset > s.size() || s.size() - e.texture_offset < e.texture_length)
+      throw bad_input("texture of tile {}/{}/{} is truncated: {} of {} bytes ({})", e.id.level, e.id.x, e.id.y,
+                      e.texture_offset > s.size() ? 0 : s.size() - e.texture_offset, e.texture_length, name_);
     where_[e.id] = index_.size();
     index_.push_back(e);
   }
+}
+
+PyramidFile PyramidFile::open(const std::string& path) {
+  std::error_code ec;
+  if (is_stdio(path) || !fs::is_directory(path, ec)) return PyramidFile(read_input(path), is_stdio(path) ? "-" : path);
+  PyramidFile p;
+  p.dir_ = path;
+  p.name_ = path;
+  const fs::path manifest = fs::path(path) / "pyramid.json";
+  if (!fs::exists(manifest, ec)) throw bad_input("not a terrainlod pyramid: directory without pyramid.json ({})", path);
+  const std::string text = read_input(manifest.string());
+  p.total_bytes_ = text.size();
+  p.parse_manifest(text);
+  // Every tile of the layout, in transmission order (level, then rows from the south, then
+  // columns), must be there with its texture when the manifest says there are textures.
+  const auto& L = p.layout_;
+  for (int l = 0; l <= L.levels; ++l)
+    for (int y = 0; y < L.tiles_y[static_cast<std::size_t>(l)]; ++y)
+      for (int x = 0; x < L.tiles_x[static_cast<std::size_t>(l)]; ++x) {
+        TileEntry e;
+        e.id = {l, x, y};
+        const std::string tlt = p.tile_path(e.id, "tlt");
+        const auto n = fs::file_size(tlt, ec);
+        if (ec) throw bad_input("pyramid directory lacks tile {}/{}/{} ({})", l, x, y, tlt);
+        e.length = static_cast<std::uint32_t>(n);
+        if (p.textured_) {
+          const std::string tex = p.tile_path(e.id, p.texture_extension_);
+          const auto t = fs::file_size(tex, ec);
+          if (ec) throw bad_input("pyramid directory lacks the texture of tile {}/{}/{} ({})", l, x, y, tex);
+          e.texture_length = static_cast<std::uint32_t>(t);
+        }
+        p.total_bytes_ += e.length + e.texture_length;
+        p.where_[e.id] = p.index_.size();
+        p.index_.push_back(e);
+      }
+  return p;
+}
+
+std::string PyramidFile::tile_path(const terrainlod::TileId& id, const std::string& extension) const {
+  return (fs::path(dir_) / relative_tile_path(id, extension)).string();
 }
 
 std::size_t PyramidFile::keep_only(const std::set<terrainlod::TileId>& keep) {
@@ -109,6 +238,7 @@ std::size_t PyramidFile::keep_only(const std::set<terrainlod::TileId>& keep) {
     if (keep.count(it->first)) {
       ++it;
     } else {
+      files_.erase(it->first);
       it = cache_.erase(it);
       ++evicted;
     }
@@ -124,7 +254,27 @@ std::string_view PyramidFile::tile_bytes(const terrainlod::TileId& id) const {
   const auto it = where_.find(id);
   if (it == where_.end()) throw bad_input("pyramid has no tile {}/{}/{} ({})", id.level, id.x, id.y, name_);
   const TileEntry& e = index_[it->second];
-  return std::string_view(bytes_).substr(e.offset, e.length);
+  if (!is_directory()) return std::string_view(bytes_).substr(e.offset, e.length);
+  auto f = files_.find(id);
+  if (f == files_.end()) f = files_.emplace(id, read_input(tile_path(id, "tlt"))).first;
+  return f->second;
+}
+
+std::string_view PyramidFile::texture_bytes(const terrainlod::TileId& id) {
+  if (!textured_) throw bad_input("pyramid has no textures ({})", name_);
+  const auto it = where_.find(id);
+  if (it == where_.end()) throw bad_input("pyramid has no tile {}/{}/{} ({})", id.level, id.x, id.y, name_);
+  const TileEntry& e = index_[it->second];
+  std::string_view b;
+  if (!is_directory()) {
+    b = std::string_view(bytes_).substr(e.texture_offset, e.texture_length);
+  } else {
+    auto f = texture_files_.find(id);
+    if (f == texture_files_.end()) f = texture_files_.emplace(id, read_input(tile_path(id, texture_extension_))).first;
+    b = f->second;
+  }
+  touched_ += b.size();
+  return b;
 }
 
 const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {

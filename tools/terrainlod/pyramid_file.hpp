@@ -1,6 +1,9 @@
 #pragma once
-// The .tlp pyramid archive (man5/terrainlod-pyramid.5): "FTLP", version, the manifest
-// JSON (length-prefixed), an index of tiles in transmission order, then the tile blobs.
+// The two pyramid containers (man5/terrainlod-pyramid.5):
+//  * the .tlp archive: "FTLP", version, the manifest JSON (length-prefixed), an index of
+//    tiles in transmission order (geometry and texture offsets), then the blobs;
+//  * the directory: pyramid.json (the manifest) + L/X/Y.tlt + L/X/Y.png (or .jpg).
+// PyramidFile reads either; everything downstream sees the same tiles and textures.
 
 #include <map>
 #include <set>
@@ -19,17 +22,29 @@ struct TileEntry {
   terrainlod::TileId id;
   std::uint64_t offset = 0;
   std::uint32_t length = 0;
+  std::uint64_t texture_offset = 0;  // archive only; 0 with length 0 = no texture
+  std::uint32_t texture_length = 0;
 };
 
-// Serialises the archive; `sizes` receives each tile's section sizes (same order).
+// Serialises the archive. `textures` holds each tile's encoded texture in the order of
+// pyramid.tiles (empty: no textures); `sizes` receives each tile's section sizes.
 std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
+                          const std::vector<std::string>& textures = {},
                           std::vector<terrainlod::TileSizes>* sizes = nullptr);
+
+// Writes the directory container: into a temporary sibling, renamed into place when
+// complete. An existing directory is replaced only if it is a pyramid (has pyramid.json).
+// `texture_extension` is "png" or "jpg".
+void write_directory(const std::string& dir, const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
+                     const std::vector<std::string>& textures, const std::string& texture_extension);
 
 class PyramidFile {
  public:
-  // Parses and checks the container (magic, version, manifest, index bounds); tiles
-  // are decoded on demand. `name` is for messages.
+  // Parses and checks an archive (magic, version, manifest, index bounds); tiles are
+  // decoded on demand. `name` is for messages.
   PyramidFile(std::string bytes, std::string name);
+  // An archive file, standard input ("-") or a pyramid directory.
+  static PyramidFile open(const std::string& path);
 
   const nlohmann::json& manifest() const { return manifest_; }
   const std::vector<TileEntry>& index() const { return index_; }
@@ -38,22 +53,37 @@ class PyramidFile {
   bool has(const terrainlod::TileId& id) const { return where_.count(id) != 0; }
   const terrainlod::Tile& tile(const terrainlod::TileId& id);  // decoded once, cached
   std::string_view tile_bytes(const terrainlod::TileId& id) const;
+  // Texture tiles: whether the pyramid has them, their file extension ("png" or "jpg"),
+  // and one tile's encoded image (counted in bytes_touched).
+  bool textured() const { return textured_; }
+  const std::string& texture_extension() const { return texture_extension_; }
+  std::string_view texture_bytes(const terrainlod::TileId& id);
   std::size_t bytes_touched() const { return touched_; }
   std::size_t tiles_decoded() const { return decoded_; }
   std::size_t tiles_cached() const { return cache_.size(); }
   // Drops decoded tiles not in `keep` (the tile cache of a camera path); returns how many.
   std::size_t keep_only(const std::set<terrainlod::TileId>& keep);
-  std::size_t size() const { return bytes_.size(); }
+  std::size_t size() const { return total_bytes_; }
   const std::string& name() const { return name_; }
+  bool is_directory() const { return !dir_.empty(); }
 
  private:
-  std::string bytes_;
+  PyramidFile() = default;
+  void parse_manifest(std::string_view text);
+  std::string tile_path(const terrainlod::TileId& id, const std::string& extension) const;
+
+  std::string bytes_;  // the archive
+  std::string dir_;    // or the directory
   std::string name_;
   nlohmann::json manifest_;
   std::vector<TileEntry> index_;
   std::map<terrainlod::TileId, std::size_t> where_;
   std::map<terrainlod::TileId, terrainlod::Tile> cache_;
+  mutable std::map<terrainlod::TileId, std::string> files_, texture_files_;  // directory blobs read so far
   terrainlod::PyramidLayout layout_;
+  bool textured_ = false;
+  std::string texture_extension_;
+  std::size_t total_bytes_ = 0;
   std::size_t touched_ = 0;
   std::size_t decoded_ = 0;
 };
