@@ -70,6 +70,24 @@ LoadedMesh load_mesh(const std::string& path) {
   return out;
 }
 
+// Refined normals of `brdffit normals` (normals.ply: one point per lumitexel, in order).
+std::vector<Eigen::Vector3d> load_refined_normals(const std::string& path, std::size_t lumitexels) {
+  const Mesh m = formats::parse(formats::load_input(path), formats::read_mesh);
+  if (!m.has_vertex_normals()) throw bad_input("the normals file has no nx ny nz ({})", path);
+  if (m.n_vertices() != lumitexels)
+    throw bad_input("the normals file holds {} points, the lumitexel file {} lumitexels ({})", m.n_vertices(), lumitexels,
+                    path);
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(lumitexels);
+  for (auto v : m.vertices()) {
+    const auto& n = m.normal(v);
+    const Eigen::Vector3d e(n[0], n[1], n[2]);
+    if (!e.allFinite() || e.norm() < 1e-9) throw bad_input("point {} has no usable normal ({})", v.idx(), path);
+    out.push_back(e.normalized());
+  }
+  return out;
+}
+
 std::string encode_mesh_ply(const reflectance::TriangleMesh& tm) {
   Mesh m;
   m.request_vertex_normals();

@@ -30,6 +30,10 @@ LoadedMesh load_mesh(const std::string& path);
 // triangles (u32 little-endian indices): the same for every file format of one mesh.
 std::string mesh_sha256(const reflectance::TriangleMesh& mesh);
 
+// The refined normals of `brdffit normals` (normals.ply: one point per lumitexel, in the
+// .ltx order); throws bad_input unless there are `lumitexels` points with usable normals.
+std::vector<Eigen::Vector3d> load_refined_normals(const std::string& path, std::size_t lumitexels);
+
 // Writes a PLY with vertex normals.
 std::string encode_mesh_ply(const reflectance::TriangleMesh& mesh);
 
