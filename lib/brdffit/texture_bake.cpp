@@ -149,7 +149,14 @@ PbrMaps bake_pbr(const reflectance::TriangleMesh& mesh, const TextureAtlas& atla
         nrm.normalize();
         tan.normalize();
         const Eigen::Vector3d bit = nrm.cross(tan) * (w < 0 ? -1.0 : 1.0);
+        // Coordinates in the (T, B, N) basis the viewer will use. The interpolated T is not
+        // exactly orthogonal to N, so solve rather than project: T x + B y + N z is then
+        // parallel to the refined normal for a viewer that does not re-orthogonalise, and
+        // off by the small T.N for one that does.
+        Eigen::Matrix3d frame;
+        frame << tan, bit, nrm;
         Eigen::Vector3d local(p.normal.dot(tan), p.normal.dot(bit), p.normal.dot(nrm));
+        if (std::abs(frame.determinant()) > 1e-6) local = frame.inverse() * p.normal;
         if (local.z() <= 0) local.z() = 1e-3;  // a viewer's normal map cannot point into the surface
         local.normalize();
         m.normal.at<cv::Vec3f>(row, x) = cv::Vec3f(static_cast<float>(local.x()), static_cast<float>(local.y()),
