@@ -103,6 +103,15 @@ double texel_size_for(const reflectance::TriangleMesh& mesh, int side, double fi
   return std::sqrt(projected / (fill * static_cast<double>(side) * static_cast<double>(side)));
 }
 
+double flat_texel_area(const FlatTriangles& flat) {
+  double area = 0;
+  for (const auto& c : flat.corners) {
+    const Eigen::Vector2d e1 = c[1] - c[0], e2 = c[2] - c[0];
+    area += 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  return area;
+}
+
 TextureAtlas build_atlas(const reflectance::TriangleMesh& mesh, const FlatTriangles& flat, const AtlasOptions& options) {
   const std::size_t nt = mesh.triangles.size();
   if (flat.group.size() != nt || flat.corners.size() != nt)

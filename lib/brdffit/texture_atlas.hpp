@@ -59,6 +59,10 @@ FlatTriangles axis_projection(const reflectance::TriangleMesh& mesh, double texe
 // mesh's area in the plane of its axis projection, spread over a fraction `fill` of side^2.
 double texel_size_for(const reflectance::TriangleMesh& mesh, int side, double fill = 0.5);
 
+// The texels the flat triangles cover (sum of their areas): a lower bound of the atlas'
+// size, cheap to check before building one.
+double flat_texel_area(const FlatTriangles& flat);
+
 // Charts: connected (shared edge) triangles of one group, grown breadth-first; a triangle
 // whose texel centres would land on texels another triangle of the chart already covers
 // (a fold or overlap of the flat map) starts a chart of its own, so every texel centre

@@ -551,7 +551,11 @@ void run_export(const ExportArgs& a) {
   const double texel = a.texel > 0 ? a.texel : brdffit::texel_size_for(lm.mesh, a.texture_size);
   brdffit::AtlasOptions ao;
   ao.gutter = a.gutter;
-  const brdffit::TextureAtlas atlas = brdffit::build_atlas(lm.mesh, brdffit::axis_projection(lm.mesh, texel), ao);
+  const brdffit::FlatTriangles flat = brdffit::axis_projection(lm.mesh, texel);
+  constexpr double kMaxSide = 16384;
+  if (brdffit::flat_texel_area(flat) > kMaxSide * kMaxSide)
+    throw usage_error("--texel {}: the mesh alone would cover more than {}^2 texels", texel, kMaxSide);
+  const brdffit::TextureAtlas atlas = brdffit::build_atlas(lm.mesh, flat, ao);
   if (atlas.width > 16384 || atlas.height > 16384)
     throw usage_error("the texture atlas would be {}x{} texels (at most 16384): raise --texel or lower --texture-size",
                       atlas.width, atlas.height);
@@ -569,11 +573,20 @@ void run_export(const ExportArgs& a) {
   const ImageStorage storage = is_stdio(a.out) ? ImageStorage::data_uri : glb ? ImageStorage::glb : ImageStorage::files;
   const std::filesystem::path out_path(a.out);
   const GltfFile g = encode_textured_gltf(lm.mesh, atlas, pngs, storage, out_path.stem().string());
-  for (const auto& [name, bytes] : g.images) write_output((out_path.parent_path() / name).string(), bytes);
-  if (glb)
-    write_binary(a.out, std::vector<std::uint8_t>(g.bytes.begin(), g.bytes.end()));
-  else
+  if (is_stdio(a.out)) {
     write_output(a.out, g.bytes);
+    return;
+  }
+  // All files under temporary names first, renamed into place only when every one was
+  // written: nothing partial when the folder is full or missing.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  auto stage = [&](const std::string& path, const std::string& bytes) {
+    files.push_back(std::make_unique<AtomicFile>(path));
+    write_output(files.back()->temp_path(), bytes);
+  };
+  for (const auto& [name, bytes] : g.images) stage((out_path.parent_path() / name).string(), bytes);
+  stage(a.out, g.bytes);
+  for (auto& f : files) f->commit();
 }
 
 // ------------------------------------------------------------------------------ info
