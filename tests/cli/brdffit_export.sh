@@ -90,6 +90,35 @@ expect_status 0
 expect_json '.materials | length' 3
 expect_json '[.materials[].pbrMetallicRoughness.baseColorTexture] | map(select(. != null)) | length' 0
 
+case_ "factor: a Lambertian BRDF is exactly rank 1 (spec §5 test 11)"
+echo '{"model":"lafortune","lobes":0,"rho_d":[0.5,0.3,0.1],"Cxy":[],"Cz":[],"N":[]}' > "$WORK/lambert.json"
+run brdffit factor --brdf "$WORK/lambert.json" -o "$WORK/lam_" --theta-bins 16 --phi-bins 32
+expect_status 0
+check "half/difference error 0" le "$(jq .half_difference.relative_rms "$out")" 1e-6
+check "(omega_o, omega_i) error 0" le "$(jq .out_in.relative_rms "$out")" 1e-6
+pycheck exr_size "$WORK/lam_g.exr"
+expect_json '[.width, .height]' '[32,16]'
+check "h written" test -f "$WORK/lam_h.exr"
+
+case_ "factor: a Lafortune lobe (N = 20) is more separable in half/difference angles"
+echo '{"model":"lafortune","lobes":1,"rho_d":[0.1,0.1,0.1],"Cxy":[[-1,-1,-1]],"Cz":[[1,1,1]],"N":[[20,20,20]]}' \
+  > "$WORK/lobe.json"
+run brdffit factor --brdf "$WORK/lobe.json" -o "$WORK/lobe_" --theta-bins 16 --phi-bins 32
+expect_status 0
+echo "  factor N=20: $(jq -c '[.half_difference.relative_rms, .out_in.relative_rms]' "$out")"
+check "half/difference error below (omega_o, omega_i)" le "$(jq .half_difference.relative_rms "$out")" \
+  "$(jq '.out_in.relative_rms * 0.999' "$out")"
+
+case_ "factor: bad input"
+run brdffit factor --brdf "$WORK/missing.json" -o "$WORK/x_"
+expect_clean_failure 4 brdffit
+echo '{"model":"lafortune"}' > "$WORK/broken.json"
+run brdffit factor --brdf "$WORK/broken.json" -o "$WORK/x_"
+expect_clean_failure 3 brdffit
+check "no factor written" test ! -e "$WORK/x_g.exr"
+run brdffit factor --brdf "$WORK/lobe.json" -o "$WORK/x_" --theta-bins 100 --phi-bins 100
+expect_clean_failure 2 brdffit
+
 case_ "bad input"
 run brdffit export --mesh "$WORK/syn/mesh.ply" --materials "$WORK/syn/truth.json" --svbrdf "$WORK/s.ltw" --gltf -
 expect_clean_failure 2 brdffit

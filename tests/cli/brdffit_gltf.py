@@ -15,6 +15,8 @@ and synth's truth.json -- not from brdffit's own code.
   constant FILE.gltf R G B
       every base colour texel under any triangle's UV footprint (texel centres inside a
       triangle) equals (R, G, B) exactly; prints the count as JSON.
+  exr_size FILE.exr
+      width and height from the OpenEXR header's dataWindow, as JSON (for factor).
 """
 import base64
 import json
@@ -209,8 +211,28 @@ def srgb(x):
     return 12.92 * x if x <= 0.0031308 else 1.055 * x ** (1 / 2.4) - 0.055
 
 
+def exr_size(path):
+    data = open(path, "rb").read()
+    if data[:4] != b"\x76\x2f\x31\x01":
+        fail("not an OpenEXR file")
+    pos = 8
+    while data[pos] != 0:
+        name_end = data.index(b"\0", pos)
+        type_end = data.index(b"\0", name_end + 1)
+        size = struct.unpack_from("<i", data, type_end + 1)[0]
+        if data[pos:name_end] == b"dataWindow":
+            x0, y0, x1, y1 = struct.unpack_from("<4i", data, type_end + 5)
+            return x1 - x0 + 1, y1 - y0 + 1
+        pos = type_end + 5 + size
+    fail("no dataWindow")
+
+
 def main():
     mode, path = sys.argv[1], sys.argv[2]
+    if mode == "exr_size":
+        w, h = exr_size(path)
+        print(json.dumps({"width": w, "height": h}))
+        return
     doc, buffers, images = load(path)
     pos, uv = geometry(doc, buffers)
     tex = textures(doc, images)
