@@ -76,6 +76,19 @@ pycheck check "$WORK/out/fit.glb"
 expect_status 0
 expect_json '.textures' '["baseColor","metallicRoughness","normal"]'
 
+case_ "lumitexels --atlas: the home images' pixels packed (spec §2.9), smaller than the images"
+run brdffit lumitexels --mesh "$WORK/syn/mesh.ply" --rig "$WORK/syn/rig.json" --atlas "$WORK/out/atlas.exr" \
+  --report "$WORK/atlas_report.json" -o "$WORK/o_atlas.ltx"
+expect_status 0
+check "the .ltx does not change" cmp "$WORK/o_atlas.ltx" "$WORK/o.ltx"
+pycheck exr_size "$WORK/out/atlas.exr"
+expect_json "[.width, .height]" "$(jq -c '[.atlas.width, .atlas.height]' "$WORK/atlas_report.json")"
+check "atlas smaller than its home images" le "$(jq '.atlas.width * .atlas.height' "$WORK/atlas_report.json")" \
+  "$(jq '.atlas.home_image_pixels' "$WORK/atlas_report.json")"
+check "mesh with texture coordinates" grep -aq "^property float s$" "$WORK/out/atlas.ply"
+check "three vertices per face" test "$(grep -a '^element vertex' "$WORK/out/atlas.ply" | cut -d' ' -f3)" = \
+  "$(( 3 * $(grep -a '^element face' "$WORK/out/atlas.ply" | cut -d' ' -f3) ))"
+
 case_ "standard output: one .gltf with data URIs"
 run brdffit export --mesh "$WORK/syn/mesh.ply" --svbrdf "$WORK/s.ltw" --ltx "$WORK/o.ltx" --gltf - --texture-size 128
 expect_status 0

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "brdffit/home_atlas.hpp"
 #include "brdffit/lafortune_model.hpp"
 #include "brdffit/pbr_appearance.hpp"
 #include "brdffit/synthetic_scene.hpp"
@@ -335,4 +336,52 @@ TEST(BrdffitPbr, LumitexelSurfaceTakesTheNearestLumitexelAndFallsBack) {
   Projection wrong = p;
   wrong.cluster = {0};
   fest::test::expect_bad_input([&] { LumitexelSurface(mesh, set, wrong, fallback); }, "lumitexels");
+}
+
+TEST(BrdffitHomeAtlas, TexelsReadTheirHomeImagesPixelsUnfiltered) {
+  // A 2 x 2 plane seen head-on by one camera (100 px per unit); the "photograph" holds its
+  // own pixel coordinates, radiance(i, j) = (i, j, 1).
+  const TriangleMesh mesh = [] {
+    TriangleMesh m = plane(4, 2.0);
+    for (auto& v : m.vertices) v -= Eigen::Vector3d(1, 1, 0);
+    return m;
+  }();
+  ImageView view;
+  view.camera.fx = view.camera.fy = 100;
+  view.camera.cx = view.camera.cy = 150;
+  view.camera.width = view.camera.height = 300;
+  view.camera.t = Eigen::Vector3d(0, 0, 10);
+  HomeAssignment home;
+  home.image.assign(mesh.triangles.size(), 0);
+  const FlatTriangles flat = home_image_projection(mesh, {view}, home);
+  const TextureAtlas atlas = build_atlas(mesh, flat);
+  ASSERT_EQ(atlas.charts.size(), 1u);
+  // The plane spans pixel centres 140..160 (edges on pixel centres): 21 texels, the corners
+  // at half-integer texel coordinates, plus the gutters.
+  EXPECT_EQ(atlas.width, 21 + 2 * 2);
+  cv::Mat photo(300, 300, CV_32FC3);
+  for (int y = 0; y < 300; ++y)
+    for (int x = 0; x < 300; ++x) photo.at<cv::Vec3f>(y, x) = cv::Vec3f(static_cast<float>(x), static_cast<float>(y), 1);
+  const TexelSurface texels = texel_surface(atlas);
+  cv::Mat rgb(atlas.height, atlas.width, CV_32FC3, cv::Scalar(0, 0, 0));
+  sample_home_image(mesh, texels, home, 0, view, photo, rgb);
+  int inside = 0;
+  for (int y = 0; y < atlas.height; ++y)
+    for (int x = 0; x < atlas.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * atlas.width + x);
+      if (texels.triangle[i] < 0 || texels.distance[i] > 0) continue;
+      ++inside;
+      const cv::Vec3f v = rgb.at<cv::Vec3f>(y, x);
+      // A whole-pixel shift: texel (x, y) is pixel (x + dx, y + dy), one (dx, dy) for the chart.
+      EXPECT_NEAR(v[0] - x, 140 - 2, 1e-4);
+      EXPECT_NEAR(v[1] - y, 140 - 2, 1e-4);
+      EXPECT_EQ(v[2], 1.f);
+    }
+  EXPECT_EQ(inside, 21 * 21);
+  // Unseen triangles get charts of their own after the images.
+  home.image[3] = -1;
+  const FlatTriangles mixed = home_image_projection(mesh, {view}, home);
+  EXPECT_GE(mixed.group[3], 1u);
+  home.image.assign(mesh.triangles.size(), -1);
+  fest::test::expect_bad_input([&] { home_image_projection(mesh, {view}, home); }, "no triangle");
 }

@@ -23,6 +23,7 @@
 #include "brdffit/pbr_appearance.hpp"
 #include "brdffit/texture_atlas.hpp"
 #include "brdffit/texture_bake.hpp"
+#include "brdffit/home_atlas.hpp"
 #include "brdffit/image_metrics.hpp"
 #include "brdffit/ltw_format.hpp"
 #include "cli/cli.hpp"
@@ -203,7 +204,7 @@ void run_synth(const SynthArgs& a) {
 // ------------------------------------------------------------------------ lumitexels
 
 struct LumitexelArgs {
-  std::string mesh, rig, root, out = "-", report;
+  std::string mesh, rig, root, out = "-", report, atlas, atlas_mesh;
   brdffit::LumitexelOptions o;
   double depth_eps_rel = 0.002;
   int threads = 0;
@@ -255,6 +256,32 @@ void run_lumitexels(LumitexelArgs a) {
   header["dropped_lumitexels"] = rep.dropped;
   header["min_samples"] = a.o.min_samples;
   const std::vector<std::uint8_t> bytes = brdffit::encode_ltx(set, header);
+  // --atlas (spec §2.9): the photographs' pixels of every triangle's home image, packed.
+  std::string atlas_exr, atlas_ply;
+  nlohmann::json atlas_report;
+  if (!a.atlas.empty()) {
+    const brdffit::HomeAssignment home = brdffit::assign_home_images(lm.mesh, views, a.o.threads);
+    const brdffit::FlatTriangles flat = brdffit::home_image_projection(lm.mesh, views, home);
+    const brdffit::TextureAtlas atlas = brdffit::build_atlas(lm.mesh, flat);
+    if (atlas.width > 32768 || atlas.height > 32768)
+      throw bad_input("the texture atlas would be {}x{} texels ({})", atlas.width, atlas.height, a.atlas);
+    const brdffit::TexelSurface texels = brdffit::texel_surface(atlas);
+    cv::Mat rgb(atlas.height, atlas.width, CV_32FC3, cv::Scalar(0, 0, 0));
+    std::vector<char> is_home(views.size(), 0);
+    for (std::int32_t k : home.image)
+      if (k >= 0) is_home[static_cast<std::size_t>(k)] = 1;
+    std::size_t home_images = 0, home_pixels = 0;
+    for (std::size_t k = 0; k < views.size(); ++k) {
+      if (!is_home[k]) continue;
+      ++home_images;
+      home_pixels += static_cast<std::size_t>(views[k].camera.width) * static_cast<std::size_t>(views[k].camera.height);
+      brdffit::sample_home_image(lm.mesh, texels, home, k, views[k], load(k).radiance, rgb);
+    }
+    atlas_exr = encode_exr(rgb);
+    atlas_ply = encode_atlas_ply(lm.mesh, atlas);
+    atlas_report = {{"width", atlas.width}, {"height", atlas.height}, {"charts", atlas.charts.size()},
+                    {"home_images", home_images}, {"home_image_pixels", home_pixels}};
+  }
   const double seconds = seconds_since(t0);
   if (!a.report.empty()) {
     nlohmann::json r{{"stage", "lumitexels"},
@@ -271,10 +298,16 @@ void run_lumitexels(LumitexelArgs a) {
                      {"seconds", seconds},
                      {"peak_rss_kb", peak_rss_kb()},
                      {"bytes", bytes.size()}};
+    if (!a.atlas.empty()) r["atlas"] = atlas_report;
     write_json_file(a.report, r);
   }
   if (rep.nonfinite_pixels > 0)
     warn("brdffit", fmt::format("{} samples met NaN/Inf radiance and were left out", rep.nonfinite_pixels));
+  if (!a.atlas.empty()) {
+    write_output(a.atlas, atlas_exr);
+    write_output(a.atlas_mesh.empty() ? std::filesystem::path(a.atlas).replace_extension(".ply").string() : a.atlas_mesh,
+                 atlas_ply);
+  }
   write_binary(a.out, bytes);
 }
 
@@ -672,6 +705,9 @@ void add_geometry_commands(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   l->add_option("--shadow-res", ltx.o.shadow_resolution, "Shadow map size (0: the largest image side, 512..8192)")
       ->check(CLI::Range(0, 16384));
+  l->add_option("--atlas", ltx.atlas, "Also write the texture atlas of the home images' pixels (EXR; spec §2.9)");
+  l->add_option("--atlas-mesh", ltx.atlas_mesh, "The mesh with the atlas' texture coordinates (PLY; default: the "
+                                                "--atlas path with .ply)");
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
   cli::add_threads(*l, ltx.threads);
   l->callback([] { run_lumitexels(ltx); });
