@@ -25,6 +25,13 @@ double pbr_roughness(const reflectance::LafortuneBrdf& brdf) {
 }
 
 PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdfs, const float* weights, bool rgb) {
+  std::vector<double> roughness;
+  for (const auto* b : brdfs) roughness.push_back(pbr_roughness(*b));
+  return pbr_of_blend(brdfs, roughness, weights, rgb);
+}
+
+PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdfs, const std::vector<double>& roughness,
+                      const float* weights, bool rgb) {
   PbrPoint p;
   const std::size_t count = brdfs.size();
   double dominant = -1;
@@ -37,7 +44,7 @@ PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdf
     }
     if (magnitude > dominant) {
       dominant = magnitude;
-      p.roughness = pbr_roughness(*brdfs[j]);
+      p.roughness = roughness[j];
     }
   }
   p.base_color = p.base_color.cwiseMax(0.0).cwiseMin(1.0);
@@ -57,18 +64,21 @@ PbrSurface materials_surface(const reflectance::TriangleMesh& mesh, const reflec
       if (id >= m) throw bad_input("triangle material {} of {} materials", id, m);
   }
   std::vector<const reflectance::LafortuneBrdf*> all;
-  for (const auto& b : mats.brdfs) all.push_back(&b);
-  return [&mesh, &mats, all, m](std::uint32_t t, const Eigen::Vector3d& bary) {
+  std::vector<double> roughness;
+  std::vector<PbrPoint> pure;  // each material alone
+  for (const auto& b : mats.brdfs) {
+    all.push_back(&b);
+    roughness.push_back(pbr_roughness(b));
+    pure.push_back({b.rho_d.cwiseMax(0.0).cwiseMin(1.0), roughness.back(), 0, Eigen::Vector3d::Zero()});
+  }
+  return [&mesh, &mats, all, roughness, pure, m](std::uint32_t t, const Eigen::Vector3d& bary) {
+    if (mats.vertex_weights.empty()) return pure[mats.triangle_material[t]];
     std::vector<float> w(m, 0.f);
-    if (mats.vertex_weights.empty()) {
-      w[mats.triangle_material[t]] = 1;
-    } else {
-      for (std::size_t k = 0; k < 3; ++k) {
-        const float* vw = &mats.vertex_weights[mesh.triangles[t][k] * m];
-        for (std::size_t j = 0; j < m; ++j) w[j] += static_cast<float>(bary[static_cast<Eigen::Index>(k)]) * vw[j];
-      }
+    for (std::size_t k = 0; k < 3; ++k) {
+      const float* vw = &mats.vertex_weights[mesh.triangles[t][k] * m];
+      for (std::size_t j = 0; j < m; ++j) w[j] += static_cast<float>(bary[static_cast<Eigen::Index>(k)]) * vw[j];
     }
-    return pbr_of_blend(all, w.data(), false);
+    return pbr_of_blend(all, roughness, w.data(), false);
   };
 }
 
@@ -85,7 +95,10 @@ LumitexelSurface::LumitexelSurface(const reflectance::TriangleMesh& mesh, const 
     throw bad_input("{} refined normals for {} lumitexels", normals_.size(), n);
   if (fallback.triangle_material.size() != mesh.triangles.size() || fallback.brdfs.empty())
     throw bad_input("the fallback materials do not cover the {} triangles", mesh.triangles.size());
-  for (const Eigen::VectorXd& p : projection.basis.brdfs) basis_.push_back(to_brdf(projection.basis.model, p));
+  for (const Eigen::VectorXd& p : projection.basis.brdfs) {
+    basis_.push_back(to_brdf(projection.basis.model, p));
+    roughness_.push_back(pbr_roughness(basis_.back()));
+  }
   for (const auto& list : projection.basis.cluster_basis)
     for (int j : list)
       if (j < 0 || static_cast<std::size_t>(j) >= basis_.size())
@@ -126,7 +139,11 @@ PbrPoint LumitexelSurface::operator()(std::uint32_t t, const Eigen::Vector3d& ba
   const auto i = static_cast<std::size_t>(nearest);
   const std::vector<int>& list = projection_.basis.cluster_basis[projection_.cluster[i]];
   std::vector<const reflectance::LafortuneBrdf*> brdfs;
-  for (int j : list) brdfs.push_back(&basis_[static_cast<std::size_t>(j)]);
+  std::vector<double> roughness;
+  for (int j : list) {
+    brdfs.push_back(&basis_[static_cast<std::size_t>(j)]);
+    roughness.push_back(roughness_[static_cast<std::size_t>(j)]);
+  }
   // Weights are stored basis_size wide (rgb: 3 x basis_size); the list may be shorter, its
   // trailing weights are 0. Copy the used ones into the layout pbr_of_blend reads.
   const bool rgb = projection_.mode == WeightMode::rgb;
@@ -140,7 +157,7 @@ PbrPoint LumitexelSurface::operator()(std::uint32_t t, const Eigen::Vector3d& ba
       w[j] = stored[j];
     }
   }
-  PbrPoint q = pbr_of_blend(brdfs, w.data(), rgb);
+  PbrPoint q = pbr_of_blend(brdfs, roughness, w.data(), rgb);
   if (!normals_.empty()) q.normal = normals_[i];
   return q;
 }

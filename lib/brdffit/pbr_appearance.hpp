@@ -40,6 +40,9 @@ double pbr_roughness(const reflectance::LafortuneBrdf& brdf);
 // the dominant basis BRDF"). `weights` holds one weight per BRDF, or 3 per BRDF
 // channel-major (3 x count) when rgb.
 PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdfs, const float* weights, bool rgb);
+// The same with each BRDF's pbr_roughness given (baking evaluates millions of texels).
+PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdfs, const std::vector<double>& roughness,
+                      const float* weights, bool rgb);
 
 // Surface of a materials file: vertex weights are blended barycentrically, else each
 // triangle has its material. Throws bad_input on sizes that do not match the mesh.
@@ -62,6 +65,7 @@ class LumitexelSurface {
   const reflectance::SurfaceMaterials& fallback_;
   std::vector<Eigen::Vector3d> normals_;
   std::vector<reflectance::LafortuneBrdf> basis_;
+  std::vector<double> roughness_;  // pbr_roughness of each basis BRDF
   std::vector<std::uint32_t> order_, first_;  // lumitexels sorted by triangle; first_[t]..first_[t+1]
 };
 
