@@ -304,6 +304,8 @@ void run_lumitexels(LumitexelArgs a) {
   if (rep.nonfinite_pixels > 0)
     warn("brdffit", fmt::format("{} samples met NaN/Inf radiance and were left out", rep.nonfinite_pixels));
   if (!a.atlas.empty()) {
+    // The .ltx goes last; refuse a terminal before any file is written.
+    if (is_stdio(a.out) && isatty(1)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
     write_output(a.atlas, atlas_exr);
     write_output(a.atlas_mesh.empty() ? std::filesystem::path(a.atlas).replace_extension(".ply").string() : a.atlas_mesh,
                  atlas_ply);
