@@ -582,15 +582,24 @@ void run_export(const ExportArgs& a) {
   std::vector<Eigen::Vector3d> refined;
   if (!a.normals.empty()) refined = load_refined_normals(a.normals, fitted->set.lumitexels.size());
 
-  // The atlas: axis-projected charts at a texel size that makes it about --texture-size wide.
-  const double texel = a.texel > 0 ? a.texel : brdffit::texel_size_for(lm.mesh, a.texture_size);
+  // The atlas: axis-projected charts at a texel size that makes its longer side about
+  // --texture-size. The first guess ignores the gutters and the packing's waste, which
+  // grow with the number of charts (a fragmented scan): coarsen the texels up to twice
+  // more when the atlas came out more than 10 % too large.
+  double texel = a.texel > 0 ? a.texel : brdffit::texel_size_for(lm.mesh, a.texture_size);
   brdffit::AtlasOptions ao;
   ao.gutter = a.gutter;
-  const brdffit::FlatTriangles flat = brdffit::axis_projection(lm.mesh, texel);
   constexpr double kMaxSide = 16384;
-  if (brdffit::flat_texel_area(flat) > kMaxSide * kMaxSide)
-    throw usage_error("--texel {}: the mesh alone would cover more than {}^2 texels", texel, kMaxSide);
-  const brdffit::TextureAtlas atlas = brdffit::build_atlas(lm.mesh, flat, ao);
+  brdffit::TextureAtlas atlas;
+  for (int pass = 0; pass < 3; ++pass) {
+    const brdffit::FlatTriangles flat = brdffit::axis_projection(lm.mesh, texel);
+    if (brdffit::flat_texel_area(flat) > kMaxSide * kMaxSide)
+      throw usage_error("--texel {}: the mesh alone would cover more than {}^2 texels", texel, kMaxSide);
+    atlas = brdffit::build_atlas(lm.mesh, flat, ao);
+    const double side = std::max(atlas.width, atlas.height);
+    if (a.texel > 0 || side <= 1.1 * a.texture_size) break;
+    texel *= side / a.texture_size;
+  }
   if (atlas.width > 16384 || atlas.height > 16384)
     throw usage_error("the texture atlas would be {}x{} texels (at most 16384): raise --texel or lower --texture-size",
                       atlas.width, atlas.height);
@@ -778,7 +787,7 @@ void add_geometry_commands(CLI::App& app) {
   x->add_option("--normals", ex.normals, "Refined normals (normals.ply of brdffit normals): also a normal map");
   x->add_option("--gltf", ex.out, "Output .gltf (PNG textures beside it), .glb (all in one), - = standard output "
                                   "(textures as data URIs)")->required();
-  x->add_option("--texture-size", ex.texture_size, "About the atlas width in texels")->check(CLI::Range(16, 16384));
+  x->add_option("--texture-size", ex.texture_size, "About the atlas' longer side in texels")->check(CLI::Range(16, 16384));
   x->add_option("--texel", ex.texel, "World units per texel instead of --texture-size")->check(CLI::PositiveNumber);
   x->add_option("--gutter", ex.gutter, "Texels around each atlas chart")->check(CLI::Range(0, 64));
   x->add_flag("--flat", ex.flat, "No textures: one constant material per BRDF, triangles by majority material");
