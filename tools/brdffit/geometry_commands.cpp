@@ -8,7 +8,9 @@
 #include <cmath>
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -18,6 +20,10 @@
 #include <fmt/format.h>
 
 #include "brdffit/fitted_materials.hpp"
+#include "brdffit/pbr_appearance.hpp"
+#include "brdffit/texture_atlas.hpp"
+#include "brdffit/texture_bake.hpp"
+#include "brdffit/home_atlas.hpp"
 #include "brdffit/image_metrics.hpp"
 #include "brdffit/ltw_format.hpp"
 #include "cli/cli.hpp"
@@ -198,7 +204,7 @@ void run_synth(const SynthArgs& a) {
 // ------------------------------------------------------------------------ lumitexels
 
 struct LumitexelArgs {
-  std::string mesh, rig, root, out = "-", report;
+  std::string mesh, rig, root, out = "-", report, atlas, atlas_mesh;
   brdffit::LumitexelOptions o;
   double depth_eps_rel = 0.002;
   int threads = 0;
@@ -250,6 +256,32 @@ void run_lumitexels(LumitexelArgs a) {
   header["dropped_lumitexels"] = rep.dropped;
   header["min_samples"] = a.o.min_samples;
   const std::vector<std::uint8_t> bytes = brdffit::encode_ltx(set, header);
+  // --atlas (spec §2.9): the photographs' pixels of every triangle's home image, packed.
+  std::string atlas_exr, atlas_ply;
+  nlohmann::json atlas_report;
+  if (!a.atlas.empty()) {
+    const brdffit::HomeAssignment home = brdffit::assign_home_images(lm.mesh, views, a.o.threads);
+    const brdffit::FlatTriangles flat = brdffit::home_image_projection(lm.mesh, views, home);
+    const brdffit::TextureAtlas atlas = brdffit::build_atlas(lm.mesh, flat);
+    if (atlas.width > 32768 || atlas.height > 32768)
+      throw bad_input("the texture atlas would be {}x{} texels ({})", atlas.width, atlas.height, a.atlas);
+    const brdffit::TexelSurface texels = brdffit::texel_surface(atlas);
+    cv::Mat rgb(atlas.height, atlas.width, CV_32FC3, cv::Scalar(0, 0, 0));
+    std::vector<char> is_home(views.size(), 0);
+    for (std::int32_t k : home.image)
+      if (k >= 0) is_home[static_cast<std::size_t>(k)] = 1;
+    std::size_t home_images = 0, home_pixels = 0;
+    for (std::size_t k = 0; k < views.size(); ++k) {
+      if (!is_home[k]) continue;
+      ++home_images;
+      home_pixels += static_cast<std::size_t>(views[k].camera.width) * static_cast<std::size_t>(views[k].camera.height);
+      brdffit::sample_home_image(lm.mesh, texels, home, k, views[k], load(k).radiance, rgb);
+    }
+    atlas_exr = encode_exr(rgb);
+    atlas_ply = encode_atlas_ply(lm.mesh, atlas);
+    atlas_report = {{"width", atlas.width}, {"height", atlas.height}, {"charts", atlas.charts.size()},
+                    {"home_images", home_images}, {"home_image_pixels", home_pixels}};
+  }
   const double seconds = seconds_since(t0);
   if (!a.report.empty()) {
     nlohmann::json r{{"stage", "lumitexels"},
@@ -266,10 +298,18 @@ void run_lumitexels(LumitexelArgs a) {
                      {"seconds", seconds},
                      {"peak_rss_kb", peak_rss_kb()},
                      {"bytes", bytes.size()}};
+    if (!a.atlas.empty()) r["atlas"] = atlas_report;
     write_json_file(a.report, r);
   }
   if (rep.nonfinite_pixels > 0)
     warn("brdffit", fmt::format("{} samples met NaN/Inf radiance and were left out", rep.nonfinite_pixels));
+  if (!a.atlas.empty()) {
+    // The .ltx goes last; refuse a terminal before any file is written.
+    if (is_stdio(a.out) && isatty(1)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
+    write_output(a.atlas, atlas_exr);
+    write_output(a.atlas_mesh.empty() ? std::filesystem::path(a.atlas).replace_extension(".ply").string() : a.atlas_mesh,
+                 atlas_ply);
+  }
   write_binary(a.out, bytes);
 }
 
@@ -368,39 +408,55 @@ struct RenderArgs {
   int threads = 0;
 };
 
+// The fitted result: the .ltw weights and the .ltx lumitexels they were made from, both
+// checked against the mesh.
+struct FittedInputs {
+  brdffit::Projection projection;
+  brdffit::LumitexelSet set;
+};
+
+FittedInputs load_fitted(const LoadedMesh& lm, const std::string& mesh_path, const std::string& svbrdf,
+                         const std::string& ltx) {
+  if (ltx.empty()) throw usage_error("--svbrdf needs --ltx, the lumitexel file the weights were made from");
+  FittedInputs f;
+  nlohmann::json wh;
+  try {
+    f.projection = brdffit::decode_ltw(read_input(svbrdf), &wh);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), svbrdf));
+  }
+  const std::string bytes = read_input(ltx);
+  try {
+    f.set = brdffit::decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), nullptr);
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), ltx));
+  }
+  if (f.set.mesh_sha256 != lm.sha256)
+    throw bad_input("the mesh does not match the lumitexel file: SHA-256 {} vs {} ({}, {})", lm.sha256.substr(0, 16),
+                    f.set.mesh_sha256.substr(0, 16), mesh_path, ltx);
+  if (wh.contains("mesh_sha256") && wh["mesh_sha256"].is_string() && wh["mesh_sha256"] != lm.sha256)
+    throw bad_input("the weights were made for another mesh (mesh_sha256 differs) ({})", svbrdf);
+  return f;
+}
+
+// Every triangle takes the BRDF of its lumitexels' majority cluster.
+reflectance::SurfaceMaterials fitted_materials(const FittedInputs& f, const LoadedMesh& lm, const std::string& where) {
+  try {
+    return brdffit::materials_from_projection(f.projection, f.set, lm.mesh.triangles.size());
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), where));
+  }
+}
+
 // --materials JSON, or the fitted materials: --svbrdf (.ltw) with the --ltx it was made
 // from, each triangle taking the BRDF of its lumitexels' majority cluster.
 reflectance::SurfaceMaterials render_materials(const RenderArgs& a, const LoadedMesh& lm) {
   if (a.materials.empty() == a.svbrdf.empty()) throw usage_error("render needs --materials or --svbrdf (not both)");
   if (!a.materials.empty()) return materials_from_json(load_json(a.materials), lm.mesh, a.materials);
-  if (a.ltx.empty()) throw usage_error("--svbrdf needs --ltx, the lumitexel file the weights were made from");
-  nlohmann::json wh;
-  brdffit::Projection p;
-  try {
-    p = brdffit::decode_ltw(read_input(a.svbrdf), &wh);
-  } catch (const Error& e) {
-    if (e.status() != Status::bad_input) throw;
-    throw Error(e.status(), with_location(e.what(), a.svbrdf));
-  }
-  const std::string bytes = read_input(a.ltx);
-  brdffit::LumitexelSet set;
-  try {
-    set = brdffit::decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), nullptr);
-  } catch (const Error& e) {
-    if (e.status() != Status::bad_input) throw;
-    throw Error(e.status(), with_location(e.what(), a.ltx));
-  }
-  if (set.mesh_sha256 != lm.sha256)
-    throw bad_input("the mesh does not match the lumitexel file: SHA-256 {} vs {} ({}, {})", lm.sha256.substr(0, 16),
-                    set.mesh_sha256.substr(0, 16), a.mesh, a.ltx);
-  if (wh.contains("mesh_sha256") && wh["mesh_sha256"].is_string() && wh["mesh_sha256"] != lm.sha256)
-    throw bad_input("the weights were made for another mesh (mesh_sha256 differs) ({})", a.svbrdf);
-  try {
-    return brdffit::materials_from_projection(p, set, lm.mesh.triangles.size());
-  } catch (const Error& e) {
-    if (e.status() != Status::bad_input) throw;
-    throw Error(e.status(), with_location(e.what(), a.svbrdf + ", " + a.ltx));
-  }
+  return fitted_materials(load_fitted(lm, a.mesh, a.svbrdf, a.ltx), lm, a.svbrdf + ", " + a.ltx);
 }
 
 void run_render(const RenderArgs& a) {
@@ -480,13 +536,101 @@ void run_eval(const EvalArgs& a) {
 // ---------------------------------------------------------------------------- export
 
 struct ExportArgs {
-  std::string mesh, materials, out;
+  std::string mesh, materials, svbrdf, ltx, normals, out;
+  bool flat = false;
+  int texture_size = 1024, gutter = 2, threads = 0;
+  double texel = 0;
 };
 
+// 8-bit PNGs of the baked maps: base colour sRGB-encoded (glTF's baseColorTexture is
+// sRGB), metallic-roughness linear, normals as 0.5 n + 0.5.
+PngTextures encode_maps(const brdffit::PbrMaps& m, bool normal_map) {
+  auto to8 = [](const cv::Mat& f, auto map) {
+    cv::Mat out(f.size(), CV_8UC3);
+    for (int y = 0; y < f.rows; ++y)
+      for (int x = 0; x < f.cols; ++x)
+        for (int c = 0; c < 3; ++c)
+          out.at<cv::Vec3b>(y, x)[c] =
+              static_cast<std::uint8_t>(std::lround(255 * std::clamp(map(f.at<cv::Vec3f>(y, x)[c]), 0.0, 1.0)));
+    return out;
+  };
+  PngTextures t;
+  t.base_color = encode_png(to8(m.base_color, [](float v) { return brdffit::srgb_encode(v); }));
+  t.metallic_roughness = encode_png(to8(m.metallic_roughness, [](float v) { return static_cast<double>(v); }));
+  if (normal_map) t.normal = encode_png(to8(m.normal, [](float v) { return 0.5 * v + 0.5; }));
+  return t;
+}
+
 void run_export(const ExportArgs& a) {
+  if (a.materials.empty() == a.svbrdf.empty()) throw usage_error("export needs --materials or --svbrdf (not both)");
+  if (!a.normals.empty() && a.svbrdf.empty()) throw usage_error("--normals needs --svbrdf and --ltx");
+  const bool glb = a.out.size() > 4 && a.out.compare(a.out.size() - 4, 4, ".glb") == 0;
+  if (a.flat && (glb || !a.normals.empty())) throw usage_error("--flat writes a .gltf without textures (no .glb, no --normals)");
   const LoadedMesh lm = load_mesh(a.mesh);
-  const reflectance::SurfaceMaterials mats = materials_from_json(load_json(a.materials), lm.mesh, a.materials);
-  write_output(a.out, encode_gltf(lm.mesh, mats));
+  std::optional<FittedInputs> fitted;
+  reflectance::SurfaceMaterials mats;
+  if (!a.materials.empty()) {
+    mats = materials_from_json(load_json(a.materials), lm.mesh, a.materials);
+  } else {
+    fitted = load_fitted(lm, a.mesh, a.svbrdf, a.ltx);
+    mats = fitted_materials(*fitted, lm, a.svbrdf + ", " + a.ltx);
+  }
+  if (a.flat) {
+    write_output(a.out, encode_gltf(lm.mesh, mats));
+    return;
+  }
+  std::vector<Eigen::Vector3d> refined;
+  if (!a.normals.empty()) refined = load_refined_normals(a.normals, fitted->set.lumitexels.size());
+
+  // The atlas: axis-projected charts at a texel size that makes its longer side about
+  // --texture-size. The first guess ignores the gutters and the packing's waste, which
+  // grow with the number of charts (a fragmented scan): coarsen the texels up to twice
+  // more when the atlas came out more than 10 % too large.
+  double texel = a.texel > 0 ? a.texel : brdffit::texel_size_for(lm.mesh, a.texture_size);
+  brdffit::AtlasOptions ao;
+  ao.gutter = a.gutter;
+  constexpr double kMaxSide = 16384;
+  brdffit::TextureAtlas atlas;
+  for (int pass = 0; pass < 3; ++pass) {
+    const brdffit::FlatTriangles flat = brdffit::axis_projection(lm.mesh, texel);
+    if (brdffit::flat_texel_area(flat) > kMaxSide * kMaxSide)
+      throw usage_error("--texel {}: the mesh alone would cover more than {}^2 texels", texel, kMaxSide);
+    atlas = brdffit::build_atlas(lm.mesh, flat, ao);
+    const double side = std::max(atlas.width, atlas.height);
+    if (a.texel > 0 || side <= 1.1 * a.texture_size) break;
+    texel *= side / a.texture_size;
+  }
+  if (atlas.width > 16384 || atlas.height > 16384)
+    throw usage_error("the texture atlas would be {}x{} texels (at most 16384): raise --texel or lower --texture-size",
+                      atlas.width, atlas.height);
+  const brdffit::TexelSurface texels = brdffit::texel_surface(atlas);
+  brdffit::PbrMaps maps;
+  if (fitted) {
+    const brdffit::LumitexelSurface surface(lm.mesh, fitted->set, fitted->projection, mats, std::move(refined));
+    maps = brdffit::bake_pbr(lm.mesh, atlas, texels, std::cref(surface), resolve_threads(a.threads));
+  } else {
+    maps = brdffit::bake_pbr(lm.mesh, atlas, texels, brdffit::materials_surface(lm.mesh, mats), resolve_threads(a.threads));
+  }
+  const PngTextures pngs = encode_maps(maps, !a.normals.empty());
+
+  // Images beside the .gltf (named after it), inside the .glb, or data URIs on stdout.
+  const ImageStorage storage = is_stdio(a.out) ? ImageStorage::data_uri : glb ? ImageStorage::glb : ImageStorage::files;
+  const std::filesystem::path out_path(a.out);
+  const GltfFile g = encode_textured_gltf(lm.mesh, atlas, pngs, storage, out_path.stem().string());
+  if (is_stdio(a.out)) {
+    write_output(a.out, g.bytes);
+    return;
+  }
+  // All files under temporary names first, renamed into place only when every one was
+  // written: nothing partial when the folder is full or missing.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  auto stage = [&](const std::string& path, const std::string& bytes) {
+    files.push_back(std::make_unique<AtomicFile>(path));
+    write_output(files.back()->temp_path(), bytes);
+  };
+  for (const auto& [name, bytes] : g.images) stage((out_path.parent_path() / name).string(), bytes);
+  stage(a.out, g.bytes);
+  for (auto& f : files) f->commit();
 }
 
 // ------------------------------------------------------------------------------ info
@@ -572,6 +716,9 @@ void add_geometry_commands(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   l->add_option("--shadow-res", ltx.o.shadow_resolution, "Shadow map size (0: the largest image side, 512..8192)")
       ->check(CLI::Range(0, 16384));
+  l->add_option("--atlas", ltx.atlas, "Also write the texture atlas of the home images' pixels (EXR; spec §2.9)");
+  l->add_option("--atlas-mesh", ltx.atlas_mesh, "The mesh with the atlas' texture coordinates (PLY; default: the "
+                                                "--atlas path with .ply)");
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
   cli::add_threads(*l, ltx.threads);
   l->callback([] { run_lumitexels(ltx); });
@@ -630,10 +777,21 @@ void add_geometry_commands(CLI::App& app) {
   e->callback([] { run_eval(ev); });
 
   static ExportArgs ex;
-  auto* x = app.add_subcommand("export", "glTF 2.0 with a metallic-roughness approximation of the materials");
+  auto* x = app.add_subcommand("export", "glTF 2.0 (or .glb) with the materials as metallic-roughness textures in a "
+                                         "texture atlas (spec §2.9, §2.10)");
   x->add_option("--mesh", ex.mesh, "The mesh")->required();
-  x->add_option("--materials", ex.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)")->required();
-  x->add_option("--gltf", ex.out, "Output .gltf (self-contained), - = standard output")->required();
+  x->add_option("--materials", ex.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)");
+  x->add_option("--svbrdf", ex.svbrdf, "Fitted materials instead: .ltw of brdffit project (with --ltx); each texel "
+                                       "takes the nearest lumitexel's blend of basis BRDFs");
+  x->add_option("--ltx", ex.ltx, "The lumitexel file the --svbrdf weights were made from");
+  x->add_option("--normals", ex.normals, "Refined normals (normals.ply of brdffit normals): also a normal map");
+  x->add_option("--gltf", ex.out, "Output .gltf (PNG textures beside it), .glb (all in one), - = standard output "
+                                  "(textures as data URIs)")->required();
+  x->add_option("--texture-size", ex.texture_size, "About the atlas' longer side in texels")->check(CLI::Range(16, 16384));
+  x->add_option("--texel", ex.texel, "World units per texel instead of --texture-size")->check(CLI::PositiveNumber);
+  x->add_option("--gutter", ex.gutter, "Texels around each atlas chart")->check(CLI::Range(0, 64));
+  x->add_flag("--flat", ex.flat, "No textures: one constant material per BRDF, triangles by majority material");
+  cli::add_threads(*x, ex.threads);
   x->callback([] { run_export(ex); });
 
   static InfoArgs info;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/cli.hpp"
+#include "factor_command.hpp"
 #include "geometry_commands.hpp"
 #include "materials_commands.hpp"
 
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   fest::brdffit_tool::add_geometry_commands(app);
   brdffit_tool::add_materials_commands(app);
+  fest::brdffit_tool::add_factor_command(app);
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error.\n"
              "See brdffit(1), ltx(5), ltw(5).");
   return fest::run_tool("brdffit", [&]() -> int {

@@ -70,6 +70,44 @@ LoadedMesh load_mesh(const std::string& path) {
   return out;
 }
 
+// Refined normals of `brdffit normals` (normals.ply: one point per lumitexel, in order).
+std::vector<Eigen::Vector3d> load_refined_normals(const std::string& path, std::size_t lumitexels) {
+  const Mesh m = formats::parse(formats::load_input(path), formats::read_mesh);
+  if (!m.has_vertex_normals()) throw bad_input("the normals file has no nx ny nz ({})", path);
+  if (m.n_vertices() != lumitexels)
+    throw bad_input("the normals file holds {} points, the lumitexel file {} lumitexels ({})", m.n_vertices(), lumitexels,
+                    path);
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(lumitexels);
+  for (auto v : m.vertices()) {
+    const auto& n = m.normal(v);
+    const Eigen::Vector3d e(n[0], n[1], n[2]);
+    if (!e.allFinite() || e.norm() < 1e-9) throw bad_input("point {} has no usable normal ({})", v.idx(), path);
+    out.push_back(e.normalized());
+  }
+  return out;
+}
+
+std::string encode_atlas_ply(const reflectance::TriangleMesh& tm, const brdffit::TextureAtlas& atlas) {
+  Mesh m;
+  m.request_vertex_normals();
+  m.request_vertex_texcoords2D();
+  for (std::size_t t = 0; t < tm.triangles.size(); ++t) {
+    Mesh::VertexHandle vh[3];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = tm.triangles[t][static_cast<std::size_t>(k)];
+      const auto& p = tm.vertices[v];
+      const auto& n = tm.normals[v];
+      const Eigen::Vector2d uv = atlas.uv(t, k);
+      vh[k] = m.add_vertex(Mesh::Point(p.x(), p.y(), p.z()));
+      m.set_normal(vh[k], Mesh::Normal(n.x(), n.y(), n.z()));
+      m.set_texcoord2D(vh[k], Mesh::TexCoord2D(static_cast<float>(uv.x()), static_cast<float>(1 - uv.y())));
+    }
+    m.add_face(vh[0], vh[1], vh[2]);
+  }
+  return formats::write_mesh(m, formats::Format::ply);
+}
+
 std::string encode_mesh_ply(const reflectance::TriangleMesh& tm) {
   Mesh m;
   m.request_vertex_normals();

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 
 #include "brdffit/lumitexel_builder.hpp"
+#include "brdffit/texture_atlas.hpp"
 #include "reflectance/camera.hpp"
 #include "reflectance/lafortune.hpp"
 #include "reflectance/render.hpp"
@@ -29,6 +30,15 @@ LoadedMesh load_mesh(const std::string& path);
 // SHA-256 (hex) of the vertex positions (f64 little-endian x, y, z each) followed by the
 // triangles (u32 little-endian indices): the same for every file format of one mesh.
 std::string mesh_sha256(const reflectance::TriangleMesh& mesh);
+
+// The refined normals of `brdffit normals` (normals.ply: one point per lumitexel, in the
+// .ltx order); throws bad_input unless there are `lumitexels` points with usable normals.
+std::vector<Eigen::Vector3d> load_refined_normals(const std::string& path, std::size_t lumitexels);
+
+// The mesh of a texture atlas as PLY: three vertices per triangle (the atlas cuts the
+// surface into charts) with normals and texture coordinates s, t (t up: s = x / width,
+// t = 1 - y / height, the convention of PLY/OBJ viewers).
+std::string encode_atlas_ply(const reflectance::TriangleMesh& mesh, const brdffit::TextureAtlas& atlas);
 
 // Writes a PLY with vertex normals.
 std::string encode_mesh_ply(const reflectance::TriangleMesh& mesh);
