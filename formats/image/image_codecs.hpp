@@ -27,6 +27,9 @@ cv::Mat decode_pfm(std::string_view bytes, const NetpbmLayout& layout);
 
 // PNG with two channels (grey + alpha), which OpenCV's encoder refuses.
 std::string encode_png_grey_alpha(const cv::Mat& pixels);
+// PNG of 1-4 channels, 8 or 16 bits, rows unfiltered, zlib `level` and `strategy`
+// (Z_HUFFMAN_ONLY for noisy raw data).
+std::string encode_png_unfiltered(const cv::Mat& pixels, int level, int strategy);
 
 // EXR through OpenEXR on in-memory streams.
 cv::Mat decode_exr(std::string_view bytes);

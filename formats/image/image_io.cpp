@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <opencv2/imgcodecs.hpp>
+#include <zlib.h>
 
 #include "core/error.hpp"
 #include "formats/image/image_codecs.hpp"
@@ -99,6 +100,8 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::png:
       if (!integer) refuse(m, format, "PNG holds 8 or 16-bit integers; convert explicitly");
       if (channels == 2) return encode_png_grey_alpha(m);
+      if (options.png_huffman_only && options.png_compression > 0)
+        return encode_png_unfiltered(m, std::min(options.png_compression, 9), Z_HUFFMAN_ONLY);
       return encode_with_opencv(m, ".png",
                                 {cv::IMWRITE_PNG_COMPRESSION, std::clamp(options.png_compression, 0, 9), cv::IMWRITE_PNG_STRATEGY,
                                  options.png_huffman_only ? cv::IMWRITE_PNG_STRATEGY_HUFFMAN_ONLY : cv::IMWRITE_PNG_STRATEGY_DEFAULT});

@@ -24,7 +24,7 @@ struct ImageWriteOptions {
   bool ascii = false;      // PGM/PPM: plain (P2/P3) instead of raw (P5/P6)
   bool exr_half = false;   // EXR: 16-bit half channels instead of 32-bit float
   int png_compression = 6; // PNG: zlib level 0-9 (1: several times faster, e.g. capture's raw shots)
-  bool png_huffman_only = false;  // PNG: zlib Huffman coding only (noisy raw data: faster and smaller)
+  bool png_huffman_only = false;  // PNG: unfiltered rows, zlib Huffman coding only (noisy raw data: faster and smaller)
   int jpeg_quality = 0;    // JPEG: 1-100 opts in to lossy output (terrainlod's texture tiles); 0 refuses JPEG
 };
 

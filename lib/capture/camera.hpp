@@ -23,6 +23,9 @@ class Camera {
   virtual CameraInfo info() = 0;
   virtual void set_exposure(double seconds) = 0;
   virtual Image capture() = 0;
+  // Which take of one exposure the next picture is (the plan's "repeat"): a simulator
+  // draws fresh noise for each take; a real camera has no use for it.
+  virtual void set_repeat_index(int /*take*/) {}
 };
 
 }  // namespace fest::capture

@@ -20,6 +20,7 @@ json shot_to_json(const ShotRecord& r) {
   j["lights_on"] = s.lights_on;
   j["exposure_index"] = s.exposure_index;
   j["exposure_s"] = s.exposure_s;
+  if (s.repeat_index > 0) j["repeat_index"] = s.repeat_index;  // only plans with "repeat" > 1 have takes
   j["time"] = r.time;
   j["sha256"] = r.sha256;
   j["black_level"] = r.black_level;
@@ -30,7 +31,7 @@ json shot_to_json(const ShotRecord& r) {
 ShotRecord shot_from_json(const json& j, const std::string& where, const std::string& path) {
   const JsonFields f(where);
   f.keys(j, path, {"file", "kind", "angle_index", "angle_cmd_deg", "angle_deg", "angle_steps", "light", "lights_on",
-                   "exposure_index", "exposure_s", "time", "sha256", "black_level", "bits"});
+                   "exposure_index", "exposure_s", "repeat_index", "time", "sha256", "black_level", "bits"});
   for (const char* k : {"file", "kind", "angle_index", "angle_cmd_deg", "angle_deg", "angle_steps", "exposure_s", "sha256"})
     if (!j.contains(k)) f.fail("missing", json_path(path, k));
   ShotRecord r;
@@ -53,6 +54,7 @@ ShotRecord shot_from_json(const json& j, const std::string& where, const std::st
   if (j.contains("lights_on")) s.lights_on = f.strings(j["lights_on"], json_path(path, "lights_on"));
   if (j.contains("exposure_index")) s.exposure_index = f.integer(j["exposure_index"], json_path(path, "exposure_index"), 0, 1000);
   s.exposure_s = f.positive(j["exposure_s"], json_path(path, "exposure_s"));
+  if (j.contains("repeat_index")) s.repeat_index = f.integer(j["repeat_index"], json_path(path, "repeat_index"), 0, 99);
   if (j.contains("time") && j["time"].is_string()) r.time = j["time"].get<std::string>();
   r.sha256 = f.string(j["sha256"], json_path(path, "sha256"));
   if (r.sha256.size() != 64 || r.sha256.find_first_not_of("0123456789abcdef") != std::string::npos)

@@ -136,8 +136,7 @@ Plan parse_plan(const json& doc, const std::string& where) {
 
   if (doc.contains("auto_bracket") && f.boolean(doc["auto_bracket"], "auto_bracket"))
     f.fail("true is not supported by this version (give exposures_s explicitly)", "auto_bracket");
-  if (doc.contains("repeat") && f.integer(doc["repeat"], "repeat", 1, 1000) != 1)
-    f.fail("values other than 1 are not supported by this version", "repeat");
+  if (doc.contains("repeat")) p.repeat = f.integer(doc["repeat"], "repeat", 1, 100);
 
   if (doc.contains("per_view")) {
     const json& v = doc["per_view"];
@@ -178,7 +177,7 @@ json plan_to_json(const Plan& p) {
   if (p.lightcal.count > 0) view["lightcal"] = shots(p.lightcal);
   if (p.dark.count > 0) view["dark"] = shots(p.dark);
   doc["per_view"] = view;
-  doc["repeat"] = 1;
+  doc["repeat"] = p.repeat;
   return doc;
 }
 
@@ -212,7 +211,7 @@ std::vector<PlannedShot> expand_plan(const Plan& plan, const Station& station, c
       if (lights[j] == lights[i]) f.fail(fmt::format("names light \"{}\" twice", lights[i]), fmt::format("lights[{}]", i));
     // The thermal limit: a light stays on for its warm-up and its whole series.
     double on_s = l->warmup_ms / 1000.0;
-    for (double t : plan.exposures_s) on_s += t;
+    for (double t : plan.exposures_s) on_s += t * plan.repeat;
     if (l->max_on_s > 0 && on_s > l->max_on_s)
       f.fail(fmt::format("light \"{}\" would stay on {:.3g} s per series, over its max_on_s {} s", l->id, on_s, l->max_on_s),
              fmt::format("lights[{}]", i));
@@ -256,16 +255,19 @@ std::vector<PlannedShot> expand_plan(const Plan& plan, const Station& station, c
       shots.push_back(s);
     }
     for (const std::string& l : lights)
-      for (std::size_t k = 0; k < plan.exposures_s.size(); ++k) {
-        PlannedShot s = base;
-        s.kind = ShotKind::hdr;
-        s.light = l;
-        s.lights_on = {l};
-        s.exposure_index = int(k);
-        s.exposure_s = plan.exposures_s[k];
-        s.file = fmt::format("{}{}/e{:02}{}", folder, l, k, extension);
-        shots.push_back(s);
-      }
+      for (std::size_t k = 0; k < plan.exposures_s.size(); ++k)
+        for (int r = 0; r < plan.repeat; ++r) {  // the takes of one exposure back to back
+          PlannedShot s = base;
+          s.kind = ShotKind::hdr;
+          s.light = l;
+          s.lights_on = {l};
+          s.exposure_index = int(k);
+          s.repeat_index = r;
+          s.exposure_s = plan.exposures_s[k];
+          s.file = plan.repeat == 1 ? fmt::format("{}{}/e{:02}{}", folder, l, k, extension)
+                                    : fmt::format("{}{}/e{:02}_r{}{}", folder, l, k, r, extension);
+          shots.push_back(s);
+        }
   }
   return shots;
 }

@@ -26,10 +26,11 @@ struct Plan {
   std::vector<std::string> silhouette_lights;  // lit for the silhouette shot
   double silhouette_exposure_s = 0.01;
   ViewShots lightcal, dark;
+  int repeat = 1;  // takes of every exposure of a series (hdrmerge averages them)
 };
 
 // Throws bad_input naming `where` and the JSON path. Refuses what is not supported yet
-// ("auto_bracket": true, "repeat" other than 1) with a message saying so.
+// ("auto_bracket": true) with a message saying so.
 Plan parse_plan(const nlohmann::json& doc, const std::string& where);
 nlohmann::json plan_to_json(const Plan& plan);
 
@@ -49,6 +50,7 @@ struct PlannedShot {
   std::string light;                    // hdr and lightcal: the light that is on
   std::vector<std::string> lights_on;   // every light on during the shot
   int exposure_index = 0;               // hdr: k of e{k:02}; other kinds: their number
+  int repeat_index = 0;                 // hdr: the take r of e{k:02}_r{r} when the plan repeats
   double exposure_s = 0;
   std::string file;                     // relative to the session, extension included
 };

@@ -59,6 +59,7 @@ SessionOutcome run_session(Turntable& table, LightBank& lights, Camera& camera, 
             exposure = s->exposure_s;
             for (int k = 0; k < options.flush_frames; ++k) camera.capture();
           }
+          camera.set_repeat_index(s->repeat_index);
           const Image image = camera.capture();
           step = fmt::format("store {}", s->file);
           sink.store(*s, pose, image);

@@ -261,7 +261,8 @@ Image SimCamera::capture() {
   // The noise seed is a function of what is photographed (FNV-1a of the state), never of
   // how many pictures came before: a resumed session re-creates the same bytes.
   std::uint64_t h = 1469598103934665603ull ^ scene_.seed;
-  const std::string state = key + fmt::format("|{:.9g}", exposure_s_);
+  // Repeated takes of one exposure (take > 0) get noise of their own.
+  const std::string state = key + fmt::format("|{:.9g}", exposure_s_) + (take_ > 0 ? fmt::format("|take {}", take_) : "");
   for (unsigned char ch : state) h = (h ^ ch) * 1099511628211ull;
   return Image{expose(cache_, exposure_s_, h), ColorSpace::srgb};
 }

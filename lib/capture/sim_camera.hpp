@@ -79,6 +79,7 @@ class SimCamera : public Camera {
   CameraInfo info() override;
   void set_exposure(double seconds) override;
   Image capture() override;
+  void set_repeat_index(int take) override { take_ = take; }
 
   // Exposure of a radiance image as this camera does it (for tests and selftest).
   cv::Mat expose(const cv::Mat& radiance, double seconds, std::uint64_t seed) const;
@@ -93,6 +94,7 @@ class SimCamera : public Camera {
   LightBank& lights_;
   std::uint32_t steps_per_rev_ = 0;
   double exposure_s_ = 0.01;
+  int take_ = 0;
   // The last rendering, keyed by table position and lights on: an exposure series
   // re-exposes it instead of ray-casting again.
   std::string cache_key_;

@@ -209,6 +209,51 @@ expect_status 0
 expect_json '.ok' true
 expect_json '.lights | length' 2
 
+case_ "repeat: every exposure taken N times, hdrmerge averages the takes"
+run capture plan --angles 1 --lights L0 --bracket 1/250:1:8 --repeat 4
+expect_status 0
+expect_json '.repeat' 4
+cp "$out" "$WORK/four.json"
+"$FEST_BIN/capture" plan --angles 1 --lights L0 --bracket 1/250:1:8 > "$WORK/once.json"
+# A noisy camera (2 8-bit DN of read noise) and the same without noise; the response
+# comes from the noiseless shots at 8 bits, so that only the noise differs.
+jq '.response.noise_dn = 512' "$WORK/small_scene.json" > "$WORK/noisy_scene.json"
+jq '.response.noise_dn = 0' "$WORK/small_scene.json" > "$WORK/clean_scene.json"
+jq '.camera.uri = "sim:noisy_scene.json"' "$S" > "$WORK/noisy.json"
+jq '.camera.uri = "sim:clean_scene.json"' "$S" > "$WORK/clean.json"
+jq '.camera.format = "png8"' "$WORK/clean.json" > "$WORK/clean8.json"
+R="$WORK/rep"
+mkdir -p "$R"
+run capture run --station "$WORK/noisy.json" --plan "$WORK/four.json" -o "$R/four"
+expect_status 0
+expect_json '.shots | length' 32
+expect_json '.shots[5].file' '"a000/L0/e01_r1.png"'
+expect_json '.shots[5].repeat_index' 1
+expect_json '[.shots[4:8][] | .exposure_s] | unique' '[0.008]'
+expect_json '.sets[0].shots | length' 32
+check "takes of one exposure carry their own noise" \
+  test "$(jq -r '[.shots[4:8][] | .sha256] | unique | length' "$out")" -eq 4
+for s in once:noisy:one four:clean:fourclean once:clean:clean once:clean8:clean8; do
+  IFS=: read -r plan station name <<< "$s"
+  "$FEST_BIN/capture" run --station "$WORK/$station.json" --plan "$WORK/$plan.json" -o "$R/$name" > /dev/null
+done
+"$FEST_BIN/hdrmerge" calibrate "$R"/clean8/a000/L0/e0*.png -t 0.004,0.008,0.016,0.032,0.064,0.128,0.256,0.512 \
+  -o "$WORK/response.csv"
+for name in four one fourclean clean; do
+  run hdrmerge --manifest "$R/$name/manifest.json" --response "$WORK/response.csv" --float
+  expect_status 0
+done
+# Identical takes (no noise) average to themselves: the same radiance as one take.
+check "noiseless takes merge like one take" \
+  "$FEST_BIN/fcompare" -q "$R/clean/hdr/a000_L0.exr" "$R/fourclean/hdr/a000_L0.exr"
+# Noisy takes: the mean of 4 has half the read noise (8-bit rounding and the response's
+# slope add a floor): the radiance error against the noiseless merge must shrink.
+rms_of() { "$FEST_BIN/fcompare" "$R/clean/hdr/a000_L0.exr" "$1" 2> /dev/null | awk '$1 == "rmse" {print $2}'; }
+e1=$(rms_of "$R/one/hdr/a000_L0.exr") e4=$(rms_of "$R/four/hdr/a000_L0.exr")
+check "4 takes: radiance RMS error $e4 below 0.9 x one take's $e1" python3 -c "import sys; sys.exit(0 if $e4 < 0.9 * $e1 else 1)"
+run capture plan --angles 1 --repeat 0
+expect_clean_failure 2 capture
+
 case_ "bad input"
 jq '. + {"expsoures_s": [1]}' "$P" > "$WORK/typo.json"
 run capture run --station "$S" --plan "$WORK/typo.json" -o "$WORK/t1"

@@ -50,6 +50,16 @@ TEST(CaptureManifest, ShotRoundTrip) {
   EXPECT_EQ(back.sha256, r.sha256);
 }
 
+TEST(CaptureManifest, RepeatIndexOnlyForLaterTakes) {
+  PlannedShot take = hdr_shot(1, 3);
+  EXPECT_FALSE(shot_to_json(record(take, 'a')).contains("repeat_index"));  // plans without repeat
+  take.repeat_index = 2;
+  take.file = "a001/L0/e03_r2.png";
+  const json j = shot_to_json(record(take, 'a'));
+  EXPECT_EQ(j["repeat_index"], 2);
+  EXPECT_EQ(shot_from_json(j, "x", "shot").shot.repeat_index, 2);
+}
+
 TEST(CaptureManifest, ReplayKeepsLatestAndSkipsTornTail) {
   std::string text = journal_text({record(hdr_shot(0, 0), 'a'), record(hdr_shot(0, 1), 'b'), record(hdr_shot(0, 0), 'c')});
   text += journal_line({{"abort", {{"step", "move"}}}});

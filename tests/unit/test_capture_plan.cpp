@@ -98,6 +98,38 @@ TEST(CapturePlan, ErrorsNameFileAndPath) {
   }
 }
 
+TEST(CapturePlan, RepeatTakesEveryExposureBackToBack) {
+  const Plan p = parse_plan(
+      json::parse(R"({"angles_deg": [0, 90], "lights": ["L0"], "exposures_s": [0.01, 0.02], "repeat": 3,
+                      "per_view": {"dark": {"count": 1}}})"),
+      "p");
+  EXPECT_EQ(p.repeat, 3);
+  EXPECT_EQ(plan_to_json(p)["repeat"], 3);
+  const std::vector<PlannedShot> shots = expand_plan(p, station(), ".png", "p");
+  // Per view: 1 dark frame (not repeated) + 2 exposures x 3 takes.
+  ASSERT_EQ(shots.size(), 2u * (1 + 2 * 3));
+  EXPECT_EQ(shots[0].file, "a000/dark_0.png");
+  const char* files[] = {"a000/L0/e00_r0.png", "a000/L0/e00_r1.png", "a000/L0/e00_r2.png",
+                         "a000/L0/e01_r0.png", "a000/L0/e01_r1.png", "a000/L0/e01_r2.png"};
+  for (int i = 0; i < 6; ++i) {
+    const PlannedShot& s = shots[std::size_t(1 + i)];
+    EXPECT_EQ(s.file, files[i]);
+    EXPECT_EQ(s.exposure_index, i / 3);
+    EXPECT_EQ(s.repeat_index, i % 3);
+    EXPECT_DOUBLE_EQ(s.exposure_s, i < 3 ? 0.01 : 0.02);
+  }
+  EXPECT_EQ(shots[7].file, "a001/dark_0.png");
+  // repeat 1 keeps the plain names.
+  const Plan once = parse_plan(json::parse(R"({"angles_deg": [0], "lights": ["L0"], "exposures_s": [0.01]})"), "p");
+  EXPECT_EQ(once.repeat, 1);
+  EXPECT_EQ(expand_plan(once, station(), ".png", "p")[0].file, "a000/L0/e00.png");
+  // The thermal limit counts every take: 3 x 4 s = 12 s > L0's max_on_s 10 s.
+  const Plan hot = parse_plan(json::parse(R"({"angles_deg": [0], "lights": ["L0"], "exposures_s": [4], "repeat": 3})"), "p");
+  EXPECT_THROW(expand_plan(hot, station(), ".png", "p"), fest::Error);
+  EXPECT_NE(error_of(json::parse(R"({"angles_deg": [0], "lights": ["L0"], "exposures_s": [0.1], "repeat": 0})")).find("repeat"),
+            std::string::npos);
+}
+
 TEST(CaptureStation, ErrorsNameFileAndPath) {
   try {
     parse_station(json::parse(R"({"camera": {"uri": "sim:"}, "turntable": {"uri": "sim:"},

@@ -12,6 +12,7 @@ struct PlanOptions {
   std::string silhouette;  // backlight id(s), comma-separated; empty = no silhouette shot
   double silhouette_exposure_s = 0.01;
   int lightcal = 0, dark = 0;
+  int repeat = 1;  // takes of every exposure
 };
 
 struct RunOptions {

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   p->add_option("--lightcal", plan.lightcal, "Light-calibration (mirror ball) shots per view")->check(CLI::Range(0, 100));
   p->add_option("--dark", plan.dark, "Dark frames (all lights off) per view")->check(CLI::Range(0, 100));
+  p->add_option("--repeat", plan.repeat, "Takes of every exposure (hdrmerge averages them: less noise)")
+      ->check(CLI::Range(1, 100));
 
   RunOptions run;
   CLI::App* r = app.add_subcommand("run", "Run a plan on the station; the manifest on standard output");

@@ -39,6 +39,7 @@ int plan_command(const PlanOptions& o) {
   }
   p.lightcal.count = o.lightcal;
   p.dark.count = o.dark;
+  p.repeat = o.repeat;
   // Round trip through the parser: what is printed is what `capture run` accepts.
   const nlohmann::json doc = capture::plan_to_json(p);
   capture::parse_plan(doc, "capture plan");

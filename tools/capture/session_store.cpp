@@ -46,6 +46,45 @@ void write_all(int fd, const std::string& text, const std::string& path) {
   if (::fsync(fd) != 0) throw io_error("cannot flush {}: {}", path, std::strerror(errno));
 }
 
+// A shot file as the journal may vouch for it: written under a temporary name, its data
+// flushed to the disk, renamed into place and the rename flushed too. (Not AtomicFile:
+// its commit sets permissions through umask(), which two encoder threads would race on;
+// open()'s mode gets the umask applied without touching it.)
+void write_durably(const std::string& path, const std::string& bytes) {
+  const std::string temp = fmt::format("{}.tmp.{}", path, ::getpid());
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw io_error("cannot create {}: {}", temp, std::strerror(errno));
+  try {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw io_error("cannot write {}: {}", temp, std::strerror(errno));
+      done += std::size_t(n);
+    }
+    if (::fdatasync(fd) != 0) throw io_error("cannot flush {}: {}", temp, std::strerror(errno));
+  } catch (...) {
+    ::close(fd);
+    ::unlink(temp.c_str());
+    throw;
+  }
+  if (::close(fd) != 0) {
+    ::unlink(temp.c_str());
+    throw io_error("cannot write {}: {}", temp, std::strerror(errno));
+  }
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(temp.c_str());
+    throw io_error("cannot rename {} into place: {}", path, std::strerror(saved));
+  }
+  const std::string folder = fs::path(path).parent_path().string();
+  const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) throw io_error("cannot open {}: {}", folder, std::strerror(errno));
+  const int synced = ::fsync(dir);
+  ::close(dir);
+  if (synced != 0) throw io_error("cannot flush {}: {}", folder, std::strerror(errno));
+}
+
 }  // namespace
 
 SessionStore::SessionStore(const std::string& folder, bool resume, const json& plan_doc, const std::string& format,
@@ -87,7 +126,6 @@ SessionStore::SessionStore(const std::string& folder, bool resume, const json& p
   if (journal_fd_ < 0) throw io_error("cannot open {}: {}", journal, std::strerror(errno));
   if (resume) append({{"resume", utc_now()}});
   else append(capture::journal_header(name_, started_, plan_doc));
-  writer_ = std::thread([this] { writer_loop(); });
 }
 
 SessionStore::~SessionStore() {
@@ -96,44 +134,79 @@ SessionStore::~SessionStore() {
     stopping_ = true;
   }
   changed_.notify_all();
-  writer_.join();
+  for (std::thread& t : encoders_) t.join();
   if (journal_fd_ >= 0) ::close(journal_fd_);
 }
 
-void SessionStore::writer_loop() {
+void SessionStore::encoder_loop() {
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
-    if (queue_.empty()) return;
+    if (queue_.empty()) return;  // stopping, and every stored shot taken
     Job job = std::move(queue_.front());
     queue_.pop_front();
-    busy_ = true;
-    const bool failed = bool(error_);
+    Written w;
+    w.skipped = bool(error_);  // a failed session writes no more files
     lock.unlock();
-    std::exception_ptr e;
-    if (!failed) {
+    if (!w.skipped) {
       try {
-        write_shot(job);
+        w.record = encode_and_write(job);
+      } catch (...) {
+        w.error = std::current_exception();
+      }
+    }
+    job.image = Image{};  // the picture's memory goes before waiting for the lock
+    lock.lock();
+    written_.emplace(job.seq, std::move(w));
+    commit_in_order(lock);
+  }
+}
+
+// Journals the written shots that are next in line. One thread commits at a time (the
+// others leave their shots in written_ for it), so the lines follow shot order; the lock
+// is released around the fsync'ed append.
+void SessionStore::commit_in_order(std::unique_lock<std::mutex>& lock) {
+  if (committing_) return;
+  committing_ = true;
+  for (auto it = written_.find(commit_seq_); it != written_.end(); it = written_.find(commit_seq_)) {
+    Written w = std::move(it->second);
+    written_.erase(it);
+    if (w.error && !error_) error_ = w.error;
+    if (!error_ && !w.skipped) {
+      lock.unlock();
+      std::exception_ptr e;
+      try {
+        journal_shot(w.record);
       } catch (...) {
         e = std::current_exception();
       }
+      lock.lock();
+      if (e && !error_) error_ = e;
+      if (!e) {
+        records_[w.record.shot.file] = w.record;
+        verified_.insert(w.record.shot.file);
+      }
     }
-    lock.lock();
-    if (e && !error_) error_ = e;
-    busy_ = false;
+    ++commit_seq_;
     changed_.notify_all();
   }
+  committing_ = false;
+  changed_.notify_all();
+}
+
+void SessionStore::wait_idle(std::unique_lock<std::mutex>& lock) {
+  changed_.wait(lock, [&] { return commit_seq_ == next_seq_ && !committing_; });
 }
 
 void SessionStore::finish() {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [&] { return queue_.empty() && !busy_; });
+  wait_idle(lock);
   if (error_) std::rethrow_exception(error_);
 }
 
 void SessionStore::finish_quietly() {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [&] { return queue_.empty() && !busy_; });
+  wait_idle(lock);
 }
 
 void SessionStore::append(const json& entry) {
@@ -152,24 +225,18 @@ int SessionStore::kept() const {
 
 void SessionStore::store(const capture::PlannedShot& shot, const capture::ShotPose& pose, const Image& image) {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [&] { return queue_.size() < 2 || error_; });
+  changed_.wait(lock, [&] { return next_seq_ - commit_seq_ < kMaxInFlight || error_; });
   if (error_) std::rethrow_exception(error_);
-  queue_.push_back({shot, pose, image});
+  if (encoders_.empty())
+    for (int i = 0; i < kEncoders; ++i) encoders_.emplace_back([this] { encoder_loop(); });
+  queue_.push_back({next_seq_++, shot, pose, image});
   changed_.notify_all();
 }
 
-// On the writer thread.
-void SessionStore::write_shot(const Job& job) {
+// On an encoder thread: the picture's bytes, durably in place under their name.
+capture::ShotRecord SessionStore::encode_and_write(const Job& job) const {
   const capture::PlannedShot& shot = job.shot;
-  const Image& image = job.image;
-  // A new view: the manifest of everything so far is written first (cheap, per view).
-  if (shot.angle_index != last_angle_ && last_angle_ >= 0 && !plan.empty()) {
-    capture::ManifestInfo partial = info;
-    partial.status = "running";
-    write_manifest(partial, plan);
-  }
-  last_angle_ = shot.angle_index;
-  cv::Mat pixels = image.pixels;
+  cv::Mat pixels = job.image.pixels;
   if (format_ == "png8" && pixels.depth() == CV_16U) pixels.convertTo(pixels, CV_8U, 1.0 / 257.0);
   const formats::Format f = format_ == "tiff16" ? formats::Format::tiff : formats::Format::png;
   // Huffman coding only: the shots are noisy raw data, where string matching finds
@@ -179,12 +246,12 @@ void SessionStore::write_shot(const Job& job) {
   formats::ImageWriteOptions w;
   w.png_compression = png_compression_;
   w.png_huffman_only = png_compression_ > 0;
-  const std::string bytes = formats::write_image(Image{pixels, image.color_space}, f, w);
+  const std::string bytes = formats::write_image(Image{pixels, job.image.color_space}, f, w);
   const fs::path path = fs::path(folder_) / shot.file;
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
   if (ec) throw io_error("cannot create {}: {}", path.parent_path().string(), ec.message());
-  write_output(path.string(), bytes);
+  write_durably(path.string(), bytes);
   capture::ShotRecord r;
   r.shot = shot;
   r.pose = job.pose;
@@ -192,10 +259,19 @@ void SessionStore::write_shot(const Job& job) {
   r.sha256 = sha256_hex(bytes);
   r.bits = pixels.depth() == CV_16U ? 16 : 8;
   r.black_level = black_level;
-  append({{"shot", capture::shot_to_json(r)}});
-  std::lock_guard<std::mutex> lock(mutex_);
-  records_[shot.file] = r;
-  verified_.insert(shot.file);
+  return r;
+}
+
+// On the committing thread, in shot order.
+void SessionStore::journal_shot(const capture::ShotRecord& record) {
+  // A new view: the manifest of everything so far is written first (cheap, per view).
+  if (record.shot.angle_index != last_angle_ && last_angle_ >= 0 && !plan.empty()) {
+    capture::ManifestInfo partial = info;
+    partial.status = "running";
+    write_manifest(partial, plan);
+  }
+  last_angle_ = record.shot.angle_index;
+  append({{"shot", capture::shot_to_json(record)}});
 }
 
 std::string SessionStore::write_manifest(capture::ManifestInfo i, const std::vector<capture::PlannedShot>& shots) {

@@ -4,11 +4,15 @@
 //   SESSION/manifest.journal                   one JSON line per shot, flushed + fsync'ed
 //   SESSION/manifest.json                      rewritten atomically after every view
 // A resumed session replays the journal and keeps the shots whose files still hash
-// to their recorded SHA-256. Encoding, hashing and writing run on a writer thread while
-// the loop takes the next picture (at most two pictures wait), as a rig's host overlaps
-// saving with exposing.
+// to their recorded SHA-256. Encoding, hashing and writing run on two encoder threads
+// while the loop takes the next picture (at most four pictures in flight), as a rig's
+// host overlaps saving with exposing. The journal still grows strictly in shot order,
+// and a shot enters it only once its file is complete, flushed and renamed into place:
+// encodes that finish early wait for their predecessors, and after a failure nothing
+// later is journaled (its file, if written, is re-taken by --resume).
 
 #include <condition_variable>
+#include <cstdint>
 #include <deque>
 #include <exception>
 #include <map>
@@ -16,6 +20,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "capture/manifest.hpp"
 #include "capture/session.hpp"
@@ -61,18 +66,34 @@ class SessionStore : public capture::ShotSink {
   int last_angle_ = -1;
 
   struct Job {
+    std::uint64_t seq = 0;  // order of store() calls: the journal's order
     capture::PlannedShot shot;
     capture::ShotPose pose;
     Image image;
   };
-  void write_shot(const Job& job);
-  void writer_loop();
-  mutable std::mutex mutex_;  // guards the queue, the error and records_
+  // A shot whose file is on disk (or whose encoding failed), waiting for its turn in the
+  // journal.
+  struct Written {
+    capture::ShotRecord record;
+    std::exception_ptr error;
+    bool skipped = false;  // not encoded: an earlier shot had failed
+  };
+  capture::ShotRecord encode_and_write(const Job& job) const;
+  void journal_shot(const capture::ShotRecord& record);
+  void encoder_loop();
+  void commit_in_order(std::unique_lock<std::mutex>& lock);
+  void wait_idle(std::unique_lock<std::mutex>& lock);
+
+  static constexpr int kEncoders = 2;
+  static constexpr std::uint64_t kMaxInFlight = 4;  // pictures held in memory at most
+  mutable std::mutex mutex_;  // guards everything below and records_/verified_
   std::condition_variable changed_;
-  std::deque<Job> queue_;
-  bool busy_ = false, stopping_ = false;
+  std::deque<Job> queue_;                  // stored, not yet taken by an encoder
+  std::map<std::uint64_t, Written> written_;  // encoded, not yet journaled
+  std::uint64_t next_seq_ = 0, commit_seq_ = 0;  // all before commit_seq_ are journaled or dropped
+  bool committing_ = false, stopping_ = false;
   std::exception_ptr error_;
-  std::thread writer_;
+  std::vector<std::thread> encoders_;
 };
 
 // ISO 8601 UTC with milliseconds.

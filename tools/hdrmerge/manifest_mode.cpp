@@ -41,12 +41,15 @@ struct Set {
   int angle_index = 0;
   double angle_deg = 0;
   std::string light;
-  std::vector<Shot> shots;
+  // The shots of each exposure time, in order: one, or a plan's "repeat" takes (the
+  // manifest lists the takes of one exposure next to each other).
+  std::vector<std::vector<Shot>> exposures;
 };
 
 // A shot's picture, checked against its recorded hash, as 8-bit codes for the response
 // (16-bit values keep their top byte: round(Z / 257)).
-cv::Mat read_shot(const std::string& session, const Shot& s) {
+// A shot's pixels as stored (8 or 16-bit), its SHA-256 checked.
+cv::Mat read_stored_shot(const std::string& session, const Shot& s) {
   const std::string path = (fs::path(session) / s.file).string();
   const std::string bytes = read_input(path);
   if (sha256_hex(bytes) != s.sha256) throw bad_input("file differs from the manifest's sha256 ({})", path);
@@ -56,10 +59,37 @@ cv::Mat read_shot(const std::string& session, const Shot& s) {
   } catch (const Error& e) {
     throw Error(e.status(), with_location(e.what(), path));
   }
-  cv::Mat m = image.pixels;
-  if (m.depth() == CV_16U) m.convertTo(m, CV_8U, 1.0 / 257.0);
-  if (m.depth() != CV_8U) throw bad_input("expected an 8 or 16-bit shot ({})", path);
-  return m;
+  if (image.pixels.depth() != CV_8U && image.pixels.depth() != CV_16U)
+    throw bad_input("expected an 8 or 16-bit shot ({})", path);
+  return image.pixels;
+}
+
+// 8-bit pixels for the merge: 16-bit shots scaled by 1/257.
+cv::Mat to_8bit(const cv::Mat& m) {
+  if (m.depth() == CV_8U) return m;
+  cv::Mat out;
+  m.convertTo(out, CV_8U, 1.0 / 257.0);
+  return out;
+}
+
+cv::Mat read_shot(const std::string& session, const Shot& s) { return to_8bit(read_stored_shot(session, s)); }
+
+// The takes of one exposure averaged at the stored depth, before the 8-bit conversion:
+// N takes lower the noise by sqrt(N) (the mean of noisy samples, rounded once).
+cv::Mat read_takes(const std::string& session, const std::vector<Shot>& takes) {
+  if (takes.size() == 1) return read_shot(session, takes.front());
+  cv::Mat first = read_stored_shot(session, takes.front());
+  cv::Mat sum;
+  first.convertTo(sum, CV_64F);
+  for (std::size_t i = 1; i < takes.size(); ++i) {
+    const cv::Mat m = read_stored_shot(session, takes[i]);
+    if (m.size() != first.size() || m.type() != first.type())
+      throw bad_input("takes of one exposure differ in size or type ({} and {})", takes.front().file, takes[i].file);
+    cv::accumulate(m, sum);
+  }
+  cv::Mat mean;
+  sum.convertTo(mean, first.depth(), 1.0 / double(takes.size()));
+  return to_8bit(mean);
 }
 
 Shot shot_at(const json& shots, const json& index, const std::string& where) {
@@ -114,10 +144,15 @@ int run_manifest(const ManifestArgs& a) {
     if (!js.is_object() || !js.contains("shots") || !js["shots"].is_array() || !js.contains("light"))
       throw bad_input("sets[{}] needs \"light\" and \"shots\" ({})", sets.size(), where);
     s.light = js["light"].get<std::string>();
-    for (const json& i : js["shots"]) s.shots.push_back(shot_at(shots, i, where));
-    if (s.shots.size() < 2) throw bad_input("sets[{}] has {} exposure(s), at least 2 are needed ({})", sets.size(), s.shots.size(), where);
-    s.angle_index = s.shots.front().angle_index;
-    s.angle_deg = s.shots.front().angle_deg;
+    for (const json& i : js["shots"]) {
+      Shot shot = shot_at(shots, i, where);
+      if (s.exposures.empty() || shot.exposure_s != s.exposures.back().front().exposure_s) s.exposures.emplace_back();
+      s.exposures.back().push_back(std::move(shot));
+    }
+    if (s.exposures.size() < 2)
+      throw bad_input("sets[{}] has {} exposure(s), at least 2 are needed ({})", sets.size(), s.exposures.size(), where);
+    s.angle_index = s.exposures.front().front().angle_index;
+    s.angle_deg = s.exposures.front().front().angle_deg;
     sets.push_back(std::move(s));
   }
   if (sets.empty()) throw bad_input("the manifest has no exposure set ({})", where);
@@ -131,9 +166,9 @@ int run_manifest(const ManifestArgs& a) {
 
   auto stack_of = [&](const Set& s) {
     hdr::ExposureStack stack;
-    for (const Shot& shot : s.shots) {
-      stack.images.push_back(read_shot(session, shot));
-      stack.times.push_back(shot.exposure_s);
+    for (const std::vector<Shot>& takes : s.exposures) {
+      stack.images.push_back(read_takes(session, takes));
+      stack.times.push_back(takes.front().exposure_s);
     }
     hdr::validate_stack(stack);
     return stack;
@@ -179,7 +214,7 @@ int run_manifest(const ManifestArgs& a) {
           formats::ExrExtras extras;
           extras.channels = {{"valid", merged.valid}};
           std::vector<float> exposures;
-          for (const Shot& shot : s.shots) exposures.push_back(float(shot.exposure_s));
+          for (const std::vector<Shot>& takes : s.exposures) exposures.push_back(float(takes.front().exposure_s));
           extras.float_vectors["exposures"] = exposures;
           extras.strings["responseSha256"] = response_sha;
           extras.strings["lightId"] = s.light;
