@@ -135,6 +135,73 @@ void envelope_pass(std::vector<double>& d, const Box& b, int axis, double h, dou
   });
 }
 
+// Largest R with (R h)² <= cap: a capped pass looks no farther than R samples.
+long window_radius(double h, double cap) {
+  long r = static_cast<long>(std::floor(std::sqrt(cap) / h));
+  while (double(r + 1) * h * (double(r + 1) * h) <= cap) ++r;
+  while (r > 0 && double(r) * h * (double(r) * h) > cap) --r;
+  return r;
+}
+
+// The same pass for a finite cap whose window of R samples is short: every voxel takes
+// the minimum of f[p] + (h (q - p))² over |q - p| <= R directly. Candidates farther
+// away would exceed the cap, so this is the envelope's exact result; with the lanes
+// interleaved the minimum runs branch-free over contiguous memory.
+void window_pass(std::vector<double>& d, const Box& b, int axis, double h, double cap, long radius) {
+  const std::size_t n = b.n[axis], R = static_cast<std::size_t>(radius);
+  const std::size_t stride = axis == 1 ? b.n[0] : b.n[0] * b.n[1];
+  const std::size_t outer = axis == 1 ? b.n[2] : b.n[1];
+  const std::size_t outer_step = axis == 1 ? b.n[0] * b.n[1] : b.n[0];
+  std::vector<double> c(2 * R + 1);
+  for (std::size_t k = 0; k <= 2 * R; ++k) {
+    const double dq = double(static_cast<long>(k) - radius) * h;
+    c[k] = dq * dq;
+  }
+  parallel_bands(outer, 4, [&](std::size_t, std::size_t o0, std::size_t o1) {
+    std::vector<double> in((n + 2 * R) * kBlock), out(n * kBlock);
+    for (std::size_t o = o0; o < o1; ++o)
+      for (std::size_t x0 = 0; x0 < b.n[0]; x0 += kBlock) {
+        const std::size_t L = std::min(kBlock, b.n[0] - x0);
+        double* base = d.data() + o * outer_step + x0;
+        // Beyond the box's ends nothing is known: +inf contributes nothing.
+        std::fill(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(R * L), kInf);
+        std::fill(in.begin() + static_cast<std::ptrdiff_t>((n + R) * L), in.begin() + static_cast<std::ptrdiff_t>((n + 2 * R) * L), kInf);
+        bool any = false;
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t k = 0; k < L; ++k) {
+            const double v = base[k + i * stride];
+            any |= v != kInf;
+            in[(i + R) * L + k] = v;
+          }
+        if (!any) continue;  // no finite value: the lines stay +inf
+        const std::size_t m = n * L;
+        std::fill(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(m), kInf);
+        for (std::size_t k = 0; k <= 2 * R; ++k) {
+          const double ck = c[k];
+          const double* src = in.data() + k * L;
+          for (std::size_t j = 0; j < m; ++j) {
+            const double v = src[j] + ck;
+            out[j] = v < out[j] ? v : out[j];
+          }
+        }
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t k = 0; k < L; ++k) {
+            const double v = out[i * L + k];
+            base[k + i * stride] = v <= cap ? v : kInf;
+          }
+      }
+  });
+}
+
+// Pass along axis 1 or 2: the direct window when the cap makes it short, else the
+// lower envelope.
+void line_pass(std::vector<double>& d, const Box& b, int axis, double h, double cap) {
+  constexpr long kMaxWindow = 6;  // 13 taps: about the cost of the envelope
+  const long r = cap < kInf ? window_radius(h, cap) : kMaxWindow + 1;
+  if (r <= kMaxWindow) window_pass(d, b, axis, h, cap, r);
+  else envelope_pass(d, b, axis, h, cap);
+}
+
 // Squared distances (mm²) inside box b to the nearest voxel of b with is_target(grid
 // index); values above cap are +inf. Returned in box order (x fastest).
 template <typename IsTarget>
@@ -163,8 +230,8 @@ std::vector<double> box_squared_distance(const Grid& g, const Box& b, IsTarget&&
         }
       }
   });
-  if (b.n[1] > 1) envelope_pass(d, b, 1, g.spacing[1], cap);
-  if (b.n[2] > 1) envelope_pass(d, b, 2, g.spacing[2], cap);
+  if (b.n[1] > 1) line_pass(d, b, 1, g.spacing[1], cap);
+  if (b.n[2] > 1) line_pass(d, b, 2, g.spacing[2], cap);
   return d;
 }
 

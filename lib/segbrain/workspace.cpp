@@ -158,7 +158,7 @@ void Workspace::register_operators(Engine& engine) {
             ++memo_hits_;
           }
         if (!hit) {
-          w = deep_intensity(grid_, io->image, mo->mask, frac);
+          w = deep_intensity(io->image, mo->mask, depth_of(mn), frac);
           deep_memo_.push_back({io, mo, frac, w});
         }
         if (std::isnan(w)) return false;
@@ -340,7 +340,7 @@ void Workspace::register_operators(Engine& engine) {
       [this](Engine& e, const std::vector<Term>& a) {
         const Mask& m = mask(name_of(a[0]));
         double d0 = num(e, a[1]), d1 = num(e, a[2]);
-        std::vector<double> d = depth(grid_, m);
+        const std::vector<double>& d = depth_of(name_of(a[0]));
         Mask out(m.size());
         for (std::size_t i = 0; i < m.size(); ++i) out[i] = m[i] && d[i] >= d0 && d[i] <= d1;
         return create(e, a[3], mask_object(std::move(out)));

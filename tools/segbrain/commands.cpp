@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "formats/input.hpp"
 #include "formats/volume/volume_io.hpp"
@@ -21,6 +22,7 @@
 #include "segbrain/kb_parser.hpp"
 #include "segbrain/measures.hpp"
 #include "segbrain/morphology.hpp"
+#include "segbrain/parallel.hpp"
 #include "segbrain/phantom.hpp"
 #include "segbrain/workspace.hpp"
 
@@ -200,6 +202,7 @@ json trace_json(const TraceEvent& e) {
 
 int run_segment(const RunArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
+  set_worker_threads(resolve_threads(a.threads));
   Engine engine;
   for (const auto& p : load_kb(a.kb)) engine.consult(p);
   for (const auto& s : a.sets) apply_set(engine, s);
