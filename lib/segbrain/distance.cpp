@@ -143,6 +143,29 @@ long window_radius(double h, double cap) {
   return r;
 }
 
+// out[j] = min over k of in[j + k L] + c[k] (k = 0..2R), +inf above cap. R is a
+// template argument so the taps unroll and the loop over j vectorises with the running
+// minimum in registers.
+template <int R>
+void window_min(const double* in, std::size_t m, std::size_t L, const double* c, double cap, double* out) {
+  for (std::size_t j = 0; j < m; ++j) {
+    double v = in[j] + c[0];
+    for (int k = 1; k <= 2 * R; ++k) {
+      const double w = in[j + static_cast<std::size_t>(k) * L] + c[k];
+      v = w < v ? w : v;
+    }
+    out[j] = v <= cap ? v : kInf;
+  }
+}
+
+inline void copy_block(const double* from, double* to) {
+  double t[kBlock];
+  for (std::size_t k = 0; k < kBlock; ++k) t[k] = from[k];
+  for (std::size_t k = 0; k < kBlock; ++k) to[k] = t[k];
+}
+
+constexpr long kMaxWindow = 6;  // 13 taps: about the cost of the envelope
+
 // The same pass for a finite cap whose window of R samples is short: every voxel takes
 // the minimum of f[p] + (h (q - p))² over |q - p| <= R directly. Candidates farther
 // away would exceed the cap, so this is the envelope's exact result; with the lanes
@@ -157,6 +180,10 @@ void window_pass(std::vector<double>& d, const Box& b, int axis, double h, doubl
     const double dq = double(static_cast<long>(k) - radius) * h;
     c[k] = dq * dq;
   }
+  using Kernel = void (*)(const double*, std::size_t, std::size_t, const double*, double, double*);
+  static constexpr Kernel kernels[kMaxWindow + 1] = {window_min<0>, window_min<1>, window_min<2>, window_min<3>,
+                                                     window_min<4>, window_min<5>, window_min<6>};
+  const Kernel kernel = kernels[R];
   parallel_bands(outer, 4, [&](std::size_t, std::size_t o0, std::size_t o1) {
     std::vector<double> in((n + 2 * R) * kBlock), out(n * kBlock);
     for (std::size_t o = o0; o < o1; ++o)
@@ -166,29 +193,17 @@ void window_pass(std::vector<double>& d, const Box& b, int axis, double h, doubl
         // Beyond the box's ends nothing is known: +inf contributes nothing.
         std::fill(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(R * L), kInf);
         std::fill(in.begin() + static_cast<std::ptrdiff_t>((n + R) * L), in.begin() + static_cast<std::ptrdiff_t>((n + 2 * R) * L), kInf);
-        bool any = false;
-        for (std::size_t i = 0; i < n; ++i)
-          for (std::size_t k = 0; k < L; ++k) {
-            const double v = base[k + i * stride];
-            any |= v != kInf;
-            in[(i + R) * L + k] = v;
-          }
-        if (!any) continue;  // no finite value: the lines stay +inf
-        const std::size_t m = n * L;
-        std::fill(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(m), kInf);
-        for (std::size_t k = 0; k <= 2 * R; ++k) {
-          const double ck = c[k];
-          const double* src = in.data() + k * L;
-          for (std::size_t j = 0; j < m; ++j) {
-            const double v = src[j] + ck;
-            out[j] = v < out[j] ? v : out[j];
-          }
+        if (L == kBlock) {  // fixed-size copies inline (no memmove call per row)
+          for (std::size_t i = 0; i < n; ++i) copy_block(base + i * stride, in.data() + (i + R) * kBlock);
+        } else {
+          for (std::size_t i = 0; i < n; ++i) std::copy(base + i * stride, base + i * stride + L, in.data() + (i + R) * L);
         }
-        for (std::size_t i = 0; i < n; ++i)
-          for (std::size_t k = 0; k < L; ++k) {
-            const double v = out[i * L + k];
-            base[k + i * stride] = v <= cap ? v : kInf;
-          }
+        kernel(in.data(), n * L, L, c.data(), cap, out.data());
+        if (L == kBlock) {
+          for (std::size_t i = 0; i < n; ++i) copy_block(out.data() + i * kBlock, base + i * stride);
+        } else {
+          for (std::size_t i = 0; i < n; ++i) std::copy(out.data() + i * L, out.data() + (i + 1) * L, base + i * stride);
+        }
       }
   });
 }
@@ -196,7 +211,6 @@ void window_pass(std::vector<double>& d, const Box& b, int axis, double h, doubl
 // Pass along axis 1 or 2: the direct window when the cap makes it short, else the
 // lower envelope.
 void line_pass(std::vector<double>& d, const Box& b, int axis, double h, double cap) {
-  constexpr long kMaxWindow = 6;  // 13 taps: about the cost of the envelope
   const long r = cap < kInf ? window_radius(h, cap) : kMaxWindow + 1;
   if (r <= kMaxWindow) window_pass(d, b, axis, h, cap, r);
   else envelope_pass(d, b, axis, h, cap);
