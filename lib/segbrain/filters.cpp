@@ -138,9 +138,30 @@ double otsu_threshold(const Image& img, const Mask& mask) {
   return lo + (0.5 * (first + last) + 1) * width;
 }
 
+namespace {
+
+// The float bounds equivalent to double ones for float voxels x: x >= lo exactly when
+// x >= lower_bound_float(lo), x <= hi exactly when x <= upper_bound_float(hi) (NaN stays
+// NaN), so the comparisons can run on floats, four or eight to an instruction.
+float lower_bound_float(double lo) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (std::isnan(lo) || lo == -INFINITY) return static_cast<float>(lo);
+  if (lo > kMax) return INFINITY;
+  if (lo < -kMax) return -std::numeric_limits<float>::max();
+  float f = static_cast<float>(lo);
+  if (static_cast<double>(f) < lo) f = std::nextafter(f, INFINITY);
+  return f;
+}
+float upper_bound_float(double hi) { return -lower_bound_float(-hi); }
+
+}  // namespace
+
 Mask threshold(const Image& img, double lo, double hi) {
   Mask m(img.size());
-  for (std::size_t i = 0; i < img.size(); ++i) m[i] = img[i] >= lo && img[i] <= hi;
+  const float flo = lower_bound_float(lo), fhi = upper_bound_float(hi);
+  const float* x = img.data();
+  std::uint8_t* out = m.data();
+  for (std::size_t i = 0; i < img.size(); ++i) out[i] = static_cast<std::uint8_t>((x[i] >= flo) & (x[i] <= fhi));
   return m;
 }
 

@@ -237,3 +237,18 @@ TEST(SegbrainFastOps, ResultsDoNotDependOnTheThreadCount) {
   const auto one = with_threads(1, ops);
   for (int n : {2, 3, 7}) EXPECT_TRUE(with_threads(n, ops) == one) << n << " threads";
 }
+
+TEST(SegbrainFastOps, ThresholdMatchesDoubleComparisons) {
+  // Bounds that floats cannot hold exactly, infinities, NaN and out-of-range values: the
+  // float comparisons must select exactly what lo <= x <= hi in double selects.
+  Image img = {0.0f, 0.1f, 0.2f, 1.0f, -1.0f, 1e30f, -1e30f, INFINITY, -INFINITY, NAN,
+               std::nextafter(0.1f, 1.0f), std::nextafter(0.1f, 0.0f), 3.4e38f, -3.4e38f};
+  const double bounds[] = {0.1, -0.1, 0.2, 1.0, 1e-40, 1e300, -1e300, INFINITY, -INFINITY, NAN, 0.30000000000000004,
+                           double(std::nextafter(0.1f, 1.0f)), 3.5e38, -3.5e38};
+  for (double lo : bounds)
+    for (double hi : bounds) {
+      Mask got = threshold(img, lo, hi);
+      for (std::size_t i = 0; i < img.size(); ++i)
+        EXPECT_EQ(got[i], img[i] >= lo && img[i] <= hi) << "x " << img[i] << " in [" << lo << ", " << hi << "]";
+    }
+}
