@@ -165,6 +165,27 @@ Mask threshold(const Image& img, double lo, double hi) {
   return m;
 }
 
+Mask combine(const Mask& a, const Mask& b, MaskLogic op) {
+  Mask m(a.size());
+  const std::uint8_t* x = a.data();
+  const std::uint8_t* y = b.data();
+  std::uint8_t* out = m.data();
+  const std::size_t n = std::min(a.size(), b.size());
+  // One branch-free loop per operation, so each vectorises.
+  switch (op) {
+    case MaskLogic::both:
+      for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>((x[i] != 0) & (y[i] != 0));
+      break;
+    case MaskLogic::either:
+      for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>((x[i] != 0) | (y[i] != 0));
+      break;
+    case MaskLogic::first_only:
+      for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>((x[i] != 0) & (y[i] == 0));
+      break;
+  }
+  return m;
+}
+
 double fraction_within(const Image& img, const Mask& mask, double lo, double hi) {
   std::size_t n = 0, in = 0;
   for (std::size_t i = 0; i < img.size(); ++i)

@@ -1,6 +1,7 @@
 // Location and shape operators (see shape.hpp).
 #include "segbrain/shape.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -49,14 +50,19 @@ std::array<double, 6> bbox_mm(const Grid& g, const Mask& m) {
 }
 
 Mask halfspace(const Grid& g, int axis, bool below, double value_mm) {
+  // Which positions along the axis are in; then whole rows are copied or filled.
+  Mask in(g.n[axis]);
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    const double v = double(k) * g.spacing[axis];
+    in[k] = below ? v < value_mm : v > value_mm;
+  }
   Mask out(g.size());
   for (std::size_t z = 0; z < g.n[2]; ++z)
-    for (std::size_t y = 0; y < g.n[1]; ++y)
-      for (std::size_t x = 0; x < g.n[0]; ++x) {
-        const std::size_t p[3] = {x, y, z};
-        double v = double(p[axis]) * g.spacing[axis];
-        out[g.index(x, y, z)] = below ? v < value_mm : v > value_mm;
-      }
+    for (std::size_t y = 0; y < g.n[1]; ++y) {
+      std::uint8_t* row = out.data() + g.index(0, y, z);
+      if (axis == 0) std::copy(in.begin(), in.end(), row);
+      else std::fill(row, row + g.n[0], in[axis == 1 ? y : z]);
+    }
   return out;
 }
 

@@ -203,9 +203,7 @@ void Workspace::register_operators(Engine& engine) {
     reg(name, 3, "+A, +B, -Out", "voxel-wise logic", [this, which](Engine& e, const std::vector<Term>& a) {
       const Mask& x = mask(name_of(a[0]));
       const Mask& y = mask(name_of(a[1]));
-      Mask m(x.size());
-      for (std::size_t i = 0; i < m.size(); ++i)
-        m[i] = which == 0 ? (x[i] && y[i]) : which == 1 ? (x[i] || y[i]) : (x[i] && !y[i]);
+      Mask m = combine(x, y, which == 0 ? MaskLogic::both : which == 1 ? MaskLogic::either : MaskLogic::first_only);
       return create(e, a[2], mask_object(std::move(m)));
     });
   };

@@ -15,6 +15,7 @@
 #include "segbrain/morphology.hpp"
 #include "segbrain/parallel.hpp"
 #include "segbrain/phantom.hpp"
+#include "segbrain/shape.hpp"
 
 using namespace fest::segbrain;
 
@@ -250,5 +251,28 @@ TEST(SegbrainFastOps, ThresholdMatchesDoubleComparisons) {
       Mask got = threshold(img, lo, hi);
       for (std::size_t i = 0; i < img.size(); ++i)
         EXPECT_EQ(got[i], img[i] >= lo && img[i] <= hi) << "x " << img[i] << " in [" << lo << ", " << hi << "]";
+    }
+}
+
+TEST(SegbrainFastOps, MaskLogicAndHalfspaces) {
+  std::mt19937 rng(15);
+  Grid g = grid(9, 7, 5, 1.5, 2.0, 2.5);
+  Mask a = random_mask(g, rng, 50), b = random_mask(g, rng, 50);
+  a[3] = 7;  // any nonzero value counts as in
+  const Mask both = combine(a, b, MaskLogic::both), either = combine(a, b, MaskLogic::either),
+             first = combine(a, b, MaskLogic::first_only);
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    EXPECT_EQ(both[i], a[i] && b[i]);
+    EXPECT_EQ(either[i], a[i] || b[i]);
+    EXPECT_EQ(first[i], a[i] && !b[i]);
+  }
+  for (int axis = 0; axis < 3; ++axis)
+    for (bool below : {true, false}) {
+      Mask h = halfspace(g, axis, below, 4.5);
+      for (std::size_t i = 0; i < g.size(); ++i) {
+        const Xyz p = xyz(g, i);
+        const double v = double(axis == 0 ? p.x : axis == 1 ? p.y : p.z) * g.spacing[std::size_t(axis)];
+        EXPECT_EQ(h[i], below ? v < 4.5 : v > 4.5) << "axis " << axis;
+      }
     }
 }
