@@ -249,15 +249,13 @@ std::vector<double> box_squared_distance(const Grid& g, const Box& b, IsTarget&&
   return d;
 }
 
-// Calls f(grid index, box index) for every voxel of the box, parallel over z.
+// Calls f(grid index, box index, length) for every row of the box, parallel over z.
 template <typename F>
-void for_box(const Grid& g, const Box& b, F&& f) {
+void for_box_rows(const Grid& g, const Box& b, F&& f) {
   parallel_bands(b.n[2], 4, [&](std::size_t, std::size_t z0, std::size_t z1) {
     for (std::size_t z = z0; z < z1; ++z)
-      for (std::size_t y = 0; y < b.n[1]; ++y) {
-        const std::size_t gi = g.index(b.lo[0], b.lo[1] + y, b.lo[2] + z), bi = b.n[0] * (y + b.n[1] * z);
-        for (std::size_t x = 0; x < b.n[0]; ++x) f(gi + x, bi + x);
-      }
+      for (std::size_t y = 0; y < b.n[1]; ++y)
+        f(g.index(b.lo[0], b.lo[1] + y, b.lo[2] + z), b.n[0] * (y + b.n[1] * z), b.n[0]);
   });
 }
 
@@ -275,30 +273,43 @@ std::vector<double> depth(const Grid& g, const Mask& m) {
   if (!bounding_box(g, m, b)) return out;
   b = grown(g, b, {1, 1, 1});
   std::vector<double> d = box_squared_distance(g, b, [&](std::size_t i) { return m[i] == 0; }, kInf);
-  for_box(g, b, [&](std::size_t gi, std::size_t bi) { out[gi] = std::sqrt(d[bi]); });
+  for_box_rows(g, b, [&](std::size_t gi, std::size_t bi, std::size_t n) {
+    double* o = out.data() + gi;
+    const double* s = d.data() + bi;
+    for (std::size_t x = 0; x < n; ++x) o[x] = std::sqrt(s[x]);
+  });
   return out;
 }
 
 Mask erode(const Grid& g, const Mask& m, double r) {
   Mask out(g.size(), 0);
   Box b;
-  if (!bounding_box(g, m, b)) return out;
+  if (std::isnan(r) || !bounding_box(g, m, b)) return out;  // d > NaN never holds
   b = grown(g, b, {1, 1, 1});
   const double r2 = r * r;
   std::vector<double> d = box_squared_distance(g, b, [&](std::size_t i) { return m[i] == 0; }, r2);
-  for_box(g, b, [&](std::size_t gi, std::size_t bi) { out[gi] = m[gi] && d[bi] > r2; });
+  for_box_rows(g, b, [&](std::size_t gi, std::size_t bi, std::size_t n) {
+    std::uint8_t* o = out.data() + gi;  // raw pointers: the loop vectorises
+    const std::uint8_t* in = m.data() + gi;
+    const double* s = d.data() + bi;
+    for (std::size_t x = 0; x < n; ++x) o[x] = static_cast<std::uint8_t>((in[x] != 0) & (s[x] > r2));
+  });
   return out;
 }
 
 Mask dilate(const Grid& g, const Mask& m, double r) {
   Mask out(g.size(), 0);
   Box b;
-  if (!bounding_box(g, m, b)) return out;
+  if (std::isnan(r) || !bounding_box(g, m, b)) return out;  // d <= NaN never holds
   const double r2 = r * r;
   b = grown(g, b, {std::floor(std::abs(r) / g.spacing[0]) + 1, std::floor(std::abs(r) / g.spacing[1]) + 1,
                    std::floor(std::abs(r) / g.spacing[2]) + 1});
   std::vector<double> d = box_squared_distance(g, b, [&](std::size_t i) { return m[i] != 0; }, r2);
-  for_box(g, b, [&](std::size_t gi, std::size_t bi) { out[gi] = d[bi] <= r2; });
+  for_box_rows(g, b, [&](std::size_t gi, std::size_t bi, std::size_t n) {
+    std::uint8_t* o = out.data() + gi;
+    const double* s = d.data() + bi;
+    for (std::size_t x = 0; x < n; ++x) o[x] = static_cast<std::uint8_t>(s[x] <= r2);
+  });
   return out;
 }
 

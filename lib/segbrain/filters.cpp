@@ -161,7 +161,8 @@ Mask threshold(const Image& img, double lo, double hi) {
   const float flo = lower_bound_float(lo), fhi = upper_bound_float(hi);
   const float* x = img.data();
   std::uint8_t* out = m.data();
-  for (std::size_t i = 0; i < img.size(); ++i) out[i] = static_cast<std::uint8_t>((x[i] >= flo) & (x[i] <= fhi));
+  const std::size_t n = img.size();  // hoisted: a uint8_t store may alias the vector's own size
+  for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>((x[i] >= flo) & (x[i] <= fhi));
   return m;
 }
 

@@ -180,7 +180,7 @@ TEST(SegbrainFastOps, ErodeDilateDepthMatchBruteForce) {
       if (std::isinf(want)) EXPECT_TRUE(std::isinf(dep[i]));
       else EXPECT_NEAR(dep[i], want, 1e-9) << "voxel " << i;
     }
-    for (double r : {0.5, 1.0, 1.9, 3.0, 7.5}) {
+    for (double r : {0.0, 0.5, 1.0, 1.9, 3.0, 7.5, 1e9}) {
       Mask er(g.size()), di(g.size());
       for (std::size_t i = 0; i < g.size(); ++i) {
         er[i] = m[i] && to_comp[i] > r * r;
@@ -189,6 +189,8 @@ TEST(SegbrainFastOps, ErodeDilateDepthMatchBruteForce) {
       EXPECT_EQ(erode(g, m, r), er) << "trial " << trial << " r " << r;
       EXPECT_EQ(dilate(g, m, r), di) << "trial " << trial << " r " << r;
     }
+    EXPECT_EQ(count(erode(g, m, NAN)), 0u);  // as d > NaN and d <= NaN: never
+    EXPECT_EQ(count(dilate(g, m, NAN)), 0u);
   }
 }
 
