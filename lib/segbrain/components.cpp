@@ -8,6 +8,7 @@
 // Runs are found and labels written slice by slice in parallel; the unions, a small
 // fraction of the work, run in one fixed order, so the result never depends on threads.
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
@@ -27,9 +28,33 @@ struct Runs {
   std::vector<std::size_t> row_start;  // size rows + 1; row = y + ny z
 };
 
+std::uint64_t load8(const std::uint8_t* p) {
+  std::uint64_t v;
+  std::memcpy(&v, p, 8);
+  return v;
+}
+
+// Index of the first byte from x on whose nonzero-ness differs from `nonzero` (nx when
+// none); whole words of 8 alike bytes are skipped at once, so long runs cost little.
+std::size_t skip_alike(const std::uint8_t* row, std::size_t x, std::size_t nx, bool nonzero) {
+  constexpr std::uint64_t kOnes = 0x0101010101010101ull, kHighs = 0x8080808080808080ull;
+  if (nonzero) {
+    while (x + 8 <= nx) {
+      const std::uint64_t v = load8(row + x);
+      if ((v - kOnes) & ~v & kHighs) break;  // the word holds a zero byte
+      x += 8;
+    }
+    while (x < nx && row[x] != 0) ++x;
+  } else {
+    while (x + 8 <= nx && load8(row + x) == 0) x += 8;
+    while (x < nx && row[x] == 0) ++x;
+  }
+  return x;
+}
+
 Runs find_runs(const Grid& g, const Mask& m, bool complement) {
   const std::size_t nx = g.n[0], ny = g.n[1], nz = g.n[2];
-  const std::uint8_t on = complement ? 0 : 1;
+  const bool run_nonzero = !complement;  // runs of the mask, or of its complement
   std::vector<std::vector<Run>> per_slice(nz);
   std::vector<std::vector<std::uint32_t>> per_row_count(nz, std::vector<std::uint32_t>(ny));
   parallel_bands(nz, 4, [&](std::size_t, std::size_t z0, std::size_t z1) {
@@ -39,10 +64,10 @@ Runs find_runs(const Grid& g, const Mask& m, bool complement) {
         std::size_t x = 0;
         const std::size_t before = per_slice[z].size();
         while (x < nx) {
-          while (x < nx && (row[x] != 0) != on) ++x;
+          x = skip_alike(row, x, nx, !run_nonzero);  // background
           if (x == nx) break;
           const std::size_t x0 = x;
-          while (x < nx && (row[x] != 0) == on) ++x;
+          x = skip_alike(row, x, nx, run_nonzero);
           per_slice[z].push_back({static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x)});
         }
         per_row_count[z][y] = static_cast<std::uint32_t>(per_slice[z].size() - before);

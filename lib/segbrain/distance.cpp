@@ -137,7 +137,9 @@ void envelope_pass(std::vector<double>& d, const Box& b, int axis, double h, dou
 
 // Largest R with (R h)² <= cap: a capped pass looks no farther than R samples.
 long window_radius(double h, double cap) {
-  long r = static_cast<long>(std::floor(std::sqrt(cap) / h));
+  const double samples = std::floor(std::sqrt(cap) / h);
+  if (!(samples < 1e6)) return 1000000;  // far beyond any direct window
+  long r = static_cast<long>(samples);
   while (double(r + 1) * h * (double(r + 1) * h) <= cap) ++r;
   while (r > 0 && double(r) * h * (double(r) * h) > cap) --r;
   return r;

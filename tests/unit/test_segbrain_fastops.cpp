@@ -140,6 +140,24 @@ TEST(SegbrainFastOps, ComponentsMatchFloodFillForEveryConnectivity) {
       }
       EXPECT_EQ(largest_component(g, m, conn), big) << "conn " << conn;
     }
+  // Long runs (whole 8-byte words alike), values other than 1, rows of every remainder.
+  for (std::size_t nx : {37u, 40u, 41u}) {
+    Grid g = grid(nx, 23, 11);
+    Mask m(g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      const Xyz p = xyz(g, i);
+      const long dx = p.x - 12, dy = p.y - 11, dz = p.z - 5;
+      const bool ball = dx * dx + dy * dy + 4 * dz * dz <= 100, slab = p.x > 26 && p.y % 7 != 3;
+      m[i] = static_cast<std::uint8_t>((ball || slab) && rng() % 50 != 0 ? 1 + rng() % 3 : 0);
+    }
+    for (int conn : {6, 26}) {
+      Components ref = reference_components(g, m, conn), got = connected_components(g, m, conn);
+      EXPECT_EQ(got.label, ref.label) << "nx " << nx << " conn " << conn;
+      EXPECT_EQ(got.size, ref.size) << "nx " << nx << " conn " << conn;
+    }
+    EXPECT_EQ(fill_holes(g, m, false), reference_fill(g, m, false)) << "nx " << nx;
+    EXPECT_EQ(fill_holes(g, m, true), reference_fill(g, m, true)) << "nx " << nx;
+  }
   Grid g = grid(5, 4, 3);
   EXPECT_EQ(connected_components(g, Mask(g.size(), 0), 26).size.size(), 1u);
   EXPECT_EQ(connected_components(g, Mask(g.size(), 1), 6).size, (std::vector<std::size_t>{0, 60}));
