@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -42,17 +43,17 @@ void parallel_bands(std::size_t count, std::size_t min_per_worker, Body&& body) 
       errors[w] = std::current_exception();
     }
   };
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(band, w);
+  std::size_t started = 1;
+  try {
+    for (; started < workers; ++started) pool.emplace_back(band, started);
+  } catch (const std::system_error&) {
+    // No more threads to be had: the calling thread takes the remaining bands.
+  }
+  for (std::size_t w = started; w < workers; ++w) band(w);
   band(0);
   for (auto& t : pool) t.join();
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
-}
-
-// Number of workers parallel_bands uses for these arguments (to size per-worker scratch).
-inline std::size_t band_workers(std::size_t count, std::size_t min_per_worker) {
-  const std::size_t by_size = std::max<std::size_t>(1, count / std::max<std::size_t>(1, min_per_worker));
-  return std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(worker_threads()), by_size));
 }
 
 }  // namespace fest::segbrain
