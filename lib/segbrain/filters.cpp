@@ -24,15 +24,25 @@ std::vector<double> gaussian_weights(double s) {
 
 // Convolves `lanes` interleaved lines of n samples: in holds sample i of lane b at
 // in[(i + r) * lanes + b], with the r samples beyond each end already replicated; out
-// receives n * lanes sums. Tap-major order keeps the innermost loop contiguous (it
-// vectorises) while every output still sums its taps in the order k = 0..2r.
+// receives n * lanes sums. Eight outputs at a time keep their sums in registers while the
+// taps run (the eight lanes vectorise), and every output sums its taps in the order
+// k = 0..2r, the order of the plain convolution.
 void convolve_lanes(const double* in, std::size_t n, std::size_t lanes, const std::vector<double>& w, double* out) {
-  const std::size_t m = n * lanes;
-  std::fill(out, out + m, 0.0);
-  for (std::size_t k = 0; k < w.size(); ++k) {
-    const double wk = w[k];
-    const double* src = in + k * lanes;
-    for (std::size_t j = 0; j < m; ++j) out[j] += wk * src[j];
+  const std::size_t m = n * lanes, taps = w.size();
+  std::size_t j = 0;
+  for (; j + 8 <= m; j += 8) {
+    double acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    for (std::size_t k = 0; k < taps; ++k) {
+      const double wk = w[k];
+      const double* src = in + j + k * lanes;
+      for (int t = 0; t < 8; ++t) acc[t] += wk * src[t];
+    }
+    for (int t = 0; t < 8; ++t) out[j + static_cast<std::size_t>(t)] = acc[t];
+  }
+  for (; j < m; ++j) {
+    double acc = 0;
+    for (std::size_t k = 0; k < taps; ++k) acc += w[k] * in[j + k * lanes];
+    out[j] = acc;
   }
 }
 
