@@ -184,6 +184,28 @@ Mat3 record_Sinv(const CellRecord& r) {
   return S;
 }
 
+CellRecord to_barycentric_frame(const TetGeometry& g, const CellRecord& world) {
+  if (world.type != CellType::normal_real && world.type != CellType::normal_complex) return world;
+  CellRecord r = world;
+  Mat3 E;
+  E.col(0) = g.V[1] - g.V[0];
+  E.col(1) = g.V[2] - g.V[0];
+  E.col(2) = g.V[3] - g.V[0];
+  const Mat3 S = record_S(world), Sinv = record_Sinv(world);
+  store(g.G * S, r.S);
+  store(Sinv * E, r.Sinv);
+  const Vec3 c = Sinv * g.v[0];
+  r.c[0] = c[0], r.c[1] = c[1], r.c[2] = c[2];
+  double rate2 = 0;
+  for (int k = 0; k < 4; ++k) rate2 = std::max(rate2, (g.G * g.v[k]).squaredNorm());
+  // Clamped into float range: a finite time scale stays finite (only a field of zeros,
+  // which is never a normal cell, has none).
+  r.tau_bary = rate2 > 0 ? static_cast<float>(std::min(1.0 / std::sqrt(rate2), double{std::numeric_limits<float>::max()}))
+                         : std::numeric_limits<float>::infinity();
+  r.bary_frame = true;
+  return r;
+}
+
 CellRecord classify(const TetGeometry& g, const ClassifyParams& params) {
   Mat3 A;
   Vec3 b;

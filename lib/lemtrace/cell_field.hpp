@@ -38,6 +38,9 @@ struct TetGeometry {
     Vec3 b = G * w;
     return {-b.sum(), b[0], b[1], b[2]};
   }
+  Vec3 point(const Eigen::Vector4d& beta) const {
+    return beta[0] * V[0] + beta[1] * V[1] + beta[2] * V[2] + beta[3] * V[3];
+  }
   Vec3 interpolate(const Eigen::Vector4d& beta) const {
     return beta[0] * v[0] + beta[1] * v[1] + beta[2] * v[2] + beta[3] * v[3];
   }
@@ -62,6 +65,12 @@ struct ClassifyParams {
 struct CellRecord {
   CellType type;
   bool critical_inside;
+  // Normal cells only: true when S, S^{-1} and c are in barycentric coordinates (see
+  // to_barycentric_frame); false for the world-frame form classify() returns.
+  bool bary_frame;
+  // bary_frame: the cell's time scale in barycentric units, 1 / max_k |G v_k| (a float:
+  // it sets sampling steps and round-off thresholds, never a position).
+  float tau_bary;
   // normal_real: lambda_1..3. normal_complex: alpha, beta, lambda_3. parallel: unit d.
   double lam[3];
   // normal: S (row-major). parallel: a (speed gradient) in [0..2]. extraordinary: A.
@@ -78,6 +87,14 @@ CellRecord classify(const TetGeometry& g, const ClassifyParams& params);
 // on each root). Returns true for three real roots (sorted descending in re[]), false for
 // one real root re[2] and the pair re[0] +- i im[0] (im[0] > 0).
 bool cubic_eigenvalues(const Mat3& A, double re[3], double im[3]);
+
+// The same closed form in the cell's barycentric coordinates u = (beta_1, beta_2, beta_3)
+// = G (x - V0), for normal cells (others are returned unchanged). The path there solves
+// u' = (G A E) u + G v0; G A E = (G S) Lambda (S^{-1} E) has the same eigenvalues, so the
+// record keeps lambda and stores S_u = G S, S_u^{-1} = S^{-1} E and c_u = S^{-1} v0. A
+// path traced in u needs neither the vertices nor G: beta is u itself (beta_0 = 1 - sum),
+// which is what makes a precomputed cell crossing cheaper than an Euler step (§9.4.4).
+CellRecord to_barycentric_frame(const TetGeometry& g, const CellRecord& world);
 
 Mat3 record_S(const CellRecord& r);
 Mat3 record_Sinv(const CellRecord& r);

@@ -24,6 +24,13 @@ inline void small_sincos(double t, double* sn, double* cs) {
     return;
   }
   const double u = t * t;
+  if (u <= 1.0 / 256) {
+    // |t| <= 1/16 (one cell's half angle, nearly always): sin to t^9 and cos to t^10
+    // leave out terms below 1e-19 relative.
+    *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880)))));
+    *cs = 1 + u * (-0.5 + u * (1.0 / 24 + u * (-1.0 / 720 + u * (1.0 / 40320 + u * (-1.0 / 3628800)))));
+    return;
+  }
   // Horner in t^2 with the coefficients 1/n! (sin: odd n to 15, cos: even n to 16).
   *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880 + u * (-1.0 / 39916800 +
             u * (1.0 / 6227020800 + u * (-1.0 / 1307674368000))))))));
@@ -46,6 +53,33 @@ inline void exp_and_psi(double l, double s, double& e, double& p) {
 
 }  // namespace
 
+void eigen_flow(const CellRecord& r, const double z0[3], double s, double z[3]) {
+  if (r.type == CellType::normal_real) {
+    for (int i = 0; i < 3; ++i) {
+      double e, p;
+      exp_and_psi(r.lam[i], s, e, p);
+      z[i] = e * z0[i] + p * r.c[i];
+    }
+    return;
+  }
+  // As CellPath::eval_impl's normal_complex case.
+  const double a = r.lam[0], b = r.lam[1];
+  double sh, ch;
+  small_sincos(0.5 * b * s, &sh, &ch);
+  const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
+  const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
+  const double ea = 1.0 + em1;
+  const double d11 = em1 * cs - 2.0 * sh * sh;
+  const double d12 = ea * sn;
+  const double inv_n2 = 1.0 / (a * a + b * b);
+  const double p11 = (a * d11 + b * d12) * inv_n2, p12 = (a * d12 - b * d11) * inv_n2;
+  z[0] = ea * (cs * z0[0] + sn * z0[1]) + p11 * r.c[0] + p12 * r.c[1];
+  z[1] = ea * (-sn * z0[0] + cs * z0[1]) - p12 * r.c[0] + p11 * r.c[1];
+  double e3, p3;
+  exp_and_psi(r.lam[2], s, e3, p3);
+  z[2] = e3 * z0[2] + p3 * r.c[2];
+}
+
 CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(record), x0_(x0), dir_(dir) {
   switch (rec_.type) {
     case CellType::normal_real:
@@ -64,6 +98,25 @@ CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(
 Vec3 CellPath::entry_velocity(const Vec3& field) const {
   if (rec_.type == CellType::parallel) return Vec3(rec_.lam[0], rec_.lam[1], rec_.lam[2]) * (dir_ * s0_);
   return dir_ * field;
+}
+
+Vec3 CellPath::entry_field() const {
+  if (rec_.type == CellType::normal_real || rec_.type == CellType::normal_complex) {
+    double dz[3];
+    if (rec_.type == CellType::normal_real) {
+      for (int i = 0; i < 3; ++i) dz[i] = rec_.lam[i] * z0_[i] + rec_.c[i];
+    } else {
+      const double a = rec_.lam[0], b = rec_.lam[1];
+      dz[0] = a * z0_[0] + b * z0_[1] + rec_.c[0];
+      dz[1] = -b * z0_[0] + a * z0_[1] + rec_.c[1];
+      dz[2] = rec_.lam[2] * z0_[2] + rec_.c[2];
+    }
+    const double* S = rec_.S;
+    return {S[0] * dz[0] + S[1] * dz[1] + S[2] * dz[2], S[3] * dz[0] + S[4] * dz[1] + S[5] * dz[2],
+            S[6] * dz[0] + S[7] * dz[1] + S[8] * dz[2]};
+  }
+  if (rec_.type == CellType::parallel) return Vec3(rec_.lam[0], rec_.lam[1], rec_.lam[2]) * s0_;
+  return dir_ * apply_A(x0_) + Vec3(rec_.c[0], rec_.c[1], rec_.c[2]);  // extraordinary: A x0 + b
 }
 
 double CellPath::rate() const {

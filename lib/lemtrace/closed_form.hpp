@@ -14,6 +14,10 @@ namespace fest::lemtrace {
 // (e^{lambda s} - 1) / lambda, accurate for small lambda s and equal to s at lambda = 0.
 double psi(double lambda, double s);
 
+// The closed form of a normal cell in eigen coordinates: z(s) from z(0) = z0 (s = dir tau),
+// with no change of basis (the caller applies S when it needs a position).
+void eigen_flow(const CellRecord& record, const double z0[3], double s, double z[3]);
+
 class CellPath {
  public:
   CellPath(const CellRecord& record, const Vec3& x0, double dir);
@@ -30,6 +34,9 @@ class CellPath {
   const Vec3& entry() const noexcept { return x0_; }
   // dx/dtau at the entry from the interpolated field there (parallel cells move along d).
   Vec3 entry_velocity(const Vec3& field) const;
+  // The cell's linear field at the entry, A x0 + b, from the eigen form (normal cells:
+  // S (Lambda z0 + c), no vertex data needed).
+  Vec3 entry_field() const;
   // Largest rate of the cell's dynamics (1/time): bounds the sampling step.
   double rate() const;
   // The derivative along the path of a quantity w that moves with the flow's linear

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace fest::lemtrace {
 namespace {
@@ -17,7 +18,8 @@ struct Sample {
   Vec3 x, v;
 };
 
-Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+template <class Geo>
+Sample sample(const Geo& g, const CellPath& path, double tau, int& evals) {
   Sample s;
   s.tau = tau;
   path.eval(tau, s.x, s.v);
@@ -28,12 +30,14 @@ Sample sample(const TetGeometry& g, const CellPath& path, double tau, int& evals
 }
 
 // At tau = 0 the closed form is the entry point itself.
-Sample entry_sample(const TetGeometry& g, const CellPath& path, const EntryValues* known) {
+template <class Geo>
+Sample entry_sample(const Geo& g, const CellPath& path, const EntryValues* known) {
   Sample s;
   s.tau = 0;
   s.x = path.entry();
   s.beta = known ? known->beta : g.bary(s.x);
-  s.v = path.entry_velocity(known ? known->field : g.interpolate(s.beta));
+  if constexpr (std::is_same_v<Geo, TetGeometry>) s.v = path.entry_velocity(known ? known->field : g.interpolate(s.beta));
+  else s.v = path.entry_velocity(known ? known->field : path.entry_field());
   s.rate = g.bary_rate(s.v);
   return s;
 }
@@ -62,7 +66,8 @@ double hermite_guess(const Sample& a, const Sample& b, int k) {
   return a.tau + u * h;
 }
 
-Sample refine_root(const TetGeometry& g, const CellPath& path, int k, const Sample& left, const Sample& right,
+template <class Geo>
+Sample refine_root(const Geo& g, const CellPath& path, int k, const Sample& left, const Sample& right,
                    double tol, int& evals) {
   double lo = left.tau, hi = right.tau, flo = left.beta[k], fhi = right.beta[k];
   bool hermite = true;
@@ -109,7 +114,8 @@ Sample refine_root(const TetGeometry& g, const CellPath& path, int k, const Samp
 // beta_k is positive at both ends but its rate turns from negative to positive. Find the
 // minimum of beta_k there (bisection on the rate); if it is negative, the step is cut at
 // that point so that the caller sees the crossing.
-void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
+template <class Geo>
+void dip_below(const Geo& g, const CellPath& path, const Sample& prev, Sample& cur, int& evals) {
   // Rates at round-off of the cell's (a path in a face's plane) cannot take beta_k
   // below -kDetect within a step: no search for them.
   const double tiny = 1e-13 * g.v_max / g.h_min;
@@ -130,7 +136,8 @@ void dip_below(const TetGeometry& g, const CellPath& path, const Sample& prev, S
   }
 }
 
-ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
+template <class Geo>
+ExitResult finish(const Geo& g, const Sample& at, int face, int evals) {
   ExitResult r;
   r.kind = ExitResult::exit;
   r.tau = at.tau;
@@ -143,11 +150,12 @@ ExitResult finish(const TetGeometry& g, const Sample& at, int face, int evals) {
   const double sum = beta.sum();
   if (sum > 0) beta /= sum;
   r.beta = beta;
-  r.x = beta[0] * g.V[0] + beta[1] * g.V[1] + beta[2] * g.V[2] + beta[3] * g.V[3];
+  r.x = g.point(beta);
   return r;
 }
 
-bool validates(const TetGeometry& g, const CellPath& path, double tau, int& evals) {
+template <class Geo>
+bool validates(const Geo& g, const CellPath& path, double tau, int& evals) {
   for (double f : {0.25, 0.5, 0.75, 1.0}) {
     ++evals;
     if (g.bary(path.position(f * tau)).minCoeff() < -kValid) return false;
@@ -181,7 +189,8 @@ double quadratic_root(double c, double r, double q) {
 // result is kept only under the bracket search's own safety rules (a step shorter than
 // 0.25 / rate, no other face below zero, no face whose rate turned from negative to
 // positive); otherwise the caller falls back to the bracket search.
-bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& entry, double cap, int& evals,
+template <class Geo>
+bool predicted_exit(const Geo& g, const CellPath& path, const Sample& entry, double cap, int& evals,
                     ExitResult& out) {
   Vec3 a0, j0;
   path.apply_A2(entry.v, a0, j0);
@@ -262,10 +271,8 @@ bool predicted_exit(const TetGeometry& g, const CellPath& path, const Sample& en
   return false;
 }
 
-}  // namespace
-
-ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params,
-                     const EntryValues* entry) {
+template <class Geo>
+ExitResult find_exit_in(const Geo& g, const CellPath& path, const ExitParams& params, const EntryValues* entry) {
   int evals = 0;
   const double tauT = g.transit_time();
   const double rate = path.rate();
@@ -355,6 +362,163 @@ ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParam
   r.x = prev.x;
   r.evaluations = evals;
   return r;
+}
+
+}  // namespace
+
+double UnitGeometry::transit_time() const {
+  return v_max > 0 ? h_min / v_max : std::numeric_limits<double>::infinity();
+}
+
+namespace {
+
+// dir * Lambda w for a normal record (the 2x2 block [[a, b], [-b, a]] for a complex pair).
+inline void lambda_times(const CellRecord& r, double dir, const double w[3], double out[3]) {
+  if (r.type == CellType::normal_real) {
+    for (int i = 0; i < 3; ++i) out[i] = dir * r.lam[i] * w[i];
+  } else {
+    const double a = r.lam[0], b = r.lam[1];
+    out[0] = dir * (a * w[0] + b * w[1]);
+    out[1] = dir * (-b * w[0] + a * w[1]);
+    out[2] = dir * r.lam[2] * w[2];
+  }
+}
+
+// Barycentric rates (d beta / d tau, all four) of an eigen-space rate w: u' = S_u w.
+inline void beta_rates(const double* S, const double w[3], double out[4]) {
+  for (int i = 0; i < 3; ++i) out[i + 1] = S[3 * i] * w[0] + S[3 * i + 1] * w[1] + S[3 * i + 2] * w[2];
+  out[0] = -(out[1] + out[2] + out[3]);
+}
+
+// One barycentric coordinate's row applied to an eigen-space vector (beta_0: minus the
+// sum of the rows; its constant 1 is added by the caller).
+inline double beta_row(const double* S, int k, const double w[3]) {
+  if (k > 0) return S[3 * (k - 1)] * w[0] + S[3 * (k - 1) + 1] * w[1] + S[3 * (k - 1) + 2] * w[2];
+  return -((S[0] + S[3] + S[6]) * w[0] + (S[1] + S[4] + S[7]) * w[1] + (S[2] + S[5] + S[8]) * w[2]);
+}
+
+}  // namespace
+
+bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in, double dir, ExitResult& out) {
+  const double* S = rec.S;
+  const double* Si = rec.Sinv;
+  const double tauT = rec.tau_bary;
+  if (!(tauT > 0) || !std::isfinite(tauT)) return false;
+  double c[4];
+  for (int k = 0; k < 4; ++k) c[k] = std::max(beta_in[k], 0.0);
+  // Entry in eigen coordinates and the path's first three derivatives there.
+  double z0[3], w1[3], w2[3], w3[3];
+  for (int i = 0; i < 3; ++i) z0[i] = Si[3 * i] * beta_in[1] + Si[3 * i + 1] * beta_in[2] + Si[3 * i + 2] * beta_in[3];
+  {
+    double lz[3];
+    lambda_times(rec, 1.0, z0, lz);
+    for (int i = 0; i < 3; ++i) w1[i] = dir * (lz[i] + rec.c[i]);
+  }
+  lambda_times(rec, dir, w1, w2);
+  lambda_times(rec, dir, w2, w3);
+  double r[4], q[4], jr[4];
+  beta_rates(S, w1, r);
+  beta_rates(S, w2, q);
+  beta_rates(S, w3, jr);
+  const double speed2 = r[1] * r[1] + r[2] * r[2] + r[3] * r[3];
+  const double speed = std::sqrt(speed2);
+  const double jerk = std::sqrt(jr[1] * jr[1] + jr[2] * jr[2] + jr[3] * jr[3]);
+  const double tiny = 1e-13 / tauT;  // a rate of beta at round-off (UnitGeometry: h = 1)
+  double tau = std::numeric_limits<double>::infinity();
+  int face = -1;
+  for (int k = 0; k < 4; ++k) {
+    const double ck = c[k], rk = r[k];
+    if (ck <= 1e-9) {
+      // On a face: the path must clearly move inwards, or move within the face's plane
+      // (no hop of the edge/vertex rule pending; the general search decides those).
+      if (rk < -1e-12 * speed) return false;
+      if (std::abs(rk) <= tiny && std::abs(q[k]) <= tiny * speed && std::abs(jr[k]) <= tiny * speed2) continue;
+      if (!(rk > 1e-6 * speed)) return false;
+    }
+    if (rk >= 0 && q[k] >= 0) continue;
+    const double t = quadratic_root(ck, rk, q[k]);
+    if (t < tau) {
+      tau = t;
+      face = k;
+    }
+  }
+  if (face < 0) return false;
+  for (int it = 0; it < 2; ++it) {
+    const double f = c[face] + tau * (r[face] + tau * (0.5 * q[face] + tau * jr[face] / 6));
+    const double df = r[face] + tau * (q[face] + 0.5 * tau * jr[face]);
+    if (df == 0) break;
+    const double next = tau - f / df;
+    if (!(next > 0)) break;
+    tau = next;
+  }
+  // The bracket search's step bound, 0.25 / rate, and its horizon 64 tau_T.
+  double rate;
+  if (rec.type == CellType::normal_real)
+    rate = std::max({std::abs(rec.lam[0]), std::abs(rec.lam[1]), std::abs(rec.lam[2])});
+  else
+    rate = std::max(std::sqrt(rec.lam[0] * rec.lam[0] + rec.lam[1] * rec.lam[1]), std::abs(rec.lam[2]));
+  const double cap = std::min(rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity(), 64 * tauT);
+  if (!(tau < cap)) return false;
+  const double off = face == 0 ? 1.0 : 0.0;
+  int evals = 0;
+  for (int it = 0; it < 3; ++it) {
+    double z[3], dz[3], d2z[3], lz[3];
+    eigen_flow(rec, z0, dir * tau, z);
+    ++evals;
+    lambda_times(rec, 1.0, z, lz);
+    for (int i = 0; i < 3; ++i) dz[i] = dir * (lz[i] + rec.c[i]);
+    lambda_times(rec, dir, dz, d2z);
+    const double f = off + beta_row(S, face, z), df = beta_row(S, face, dz), d2f = beta_row(S, face, d2z);
+    if (!std::isfinite(f) || !(df < 0)) return false;
+    double delta = -f / df;
+    delta = -f / (df + 0.5 * d2f * delta);
+    const double next = tau + delta;
+    if (!(next > 0 && next < cap)) return false;
+    // The third derivative along the step stays within a small factor of its entry
+    // value: 2 |jerk| bounds the Taylor step's error.
+    const double err = 2 * jerk * std::abs(delta * delta * delta) / 6;
+    if (err > 1e-15 || std::abs(delta) > 1e-3 * tau) {
+      tau = next;
+      continue;
+    }
+    double ze[3], we[3];
+    for (int i = 0; i < 3; ++i) {
+      ze[i] = z[i] + delta * (dz[i] + 0.5 * delta * d2z[i]);
+      we[i] = dz[i] + delta * d2z[i];
+    }
+    double beta[4], rate_e[4];
+    beta_rates(S, ze, beta);
+    beta[0] += 1.0;
+    beta_rates(S, we, rate_e);
+    for (int k = 0; k < 4; ++k) {
+      if (k == face) continue;
+      if (beta[k] < -kDetect) return false;                // an earlier exit elsewhere
+      if (r[k] < -tiny && rate_e[k] > tiny) return false;  // a face grazed in between
+    }
+    // Snap onto the face as finish() does.
+    beta[face] = 0;
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) sum += (beta[k] = std::max(beta[k], 0.0));
+    out = ExitResult{};
+    out.kind = ExitResult::exit;
+    out.tau = next;
+    out.face = face;
+    out.evaluations = evals;
+    for (int k = 0; k < 4; ++k) out.beta[k] = sum > 0 ? beta[k] / sum : beta[k];
+    out.x = Vec3(out.beta[1], out.beta[2], out.beta[3]);
+    return true;
+  }
+  return false;
+}
+
+ExitResult find_exit(const TetGeometry& g, const CellPath& path, const ExitParams& params,
+                     const EntryValues* entry) {
+  return find_exit_in(g, path, params, entry);
+}
+
+ExitResult find_exit(const UnitGeometry& g, const CellPath& path, const ExitParams& params,
+                     const EntryValues* entry) {
+  return find_exit_in(g, path, params, entry);
 }
 
 }  // namespace fest::lemtrace

@@ -22,17 +22,20 @@ FieldGrid::FieldGrid(TetMesh mesh, const ClassifyParams& params, Precompute mode
     pool.emplace_back([this, w, workers, n] {
       const std::size_t begin = n * static_cast<std::size_t>(w) / static_cast<std::size_t>(workers);
       const std::size_t end = n * static_cast<std::size_t>(w + 1) / static_cast<std::size_t>(workers);
-      for (std::size_t c = begin; c < end; ++c)
-        table_[c] = classify(tet_geometry(mesh_, static_cast<int32_t>(c)), params_);
+      for (std::size_t c = begin; c < end; ++c) {
+        const TetGeometry g = tet_geometry(mesh_, static_cast<int32_t>(c));
+        table_[c] = to_barycentric_frame(g, classify(g, params_));
+      }
     });
   for (auto& t : pool) t.join();
   computed_ = n;
 }
 
-const CellRecord& FieldGrid::record(int32_t cell, CellRecord& scratch) const {
+const CellRecord& FieldGrid::record_slow(int32_t cell, CellRecord& scratch) const {
   const auto c = static_cast<std::size_t>(cell);
   if (mode_ != Precompute::none && state_[c].load(std::memory_order_acquire) == 2) return table_[c];
-  scratch = classify(tet_geometry(mesh_, cell), params_);
+  const TetGeometry g = tet_geometry(mesh_, cell);
+  scratch = to_barycentric_frame(g, classify(g, params_));
   if (mode_ == Precompute::lazy) {
     uint8_t expected = 0;
     if (state_[c].compare_exchange_strong(expected, 1, std::memory_order_acq_rel)) {

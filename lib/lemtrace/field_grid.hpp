@@ -24,8 +24,14 @@ class FieldGrid {
   const TetMesh& mesh() const noexcept { return mesh_; }
   const ClassifyParams& params() const noexcept { return params_; }
   Precompute mode() const noexcept { return mode_; }
-  // The record of a cell; `scratch` holds it when it is not (yet) in the table.
-  const CellRecord& record(int32_t cell, CellRecord& scratch) const;
+  // The record of a cell; `scratch` holds it when it is not (yet) in the table. Normal
+  // cells come in the barycentric frame (to_barycentric_frame), the others as classify()
+  // gives them; classify() itself gives the world-frame form of any cell.
+  const CellRecord& record(int32_t cell, CellRecord& scratch) const {
+    // Precomputed: a plain table read (the per-crossing cost of Table 9.4's "with memory").
+    if (mode_ == Precompute::all) return table_[static_cast<std::size_t>(cell)];
+    return record_slow(cell, scratch);
+  }
   const CellLocator& locator() const;  // built on first use
   double max_speed() const noexcept { return max_speed_; }
   // Memory of the mesh, neighbour table, records and locator, in bytes (records: all
@@ -34,6 +40,8 @@ class FieldGrid {
   std::size_t records_computed() const noexcept { return computed_.load(); }
 
  private:
+  const CellRecord& record_slow(int32_t cell, CellRecord& scratch) const;
+
   TetMesh mesh_;
   ClassifyParams params_;
   Precompute mode_;

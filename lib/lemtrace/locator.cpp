@@ -86,20 +86,25 @@ int32_t CellLocator::locate(const Vec3& x) const {
   return best;
 }
 
-int32_t CellLocator::walk(int32_t start, const Vec3& x, int64_t* calls) const {
+int32_t CellLocator::walk(int32_t start, const Vec3& x, int64_t* calls, Eigen::Vector4d* beta) const {
   int32_t cell = start;
   for (int step = 0; step < 64 && cell >= 0; ++step) {
     if (calls) ++*calls;
     const Eigen::Vector4d b = barycentric(mesh_, cell, x);
     int k;
     const double m = b.minCoeff(&k);
-    if (m >= -1e-12) return cell;
+    if (m >= -1e-12) {
+      if (beta) *beta = b;
+      return cell;
+    }
     const int32_t next = mesh_.neighbors[static_cast<std::size_t>(cell)][k];
     if (next < 0) break;
     cell = next;
   }
   if (calls) ++*calls;
-  return locate(x);
+  const int32_t found = locate(x);
+  if (beta && found >= 0) *beta = barycentric(mesh_, found, x);
+  return found;
 }
 
 }  // namespace fest::lemtrace

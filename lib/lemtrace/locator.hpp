@@ -19,8 +19,9 @@ class CellLocator {
   // A cell containing x (barycentric coordinates >= -1e-12), or -1.
   int32_t locate(const Vec3& x) const;
   // From `start`, walk at most 64 steps; falls back to locate(). `calls` counts the
-  // cells tested.
-  int32_t walk(int32_t start, const Vec3& x, int64_t* calls) const;
+  // cells tested; `beta`, when given, receives x's barycentric coordinates in the cell
+  // found (the walk's own inside test computed them: interpolation needs no more).
+  int32_t walk(int32_t start, const Vec3& x, int64_t* calls, Eigen::Vector4d* beta = nullptr) const;
   std::size_t bytes() const noexcept { return (start_.size() + cells_.size()) * sizeof(int32_t); }
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <thread>
 
 namespace fest::lemtrace {
@@ -49,6 +50,21 @@ double terminal_speed(const FieldGrid& grid, const TraceOptions& o) {
 
 // ---- locally exact method -------------------------------------------------------------
 
+// Barycentric coordinates, in the neighbour `to`, of a point given by `beta` in `from`
+// on their shared face: the shared vertices keep their weights, the vertex of `to`
+// opposite the face gets 0 (the chapter's C4 face correspondence, found from the four
+// vertex ids instead of stored). No point location and no geometry are needed.
+Eigen::Vector4d across_face(const Tet& from, const Tet& to, const Eigen::Vector4d& beta) {
+  Eigen::Vector4d out;
+  for (int j = 0; j < 4; ++j) {
+    const int32_t id = to[j];
+    out[j] = id == from[0] ? beta[0] : id == from[1] ? beta[1] : id == from[2] ? beta[2] : id == from[3] ? beta[3] : 0.0;
+  }
+  const double sum = out.sum();
+  if (sum > 0 && sum != 1.0) out /= sum;
+  return out;
+}
+
 void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir,
                const TraceOptions& o, Polyline& line) {
   const TetMesh& mesh = grid.mesh();
@@ -60,84 +76,133 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     const CellRecord& rec = grid.record(cell, scratch);
     emit(line, x, t, cell, rec.type);
   }
+  // The entry point's barycentric coordinates in `cell`, carried over from the previous
+  // cell's exit (have_beta) so that a normal cell in the barycentric frame needs no
+  // geometry at all; the seed cell computes them once.
+  Eigen::Vector4d carried = Eigen::Vector4d::Zero();
+  bool have_beta = false;
   int hops = 0, stuck = 0;
   for (;;) {
     if (line.cells >= o.max_steps) {
       line.reason = Reason::out_of_steps;
       return;
     }
-    const TetGeometry g = tet_geometry(mesh, cell);
     const CellRecord& rec = grid.record(cell, scratch);
-    const Eigen::Vector4d beta = g.bary(x);
-    const Vec3 v = g.interpolate(beta);
-    const double speed = v.norm();
-    if (!std::isfinite(speed)) {
+    const Tet& tet = mesh.tets[static_cast<std::size_t>(cell)];
+    const bool local = rec.bary_frame;
+    // Normal cells are traced in their barycentric frame (positions u = beta_{1..3}),
+    // the others in world coordinates with the cell's geometry.
+    TetGeometry g;
+    if (!local) g = tet_geometry(mesh, cell);
+    Eigen::Vector4d beta;
+    if (local && have_beta) beta = carried;
+    else {
+      if (local) g = tet_geometry(mesh, cell);
+      beta = g.bary(x);
+    }
+    auto world = [&](const Eigen::Vector4d& b) {
+      return Vec3(b[0] * mesh.points[static_cast<std::size_t>(tet[0])] + b[1] * mesh.points[static_cast<std::size_t>(tet[1])] +
+                  b[2] * mesh.points[static_cast<std::size_t>(tet[2])] + b[3] * mesh.points[static_cast<std::size_t>(tet[3])]);
+    };
+    auto world_of_u = [&](const Vec3& u) { return world(Eigen::Vector4d(1.0 - u.sum(), u[0], u[1], u[2])); };
+    // The interpolated (world) field: the speed test is the same in both frames.
+    const Vec3 v = local ? Vec3(beta[0] * mesh.vectors[static_cast<std::size_t>(tet[0])] +
+                                beta[1] * mesh.vectors[static_cast<std::size_t>(tet[1])] +
+                                beta[2] * mesh.vectors[static_cast<std::size_t>(tet[2])] +
+                                beta[3] * mesh.vectors[static_cast<std::size_t>(tet[3])])
+                         : g.interpolate(beta);
+    const double speed2 = v.squaredNorm();
+    if (!std::isfinite(speed2)) {
       line.reason = Reason::unexpected_value;
       return;
     }
-    if (speed <= v_stop) {
+    if (speed2 <= v_stop * v_stop) {
       line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
       return;
     }
-    // On an edge or vertex the path may leave at once through another face of this
-    // cell (the edge/vertex ambiguity rule): hop there without a step.
-    const Eigen::Vector4d rate = g.bary_rate(dir * v);
-    int leave = -1;
-    double most = 0;
-    for (int k = 0; k < 4; ++k) {
-      if (beta[k] <= 1e-13 && rate[k] * g.h_min < -1e-12 * speed && rate[k] < most) {
-        most = rate[k];
-        leave = k;
+    // A precomputed normal cell first tries the predicted exit in eigen coordinates
+    // (no CellPath, no geometry); everything else, and whatever it declines, goes
+    // through the general search below (edge/vertex hops included).
+    ExitResult e;
+    const bool fast = local && o.exit.predict && !o.exit.paper_newton && predicted_exit_local(rec, beta, dir, e);
+    const Vec3 pos = local ? Vec3(beta[1], beta[2], beta[3]) : x;
+    std::optional<CellPath> lazy_path;
+    auto path_of = [&]() -> const CellPath& {
+      if (!lazy_path) lazy_path.emplace(rec, pos, dir);
+      return *lazy_path;
+    };
+    if (!fast) {
+      const CellPath& path = path_of();
+      const UnitGeometry ug(local ? rec.tau_bary : 1.0);
+      // The field in the frame of the path (u' for a local cell) and the rate of beta.
+      const Vec3 f = local ? path.entry_field() : v;
+      const Eigen::Vector4d rate = local ? ug.bary_rate(dir * f) : g.bary_rate(dir * v);
+      const double rate_scale = local ? ug.h_min * f.norm() : std::sqrt(speed2) / g.h_min;
+      // On an edge or vertex the path may leave at once through another face of this
+      // cell (the edge/vertex ambiguity rule): hop there without a step.
+      int leave = -1;
+      double most = 0;
+      for (int k = 0; k < 4; ++k) {
+        if (beta[k] <= 1e-13 && rate[k] < -1e-12 * rate_scale && rate[k] < most) {
+          most = rate[k];
+          leave = k;
+        }
       }
-    }
-    if (leave >= 0 && hops < 16) {
-      const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][leave];
-      if (next < 0) {
-        line.reason = Reason::out_of_domain;
-        return;
+      if (leave >= 0 && hops < 16) {
+        const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][leave];
+        if (next < 0) {
+          line.reason = Reason::out_of_domain;
+          return;
+        }
+        Eigen::Vector4d b = beta;
+        b[leave] = 0;
+        carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], b);
+        have_beta = true;
+        cell = next;
+        ++hops;
+        continue;
       }
-      cell = next;
-      ++hops;
-      continue;
+      const EntryValues entry{beta, f};
+      e = local ? find_exit(ug, path, o.exit, &entry) : find_exit(g, path, o.exit, &entry);
     }
     hops = 0;
 
-    const CellPath path(rec, x, dir);
-    const EntryValues entry{beta, v};
-    const ExitResult e = find_exit(g, path, o.exit, &entry);
+    const Vec3 e_x = local ? world(e.beta) : e.x;
     ++line.cells;
     line.evaluations += e.evaluations;
     const double elapsed = std::abs(t - t0);
     const double tau = e.tau;
+    auto position = [&](double s) { return local ? world_of_u(path_of().position(s)) : path_of().position(s); };
     if (elapsed + tau > o.max_time) {
       const double rest = o.max_time - elapsed;
-      emit(line, path.position(rest), t + dir * rest, cell, rec.type);
+      emit(line, position(rest), t + dir * rest, cell, rec.type);
       line.reason = Reason::out_of_time;
       return;
     }
     if (o.samples_per_cell > 1 && tau > 0)
       for (int j = 1; j < o.samples_per_cell; ++j) {
         const double s = tau * j / o.samples_per_cell;
-        emit(line, path.position(s), t + dir * s, cell, rec.type);
+        emit(line, position(s), t + dir * s, cell, rec.type);
       }
     if (e.kind != ExitResult::exit) {
-      if (e.tau > 0) emit(line, e.x, t + dir * e.tau, cell, rec.type);
+      if (e.tau > 0) emit(line, local ? world_of_u(e.x) : e.x, t + dir * e.tau, cell, rec.type);
       line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
       return;
     }
-    if (!e.x.allFinite()) {
+    if (!e_x.allFinite()) {
       line.reason = Reason::unexpected_value;
       return;
     }
     // A path that makes no progress (it alternates between cells at one point, which
     // round-off on a face can cause) is stopped rather than spun to --max-steps.
-    stuck = (e.x - x).norm() == 0 ? stuck + 1 : 0;
+    const double moved = (e_x - x).norm();
+    stuck = moved == 0 ? stuck + 1 : 0;
     if (stuck > 64) {
       line.reason = Reason::unexpected_value;
       return;
     }
-    length += (e.x - x).norm();
-    x = e.x;
+    length += moved;
+    x = e_x;
     t += dir * tau;
     if (tau > 0 || line.x.size() == 1) emit(line, x, t, cell, rec.type);
     if (length > o.max_length) {
@@ -149,6 +214,8 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
       line.reason = Reason::out_of_domain;
       return;
     }
+    carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
+    have_beta = true;
     cell = next;
   }
 }
@@ -160,14 +227,28 @@ struct Sampler {
   Polyline& line;
   double dir;
   int32_t cell;
+  bool search;  // bin-grid search instead of the neighbour walk
   // v at x (times dir); false outside the grid.
   bool operator()(const Vec3& x, Vec3& v) {
     ++line.evaluations;
-    const int32_t c = grid.locator().walk(cell, x, &line.locator_calls);
+    // Point location (the walk) is the part of each evaluation that the LEM does not
+    // pay (§9.2.1-9.2.3); its inside test gives the barycentric weights, so the
+    // interpolation itself is four vertex vectors.
+    Eigen::Vector4d beta;
+    int32_t c;
+    if (search) {
+      ++line.locator_calls;
+      c = grid.locator().locate(x);
+      if (c >= 0) beta = barycentric(grid.mesh(), c, x);
+    } else {
+      c = grid.locator().walk(cell, x, &line.locator_calls, &beta);
+    }
     if (c < 0) return false;
     cell = c;
-    const TetGeometry g = tet_geometry(grid.mesh(), c);
-    v = dir * g.interpolate(g.bary(x));
+    const TetMesh& mesh = grid.mesh();
+    const Tet& t = mesh.tets[static_cast<std::size_t>(c)];
+    v = dir * (beta[0] * mesh.vectors[static_cast<std::size_t>(t[0])] + beta[1] * mesh.vectors[static_cast<std::size_t>(t[1])] +
+               beta[2] * mesh.vectors[static_cast<std::size_t>(t[2])] + beta[3] * mesh.vectors[static_cast<std::size_t>(t[3])]);
     return v.allFinite();
   }
 };
@@ -175,7 +256,7 @@ struct Sampler {
 void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir, const TraceOptions& o,
               Polyline& line) {
   const double v_stop = terminal_speed(grid, o);
-  Sampler field{grid, line, dir, cell};
+  Sampler field{grid, line, dir, cell, o.rk_cell_search};
   CellRecord scratch;
   Vec3 x = seed;
   double t = t0, length = 0;

@@ -43,6 +43,11 @@ struct TraceOptions {
   StepUnit step_unit = StepUnit::cell;
   double tolerance = 1e-6;                                     // RK45 error per step
   int samples_per_cell = 0;                                    // extra closed-form points (LEM)
+  // RK point location: false walks face neighbours from the last cell (the default, the
+  // cheapest); true searches the bin grid at every field evaluation, the chapter's
+  // §9.2.1 loop ("a time consuming cell search is needed for every evaluation"), for
+  // the Table 9.4 comparison.
+  bool rk_cell_search = false;
 };
 
 struct Polyline {

@@ -1,6 +1,7 @@
 // Synthetic head: shapes are defined in mm around the grid centre.
 #include "segbrain/phantom.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -26,7 +27,36 @@ double ell(double x, double y, double z, double a, double b, double c) {
   return std::sqrt((x / a) * (x / a) + (y / b) * (y / b) + (z / c) * (z / c));
 }
 
+// Distance from p to the segment s.
+double segment_distance(const std::array<double, 3>& p, const NerveSegment& s) {
+  double d[3], u[3], dd = 0, du = 0;
+  for (int a = 0; a < 3; ++a) {
+    d[a] = s.to[a] - s.from[a];
+    u[a] = p[a] - s.from[a];
+    dd += d[a] * d[a];
+    du += d[a] * u[a];
+  }
+  const double t = std::clamp(du / dd, 0.0, 1.0);
+  double r2 = 0;
+  for (int a = 0; a < 3; ++a) r2 += (u[a] - t * d[a]) * (u[a] - t * d[a]);
+  return std::sqrt(r2);
+}
+
 }  // namespace
+
+// The head's centre lies 5 mm above the grid centre; the eyes 30 mm below it, 70 mm in
+// front and 32 mm either side.
+std::array<std::array<double, 3>, 2> phantom_eye_centres() { return {{{-32, 70, -25}, {32, 70, -25}}}; }
+
+// From the posterior pole of each globe back, medially and 10 mm up to a chiasm 50 mm
+// behind the eye centres (as on Colin27: about 50 mm behind, 10-15 mm above).
+std::array<NerveSegment, 2> phantom_nerves() {
+  auto eyes = phantom_eye_centres();
+  std::array<NerveSegment, 2> out;
+  for (int s = 0; s < 2; ++s)
+    out[s] = {{eyes[s][0], eyes[s][1] - kEyeRadiusMm, eyes[s][2]}, {0, eyes[s][1] - 50, eyes[s][2] + 10}};
+  return out;
+}
 
 Phantom make_phantom(const PhantomOptions& o) {
   for (int a = 0; a < 3; ++a)
@@ -37,8 +67,9 @@ Phantom make_phantom(const PhantomOptions& o) {
   const Grid& g = p.grid;
   p.t1.assign(g.size(), 0);
   p.truth.assign(g.size(), 0);
-  const double WM = 110, GM = 80, CSF = 30, FAT = 180, BONE = 20, MUSCLE = 60;
+  const double WM = 110, GM = 80, CSF = 30, FAT = 180, BONE = 20, MUSCLE = 60, NERVE = 100;
   Rng rng{o.seed * 7919 + 17};
+  const auto nerves = phantom_nerves();
   for (std::size_t k = 0; k < g.n[2]; ++k)
     for (std::size_t j = 0; j < g.n[1]; ++j)
       for (std::size_t i = 0; i < g.n[0]; ++i) {
@@ -58,9 +89,9 @@ Phantom make_phantom(const PhantomOptions& o) {
         int lab = 0;
         // Eyes: vitreous balls (r 12 mm) in orbital fat, in front of the brain.
         bool eye = false, orbit = false;
-        for (int s : {-1, 1}) {
-          double d = std::sqrt((x - s * 32) * (x - s * 32) + (y - 70) * (y - 70) + (hz + 30) * (hz + 30));
-          eye = eye || d < 12;
+        for (const auto& c : phantom_eye_centres()) {
+          double d = std::sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]) + (z - c[2]) * (z - c[2]));
+          eye = eye || d < kEyeRadiusMm;
           orbit = orbit || d < 16;
         }
         if (rh < 1 || neck) {
@@ -85,6 +116,17 @@ Phantom make_phantom(const PhantomOptions& o) {
           if (eye && lab <= 1) {
             v = CSF;
             lab = 10;
+          }
+        }
+        if (!eye && lab != 6) {
+          const std::array<double, 3> at{x, y, z};
+          const double dn = std::min(segment_distance(at, nerves[0]), segment_distance(at, nerves[1]));
+          if (dn <= kNerveRadiusMm) {
+            v = NERVE;
+            lab = 9;
+          } else if (dn <= 2 * kNerveRadiusMm && (lab == 2 || lab == 3)) {
+            v = CSF;  // the dural sheath's CSF inside the skull
+            lab = 2;
           }
         }
         // Low-order polynomial bias field, 1 ± bias/2 across the head.

@@ -356,6 +356,10 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"fraction_above", f}};
         return e.unify(a[3], make_real(f));
       });
+  register_edge_operators(engine);
+  register_tracking_operators(engine);
+  register_region_operators(engine);
+  register_tissue_operators(engine);
 }
 
 std::vector<std::uint16_t> assemble_labels(const Workspace& ws) {

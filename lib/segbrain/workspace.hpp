@@ -13,10 +13,14 @@
 
 namespace fest::segbrain {
 
+struct Regions;
+
 struct Object {
   bool is_mask = false;
   Image image;  // when !is_mask
   Mask mask;    // when is_mask
+  std::vector<std::size_t> path;  // a tracked line (its mask marks the same voxels), in order
+  std::shared_ptr<const Regions> regions;  // a region division (its mask: the regions' voxels)
 };
 
 struct Emitted {
@@ -41,6 +45,14 @@ class Workspace {
 
   // Registers the operators of spec §2.4 that this version provides.
   void register_operators(Engine& engine);
+  // The second-order edge operators (workspace_edges.cpp) and line tracking
+  // (workspace_tracking.cpp); register_operators calls them.
+  void register_edge_operators(Engine& engine);
+  void register_tracking_operators(Engine& engine);
+  // Region division and aggregation of the edge-based find_brain (workspace_regions.cpp).
+  void register_region_operators(Engine& engine);
+  // Tissue classes for --tissue (workspace_tissue.cpp).
+  void register_tissue_operators(Engine& engine);
 
  private:
   // Creates `out` (an unbound variable gets a fresh atom; a bound atom names it) and

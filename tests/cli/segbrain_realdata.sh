@@ -73,7 +73,7 @@ check "the leaking candidate is worse by >= 0.03 Dice ($bad vs $good)" at_least 
 ch2=$(need_testdata mri/ch2.nii.gz) && ch2bet=$(need_testdata mri/ch2bet.nii.gz) &&
     aal=$(need_testdata mri/aal.nii.gz) && jhu=$(need_testdata mri/jhu189.nii.gz) && {
 case_ "Colin27: brain, ventricles, cerebellum and brainstem against ch2bet, JHU and AAL"
-run segbrain run "$ch2" -o "$WORK/ch2_labels.nii.gz" --report "$WORK/ch2.json"
+run segbrain run "$ch2" -o "$WORK/ch2_labels.nii.gz" --report "$WORK/ch2.json" --trace "$WORK/ch2.jsonl"
 expect_status 0
 E="$FEST_BIN/segbrain"
 "$E" eval --ref "$ch2bet" --seg "$WORK/ch2_labels.nii.gz" --map "brain=2-8" --ref-map "brain=1-1000" >"$WORK/ch2_brain.tsv"
@@ -95,6 +95,24 @@ ref_c=$(python3 "$(dirname "$0")/segbrain/reorient.py" centroid "$jhu" 99 100 11
 our_c=$(jq -r '.objects.brainstem.centroid_mm | map(tostring) | join(" ")' "$WORK/ch2.json")
 d=$(echo "$ref_c $our_c" | awk '{ print sqrt(($1 - $4)^2 + ($2 - $5)^2 + ($3 - $6)^2) }')
 check "brainstem centroid within 10 mm of JHU's ($d mm)" awk -v d="$d" 'BEGIN { exit !(d <= 10) }'
+# Optic nerves: no reference labels either; plausibility (spec §5): two tracked paths of
+# 35-65 mm (Colin27's chord from the posterior pole of a globe to the chiasm is itself
+# about 52 mm), each starting at its globe and heading back and towards the midline,
+# the two meeting behind the eyes.
+lens=$(jq -s -r '[.[] | select(.port == "exit" and (.goal | startswith("line_track("))) | .measure.path_length_mm] | map(. * 10 | round / 10) | join(" ")' "$WORK/ch2.jsonl")
+check "two nerve paths of 35-65 mm ($lens)" sh -c "echo '$lens' | awk '{ exit !(NF == 2 && \$1 >= 35 && \$1 <= 65 && \$2 >= 35 && \$2 <= 65) }'"
+python3 "$(dirname "$0")/segbrain/reorient.py" nerves "$WORK/ch2_labels.nii.gz" 9 10 >"$WORK/nerves.txt"
+# side touches_eye front_R front_A back_R back_A (world mm)
+check "each nerve touches its globe ($(awk '{ printf "%s %s ", $1, $2 }' "$WORK/nerves.txt"))" \
+    awk 'END { exit !(NR == 2 && ok == 2) } $2 > 0 { ok++ }' "$WORK/nerves.txt"
+# The midline: halfway between the two back ends.
+check "each nerve heads back >= 25 mm and >= 15 mm towards the midline ($(awk '{ printf "%s A %s->%s R %s->%s; ", $1, $4, $6, $3, $5 }' "$WORK/nerves.txt"))" \
+    awk 'function abs(x) { return x < 0 ? -x : x }
+         { fa[NR] = $4; ba[NR] = $6; fr[NR] = $3; br[NR] = $5 }
+         END { if (NR != 2) exit 1; m = (br[1] + br[2]) / 2
+               for (k = 1; k <= 2; k++) if (fa[k] - ba[k] < 25 || abs(fr[k] - m) - abs(br[k] - m) < 15) exit 1 }' "$WORK/nerves.txt"
+check "the nerves meet behind the eyes (back ends <= 15 mm apart, front ends >= 45 mm)" \
+    awk 'NR == 1 { fr = $3; br = $5 } NR == 2 { exit !($3 - fr >= 45 && $5 - br <= 15 && br - $5 <= 15) }' "$WORK/nerves.txt"
 }
 
 finish

@@ -111,6 +111,34 @@ void apply_set(Engine& engine, const std::string& s) {
   if (!replaced) throw usage_error("--set {}: the knowledge base has no candidates/2, limit/2 or {}/1 fact of that name", name, name);
 }
 
+// --modality M (spec §4): the knowledge base says which contrasts its rules are written
+// for (supported_modality/1; a KB without those facts is taken as T1-only) and reads the
+// one asked for from modality/1.
+void apply_modality(Engine& engine, const std::string& m) {
+  Term t = make_atom(m);
+  const bool declared = engine.defines("supported_modality", 1);
+  if (declared ? !engine.prove(make_compound("supported_modality", {t})) : m != "t1") {
+    std::string known = "t1";
+    if (declared) {
+      known.clear();
+      Term all = make_var("L"), x = make_var("X");
+      engine.prove(make_compound("findall", {x, make_compound("supported_modality", {x}), all}));
+      std::vector<Term> items;
+      list_items(deref(all), items);
+      for (const auto& it : items) known += (known.empty() ? "" : ", ") + to_string(it);
+    }
+    throw usage_error("--modality {}: the knowledge base's rules are written for {} only; give rules for {} with --kb", m, known, m);
+  }
+  if (engine.defines("modality", 1)) {
+    engine.remove_predicate("modality", 1);
+    Clause c;
+    c.head = make_compound("modality", {t});
+    c.body = make_atom("true");
+    c.file = "--modality";
+    engine.add_clause(c);
+  }
+}
+
 Volume read_volume_input(const std::string& path) {
   formats::Input in = formats::load_input(path);
   if (formats::kind_of(in.format) != formats::Kind::volume)
@@ -216,6 +244,16 @@ int run_segment(const RunArgs& a) {
   Engine engine;
   for (const auto& p : load_kb(a.kb)) engine.consult(p);
   for (const auto& s : a.sets) apply_set(engine, s);
+  apply_modality(engine, a.modality);
+  if (a.tissue) {
+    if (!engine.defines("tissue_classification", 0))
+      throw usage_error("--tissue: the knowledge base has no tissue classification (no tissue_classification/0)");
+    Clause c;
+    c.head = make_atom("tissue_classification");
+    c.body = make_atom("true");
+    c.file = "--tissue";
+    engine.add_clause(c);
+  }
   Term goal;
   try {
     goal = parse_term(a.goal, "--goal");

@@ -22,6 +22,8 @@ struct RunArgs {
   std::string label_table;  // --label-table FILE
   std::string report;
   std::string trace;
+  std::string modality = "t1";  // --modality: must be a supported_modality/1 of the KB
+  bool tissue = false;          // --tissue: grey/white matter labels (tissue_classification/0)
   int max_depth = 10000;
   double max_inferences = 1e7;
   double time_limit = 0;

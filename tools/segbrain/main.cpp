@@ -29,12 +29,15 @@ int main(int argc, char** argv) {
   r->add_option("--kb", run.kb, "Knowledge-base file(s) instead of the built-in head_t1.pl")->allow_extra_args(false);
   r->add_option("--goal", run.goal, "Goal to prove")->default_val("segment_head");
   r->add_option("--set", run.sets, "NAME=VALUE: replace candidates/2, limit/2 or NAME/1 facts")->allow_extra_args(false);
-  r->add_option("--objects", run.objects, "Comma-separated objects to find (head, brain, ventricles, cerebellum); "
+  r->add_option("--objects", run.objects, "Comma-separated objects to find (head, brain, ventricles, cerebellum, brainstem, eyes, optic_nerve); "
                  "proves segment_objects([...]) instead of --goal");
   r->add_option("--masks", run.masks, "Also write each emitted object as DIR/<name>.nii.gz (uint8 0/1)");
   r->add_option("--label-table", run.label_table, "Write the label colour table (index name R G B A) of the knowledge base");
   r->add_option("--report", run.report, "Write a JSON report");
   r->add_option("--trace", run.trace, "Write the proof trace as JSON lines");
+  r->add_option("--modality", run.modality, "Contrast of the input: t1 | t2 | pd (the knowledge base must support it; "
+                 "the built-in one supports t1)")->default_val("t1")->check(CLI::IsMember({"t1", "t2", "pd"}));
+  r->add_flag("--tissue", run.tissue, "Also label grey (4) and white matter (5) inside the brain");
   r->add_option("--max-depth", run.max_depth, "Deepest proof")->default_val(10000);
   r->add_option("--max-inferences", run.max_inferences, "Most inferences")->default_val(1e7);
   r->add_option("--time-limit", run.time_limit, "Seconds (0 = none)")->default_val(0);

@@ -13,6 +13,12 @@
                                        agree voxel by voxel after undoing the shuffle;
   reorient.py centroid IN.nii[.gz] LO HI [LO HI ...]  world (sform) centroid of the
                                        voxels with LO <= value <= HI, printed "R A S";
+  reorient.py nerves LABELS.nii[.gz] NERVE EYE  for the voxels labelled NERVE on
+                                       either side of the midline (the mean world R of
+                                       all of them): "side touches_eye front_R front_A
+                                       back_R back_A" per side, touches_eye = voxels with
+                                       an EYE voxel within 2 voxels, front/back = world
+                                       mean of the side's most anterior/posterior 5 mm;
   reorient.py bias IN.nii OUT.nii G    intensities times a smooth field, linear along the
                                        three voxel axes, from 1 - G to 1 + G corner to
                                        corner (the shading of a receive coil).
@@ -138,6 +144,36 @@ def centroid(path, ranges):
     print(' '.join('%.3f' % (srow[r][0] * c[0] + srow[r][1] * c[1] + srow[r][2] * c[2] + srow[r][3]) for r in range(3)))
 
 
+def nerves(path, nerve, eye):
+    _, dims, _, srow, _, v = read(path)
+    nx, ny = dims[0], dims[1]
+    def world(i):
+        p = (i % nx, (i // nx) % ny, i // (nx * ny))
+        return [srow[r][0] * p[0] + srow[r][1] * p[1] + srow[r][2] * p[2] + srow[r][3] for r in range(3)]
+    idx = [i for i, x in enumerate(v) if x == nerve]
+    if not idx:
+        return 1
+    pts = {i: world(i) for i in idx}
+    mid = sum(p[0] for p in pts.values()) / len(pts)
+    for name, side in (('left', [i for i in idx if pts[i][0] < mid]), ('right', [i for i in idx if pts[i][0] >= mid])):
+        touch = 0
+        for i in side:
+            x, y, z = i % nx, (i // nx) % ny, i // (nx * ny)
+            near = False
+            for dz in range(-2, 3):
+                for dy in range(-2, 3):
+                    for dx in range(-2, 3):
+                        if 0 <= x + dx < nx and 0 <= y + dy < ny and 0 <= z + dz < dims[2]:
+                            near = near or v[(x + dx) + nx * ((y + dy) + ny * (z + dz))] == eye
+            touch += near
+        a = [pts[i][1] for i in side]
+        front = [pts[i] for i in side if pts[i][1] >= max(a) - 5]
+        back = [pts[i] for i in side if pts[i][1] <= min(a) + 5]
+        mean = lambda ps, k: sum(p[k] for p in ps) / len(ps)
+        print('%s %d %.1f %.1f %.1f %.1f' % (name, touch, mean(front, 0), mean(front, 1), mean(back, 0), mean(back, 1)))
+    return 0
+
+
 def bias(src, dst, g):
     data, dims, _, _, dtype, v = read(src)
     code, _ = TYPES[dtype]
@@ -159,6 +195,8 @@ if __name__ == '__main__':
     elif sys.argv[1] == 'centroid':
         vals = [float(t) for t in sys.argv[3:]]
         centroid(sys.argv[2], list(zip(vals[0::2], vals[1::2])))
+    elif sys.argv[1] == 'nerves':
+        sys.exit(nerves(sys.argv[2], int(sys.argv[3]), int(sys.argv[4])))
     elif sys.argv[1] == 'bias':
         bias(sys.argv[2], sys.argv[3], float(sys.argv[4]))
     elif sys.argv[1] == 'unshuffled':
