@@ -20,6 +20,10 @@ double otsu_threshold(const Image& img, const Mask& mask);
 // lo <= I <= hi.
 Mask threshold(const Image& img, double lo, double hi);
 
+// Voxel-wise logic of two masks of one grid: a and b, a or b, a and not b.
+enum class MaskLogic { both, either, first_only };
+Mask combine(const Mask& a, const Mask& b, MaskLogic op);
+
 // Fraction of mask voxels with lo <= I <= hi.
 double fraction_within(const Image& img, const Mask& mask, double lo, double hi);
 

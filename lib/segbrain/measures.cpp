@@ -10,7 +10,10 @@
 namespace fest::segbrain {
 
 double deep_intensity(const Grid& g, const Image& img, const Mask& mask, double frac) {
-  std::vector<double> d = depth(g, mask);
+  return deep_intensity(img, mask, depth(g, mask), frac);
+}
+
+double deep_intensity(const Image& img, const Mask& mask, const std::vector<double>& d, double frac) {
   std::vector<double> ds;
   for (std::size_t i = 0; i < d.size(); ++i)
     if (mask[i]) ds.push_back(d[i]);

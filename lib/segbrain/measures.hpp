@@ -13,6 +13,8 @@ namespace fest::segbrain {
 // Median of the upper half (the 75th percentile) of intensities among mask voxels whose
 // depth lies in the top `frac` of depths: the deep head centre, white matter on T1.
 double deep_intensity(const Grid& g, const Image& img, const Mask& mask, double frac);
+// The same with the mask's depth map already computed.
+double deep_intensity(const Image& img, const Mask& mask, const std::vector<double>& depth, double frac);
 
 // Fraction of `m` voxels within dist_mm of the outline of `head` (depth <= dist_mm).
 double skin_contact_fraction(const Grid& g, const Mask& m, const Mask& head, double dist_mm);

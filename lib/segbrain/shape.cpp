@@ -1,12 +1,15 @@
 // Location and shape operators (see shape.hpp).
 #include "segbrain/shape.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <queue>
+#include <vector>
 
 #include "segbrain/morphology.hpp"
+#include "segbrain/parallel.hpp"
 
 namespace fest::segbrain {
 
@@ -47,14 +50,19 @@ std::array<double, 6> bbox_mm(const Grid& g, const Mask& m) {
 }
 
 Mask halfspace(const Grid& g, int axis, bool below, double value_mm) {
+  // Which positions along the axis are in; then whole rows are copied or filled.
+  Mask in(g.n[axis]);
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    const double v = double(k) * g.spacing[axis];
+    in[k] = below ? v < value_mm : v > value_mm;
+  }
   Mask out(g.size());
   for (std::size_t z = 0; z < g.n[2]; ++z)
-    for (std::size_t y = 0; y < g.n[1]; ++y)
-      for (std::size_t x = 0; x < g.n[0]; ++x) {
-        const std::size_t p[3] = {x, y, z};
-        double v = double(p[axis]) * g.spacing[axis];
-        out[g.index(x, y, z)] = below ? v < value_mm : v > value_mm;
-      }
+    for (std::size_t y = 0; y < g.n[1]; ++y) {
+      std::uint8_t* row = out.data() + g.index(0, y, z);
+      if (axis == 0) std::copy(in.begin(), in.end(), row);
+      else std::fill(row, row + g.n[0], in[axis == 1 ? y : z]);
+    }
   return out;
 }
 
@@ -178,27 +186,47 @@ double midsagittal_r_mm(const Grid& g, const Image& img, const Mask& m, double s
     if (m[i]) mean += img[i], ++n;
   mean /= double(n);
   const double step = g.spacing[0] / 2;
-  double best = -2, best_c = c[0];
-  // Every other voxel row is enough for a correlation over a whole head.
-  for (double plane = c[0] - search_mm; plane <= c[0] + search_mm + 1e-9; plane += step) {
-    // Mirror of index x about the plane: 2 plane / spacing - x, an integer on half steps.
-    const long long twice = std::llround(2 * plane / g.spacing[0]);
-    double sab = 0, saa = 0, sbb = 0;
-    for (std::size_t z = 0; z < g.n[2]; z += 2)
-      for (std::size_t y = 0; y < g.n[1]; y += 2)
-        for (std::size_t x = 0; x < g.n[0]; ++x) {
-          const std::size_t i = g.index(x, y, z);
+  // Every other voxel row is enough for a correlation over a whole head; each row is
+  // visited only between its first and last mask voxel.
+  struct Row {
+    std::size_t base, x0, x1;  // [x0, x1]
+  };
+  std::vector<Row> rows;
+  for (std::size_t z = 0; z < g.n[2]; z += 2)
+    for (std::size_t y = 0; y < g.n[1]; y += 2) {
+      const std::size_t base = g.index(0, y, z);
+      std::size_t x0 = 0, x1 = g.n[0];
+      while (x0 < g.n[0] && !m[base + x0]) ++x0;
+      if (x0 == g.n[0]) continue;
+      while (!m[base + x1 - 1]) --x1;
+      rows.push_back({base, x0, x1 - 1});
+    }
+  std::vector<double> planes;
+  for (double plane = c[0] - search_mm; plane <= c[0] + search_mm + 1e-9; plane += step) planes.push_back(plane);
+  // Planes are independent: each thread scores a band of them, every sum in voxel order.
+  std::vector<double> score(planes.size());
+  parallel_bands(planes.size(), 1, [&](std::size_t, std::size_t p0, std::size_t p1) {
+    for (std::size_t p = p0; p < p1; ++p) {
+      // Mirror of index x about the plane: 2 plane / spacing - x, an integer on half steps.
+      const long long twice = std::llround(2 * planes[p] / g.spacing[0]);
+      double sab = 0, saa = 0, sbb = 0;
+      for (const Row& row : rows)
+        for (std::size_t x = row.x0; x <= row.x1; ++x) {
+          const std::size_t i = row.base + x;
           if (!m[i]) continue;
           const long long xm = twice - static_cast<long long>(x);
           if (xm < 0 || xm >= static_cast<long long>(g.n[0])) continue;
-          const std::size_t j = g.index(static_cast<std::size_t>(xm), y, z);
+          const std::size_t j = row.base + static_cast<std::size_t>(xm);
           if (!m[j]) continue;
-          const double a = img[i] - mean, b = img[j] - mean;
-          sab += a * b, saa += a * a, sbb += b * b;
+          const double va = img[i] - mean, vb = img[j] - mean;
+          sab += va * vb, saa += va * va, sbb += vb * vb;
         }
-    const double r = saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : -1;
-    if (r > best) best = r, best_c = double(twice) * g.spacing[0] / 2;
-  }
+      score[p] = saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : -1;
+    }
+  });
+  double best = -2, best_c = c[0];
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    if (score[p] > best) best = score[p], best_c = double(std::llround(2 * planes[p] / g.spacing[0])) * g.spacing[0] / 2;
   return best_c;
 }
 

@@ -158,7 +158,7 @@ void Workspace::register_operators(Engine& engine) {
             ++memo_hits_;
           }
         if (!hit) {
-          w = deep_intensity(grid_, io->image, mo->mask, frac);
+          w = deep_intensity(io->image, mo->mask, depth_of(mn), frac);
           deep_memo_.push_back({io, mo, frac, w});
         }
         if (std::isnan(w)) return false;
@@ -203,9 +203,7 @@ void Workspace::register_operators(Engine& engine) {
     reg(name, 3, "+A, +B, -Out", "voxel-wise logic", [this, which](Engine& e, const std::vector<Term>& a) {
       const Mask& x = mask(name_of(a[0]));
       const Mask& y = mask(name_of(a[1]));
-      Mask m(x.size());
-      for (std::size_t i = 0; i < m.size(); ++i)
-        m[i] = which == 0 ? (x[i] && y[i]) : which == 1 ? (x[i] || y[i]) : (x[i] && !y[i]);
+      Mask m = combine(x, y, which == 0 ? MaskLogic::both : which == 1 ? MaskLogic::either : MaskLogic::first_only);
       return create(e, a[2], mask_object(std::move(m)));
     });
   };
@@ -340,7 +338,7 @@ void Workspace::register_operators(Engine& engine) {
       [this](Engine& e, const std::vector<Term>& a) {
         const Mask& m = mask(name_of(a[0]));
         double d0 = num(e, a[1]), d1 = num(e, a[2]);
-        std::vector<double> d = depth(grid_, m);
+        const std::vector<double>& d = depth_of(name_of(a[0]));
         Mask out(m.size());
         for (std::size_t i = 0; i < m.size(); ++i) out[i] = m[i] && d[i] >= d0 && d[i] <= d1;
         return create(e, a[3], mask_object(std::move(out)));

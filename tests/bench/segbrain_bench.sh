@@ -48,6 +48,7 @@ case_run() {  # name input target_s extra-args...
 }
 
 case_run colin27_head_brain_ventricles "$DATA/ch2.nii.gz" 10 --objects head,brain,ventricles
+case_run colin27_head_brain_ventricles_1thread "$DATA/ch2.nii.gz" 10 --objects head,brain,ventricles --threads 1
 case_run colin27_all_objects "$DATA/ch2.nii.gz" 30
 case_run itk_t1_head_all_objects "$DATA/t1_head.nii.gz" 2
 

@@ -27,6 +27,7 @@ struct RunArgs {
   int max_depth = 10000;
   double max_inferences = 1e7;
   double time_limit = 0;
+  int threads = 0;  // --threads: 0 = all cores; the output is the same for any count
   bool quiet = false;
 };
 

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   r->add_option("--max-depth", run.max_depth, "Deepest proof")->default_val(10000);
   r->add_option("--max-inferences", run.max_inferences, "Most inferences")->default_val(1e7);
   r->add_option("--time-limit", run.time_limit, "Seconds (0 = none)")->default_val(0);
+  fest::cli::add_threads(*r, run.threads);
 
   KbCheckArgs kbc;
   auto* k = app.add_subcommand("kb-check", "Lint knowledge-base files: syntax, undefined predicates, singletons");

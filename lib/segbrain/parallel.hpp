@@ -1,0 +1,59 @@
+#pragma once
+// Worker threads of the segbrain operators (spec §4 --threads, §7 determinism). The
+// operators split their work into independent slices, rows or line blocks whose results
+// do not depend on which thread computes them, and every reduction runs in a fixed order
+// on the calling thread, so the output is byte-identical for any thread count.
+//
+// The count is one setting for the whole library (set once by the tool from --threads)
+// rather than an argument of every operator: the rule engine calls the operators through
+// the workspace and has no use for it.
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace fest::segbrain {
+
+// Threads the operators may use (>= 1); 1 until set.
+int worker_threads();
+void set_worker_threads(int n);
+
+// Calls body(worker, begin, end) on contiguous bands of [0, count), one per worker
+// (worker in [0, workers)); at most worker_threads() workers and none with fewer than
+// min_per_worker items. The first exception of a worker is rethrown here after all joined.
+template <typename Body>
+void parallel_bands(std::size_t count, std::size_t min_per_worker, Body&& body) {
+  const std::size_t by_size = std::max<std::size_t>(1, count / std::max<std::size_t>(1, min_per_worker));
+  const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(worker_threads()), by_size);
+  if (count == 0) return;
+  if (workers <= 1) {
+    body(std::size_t{0}, std::size_t{0}, count);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(workers);
+  std::vector<std::thread> pool;
+  pool.reserve(workers - 1);
+  auto band = [&](std::size_t w) {
+    try {
+      body(w, count * w / workers, count * (w + 1) / workers);
+    } catch (...) {
+      errors[w] = std::current_exception();
+    }
+  };
+  std::size_t started = 1;
+  try {
+    for (; started < workers; ++started) pool.emplace_back(band, started);
+  } catch (const std::system_error&) {
+    // No more threads to be had: the calling thread takes the remaining bands.
+  }
+  for (std::size_t w = started; w < workers; ++w) band(w);
+  band(0);
+  for (auto& t : pool) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace fest::segbrain
