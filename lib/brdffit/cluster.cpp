@@ -360,14 +360,21 @@ ClusterResult cluster_lumitexels(const LumitexelSet& set, const std::vector<FitS
   // Final BRDFs of the clusters with the bound: what is rendered from them must be
   // physically plausible also where no sample looked (see lafortune_model.hpp).
   if (options.fit.model.max_lobe_albedo > 0) {
+    // Two rounds of: each lumitexel to its nearest cluster, then the bounded fits. The
+    // search's last refits can leave a few lumitexels with a cluster that is no longer
+    // their nearest, and a broad material's cluster that misses its most telling
+    // lumitexels prefers a lobe about the normal; the second round repairs that.
     const Clusterer bounded{set, local, options, cl.active};
-    const std::vector<Members> lists = cl.member_lists(cs.size(), res.assignment);
-    for (std::size_t j = 0; j < cs.size(); ++j)
-      if (!lists[j].empty()) {
-        Eigen::VectorXd start = cs[j].params;
-        clamp_to_bounds(options.fit.model, start);
-        bounded.set_fit(cs[j], bounded.refit_or_restart(lists[j], start, static_cast<int>(j)));
-      }
+    for (int round = 0; round < 2; ++round) {
+      (round == 0 ? cl : bounded).reassign(cs, res.assignment, 0);  // D by the search's / the bounded BRDFs
+      const std::vector<Members> lists = cl.member_lists(cs.size(), res.assignment);
+      for (std::size_t j = 0; j < cs.size(); ++j)
+        if (!lists[j].empty()) {
+          Eigen::VectorXd start = cs[j].params;
+          clamp_to_bounds(options.fit.model, start);
+          bounded.set_fit(cs[j], bounded.refit_or_restart(lists[j], start, static_cast<int>(j)));
+        }
+    }
     cl.tally(cs, res.assignment, bounded.own_distances(cs, res.assignment));
     total = 0;
     for (const MaterialCluster& c : cs) total += c.error;
