@@ -396,7 +396,7 @@ reflectance::SurfaceMaterials render_materials(const RenderArgs& a, const Loaded
   if (wh.contains("mesh_sha256") && wh["mesh_sha256"].is_string() && wh["mesh_sha256"] != lm.sha256)
     throw bad_input("the weights were made for another mesh (mesh_sha256 differs) ({})", a.svbrdf);
   try {
-    return brdffit::materials_from_projection(p, set, lm.mesh.triangles.size());
+    return brdffit::materials_from_projection(p, set, lm.mesh.triangles);
   } catch (const Error& e) {
     if (e.status() != Status::bad_input) throw;
     throw Error(e.status(), with_location(e.what(), a.svbrdf + ", " + a.ltx));
