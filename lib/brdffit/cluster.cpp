@@ -300,6 +300,8 @@ ClusterResult cluster_lumitexels(const LumitexelSet& set, const std::vector<FitS
   // and D sees a BRDF only at the sampled directions, where an unbounded lobe is as good
   // as a plausible one; bounded warm-started refits, in contrast, were seen to settle in
   // mixtures (the broad and the sharp material of the e2e test 90 % apart, not 98 %).
+  ClusterOptions bounded_options = options;
+  bounded_options.fit.model.max_lobe_albedo = albedo_bound_in_data_units(options.fit.model.max_lobe_albedo, local);
   ClusterOptions o = options;
   o.fit.model.max_lobe_albedo = 0;
   Clusterer cl{set, local, o, {}};
@@ -308,7 +310,7 @@ ClusterResult cluster_lumitexels(const LumitexelSet& set, const std::vector<FitS
   if (cl.active.empty()) throw bad_input("no lumitexel has a sample");
 
   ClusterResult res;
-  res.model = o.fit.model;
+  res.model = bounded_options.fit.model;
   res.assignment.assign(set.lumitexels.size(), 0);
   std::vector<MaterialCluster> cs(1);
   cl.set_fit(cs[0], cl.fit_new(cl.active, 0));
@@ -362,19 +364,19 @@ ClusterResult cluster_lumitexels(const LumitexelSet& set, const std::vector<FitS
   }
   // Final BRDFs of the clusters with the bound: what is rendered from them must be
   // physically plausible also where no sample looked (see lafortune_model.hpp).
-  if (options.fit.model.max_lobe_albedo > 0) {
+  if (bounded_options.fit.model.max_lobe_albedo > 0) {
     // Two rounds of: each lumitexel to its nearest cluster, then the bounded fits. The
     // search's last refits can leave a few lumitexels with a cluster that is no longer
     // their nearest, and a broad material's cluster that misses its most telling
     // lumitexels prefers a lobe about the normal; the second round repairs that.
-    const Clusterer bounded{set, local, options, cl.active};
+    const Clusterer bounded{set, local, bounded_options, cl.active};
     for (int round = 0; round < 2; ++round) {
       (round == 0 ? cl : bounded).reassign(cs, res.assignment, 0);  // D by the search's / the bounded BRDFs
       const std::vector<Members> lists = cl.member_lists(cs.size(), res.assignment);
       for (std::size_t j = 0; j < cs.size(); ++j)
         if (!lists[j].empty()) {
           Eigen::VectorXd start = cs[j].params;
-          clamp_to_bounds(options.fit.model, start);
+          clamp_to_bounds(bounded_options.fit.model, start);
           bounded.set_fit(cs[j], bounded.refit_or_restart(lists[j], start, static_cast<int>(j)));
         }
     }

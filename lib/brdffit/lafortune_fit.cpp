@@ -248,6 +248,17 @@ std::vector<std::size_t> subsample_indices(std::size_t n, std::size_t count, std
   return idx;
 }
 
+double albedo_bound_in_data_units(double max_lobe_albedo, const std::vector<FitSample>& samples) {
+  if (!(max_lobe_albedo > 0)) return max_lobe_albedo;
+  std::vector<double> apparent;
+  const std::size_t stride = std::max<std::size_t>(1, samples.size() / 100000);
+  for (std::size_t i = 0; i < samples.size(); i += stride) {
+    const FitSample& q = samples[i];
+    if (q.uz > 0.05f) apparent.push_back(M_PI * (q.r[0] + q.r[1] + q.r[2]) / (3 * q.uz));
+  }
+  return max_lobe_albedo * std::max(1.0, percentile(std::move(apparent), 0.5));
+}
+
 double mean_squared_residual(const ModelSpec& spec, const Eigen::VectorXd& p, const FitSample* b, const FitSample* e) {
   return mean_squared_residual(ModelEvaluator(spec, p), b, e);
 }

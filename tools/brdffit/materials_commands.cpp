@@ -208,7 +208,9 @@ int run_fit(const FitArgs& a) {
     }
     samples = samples_from_table(t, a.angles, source);
   }
-  const FitResult r = fit_brdf(samples, o);
+  FitOptions in_data_units = o;
+  in_data_units.model.max_lobe_albedo = albedo_bound_in_data_units(o.model.max_lobe_albedo, samples);
+  const FitResult r = fit_brdf(samples, in_data_units);
   nlohmann::json out = brdf_to_json(r.brdf);
   if (o.model.shared) out["shared_lobe"] = true;
   const double rms = std::sqrt(r.mean_squared);
