@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "brdffit/lafortune_fit.hpp"
 #include "brdffit/lafortune_model.hpp"
+#include "brdffit_test_data.hpp"
 #include "reflectance/lafortune.hpp"
 
 using namespace fest::brdffit;
@@ -93,4 +95,22 @@ TEST(BrdffitAlbedo, BoundScalesDownTheRunawayLobeAndKeepsPlausibleOnes) {
   r[2] = 1.31;
   clamp_to_bounds(unbounded, r);
   EXPECT_EQ(r[2], 1.31);
+}
+
+TEST(BrdffitAlbedo, BoundFollowsTheDataUnitsOnlyWhenUncalibrated) {
+  // Calibrated radiance of a plausible material: median apparent albedo below 1, the
+  // physical bound stays. The same radiance in camera units (x 1e6) scales the bound.
+  fest::reflectance::LafortuneBrdf b;
+  b.rho_d = fest::reflectance::Rgb::Constant(0.4);
+  b.lobes = {fest::reflectance::LafortuneLobe{fest::reflectance::Rgb::Constant(-1.0),
+                                              fest::reflectance::Rgb::Constant(1.0),
+                                              fest::reflectance::Rgb::Constant(20)}};
+  auto samples = brdffit_test::samples_of(b, 2000, 3);
+  EXPECT_EQ(albedo_bound_in_data_units(1.0, samples), 1.0);
+  EXPECT_EQ(albedo_bound_in_data_units(0.0, samples), 0.0);
+  for (FitSample& s : samples)
+    for (float& r : s.r) r *= 1e6f;
+  const double scaled = albedo_bound_in_data_units(1.0, samples);
+  EXPECT_GT(scaled, 0.4e6);  // at least the diffuse albedo's apparent value
+  EXPECT_LT(scaled, 1e8);
 }
