@@ -69,7 +69,9 @@ reflectance::LafortuneBrdf brdf_from_json(const json& j) {
   return b;
 }
 
-json model_to_json(const ModelSpec& s) { return {{"name", "lafortune"}, {"lobes", s.lobes}, {"shared_lobe", s.shared}}; }
+json model_to_json(const ModelSpec& s) {
+  return {{"name", "lafortune"}, {"lobes", s.lobes}, {"shared_lobe", s.shared}, {"max_lobe_albedo", s.max_lobe_albedo}};
+}
 
 ModelSpec model_from_json(const json& j) {
   ModelSpec s;
@@ -79,6 +81,11 @@ ModelSpec model_from_json(const json& j) {
   if (j.contains("shared_lobe")) {
     if (!j.at("shared_lobe").is_boolean()) throw bad_input("model.shared_lobe must be true or false");
     s.shared = j.at("shared_lobe").get<bool>();
+  }
+  if (j.contains("max_lobe_albedo")) {  // absent in files of earlier versions: the default
+    const json& a = j.at("max_lobe_albedo");
+    if (!a.is_number() || !(a.get<double>() >= 0)) throw bad_input("model.max_lobe_albedo must be a number >= 0");
+    s.max_lobe_albedo = a.get<double>();
   }
   return s;
 }

@@ -175,6 +175,57 @@ void seed_lobe(const ModelSpec& spec, Eigen::VectorXd& p, int k, double n, doubl
   }
 }
 
+// Replaces the diffuse albedo and the scale of lobe k (its shape and N kept) by their
+// least-squares values: with the shape fixed, rho_d / pi u_z and A max(0, base)^N u_z are
+// linear in (rho_d, A), so each start begins at the best amplitude for its N instead of
+// the percentile guess of §2.3 (which, for a broad dim lobe, can be off by a factor of
+// ten and send LM into a retro-reflective local minimum). Channels whose solution is not
+// positive keep the guess.
+void fit_lobe_amplitude(const ModelSpec& spec, Eigen::VectorXd& p, int k, const std::vector<FitSample>& s) {
+  const int m = 1 + 3 * spec.lobes;
+  Eigen::VectorXd rest = p;  // every other lobe, without the diffuse part and lobe k
+  for (int c = 0; c < 3; ++c) rest[spec.shared ? c : c * m] = 0;
+  double n = 0, sxy = 0, sz = 1;
+  if (spec.shared) {
+    const int o = 3 + 5 * k;
+    for (int c = 0; c < 3; ++c) rest[o + c] = 0;
+    sxy = p[o + 3];
+    n = std::exp(p[o + 4]);
+  } else {
+    for (int c = 0; c < 3; ++c) rest[c * m + 1 + 3 * k] = rest[c * m + 2 + 3 * k] = 0;
+    n = std::exp(p[3 + 3 * k]);
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (!spec.shared) {  // the unit shape of this channel's lobe
+      const double cxy = p[c * m + 1 + 3 * k], cz = p[c * m + 2 + 3 * k];
+      const double scale = std::max(std::abs(cxy), std::abs(cz));
+      if (!(scale > 0)) continue;
+      sxy = cxy / scale;
+      sz = cz / scale;
+    }
+    Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d b = Eigen::Vector2d::Zero();
+    for (const FitSample& q : s) {
+      const double base = sxy * q.xy + sz * q.z;
+      const Eigen::Vector2d g(q.uz / M_PI, base > 0 ? q.uz * std::pow(base, n) : 0.0);
+      const double y = q.r[c] - q.uz * channel_value(spec, rest, c, q.xy, q.z);
+      a += q.w * g * g.transpose();
+      b += q.w * y * g;
+    }
+    const Eigen::Vector2d x = a.ldlt().solve(b);
+    if (!x.allFinite() || !(x[0] >= 0) || !(x[1] > 0)) continue;
+    if (spec.shared) {
+      p[c] = x[0];
+      p[3 + 5 * k + c] = x[1];
+    } else {
+      p[c * m] = x[0];
+      const double scale = std::pow(x[1], 1 / n);
+      p[c * m + 1 + 3 * k] = sxy * scale;
+      p[c * m + 2 + 3 * k] = sz * scale;
+    }
+  }
+}
+
 const double kStartExponents[] = {5, 20, 80, 300};
 
 }  // namespace
@@ -195,6 +246,17 @@ std::vector<std::size_t> subsample_indices(std::size_t n, std::size_t count, std
   idx.resize(count);
   std::sort(idx.begin(), idx.end());
   return idx;
+}
+
+double albedo_bound_in_data_units(double max_lobe_albedo, const std::vector<FitSample>& samples) {
+  if (!(max_lobe_albedo > 0)) return max_lobe_albedo;
+  std::vector<double> apparent;
+  const std::size_t stride = std::max<std::size_t>(1, samples.size() / 100000);
+  for (std::size_t i = 0; i < samples.size(); i += stride) {
+    const FitSample& q = samples[i];
+    if (q.uz > 0.05f) apparent.push_back(M_PI * (q.r[0] + q.r[1] + q.r[2]) / (3 * q.uz));
+  }
+  return max_lobe_albedo * std::max(1.0, percentile(std::move(apparent), 0.5));
 }
 
 double mean_squared_residual(const ModelSpec& spec, const Eigen::VectorXd& p, const FitSample* b, const FitSample* e) {
@@ -279,6 +341,7 @@ FitResult fit_brdf(const std::vector<FitSample>& samples, const FitOptions& o) {
       for (const auto& [sxy, sz] : shapes) {
         Eigen::VectorXd p = current;
         seed_lobe(o.model, p, k, kStartExponents[st], sxy, sz, peak);
+        fit_lobe_amplitude(o.model, p, k, s);
         FitResult r = levenberg_marquardt(s, p, o);
         if (r.energy < stage.energy) stage = std::move(r);
       }

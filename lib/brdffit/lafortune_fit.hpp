@@ -53,6 +53,13 @@ double mean_squared_residual(const ModelSpec& spec, const Eigen::VectorXd& p, co
                              const FitSample* end);
 double mean_squared_residual(const ModelEvaluator& f, const FitSample* begin, const FitSample* end);
 
+// The albedo bound in the data's units: spec.max_lobe_albedo times the median apparent
+// albedo pi r / u_z of the samples when that exceeds 1. Radiance calibrated against a
+// white target (§2.1) has a median apparent albedo below 1 and keeps the physical bound;
+// uncalibrated radiance (light intensity in camera units, as hdrmerge's rigs have it)
+// scales the bound with the unknown intensity instead of crushing every lobe.
+double albedo_bound_in_data_units(double max_lobe_albedo, const std::vector<FitSample>& samples);
+
 // Deterministic subsample of at most `count` indices of [0, n) (sorted), from a seed.
 std::vector<std::size_t> subsample_indices(std::size_t n, std::size_t count, std::uint64_t seed);
 

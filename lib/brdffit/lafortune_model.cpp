@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "brdffit/lobe_albedo.hpp"
 #include "core/error.hpp"
 
 namespace fest::brdffit {
@@ -33,6 +34,18 @@ LobeTerm lobe_term(double base, double log_n) {
   return t;
 }
 
+// log of the factor (<= 1) by which the lobe's albedo must shrink to meet the bound: 0
+// when it does (in logs: a runaway lobe's factor, 1.3^-10000, underflows). A lobe's
+// albedo is at most max(|Cxy|, |Cz|)^N 2 pi / (N + 1) (its integral without the cosine),
+// which spares the quadrature for the lobes of ordinary fits.
+double log_albedo_excess(double cxy, double cz, double n, double bound) {
+  if (!(bound > 0)) return 0;
+  const double m = std::max(std::abs(cxy), std::abs(cz));
+  const double log_bound = std::log(bound);
+  if (!(m > 0) || n * std::log(m) + std::log(2 * M_PI / (n + 1)) <= log_bound) return 0;
+  return std::min(0.0, log_bound - lobe_log_max_albedo(cxy, cz, n));
+}
+
 }  // namespace
 
 int parameter_count(const ModelSpec& s) {
@@ -51,6 +64,18 @@ void clamp_to_bounds(const ModelSpec& s, Eigen::VectorXd& p) {
         q[1 + 3 * k] = clampd(q[1 + 3 * k], -kMaxCoefficient, kMaxCoefficient);
         q[2 + 3 * k] = clampd(q[2 + 3 * k], -kMaxCoefficient, kMaxCoefficient);
         q[3 + 3 * k] = clampd(q[3 + 3 * k], lo, hi);
+        // Physically plausible lobes only. Without this bound a lobe that is zero at every
+        // sample but huge where nothing was sampled (e.g. Cz = 1.3, N = 10^4: a spike of
+        // 1.3^10000 at light = view = normal) costs the fit nothing and wrecks every
+        // rendering from an unsampled direction. The lobe is homogeneous of degree N in
+        // (Cxy, Cz), so scaling both by excess^(1/N) brings its albedo onto the bound.
+        const double n = std::exp(q[3 + 3 * k]);
+        const double excess = log_albedo_excess(q[1 + 3 * k], q[2 + 3 * k], n, s.max_lobe_albedo);
+        if (excess < 0) {
+          const double scale = std::exp(excess / n);
+          q[1 + 3 * k] *= scale;
+          q[2 + 3 * k] *= scale;
+        }
       }
     }
     return;
@@ -61,6 +86,13 @@ void clamp_to_bounds(const ModelSpec& s, Eigen::VectorXd& p) {
     for (int c = 0; c < 3; ++c) q[c] = clampd(q[c], 0.0, kMaxCoefficient);
     q[3] = clampd(q[3], -kMaxCoefficient, kMaxCoefficient);
     q[4] = clampd(q[4], lo, hi);
+    // The lobe of channel c is rho_s,c max(0, Cxy xy + z)^N: its albedo is rho_s,c times
+    // that of the unit-scale lobe, so the bound caps rho_s,c.
+    const double largest = std::max({q[0], q[1], q[2]});
+    if (largest > 0 && s.max_lobe_albedo > 0) {
+      const double excess = log_albedo_excess(q[3], 1.0, std::exp(q[4]), s.max_lobe_albedo / largest);
+      for (int c = 0; c < 3; ++c) q[c] = std::min(q[c], largest * std::exp(excess));
+    }
   }
 }
 

@@ -20,6 +20,10 @@ namespace fest::brdffit {
 struct ModelSpec {
   int lobes = 1;        // K, 1..3
   bool shared = false;  // --shared-lobe
+  // Upper bound of every lobe's directional albedo (lobe_albedo.hpp), 0 = none. Energy
+  // conservation gives 1 for radiance calibrated against a white target (§2.1); without
+  // it the bound scales with the light's unknown intensity (--max-lobe-albedo).
+  double max_lobe_albedo = 1.0;
 };
 
 // Bounds of §2.2.
@@ -32,7 +36,8 @@ int parameter_count(const ModelSpec& spec);
 // At most this many parameters influence one channel (the gradient buffers' size).
 inline constexpr int kMaxChannelParams = 1 + 3 * 3;
 
-// Projects p onto the bounds (rho >= 0, |C| <= 1e3, 0.5 <= N <= 1e4).
+// Projects p onto the bounds (rho >= 0, |C| <= 1e3, 0.5 <= N <= 1e4) and scales down
+// every lobe whose directional albedo exceeds spec.max_lobe_albedo until it meets it.
 void clamp_to_bounds(const ModelSpec& spec, Eigen::VectorXd& p);
 
 // f_c and its gradient: writes the indices and derivatives of the parameters it depends

@@ -8,9 +8,12 @@ expectations come from synth's truth.json / mesh_true.ply, not from brdffit's ou
       fraction of lumitexels whose cluster (from the .ltw) agrees with the true material
       of their triangle, under the best one-to-one matching of clusters to materials,
       over the lumitexels with at least MIN_SAMPLES samples (and their count)
-  materials OBJECT.ltx SVBRDF.ltw TRIANGLES
+  materials OBJECT.ltx SVBRDF.ltw MESH.ply
       materials JSON (brdffit(1) MATERIALS) that render --svbrdf should derive: every
-      triangle the first basis BRDF (f_C) of its lumitexels' majority cluster
+      triangle the first basis BRDF (f_C) of its lumitexels' majority cluster; triangles
+      without lumitexels the majority of their vertex neighbours, wave after wave
+  rerender L2_FILE
+      median, maximum and count of the relative L2 errors in the file (one per line)
   halves OBJECT.ltx SVBRDF.ltw X0 MIN_SAMPLES
       as assignment, for capture's simulated sphere: material 1 where x < X0, else 0
       (lib/capture/sim_camera.cpp)
@@ -124,7 +127,9 @@ def assignment(ltx, ltw, truth_path, min_samples="0"):
     print("%.6f %d" % (best / used, used))
 
 
-def materials(ltx, ltw, triangles):
+def materials(ltx, ltw, mesh_path):
+    faces = [r[0] for r in read_ply(mesh_path)["face"][0]]
+    triangles = len(faces)
     lum = read_ltx(ltx)
     clusters, header = read_ltw_clusters(ltw, True)
     k = len(header["clusters"])
@@ -136,8 +141,35 @@ def materials(ltx, ltw, triangles):
             total[c] += 1
     fallback = total.index(max(total))
     tri_mat = [v.index(max(v)) if max(v) > 0 else fallback for v in votes]
+    known = [max(v) > 0 for v in votes]
+    around = {}
+    for t, f in enumerate(faces):
+        for v in f:
+            around.setdefault(v, []).append(t)
+    while True:
+        wave = []
+        for t, f in enumerate(faces):
+            if known[t]:
+                continue
+            count = [0] * k
+            for v in f:
+                for u in around[v]:
+                    if known[u]:
+                        count[tri_mat[u]] += 1
+            if max(count) > 0:
+                wave.append((t, count.index(max(count))))
+        if not wave:
+            break
+        for t, c in wave:
+            tri_mat[t], known[t] = c, True
     mats = [header["basis"][cl["basis"][0]]["brdf"] for cl in header["clusters"]]
     print(json.dumps({"materials": mats, "triangle_material": tri_mat}))
+
+
+def rerender(path):
+    v = sorted(float(x) for x in open(path).read().split())
+    med = v[(len(v) - 1) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2])
+    print("%.6f %.6f %d" % (med, v[-1], len(v)))
 
 
 def halves(ltx, ltw, x0, min_samples):
@@ -204,5 +236,5 @@ def normals(ltx, normals_ply, mesh_true):
 
 
 if __name__ == "__main__":
-    {"assignment": assignment, "materials": materials, "halves": halves, "translate": translate,
+    {"assignment": assignment, "materials": materials, "rerender": rerender, "halves": halves, "translate": translate,
      "normals": normals}[sys.argv[1]](*sys.argv[2:])

@@ -40,8 +40,7 @@ check "projected error below the per-cluster error" \
 # majority cluster (brdffit_e2e.py derives the same materials from the documented .ltx
 # and .ltw layouts, so the two renderings must agree exactly).
 case_ "render --svbrdf --ltx: the fitted per-cluster materials, re-rendering an input view"
-triangles=$(jq '.triangle_material | length' "$WORK/syn/truth.json")
-python3 "$check_py" materials "$WORK/syn.ltx" "$WORK/syn.ltw" "$triangles" > "$WORK/fitted_materials.json"
+python3 "$check_py" materials "$WORK/syn.ltx" "$WORK/syn.ltw" "$WORK/syn/mesh.ply" > "$WORK/fitted_materials.json"
 run brdffit render --mesh "$WORK/syn/mesh.ply" --svbrdf "$WORK/syn.ltw" --ltx "$WORK/syn.ltx" \
   --rig "$WORK/syn/rig.json" --image 13 --threads 2 -o "$WORK/fit13.exr" --png "$WORK/fit13.png"
 expect_status 0
@@ -51,14 +50,23 @@ expect_stdout_empty
 run brdffit eval --photo "$WORK/fit13_json.exr" --render "$WORK/fit13.exr"
 expect_status 0
 check "same image as the materials derived from the files' layouts" le "$(jq .relative_l2 "$out")" 0
-photo=$(jq -r '.images[13].file' "$WORK/syn/rig.json")
-mask=$(jq -r '.images[13].mask' "$WORK/syn/rig.json")
-run brdffit eval --photo "$WORK/syn/$photo" --render "$WORK/fit13.exr" --mask "$WORK/syn/$mask"
-expect_status 0
-# Spec §5.9 asks <= 6 % with noise; the per-cluster lobes fitted by cluster are not yet
-# close enough to the truth for that on every view (see the report of issue 12), so the
-# figure is printed, not asserted.
-echo "re-rendering of input view 13 from the fitted materials: relative L2 $(jq .relative_l2 "$out")"
+# Spec §5.9: re-rendering from the fitted materials within 6 % (relative L2 inside the
+# mask, 2 % noise; 3 % noise-free) -- here over every one of the 36 input views, not a
+# held-out one, so the worst view (grazing light L1, most of the surface at its rim)
+# counts as much as the median. With 1 % noise the truth itself re-renders at ~1 %.
+: > "$WORK/rerender.txt"
+views=$(jq '.images | length' "$WORK/syn/rig.json")
+for ((i = 0; i < views; i++)); do
+  "$bin" render --mesh "$WORK/syn/mesh.ply" --svbrdf "$WORK/syn.ltw" --ltx "$WORK/syn.ltx" --rig "$WORK/syn/rig.json" \
+    --image "$i" --threads 2 -o "$WORK/fit.exr"
+  "$bin" eval --photo "$WORK/syn/$(jq -r ".images[$i].file" "$WORK/syn/rig.json")" --render "$WORK/fit.exr" \
+    --mask "$WORK/syn/$(jq -r ".images[$i].mask" "$WORK/syn/rig.json")" | jq .relative_l2 >> "$WORK/rerender.txt"
+done
+read -r median worst rendered < <(python3 "$check_py" rerender "$WORK/rerender.txt")
+echo "re-rendering of the $rendered input views from the fitted materials: relative L2 median $median, max $worst"
+check "every input view re-rendered" test "$rendered" -eq "$views"
+check "median relative L2 within the spec's noise-free 3 %" le "$median" 0.03
+check "every view's relative L2 within the spec's 6 %" le "$worst" 0.06
 "$bin" synth --sphere 2 --materials 1 --views 1 --width 32 --height 24 -o "$WORK/other" 2>/dev/null
 run brdffit render --mesh "$WORK/other/mesh.ply" --svbrdf "$WORK/syn.ltw" --ltx "$WORK/syn.ltx" \
   --rig "$WORK/syn/rig.json" --image 0 -o "$WORK/never.exr"

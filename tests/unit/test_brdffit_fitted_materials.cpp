@@ -58,3 +58,17 @@ TEST(BrdffitFittedMaterials, InconsistentInputsAreBadInput) {
   EXPECT_THROW(materials_from_projection(p, on_triangles({0}, {3}), 2), fest::Error);        // counts differ
   EXPECT_THROW(materials_from_projection(p, on_triangles({0, 7}, {3, 3}), 2), fest::Error);  // triangle 7 of 2
 }
+
+TEST(BrdffitFittedMaterials, GapsTakeTheirNeighboursMajority) {
+  // A strip of four triangles; lumitexels only on the ends (triangle 0: cluster 1,
+  // triangle 3: cluster 0). Triangle 1 touches triangle 0 at two vertices and triangle 3
+  // at one -> 1; triangle 2 touches 0 at one vertex and 3 at two -> 0. A fifth triangle
+  // with no neighbour keeps the fallback (the largest cluster: 0, two votes against one).
+  const Projection p = two_clusters({1, 0, 0});
+  const LumitexelSet s = on_triangles({0, 3, 3}, {5, 5, 5});
+  const std::vector<std::array<std::uint32_t, 3>> faces = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}, {3, 4, 5}, {6, 7, 8}};
+  const fest::reflectance::SurfaceMaterials m = materials_from_projection(p, s, faces);
+  EXPECT_EQ(m.triangle_material, (std::vector<std::uint16_t>{1, 1, 0, 0, 0}));
+  // Without the mesh every gap takes the largest cluster.
+  EXPECT_EQ(materials_from_projection(p, s, 5).triangle_material, (std::vector<std::uint16_t>{1, 0, 0, 0, 0}));
+}

@@ -441,10 +441,11 @@ FittedInputs load_fitted(const LoadedMesh& lm, const std::string& mesh_path, con
   return f;
 }
 
-// Every triangle takes the BRDF of its lumitexels' majority cluster.
+// Every triangle takes the BRDF of its lumitexels' majority cluster; triangles without
+// lumitexels take their neighbours' (materials_from_projection).
 reflectance::SurfaceMaterials fitted_materials(const FittedInputs& f, const LoadedMesh& lm, const std::string& where) {
   try {
-    return brdffit::materials_from_projection(f.projection, f.set, lm.mesh.triangles.size());
+    return brdffit::materials_from_projection(f.projection, f.set, lm.mesh.triangles);
   } catch (const Error& e) {
     if (e.status() != Status::bad_input) throw;
     throw Error(e.status(), with_location(e.what(), where));

@@ -39,6 +39,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 struct FitFlags {
   int lobes = 1;
   bool shared = false;
+  double max_lobe_albedo = 1.0;
   int starts = 4;
   std::string robust = "none";
   std::size_t subsample = 200000;
@@ -82,6 +83,9 @@ NormalsArgs normals_args;
 void add_fit_flags(CLI::App* s, FitFlags& f) {
   s->add_option("--lobes", f.lobes, "Lafortune lobes K (1..3)")->default_val(1);
   s->add_flag("--shared-lobe", f.shared, "Share Cxy and N across channels (Cz = 1, per-channel scale)");
+  s->add_option("--max-lobe-albedo", f.max_lobe_albedo,
+                "Bound of every lobe's directional albedo (1 = energy conserving; 0 = none)")
+      ->default_val(1.0);
   s->add_option("--starts", f.starts, "Multi-start: N in {5, 20, 80, 300}, the first STARTS")->default_val(4);
   s->add_option("--robust", f.robust, "Loss: none or huber:DELTA")->default_val("none");
   s->add_option("--fit-subsample", f.subsample, "Fit on at most this many samples (0 = all)")->default_val(200000);
@@ -94,6 +98,8 @@ FitOptions fit_options(const FitFlags& f) {
   FitOptions o;
   o.model.lobes = f.lobes;
   o.model.shared = f.shared;
+  if (!(f.max_lobe_albedo >= 0)) throw usage_error("--max-lobe-albedo must be >= 0, not {}", f.max_lobe_albedo);
+  o.model.max_lobe_albedo = f.max_lobe_albedo;
   parameter_count(o.model);  // validates --lobes
   o.starts = f.starts;
   if (f.starts < 1 || f.starts > 4) throw usage_error("--starts must be 1..4, not {}", f.starts);
@@ -202,7 +208,9 @@ int run_fit(const FitArgs& a) {
     }
     samples = samples_from_table(t, a.angles, source);
   }
-  const FitResult r = fit_brdf(samples, o);
+  FitOptions in_data_units = o;
+  in_data_units.model.max_lobe_albedo = albedo_bound_in_data_units(o.model.max_lobe_albedo, samples);
+  const FitResult r = fit_brdf(samples, in_data_units);
   nlohmann::json out = brdf_to_json(r.brdf);
   if (o.model.shared) out["shared_lobe"] = true;
   const double rms = std::sqrt(r.mean_squared);
