@@ -150,11 +150,9 @@ class CollapseEngine {
     // First the new triangles' shapes and a cheap lower bound of the error: the removed
     // sample v lies in one of them, and the new surface must pass within the bound of it.
     // Most rejected candidates fail here, before any scan.
-    struct NewTriangle {
-      TriMesh::FaceHandle face;
-      GridPoint corner[3];
-    };
-    NewTriangle fan[kMaxFan];
+    // The fan lives in a member buffer: a local array of kMaxFan triangles would be
+    // value-initialised (GridPoint has member initialisers) on every call, 80 KB each time.
+    auto& fan = fan_;
     int n = 0;
     for (auto f : m_.vf_range(v)) {
       GridPoint corner[3];
@@ -173,6 +171,7 @@ class CollapseEngine {
           std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > stop)
         return kInfinite;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
+      if (static_cast<int>(fan.size()) <= n) fan.resize(static_cast<std::size_t>(n) + 1);
       fan[n].face = f;
       std::copy(corner, corner + 3, fan[n].corner);
       ++n;
@@ -252,6 +251,11 @@ class CollapseEngine {
     }
   }
 
+  struct NewTriangle {
+    TriMesh::FaceHandle face;
+    GridPoint corner[3];
+  };
+  std::vector<NewTriangle> fan_;  // scratch of collapse_cost
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
   const ReferenceSurface& ref_;
   double limit_;
