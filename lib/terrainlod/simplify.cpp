@@ -19,6 +19,8 @@ constexpr double kInfinite = std::numeric_limits<double>::infinity();
 constexpr double kMinTwiceArea = 1e-9;
 // Triangles with a bounding box of at most this many cells are measured, not cached.
 constexpr double kDirectBoxCells = 32;
+// Edges of at most this many cells (|dx| + |dy|) are measured, not cached.
+constexpr double kDirectEdgeCells = 4;
 // Largest valence of a vertex whose collapse is considered.
 constexpr int kMaxFan = 1024;
 
@@ -74,7 +76,7 @@ class CollapseEngine {
  public:
   CollapseEngine(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
                  double limit, const TileFrame* frame)
-      : ref_(ref), limit_(limit), frame_(frame), cache_(start.vertices.size()) {
+      : ref_(ref), limit_(limit), frame_(frame), cache_(start.vertices.size()), edge_cache_(start.vertices.size()) {
     build(start, locked);
   }
 
@@ -186,29 +188,74 @@ class CollapseEngine {
   }
 
   // Error of the triangle `corner` (face f with v replaced by w). A triangle's error
-  // depends only on its three vertices, which never move, so it is computed once: the
-  // same candidate triangles come back every time a neighbourhood is re-examined.
+  // depends only on its three vertices, which never move, so the same candidate triangles
+  // and edges that come back every time a neighbourhood is re-examined need not be measured
+  // again: the error is the larger of the samples inside (remembered per triangle) and the
+  // crossings along the three edges (remembered per edge: an edge is shared by two
+  // triangles of a fan, and the link edges of v by every candidate of v).
   double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
                       const GridPoint (&corner)[3], double stop) {
-    // Small triangles are cheaper to measure again than to look up in a large table
-    // (a cache miss); only those whose bounding box spans many cells are remembered.
-    const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
-                       (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
-    if (!cache_.enabled() || box <= kDirectBoxCells)
-      return clamp_error(measure(corner[0], corner[1], corner[2], stop));
     std::uint64_t id[3];
     int k = 0;
     for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
+    // Triangles with a transition variant are measured whole (transition_error).
+    const bool whole = frame_ && on_refinable_border(corner);
+    double e = triangle_part(id, corner, stop, whole);
+    if (whole || e > stop) return e;
+    for (int a = 0; a < 3; ++a) {
+      e = std::max(e, cached_edge_error(id[a], id[(a + 1) % 3], corner[a], corner[(a + 1) % 3]));
+      if (e > stop) return kInfinite;
+    }
+    return e;
+  }
+
+  bool on_refinable_border(const GridPoint (&c)[3]) const {
+    const TileFrame& fr = *frame_;
+    if (fr.fine_step <= 0) return false;
+    for (int a = 0; a < 3; ++a) {
+      const GridPoint &p = c[a], &q = c[(a + 1) % 3];
+      if ((p.x == fr.x0 && q.x == fr.x0 && (fr.refinable & (1u << kWest))) ||
+          (p.y == fr.y0 && q.y == fr.y0 && (fr.refinable & (1u << kSouth))) ||
+          (p.x == fr.x1 && q.x == fr.x1 && (fr.refinable & (1u << kEast))) ||
+          (p.y == fr.y1 && q.y == fr.y1 && (fr.refinable & (1u << kNorth))))
+        return true;
+    }
+    return false;
+  }
+
+  // The samples part of a triangle's error (or, `whole`, all of it with its transition
+  // variants), remembered for triangles whose box spans many cells: small ones are cheaper
+  // to measure again than to look up in a large table (a cache miss).
+  double triangle_part(const std::uint64_t (&vid)[3], const GridPoint (&corner)[3], double stop, bool whole) {
+    auto measure_part = [&](double s) {
+      return whole ? measure(corner[0], corner[1], corner[2], s)
+                   : triangle_samples_error(ref_, corner[0], corner[1], corner[2], s);
+    };
+    const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
+                       (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
+    if (!cache_.enabled() || box <= kDirectBoxCells) return clamp_error(measure_part(stop));
+    std::uint64_t id[3] = {vid[0], vid[1], vid[2]};
     if (id[0] > id[1]) std::swap(id[0], id[1]);
     if (id[1] > id[2]) std::swap(id[1], id[2]);
     if (id[0] > id[1]) std::swap(id[0], id[1]);
     const std::uint64_t key = (id[0] << 42) | (id[1] << 21) | id[2];
     double* slot = cache_.find_or_insert(key);
     if (!std::isnan(*slot)) return *slot;
-    const double e = measure(corner[0], corner[1], corner[2], stop);
+    const double e = measure_part(stop);
     // Stopped early below the bound: e is only a lower bound, not worth remembering.
     if (e > stop && stop < limit_) return kInfinite;
     *slot = clamp_error(e);
+    return *slot;
+  }
+
+  // Crossings of edge (p, q) with the reference, measured to the end once (an edge's
+  // error is needed exactly by every triangle that has it).
+  double cached_edge_error(std::uint64_t a, std::uint64_t b, const GridPoint& p, const GridPoint& q) {
+    if (std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled())
+      return edge_error(ref_, p, q, kInfinite);
+    if (a > b) std::swap(a, b);
+    double* slot = edge_cache_.find_or_insert((a << 32) | b);
+    if (std::isnan(*slot)) *slot = edge_error(ref_, p, q, kInfinite);
     return *slot;
   }
 
@@ -266,7 +313,8 @@ class CollapseEngine {
   std::vector<std::uint8_t> dirty_;  // star changed since the last measurement
   std::vector<std::uint8_t> live_;   // has a queue entry of the current version
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
-  TriangleErrorCache cache_;
+  TriangleErrorCache cache_;       // per triangle (three vertex ids)
+  TriangleErrorCache edge_cache_;  // per edge (two vertex ids)
   std::vector<TriMesh::VertexHandle> ring_;
 };
 
