@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "terrainlod/simplify.hpp"
+#include "terrainlod/tile_codec.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -179,8 +180,8 @@ TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const T
   return r;
 }
 
-Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
-                      const std::function<void(std::size_t, std::size_t)>& progress) {
+Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                                const TileSink& sink, const std::function<void(std::size_t, std::size_t)>& progress) {
   const PyramidPlan plan = plan_pyramid(grid.width, grid.height, dx, dy, params.pyramid);
   if (!(params.z_quantum > 0) || !std::isfinite(params.z_quantum))
     throw usage_error("--z-quantum must be a positive number (got {})", params.z_quantum);
@@ -228,48 +229,63 @@ Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildP
     pyr.level[static_cast<std::size_t>(l)].lattice_bits =
         std::max(pyr.level[static_cast<std::size_t>(l)].lattice_bits, pyr.level[static_cast<std::size_t>(l) - 1].lattice_bits - 1);
 
-  struct Job {
-    int level, x, y;
-  };
-  std::vector<Job> jobs;
-  for (const auto& lv : pyr.level)
-    for (int ty = 0; ty < lv.tiles_y; ++ty)
-      for (int tx = 0; tx < lv.tiles_x; ++tx) jobs.push_back({lv.level, tx, ty});
-  pyr.tiles.resize(jobs.size());
-  std::atomic<std::size_t> next{0}, done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto run_job = [&](std::size_t j) {
-    try {
-      const Job& job = jobs[j];
-      Tile t = build_tile(ref, padded, pyr.level[static_cast<std::size_t>(job.level)], pyr.level, job.x, job.y,
-                          pyr.delta_min, tolerance);
-      // The tile's own figures: the largest error over its triangulations (with quantized
-      // heights) and its height range, for stats and culling.
-      const TileErrorRange e = tile_error(ref, t, pyr.geometry(job.level));
-      t.err = static_cast<float>(e.err);
-      t.z_min = static_cast<float>(e.z_min);
-      t.z_max = static_cast<float>(e.z_max);
-      pyr.tiles[j] = std::move(t);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
+  // Level by level from the leaves up; within a level, chunks of whole rows are built in
+  // parallel and handed to the sink in transmission order, so only one chunk of tiles is
+  // held at a time and the order (hence the archive's bytes) does not depend on threads.
+  std::size_t total = 0, done = 0;
+  for (const auto& lv : pyr.level) total += static_cast<std::size_t>(lv.tiles_x) * lv.tiles_y;
+  const int threads = std::max(1, params.threads);
+  for (int l = plan.levels; l >= 0; --l) {
+    const LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
+    const int rows_per_chunk = std::max(1, (4 * threads + lv.tiles_x - 1) / lv.tiles_x);
+    for (int row0 = 0; row0 < lv.tiles_y; row0 += rows_per_chunk) {
+      const int row1 = std::min(lv.tiles_y, row0 + rows_per_chunk);
+      const std::size_t count = static_cast<std::size_t>(row1 - row0) * lv.tiles_x;
+      std::vector<Tile> chunk(count);
+      std::vector<std::string> bytes(count);
+      std::atomic<std::size_t> next{0};
+      std::exception_ptr failure;
+      std::mutex failure_mutex;
+      auto worker = [&] {
+        for (std::size_t j; (j = next.fetch_add(1)) < count;) {
+          try {
+            const int tx = static_cast<int>(j % static_cast<std::size_t>(lv.tiles_x));
+            const int ty = row0 + static_cast<int>(j / static_cast<std::size_t>(lv.tiles_x));
+            Tile t = build_tile(ref, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance);
+            // The tile's own figures: the largest error over its triangulations (with
+            // quantized heights) against the DEM, and its height range, for stats and culling.
+            const TileErrorRange e = tile_error(ref, t, pyr.geometry(l));
+            t.err = static_cast<float>(e.err);
+            t.z_min = static_cast<float>(e.z_min);
+            t.z_max = static_cast<float>(e.z_max);
+            bytes[j] = encode_tile(t);  // here, in parallel: coding costs about a tenth of building
+            chunk[j] = std::move(t);
+          } catch (...) {
+            std::lock_guard<std::mutex> lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+          }
+        }
+      };
+      std::vector<std::thread> pool;
+      for (int t = 1; t < std::min<int>(threads, static_cast<int>(count)); ++t) pool.emplace_back(worker);
+      worker();
+      for (auto& t : pool) t.join();
+      if (failure) std::rethrow_exception(failure);
+      for (std::size_t j = 0; j < count; ++j) sink(std::move(chunk[j]), std::move(bytes[j]));
+      done += count;
+      if (progress) progress(done, total);
     }
-    ++done;
-  };
-  auto worker = [&] {
-    for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) run_job(j);
-  };
-  const int threads = std::max(1, std::min<int>(params.threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  // The calling thread works too, reporting progress between its tiles.
-  for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) {
-    run_job(j);
-    if (progress) progress(done.load(), jobs.size());
   }
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  return pyr;
+}
+
+Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                      const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<Tile> tiles;
+  Pyramid pyr = build_pyramid_streaming(grid, dx, dy, params, [&](Tile&& t, std::string&&) { tiles.push_back(std::move(t)); }, progress);
+  // Leaves first from the builder; transmission order is the root first.
+  std::stable_sort(tiles.begin(), tiles.end(), [](const Tile& a, const Tile& b) { return a.id.level < b.id.level; });
+  pyr.tiles = std::move(tiles);
   return pyr;
 }
 

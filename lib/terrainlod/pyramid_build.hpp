@@ -8,6 +8,7 @@
 // does not depend on the thread count.
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "terrainlod/height_grid.hpp"
@@ -50,8 +51,19 @@ struct Pyramid {
 // Edge replication to padded x padded samples.
 HeightGrid pad_grid(const HeightGrid& grid, int padded);
 
+// Receives the finished tiles with their coding (tile_codec.hpp), level by level from the
+// leaves (L) up to the root, each level in transmission order (rows from the south, then
+// columns), on the calling thread.
+using TileSink = std::function<void(Tile&&, std::string&&)>;
+
 // `grid` must be conditioned (no NaN); dx, dy only shape eps (spec 2.1). `progress` is
-// called with (tiles done, tiles total) from the calling thread.
+// called with (tiles done, tiles total) from the calling thread. The returned pyramid
+// has its levels but no tiles: they went to `sink` as they were finished.
+Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                                const TileSink& sink,
+                                const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+// The same with every tile kept, in transmission order (small DEMs, tests).
 Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
                       const std::function<void(std::size_t, std::size_t)>& progress = {});
 

@@ -185,9 +185,37 @@ int run_build(const BuildArgs& args) {
 
   const auto t1 = Clock::now();
   Progress bar("build", 0, progress_wanted(args.progress));
-  const terrainlod::Pyramid pyr = terrainlod::build_pyramid(dem.grid, dem.dx, dem.dy, params, [&](std::size_t done, std::size_t) {
-    bar.set(done);
-  });
+  // Finished tiles go to one temporary spill file per level as they come (leaves first);
+  // the archive is then the head and the levels' blobs in transmission order (root first),
+  // so memory holds one chunk of tiles, never the pyramid.
+  struct Spill {
+    std::FILE* file = nullptr;
+    std::vector<TileEntry> entries;
+  };
+  std::vector<Spill> spill;
+  auto close_spills = [&] {
+    for (auto& s : spill)
+      if (s.file) std::fclose(s.file);
+  };
+  std::size_t tile_count = 0;
+  terrainlod::Pyramid pyr;
+  try {
+    pyr = terrainlod::build_pyramid_streaming(
+        dem.grid, dem.dx, dem.dy, params,
+        [&](terrainlod::Tile&& t, std::string&& blob) {
+          const auto l = static_cast<std::size_t>(t.id.level);
+          if (spill.size() <= l) spill.resize(l + 1);
+          if (!spill[l].file && !(spill[l].file = std::tmpfile())) throw io_error("cannot create a temporary spill file");
+          if (std::fwrite(blob.data(), 1, blob.size(), spill[l].file) != blob.size())
+            throw io_error("cannot write the temporary spill file");
+          spill[l].entries.push_back({t.id, 0, static_cast<std::uint32_t>(blob.size())});
+          ++tile_count;
+        },
+        [&](std::size_t done, std::size_t) { bar.set(done); });
+  } catch (...) {
+    close_spills();
+    throw;
+  }
   bar.finish();
   const double build_ms = ms_since(t1);
 
@@ -218,14 +246,38 @@ int run_build(const BuildArgs& args) {
                              {"level", levels},
                              {"tool", "terrainlod 1"}};
   const auto t2 = Clock::now();
-  const std::string bytes = write_archive(manifest, pyr);
+  std::uint64_t file_bytes = 0;
+  try {
+    std::vector<TileEntry> entries;
+    for (const auto& s : spill) entries.insert(entries.end(), s.entries.begin(), s.entries.end());
+    const std::string head = archive_head(manifest, entries);
+    AtomicFile out(args.output);
+    std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
+    if (!f) throw io_error("cannot write {}", args.output);
+    bool ok = std::fwrite(head.data(), 1, head.size(), f) == head.size();
+    file_bytes = head.size();
+    std::vector<char> buffer(std::size_t{1} << 20);
+    for (auto& s : spill) {
+      std::rewind(s.file);
+      for (std::size_t n; ok && (n = std::fread(buffer.data(), 1, buffer.size(), s.file)) > 0;) {
+        ok = std::fwrite(buffer.data(), 1, n, f) == n;
+        file_bytes += n;
+      }
+      ok = ok && !std::ferror(s.file);
+    }
+    ok = (std::fclose(f) == 0) && ok;
+    if (!ok) throw io_error("cannot write {}", args.output);
+    out.commit();
+  } catch (...) {
+    close_spills();
+    throw;
+  }
+  close_spills();
   const double encode_ms = ms_since(t2);
-  write_output(args.output, bytes);
   if (!args.report.empty()) {
-    PyramidFile file(bytes, args.output);
-    nlohmann::json r = {{"tiles", pyr.tiles.size()},
-                        {"bytes", bytes.size()},
-                        {"time_ms", {{"read", read_ms}, {"build", build_ms}, {"encode", encode_ms}}},
+    nlohmann::json r = {{"tiles", tile_count},
+                        {"bytes", file_bytes},
+                        {"time_ms", {{"read", read_ms}, {"build", build_ms}, {"write", encode_ms}}},
                         {"threads", params.threads},
                         {"peak_rss_kb", peak_rss_kb()}};
     write_output(args.report, r.dump(2) + "\n");

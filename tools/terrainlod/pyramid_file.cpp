@@ -24,32 +24,38 @@ T get_le(std::string_view s, std::size_t at) {
 
 bool looks_like_archive(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == std::string_view(kMagic, 4); }
 
-std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
-                          std::vector<terrainlod::TileSizes>* sizes) {
-  std::vector<std::string> blobs;
-  for (const auto& t : pyramid.tiles) {
-    terrainlod::TileSizes s;
-    blobs.push_back(terrainlod::encode_tile(t, &s));
-    if (sizes) sizes->push_back(s);
-  }
+std::string archive_head(const nlohmann::json& manifest, const std::vector<TileEntry>& tiles) {
   const std::string m = manifest.dump();
   std::string out(kMagic, 4);
   put_le<std::uint8_t>(out, kVersion);
   put_le<std::uint32_t>(out, static_cast<std::uint32_t>(m.size()));
   out += m;
-  put_le<std::uint32_t>(out, static_cast<std::uint32_t>(blobs.size()));
-  std::uint64_t offset = out.size() + kEntryBytes * blobs.size();
-  for (std::size_t i = 0; i < blobs.size(); ++i) {
-    const auto& id = pyramid.tiles[i].id;
-    put_le<std::uint8_t>(out, static_cast<std::uint8_t>(id.level));
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(id.x));
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(id.y));
+  put_le<std::uint32_t>(out, static_cast<std::uint32_t>(tiles.size()));
+  std::uint64_t offset = out.size() + kEntryBytes * tiles.size();
+  for (const auto& t : tiles) {
+    put_le<std::uint8_t>(out, static_cast<std::uint8_t>(t.id.level));
+    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(t.id.x));
+    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(t.id.y));
     put_le<std::uint64_t>(out, offset);
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(blobs[i].size()));
+    put_le<std::uint32_t>(out, t.length);
     put_le<std::uint64_t>(out, 0);  // texture offset: no textures in this version
     put_le<std::uint32_t>(out, 0);
-    offset += blobs[i].size();
+    offset += t.length;
   }
+  return out;
+}
+
+std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
+                          std::vector<terrainlod::TileSizes>* sizes) {
+  std::vector<std::string> blobs;
+  std::vector<TileEntry> entries;
+  for (const auto& t : pyramid.tiles) {
+    terrainlod::TileSizes s;
+    blobs.push_back(terrainlod::encode_tile(t, &s));
+    entries.push_back({t.id, 0, static_cast<std::uint32_t>(blobs.back().size())});
+    if (sizes) sizes->push_back(s);
+  }
+  std::string out = archive_head(manifest, entries);
   for (const auto& b : blobs) out += b;
   return out;
 }

@@ -21,6 +21,10 @@ struct TileEntry {
   std::uint32_t length = 0;
 };
 
+// The archive up to the tile blobs (magic, version, manifest, index) for tiles of the
+// given ids and lengths in that order; the blobs follow it in the same order.
+std::string archive_head(const nlohmann::json& manifest, const std::vector<TileEntry>& tiles);
+
 // Serialises the archive; `sizes` receives each tile's section sizes (same order).
 std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
                           std::vector<terrainlod::TileSizes>* sizes = nullptr);
