@@ -5,12 +5,14 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <thread>
 
 #include "core/error.hpp"
 #include "terrainlod/simplify.hpp"
 #include "terrainlod/tile_codec.hpp"
+#include "terrainlod/tin_reference.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -89,12 +91,13 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   return true;
 }
 
-Tile build_tile(const ReferenceSurface& ref, const HeightGrid& padded, const LevelInfo& lv,
+Tile build_tile(const ReferenceSurface& ref, const TinReference* coarse, const HeightGrid& padded, const LevelInfo& lv,
                 const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance) {
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
   const TileFrame frame = frame_of(lv, levels, tx, ty);
   const StartMesh start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
-  const SimplifyResult r = simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
+  const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start.tin, start.locked, lv.limit + tolerance, &frame)
+                                  : simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
 
   Tile tile;
   tile.id = {lv.level, tx, ty};
@@ -124,6 +127,36 @@ Tile build_tile(const ReferenceSurface& ref, const HeightGrid& padded, const Lev
     }
   }
   return tile;
+}
+
+// The level a level-l tile is measured against, or -1 for the DEM's grid.
+int reference_level(const BuildParams& params, int l, int L) {
+  if (l == L || params.reference == Reference::original) return -1;
+  const int r = params.reference == Reference::level_plus_1 ? l + 1 : std::min(l + 2, L);
+  // Level L with no leaf tolerance is the DEM's surface: measure on the grid.
+  return r == L && params.leaf_error == 0 ? -1 : r;
+}
+
+// The finished base triangulations of level r under the square of tile (l, tx, ty) as
+// one reference mesh; nullopt where one of them does not exist (tiles beyond the DEM's
+// extent, in the padding: those tiles are measured against the DEM instead).
+std::optional<TinReference> coarse_reference(const std::vector<TileTriangulation>& base, const LevelInfo& lr,
+                                             const LevelInfo& lv, int tx, int ty) {
+  const int f = lv.cells / lr.cells;
+  std::vector<GridPoint> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  for (int iy = ty * f; iy < (ty + 1) * f; ++iy)
+    for (int ix = tx * f; ix < (tx + 1) * f; ++ix) {
+      if (ix >= lr.tiles_x || iy >= lr.tiles_y) return std::nullopt;
+      const TileTriangulation& t = base[static_cast<std::size_t>(iy) * lr.tiles_x + ix];
+      if (t.triangles.empty()) return std::nullopt;
+      const int offset = static_cast<int>(vertices.size());
+      for (const auto& v : t.vertices) vertices.push_back({double(v.gx), double(v.gy), v.z});
+      for (const auto& tri : t.triangles) triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+    }
+  const int x0 = tx * lv.cells, y0 = ty * lv.cells;
+  return TinReference(std::move(vertices), std::move(triangles), x0, y0, x0 + lv.cells, y0 + lv.cells,
+                      std::max(1, lv.cells / 32));
 }
 
 }  // namespace
@@ -235,8 +268,19 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
   std::size_t total = 0, done = 0;
   for (const auto& lv : pyr.level) total += static_cast<std::size_t>(lv.tiles_x) * lv.tiles_y;
   const int threads = std::max(1, params.threads);
-  for (int l = plan.levels; l >= 0; --l) {
+  const int L = plan.levels;
+  // Base triangulations of the levels that still serve as a reference, by tile.
+  std::vector<std::vector<TileTriangulation>> base(static_cast<std::size_t>(L) + 1);
+  std::vector<int> last_user(static_cast<std::size_t>(L) + 1, -1);  // lowest level measured against it
+  for (int l = L; l >= 0; --l) {
+    const int r = reference_level(params, l, L);
+    if (r >= 0) last_user[static_cast<std::size_t>(r)] = l;
+  }
+  for (int l = L; l >= 0; --l) {
     const LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
+    const int r = reference_level(params, l, L);
+    if (last_user[static_cast<std::size_t>(l)] >= 0)
+      base[static_cast<std::size_t>(l)].resize(static_cast<std::size_t>(lv.tiles_x) * lv.tiles_y);
     const int rows_per_chunk = std::max(1, (4 * threads + lv.tiles_x - 1) / lv.tiles_x);
     for (int row0 = 0; row0 < lv.tiles_y; row0 += rows_per_chunk) {
       const int row1 = std::min(lv.tiles_y, row0 + rows_per_chunk);
@@ -251,7 +295,12 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
           try {
             const int tx = static_cast<int>(j % static_cast<std::size_t>(lv.tiles_x));
             const int ty = row0 + static_cast<int>(j / static_cast<std::size_t>(lv.tiles_x));
-            Tile t = build_tile(ref, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance);
+            std::optional<TinReference> coarse;
+            if (r >= 0)
+              coarse = coarse_reference(base[static_cast<std::size_t>(r)], pyr.level[static_cast<std::size_t>(r)], lv, tx, ty);
+            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance);
+            if (!base[static_cast<std::size_t>(l)].empty())
+              base[static_cast<std::size_t>(l)][static_cast<std::size_t>(ty) * lv.tiles_x + tx] = triangulate(t, 0, pyr.geometry(l));
             // The tile's own figures: the largest error over its triangulations (with
             // quantized heights) against the DEM, and its height range, for stats and culling.
             const TileErrorRange e = tile_error(ref, t, pyr.geometry(l));
@@ -275,6 +324,9 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
       done += count;
       if (progress) progress(done, total);
     }
+    // References no level below this one needs any more.
+    for (int k = l; k <= L; ++k)
+      if (last_user[static_cast<std::size_t>(k)] == l) std::vector<TileTriangulation>().swap(base[static_cast<std::size_t>(k)]);
   }
   return pyr;
 }

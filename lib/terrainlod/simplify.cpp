@@ -72,12 +72,68 @@ class TriangleErrorCache {
   std::size_t used_ = 0;
 };
 
+// The two references the engine measures against, with one interface: the DEM's grid
+// (triangle_error.hpp) and a coarser finished mesh (tin_reference.hpp).
+struct GridMeasure {
+  const ReferenceSurface& ref;
+  double triangle(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return triangle_error(ref, a, b, c, s);
+  }
+  double samples(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return triangle_samples_error(ref, a, b, c, s);
+  }
+  double edge(const GridPoint& p, const GridPoint& q, double s) const { return edge_error(ref, p, q, s); }
+  double height(const GridPoint& p) const { return p.z; }  // vertices are DEM samples
+};
+
+struct TinMeasure {
+  const TinReference& ref;
+  double triangle(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return ref.triangle_error(a, b, c, s);
+  }
+  double samples(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return ref.samples_error(a, b, c, s);
+  }
+  double edge(const GridPoint& p, const GridPoint& q, double s) const { return ref.edge_error(p, q, s); }
+  double height(const GridPoint& p) const { return ref.height_at(p.x, p.y); }
+};
+
+// transition_error with any reference; the inserted border points are DEM samples (the
+// finer neighbours' border vertices).
+template <typename Measure>
+double transition_error_with(const Measure& measure, const ReferenceSurface& dem, const TileFrame& frame,
+                             const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop_above) {
+  std::vector<GridPoint> extra;
+  const auto inserts = border_inserts(dem, frame, a, b, c, extra);
+  unsigned sides = 0;
+  for (const auto& e : inserts)
+    if (!e.points.empty()) sides |= 1u << e.side;
+  double worst = measure.triangle(a, b, c, stop_above);
+  if (sides == 0 || worst > stop_above) return worst;
+  auto point = [&](int id) -> const GridPoint& { return id == 0 ? a : id == 1 ? b : id == 2 ? c : extra[id - 3]; };
+  std::vector<std::array<int, 3>> pieces;
+  for (unsigned m = 1; m < 16; ++m) {
+    if ((m & sides) != m) continue;  // every non-empty subset of the triangle's refinable sides
+    pieces.clear();
+    refine_triangle({0, 1, 2}, inserts, m, pieces);
+    for (const auto& t : pieces) {
+      worst = std::max(worst, measure.triangle(point(t[0]), point(t[1]), point(t[2]), stop_above));
+      if (worst > stop_above) return worst;
+    }
+  }
+  return worst;
+}
+
+template <typename Measure>
 class CollapseEngine {
  public:
-  CollapseEngine(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
+  CollapseEngine(Measure measure, const ReferenceSurface& dem, const Tin& start, const std::vector<std::uint8_t>& locked,
                  double limit, const TileFrame* frame)
-      : ref_(ref), limit_(limit), frame_(frame), cache_(start.vertices.size()), edge_cache_(start.vertices.size()) {
+      : measure_(measure), dem_(dem), limit_(limit), frame_(frame), cache_(start.vertices.size()),
+        edge_cache_(start.vertices.size()) {
     build(start, locked);
+    zref_.reserve(start.vertices.size());
+    for (const auto& p : start.vertices) zref_.push_back(measure_.height(p));
   }
 
   SimplifyResult run() {
@@ -137,7 +193,7 @@ class CollapseEngine {
   }
 
   double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
-    return frame_ ? transition_error(ref_, *frame_, a, b, c, stop) : triangle_error(ref_, a, b, c, stop);
+    return frame_ ? transition_error_with(measure_, dem_, *frame_, a, b, c, stop) : measure_.triangle(a, b, c, stop);
   }
 
   // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
@@ -170,7 +226,7 @@ class CollapseEngine {
       const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
                    wc = twice_area(corner[0], corner[1], pv);
       if (wa >= 0 && wb >= 0 && wc >= 0 &&
-          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > stop)
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zref_[static_cast<std::size_t>(v.idx())]) > stop)
         return kInfinite;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
       if (static_cast<int>(fan.size()) <= n) fan.resize(static_cast<std::size_t>(n) + 1);
@@ -229,7 +285,7 @@ class CollapseEngine {
   double triangle_part(const std::uint64_t (&vid)[3], const GridPoint (&corner)[3], double stop, bool whole) {
     auto measure_part = [&](double s) {
       return whole ? measure(corner[0], corner[1], corner[2], s)
-                   : triangle_samples_error(ref_, corner[0], corner[1], corner[2], s);
+                   : measure_.samples(corner[0], corner[1], corner[2], s);
     };
     const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
                        (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
@@ -252,10 +308,10 @@ class CollapseEngine {
   // error is needed exactly by every triangle that has it).
   double cached_edge_error(std::uint64_t a, std::uint64_t b, const GridPoint& p, const GridPoint& q) {
     if (std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled())
-      return edge_error(ref_, p, q, kInfinite);
+      return measure_.edge(p, q, kInfinite);
     if (a > b) std::swap(a, b);
     double* slot = edge_cache_.find_or_insert((a << 32) | b);
-    if (std::isnan(*slot)) *slot = edge_error(ref_, p, q, kInfinite);
+    if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
     return *slot;
   }
 
@@ -304,7 +360,9 @@ class CollapseEngine {
   };
   std::vector<NewTriangle> fan_;  // scratch of collapse_cost
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
-  const ReferenceSurface& ref_;
+  Measure measure_;
+  const ReferenceSurface& dem_;
+  std::vector<double> zref_;  // the reference's height at every vertex (lower bounds)
   double limit_;
   const TileFrame* frame_;
   TriMesh m_;
@@ -352,7 +410,7 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
   std::vector<std::uint8_t> locked(start.vertices.size(), 0);
   const int w = grid.width;
   for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked[static_cast<std::size_t>(c)] = 1;
-  CollapseEngine engine(ref, start, locked, options.max_error + tolerance, nullptr);
+  CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, options.max_error + tolerance, nullptr);
   SimplifyResult result = engine.run();
   result.tolerance = tolerance;
   return result;
@@ -360,7 +418,13 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
 
 SimplifyResult simplify_tin(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
                             double limit, const TileFrame* frame) {
-  CollapseEngine engine(ref, start, locked, limit, frame);
+  CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, limit, frame);
+  return engine.run();
+}
+
+SimplifyResult simplify_tin(const TinReference& ref, const ReferenceSurface& dem, const Tin& start,
+                            const std::vector<std::uint8_t>& locked, double limit, const TileFrame* frame) {
+  CollapseEngine<TinMeasure> engine(TinMeasure{ref}, dem, start, locked, limit, frame);
   return engine.run();
 }
 
@@ -393,25 +457,7 @@ std::array<EdgeInsert, 3> border_inserts(const ReferenceSurface& ref, const Tile
 
 double transition_error(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
                         const GridPoint& b, const GridPoint& c, double stop_above) {
-  std::vector<GridPoint> extra;
-  const auto inserts = border_inserts(ref, frame, a, b, c, extra);
-  unsigned sides = 0;
-  for (const auto& e : inserts)
-    if (!e.points.empty()) sides |= 1u << e.side;
-  double worst = triangle_error(ref, a, b, c, stop_above);
-  if (sides == 0 || worst > stop_above) return worst;
-  auto point = [&](int id) -> const GridPoint& { return id == 0 ? a : id == 1 ? b : id == 2 ? c : extra[id - 3]; };
-  std::vector<std::array<int, 3>> pieces;
-  for (unsigned m = 1; m < 16; ++m) {
-    if ((m & sides) != m) continue;  // every non-empty subset of the triangle's refinable sides
-    pieces.clear();
-    refine_triangle({0, 1, 2}, inserts, m, pieces);
-    for (const auto& t : pieces) {
-      worst = std::max(worst, triangle_error(ref, point(t[0]), point(t[1]), point(t[2]), stop_above));
-      if (worst > stop_above) return worst;
-    }
-  }
-  return worst;
+  return transition_error_with(GridMeasure{ref}, ref, frame, a, b, c, stop_above);
 }
 
 double tin_error(const ReferenceSurface& reference, const Tin& tin) {

@@ -173,6 +173,9 @@ int run_build(const BuildArgs& args) {
   terrainlod::plan_pyramid(2, 2, 1, 1, params.pyramid);  // usage errors before reading
   params.height_quantum = args.height_quantum;
   params.leaf_error = args.leaf_error;
+  params.reference = args.reference == "original" ? terrainlod::Reference::original
+                     : args.reference == "l+1"    ? terrainlod::Reference::level_plus_1
+                                                  : terrainlod::Reference::level_plus_2;
   params.diagonal = diagonal_rule(args.dem.diagonal);
   params.threads = resolve_threads(args.threads);
   if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
@@ -242,7 +245,7 @@ int run_build(const BuildArgs& args) {
                              {"padded", pyr.padded},
                              {"coding", "standalone"},
                              {"connectivity", "strips"},
-                             {"reference", "original"},
+                             {"reference", args.reference},
                              {"level", levels},
                              {"tool", "terrainlod 1"}};
   const auto t2 = Clock::now();
