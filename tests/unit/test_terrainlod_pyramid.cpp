@@ -28,10 +28,10 @@ using namespace fest::terrainlod;
 using Vertex = TileTriangulation::Vertex;
 using Edge = std::pair<Vertex, Vertex>;
 
-Pyramid make_pyramid(double cell, Reference reference = Reference::level_plus_2, int k = 7) {
-  HeightGrid g = fest::test::fbm_grid(k, 3, 60.0);  // k = 7: 129 x 129, B = 16: L = 3
+Pyramid make_pyramid(double cell, Reference reference = Reference::level_plus_2, int tile = 16) {
+  HeightGrid g = fest::test::fbm_grid(7, 3, 60.0);  // 129 x 129, B = 16: L = 3
   BuildParams p;
-  p.pyramid.tile = 16;
+  p.pyramid.tile = tile;
   p.reference = reference;
   p.threads = 2;
   return build_pyramid(g, cell, cell, p);
@@ -50,8 +50,8 @@ const Pyramid& fbm_pyramid() {
 }
 
 // Every tile decoded from its bytes, every mask, re-measured against the DEM.
-void expect_within_eps(const Pyramid& p, double factor = 4.0 / 3.0, int k = 7) {
-  HeightGrid g = fest::test::fbm_grid(k, 3, 60.0);
+void expect_within_eps(const Pyramid& p, double factor = 4.0 / 3.0) {
+  HeightGrid g = fest::test::fbm_grid(7, 3, 60.0);
   const ReferenceSurface ref(g, DiagonalRule::shortest);
   for (const auto& tile : p.tiles) {
     const Tile d = decode_tile(encode_tile(tile));
@@ -129,12 +129,12 @@ TEST(TerrainlodPyramid, LevelsAndLattice) {
 TEST(TerrainlodPyramid, EveryTransitionWithinEpsOfTheDem) { expect_within_eps(fbm_pyramid()); }
 
 TEST(TerrainlodPyramid, EachReferenceKeepsItsBound) {
-  // 257 x 257, B = 16: L = 4, so with level l+2 (and level L = the DEM's surface) levels
-  // 1 and 0 are measured against coarser meshes, with level l+1 levels 2..0.
+  // B = 8: L = 4, so with level l+2 (and level L = the DEM's surface) levels 1 and 0 are
+  // measured against coarser meshes, with level l+1 levels 2..0.
   for (Reference r : {Reference::original, Reference::level_plus_1, Reference::level_plus_2}) {
-    const Pyramid p = make_pyramid(4.0, r, 8);
+    const Pyramid p = make_pyramid(2.0, r, 8);
     ASSERT_EQ(p.levels, 4);
-    expect_within_eps(p, bound_factor(r), 8);
+    expect_within_eps(p, bound_factor(r));
   }
 }
 
