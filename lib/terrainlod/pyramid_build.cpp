@@ -77,18 +77,30 @@ TileFrame frame_of(const LevelInfo& lv, const std::vector<LevelInfo>& levels, in
 // Whether the unsimplified lattice mesh of every tile of the level meets the engine's
 // limit (the engine only removes vertices, so it cannot repair a start mesh that fails).
 bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const LevelInfo& lv,
-                  const std::vector<LevelInfo>& levels) {
+                  const std::vector<LevelInfo>& levels, int threads) {
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
-  for (int ty = 0; ty < lv.tiles_y; ++ty)
-    for (int tx = 0; tx < lv.tiles_x; ++tx) {
+  const int tiles = lv.tiles_x * lv.tiles_y;
+  // Tiles are checked in parallel; the answer (all fit?) does not depend on the order.
+  std::atomic<int> next{0};
+  std::atomic<bool> fits{true};
+  auto worker = [&] {
+    for (int k; fits.load() && (k = next.fetch_add(1)) < tiles;) {
+      const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
       const StartMesh s = lattice_mesh(padded, tx * lv.cells, ty * lv.cells, n, step);
       const TileFrame f = frame_of(lv, levels, tx, ty);
       for (const auto& t : s.tin.triangles)
         if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
-            lv.limit)
-          return false;
+            lv.limit) {
+          fits.store(false);
+          return;
+        }
     }
-  return true;
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::min(threads, tiles); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  return fits.load();
 }
 
 Tile build_tile(const ReferenceSurface& ref, const TinReference* coarse, const HeightGrid& padded, const LevelInfo& lv,
@@ -256,7 +268,8 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
   // every coarse border point is also a fine one.
   for (int l = plan.levels - 1; l >= 0; --l) {
     LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
-    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level)) ++lv.lattice_bits;
+    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level, std::max(1, params.threads)))
+      ++lv.lattice_bits;
   }
   for (int l = 1; l <= plan.levels; ++l)
     pyr.level[static_cast<std::size_t>(l)].lattice_bits =
