@@ -5,11 +5,14 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <thread>
 
 #include "core/error.hpp"
 #include "terrainlod/simplify.hpp"
+#include "terrainlod/tile_codec.hpp"
+#include "terrainlod/tin_reference.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -74,26 +77,39 @@ TileFrame frame_of(const LevelInfo& lv, const std::vector<LevelInfo>& levels, in
 // Whether the unsimplified lattice mesh of every tile of the level meets the engine's
 // limit (the engine only removes vertices, so it cannot repair a start mesh that fails).
 bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const LevelInfo& lv,
-                  const std::vector<LevelInfo>& levels) {
+                  const std::vector<LevelInfo>& levels, int threads) {
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
-  for (int ty = 0; ty < lv.tiles_y; ++ty)
-    for (int tx = 0; tx < lv.tiles_x; ++tx) {
+  const int tiles = lv.tiles_x * lv.tiles_y;
+  // Tiles are checked in parallel; the answer (all fit?) does not depend on the order.
+  std::atomic<int> next{0};
+  std::atomic<bool> fits{true};
+  auto worker = [&] {
+    for (int k; fits.load() && (k = next.fetch_add(1)) < tiles;) {
+      const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
       const StartMesh s = lattice_mesh(padded, tx * lv.cells, ty * lv.cells, n, step);
       const TileFrame f = frame_of(lv, levels, tx, ty);
       for (const auto& t : s.tin.triangles)
         if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
-            lv.limit)
-          return false;
+            lv.limit) {
+          fits.store(false);
+          return;
+        }
     }
-  return true;
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::min(threads, tiles); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  return fits.load();
 }
 
-Tile build_tile(const ReferenceSurface& ref, const HeightGrid& padded, const LevelInfo& lv,
+Tile build_tile(const ReferenceSurface& ref, const TinReference* coarse, const HeightGrid& padded, const LevelInfo& lv,
                 const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance) {
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
   const TileFrame frame = frame_of(lv, levels, tx, ty);
   const StartMesh start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
-  const SimplifyResult r = simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
+  const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start.tin, start.locked, lv.limit + tolerance, &frame)
+                                  : simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
 
   Tile tile;
   tile.id = {lv.level, tx, ty};
@@ -123,6 +139,36 @@ Tile build_tile(const ReferenceSurface& ref, const HeightGrid& padded, const Lev
     }
   }
   return tile;
+}
+
+// The level a level-l tile is measured against, or -1 for the DEM's grid.
+int reference_level(const BuildParams& params, int l, int L) {
+  if (l == L || params.reference == Reference::original) return -1;
+  const int r = params.reference == Reference::level_plus_1 ? l + 1 : std::min(l + 2, L);
+  // Level L with no leaf tolerance is the DEM's surface: measure on the grid.
+  return r == L && params.leaf_error == 0 ? -1 : r;
+}
+
+// The finished base triangulations of level r under the square of tile (l, tx, ty) as
+// one reference mesh; nullopt where one of them does not exist (tiles beyond the DEM's
+// extent, in the padding: those tiles are measured against the DEM instead).
+std::optional<TinReference> coarse_reference(const std::vector<TileTriangulation>& base, const LevelInfo& lr,
+                                             const LevelInfo& lv, int tx, int ty) {
+  const int f = lv.cells / lr.cells;
+  std::vector<GridPoint> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  for (int iy = ty * f; iy < (ty + 1) * f; ++iy)
+    for (int ix = tx * f; ix < (tx + 1) * f; ++ix) {
+      if (ix >= lr.tiles_x || iy >= lr.tiles_y) return std::nullopt;
+      const TileTriangulation& t = base[static_cast<std::size_t>(iy) * lr.tiles_x + ix];
+      if (t.triangles.empty()) return std::nullopt;
+      const int offset = static_cast<int>(vertices.size());
+      for (const auto& v : t.vertices) vertices.push_back({double(v.gx), double(v.gy), v.z});
+      for (const auto& tri : t.triangles) triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+    }
+  const int x0 = tx * lv.cells, y0 = ty * lv.cells;
+  return TinReference(std::move(vertices), std::move(triangles), x0, y0, x0 + lv.cells, y0 + lv.cells,
+                      std::max(1, lv.cells / 32));
 }
 
 }  // namespace
@@ -179,8 +225,8 @@ TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const T
   return r;
 }
 
-Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
-                      const std::function<void(std::size_t, std::size_t)>& progress) {
+Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                                const TileSink& sink, const std::function<void(std::size_t, std::size_t)>& progress) {
   const PyramidPlan plan = plan_pyramid(grid.width, grid.height, dx, dy, params.pyramid);
   if (!(params.z_quantum > 0) || !std::isfinite(params.z_quantum))
     throw usage_error("--z-quantum must be a positive number (got {})", params.z_quantum);
@@ -222,54 +268,89 @@ Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildP
   // every coarse border point is also a fine one.
   for (int l = plan.levels - 1; l >= 0; --l) {
     LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
-    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level)) ++lv.lattice_bits;
+    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level, std::max(1, params.threads)))
+      ++lv.lattice_bits;
   }
   for (int l = 1; l <= plan.levels; ++l)
     pyr.level[static_cast<std::size_t>(l)].lattice_bits =
         std::max(pyr.level[static_cast<std::size_t>(l)].lattice_bits, pyr.level[static_cast<std::size_t>(l) - 1].lattice_bits - 1);
 
-  struct Job {
-    int level, x, y;
-  };
-  std::vector<Job> jobs;
-  for (const auto& lv : pyr.level)
-    for (int ty = 0; ty < lv.tiles_y; ++ty)
-      for (int tx = 0; tx < lv.tiles_x; ++tx) jobs.push_back({lv.level, tx, ty});
-  pyr.tiles.resize(jobs.size());
-  std::atomic<std::size_t> next{0}, done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto run_job = [&](std::size_t j) {
-    try {
-      const Job& job = jobs[j];
-      Tile t = build_tile(ref, padded, pyr.level[static_cast<std::size_t>(job.level)], pyr.level, job.x, job.y,
-                          pyr.delta_min, tolerance);
-      // The tile's own figures: the largest error over its triangulations (with quantized
-      // heights) and its height range, for stats and culling.
-      const TileErrorRange e = tile_error(ref, t, pyr.geometry(job.level));
-      t.err = static_cast<float>(e.err);
-      t.z_min = static_cast<float>(e.z_min);
-      t.z_max = static_cast<float>(e.z_max);
-      pyr.tiles[j] = std::move(t);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-    }
-    ++done;
-  };
-  auto worker = [&] {
-    for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) run_job(j);
-  };
-  const int threads = std::max(1, std::min<int>(params.threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  // The calling thread works too, reporting progress between its tiles.
-  for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) {
-    run_job(j);
-    if (progress) progress(done.load(), jobs.size());
+  // Level by level from the leaves up; within a level, chunks of whole rows are built in
+  // parallel and handed to the sink in transmission order, so only one chunk of tiles is
+  // held at a time and the order (hence the archive's bytes) does not depend on threads.
+  std::size_t total = 0, done = 0;
+  for (const auto& lv : pyr.level) total += static_cast<std::size_t>(lv.tiles_x) * lv.tiles_y;
+  const int threads = std::max(1, params.threads);
+  const int L = plan.levels;
+  // Base triangulations of the levels that still serve as a reference, by tile.
+  std::vector<std::vector<TileTriangulation>> base(static_cast<std::size_t>(L) + 1);
+  std::vector<int> last_user(static_cast<std::size_t>(L) + 1, -1);  // lowest level measured against it
+  for (int l = L; l >= 0; --l) {
+    const int r = reference_level(params, l, L);
+    if (r >= 0) last_user[static_cast<std::size_t>(r)] = l;
   }
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  for (int l = L; l >= 0; --l) {
+    const LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
+    const int r = reference_level(params, l, L);
+    if (last_user[static_cast<std::size_t>(l)] >= 0)
+      base[static_cast<std::size_t>(l)].resize(static_cast<std::size_t>(lv.tiles_x) * lv.tiles_y);
+    const int rows_per_chunk = std::max(1, (4 * threads + lv.tiles_x - 1) / lv.tiles_x);
+    for (int row0 = 0; row0 < lv.tiles_y; row0 += rows_per_chunk) {
+      const int row1 = std::min(lv.tiles_y, row0 + rows_per_chunk);
+      const std::size_t count = static_cast<std::size_t>(row1 - row0) * lv.tiles_x;
+      std::vector<Tile> chunk(count);
+      std::vector<std::string> bytes(count);
+      std::atomic<std::size_t> next{0};
+      std::exception_ptr failure;
+      std::mutex failure_mutex;
+      auto worker = [&] {
+        for (std::size_t j; (j = next.fetch_add(1)) < count;) {
+          try {
+            const int tx = static_cast<int>(j % static_cast<std::size_t>(lv.tiles_x));
+            const int ty = row0 + static_cast<int>(j / static_cast<std::size_t>(lv.tiles_x));
+            std::optional<TinReference> coarse;
+            if (r >= 0)
+              coarse = coarse_reference(base[static_cast<std::size_t>(r)], pyr.level[static_cast<std::size_t>(r)], lv, tx, ty);
+            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance);
+            if (!base[static_cast<std::size_t>(l)].empty())
+              base[static_cast<std::size_t>(l)][static_cast<std::size_t>(ty) * lv.tiles_x + tx] = triangulate(t, 0, pyr.geometry(l));
+            // The tile's own figures: the largest error over its triangulations (with
+            // quantized heights) against the DEM, and its height range, for stats and culling.
+            const TileErrorRange e = tile_error(ref, t, pyr.geometry(l));
+            t.err = static_cast<float>(e.err);
+            t.z_min = static_cast<float>(e.z_min);
+            t.z_max = static_cast<float>(e.z_max);
+            bytes[j] = encode_tile(t);  // here, in parallel: coding costs about a tenth of building
+            chunk[j] = std::move(t);
+          } catch (...) {
+            std::lock_guard<std::mutex> lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+          }
+        }
+      };
+      std::vector<std::thread> pool;
+      for (int t = 1; t < std::min<int>(threads, static_cast<int>(count)); ++t) pool.emplace_back(worker);
+      worker();
+      for (auto& t : pool) t.join();
+      if (failure) std::rethrow_exception(failure);
+      for (std::size_t j = 0; j < count; ++j) sink(std::move(chunk[j]), std::move(bytes[j]));
+      done += count;
+      if (progress) progress(done, total);
+    }
+    // References no level below this one needs any more.
+    for (int k = l; k <= L; ++k)
+      if (last_user[static_cast<std::size_t>(k)] == l) std::vector<TileTriangulation>().swap(base[static_cast<std::size_t>(k)]);
+  }
+  return pyr;
+}
+
+Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                      const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<Tile> tiles;
+  Pyramid pyr = build_pyramid_streaming(grid, dx, dy, params, [&](Tile&& t, std::string&&) { tiles.push_back(std::move(t)); }, progress);
+  // Leaves first from the builder; transmission order is the root first.
+  std::stable_sort(tiles.begin(), tiles.end(), [](const Tile& a, const Tile& b) { return a.id.level < b.id.level; });
+  pyr.tiles = std::move(tiles);
   return pyr;
 }
 

@@ -1,13 +1,18 @@
 #pragma once
 // Building the tile pyramid (spec terrainlod 2.3-2.6): pad the DEM, choose every level's
-// lattice and height quantum, and simplify every tile with the collapse engine against the
-// DEM surface. Each tile is measured with all its transition variants, so every one of its
-// 16 triangulations stays within eps_l (including height quantization) of the DEM -- the
-// spec's `--reference original`, which gives eps_l where the seed's level-(l+2) reference
-// gives 4/3 eps_l. Tiles are independent, so they are built in parallel and the result
-// does not depend on the thread count.
+// lattice and height quantum, and simplify every tile with the collapse engine, from the
+// leaves up. By default (the seed's reference, spec 2.2) level l is measured against the
+// finished base triangulations of level l+2 (level L for l = L-1), so the work per tile
+// does not grow with the DEM and the error against the DEM stays within (4/3) eps_l; the
+// DEM itself (`original`, eps_l) and level l+1 (2 eps_l) are there for validation. Level L
+// with --leaf-error 0 is the DEM's own surface (only collapses that change nothing), so
+// levels measured against it use the DEM's grid, whose exact overlay is cheaper. Each tile
+// is measured with all its transition variants, so every one of its 16 triangulations
+// keeps the bound. Tiles of a level are independent, so they are built in parallel and the
+// result does not depend on the thread count.
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "terrainlod/height_grid.hpp"
@@ -17,12 +22,20 @@
 
 namespace fest::terrainlod {
 
+// What level l is measured against while it is simplified (spec 2.2, 2.11).
+enum class Reference {
+  level_plus_2,  // the seed's: the finished level l+2 (level L for l = L-1); <= (4/3) eps_l vs the DEM
+  level_plus_1,  // the finished level l+1; <= 2 eps_l vs the DEM
+  original,      // the DEM itself; <= eps_l (every level costs as much as the leaves)
+};
+
 struct BuildParams {
   PyramidParams pyramid;
   double height_quantum = 0.25;  // q: interior height quantum as a fraction of eps_l
   double z_quantum = 1;          // delta_min: finest height quantum (world units)
   double leaf_error = 0;         // tolerance of the leaf level
   DiagonalRule diagonal = DiagonalRule::shortest;
+  Reference reference = Reference::level_plus_2;
   int threads = 1;
 };
 
@@ -50,8 +63,19 @@ struct Pyramid {
 // Edge replication to padded x padded samples.
 HeightGrid pad_grid(const HeightGrid& grid, int padded);
 
+// Receives the finished tiles with their coding (tile_codec.hpp), level by level from the
+// leaves (L) up to the root, each level in transmission order (rows from the south, then
+// columns), on the calling thread.
+using TileSink = std::function<void(Tile&&, std::string&&)>;
+
 // `grid` must be conditioned (no NaN); dx, dy only shape eps (spec 2.1). `progress` is
-// called with (tiles done, tiles total) from the calling thread.
+// called with (tiles done, tiles total) from the calling thread. The returned pyramid
+// has its levels but no tiles: they went to `sink` as they were finished.
+Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
+                                const TileSink& sink,
+                                const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+// The same with every tile kept, in transmission order (small DEMs, tests).
 Pyramid build_pyramid(const HeightGrid& grid, double dx, double dy, const BuildParams& params,
                       const std::function<void(std::size_t, std::size_t)>& progress = {});
 

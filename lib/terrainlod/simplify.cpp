@@ -19,6 +19,8 @@ constexpr double kInfinite = std::numeric_limits<double>::infinity();
 constexpr double kMinTwiceArea = 1e-9;
 // Triangles with a bounding box of at most this many cells are measured, not cached.
 constexpr double kDirectBoxCells = 32;
+// Edges of at most this many cells (|dx| + |dy|) are measured, not cached.
+constexpr double kDirectEdgeCells = 4;
 // Largest valence of a vertex whose collapse is considered.
 constexpr int kMaxFan = 1024;
 
@@ -70,12 +72,68 @@ class TriangleErrorCache {
   std::size_t used_ = 0;
 };
 
+// The two references the engine measures against, with one interface: the DEM's grid
+// (triangle_error.hpp) and a coarser finished mesh (tin_reference.hpp).
+struct GridMeasure {
+  const ReferenceSurface& ref;
+  double triangle(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return triangle_error(ref, a, b, c, s);
+  }
+  double samples(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return triangle_samples_error(ref, a, b, c, s);
+  }
+  double edge(const GridPoint& p, const GridPoint& q, double s) const { return edge_error(ref, p, q, s); }
+  double height(const GridPoint& p) const { return p.z; }  // vertices are DEM samples
+};
+
+struct TinMeasure {
+  const TinReference& ref;
+  double triangle(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return ref.triangle_error(a, b, c, s);
+  }
+  double samples(const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) const {
+    return ref.samples_error(a, b, c, s);
+  }
+  double edge(const GridPoint& p, const GridPoint& q, double s) const { return ref.edge_error(p, q, s); }
+  double height(const GridPoint& p) const { return ref.height_at(p.x, p.y); }
+};
+
+// transition_error with any reference; the inserted border points are DEM samples (the
+// finer neighbours' border vertices).
+template <typename Measure>
+double transition_error_with(const Measure& measure, const ReferenceSurface& dem, const TileFrame& frame,
+                             const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop_above) {
+  std::vector<GridPoint> extra;
+  const auto inserts = border_inserts(dem, frame, a, b, c, extra);
+  unsigned sides = 0;
+  for (const auto& e : inserts)
+    if (!e.points.empty()) sides |= 1u << e.side;
+  double worst = measure.triangle(a, b, c, stop_above);
+  if (sides == 0 || worst > stop_above) return worst;
+  auto point = [&](int id) -> const GridPoint& { return id == 0 ? a : id == 1 ? b : id == 2 ? c : extra[id - 3]; };
+  std::vector<std::array<int, 3>> pieces;
+  for (unsigned m = 1; m < 16; ++m) {
+    if ((m & sides) != m) continue;  // every non-empty subset of the triangle's refinable sides
+    pieces.clear();
+    refine_triangle({0, 1, 2}, inserts, m, pieces);
+    for (const auto& t : pieces) {
+      worst = std::max(worst, measure.triangle(point(t[0]), point(t[1]), point(t[2]), stop_above));
+      if (worst > stop_above) return worst;
+    }
+  }
+  return worst;
+}
+
+template <typename Measure>
 class CollapseEngine {
  public:
-  CollapseEngine(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
+  CollapseEngine(Measure measure, const ReferenceSurface& dem, const Tin& start, const std::vector<std::uint8_t>& locked,
                  double limit, const TileFrame* frame)
-      : ref_(ref), limit_(limit), frame_(frame), cache_(start.vertices.size()) {
+      : measure_(measure), dem_(dem), limit_(limit), frame_(frame), cache_(start.vertices.size()),
+        edge_cache_(start.vertices.size()) {
     build(start, locked);
+    zref_.reserve(start.vertices.size());
+    for (const auto& p : start.vertices) zref_.push_back(measure_.height(p));
   }
 
   SimplifyResult run() {
@@ -135,7 +193,7 @@ class CollapseEngine {
   }
 
   double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
-    return frame_ ? transition_error(ref_, *frame_, a, b, c, stop) : triangle_error(ref_, a, b, c, stop);
+    return frame_ ? transition_error_with(measure_, dem_, *frame_, a, b, c, stop) : measure_.triangle(a, b, c, stop);
   }
 
   // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
@@ -150,11 +208,9 @@ class CollapseEngine {
     // First the new triangles' shapes and a cheap lower bound of the error: the removed
     // sample v lies in one of them, and the new surface must pass within the bound of it.
     // Most rejected candidates fail here, before any scan.
-    struct NewTriangle {
-      TriMesh::FaceHandle face;
-      GridPoint corner[3];
-    };
-    NewTriangle fan[kMaxFan];
+    // The fan lives in a member buffer: a local array of kMaxFan triangles would be
+    // value-initialised (GridPoint has member initialisers) on every call, 80 KB each time.
+    auto& fan = fan_;
     int n = 0;
     for (auto f : m_.vf_range(v)) {
       GridPoint corner[3];
@@ -170,9 +226,10 @@ class CollapseEngine {
       const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
                    wc = twice_area(corner[0], corner[1], pv);
       if (wa >= 0 && wb >= 0 && wc >= 0 &&
-          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - pv.z) > stop)
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zref_[static_cast<std::size_t>(v.idx())]) > stop)
         return kInfinite;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
+      if (static_cast<int>(fan.size()) <= n) fan.resize(static_cast<std::size_t>(n) + 1);
       fan[n].face = f;
       std::copy(corner, corner + 3, fan[n].corner);
       ++n;
@@ -187,29 +244,74 @@ class CollapseEngine {
   }
 
   // Error of the triangle `corner` (face f with v replaced by w). A triangle's error
-  // depends only on its three vertices, which never move, so it is computed once: the
-  // same candidate triangles come back every time a neighbourhood is re-examined.
+  // depends only on its three vertices, which never move, so the same candidate triangles
+  // and edges that come back every time a neighbourhood is re-examined need not be measured
+  // again: the error is the larger of the samples inside (remembered per triangle) and the
+  // crossings along the three edges (remembered per edge: an edge is shared by two
+  // triangles of a fan, and the link edges of v by every candidate of v).
   double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
                       const GridPoint (&corner)[3], double stop) {
-    // Small triangles are cheaper to measure again than to look up in a large table
-    // (a cache miss); only those whose bounding box spans many cells are remembered.
-    const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
-                       (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
-    if (!cache_.enabled() || box <= kDirectBoxCells)
-      return clamp_error(measure(corner[0], corner[1], corner[2], stop));
     std::uint64_t id[3];
     int k = 0;
     for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
+    // Triangles with a transition variant are measured whole (transition_error).
+    const bool whole = frame_ && on_refinable_border(corner);
+    double e = triangle_part(id, corner, stop, whole);
+    if (whole || e > stop) return e;
+    for (int a = 0; a < 3; ++a) {
+      e = std::max(e, cached_edge_error(id[a], id[(a + 1) % 3], corner[a], corner[(a + 1) % 3]));
+      if (e > stop) return kInfinite;
+    }
+    return e;
+  }
+
+  bool on_refinable_border(const GridPoint (&c)[3]) const {
+    const TileFrame& fr = *frame_;
+    if (fr.fine_step <= 0) return false;
+    for (int a = 0; a < 3; ++a) {
+      const GridPoint &p = c[a], &q = c[(a + 1) % 3];
+      if ((p.x == fr.x0 && q.x == fr.x0 && (fr.refinable & (1u << kWest))) ||
+          (p.y == fr.y0 && q.y == fr.y0 && (fr.refinable & (1u << kSouth))) ||
+          (p.x == fr.x1 && q.x == fr.x1 && (fr.refinable & (1u << kEast))) ||
+          (p.y == fr.y1 && q.y == fr.y1 && (fr.refinable & (1u << kNorth))))
+        return true;
+    }
+    return false;
+  }
+
+  // The samples part of a triangle's error (or, `whole`, all of it with its transition
+  // variants), remembered for triangles whose box spans many cells: small ones are cheaper
+  // to measure again than to look up in a large table (a cache miss).
+  double triangle_part(const std::uint64_t (&vid)[3], const GridPoint (&corner)[3], double stop, bool whole) {
+    auto measure_part = [&](double s) {
+      return whole ? measure(corner[0], corner[1], corner[2], s)
+                   : measure_.samples(corner[0], corner[1], corner[2], s);
+    };
+    const double box = (std::max({corner[0].x, corner[1].x, corner[2].x}) - std::min({corner[0].x, corner[1].x, corner[2].x})) *
+                       (std::max({corner[0].y, corner[1].y, corner[2].y}) - std::min({corner[0].y, corner[1].y, corner[2].y}));
+    if (!cache_.enabled() || box <= kDirectBoxCells) return clamp_error(measure_part(stop));
+    std::uint64_t id[3] = {vid[0], vid[1], vid[2]};
     if (id[0] > id[1]) std::swap(id[0], id[1]);
     if (id[1] > id[2]) std::swap(id[1], id[2]);
     if (id[0] > id[1]) std::swap(id[0], id[1]);
     const std::uint64_t key = (id[0] << 42) | (id[1] << 21) | id[2];
     double* slot = cache_.find_or_insert(key);
     if (!std::isnan(*slot)) return *slot;
-    const double e = measure(corner[0], corner[1], corner[2], stop);
+    const double e = measure_part(stop);
     // Stopped early below the bound: e is only a lower bound, not worth remembering.
     if (e > stop && stop < limit_) return kInfinite;
     *slot = clamp_error(e);
+    return *slot;
+  }
+
+  // Crossings of edge (p, q) with the reference, measured to the end once (an edge's
+  // error is needed exactly by every triangle that has it).
+  double cached_edge_error(std::uint64_t a, std::uint64_t b, const GridPoint& p, const GridPoint& q) {
+    if (std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled())
+      return measure_.edge(p, q, kInfinite);
+    if (a > b) std::swap(a, b);
+    double* slot = edge_cache_.find_or_insert((a << 32) | b);
+    if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
     return *slot;
   }
 
@@ -252,8 +354,15 @@ class CollapseEngine {
     }
   }
 
+  struct NewTriangle {
+    TriMesh::FaceHandle face;
+    GridPoint corner[3];
+  };
+  std::vector<NewTriangle> fan_;  // scratch of collapse_cost
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
-  const ReferenceSurface& ref_;
+  Measure measure_;
+  const ReferenceSurface& dem_;
+  std::vector<double> zref_;  // the reference's height at every vertex (lower bounds)
   double limit_;
   const TileFrame* frame_;
   TriMesh m_;
@@ -262,7 +371,8 @@ class CollapseEngine {
   std::vector<std::uint8_t> dirty_;  // star changed since the last measurement
   std::vector<std::uint8_t> live_;   // has a queue entry of the current version
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
-  TriangleErrorCache cache_;
+  TriangleErrorCache cache_;       // per triangle (three vertex ids)
+  TriangleErrorCache edge_cache_;  // per edge (two vertex ids)
   std::vector<TriMesh::VertexHandle> ring_;
 };
 
@@ -300,7 +410,7 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
   std::vector<std::uint8_t> locked(start.vertices.size(), 0);
   const int w = grid.width;
   for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked[static_cast<std::size_t>(c)] = 1;
-  CollapseEngine engine(ref, start, locked, options.max_error + tolerance, nullptr);
+  CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, options.max_error + tolerance, nullptr);
   SimplifyResult result = engine.run();
   result.tolerance = tolerance;
   return result;
@@ -308,7 +418,13 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
 
 SimplifyResult simplify_tin(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
                             double limit, const TileFrame* frame) {
-  CollapseEngine engine(ref, start, locked, limit, frame);
+  CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, limit, frame);
+  return engine.run();
+}
+
+SimplifyResult simplify_tin(const TinReference& ref, const ReferenceSurface& dem, const Tin& start,
+                            const std::vector<std::uint8_t>& locked, double limit, const TileFrame* frame) {
+  CollapseEngine<TinMeasure> engine(TinMeasure{ref}, dem, start, locked, limit, frame);
   return engine.run();
 }
 
@@ -341,25 +457,7 @@ std::array<EdgeInsert, 3> border_inserts(const ReferenceSurface& ref, const Tile
 
 double transition_error(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
                         const GridPoint& b, const GridPoint& c, double stop_above) {
-  std::vector<GridPoint> extra;
-  const auto inserts = border_inserts(ref, frame, a, b, c, extra);
-  unsigned sides = 0;
-  for (const auto& e : inserts)
-    if (!e.points.empty()) sides |= 1u << e.side;
-  double worst = triangle_error(ref, a, b, c, stop_above);
-  if (sides == 0 || worst > stop_above) return worst;
-  auto point = [&](int id) -> const GridPoint& { return id == 0 ? a : id == 1 ? b : id == 2 ? c : extra[id - 3]; };
-  std::vector<std::array<int, 3>> pieces;
-  for (unsigned m = 1; m < 16; ++m) {
-    if ((m & sides) != m) continue;  // every non-empty subset of the triangle's refinable sides
-    pieces.clear();
-    refine_triangle({0, 1, 2}, inserts, m, pieces);
-    for (const auto& t : pieces) {
-      worst = std::max(worst, triangle_error(ref, point(t[0]), point(t[1]), point(t[2]), stop_above));
-      if (worst > stop_above) return worst;
-    }
-  }
-  return worst;
+  return transition_error_with(GridMeasure{ref}, ref, frame, a, b, c, stop_above);
 }
 
 double tin_error(const ReferenceSurface& reference, const Tin& tin) {

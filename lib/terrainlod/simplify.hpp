@@ -16,6 +16,7 @@
 
 #include "terrainlod/height_grid.hpp"
 #include "terrainlod/reference_surface.hpp"
+#include "terrainlod/tin_reference.hpp"
 #include "terrainlod/transition.hpp"
 #include "terrainlod/triangle_error.hpp"
 
@@ -75,6 +76,11 @@ double transition_error(const ReferenceSurface& ref, const TileFrame& frame, con
 // transition variants when `frame` is given) must stay within `limit` of `ref`.
 SimplifyResult simplify_tin(const ReferenceSurface& ref, const Tin& start, const std::vector<std::uint8_t>& locked,
                             double limit, const TileFrame* frame);
+
+// The same against a coarser mesh `ref` (the level-(l+2) reference); `dem` gives the
+// heights of the finer neighbours' border points of the transition variants.
+SimplifyResult simplify_tin(const TinReference& ref, const ReferenceSurface& dem, const Tin& start,
+                            const std::vector<std::uint8_t>& locked, double limit, const TileFrame* frame);
 
 // Largest vertical distance of a TIN from the reference surface, triangle by triangle.
 double tin_error(const ReferenceSurface& reference, const Tin& tin);

@@ -25,4 +25,11 @@ inline double twice_area(const GridPoint& a, const GridPoint& b, const GridPoint
 double triangle_error(const ReferenceSurface& ref, const GridPoint& a, const GridPoint& b, const GridPoint& c,
                       double stop_above);
 
+// The two halves of triangle_error, for callers that remember edges shared by several
+// triangles: the samples inside or on the triangle, and the crossings of one edge with
+// the reference's edges (the segment's end points excluded).
+double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, const GridPoint& b,
+                              const GridPoint& c, double stop_above);
+double edge_error(const ReferenceSurface& ref, const GridPoint& p, const GridPoint& q, double stop_above);
+
 }  // namespace fest::terrainlod

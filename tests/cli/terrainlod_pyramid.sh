@@ -35,6 +35,21 @@ expect_json '[.ok, .tiles_over_bound, .open_edges, .reencode_mismatches]' '[true
 check "max error <= 4/3 eps" jq -e '.max_err_over_eps <= 1.3333334' "$out"
 check "the cameras saw more than one level" jq -e '.camera_levels_seen >= 2' "$out"
 
+case_ "--reference l+1 and original: verify holds each to its bound (2 eps, eps)"
+run terrainlod build "$WORK/bumps.asc" --tile 8 --reference l+1 -o "$WORK/bumps_l1.tlp"
+expect_status 0
+run terrainlod verify "$WORK/bumps_l1.tlp" --dem "$WORK/bumps.asc"
+expect_status 0
+expect_json '[.ok, .tiles_over_bound, .bound_over_eps]' '[true,0,2]'
+run terrainlod build "$WORK/bumps.asc" --tile 8 --reference original -o "$WORK/bumps_o.tlp"
+expect_status 0
+run terrainlod verify "$WORK/bumps_o.tlp" --dem "$WORK/bumps.asc"
+expect_status 0
+expect_json '[.ok, .tiles_over_bound, .bound_over_eps]' '[true,0,1]'
+run terrainlod build "$WORK/bumps.asc" --reference l+3 -o "$WORK/never.tlp"
+expect_clean_failure 2 terrainlod
+check "nothing written" test ! -e "$WORK/never.tlp"
+
 case_ "a transition towards a finer east neighbour adds one triangle per inserted point"
 run terrainlod decode "$WORK/bumps.tlp" --tile 1/0/0 --mask 0 --to obj
 expect_status 0

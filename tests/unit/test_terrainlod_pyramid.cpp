@@ -1,5 +1,6 @@
 // The pyramid against the spec's guarantees (terrainlod section 5): every tile and every
-// one of its 16 transition triangulations within eps_l of the DEM (re-measured here on
+// one of its 16 transition triangulations within (4/3) eps_l of the DEM (eps_l with the
+// DEM as the reference, 2 eps_l with level l+1) (re-measured here on
 // the decoded tile, not taken from the builder), decoding reproduces the encoder's
 // triangles exactly, and tiles meet without cracks or T-junctions: along every shared
 // border the two sides have the same vertices and edges, bit for bit.
@@ -27,12 +28,19 @@ using namespace fest::terrainlod;
 using Vertex = TileTriangulation::Vertex;
 using Edge = std::pair<Vertex, Vertex>;
 
-Pyramid make_pyramid(double cell) {
+Pyramid make_pyramid(double cell, Reference reference = Reference::level_plus_2, int tile = 16) {
   HeightGrid g = fest::test::fbm_grid(7, 3, 60.0);  // 129 x 129, B = 16: L = 3
   BuildParams p;
-  p.pyramid.tile = 16;
+  p.pyramid.tile = tile;
+  p.reference = reference;
   p.threads = 2;
   return build_pyramid(g, cell, cell, p);
+}
+
+// The bound against the DEM for each reference (spec 2.2): eps (1 + 1/4 + 1/16 + ...)
+// for level l+2, eps (1 + 1/2 + 1/4 + ...) for level l+1.
+double bound_factor(Reference r) {
+  return r == Reference::original ? 1.0 : r == Reference::level_plus_1 ? 2.0 : 4.0 / 3.0;
 }
 
 // 4 m cells: one texel (2^(L-l) cells) holds the terrain's detail at every level.
@@ -42,7 +50,7 @@ const Pyramid& fbm_pyramid() {
 }
 
 // Every tile decoded from its bytes, every mask, re-measured against the DEM.
-void expect_within_eps(const Pyramid& p) {
+void expect_within_eps(const Pyramid& p, double factor = 4.0 / 3.0) {
   HeightGrid g = fest::test::fbm_grid(7, 3, 60.0);
   const ReferenceSurface ref(g, DiagonalRule::shortest);
   for (const auto& tile : p.tiles) {
@@ -51,7 +59,7 @@ void expect_within_eps(const Pyramid& p) {
     for (unsigned m = 0; m < 16; ++m) {
       const double e = triangulation_error(ref, triangulate(d, m, p.geometry(tile.id.level)));
       // Leaves (eps 0) are the DEM up to integer heights: exact.
-      EXPECT_LE(e, lv.eps + 1e-9) << "tile " << tile.id.level << "/" << tile.id.x << "/" << tile.id.y << " mask " << m;
+      EXPECT_LE(e, factor * lv.eps + 1e-9) << "tile " << tile.id.level << "/" << tile.id.x << "/" << tile.id.y << " mask " << m;
     }
   }
 }
@@ -119,6 +127,16 @@ TEST(TerrainlodPyramid, LevelsAndLattice) {
 }
 
 TEST(TerrainlodPyramid, EveryTransitionWithinEpsOfTheDem) { expect_within_eps(fbm_pyramid()); }
+
+TEST(TerrainlodPyramid, EachReferenceKeepsItsBound) {
+  // B = 8: L = 4, so with level l+2 (and level L = the DEM's surface) levels 1 and 0 are
+  // measured against coarser meshes, with level l+1 levels 2..0.
+  for (Reference r : {Reference::original, Reference::level_plus_1, Reference::level_plus_2}) {
+    const Pyramid p = make_pyramid(2.0, r, 8);
+    ASSERT_EQ(p.levels, 4);
+    expect_within_eps(p, bound_factor(r));
+  }
+}
 
 TEST(TerrainlodPyramid, SubTexelDetailRefinesTheLatticeAndKeepsTheBound) {
   // 1 m cells: eps_l is 2^(L-l) m, below what a texel lattice of this fBm can carry.

@@ -41,6 +41,7 @@ struct BuildArgs {
   double height_quantum = 0.25;
   double z_quantum = 0;   // 0 = 1 for integer DEMs, else 0.01
   double leaf_error = 0;
+  std::string reference = "l+2";
   int threads = 0;
   std::string report;
   bool progress = false;

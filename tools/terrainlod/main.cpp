@@ -63,6 +63,9 @@ int main(int argc, char** argv) {
   b->add_option("--height-quantum", build.height_quantum, "Interior height quantum as a fraction of eps_l (q)");
   b->add_option("--z-quantum", build.z_quantum, "Finest height quantum (default 1 for integer DEMs, else 0.01)");
   b->add_option("--leaf-error", build.leaf_error, "Tolerance of the leaf level (height units)");
+  b->add_option("--reference", build.reference,
+                "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)")
+      ->check(CLI::IsMember({"l+2", "l+1", "original"}));
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
   b->add_flag("--progress", build.progress, "Progress bar on standard error");
   fest::cli::add_threads(*b, build.threads);

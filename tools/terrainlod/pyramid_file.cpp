@@ -26,16 +26,6 @@ T get_le(std::string_view s, std::size_t at) {
   return static_cast<T>(v);
 }
 
-std::vector<std::string> encode_all(const terrainlod::Pyramid& pyramid, std::vector<terrainlod::TileSizes>* sizes) {
-  std::vector<std::string> blobs;
-  for (const auto& t : pyramid.tiles) {
-    terrainlod::TileSizes s;
-    blobs.push_back(terrainlod::encode_tile(t, &s));
-    if (sizes) sizes->push_back(s);
-  }
-  return blobs;
-}
-
 std::string relative_tile_path(const terrainlod::TileId& id, const std::string& extension) {
   return std::to_string(id.level) + "/" + std::to_string(id.x) + "/" + std::to_string(id.y) + "." + extension;
 }
@@ -50,75 +40,82 @@ void write_file(const fs::path& p, std::string_view bytes) {
 
 bool looks_like_archive(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == std::string_view(kMagic, 4); }
 
-std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
-                          const std::vector<std::string>& textures, std::vector<terrainlod::TileSizes>* sizes) {
-  const std::vector<std::string> blobs = encode_all(pyramid, sizes);
-  const bool textured = !textures.empty();
+std::string archive_head(const nlohmann::json& manifest, const std::vector<TileEntry>& tiles) {
   const std::string m = manifest.dump();
   std::string out(kMagic, 4);
   put_le<std::uint8_t>(out, kVersion);
   put_le<std::uint32_t>(out, static_cast<std::uint32_t>(m.size()));
   out += m;
-  put_le<std::uint32_t>(out, static_cast<std::uint32_t>(blobs.size()));
-  // Each tile's geometry, then its texture: a reader streaming in transmission order
-  // gets both of a tile together.
-  std::uint64_t offset = out.size() + kEntryBytes * blobs.size();
-  for (std::size_t i = 0; i < blobs.size(); ++i) {
-    const auto& id = pyramid.tiles[i].id;
-    put_le<std::uint8_t>(out, static_cast<std::uint8_t>(id.level));
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(id.x));
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(id.y));
+  put_le<std::uint32_t>(out, static_cast<std::uint32_t>(tiles.size()));
+  std::uint64_t offset = out.size() + kEntryBytes * tiles.size();
+  for (const auto& t : tiles) {
+    put_le<std::uint8_t>(out, static_cast<std::uint8_t>(t.id.level));
+    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(t.id.x));
+    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(t.id.y));
     put_le<std::uint64_t>(out, offset);
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(blobs[i].size()));
-    offset += blobs[i].size();
-    const std::size_t tex = textured ? textures[i].size() : 0;
-    put_le<std::uint64_t>(out, tex ? offset : 0);
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(tex));
-    offset += tex;
-  }
-  for (std::size_t i = 0; i < blobs.size(); ++i) {
-    out += blobs[i];
-    if (textured) out += textures[i];
+    put_le<std::uint32_t>(out, t.length);
+    offset += t.length;
+    put_le<std::uint64_t>(out, t.texture_length ? offset : 0);
+    put_le<std::uint32_t>(out, t.texture_length);
+    offset += t.texture_length;
   }
   return out;
 }
 
-void write_directory(const std::string& dir, const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
-                     const std::vector<std::string>& textures, const std::string& texture_extension) {
+DirectoryPyramidWriter::DirectoryPyramidWriter(const std::string& dir, const nlohmann::json& manifest, std::string texture_extension)
+    : texture_extension_(std::move(texture_extension)) {
   const fs::path norm = fs::path(dir).lexically_normal();
-  const fs::path target = norm.filename().empty() ? norm.parent_path() : norm;
+  target_ = norm.filename().empty() ? norm.parent_path() : norm;
   std::error_code ec;
-  const bool replace = fs::exists(target, ec);
-  if (replace && !(fs::is_directory(target, ec) && (fs::is_empty(target, ec) || fs::exists(target / "pyramid.json", ec))))
-    throw io_error("{} exists and is not a pyramid directory; not replacing it", target.string());
-  const std::vector<std::string> blobs = encode_all(pyramid, nullptr);
-  const fs::path tmp = target.string() + ".part-" + std::to_string(::getpid());
-  fs::remove_all(tmp, ec);
+  replace_ = fs::exists(target_, ec);
+  if (replace_ && !(fs::is_directory(target_, ec) && (fs::is_empty(target_, ec) || fs::exists(target_ / "pyramid.json", ec))))
+    throw io_error("{} exists and is not a pyramid directory; not replacing it", target_.string());
+  tmp_ = target_.string() + ".part-" + std::to_string(::getpid());
+  fs::remove_all(tmp_, ec);
   try {
-    fs::create_directories(tmp);
-    write_file(tmp / "pyramid.json", manifest.dump(2) + "\n");
-    for (std::size_t i = 0; i < blobs.size(); ++i) {
-      const auto& id = pyramid.tiles[i].id;
-      const fs::path tlt = tmp / relative_tile_path(id, "tlt");
-      fs::create_directories(tlt.parent_path());
-      write_file(tlt, blobs[i]);
-      if (!textures.empty()) write_file(tmp / relative_tile_path(id, texture_extension), textures[i]);
-    }
-    const fs::path old = target.string() + ".old-" + std::to_string(::getpid());
-    if (replace) fs::rename(target, old);
-    fs::rename(tmp, target, ec);
-    if (ec) {
-      if (replace) fs::rename(old, target);
-      throw io_error("cannot rename {} to {}: {}", tmp.string(), target.string(), ec.message());
-    }
-    if (replace) fs::remove_all(old, ec);
+    fs::create_directories(tmp_);
+    write_file(tmp_ / "pyramid.json", manifest.dump(2) + "\n");
   } catch (const fs::filesystem_error& e) {
-    fs::remove_all(tmp, ec);
-    throw io_error("cannot write the pyramid directory {}: {}", target.string(), e.code().message());
+    fs::remove_all(tmp_, ec);
+    throw io_error("cannot write the pyramid directory {}: {}", target_.string(), e.code().message());
   } catch (...) {
-    fs::remove_all(tmp, ec);
+    fs::remove_all(tmp_, ec);
     throw;
   }
+}
+
+DirectoryPyramidWriter::~DirectoryPyramidWriter() {
+  std::error_code ec;
+  if (!committed_) fs::remove_all(tmp_, ec);
+}
+
+void DirectoryPyramidWriter::add(const terrainlod::TileId& id, std::string_view tile, std::string_view texture) {
+  try {
+    const fs::path tlt = tmp_ / relative_tile_path(id, "tlt");
+    fs::create_directories(tlt.parent_path());
+    write_file(tlt, tile);
+    if (!texture.empty()) write_file(tmp_ / relative_tile_path(id, texture_extension_), texture);
+  } catch (const fs::filesystem_error& e) {
+    throw io_error("cannot write the pyramid directory {}: {}", target_.string(), e.code().message());
+  }
+}
+
+void DirectoryPyramidWriter::commit() {
+  std::error_code ec;
+  const fs::path old = target_.string() + ".old-" + std::to_string(::getpid());
+  try {
+    if (replace_) fs::rename(target_, old);
+  } catch (const fs::filesystem_error& e) {
+    throw io_error("cannot replace the pyramid directory {}: {}", target_.string(), e.code().message());
+  }
+  fs::rename(tmp_, target_, ec);
+  if (ec) {
+    std::error_code ignored;
+    if (replace_) fs::rename(old, target_, ignored);
+    throw io_error("cannot rename {} to {}: {}", tmp_.string(), target_.string(), ec.message());
+  }
+  committed_ = true;
+  if (replace_) fs::remove_all(old, ec);
 }
 
 void PyramidFile::parse_manifest(std::string_view text) {

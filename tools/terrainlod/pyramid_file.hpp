@@ -5,9 +5,11 @@
 //  * the directory: pyramid.json (the manifest) + L/X/Y.tlt + L/X/Y.png (or .jpg).
 // PyramidFile reads either; everything downstream sees the same tiles and textures.
 
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -26,17 +28,31 @@ struct TileEntry {
   std::uint32_t texture_length = 0;
 };
 
-// Serialises the archive. `textures` holds each tile's encoded texture in the order of
-// pyramid.tiles (empty: no textures); `sizes` receives each tile's section sizes.
-std::string write_archive(const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
-                          const std::vector<std::string>& textures = {},
-                          std::vector<terrainlod::TileSizes>* sizes = nullptr);
+// The archive up to the tile blobs (magic, version, manifest, index) for tiles of the
+// given ids, geometry lengths and texture lengths in that order (offsets are computed);
+// each tile's geometry blob, then its texture, follow in the same order, so a reader
+// streaming in transmission order gets both of a tile together.
+std::string archive_head(const nlohmann::json& manifest, const std::vector<TileEntry>& tiles);
 
-// Writes the directory container: into a temporary sibling, renamed into place when
-// complete. An existing directory is replaced only if it is a pyramid (has pyramid.json).
+// Writes the directory container tile by tile into a temporary sibling that commit()
+// renames into place; destroyed uncommitted, it removes the partial directory. An
+// existing directory is replaced only if it is a pyramid (has pyramid.json).
 // `texture_extension` is "png" or "jpg".
-void write_directory(const std::string& dir, const nlohmann::json& manifest, const terrainlod::Pyramid& pyramid,
-                     const std::vector<std::string>& textures, const std::string& texture_extension);
+class DirectoryPyramidWriter {
+ public:
+  DirectoryPyramidWriter(const std::string& dir, const nlohmann::json& manifest, std::string texture_extension);
+  ~DirectoryPyramidWriter();
+  DirectoryPyramidWriter(const DirectoryPyramidWriter&) = delete;
+  DirectoryPyramidWriter& operator=(const DirectoryPyramidWriter&) = delete;
+  // `texture` empty: the tile has none.
+  void add(const terrainlod::TileId& id, std::string_view tile, std::string_view texture);
+  void commit();
+
+ private:
+  std::filesystem::path target_, tmp_;
+  std::string texture_extension_;
+  bool replace_ = false, committed_ = false;
+};
 
 class PyramidFile {
  public:
