@@ -51,6 +51,24 @@ inline void exp_and_psi(double l, double s, double& e, double& p) {
   p = m / l;
 }
 
+// The complex pair's block of the flow over time s:
+// (z0, z1) <- e^{a s} R(b s) (z0, z1) + Psi_c (c0, c1), R = [[cs, sn], [-sn, cs]],
+// Psi_c = M2^{-1} (e^{a s} R - I), M2^{-1} = [[a, -b], [b, a]] / (a^2 + b^2); one sincos of
+// the half angle gives sin, cos and cos - 1 without cancellation for small s.
+inline void complex_pair_flow(double a, double b, double s, const double z0[2], const double c[2], double z[2]) {
+  double sh, ch;
+  small_sincos(0.5 * b * s, &sh, &ch);
+  const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
+  const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
+  const double ea = 1.0 + em1;
+  const double d11 = em1 * cs - 2.0 * sh * sh;  // e^{a s} R - I, first row
+  const double d12 = ea * sn;
+  const double inv_n2 = 1.0 / (a * a + b * b);
+  const double p11 = (a * d11 + b * d12) * inv_n2, p12 = (a * d12 - b * d11) * inv_n2;
+  z[0] = ea * (cs * z0[0] + sn * z0[1]) + p11 * c[0] + p12 * c[1];
+  z[1] = ea * (-sn * z0[0] + cs * z0[1]) - p12 * c[0] + p11 * c[1];
+}
+
 }  // namespace
 
 void eigen_flow(const CellRecord& r, const double z0[3], double s, double z[3]) {
@@ -62,19 +80,7 @@ void eigen_flow(const CellRecord& r, const double z0[3], double s, double z[3]) 
     }
     return;
   }
-  // As CellPath::eval_impl's normal_complex case.
-  const double a = r.lam[0], b = r.lam[1];
-  double sh, ch;
-  small_sincos(0.5 * b * s, &sh, &ch);
-  const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
-  const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
-  const double ea = 1.0 + em1;
-  const double d11 = em1 * cs - 2.0 * sh * sh;
-  const double d12 = ea * sn;
-  const double inv_n2 = 1.0 / (a * a + b * b);
-  const double p11 = (a * d11 + b * d12) * inv_n2, p12 = (a * d12 - b * d11) * inv_n2;
-  z[0] = ea * (cs * z0[0] + sn * z0[1]) + p11 * r.c[0] + p12 * r.c[1];
-  z[1] = ea * (-sn * z0[0] + cs * z0[1]) - p12 * r.c[0] + p11 * r.c[1];
+  complex_pair_flow(r.lam[0], r.lam[1], s, z0, r.c, z);
   double e3, p3;
   exp_and_psi(r.lam[2], s, e3, p3);
   z[2] = e3 * z0[2] + p3 * r.c[2];
@@ -225,22 +231,8 @@ void CellPath::eval_impl(double tau, Vec3& x, Vec3& v, Vec3* acc) const {
     }
     case CellType::normal_complex: {
       const double a = rec_.lam[0], b = rec_.lam[1], l3 = rec_.lam[2];
-      // One sincos of the half angle gives sin, cos and cos - 1 without cancellation.
-      double sh, ch;
-      small_sincos(0.5 * b * s, &sh, &ch);
-      const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
-      const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
-      const double ea = 1.0 + em1;
-      // e^{a s} R(b s) - I without cancellation for small s.
-      const double d11 = em1 * cs - 2.0 * sh * sh;
-      const double d12 = ea * sn;
-      const double n2 = a * a + b * b;
-      // Psi_c = M2^{-1} (e^{a s} R - I), M2^{-1} = [[a, -b], [b, a]] / n2, R = [[cs, sn], [-sn, cs]]
-      const double p11 = (a * d11 + b * d12) / n2, p12 = (a * d12 - b * d11) / n2;
-      const double p21 = (b * d11 - a * d12) / n2, p22 = (b * d12 + a * d11) / n2;
       double z[3], dz[3];
-      z[0] = ea * (cs * z0_[0] + sn * z0_[1]) + p11 * rec_.c[0] + p12 * rec_.c[1];
-      z[1] = ea * (-sn * z0_[0] + cs * z0_[1]) + p21 * rec_.c[0] + p22 * rec_.c[1];
+      complex_pair_flow(a, b, s, z0_.data(), rec_.c, z);
       double e3, p3;
       exp_and_psi(l3, s, e3, p3);
       z[2] = e3 * z0_[2] + p3 * rec_.c[2];

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <random>
 
+#include "terrainlod/extract.hpp"
 #include "terrainlod/height_grid.hpp"
 
 namespace fest::test {
@@ -51,6 +52,20 @@ inline terrainlod::HeightGrid fbm_grid(int k, std::uint32_t seed, double amplitu
   // Integer heights, as in real int16 DEMs (and so plateaus and exact ties occur).
   for (double& z : g.h) z = std::round(z);
   return g;
+}
+
+// The layout of the selection tests: a 2^3-tile-wide pyramid (B = 16 cells of 10 m, L = 3).
+inline terrainlod::PyramidLayout small_layout() {
+  terrainlod::PyramidLayout L;
+  L.levels = 3;
+  L.texels = 16;
+  L.dx = L.dy = 10;
+  for (int l = 0; l <= 3; ++l) {
+    L.tiles_x.push_back(1 << l);
+    L.tiles_y.push_back(1 << l);
+    L.cells.push_back(16 << (3 - l));
+  }
+  return L;
 }
 
 }  // namespace fest::test

@@ -10,16 +10,13 @@
 #include "segbrain/derivatives.hpp"
 #include "segbrain/edges.hpp"
 
+#include "test_segbrain_helpers.hpp"
+
 using namespace fest::segbrain;
 
 namespace {
 
-Grid grid(std::size_t nx, std::size_t ny, std::size_t nz, double sx = 1, double sy = 1, double sz = 1) {
-  Grid g;
-  g.n = {nx, ny, nz};
-  g.spacing = {sx, sy, sz};
-  return g;
-}
+using fest::segbrain::test_support::grid;
 
 // A step of height 100 at x = x0_mm along R, blurred by a Gaussian of s0 mm (the
 // analytic erf profile), constant along A and S.

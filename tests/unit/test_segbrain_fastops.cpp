@@ -17,16 +17,13 @@
 #include "segbrain/phantom.hpp"
 #include "segbrain/shape.hpp"
 
+#include "test_segbrain_helpers.hpp"
+
 using namespace fest::segbrain;
 
 namespace {
 
-Grid grid(std::size_t nx, std::size_t ny, std::size_t nz, double sx = 1, double sy = 1, double sz = 1) {
-  Grid g;
-  g.n = {nx, ny, nz};
-  g.spacing = {sx, sy, sz};
-  return g;
-}
+using fest::segbrain::test_support::grid;
 
 Mask random_mask(const Grid& g, std::mt19937& rng, int percent) {
   Mask m(g.size());

@@ -13,16 +13,13 @@
 #include "segbrain/morphology.hpp"
 #include "segbrain/phantom.hpp"
 
+#include "test_segbrain_helpers.hpp"
+
 using namespace fest::segbrain;
 
 namespace {
 
-Grid grid(std::size_t nx, std::size_t ny, std::size_t nz, double sx = 1, double sy = 1, double sz = 1) {
-  Grid g;
-  g.n = {nx, ny, nz};
-  g.spacing = {sx, sy, sz};
-  return g;
-}
+using fest::segbrain::test_support::grid;
 
 Mask ball(const Grid& g, double cx, double cy, double cz, double r) {
   Mask m(g.size());

@@ -8,16 +8,13 @@
 #include "segbrain/morphology.hpp"
 #include "segbrain/shape.hpp"
 
+#include "test_segbrain_helpers.hpp"
+
 using namespace fest::segbrain;
 
 namespace {
 
-Grid grid(std::size_t nx, std::size_t ny, std::size_t nz, double sx = 1, double sy = 1, double sz = 1) {
-  Grid g;
-  g.n = {nx, ny, nz};
-  g.spacing = {sx, sy, sz};
-  return g;
-}
+using fest::segbrain::test_support::grid;
 
 // Box of voxels [x0, x1] x [y0, y1] x [z0, z1] (inclusive).
 Mask box(const Grid& g, std::size_t x0, std::size_t x1, std::size_t y0, std::size_t y1, std::size_t z0, std::size_t z1) {

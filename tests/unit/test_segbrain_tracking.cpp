@@ -10,16 +10,13 @@
 #include "segbrain/phantom.hpp"
 #include "segbrain/tracking.hpp"
 
+#include "test_segbrain_helpers.hpp"
+
 using namespace fest::segbrain;
 
 namespace {
 
-Grid grid(std::size_t nx, std::size_t ny, std::size_t nz, double sx = 1, double sy = 1, double sz = 1) {
-  Grid g;
-  g.n = {nx, ny, nz};
-  g.spacing = {sx, sy, sz};
-  return g;
-}
+using fest::segbrain::test_support::grid;
 
 std::array<double, 3> pos(const Grid& g, std::size_t i) {
   return {double(i % g.n[0]) * g.spacing[0], double((i / g.n[0]) % g.n[1]) * g.spacing[1],

@@ -303,22 +303,8 @@ namespace {
 
 using namespace fest::terrainlod;
 
-// A 2^6-tile-wide pyramid layout (B = 16 cells of 10 m, L = 3) over flat ground at z = 0.
-PyramidLayout flat_layout() {
-  PyramidLayout L;
-  L.levels = 3;
-  L.texels = 16;
-  L.dx = L.dy = 10;
-  for (int l = 0; l <= 3; ++l) {
-    L.tiles_x.push_back(1 << l);
-    L.tiles_y.push_back(1 << l);
-    L.cells.push_back(16 << (3 - l));
-  }
-  return L;
-}
-
 TEST(TerrainlodSelect, LookingStraightDownFollowsTheDistanceRuleAndCloses) {
-  const PyramidLayout L = flat_layout();
+  const PyramidLayout L = fest::test::small_layout();
   Camera c;
   c.eye = {150, 420, 600};
   c.target = {150, 420, 0};
@@ -384,7 +370,7 @@ TEST(TerrainlodSelect, LookingStraightDownFollowsTheDistanceRuleAndCloses) {
 }
 
 TEST(TerrainlodSelect, CullingKeepsOnlyTilesInFront) {
-  const PyramidLayout L = flat_layout();
+  const PyramidLayout L = fest::test::small_layout();
   Camera c;
   c.eye = {-100, 640, 50};
   c.target = {-200, 640, 0};  // looking west, away from the terrain

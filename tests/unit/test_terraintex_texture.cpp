@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "terrainlod/extract.hpp"
 #include "terrainlod/texture_pyramid.hpp"
+#include "terrainlod_fixtures.hpp"
 
 namespace {
 
@@ -138,25 +139,11 @@ TEST(TerrainTexture, HillshadeLightsSlopesFacingTheNorthWest) {
   for (int k = 0; k < 3; ++k) EXPECT_GT(nw[k], se[k]);
 }
 
-// The layout of test_terrainlod_pyramid's selection tests: B = 16 cells of 10 m, L = 3.
-PyramidLayout layout() {
-  PyramidLayout L;
-  L.levels = 3;
-  L.texels = 16;
-  L.dx = L.dy = 10;
-  for (int l = 0; l <= 3; ++l) {
-    L.tiles_x.push_back(1 << l);
-    L.tiles_y.push_back(1 << l);
-    L.cells.push_back(16 << (3 - l));
-  }
-  return L;
-}
-
 TEST(TerrainTexture, ClosingOnlyTilesUseTheTextureOfTheAncestorTheRuleChose) {
   // Flat ground with one 300 m block inside leaf tile (3, 3, 3): a camera hovering beside
   // the block draws that tile at level 3, while the flat level-1 tile east of it is far
   // enough for level 1 -- two levels apart, so closing splits it.
-  const PyramidLayout L = layout();
+  const PyramidLayout L = fest::test::small_layout();
   auto z_range = [&](const TileId& t) {
     const int c = L.cells[t.level];
     const bool block = t.x * c <= 58 && (t.x + 1) * c >= 54 && t.y * c <= 58 && (t.y + 1) * c >= 54;

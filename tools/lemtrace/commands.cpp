@@ -428,10 +428,11 @@ int run_bench(const BenchArgs& a) {
     return trace(g, seeds.x[i], seeds.t0[i], o);
   }));
   // RK methods: as many steps per line as the LEM crossed cells, over the same time.
-  for (Method m : {Method::euler, Method::heun, Method::rk3, Method::rk4}) {
-    rows.push_back(measure(method_name(m), all, [&](const FieldGrid& g, std::size_t i) {
+  auto equal_steps = [&](Method m, bool cell_search) {
+    return [&, m, cell_search](const FieldGrid& g, std::size_t i) {
       TraceOptions o = base;
       o.method = m;
+      o.rk_cell_search = cell_search;
       const Polyline& ref = reference[i];
       const double T = ref.t.empty() ? 0.0 : std::abs(ref.t.back() - seeds.t0[i]);
       o.max_steps = std::max<int64_t>(1, ref.cells);
@@ -439,22 +440,13 @@ int run_bench(const BenchArgs& a) {
       o.step = ref.cells > 0 && T > 0 ? T / static_cast<double>(ref.cells) : 1e-3;
       o.max_time = T > 0 ? T : o.max_time;
       return trace(g, seeds.x[i], seeds.t0[i], o);
-    }));
-  }
+    };
+  };
+  for (Method m : {Method::euler, Method::heun, Method::rk3, Method::rk4})
+    rows.push_back(measure(method_name(m), all, equal_steps(m, false)));
   // Euler as the chapter's §9.2.1 loop writes it: a cell search (here the bin grid) for
   // every evaluation instead of the neighbour walk.
-  rows.push_back(measure("euler_cell_search", all, [&](const FieldGrid& g, std::size_t i) {
-    TraceOptions o = base;
-    o.method = Method::euler;
-    o.rk_cell_search = true;
-    const Polyline& ref = reference[i];
-    const double T = ref.t.empty() ? 0.0 : std::abs(ref.t.back() - seeds.t0[i]);
-    o.max_steps = std::max<int64_t>(1, ref.cells);
-    o.step_unit = StepUnit::time;
-    o.step = ref.cells > 0 && T > 0 ? T / static_cast<double>(ref.cells) : 1e-3;
-    o.max_time = T > 0 ? T : o.max_time;
-    return trace(g, seeds.x[i], seeds.t0[i], o);
-  }));
+  rows.push_back(measure("euler_cell_search", all, equal_steps(Method::euler, true)));
   {
     ClassifyParams cp = all.params();
     TetMesh copy = all.mesh();
