@@ -241,7 +241,7 @@ double Engine::eval_number(const Term& t0, bool& is_int, std::int64_t& ival) {
   const std::string& f = t->name;
   if (t->args.size() == 1) {
     bool ai;
-    std::int64_t av;
+    std::int64_t av = 0;  // set only for integers
     double a = eval_number(t->args[0], ai, av);
     is_int = false;
     if (f == "-") { is_int = ai; ival = -av; return -a; }
@@ -254,21 +254,22 @@ double Engine::eval_number(const Term& t0, bool& is_int, std::int64_t& ival) {
     if (f == "cos") return std::cos(a);
     if (f == "floor" || f == "ceiling" || f == "round" || f == "truncate") {
       double r = f == "floor" ? std::floor(a) : f == "ceiling" ? std::ceil(a) : f == "round" ? std::round(a) : std::trunc(a);
-      is_int = true;
-      ival = static_cast<std::int64_t>(r);
+      is_int = std::abs(r) < 9.2e18;  // else the double alone (the cast would overflow)
+      ival = is_int ? static_cast<std::int64_t>(r) : 0;
       return r;
     }
     if (f == "float") return a;
   } else if (t->args.size() == 2) {
     bool ai, bi;
-    std::int64_t av, bv;
+    std::int64_t av = 0, bv = 0;  // set only for integers
     double a = eval_number(t->args[0], ai, av);
     double b = eval_number(t->args[1], bi, bv);
     bool ints = ai && bi;
     is_int = false;
-    if (f == "+") { is_int = ints; ival = av + bv; return a + b; }
-    if (f == "-") { is_int = ints; ival = av - bv; return a - b; }
-    if (f == "*") { is_int = ints; ival = av * bv; return a * b; }
+    // Integer results only where they fit in 64 bits; otherwise the double stands.
+    if (f == "+") { is_int = ints && !__builtin_add_overflow(av, bv, &ival); return a + b; }
+    if (f == "-") { is_int = ints && !__builtin_sub_overflow(av, bv, &ival); return a - b; }
+    if (f == "*") { is_int = ints && !__builtin_mul_overflow(av, bv, &ival); return a * b; }
     if (f == "/") {
       if (b == 0) throw bad_input("arithmetic: division by zero");
       if (ints && av % bv == 0) { is_int = true; ival = av / bv; }

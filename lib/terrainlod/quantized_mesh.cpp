@@ -14,7 +14,11 @@ void put(std::string& s, T v) {
   s.append(b, sizeof(T));
 }
 
-std::uint16_t zz16(int v) { return static_cast<std::uint16_t>((v << 1) ^ (v >> 31)); }
+// Zig-zag: 0, -1, 1, -2, ... -> 0, 1, 2, 3, ...; the shift is done unsigned (shifting a
+// negative int left is undefined before C++20).
+std::uint16_t zz16(int v) {
+  return static_cast<std::uint16_t>((static_cast<std::uint32_t>(v) << 1) ^ static_cast<std::uint32_t>(v >> 31));
+}
 
 }  // namespace
 

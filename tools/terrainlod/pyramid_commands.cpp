@@ -612,7 +612,8 @@ int run_build(const BuildArgs& args) {
       try {
         for_each_tile([&](const TileEntry&, const std::string& blob, std::string_view texture) {
           ok = ok && std::fwrite(blob.data(), 1, blob.size(), f) == blob.size();
-          ok = ok && std::fwrite(texture.data(), 1, texture.size(), f) == texture.size();
+          // An empty view may hold a null pointer, which fwrite must not get.
+          if (!texture.empty()) ok = ok && std::fwrite(texture.data(), 1, texture.size(), f) == texture.size();
           file_bytes += blob.size() + texture.size();
         });
       } catch (...) {
