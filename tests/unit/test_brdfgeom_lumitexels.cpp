@@ -12,27 +12,16 @@
 #include "reflectance/rasterizer.hpp"
 #include "reflectance/render.hpp"
 
+#include "test_reflectance_helpers.hpp"
+
 namespace {
 
 using namespace fest;
 using namespace fest::brdffit;
 using namespace fest::reflectance;
 
-TriangleMesh plane(double s, int n) {
-  TriangleMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      m.vertices.emplace_back(-s + 2 * s * i / n, -s + 2 * s * j / n, 0);
-      m.normals.emplace_back(0, 0, 1);
-    }
-  auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
+// The square [-s, s]^2 at z = 0 in 2 n^2 triangles.
+TriangleMesh plane(double s, int n) { return fest::test::plane(s, 0.0, n); }
 
 ImageView view_from(const Eigen::Vector3d& eye, const Eigen::Vector3d& light, int w = 240, int h = 200) {
   ImageView v;

@@ -8,26 +8,13 @@
 #include "reflectance/rasterizer.hpp"
 #include "reflectance/render.hpp"
 
+#include "test_reflectance_helpers.hpp"
+
 namespace {
 
 using namespace fest::reflectance;
 
-// A square [-s, s]^2 in the plane z = h, split into 2 n^2 triangles, normals +z.
-TriangleMesh plane(double s, double h, int n) {
-  TriangleMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      m.vertices.emplace_back(-s + 2 * s * i / n, -s + 2 * s * j / n, h);
-      m.normals.emplace_back(0, 0, 1);
-    }
-  auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
+using fest::test::plane;
 
 // A camera at `eye` looking at the origin.
 PinholeCamera camera_at(const Eigen::Vector3d& eye, int w, int h, double f, const Eigen::Vector3d& up) {
