@@ -5,86 +5,13 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "lemtrace/flow_kernels.hpp"
+
 namespace fest::lemtrace {
 
-double psi(double lambda, double s) {
-  const double ls = lambda * s;
-  if (std::abs(ls) < 1e-5) return s * (1.0 + ls * (0.5 + ls / 6.0));
-  return std::expm1(ls) / lambda;
-}
+double psi(double lambda, double s) { return s * phi1(lambda * s); }
 
-namespace {
-
-// sin and cos of a small angle by their Taylor series (|t| <= 0.5: the first omitted
-// term is below 2e-20 relative), much cheaper than the library's sincos; the half angle
-// of one cell's rotation is nearly always this small. Larger angles use sincos.
-inline void small_sincos(double t, double* sn, double* cs) {
-  if (!(std::abs(t) <= 0.5)) {
-    sincos(t, sn, cs);
-    return;
-  }
-  const double u = t * t;
-  if (u <= 1.0 / 256) {
-    // |t| <= 1/16 (one cell's half angle, nearly always): sin to t^9 and cos to t^10
-    // leave out terms below 1e-19 relative.
-    *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880)))));
-    *cs = 1 + u * (-0.5 + u * (1.0 / 24 + u * (-1.0 / 720 + u * (1.0 / 40320 + u * (-1.0 / 3628800)))));
-    return;
-  }
-  // Horner in t^2 with the coefficients 1/n! (sin: odd n to 15, cos: even n to 16).
-  *sn = t * (1 + u * (-1.0 / 6 + u * (1.0 / 120 + u * (-1.0 / 5040 + u * (1.0 / 362880 + u * (-1.0 / 39916800 +
-            u * (1.0 / 6227020800 + u * (-1.0 / 1307674368000))))))));
-  *cs = 1 + u * (-0.5 + u * (1.0 / 24 + u * (-1.0 / 720 + u * (1.0 / 40320 + u * (-1.0 / 3628800 +
-            u * (1.0 / 479001600 + u * (-1.0 / 87178291200 + u * (1.0 / 20922789888000))))))));
-}
-
-// e^{l s} and psi(l, s) from one expm1.
-inline void exp_and_psi(double l, double s, double& e, double& p) {
-  const double ls = l * s;
-  if (std::abs(ls) < 1e-5) {
-    p = s * (1.0 + ls * (0.5 + ls / 6.0));
-    e = 1.0 + l * p;
-    return;
-  }
-  const double m = std::expm1(ls);
-  e = 1.0 + m;
-  p = m / l;
-}
-
-// The complex pair's block of the flow over time s:
-// (z0, z1) <- e^{a s} R(b s) (z0, z1) + Psi_c (c0, c1), R = [[cs, sn], [-sn, cs]],
-// Psi_c = M2^{-1} (e^{a s} R - I), M2^{-1} = [[a, -b], [b, a]] / (a^2 + b^2); one sincos of
-// the half angle gives sin, cos and cos - 1 without cancellation for small s.
-inline void complex_pair_flow(double a, double b, double s, const double z0[2], const double c[2], double z[2]) {
-  double sh, ch;
-  small_sincos(0.5 * b * s, &sh, &ch);
-  const double sn = 2.0 * sh * ch, cs = 1.0 - 2.0 * sh * sh;
-  const double em1 = std::abs(a * s) < 1e-5 ? a * s * (1.0 + a * s * (0.5 + a * s / 6.0)) : std::expm1(a * s);
-  const double ea = 1.0 + em1;
-  const double d11 = em1 * cs - 2.0 * sh * sh;  // e^{a s} R - I, first row
-  const double d12 = ea * sn;
-  const double inv_n2 = 1.0 / (a * a + b * b);
-  const double p11 = (a * d11 + b * d12) * inv_n2, p12 = (a * d12 - b * d11) * inv_n2;
-  z[0] = ea * (cs * z0[0] + sn * z0[1]) + p11 * c[0] + p12 * c[1];
-  z[1] = ea * (-sn * z0[0] + cs * z0[1]) - p12 * c[0] + p11 * c[1];
-}
-
-}  // namespace
-
-void eigen_flow(const CellRecord& r, const double z0[3], double s, double z[3]) {
-  if (r.type == CellType::normal_real) {
-    for (int i = 0; i < 3; ++i) {
-      double e, p;
-      exp_and_psi(r.lam[i], s, e, p);
-      z[i] = e * z0[i] + p * r.c[i];
-    }
-    return;
-  }
-  complex_pair_flow(r.lam[0], r.lam[1], s, z0, r.c, z);
-  double e3, p3;
-  exp_and_psi(r.lam[2], s, e3, p3);
-  z[2] = e3 * z0[2] + p3 * r.c[2];
-}
+void eigen_flow(const CellRecord& r, const double z0[3], double s, double z[3]) { eigen_flow_inline(r, z0, s, z); }
 
 CellPath::CellPath(const CellRecord& record, const Vec3& x0, double dir) : rec_(record), x0_(x0), dir_(dir) {
   switch (rec_.type) {

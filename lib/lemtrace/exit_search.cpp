@@ -5,6 +5,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "lemtrace/flow_kernels.hpp"
+
 namespace fest::lemtrace {
 namespace {
 
@@ -370,114 +372,125 @@ double UnitGeometry::transit_time() const {
   return v_max > 0 ? h_min / v_max : std::numeric_limits<double>::infinity();
 }
 
-namespace {
-
-// dir * Lambda w for a normal record (the 2x2 block [[a, b], [-b, a]] for a complex pair).
-inline void lambda_times(const CellRecord& r, double dir, const double w[3], double out[3]) {
-  if (r.type == CellType::normal_real) {
-    for (int i = 0; i < 3; ++i) out[i] = dir * r.lam[i] * w[i];
-  } else {
-    const double a = r.lam[0], b = r.lam[1];
-    out[0] = dir * (a * w[0] + b * w[1]);
-    out[1] = dir * (-b * w[0] + a * w[1]);
-    out[2] = dir * r.lam[2] * w[2];
-  }
-}
-
-// Barycentric rates (d beta / d tau, all four) of an eigen-space rate w: u' = S_u w.
-inline void beta_rates(const double* S, const double w[3], double out[4]) {
-  for (int i = 0; i < 3; ++i) out[i + 1] = S[3 * i] * w[0] + S[3 * i + 1] * w[1] + S[3 * i + 2] * w[2];
-  out[0] = -(out[1] + out[2] + out[3]);
-}
-
-// One barycentric coordinate's row applied to an eigen-space vector (beta_0: minus the
-// sum of the rows; its constant 1 is added by the caller).
-inline double beta_row(const double* S, int k, const double w[3]) {
-  if (k > 0) return S[3 * (k - 1)] * w[0] + S[3 * (k - 1) + 1] * w[1] + S[3 * (k - 1) + 2] * w[2];
-  return -((S[0] + S[3] + S[6]) * w[0] + (S[1] + S[4] + S[7]) * w[1] + (S[2] + S[5] + S[8]) * w[2]);
-}
-
-}  // namespace
-
+// The predicted exit in eigen coordinates, written out for one crossing per call: dir
+// Lambda is folded into one 2x2 block and a scalar (the real case has zeros off the
+// diagonal, so both types run the same straight-line code), the step bound 0.25 / rate is
+// compared squared (no square root), the face quadratics take one square root and one
+// division each in the form that does not cancel, and the closed form is the inline
+// polynomial kernel (|lambda s| <= 0.25 here, so no exp, expm1 or sin/cos).
 bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in, double dir, ExitResult& out) {
   const double* S = rec.S;
   const double* Si = rec.Sinv;
   const double tauT = rec.tau_bary;
-  if (!(tauT > 0) || !std::isfinite(tauT)) return false;
+  if (!(tauT > 0) || !(tauT < std::numeric_limits<double>::infinity())) return false;
+  const bool complex_pair = rec.type == CellType::normal_complex;
+  const double l0 = dir * rec.lam[0], l1 = dir * rec.lam[1], l2 = dir * rec.lam[2];
+  // M = dir Lambda = [[m00, m01, 0], [m10, m11, 0], [0, 0, l2]].
+  const double m00 = l0, m01 = complex_pair ? l1 : 0.0, m10 = complex_pair ? -l1 : 0.0, m11 = complex_pair ? l0 : l1;
+  // rate^2 of the bracket search (|alpha + i beta|^2 for the pair).
+  const double rate2 = complex_pair ? std::max(l0 * l0 + l1 * l1, l2 * l2) : std::max({l0 * l0, l1 * l1, l2 * l2});
+  const double dc0 = dir * rec.c[0], dc1 = dir * rec.c[1], dc2 = dir * rec.c[2];
+  const double b1 = beta_in[1], b2 = beta_in[2], b3 = beta_in[3];
+  // Entry in eigen coordinates and the path's first three derivatives there.
+  const double z0[3] = {Si[0] * b1 + Si[1] * b2 + Si[2] * b3, Si[3] * b1 + Si[4] * b2 + Si[5] * b3,
+                        Si[6] * b1 + Si[7] * b2 + Si[8] * b3};
+  const double w1[3] = {m00 * z0[0] + m01 * z0[1] + dc0, m10 * z0[0] + m11 * z0[1] + dc1, l2 * z0[2] + dc2};
+  const double w2[3] = {m00 * w1[0] + m01 * w1[1], m10 * w1[0] + m11 * w1[1], l2 * w1[2]};
+  const double w3[3] = {m00 * w2[0] + m01 * w2[1], m10 * w2[0] + m11 * w2[1], l2 * w2[2]};
+  // Barycentric rates: u' = S_u w, beta_0' = -sum.
+  double r[4], q[4], jr[4];
+  for (int i = 0; i < 3; ++i) {
+    const double* row = S + 3 * i;
+    r[i + 1] = row[0] * w1[0] + row[1] * w1[1] + row[2] * w1[2];
+    q[i + 1] = row[0] * w2[0] + row[1] * w2[1] + row[2] * w2[2];
+    jr[i + 1] = row[0] * w3[0] + row[1] * w3[1] + row[2] * w3[2];
+  }
+  r[0] = -(r[1] + r[2] + r[3]);
+  q[0] = -(q[1] + q[2] + q[3]);
+  jr[0] = -(jr[1] + jr[2] + jr[3]);
+  const double speed2 = r[1] * r[1] + r[2] * r[2] + r[3] * r[3];
+  const double tiny = 1e-13 / tauT;  // a rate of beta at round-off (UnitGeometry: h = 1)
   double c[4];
   for (int k = 0; k < 4; ++k) c[k] = std::max(beta_in[k], 0.0);
-  // Entry in eigen coordinates and the path's first three derivatives there.
-  double z0[3], w1[3], w2[3], w3[3];
-  for (int i = 0; i < 3; ++i) z0[i] = Si[3 * i] * beta_in[1] + Si[3 * i + 1] * beta_in[2] + Si[3 * i + 2] * beta_in[3];
-  {
-    double lz[3];
-    lambda_times(rec, 1.0, z0, lz);
-    for (int i = 0; i < 3; ++i) w1[i] = dir * (lz[i] + rec.c[i]);
-  }
-  lambda_times(rec, dir, w1, w2);
-  lambda_times(rec, dir, w2, w3);
-  double r[4], q[4], jr[4];
-  beta_rates(S, w1, r);
-  beta_rates(S, w2, q);
-  beta_rates(S, w3, jr);
-  const double speed2 = r[1] * r[1] + r[2] * r[2] + r[3] * r[3];
-  const double speed = std::sqrt(speed2);
-  const double jerk = std::sqrt(jr[1] * jr[1] + jr[2] * jr[2] + jr[3] * jr[3]);
-  const double tiny = 1e-13 / tauT;  // a rate of beta at round-off (UnitGeometry: h = 1)
   double tau = std::numeric_limits<double>::infinity();
   int face = -1;
   for (int k = 0; k < 4; ++k) {
-    const double ck = c[k], rk = r[k];
+    const double ck = c[k], rk = r[k], qk = q[k];
     if (ck <= 1e-9) {
       // On a face: the path must clearly move inwards, or move within the face's plane
       // (no hop of the edge/vertex rule pending; the general search decides those).
+      const double speed = std::sqrt(speed2);
       if (rk < -1e-12 * speed) return false;
-      if (std::abs(rk) <= tiny && std::abs(q[k]) <= tiny * speed && std::abs(jr[k]) <= tiny * speed2) continue;
+      if (std::abs(rk) <= tiny && std::abs(qk) <= tiny * speed && std::abs(jr[k]) <= tiny * speed2) continue;
       if (!(rk > 1e-6 * speed)) return false;
     }
-    if (rk >= 0 && q[k] >= 0) continue;
-    const double t = quadratic_root(ck, rk, q[k]);
+    // First positive root of the Taylor quadratic ck + rk t + qk t^2 / 2 (ck >= 0): a face
+    // the path moves away from with non-negative curvature has none; an approaching face
+    // (rk < 0) has 2 ck / (sqrt(disc) - rk) if disc >= 0; a receding face that curves back
+    // (rk >= 0 > qk) has (rk + sqrt(disc)) / -qk (disc >= rk^2 there).
+    if (rk >= 0 && qk >= 0) continue;
+    const double disc = rk * rk - 2 * qk * ck;
+    double t;
+    if (rk < 0) {
+      if (disc < 0) continue;
+      t = 2 * ck / (std::sqrt(disc) - rk);
+    } else {
+      t = (rk + std::sqrt(disc)) / -qk;
+    }
     if (t < tau) {
       tau = t;
       face = k;
     }
   }
   if (face < 0) return false;
-  for (int it = 0; it < 2; ++it) {
-    const double f = c[face] + tau * (r[face] + tau * (0.5 * q[face] + tau * jr[face] / 6));
-    const double df = r[face] + tau * (q[face] + 0.5 * tau * jr[face]);
-    if (df == 0) break;
-    const double next = tau - f / df;
-    if (!(next > 0)) break;
-    tau = next;
+  {
+    // Two Newton steps on the Taylor cubic of the chosen face; kept while positive.
+    const double cf = c[face], rf = r[face], qf = q[face], jf = jr[face];
+    for (int it = 0; it < 2; ++it) {
+      const double f = cf + tau * (rf + tau * (0.5 * qf + tau * jf * (1.0 / 6)));
+      const double df = rf + tau * (qf + 0.5 * tau * jf);
+      if (df == 0) break;
+      const double next = tau - f / df;
+      if (!(next > 0)) break;
+      tau = next;
+    }
   }
-  // The bracket search's step bound, 0.25 / rate, and its horizon 64 tau_T.
-  double rate;
-  if (rec.type == CellType::normal_real)
-    rate = std::max({std::abs(rec.lam[0]), std::abs(rec.lam[1]), std::abs(rec.lam[2])});
-  else
-    rate = std::max(std::sqrt(rec.lam[0] * rec.lam[0] + rec.lam[1] * rec.lam[1]), std::abs(rec.lam[2]));
-  const double cap = std::min(rate > 0 ? 0.25 / rate : std::numeric_limits<double>::infinity(), 64 * tauT);
-  if (!(tau < cap)) return false;
+  // The bracket search's step bound, 0.25 / rate (compared squared), and its horizon 64 tau_T.
+  const double horizon = 64 * tauT;
+  auto within_cap = [&](double t) { return t < horizon && t * t * rate2 < 0.0625; };
+  if (!within_cap(tau)) return false;
+  // The chosen face's row of S_u (beta_0: minus the column sums; its constant 1 is `off`).
+  double row[3];
+  if (face > 0) {
+    const double* s = S + 3 * (face - 1);
+    row[0] = s[0];
+    row[1] = s[1];
+    row[2] = s[2];
+  } else {
+    row[0] = -(S[0] + S[3] + S[6]);
+    row[1] = -(S[1] + S[4] + S[7]);
+    row[2] = -(S[2] + S[5] + S[8]);
+  }
   const double off = face == 0 ? 1.0 : 0.0;
-  int evals = 0;
+  const double jerk2 = jr[1] * jr[1] + jr[2] * jr[2] + jr[3] * jr[3];
   for (int it = 0; it < 3; ++it) {
-    double z[3], dz[3], d2z[3], lz[3];
-    eigen_flow(rec, z0, dir * tau, z);
-    ++evals;
-    lambda_times(rec, 1.0, z, lz);
-    for (int i = 0; i < 3; ++i) dz[i] = dir * (lz[i] + rec.c[i]);
-    lambda_times(rec, dir, dz, d2z);
-    const double f = off + beta_row(S, face, z), df = beta_row(S, face, dz), d2f = beta_row(S, face, d2z);
+    double z[3];
+    eigen_flow_inline(rec, z0, dir * tau, z);
+    const double dz[3] = {m00 * z[0] + m01 * z[1] + dc0, m10 * z[0] + m11 * z[1] + dc1, l2 * z[2] + dc2};
+    const double d2z[3] = {m00 * dz[0] + m01 * dz[1], m10 * dz[0] + m11 * dz[1], l2 * dz[2]};
+    const double f = off + row[0] * z[0] + row[1] * z[1] + row[2] * z[2];
+    const double df = row[0] * dz[0] + row[1] * dz[1] + row[2] * dz[2];
+    const double d2f = row[0] * d2z[0] + row[1] * d2z[1] + row[2] * d2z[2];
     if (!std::isfinite(f) || !(df < 0)) return false;
     double delta = -f / df;
     delta = -f / (df + 0.5 * d2f * delta);
     const double next = tau + delta;
-    if (!(next > 0 && next < cap)) return false;
+    if (!(next > 0) || !within_cap(next)) return false;
     // The third derivative along the step stays within a small factor of its entry
-    // value: 2 |jerk| bounds the Taylor step's error.
-    const double err = 2 * jerk * std::abs(delta * delta * delta) / 6;
-    if (err > 1e-15 || std::abs(delta) > 1e-3 * tau) {
+    // value: 2 |jerk| bounds the Taylor step's error, 2 |jerk| |delta|^3 / 6 <= 1e-15
+    // (compared squared).
+    const double d3 = delta * delta * delta;
+    if (jerk2 * d3 * d3 > 9e-30 || std::abs(delta) > 1e-3 * tau) {
       tau = next;
       continue;
     }
@@ -487,9 +500,13 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
       we[i] = dz[i] + delta * d2z[i];
     }
     double beta[4], rate_e[4];
-    beta_rates(S, ze, beta);
-    beta[0] += 1.0;
-    beta_rates(S, we, rate_e);
+    for (int i = 0; i < 3; ++i) {
+      const double* s = S + 3 * i;
+      beta[i + 1] = s[0] * ze[0] + s[1] * ze[1] + s[2] * ze[2];
+      rate_e[i + 1] = s[0] * we[0] + s[1] * we[1] + s[2] * we[2];
+    }
+    beta[0] = 1.0 - (beta[1] + beta[2] + beta[3]);
+    rate_e[0] = -(rate_e[1] + rate_e[2] + rate_e[3]);
     for (int k = 0; k < 4; ++k) {
       if (k == face) continue;
       if (beta[k] < -kDetect) return false;                // an earlier exit elsewhere
@@ -499,12 +516,12 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
     beta[face] = 0;
     double sum = 0;
     for (int k = 0; k < 4; ++k) sum += (beta[k] = std::max(beta[k], 0.0));
-    out = ExitResult{};
+    const double inv = sum > 0 ? 1.0 / sum : 1.0;
     out.kind = ExitResult::exit;
     out.tau = next;
     out.face = face;
-    out.evaluations = evals;
-    for (int k = 0; k < 4; ++k) out.beta[k] = sum > 0 ? beta[k] / sum : beta[k];
+    out.evaluations = it + 1;
+    for (int k = 0; k < 4; ++k) out.beta[k] = beta[k] * inv;
     out.x = Vec3(out.beta[1], out.beta[2], out.beta[3]);
     return true;
   }
