@@ -203,6 +203,26 @@ CellRecord to_barycentric_frame(const TetGeometry& g, const CellRecord& world) {
   r.tau_bary = rate2 > 0 ? static_cast<float>(std::min(1.0 / std::sqrt(rate2), double{std::numeric_limits<float>::max()}))
                          : std::numeric_limits<float>::infinity();
   r.bary_frame = true;
+  // Lower bound of |v| over the cell: along the unit mean direction d of the vertex
+  // vectors, v(x).d = sum beta_k (v_k.d) >= min_k v_k.d for any point of the cell (less a
+  // margin for entry points a round-off outside). Kept as a power of two rounded down.
+  r.speed_log2 = std::numeric_limits<int8_t>::min();
+  const Vec3 sum = g.v[0] + g.v[1] + g.v[2] + g.v[3];
+  const double sum_norm = sum.norm();
+  if (sum_norm > 0 && std::isfinite(sum_norm)) {
+    const Vec3 d = sum / sum_norm;
+    double low = std::numeric_limits<double>::infinity(), high = 0;
+    for (int k = 0; k < 4; ++k) {
+      low = std::min(low, g.v[k].dot(d));
+      high = std::max(high, g.v[k].norm());
+    }
+    low -= 1e-9 * high;
+    if (low > 0 && std::isfinite(low)) {
+      int e;
+      std::frexp(low, &e);  // low >= 2^(e-1)
+      if (e - 1 >= -127) r.speed_log2 = static_cast<int8_t>(std::min(e - 1, 127));
+    }
+  }
   return r;
 }
 

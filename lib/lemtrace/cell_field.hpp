@@ -68,6 +68,10 @@ struct CellRecord {
   // Normal cells only: true when S, S^{-1} and c are in barycentric coordinates (see
   // to_barycentric_frame); false for the world-frame form classify() returns.
   bool bary_frame;
+  // bary_frame: the interpolated speed |v| is at least 2^speed_log2 everywhere in the cell
+  // (INT8_MIN: no such bound), so that the tracer's terminal-speed test reads the vertex
+  // vectors only in cells where the field may come near rest.
+  int8_t speed_log2;
   // bary_frame: the cell's time scale in barycentric units, 1 / max_k |G v_k| (a float:
   // it sets sampling steps and round-off thresholds, never a position).
   float tau_bary;
@@ -80,6 +84,9 @@ struct CellRecord {
   // normal: c = S^{-1} b. parallel: s0, mu = a.d. extraordinary: b.
   double c[3];
 };
+
+// 200 bytes: the flags and tau_bary share the first 8, so the speed bound costs nothing.
+static_assert(sizeof(CellRecord) == 200, "the per-cell record of spec §2.4");
 
 CellRecord classify(const TetGeometry& g, const ClassifyParams& params);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <thread>
 
@@ -37,15 +38,59 @@ const char* reason_name(Reason r) noexcept {
 
 namespace {
 
-void emit(Polyline& line, const Vec3& x, double t, int32_t cell, CellType type) {
-  line.x.push_back(x);
-  line.t.push_back(t);
-  line.cell.push_back(cell);
-  line.type.push_back(static_cast<uint8_t>(type));
-}
+// The vertices of the line being traced. They go to a per-thread buffer that keeps its
+// capacity from one line to the next and are copied into the Polyline once, at the exact
+// size, when the line ends (growing the Polyline's four vectors vertex by vertex
+// reallocated and copied them about log2(n) times per line). Shared by the LEM and the
+// Runge-Kutta baselines, so that output costs the same in both.
+class VertexBuffer {
+ public:
+  std::size_t size() const noexcept { return n_; }
+  void push(const Vec3& x, double t, int32_t cell, CellType type) {
+    if (n_ == x_.size()) grow();
+    x_[n_] = x;
+    t_[n_] = t;
+    cell_[n_] = cell;
+    type_[n_] = static_cast<uint8_t>(type);
+    ++n_;
+  }
+  // Hands the vertices to `line` and empties the buffer (its capacity stays).
+  void move_to(Polyline& line) {
+    const auto n = static_cast<std::ptrdiff_t>(n_);
+    line.x.assign(x_.begin(), x_.begin() + n);
+    line.t.assign(t_.begin(), t_.begin() + n);
+    line.cell.assign(cell_.begin(), cell_.begin() + n);
+    line.type.assign(type_.begin(), type_.begin() + n);
+    n_ = 0;
+  }
+
+ private:
+  void grow() {
+    const std::size_t m = std::max<std::size_t>(1024, 2 * x_.size());
+    x_.resize(m);
+    t_.resize(m);
+    cell_.resize(m);
+    type_.resize(m);
+  }
+  std::vector<Vec3> x_;
+  std::vector<double> t_;
+  std::vector<int32_t> cell_;
+  std::vector<uint8_t> type_;
+  std::size_t n_ = 0;
+};
 
 double terminal_speed(const FieldGrid& grid, const TraceOptions& o) {
   return o.terminal_speed >= 0 ? o.terminal_speed : 1e-12 * grid.max_speed();
+}
+
+// The smallest e >= -127 with 2^e > v_stop: a cell whose record bounds its speed from
+// below by 2^speed_log2 >= 2^e cannot stop a line (no bound: INT8_MIN < -127).
+int speed_threshold_log2(double v_stop) {
+  if (!(v_stop > 0)) return -127;
+  if (!std::isfinite(v_stop)) return std::numeric_limits<int>::max();
+  int e;
+  std::frexp(v_stop, &e);  // 2^(e-1) <= v_stop < 2^e
+  return std::max(e, -127);
 }
 
 // ---- locally exact method -------------------------------------------------------------
@@ -65,16 +110,31 @@ Eigen::Vector4d across_face(const Tet& from, const Tet& to, const Eigen::Vector4
   return out;
 }
 
+// The world point sum_k beta_k V_k of the tet.
+inline Vec3 tet_point(const TetMesh& mesh, const Tet& tet, const Eigen::Vector4d& b) {
+  return Vec3(b[0] * mesh.points[static_cast<std::size_t>(tet[0])] + b[1] * mesh.points[static_cast<std::size_t>(tet[1])] +
+              b[2] * mesh.points[static_cast<std::size_t>(tet[2])] + b[3] * mesh.points[static_cast<std::size_t>(tet[3])]);
+}
+
+// The interpolated field sum_k beta_k v_k of the tet.
+inline Vec3 tet_field(const TetMesh& mesh, const Tet& tet, const Eigen::Vector4d& b) {
+  return Vec3(b[0] * mesh.vectors[static_cast<std::size_t>(tet[0])] + b[1] * mesh.vectors[static_cast<std::size_t>(tet[1])] +
+              b[2] * mesh.vectors[static_cast<std::size_t>(tet[2])] + b[3] * mesh.vectors[static_cast<std::size_t>(tet[3])]);
+}
+
 void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir,
-               const TraceOptions& o, Polyline& line) {
+               const TraceOptions& o, Polyline& line, VertexBuffer& out) {
   const TetMesh& mesh = grid.mesh();
   const double v_stop = terminal_speed(grid, o);
+  const int stop_log2 = speed_threshold_log2(v_stop);
+  const bool try_fast = o.exit.predict && !o.exit.paper_newton;
+  const bool limit_length = o.max_length < std::numeric_limits<double>::infinity();
   CellRecord scratch;
   Vec3 x = seed;
   double t = t0, length = 0;
   {
     const CellRecord& rec = grid.record(cell, scratch);
-    emit(line, x, t, cell, rec.type);
+    out.push(x, t, cell, rec.type);
   }
   // The entry point's barycentric coordinates in `cell`, carried over from the previous
   // cell's exit (have_beta) so that a normal cell in the barycentric frame needs no
@@ -89,6 +149,57 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     }
     const CellRecord& rec = grid.record(cell, scratch);
     const Tet& tet = mesh.tets[static_cast<std::size_t>(cell)];
+    // The common crossing: a precomputed normal cell entered through a face, whose
+    // predicted exit (eigen coordinates, no geometry) answers. Everything else, and the
+    // rare crossing that ends the line by time or wants samples inside the cell, takes
+    // the general path below, which decides the same way.
+    if (have_beta && rec.bary_frame && try_fast) {
+      if (rec.speed_log2 < stop_log2) {
+        const double speed2 = tet_field(mesh, tet, carried).squaredNorm();
+        if (!std::isfinite(speed2)) {
+          line.reason = Reason::unexpected_value;
+          return;
+        }
+        if (speed2 <= v_stop * v_stop) {
+          line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
+          return;
+        }
+      }
+      ExitResult e;
+      if (predicted_exit_local(rec, carried, dir, e) && !(std::abs(t - t0) + e.tau > o.max_time) &&
+          o.samples_per_cell <= 1) {
+        hops = 0;
+        const Vec3 e_x = tet_point(mesh, tet, e.beta);
+        ++line.cells;
+        line.evaluations += e.evaluations;
+        if (!e_x.allFinite()) {
+          line.reason = Reason::unexpected_value;
+          return;
+        }
+        // No progress (see below): the same point again.
+        stuck = e_x == x ? stuck + 1 : 0;
+        if (stuck > 64) {
+          line.reason = Reason::unexpected_value;
+          return;
+        }
+        if (limit_length) length += (e_x - x).norm();
+        x = e_x;
+        t += dir * e.tau;
+        if (e.tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
+        if (length > o.max_length) {
+          line.reason = Reason::out_of_length;
+          return;
+        }
+        const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
+        if (next < 0) {
+          line.reason = Reason::out_of_domain;
+          return;
+        }
+        carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
+        cell = next;
+        continue;
+      }
+    }
     const bool local = rec.bary_frame;
     // Normal cells are traced in their barycentric frame (positions u = beta_{1..3}),
     // the others in world coordinates with the cell's geometry.
@@ -100,17 +211,10 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
       if (local) g = tet_geometry(mesh, cell);
       beta = g.bary(x);
     }
-    auto world = [&](const Eigen::Vector4d& b) {
-      return Vec3(b[0] * mesh.points[static_cast<std::size_t>(tet[0])] + b[1] * mesh.points[static_cast<std::size_t>(tet[1])] +
-                  b[2] * mesh.points[static_cast<std::size_t>(tet[2])] + b[3] * mesh.points[static_cast<std::size_t>(tet[3])]);
-    };
+    auto world = [&](const Eigen::Vector4d& b) { return tet_point(mesh, tet, b); };
     auto world_of_u = [&](const Vec3& u) { return world(Eigen::Vector4d(1.0 - u.sum(), u[0], u[1], u[2])); };
     // The interpolated (world) field: the speed test is the same in both frames.
-    const Vec3 v = local ? Vec3(beta[0] * mesh.vectors[static_cast<std::size_t>(tet[0])] +
-                                beta[1] * mesh.vectors[static_cast<std::size_t>(tet[1])] +
-                                beta[2] * mesh.vectors[static_cast<std::size_t>(tet[2])] +
-                                beta[3] * mesh.vectors[static_cast<std::size_t>(tet[3])])
-                         : g.interpolate(beta);
+    const Vec3 v = local ? tet_field(mesh, tet, beta) : g.interpolate(beta);
     const double speed2 = v.squaredNorm();
     if (!std::isfinite(speed2)) {
       line.reason = Reason::unexpected_value;
@@ -175,17 +279,17 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     auto position = [&](double s) { return local ? world_of_u(path_of().position(s)) : path_of().position(s); };
     if (elapsed + tau > o.max_time) {
       const double rest = o.max_time - elapsed;
-      emit(line, position(rest), t + dir * rest, cell, rec.type);
+      out.push(position(rest), t + dir * rest, cell, rec.type);
       line.reason = Reason::out_of_time;
       return;
     }
     if (o.samples_per_cell > 1 && tau > 0)
       for (int j = 1; j < o.samples_per_cell; ++j) {
         const double s = tau * j / o.samples_per_cell;
-        emit(line, position(s), t + dir * s, cell, rec.type);
+        out.push(position(s), t + dir * s, cell, rec.type);
       }
     if (e.kind != ExitResult::exit) {
-      if (e.tau > 0) emit(line, local ? world_of_u(e.x) : e.x, t + dir * e.tau, cell, rec.type);
+      if (e.tau > 0) out.push(local ? world_of_u(e.x) : e.x, t + dir * e.tau, cell, rec.type);
       line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
       return;
     }
@@ -204,7 +308,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     length += moved;
     x = e_x;
     t += dir * tau;
-    if (tau > 0 || line.x.size() == 1) emit(line, x, t, cell, rec.type);
+    if (tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
     if (length > o.max_length) {
       line.reason = Reason::out_of_length;
       return;
@@ -254,13 +358,13 @@ struct Sampler {
 };
 
 void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir, const TraceOptions& o,
-              Polyline& line) {
+              Polyline& line, VertexBuffer& out) {
   const double v_stop = terminal_speed(grid, o);
   Sampler field{grid, line, dir, cell, o.rk_cell_search};
   CellRecord scratch;
   Vec3 x = seed;
   double t = t0, length = 0;
-  emit(line, x, t, cell, grid.record(cell, scratch).type);
+  out.push(x, t, cell, grid.record(cell, scratch).type);
   double h_adapt = -1;
   // The field at the end of a step (evaluated there to see that the step stays in the
   // grid) is the next step's k1: one field evaluation per stage, as the methods count.
@@ -351,7 +455,7 @@ void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, 
     length += (next - x).norm();
     x = next;
     t += dir * h;
-    emit(line, x, t, field.cell, grid.record(field.cell, scratch).type);
+    out.push(x, t, field.cell, grid.record(field.cell, scratch).type);
     if (last) {
       line.reason = Reason::out_of_time;
       return;
@@ -365,9 +469,11 @@ void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, 
 
 Polyline trace_one(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir,
                    const TraceOptions& o) {
+  thread_local VertexBuffer out;
   Polyline line;
-  if (o.method == Method::lem) trace_lem(grid, cell, seed, t0, dir, o, line);
-  else trace_rk(grid, cell, seed, t0, dir, o, line);
+  if (o.method == Method::lem) trace_lem(grid, cell, seed, t0, dir, o, line, out);
+  else trace_rk(grid, cell, seed, t0, dir, o, line, out);
+  out.move_to(line);
   return line;
 }
 
