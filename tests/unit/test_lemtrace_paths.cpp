@@ -149,4 +149,64 @@ TEST(LemtracePaths, BarycentricFrameRecordIsTheSamePath) {
   EXPECT_GT(predicted, 100);  // random fields curve hard: the prediction declines often
 }
 
+// The tracer's common case: a normal cell entered through a face (beta_k = 0 there, the
+// path moving inwards). Wherever the predicted exit answers, it is the general search's
+// exit (face, time, point) in world coordinates, on cells of both normal types, on
+// curved paths (the rotation grid, where faces are grazed) and on a random field.
+TEST(LemtracePaths, PredictedExitFromFaceEntriesIsTheGeneralSearchs) {
+  GenOptions rot;
+  rot.kind = "rotation";
+  rot.n = 5;
+  rot.jitter = 0.25;
+  rot.seed = 3;
+  GeneratedGrid gr = generate(rot);
+  const FieldGrid grids[2] = {random_field_grid(21, 5),
+                              FieldGrid(build_tet_mesh(gr.points, gr.vectors, gr.cells, BuildOptions{}, nullptr),
+                                        ClassifyParams{}, Precompute::lazy, 1)};
+  std::mt19937_64 rng(22);
+  std::uniform_real_distribution<double> w(0.0, 1.0);
+  int tried[4] = {0, 0, 0, 0}, answered[4] = {0, 0, 0, 0};
+  for (const FieldGrid& grid : grids) {
+    for (std::size_t c = 0; c < grid.mesh().tets.size(); ++c) {
+      const TetGeometry g = tet_geometry(grid.mesh(), static_cast<int32_t>(c));
+      const CellRecord world = classify(g, grid.params());
+      if (world.type != CellType::normal_real && world.type != CellType::normal_complex) continue;
+      const CellRecord local = to_barycentric_frame(g, world);
+      const int type = static_cast<int>(world.type);
+      for (int k = 0; k < 4; ++k) {
+        Eigen::Vector4d beta(0.02 + w(rng), 0.02 + w(rng), 0.02 + w(rng), 0.02 + w(rng));
+        beta[k] = 0;
+        beta /= beta.sum();
+        const Vec3 x0 = g.point(beta);
+        for (double dir : {1.0, -1.0}) {
+          // Entries only: the path moves into the cell through face k.
+          if (!(dir * g.bary_rate(g.interpolate(beta))[k] > 0)) continue;
+          ++tried[type];
+          ExitResult fast;
+          if (!predicted_exit_local(local, beta, dir, fast)) continue;
+          ++answered[type];
+          const CellPath pw(world, x0, dir);
+          const ExitResult ref = find_exit(g, pw, ExitParams{});
+          ASSERT_EQ(ref.kind, ExitResult::exit);
+          EXPECT_EQ(fast.face, ref.face) << "cell " << c;
+          // The general search stops within eps_N tau_T of the root: short exits compare
+          // on the cell's time scale.
+          EXPECT_NEAR(fast.tau, ref.tau, 1e-10 * std::max(ref.tau, g.transit_time())) << "cell " << c;
+          EXPECT_LE((g.point(fast.beta) - ref.x).norm(), 1e-10 * g.h_min) << "cell " << c;
+          EXPECT_EQ(fast.beta[fast.face], 0.0);
+          EXPECT_GE(fast.beta.minCoeff(), 0.0);
+        }
+      }
+    }
+  }
+  for (CellType t : {CellType::normal_real, CellType::normal_complex}) {
+    const int i = static_cast<int>(t);
+    // Random vertex vectors make the field turn hard inside one cell: there most
+    // declines are crossings longer than the step bound 0.25 / rate, which the bracket
+    // search takes (declines on smooth data: the bench's evaluations per cell).
+    EXPECT_GT(tried[i], 1000) << cell_type_name(t);
+    EXPECT_GT(answered[i], 200) << cell_type_name(t) << ": " << answered[i] << " of " << tried[i];
+  }
+}
+
 }  // namespace
