@@ -372,16 +372,33 @@ double UnitGeometry::transit_time() const {
   return v_max > 0 ? h_min / v_max : std::numeric_limits<double>::infinity();
 }
 
+namespace {
+
+// The four barycentric rates S4 a and S4 b of two eigen-space vectors at once, S4 =
+// [-(column sums of S_u); S_u] (beta_0' = -sum): each row of S_u times the pair, one
+// vector per SSE2 lane (Array2d), so that the row-major record needs no transpose.
+inline void rates2(const double* S, const double a[3], const double b[3], double ra[4], double rb[4]) {
+  using Pair = Eigen::Array2d;
+  const Pair x(a[0], b[0]), y(a[1], b[1]), z(a[2], b[2]);
+  const Pair r1 = S[0] * x + S[1] * y + S[2] * z;
+  const Pair r2 = S[3] * x + S[4] * y + S[5] * z;
+  const Pair r3 = S[6] * x + S[7] * y + S[8] * z;
+  const Pair r0 = -(r1 + r2 + r3);
+  ra[0] = r0[0], ra[1] = r1[0], ra[2] = r2[0], ra[3] = r3[0];
+  rb[0] = r0[1], rb[1] = r1[1], rb[2] = r2[1], rb[3] = r3[1];
+}
+
+}  // namespace
+
 // The predicted exit in eigen coordinates, written out for one crossing per call: dir
 // Lambda is folded into one 2x2 block and a scalar (the real case has zeros off the
-// diagonal, so both types run the same straight-line code); the four barycentric rates
-// are one 4x3 product S4 w with S4 = [-(column sums of S_u); S_u], done on all four faces
-// at once (Array4d: two SSE2 lanes per instruction); the step bound 0.25 / rate is
+// diagonal, so both types run the same straight-line code); the barycentric rates of
+// two eigen-space vectors are computed together (rates2: one per SSE2 lane); the step
+// bound 0.25 / rate is
 // compared squared; the face quadratics take one square root and one division each in
 // the form that does not cancel; and the closed form is the inline polynomial kernel
 // (|lambda s| <= 0.25 here, so no exp, expm1 or sin/cos).
 bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in, double dir, ExitResult& out) {
-  using Eigen::Array4d;
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double* S = rec.S;
   const double* Si = rec.Sinv;
@@ -401,15 +418,18 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
   const double w1[3] = {m00 * z0[0] + m01 * z0[1] + dc0, m10 * z0[0] + m11 * z0[1] + dc1, l2 * z0[2] + dc2};
   const double w2[3] = {m00 * w1[0] + m01 * w1[1], m10 * w1[0] + m11 * w1[1], l2 * w1[2]};
   const double w3[3] = {m00 * w2[0] + m01 * w2[1], m10 * w2[0] + m11 * w2[1], l2 * w2[2]};
-  // Columns of S4: beta_k' = S4.row(k) w for all four faces.
-  const Array4d s0(-(S[0] + S[3] + S[6]), S[0], S[3], S[6]);
-  const Array4d s1(-(S[1] + S[4] + S[7]), S[1], S[4], S[7]);
-  const Array4d s2(-(S[2] + S[5] + S[8]), S[2], S[5], S[8]);
-  auto rates = [&](const double w[3]) -> Array4d { return s0 * w[0] + s1 * w[1] + s2 * w[2]; };
-  const Array4d r = rates(w1), q = rates(w2), jr = rates(w3);
+  // Barycentric rates of all four faces: r = S4 w1 and q = S4 w2 (two lanes), and the
+  // third derivatives jr = S4 w3.
+  double r[4], q[4], jr[4];
+  rates2(S, w1, w2, r, q);
+  jr[1] = S[0] * w3[0] + S[1] * w3[1] + S[2] * w3[2];
+  jr[2] = S[3] * w3[0] + S[4] * w3[1] + S[5] * w3[2];
+  jr[3] = S[6] * w3[0] + S[7] * w3[1] + S[8] * w3[2];
+  jr[0] = -(jr[1] + jr[2] + jr[3]);
   const double speed2 = r[1] * r[1] + r[2] * r[2] + r[3] * r[3];
   const double tiny = 1e-13 / tauT;  // a rate of beta at round-off (UnitGeometry: h = 1)
-  const Array4d c = beta_in.array().max(0.0);
+  double c[4];
+  for (int k = 0; k < 4; ++k) c[k] = std::max(beta_in[k], 0.0);
   // On a face (the entry face, an edge, a vertex) the path must clearly move inwards, or
   // move within the face's plane (no hop of the edge/vertex rule pending; the general
   // search decides those). A face in whose plane the path moves has no exit.
@@ -428,19 +448,18 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
   // the path moves away from with non-negative curvature has none; an approaching face
   // (r < 0) has 2 c / (sqrt(disc) - r) if disc >= 0; a receding face that curves back
   // (r >= 0 > q) has (r + sqrt(disc)) / -q (disc >= r^2 there).
-  const Array4d disc = r * r - 2 * q * c;
-  const Array4d root = disc.max(0.0).sqrt();
-  const Array4d t_in = 2 * c / (root - r), t_back = (r + root) / -q;
   double tau = inf;
   int face = -1;
   for (int k = 0; k < 4; ++k) {
+    const double ck = c[k], rk = r[k], qk = q[k];
+    if (in_plane[k] || (rk >= 0 && qk >= 0)) continue;
+    const double disc = rk * rk - 2 * qk * ck;
     double t;
-    if (in_plane[k] || (r[k] >= 0 && q[k] >= 0)) continue;
-    if (r[k] < 0) {
-      if (disc[k] < 0) continue;
-      t = t_in[k];
+    if (rk < 0) {
+      if (disc < 0) continue;
+      t = 2 * ck / (std::sqrt(disc) - rk);
     } else {
-      t = t_back[k];
+      t = (rk + std::sqrt(disc)) / -qk;
     }
     if (t < tau) {
       tau = t;
@@ -464,8 +483,17 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
   const double horizon = 64 * tauT;
   auto within_cap = [&](double t) { return t < horizon && t * t * rate2 < 0.0625; };
   if (!within_cap(tau)) return false;
-  // The chosen face's row of S4 (beta_0 has the constant 1 besides, `off`).
-  const double row[3] = {s0[face], s1[face], s2[face]};
+  // Row k of S4: a row of S_u, or minus the column sums for beta_0.
+  auto row_of = [S](int k, double out3[3]) {
+    if (k > 0) {
+      out3[0] = S[3 * k - 3], out3[1] = S[3 * k - 2], out3[2] = S[3 * k - 1];
+    } else {
+      out3[0] = -(S[0] + S[3] + S[6]), out3[1] = -(S[1] + S[4] + S[7]), out3[2] = -(S[2] + S[5] + S[8]);
+    }
+  };
+  // The chosen face's row (beta_0 has the constant 1 besides, `off`).
+  double row[3];
+  row_of(face, row);
   const double off = face == 0 ? 1.0 : 0.0;
   const double jerk2 = jr[1] * jr[1] + jr[2] * jr[2] + jr[3] * jr[3];
   // A lower bound of beta_k over [0, T] (T within the step bound): the minimum of its
@@ -478,8 +506,10 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
     const double ck = c[k], rk = r[k], qk = q[k];
     double low = std::min(ck, ck + T * (rk + 0.5 * T * qk));
     if (qk > 0 && -rk < qk * T) low = std::min(low, ck - rk * rk / (2 * qk));
-    const double block = std::sqrt((s0[k] * s0[k] + s1[k] * s1[k]) * (w3[0] * w3[0] + w3[1] * w3[1]));
-    const double d3 = 1.2841 * (block + std::abs(s2[k] * w3[2]));
+    double rk4[3];
+    row_of(k, rk4);
+    const double block = std::sqrt((rk4[0] * rk4[0] + rk4[1] * rk4[1]) * (w3[0] * w3[0] + w3[1] * w3[1]));
+    const double d3 = 1.2841 * (block + std::abs(rk4[2] * w3[2]));
     return low - d3 * T * T * T / 6;
   };
   for (int it = 0; it < 3; ++it) {
@@ -508,9 +538,9 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
       ze[i] = z[i] + delta * (dz[i] + 0.5 * delta * d2z[i]);
       we[i] = dz[i] + delta * d2z[i];
     }
-    Array4d beta = rates(ze);
+    double beta[4], rate_e[4];
+    rates2(S, ze, we, beta, rate_e);
     beta[0] += 1.0;
-    const Array4d rate_e = rates(we);
     for (int k = 0; k < 4; ++k) {
       if (k == face) continue;
       if (beta[k] < -kDetect) return false;  // an earlier exit elsewhere
@@ -520,14 +550,14 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
     }
     // Snap onto the face as finish() does.
     beta[face] = 0;
-    beta = beta.max(0.0);
-    const double sum = beta.sum();
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) sum += (beta[k] = std::max(beta[k], 0.0));
     const double inv = sum > 0 ? 1.0 / sum : 1.0;
     out.kind = ExitResult::exit;
     out.tau = next;
     out.face = face;
     out.evaluations = it + 1;
-    out.beta = (beta * inv).matrix();
+    for (int k = 0; k < 4; ++k) out.beta[k] = beta[k] * inv;
     out.x = Vec3(out.beta[1], out.beta[2], out.beta[3]);
     return true;
   }
