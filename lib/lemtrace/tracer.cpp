@@ -46,6 +46,8 @@ namespace {
 class VertexBuffer {
  public:
   std::size_t size() const noexcept { return n_; }
+  // Starts a line (also after a line that ended by an exception).
+  void clear() noexcept { n_ = 0; }
   void push(const Vec3& x, double t, int32_t cell, CellType type) {
     if (n_ == x_.size()) grow();
     x_[n_] = x;
@@ -469,7 +471,10 @@ void trace_rk(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, 
 
 Polyline trace_one(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0, double dir,
                    const TraceOptions& o) {
+  // One buffer per thread; it holds on to the memory of the longest line the thread has
+  // traced (at most --max-steps vertices).
   thread_local VertexBuffer out;
+  out.clear();
   Polyline line;
   if (o.method == Method::lem) trace_lem(grid, cell, seed, t0, dir, o, line, out);
   else trace_rk(grid, cell, seed, t0, dir, o, line, out);

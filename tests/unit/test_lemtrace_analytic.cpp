@@ -146,6 +146,47 @@ TEST(LemtraceAnalytic, PrecomputeModesGiveIdenticalPaths) {
   }
 }
 
+// The tracer's straight path for the common crossing (predicted exit, speed bound from
+// the record, length only when limited) against the general path alone (--root bracket
+// without the prediction): the same cells, the same termination, points that agree to
+// round-off of the exit search, and both on the analytic path. The node field's sink
+// makes the terminal-speed test stop the line; the length limit and both directions go
+// through the same code.
+TEST(LemtraceAnalytic, FastCrossingMatchesTheGeneralPath) {
+  const Case cases[] = {{"helix", Vec3(0.5, 0.1, -0.9)}, {"rotation", Vec3(0.55, 0.1, 0.13)},
+                        {"spiral", Vec3(0.7, 0.2, -0.5)}, {"saddle", Vec3(0.05, 0.7, 0.2)},
+                        {"node", Vec3(0.8, 0.7, -0.6)}};
+  for (const Case& c : cases) {
+    bool linear = false;
+    const LinearField f = linear_kind(c.kind, &linear);
+    const FieldGrid grid = make_grid(c.kind, 6, 0.2, false, Precompute::all);
+    for (int variant = 0; variant < 3; ++variant) {
+      TraceOptions fast;
+      fast.max_time = 12;
+      if (variant == 1) fast.max_length = 1.0;
+      if (variant == 2) fast.direction = Direction::both;
+      if (std::string(c.kind) == "node") fast.terminal_speed = 0.02;
+      TraceOptions general = fast;
+      general.exit.predict = false;
+      const Polyline a = trace(grid, c.seed, 0, fast), b = trace(grid, c.seed, 0, general);
+      EXPECT_EQ(a.reason, b.reason) << c.kind << " " << variant;
+      if (std::string(c.kind) == "node" && variant == 0) {
+        EXPECT_TRUE(a.reason == Reason::stagnation || a.reason == Reason::critical_point) << reason_name(a.reason);
+      }
+      if (variant == 1 && std::string(c.kind) != "node") {
+        EXPECT_EQ(a.reason, Reason::out_of_length) << c.kind;
+      }
+      EXPECT_EQ(a.cells, b.cells) << c.kind << " " << variant;
+      ASSERT_EQ(a.x.size(), b.x.size()) << c.kind << " " << variant;
+      for (std::size_t i = 0; i < a.x.size(); ++i) {
+        EXPECT_EQ(a.cell[i], b.cell[i]) << c.kind << " " << i;
+        EXPECT_LE((a.x[i] - b.x[i]).norm(), 1e-11) << c.kind << " " << i;
+        EXPECT_LE((a.x[i] - analytic(f, c.seed, a.t[i])).norm(), 1e-10) << c.kind << " " << i;
+      }
+    }
+  }
+}
+
 TEST(LemtraceAnalytic, PaperNewtonAgreesWithBracket) {
   bool linear = false;
   const LinearField f = linear_kind("saddle", &linear);
