@@ -394,10 +394,9 @@ inline void rates2(const double* S, const double a[3], const double b[3], double
 // Lambda is folded into one 2x2 block and a scalar (the real case has zeros off the
 // diagonal, so both types run the same straight-line code); the barycentric rates of
 // two eigen-space vectors are computed together (rates2: one per SSE2 lane); the step
-// bound 0.25 / rate is
-// compared squared; the face quadratics take one square root and one division each in
-// the form that does not cancel; and the closed form is the inline polynomial kernel
-// (|lambda s| <= 0.25 here, so no exp, expm1 or sin/cos).
+// bound 0.25 / rate is compared squared; the face quadratics take one square root and
+// one division each in the form that does not cancel; and the closed form is the inline
+// polynomial kernel (|lambda s| <= 0.25 here, so no exp, expm1 or sin/cos).
 bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in, double dir, ExitResult& out) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double* S = rec.S;

@@ -63,8 +63,10 @@ ExitResult find_exit(const UnitGeometry& g, const CellPath& path, const ExitPara
 // derivative is a product with Lambda, and each barycentric coordinate is one row of S_u
 // applied to z (beta_0 = 1 - the sum), so one crossing costs one change of basis in,
 // one closed-form evaluation (no matrix product) and one change of basis out. The rules
-// are those of the general search's prediction; false when it must decide (the caller
-// then runs find_exit on a UnitGeometry). `beta` is the entry point, out.x is u.
+// are those of the general search's prediction, except that a face grazed between entry
+// and exit is kept when a rigorous lower bound of its beta over the step stays >= 0;
+// false when the general search must decide (the caller then runs find_exit on a
+// UnitGeometry). `beta` is the entry point, out.x is u.
 bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta, double dir, ExitResult& out);
 
 }  // namespace fest::lemtrace
