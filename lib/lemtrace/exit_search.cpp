@@ -520,8 +520,8 @@ bool predicted_exit_local(const CellRecord& rec, const Eigen::Vector4d& beta_in,
     const double df = row[0] * dz[0] + row[1] * dz[1] + row[2] * dz[2];
     const double d2f = row[0] * d2z[0] + row[1] * d2z[1] + row[2] * d2z[2];
     if (!std::isfinite(f) || !(df < 0)) return false;
-    double delta = -f / df;
-    delta = -f / (df + 0.5 * d2f * delta);
+    // Halley: -f / (df - d2f f / (2 df)), written with one division.
+    const double delta = -f * df / (df * df - 0.5 * d2f * f);
     const double next = tau + delta;
     if (!(next > 0) || !within_cap(next)) return false;
     // The third derivative along the step stays within a small factor of its entry
