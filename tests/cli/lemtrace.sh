@@ -160,7 +160,7 @@ check "cell arrays" grep -q 'Name="LemType"' "$WORK/cells.vtu"
 case_ "bench: the table of methods"
 run lemtrace bench "$WORK/helix.vtu" "$WORK/seeds.csv"
 expect_status 0
-check "eight rows" test "$(wc -l <"$out")" -eq 9
+check "eleven rows" test "$(wc -l <"$out")" -eq 12
 check "LEM error <= 1e-10" awk -F, '$1 == "lem_precomputed" { exit !($5 <= 1e-10) }' "$out"
 
 # Table 9.4 on the chapter's sphere data, checked on counts, not on wall time (the
@@ -187,6 +187,8 @@ check "RK stages per step" awk -F, '
   END { exit !(e && h && r3 && r4) }' "$out"
 check "RK locates at least once per evaluation" \
   awk -F, '$1 ~ /^(euler|heun|rk3|rk4)$/ && $4 < $3 * $8 { exit 1 }' "$out"
+check "the chapter's loop: one cell search per evaluation" \
+  awk -F, '$1 ~ /_cell_search$/ { n++; if ($4 < $3 * $8 || $4 > $3 * $8 + 16) exit 1 } END { exit !(n == 4) }' "$out"
 check "LEM exact, RK4 not (analytic circle)" \
   awk -F, '$1 == "lem_precomputed" { l = $5 } $1 == "rk4" { r = $5 } END { exit !(l <= 1e-12 && r > 1e-9) }' "$out"
 
