@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/mesh.hpp"
+#include "terrainlod/collapse_check.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -152,7 +153,7 @@ class CollapseEngine {
       const auto heh = m_.find_halfedge(v, w);
       // The link condition can change without v's star changing (a collapse next to w);
       // the error of the collapse cannot, as it depends on v's star and w's position only.
-      if (!heh.is_valid() || !m_.is_collapse_ok(heh)) {
+      if (!heh.is_valid() || !check_.collapse_ok(m_, heh)) {
         refresh(v);
         continue;
       }
@@ -187,6 +188,7 @@ class CollapseEngine {
     for (const auto& t : start.triangles)
       m_.add_face(TriMesh::VertexHandle(t[0]), TriMesh::VertexHandle(t[1]), TriMesh::VertexHandle(t[2]));
     locked_ = locked;
+    check_ = CollapseCheck(m_.n_vertices());
     version_.assign(m_.n_vertices(), 0);
     dirty_.assign(m_.n_vertices(), 0);
     live_.assign(m_.n_vertices(), 0);
@@ -199,7 +201,7 @@ class CollapseEngine {
   // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
   // `stop` (<= the bound: a candidate worse than the best one found so far need not be
   // measured to the end).
-  double collapse_cost(TriMesh::HalfedgeHandle heh, double stop) {  // non-const: OpenMesh's is_collapse_ok is
+  double collapse_cost(TriMesh::HalfedgeHandle heh, double stop) {  // non-const: the link check keeps marks
     const auto v = m_.from_vertex_handle(heh), w = m_.to_vertex_handle(heh);
     if (locked_[v.idx()]) return kInfinite;
     // Border vertices slide along their border only: the edge must be a border edge.
@@ -239,7 +241,7 @@ class CollapseEngine {
       worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner, stop));
       if (worst > stop) return kInfinite;
     }
-    if (!m_.is_collapse_ok(heh)) return kInfinite;
+    if (!check_.collapse_ok(m_, heh)) return kInfinite;
     return worst;
   }
 
@@ -374,6 +376,7 @@ class CollapseEngine {
   TriangleErrorCache cache_;       // per triangle (three vertex ids)
   TriangleErrorCache edge_cache_;  // per edge (two vertex ids)
   std::vector<TriMesh::VertexHandle> ring_;
+  CollapseCheck check_{0};
 };
 
 }  // namespace
