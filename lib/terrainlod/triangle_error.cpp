@@ -2,102 +2,67 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace fest::terrainlod {
 namespace {
 
-// The reference on the overlay's breakpoints along an edge. Each family of lines meets the
-// finest triangulation in a known place, so the reference there is a 1-D interpolation
-// between two samples (no point location): on x = k the grid column, on y = k the grid
-// row, on x + y = k and x - y = k the cell diagonal -- where the cell has that diagonal;
-// elsewhere the reference is linear across the line and the point is no breakpoint.
-struct EdgeWalk {
-  const ReferenceSurface& ref;
-  const GridPoint& p;
-  const GridPoint& q;
-  double stop_above;
-  double worst = 0;
+// Index of the cell holding coordinate x along an axis of n samples: floor(x) clamped to
+// [0, n - 2]. Truncation is floor for x >= 0, and for -1 < x < 0 both clamp to 0: points on
+// segments between grid points are never further outside (a rounding at most).
+inline int cell_of(double x, int n) { return std::clamp(static_cast<int>(x), 0, n - 2); }
 
-  // Visits the crossings of p -> q with s(x, y) = k for integers k strictly between s(p)
-  // and s(q); `reference(x, y, k)` returns the reference at the crossing or NaN when the
-  // crossing is no breakpoint. Returns false once the error exceeds stop_above.
-  template <typename S, typename R>
-  bool family(S s, R reference) {
-    const double sp = s(p.x, p.y), sq = s(q.x, q.y);
-    if (sp == sq) return true;
-    const double lo = std::min(sp, sq), hi = std::max(sp, sq), inv = 1 / (sq - sp);
-    for (double k = std::floor(lo) + 1; k < hi; k += 1) {
-      const double t = (k - sp) * inv;
-      const double x = p.x + t * (q.x - p.x), y = p.y + t * (q.y - p.y);
-      const double r = reference(x, y, k);
-      if (std::isnan(r)) continue;
-      worst = std::max(worst, std::abs(p.z + t * (q.z - p.z) - r));
-      if (worst > stop_above) return false;
-    }
-    return true;
+// floor(num / den) for den > 0.
+inline long long floor_div(long long num, long long den) {
+  const long long q = num / den;
+  return (num % den != 0 && num < 0) ? q - 1 : q;
+}
+
+// The x of an edge P -> Q (integer end points, P.y < Q.y) on successive rows j, as exact
+// floor and ceiling: one division per edge, not per row.
+struct RowCrossing {
+  long long fl = 0, rem = 0;      // x(j) = fl + rem / den, 0 <= rem < den
+  long long step_q = 0, step_r = 0, den = 1;
+  void start(const GridPoint& p, const GridPoint& q, long long j) {
+    den = static_cast<long long>(q.y - p.y);
+    const long long dx = static_cast<long long>(q.x - p.x), num = (j - static_cast<long long>(p.y)) * dx;
+    const long long f = floor_div(num, den);
+    fl = static_cast<long long>(p.x) + f;
+    rem = num - f * den;
+    step_q = floor_div(dx, den);
+    step_r = dx - step_q * den;
   }
-
-  int cell_x(double x) const { return std::clamp(static_cast<int>(std::floor(x)), 0, ref.width() - 2); }
-  int cell_y(double y) const { return std::clamp(static_cast<int>(std::floor(y)), 0, ref.height() - 2); }
-
-  double run() {
-    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-    const bool ok =
-        family([](double x, double) { return x; },
-               [&](double, double y, double k) {
-                 const int i = static_cast<int>(k), j = cell_y(y);
-                 const double h0 = ref.sample(i, j);
-                 return h0 + (y - j) * (ref.sample(i, j + 1) - h0);
-               }) &&
-        family([](double, double y) { return y; },
-               [&](double x, double, double k) {
-                 const int j = static_cast<int>(k), i = cell_x(x);
-                 const double h0 = ref.sample(i, j);
-                 return h0 + (x - i) * (ref.sample(i + 1, j) - h0);
-               }) &&
-        family([](double x, double y) { return x + y; },
-               [&](double x, double, double k) {
-                 // Cell (i, j) with i + j + 1 = k holds the NW-SE diagonal x + y = k.
-                 const int i = cell_x(x), j = static_cast<int>(k) - 1 - i;
-                 if (j < 0 || j > ref.height() - 2 || ref.ne_diagonal(i, j)) return kNone;
-                 const double h0 = ref.sample(i, j + 1);
-                 return h0 + (x - i) * (ref.sample(i + 1, j) - h0);
-               }) &&
-        family([](double x, double y) { return x - y; },
-               [&](double x, double, double k) {
-                 // Cell (i, j) with i - j = k holds the SW-NE diagonal x - y = k.
-                 const int i = cell_x(x), j = i - static_cast<int>(k);
-                 if (j < 0 || j > ref.height() - 2 || !ref.ne_diagonal(i, j)) return kNone;
-                 const double h0 = ref.sample(i, j);
-                 return h0 + (x - i) * (ref.sample(i + 1, j + 1) - h0);
-               });
-    (void)ok;
-    return worst;
+  long long floor() const { return fl; }
+  long long ceil() const { return fl + (rem != 0); }
+  void next_row() {
+    fl += step_q;
+    rem += step_r;
+    if (rem >= den) rem -= den, ++fl;
   }
 };
 
-}  // namespace
-
-double edge_error(const ReferenceSurface& ref, const GridPoint& p, const GridPoint& q, double stop_above) {
-  return EdgeWalk{ref, p, q, stop_above}.run();
+// Integer coordinates small enough for exact 64-bit products (every engine triangle: its
+// vertices are DEM samples).
+inline bool lattice_point(const GridPoint& p) {
+  constexpr double kMax = 1 << 24;
+  return std::abs(p.x) < kMax && std::abs(p.y) < kMax && p.x == static_cast<double>(static_cast<long long>(p.x)) &&
+         p.y == static_cast<double>(static_cast<long long>(p.y));
 }
 
-double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, const GridPoint& b,
-                              const GridPoint& c, double stop_above) {
+// The samples part for any vertex coordinates: each row's span from the three edges,
+// widened by a hair (the general form of the lattice path below).
+double samples_error_any(const ReferenceSurface& ref, const GridPoint& a, const GridPoint& b, const GridPoint& c,
+                         double stop_above) {
   const double d = twice_area(a, b, c);
   const int x0 = static_cast<int>(std::ceil(std::min({a.x, b.x, c.x})));
   const int x1 = static_cast<int>(std::floor(std::max({a.x, b.x, c.x})));
   const int y0 = static_cast<int>(std::ceil(std::min({a.y, b.y, c.y})));
   const int y1 = static_cast<int>(std::floor(std::max({a.y, b.y, c.y})));
-  // The triangle's plane z = gx x + gy y + g0 for the samples strictly inside a row's span.
   const double gx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / d;
   const double gy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / d;
   const double g0 = a.z - gx * a.x - gy * a.y;
   double worst = 0;
-  // Samples inside or on the triangle, row by row over the span the edges cut from the
-  // row (widened by a hair). Only the span's end samples can lie outside; they are decided
-  // by the exact edge functions (exact in double for integer points).
   const GridPoint* v[3] = {&a, &b, &c};
   auto corner_check = [&](int i, int j) {
     const GridPoint p{static_cast<double>(i), static_cast<double>(j), 0};
@@ -128,6 +93,125 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
     if (i1 > i0) corner_check(i1, j);
     const double row = gy * j + g0;
     for (int i = i0 + 1; i < i1; ++i) worst = std::max(worst, std::abs(gx * i + row - ref.sample(i, j)));
+    if (worst > stop_above) return worst;
+  }
+  return worst;
+}
+
+}  // namespace
+
+// The reference on the overlay's breakpoints along an edge. Each family of lines meets the
+// finest triangulation in a known place, so the reference there is a 1-D interpolation
+// between two samples (no point location): on x = k the grid column, on y = k the grid
+// row, on x + y = k and x - y = k the cell diagonal -- where the cell has that diagonal;
+// elsewhere the reference is linear across the line and the point is no breakpoint.
+// Crossing k of a family s(x, y) = k lies at t = (k - s(p)) / (s(q) - s(p)) along p -> q.
+double edge_error(const ReferenceSurface& ref, const GridPoint& p, const GridPoint& q, double stop_above) {
+  const HeightGrid& grid = ref.grid();
+  const double* h = grid.h.data();
+  const std::ptrdiff_t w = grid.width;
+  const int nx = grid.width, ny = grid.height;
+  const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
+  double worst = 0;
+  // Visits k = the integers strictly between sp and sq; `at(k, t)` returns false once the
+  // error exceeds stop_above.
+  auto family = [&](double sp, double sq, auto&& at) {
+    if (sp == sq) return true;
+    const double lo = std::min(sp, sq), hi = std::max(sp, sq), inv = 1 / (sq - sp);
+    for (double k = std::floor(lo) + 1; k < hi; k += 1)
+      if (!at(k, (k - sp) * inv)) return false;
+    return true;
+  };
+  auto visit = [&](double t, double r) {
+    worst = std::max(worst, std::abs(p.z + t * dz - r));
+    return worst <= stop_above;
+  };
+  const bool ok =
+      family(p.x, q.x,
+             [&](double k, double t) {  // grid column i = k
+               const double y = p.y + t * dy;
+               const int i = static_cast<int>(k), j = cell_of(y, ny);
+               const double* c = h + j * w + i;
+               return visit(t, c[0] + (y - j) * (c[w] - c[0]));
+             }) &&
+      family(p.y, q.y,
+             [&](double k, double t) {  // grid row j = k
+               const double x = p.x + t * dx;
+               const int j = static_cast<int>(k), i = cell_of(x, nx);
+               const double* c = h + j * w + i;
+               return visit(t, c[0] + (x - i) * (c[1] - c[0]));
+             }) &&
+      family(p.x + p.y, q.x + q.y,
+             [&](double k, double t) {  // cell (i, j) with i + j + 1 = k holds the NW-SE diagonal
+               const double x = p.x + t * dx;
+               const int i = cell_of(x, nx), j = static_cast<int>(k) - 1 - i;
+               if (j < 0 || j > ny - 2 || ref.ne_diagonal(i, j)) return true;
+               const double* c = h + j * w + i;
+               return visit(t, c[w] + (x - i) * (c[1] - c[w]));
+             }) &&
+      family(p.x - p.y, q.x - q.y, [&](double k, double t) {  // cell (i, j) with i - j = k holds SW-NE
+        const double x = p.x + t * dx;
+        const int i = cell_of(x, nx), j = i - static_cast<int>(k);
+        if (j < 0 || j > ny - 2 || !ref.ne_diagonal(i, j)) return true;
+        const double* c = h + j * w + i;
+        return visit(t, c[0] + (x - i) * (c[w + 1] - c[0]));
+      });
+  (void)ok;
+  return worst;
+}
+
+double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, const GridPoint& b,
+                              const GridPoint& c, double stop_above) {
+  if (!lattice_point(a) || !lattice_point(b) || !lattice_point(c) || (a.y == b.y && b.y == c.y))
+    return samples_error_any(ref, a, b, c, stop_above);
+  const double d = twice_area(a, b, c);
+  const int x0 = static_cast<int>(std::min({a.x, b.x, c.x})), x1 = static_cast<int>(std::max({a.x, b.x, c.x}));
+  // The triangle's plane z = gx x + gy y + g0 for the samples strictly inside a row's span.
+  const double gx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / d;
+  const double gy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / d;
+  const double g0 = a.z - gx * a.x - gy * a.y;
+  const HeightGrid& grid = ref.grid();
+  double worst = 0;
+  // The span's end samples can lie on an edge: decided and interpolated by the exact edge
+  // functions (exact in double for integer points), as the general path does.
+  auto corner_check = [&](int i, int j) {
+    const GridPoint p{static_cast<double>(i), static_cast<double>(j), 0};
+    const double wa = twice_area(p, b, c), wb = twice_area(a, p, c), wc = twice_area(a, b, p);
+    if (wa < 0 || wb < 0 || wc < 0) return;
+    const double z = (wa * a.z + wb * b.z + wc * c.z) / d;
+    worst = std::max(worst, std::abs(z - grid.at(i, j)));
+  };
+  // Rows from the lowest vertex to the highest: the span runs from the long edge (lowest to
+  // highest) to the lower short edge below the middle vertex and the upper one from it on
+  // (both give the middle vertex's x on its row, as does a horizontal edge's end there).
+  const GridPoint *lo = &a, *mid = &b, *hi = &c;
+  if (mid->y < lo->y) std::swap(lo, mid);
+  if (hi->y < mid->y) std::swap(mid, hi);
+  if (mid->y < lo->y) std::swap(lo, mid);
+  const int y0 = static_cast<int>(lo->y), ym = static_cast<int>(mid->y), y1 = static_cast<int>(hi->y);
+  RowCrossing long_edge, lower, upper;
+  long_edge.start(*lo, *hi, y0);
+  if (y0 < ym) lower.start(*lo, *mid, y0);
+  if (ym < y1) upper.start(*mid, *hi, ym);
+  for (int j = y0; j <= y1; ++j) {
+    long long sf = static_cast<long long>(mid->x), sc = sf;
+    if (j < ym) {
+      sf = lower.floor(), sc = lower.ceil();
+      lower.next_row();
+    } else if (ym < y1) {
+      sf = upper.floor(), sc = upper.ceil();
+      upper.next_row();
+    }
+    const long long lf = long_edge.floor(), lc = long_edge.ceil();
+    long_edge.next_row();
+    const int i0 = static_cast<int>(std::max<long long>(x0, std::min(lc, sc)));
+    const int i1 = static_cast<int>(std::min<long long>(x1, std::max(lf, sf)));
+    if (i0 > i1) continue;
+    corner_check(i0, j);
+    if (i1 > i0) corner_check(i1, j);
+    const double row = gy * j + g0;
+    const double* hr = grid.h.data() + static_cast<std::ptrdiff_t>(j) * grid.width;
+    for (int i = i0 + 1; i < i1; ++i) worst = std::max(worst, std::abs(gx * i + row - hr[i]));
     if (worst > stop_above) return worst;
   }
   return worst;
