@@ -16,10 +16,8 @@ bool both_other_edges_on_boundary(const TriMesh& m, TriMesh::HalfedgeHandle h, T
 }  // namespace
 
 bool CollapseCheck::collapse_ok(const TriMesh& m, TriMesh::HalfedgeHandle v0v1) {
-  if (m.status(m.edge_handle(v0v1)).deleted()) return false;
   const auto v1v0 = m.opposite_halfedge_handle(v0v1);
   const auto v0 = m.to_vertex_handle(v1v0), v1 = m.to_vertex_handle(v0v1);
-  if (m.status(v0).deleted() || m.status(v1).deleted()) return false;
   TriMesh::VertexHandle vl, vr;  // invalid on a boundary side
   if (!m.is_boundary(v0v1) && both_other_edges_on_boundary(m, v0v1, vl)) return false;
   if (!m.is_boundary(v1v0) && both_other_edges_on_boundary(m, v1v0, vr)) return false;

@@ -2,7 +2,7 @@
 // Whether a half-edge collapse keeps a triangle mesh a manifold disc: OpenMesh's
 // TriConnectivity::is_collapse_ok (the same four conditions), with the one-ring marks kept
 // here between calls. The library's version looks its status property up by name on
-// every call (string compares and a temporary vector): in the collapse engine, which asks
+// every call (string compares and a temporary string): in the collapse engine, which asks
 // once per measured candidate, that was a third of all instructions.
 
 #include <cstddef>
@@ -20,8 +20,9 @@ class CollapseCheck {
   // True when collapsing v0 -> v1 (the half-edge's from- onto its to-vertex) is allowed:
   // neither side's triangle has both its other edges on the boundary, the two opposite
   // corners differ, v0 and v1 share no neighbour but those corners (link condition), and
-  // an inner edge does not join two boundary vertices. The mesh needs vertex and edge
-  // status (deleted elements are never collapsible).
+  // an inner edge does not join two boundary vertices. The half-edge must be live (not
+  // deleted): OpenMesh's deleted checks are left out, as its status() accessor looks the
+  // property up by name too.
   bool collapse_ok(const TriMesh& m, TriMesh::HalfedgeHandle v0v1);
 
  private:

@@ -144,7 +144,7 @@ class CollapseEngine {
       const auto [cost, vi, wi, version] = heap_.top();
       heap_.pop();
       const auto v = TriMesh::VertexHandle(vi);
-      if (m_.status(v).deleted() || version != version_[vi]) continue;
+      if (removed_[vi] || version != version_[vi]) continue;
       if (dirty_[vi]) {  // its star changed since the entry was made: measure again first
         refresh(v);
         continue;
@@ -164,6 +164,7 @@ class CollapseEngine {
       ring_.clear();
       for (auto u : m_.vv_range(v)) ring_.push_back(u);
       m_.collapse(heh);
+      removed_[vi] = 1;
       ++result.collapses;
       result.max_error = std::max(result.max_error, cost);
       for (auto u : ring_) mark_dirty(u);
@@ -192,6 +193,7 @@ class CollapseEngine {
     version_.assign(m_.n_vertices(), 0);
     dirty_.assign(m_.n_vertices(), 0);
     live_.assign(m_.n_vertices(), 0);
+    removed_.assign(m_.n_vertices(), 0);
   }
 
   double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
@@ -372,6 +374,8 @@ class CollapseEngine {
   std::vector<std::uint32_t> version_;
   std::vector<std::uint8_t> dirty_;  // star changed since the last measurement
   std::vector<std::uint8_t> live_;   // has a queue entry of the current version
+  // Collapsed away (OpenMesh's status flag, without its status() accessor's lookup by name).
+  std::vector<std::uint8_t> removed_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
   TriangleErrorCache cache_;       // per triangle (three vertex ids)
   TriangleErrorCache edge_cache_;  // per edge (two vertex ids)

@@ -24,7 +24,7 @@ inline long long floor_div(long long num, long long den) {
 struct RowCrossing {
   long long fl = 0, rem = 0;      // x(j) = fl + rem / den, 0 <= rem < den
   long long step_q = 0, step_r = 0, den = 1;
-  void start(const GridPoint& p, const GridPoint& q, long long j) {
+  inline void start(const GridPoint& p, const GridPoint& q, long long j) {
     den = static_cast<long long>(q.y - p.y);
     const long long dx = static_cast<long long>(q.x - p.x), num = (j - static_cast<long long>(p.y)) * dx;
     const long long f = floor_div(num, den);
@@ -172,14 +172,18 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
   const double g0 = a.z - gx * a.x - gy * a.y;
   const HeightGrid& grid = ref.grid();
   double worst = 0;
-  // The span's end samples can lie on an edge: decided and interpolated by the exact edge
-  // functions (exact in double for integer points), as the general path does.
-  auto corner_check = [&](int i, int j) {
-    const GridPoint p{static_cast<double>(i), static_cast<double>(j), 0};
-    const double wa = twice_area(p, b, c), wb = twice_area(a, p, c), wc = twice_area(a, b, p);
+  // The span's end samples can lie on an edge: interpolated by the edge functions, as the
+  // general path does. twice_area(p, b, c) etc. are affine in p = (i, j); with integer
+  // coordinates under 2^24 every term is an integer below 2^50, so this form gives the
+  // very same doubles as twice_area, with no products per sample.
+  const double ka = b.x * c.y - c.x * b.y, kai = b.y - c.y, kaj = c.x - b.x;
+  const double kb = a.y * (c.x - a.x) - a.x * (c.y - a.y), kbi = c.y - a.y, kbj = a.x - c.x;
+  const double kc = a.x * (b.y - a.y) - a.y * (b.x - a.x), kci = a.y - b.y, kcj = b.x - a.x;
+  auto corner_check = [&](int i, double wa_row, double wb_row, double wc_row, const double* hr) {
+    const double wa = wa_row + kai * i, wb = wb_row + kbi * i, wc = wc_row + kci * i;
     if (wa < 0 || wb < 0 || wc < 0) return;
     const double z = (wa * a.z + wb * b.z + wc * c.z) / d;
-    worst = std::max(worst, std::abs(z - grid.at(i, j)));
+    worst = std::max(worst, std::abs(z - hr[i]));
   };
   // Rows from the lowest vertex to the highest: the span runs from the long edge (lowest to
   // highest) to the lower short edge below the middle vertex and the upper one from it on
@@ -207,10 +211,11 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
     const int i0 = static_cast<int>(std::max<long long>(x0, std::min(lc, sc)));
     const int i1 = static_cast<int>(std::min<long long>(x1, std::max(lf, sf)));
     if (i0 > i1) continue;
-    corner_check(i0, j);
-    if (i1 > i0) corner_check(i1, j);
-    const double row = gy * j + g0;
     const double* hr = grid.h.data() + static_cast<std::ptrdiff_t>(j) * grid.width;
+    const double wa_row = ka + kaj * j, wb_row = kb + kbj * j, wc_row = kc + kcj * j;
+    corner_check(i0, wa_row, wb_row, wc_row, hr);
+    if (i1 > i0) corner_check(i1, wa_row, wb_row, wc_row, hr);
+    const double row = gy * j + g0;
     for (int i = i0 + 1; i < i1; ++i) worst = std::max(worst, std::abs(gx * i + row - hr[i]));
     if (worst > stop_above) return worst;
   }

@@ -93,7 +93,7 @@ TEST(TerrainlodCollapseCheck, AgreesWithOpenMeshOverRandomCollapseSequences) {
     CollapseCheck check(m.n_vertices());
     for (int step = 0; step < 3000; ++step) {
       const auto h = TriMesh::HalfedgeHandle(static_cast<int>(rng() % m.n_halfedges()));
-      if (m.status(m.edge_handle(h)).deleted()) continue;
+      if (m.status(m.edge_handle(h)).deleted()) continue;  // the check's precondition: a live half-edge
       const bool ours = check.collapse_ok(m, h);
       ASSERT_EQ(ours, m.is_collapse_ok(h)) << "round " << round << " step " << step;
       (ours ? agreed_true : agreed_false)++;
