@@ -125,6 +125,26 @@ double transition_error_with(const Measure& measure, const ReferenceSurface& dem
   return worst;
 }
 
+// The order of the elements OpenMesh's ArrayKernel::garbage_collection keeps: from both
+// ends, the first deleted element swaps places with the last live one until they meet.
+// Returns the old indices of the live elements in their new order.
+std::vector<int> compaction_order(std::vector<std::uint8_t> deleted) {
+  const int n = static_cast<int>(deleted.size());
+  std::vector<int> order(deleted.size());
+  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
+  if (n == 0) return order;
+  int i0 = 0, i1 = n - 1;
+  for (;;) {
+    while (!deleted[static_cast<std::size_t>(i0)] && i0 < i1) ++i0;
+    while (deleted[static_cast<std::size_t>(i1)] && i0 < i1) --i1;
+    if (i0 >= i1) break;
+    std::swap(deleted[static_cast<std::size_t>(i0)], deleted[static_cast<std::size_t>(i1)]);
+    std::swap(order[static_cast<std::size_t>(i0)], order[static_cast<std::size_t>(i1)]);
+  }
+  order.resize(static_cast<std::size_t>(deleted[static_cast<std::size_t>(i0)] ? i0 : i0 + 1));
+  return order;
+}
+
 template <typename Measure>
 class CollapseEngine {
  public:
@@ -169,12 +189,24 @@ class CollapseEngine {
       result.max_error = std::max(result.max_error, cost);
       for (auto u : ring_) mark_dirty(u);
     }
-    m_.garbage_collection();
-    for (auto v : m_.vertices()) result.mesh.vertices.push_back(grid_point(m_, v));
-    for (auto f : m_.faces()) {
+    // The result in the order OpenMesh's garbage_collection() leaves the mesh in, without
+    // running it (the library is built with its assertions, whose property checks compare
+    // type names: 5 % of a pyramid build went there).
+    std::vector<std::uint8_t> gone(m_.n_vertices());
+    for (std::size_t i = 0; i < gone.size(); ++i) gone[i] = m_.status(TriMesh::VertexHandle(static_cast<int>(i))).deleted();
+    const std::vector<int> vorder = compaction_order(gone);
+    gone.assign(m_.n_faces(), 0);
+    for (std::size_t i = 0; i < gone.size(); ++i) gone[i] = m_.status(TriMesh::FaceHandle(static_cast<int>(i))).deleted();
+    const std::vector<int> forder = compaction_order(gone);
+    std::vector<int> new_id(m_.n_vertices(), -1);
+    for (std::size_t k = 0; k < vorder.size(); ++k) {
+      new_id[static_cast<std::size_t>(vorder[k])] = static_cast<int>(k);
+      result.mesh.vertices.push_back(grid_point(m_, TriMesh::VertexHandle(vorder[k])));
+    }
+    for (int fi : forder) {
       std::array<int, 3> t{};
       int k = 0;
-      for (auto v : m_.fv_range(f)) t[k++] = v.idx();
+      for (auto v : m_.fv_range(TriMesh::FaceHandle(fi))) t[k++] = new_id[static_cast<std::size_t>(v.idx())];
       result.mesh.triangles.push_back(t);
     }
     return result;
