@@ -6,6 +6,7 @@
 #include <limits>
 #include <queue>
 #include <tuple>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/mesh.hpp"
@@ -345,13 +346,28 @@ class CollapseEngine {
 
   // Crossings of edge (p, q) with the reference, measured to the end once (an edge's
   // error is needed exactly by every triangle that has it).
+  // Within one refresh() the same edges come back many times: v's link edges in every
+  // candidate's fan, each spoke w-u in two triangles of it. They are remembered in a short
+  // list for the current vertex first (no walk, no probe of the large table). A walk from
+  // p to q can differ from q to p in the last bit, so edges that are measured directly
+  // are remembered per direction (as if measured again); the table's edges are one value
+  // for both directions (the first measured), as in the table.
   double cached_edge_error(std::uint64_t a, std::uint64_t b, const GridPoint& p, const GridPoint& q) {
-    if (std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled())
-      return measure_.edge(p, q, kInfinite);
-    if (a > b) std::swap(a, b);
-    double* slot = edge_cache_.find_or_insert((a << 32) | b);
-    if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
-    return *slot;
+    const bool direct = std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled();
+    if (!direct && a > b) std::swap(a, b);
+    const std::uint64_t key = (a << 32) | b;
+    for (const auto& [k, e] : edge_memo_)
+      if (k == key) return e;
+    double e;
+    if (direct) {
+      e = measure_.edge(p, q, kInfinite);
+    } else {
+      double* slot = edge_cache_.find_or_insert(key);
+      if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
+      e = *slot;
+    }
+    edge_memo_.push_back({key, e});
+    return e;
   }
 
   // An early stop is only a lower bound of the error: remember it as "too big".
@@ -377,6 +393,7 @@ class CollapseEngine {
     dirty_[vi] = 0;
     live_[vi] = 0;
     if (locked_[vi]) return;
+    edge_memo_.clear();
     double best = kInfinite;
     int target = -1;
     for (auto heh : m_.voh_range(v)) {
@@ -398,6 +415,7 @@ class CollapseEngine {
     GridPoint corner[3];
   };
   std::vector<NewTriangle> fan_;  // scratch of collapse_cost
+  std::vector<std::pair<std::uint64_t, double>> edge_memo_;  // edge errors met in this refresh()
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
   Measure measure_;
   const ReferenceSurface& dem_;
