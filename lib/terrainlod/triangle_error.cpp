@@ -13,28 +13,22 @@ namespace {
 // segments between grid points are never further outside (a rounding at most).
 inline int cell_of(double x, int n) { return std::clamp(static_cast<int>(x), 0, n - 2); }
 
-// floor(num / den) for den > 0.
-inline long long floor_div(long long num, long long den) {
-  const long long q = num / den;
-  return (num % den != 0 && num < 0) ? q - 1 : q;
-}
-
-// The x of an edge P -> Q (integer end points, P.y < Q.y) on successive rows j, as exact
-// floor and ceiling: one division per edge, not per row.
+// The x of an edge P -> Q (integer end points, P.y < Q.y) on successive rows from P.y on,
+// as exact floor and ceiling: one integer division per edge, none per row.
 struct RowCrossing {
-  long long fl = 0, rem = 0;      // x(j) = fl + rem / den, 0 <= rem < den
-  long long step_q = 0, step_r = 0, den = 1;
-  inline void start(const GridPoint& p, const GridPoint& q, long long j) {
-    den = static_cast<long long>(q.y - p.y);
-    const long long dx = static_cast<long long>(q.x - p.x), num = (j - static_cast<long long>(p.y)) * dx;
-    const long long f = floor_div(num, den);
-    fl = static_cast<long long>(p.x) + f;
-    rem = num - f * den;
-    step_q = floor_div(dx, den);
-    step_r = dx - step_q * den;
+  int fl = 0, rem = 0;  // x(j) = fl + rem / den, 0 <= rem < den
+  int step_q = 0, step_r = 0, den = 1;
+  void start(const GridPoint& p, const GridPoint& q) {
+    den = static_cast<int>(q.y - p.y);
+    const int dx = static_cast<int>(q.x - p.x);
+    step_q = dx / den;
+    step_r = dx % den;
+    if (step_r < 0) step_r += den, --step_q;  // floor division
+    fl = static_cast<int>(p.x);
+    rem = 0;
   }
-  long long floor() const { return fl; }
-  long long ceil() const { return fl + (rem != 0); }
+  int floor() const { return fl; }
+  int ceil() const { return fl + (rem != 0); }
   void next_row() {
     fl += step_q;
     rem += step_r;
@@ -42,8 +36,8 @@ struct RowCrossing {
   }
 };
 
-// Integer coordinates small enough for exact 64-bit products (every engine triangle: its
-// vertices are DEM samples).
+// Integer coordinates under 2^24 (every engine triangle: its vertices are DEM samples):
+// edge steps fit an int, and the edge functions' products (below 2^48) are exact doubles.
 inline bool lattice_point(const GridPoint& p) {
   constexpr double kMax = 1 << 24;
   return std::abs(p.x) < kMax && std::abs(p.y) < kMax && p.x == static_cast<double>(static_cast<long long>(p.x)) &&
@@ -194,11 +188,11 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
   if (mid->y < lo->y) std::swap(lo, mid);
   const int y0 = static_cast<int>(lo->y), ym = static_cast<int>(mid->y), y1 = static_cast<int>(hi->y);
   RowCrossing long_edge, lower, upper;
-  long_edge.start(*lo, *hi, y0);
-  if (y0 < ym) lower.start(*lo, *mid, y0);
-  if (ym < y1) upper.start(*mid, *hi, ym);
+  long_edge.start(*lo, *hi);
+  if (y0 < ym) lower.start(*lo, *mid);
+  if (ym < y1) upper.start(*mid, *hi);
   for (int j = y0; j <= y1; ++j) {
-    long long sf = static_cast<long long>(mid->x), sc = sf;
+    int sf = static_cast<int>(mid->x), sc = sf;
     if (j < ym) {
       sf = lower.floor(), sc = lower.ceil();
       lower.next_row();
@@ -206,10 +200,9 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
       sf = upper.floor(), sc = upper.ceil();
       upper.next_row();
     }
-    const long long lf = long_edge.floor(), lc = long_edge.ceil();
+    const int lf = long_edge.floor(), lc = long_edge.ceil();
     long_edge.next_row();
-    const int i0 = static_cast<int>(std::max<long long>(x0, std::min(lc, sc)));
-    const int i1 = static_cast<int>(std::min<long long>(x1, std::max(lf, sf)));
+    const int i0 = std::max(x0, std::min(lc, sc)), i1 = std::min(x1, std::max(lf, sf));
     if (i0 > i1) continue;
     const double* hr = grid.h.data() + static_cast<std::ptrdiff_t>(j) * grid.width;
     const double wa_row = ka + kaj * j, wb_row = kb + kbj * j, wc_row = kc + kcj * j;
