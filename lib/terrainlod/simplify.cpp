@@ -252,31 +252,32 @@ class CollapseEngine {
     // value-initialised (GridPoint has member initialisers) on every call, 80 KB each time.
     auto& fan = fan_;
     int n = 0;
-    for (auto f : m_.vf_range(v)) {
+    const int vi = v.idx(), wi = w.idx();
+    for (const StarFace& sf : star_) {  // v's faces in OpenMesh's order (vf_range)
+      if (sf.id[0] == wi || sf.id[1] == wi || sf.id[2] == wi) continue;  // the two triangles on edge v-w disappear
       GridPoint corner[3];
-      bool has_w = false;
-      int k = 0;
-      for (auto u : m_.fv_range(f)) {
-        if (u == w) has_w = true;
-        corner[k++] = (u == v) ? pw : grid_point(m_, u);
+      std::uint64_t id[3];
+      for (int k = 0; k < 3; ++k) {
+        const bool is_v = sf.id[k] == vi;
+        corner[k] = is_v ? pw : sf.p[k];
+        id[k] = static_cast<std::uint64_t>(is_v ? wi : sf.id[k]);
       }
-      if (has_w) continue;  // the two triangles on edge v-w disappear
       const double d = twice_area(corner[0], corner[1], corner[2]);
       if (d < kMinTwiceArea) return kInfinite;  // fold-over
       const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
                    wc = twice_area(corner[0], corner[1], pv);
       if (wa >= 0 && wb >= 0 && wc >= 0 &&
-          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zref_[static_cast<std::size_t>(v.idx())]) > stop)
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zref_[static_cast<std::size_t>(vi)]) > stop)
         return kInfinite;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
       if (static_cast<int>(fan.size()) <= n) fan.resize(static_cast<std::size_t>(n) + 1);
-      fan[n].face = f;
+      std::copy(id, id + 3, fan[n].id);
       std::copy(corner, corner + 3, fan[n].corner);
       ++n;
     }
     double worst = 0;
     for (int t = 0; t < n; ++t) {
-      worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner, stop));
+      worst = std::max(worst, cached_error(fan[t].id, fan[t].corner, stop));
       if (worst > stop) return kInfinite;
     }
     if (!check_.collapse_ok(m_, heh)) return kInfinite;
@@ -289,11 +290,7 @@ class CollapseEngine {
   // again: the error is the larger of the samples inside (remembered per triangle) and the
   // crossings along the three edges (remembered per edge: an edge is shared by two
   // triangles of a fan, and the link edges of v by every candidate of v).
-  double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
-                      const GridPoint (&corner)[3], double stop) {
-    std::uint64_t id[3];
-    int k = 0;
-    for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
+  double cached_error(const std::uint64_t (&id)[3], const GridPoint (&corner)[3], double stop) {
     // Triangles with a transition variant are measured whole (transition_error).
     const bool whole = frame_ && on_refinable_border(corner);
     double e = triangle_part(id, corner, stop, whole);
@@ -356,8 +353,9 @@ class CollapseEngine {
     const bool direct = std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled();
     if (!direct && a > b) std::swap(a, b);
     const std::uint64_t key = (a << 32) | b;
-    for (const auto& [k, e] : edge_memo_)
-      if (k == key) return e;
+    std::size_t i = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> 57);  // 7 bits
+    for (; memo_[i].stamp == memo_stamp_; i = (i + 1) & (kMemoSlots - 1))
+      if (memo_[i].key == key) return memo_[i].error;
     double e;
     if (direct) {
       e = measure_.edge(p, q, kInfinite);
@@ -366,7 +364,10 @@ class CollapseEngine {
       if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
       e = *slot;
     }
-    edge_memo_.push_back({key, e});
+    if (memo_used_ < kMemoSlots / 2) {  // a full list only stops remembering
+      memo_[i] = {key, e, memo_stamp_};
+      ++memo_used_;
+    }
     return e;
   }
 
@@ -393,7 +394,22 @@ class CollapseEngine {
     dirty_[vi] = 0;
     live_[vi] = 0;
     if (locked_[vi]) return;
-    edge_memo_.clear();
+    if (++memo_stamp_ == 0) {  // wrapped: clear the stamps once
+      for (auto& m : memo_) m.stamp = 0;
+      memo_stamp_ = 1;
+    }
+    memo_used_ = 0;
+    // v's star for every candidate of this refresh (it does not change meanwhile).
+    star_.clear();
+    for (auto f : m_.vf_range(v)) {
+      StarFace sf;
+      int k = 0;
+      for (auto u : m_.fv_range(f)) {
+        sf.id[k] = u.idx();
+        sf.p[k++] = grid_point(m_, u);
+      }
+      star_.push_back(sf);
+    }
     double best = kInfinite;
     int target = -1;
     for (auto heh : m_.voh_range(v)) {
@@ -411,11 +427,25 @@ class CollapseEngine {
   }
 
   struct NewTriangle {
-    TriMesh::FaceHandle face;
+    std::uint64_t id[3];  // vertex ids (v replaced by w)
     GridPoint corner[3];
   };
   std::vector<NewTriangle> fan_;  // scratch of collapse_cost
-  std::vector<std::pair<std::uint64_t, double>> edge_memo_;  // edge errors met in this refresh()
+  struct StarFace {
+    int id[3];
+    GridPoint p[3];
+  };
+  std::vector<StarFace> star_;  // the refreshed vertex's faces, corners in face order
+  // Edge errors met in this refresh(): a small open-addressing table, cleared by stamp.
+  struct MemoSlot {
+    std::uint64_t key = 0;
+    double error = 0;
+    std::uint32_t stamp = 0;
+  };
+  static constexpr std::size_t kMemoSlots = 128;
+  std::array<MemoSlot, kMemoSlots> memo_{};
+  std::uint32_t memo_stamp_ = 0;
+  std::size_t memo_used_ = 0;
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
   Measure measure_;
   const ReferenceSurface& dem_;
