@@ -21,9 +21,13 @@ struct RowCrossing {
   void start(const GridPoint& p, const GridPoint& q) {
     den = static_cast<int>(q.y - p.y);
     const int dx = static_cast<int>(q.x - p.x);
-    step_q = dx / den;
-    step_r = dx % den;
-    if (step_r < 0) step_r += den, --step_q;  // floor division
+    if (den == 1) {  // most edges of small triangles: no division
+      step_q = dx, step_r = 0;
+    } else {
+      step_q = dx / den;
+      step_r = dx % den;
+      if (step_r < 0) step_r += den, --step_q;  // floor division
+    }
     fl = static_cast<int>(p.x);
     rem = 0;
   }
@@ -35,6 +39,26 @@ struct RowCrossing {
     if (rem >= den) rem -= den, ++fl;
   }
 };
+
+// True when the diagonal crossings of lattice edge p -> q are exactly the samples the grid
+// line crossings already visited, with the same t and the same interpolated value bit for
+// bit, so they need no walk:
+// - a vertical edge (x = i < W - 1): every crossing has x = p.x + t * 0 = i exactly, so
+//   each family interpolates with weight 0, giving sample (i, y) itself, and the t of
+//   x +- y = k is (y - p.y) / dy computed with the same two roundings;
+// - a horizontal edge (y = j < H - 1) of length 2^m: there the diagonal families compute
+//   x = p.x + t * dx, exact only when 1 / dx is (a power of two); then likewise.
+// On the last row or column the grid line families weigh the sample by 1, which may round
+// differently, so the diagonals are walked there as anywhere else.
+inline bool diagonals_repeat(const GridPoint& p, const GridPoint& q, int nx, int ny) {
+  auto integer = [](double v) { return v == static_cast<double>(static_cast<int>(v)); };
+  if (p.x == q.x) return p.x >= 0 && p.x < nx - 1 && integer(p.x) && integer(p.y) && integer(q.y);
+  if (p.y != q.y || !(p.y >= 0 && p.y < ny - 1) || !integer(p.y)) return false;
+  const double len = std::abs(q.x - p.x);
+  if (!(len < double(1 << 30)) || !integer(p.x) || !integer(q.x)) return false;
+  const int n = static_cast<int>(len);
+  return (n & (n - 1)) == 0;
+}
 
 // Integer coordinates under 2^24 (every engine triangle: its vertices are DEM samples):
 // edge steps fit an int, and the edge functions' products (below 2^48) are exact doubles.
@@ -111,8 +135,11 @@ double edge_error(const ReferenceSurface& ref, const GridPoint& p, const GridPoi
   // error exceeds stop_above.
   auto family = [&](double sp, double sq, auto&& at) {
     if (sp == sq) return true;
-    const double lo = std::min(sp, sq), hi = std::max(sp, sq), inv = 1 / (sq - sp);
-    for (double k = std::floor(lo) + 1; k < hi; k += 1)
+    const double lo = std::min(sp, sq), hi = std::max(sp, sq);
+    double k = std::floor(lo) + 1;
+    if (!(k < hi)) return true;  // no crossing (unit edges): no division
+    const double inv = 1 / (sq - sp);
+    for (; k < hi; k += 1)
       if (!at(k, (k - sp) * inv)) return false;
     return true;
   };
@@ -128,21 +155,21 @@ double edge_error(const ReferenceSurface& ref, const GridPoint& p, const GridPoi
                const double* c = h + j * w + i;
                return visit(t, c[0] + (y - j) * (c[w] - c[0]));
              }) &&
-      family(p.y, q.y,
-             [&](double k, double t) {  // grid row j = k
-               const double x = p.x + t * dx;
-               const int j = static_cast<int>(k), i = cell_of(x, nx);
-               const double* c = h + j * w + i;
-               return visit(t, c[0] + (x - i) * (c[1] - c[0]));
-             }) &&
-      family(p.x + p.y, q.x + q.y,
-             [&](double k, double t) {  // cell (i, j) with i + j + 1 = k holds the NW-SE diagonal
-               const double x = p.x + t * dx;
-               const int i = cell_of(x, nx), j = static_cast<int>(k) - 1 - i;
-               if (j < 0 || j > ny - 2 || ref.ne_diagonal(i, j)) return true;
-               const double* c = h + j * w + i;
-               return visit(t, c[w] + (x - i) * (c[1] - c[w]));
-             }) &&
+      family(p.y, q.y, [&](double k, double t) {  // grid row j = k
+        const double x = p.x + t * dx;
+        const int j = static_cast<int>(k), i = cell_of(x, nx);
+        const double* c = h + j * w + i;
+        return visit(t, c[0] + (x - i) * (c[1] - c[0]));
+      });
+  if (!ok || diagonals_repeat(p, q, nx, ny)) return worst;
+  family(p.x + p.y, q.x + q.y,
+         [&](double k, double t) {  // cell (i, j) with i + j + 1 = k holds the NW-SE diagonal
+           const double x = p.x + t * dx;
+           const int i = cell_of(x, nx), j = static_cast<int>(k) - 1 - i;
+           if (j < 0 || j > ny - 2 || ref.ne_diagonal(i, j)) return true;
+           const double* c = h + j * w + i;
+           return visit(t, c[w] + (x - i) * (c[1] - c[w]));
+         }) &&
       family(p.x - p.y, q.x - q.y, [&](double k, double t) {  // cell (i, j) with i - j = k holds SW-NE
         const double x = p.x + t * dx;
         const int i = cell_of(x, nx), j = i - static_cast<int>(k);
@@ -150,7 +177,6 @@ double edge_error(const ReferenceSurface& ref, const GridPoint& p, const GridPoi
         const double* c = h + j * w + i;
         return visit(t, c[0] + (x - i) * (c[w + 1] - c[0]));
       });
-  (void)ok;
   return worst;
 }
 
@@ -160,10 +186,10 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
     return samples_error_any(ref, a, b, c, stop_above);
   const double d = twice_area(a, b, c);
   const int x0 = static_cast<int>(std::min({a.x, b.x, c.x})), x1 = static_cast<int>(std::max({a.x, b.x, c.x}));
-  // The triangle's plane z = gx x + gy y + g0 for the samples strictly inside a row's span.
-  const double gx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / d;
-  const double gy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / d;
-  const double g0 = a.z - gx * a.x - gy * a.y;
+  // The triangle's plane z = gx x + gy y + g0 for the samples strictly inside a row's span,
+  // found at the first such row (small triangles have none: two divisions saved).
+  double gx = 0, gy = 0, g0 = 0;
+  bool plane = false;
   const HeightGrid& grid = ref.grid();
   double worst = 0;
   // The span's end samples can lie on an edge: interpolated by the edge functions, as the
@@ -208,8 +234,16 @@ double triangle_samples_error(const ReferenceSurface& ref, const GridPoint& a, c
     const double wa_row = ka + kaj * j, wb_row = kb + kbj * j, wc_row = kc + kcj * j;
     corner_check(i0, wa_row, wb_row, wc_row, hr);
     if (i1 > i0) corner_check(i1, wa_row, wb_row, wc_row, hr);
-    const double row = gy * j + g0;
-    for (int i = i0 + 1; i < i1; ++i) worst = std::max(worst, std::abs(gx * i + row - hr[i]));
+    if (i1 - i0 >= 2) {
+      if (!plane) {
+        gx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / d;
+        gy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / d;
+        g0 = a.z - gx * a.x - gy * a.y;
+        plane = true;
+      }
+      const double row = gy * j + g0;
+      for (int i = i0 + 1; i < i1; ++i) worst = std::max(worst, std::abs(gx * i + row - hr[i]));
+    }
     if (worst > stop_above) return worst;
   }
   return worst;
