@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -92,9 +93,9 @@ double edge_definition(const ReferenceSurface& ref, const GridPoint& p, const Gr
   return worst;
 }
 
-class ErrorWalk : public ::testing::TestWithParam<DiagonalRule> {};
+class TerrainlodErrorWalk : public ::testing::TestWithParam<DiagonalRule> {};
 
-TEST_P(ErrorWalk, SameNumbersAsTheDefinitionsBitForBit) {
+TEST_P(TerrainlodErrorWalk, SameNumbersAsTheDefinitionsBitForBit) {
   const auto grid = fest::test::fbm_grid(5, 11);  // 33 x 33, non-integer heights
   const ReferenceSurface ref(grid, GetParam());
   std::mt19937 rng(3);
@@ -130,7 +131,7 @@ TEST_P(ErrorWalk, SameNumbersAsTheDefinitionsBitForBit) {
   EXPECT_GT(early, 200);
 }
 
-TEST_P(ErrorWalk, AxisEdgesEverywhereSameAsTheDefinition) {
+TEST_P(TerrainlodErrorWalk, AxisEdgesEverywhereSameAsTheDefinition) {
   // Horizontal and vertical edges of every length up to 9 from every sample, both
   // directions, end heights off the surface: the walk skips the diagonal families on some
   // of them (they repeat the grid line crossings), never changing a bit.
@@ -153,7 +154,12 @@ TEST_P(ErrorWalk, AxisEdgesEverywhereSameAsTheDefinition) {
   EXPECT_GT(edges, 3000);
 }
 
-INSTANTIATE_TEST_SUITE_P(Rules, ErrorWalk,
-                         ::testing::Values(DiagonalRule::shortest, DiagonalRule::alternate, DiagonalRule::ne));
+INSTANTIATE_TEST_SUITE_P(DiagonalRules, TerrainlodErrorWalk,
+                         ::testing::Values(DiagonalRule::shortest, DiagonalRule::alternate, DiagonalRule::ne),
+                         [](const ::testing::TestParamInfo<DiagonalRule>& rule) {
+                           return rule.param == DiagonalRule::shortest    ? std::string("shortest")
+                                  : rule.param == DiagonalRule::alternate ? std::string("alternate")
+                                                                          : std::string("ne");
+                         });
 
 }  // namespace
