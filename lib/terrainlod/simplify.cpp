@@ -38,7 +38,7 @@ GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
 class TriangleErrorCache {
  public:
   explicit TriangleErrorCache(std::size_t vertices) : enabled_(vertices < (std::size_t{1} << 21)) {
-    if (enabled_) resize(std::size_t{1} << 16);
+    if (enabled_) resize(std::size_t{1} << 12);  // grows by doubling; small tiles stay in L2
   }
   bool enabled() const { return enabled_; }
   double* find_or_insert(std::uint64_t key) {
