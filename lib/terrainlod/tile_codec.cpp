@@ -71,20 +71,26 @@ struct StripTriangle {
 };
 
 std::vector<StripTriangle> strip_order(const std::vector<std::array<int, 3>>& tris) {
-  // Directed edge -> triangle, as a sorted array (one allocation, no hash nodes); of equal
-  // keys (only in a non-manifold input) the last triangle counts, as with map assignment.
+  // Directed edge -> triangle in an open-addressing table (one allocation, no hash nodes);
+  // a repeated key (only in a non-manifold input) keeps the last triangle, as map
+  // assignment did.
   auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
-  std::vector<std::pair<std::uint64_t, int>> by_edge;
-  by_edge.reserve(3 * tris.size());
-  for (std::size_t t = 0; t < tris.size(); ++t)
-    for (int e = 0; e < 3; ++e) by_edge.push_back({key(tris[t][e], tris[t][(e + 1) % 3]), static_cast<int>(t)});
-  std::sort(by_edge.begin(), by_edge.end());  // by key, then triangle: the last of equal keys is the largest t
-  std::vector<std::uint8_t> used(tris.size(), 0);
-  auto find_edge = [&](std::uint64_t k) {
-    auto it = std::upper_bound(by_edge.begin(), by_edge.end(), k,
-                               [](std::uint64_t x, const std::pair<std::uint64_t, int>& e) { return x < e.first; });
-    return (it != by_edge.begin() && (it - 1)->first == k) ? (it - 1)->second : -1;
+  std::size_t size = 16;
+  while (size < 6 * tris.size()) size *= 2;  // load <= 1/2
+  constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::pair<std::uint64_t, int>> table(size, {kEmpty, -1});
+  auto slot = [&](std::uint64_t k) {
+    std::size_t i = static_cast<std::size_t>((k * 0x9e3779b97f4a7c15ull) >> 20) & (size - 1);
+    while (table[i].first != kEmpty && table[i].first != k) i = (i + 1) & (size - 1);
+    return i;
   };
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const std::uint64_t k = key(tris[t][e], tris[t][(e + 1) % 3]);
+      table[slot(k)] = {k, static_cast<int>(t)};
+    }
+  std::vector<std::uint8_t> used(tris.size(), 0);
+  auto find_edge = [&](std::uint64_t k) { return table[slot(k)].second; };  // -1 at an empty slot
   // The free triangle across edge {a, b} (the neighbour holds it as b -> a), or -1.
   auto across = [&](int a, int b) {
     for (auto k : {key(b, a), key(a, b)}) {
