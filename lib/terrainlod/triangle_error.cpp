@@ -54,7 +54,7 @@ struct RowCrossing {
 // On the last row or column the grid line families weigh the sample by 1, which may round
 // differently, so the diagonals are walked there as anywhere else.
 inline bool diagonals_repeat(const GridPoint& p, const GridPoint& q, int nx, int ny) {
-  auto integer = [](double v) { return v == static_cast<double>(static_cast<int>(v)); };
+  auto integer = [](double v) { return std::abs(v) < double(1 << 30) && v == static_cast<double>(static_cast<int>(v)); };
   if (p.x == q.x) return p.x >= 0 && p.x < nx - 1 && integer(p.x) && integer(p.y) && integer(q.y);
   if (p.y != q.y || !(p.y >= 0 && p.y < ny - 1) || !integer(p.y)) return false;
   const double len = std::abs(q.x - p.x);
