@@ -1,7 +1,7 @@
 // CollapseCheck against the definition it re-implements (OpenMesh's is_collapse_ok) and
 // against small cases decided by hand: a lone triangle cannot lose an edge, an inner
-// vertex of a grid can collapse onto a neighbour, and a vertex whose neighbour shares a
-// third neighbour with it off the collapsing edge's two triangles cannot (link condition).
+// vertex of a grid can collapse onto a neighbour, and an inner edge between two boundary
+// vertices cannot be collapsed.
 
 #include <random>
 #include <vector>
@@ -73,7 +73,8 @@ TEST(TerrainlodCollapseCheck, InnerVertexOfGridCollapsesLinkViolationRefused) {
   // Boundary vertex 1 onto the centre over an inner edge between a boundary and an inner
   // vertex: allowed (only boundary-boundary inner edges are refused).
   EXPECT_TRUE(check.collapse_ok(m, m.find_halfedge(v[1], v[4])));
-  // Corner 0 onto the centre: the inner edge 0-4 joins... 0 is on the boundary, 4 is not: ok.
+  // Corner 0 onto the centre over the inner edge 0-4: only 4's side is inside, and 0 and 4
+  // share exactly the far corners 1 and 3: allowed.
   EXPECT_TRUE(check.collapse_ok(m, m.find_halfedge(v[0], v[4])));
   // Collapse 4 onto 5; afterwards 5's neighbours are 1, 2, 3, 7, 8, 0 and the inner edge
   // 3-5 joins two boundary vertices: refused.
