@@ -199,7 +199,9 @@ double triangulation_error(const ReferenceSurface& ref, const TileTriangulation&
 TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const TileGeometry& geometry) {
   using V = TileTriangulation::Vertex;
   TileErrorRange r;
-  std::set<std::array<V, 3>> measured;
+  // Every distinct triangle of all the masks once: gathered, sorted and deduplicated (one
+  // allocation; a std::set allocated a node per triangle).
+  std::vector<std::array<V, 3>> measured;
   bool first = true;
   for (unsigned m = 0; m < 16; ++m) {
     if ((m & tile.refinable) != m) continue;
@@ -214,13 +216,17 @@ TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const T
       std::array<V, 3> key{tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
                            tri.vertices[static_cast<std::size_t>(t[2])]};
       std::sort(key.begin(), key.end());
-      if (!measured.insert(key).second) continue;
-      GridPoint p[3];
-      for (int k = 0; k < 3; ++k) p[k] = {double(key[static_cast<std::size_t>(k)].gx), double(key[static_cast<std::size_t>(k)].gy), key[static_cast<std::size_t>(k)].z};
-      // The error of a triangle does not depend on its orientation.
-      if (twice_area(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
-      r.err = std::max(r.err, triangle_error(ref, p[0], p[1], p[2], std::numeric_limits<double>::infinity()));
+      measured.push_back(key);
     }
+  }
+  std::sort(measured.begin(), measured.end());
+  measured.erase(std::unique(measured.begin(), measured.end()), measured.end());
+  for (const auto& key : measured) {
+    GridPoint p[3];
+    for (int k = 0; k < 3; ++k) p[k] = {double(key[static_cast<std::size_t>(k)].gx), double(key[static_cast<std::size_t>(k)].gy), key[static_cast<std::size_t>(k)].z};
+    // The error of a triangle does not depend on its orientation.
+    if (twice_area(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
+    r.err = std::max(r.err, triangle_error(ref, p[0], p[1], p[2], std::numeric_limits<double>::infinity()));
   }
   return r;
 }

@@ -24,6 +24,7 @@ class ReferenceSurface {
   int width() const { return grid_->width; }
   int height() const { return grid_->height; }
   double sample(int i, int j) const { return grid_->at(i, j); }
+  const HeightGrid& grid() const { return *grid_; }
   // True when cell (i, j) (south-west corner (i, j)) is split by the SW-NE diagonal.
   bool ne_diagonal(int i, int j) const { return ne_[static_cast<std::size_t>(j) * (width() - 1) + i] != 0; }
   // Height of the interpolant at (x, y) inside [0, W-1] x [0, H-1].

@@ -6,9 +6,11 @@
 #include <limits>
 #include <queue>
 #include <tuple>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/mesh.hpp"
+#include "terrainlod/collapse_check.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -30,45 +32,48 @@ GridPoint grid_point(const TriMesh& m, TriMesh::VertexHandle v) {
 }
 
 // Open-addressing hash table from a triangle (three vertex ids of 21 bits packed in 64) to
-// its error; NaN = not yet known. Disabled for meshes of 2^21 vertices or more.
+// its error; NaN = not yet known. Disabled for meshes of 2^21 vertices or more. Key and
+// value share a slot (one cache miss per probe, not two: the probes were a quarter of the
+// engine's own cycles).
 class TriangleErrorCache {
  public:
   explicit TriangleErrorCache(std::size_t vertices) : enabled_(vertices < (std::size_t{1} << 21)) {
-    if (enabled_) resize(std::size_t{1} << 16);
+    if (enabled_) resize(std::size_t{1} << 12);  // grows by doubling; small tiles stay in L2
   }
   bool enabled() const { return enabled_; }
   double* find_or_insert(std::uint64_t key) {
-    if (2 * (used_ + 1) > keys_.size()) resize(2 * keys_.size());
+    if (2 * (used_ + 1) > slots_.size()) resize(2 * slots_.size());
     std::size_t i = slot_of(key);
-    while (keys_[i] != kEmpty && keys_[i] != key) i = (i + 1) & (keys_.size() - 1);
-    if (keys_[i] == kEmpty) {
-      keys_[i] = key;
-      values_[i] = std::numeric_limits<double>::quiet_NaN();
+    while (slots_[i].key != kEmpty && slots_[i].key != key) i = (i + 1) & (slots_.size() - 1);
+    if (slots_[i].key == kEmpty) {
+      slots_[i].key = key;
+      slots_[i].value = std::numeric_limits<double>::quiet_NaN();
       ++used_;
     }
-    return &values_[i];
+    return &slots_[i].value;
   }
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  struct Slot {
+    std::uint64_t key = kEmpty;
+    double value = 0;
+  };
   std::size_t slot_of(std::uint64_t key) const {
     key ^= key >> 33;
     key *= 0xff51afd7ed558ccdull;
     key ^= key >> 33;
-    return static_cast<std::size_t>(key) & (keys_.size() - 1);
+    return static_cast<std::size_t>(key) & (slots_.size() - 1);
   }
   void resize(std::size_t n) {
-    std::vector<std::uint64_t> keys(n, kEmpty);
-    std::vector<double> values(n);
-    keys.swap(keys_);
-    values.swap(values_);
+    std::vector<Slot> old(n);
+    old.swap(slots_);
     used_ = 0;
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] != kEmpty) *find_or_insert(keys[i]) = values[i];
+    for (const Slot& e : old)
+      if (e.key != kEmpty) *find_or_insert(e.key) = e.value;
   }
   bool enabled_;
-  std::vector<std::uint64_t> keys_;
-  std::vector<double> values_;
+  std::vector<Slot> slots_;
   std::size_t used_ = 0;
 };
 
@@ -124,6 +129,26 @@ double transition_error_with(const Measure& measure, const ReferenceSurface& dem
   return worst;
 }
 
+// The order of the elements OpenMesh's ArrayKernel::garbage_collection keeps: from both
+// ends, the first deleted element swaps places with the last live one until they meet.
+// Returns the old indices of the live elements in their new order.
+std::vector<int> compaction_order(std::vector<std::uint8_t> deleted) {
+  const int n = static_cast<int>(deleted.size());
+  std::vector<int> order(deleted.size());
+  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
+  if (n == 0) return order;
+  int i0 = 0, i1 = n - 1;
+  for (;;) {
+    while (!deleted[static_cast<std::size_t>(i0)] && i0 < i1) ++i0;
+    while (deleted[static_cast<std::size_t>(i1)] && i0 < i1) --i1;
+    if (i0 >= i1) break;
+    std::swap(deleted[static_cast<std::size_t>(i0)], deleted[static_cast<std::size_t>(i1)]);
+    std::swap(order[static_cast<std::size_t>(i0)], order[static_cast<std::size_t>(i1)]);
+  }
+  order.resize(static_cast<std::size_t>(deleted[static_cast<std::size_t>(i0)] ? i0 : i0 + 1));
+  return order;
+}
+
 template <typename Measure>
 class CollapseEngine {
  public:
@@ -143,7 +168,7 @@ class CollapseEngine {
       const auto [cost, vi, wi, version] = heap_.top();
       heap_.pop();
       const auto v = TriMesh::VertexHandle(vi);
-      if (m_.status(v).deleted() || version != version_[vi]) continue;
+      if (removed_[vi] || version != version_[vi]) continue;
       if (dirty_[vi]) {  // its star changed since the entry was made: measure again first
         refresh(v);
         continue;
@@ -152,7 +177,7 @@ class CollapseEngine {
       const auto heh = m_.find_halfedge(v, w);
       // The link condition can change without v's star changing (a collapse next to w);
       // the error of the collapse cannot, as it depends on v's star and w's position only.
-      if (!heh.is_valid() || !m_.is_collapse_ok(heh)) {
+      if (!heh.is_valid() || !check_.collapse_ok(m_, heh)) {
         refresh(v);
         continue;
       }
@@ -163,16 +188,29 @@ class CollapseEngine {
       ring_.clear();
       for (auto u : m_.vv_range(v)) ring_.push_back(u);
       m_.collapse(heh);
+      removed_[vi] = 1;
       ++result.collapses;
       result.max_error = std::max(result.max_error, cost);
       for (auto u : ring_) mark_dirty(u);
     }
-    m_.garbage_collection();
-    for (auto v : m_.vertices()) result.mesh.vertices.push_back(grid_point(m_, v));
-    for (auto f : m_.faces()) {
+    // The result in the order OpenMesh's garbage_collection() leaves the mesh in, without
+    // running it (the library is built with its assertions, whose property checks compare
+    // type names: 5 % of a pyramid build went there).
+    std::vector<std::uint8_t> gone(m_.n_vertices());
+    for (std::size_t i = 0; i < gone.size(); ++i) gone[i] = m_.status(TriMesh::VertexHandle(static_cast<int>(i))).deleted();
+    const std::vector<int> vorder = compaction_order(gone);
+    gone.assign(m_.n_faces(), 0);
+    for (std::size_t i = 0; i < gone.size(); ++i) gone[i] = m_.status(TriMesh::FaceHandle(static_cast<int>(i))).deleted();
+    const std::vector<int> forder = compaction_order(gone);
+    std::vector<int> new_id(m_.n_vertices(), -1);
+    for (std::size_t k = 0; k < vorder.size(); ++k) {
+      new_id[static_cast<std::size_t>(vorder[k])] = static_cast<int>(k);
+      result.mesh.vertices.push_back(grid_point(m_, TriMesh::VertexHandle(vorder[k])));
+    }
+    for (int fi : forder) {
       std::array<int, 3> t{};
       int k = 0;
-      for (auto v : m_.fv_range(f)) t[k++] = v.idx();
+      for (auto v : m_.fv_range(TriMesh::FaceHandle(fi))) t[k++] = new_id[static_cast<std::size_t>(v.idx())];
       result.mesh.triangles.push_back(t);
     }
     return result;
@@ -187,9 +225,11 @@ class CollapseEngine {
     for (const auto& t : start.triangles)
       m_.add_face(TriMesh::VertexHandle(t[0]), TriMesh::VertexHandle(t[1]), TriMesh::VertexHandle(t[2]));
     locked_ = locked;
+    check_ = CollapseCheck(m_.n_vertices());
     version_.assign(m_.n_vertices(), 0);
     dirty_.assign(m_.n_vertices(), 0);
     live_.assign(m_.n_vertices(), 0);
+    removed_.assign(m_.n_vertices(), 0);
   }
 
   double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
@@ -199,7 +239,7 @@ class CollapseEngine {
   // Error of collapsing v onto w; kInfinite when not allowed, above the bound, or above
   // `stop` (<= the bound: a candidate worse than the best one found so far need not be
   // measured to the end).
-  double collapse_cost(TriMesh::HalfedgeHandle heh, double stop) {  // non-const: OpenMesh's is_collapse_ok is
+  double collapse_cost(TriMesh::HalfedgeHandle heh, double stop) {  // non-const: the link check keeps marks
     const auto v = m_.from_vertex_handle(heh), w = m_.to_vertex_handle(heh);
     if (locked_[v.idx()]) return kInfinite;
     // Border vertices slide along their border only: the edge must be a border edge.
@@ -212,34 +252,35 @@ class CollapseEngine {
     // value-initialised (GridPoint has member initialisers) on every call, 80 KB each time.
     auto& fan = fan_;
     int n = 0;
-    for (auto f : m_.vf_range(v)) {
+    const int vi = v.idx(), wi = w.idx();
+    for (const StarFace& sf : star_) {  // v's faces in OpenMesh's order (vf_range)
+      if (sf.id[0] == wi || sf.id[1] == wi || sf.id[2] == wi) continue;  // the two triangles on edge v-w disappear
       GridPoint corner[3];
-      bool has_w = false;
-      int k = 0;
-      for (auto u : m_.fv_range(f)) {
-        if (u == w) has_w = true;
-        corner[k++] = (u == v) ? pw : grid_point(m_, u);
+      std::uint64_t id[3];
+      for (int k = 0; k < 3; ++k) {
+        const bool is_v = sf.id[k] == vi;
+        corner[k] = is_v ? pw : sf.p[k];
+        id[k] = static_cast<std::uint64_t>(is_v ? wi : sf.id[k]);
       }
-      if (has_w) continue;  // the two triangles on edge v-w disappear
       const double d = twice_area(corner[0], corner[1], corner[2]);
       if (d < kMinTwiceArea) return kInfinite;  // fold-over
       const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
                    wc = twice_area(corner[0], corner[1], pv);
       if (wa >= 0 && wb >= 0 && wc >= 0 &&
-          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zref_[static_cast<std::size_t>(v.idx())]) > stop)
+          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zref_[static_cast<std::size_t>(vi)]) > stop)
         return kInfinite;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
       if (static_cast<int>(fan.size()) <= n) fan.resize(static_cast<std::size_t>(n) + 1);
-      fan[n].face = f;
+      std::copy(id, id + 3, fan[n].id);
       std::copy(corner, corner + 3, fan[n].corner);
       ++n;
     }
     double worst = 0;
     for (int t = 0; t < n; ++t) {
-      worst = std::max(worst, cached_error(v, fan[t].face, w, fan[t].corner, stop));
+      worst = std::max(worst, cached_error(fan[t].id, fan[t].corner, stop));
       if (worst > stop) return kInfinite;
     }
-    if (!m_.is_collapse_ok(heh)) return kInfinite;
+    if (!check_.collapse_ok(m_, heh)) return kInfinite;
     return worst;
   }
 
@@ -249,11 +290,7 @@ class CollapseEngine {
   // again: the error is the larger of the samples inside (remembered per triangle) and the
   // crossings along the three edges (remembered per edge: an edge is shared by two
   // triangles of a fan, and the link edges of v by every candidate of v).
-  double cached_error(TriMesh::VertexHandle v, TriMesh::FaceHandle f, TriMesh::VertexHandle w,
-                      const GridPoint (&corner)[3], double stop) {
-    std::uint64_t id[3];
-    int k = 0;
-    for (auto u : m_.fv_range(f)) id[k++] = static_cast<std::uint64_t>((u == v ? w : u).idx());
+  double cached_error(const std::uint64_t (&id)[3], const GridPoint (&corner)[3], double stop) {
     // Triangles with a transition variant are measured whole (transition_error).
     const bool whole = frame_ && on_refinable_border(corner);
     double e = triangle_part(id, corner, stop, whole);
@@ -306,13 +343,32 @@ class CollapseEngine {
 
   // Crossings of edge (p, q) with the reference, measured to the end once (an edge's
   // error is needed exactly by every triangle that has it).
+  // Within one refresh() the same edges come back many times: v's link edges in every
+  // candidate's fan, each spoke w-u in two triangles of it. They are remembered in a short
+  // list for the current vertex first (no walk, no probe of the large table). A walk from
+  // p to q can differ from q to p in the last bit, so edges that are measured directly
+  // are remembered per direction (as if measured again); the table's edges are one value
+  // for both directions (the first measured), as in the table.
   double cached_edge_error(std::uint64_t a, std::uint64_t b, const GridPoint& p, const GridPoint& q) {
-    if (std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled())
-      return measure_.edge(p, q, kInfinite);
-    if (a > b) std::swap(a, b);
-    double* slot = edge_cache_.find_or_insert((a << 32) | b);
-    if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
-    return *slot;
+    const bool direct = std::abs(p.x - q.x) + std::abs(p.y - q.y) <= kDirectEdgeCells || !edge_cache_.enabled();
+    if (!direct && a > b) std::swap(a, b);
+    const std::uint64_t key = (a << 32) | b;
+    std::size_t i = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> 57);  // 7 bits
+    for (; memo_[i].stamp == memo_stamp_; i = (i + 1) & (kMemoSlots - 1))
+      if (memo_[i].key == key) return memo_[i].error;
+    double e;
+    if (direct) {
+      e = measure_.edge(p, q, kInfinite);
+    } else {
+      double* slot = edge_cache_.find_or_insert(key);
+      if (std::isnan(*slot)) *slot = measure_.edge(p, q, kInfinite);
+      e = *slot;
+    }
+    if (memo_used_ < kMemoSlots / 2) {  // a full list only stops remembering
+      memo_[i] = {key, e, memo_stamp_};
+      ++memo_used_;
+    }
+    return e;
   }
 
   // An early stop is only a lower bound of the error: remember it as "too big".
@@ -338,6 +394,22 @@ class CollapseEngine {
     dirty_[vi] = 0;
     live_[vi] = 0;
     if (locked_[vi]) return;
+    if (++memo_stamp_ == 0) {  // wrapped: clear the stamps once
+      for (auto& m : memo_) m.stamp = 0;
+      memo_stamp_ = 1;
+    }
+    memo_used_ = 0;
+    // v's star for every candidate of this refresh (it does not change meanwhile).
+    star_.clear();
+    for (auto f : m_.vf_range(v)) {
+      StarFace sf;
+      int k = 0;
+      for (auto u : m_.fv_range(f)) {
+        sf.id[k] = u.idx();
+        sf.p[k++] = grid_point(m_, u);
+      }
+      star_.push_back(sf);
+    }
     double best = kInfinite;
     int target = -1;
     for (auto heh : m_.voh_range(v)) {
@@ -355,10 +427,25 @@ class CollapseEngine {
   }
 
   struct NewTriangle {
-    TriMesh::FaceHandle face;
+    std::uint64_t id[3];  // vertex ids (v replaced by w)
     GridPoint corner[3];
   };
   std::vector<NewTriangle> fan_;  // scratch of collapse_cost
+  struct StarFace {
+    int id[3];
+    GridPoint p[3];
+  };
+  std::vector<StarFace> star_;  // the refreshed vertex's faces, corners in face order
+  // Edge errors met in this refresh(): a small open-addressing table, cleared by stamp.
+  struct MemoSlot {
+    std::uint64_t key = 0;
+    double error = 0;
+    std::uint32_t stamp = 0;
+  };
+  static constexpr std::size_t kMemoSlots = 128;
+  std::array<MemoSlot, kMemoSlots> memo_{};
+  std::uint32_t memo_stamp_ = 0;
+  std::size_t memo_used_ = 0;
   using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
   Measure measure_;
   const ReferenceSurface& dem_;
@@ -370,10 +457,13 @@ class CollapseEngine {
   std::vector<std::uint32_t> version_;
   std::vector<std::uint8_t> dirty_;  // star changed since the last measurement
   std::vector<std::uint8_t> live_;   // has a queue entry of the current version
+  // Collapsed away (OpenMesh's status flag, without its status() accessor's lookup by name).
+  std::vector<std::uint8_t> removed_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
   TriangleErrorCache cache_;       // per triangle (three vertex ids)
   TriangleErrorCache edge_cache_;  // per edge (two vertex ids)
   std::vector<TriMesh::VertexHandle> ring_;
+  CollapseCheck check_{0};
 };
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
-#include <unordered_map>
 
 #include "core/error.hpp"
 #include "terrainlod/bitstream.hpp"
@@ -72,16 +71,31 @@ struct StripTriangle {
 };
 
 std::vector<StripTriangle> strip_order(const std::vector<std::array<int, 3>>& tris) {
-  std::unordered_map<std::uint64_t, int> by_edge;  // directed edge -> triangle
+  // Directed edge -> triangle in an open-addressing table (one allocation, no hash nodes);
+  // a repeated key (only in a non-manifold input) keeps the last triangle, as map
+  // assignment did.
   auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+  std::size_t size = 16;
+  while (size < 6 * tris.size()) size *= 2;  // load <= 1/2
+  constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::pair<std::uint64_t, int>> table(size, {kEmpty, -1});
+  auto slot = [&](std::uint64_t k) {
+    std::size_t i = static_cast<std::size_t>((k * 0x9e3779b97f4a7c15ull) >> 20) & (size - 1);
+    while (table[i].first != kEmpty && table[i].first != k) i = (i + 1) & (size - 1);
+    return i;
+  };
   for (std::size_t t = 0; t < tris.size(); ++t)
-    for (int e = 0; e < 3; ++e) by_edge[key(tris[t][e], tris[t][(e + 1) % 3])] = static_cast<int>(t);
+    for (int e = 0; e < 3; ++e) {
+      const std::uint64_t k = key(tris[t][e], tris[t][(e + 1) % 3]);
+      table[slot(k)] = {k, static_cast<int>(t)};
+    }
   std::vector<std::uint8_t> used(tris.size(), 0);
+  auto find_edge = [&](std::uint64_t k) { return table[slot(k)].second; };  // -1 at an empty slot
   // The free triangle across edge {a, b} (the neighbour holds it as b -> a), or -1.
   auto across = [&](int a, int b) {
     for (auto k : {key(b, a), key(a, b)}) {
-      auto it = by_edge.find(k);
-      if (it != by_edge.end() && !used[static_cast<std::size_t>(it->second)]) return it->second;
+      const int t = find_edge(k);
+      if (t >= 0 && !used[static_cast<std::size_t>(t)]) return t;
     }
     return -1;
   };
@@ -125,8 +139,10 @@ class EdgeGraph {
     }
   }
   // Neighbours of the context vertices, without them, ascending.
-  std::vector<int> candidates(std::initializer_list<int> context) const {
-    std::vector<int> out;
+  // The result lives in a buffer of the graph, valid until the next call.
+  const std::vector<int>& candidates(std::initializer_list<int> context) const {
+    std::vector<int>& out = scratch_;
+    out.clear();
     for (int c : context)
       for (int v : adj_[static_cast<std::size_t>(c)]) out.push_back(v);
     std::sort(out.begin(), out.end());
@@ -141,6 +157,7 @@ class EdgeGraph {
     if (std::find(l.begin(), l.end(), b) == l.end()) l.push_back(b);
   }
   std::vector<std::vector<int>> adj_;
+  mutable std::vector<int> scratch_;
 };
 
 // Where a new interior vertex is expected: a + b - c (parallelogram), a alone (c < 0), or
@@ -211,7 +228,7 @@ std::string encode_tile(const Tile& tile, TileSizes* sizes) {
       preds.push_back(pred.a < 0 ? Predictor{last, -1, -1} : pred);
       x.fresh = true;
     } else {
-      const std::vector<int> cand = graph.candidates(context);
+      const std::vector<int>& cand = graph.candidates(context);
       const auto it = std::lower_bound(cand.begin(), cand.end(), r);
       x.candidates = static_cast<int>(cand.size());
       if (it != cand.end() && *it == r) x.candidate = static_cast<int>(it - cand.begin());
@@ -378,7 +395,7 @@ Tile decode_tile(std::string_view bytes) {
       r = next++;
       preds.push_back(pred.a < 0 ? Predictor{last, -1, -1} : pred);
     } else {
-      const std::vector<int> cand = graph.candidates(context);
+      const std::vector<int>& cand = graph.candidates(context);
       if (!cand.empty() && conn.get(1)) {
         const std::uint64_t i = conn.get(bit_width(cand.size() - 1));
         if (i >= cand.size()) throw bad_input("{}: bad neighbour reference", name);

@@ -139,8 +139,14 @@ double TinReference::edge_error(const GridPoint& p, const GridPoint& q, double s
         const double fx = s.x - r.x, fy = s.y - r.y;
         const double den = ex * fy - ey * fx;
         if (den == 0) continue;  // parallel: the end points are overlay vertices of their own
-        const double t = ((r.x - p.x) * fy - (r.y - p.y) * fx) / den;  // along p -> q
-        const double u = ((r.x - p.x) * ey - (r.y - p.y) * ex) / den;  // along r -> s
+        const double tn = (r.x - p.x) * fy - (r.y - p.y) * fx, un = (r.x - p.x) * ey - (r.y - p.y) * ex;
+        // Most edges of the buckets miss p -> q; the numerators tell without dividing:
+        // rounding is monotone, so tn / den rounds to <= 0 when the signs differ (or tn is
+        // 0) and to >= 1 when |tn| >= |den|, and a nonzero un / den keeps its sign.
+        if (tn == 0 || (tn < 0) != (den < 0) || std::abs(tn) >= std::abs(den)) continue;
+        if (un != 0 && (un < 0) != (den < 0)) continue;
+        const double t = tn / den;  // along p -> q
+        const double u = un / den;  // along r -> s
         if (t <= 0 || t >= 1 || u < 0 || u > 1) continue;
         worst = std::max(worst, std::abs(p.z + t * (q.z - p.z) - (r.z + u * (s.z - r.z))));
         if (worst > stop_above) return worst;
