@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "terrainlod/rtin_start.hpp"
 #include "terrainlod/simplify.hpp"
 #include "terrainlod/tile_codec.hpp"
 #include "terrainlod/tin_reference.hpp"
@@ -103,13 +104,42 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   return fits.load();
 }
 
+// The coarsest RTIN on the tile's lattice whose every triangle (with its transition
+// variants) meets the engine's limit, all border points locked; nullopt where some lattice
+// cell fits with neither diagonal (then the lattice mesh does not fit either).
+std::optional<StartMesh> rtin_tile_start(const ReferenceSurface& ref, const TinReference* coarse, const TileFrame& frame,
+                                         int n, int step, double limit) {
+  std::vector<std::uint8_t> border(static_cast<std::size_t>(n + 1) * (n + 1), 0);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (i == 0 || j == 0 || i == n || j == n) border[static_cast<std::size_t>(j) * (n + 1) + i] = 1;
+  TriangleMeasure measure;
+  if (coarse)
+    measure = [&](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
+      return transition_error(*coarse, ref, frame, a, b, c, s);
+    };
+  else
+    measure = [&](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
+      return transition_error(ref, frame, a, b, c, s);
+    };
+  auto rtin = rtin_start_mesh(ref, SquareLattice{frame.x0, frame.y0, n, step}, border, limit, measure);
+  if (!rtin) return std::nullopt;
+  return StartMesh{std::move(rtin->tin), std::move(rtin->locked)};
+}
+
 Tile build_tile(const ReferenceSurface& ref, const TinReference* coarse, const HeightGrid& padded, const LevelInfo& lv,
-                const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance) {
+                const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance, StartRule rule) {
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
   const TileFrame frame = frame_of(lv, levels, tx, ty);
-  const StartMesh start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
-  const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start.tin, start.locked, lv.limit + tolerance, &frame)
-                                  : simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
+  const double limit = lv.limit + tolerance;
+  std::optional<StartMesh> start;
+  // With no tolerance (the leaves by default) the engine only removes vertices inside
+  // planar regions: the result is nearly the start mesh, and the lattice's diagonals (the
+  // DEM surface's own) are both exact and what the strip coder packs best.
+  if (rule == StartRule::rtin && lv.limit > 0) start = rtin_tile_start(ref, coarse, frame, n, step, limit);
+  if (!start) start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
+  const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start->tin, start->locked, limit, &frame)
+                                  : simplify_tin(ref, start->tin, start->locked, limit, &frame);
 
   Tile tile;
   tile.id = {lv.level, tx, ty};
@@ -311,7 +341,8 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
             std::optional<TinReference> coarse;
             if (r >= 0)
               coarse = coarse_reference(base[static_cast<std::size_t>(r)], pyr.level[static_cast<std::size_t>(r)], lv, tx, ty);
-            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance);
+            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance,
+                                params.start);
             if (!base[static_cast<std::size_t>(l)].empty())
               base[static_cast<std::size_t>(l)][static_cast<std::size_t>(ty) * lv.tiles_x + tx] = triangulate(t, 0, pyr.geometry(l));
             // The tile's own figures: the largest error over its triangulations (with
