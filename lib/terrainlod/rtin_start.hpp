@@ -1,23 +1,25 @@
 #pragma once
-// An adaptive start mesh for the collapse engine (simplify.hpp): the coarsest right-
+// An adaptive start mesh for the collapse engine (simplify.hpp): a coarse right-
 // triangulated irregular network (RTIN: recursive longest-edge bisection of the square's
-// two half-squares, the hierarchy of Evans, Kirkpatrick & Townsend's right-triangulated
-// networks as @mapbox/martini builds it) on a square lattice whose every triangle already
-// meets the engine's bound, so that the engine decimates from a mesh about twice its final
-// size instead of from the full lattice (greedy decimation costs about
+// two half-squares, the hierarchy @mapbox/martini uses) on a square lattice whose every
+// triangle already meets the engine's bound, so that the engine decimates from a mesh
+// near its final size instead of from the full lattice (greedy decimation costs about
 // area x ln(start / final vertices)).
 //
-// Every triangle of the hierarchy is measured exactly with the caller's measure (the one
-// the engine uses, transition variants included), bottom-up; a triangle is "over" when it
-// or any descendant is over the limit, where the flag lives on the midpoint of the
-// hypotenuse, so the two triangles sharing a hypotenuse split together (Martini's trick)
-// and the top-down selection yields a conforming mesh. Locked lattice points are forced in
-// as vertices the same way (their flag is set). No triangle is accepted by an estimate:
-// every triangle of the result was measured within the limit.
+// Top-down: a triangle of the current mesh is measured exactly with the caller's measure
+// (the engine's own, transition variants included); one over the limit is split, together
+// with the triangle across its hypotenuse and, so that those exist, their ancestors (the
+// closure that keeps an RTIN conforming: no T-junctions); passes repeat until nothing
+// changes. Locked points lie on the lattice's border: a triangle with border edges is
+// measured and kept as the fan that joins its opposite corner to every locked point on
+// them (the transition refinement of transition.hpp), so the border keeps all of them
+// without forcing a band of small triangles along it. No triangle is accepted by an
+// estimate: every triangle of the result was measured within the limit.
 //
 // The smallest RTIN triangles halve a lattice cell along a fixed diagonal; where that
-// diagonal is over the limit, both halves' parents are split and the cell takes the other
-// diagonal (measured too). Where neither diagonal fits, there is no RTIN start mesh.
+// half is over the limit, the cell takes the other diagonal (measured too; the other
+// half's parent is split so both halves exist). Where neither fits, there is no RTIN
+// start mesh.
 
 #include <cstdint>
 #include <functional>
@@ -49,11 +51,12 @@ struct RtinStart {
   std::size_t flipped_cells = 0;      // lattice cells that took the other diagonal
 };
 
-// `locked_points`: (n + 1)^2 flags, row-major from the south-west lattice point; every
-// flagged point is a vertex of the result (and flagged in RtinStart::locked). Heights are
-// `dem.sample` at the lattice points. Returns nullopt where some lattice cell fits the
-// limit with neither diagonal (the lattice mesh would not fit either). Throws usage_error
-// for a lattice that is not a power of two or not inside the DEM.
+// `locked_points`: (n + 1)^2 flags, row-major from the south-west lattice point, set on
+// border points only; every flagged point is a vertex of the result (and flagged in
+// RtinStart::locked). Heights are `dem.sample` at the lattice points. Returns nullopt
+// where some lattice cell fits the limit with neither diagonal (the lattice mesh would not
+// fit either). Throws usage_error for a lattice that is not a power of two or not inside
+// the DEM, or a locked point off the border.
 std::optional<RtinStart> rtin_start_mesh(const ReferenceSurface& dem, const SquareLattice& lattice,
                                          const std::vector<std::uint8_t>& locked_points, double limit,
                                          const TriangleMeasure& measure);

@@ -104,16 +104,13 @@ TEST(TerrainlodRtin, LockedBorderOfAPlaneIsConforming) {
   const ReferenceSurface ref(g, DiagonalRule::shortest);
   for (int n : {1, 2, 4, 8, 16, 32}) {
     const SquareLattice lat{0, 0, n, 32 / n};
-    const auto r = rtin_start_mesh(ref, lat, border_points(n), 0, grid_measure(ref));
+    const auto r = rtin_start_mesh(ref, lat, border_points(n), 1e-9, grid_measure(ref));
     ASSERT_TRUE(r.has_value());
     expect_conforming_cover(*r, lat, border_points(n));
-    // Conformity forces some interior vertices next to the border, not the lattice.
-    if (n >= 4) {
-      EXPECT_LT(r->tin.vertices.size(), std::size_t(n + 1) * (n + 1)) << "n " << n;
-    }
-    if (n == 32) {
-      EXPECT_LT(r->tin.vertices.size(), std::size_t(n + 1) * (n + 1) / 2) << "n " << n;
-    }
+    // Every triangle of a plane is exact: the two half-squares stay, fanned to the border
+    // points, and no interior point is a vertex: a polygon of 4n corners, 4n - 2 triangles.
+    EXPECT_EQ(r->tin.vertices.size(), 4u * n) << "n " << n;
+    EXPECT_EQ(r->tin.triangles.size(), 4u * n - 2) << "n " << n;
   }
 }
 
@@ -209,9 +206,18 @@ TEST(TerrainlodRtin, NoStartMeshWhereNeitherDiagonalFits) {
 TEST(TerrainlodRtin, BadLatticeIsAUsageError) {
   const HeightGrid g = fest::test::plane_grid(9, 9, 0, 0, 0);
   const ReferenceSurface ref(g, DiagonalRule::shortest);
-  for (const SquareLattice& lat : {SquareLattice{0, 0, 3, 1}, SquareLattice{0, 0, 8, 2}, SquareLattice{4, 0, 8, 1}}) {
+  std::vector<std::uint8_t> interior = border_points(8);
+  interior[4 * 9 + 4] = 1;
+  const std::pair<SquareLattice, std::vector<std::uint8_t>> bad[] = {
+      {SquareLattice{0, 0, 3, 1}, border_points(3)},  // not a power of two
+      {SquareLattice{0, 0, 8, 2}, border_points(8)},  // beyond the DEM
+      {SquareLattice{4, 0, 8, 1}, border_points(8)},
+      {SquareLattice{0, 0, 8, 1}, border_points(4)},  // flags for another lattice
+      {SquareLattice{0, 0, 8, 1}, interior},          // a locked point off the border
+  };
+  for (const auto& [lat, locked] : bad) {
     try {
-      rtin_start_mesh(ref, lat, border_points(lat.n), 1, grid_measure(ref));
+      rtin_start_mesh(ref, lat, locked, 1, grid_measure(ref));
       ADD_FAILURE() << "no error for n " << lat.n;
     } catch (const fest::Error& e) {
       EXPECT_EQ(e.status(), fest::Status::usage);
