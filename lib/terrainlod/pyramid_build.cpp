@@ -122,7 +122,12 @@ std::optional<StartMesh> rtin_tile_start(const ReferenceSurface& ref, const TinR
     measure = [&](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
       return transition_error(ref, frame, a, b, c, s);
     };
-  auto rtin = rtin_start_mesh(ref, SquareLattice{frame.x0, frame.y0, n, step}, border, limit, measure);
+  PointHeight height;
+  if (coarse)
+    height = [coarse](double x, double y) { return coarse->height_at(x, y); };
+  else
+    height = [&ref](double x, double y) { return ref.height_at(x, y); };
+  auto rtin = rtin_start_mesh(ref, SquareLattice{frame.x0, frame.y0, n, step}, border, limit, measure, height);
   if (!rtin) return std::nullopt;
   return StartMesh{std::move(rtin->tin), std::move(rtin->locked)};
 }

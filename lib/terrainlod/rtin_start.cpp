@@ -29,8 +29,8 @@ LatticePoint reflect(LatticePoint p, LatticePoint centre) { return {2 * centre.i
 class RtinBuilder {
  public:
   RtinBuilder(const ReferenceSurface& dem, const SquareLattice& lat, const std::vector<std::uint8_t>& locked,
-              double limit, const TriangleMeasure& measure)
-      : dem_(dem), lat_(lat), locked_(locked), limit_(limit), measure_(measure),
+              double limit, const TriangleMeasure& measure, const PointHeight& reference_height)
+      : dem_(dem), lat_(lat), locked_(locked), limit_(limit), measure_(measure), reference_height_(reference_height),
         split_(points(), 0), state_(2 * points(), kUnknown), cell_(static_cast<std::size_t>(lat.n) * lat.n, 0),
         vertex_of_(points(), -1) {}
 
@@ -163,12 +163,41 @@ class RtinBuilder {
   bool fits(const Rtri& t) {
     std::array<LatticePoint, 3> corner;
     fan(t, corner, extra_, pieces_);
+    if (over_at_edge_midpoints(corner)) {
+      ++result_.rejected;
+      return false;
+    }
     auto at = [&](int id) { return point(id < 3 ? corner[static_cast<std::size_t>(id)] : extra_[static_cast<std::size_t>(id - 3)]); };
     for (const auto& q : pieces_) {
       ++result_.measured;
       if (measure_(at(q[0]), at(q[1]), at(q[2]), limit_) > limit_) return false;
     }
     return true;
+  }
+
+  // Every edge of the triangle that is not fanned is an edge of one piece, which along it
+  // interpolates the edge's two ends: missing the reference there by more than the limit
+  // is over, whatever the rest of the triangle (the base triangulation, with no transition,
+  // is one of the variants measured).
+  bool over_at_edge_midpoints(const std::array<LatticePoint, 3>& corner) const {
+    if (!reference_height_) return false;
+    for (int k = 0; k < 3; ++k) {
+      if (pieces_.size() > 1 && fanned_edge(corner, k)) continue;
+      const GridPoint p = point(corner[static_cast<std::size_t>(k)]), q = point(corner[static_cast<std::size_t>((k + 1) % 3)]);
+      const double x = 0.5 * (p.x + q.x), y = 0.5 * (p.y + q.y);
+      if (std::abs(0.5 * (p.z + q.z) - reference_height_(x, y)) > limit_) return true;
+    }
+    return false;
+  }
+
+  // Whether a locked point lies strictly inside edge k of the counter-clockwise corners.
+  bool fanned_edge(const std::array<LatticePoint, 3>& corner, int k) const {
+    const LatticePoint p = corner[static_cast<std::size_t>(k)], q = corner[static_cast<std::size_t>((k + 1) % 3)];
+    if (!((p.i == q.i && (p.i == 0 || p.i == lat_.n)) || (p.j == q.j && (p.j == 0 || p.j == lat_.n)))) return false;
+    const int di = (q.i > p.i) - (q.i < p.i), dj = (q.j > p.j) - (q.j < p.j);
+    for (LatticePoint r{p.i + di, p.j + dj}; !(r == q); r = {r.i + di, r.j + dj})
+      if (locked_[index(r)]) return true;
+    return false;
   }
 
   // The cell's two halves with the diagonal the RTIN does not have (the smallest RTIN
@@ -261,6 +290,7 @@ class RtinBuilder {
   const std::vector<std::uint8_t>& locked_;
   double limit_;
   const TriangleMeasure& measure_;
+  const PointHeight& reference_height_;
   std::vector<std::uint8_t> split_;   // per lattice point: the triangles it bisects are split
   std::vector<std::uint8_t> state_;   // per lattice point x 2 (slot): that triangle's measurement
   std::vector<std::uint8_t> cell_;    // per lattice cell: kHalfFits / kHalfOver / kFlipped
@@ -275,7 +305,7 @@ class RtinBuilder {
 
 std::optional<RtinStart> rtin_start_mesh(const ReferenceSurface& dem, const SquareLattice& lattice,
                                          const std::vector<std::uint8_t>& locked_points, double limit,
-                                         const TriangleMeasure& measure) {
+                                         const TriangleMeasure& measure, const PointHeight& reference_height) {
   const int n = lattice.n;
   if (n < 1 || (n & (n - 1)) != 0 || n > (1 << 15))
     throw usage_error("RTIN start mesh: lattice cells per side must be a power of two up to 32768 (got {})", n);
@@ -291,7 +321,7 @@ std::optional<RtinStart> rtin_start_mesh(const ReferenceSurface& dem, const Squa
     for (int i = 1; i < n; ++i)
       if (locked_points[static_cast<std::size_t>(j) * (n + 1) + i])
         throw usage_error("RTIN start mesh: locked lattice point ({}, {}) is not on the border", i, j);
-  RtinBuilder builder(dem, lattice, locked_points, limit, measure);
+  RtinBuilder builder(dem, lattice, locked_points, limit, measure, reference_height);
   return builder.run();
 }
 

@@ -44,10 +44,15 @@ struct SquareLattice {
 // with any value above `stop_above`.
 using TriangleMeasure = std::function<double(const GridPoint&, const GridPoint&, const GridPoint&, double stop_above)>;
 
+// The measure's reference surface at a point (grid units): the lower bound that rejects
+// most over-limit triangles before their exact measurement (empty: measure everything).
+using PointHeight = std::function<double(double x, double y)>;
+
 struct RtinStart {
   Tin tin;                            // counter-clockwise triangles, heights = DEM samples
   std::vector<std::uint8_t> locked;   // per vertex of `tin`: a locked lattice point
   std::size_t measured = 0;           // triangles measured exactly (statistics)
+  std::size_t rejected = 0;           // triangles rejected by the lower bound alone
   std::size_t flipped_cells = 0;      // lattice cells that took the other diagonal
 };
 
@@ -55,10 +60,13 @@ struct RtinStart {
 // border points only; every flagged point is a vertex of the result (and flagged in
 // RtinStart::locked). Heights are `dem.sample` at the lattice points. Returns nullopt
 // where some lattice cell fits the limit with neither diagonal (the lattice mesh would not
-// fit either). Throws usage_error for a lattice that is not a power of two or not inside
-// the DEM, or a locked point off the border.
+// fit either). `reference_height`, where given, must be the surface `measure` measures
+// against: a triangle whose plane misses it by more than the limit at the midpoint of an
+// edge is over without the exact measurement (a lower bound: it only rejects, so the
+// result is the same with or without it). Throws usage_error for a lattice that is not a
+// power of two or not inside the DEM, or a locked point off the border.
 std::optional<RtinStart> rtin_start_mesh(const ReferenceSurface& dem, const SquareLattice& lattice,
                                          const std::vector<std::uint8_t>& locked_points, double limit,
-                                         const TriangleMeasure& measure);
+                                         const TriangleMeasure& measure, const PointHeight& reference_height = {});
 
 }  // namespace fest::terrainlod

@@ -420,7 +420,8 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
     };
     // Every lattice cell fits with the reference's own diagonal, so there is always a
     // start mesh; the fallback below only guards the contract.
-    if (auto rtin = rtin_start_mesh(ref, SquareLattice{0, 0, n, 1}, corners, limit, measure)) {
+    const PointHeight height = [&ref](double x, double y) { return ref.height_at(x, y); };
+    if (auto rtin = rtin_start_mesh(ref, SquareLattice{0, 0, n, 1}, corners, limit, measure, height)) {
       CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, rtin->tin, rtin->locked, limit, nullptr);
       SimplifyResult result = engine.run();
       result.tolerance = tolerance;

@@ -194,6 +194,37 @@ TEST(TerrainlodRtin, TransitionVariantsWithinTheLimit) {
   }
 }
 
+TEST(TerrainlodRtin, LowerBoundOnlyRejects) {
+  // The edge-midpoint lower bound skips exact measurements of triangles that are over
+  // anyway: the same mesh with and without it, grid and transition measures alike.
+  const HeightGrid g = fest::test::fbm_grid(7, 6, 60.0);
+  const ReferenceSurface ref(g, DiagonalRule::shortest);
+  const PointHeight height = [&ref](double x, double y) { return ref.height_at(x, y); };
+  TileFrame frame;
+  frame.x0 = 0, frame.y0 = 0, frame.x1 = 128, frame.y1 = 128;
+  frame.fine_step = 1;
+  frame.refinable = 15;
+  const TriangleMeasure with_variants = [&](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
+    return transition_error(ref, frame, a, b, c, s);
+  };
+  const SquareLattice lat{0, 0, 64, 2};
+  for (const TriangleMeasure& measure : {grid_measure(ref), with_variants})
+    for (double limit : {3.0, 10.0}) {
+      const auto plain = rtin_start_mesh(ref, lat, border_points(64), limit, measure);
+      const auto bounded = rtin_start_mesh(ref, lat, border_points(64), limit, measure, height);
+      ASSERT_TRUE(plain && bounded);
+      EXPECT_EQ(plain->tin.triangles, bounded->tin.triangles);
+      ASSERT_EQ(plain->tin.vertices.size(), bounded->tin.vertices.size());
+      for (std::size_t v = 0; v < plain->tin.vertices.size(); ++v) {
+        EXPECT_EQ(plain->tin.vertices[v].x, bounded->tin.vertices[v].x);
+        EXPECT_EQ(plain->tin.vertices[v].y, bounded->tin.vertices[v].y);
+      }
+      EXPECT_EQ(plain->rejected, 0u);
+      EXPECT_GT(bounded->rejected, 0u);
+      EXPECT_LT(bounded->measured, plain->measured);
+    }
+}
+
 TEST(TerrainlodRtin, NoStartMeshWhereNeitherDiagonalFits) {
   // A spike at the centre of the only lattice cell (step 2): both diagonals miss it by 10.
   HeightGrid g = fest::test::plane_grid(3, 3, 0, 0, 0);
