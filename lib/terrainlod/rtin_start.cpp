@@ -163,7 +163,7 @@ class RtinBuilder {
   bool fits(const Rtri& t) {
     std::array<LatticePoint, 3> corner;
     fan(t, corner, extra_, pieces_);
-    if (over_at_edge_midpoints(corner)) {
+    if (over_at_test_points(corner)) {
       ++result_.rejected;
       return false;
     }
@@ -175,28 +175,26 @@ class RtinBuilder {
     return true;
   }
 
-  // Every edge of the triangle that is not fanned is an edge of one piece, which along it
-  // interpolates the edge's two ends: missing the reference there by more than the limit
-  // is over, whatever the rest of the triangle (the base triangulation, with no transition,
-  // is one of the variants measured).
-  bool over_at_edge_midpoints(const std::array<LatticePoint, 3>& corner) const {
+  // A lower bound of the error of the fan's pieces: each piece's plane against the
+  // reference at the piece's centroid and edge midpoints. Missing it by more than the limit
+  // (with a round-off margin, so that this never rejects what the exact measure would
+  // keep) is over, whatever the rest (the base triangulation, with no transition, is one
+  // of the variants the measure checks).
+  bool over_at_test_points(const std::array<LatticePoint, 3>& corner) const {
     if (!reference_height_) return false;
-    for (int k = 0; k < 3; ++k) {
-      if (pieces_.size() > 1 && fanned_edge(corner, k)) continue;
-      const GridPoint p = point(corner[static_cast<std::size_t>(k)]), q = point(corner[static_cast<std::size_t>((k + 1) % 3)]);
-      const double x = 0.5 * (p.x + q.x), y = 0.5 * (p.y + q.y);
-      if (std::abs(0.5 * (p.z + q.z) - reference_height_(x, y)) > limit_) return true;
+    auto at = [&](int id) {
+      return point(id < 3 ? corner[static_cast<std::size_t>(id)] : extra_[static_cast<std::size_t>(id - 3)]);
+    };
+    const double margin = limit_ * (1 + 1e-12) + 1e-12;
+    auto misses = [&](double x, double y, double z) { return std::abs(z - reference_height_(x, y)) > margin; };
+    for (const auto& q : pieces_) {
+      const GridPoint a = at(q[0]), b = at(q[1]), c = at(q[2]);
+      if (misses((a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3)) return true;
+      for (const auto* e : {&a, &b, &c}) {
+        const GridPoint& f = e == &a ? b : e == &b ? c : a;
+        if (misses(0.5 * (e->x + f.x), 0.5 * (e->y + f.y), 0.5 * (e->z + f.z))) return true;
+      }
     }
-    return false;
-  }
-
-  // Whether a locked point lies strictly inside edge k of the counter-clockwise corners.
-  bool fanned_edge(const std::array<LatticePoint, 3>& corner, int k) const {
-    const LatticePoint p = corner[static_cast<std::size_t>(k)], q = corner[static_cast<std::size_t>((k + 1) % 3)];
-    if (!((p.i == q.i && (p.i == 0 || p.i == lat_.n)) || (p.j == q.j && (p.j == 0 || p.j == lat_.n)))) return false;
-    const int di = (q.i > p.i) - (q.i < p.i), dj = (q.j > p.j) - (q.j < p.j);
-    for (LatticePoint r{p.i + di, p.j + dj}; !(r == q); r = {r.i + di, r.j + dj})
-      if (locked_[index(r)]) return true;
     return false;
   }
 

@@ -61,9 +61,9 @@ struct RtinStart {
 // RtinStart::locked). Heights are `dem.sample` at the lattice points. Returns nullopt
 // where some lattice cell fits the limit with neither diagonal (the lattice mesh would not
 // fit either). `reference_height`, where given, must be the surface `measure` measures
-// against: a triangle whose plane misses it by more than the limit at the midpoint of an
-// edge is over without the exact measurement (a lower bound: it only rejects, so the
-// result is the same with or without it). Throws usage_error for a lattice that is not a
+// against: a triangle (or a piece of its border fan) whose plane misses it by more than
+// the limit at its centroid or an edge midpoint is over without the exact measurement (a
+// lower bound: it only rejects, so the result is the same with or without it). Throws usage_error for a lattice that is not a
 // power of two or not inside the DEM, or a locked point off the border.
 std::optional<RtinStart> rtin_start_mesh(const ReferenceSurface& dem, const SquareLattice& lattice,
                                          const std::vector<std::uint8_t>& locked_points, double limit,
