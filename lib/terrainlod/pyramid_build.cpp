@@ -28,12 +28,14 @@ std::int64_t finest_code(double z, double delta_min) { return std::llround(z / d
 
 // The lattice mesh of a tile: (n+1)^2 DEM samples `step` cells apart, each lattice cell
 // split by its shorter diagonal (spec 2.3 on the tile's lattice), border points locked.
+// On the DEM's own grid (step 1) the cells take the reference surface's diagonals, whatever
+// --diagonal chose: that mesh is the reference itself, exact at the leaves' limit 0.
 struct StartMesh {
   Tin tin;
   std::vector<std::uint8_t> locked;
 };
 
-StartMesh lattice_mesh(const HeightGrid& padded, int x0, int y0, int n, int step) {
+StartMesh lattice_mesh(const ReferenceSurface& ref, const HeightGrid& padded, int x0, int y0, int n, int step) {
   StartMesh s;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
@@ -47,7 +49,7 @@ StartMesh lattice_mesh(const HeightGrid& padded, int x0, int y0, int n, int step
       const auto& v = s.tin.vertices;
       const double d_ne = std::abs(v[id(i + 1, j + 1)].z - v[id(i, j)].z);
       const double d_nw = std::abs(v[id(i, j + 1)].z - v[id(i + 1, j)].z);
-      if (d_ne <= d_nw) {
+      if (step == 1 ? ref.ne_diagonal(x0 + i, y0 + j) : d_ne <= d_nw) {
         s.tin.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
         s.tin.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
       } else {
@@ -87,7 +89,7 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   auto worker = [&] {
     for (int k; fits.load() && (k = next.fetch_add(1)) < tiles;) {
       const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
-      const StartMesh s = lattice_mesh(padded, tx * lv.cells, ty * lv.cells, n, step);
+      const StartMesh s = lattice_mesh(ref, padded, tx * lv.cells, ty * lv.cells, n, step);
       const TileFrame f = frame_of(lv, levels, tx, ty);
       for (const auto& t : s.tin.triangles)
         if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
@@ -142,7 +144,7 @@ Tile build_tile(const ReferenceSurface& ref, const TinReference* coarse, const H
   // planar regions: the result is nearly the start mesh, and the lattice's diagonals (the
   // DEM surface's own) are both exact and what the strip coder packs best.
   if (rule == StartRule::rtin && lv.limit > 0) start = rtin_tile_start(ref, coarse, frame, n, step, limit);
-  if (!start) start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
+  if (!start) start = lattice_mesh(ref, padded, frame.x0, frame.y0, n, step);
   const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start->tin, start->locked, limit, &frame)
                                   : simplify_tin(ref, start->tin, start->locked, limit, &frame);
 
