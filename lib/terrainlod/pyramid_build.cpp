@@ -106,9 +106,9 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   return fits.load();
 }
 
-// The coarsest RTIN on the tile's lattice whose every triangle (with its transition
-// variants) meets the engine's limit, all border points locked; nullopt where some lattice
-// cell fits with neither diagonal (then the lattice mesh does not fit either).
+// A coarse RTIN on the tile's lattice whose every triangle (with its transition variants)
+// meets the engine's limit, all border points locked (rtin_start.hpp); nullopt where some
+// lattice cell fits with neither diagonal (then the lattice mesh does not fit either).
 std::optional<StartMesh> rtin_tile_start(const ReferenceSurface& ref, const TinReference* coarse, const TileFrame& frame,
                                          int n, int step, double limit) {
   std::vector<std::uint8_t> border(static_cast<std::size_t>(n + 1) * (n + 1), 0);

@@ -1,7 +1,8 @@
 #pragma once
 // Greedy half-edge-collapse simplification of a DEM with a guaranteed vertical error
-// (spec terrainlod 2.6, the engine of `simplify` and of the tiles): start from the finest
-// triangulation (every sample a vertex, every cell split by one diagonal), repeatedly
+// (spec terrainlod 2.6, the engine of `simplify` and of the tiles): start from a mesh
+// within the bound (the finest triangulation, every sample a vertex and every cell split
+// by one diagonal, or a coarse RTIN within the bound: rtin_start.hpp), repeatedly
 // remove the vertex whose cheapest collapse onto a neighbour changes the surface least,
 // where "least" is the exact vertical L-infinity distance of the new triangles from the
 // reference surface (triangle_error.hpp), and stop when no collapse stays within the bound.
@@ -30,7 +31,7 @@ struct Tin {
 };
 
 // What the engine decimates from: the full lattice (every sample a vertex), or the
-// coarsest RTIN whose every triangle already meets the bound (rtin_start.hpp), which
+// coarse RTIN whose every triangle already meets the bound (rtin_start.hpp), which
 // costs the engine a fraction of the work; the lattice is the fallback where the RTIN
 // does not apply (a grid that is not square 2^k + 1) and the reference for validation.
 enum class StartRule { lattice, rtin };
