@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "terrainlod/rtin_start.hpp"
 #include "terrainlod/simplify.hpp"
 #include "terrainlod/tile_codec.hpp"
 #include "terrainlod/tin_reference.hpp"
@@ -27,12 +28,14 @@ std::int64_t finest_code(double z, double delta_min) { return std::llround(z / d
 
 // The lattice mesh of a tile: (n+1)^2 DEM samples `step` cells apart, each lattice cell
 // split by its shorter diagonal (spec 2.3 on the tile's lattice), border points locked.
+// On the DEM's own grid (step 1) the cells take the reference surface's diagonals, whatever
+// --diagonal chose: that mesh is the reference itself, exact at the leaves' limit 0.
 struct StartMesh {
   Tin tin;
   std::vector<std::uint8_t> locked;
 };
 
-StartMesh lattice_mesh(const HeightGrid& padded, int x0, int y0, int n, int step) {
+StartMesh lattice_mesh(const ReferenceSurface& ref, const HeightGrid& padded, int x0, int y0, int n, int step) {
   StartMesh s;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
@@ -46,7 +49,7 @@ StartMesh lattice_mesh(const HeightGrid& padded, int x0, int y0, int n, int step
       const auto& v = s.tin.vertices;
       const double d_ne = std::abs(v[id(i + 1, j + 1)].z - v[id(i, j)].z);
       const double d_nw = std::abs(v[id(i, j + 1)].z - v[id(i + 1, j)].z);
-      if (d_ne <= d_nw) {
+      if (step == 1 ? ref.ne_diagonal(x0 + i, y0 + j) : d_ne <= d_nw) {
         s.tin.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
         s.tin.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
       } else {
@@ -86,7 +89,7 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   auto worker = [&] {
     for (int k; fits.load() && (k = next.fetch_add(1)) < tiles;) {
       const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
-      const StartMesh s = lattice_mesh(padded, tx * lv.cells, ty * lv.cells, n, step);
+      const StartMesh s = lattice_mesh(ref, padded, tx * lv.cells, ty * lv.cells, n, step);
       const TileFrame f = frame_of(lv, levels, tx, ty);
       for (const auto& t : s.tin.triangles)
         if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
@@ -103,13 +106,47 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   return fits.load();
 }
 
+// A coarse RTIN on the tile's lattice whose every triangle (with its transition variants)
+// meets the engine's limit, all border points locked (rtin_start.hpp); nullopt where some
+// lattice cell fits with neither diagonal (then the lattice mesh does not fit either).
+std::optional<StartMesh> rtin_tile_start(const ReferenceSurface& ref, const TinReference* coarse, const TileFrame& frame,
+                                         int n, int step, double limit) {
+  std::vector<std::uint8_t> border(static_cast<std::size_t>(n + 1) * (n + 1), 0);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (i == 0 || j == 0 || i == n || j == n) border[static_cast<std::size_t>(j) * (n + 1) + i] = 1;
+  TriangleMeasure measure;
+  if (coarse)
+    measure = [&](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
+      return transition_error(*coarse, ref, frame, a, b, c, s);
+    };
+  else
+    measure = [&](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
+      return transition_error(ref, frame, a, b, c, s);
+    };
+  PointHeight height;
+  if (coarse)
+    height = [coarse](double x, double y) { return coarse->height_at(x, y); };
+  else
+    height = [&ref](double x, double y) { return ref.height_at(x, y); };
+  auto rtin = rtin_start_mesh(ref, SquareLattice{frame.x0, frame.y0, n, step}, border, limit, measure, height);
+  if (!rtin) return std::nullopt;
+  return StartMesh{std::move(rtin->tin), std::move(rtin->locked)};
+}
+
 Tile build_tile(const ReferenceSurface& ref, const TinReference* coarse, const HeightGrid& padded, const LevelInfo& lv,
-                const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance) {
+                const std::vector<LevelInfo>& levels, int tx, int ty, double delta_min, double tolerance, StartRule rule) {
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
   const TileFrame frame = frame_of(lv, levels, tx, ty);
-  const StartMesh start = lattice_mesh(padded, frame.x0, frame.y0, n, step);
-  const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start.tin, start.locked, lv.limit + tolerance, &frame)
-                                  : simplify_tin(ref, start.tin, start.locked, lv.limit + tolerance, &frame);
+  const double limit = lv.limit + tolerance;
+  std::optional<StartMesh> start;
+  // With no tolerance (the leaves by default) the engine only removes vertices inside
+  // planar regions: the result is nearly the start mesh, and the lattice's diagonals (the
+  // DEM surface's own) are both exact and what the strip coder packs best.
+  if (rule == StartRule::rtin && lv.limit > 0) start = rtin_tile_start(ref, coarse, frame, n, step, limit);
+  if (!start) start = lattice_mesh(ref, padded, frame.x0, frame.y0, n, step);
+  const SimplifyResult r = coarse ? simplify_tin(*coarse, ref, start->tin, start->locked, limit, &frame)
+                                  : simplify_tin(ref, start->tin, start->locked, limit, &frame);
 
   Tile tile;
   tile.id = {lv.level, tx, ty};
@@ -317,7 +354,8 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
             std::optional<TinReference> coarse;
             if (r >= 0)
               coarse = coarse_reference(base[static_cast<std::size_t>(r)], pyr.level[static_cast<std::size_t>(r)], lv, tx, ty);
-            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance);
+            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance,
+                                params.start);
             if (!base[static_cast<std::size_t>(l)].empty())
               base[static_cast<std::size_t>(l)][static_cast<std::size_t>(ty) * lv.tiles_x + tx] = triangulate(t, 0, pyr.geometry(l));
             // The tile's own figures: the largest error over its triangulations (with

@@ -18,6 +18,7 @@
 #include "terrainlod/height_grid.hpp"
 #include "terrainlod/pyramid_plan.hpp"
 #include "terrainlod/reference_surface.hpp"
+#include "terrainlod/simplify.hpp"
 #include "terrainlod/tile.hpp"
 
 namespace fest::terrainlod {
@@ -36,6 +37,7 @@ struct BuildParams {
   double leaf_error = 0;         // tolerance of the leaf level
   DiagonalRule diagonal = DiagonalRule::shortest;
   Reference reference = Reference::level_plus_2;
+  StartRule start = StartRule::rtin;  // what each tile's engine decimates from
   int threads = 1;
 };
 

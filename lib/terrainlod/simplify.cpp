@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/mesh.hpp"
 #include "terrainlod/collapse_check.hpp"
+#include "terrainlod/rtin_start.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -496,11 +497,31 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
   for (double z : grid.h) lo = std::min(lo, z), hi = std::max(hi, z);
   const double tolerance = 1e-9 * std::max(1.0, hi - lo);
   const ReferenceSurface ref(grid, options.diagonal);
+  const double limit = options.max_error + tolerance;
+  const int w = grid.width;
+  // A square grid of 2^k + 1 samples starts from the RTIN within the bound (four corners
+  // locked: the rest of the border slides, as from the lattice).
+  const int n = w - 1;
+  if (options.start == StartRule::rtin && grid.height == w && n >= 1 && (n & (n - 1)) == 0) {
+    std::vector<std::uint8_t> corners(grid.size(), 0);
+    for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) corners[static_cast<std::size_t>(c)] = 1;
+    const TriangleMeasure measure = [&ref](const GridPoint& a, const GridPoint& b, const GridPoint& c, double s) {
+      return triangle_error(ref, a, b, c, s);
+    };
+    // Every lattice cell fits with the reference's own diagonal, so there is always a
+    // start mesh; the fallback below only guards the contract.
+    const PointHeight height = [&ref](double x, double y) { return ref.height_at(x, y); };
+    if (auto rtin = rtin_start_mesh(ref, SquareLattice{0, 0, n, 1}, corners, limit, measure, height)) {
+      CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, rtin->tin, rtin->locked, limit, nullptr);
+      SimplifyResult result = engine.run();
+      result.tolerance = tolerance;
+      return result;
+    }
+  }
   const Tin start = finest_triangulation(grid, options.diagonal);
   std::vector<std::uint8_t> locked(start.vertices.size(), 0);
-  const int w = grid.width;
   for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked[static_cast<std::size_t>(c)] = 1;
-  CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, options.max_error + tolerance, nullptr);
+  CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, limit, nullptr);
   SimplifyResult result = engine.run();
   result.tolerance = tolerance;
   return result;
@@ -548,6 +569,11 @@ std::array<EdgeInsert, 3> border_inserts(const ReferenceSurface& ref, const Tile
 double transition_error(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
                         const GridPoint& b, const GridPoint& c, double stop_above) {
   return transition_error_with(GridMeasure{ref}, ref, frame, a, b, c, stop_above);
+}
+
+double transition_error(const TinReference& ref, const ReferenceSurface& dem, const TileFrame& frame,
+                        const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop_above) {
+  return transition_error_with(TinMeasure{ref}, dem, frame, a, b, c, stop_above);
 }
 
 double tin_error(const ReferenceSurface& reference, const Tin& tin) {

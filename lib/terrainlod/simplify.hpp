@@ -1,7 +1,8 @@
 #pragma once
 // Greedy half-edge-collapse simplification of a DEM with a guaranteed vertical error
-// (spec terrainlod 2.6, the engine of `simplify` and of the tiles): start from the finest
-// triangulation (every sample a vertex, every cell split by one diagonal), repeatedly
+// (spec terrainlod 2.6, the engine of `simplify` and of the tiles): start from a mesh
+// within the bound (the finest triangulation, every sample a vertex and every cell split
+// by one diagonal, or a coarse RTIN within the bound: rtin_start.hpp), repeatedly
 // remove the vertex whose cheapest collapse onto a neighbour changes the surface least,
 // where "least" is the exact vertical L-infinity distance of the new triangles from the
 // reference surface (triangle_error.hpp), and stop when no collapse stays within the bound.
@@ -29,9 +30,16 @@ struct Tin {
   std::vector<std::array<int, 3>> triangles;
 };
 
+// What the engine decimates from: the full lattice (every sample a vertex), or the
+// coarse RTIN whose every triangle already meets the bound (rtin_start.hpp), which
+// costs the engine a fraction of the work; the lattice is the fallback where the RTIN
+// does not apply (a grid that is not square 2^k + 1) and the reference for validation.
+enum class StartRule { lattice, rtin };
+
 struct SimplifyOptions {
   double max_error = 0;  // vertical bound in height units (>= 0)
   DiagonalRule diagonal = DiagonalRule::shortest;
+  StartRule start = StartRule::rtin;
 };
 
 struct SimplifyResult {
@@ -70,6 +78,9 @@ std::array<EdgeInsert, 3> border_inserts(const ReferenceSurface& ref, const Tile
 // (stops early above `stop_above` like triangle_error).
 double transition_error(const ReferenceSurface& ref, const TileFrame& frame, const GridPoint& a,
                         const GridPoint& b, const GridPoint& c, double stop_above);
+// The same against a coarser mesh `ref`; `dem` gives the inserted border points' heights.
+double transition_error(const TinReference& ref, const ReferenceSurface& dem, const TileFrame& frame,
+                        const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop_above);
 
 // The engine on any start mesh (counter-clockwise triangles, a disc): `locked` vertices
 // stay; other boundary vertices slide along the boundary; every new triangle (with its

@@ -22,15 +22,18 @@ fs.writeFileSync(process.argv[2], "ncols 257\nnrows 257\nxllcorner 0\nyllcorner 
 ' "$work/jb.npy" "$work/jb257.asc"
 
 ERRORS="5 10 20"
+# The default start mesh (rtin) and the full lattice it replaced (lattice), same run.
+for start in rtin lattice; do
 for e in $ERRORS; do
   # CPU seconds of the whole process beside the wall time: the shared machine's load
   # inflates wall times (the anchors' too), CPU time much less.
   /usr/bin/time -f '%U %M' -o "$work/cpu" \
-    "$BIN/terrainlod" simplify "$work/jb257.asc" --max-error "$e" -o "$work/m.ply" --report "$work/r.json"
+    "$BIN/terrainlod" simplify "$work/jb257.asc" --max-error "$e" --start "$start" -o "$work/m.ply" --report "$work/r.json"
   read -r cpu rss <"$work/cpu"
   jq -c --arg e "$e" --argjson cpu "$cpu" --argjson rss "$rss" '{bench: "terrainlod_simplify", system: "terrainlod",
-    max_error: ($e | tonumber), vertices, triangles, ms: .time_ms.simplify, cpu_s: $cpu, peak_rss_kb: $rss,
+    start, max_error: ($e | tonumber), vertices, triangles, ms: .time_ms.simplify, cpu_s: $cpu, peak_rss_kb: $rss,
     measured_error}' "$work/r.json"
+done
 done
 if command -v node >/dev/null && [ -n "$MODULES" ] && [ -d "$MODULES/@mapbox/martini" ] && [ -d "$MODULES/delatin" ]; then
   ANCHOR_MODULES=$MODULES node "$(dirname "$0")/terrain_anchors.mjs" "$work/jb257.asc" $ERRORS

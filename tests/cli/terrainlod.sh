@@ -44,6 +44,20 @@ run terrainlod simplify "$WORK/bump.pgm" --max-error 1000 --to obj
 expect_status 0
 check "bump removed at 1000" test "$(grep -c '^f ' "$out")" -eq 2
 
+case_ "--start rtin and lattice on a square 2^k + 1 DEM: both within --max-error, re-measured"
+# 33 x 33 samples of a smooth bowl with integer ripples (h = (i - 16)^2 + (j - 16)^2 / 2 + (i j) mod 7).
+awk 'BEGIN { print "ncols 33\nnrows 33\nxllcorner 0\nyllcorner 0\ncellsize 1";
+  for (r = 0; r < 33; r++) { line = ""; for (i = 0; i < 33; i++) { j = 32 - r;
+    line = line sprintf("%d ", (i - 16) * (i - 16) + int((j - 16) * (j - 16) / 2) + (i * j) % 7) } print line } }' >"$WORK/bowl.asc"
+for start in rtin lattice; do
+  run terrainlod simplify "$WORK/bowl.asc" --max-error 4 --start "$start" -o "$WORK/bowl.ply" --report "$WORK/b.json"
+  expect_status 0
+  cp "$WORK/b.json" "$out"
+  expect_json '.start' "\"$start\""
+  check "$start: measured error <= 4" jq -e '.measured_error <= 4 + .tolerance' "$out"
+  check "$start: simplified" jq -e '.triangles < 2 * 32 * 32' "$out"
+done
+
 case_ "PFM and .npy without flags"
 # 2 x 2 PFM (little-endian, rows bottom to top): heights 1 2 / 3 4.
 printf 'Pf\n2 2\n-1.0\n\x00\x00\x80\x3f\x00\x00\x00\x40\x00\x00\x40\x40\x00\x00\x80\x40' >"$WORK/t.pfm"
@@ -126,5 +140,6 @@ bad 3 'npy data is truncated' simplify "$WORK/short.npy" --max-error 1 -o "$WORK
 
 case_ "unknown output extension is a usage error before reading"
 bad 2 'error:' simplify "$WORK/plane.asc" --max-error 1 -o "$WORK/out.xyz"
+bad 2 'start' simplify "$WORK/bowl.asc" --max-error 4 --start quadtree -o "$WORK/out.ply"
 
 finish

@@ -50,6 +50,26 @@ run terrainlod build "$WORK/bumps.asc" --reference l+3 -o "$WORK/never.tlp"
 expect_clean_failure 2 terrainlod
 check "nothing written" test ! -e "$WORK/never.tlp"
 
+case_ "--start lattice (the engine from the full lattice) keeps the bound too; a bad --start is a usage error"
+run terrainlod build "$WORK/bumps.asc" --tile 16 --start lattice -o "$WORK/bumps_lat.tlp" --threads 1
+expect_status 0
+run terrainlod verify "$WORK/bumps_lat.tlp" --dem "$WORK/bumps.asc"
+expect_status 0
+expect_json '[.ok, .tiles_over_bound]' '[true,0]'
+check "max error <= 4/3 eps" jq -e '.max_err_over_eps <= 1.3333334' "$out"
+run terrainlod build "$WORK/bumps.asc" --start quadtree -o "$WORK/never.tlp"
+expect_clean_failure 2 terrainlod
+check "nothing written" test ! -e "$WORK/never.tlp"
+
+case_ "--diagonal ne and alternate: the leaves start from the DEM surface's own cells and verify holds"
+for d in ne alternate; do
+  run terrainlod build "$WORK/bumps.asc" --tile 16 --diagonal "$d" -o "$WORK/bumps_$d.tlp" --threads 1
+  expect_status 0
+  run terrainlod verify "$WORK/bumps_$d.tlp" --dem "$WORK/bumps.asc"
+  expect_status 0
+  expect_json '[.ok, .tiles_over_bound]' '[true,0]'
+done
+
 case_ "a transition towards a finer east neighbour adds one triangle per inserted point"
 run terrainlod decode "$WORK/bumps.tlp" --tile 1/0/0 --mask 0 --to obj
 expect_status 0

@@ -138,6 +138,23 @@ TEST(TerrainlodPyramid, EachReferenceKeepsItsBound) {
   }
 }
 
+TEST(TerrainlodPyramid, LatticeStartKeepsTheBoundToo) {
+  // The lattice start mesh (the fallback, and --start lattice) against the same check as
+  // the default RTIN start; the decimated tiles are about the same size.
+  HeightGrid g = fest::test::fbm_grid(7, 3, 60.0);
+  BuildParams p;
+  p.pyramid.tile = 16;
+  p.threads = 2;
+  p.start = StartRule::lattice;
+  const Pyramid lattice = build_pyramid(g, 4.0, 4.0, p);
+  expect_within_eps(lattice);
+  std::size_t from_lattice = 0, from_rtin = 0;
+  for (const auto& t : lattice.tiles) from_lattice += t.vertices.size();
+  for (const auto& t : fbm_pyramid().tiles) from_rtin += t.vertices.size();
+  EXPECT_LT(from_rtin, from_lattice + from_lattice / 10);
+  EXPECT_LT(from_lattice, from_rtin + from_rtin / 10);
+}
+
 TEST(TerrainlodPyramid, SubTexelDetailRefinesTheLatticeAndKeepsTheBound) {
   // 1 m cells: eps_l is 2^(L-l) m, below what a texel lattice of this fBm can carry.
   const Pyramid p = make_pyramid(1.0);

@@ -72,6 +72,7 @@ int run_simplify(const SimplifyArgs& args) {
   terrainlod::SimplifyOptions options;
   options.max_error = args.max_error;
   options.diagonal = diagonal_rule(args.dem.diagonal);
+  options.start = args.start == "lattice" ? terrainlod::StartRule::lattice : terrainlod::StartRule::rtin;
   const terrainlod::SimplifyResult result = terrainlod::simplify_grid(dem.grid, options);
   const double simplify_ms = ms_since(t1);
 
@@ -79,6 +80,7 @@ int run_simplify(const SimplifyArgs& args) {
   nlohmann::json report = {{"dem", dem_json(dem)},
                            {"max_error", args.max_error},
                            {"diagonal", args.dem.diagonal},
+                           {"start", args.start},
                            {"vertices", result.mesh.vertices.size()},
                            {"triangles", result.mesh.triangles.size()},
                            {"collapses", result.collapses},

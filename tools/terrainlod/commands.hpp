@@ -23,6 +23,7 @@ struct SimplifyArgs {
   std::string to;
   std::string report;
   bool quiet = false;
+  std::string start = "rtin";  // engine start mesh: rtin or lattice
 };
 
 struct StatsArgs {
@@ -42,6 +43,7 @@ struct BuildArgs {
   double z_quantum = 0;   // 0 = 1 for integer DEMs, else 0.01
   double leaf_error = 0;
   std::string reference = "l+2";
+  std::string start = "rtin";  // engine start mesh: rtin or lattice
   int threads = 0;
   std::string report;
   bool progress = false;

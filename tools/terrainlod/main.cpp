@@ -43,6 +43,8 @@ int main(int argc, char** argv) {
   s->add_option("-o,--output", simplify.output, "Mesh file (.ply .obj .off .stl .drc); - = standard output (PLY)");
   s->add_option("--to", simplify.to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
+  s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)")
+      ->check(CLI::IsMember({"rtin", "lattice"}));
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
@@ -66,6 +68,8 @@ int main(int argc, char** argv) {
   b->add_option("--reference", build.reference,
                 "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)")
       ->check(CLI::IsMember({"l+2", "l+1", "original"}));
+  b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice")
+      ->check(CLI::IsMember({"rtin", "lattice"}));
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
   b->add_flag("--progress", build.progress, "Progress bar on standard error");
   fest::cli::add_threads(*b, build.threads);

@@ -449,6 +449,7 @@ int run_build(const BuildArgs& args) {
                      : args.reference == "l+1"    ? terrainlod::Reference::level_plus_1
                                                   : terrainlod::Reference::level_plus_2;
   params.diagonal = diagonal_rule(args.dem.diagonal);
+  params.start = args.start == "lattice" ? terrainlod::StartRule::lattice : terrainlod::StartRule::rtin;
   params.threads = resolve_threads(args.threads);
   if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
 
