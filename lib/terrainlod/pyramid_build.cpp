@@ -256,8 +256,11 @@ TileErrorRange tile_error(const ReferenceSurface& ref, const Tile& tile, const T
       measured.push_back(key);
     }
   }
-  std::sort(measured.begin(), measured.end());
-  measured.erase(std::unique(measured.begin(), measured.end()), measured.end());
+  // One triangulation (the leaves, tiles without finer neighbours) has no duplicates.
+  if (r.triangulations > 1) {
+    std::sort(measured.begin(), measured.end());
+    measured.erase(std::unique(measured.begin(), measured.end()), measured.end());
+  }
   for (const auto& key : measured) {
     GridPoint p[3];
     for (int k = 0; k < 3; ++k) p[k] = {double(key[static_cast<std::size_t>(k)].gx), double(key[static_cast<std::size_t>(k)].gy), key[static_cast<std::size_t>(k)].z};
