@@ -38,6 +38,7 @@
 #include "lemtrace/generate.hpp"
 #include "lemtrace/tracer.hpp"
 #include "lemtrace/vtk/tet_grid.hpp"
+#include "lemtrace_table94.hpp"
 
 namespace {
 
@@ -61,11 +62,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
 
-  GenOptions gen;
-  gen.kind = "sphere-rotation";
-  gen.n = 20;
-  GeneratedGrid g = generate(gen);
-  TetMesh mesh = build_tet_mesh(std::move(g.points), std::move(g.vectors), g.cells, BuildOptions{}, nullptr);
+  TetMesh mesh = bench::table94_mesh();
   vtkSmartPointer<vtkUnstructuredGrid> ugrid = tet_mesh_to_vtk(mesh);
   const FieldGrid grid(std::move(mesh), ClassifyParams{}, Precompute::all, 1);
   const CellLocator& locator = grid.locator();
@@ -73,18 +70,9 @@ int main(int argc, char** argv) {
   // The query points: every position of the Table 9.4 Euler lines (as in
   // bench_lemtrace_steps: h = T / S with S the LEM's cell count on that line).
   std::vector<Vec3> points;
-  for (int i = 0; i < 50; ++i) {
-    const Vec3 seed(0.55 + 0.25 * i / 49.0, 0.0, 0.13);
-    TraceOptions lem;
-    lem.max_time = 2 * M_PI;
-    const Polyline ref = trace(grid, seed, 0.0, lem);
-    TraceOptions euler = lem;
-    euler.method = Method::euler;
-    euler.max_steps = std::max<int64_t>(1, ref.cells);
-    euler.step_unit = StepUnit::time;
-    euler.step = std::abs(ref.t.back()) / static_cast<double>(euler.max_steps);
-    euler.max_time = std::abs(ref.t.back());
-    const Polyline line = trace(grid, seed, 0.0, euler);
+  for (const Vec3& seed : bench::table94_seeds()) {
+    const Polyline ref = trace(grid, seed, 0.0, bench::table94_lem());
+    const Polyline line = trace(grid, seed, 0.0, bench::equal_step_options(Method::euler, ref));
     points.insert(points.end(), line.x.begin(), line.x.end());
   }
 

@@ -28,6 +28,7 @@
 #include "lemtrace/field_grid.hpp"
 #include "lemtrace/generate.hpp"
 #include "lemtrace/tracer.hpp"
+#include "lemtrace_table94.hpp"
 
 namespace {
 
@@ -46,12 +47,8 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
 
-  GenOptions gen;
-  gen.kind = "sphere-rotation";
-  gen.n = 20;
-  GeneratedGrid g = generate(gen);
-  const LinearField field = g.field;
-  TetMesh mesh = build_tet_mesh(std::move(g.points), std::move(g.vectors), g.cells, BuildOptions{}, nullptr);
+  LinearField field;
+  TetMesh mesh = bench::table94_mesh(&field);
   TetMesh copy = mesh;
   const FieldGrid grid(std::move(mesh), ClassifyParams{}, Precompute::all, 1);
   grid.locator();
@@ -59,28 +56,10 @@ int main(int argc, char** argv) {
   const FieldGrid fly(std::move(copy), ClassifyParams{}, Precompute::none, 1);
   fly.locator();
 
-  const int n_seeds = 50;
-  std::vector<Vec3> seeds;
-  for (int i = 0; i < n_seeds; ++i) {
-    const double u = static_cast<double>(i) / (n_seeds - 1);
-    seeds.emplace_back(0.55 + 0.25 * u, 0.0, 0.13);
-  }
-  TraceOptions lem;
-  lem.max_time = 2 * M_PI;
+  const std::vector<Vec3> seeds = bench::table94_seeds();
+  const TraceOptions lem = bench::table94_lem();
   std::vector<Polyline> reference;
   for (const Vec3& s : seeds) reference.push_back(trace(grid, s, 0.0, lem));
-
-  auto options_for = [&](Method m, const Polyline& ref) {
-    TraceOptions o = lem;
-    o.method = m;
-    if (m == Method::lem) return o;
-    const double T = std::abs(ref.t.back());
-    o.max_steps = std::max<int64_t>(1, ref.cells);
-    o.step_unit = StepUnit::time;
-    o.step = T / static_cast<double>(std::max<int64_t>(1, ref.cells));
-    o.max_time = T;
-    return o;
-  };
 
   const struct {
     const char* name;
@@ -95,7 +74,7 @@ int main(int argc, char** argv) {
   for (const auto& c : cases) {
     std::vector<TraceOptions> opts;
     for (const Polyline& ref : reference) {
-      opts.push_back(options_for(c.method, ref));
+      opts.push_back(bench::equal_step_options(c.method, ref));
       opts.back().rk_cell_search = c.cell_search;
     }
     int64_t steps = 0, evaluations = 0;
