@@ -478,4 +478,19 @@ Tile decode_tile(std::string_view bytes) {
   return tile;
 }
 
+TileHeader read_tile_header(std::string_view bytes) {
+  if (bytes.size() < kTileHeaderBytes) throw bad_input("tile is truncated: {} of at least {} header bytes", bytes.size(), kTileHeaderBytes);
+  if (bytes.substr(0, 4) != std::string_view(kMagic, 4)) throw bad_input("not a terrainlod tile (bad magic)");
+  if (get_le<std::uint8_t>(bytes, 4) != kVersion)
+    throw bad_input("terrainlod tile version {} is not supported (this is version {})", get_le<std::uint8_t>(bytes, 4), kVersion);
+  TileHeader h;
+  h.id = {get_le<std::uint8_t>(bytes, 5), static_cast<int>(get_le<std::uint32_t>(bytes, 6)),
+          static_cast<int>(get_le<std::uint32_t>(bytes, 10))};
+  h.eps = get_f32(bytes, 34);
+  h.err = get_f32(bytes, 38);
+  h.z_min = get_f32(bytes, 42);
+  h.z_max = get_f32(bytes, 46);
+  return h;
+}
+
 }  // namespace fest::terrainlod

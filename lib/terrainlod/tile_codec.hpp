@@ -37,4 +37,12 @@ std::string encode_tile(const Tile& tile, TileSizes* sizes = nullptr);
 // Decodes a tile; throws bad_input naming the tile for anything malformed or truncated.
 Tile decode_tile(std::string_view bytes);
 
+// The header figures of an encoded tile, read without decoding its sections: view
+// selection examines many more tiles than it draws and needs only their height range.
+struct TileHeader {
+  TileId id;
+  float eps = 0, err = 0, z_min = 0, z_max = 0;
+};
+TileHeader read_tile_header(std::string_view bytes);
+
 }  // namespace fest::terrainlod

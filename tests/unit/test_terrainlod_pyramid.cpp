@@ -236,6 +236,26 @@ TEST(TerrainlodPyramid, TruncatedOrForeignTileIsBadInput) {
   EXPECT_THROW(decode_tile(bad), fest::Error);
 }
 
+// Selection reads only headers: the figures must be the tile's own, and a header that
+// is cut short or foreign must be refused like a whole tile.
+TEST(TerrainlodPyramid, HeaderAloneGivesTheTilesFigures) {
+  for (const auto& tile : fbm_pyramid().tiles) {
+    const std::string bytes = encode_tile(tile);
+    const TileHeader h = read_tile_header(std::string_view(bytes).substr(0, kTileHeaderBytes));
+    EXPECT_EQ(h.id, tile.id);
+    EXPECT_EQ(h.z_min, tile.z_min);
+    EXPECT_EQ(h.z_max, tile.z_max);
+    EXPECT_EQ(h.eps, tile.eps);
+    EXPECT_EQ(h.err, tile.err);
+    EXPECT_LE(h.z_min, h.z_max);
+  }
+  const std::string bytes = encode_tile(fbm_pyramid().tiles[1]);
+  EXPECT_THROW(read_tile_header(std::string_view(bytes).substr(0, kTileHeaderBytes - 1)), fest::Error);
+  std::string bad = bytes;
+  bad[4] = 99;  // version
+  EXPECT_THROW(read_tile_header(bad), fest::Error);
+}
+
 }  // namespace
 
 namespace {

@@ -231,6 +231,7 @@ std::string PyramidFile::tile_path(const terrainlod::TileId& id, const std::stri
 
 std::size_t PyramidFile::keep_only(const std::set<terrainlod::TileId>& keep) {
   std::size_t evicted = 0;
+  for (auto it = z_ranges_.begin(); it != z_ranges_.end();) it = keep.count(it->first) ? std::next(it) : z_ranges_.erase(it);
   for (auto it = cache_.begin(); it != cache_.end();) {
     if (keep.count(it->first)) {
       ++it;
@@ -278,7 +279,7 @@ const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {
   auto it = cache_.find(id);
   if (it != cache_.end()) return it->second;
   const std::string_view b = tile_bytes(id);
-  touched_ += b.size();
+  touched_ += z_ranges_.count(id) ? b.size() - terrainlod::kTileHeaderBytes : b.size();  // the header was counted
   ++decoded_;
   terrainlod::Tile t;
   try {
@@ -288,6 +289,21 @@ const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {
   }
   if (!(t.id == id)) throw bad_input("pyramid index and tile header disagree on tile {}/{}/{} ({})", id.level, id.x, id.y, name_);
   return cache_.emplace(id, std::move(t)).first->second;
+}
+
+std::array<float, 2> PyramidFile::z_range(const terrainlod::TileId& id) {
+  if (const auto c = cache_.find(id); c != cache_.end()) return {c->second.z_min, c->second.z_max};
+  if (const auto z = z_ranges_.find(id); z != z_ranges_.end()) return z->second;
+  const std::string_view b = tile_bytes(id);
+  terrainlod::TileHeader h;
+  try {
+    h = terrainlod::read_tile_header(b);
+  } catch (const Error& e) {
+    throw bad_input("{} ({})", e.what(), name_);
+  }
+  if (!(h.id == id)) throw bad_input("pyramid index and tile header disagree on tile {}/{}/{} ({})", id.level, id.x, id.y, name_);
+  touched_ += terrainlod::kTileHeaderBytes;
+  return z_ranges_.emplace(id, std::array<float, 2>{h.z_min, h.z_max}).first->second;
 }
 
 }  // namespace fest::terrainlod_tool

@@ -5,6 +5,7 @@
 //  * the directory: pyramid.json (the manifest) + L/X/Y.tlt + L/X/Y.png (or .jpg).
 // PyramidFile reads either; everything downstream sees the same tiles and textures.
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -68,6 +69,9 @@ class PyramidFile {
   terrainlod::TileGeometry geometry(int level) const;
   bool has(const terrainlod::TileId& id) const { return where_.count(id) != 0; }
   const terrainlod::Tile& tile(const terrainlod::TileId& id);  // decoded once, cached
+  // A tile's height range from its header alone (read once, cached; selection examines
+  // many tiles it never draws, so it must not decode them).
+  std::array<float, 2> z_range(const terrainlod::TileId& id);
   std::string_view tile_bytes(const terrainlod::TileId& id) const;
   // Texture tiles: whether the pyramid has them, their file extension ("png" or "jpg"),
   // and one tile's encoded image (counted in bytes_touched).
@@ -95,6 +99,7 @@ class PyramidFile {
   std::vector<TileEntry> index_;
   std::map<terrainlod::TileId, std::size_t> where_;
   std::map<terrainlod::TileId, terrainlod::Tile> cache_;
+  std::map<terrainlod::TileId, std::array<float, 2>> z_ranges_;
   mutable std::map<terrainlod::TileId, std::string> files_, texture_files_;  // directory blobs read so far
   terrainlod::PyramidLayout layout_;
   bool textured_ = false;
