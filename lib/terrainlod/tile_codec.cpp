@@ -131,11 +131,21 @@ std::vector<StripTriangle> strip_order(const std::vector<std::array<int, 3>>& tr
 // vertices it joins, so it is coded as an index among their known neighbours.
 class EdgeGraph {
  public:
-  explicit EdgeGraph(int vertices) : adj_(static_cast<std::size_t>(vertices)) {}
+  // Up to kInline neighbours of a vertex sit in its own slot, the rest (a coarse tile's
+  // fan) in an overflow list: a vector per vertex made allocation most of the decoding
+  // time, and a linked pool made it pointer chasing.
+  explicit EdgeGraph(int vertices) : slots_(static_cast<std::size_t>(vertices)) {}
   void add_triangle(const std::array<int, 3>& t) {
     for (int e = 0; e < 3; ++e) {
       link(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]);
       link(t[static_cast<std::size_t>((e + 1) % 3)], t[static_cast<std::size_t>(e)]);
+    }
+  }
+  // A strip's next triangle (a, b, apex): its edge (a, b) is the previous triangle's.
+  void add_strip_triangle(const std::array<int, 3>& t) {
+    for (int e = 0; e < 2; ++e) {
+      link(t[2], t[static_cast<std::size_t>(e)]);
+      link(t[static_cast<std::size_t>(e)], t[2]);
     }
   }
   // Neighbours of the context vertices, without them, ascending.
@@ -143,20 +153,50 @@ class EdgeGraph {
   const std::vector<int>& candidates(std::initializer_list<int> context) const {
     std::vector<int>& out = scratch_;
     out.clear();
-    for (int c : context)
-      for (int v : adj_[static_cast<std::size_t>(c)]) out.push_back(v);
-    std::sort(out.begin(), out.end());
+    for (int c : context) {
+      const Slot& s = slots_[static_cast<std::size_t>(c)];
+      auto take = [&](int v) {
+        if (std::find(context.begin(), context.end(), v) == context.end()) out.push_back(v);
+      };
+      for (int i = 0; i < std::min<int>(s.count, kInline); ++i) take(s.inline_[i]);
+      if (s.overflow >= 0)
+        for (int v : overflow_[static_cast<std::size_t>(s.overflow)]) take(v);
+    }
+    // Insertion sort: a handful of values.
+    for (std::size_t i = 1; i < out.size(); ++i)
+      for (std::size_t j = i; j > 0 && out[j - 1] > out[j]; --j) std::swap(out[j - 1], out[j]);
     out.erase(std::unique(out.begin(), out.end()), out.end());
-    for (int c : context) out.erase(std::remove(out.begin(), out.end(), c), out.end());
     return out;
   }
 
  private:
+  static constexpr int kInline = 8;
+  struct Slot {
+    int inline_[kInline];
+    int count = 0;
+    int overflow = -1;  // index into overflow_ once count exceeds kInline
+  };
   void link(int a, int b) {
-    auto& l = adj_[static_cast<std::size_t>(a)];
-    if (std::find(l.begin(), l.end(), b) == l.end()) l.push_back(b);
+    Slot& s = slots_[static_cast<std::size_t>(a)];
+    for (int i = 0; i < std::min<int>(s.count, kInline); ++i)
+      if (s.inline_[i] == b) return;
+    if (s.overflow >= 0) {
+      auto& more = overflow_[static_cast<std::size_t>(s.overflow)];
+      if (std::find(more.begin(), more.end(), b) != more.end()) return;
+    }
+    if (s.count < kInline) {
+      s.inline_[s.count] = b;
+    } else {
+      if (s.overflow < 0) {
+        s.overflow = static_cast<int>(overflow_.size());
+        overflow_.emplace_back();
+      }
+      overflow_[static_cast<std::size_t>(s.overflow)].push_back(b);
+    }
+    ++s.count;
   }
-  std::vector<std::vector<int>> adj_;
+  std::vector<Slot> slots_;
+  std::vector<std::vector<int>> overflow_;
   mutable std::vector<int> scratch_;
 };
 
@@ -250,7 +290,8 @@ std::string encode_tile(const Tile& tile, TileSizes* sizes) {
       const int x = st.side == 0 ? ref(st.v[2], pred, {prev[1], prev[2]}) : ref(st.v[2], pred, {prev[0], prev[2]});
       prev = st.side == 0 ? std::array<int, 3>{prev[1], prev[2], x} : std::array<int, 3>{prev[0], prev[2], x};
     }
-    graph.add_triangle(prev);
+    if (st.restart) graph.add_triangle(prev);
+    else graph.add_strip_triangle(prev);
   }
   if (next != total) throw runtime_failure("tile encoder: {} vertices unused by triangles", total - next);
   std::vector<std::uint64_t> distances;
@@ -410,6 +451,8 @@ Tile decode_tile(std::string_view bytes) {
     return r;
   };
   std::vector<std::array<int, 3>> raw;
+  raw.reserve(n_tris);
+  preds.reserve(n_interior);
   std::array<int, 3> p{};
   for (std::uint32_t t = 0; t < n_tris; ++t) {
     const bool cont = conn.get(1) != 0;
@@ -426,7 +469,8 @@ Tile decode_tile(std::string_view bytes) {
       p = side == 0 ? std::array<int, 3>{p[1], p[2], v} : std::array<int, 3>{p[0], p[2], v};
     }
     if (p[0] == p[1] || p[1] == p[2] || p[0] == p[2]) throw bad_input("{}: triangle repeats a vertex", name);
-    graph.add_triangle(p);
+    if (cont) graph.add_strip_triangle(p);
+    else graph.add_triangle(p);
     raw.push_back(p);
   }
   if (next != total) throw bad_input("{}: {} vertices never used", name, total - next);
@@ -449,6 +493,7 @@ Tile decode_tile(std::string_view bytes) {
     if (v.X <= 0 || v.Y <= 0 || v.X >= n || v.Y >= n) throw bad_input("{}: interior vertex off the tile's interior", name);
     v.code = guess.code + unzigzag(vert.get_rice(k_h));
   }
+  tile.triangles.reserve(raw.size());
   for (const auto& q : raw) {
     // Counter-clockwise by geometry.
     const auto &a = tile.vertices[static_cast<std::size_t>(q[0])], &b = tile.vertices[static_cast<std::size_t>(q[1])],
