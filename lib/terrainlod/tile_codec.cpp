@@ -119,7 +119,9 @@ std::vector<StripTriangle> strip_order(const std::vector<std::array<int, 3>>& tr
 // vertices it joins, so it is coded as an index among their known neighbours.
 class EdgeGraph {
  public:
-  explicit EdgeGraph(int vertices) : adj_(static_cast<std::size_t>(vertices)) {}
+  explicit EdgeGraph(int vertices)
+      : slots_(static_cast<std::size_t>(vertices) * kInline), count_(static_cast<std::size_t>(vertices), 0),
+        extra_(static_cast<std::size_t>(vertices)) {}
   void add_triangle(const std::array<int, 3>& t) {
     for (int e = 0; e < 3; ++e) {
       link(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]);
@@ -131,8 +133,12 @@ class EdgeGraph {
   const std::vector<int>& candidates(std::initializer_list<int> context) const {
     std::vector<int>& out = scratch_;
     out.clear();
-    for (int c : context)
-      for (int v : adj_[static_cast<std::size_t>(c)]) out.push_back(v);
+    for (int c : context) {
+      const std::size_t i = static_cast<std::size_t>(c);
+      const int* first = &slots_[i * kInline];
+      out.insert(out.end(), first, first + std::min<int>(count_[i], kInline));
+      out.insert(out.end(), extra_[i].begin(), extra_[i].end());
+    }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     for (int c : context) out.erase(std::remove(out.begin(), out.end(), c), out.end());
@@ -140,11 +146,23 @@ class EdgeGraph {
   }
 
  private:
+  // Most vertices have few neighbours: they live in a fixed block per vertex, the rest
+  // (fans) spill into a vector (no allocation per vertex in the common case).
+  static constexpr int kInline = 8;
   void link(int a, int b) {
-    auto& l = adj_[static_cast<std::size_t>(a)];
-    if (std::find(l.begin(), l.end(), b) == l.end()) l.push_back(b);
+    const std::size_t i = static_cast<std::size_t>(a);
+    int* first = &slots_[i * kInline];
+    const int inline_count = std::min<int>(count_[i], kInline);
+    if (std::find(first, first + inline_count, b) != first + inline_count) return;
+    auto& more = extra_[i];
+    if (std::find(more.begin(), more.end(), b) != more.end()) return;
+    if (inline_count < kInline) first[inline_count] = b;
+    else more.push_back(b);
+    if (count_[i] < kInline) ++count_[i];
   }
-  std::vector<std::vector<int>> adj_;
+  std::vector<int> slots_;
+  std::vector<std::uint8_t> count_;
+  std::vector<std::vector<int>> extra_;
   mutable std::vector<int> scratch_;
 };
 
@@ -176,16 +194,9 @@ TileVertex predict(const std::vector<TileVertex>& vs, const Predictor& p, int n,
 }
 
 
-// Bits of `values` Rice coded with the best parameter, plus the parameter's 6 bits.
-std::uint64_t rice_cost(const std::vector<std::uint64_t>& values) {
-  const int k = best_rice_k(values);
-  std::uint64_t bits = 6;
-  for (std::uint64_t v : values) {
-    const std::uint64_t q = v >> k;
-    bits += q >= kRiceEscape ? kRiceEscape + 7 + static_cast<std::uint64_t>(bit_width(v)) : q + 1 + static_cast<std::uint64_t>(k);
-  }
-  return bits;
-}
+// Bits of `values` Rice coded with the best parameter, plus the parameter's 6 bits (escapes
+// counted as best_rice_k counts them: the comparison only needs to be consistent).
+std::uint64_t rice_cost(const std::vector<std::uint64_t>& values) { return 6 + rice_bits(values, best_rice_k(values)); }
 
 std::int64_t floor_shift(std::int64_t v, int bits) { return v >> bits; }  // arithmetic: floor(v / 2^bits)
 std::int64_t scale(std::int64_t v, int bits) { return v * (std::int64_t{1} << bits); }
@@ -403,8 +414,9 @@ std::optional<std::string> encode_with_strips(const Tile& tile, const std::vecto
   std::array<std::vector<std::uint64_t>, 2> border_res;
   for (int b = 1; b < nb; ++b) {
     if (border_known[static_cast<std::size_t>(b)]) continue;
-    for (HeightMode m : {kFromNeighbours, kFromParentSurface})
-      border_res[m].push_back(zigzag(border_G[static_cast<std::size_t>(b)] - predict_border(border_G, b, n, m, pv)));
+    border_res[kFromNeighbours].push_back(zigzag(border_G[static_cast<std::size_t>(b)] - predict_border(border_G, b, n, kFromNeighbours, pv)));
+    if (progressive)
+      border_res[kFromParentSurface].push_back(zigzag(border_G[static_cast<std::size_t>(b)] - predict_border(border_G, b, n, kFromParentSurface, pv)));
   }
   std::vector<std::uint64_t> xy_res;
   std::array<std::vector<std::uint64_t>, 2> h_res;
@@ -417,8 +429,8 @@ std::optional<std::string> encode_with_strips(const Tile& tile, const std::vecto
       const TileVertex guess = predict(ordered, preds[j++], n, tile.k, g0);
       xy_res.push_back(zigzag(v.X - guess.X));
       xy_res.push_back(zigzag(v.Y - guess.Y));
-      for (HeightMode m : {kFromNeighbours, kFromParentSurface})
-        h_res[m].push_back(zigzag(v.code - predict_height(v, guess.code, tile.k, m, pv)));
+      h_res[kFromNeighbours].push_back(zigzag(v.code - guess.code));
+      if (progressive) h_res[kFromParentSurface].push_back(zigzag(v.code - predict_height(v, guess.code, tile.k, kFromParentSurface, pv)));
     }
   }
   // Standalone coding has only the neighbours; progressive takes the cheaper per tile.
