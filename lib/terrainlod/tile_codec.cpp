@@ -305,7 +305,6 @@ std::optional<std::string> encode_with_strips(const Tile& tile, const std::vecto
   // and, for each new interior vertex, its predictor (parallelogram across the shared
   // edge when the strip continues, else the last referenced vertex).
   std::vector<int> interior;   // old ids in new order
-  std::vector<int> fresh_new;  // old ids of the new (not inherited) interior vertices, in order
   std::vector<Predictor> preds;
   struct Ref {
     bool fresh = false;
@@ -331,7 +330,6 @@ std::optional<std::string> encode_with_strips(const Tile& tile, const std::vecto
         x.inherited_delta = zigzag(inh - (last_inherited + 1));
         last_inherited = inh;
       } else {
-        fresh_new.push_back(old);
         preds.push_back(pred.a < 0 ? Predictor{last, -1, -1} : pred);
       }
     } else {
