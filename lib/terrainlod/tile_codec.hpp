@@ -22,8 +22,8 @@
 // present, only the k_parent - k_child low height bits (no xy bits: the lattices nest);
 // parent interior vertices on the child's border send the k_parent low bits of G; new
 // vertices' heights are predicted by the parent's surface or the parallelogram, whichever
-// the tile's flag bit names. In the strips an introduced vertex is new or (one more bit)
-// the next inherited one, by its distance in parent order.
+// the tile's flag bit names. In the strips, run lengths (new vertices between two inherited
+// ones) say where the kept inherited vertices enter, each named by its step in parent order.
 
 #include <cstdint>
 #include <string>
