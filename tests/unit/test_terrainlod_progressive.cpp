@@ -6,6 +6,7 @@
 // on the child's border; nothing for the parent's border points).
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <tuple>
@@ -202,6 +203,37 @@ TEST(TerrainlodProgressive, ProgressiveAndStandaloneDecodesAgreeOnFbm) {
   expect_codings_agree(build_pyramid(g, 4, 4, p));
   // Steeper terrain: lattices refined beyond the texels (several child steps per parent step).
   expect_codings_agree(build_pyramid(g, 1, 1, p));
+}
+
+// Spec 2.5's residual bound, our version: the parent's base triangulation is within
+// (4/3) eps_p of the DEM (reference l+2, quantized heights included) and a child vertex's
+// G is the DEM sample rounded (1/2), so the parent-surface prediction floor(P / 2^k) of a
+// child interior vertex misses its H = floor(G / 2^k) by at most ((4/3) eps_p + 1/2) / 2^k
+// + 1 (finest quantum 1 here).
+TEST(TerrainlodProgressive, ParentSurfacePredictsChildHeightsWithinTheBound) {
+  HeightGrid g = fest::test::fbm_grid(7, 3, 60.0);
+  BuildParams p;
+  p.pyramid.tile = 16;
+  p.threads = 2;
+  const Pyramid pyr = build_pyramid(g, 4, 4, p);
+  std::size_t checked = 0;
+  for (const auto& tile : pyr.tiles) {
+    if (tile.id.level == 0) continue;
+    const Tile& parent = *std::find_if(pyr.tiles.begin(), pyr.tiles.end(), [&](const Tile& t) {
+      return t.id == TileId{tile.id.level - 1, tile.id.x / 2, tile.id.y / 2};
+    });
+    const ParentView v = parent_view(parent, tile.id, tile.lattice_bits);
+    const double bound = ((4.0 / 3.0) * parent.eps + 0.5) / std::ldexp(1.0, tile.k) + 1;
+    for (const auto& vx : tile.vertices) {
+      if (tile.on_border(vx)) continue;
+      const std::int64_t s2 = v.surface_at(vx.X, vx.Y);
+      ASSERT_NE(s2, kUnknownHeight) << "the parent covers the child's square";
+      const std::int64_t predicted = s2 >> (tile.k + 1);
+      EXPECT_LE(std::abs(static_cast<double>(vx.code - predicted)), bound) << tile.id.level << "/" << tile.id.x << "/" << tile.id.y;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100u);
 }
 
 TEST(TerrainlodProgressive, RecodingALevelDoesNotDependOnThreads) {
