@@ -190,6 +190,17 @@ void expect_codings_agree(const Pyramid& pyr) {
     EXPECT_EQ(a.fine_G, b.fine_G);
     EXPECT_EQ(triangles_of(a), triangles_of(tile));
     EXPECT_EQ(recode_tile(prog, tile_coding(prog), parent), prog) << "recoding is stable";
+    if (tile.id == TileId{2, 1, 1}) {  // flipped body bytes: decoded or bad input, never a crash
+      for (std::size_t at = kTileHeaderBytes; at < prog.size(); ++at) {
+        std::string flipped = prog;
+        flipped[at] = static_cast<char>(flipped[at] ^ 0x21);
+        try {
+          decode_tile(flipped, parent);
+        } catch (const fest::Error& e) {
+          EXPECT_EQ(e.status(), fest::Status::bad_input) << at;
+        }
+      }
+    }
     decoded.emplace(std::make_tuple(tile.id.level, tile.id.x, tile.id.y), b);
   }
   EXPECT_EQ(progressive + 1, pyr.tiles.size()) << "every tile but the root agrees with its parent";
@@ -275,6 +286,16 @@ TEST(TerrainlodProgressive, TruncatedProgressiveTileAndWrongParentAreBadInput) {
   // A cut anywhere in the body is caught (never a crash, never a silent short tile).
   for (std::size_t cut = kTileHeaderBytes; cut < bytes.size(); ++cut)
     EXPECT_THROW(decode_tile(bytes.substr(0, cut), &parent), fest::Error) << cut;
+  // A flipped body byte decodes to something or is bad input, never a crash.
+  for (std::size_t at = kTileHeaderBytes; at < bytes.size(); ++at) {
+    std::string flipped = bytes;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x5a);
+    try {
+      decode_tile(flipped, &parent);
+    } catch (const fest::Error& e) {
+      EXPECT_EQ(e.status(), fest::Status::bad_input) << at;
+    }
+  }
 }
 
 TEST(TerrainlodProgressive, Version1StandaloneTilesStillDecode) {
