@@ -28,16 +28,27 @@ inline int bit_width(std::uint64_t v) {
 // the geometric-looking distributions of prediction residuals.
 constexpr int kRiceEscape = 24;
 
-// The k in 0..40 that codes `values` in the fewest bits.
+// Bits of `values` Rice coded with parameter k.
+inline std::uint64_t rice_bits(const std::vector<std::uint64_t>& values, int k) {
+  std::uint64_t bits = 0;
+  for (std::uint64_t v : values) {
+    const std::uint64_t q = v >> k;
+    bits += q >= kRiceEscape ? kRiceEscape + 7 + 64 : q + 1 + static_cast<std::uint64_t>(k);
+  }
+  return bits;
+}
+
+// The k in 0..40 that codes `values` in the fewest bits (the first of equals). Beyond the
+// widest value's width every quotient is 0 and the cost only grows with k, so the search
+// stops there.
 inline int best_rice_k(const std::vector<std::uint64_t>& values) {
+  std::uint64_t widest = 0;
+  for (std::uint64_t v : values) widest |= v;
+  const int last = std::min(40, bit_width(widest));
   int best_k = 0;
   std::uint64_t best = ~std::uint64_t{0};
-  for (int k = 0; k <= 40; ++k) {
-    std::uint64_t bits = 0;
-    for (std::uint64_t v : values) {
-      const std::uint64_t q = v >> k;
-      bits += q >= kRiceEscape ? kRiceEscape + 7 + 64 : q + 1 + k;
-    }
+  for (int k = 0; k <= last; ++k) {
+    const std::uint64_t bits = rice_bits(values, k);
     if (bits < best) best = bits, best_k = k;
   }
   return best_k;

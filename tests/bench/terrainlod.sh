@@ -4,6 +4,8 @@
 # 257 x 257 samples), one JSON line per system and error. Run by hand:
 #   tests/bench/terrainlod.sh [build/bin] [node_modules dir with @mapbox/martini and delatin]
 # The anchors are skipped with a JSON note when Node or the packages are missing.
+# Pyramids are built with the default coding (progressive); stats give both sizes (each
+# tile coded both ways), so the build lines print both.
 set -euo pipefail
 BIN=${1:-build/bin}
 MODULES=${2:-${ANCHOR_MODULES:-}}
@@ -52,7 +54,9 @@ read -r user sys wall rss <"$work/cpu"
 qm=$(find "$work/qm" -name '*.terrain' -exec sh -c 'gzip -6 -c "$1" | wc -c' _ {} \; | awk '{ s += $1 } END { print s }')
 jq -c --argjson user "$user" --argjson sys "$sys" --argjson wall "$wall" --argjson rss "$rss" --argjson qm "$qm" \
   '{bench: "terrainlod_build", dem: "jacksboro 403x344", tiles: .totals.tiles, vertices: .totals.vertices,
-    triangles: .totals.triangles, tile_bytes: .totals.tile_bytes, bytes_per_vertex: .totals.bytes_per_vertex,
+    triangles: .totals.triangles, coding: .totals.coding, tile_bytes: .totals.tile_bytes, bytes_per_vertex: .totals.bytes_per_vertex,
+    standalone_tile_bytes: .totals.standalone_tile_bytes, progressive_tile_bytes: .totals.progressive_tile_bytes,
+    standalone_bytes_per_vertex: .totals.standalone_bytes_per_vertex, progressive_bytes_per_vertex: .totals.progressive_bytes_per_vertex,
     bytes_per_vertex_by_level: [.level[] | .bytes_per_vertex], qm_gzip_bytes: $qm, ratio_to_qm_gzip: (.totals.tile_bytes / $qm),
     build_cpu_s: ($user + $sys), build_wall_s: $wall, peak_rss_kb: $rss}' "$work/s.json"
 "$BIN/terrainlod" verify "$work/jb.tlp" --dem "$work/jb.npy" --cell-size 74.5,92.5 --cameras 20 |
@@ -70,7 +74,9 @@ for k in 10 12; do
   "$BIN/terrainlod" stats "$work/fbm.tlp" | jq -c --arg dem "fbm ${n}x${n}" --argjson user "$user" --argjson sys "$sys" \
     --argjson wall "$wall" --argjson rss "$rss" --slurpfile b "$work/b.json" \
     '{bench: "terrainlod_build", dem: $dem, threads: 2, reference: .manifest.reference, levels: .manifest.levels,
-      tiles: .totals.tiles, vertices: .totals.vertices, bytes_per_vertex: .totals.bytes_per_vertex,
+      tiles: .totals.tiles, vertices: .totals.vertices, coding: .totals.coding, bytes_per_vertex: .totals.bytes_per_vertex,
+      standalone_tile_bytes: .totals.standalone_tile_bytes, progressive_tile_bytes: .totals.progressive_tile_bytes,
+      standalone_bytes_per_vertex: .totals.standalone_bytes_per_vertex, progressive_bytes_per_vertex: .totals.progressive_bytes_per_vertex,
       max_err_over_eps: ([.level[] | .max_err_over_eps | numbers] | max), build_ms: $b[0].time_ms.build,
       build_cpu_s: ($user + $sys), build_wall_s: $wall, peak_rss_kb: $rss, target: "<= 60 s wall on 2 cores, <= 1 GB (4097^2)"}'
   if [ "$k" = 12 ]; then

@@ -120,6 +120,71 @@ run terrainlod export-qm "$WORK/bumps.tlp" -o "$WORK/qm"
 expect_clean_failure 4 terrainlod
 expect_stderr_has 'exists and is not an empty directory'
 
+case_ "coding: progressive by default, standalone on request; same tiles; stats give both sizes"
+run terrainlod build "$WORK/bumps.asc" --tile 16 --coding standalone -o "$WORK/bumps_s.tlp" --threads 1
+expect_status 0
+run terrainlod stats "$WORK/bumps.tlp"
+cp "$out" "$WORK/stats_p.json"
+expect_json '[.manifest.coding, .totals.coding]' '["progressive","progressive"]'
+check "stored = progressive size, smaller than standalone" \
+  jq -e '.totals.tile_bytes == .totals.progressive_tile_bytes and .totals.progressive_tile_bytes < .totals.standalone_tile_bytes' "$out"
+check "the root has no parent: same size both ways" jq -e '.level[0].progressive_bytes == .level[0].standalone_bytes' "$out"
+run terrainlod stats "$WORK/bumps_s.tlp"
+expect_json '.manifest.coding' '"standalone"'
+check "stored = standalone size" jq -e '.totals.tile_bytes == .totals.standalone_tile_bytes' "$out"
+# Recoding keeps the strip order: either archive gives both sizes exactly.
+check "both archives agree on both sizes" test "$(jq -c '[.totals.standalone_tile_bytes, .totals.progressive_tile_bytes]' "$out")" = \
+  "$(jq -c '[.totals.standalone_tile_bytes, .totals.progressive_tile_bytes]' "$WORK/stats_p.json")"
+same=0
+for l in 0 1 2; do
+  for x in $(seq 0 $(( (1 << l) - 1 ))); do
+    for y in $(seq 0 $(( (1 << l) - 1 ))); do
+      "$FEST_BIN/terrainlod" decode "$WORK/bumps.tlp" --tile "$l/$x/$y" -o "$WORK/dp.ply" 2>/dev/null &&
+        "$FEST_BIN/terrainlod" decode "$WORK/bumps_s.tlp" --tile "$l/$x/$y" -o "$WORK/ds.ply" 2>/dev/null &&
+        cmp -s "$WORK/dp.ply" "$WORK/ds.ply" && same=$((same + 1))
+    done
+  done
+done
+check "all 21 tiles decode the same from both codings" test "$same" -eq 21
+run terrainlod verify "$WORK/bumps_s.tlp" --dem "$WORK/bumps.asc" --cameras 4
+expect_json '[.ok, .reencode_mismatches]' '[true,0]'
+run terrainlod build "$WORK/bumps.asc" --tile 16 --coding delta -o "$WORK/never.tlp"
+expect_clean_failure 2 terrainlod
+check "nothing written" test ! -e "$WORK/never.tlp"
+
+case_ "progressive: --threads 1 and 2 give the same archive; the directory holds the same tiles"
+run terrainlod build "$WORK/bumps.asc" --tile 16 -o "$WORK/bumps_t2.tlp" --threads 2
+expect_status 0
+check "byte-identical archives" cmp "$WORK/bumps.tlp" "$WORK/bumps_t2.tlp"
+run terrainlod build "$WORK/bumps.asc" --tile 16 -o "$WORK/bumps_dir" --threads 2
+expect_status 0
+run terrainlod decode "$WORK/bumps_dir" --tile 2/3/1 -o "$WORK/dd.ply"
+expect_status 0
+run terrainlod decode "$WORK/bumps.tlp" --tile 2/3/1 -o "$WORK/da.ply"
+check "same tile from the directory" cmp "$WORK/dd.ply" "$WORK/da.ply"
+
+case_ "progressive: a child whose parent is missing from the archive is bad input"
+# Drop the root's entry from the index (offsets are absolute: the other tiles stay valid).
+python3 - "$WORK/bumps.tlp" "$WORK/orphan.tlp" <<'PY'
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+m = struct.unpack_from("<I", b, 5)[0]
+at = 9 + m
+n = struct.unpack_from("<I", b, at)[0]
+entries = [b[at + 4 + 33 * i: at + 4 + 33 * (i + 1)] for i in range(n)]
+keep = [e for e in entries if struct.unpack_from("<BII", e) != (0, 0, 0)]
+assert len(keep) == n - 1
+head = b[:at] + struct.pack("<I", n - 1) + b"".join(keep)
+# Pad where the dropped entry was, so the absolute offsets still point at the blobs.
+open(sys.argv[2], "wb").write(head + b"\0" * 33 + b[at + 4 + 33 * n:])
+PY
+run terrainlod decode "$WORK/orphan.tlp" --tile 1/0/0 -o "$WORK/out.ply"
+expect_clean_failure 3 terrainlod
+expect_stderr_has 'tile 1/0/0 is coded relative to its parent 0/0/0, which the pyramid lacks'
+run terrainlod decode "$WORK/orphan.tlp" --tile 2/3/3 -o "$WORK/out.ply"
+expect_clean_failure 3 terrainlod
+expect_stderr_has 'which the pyramid lacks'
+
 # --- bad input ------------------------------------------------------------------------
 bad() {  # bad STATUS REGEX ARGS...
   local status="$1" regex="$2"; shift 2

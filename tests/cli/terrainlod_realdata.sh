@@ -32,4 +32,22 @@ expect_json '[.dem.format, .dem.width, .dem.height, .dem.integer, .dem.z_min, .d
 # 402 cells -> 64 x 2^3 = 512: L = 3; eps_0 = 512 x 74.5 / 64 = 596 (the smaller side is x)
 expect_json '[.levels, .level[0].eps, .level[2].eps, .level[3].eps]' '[3,596,149,0]'
 
+case_ "Jacksboro pyramid: progressive and standalone coding decode to the same tiles"
+run terrainlod build "$WORK/jb.npy" --cell-size 74.5,92.5 -o "$WORK/jb.tlp" --threads 2
+expect_status 0
+run terrainlod build "$WORK/jb.npy" --cell-size 74.5,92.5 --coding standalone -o "$WORK/jb_s.tlp" --threads 2
+expect_status 0
+run terrainlod stats "$WORK/jb.tlp"
+check "progressive is stored and smaller" \
+  jq -e '.manifest.coding == "progressive" and .totals.tile_bytes == .totals.progressive_tile_bytes and .totals.progressive_tile_bytes < .totals.standalone_tile_bytes' "$out"
+# Every tile's base triangulation, as export-qm writes it (one file per tile), from both.
+run terrainlod export-qm "$WORK/jb.tlp" -o "$WORK/qm_p"
+expect_status 0
+run terrainlod export-qm "$WORK/jb_s.tlp" -o "$WORK/qm_s"
+expect_status 0
+check "one tile file per pyramid tile" test "$(find "$WORK/qm_p" -name '*.terrain' | wc -l)" -eq 59
+check "the same tiles from both codings" diff -r "$WORK/qm_p" "$WORK/qm_s"
+run terrainlod verify "$WORK/jb.tlp" --dem "$WORK/jb.npy" --cell-size 74.5,92.5 --cameras 6
+expect_json '[.ok, .reencode_mismatches, .tiles_over_bound, .open_edges]' '[true,0,0,0]'
+
 finish

@@ -44,6 +44,7 @@ struct BuildArgs {
   double leaf_error = 0;
   std::string reference = "l+2";
   std::string start = "rtin";  // engine start mesh: rtin or lattice
+  std::string coding = "progressive";  // tile coding (spec 2.8): progressive or standalone
   int threads = 0;
   std::string report;
   bool progress = false;

@@ -70,6 +70,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"l+2", "l+1", "original"}));
   b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice")
       ->check(CLI::IsMember({"rtin", "lattice"}));
+  b->add_option("--coding", build.coding,
+                "Tile coding: progressive (a child tile codes only what its parent does not give; decoding needs the parent) "
+                "or standalone (every tile decodable alone)")
+      ->check(CLI::IsMember({"progressive", "standalone"}));
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
   b->add_flag("--progress", build.progress, "Progress bar on standard error");
   fest::cli::add_threads(*b, build.threads);

@@ -36,6 +36,7 @@
 #include "pyramid_file.hpp"
 #include "render.hpp"
 #include "terrainlod/extract.hpp"
+#include "terrainlod/progressive_recode.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/quantized_mesh.hpp"
 #include "terrainlod/texture_pyramid.hpp"
@@ -585,7 +586,7 @@ int run_build(const BuildArgs& args) {
                              {"diagonal", args.dem.diagonal},
                              {"levels", pyr.levels},
                              {"padded", pyr.padded},
-                             {"coding", "standalone"},
+                             {"coding", args.coding},
                              {"connectivity", "strips"},
                              {"reference", args.reference},
                              {"level", levels},
@@ -617,36 +618,75 @@ int run_build(const BuildArgs& args) {
   std::uint64_t file_bytes = 0;
   try {
     // The spilled blobs in index order (the levels' files one after the other), each
-    // handed to `emit` with its tile's texture.
+    // handed to `emit` with its tile's texture and its index entry (the length is the
+    // final one). Progressive coding recodes each level against the level before it
+    // (spec 2.8): that level's standalone blobs are kept (coded, small) and only the
+    // parents of the chunk of rows at hand are decoded.
+    const bool progressive = args.coding == "progressive";
     auto for_each_tile = [&](auto&& emit) {
-      std::string blob;
+      std::string parent_store, level_store;            // standalone blobs of the previous / this level
+      std::vector<std::size_t> parent_at, level_at;     // their offsets (one more at the end)
       std::size_t i = 0;
-      for (auto& sp : spill) {
+      for (std::size_t l = 0; l < spill.size(); ++l) {
+        auto& sp = spill[l];
         if (!sp.file) continue;  // a level without tiles
         std::rewind(sp.file);
-        for (const auto& e : sp.entries) {
-          blob.resize(e.length);
-          if (std::fread(blob.data(), 1, blob.size(), sp.file) != blob.size())
-            throw io_error("cannot read back the temporary spill file");
-          emit(e, blob, textures.empty() ? std::string_view() : std::string_view(textures[i]));
-          ++i;
+        const int tiles_x = pyr.level[l].tiles_x;
+        // Chunks of whole even rows: a parent row serves two child rows.
+        const std::size_t rows = static_cast<std::size_t>(std::max(2, 2 * ((8 * params.threads + 2 * tiles_x - 1) / (2 * tiles_x))));
+        level_store.clear();
+        level_at.assign(1, 0);
+        for (std::size_t first = 0; first < sp.entries.size(); first += rows * static_cast<std::size_t>(tiles_x)) {
+          const std::size_t last = std::min(sp.entries.size(), first + rows * static_cast<std::size_t>(tiles_x));
+          for (std::size_t k = first; k < last; ++k) {
+            const std::size_t at = level_store.size();
+            level_store.resize(at + sp.entries[k].length);
+            if (std::fread(level_store.data() + at, 1, sp.entries[k].length, sp.file) != sp.entries[k].length)
+              throw io_error("cannot read back the temporary spill file");
+            level_at.push_back(level_store.size());
+          }
+          std::vector<std::string> recoded;
+          if (progressive && l > 0) {
+            std::vector<terrainlod::CodedTile> children, parents;
+            for (std::size_t k = first; k < last; ++k)
+              children.push_back({sp.entries[k].id, std::string_view(level_store).substr(level_at[k], level_at[k + 1] - level_at[k])});
+            const std::size_t ptx = static_cast<std::size_t>(pyr.level[l - 1].tiles_x);
+            const std::size_t p0 = static_cast<std::size_t>(sp.entries[first].id.y / 2) * ptx;
+            const std::size_t p1 = std::min(parent_at.size() - 1, static_cast<std::size_t>(sp.entries[last - 1].id.y / 2 + 1) * ptx);
+            for (std::size_t k = p0; k < p1; ++k)
+              parents.push_back({spill[l - 1].entries[k].id, std::string_view(parent_store).substr(parent_at[k], parent_at[k + 1] - parent_at[k])});
+            recoded = terrainlod::recode_progressive(children, parents, params.threads);
+          }
+          for (std::size_t k = first; k < last; ++k, ++i) {
+            const std::string_view blob = recoded.empty() ? std::string_view(level_store).substr(level_at[k], level_at[k + 1] - level_at[k])
+                                                          : std::string_view(recoded[k - first]);
+            entries[i].length = static_cast<std::uint32_t>(blob.size());
+            emit(entries[i], blob, textures.empty() ? std::string_view() : std::string_view(textures[i]));
+          }
         }
+        parent_store.swap(level_store);
+        parent_at.swap(level_at);
       }
     };
     if (archive) {
-      const std::string head = archive_head(manifest, entries);
+      // The index holds each tile's final length, known only once it is recoded: the head
+      // is written as a placeholder of its (fixed) size and filled in at the end.
+      std::string head = archive_head(manifest, entries);
       AtomicFile out(args.output);
       std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
       if (!f) throw io_error("cannot write {}", args.output);
       bool ok = std::fwrite(head.data(), 1, head.size(), f) == head.size();
       file_bytes = head.size();
       try {
-        for_each_tile([&](const TileEntry&, const std::string& blob, std::string_view texture) {
+        for_each_tile([&](const TileEntry&, std::string_view blob, std::string_view texture) {
           ok = ok && std::fwrite(blob.data(), 1, blob.size(), f) == blob.size();
           // An empty view may hold a null pointer, which fwrite must not get.
           if (!texture.empty()) ok = ok && std::fwrite(texture.data(), 1, texture.size(), f) == texture.size();
           file_bytes += blob.size() + texture.size();
         });
+        const std::string final_head = archive_head(manifest, entries);
+        if (final_head.size() != head.size()) throw runtime_failure("archive head changed size");
+        ok = ok && std::fseek(f, 0, SEEK_SET) == 0 && std::fwrite(final_head.data(), 1, final_head.size(), f) == final_head.size();
       } catch (...) {
         std::fclose(f);
         throw;
@@ -656,7 +696,7 @@ int run_build(const BuildArgs& args) {
       out.commit();
     } else {
       DirectoryPyramidWriter out(args.output, manifest, args.texture_format == "jpeg" ? "jpg" : "png");
-      for_each_tile([&](const TileEntry& e, const std::string& blob, std::string_view texture) {
+      for_each_tile([&](const TileEntry& e, std::string_view blob, std::string_view texture) {
         out.add(e.id, blob, texture);
         file_bytes += blob.size() + texture.size();
       });
@@ -686,29 +726,51 @@ int run_pyramid_stats(const std::string& path) {
   const int L = pyr.layout().levels;
   struct Acc {
     std::size_t tiles = 0, vertices = 0, border = 0, triangles = 0, header = 0, vert = 0, conn = 0, refine = 0, texture = 0;
+    std::size_t standalone = 0, progressive = 0, progressive_tiles = 0, inherited_present = 0;
     double worst = 0;
   };
   std::vector<Acc> acc(static_cast<std::size_t>(L) + 1);
+  int level_at = -1;
   for (const auto& e : pyr.index()) {
+    // Levels come root first: once a level starts, the one before it is needed only as
+    // parents (keep_only keeps ancestors), so memory holds about one level of tiles.
+    if (e.id.level != level_at) {
+      std::set<terrainlod::TileId> keep;
+      for (const auto& f : pyr.index())
+        if (f.id.level == e.id.level - 1) keep.insert(f.id);
+      pyr.keep_only(keep);
+      level_at = e.id.level;
+    }
     const auto& t = pyr.tile(e.id);
     auto& a = acc[static_cast<std::size_t>(e.id.level)];
     ++a.tiles;
     a.vertices += t.vertices.size();
     a.border += 4 * static_cast<std::size_t>(t.n());
     a.triangles += t.triangles.size();
-    terrainlod::TileSizes s;
-    terrainlod::encode_tile(t, &s);
+    // Both codings of the tile with its stream's strip order (spec 2.8: "stats give both
+    // sizes"): the stored one is one of them, byte for byte (verify checks that).
+    const std::string_view bytes = pyr.tile_bytes(e.id);
+    const terrainlod::Tile* parent =
+        e.id.level > 0 && pyr.has({e.id.level - 1, e.id.x / 2, e.id.y / 2}) ? &pyr.tile({e.id.level - 1, e.id.x / 2, e.id.y / 2}) : nullptr;
+    terrainlod::TileSizes alone, prog;
+    terrainlod::recode_tile(bytes, terrainlod::TileCoding::standalone, parent, &alone);
+    terrainlod::recode_tile(bytes, terrainlod::TileCoding::progressive, parent, &prog);
+    const terrainlod::TileSizes& s = terrainlod::tile_coding(bytes) == terrainlod::TileCoding::progressive ? prog : alone;
     a.header += s.header, a.vert += s.vertices, a.conn += s.connectivity, a.refine += s.refinement;
+    a.standalone += alone.total(), a.progressive += prog.total();
+    if (prog.coding == terrainlod::TileCoding::progressive) ++a.progressive_tiles, a.inherited_present += prog.inherited_present;
     a.texture += e.texture_length;
     if (t.eps > 0) a.worst = std::max(a.worst, static_cast<double>(t.err) / t.eps);
   }
   nlohmann::json levels = nlohmann::json::array();
-  std::size_t total_v = 0, total_bytes = 0, total_t = 0, total_texture = 0;
+  std::size_t total_v = 0, total_bytes = 0, total_t = 0, total_texture = 0, total_alone = 0, total_prog = 0;
+  auto per_vertex = [](std::size_t bytes, std::size_t vertices) { return vertices ? static_cast<double>(bytes) / vertices : 0.0; };
   for (int l = 0; l <= L; ++l) {
     const auto& a = acc[static_cast<std::size_t>(l)];
     const auto& m = pyr.manifest().at("level").at(static_cast<std::size_t>(l));
     const std::size_t bytes_l = a.header + a.vert + a.conn + a.refine;
     total_v += a.vertices, total_bytes += bytes_l, total_t += a.triangles, total_texture += a.texture;
+    total_alone += a.standalone, total_prog += a.progressive;
     levels.push_back({{"level", l},
                       {"tiles", a.tiles},
                       {"vertices", a.vertices},
@@ -718,7 +780,11 @@ int run_pyramid_stats(const std::string& path) {
                       {"lattice_bits", m.at("lattice_bits")},
                       {"bytes", {{"total", bytes_l}, {"header", a.header}, {"vertices", a.vert}, {"connectivity", a.conn},
                                  {"refinement", a.refine}, {"texture", a.texture}}},
-                      {"bytes_per_vertex", a.vertices ? static_cast<double>(bytes_l) / a.vertices : 0.0},
+                      {"bytes_per_vertex", per_vertex(bytes_l, a.vertices)},
+                      {"standalone_bytes", a.standalone},
+                      {"progressive_bytes", a.progressive},
+                      {"progressive_tiles", a.progressive_tiles},
+                      {"inherited_vertices_kept", a.inherited_present},
                       {"max_err_over_eps", l == L ? nlohmann::json(nullptr) : nlohmann::json(a.worst)}});
   }
   const double samples = pyr.manifest().at("width").get<double>() * pyr.manifest().at("height").get<double>();
@@ -728,10 +794,15 @@ int run_pyramid_stats(const std::string& path) {
                        {{"tiles", pyr.index().size()},
                         {"vertices", total_v},
                         {"triangles", total_t},
+                        {"coding", pyr.manifest().value("coding", std::string("standalone"))},
                         {"tile_bytes", total_bytes},
+                        {"standalone_tile_bytes", total_alone},
+                        {"progressive_tile_bytes", total_prog},
                         {"texture_bytes", total_texture},
                         {"file_bytes", pyr.size()},
-                        {"bytes_per_vertex", total_v ? static_cast<double>(total_bytes) / total_v : 0.0},
+                        {"bytes_per_vertex", per_vertex(total_bytes, total_v)},
+                        {"standalone_bytes_per_vertex", per_vertex(total_alone, total_v)},
+                        {"progressive_bytes_per_vertex", per_vertex(total_prog, total_v)},
                         {"bytes_per_sample", static_cast<double>(total_bytes) / samples},
                         {"ratio_to_raw_int16", static_cast<double>(total_bytes) / (2 * samples)}}}};
   const std::string text = j.dump(2) + "\n";
@@ -974,9 +1045,19 @@ int run_verify(const VerifyArgs& args) {
   const double factor = reference == "original" ? 1.0 : reference == "l+1" ? 2.0 : 4.0 / 3.0;
   std::size_t triangulations = 0, reencode_mismatch = 0, over = 0;
   double worst_ratio = 0;
+  int level_at = -1;
   for (const auto& e : pyr.index()) {
+    if (e.id.level != level_at) {  // root first: keep the level before as parents only
+      std::set<terrainlod::TileId> keep;
+      for (const auto& f : pyr.index())
+        if (f.id.level == e.id.level - 1) keep.insert(f.id);
+      pyr.keep_only(keep);
+      level_at = e.id.level;
+    }
     const auto& t = pyr.tile(e.id);
-    if (terrainlod::encode_tile(t) != pyr.tile_bytes(e.id)) ++reencode_mismatch;
+    // Coding again in the stored coding (same strip order) gives the same bytes.
+    const std::string_view stored = pyr.tile_bytes(e.id);
+    if (terrainlod::recode_tile(stored, terrainlod::tile_coding(stored), pyr.parent_of(e.id)) != stored) ++reencode_mismatch;
     if (!ref) continue;
     const double eps = pyr.manifest().at("level").at(static_cast<std::size_t>(e.id.level)).at("eps").get<double>();
     const double bound = e.id.level == L.levels ? eps + 0.5 * pyr.geometry(e.id.level).delta_min : factor * eps;

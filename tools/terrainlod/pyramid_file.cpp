@@ -230,10 +230,18 @@ std::string PyramidFile::tile_path(const terrainlod::TileId& id, const std::stri
 }
 
 std::size_t PyramidFile::keep_only(const std::set<terrainlod::TileId>& keep) {
+  // The ancestors of kept tiles stay too: a progressive tile decoded later (a child of a
+  // kept one, or its sibling) needs them, and they are few (one chain per tile).
+  std::set<terrainlod::TileId> keep_all = keep;
+  for (const auto& id : keep)
+    for (terrainlod::TileId a = id; a.level > 0;) {
+      a = {a.level - 1, a.x / 2, a.y / 2};
+      if (!keep_all.insert(a).second) break;  // its ancestors are in already
+    }
   std::size_t evicted = 0;
-  for (auto it = z_ranges_.begin(); it != z_ranges_.end();) it = keep.count(it->first) ? std::next(it) : z_ranges_.erase(it);
+  for (auto it = z_ranges_.begin(); it != z_ranges_.end();) it = keep_all.count(it->first) ? std::next(it) : z_ranges_.erase(it);
   for (auto it = cache_.begin(); it != cache_.end();) {
-    if (keep.count(it->first)) {
+    if (keep_all.count(it->first)) {
       ++it;
     } else {
       files_.erase(it->first);
@@ -279,11 +287,21 @@ const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {
   auto it = cache_.find(id);
   if (it != cache_.end()) return it->second;
   const std::string_view b = tile_bytes(id);
+  // A progressive tile is coded against its decoded parent (spec 2.8): decode the chain
+  // up to the nearest cached or standalone ancestor first (each one cached).
+  const terrainlod::Tile* parent = nullptr;
+  if (terrainlod::tile_coding(b) == terrainlod::TileCoding::progressive && id.level > 0) {
+    const terrainlod::TileId up{id.level - 1, id.x / 2, id.y / 2};
+    if (!has(up))
+      throw bad_input("tile {}/{}/{} is coded relative to its parent {}/{}/{}, which the pyramid lacks ({})", id.level, id.x, id.y,
+                      up.level, up.x, up.y, name_);
+    parent = &tile(up);  // std::map nodes stay put while others are inserted
+  }
   touched_ += z_ranges_.count(id) ? b.size() - terrainlod::kTileHeaderBytes : b.size();  // the header was counted
   ++decoded_;
   terrainlod::Tile t;
   try {
-    t = terrainlod::decode_tile(b);
+    t = terrainlod::decode_tile(b, parent);
   } catch (const Error& e) {
     throw bad_input("{} ({})", e.what(), name_);
   }
@@ -304,6 +322,11 @@ std::array<float, 2> PyramidFile::z_range(const terrainlod::TileId& id) {
   if (!(h.id == id)) throw bad_input("pyramid index and tile header disagree on tile {}/{}/{} ({})", id.level, id.x, id.y, name_);
   touched_ += terrainlod::kTileHeaderBytes;
   return z_ranges_.emplace(id, std::array<float, 2>{h.z_min, h.z_max}).first->second;
+}
+
+const terrainlod::Tile* PyramidFile::parent_of(const terrainlod::TileId& id) {
+  if (id.level == 0 || terrainlod::tile_coding(tile_bytes(id)) != terrainlod::TileCoding::progressive) return nullptr;
+  return &tile({id.level - 1, id.x / 2, id.y / 2});
 }
 
 }  // namespace fest::terrainlod_tool

@@ -68,7 +68,10 @@ class PyramidFile {
   const terrainlod::PyramidLayout& layout() const { return layout_; }
   terrainlod::TileGeometry geometry(int level) const;
   bool has(const terrainlod::TileId& id) const { return where_.count(id) != 0; }
-  const terrainlod::Tile& tile(const terrainlod::TileId& id);  // decoded once, cached
+  // Decoded once, cached; a progressive tile decodes (and caches) its parent chain first.
+  const terrainlod::Tile& tile(const terrainlod::TileId& id);
+  // The decoded parent a tile's coding refers to, or null for a standalone tile.
+  const terrainlod::Tile* parent_of(const terrainlod::TileId& id);
   // A tile's height range from its header alone (read once, cached; selection examines
   // many tiles it never draws, so it must not decode them).
   std::array<float, 2> z_range(const terrainlod::TileId& id);
@@ -81,7 +84,8 @@ class PyramidFile {
   std::size_t bytes_touched() const { return touched_; }
   std::size_t tiles_decoded() const { return decoded_; }
   std::size_t tiles_cached() const { return cache_.size(); }
-  // Drops decoded tiles not in `keep` (the tile cache of a camera path); returns how many.
+  // Drops decoded tiles not in `keep` or ancestors of a tile in it (the tile cache of a
+  // camera path; progressive tiles need their ancestors to decode); returns how many.
   std::size_t keep_only(const std::set<terrainlod::TileId>& keep);
   std::size_t size() const { return total_bytes_; }
   const std::string& name() const { return name_; }
