@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/mesh.hpp"
 #include "terrainlod/collapse_check.hpp"
+#include "terrainlod/halfedge_collapse.hpp"
 #include "terrainlod/rtin_start.hpp"
 
 namespace fest::terrainlod {
@@ -188,7 +189,7 @@ class CollapseEngine {
       // lazily, when their entry comes up: many are changed again before that.
       ring_.clear();
       for (auto u : m_.vv_range(v)) ring_.push_back(u);
-      m_.collapse(heh);
+      collapse_halfedge(m_, heh);  // = m_.collapse(heh), without the library's out-of-line checks
       removed_[vi] = 1;
       ++result.collapses;
       result.max_error = std::max(result.max_error, cost);
@@ -277,6 +278,10 @@ class CollapseEngine {
     auto& fan = fan_;
     double worst = 0;
     for (int t = 0; t < n; ++t) {
+      worst = std::max(worst, edges_error(fan[t].id, fan[t].corner, stop));
+      if (worst > stop) return kInfinite;
+    }
+    for (int t = 0; t < n; ++t) {
       worst = std::max(worst, cached_error(fan[t].id, fan[t].corner, stop));
       if (worst > stop) return kInfinite;
     }
@@ -293,8 +298,11 @@ class CollapseEngine {
   double cached_error(const std::uint64_t (&id)[3], const GridPoint (&corner)[3], double stop) {
     // Triangles with a transition variant are measured whole (transition_error).
     const bool whole = frame_ && on_refinable_border(corner);
-    double e = triangle_part(id, corner, stop, whole);
-    if (whole || e > stop) return e;
+    return triangle_part(id, corner, stop, whole);
+  }
+  double edges_error(const std::uint64_t (&id)[3], const GridPoint (&corner)[3], double stop) {
+    if (frame_ && on_refinable_border(corner)) return 0;
+    double e = 0;
     for (int a = 0; a < 3; ++a) {
       e = std::max(e, cached_edge_error(id[a], id[(a + 1) % 3], corner[a], corner[(a + 1) % 3]));
       if (e > stop) return kInfinite;
