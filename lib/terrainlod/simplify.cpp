@@ -12,6 +12,7 @@
 #include "core/mesh.hpp"
 #include "terrainlod/collapse_check.hpp"
 #include "terrainlod/halfedge_collapse.hpp"
+#include "terrainlod/mesh_add_face.hpp"
 #include "terrainlod/rtin_start.hpp"
 
 namespace fest::terrainlod {
@@ -224,8 +225,9 @@ class CollapseEngine {
     m_.request_edge_status();
     m_.request_face_status();
     for (const auto& p : start.vertices) m_.add_vertex(TriMesh::Point(p.x, p.y, p.z));
+    // add_triangle = m_.add_face, without the library's out-of-line checks (mesh_add_face.hpp).
     for (const auto& t : start.triangles)
-      m_.add_face(TriMesh::VertexHandle(t[0]), TriMesh::VertexHandle(t[1]), TriMesh::VertexHandle(t[2]));
+      add_triangle(m_, TriMesh::VertexHandle(t[0]), TriMesh::VertexHandle(t[1]), TriMesh::VertexHandle(t[2]));
     locked_ = locked;
     check_ = CollapseCheck(m_.n_vertices());
     version_.assign(m_.n_vertices(), 0);
