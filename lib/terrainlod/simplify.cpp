@@ -224,6 +224,8 @@ class CollapseEngine {
     m_.request_vertex_status();
     m_.request_edge_status();
     m_.request_face_status();
+    // A disc: edges = vertices + faces - 1 (Euler); reserved so that adding grows nothing.
+    m_.reserve(start.vertices.size(), start.vertices.size() + start.triangles.size(), start.triangles.size());
     for (const auto& p : start.vertices) m_.add_vertex(TriMesh::Point(p.x, p.y, p.z));
     // add_triangle = m_.add_face, without the library's out-of-line checks (mesh_add_face.hpp).
     for (const auto& t : start.triangles)
@@ -529,9 +531,12 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
       return triangle_error(ref, a, b, c, s);
     };
     // Every lattice cell fits with the reference's own diagonal, so there is always a
-    // start mesh; the fallback below only guards the contract.
-    const PointHeight height = [&ref](double x, double y) { return ref.height_at(x, y); };
-    if (auto rtin = rtin_start_mesh(ref, SquareLattice{0, 0, n, 1}, corners, limit, measure, height)) {
+    // start mesh; the fallback below only guards the contract. No lower-bound screen
+    // (rtin_start_mesh's reference_height): against the grid the exact measure stops at
+    // the first sample over the limit, and the screen's point look-ups cost more than
+    // they saved (Jacksboro 257^2 at 10 m: 192 M -> 162 M instructions without; the same
+    // mesh, as the screen only rejects what the measure would).
+    if (auto rtin = rtin_start_mesh(ref, SquareLattice{0, 0, n, 1}, corners, limit, measure)) {
       CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, rtin->tin, rtin->locked, limit, nullptr);
       SimplifyResult result = engine.run();
       result.tolerance = tolerance;
