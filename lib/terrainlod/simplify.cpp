@@ -177,7 +177,7 @@ class CollapseEngine {
         continue;
       }
       const auto w = TriMesh::VertexHandle(wi);
-      const auto heh = m_.find_halfedge(v, w);
+      const auto heh = halfedge_to(v, w);
       // The link condition can change without v's star changing (a collapse next to w);
       // the error of the collapse cannot, as it depends on v's star and w's position only.
       if (!heh.is_valid() || !check_.collapse_ok(m_, heh)) {
@@ -238,6 +238,14 @@ class CollapseEngine {
     removed_.assign(m_.n_vertices(), 0);
   }
 
+  // The half-edge v -> w, or an invalid one: m_.find_halfedge, circulating with the
+  // header's inline accessors instead of the assertion-built library's.
+  TriMesh::HalfedgeHandle halfedge_to(TriMesh::VertexHandle v, TriMesh::VertexHandle w) const {
+    for (auto h : m_.voh_range(v))
+      if (m_.to_vertex_handle(h) == w) return h;
+    return TriMesh::HalfedgeHandle();
+  }
+
   double measure(const GridPoint& a, const GridPoint& b, const GridPoint& c, double stop) const {
     return frame_ ? transition_error_with(measure_, dem_, *frame_, a, b, c, stop) : measure_.triangle(a, b, c, stop);
   }
@@ -279,12 +287,13 @@ class CollapseEngine {
         return kInfinite;
       ++n;
     }
+    // Triangle by triangle, the samples first, then the edges: this order decides which
+    // long edges and large triangles are measured first, and in which orientation the
+    // tables remember them (the walks differ in the last bit by direction), so it is part
+    // of the result. Measuring all the fan's edges before any samples saved 5 % of the
+    // instructions but changed the 1 m mesh of the Jacksboro crop (same counts and error).
     auto& fan = fan_;
     double worst = 0;
-    for (int t = 0; t < n; ++t) {
-      worst = std::max(worst, edges_error(fan[t].id, fan[t].corner, stop));
-      if (worst > stop) return kInfinite;
-    }
     for (int t = 0; t < n; ++t) {
       worst = std::max(worst, cached_error(fan[t].id, fan[t].corner, stop));
       if (worst > stop) return kInfinite;
@@ -302,11 +311,8 @@ class CollapseEngine {
   double cached_error(const std::uint64_t (&id)[3], const GridPoint (&corner)[3], double stop) {
     // Triangles with a transition variant are measured whole (transition_error).
     const bool whole = frame_ && on_refinable_border(corner);
-    return triangle_part(id, corner, stop, whole);
-  }
-  double edges_error(const std::uint64_t (&id)[3], const GridPoint (&corner)[3], double stop) {
-    if (frame_ && on_refinable_border(corner)) return 0;
-    double e = 0;
+    double e = triangle_part(id, corner, stop, whole);
+    if (whole || e > stop) return e;
     for (int a = 0; a < 3; ++a) {
       e = std::max(e, cached_edge_error(id[a], id[(a + 1) % 3], corner[a], corner[(a + 1) % 3]));
       if (e > stop) return kInfinite;
