@@ -38,15 +38,17 @@ class RtinBuilder {
     const int n = lat_.n;
     const Rtri roots[2] = {{{0, 0}, {n, n}, {n, 0}}, {{n, n}, {0, 0}, {0, n}}};
     // Visit the current mesh, measuring what was not measured yet and splitting what is
-    // over, until a whole pass changes nothing; that pass's triangles are the result.
+    // over, until a whole pass changes nothing; then one more pass, which changes nothing
+    // either (every triangle it meets is measured), emits the result. Emitting in every
+    // pass cost as much as the passes themselves.
     for (;;) {
       changed_ = false;
-      result_.tin = Tin{};
-      std::fill(vertex_of_.begin(), vertex_of_.end(), -1);
       for (const Rtri& r : roots) visit(r);
       if (failed_) return std::nullopt;
       if (!changed_) break;
     }
+    emitting_ = true;
+    for (const Rtri& r : roots) visit(r);
     for (int cj = 0; cj < n; ++cj)
       for (int ci = 0; ci < n; ++ci)
         if (cell_[cell_index(ci, cj)] & kFlipped) {
@@ -157,6 +159,12 @@ class RtinBuilder {
         sides |= 1u << side;
       }
     }
+    // Most triangles have no locked point on their edges: the triangle itself, without
+    // refine_triangle's work list (an allocation per call).
+    if (sides == 0) {
+      pieces.push_back({0, 1, 2});
+      return;
+    }
     refine_triangle({0, 1, 2}, inserts, sides, pieces);
   }
 
@@ -262,6 +270,7 @@ class RtinBuilder {
   }
 
   void emit(const Rtri& t) {
+    if (!emitting_) return;
     std::array<LatticePoint, 3> corner;
     fan(t, corner, extra_, pieces_);
     for (const auto& q : pieces_) {
@@ -296,6 +305,7 @@ class RtinBuilder {
   std::vector<LatticePoint> extra_;   // scratch of fan()
   std::vector<std::array<int, 3>> pieces_;
   bool changed_ = false, failed_ = false;
+  bool emitting_ = false;  // the last pass: emit() writes the result
   RtinStart result_;
 };
 

@@ -1,0 +1,127 @@
+// collapse_halfedge against the operation it re-implements (OpenMesh's TriMesh::collapse):
+// two copies of a mesh take the same random sequence of allowed collapses, one through the
+// library and one through ours, and after every step the whole connectivity must agree
+// (every half-edge's next, prev, to-vertex and face; every vertex's and face's half-edge;
+// the deleted flags). The engine's order of work follows these handles, so agreement
+// handle for handle is what keeps its results unchanged.
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/mesh.hpp"
+#include "terrainlod/collapse_check.hpp"
+#include "terrainlod/halfedge_collapse.hpp"
+
+namespace {
+
+using fest::TriMesh;
+using fest::terrainlod::CollapseCheck;
+using fest::terrainlod::collapse_halfedge;
+
+// n x n vertices, every cell split by a diagonal chosen at random.
+TriMesh grid_mesh(int n, std::mt19937& rng) {
+  TriMesh m;
+  m.request_vertex_status();
+  m.request_edge_status();
+  m.request_face_status();
+  std::vector<TriMesh::VertexHandle> v;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) v.push_back(m.add_vertex(TriMesh::Point(i, j, 0)));
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const auto a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i], d = v[(j + 1) * n + i + 1];
+      if (rng() & 1) {
+        m.add_face(a, b, d);
+        m.add_face(a, d, c);
+      } else {
+        m.add_face(a, b, c);
+        m.add_face(b, d, c);
+      }
+    }
+  return m;
+}
+
+// Every connectivity field of the two meshes; returns the first difference ("" = none).
+std::string first_difference(const TriMesh& a, const TriMesh& b) {
+  if (a.n_halfedges() != b.n_halfedges() || a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces())
+    return "sizes";
+  for (auto h : a.halfedges()) {
+    const auto hb = TriMesh::HalfedgeHandle(h.idx());
+    if (a.next_halfedge_handle(h) != b.next_halfedge_handle(hb)) return "next of half-edge " + std::to_string(h.idx());
+    if (a.prev_halfedge_handle(h) != b.prev_halfedge_handle(hb)) return "prev of half-edge " + std::to_string(h.idx());
+    if (a.to_vertex_handle(h) != b.to_vertex_handle(hb)) return "to-vertex of half-edge " + std::to_string(h.idx());
+    if (a.face_handle(h) != b.face_handle(hb)) return "face of half-edge " + std::to_string(h.idx());
+  }
+  for (auto e : a.edges())
+    if (a.status(e).deleted() != b.status(TriMesh::EdgeHandle(e.idx())).deleted())
+      return "deleted flag of edge " + std::to_string(e.idx());
+  for (auto v : a.all_vertices()) {
+    const auto vb = TriMesh::VertexHandle(v.idx());
+    if (a.halfedge_handle(v) != b.halfedge_handle(vb)) return "half-edge of vertex " + std::to_string(v.idx());
+    if (a.status(v).deleted() != b.status(vb).deleted()) return "deleted flag of vertex " + std::to_string(v.idx());
+  }
+  for (auto f : a.all_faces()) {
+    const auto fb = TriMesh::FaceHandle(f.idx());
+    if (a.halfedge_handle(f) != b.halfedge_handle(fb)) return "half-edge of face " + std::to_string(f.idx());
+    if (a.status(f).deleted() != b.status(fb).deleted()) return "deleted flag of face " + std::to_string(f.idx());
+  }
+  return "";
+}
+
+TEST(TerrainlodHalfedgeCollapse, MatchesOpenMeshHandleForHandle) {
+  std::mt19937 rng(11);
+  int collapses = 0, boundary_collapses = 0;
+  for (int round = 0; round < 6; ++round) {
+    TriMesh library = grid_mesh(10 + round, rng);
+    TriMesh ours = library;
+    CollapseCheck check(library.n_vertices());
+    for (int step = 0; step < 4000; ++step) {
+      const auto h = TriMesh::HalfedgeHandle(static_cast<int>(rng() % library.n_halfedges()));
+      if (library.status(library.edge_handle(h)).deleted() || !check.collapse_ok(library, h)) continue;
+      if (library.is_boundary(library.edge_handle(h))) ++boundary_collapses;
+      library.collapse(h);
+      collapse_halfedge(ours, h);
+      ++collapses;
+      const std::string diff = first_difference(library, ours);
+      ASSERT_EQ(diff, "") << "round " << round << " step " << step;
+    }
+  }
+  // Inner and boundary collapses both exercised, down to small remnants.
+  EXPECT_GT(collapses, 300);
+  EXPECT_GT(boundary_collapses, 30);
+}
+
+TEST(TerrainlodHalfedgeCollapse, InnerVertexCollapseRemovesTwoTrianglesAndOneVertex) {
+  // 3 x 3 grid, SW-NE diagonals: the centre (valence 6) onto its east neighbour.
+  TriMesh m;
+  m.request_vertex_status();
+  m.request_edge_status();
+  m.request_face_status();
+  std::vector<TriMesh::VertexHandle> v;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) v.push_back(m.add_vertex(TriMesh::Point(i, j, 0)));
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const int a = j * 3 + i;
+      m.add_face(v[a], v[a + 1], v[a + 4]);
+      m.add_face(v[a], v[a + 4], v[a + 3]);
+    }
+  collapse_halfedge(m, m.find_halfedge(v[4], v[5]));
+  int live_faces = 0, live_vertices = 0;
+  for (auto f : m.all_faces()) live_faces += !m.status(f).deleted();
+  for (auto u : m.all_vertices()) live_vertices += !m.status(u).deleted();
+  EXPECT_EQ(live_faces, 6);  // 8 - the two triangles on edge 4-5
+  EXPECT_EQ(live_vertices, 8);
+  EXPECT_TRUE(m.status(v[4]).deleted());
+  // Vertex 5 now has the ring 2, 1, 0, 3, 7, 8 (every former neighbour of 4 and of 5).
+  std::vector<int> ring;
+  for (auto u : m.vv_range(v[5])) ring.push_back(u.idx());
+  std::sort(ring.begin(), ring.end());
+  EXPECT_EQ(ring, (std::vector<int>{0, 1, 2, 3, 7, 8}));
+}
+
+}  // namespace
