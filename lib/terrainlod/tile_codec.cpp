@@ -514,7 +514,9 @@ std::optional<std::string> encode_with_strips(const Tile& tile, const std::vecto
 
 // Decodes a tile; `parent` (decoded) is needed for progressive coding; `strips`, if given,
 // receives the stream's triangles in the decoded vertex ids, as they were coded.
-Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<StripTriangle>* strips) {
+// The magic, the version (1 or the current one) and a whole header: the version, or
+// bad_input saying what is wrong.
+unsigned checked_version(std::string_view bytes) {
   if (bytes.size() < kVersion1HeaderBytes)
     throw bad_input("tile is truncated: {} of at least {} header bytes", bytes.size(), kVersion1HeaderBytes);
   if (bytes.substr(0, 4) != std::string_view(kMagic, 4)) throw bad_input("not a terrainlod tile (bad magic)");
@@ -523,6 +525,12 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
     throw bad_input("terrainlod tile version {} is not supported (this is version {}, which also reads 1)", version, kVersion);
   const std::size_t header = version == 1 ? kVersion1HeaderBytes : kTileHeaderBytes;
   if (bytes.size() < header) throw bad_input("tile is truncated: {} of {} header bytes", bytes.size(), header);
+  return version;
+}
+
+Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<StripTriangle>* strips) {
+  const unsigned version = checked_version(bytes);
+  const std::size_t header = version == 1 ? kVersion1HeaderBytes : kTileHeaderBytes;
   Tile tile;
   tile.id.level = get_le<std::uint8_t>(bytes, 5);
   tile.id.x = static_cast<int>(get_le<std::uint32_t>(bytes, 6));
@@ -752,14 +760,7 @@ std::string recode_tile(std::string_view bytes, TileCoding coding, const Tile* p
 Tile decode_tile(std::string_view bytes, const Tile* parent) { return decode_with_strips(bytes, parent, nullptr); }
 
 TileHeader read_tile_header(std::string_view bytes) {
-  if (bytes.size() < kVersion1HeaderBytes)
-    throw bad_input("tile is truncated: {} of at least {} header bytes", bytes.size(), kVersion1HeaderBytes);
-  if (bytes.substr(0, 4) != std::string_view(kMagic, 4)) throw bad_input("not a terrainlod tile (bad magic)");
-  const unsigned version = get_le<std::uint8_t>(bytes, 4);
-  if (version != 1 && version != kVersion)
-    throw bad_input("terrainlod tile version {} is not supported (this is version {}, which also reads 1)", version, kVersion);
-  if (version == kVersion && bytes.size() < kTileHeaderBytes)
-    throw bad_input("tile is truncated: {} of at least {} header bytes", bytes.size(), kTileHeaderBytes);
+  checked_version(bytes);
   // Both versions place these fields alike (version 2 only appended the coding byte).
   TileHeader h;
   h.id = {get_le<std::uint8_t>(bytes, 5), static_cast<int>(get_le<std::uint32_t>(bytes, 6)),

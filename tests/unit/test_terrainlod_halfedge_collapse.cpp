@@ -15,10 +15,12 @@
 #include "core/mesh.hpp"
 #include "terrainlod/collapse_check.hpp"
 #include "terrainlod/halfedge_collapse.hpp"
+#include "terrainlod_mesh_compare.hpp"
 
 namespace {
 
 using fest::TriMesh;
+using fest::test::first_difference;
 using fest::terrainlod::CollapseCheck;
 using fest::terrainlod::collapse_halfedge;
 
@@ -45,32 +47,6 @@ TriMesh grid_mesh(int n, std::mt19937& rng) {
   return m;
 }
 
-// Every connectivity field of the two meshes; returns the first difference ("" = none).
-std::string first_difference(const TriMesh& a, const TriMesh& b) {
-  if (a.n_halfedges() != b.n_halfedges() || a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces())
-    return "sizes";
-  for (auto h : a.halfedges()) {
-    const auto hb = TriMesh::HalfedgeHandle(h.idx());
-    if (a.next_halfedge_handle(h) != b.next_halfedge_handle(hb)) return "next of half-edge " + std::to_string(h.idx());
-    if (a.prev_halfedge_handle(h) != b.prev_halfedge_handle(hb)) return "prev of half-edge " + std::to_string(h.idx());
-    if (a.to_vertex_handle(h) != b.to_vertex_handle(hb)) return "to-vertex of half-edge " + std::to_string(h.idx());
-    if (a.face_handle(h) != b.face_handle(hb)) return "face of half-edge " + std::to_string(h.idx());
-  }
-  for (auto e : a.edges())
-    if (a.status(e).deleted() != b.status(TriMesh::EdgeHandle(e.idx())).deleted())
-      return "deleted flag of edge " + std::to_string(e.idx());
-  for (auto v : a.all_vertices()) {
-    const auto vb = TriMesh::VertexHandle(v.idx());
-    if (a.halfedge_handle(v) != b.halfedge_handle(vb)) return "half-edge of vertex " + std::to_string(v.idx());
-    if (a.status(v).deleted() != b.status(vb).deleted()) return "deleted flag of vertex " + std::to_string(v.idx());
-  }
-  for (auto f : a.all_faces()) {
-    const auto fb = TriMesh::FaceHandle(f.idx());
-    if (a.halfedge_handle(f) != b.halfedge_handle(fb)) return "half-edge of face " + std::to_string(f.idx());
-    if (a.status(f).deleted() != b.status(fb).deleted()) return "deleted flag of face " + std::to_string(f.idx());
-  }
-  return "";
-}
 
 TEST(TerrainlodHalfedgeCollapse, MatchesOpenMeshHandleForHandle) {
   std::mt19937 rng(11);

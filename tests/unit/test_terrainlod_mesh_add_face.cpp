@@ -14,10 +14,12 @@
 
 #include "core/mesh.hpp"
 #include "terrainlod/mesh_add_face.hpp"
+#include "terrainlod_mesh_compare.hpp"
 
 namespace {
 
 using fest::TriMesh;
+using fest::test::first_difference;
 using fest::terrainlod::add_triangle;
 
 TriMesh empty_mesh(int vertices) {
@@ -29,24 +31,6 @@ TriMesh empty_mesh(int vertices) {
   return m;
 }
 
-std::string first_difference(const TriMesh& a, const TriMesh& b) {
-  if (a.n_halfedges() != b.n_halfedges() || a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces())
-    return "sizes";
-  for (auto h : a.halfedges()) {
-    const auto hb = TriMesh::HalfedgeHandle(h.idx());
-    if (a.next_halfedge_handle(h) != b.next_halfedge_handle(hb)) return "next of half-edge " + std::to_string(h.idx());
-    if (a.prev_halfedge_handle(h) != b.prev_halfedge_handle(hb)) return "prev of half-edge " + std::to_string(h.idx());
-    if (a.to_vertex_handle(h) != b.to_vertex_handle(hb)) return "to-vertex of half-edge " + std::to_string(h.idx());
-    if (a.face_handle(h) != b.face_handle(hb)) return "face of half-edge " + std::to_string(h.idx());
-  }
-  for (auto v : a.all_vertices())
-    if (a.halfedge_handle(v) != b.halfedge_handle(TriMesh::VertexHandle(v.idx())))
-      return "half-edge of vertex " + std::to_string(v.idx());
-  for (auto f : a.all_faces())
-    if (a.halfedge_handle(f) != b.halfedge_handle(TriMesh::FaceHandle(f.idx())))
-      return "half-edge of face " + std::to_string(f.idx());
-  return "";
-}
 
 // The counter-clockwise triangles of an n x n grid, each cell split by a random diagonal.
 std::vector<std::array<int, 3>> grid_triangles(int n, std::mt19937& rng) {

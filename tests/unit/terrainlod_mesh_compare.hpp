@@ -1,0 +1,40 @@
+#pragma once
+// Comparing two OpenMesh triangle meshes handle by handle: the engine's own collapse and
+// add_face must leave exactly the connectivity OpenMesh's would (same iteration order,
+// hence the same simplified meshes). Both meshes need vertex, edge and face status.
+
+#include <string>
+
+#include "core/mesh.hpp"
+
+namespace fest::test {
+
+// Every connectivity field and deleted flag of the two meshes; the first difference, or
+// "" when there is none.
+inline std::string first_difference(const fest::TriMesh& a, const fest::TriMesh& b) {
+  if (a.n_halfedges() != b.n_halfedges() || a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces())
+    return "sizes";
+  for (auto h : a.halfedges()) {
+    const auto hb = fest::TriMesh::HalfedgeHandle(h.idx());
+    if (a.next_halfedge_handle(h) != b.next_halfedge_handle(hb)) return "next of half-edge " + std::to_string(h.idx());
+    if (a.prev_halfedge_handle(h) != b.prev_halfedge_handle(hb)) return "prev of half-edge " + std::to_string(h.idx());
+    if (a.to_vertex_handle(h) != b.to_vertex_handle(hb)) return "to-vertex of half-edge " + std::to_string(h.idx());
+    if (a.face_handle(h) != b.face_handle(hb)) return "face of half-edge " + std::to_string(h.idx());
+  }
+  for (auto e : a.edges())
+    if (a.status(e).deleted() != b.status(fest::TriMesh::EdgeHandle(e.idx())).deleted())
+      return "deleted flag of edge " + std::to_string(e.idx());
+  for (auto v : a.all_vertices()) {
+    const auto vb = fest::TriMesh::VertexHandle(v.idx());
+    if (a.halfedge_handle(v) != b.halfedge_handle(vb)) return "half-edge of vertex " + std::to_string(v.idx());
+    if (a.status(v).deleted() != b.status(vb).deleted()) return "deleted flag of vertex " + std::to_string(v.idx());
+  }
+  for (auto f : a.all_faces()) {
+    const auto fb = fest::TriMesh::FaceHandle(f.idx());
+    if (a.halfedge_handle(f) != b.halfedge_handle(fb)) return "half-edge of face " + std::to_string(f.idx());
+    if (a.status(f).deleted() != b.status(fb).deleted()) return "deleted flag of face " + std::to_string(f.idx());
+  }
+  return "";
+}
+
+}  // namespace fest::test
