@@ -65,8 +65,6 @@ double distance_to(const Vec& p, const Box& b) {
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-TileId parent(const TileId& t) { return {t.level - 1, t.x / 2, t.y / 2}; }
-
 TileId neighbour(const TileId& t, int side) {
   switch (side) {
     case kWest: return {t.level, t.x - 1, t.y};
@@ -136,7 +134,7 @@ Selection select_tiles(const PyramidLayout& L, const Camera& camera,
     for (int side = kWest; side <= kNorth; ++side) {
       TileId a = neighbour(t, side);
       if (!L.exists(a)) continue;
-      while (a.level > 0 && !leaves.count(a)) a = parent(a);
+      while (a.level > 0 && !leaves.count(a)) a = parent_id(a);
       if (!leaves.count(a) || a.level >= t.level - 1) continue;
       const TileId source = leaves[a] ? texture_of[a] : a;
       leaves.erase(a);

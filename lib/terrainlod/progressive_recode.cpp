@@ -1,41 +1,11 @@
 #include "terrainlod/progressive_recode.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include "core/error.hpp"
+#include "core/parallel_for.hpp"
 
 namespace fest::terrainlod {
-namespace {
-
-// Runs job(i) for i in [0, count) on up to `threads` threads; the first failure is rethrown.
-template <typename Job>
-void parallel_for(std::size_t count, int threads, const Job& job) {
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < count;) {
-      try {
-        job(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = count;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min<int>(threads, static_cast<int>(count)); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-}
-
-}  // namespace
 
 std::vector<std::string> recode_progressive(const std::vector<CodedTile>& children, const std::vector<CodedTile>& parents,
                                             int threads, std::vector<TileSizes>* sizes) {
@@ -50,7 +20,7 @@ std::vector<std::string> recode_progressive(const std::vector<CodedTile>& childr
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return parents[a].id < parents[b].id; });
   auto parent_of = [&](const TileId& child) -> const Tile* {
-    const TileId want{child.level - 1, child.x / 2, child.y / 2};
+    const TileId want = parent_id(child);
     const auto it = std::lower_bound(order.begin(), order.end(), want,
                                      [&](std::size_t a, const TileId& id) { return parents[a].id < id; });
     if (it == order.end() || !(parents[*it].id == want))

@@ -4,12 +4,12 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <set>
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/parallel_for.hpp"
 #include "terrainlod/rtin_start.hpp"
 #include "terrainlod/simplify.hpp"
 #include "terrainlod/tile_codec.hpp"
@@ -346,40 +346,25 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
       const std::size_t count = static_cast<std::size_t>(row1 - row0) * lv.tiles_x;
       std::vector<Tile> chunk(count);
       std::vector<std::string> bytes(count);
-      std::atomic<std::size_t> next{0};
-      std::exception_ptr failure;
-      std::mutex failure_mutex;
-      auto worker = [&] {
-        for (std::size_t j; (j = next.fetch_add(1)) < count;) {
-          try {
-            const int tx = static_cast<int>(j % static_cast<std::size_t>(lv.tiles_x));
-            const int ty = row0 + static_cast<int>(j / static_cast<std::size_t>(lv.tiles_x));
-            std::optional<TinReference> coarse;
-            if (r >= 0)
-              coarse = coarse_reference(base[static_cast<std::size_t>(r)], pyr.level[static_cast<std::size_t>(r)], lv, tx, ty);
-            Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance,
-                                params.start);
-            if (!base[static_cast<std::size_t>(l)].empty())
-              base[static_cast<std::size_t>(l)][static_cast<std::size_t>(ty) * lv.tiles_x + tx] = triangulate(t, 0, pyr.geometry(l));
-            // The tile's own figures: the largest error over its triangulations (with
-            // quantized heights) against the DEM, and its height range, for stats and culling.
-            const TileErrorRange e = tile_error(ref, t, pyr.geometry(l));
-            t.err = static_cast<float>(e.err);
-            t.z_min = static_cast<float>(e.z_min);
-            t.z_max = static_cast<float>(e.z_max);
-            bytes[j] = encode_tile(t);  // here, in parallel: coding costs about a tenth of building
-            chunk[j] = std::move(t);
-          } catch (...) {
-            std::lock_guard<std::mutex> lock(failure_mutex);
-            if (!failure) failure = std::current_exception();
-          }
-        }
-      };
-      std::vector<std::thread> pool;
-      for (int t = 1; t < std::min<int>(threads, static_cast<int>(count)); ++t) pool.emplace_back(worker);
-      worker();
-      for (auto& t : pool) t.join();
-      if (failure) std::rethrow_exception(failure);
+      parallel_for(count, threads, [&](std::size_t j) {
+        const int tx = static_cast<int>(j % static_cast<std::size_t>(lv.tiles_x));
+        const int ty = row0 + static_cast<int>(j / static_cast<std::size_t>(lv.tiles_x));
+        std::optional<TinReference> coarse;
+        if (r >= 0)
+          coarse = coarse_reference(base[static_cast<std::size_t>(r)], pyr.level[static_cast<std::size_t>(r)], lv, tx, ty);
+        Tile t = build_tile(ref, coarse ? &*coarse : nullptr, padded, lv, pyr.level, tx, ty, pyr.delta_min, tolerance,
+                            params.start);
+        if (!base[static_cast<std::size_t>(l)].empty())
+          base[static_cast<std::size_t>(l)][static_cast<std::size_t>(ty) * lv.tiles_x + tx] = triangulate(t, 0, pyr.geometry(l));
+        // The tile's own figures: the largest error over its triangulations (with
+        // quantized heights) against the DEM, and its height range, for stats and culling.
+        const TileErrorRange e = tile_error(ref, t, pyr.geometry(l));
+        t.err = static_cast<float>(e.err);
+        t.z_min = static_cast<float>(e.z_min);
+        t.z_max = static_cast<float>(e.z_max);
+        bytes[j] = encode_tile(t);  // here, in parallel: coding costs about a tenth of building
+        chunk[j] = std::move(t);
+      });
       for (std::size_t j = 0; j < count; ++j) sink(std::move(chunk[j]), std::move(bytes[j]));
       done += count;
       if (progress) progress(done, total);

@@ -26,6 +26,9 @@ struct TileId {
   }
 };
 
+// The tile one level up whose square contains t's (t.level > 0).
+inline TileId parent_id(const TileId& t) { return {t.level - 1, t.x / 2, t.y / 2}; }
+
 struct TileVertex {
   int X = 0, Y = 0;        // lattice coordinates, 0..n
   std::int64_t code = 0;   // G on the border, H = G >> k inside

@@ -564,9 +564,10 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
   std::optional<ParentView> pv;
   if (progressive) {
     if (tile.id.level == 0) throw bad_input("{}: the root cannot be coded relative to a parent", name);
-    if (!parent)
-      throw bad_input("{} is coded relative to its parent {}/{}/{}, which is not at hand", name, tile.id.level - 1, tile.id.x / 2,
-                      tile.id.y / 2);
+    if (!parent) {
+      const TileId up = parent_id(tile.id);
+      throw bad_input("{} is coded relative to its parent {}/{}/{}, which is not at hand", name, up.level, up.x, up.y);
+    }
     pv = parent_view(*parent, tile.id, tile.lattice_bits);
   }
   tile.vertices.resize(static_cast<std::size_t>(total));

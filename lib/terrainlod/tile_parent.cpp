@@ -46,7 +46,7 @@ std::pair<int, int> border_point(int index, int n) {
 
 ParentView parent_view(const Tile& parent, const TileId& child, int child_lattice_bits) {
   const std::string name = fmt::format("tile {}/{}/{}", child.level, child.x, child.y);
-  if (!(parent.id == TileId{child.level - 1, child.x / 2, child.y / 2}))
+  if (!(parent.id == parent_id(child)))
     throw bad_input("{}: tile {}/{}/{} is not its parent", name, parent.id.level, parent.id.x, parent.id.y);
   const int np = parent.n();
   if (child_lattice_bits > 16 || child_lattice_bits + 1 < parent.lattice_bits)

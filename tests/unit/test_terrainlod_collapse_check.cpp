@@ -10,35 +10,14 @@
 
 #include "core/mesh.hpp"
 #include "terrainlod/collapse_check.hpp"
+#include "terrainlod_test_meshes.hpp"
 
 namespace {
 
 using fest::TriMesh;
 using fest::terrainlod::CollapseCheck;
+using fest::test::grid_mesh;
 
-// n x n vertices, every cell split by a diagonal chosen at random (both directions occur
-// in the engine's start meshes).
-TriMesh grid_mesh(int n, std::mt19937& rng) {
-  TriMesh m;
-  m.request_vertex_status();
-  m.request_edge_status();
-  m.request_face_status();
-  std::vector<TriMesh::VertexHandle> v;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) v.push_back(m.add_vertex(TriMesh::Point(i, j, 0)));
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      const auto a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i], d = v[(j + 1) * n + i + 1];
-      if (rng() & 1) {
-        m.add_face(a, b, d);
-        m.add_face(a, d, c);
-      } else {
-        m.add_face(a, b, c);
-        m.add_face(b, d, c);
-      }
-    }
-  return m;
-}
 
 TEST(TerrainlodCollapseCheck, LoneTriangleKeepsItsEdges) {
   TriMesh m;
@@ -53,19 +32,8 @@ TEST(TerrainlodCollapseCheck, LoneTriangleKeepsItsEdges) {
 
 TEST(TerrainlodCollapseCheck, InnerVertexOfGridCollapsesLinkViolationRefused) {
   // 3 x 3 grid, all diagonals SW-NE: the centre 4 has neighbours 1, 3, 5, 7, 0, 8.
-  TriMesh m;
-  m.request_vertex_status();
-  m.request_edge_status();
-  m.request_face_status();
-  std::vector<TriMesh::VertexHandle> v;
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) v.push_back(m.add_vertex(TriMesh::Point(i, j, 0)));
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const int a = j * 3 + i;
-      m.add_face(v[a], v[a + 1], v[a + 4]);
-      m.add_face(v[a], v[a + 4], v[a + 3]);
-    }
+  TriMesh m = fest::test::ne_grid_mesh(3);
+  std::vector<TriMesh::VertexHandle> v(m.vertices().begin(), m.vertices().end());
   CollapseCheck check(m.n_vertices());
   // Centre onto its east neighbour: common neighbours of 4 and 5 are 2 and 8, exactly the
   // two triangles' far corners.

@@ -15,37 +15,15 @@
 #include "core/mesh.hpp"
 #include "terrainlod/collapse_check.hpp"
 #include "terrainlod/halfedge_collapse.hpp"
-#include "terrainlod_mesh_compare.hpp"
+#include "terrainlod_test_meshes.hpp"
 
 namespace {
 
 using fest::TriMesh;
 using fest::test::first_difference;
+using fest::test::grid_mesh;
 using fest::terrainlod::CollapseCheck;
 using fest::terrainlod::collapse_halfedge;
-
-// n x n vertices, every cell split by a diagonal chosen at random.
-TriMesh grid_mesh(int n, std::mt19937& rng) {
-  TriMesh m;
-  m.request_vertex_status();
-  m.request_edge_status();
-  m.request_face_status();
-  std::vector<TriMesh::VertexHandle> v;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) v.push_back(m.add_vertex(TriMesh::Point(i, j, 0)));
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      const auto a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i], d = v[(j + 1) * n + i + 1];
-      if (rng() & 1) {
-        m.add_face(a, b, d);
-        m.add_face(a, d, c);
-      } else {
-        m.add_face(a, b, c);
-        m.add_face(b, d, c);
-      }
-    }
-  return m;
-}
 
 
 TEST(TerrainlodHalfedgeCollapse, MatchesOpenMeshHandleForHandle) {
@@ -73,19 +51,8 @@ TEST(TerrainlodHalfedgeCollapse, MatchesOpenMeshHandleForHandle) {
 
 TEST(TerrainlodHalfedgeCollapse, InnerVertexCollapseRemovesTwoTrianglesAndOneVertex) {
   // 3 x 3 grid, SW-NE diagonals: the centre (valence 6) onto its east neighbour.
-  TriMesh m;
-  m.request_vertex_status();
-  m.request_edge_status();
-  m.request_face_status();
-  std::vector<TriMesh::VertexHandle> v;
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) v.push_back(m.add_vertex(TriMesh::Point(i, j, 0)));
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const int a = j * 3 + i;
-      m.add_face(v[a], v[a + 1], v[a + 4]);
-      m.add_face(v[a], v[a + 4], v[a + 3]);
-    }
+  TriMesh m = fest::test::ne_grid_mesh(3);
+  std::vector<TriMesh::VertexHandle> v(m.vertices().begin(), m.vertices().end());
   collapse_halfedge(m, m.find_halfedge(v[4], v[5]));
   int live_faces = 0, live_vertices = 0;
   for (auto f : m.all_faces()) live_faces += !m.status(f).deleted();

@@ -14,7 +14,7 @@
 
 #include "core/mesh.hpp"
 #include "terrainlod/mesh_add_face.hpp"
-#include "terrainlod_mesh_compare.hpp"
+#include "terrainlod_test_meshes.hpp"
 
 namespace {
 

@@ -721,6 +721,20 @@ int run_build(const BuildArgs& args) {
   return 0;
 }
 
+namespace {
+
+// Walking a pyramid root first (transmission order), once level l starts the tiles above
+// it are needed only as parents of progressive tiles: drop every decoded tile but level
+// l - 1's (keep_only keeps their ancestors), so memory holds about one level of tiles.
+void keep_parents_only(PyramidFile& pyr, int level) {
+  std::set<terrainlod::TileId> keep;
+  for (const auto& f : pyr.index())
+    if (f.id.level == level - 1) keep.insert(f.id);
+  pyr.keep_only(keep);
+}
+
+}  // namespace
+
 int run_pyramid_stats(const std::string& path) {
   PyramidFile pyr = open_pyramid(path);
   const int L = pyr.layout().levels;
@@ -732,15 +746,7 @@ int run_pyramid_stats(const std::string& path) {
   std::vector<Acc> acc(static_cast<std::size_t>(L) + 1);
   int level_at = -1;
   for (const auto& e : pyr.index()) {
-    // Levels come root first: once a level starts, the one before it is needed only as
-    // parents (keep_only keeps ancestors), so memory holds about one level of tiles.
-    if (e.id.level != level_at) {
-      std::set<terrainlod::TileId> keep;
-      for (const auto& f : pyr.index())
-        if (f.id.level == e.id.level - 1) keep.insert(f.id);
-      pyr.keep_only(keep);
-      level_at = e.id.level;
-    }
+    if (e.id.level != level_at) keep_parents_only(pyr, level_at = e.id.level);
     const auto& t = pyr.tile(e.id);
     auto& a = acc[static_cast<std::size_t>(e.id.level)];
     ++a.tiles;
@@ -751,7 +757,7 @@ int run_pyramid_stats(const std::string& path) {
     // sizes"): the stored one is one of them, byte for byte (verify checks that).
     const std::string_view bytes = pyr.tile_bytes(e.id);
     const terrainlod::Tile* parent =
-        e.id.level > 0 && pyr.has({e.id.level - 1, e.id.x / 2, e.id.y / 2}) ? &pyr.tile({e.id.level - 1, e.id.x / 2, e.id.y / 2}) : nullptr;
+        e.id.level > 0 && pyr.has(terrainlod::parent_id(e.id)) ? &pyr.tile(terrainlod::parent_id(e.id)) : nullptr;
     terrainlod::TileSizes alone, prog;
     terrainlod::recode_tile(bytes, terrainlod::TileCoding::standalone, parent, &alone);
     terrainlod::recode_tile(bytes, terrainlod::TileCoding::progressive, parent, &prog);
@@ -1047,13 +1053,7 @@ int run_verify(const VerifyArgs& args) {
   double worst_ratio = 0;
   int level_at = -1;
   for (const auto& e : pyr.index()) {
-    if (e.id.level != level_at) {  // root first: keep the level before as parents only
-      std::set<terrainlod::TileId> keep;
-      for (const auto& f : pyr.index())
-        if (f.id.level == e.id.level - 1) keep.insert(f.id);
-      pyr.keep_only(keep);
-      level_at = e.id.level;
-    }
+    if (e.id.level != level_at) keep_parents_only(pyr, level_at = e.id.level);
     const auto& t = pyr.tile(e.id);
     // Coding again in the stored coding (same strip order) gives the same bytes.
     const std::string_view stored = pyr.tile_bytes(e.id);

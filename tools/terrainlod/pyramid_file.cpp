@@ -235,7 +235,7 @@ std::size_t PyramidFile::keep_only(const std::set<terrainlod::TileId>& keep) {
   std::set<terrainlod::TileId> keep_all = keep;
   for (const auto& id : keep)
     for (terrainlod::TileId a = id; a.level > 0;) {
-      a = {a.level - 1, a.x / 2, a.y / 2};
+      a = terrainlod::parent_id(a);
       if (!keep_all.insert(a).second) break;  // its ancestors are in already
     }
   std::size_t evicted = 0;
@@ -288,15 +288,9 @@ const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {
   if (it != cache_.end()) return it->second;
   const std::string_view b = tile_bytes(id);
   // A progressive tile is coded against its decoded parent (spec 2.8): decode the chain
-  // up to the nearest cached or standalone ancestor first (each one cached).
-  const terrainlod::Tile* parent = nullptr;
-  if (terrainlod::tile_coding(b) == terrainlod::TileCoding::progressive && id.level > 0) {
-    const terrainlod::TileId up{id.level - 1, id.x / 2, id.y / 2};
-    if (!has(up))
-      throw bad_input("tile {}/{}/{} is coded relative to its parent {}/{}/{}, which the pyramid lacks ({})", id.level, id.x, id.y,
-                      up.level, up.x, up.y, name_);
-    parent = &tile(up);  // std::map nodes stay put while others are inserted
-  }
+  // up to the nearest cached or standalone ancestor first (each one cached; std::map
+  // nodes stay put while others are inserted).
+  const terrainlod::Tile* parent = parent_of(id);
   touched_ += z_ranges_.count(id) ? b.size() - terrainlod::kTileHeaderBytes : b.size();  // the header was counted
   ++decoded_;
   terrainlod::Tile t;
@@ -326,7 +320,11 @@ std::array<float, 2> PyramidFile::z_range(const terrainlod::TileId& id) {
 
 const terrainlod::Tile* PyramidFile::parent_of(const terrainlod::TileId& id) {
   if (id.level == 0 || terrainlod::tile_coding(tile_bytes(id)) != terrainlod::TileCoding::progressive) return nullptr;
-  return &tile({id.level - 1, id.x / 2, id.y / 2});
+  const terrainlod::TileId up = terrainlod::parent_id(id);
+  if (!has(up))
+    throw bad_input("tile {}/{}/{} is coded relative to its parent {}/{}/{}, which the pyramid lacks ({})", id.level, id.x, id.y,
+                    up.level, up.x, up.y, name_);
+  return &tile(up);
 }
 
 }  // namespace fest::terrainlod_tool
