@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include <cpl_conv.h>
@@ -54,6 +55,52 @@ struct QuietGdal {
     return (m && *m) ? std::string(m) : std::string(fallback);
   }
 };
+
+// GDAL's ESRI ASCII grid driver reads a non-numeric or missing value of an integer grid
+// as 0, and "nan" as 0 too, without a word: check the samples' text ourselves. A "nan"
+// token becomes a NaN sample (an error later unless NaN is the nodata value); anything
+// that is not a number, an infinity, or too few values are bad input.
+void check_ascii_grid_samples(std::string_view text, DemRaster& r) {
+  std::size_t at = 0;
+  auto next_token = [&](std::string_view& token) {
+    while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+    const std::size_t begin = at;
+    while (at < text.size() && !std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+    token = text.substr(begin, at - begin);
+    return !token.empty();
+  };
+  auto is_header_key = [](std::string_view t) {
+    std::string k(t);
+    for (char& c : k) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return k == "ncols" || k == "nrows" || k == "xllcorner" || k == "yllcorner" || k == "xllcenter" || k == "yllcenter" ||
+           k == "cellsize" || k == "dx" || k == "dy" || k == "nodata_value";
+  };
+  std::string_view token;
+  std::size_t before = 0;
+  for (;;) {  // header: key value pairs
+    before = at;
+    if (!next_token(token)) break;
+    if (!is_header_key(token)) {
+      at = before;
+      break;
+    }
+    next_token(token);
+  }
+  const std::size_t count = r.values.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    const int row = static_cast<int>(k / static_cast<std::size_t>(r.width)) + 1, column = static_cast<int>(k % static_cast<std::size_t>(r.width)) + 1;
+    if (!next_token(token))
+      throw bad_input("ESRI ASCII grid has {} of its {} x {} values (the first missing is row {}, column {})", k, r.width,
+                      r.height, row, column);
+    const std::string value(token);
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (end != value.c_str() + value.size())
+      throw bad_input("ESRI ASCII grid has a non-numeric value '{}' at row {}, column {}", value, row, column);
+    if (std::isinf(v)) throw bad_input("ESRI ASCII grid has an infinite value at row {}, column {}", row, column);
+    if (std::isnan(v)) r.values[k] = v;
+  }
+}
 
 DemRaster read_gdal(const std::string& path, const std::string& bytes) {
   QuietGdal quiet;
@@ -118,6 +165,7 @@ DemRaster read_gdal(const std::string& path, const std::string& bytes) {
   if (GDALRasterIO(band, GF_Read, 0, 0, r.width, r.height, r.values.data(), r.width, r.height, GDT_Float64, 0, 0) !=
       CE_None)
     throw bad_input("cannot read the DEM's samples: {}", QuietGdal::last("read error"));
+  if (r.format == "AAIGrid") check_ascii_grid_samples(bytes, r);
   return r;
 }
 

@@ -202,6 +202,13 @@ printf 'ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\nNODATA_value -1\
 bad 3 'all samples are nodata' build "$WORK/none.asc" -o "$WORK/out.tlp"
 printf 'Pf\n2 2\n-1.0\n\x00\x00\x80\x3f\x00\x00\xc0\x7f\x00\x00\x40\x40\x00\x00\x80\x40' >"$WORK/nan.pfm"
 bad 3 'NaN height' build "$WORK/nan.pfm" -o "$WORK/out.tlp"
+printf 'ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n4 nan 6\n7 8 9\n' >"$WORK/nan.asc"
+bad 3 'NaN height' build "$WORK/nan.asc" -o "$WORK/out.tlp"
+printf 'ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n4 abc 6\n7 8 9\n' >"$WORK/word.asc"
+bad 3 "non-numeric value 'abc' at row 2, column 2" build "$WORK/word.asc" -o "$WORK/out.tlp"
+printf 'ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n4 5 6\n7 8\n' >"$WORK/short.asc"
+bad 3 'has 8 of its 3 x 3 values' build "$WORK/short.asc" -o "$WORK/out.tlp"
+check "no pyramid written" test ! -e "$WORK/out.tlp"
 
 case_ "build: tile size not a power of two, a directory pyramid over a file"
 bad 2 '--tile must be a power of two between 4 and 4096 \(got 48\)' build "$WORK/plane.asc" --tile 48 -o "$WORK/out.tlp"

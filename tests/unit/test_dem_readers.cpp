@@ -64,6 +64,23 @@ TEST(DemGdal, AsciiGridGeoreferenceAndNodata) {
   std::remove(path.c_str());
 }
 
+// GDAL alone reads these as 0 in an integer grid.
+TEST(DemGdal, AsciiGridNonNumericMissingAndNanValues) {
+  const std::string header = "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n";
+  const std::string word = temp_file("dem_word.asc", header + "1 2 3\n4 abc 6\n");
+  fest::test::expect_bad_input([&] { fest::formats::read_dem(word); }, "non-numeric value 'abc' at row 2, column 2");
+  const std::string short_ = temp_file("dem_short.asc", header + "1 2 3\n4 5\n");
+  fest::test::expect_bad_input([&] { fest::formats::read_dem(short_); }, "has 5 of its 3 x 2 values");
+  const std::string inf = temp_file("dem_inf.asc", header + "1 2 3\n4 inf 6\n");
+  fest::test::expect_bad_input([&] { fest::formats::read_dem(inf); }, "infinite value at row 2, column 2");
+  const std::string nan = temp_file("dem_nan.asc", header + "1 2 3\n4 nan 6\n");
+  const auto r = fest::formats::read_dem(nan);
+  EXPECT_EQ(r.nan_count, 1u);
+  EXPECT_TRUE(std::isnan(r.values[4]));
+  EXPECT_EQ(r.values[5], 6);
+  for (const auto& p : {word, short_, inf, nan}) std::remove(p.c_str());
+}
+
 TEST(DemGdal, GarbageAndEmptyAreBadInput) {
   const std::string junk = temp_file("dem_junk.bin", "this is no raster at all\n");
   fest::test::expect_bad_input([&] { fest::formats::read_dem(junk); }, "dem_junk.bin");
