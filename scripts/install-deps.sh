@@ -43,6 +43,12 @@ TEST_TOOL_PKGS=(
   unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
+  # tests/interop: independent readers of every format fest writes
+  assimp-utils               # `assimp info`: meshes (PLY OBJ OFF STL)
+  python3-vtk9               # VTK's own readers (PLY STL OBJ, VTK XML and legacy, MetaImage), from /usr/bin/python3
+  teem-apps                  # teem-unu: NRRD's reference implementation
+  openexr                    # exrheader
+  gdal-bin                   # gdalinfo: TIFF
 )
 
 # --- arguments ----------------------------------------------------------------

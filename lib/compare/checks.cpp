@@ -63,15 +63,27 @@ void Metrics::set(const std::string& name, double value) {
   values_.emplace_back(name, value);
 }
 
+void Metrics::family(const std::vector<std::string>& metrics) { families_.push_back(metrics); }
+
+bool Metrics::same_family(const std::string& a, const std::string& b) const {
+  if (a == b) return true;
+  for (const auto& f : families_)
+    if (std::find(f.begin(), f.end(), a) != f.end() && std::find(f.begin(), f.end(), b) != f.end()) return true;
+  return false;
+}
+
 void Metrics::require(const std::string& metric, const std::string& op, double limit) {
-  checks_.push_back({metric, op == "<=", limit});
+  checks_.push_back({{metric, op == "<=", limit}, false});
 }
 
 void Metrics::require(const Check& check) {
   checks_.erase(std::remove_if(checks_.begin(), checks_.end(),
-                               [&](const Check& c) { return c.metric == check.metric; }),
+                               [&](const Entry& e) {
+                                 return e.check.metric == check.metric ||
+                                        (!e.asked && same_family(e.check.metric, check.metric));
+                               }),
                 checks_.end());
-  checks_.push_back(check);
+  checks_.push_back({check, true});
 }
 
 const double* Metrics::find(const std::string& name) const {
@@ -82,7 +94,8 @@ const double* Metrics::find(const std::string& name) const {
 
 std::vector<std::string> Metrics::evaluate() const {
   std::vector<std::string> failures;
-  for (const Check& c : checks_) {
+  for (const Entry& e : checks_) {
+    const Check& c = e.check;
     const double* v = find(c.metric);
     if (v == nullptr) {
       std::string known;
@@ -109,7 +122,8 @@ nlohmann::json Metrics::to_json() const {
   for (const auto& [n, v] : values_) metrics[n] = json_number(v);
   nlohmann::json checks = nlohmann::json::array();
   bool pass = true;
-  for (const Check& c : checks_) {
+  for (const Entry& e : checks_) {
+    const Check& c = e.check;
     const double* v = find(c.metric);
     const bool ok = v && (c.at_most ? (*v <= c.limit) : (*v >= c.limit));
     pass = pass && ok;
@@ -117,7 +131,8 @@ nlohmann::json Metrics::to_json() const {
                       {"op", c.at_most ? "<=" : ">="},
                       {"limit", json_number(c.limit)},
                       {"value", v ? json_number(*v) : nlohmann::json(nullptr)},
-                      {"pass", ok}});
+                      {"pass", ok},
+                      {"default", !e.asked}});
   }
   return {{"metrics", metrics}, {"checks", checks}, {"details", details}, {"pass", pass}};
 }

@@ -111,6 +111,40 @@ run fcompare "$WORK/a.json" "$WORK/c.json" --tol 1 --report "$WORK/j.json"
 expect_status 1
 check "first structural difference" test "$(jq -r .details.first_structural_diff "$WORK/j.json")" = "/s"
 
+# README's golden-file example: 2x2 grey images differing by 1 in one pixel:
+# RMSE = sqrt(1/4) = 0.5, PSNR = 20 log10(255/0.5) = 54.15 dB, max abs 1.
+printf 'P2\n2 2\n255\n10 20\n30 40\n' | "$FEST_BIN/fconv" --to png -o "$WORK/render.png"
+printf 'P2\n2 2\n255\n10 20\n30 41\n' | "$FEST_BIN/fconv" --to png -o "$WORK/golden.png"
+case_ "an explicit criterion replaces the defaults of its family (README example)"
+run fcompare "$WORK/render.png" "$WORK/golden.png" -t 'psnr>=40' --report "$WORK/readme.json"
+expect_status 0
+check "psnr 54.15" test "$(jq '.metrics.psnr * 100 | floor' "$WORK/readme.json")" = "5415"
+check "only the asked check" test "$(jq -c '[.checks[].metric]' "$WORK/readme.json")" = '["psnr"]'
+run fcompare "$WORK/render.png" "$WORK/golden.png" -t 'psnr>=60'
+expect_status 1
+expect_stderr_has "psnr = 54.1"
+case_ "an explicit --tol stays beside a criterion of its family"
+run fcompare "$WORK/render.png" "$WORK/golden.png" --tol 0 -t 'psnr>=40'
+expect_status 1
+expect_stderr_has "max_abs = 1 exceeds 0"
+
+# RGB against RGBA: the same colours, the alpha of the second compared with opaque.
+printf 'P3\n2 1\n255\n10 20 30 40 50 60\n' >"$WORK/rgb.ppm"
+printf 'P7\nWIDTH 2\nHEIGHT 1\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n' >"$WORK/rgba.pam"
+printf '\012\024\036\377\050\062\074\377' >>"$WORK/rgba.pam"
+cp "$WORK/rgba.pam" "$WORK/rgba_half.pam"
+printf '\200' | dd of="$WORK/rgba_half.pam" bs=1 seek=$(( $(stat -c %s "$WORK/rgba.pam") - 1 )) conv=notrunc status=none
+case_ "RGB against opaque RGBA: equal colours, alpha reported apart"
+run fcompare "$WORK/rgb.ppm" "$WORK/rgba.pam" --report "$WORK/alpha.json"
+expect_status 0
+check "alpha measured in b" test "$(jq -r .details.alpha.in "$WORK/alpha.json")" = "b"
+check "colour max abs 0" test "$(jq .metrics.max_abs "$WORK/alpha.json")" = "0"
+case_ "RGB against RGBA with a half-transparent pixel: alpha differs by 255-128"
+run fcompare "$WORK/rgb.ppm" "$WORK/rgba_half.pam" --report "$WORK/alpha2.json"
+expect_status 1
+expect_stderr_has "alpha_max_abs = 127 exceeds 0"
+check "colour still equal" test "$(jq .metrics.max_abs "$WORK/alpha2.json")" = "0"
+
 case_ "bad usage and bad input"
 run fcompare "$WORK/a.off" "$WORK/a.pgm"
 expect_clean_failure 3 fcompare

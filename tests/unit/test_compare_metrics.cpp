@@ -107,6 +107,55 @@ TEST(Checks, ParseAndEvaluate) {
   EXPECT_THROW(m.evaluate(), fest::Error);  // not measured: a usage error
 }
 
+TEST(Checks, AskedCriterionReplacesTheDefaultsOfItsFamily) {
+  // The README's CI example: an image at PSNR 51 must pass 'psnr>=40' although its
+  // max_abs is not 0, because psnr and max_abs measure the same error.
+  Metrics m;
+  m.set("max_abs", 2);
+  m.set("rmse", 0.72);
+  m.set("psnr", 51);
+  m.set("alpha_max_abs", 0);
+  m.family({"max_abs", "rmse", "psnr"});
+  m.require("alpha_max_abs", "<=", 0);
+  m.require("max_abs", "<=", 0);
+  EXPECT_EQ(m.evaluate().size(), 1u);
+  m.require(parse_threshold("psnr>=40"));
+  EXPECT_TRUE(m.evaluate().empty());
+  // A criterion the user asked for is not replaced by another one of its family ...
+  m.require(parse_threshold("max_abs<=1"));
+  m.require(parse_threshold("rmse<=1"));
+  ASSERT_EQ(m.evaluate().size(), 1u);
+  EXPECT_EQ(m.evaluate()[0], "max_abs = 2 exceeds 1");
+  // ... and defaults outside the family stay.
+  m.set("alpha_max_abs", 255);
+  EXPECT_EQ(m.evaluate().size(), 2u);
+  const auto checks = m.to_json()["checks"];
+  ASSERT_EQ(checks.size(), 4u);
+  EXPECT_TRUE(checks[0]["default"].get<bool>());   // alpha_max_abs
+  EXPECT_FALSE(checks[1]["default"].get<bool>());  // psnr
+}
+
+TEST(ImageError, RgbAgainstRgbaComparesColourAndMeasuresAlphaApart) {
+  cv::Mat rgb(2, 2, CV_8UC3, cv::Scalar(10, 20, 30));
+  cv::Mat rgba(2, 2, CV_8UC4, cv::Scalar(10, 20, 30, 255));
+  auto e = image_error(rgb, rgba);
+  EXPECT_EQ(e.channels.size(), 3u);
+  EXPECT_EQ(e.all.max_abs, 0);
+  EXPECT_TRUE(e.alpha.measured);
+  EXPECT_EQ(e.alpha.image, 2);
+  EXPECT_EQ(e.alpha.max_abs, 0);
+  rgba.at<cv::Vec4b>(1, 1) = cv::Vec4b(13, 20, 30, 55);  // one colour off by 3, alpha 55
+  e = image_error(rgba, rgb);
+  EXPECT_EQ(e.alpha.image, 1);
+  EXPECT_EQ(e.all.max_abs, 3);
+  EXPECT_EQ(e.alpha.max_abs, 200);
+  EXPECT_EQ(e.alpha.min_alpha, 55);
+  // Grey against grey + alpha, too; but two colour channels against four is a difference.
+  EXPECT_TRUE(image_error(cv::Mat(2, 2, CV_8UC1, cv::Scalar(7)), cv::Mat(2, 2, CV_8UC2, cv::Scalar(7, 255))).alpha.measured);
+  EXPECT_THROW(image_error(cv::Mat(2, 2, CV_8UC2), rgba), fest::Error);
+  EXPECT_THROW(image_error(cv::Mat(2, 2, CV_8UC1), rgb), fest::Error);
+}
+
 TEST(Checks, NanFailsAndJsonHasNoInfinity) {
   Metrics m;
   m.set("rmse", std::nan(""));

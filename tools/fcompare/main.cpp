@@ -45,7 +45,18 @@ struct Options {
   bool ignore_topology = false;
   std::string report;
   bool quiet = false;
+  bool tol_given = false;  // --tol on the command line: a criterion the user asked for
 };
+
+// The check of a kind's main metric: --tol given is the user's own criterion (a -t on
+// another metric of the family leaves it in place); otherwise it is a default that any
+// -t on the family replaces (see compare::Metrics).
+void require_main(Metrics& m, const std::string& metric, const Options& opt) {
+  if (opt.tol_given)
+    m.require(compare::Check{metric, true, opt.tol});
+  else
+    m.require(metric, "<=", opt.tol);
+}
 
 nlohmann::json topology_json(const compare::MeshTopology& t) {
   return {{"vertices", t.vertices},       {"faces", t.faces},
@@ -86,7 +97,8 @@ void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metric
   m.set("max_b_to_a", d.max_b_to_a);
   m.details["samples"] = {d.samples_a, d.samples_b};
 
-  m.require("hausdorff", "<=", opt.tol);
+  m.family({"hausdorff", "rms", "mean", "max_a_to_b", "max_b_to_a", "vertex_max_abs"});
+  require_main(m, "hausdorff", opt);
   if (!opt.ignore_counts) {
     m.require("vertex_count_diff", "<=", 0);
     m.require("face_count_diff", "<=", 0);
@@ -109,7 +121,15 @@ void compare_images(const Input& ia, const Input& ib, const Options& opt, Metric
     channels.push_back({{"rmse", c.rmse}, {"psnr", compare::json_number(c.psnr)}, {"max_abs", c.max_abs}});
   m.details["channels"] = channels;
   m.details["peak"] = e.peak;
-  m.require("max_abs", "<=", opt.tol);
+  if (e.alpha.measured) {
+    // Only one image has alpha: the other is opaque, so its distance from opaque is
+    // the alpha difference, reported and checked on its own.
+    m.set("alpha_max_abs", e.alpha.max_abs);
+    m.details["alpha"] = {{"in", e.alpha.image == 1 ? "a" : "b"}, {"min", e.alpha.min_alpha}};
+    require_main(m, "alpha_max_abs", opt);
+  }
+  m.family({"max_abs", "rmse", "psnr"});
+  require_main(m, "max_abs", opt);
 }
 
 void compare_volumes(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
@@ -126,7 +146,8 @@ void compare_volumes(const Input& ia, const Input& ib, const Options& opt, Metri
     for (const auto& [label, dice] : e.dice) per[std::to_string(label)] = dice;
     m.details["dice_per_label"] = per;
   }
-  m.require("max_abs", "<=", opt.tol);
+  m.family({"max_abs", "rmse", "dice"});
+  require_main(m, "max_abs", opt);
   // Geometry to a micrometre: files that place the same voxels differently differ.
   m.require("spacing_diff", "<=", 1e-6);
   m.require("origin_diff", "<=", 1e-6);
@@ -141,7 +162,8 @@ void compare_tables(const Input& ia, const Input& ib, const Options& opt, Metric
   nlohmann::json cols = nlohmann::json::object();
   for (const auto& c : e.columns) cols[c.name] = {{"max_abs", c.max_abs}, {"max_rel", c.max_rel}};
   m.details["columns"] = cols;
-  m.require("max_abs", "<=", opt.tol);
+  m.family({"max_abs", "max_rel"});
+  require_main(m, "max_abs", opt);
 }
 
 void compare_datasets(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
@@ -159,8 +181,8 @@ void compare_datasets(const Input& ia, const Input& ib, const Options& opt, Metr
   m.details["arrays"] = arrays;
   m.details["dataset_type"] = {a->GetClassName(), b->GetClassName()};
   for (const char* k : {"point_count_diff", "cell_count_diff", "cell_diffs", "missing_arrays"}) m.require(k, "<=", 0);
-  m.require("point_max_abs", "<=", opt.tol);
-  m.require("max_abs", "<=", opt.tol);
+  require_main(m, "point_max_abs", opt);
+  require_main(m, "max_abs", opt);
 }
 
 void compare_json(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
@@ -169,7 +191,7 @@ void compare_json(const Input& ia, const Input& ib, const Options& opt, Metrics&
   m.set("structural_diffs", static_cast<double>(d.structural));
   m.details["numbers"] = d.numbers;
   if (d.structural > 0) m.details["first_structural_diff"] = d.first_structural_path;
-  m.require("max_abs", "<=", opt.tol);
+  require_main(m, "max_abs", opt);
   m.require("structural_diffs", "<=", 0);
 }
 
@@ -219,13 +241,14 @@ int main(int argc, char** argv) {
   Options opt;
   app.add_option("a", opt.a, "First file (- for standard input)")->required();
   app.add_option("b", opt.b, "Second file")->required();
-  app.add_option("--tol", opt.tol,
+  CLI::Option* tol = app.add_option("--tol", opt.tol,
                  "Tolerance of the main metric: mesh Hausdorff distance, else max absolute difference")
       ->default_val(0.0)
       ->check(CLI::NonNegativeNumber);
   app.add_option("-t,--threshold", opt.thresholds,
                  "Extra check METRIC<=VALUE or METRIC>=VALUE, e.g. 'psnr>=40', 'rms<=1e-4', 'dice>=0.9'; "
-                 "replaces the default check of the same metric")
+                 "replaces the default check of that metric and of the metrics that measure the same error "
+                 "(image max_abs/rmse/psnr; mesh hausdorff/rms/mean; volume max_abs/rmse/dice; table max_abs/max_rel)")
       ->allow_extra_args(false);
   app.add_option("--samples", opt.samples, "Meshes: random surface samples per mesh besides the vertices")
       ->default_val(100000);
@@ -237,6 +260,7 @@ int main(int argc, char** argv) {
              "3 bad input, 4 I/O error. See fcompare(1).");
   return fest::cli::run(app, argc, argv, [&] {
     opt.quiet = common.quiet;
+    opt.tol_given = tol->count() > 0;
     return run(opt);
   });
 }
