@@ -75,6 +75,19 @@ data_manifest() {  # "<package> <candidate version>" per line, sorted
   apt-cache policy $DATA_PKGS 2>/dev/null |
     awk '/^[^ ].*:$/{sub(":$","");p=$0} /Candidate:/{print p, $2}' | sort
 }
+# The Khronos glTF validator (npm registry), for tests/interop/gltf.sh: pinned, best
+# effort (the test skips with a message without it), kept under DIR/npm.
+GLTF_VALIDATOR=gltf-validator@2.0.0-dev.3.10
+if command -v npm >/dev/null 2>&1; then
+  if ! grep -qs '"version": "2.0.0-dev.3.10"' "$test_data_dir/npm/node_modules/gltf-validator/package.json"; then
+    mkdir -p "$test_data_dir/npm"
+    npm install --prefix "$test_data_dir/npm" --no-audit --no-fund --silent "$GLTF_VALIDATOR" >/dev/null 2>&1 ||
+      echo "fetch-test-data.sh: warning: npm could not install $GLTF_VALIDATOR; tests/interop/gltf.sh will skip" >&2
+  fi
+else
+  echo "fetch-test-data.sh: note: npm not installed; tests/interop/gltf.sh will skip"
+fi
+
 manifest_new="$(data_manifest)"
 if [ -f "$test_data_dir/MANIFEST" ] && [ "$(cat "$test_data_dir/MANIFEST")" = "$manifest_new" ]; then
   echo "fetch-test-data.sh: test data in $test_data_dir is up to date"
