@@ -35,6 +35,7 @@ BUILD_PKGS=(
   make                  # examples/Makefile and Makefile.inc
   libode-dev            # ODE 0.16.2  pkg-config ode (lmfsim benchmark anchor only)
   libssl-dev            # OpenSSL 3.0 find_package(OpenSSL) -> OpenSSL::Crypto (SHA-256 of capture files)
+  libnifti2-dev         # nifti_clib 3.0.1  find_package(NIFTI) -> NIFTI::niftiio (NIfTI-1/-2, Analyze headers)
 )
 TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware
@@ -43,6 +44,7 @@ TEST_TOOL_PKGS=(
   unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
+  python3-nibabel            # the independent volume reader of tests/cli/fconv_nibabel.sh; its test files are fetched as real data
 )
 
 # --- arguments ----------------------------------------------------------------
