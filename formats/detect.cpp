@@ -156,8 +156,9 @@ std::optional<Format> nifti_family(std::string_view b) {
     return std::nullopt;
   }
   if (b.size() >= 540 && (le32(b, 0) == 540 || be32(b, 0) == 540)) {
-    if (std::memcmp(b.data() + 4, "n+2\0\r\n\032\n", 8) == 0) return Format::nifti2;
-    if (std::memcmp(b.data() + 4, "ni2\0\r\n\032\n", 8) == 0) return Format::nifti_pair;
+    // "n+2\0" then \r\n\032\n (or zeros, as nifti_clib 3.0 writes): the reader checks the rest.
+    if (std::memcmp(b.data() + 4, "n+2\0", 4) == 0) return Format::nifti2;
+    if (std::memcmp(b.data() + 4, "ni2\0", 4) == 0) return Format::nifti_pair;
   }
   return std::nullopt;
 }

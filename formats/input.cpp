@@ -68,6 +68,18 @@ Input load_input(const std::string& path) {
     if (const std::string found = existing_variant(hdr); !found.empty()) header_path = found;
   Input in = recognise(read_input(header_path), header_path);
   if (in.format != Format::nifti_pair && in.format != Format::analyze) return in;
+  // SPM keeps the orientation of an Analyze image in x.mat beside it (a MATLAB file
+  // fest does not read); reading without it would place the voxels wrongly.
+  if (in.format == Format::analyze) {
+    std::string mat = sibling(header_path, ".hdr", ".mat", ".HDR", ".MAT");
+    if (!mat.empty() && (ends_with(mat, ".gz") || ends_with(mat, ".GZ"))) mat.resize(mat.size() - 3);
+    if (!mat.empty() && exists(mat))
+      throw bad_input("{}", with_location(fmt::format("an SPM orientation file {} lies beside this Analyze 7.5 image, "
+                                                      "and fest does not read it; convert the image to NIfTI with SPM "
+                                                      "or nibabel first",
+                                                      mat),
+                                          header_path));
+  }
   // The image file: x.img beside x.hdr (also compressed, or in the other case).
   std::string image = sibling(header_path, ".hdr", ".img", ".HDR", ".IMG");
   if (image.empty())

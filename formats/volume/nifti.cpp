@@ -191,13 +191,19 @@ NiftiHeaderFacts facts_or_throw(std::string_view bytes) {
       throw bad_input("NIfTI-2 header: the file has {} bytes, a NIfTI-2 header needs {}", bytes.size(), kHeader2Size);
     f.big_endian = le.u32(0) != kHeader2Size;
     f.kind = NiftiKind::nifti2;
-    const std::string_view magic = bytes.substr(k2Magic, 8);
-    if (magic == std::string_view("n+2\0\r\n\032\n", 8))
+    // The magic is "n+2\0" or "ni2\0" and then \r\n\032\n, which detects transfers that
+    // mangle line ends; nibabel and nifti_clib accept files whose last four bytes are
+    // zero (nifti_clib 3.0 writes them so), and so does fest.
+    const std::string_view magic = bytes.substr(k2Magic, 4);
+    if (magic == std::string_view("n+2\0", 4))
       f.pair = false;
-    else if (magic == std::string_view("ni2\0\r\n\032\n", 8))
+    else if (magic == std::string_view("ni2\0", 4))
       f.pair = true;
     else
-      throw bad_input("NIfTI-2 header: magic at byte 4 is not \"n+2\" or \"ni2\" followed by \\0\\r\\n\\032\\n");
+      throw bad_input("NIfTI-2 header: magic at byte 4 is not \"n+2\" or \"ni2\"");
+    const std::string_view eol = bytes.substr(k2Magic + 4, 4);
+    if (eol != std::string_view("\r\n\032\n", 4) && eol != std::string_view("\0\0\0\0", 4))
+      throw bad_input("NIfTI-2 header: bytes 8-11 are not \\r\\n\\032\\n: the file was damaged by a text-mode transfer");
     return f;
   }
   throw bad_input("NIfTI header: sizeof_hdr is {}, expected 348 (NIfTI-1, Analyze 7.5) or 540 (NIfTI-2)", le.i32(0));
@@ -253,9 +259,8 @@ std::optional<NiftiHeaderFacts> sniff_nifti(std::string_view bytes) noexcept {
       if (ndim < 1 || ndim > 7 || !known) return std::nullopt;
     }
   } else {
-    const std::string_view magic = bytes.substr(k2Magic, 8);
-    if (magic != std::string_view("n+2\0\r\n\032\n", 8) && magic != std::string_view("ni2\0\r\n\032\n", 8))
-      return std::nullopt;
+    const std::string_view magic = bytes.substr(k2Magic, 4);
+    if (magic != std::string_view("n+2\0", 4) && magic != std::string_view("ni2\0", 4)) return std::nullopt;
   }
   try {
     return facts_or_throw(bytes);
@@ -538,6 +543,7 @@ std::string write_nifti2(const Volume& volume, ScalarType type) {
   if (nifti_convert_nim2n2hdr(nim.get(), &hdr) != 0) throw runtime_failure("nifti_clib could not write a NIfTI-2 header");
   std::string out(kData2Offset, '\0');
   std::memcpy(out.data(), &hdr, sizeof hdr);
+  std::memcpy(&out[k2Magic], "n+2\0\r\n\032\n", 8);  // the full magic of the standard
   out += encode_voxels(volume.voxels, type, false);
   return out;
 }
