@@ -306,11 +306,12 @@ Volume read_nifti(std::string_view bytes, const std::string_view* image) {
 
   std::uint64_t n[4] = {1, 1, 1, 1};
   for (int i = 0; i < 4 && i < ndim; ++i) n[i] = static_cast<std::uint64_t>(dim[i + 1]);
-  for (int i = 0; i < 4; ++i)
-    if (n[i] > kMaxVoxels) throw bad_input("{}: dim[{}] = {} exceeds the limit of {} voxels", what, i + 1, n[i], kMaxVoxels);
-  const std::uint64_t count = n[0] * n[1] * n[2] * n[3];  // each factor <= 2^31: checked below
-  if (n[0] * n[1] > kMaxVoxels || n[0] * n[1] * n[2] > kMaxVoxels || count > kMaxVoxels)
-    throw bad_input("{}: {}x{}x{}x{} voxels exceed the limit of {} voxels", what, n[0], n[1], n[2], n[3], kMaxVoxels);
+  // The byte count, saturating: a header claiming more than the file holds is
+  // "truncated" whatever its size; the voxel limit is checked after.
+  std::uint64_t count = 1, needed = 0;
+  bool overflow = false;
+  for (std::uint64_t d : n) overflow = overflow || __builtin_mul_overflow(count, d, &count);
+  overflow = overflow || __builtin_mul_overflow(count, static_cast<std::uint64_t>(scalar_type_size(type)), &needed);
 
   // The voxels: after the header in a single file, in the .img of a pair.
   std::string_view data_file = bytes;
@@ -322,11 +323,11 @@ Volume read_nifti(std::string_view bytes, const std::string_view* image) {
     data_file = *image;
   }
   const std::size_t offset = data_offset(h, f, data_file.size(), what);
-  const std::uint64_t needed = count * scalar_type_size(type);
-  if (needed > data_file.size() - offset)
+  if (overflow || needed > data_file.size() - offset)
     throw bad_input("{} data truncated: {}x{}x{}x{} {} voxels need {} bytes after offset {}, the {} has {}",
                     f.kind == NiftiKind::analyze ? "Analyze" : "NIfTI", n[0], n[1], n[2], n[3], scalar_type_name(type),
-                    needed, offset, f.pair ? "image file" : "file", data_file.size() - offset);
+                    overflow ? std::string("more than 2^64") : std::to_string(needed), offset,
+                    f.pair ? "image file" : "file", data_file.size() - offset);
 
   Volume v;
   v.type = type;
@@ -362,6 +363,9 @@ Volume read_nifti(std::string_view bytes, const std::string_view* image) {
     for (double x : {nim->quatern_b, nim->quatern_c, nim->quatern_d, nim->qoffset_x, nim->qoffset_y, nim->qoffset_z})
       if (!std::isfinite(x)) throw bad_input("{}: qform quaternion or offset is not finite", what);
     set_from_matrix(v, nim->qto_xyz, mm, "NIfTI qform");
+    // The qform is a rotation times the voxel sizes: take the sizes as written, not
+    // the column lengths recomputed from the rotation (which differ in the last bit).
+    for (int c = 0; c < 3; ++c) v.spacing[c] = usable_spacing(nim->pixdim[c + 1]) * mm;
   } else {
     // NIfTI "method 1": no world placement stated, only voxel sizes.
     for (int c = 0; c < 3; ++c) v.spacing[c] = usable_spacing(nim->pixdim[c + 1]) * mm;
