@@ -152,4 +152,28 @@ run fconv --info "$nib/row_major.dconn.nii"
 expect_clean_failure 3 fconv
 expect_stderr_has "5-D data"
 
+# The count of clipped values comes from numpy: int16 values that round outside 0..255.
+case_ "--type uint8 on int16 MRI: the warning's count is numpy's"
+run fconv "$nib/example4d.nii.gz" --type uint8 -o "$WORK/u8.nii"
+expect_status 0
+want=$("$PY" -c "
+import nibabel as nib, numpy as np
+a = np.asarray(nib.load('$nib/example4d.nii.gz').dataobj).astype(float)
+print(f'{int(np.count_nonzero((a < -0.5) | (a >= 255.5)))} of {a.size} values clipped to the uint8 range 0..255')")
+expect_stderr_has "^fconv: warning: $want"
+
+# --rescale: fest's voxels equal the formula of fconv(1) evaluated by numpy
+# (round half away from zero; all values are >= 0 here, so floor(x + 0.5)).
+case_ "--rescale on int16 MRI equals the documented formula"
+run fconv "$nib/example4d.nii.gz" --type uint8 --rescale -o "$WORK/r8.nii"
+expect_status 0
+check "no warning" test ! -s "$err"
+check "voxels equal numpy's" "$PY" -c "
+import nibabel as nib, numpy as np, sys
+a = np.asarray(nib.load('$nib/example4d.nii.gz').dataobj).astype(float)
+lo, hi = a.min(), a.max()
+want = np.floor(0 + (a - lo) * (255 - 0) / (hi - lo) + 0.5)
+got = np.asarray(nib.load('$WORK/r8.nii').dataobj).astype(float)
+sys.exit(0 if np.array_equal(want, got) else 1)"
+
 finish
