@@ -15,6 +15,14 @@ namespace fest::formats::volume_detail {
 
 namespace {
 
+enum class NiftiKind { analyze, nifti1, nifti2 };
+
+struct NiftiHeaderFacts {
+  NiftiKind kind = NiftiKind::nifti1;
+  bool pair = false;        // data in a separate .img file (magic ni1/ni2, or Analyze)
+  bool big_endian = false;
+};
+
 static_assert(sizeof(nifti_1_header) == 348, "nifti_1_header must be the 348-byte file layout");
 static_assert(sizeof(nifti_2_header) == 540, "nifti_2_header must be the 540-byte file layout");
 
@@ -240,34 +248,6 @@ std::size_t data_offset(const HeaderView& h, const NiftiHeaderFacts& f, std::siz
 }
 
 }  // namespace
-
-std::optional<NiftiHeaderFacts> sniff_nifti(std::string_view bytes) noexcept {
-  if (bytes.size() < kHeaderSize) return std::nullopt;
-  const HeaderView le(bytes, false), be(bytes, true);
-  const bool v1 = le.u32(0) == kHeaderSize || be.u32(0) == kHeaderSize;
-  const bool v2 = bytes.size() >= kHeader2Size && (le.u32(0) == kHeader2Size || be.u32(0) == kHeader2Size);
-  if (!v1 && !v2) return std::nullopt;
-  if (v1) {
-    const std::string_view magic = bytes.substr(kMagic, 4);
-    if (magic != std::string_view("n+1\0", 4) && magic != std::string_view("ni1\0", 4)) {
-      // Analyze 7.5 has no magic: recognise it by a sane dim[0] and a known datatype.
-      const bool big = le.u32(0) != kHeaderSize;
-      const HeaderView h(bytes, big);
-      const int ndim = h.i16(kDim), code = h.i16(kDatatype);
-      bool known = unsupported_datatype_name(code) != nullptr && code != 0;
-      for (const DatatypeCode& d : kDatatypes) known = known || d.code == code;
-      if (ndim < 1 || ndim > 7 || !known) return std::nullopt;
-    }
-  } else {
-    const std::string_view magic = bytes.substr(k2Magic, 4);
-    if (magic != std::string_view("n+2\0", 4) && magic != std::string_view("ni2\0", 4)) return std::nullopt;
-  }
-  try {
-    return facts_or_throw(bytes);
-  } catch (const Error&) {
-    return std::nullopt;
-  }
-}
 
 Volume read_nifti(std::string_view bytes, const std::string_view* image) {
   const NiftiHeaderFacts f = facts_or_throw(bytes);

@@ -10,24 +10,12 @@
 // follows SPM's convention, as nibabel does: x flipped (radiological storage), origin
 // from the `originator` voxel, else the centre of the grid (see fest-formats(5)).
 
-#include <optional>
 #include <string>
 #include <string_view>
 
 #include "core/volume.hpp"
 
 namespace fest::formats::volume_detail {
-
-enum class NiftiKind { analyze, nifti1, nifti2 };
-
-struct NiftiHeaderFacts {
-  NiftiKind kind = NiftiKind::nifti1;
-  bool pair = false;        // data in a separate .img file (magic ni1/ni2, or Analyze)
-  bool big_endian = false;
-};
-
-// What the first bytes say, or nullopt when they are not a NIfTI/Analyze header.
-std::optional<NiftiHeaderFacts> sniff_nifti(std::string_view bytes) noexcept;
 
 // Reads a single file (`image` empty and unused) or a pair: `bytes` is the header file
 // and `image` the content of the image file. A pair header without its image file is
