@@ -342,10 +342,15 @@ Volume read_nifti(std::string_view bytes, const std::string_view* image) {
   } else if (nim->qform_code > 0) {
     for (double x : {nim->quatern_b, nim->quatern_c, nim->quatern_d, nim->qoffset_x, nim->qoffset_y, nim->qoffset_z})
       if (!std::isfinite(x)) throw bad_input("{}: qform quaternion or offset is not finite", what);
-    set_from_matrix(v, nim->qto_xyz, mm, "NIfTI qform");
-    // The qform is a rotation times the voxel sizes: take the sizes as written, not
-    // the column lengths recomputed from the rotation (which differ in the last bit).
+    // The qform is a rotation (with qfac's flip) times the voxel sizes: nifti_clib's
+    // rotation for unit sizes gives the directions exactly, and the sizes are taken as
+    // written, rather than recovered from column lengths (which differ in the last bit).
+    const nifti_dmat44 r = nifti_quatern_to_dmat44(nim->quatern_b, nim->quatern_c, nim->quatern_d, 0.0, 0.0, 0.0,
+                                                   1.0, 1.0, 1.0, nim->qfac);
+    for (int row = 0; row < 3; ++row)
+      for (int c = 0; c < 3; ++c) v.direction[static_cast<std::size_t>(3 * row + c)] = r.m[row][c];
     for (int c = 0; c < 3; ++c) v.spacing[c] = usable_spacing(nim->pixdim[c + 1]) * mm;
+    v.origin = {nim->qoffset_x * mm, nim->qoffset_y * mm, nim->qoffset_z * mm};
   } else {
     // NIfTI "method 1": no world placement stated, only voxel sizes.
     for (int c = 0; c < 3; ++c) v.spacing[c] = usable_spacing(nim->pixdim[c + 1]) * mm;
