@@ -12,6 +12,7 @@
 #include "formats/gzip.hpp"
 #include "formats/volume/volume_io.hpp"
 #include "expect_error.hpp"
+#include "testdata.hpp"
 
 using fest::ScalarType;
 using fest::Volume;
@@ -196,4 +197,21 @@ TEST(VolumeSeries, ClippingIsCountedAndRescaleMapsTheRange) {
   flat.voxels = {7, 7};
   ASSERT_TRUE(fest::formats::rescale_to_type(flat, ScalarType::i8));
   EXPECT_EQ(flat.voxels, (std::vector<double>{-128, -128}));
+}
+
+// nibabel's test volumes (scripts/fetch-test-data.sh): the shapes nibabel reports for them
+// (img.shape), read here from the bytes alone.
+TEST(VolumeSeries, RealNibabelFilesHaveNibabelsShapes) {
+  FEST_REQUIRE_TESTDATA(functional, "volumes/nibabel/functional.nii");
+  FEST_REQUIRE_TESTDATA(nifti2, "volumes/nibabel/example_nifti2.nii.gz");
+  FEST_REQUIRE_TESTDATA(mgz, "volumes/nibabel/test.mgz");
+  const Volume f = read_volume(fest::test::slurp(functional), Format::nifti);
+  EXPECT_EQ(f.dims, (std::array<std::size_t, 3>{17, 21, 3}));
+  EXPECT_EQ(f.frames, 20u);
+  const Volume n = read_volume(fest::formats::gunzip(fest::test::slurp(nifti2)), Format::nifti2);
+  EXPECT_EQ(n.dims, (std::array<std::size_t, 3>{32, 20, 12}));
+  EXPECT_EQ(n.frames, 2u);
+  const Volume m = read_volume(fest::formats::gunzip(fest::test::slurp(mgz)), Format::mgh);
+  EXPECT_EQ(m.dims, (std::array<std::size_t, 3>{3, 4, 5}));
+  EXPECT_EQ(m.frames, 2u);
 }
