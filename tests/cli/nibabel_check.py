@@ -2,6 +2,7 @@
 """Compares what fest read from a volume with what nibabel (an independent reader) reads.
 
     nibabel_check.py ORIGINAL INFO.json [CONVERTED]
+    nibabel_check.py --list FILE      (lines "ORIGINAL INFO.json [CONVERTED]": one Python start)
 
 ORIGINAL is any file nibabel loads; INFO.json is `fconv --info ORIGINAL`; CONVERTED (optional)
 is the volume as fest wrote it (any format nibabel loads: .nii, .mgz, .hdr). Checks:
@@ -19,9 +20,8 @@ import numpy as np
 import nibabel as nib
 
 
-def main():
-    original, info_path = sys.argv[1], sys.argv[2]
-    converted = sys.argv[3] if len(sys.argv) > 3 else None
+def check(original, info_path, converted=None):
+    print(f"-- {original}")
     img = nib.load(original)
     info = json.load(open(info_path))
     ok = True
@@ -69,7 +69,18 @@ def main():
             ok = False
         else:
             print(f"converted affine ok (max difference {err2:.3g})")
-    return 0 if ok else 1
+    return ok
+
+
+def main():
+    if sys.argv[1] == "--list":
+        rows = [line.split() for line in open(sys.argv[2]) if line.strip()]
+    else:
+        rows = [sys.argv[1:4]]
+    failed = [row[0] for row in rows if not check(*row)]
+    if failed:
+        print("DISAGREE: " + " ".join(failed))
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
