@@ -39,3 +39,11 @@ find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 find_package(OpenCV 4 REQUIRED COMPONENTS videoio)
 # capture calib-*: chessboard corners, Zhang's calibration, solvePnP (lib/capture calib).
 find_package(OpenCV 4 REQUIRED COMPONENTS calib3d)
+# Volumes: NIfTI-1/-2 and Analyze headers through nifti_clib (libnifti2-dev). Debian 12's
+# NIFTIConfig.cmake names /usr/lib/libznz.so.3.0.0, which is not where the library is, so
+# the library is found directly.
+find_path(NIFTI2_INCLUDE_DIR nifti2_io.h PATH_SUFFIXES nifti REQUIRED)
+find_library(NIFTI2_LIBRARY nifti2 REQUIRED)
+add_library(fest_nifti2 INTERFACE)
+target_include_directories(fest_nifti2 SYSTEM INTERFACE ${NIFTI2_INCLUDE_DIR})
+target_link_libraries(fest_nifti2 INTERFACE ${NIFTI2_LIBRARY})

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
+#include <optional>
 
 #include "core/error.hpp"
 
@@ -36,6 +38,10 @@ constexpr FormatRow kFormats[] = {
     {Format::nifti, Kind::volume, "nifti", ".nii", "nii"},
     {Format::nrrd, Kind::volume, "nrrd", ".nrrd", ""},
     {Format::mha, Kind::volume, "mha", ".mha", "metaimage"},
+    {Format::nifti2, Kind::volume, "nifti2", ".nii", "nii2"},
+    {Format::nifti_pair, Kind::volume, "hdr", ".hdr", "nifti-pair img"},
+    {Format::analyze, Kind::volume, "analyze", ".hdr", ""},
+    {Format::mgh, Kind::volume, "mgh", ".mgh", ""},  // ".mgz": mgh + gzip, see gzip_alias()
     {Format::vtu, Kind::dataset, "vtu", ".vtu", ""},
     {Format::vti, Kind::dataset, "vti", ".vti", ""},
     {Format::vtp, Kind::dataset, "vtp", ".vtp", ""},
@@ -122,13 +128,61 @@ bool is_binary_stl(std::string_view b) {
   return 84ull + 50ull * n == b.size();
 }
 
-bool is_nifti1(std::string_view b) {
-  if (b.size() < 348) return false;
-  std::int32_t hdr;
-  std::memcpy(&hdr, b.data(), 4);
-  const std::int32_t swapped = static_cast<std::int32_t>(__builtin_bswap32(static_cast<std::uint32_t>(hdr)));
-  if (hdr != 348 && swapped != 348) return false;
-  return std::memcmp(b.data() + 344, "n+1\0", 4) == 0 || std::memcmp(b.data() + 344, "ni1\0", 4) == 0;
+std::uint32_t le32(std::string_view b, std::size_t off) {
+  std::uint32_t v;
+  std::memcpy(&v, b.data() + off, 4);  // little-endian on every platform fest builds for
+  return v;
+}
+std::uint32_t be32(std::string_view b, std::size_t off) { return __builtin_bswap32(le32(b, off)); }
+std::int16_t i16_in(std::string_view b, std::size_t off, bool big) {
+  std::uint16_t v;
+  std::memcpy(&v, b.data() + off, 2);
+  return static_cast<std::int16_t>(big ? __builtin_bswap16(v) : v);
+}
+
+// NIfTI-1 (sizeof_hdr 348, magic "n+1" or "ni1" at 344), NIfTI-2 (540, "n+2"/"ni2" at 4)
+// and Analyze 7.5 (348 without a magic: recognised by a sane dim[0] and datatype code).
+std::optional<Format> nifti_family(std::string_view b) {
+  if (b.size() < 348) return std::nullopt;
+  const bool le348 = le32(b, 0) == 348, be348 = be32(b, 0) == 348;
+  if (le348 || be348) {
+    if (std::memcmp(b.data() + 344, "n+1\0", 4) == 0) return Format::nifti;
+    if (std::memcmp(b.data() + 344, "ni1\0", 4) == 0) return Format::nifti_pair;
+    const int ndim = i16_in(b, 40, be348 && !le348), code = i16_in(b, 70, be348 && !le348);
+    static const int codes[] = {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 768, 1024, 1280, 1536, 1792, 2048, 2304};
+    const bool known = std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
+    if (ndim >= 1 && ndim <= 7 && known) return Format::analyze;
+    if (b[344] == 'n') return Format::nifti;  // a damaged NIfTI magic: the reader names it
+    return std::nullopt;
+  }
+  if (b.size() >= 540 && (le32(b, 0) == 540 || be32(b, 0) == 540)) {
+    // "n+2\0" then \r\n\032\n (or zeros, as nifti_clib 3.0 writes): the reader checks the rest.
+    if (std::memcmp(b.data() + 4, "n+2\0", 4) == 0) return Format::nifti2;
+    if (std::memcmp(b.data() + 4, "ni2\0", 4) == 0) return Format::nifti_pair;
+  }
+  return std::nullopt;
+}
+
+// FreeSurfer MGH: no magic, so a big-endian version 1, four positive sizes, a known
+// type code and a file long enough for the voxels the header declares.
+bool is_mgh(std::string_view b) {
+  if (b.size() < 284 || be32(b, 0) != 1) return false;
+  std::uint64_t count = 1;
+  for (int i = 0; i < 4; ++i) {
+    const auto d = static_cast<std::int32_t>(be32(b, 4 + 4 * i));
+    if (d <= 0) return false;
+    count *= static_cast<std::uint64_t>(d);
+    if (count > (1ull << 40)) return false;
+  }
+  std::uint64_t bytes_per_voxel = 0;
+  switch (be32(b, 20)) {
+    case 0: bytes_per_voxel = 1; break;                   // MRI_UCHAR
+    case 4: case 10: bytes_per_voxel = 2; break;          // MRI_SHORT, MRI_USHRT
+    case 1: case 2: case 3: bytes_per_voxel = 4; break;   // MRI_INT, MRI_LONG, MRI_FLOAT
+    case 5: case 6: bytes_per_voxel = 0; break;           // bitmap, tensor: the reader names them
+    default: return false;
+  }
+  return b.size() - 284 >= count * bytes_per_voxel;
 }
 
 // OFF variants: OFF, COFF, NOFF, CNOFF, STOFF, 4OFF, nOFF, ... (the keyword ends in OFF).
@@ -222,12 +276,13 @@ Format detect_format(std::string_view b, const std::string& where) {
   if (starts_with(b, "\xff\xd8\xff")) return Format::jpeg;
   if (starts_with(b, "DRACO")) return Format::drc;
   if (starts_with(b, "NRRD000")) return Format::nrrd;
-  if (is_nifti1(b)) {
-    if (std::memcmp(b.data() + 344, "ni1\0", 4) == 0)
-      throw bad_input("{}", with_location("NIfTI header/image pairs (.hdr/.img) are not supported; "
-                                          "convert to a single .nii file", where));
-    return Format::nifti;
-  }
+  if (const std::optional<Format> nifti = nifti_family(b); nifti && *nifti != Format::analyze) return *nifti;
+  if (starts_with(b, "CDF\x01") || starts_with(b, "CDF\x02"))
+    throw bad_input("{}", with_location("netCDF data (a MINC-1 volume?) is not supported; convert it to NIfTI first "
+                                        "(mnc2nii, or nibabel)", where));
+  if (starts_with(b, "\x89HDF\r\n\x1a\n"))
+    throw bad_input("{}", with_location("HDF5 data (a MINC-2 volume?) is not supported; convert it to NIfTI first "
+                                        "(mnc2nii, or nibabel)", where));
   if (starts_with(b, "\x1f\x8b"))
     throw bad_input("{}", with_location("gzip data inside gzip data is not supported", where));
   if (starts_with(b, "ply\n") || starts_with(b, "ply\r\n")) return Format::ply;
@@ -244,6 +299,9 @@ Format detect_format(std::string_view b, const std::string& where) {
   // Binary STL: an 80-byte header (which may itself begin with "solid") and a count that
   // accounts for the file size exactly. Checked before ascii STL for that reason.
   if (is_binary_stl(b)) return Format::stl;
+  // Formats without a magic number, recognised by a consistent binary header.
+  if (const std::optional<Format> nifti = nifti_family(b)) return *nifti;  // Analyze 7.5
+  if (is_mgh(b)) return Format::mgh;
 
   std::string_view text = skip_blank_and_comments(b);
   if (starts_with(b, "solid") && b.substr(0, 1024).find("facet") != std::string_view::npos) return Format::stl;
@@ -269,6 +327,7 @@ OutputFormat output_format_from_name(std::string_view name_in) {
     throw usage_error("'gz' names a compression, not a format: say e.g. nii.gz");
   }
   if (!name.empty() && name.front() == '.') name.erase(0, 1);
+  if (name == "mgz") return OutputFormat{Format::mgh, true};  // FreeSurfer's gzip-compressed MGH
   for (const FormatRow& r : kFormats) {
     if (name_matches(r, name)) {
       out.format = r.format;
@@ -290,6 +349,7 @@ OutputFormat output_format_from_path(std::string_view path) {
   if (dot == std::string::npos || dot == 0)
     throw usage_error("cannot tell the output format from '{}': give it an extension or --to", std::string(path));
   std::string ext = lowered.substr(dot + 1);
+  if (ext == "mgz" && !gz) return OutputFormat{Format::mgh, true};
   for (const FormatRow& r : kFormats) {
     if (name_matches(r, ext)) return OutputFormat{r.format, gz};
   }

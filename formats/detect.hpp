@@ -14,8 +14,8 @@ enum class Format {
   ply, obj, off, stl, drc,
   // images
   png, pgm, ppm, pam, pfm, exr, tiff, jpeg,  // jpeg: read only
-  // volumes
-  nifti, nrrd, mha,
+  // volumes (nifti_pair: a .hdr/.img pair, NIfTI-1 or -2; analyze: Analyze 7.5, read only)
+  nifti, nrrd, mha, nifti2, nifti_pair, analyze, mgh,
   // VTK datasets
   vtu, vti, vtp, vtk, vts,
   // tables and documents

@@ -62,6 +62,19 @@ opencv-doc usr/share/doc/opencv-doc/examples/data/aloeR.jpg images/aloeR.jpg
 dolfin-doc usr/share/dolfin/demo/undocumented/advection-diffusion/dolfin_fine.xml.gz cfd/dolfin_fine_mesh.xml.gz
 dolfin-doc usr/share/dolfin/demo/undocumented/advection-diffusion/dolfin_fine_velocity.xml.gz cfd/dolfin_fine_velocity.xml.gz
 dolfin-doc usr/share/dolfin/demo/documented/bcs/aneurysm.xml.gz cfd/aneurysm_mesh.xml.gz
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/functional.nii volumes/nibabel/functional.nii
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/example4d.nii.gz volumes/nibabel/example4d.nii.gz
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/example_nifti2.nii.gz volumes/nibabel/example_nifti2.nii.gz
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/anatomical.nii volumes/nibabel/anatomical.nii
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/reoriented_anat_moved.nii volumes/nibabel/reoriented_anat_moved.nii
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/standard.nii.gz volumes/nibabel/standard.nii.gz
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/test.mgz volumes/nibabel/test.mgz
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/analyze.hdr volumes/nibabel/analyze.hdr
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/nifti1.hdr volumes/nibabel/nifti1.hdr
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/nifti2.hdr volumes/nibabel/nifti2.hdr
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/row_major.dconn.nii volumes/nibabel/row_major.dconn.nii
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/minc1_4d.mnc volumes/nibabel/minc1_4d.mnc
+python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/minc2_4d.mnc volumes/nibabel/minc2_4d.mnc
 EOF
 )
 CGAL_MESHES="bunny00.off armadillo.off ChineseDragon-10kv.off elephant.off elephant-with-holes.off fandisk.off cow.off eight.off femur.off mushroom.off lion.off camel.off bull.off homer.off man.off mannequin-devil.off knot1.off turbine.off head.off hand.off bones.off ellipsoid.off icosahedron.off octahedron.off cube.off blobby.off"

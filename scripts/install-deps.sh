@@ -35,6 +35,7 @@ BUILD_PKGS=(
   make                  # examples/Makefile and Makefile.inc
   libode-dev            # ODE 0.16.2  pkg-config ode (lmfsim benchmark anchor only)
   libssl-dev            # OpenSSL 3.0 find_package(OpenSSL) -> OpenSSL::Crypto (SHA-256 of capture files)
+  libnifti2-dev         # nifti_clib 3.0.1  find_package(NIFTI) -> NIFTI::niftiio (NIfTI-1/-2, Analyze headers)
 )
 TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware
@@ -49,6 +50,7 @@ TEST_TOOL_PKGS=(
   teem-apps                  # teem-unu: NRRD's reference implementation
   openexr                    # exrheader
   gdal-bin                   # gdalinfo: TIFF
+  python3-nibabel            # the independent volume reader of tests/cli/fconv_nibabel.sh; its test files are fetched as real data
 )
 
 # --- arguments ----------------------------------------------------------------

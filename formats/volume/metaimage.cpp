@@ -1,5 +1,6 @@
 #include "formats/volume/metaimage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -137,18 +138,25 @@ std::string orientation_code(const Volume& lps) {
 }
 
 void set_geometry(Volume& v, const MetaHeader& h, std::size_t n) {
+  // n is the number of axes in the file: 2, 3, or 4 (a series whose fourth axis is
+  // frames, not space). Only the spatial axes (at most 3) place voxels in the world.
+  const std::size_t ns = std::min<std::size_t>(n, 3);
   Vec3 flip{1, 1, 1};  // a negative spacing runs its axis backwards
   if (h.spacing || h.element_size) {
     const std::vector<double> s = parse_numbers(h.spacing ? *h.spacing : *h.element_size, n, "MetaImage ElementSpacing");
     for (std::size_t c = 0; c < n; ++c) {
       if (!std::isfinite(s[c]) || s[c] == 0) throw bad_input("MetaImage ElementSpacing: {} is not a usable spacing", s[c]);
+      if (c == 3) {
+        v.frame_spacing = std::fabs(s[c]);
+        continue;
+      }
       v.spacing[c] = std::fabs(s[c]);
       if (s[c] < 0) flip[c] = -1;
     }
   }
   if (h.offset) {
     const std::vector<double> o = parse_numbers(*h.offset, n, "MetaImage Offset");
-    for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t c = 0; c < ns; ++c) {
       if (!std::isfinite(o[c])) throw bad_input("MetaImage Offset is not finite");
       v.origin[c] = o[c];
     }
@@ -157,13 +165,13 @@ void set_geometry(Volume& v, const MetaHeader& h, std::size_t n) {
   if (h.matrix) {
     // MetaIO stores the direction of axis i as numbers i*n .. i*n+n-1.
     const std::vector<double> m = parse_numbers(*h.matrix, n * n, "MetaImage TransformMatrix");
-    for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t c = 0; c < ns; ++c) {
       axes[c] = {0, 0, 0};
-      for (std::size_t r = 0; r < n; ++r) axes[c][r] = m[c * n + r];
+      for (std::size_t r = 0; r < ns; ++r) axes[c][r] = m[c * n + r];
     }
     if (n == 2) axes[2] = unit_normal(axes[0], axes[1]);
   } else if (h.orientation) {
-    if (auto from_code = axes_from_orientation(*h.orientation, n)) axes = *from_code;
+    if (auto from_code = axes_from_orientation(h.orientation->substr(0, ns), ns)) axes = *from_code;
   }
   for (int c = 0; c < 3; ++c)
     for (double& x : axes[c]) x *= flip[c];
@@ -171,6 +179,26 @@ void set_geometry(Volume& v, const MetaHeader& h, std::size_t n) {
   set_axes(v, axes, "MetaImage TransformMatrix");  // normalises; the spacing is separate
   v.spacing = spacing;
   flip_xy(v);
+}
+
+// The header of a 4-D series, as ITK writes one: four axes, the fourth (frames) with
+// the frame step as its spacing, no offset and an identity direction row/column.
+std::string write_series_header(const Volume& volume, const Volume& lps, ScalarType type, bool compress,
+                                std::size_t payload_size) {
+  std::string out = "ObjectType = Image\nNDims = 4\nBinaryData = True\nBinaryDataByteOrderMSB = False\n";
+  out += fmt::format("CompressedData = {}\n", compress ? "True" : "False");
+  if (compress) out += fmt::format("CompressedDataSize = {}\n", payload_size);
+  out += "TransformMatrix =";
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      out += fmt::format(" {}", c < 3 && r < 3 ? lps.direction[static_cast<std::size_t>(3 * r + c)] : (r == c ? 1.0 : 0.0));
+  out += fmt::format("\nOffset = {} {} {} 0\n", lps.origin[0], lps.origin[1], lps.origin[2]);
+  out += "CenterOfRotation = 0 0 0 0\n";
+  out += fmt::format("ElementSpacing = {} {} {} {}\n", volume.spacing[0], volume.spacing[1], volume.spacing[2],
+                     volume.frame_spacing);
+  out += fmt::format("DimSize = {} {} {} {}\n", volume.dims[0], volume.dims[1], volume.dims[2], volume.frames);
+  out += fmt::format("ElementType = {}\nElementDataFile = LOCAL\n", element_type_name(type));
+  return out;
 }
 
 }  // namespace
@@ -188,7 +216,7 @@ Volume read_metaimage(std::string_view bytes) {
   if (!h.dim_size) throw bad_input("MetaImage header: no DimSize");
   if (!h.element_type) throw bad_input("MetaImage header: no ElementType");
   const std::uint64_t n = parse_count(*h.ndims, "MetaImage NDims");
-  if (n != 2 && n != 3) throw bad_input("MetaImage: NDims = {} is not supported, only 2 or 3", n);
+  if (n < 2 || n > 4) throw bad_input("MetaImage: NDims = {} is not supported, only 2, 3 or 4 (a series of 3-D frames)", n);
   if (h.channels && parse_count(*h.channels, "MetaImage ElementNumberOfChannels") != 1)
     throw bad_input("MetaImage: ElementNumberOfChannels = {}; only scalar volumes are supported", h.channels->substr(0, 20));
   std::optional<ScalarType> type;
@@ -198,7 +226,7 @@ Volume read_metaimage(std::string_view bytes) {
 
   const std::vector<std::string_view> words = split_words(*h.dim_size);
   if (words.size() != n) throw bad_input("MetaImage DimSize: {} sizes expected for NDims = {}, found {}", n, n, words.size());
-  std::array<std::uint64_t, 3> dims{1, 1, 1};
+  std::array<std::uint64_t, 4> dims{1, 1, 1, 1};
   std::uint64_t count = 1;
   for (std::size_t i = 0; i < n; ++i) {
     dims[i] = parse_count(words[i], "MetaImage DimSize");
@@ -231,7 +259,8 @@ Volume read_metaimage(std::string_view bytes) {
   }
   Volume v;
   v.type = *type;
-  v.resize(static_cast<std::size_t>(dims[0]), static_cast<std::size_t>(dims[1]), static_cast<std::size_t>(dims[2]));
+  v.resize(static_cast<std::size_t>(dims[0]), static_cast<std::size_t>(dims[1]), static_cast<std::size_t>(dims[2]),
+           static_cast<std::size_t>(dims[3]));
   if (binary || compressed)
     decode_voxels(data, *type, big, v.voxels);
   else
@@ -250,6 +279,7 @@ std::string write_metaimage(const Volume& volume, ScalarType type, bool compress
   const std::string data = encode_voxels(volume.voxels, type, false);
   const std::string payload = compress ? gzip(data, 6, true) : data;
 
+  if (volume.frames > 1) return write_series_header(volume, lps, type, compress, payload.size()) + payload;
   std::string out = "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n";
   out += fmt::format("CompressedData = {}\n", compress ? "True" : "False");
   if (compress) out += fmt::format("CompressedDataSize = {}\n", payload.size());

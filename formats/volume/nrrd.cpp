@@ -1,5 +1,6 @@
 #include "formats/volume/nrrd.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -168,13 +169,18 @@ void check_kinds(const std::string& kinds, std::size_t n) {
   if (words.size() != n) throw bad_input("NRRD kinds: {} entries expected, one per axis", n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::string k = to_lower(words[i]);
-    if (k != "domain" && k != "space" && k != "???" && k != "none")
-      throw bad_input("NRRD axis {} has kind '{}': only scalar volumes are supported, not multi-component data", i,
-                      words[i].substr(0, 40));
+    if (k == "domain" || k == "space" || k == "???" || k == "none") continue;
+    // The fourth axis of a series counts frames: time points or a list (gradients, echoes).
+    if (i == 3 && (k == "time" || k == "list")) continue;
+    throw bad_input("NRRD axis {} has kind '{}': only scalar volumes and series of them (a fourth axis of kind "
+                    "time or list) are supported, not multi-component data",
+                    i, words[i].substr(0, 40));
   }
 }
 
 void set_geometry(Volume& v, const NrrdHeader& h, std::size_t n) {
+  // n is the number of axes: 2, 3, or 4 (the fourth counts frames and has no direction).
+  const std::size_t ns = std::min<std::size_t>(n, 3);
   if (h.space_dimension && !h.space) {
     if (parse_count(*h.space_dimension, "NRRD space dimension") != 3)
       throw bad_input("NRRD: space dimension {} is not supported, only 3", h.space_dimension->substr(0, 20));
@@ -183,22 +189,30 @@ void set_geometry(Volume& v, const NrrdHeader& h, std::size_t n) {
   if (h.space_directions) {
     const auto dirs = parse_directions(*h.space_directions, n);
     std::array<Vec3, 3> axes{};
-    for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t c = 0; c < ns; ++c) {
       if (!dirs[c]) throw bad_input("NRRD space directions: axis {} of a scalar volume cannot be 'none'", c);
       axes[c] = *dirs[c];
     }
+    if (n == 4 && dirs[3]) throw bad_input("NRRD space directions: the fourth axis (frames) must be 'none'");
     if (n == 2) {  // a single slice: its normal, one unit thick
       axes[2] = unit_normal(axes[0], axes[1]);
     }
     set_axes(v, axes, "NRRD space directions");
-  } else if (h.spacings) {
+  }
+  if (h.spacings) {
     const std::vector<std::string_view> words = split_words(*h.spacings);
     if (words.size() != n) throw bad_input("NRRD spacings: {} numbers expected, found {}", n, words.size());
     for (std::size_t c = 0; c < n; ++c) {
       const double s = parse_number(words[c], "NRRD spacings");
-      // NaN means "no spacing" in NRRD; negative spacing flips the axis.
+      // NaN means "no spacing" in NRRD (required for axes with a space direction);
+      // negative spacing flips the axis.
       if (std::isnan(s) || s == 0.0) continue;
       if (!std::isfinite(s)) throw bad_input("NRRD spacings: axis {} spacing is not finite", c);
+      if (c == 3) {
+        v.frame_spacing = std::fabs(s);
+        continue;
+      }
+      if (h.space_directions) continue;  // the directions already state this axis
       v.spacing[c] = std::fabs(s);
       if (s < 0) v.direction[4 * c] = -1.0;
     }
@@ -227,10 +241,11 @@ Volume read_nrrd(std::string_view bytes) {
   const std::optional<ScalarType> type = parse_type(*h.type);
   if (!type) throw bad_input("NRRD: type '{}' is not supported (scalar integers, float or double)", h.type->substr(0, 40));
   const std::uint64_t n = parse_count(*h.dimension, "NRRD dimension");
-  if (n != 2 && n != 3) throw bad_input("NRRD: dimension {} is not supported, only 2-D and 3-D scalar data", n);
+  if (n < 2 || n > 4)
+    throw bad_input("NRRD: dimension {} is not supported, only 2-D and 3-D scalar data and 4-D series of them", n);
   const std::vector<std::string_view> size_words = split_words(*h.sizes);
   if (size_words.size() != n) throw bad_input("NRRD sizes: {} numbers expected for dimension {}, found {}", n, n, size_words.size());
-  std::array<std::uint64_t, 3> dims{1, 1, 1};
+  std::array<std::uint64_t, 4> dims{1, 1, 1, 1};
   std::uint64_t count = 1;
   for (std::size_t i = 0; i < n; ++i) {
     dims[i] = parse_count(size_words[i], "NRRD sizes");
@@ -283,7 +298,8 @@ Volume read_nrrd(std::string_view bytes) {
     if (count > data.size() / 2 + 1)
       throw bad_input("NRRD ascii data truncated: {} values cannot fit in {} bytes", count, data.size());
   }
-  v.resize(static_cast<std::size_t>(dims[0]), static_cast<std::size_t>(dims[1]), static_cast<std::size_t>(dims[2]));
+  v.resize(static_cast<std::size_t>(dims[0]), static_cast<std::size_t>(dims[1]), static_cast<std::size_t>(dims[2]),
+           static_cast<std::size_t>(dims[3]));
   if (encoding == Encoding::ascii)
     parse_text_voxels(data, v.voxels, "NRRD ascii data");
   else
@@ -295,14 +311,19 @@ Volume read_nrrd(std::string_view bytes) {
 std::string write_nrrd(const Volume& volume, ScalarType type, bool compress) {
   check_writable(volume, "NRRD writer");
   std::string out = "NRRD0004\n# Complete NRRD file format specification at:\n# http://teem.sourceforge.net/nrrd/format.html\n";
-  out += fmt::format("type: {}\ndimension: 3\nspace: right-anterior-superior\n", type_name(type));
-  out += fmt::format("sizes: {} {} {}\n", volume.dims[0], volume.dims[1], volume.dims[2]);
+  const bool series = volume.frames > 1;
+  out += fmt::format("type: {}\ndimension: {}\nspace: right-anterior-superior\n", type_name(type), series ? 4 : 3);
+  out += fmt::format("sizes: {} {} {}", volume.dims[0], volume.dims[1], volume.dims[2]);
+  out += series ? fmt::format(" {}\n", volume.frames) : "\n";
   out += "space directions:";
   for (int c = 0; c < 3; ++c) {
     const Vec3 a = axis_step(volume, c);
     out += fmt::format(" ({},{},{})", a[0], a[1], a[2]);
   }
-  out += "\nkinds: domain domain domain\n";
+  // A series: the fourth axis lists frames; its step is the one spacing NRRD allows
+  // beside space directions (NaN for the spatial axes).
+  out += series ? fmt::format(" none\nkinds: domain domain domain list\nspacings: nan nan nan {}\n", volume.frame_spacing)
+                : "\nkinds: domain domain domain\n";
   if (scalar_type_size(type) > 1) out += "endian: little\n";
   out += fmt::format("encoding: {}\n", compress ? "gzip" : "raw");
   out += fmt::format("space origin: ({},{},{})\n\n", volume.origin[0], volume.origin[1], volume.origin[2]);

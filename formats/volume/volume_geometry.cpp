@@ -40,11 +40,12 @@ void flip_xy(Volume& volume) noexcept {
 }
 
 void check_writable(const Volume& volume, const char* what) {
-  const std::size_t n = volume.size();
-  if (volume.dims[0] == 0 || volume.dims[1] == 0 || volume.dims[2] == 0 || n != volume.voxels.size() ||
-      n / volume.dims[0] / volume.dims[1] != volume.dims[2])
-    throw bad_input("{}: volume of {}x{}x{} holds {} voxels", what, volume.dims[0], volume.dims[1], volume.dims[2],
-                    volume.voxels.size());
+  const std::size_t n = volume.frame_size();
+  if (volume.dims[0] == 0 || volume.dims[1] == 0 || volume.dims[2] == 0 || volume.frames == 0 ||
+      n / volume.dims[0] / volume.dims[1] != volume.dims[2] || volume.voxels.size() / volume.frames != n ||
+      volume.voxels.size() % volume.frames != 0)
+    throw bad_input("{}: volume of {}x{}x{}x{} holds {} voxels", what, volume.dims[0], volume.dims[1], volume.dims[2],
+                    volume.frames, volume.voxels.size());
 }
 
 }  // namespace fest::formats::volume_detail

@@ -10,6 +10,9 @@ VolumeError volume_error(const Volume& a, const Volume& b, std::size_t max_label
   if (a.dims != b.dims)
     throw runtime_failure("volume dimensions differ: {}x{}x{} and {}x{}x{}", a.dims[0], a.dims[1], a.dims[2],
                           b.dims[0], b.dims[1], b.dims[2]);
+  if (a.frames != b.frames || a.voxels.size() != b.voxels.size())
+    throw runtime_failure("volume frame counts differ: {} and {} frames of {}x{}x{}", a.frames, b.frames, a.dims[0],
+                          a.dims[1], a.dims[2]);
   VolumeError e;
   for (int i = 0; i < 3; ++i) {
     e.max_spacing_diff = std::max(e.max_spacing_diff, std::abs(a.spacing[i] - b.spacing[i]));

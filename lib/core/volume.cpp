@@ -61,14 +61,38 @@ std::array<double, 3> Volume::world(double i, double j, double k) const noexcept
   return w;
 }
 
-void Volume::resize(std::size_t nx, std::size_t ny, std::size_t nz) {
+void Volume::resize(std::size_t nx, std::size_t ny, std::size_t nz, std::size_t nt) {
   if (nx == 0 || ny == 0 || nz == 0) throw bad_input("volume has a zero dimension ({}x{}x{})", nx, ny, nz);
+  if (nt == 0) throw bad_input("volume has zero frames ({}x{}x{}x0)", nx, ny, nz);
   if (nx > kMaxVoxels || ny > kMaxVoxels || nz > kMaxVoxels ||
       static_cast<std::uint64_t>(nx) * ny > kMaxVoxels ||
       static_cast<std::uint64_t>(nx) * ny * nz > kMaxVoxels)
     throw bad_input("volume of {}x{}x{} voxels exceeds the limit of {} voxels", nx, ny, nz, kMaxVoxels);
+  if (nt > kMaxVoxels || static_cast<std::uint64_t>(nx) * ny * nz * nt > kMaxVoxels)
+    throw bad_input("volume of {}x{}x{}x{} voxels exceeds the limit of {} voxels", nx, ny, nz, nt, kMaxVoxels);
   dims = {nx, ny, nz};
-  voxels.assign(nx * ny * nz, 0.0);
+  frames = nt;
+  voxels.assign(nx * ny * nz * nt, 0.0);
+}
+
+Volume Volume::frame(std::size_t t) const {
+  if (t >= frames) throw bad_input("frame {} does not exist: the volume has {} frame(s), numbered 0..{}", t, frames, frames - 1);
+  Volume out;
+  out.dims = dims;
+  out.spacing = spacing;
+  out.origin = origin;
+  out.direction = direction;
+  out.type = type;
+  const std::size_t n = frame_size();
+  out.voxels.assign(voxels.begin() + static_cast<std::ptrdiff_t>(t * n), voxels.begin() + static_cast<std::ptrdiff_t>((t + 1) * n));
+  return out;
+}
+
+void Volume::require_3d(const char* who) const {
+  if (frames > 1)
+    throw bad_input("{} works on one 3-D volume, and the input is a 4-D series of {} frames of {}x{}x{}; "
+                    "take one frame with `fconv --frame K`",
+                    who, frames, dims[0], dims[1], dims[2]);
 }
 
 }  // namespace fest

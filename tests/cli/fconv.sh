@@ -95,4 +95,32 @@ printf 'NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 1 1\nencoding: ascii\n\n1 
 run fconv "$WORK/v.nrrd" --to mha --type complex
 expect_clean_failure 2 fconv
 
+# Clipping: -5 and 300 lie outside uint8's 0..255 (the other two do not), so exactly two
+# values are clipped; nothing is clipped as int16.
+case_ "--type uint8 warns with the count of clipped values"
+printf 'NRRD0004\ntype: short\ndimension: 3\nsizes: 4 1 1\nencoding: ascii\n\n-5 0 100 300\n' >"$WORK/s.nrrd"
+run fconv "$WORK/s.nrrd" --to nrrd --type uint8 --ascii
+expect_status 0
+expect_stderr_has "^fconv: warning: 2 of 4 values clipped to the uint8 range 0\.\.255"
+check "clipped values are the bounds" sh -c "'$FEST_BIN/fconv' '$WORK/s.nrrd' --to nii --type uint8 2>/dev/null | '$FEST_BIN/fconv' --info | jq -e '.min == 0 and .max == 255'"
+run fconv "$WORK/s.nrrd" --to nrrd --type int16
+expect_status 0
+check "no warning when nothing is clipped" test ! -s "$err"
+
+# --rescale: v' = 0 + (v - (-5)) * 255 / (300 - (-5)), rounded: -5 -> 0, 0 -> 4.18 -> 4,
+# 100 -> 87.79 -> 88, 300 -> 255 (the formula of fconv(1)).
+case_ "--rescale maps the input range onto uint8"
+"$FEST_BIN/fconv" "$WORK/s.nrrd" --to nrrd --type uint8 --rescale 2>"$err" | tail -c 4 | od -An -tu1 | tr -s ' ' >"$out"
+check "values 0 4 88 255" test "$(cat "$out")" = " 0 4 88 255"
+check "no clipping warning" test ! -s "$err"
+run fconv "$WORK/s.nrrd" --to nrrd --rescale
+expect_clean_failure 2 fconv
+expect_stderr_has "--rescale"
+run fconv "$WORK/s.nrrd" --to nrrd --rescale --type float32
+expect_clean_failure 2 fconv
+
+case_ "--frame on a mesh is a usage error"
+run fconv "$WORK/tet.off" --frame 0 --to ply
+expect_clean_failure 2 fconv
+
 finish

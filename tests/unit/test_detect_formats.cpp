@@ -96,14 +96,39 @@ TEST(Detect, UnknownAndEmptyInputAreBadInput) {
   }
 }
 
-TEST(Detect, AnalyzeHeaderPairsAreRefusedClearly) {
+TEST(Detect, NiftiPairsAnalyzeNifti2AndMgh) {
   std::string h = nifti_header(false);
   std::memcpy(h.data() + 344, "ni1\0", 4);
-  try {
-    detect(h);
-    FAIL();
-  } catch (const fest::Error& e) {
-    EXPECT_NE(std::string(e.what()).find(".hdr"), std::string::npos);
+  EXPECT_EQ(detect(h), Format::nifti_pair);
+  // Analyze 7.5: no magic, but sizeof_hdr 348, a sane dim[0] and a known datatype.
+  std::memset(h.data() + 344, 0, 4);
+  EXPECT_THROW(detect(h), fest::Error);  // dim[0] 0, datatype 0: nothing says Analyze
+  const std::int16_t three = 3, int16_code = 4;
+  std::memcpy(h.data() + 40, &three, 2);
+  std::memcpy(h.data() + 70, &int16_code, 2);
+  EXPECT_EQ(detect(h), Format::analyze);
+  // NIfTI-2: sizeof_hdr 540 and "n+2" at byte 4.
+  std::string h2(544, '\0');
+  const std::int32_t size2 = 540;
+  std::memcpy(h2.data(), &size2, 4);
+  std::memcpy(h2.data() + 4, "n+2\0\r\n\032\n", 8);
+  EXPECT_EQ(detect(h2), Format::nifti2);
+  std::memcpy(h2.data() + 4, "ni2\0", 4);
+  EXPECT_EQ(detect(h2), Format::nifti_pair);
+  // MGH: big-endian version 1, four positive sizes, a type code and enough bytes.
+  std::string m(284 + 2 * 3 * 4, '\0');
+  const unsigned char head[] = {0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 3, 0, 0, 0, 4, 0, 0, 0, 1, 0, 0, 0, 0};
+  std::memcpy(m.data(), head, sizeof head);
+  EXPECT_EQ(detect(m), Format::mgh);
+  EXPECT_THROW(detect(m.substr(0, m.size() - 1)), fest::Error);  // too short for its voxels
+  // MINC (netCDF, HDF5) is named in the refusal.
+  for (const char* magic : {"CDF\x01", "\x89HDF\r\n\x1a\n"}) {
+    try {
+      detect(std::string(magic) + std::string(400, '\0'));
+      FAIL();
+    } catch (const fest::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("MINC"), std::string::npos) << e.what();
+    }
   }
 }
 
@@ -134,6 +159,15 @@ TEST(OutputFormat, FromPaths) {
   }
   EXPECT_THROW(output_format_from_path("a.docx"), fest::Error);
   EXPECT_THROW(output_format_from_path(".hidden"), fest::Error);
+  // Volumes: .mgz is gzip-compressed MGH; .hdr is a NIfTI-1 pair.
+  p = output_format_from_path("brain.mgz");
+  EXPECT_EQ(p.format, Format::mgh);
+  EXPECT_TRUE(p.gzip);
+  EXPECT_EQ(output_format_from_path("brain.mgh").format, Format::mgh);
+  EXPECT_EQ(output_format_from_path("pair.hdr").format, Format::nifti_pair);
+  EXPECT_EQ(output_format_from_path("x.nii").format, Format::nifti);
+  EXPECT_EQ(fest::formats::output_format_from_name("nifti2").format, Format::nifti2);
+  EXPECT_TRUE(fest::formats::output_format_from_name("mgz").gzip);
 }
 
 TEST(OutputFormat, NamesAndKindsAgree) {

@@ -159,8 +159,19 @@ TEST(VolumeNifti, FourDWithOneVolumeIsRead) {
   put_i16(b, 40, 4);
   put_i16(b, 48, 1);
   EXPECT_EQ(read_volume(b, Format::nifti).voxels, small_volume().voxels);
+  EXPECT_EQ(read_volume(b, Format::nifti).frames, 1u);
+  // Two frames need twice the data: the header alone is "truncated", with the data a series.
   put_i16(b, 48, 2);
-  expect_bad_input([&] { read_volume(b, Format::nifti); }, "4-D");
+  expect_bad_input([&] { read_volume(b, Format::nifti); }, "truncated");
+  b += b.substr(352);
+  const Volume v = read_volume(b, Format::nifti);
+  EXPECT_EQ(v.frames, 2u);
+  EXPECT_EQ(v.dims, small_volume().dims);
+  EXPECT_EQ(v.frame(1).voxels, small_volume().voxels);
+  // dim[5..7] > 1 (components per voxel) stays refused, by name.
+  put_i16(b, 40, 5);
+  put_i16(b, 50, 3);
+  expect_bad_input([&] { read_volume(b, Format::nifti); }, "5-D");
 }
 
 TEST(VolumeNifti, TwoDimensionalFileHasOneSlice) {
@@ -214,8 +225,9 @@ TEST(VolumeNiftiMalformed, WrongMagic) {
   std::string b = nifti_bytes();
   b[345] = 'x';
   expect_bad_input([&] { read_volume(b, Format::nifti); }, "magic");
+  // "ni1": the header of a .hdr/.img pair, whose voxels are not in these bytes.
   b.replace(344, 4, std::string("ni1\0", 4));
-  expect_bad_input([&] { read_volume(b, Format::nifti); }, "two-file");
+  expect_bad_input([&] { read_volume(b, Format::nifti); }, ".img file");
 }
 
 TEST(VolumeNiftiMalformed, SizeofHdrWrong) {

@@ -132,7 +132,7 @@ TEST(VolumeNrrdMalformed, MissingRequiredFields) {
 
 TEST(VolumeNrrdMalformed, BadFieldValues) {
   expect_bad_input([] { nrrd("NRRD0004\ntype: block\ndimension: 3\nsizes: 2 2 1\nencoding: raw\n\n1234"); }, "type");
-  expect_bad_input([] { nrrd("NRRD0004\ntype: uchar\ndimension: 4\nsizes: 2 2 1 1\nencoding: raw\n\n1234"); }, "dimension 4");
+  expect_bad_input([] { nrrd("NRRD0004\ntype: uchar\ndimension: 5\nsizes: 2 2 1 1 1\nencoding: raw\n\n1234"); }, "dimension 5");
   expect_bad_input([] { nrrd("NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2\nencoding: raw\n\n1234"); }, "sizes");
   expect_bad_input([] { nrrd("NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 -2 1\nencoding: raw\n\n1234"); }, "negative");
   expect_bad_input([] { nrrd("NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 0 1\nencoding: raw\n\n1234"); }, "size 0");

@@ -3,6 +3,7 @@
 //
 // Wiring only: formats/ recognises, reads and writes; this file maps flags onto it.
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -33,11 +34,30 @@ struct Options {
   bool compress = false;
   bool half = false;
   std::string volume_type;
+  bool rescale = false;
+  long frame = -1;  // --frame K: one frame of a 4-D series; -1: all
   int draco_bits = 0;
   int draco_speed = 5;
 };
 
 const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
+
+// The range of values a type holds, as the clipping warning states it.
+std::string type_range(ScalarType t) {
+  switch (t) {
+    case ScalarType::u8: return "0..255";
+    case ScalarType::i8: return "-128..127";
+    case ScalarType::u16: return "0..65535";
+    case ScalarType::i16: return "-32768..32767";
+    case ScalarType::u32: return "0..4294967295";
+    case ScalarType::i32: return "-2147483648..2147483647";
+    case ScalarType::u64: return "0..18446744073709551615";
+    case ScalarType::i64: return "-9223372036854775808..9223372036854775807";
+    case ScalarType::f32: return fmt::format("-{}..{}", std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
+    case ScalarType::f64: break;
+  }
+  return "of float64";
+}
 
 // What is known about the input before its content is parsed.
 nlohmann::json file_facts(const Input& in) {
@@ -82,19 +102,7 @@ std::string convert(const Input& in, Format to, const Options& opt) {
       w.exr_half = opt.half;
       return write_image(parse(in, read_image), to, w);
     }
-    case Kind::volume: {
-      VolumeWriteOptions w;
-      w.compress = opt.compress;
-      if (!opt.volume_type.empty()) {
-        ScalarType t;
-        if (!parse_scalar_type(opt.volume_type, t))
-          throw usage_error("--type: unknown value type '{}' (uint8, int8, uint16, int16, uint32, int32, "
-                            "uint64, int64, float32, float64)",
-                            opt.volume_type);
-        w.type = t;
-      }
-      return write_volume(parse(in, read_volume), to, w);
-    }
+    case Kind::volume: throw usage_error("internal: volumes are converted by convert_volume");
     case Kind::dataset: {
       DatasetWriteOptions w;
       w.ascii = opt.ascii;
@@ -104,6 +112,36 @@ std::string convert(const Input& in, Format to, const Options& opt) {
     case Kind::json: return write_json(parse(in, read_json_document));
   }
   throw usage_error("unsupported conversion");
+}
+
+// Volumes: --frame picks one frame, --type/--rescale convert values (warning with the
+// count of values clipped to the type's range), and a .hdr/.img pair is two files.
+void convert_volume(const Input& in, const OutputFormat& out, const Options& opt) {
+  VolumeWriteOptions w;
+  w.compress = opt.compress;
+  if (!opt.volume_type.empty()) {
+    ScalarType t;
+    if (!parse_scalar_type(opt.volume_type, t))
+      throw usage_error("--type: unknown value type '{}' (uint8, int8, uint16, int16, uint32, int32, "
+                        "uint64, int64, float32, float64)",
+                        opt.volume_type);
+    w.type = t;
+  }
+  if (opt.rescale && (!w.type || !scalar_type_is_integer(*w.type)))
+    throw usage_error("--rescale maps values onto an integer type's range: give --type uint8, int16, ...");
+  Volume v = parse(in, read_volume);
+  if (opt.frame >= 0) v = v.frame(static_cast<std::size_t>(opt.frame));
+  if (opt.rescale) rescale_to_type(v, *w.type);
+  if (w.type) {
+    const ValueConversion c = count_clipped(v, *w.type);
+    if (c.clipped > 0) {
+      const ScalarType t = *w.type;
+      const std::string range = type_range(t);
+      fest::warn("fconv", fmt::format("{} of {} values clipped to the {} range {}{}", c.clipped, c.total,
+                                      scalar_type_name(t), range, opt.rescale ? "" : " (--rescale maps the input range onto it)"));
+    }
+  }
+  store_volume(opt.output, v, out, w);
 }
 
 int run(const Options& opt) {
@@ -123,7 +161,14 @@ int run(const Options& opt) {
     throw usage_error("cannot convert {} {} ({}) to {}, which is {} {} format", article(kind_of(in.format)),
                       kind_name(kind_of(in.format)), format_name(in.format), format_name(out.format),
                       article(kind_of(out.format)), kind_name(kind_of(out.format)));
+  if (opt.frame >= 0 && kind_of(in.format) != Kind::volume)
+    throw usage_error("--frame picks a frame of a 4-D volume; the input is {} {}", article(kind_of(in.format)),
+                      kind_name(kind_of(in.format)));
   // Convert completely before writing anything: bad input leaves no partial output.
+  if (kind_of(in.format) == Kind::volume) {
+    convert_volume(in, out, opt);
+    return 0;
+  }
   const std::string bytes = convert(in, out.format, opt);
   store_output(opt.output, bytes, out.gzip);
   return 0;
@@ -141,12 +186,17 @@ int main(int argc, char** argv) {
   app.add_option("input", opt.input, "Input file, or - for standard input")->default_val("-");
   app.add_option("-o,--output", opt.output, "Output file, or - for standard output")->default_val("-");
   app.add_option("--to", opt.to,
-                 "Output format: ply obj off stl drc | png pgm ppm pam pfm exr tiff | nifti (nii) nrrd mha | "
+                 "Output format: ply obj off stl drc | png pgm ppm pam pfm exr tiff | nifti (nii) nifti2 hdr mgh mgz nrrd mha | "
                  "vtu vti vtp vtk | csv tsv json; append .gz to compress (nii.gz)");
   app.add_flag("--info", opt.info, "Print the input's metadata as JSON instead of converting");
   app.add_flag("--ascii", opt.ascii, "Text variant where the format has one (PLY, STL, PGM/PPM, VTK)");
   app.add_flag("--compress", opt.compress, "Compress the data inside NRRD (gzip) and MHA (zlib) files");
-  app.add_option("--type", opt.volume_type, "Volume value type to write (uint8 ... float64)");
+  app.add_option("--type", opt.volume_type,
+                 "Volume value type to write (uint8 ... float64); values outside its range are clipped, with a warning");
+  app.add_flag("--rescale", opt.rescale,
+               "With an integer --type: map the input's value range linearly onto the type's full range");
+  app.add_option("--frame", opt.frame, "Volume: write only frame K (0-based) of a 4-D series, as a 3-D volume")
+      ->check(CLI::Range(0L, 1L << 31));
   app.add_flag("--half", opt.half, "EXR: 16-bit half channels instead of 32-bit float");
   app.add_option("--draco-bits", opt.draco_bits, "Draco position quantization bits (0 = lossless)")
       ->check(CLI::Range(0, 30));

@@ -73,6 +73,7 @@ std::vector<Frame> load_frames(const std::string& path) {
   Frame f;
   if (kind == formats::Kind::volume) {
     const Volume v = formats::parse(in, formats::read_volume);
+    v.require_3d("fluidsim render");
     f.dim = v.dims[2] == 1 ? 2 : 3;
     f.size = {static_cast<int>(v.dims[0]), static_cast<int>(v.dims[1]), static_cast<int>(v.dims[2])};
     f.spacing = v.spacing[0];

@@ -143,7 +143,9 @@ Volume read_volume_input(const std::string& path) {
   formats::Input in = formats::load_input(path);
   if (formats::kind_of(in.format) != formats::Kind::volume)
     throw bad_input("expected a volume (NIfTI, NRRD, MHA), got {} ({})", formats::format_name(in.format), in.name);
-  return formats::parse(in, formats::read_volume);
+  Volume v = formats::parse(in, formats::read_volume);
+  v.require_3d(fmt::format("segbrain ({})", in.name).c_str());
+  return v;
 }
 
 void write_volume_output(const Volume& v, const std::string& path, const std::string& to) {
@@ -151,7 +153,7 @@ void write_volume_output(const Volume& v, const std::string& path, const std::st
   if (!to.empty()) of = formats::output_format_from_name(to);
   else if (!is_stdio(path)) of = formats::output_format_from_path(path);
   if (formats::kind_of(of.format) != formats::Kind::volume) throw usage_error("--to: not a volume format");
-  formats::store_output(path, formats::write_volume(v, of.format), of.gzip);
+  formats::store_volume(path, v, of);
 }
 
 // Label volume in the input's voxel order and geometry.

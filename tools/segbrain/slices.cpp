@@ -25,7 +25,9 @@ Volume read_any_volume(const std::string& path) {
   formats::Input in = formats::load_input(path);
   if (formats::kind_of(in.format) != formats::Kind::volume)
     throw bad_input("expected a volume (NIfTI, NRRD, MHA), got {} ({})", formats::format_name(in.format), in.name);
-  return formats::parse(in, formats::read_volume);
+  Volume v = formats::parse(in, formats::read_volume);
+  v.require_3d(fmt::format("segbrain slices ({})", in.name).c_str());
+  return v;
 }
 
 // One panel: canonical axes (u, v) of the slice `fixed` = `at`, u to the right, v up,
