@@ -39,3 +39,8 @@ find_package(OpenSSL REQUIRED COMPONENTS Crypto)
 find_package(OpenCV 4 REQUIRED COMPONENTS videoio)
 # capture calib-*: chessboard corners, Zhang's calibration, solvePnP (lib/capture calib).
 find_package(OpenCV 4 REQUIRED COMPONENTS calib3d)
+# markerpose: the benchmark's anchors only (tests/bench/bench_markerpose): OpenCV's ArUco
+# detector (libopencv-contrib-dev) and AprilTag 3 (libapriltag-dev). The tool itself needs
+# neither; the benchmark is skipped when they are absent.
+find_package(OpenCV 4 QUIET COMPONENTS aruco)
+pkg_check_modules(APRILTAG IMPORTED_TARGET apriltag>=3)
