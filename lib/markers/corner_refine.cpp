@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <opencv2/calib3d.hpp>
+
 namespace fest::markers {
 
 namespace {
@@ -52,9 +54,32 @@ bool intersect(const Line& a, const Line& b, cv::Point2d& out) {
   return true;
 }
 
+// Distorted pixels -> ideal pixels (the same K, no distortion).
+void undistort_in_place(std::vector<EdgePoint>& pts, const CameraModel& cam) {
+  std::vector<cv::Point2d> in, out;
+  for (const EdgePoint& e : pts) in.push_back(e.p);
+  cv::undistortPoints(in, out, cv::Mat(cam.K), cv::Mat(cam.dist), cv::noArray(), cv::Mat(cam.K),
+                      cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 30, 1e-12));
+  for (std::size_t i = 0; i < pts.size(); ++i) pts[i].p = out[i];
+}
+
+// Ideal pixels -> distorted pixels.
+void distort_in_place(Corners& c, const CameraModel& cam) {
+  const cv::Matx33d Kinv = cam.K.inv();
+  std::vector<cv::Point3d> rays;
+  for (const cv::Point2d& p : c) {
+    const cv::Vec3d r = Kinv * cv::Vec3d(p.x, p.y, 1);
+    rays.emplace_back(r[0] / r[2], r[1] / r[2], 1);
+  }
+  std::vector<cv::Point2d> out;
+  cv::projectPoints(rays, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), cv::Mat(cam.K), cv::Mat(cam.dist), out);
+  for (int i = 0; i < 4; ++i) c[i] = out[i];
+}
+
 }  // namespace
 
-bool refine_corners(const cv::Mat& grey8, Corners& corners, int cells, int passes) {
+bool refine_corners(const cv::Mat& grey8, Corners& corners, int cells, const CameraModel* camera, int passes) {
+  const bool distorted = camera && camera->has_distortion();
   const double w = grey8.cols - 1.001, h = grey8.rows - 1.001;
   for (int pass = 0; pass < passes; ++pass) {
     std::array<Line, 4> lines;
@@ -94,13 +119,17 @@ bool refine_corners(const cv::Mat& grey8, Corners& corners, int cells, int passe
           if (dist <= reach && g[j] > best_g) best_g = g[j], best = j;
         }
         if (best_g < 4 || best <= lag || best + lag >= static_cast<int>(prof.size()) - 1) continue;
-        const double gm = g[best - 1], g0 = g[best], gp = g[best + 1];
-        const double denom = gm - 2 * g0 + gp;
-        const double offset = denom < 0 ? 0.5 * (gm - gp) / denom : 0.0;
-        const double pos = ((best - half) + std::clamp(offset, -0.5, 0.5)) * step;
+        // Centroid of the derivative over +-1 px around its peak (less pixel-locking than
+        // a parabola through bilinear samples).
+        const int span = static_cast<int>(1.0 / step);
+        double sw = 0, sj = 0;
+        for (int j = std::max(lag, best - span); j <= std::min(static_cast<int>(prof.size()) - 1 - lag, best + span); ++j)
+          if (g[j] > 0.2 * best_g) sw += g[j] - 0.2 * best_g, sj += (g[j] - 0.2 * best_g) * j;
+        const double pos = (sj / sw - half) * step;
         pts.push_back({base + pos * out, best_g});
       }
       if (pts.size() < 4) return false;
+      if (distorted) undistort_in_place(pts, *camera);
       Line line = fit_line(pts);
       // Drop points off the line (occluders, data cells) and fit again.
       std::vector<EdgePoint> kept;
@@ -114,6 +143,7 @@ bool refine_corners(const cv::Mat& grey8, Corners& corners, int cells, int passe
     Corners next;
     for (int c = 0; c < 4; ++c)
       if (!intersect(lines[(c + 3) % 4], lines[c], next[c])) return false;
+    if (distorted) distort_in_place(next, *camera);
     // A corner that jumps by more than a cell means the fit followed something else.
     for (int c = 0; c < 4; ++c) {
       const double side = cv::norm(corners[(c + 1) % 4] - corners[c]);

@@ -77,7 +77,7 @@ bool identify_binary(const cv::Mat& grey8, const Corners& quad, const DetectorOp
   const double threshold = otsu(v, dark, light);
   if (light - dark < o.min_contrast) return false;
   int border_white = 0, border = 0;
-  std::uint64_t code = 0;
+  std::uint64_t code = 0, uncertain = 0;
   for (int r = 0; r < cells; ++r)
     for (int c = 0; c < cells; ++c) {
       const bool white = v[r * cells + c] > threshold;
@@ -86,10 +86,12 @@ bool identify_binary(const cv::Mat& grey8, const Corners& quad, const DetectorOp
         border_white += white;
       } else {
         code = (code << 1) | (white ? 1u : 0u);
+        // A printed cell is black or white: a grey one (occluder, texture) is an erasure.
+        uncertain = (uncertain << 1) | (std::abs(v[r * cells + c] - threshold) < o.uncertain_margin * (light - dark));
       }
     }
   if (border_white > o.max_border_errors * border) return false;
-  const Decoded d = decode(dict, code);
+  const Decoded d = decode(dict, code, uncertain);
   if (d.id < 0) return false;
   out.id = d.id;
   out.bit_errors = d.bit_errors;
@@ -157,7 +159,7 @@ std::vector<Detection> detect_markers(const cv::Mat& grey8, const DetectorOption
     // corners: identified still, with a coarser pose.
     if (o.refine_corners) {
       Corners refined = quad;
-      if (refine_corners(grey8, refined, cells)) quad = refined;
+      if (refine_corners(grey8, refined, cells, o.camera)) quad = refined;
     }
     Detection d;
     const bool ok = o.dictionary ? identify_binary(grey8, quad, o, d) : identify_pattern(grey8, quad, o, d);

@@ -21,7 +21,10 @@ struct DetectorOptions {
   double min_pattern_ncc = 0.75;      // pattern markers: correlation needed
   double max_border_errors = 0.2;     // fraction of border cells allowed to read white
   double min_contrast = 12;           // grey levels between the dark and light cells
+  double uncertain_margin = 0.25;     // cells this close to the threshold (fraction of the
+                                      // contrast) are erasures in the decoding
   bool refine_corners = true;
+  const CameraModel* camera = nullptr;  // lens distortion for the edge fit (optional)
 };
 
 struct Detection {

@@ -87,13 +87,13 @@ std::uint64_t rotate_code_ccw(std::uint64_t code, int n) {
   return out;
 }
 
-Decoded decode(const Dictionary& dict, std::uint64_t sampled) {
+Decoded decode(const Dictionary& dict, std::uint64_t sampled, std::uint64_t uncertain) {
   Decoded best;
   int best_errors = dict.bits * dict.bits + 1;
-  std::uint64_t grid = sampled;
+  std::uint64_t grid = sampled, mask = ~uncertain;
   for (int k = 0; k < 4; ++k) {
     for (std::size_t i = 0; i < dict.codes.size(); ++i) {
-      const int e = popcount(grid ^ dict.codes[i]);
+      const int e = popcount((grid ^ dict.codes[i]) & mask);
       if (e < best_errors) {
         best_errors = e;
         best.id = static_cast<int>(i);
@@ -101,9 +101,13 @@ Decoded decode(const Dictionary& dict, std::uint64_t sampled) {
       }
     }
     grid = rotate_code_ccw(grid, dict.bits);
+    mask = rotate_code_ccw(mask & ((1ull << (dict.bits * dict.bits)) - 1), dict.bits) |
+           ~((1ull << (dict.bits * dict.bits)) - 1);
   }
   best.bit_errors = best_errors;
-  if (best_errors > dict.max_correction) best.id = -1;
+  best.erasures = popcount(uncertain);
+  if (best_errors > dict.max_correction || 2 * best_errors + best.erasures >= std::max(1, dict.min_distance))
+    best.id = -1;
   return best;
 }
 

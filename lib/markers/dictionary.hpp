@@ -33,8 +33,12 @@ struct Decoded {
   int id = -1;         // -1: no code within the correction radius
   int rotation = 0;    // k: the sampled grid rotated ccw k times equals the code
   int bit_errors = 0;
+  int erasures = 0;
 };
 
-Decoded decode(const Dictionary& dict, std::uint64_t sampled);
+// `uncertain` marks cells read too close to the threshold: they are erasures, left out of
+// the comparison. Accepted when errors <= max_correction and 2 errors + erasures <
+// min_distance (the errors-and-erasures bound of a code of that distance).
+Decoded decode(const Dictionary& dict, std::uint64_t sampled, std::uint64_t uncertain = 0);
 
 }  // namespace fest::markers

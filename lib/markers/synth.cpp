@@ -113,22 +113,34 @@ cv::Mat render_scene(const CameraModel& camera, const std::vector<PlacedMarker>&
     const cv::Vec3d n(m.pose.R(0, 2), m.pose.R(1, 2), m.pose.R(2, 2));
     const double nt = n.dot(m.pose.t);
     const cv::Matx33d Rt = m.pose.R.t();
-    std::vector<cv::Point2d> samples, rays;
+    // Rays through the pixel corners of the box (undistorted once per corner); the 4 x 4
+    // samples inside a pixel interpolate them bilinearly (distortion is smooth at that scale).
+    const int gw = ix1 - ix0 + 2, gh = iy1 - iy0 + 2;
+    std::vector<cv::Point2d> grid, rays_grid;
+    grid.reserve(static_cast<std::size_t>(gw) * gh);
+    for (int y = 0; y < gh; ++y)
+      for (int x = 0; x < gw; ++x) grid.emplace_back(ix0 + x - 0.5, iy0 + y - 0.5);
+    if (camera.has_distortion()) {
+      cv::undistortPoints(grid, rays_grid, cv::Mat(camera.K), cv::Mat(camera.dist), cv::noArray(), cv::noArray(),
+                          cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 30, 1e-12));
+    } else {
+      rays_grid.resize(grid.size());
+      for (std::size_t i = 0; i < grid.size(); ++i) {
+        const cv::Vec3d r = Kinv * cv::Vec3d(grid[i].x, grid[i].y, 1);
+        rays_grid[i] = cv::Point2d(r[0] / r[2], r[1] / r[2]);
+      }
+    }
+    std::vector<cv::Point2d> rays;
     for (int y = iy0; y <= iy1; ++y) {
-      samples.clear();
-      for (int x = ix0; x <= ix1; ++x)
+      rays.clear();
+      for (int x = ix0; x <= ix1; ++x) {
+        const std::size_t g = static_cast<std::size_t>(y - iy0) * gw + (x - ix0);
+        const cv::Point2d r00 = rays_grid[g], r01 = rays_grid[g + 1], r10 = rays_grid[g + gw], r11 = rays_grid[g + gw + 1];
         for (int sy = 0; sy < k_supersample; ++sy)
-          for (int sx = 0; sx < k_supersample; ++sx)
-            samples.emplace_back(x - 0.5 + (sx + 0.5) / k_supersample, y - 0.5 + (sy + 0.5) / k_supersample);
-      if (camera.has_distortion()) {
-        cv::undistortPoints(samples, rays, cv::Mat(camera.K), cv::Mat(camera.dist), cv::noArray(), cv::noArray(),
-                            cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 30, 1e-12));
-      } else {
-        rays.resize(samples.size());
-        for (std::size_t i = 0; i < samples.size(); ++i) {
-          const cv::Vec3d r = Kinv * cv::Vec3d(samples[i].x, samples[i].y, 1);
-          rays[i] = cv::Point2d(r[0] / r[2], r[1] / r[2]);
-        }
+          for (int sx = 0; sx < k_supersample; ++sx) {
+            const double fx = (sx + 0.5) / k_supersample, fy = (sy + 0.5) / k_supersample;
+            rays.push_back((1 - fy) * ((1 - fx) * r00 + fx * r01) + fy * ((1 - fx) * r10 + fx * r11));
+          }
       }
       std::size_t i = 0;
       for (int x = ix0; x <= ix1; ++x) {
@@ -188,8 +200,13 @@ Pose pose_facing(const CameraModel& camera, double u, double v, double distance,
                  double roll_deg) {
   const cv::Vec3d r0 = camera.K.inv() * cv::Vec3d(u, v, 1);
   const cv::Vec3d ray = r0 / cv::norm(r0);
-  // Facing the camera: marker z towards the camera (-z_cam), x right, y up (-y_cam).
-  const cv::Matx33d facing(1, 0, 0, 0, -1, 0, 0, 0, -1);
+  // Facing the camera: marker z along -ray (towards the centre of projection), x as near
+  // the camera's x as possible, y = z x x (up in the image).
+  const cv::Vec3d z = -ray;
+  cv::Vec3d x = cv::Vec3d(1, 0, 0) - z[0] * z;
+  x /= cv::norm(x);
+  const cv::Vec3d y = z.cross(x);
+  const cv::Matx33d facing(x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]);
   const double a = axis_deg * M_PI / 180;
   const cv::Matx33d tilt = rotation_from_vector(cv::Vec3d(std::cos(a), std::sin(a), 0) * (tilt_deg * M_PI / 180));
   const cv::Matx33d roll = rotation_from_vector(cv::Vec3d(0, 0, roll_deg * M_PI / 180));

@@ -56,7 +56,8 @@ cv::Mat draw_marker(const Dictionary& dict, int id, int pixels_per_cell, int qui
 
 // Pose with the marker centre at `distance` along a ray through the image point (u, v)
 // (ideal pixels), turned by `tilt_deg` about an in-plane axis at angle `axis_deg`, and by
-// `roll_deg` about its normal; the marker faces the camera at tilt 0.
+// `roll_deg` about its normal. At tilt 0 the marker faces the centre of projection, so
+// the tilt is the viewing angle (between the marker's normal and the line of sight).
 Pose pose_facing(const CameraModel& camera, double u, double v, double distance, double tilt_deg, double axis_deg,
                  double roll_deg);
 
