@@ -95,21 +95,28 @@ bool refine_corners(const cv::Mat& grey8, Corners& corners, int cells, const Cam
       const double reach = std::clamp(0.4 * cell, 1.0, pass == 0 ? 6.0 : 3.0);
       const double step = 0.25;
       const int half = static_cast<int>(std::ceil((reach + 1) / step));
-      const int samples = std::clamp(static_cast<int>(len / 1.5), 6, 48);
+      const int samples = std::clamp(static_cast<int>(len / 1.5), 6, 64);
       std::vector<EdgePoint> pts;
       std::vector<float> prof(2 * half + 1);
       for (int k = 0; k < samples; ++k) {
         const double t = 0.12 + 0.76 * (k + 0.5) / samples;
         const cv::Point2d base = a + t * len * dir;
+        // Five parallel profiles half a pixel apart along the edge, averaged: the edge
+        // is straight there, the noise is not.
         bool inside = true;
         for (int j = -half; j <= half && inside; ++j) {
-          const cv::Point2d q = base + (j * step) * out;
-          if (q.x < 0 || q.y < 0 || q.x > w || q.y > h) inside = false;
-          else prof[j + half] = sample(grey8, q.x, q.y);
+          float sum = 0;
+          for (int lane = -2; lane <= 2 && inside; ++lane) {
+            const cv::Point2d q = base + (j * step) * out + (0.5 * lane) * dir;
+            if (q.x < 0 || q.y < 0 || q.x > w || q.y > h) inside = false;
+            else sum += sample(grey8, q.x, q.y);
+          }
+          prof[j + half] = sum / 5;
         }
         if (!inside) continue;
-        // Derivative outward over one pixel (central difference at +-0.5 px).
-        const int lag = static_cast<int>(0.5 / step);
+        // Derivative outward over 1.5 pixels (central difference at +-0.75 px: smoother
+        // than the one-pixel difference, matched to blurred edges).
+        const int lag = static_cast<int>(0.75 / step);
         int best = 0;
         double best_g = 0;
         std::vector<double> g(prof.size(), 0);
@@ -131,13 +138,26 @@ bool refine_corners(const cv::Mat& grey8, Corners& corners, int cells, const Cam
       if (pts.size() < 4) return false;
       if (distorted) undistort_in_place(pts, *camera);
       Line line = fit_line(pts);
-      // Drop points off the line (occluders, data cells) and fit again.
-      std::vector<EdgePoint> kept;
-      const cv::Point2d normal(-line.dir.y, line.dir.x);
-      for (const EdgePoint& e : pts)
-        if (std::abs((e.p - line.point).dot(normal)) < std::max(0.5, 0.15 * cell)) kept.push_back(e);
-      if (kept.size() >= 4 && kept.size() < pts.size()) line = fit_line(kept);
-      else if (kept.size() < 4) return false;
+      // Drop points off the line (occluders, data cells, noise peaks) and fit again, twice:
+      // first beyond a fixed bound, then beyond 3 robust sigmas (1.4826 MAD) of the rest.
+      for (int round = 0; round < 2; ++round) {
+        const cv::Point2d normal(-line.dir.y, line.dir.x);
+        std::vector<double> res;
+        for (const EdgePoint& e : pts) res.push_back(std::abs((e.p - line.point).dot(normal)));
+        double bound = std::max(0.5, 0.15 * cell);
+        if (round == 1) {
+          std::vector<double> sorted = res;
+          std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+          bound = std::min(bound, std::max(0.05, 3 * 1.4826 * sorted[sorted.size() / 2]));
+        }
+        std::vector<EdgePoint> kept;
+        for (std::size_t k = 0; k < pts.size(); ++k)
+          if (res[k] < bound) kept.push_back(pts[k]);
+        if (kept.size() < 4) return false;
+        if (kept.size() == pts.size()) break;
+        pts = std::move(kept);
+        line = fit_line(pts);
+      }
       lines[s] = line;
     }
     Corners next;

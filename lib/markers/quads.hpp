@@ -15,7 +15,8 @@ namespace fest::markers {
 struct QuadOptions {
   double min_side_px = 6;                  // shortest side of a candidate
   double max_side_fraction = 0.95;         // longest side, as a fraction of the image's larger side
-  std::vector<int> windows{5, 13, 31, 71}; // adaptive-threshold windows (odd pixels)
+  std::vector<int> windows{7, 41};         // adaptive-threshold windows (full-resolution pixels)
+  int half_resolution_window = 41;         // windows from this size threshold the half-size image
   double threshold_offset = 7;             // a pixel is dark when below the local mean minus this
   double polygon_epsilon = 0.04;           // polygon fit tolerance, fraction of the perimeter
 };
