@@ -86,11 +86,18 @@ Corners project_corners(const CameraModel& camera, const Pose& pose, double side
 }
 
 cv::Mat render_scene(const CameraModel& camera, const std::vector<PlacedMarker>& markers, const Degradation& d,
-                     std::uint64_t seed) {
+                     std::uint64_t seed, const cv::Mat& photo) {
   const int w = camera.width, h = camera.height;
   if (w <= 0 || h <= 0) throw bad_input("camera size {}x{} is not positive", w, h);
   Rng rng(seed);
-  cv::Mat img = background(w, h, d, rng);
+  cv::Mat img;
+  if (photo.empty()) {
+    img = background(w, h, d, rng);
+  } else {
+    if (photo.type() != CV_8UC1 || photo.cols != w || photo.rows != h)
+      throw bad_input("background photo is {}x{}, the camera {}x{}", photo.cols, photo.rows, w, h);
+    photo.convertTo(img, CV_32F);
+  }
   const cv::Matx33d Kinv = camera.K.inv();
   for (const PlacedMarker& m : markers) {
     // Occluder in cell units over the interior (never the border: a broken border is a

@@ -43,9 +43,10 @@ struct Degradation {
   bool clutter = true;             // textured background with dark rectangles (distractors)
 };
 
-// 8-bit grey image of camera.width x camera.height.
+// 8-bit grey image of camera.width x camera.height. A `photo` (8-bit grey, the camera's
+// size) replaces the synthetic background: a marker "printed" into a real scene.
 cv::Mat render_scene(const CameraModel& camera, const std::vector<PlacedMarker>& markers, const Degradation& d,
-                     std::uint64_t seed);
+                     std::uint64_t seed, const cv::Mat& photo = cv::Mat());
 
 // The marker's four outer corners projected through the camera (with distortion), in
 // detection order (top-left, top-right, bottom-right, bottom-left).

@@ -46,6 +46,7 @@ struct GenOptions {
   int frames = 1;
   double black = 20, white = 235, gradient = 0, occlusion = 0, blur = 0, noise = 0;
   bool clutter = true;
+  std::string background;  // a photograph (the camera's size) instead of the synthetic background
   std::uint64_t seed = 1;
   std::string output = "-";  // image; several frames: a pattern with %d, or one stream (PNG/PGM)
   std::string to;            // png or pgm (standard output / stream)

@@ -100,7 +100,11 @@ int detect_command(const DetectOptions& o) {
     det.patterns = &patterns;
     det.min_pattern_ncc = o.min_ncc;
   } else {
-    det.dictionary = &markers::dictionary(o.dict);
+    try {
+      det.dictionary = &markers::dictionary(o.dict);
+    } catch (const Error& e) {
+      throw Error(Status::usage, std::string("--dict: ") + e.what());
+    }
   }
   det.camera = &camera;
   det.quads.min_side_px = o.min_side_px;

@@ -60,6 +60,15 @@ json truth_json(const markers::CameraModel& cam, const markers::PlacedMarker& m,
           {"R", R},           {"side_px", side_px}};
 }
 
+// A dictionary name or marker id from a flag: a usage error when wrong.
+markers::MarkerArt art_from_flags(const std::string& dict, int id) {
+  try {
+    return markers::binary_art(markers::dictionary(dict), id);
+  } catch (const Error& e) {
+    throw Error(Status::usage, fmt::format("--dict {} --id {}: {}", dict, id, e.what()));
+  }
+}
+
 }  // namespace
 
 int gen_command(const GenOptions& o) {
@@ -77,7 +86,7 @@ int gen_command(const GenOptions& o) {
     m.art.picture = decode_grey(f);
     m.art.quiet_zone = 0;
   } else {
-    m.art = markers::binary_art(markers::dictionary(o.dict), o.id);
+    m.art = art_from_flags(o.dict, o.id);
   }
   markers::Degradation d;
   d.black = o.black;
@@ -87,6 +96,16 @@ int gen_command(const GenOptions& o) {
   d.blur_sigma = o.blur;
   d.noise_sigma = o.noise;
   d.clutter = o.clutter;
+  cv::Mat photo;
+  if (!o.background.empty()) {
+    FrameSource f;
+    f.name = o.background;
+    f.bytes = read_input(o.background);
+    photo = decode_grey(f);
+    if (photo.cols != cam.width || photo.rows != cam.height)
+      throw bad_input("the background is {}x{} but the camera is {}x{} ({})", photo.cols, photo.rows, cam.width,
+                      cam.height, o.background);
+  }
   const bool pattern_name = o.output.find("%d") != std::string::npos;
   const bool stream = o.frames > 1 && !pattern_name;
   const formats::Format fmt = image_format(o.output, o.to, stream);
@@ -97,7 +116,7 @@ int gen_command(const GenOptions& o) {
   for (int i = 0; i < o.frames; ++i) {
     const double u = (o.u < 0 ? cam.K(0, 2) : o.u) + i * o.u_step, v = o.v < 0 ? cam.K(1, 2) : o.v;
     m.pose = markers::pose_facing(cam, u, v, o.distance, o.tilt + i * o.tilt_step, o.axis, o.roll + i * o.roll_step);
-    const cv::Mat img = markers::render_scene(cam, {m}, d, o.seed + static_cast<std::uint64_t>(i));
+    const cv::Mat img = markers::render_scene(cam, {m}, d, o.seed + static_cast<std::uint64_t>(i), photo);
     const std::string bytes = encode(img, fmt);
     if (o.frames == 1) {
       stream_bytes = bytes;
@@ -117,6 +136,7 @@ int gen_command(const GenOptions& o) {
 }
 
 int draw_command(const DrawOptions& o) {
+  art_from_flags(o.dict, o.id);  // checks both flags
   const cv::Mat img = markers::draw_marker(markers::dictionary(o.dict), o.id, o.cell_px, o.quiet_cells);
   const formats::Format f =
       is_stdio(o.output) ? formats::output_format_from_name("png").format : formats::output_format_from_path(o.output).format;

@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
   g->add_option("--blur", gen.blur, "Gaussian blur sigma, pixels")->check(CLI::Range(0.0, 50.0));
   g->add_option("--noise", gen.noise, "Gaussian noise sigma, grey levels")->check(CLI::Range(0.0, 100.0));
   g->add_flag("!--no-clutter", gen.clutter, "Plain background instead of a textured, cluttered one");
+  g->add_option("--background", gen.background, "A photograph of the camera's size as the background");
   g->add_option("--seed", gen.seed, "Random seed (background, noise, occluder)");
   g->add_option("-o,--output", gen.output, "Image; several frames: a name with %d, or one PNG/PGM stream");
   g->add_option("--to", gen.to, "png or pgm")->check(CLI::IsMember({"png", "pgm"}));
