@@ -26,33 +26,64 @@ reflectance::PinholeCamera pinhole(const CameraModel& c, const Pose& pose) {
   return p;
 }
 
-// For every pixel of the distorted image, the ideal-image pixel that shows the same ray
-// (rounded to the nearest pixel centre); -1 outside the ideal image.
-std::vector<int> ideal_lookup(const CameraModel& c) {
-  std::vector<int> lut(static_cast<std::size_t>(c.width) * c.height);
+// The ideal (undistorted) image that covers every ray the real image sees: its camera
+// (principal point shifted by the margin) and, for every pixel of the distorted image,
+// the index of the ideal pixel that shows the same ray (nearest pixel centre). A barrel
+// lens sees rays beyond the ideal image of the same size, hence the margin.
+struct IdealView {
+  int width = 0, height = 0;
+  double shift_x = 0, shift_y = 0;
+  std::vector<int> lookup;
+};
+
+IdealView ideal_view(const CameraModel& c) {
+  IdealView v;
+  v.lookup.resize(static_cast<std::size_t>(c.width) * c.height);
   if (!c.has_distortion()) {
-    for (std::size_t i = 0; i < lut.size(); ++i) lut[i] = static_cast<int>(i);
-    return lut;
+    v.width = c.width;
+    v.height = c.height;
+    for (std::size_t i = 0; i < v.lookup.size(); ++i) v.lookup[i] = static_cast<int>(i);
+    return v;
   }
   std::vector<cv::Point2d> px, ideal;
-  px.reserve(lut.size());
+  px.reserve(v.lookup.size());
   for (int y = 0; y < c.height; ++y)
     for (int x = 0; x < c.width; ++x) px.emplace_back(x, y);
   cv::undistortPoints(px, ideal, cv::Mat(c.K), cv::Mat(c.dist), cv::noArray(), cv::Mat(c.K),
-                      cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 20, 1e-9));
-  for (std::size_t i = 0; i < lut.size(); ++i) {
-    const int x = static_cast<int>(std::lround(ideal[i].x)), y = static_cast<int>(std::lround(ideal[i].y));
-    lut[i] = x < 0 || y < 0 || x >= c.width || y >= c.height ? -1 : y * c.width + x;
+                      cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 30, 1e-12));
+  double x0 = 0, y0 = 0, x1 = c.width - 1, y1 = c.height - 1;
+  for (const cv::Point2d& p : ideal) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  // Bounded: a lens model that folds rays far outside is not worth a huge buffer.
+  x0 = std::max(x0, -1.0 * c.width), y0 = std::max(y0, -1.0 * c.height);
+  x1 = std::min(x1, 2.0 * c.width), y1 = std::min(y1, 2.0 * c.height);
+  v.shift_x = -std::floor(x0);
+  v.shift_y = -std::floor(y0);
+  v.width = static_cast<int>(std::ceil(x1) + v.shift_x) + 1;
+  v.height = static_cast<int>(std::ceil(y1) + v.shift_y) + 1;
+  for (std::size_t i = 0; i < v.lookup.size(); ++i) {
+    const long x = std::lround(ideal[i].x + v.shift_x), y = std::lround(ideal[i].y + v.shift_y);
+    v.lookup[i] = x < 0 || y < 0 || x >= v.width || y >= v.height ? -1 : static_cast<int>(y * v.width + x);
   }
-  return lut;
+  return v;
+}
+
+reflectance::PinholeCamera ideal_camera(const CameraModel& c, const Pose& pose, const IdealView& v) {
+  reflectance::PinholeCamera p = pinhole(c, pose);
+  p.cx += v.shift_x;
+  p.cy += v.shift_y;
+  p.width = v.width;
+  p.height = v.height;
+  return p;
 }
 
 }  // namespace
 
 std::vector<std::uint8_t> overlay_mask(const reflectance::TriangleMesh& mesh, const CameraModel& camera,
                                        const Pose& pose, int threads) {
-  const std::vector<std::uint8_t> ideal = reflectance::rasterize_silhouette(mesh, pinhole(camera, pose), threads);
-  const std::vector<int> lut = ideal_lookup(camera);
+  const IdealView view = ideal_view(camera);
+  const std::vector<std::uint8_t> ideal =
+      reflectance::rasterize_silhouette(mesh, ideal_camera(camera, pose, view), threads);
+  const std::vector<int>& lut = view.lookup;
   std::vector<std::uint8_t> out(lut.size(), 0);
   for (std::size_t i = 0; i < lut.size(); ++i) out[i] = lut[i] >= 0 ? ideal[static_cast<std::size_t>(lut[i])] : 0;
   return out;
@@ -64,9 +95,10 @@ void draw_overlay(cv::Mat& rgb8, const reflectance::TriangleMesh& mesh, const Ca
   if (poses.empty()) return;
   reflectance::TriangleMesh shaded = mesh;
   if (shaded.normals.size() != shaded.vertices.size()) reflectance::compute_vertex_normals(shaded);
-  const std::vector<int> lut = ideal_lookup(camera);
+  const IdealView view = ideal_view(camera);
+  const std::vector<int>& lut = view.lookup;
   for (const Pose& pose : poses) {
-    const reflectance::PinholeCamera cam = pinhole(camera, pose);
+    const reflectance::PinholeCamera cam = ideal_camera(camera, pose, view);
     reflectance::RasterOptions ro;
     ro.threads = style.threads;
     const reflectance::Fragments f = reflectance::rasterize(shaded, cam, ro);
