@@ -24,6 +24,8 @@ struct DetectorOptions {
   double uncertain_margin = 0.25;     // cells this close to the threshold (fraction of the
                                       // contrast) are erasures in the decoding
   bool refine_corners = true;
+  double edge_sigma = -1;  // Gaussian smoothing (px) of the image the edges are fitted on;
+                           // -1: 0.8 when image_noise() exceeds 2.5 grey levels, else none
   const CameraModel* camera = nullptr;  // lens distortion for the edge fit (optional)
 };
 
@@ -37,6 +39,9 @@ struct Detection {
 // Throws fest::Error (bad_input) when neither a dictionary nor patterns are given.
 // Detections come sorted by id, then by the top-left corner (row-major): deterministic.
 std::vector<Detection> detect_markers(const cv::Mat& grey8, const DetectorOptions& options);
+
+// Robust estimate of the image's noise sigma, grey levels (median of neighbour differences).
+double image_noise(const cv::Mat& grey8);
 
 // Mean grey of the cells of an n x n grid laid over the quad (cell (r, c) covers
 // [c, c+1] x [r, r+1] of the canonical square [0, n]^2 mapped onto the corners), from
