@@ -147,3 +147,33 @@ TEST(MarkersDetector, NothingOnRealPhotographs) {
   }
   if (images == 0) GTEST_SKIP() << "no fetched photographs under " << root;
 }
+
+TEST(MarkersDetector, SeveralMarkersInOneImageSortedById) {
+  const CameraModel cam = fest::test::camera640();
+  const Dictionary& dict = dictionary("6x6_250");
+  std::vector<PlacedMarker> ms;
+  const int ids[3] = {200, 7, 31};
+  const double us[3] = {140, 320, 500};
+  for (int k = 0; k < 3; ++k) {
+    PlacedMarker m;
+    m.art = binary_art(dict, ids[k]);
+    m.side = 0.04;
+    m.pose = pose_facing(cam, us[k], 240 + 60 * (k - 1), 0.3, 25 + 10 * k, 40 * k, 30 * k);
+    ms.push_back(m);
+  }
+  Degradation d;
+  d.noise_sigma = 2;
+  DetectorOptions o;
+  o.dictionary = &dict;
+  const std::vector<Detection> f = detect_markers(render_scene(cam, ms, d, 5), o);
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_EQ(f[0].id, 7);
+  EXPECT_EQ(f[1].id, 31);
+  EXPECT_EQ(f[2].id, 200);
+  for (const Detection& det : f) {
+    const int k = det.id == 200 ? 0 : det.id == 7 ? 1 : 2;
+    const SquarePose p = estimate_square_pose(cam, det.corners, 0.04);
+    EXPECT_LT(rotation_angle_deg(p.pose.R, ms[k].pose.R), 1.0);
+    EXPECT_LT(cv::norm(p.pose.t - ms[k].pose.t), 0.01 * cv::norm(ms[k].pose.t));
+  }
+}
