@@ -11,7 +11,8 @@
 // to it before the pose, and AprilTag's corners are shifted by half a pixel (its pixel
 // centres lie at +0.5); IDs are compared as reported.
 //
-//   build/bin/bench_markerpose [scenes_per_size]   (default 60)
+//   build/bin/bench_markerpose [scenes_per_size [aruco_refinement]]
+//   (default 60 scenes; ArUco's corner refinement subpix (default), contour, none or apriltag)
 
 #include <algorithm>
 #include <chrono>
@@ -106,7 +107,12 @@ int main(int argc, char** argv) {
   };
   cv::Ptr<cv::aruco::Dictionary> adict = cv::aruco::getPredefinedDictionary(cv::aruco::DICT_APRILTAG_36h11);
   cv::Ptr<cv::aruco::DetectorParameters> ap = cv::aruco::DetectorParameters::create();
-  ap->cornerRefinementMethod = cv::aruco::CORNER_REFINE_SUBPIX;  // the default (NONE) gives pixel corners
+  // OpenCV's default (NONE) gives contour-pixel corners; SUBPIX is the usual choice for poses.
+  const std::string refinement = argc > 2 ? argv[2] : "subpix";
+  ap->cornerRefinementMethod = refinement == "contour"    ? cv::aruco::CORNER_REFINE_CONTOUR
+                               : refinement == "none"     ? cv::aruco::CORNER_REFINE_NONE
+                               : refinement == "apriltag" ? cv::aruco::CORNER_REFINE_APRILTAG
+                                                          : cv::aruco::CORNER_REFINE_SUBPIX;
   Detector aruco_det = [&](const cv::Mat& g) {
     std::vector<std::vector<cv::Point2f>> corners;
     std::vector<int> ids;
@@ -148,7 +154,7 @@ int main(int argc, char** argv) {
     };
   };
   const std::vector<std::pair<std::string, Detector>> detectors = {
-      {"markerpose", fest_det}, {"aruco_opencv46", aruco_det}, {"apriltag3_decimate2", april(td2)},
+      {"markerpose", fest_det}, {"aruco_opencv46_" + refinement, aruco_det}, {"apriltag3_decimate2", april(td2)},
       {"apriltag3_decimate1", april(td1)}};
 
   // --- the scenes --------------------------------------------------------------------
