@@ -47,3 +47,8 @@ find_library(NIFTI2_LIBRARY nifti2 REQUIRED)
 add_library(fest_nifti2 INTERFACE)
 target_include_directories(fest_nifti2 SYSTEM INTERFACE ${NIFTI2_INCLUDE_DIR})
 target_link_libraries(fest_nifti2 INTERFACE ${NIFTI2_LIBRARY})
+# markerpose: the benchmark's anchors only (tests/bench/bench_markerpose): OpenCV's ArUco
+# detector (libopencv-contrib-dev) and AprilTag 3 (libapriltag-dev). The tool itself needs
+# neither; the benchmark is skipped when they are absent.
+find_package(OpenCV 4 QUIET COMPONENTS aruco)
+pkg_check_modules(APRILTAG IMPORTED_TARGET apriltag>=3)

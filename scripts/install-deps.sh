@@ -51,6 +51,7 @@ TEST_TOOL_PKGS=(
   openexr                    # exrheader
   gdal-bin                   # gdalinfo: TIFF
   python3-nibabel            # the independent volume reader of tests/cli/fconv_nibabel.sh; its test files are fetched as real data
+  libopencv-contrib-dev libapriltag-dev   # cv::aruco and AprilTag 3: anchors of tests/bench/bench_markerpose only
 )
 
 # --- arguments ----------------------------------------------------------------
