@@ -1,0 +1,162 @@
+#include "trace_writer.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace fest::patnet_tool {
+
+using patnet::Event;
+
+TraceWriter::TraceWriter(std::FILE* out, TraceFormat format) : out_(out), format_(format) {}
+
+std::string json_string(std::string_view s) {
+  std::string r = "\"";
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      r += '\\';
+      r += c;
+    } else if (c == '\n') {
+      r += "\\n";
+    } else if (c == '\t') {
+      r += "\\t";
+    } else if (u < 0x20) {
+      r += fmt::format("\\u{:04x}", u);
+    } else {
+      r += c;
+    }
+  }
+  return r + "\"";
+}
+
+// Times to microseconds, trailing zeros dropped: 0.4, not 0.39999999999999997.
+std::string format_time(double t) {
+  std::string s = fmt::format("{:.6f}", t);
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+namespace {
+const char* kind_name(Event::Kind k) {
+  switch (k) {
+    case Event::Kind::create: return "create";
+    case Event::Kind::enter: return "enter";
+    case Event::Kind::arc: return "arc";
+    case Event::Kind::wait: return "wait";
+    case Event::Kind::resume: return "resume";
+    case Event::Kind::monitor: return "monitor";
+    case Event::Kind::print: return "print";
+    case Event::Kind::exit: return "exit";
+    case Event::Kind::kill: return "kill";
+    case Event::Kind::error: return "error";
+    case Event::Kind::deadlock: return "deadlock";
+  }
+  return "?";
+}
+}  // namespace
+
+void TraceWriter::event(const Event& e) {
+  ++events_;
+  if (format_ == TraceFormat::none) return;
+  if (format_ == TraceFormat::raw) {
+    if (e.kind == Event::Kind::print) {
+      buf_ += e.text;
+      buf_ += '\n';
+    }
+  } else if (format_ == TraceFormat::json) {
+    auto out = std::back_inserter(buf_);
+    fmt::format_to(out, "{{\"cycle\":{},\"t\":{}", e.cycle, format_time(e.t));
+    if (e.inst != nullptr) {
+      buf_ += ",\"net\":";
+      buf_ += json_string(e.inst->label);
+      if (!e.inst->var.empty()) {
+        buf_ += ",\"var\":";
+        buf_ += json_string(e.inst->var);
+      }
+    }
+    fmt::format_to(out, ",\"ev\":\"{}\"", kind_name(e.kind));
+    switch (e.kind) {
+      case Event::Kind::create:
+        buf_ += ",\"class\":" + json_string(e.cls) + ",\"args\":[";
+        for (std::size_t i = 0; i < e.args.size(); ++i) buf_ += (i ? "," : "") + json_string(e.args[i]);
+        buf_ += "]";
+        break;
+      case Event::Kind::enter: buf_ += ",\"node\":" + json_string(e.node); break;
+      case Event::Kind::arc:
+        buf_ += ",\"from\":" + json_string(e.from);
+        if (e.prob >= 0) fmt::format_to(out, ",\"prob\":{}", e.prob);
+        else buf_ += ",\"cond\":" + json_string(e.cond);
+        buf_ += ",\"to\":" + json_string(e.to);
+        break;
+      case Event::Kind::wait:
+        buf_ += ",\"waits\":[";
+        for (std::size_t i = 0; i < e.waits.size(); ++i) buf_ += (i ? "," : "") + json_string(e.waits[i]);
+        buf_ += "]";
+        break;
+      case Event::Kind::monitor: buf_ += ",\"name\":" + json_string(e.name); break;
+      case Event::Kind::print: buf_ += ",\"text\":" + json_string(e.text); break;
+      case Event::Kind::exit:
+      case Event::Kind::kill:
+        buf_ += ",\"status\":" + json_string(e.text);
+        if (e.by != nullptr) buf_ += ",\"by\":" + json_string(e.by->label);
+        if (!e.args.empty()) {
+          buf_ += ",\"locals\":{";
+          for (std::size_t i = 0; i < e.args.size(); ++i) {
+            const std::size_t eq = e.args[i].find('=');
+            buf_ += (i ? "," : "") + json_string(e.args[i].substr(0, eq)) + ":" + json_string(e.args[i].substr(eq + 1));
+          }
+          buf_ += "}";
+        }
+        break;
+      case Event::Kind::error: buf_ += ",\"message\":" + json_string(e.text); break;
+      case Event::Kind::resume:
+      case Event::Kind::deadlock: break;
+    }
+    buf_ += "}\n";
+  } else {
+    if (events_ == 1) buf_ += "cycle\tt\tnet\tevent\tdetail\n";
+    auto clean = [](std::string s) {
+      for (char& c : s)
+        if (c == '\t' || c == '\n') c = ' ';
+      return s;
+    };
+    std::string detail;
+    switch (e.kind) {
+      case Event::Kind::create:
+        detail = "class=" + std::string(e.cls);
+        for (const auto& a : e.args) detail += " " + a;
+        break;
+      case Event::Kind::enter: detail = std::string(e.node); break;
+      case Event::Kind::arc:
+        detail = std::string(e.from) + " " + (e.prob >= 0 ? fmt::format("{}", e.prob) : std::string(e.cond)) + " " + std::string(e.to);
+        break;
+      case Event::Kind::wait:
+        for (std::size_t i = 0; i < e.waits.size(); ++i) detail += (i ? " " : "") + std::string(e.waits[i]);
+        break;
+      case Event::Kind::monitor: detail = std::string(e.name); break;
+      case Event::Kind::print:
+      case Event::Kind::error: detail = e.text; break;
+      case Event::Kind::exit:
+      case Event::Kind::kill:
+        detail = e.text;
+        if (e.by != nullptr) detail += " by=" + e.by->label;
+        for (const auto& a : e.args) detail += " " + a;
+        break;
+      default: break;
+    }
+    fmt::format_to(std::back_inserter(buf_), "{}\t{}\t{}\t{}\t{}\n", e.cycle, format_time(e.t),
+                   e.inst != nullptr ? e.inst->label : std::string("-"), kind_name(e.kind), clean(detail));
+  }
+  if (!hold_ && buf_.size() > (1u << 16)) flush();
+}
+
+void TraceWriter::flush() {
+  if (hold_ || buf_.empty()) return;
+  if (std::fwrite(buf_.data(), 1, buf_.size(), out_) != buf_.size()) throw io_error("cannot write the trace to standard output");
+  buf_.clear();
+}
+
+}  // namespace fest::patnet_tool

@@ -1,0 +1,35 @@
+#pragma once
+// The trace on standard output (docs/patnet.md "Output"): JSON Lines (keys in a fixed
+// order), TSV, or only the text of (format t ...) with --raw-print. Buffered; held back
+// while files load so that a load error leaves standard output empty.
+
+#include <cstdio>
+#include <string>
+
+#include "patnet/machine.hpp"
+
+namespace fest::patnet_tool {
+
+enum class TraceFormat { json, tsv, raw, none };
+
+class TraceWriter : public patnet::TraceSink {
+ public:
+  TraceWriter(std::FILE* out, TraceFormat format);
+  void event(const patnet::Event& e) override;
+  void hold(bool h) { hold_ = h; }
+  void discard() { buf_.clear(); }
+  void flush();
+  std::int64_t events() const { return events_; }
+
+ private:
+  std::FILE* out_;
+  TraceFormat format_;
+  std::string buf_;
+  bool hold_ = false;
+  std::int64_t events_ = 0;
+};
+
+std::string json_string(std::string_view s);
+std::string format_time(double t);
+
+}  // namespace fest::patnet_tool
