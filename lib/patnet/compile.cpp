@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "patnet/machine.hpp"
@@ -804,6 +805,10 @@ void Machine::finish_checks() {
   for (auto& [sym, pos] : calls_)
     if (user_fns_[static_cast<std::size_t>(sym)] == nullptr && reported.insert({sym, {pos.line, pos.col}}).second)
       add_diag(true, fmt::format("undefined function {}", names_[sym]), pos);
+  // In source order, whatever order the checks ran in.
+  std::stable_sort(diags_.begin(), diags_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::tie(a.pos.file, a.pos.line, a.pos.col) < std::tie(b.pos.file, b.pos.line, b.pos.col);
+  });
 }
 
 }  // namespace fest::patnet

@@ -532,8 +532,16 @@ bool Machine::deadlocked() const {
     const Instance& i = *p;
     if (done(i)) continue;
     if (i.status != Status::waiting || !i.cls->monitors.empty()) return false;
-    for (const Wait& w : i.waits)
+    for (const Wait& w : i.waits) {
+      // Time, conditions and motions may change by themselves; the others only if met now.
       if (w.kind == Wait::Kind::time || w.kind == Wait::Kind::condition || w.kind == Wait::Kind::motion) return false;
+      if (w.kind == Wait::Kind::fsm && done(*w.inst)) return false;
+      if (w.kind == Wait::Kind::semaphore && w.sem->count > 0) return false;
+      if (w.kind == Wait::Kind::state) {
+        auto it = w.inst->entered.find(w.state);
+        if (it != w.inst->entered.end() && it->second >= w.posted) return false;
+      }
+    }
     any = true;
   }
   return any;
