@@ -725,6 +725,10 @@ void Machine::finalize_class(NetClass& c) {
       copy.owner = *it;
       c.nodes[nd.name] = copy;
     }
+  {
+    int k = 0;
+    for (auto& [nname, nd] : c.nodes) nd.index = k++;
+  }
   for (auto& [nname, nd] : c.nodes) {
     const bool own = nd.owner == &c;  // report problems once, in the class that wrote them
     if (nd.action >= 0) {

@@ -16,10 +16,10 @@ struct ReturnSignal {
 };
 // Arguments of one call, on the stack when few.
 struct Args {
-  Value small[8];
+  Value small[3];
   std::vector<Value> big;
   std::size_t n = 0;
-  Value* data() { return n <= 8 ? small : big.data(); }
+  Value* data() { return n <= 3 ? small : big.data(); }
 };
 }  // namespace
 
@@ -177,7 +177,7 @@ Value Machine::eval(const Expr* e, Instance* self, const std::shared_ptr<Frame>&
     case Op::send: {
       Args a;
       a.n = e->kids.size();
-      if (a.n > 8) a.big.resize(a.n);
+      if (a.n > 3) a.big.resize(a.n);
       Value* p = a.data();
       for (std::size_t i = 0; i < a.n; ++i) p[i] = eval(e->kids[i], self, env);
       if (e->op == Op::call_builtin) return call_builtin(e->sym, p, a.n, e->pos, self);

@@ -69,6 +69,7 @@ struct NodeDef {
   std::vector<Arc> arcs;
   const Function* action_fn = nullptr;  // resolved per class
   const struct NetClass* owner = nullptr;
+  int index = -1;  // in the class's flattened node table (Instance::entered)
 };
 
 struct MonitorDef {
@@ -120,6 +121,7 @@ struct Wait {
   enum class Kind : std::uint8_t { fsm, state, time, condition, motion, semaphore } kind;
   Instance* inst = nullptr;
   int state = -1;
+  int state_index = -1;
   std::int64_t posted = 0;  // cycle
   double time = 0.0;
   Value closure;
@@ -139,7 +141,7 @@ struct Instance {
   std::vector<Wait> waits;
   std::vector<Instance*> dependents;
   std::vector<Instance*> state_waiters;  // instances that posted :wait-fsm this :state
-  std::unordered_map<int, std::int64_t> entered;  // node -> last cycle entered
+  std::vector<std::int64_t> entered;  // by NodeDef::index: last cycle entered, -1 never
   std::string var;      // global it was bound to, for the trace
   std::string label;    // class#id
   bool exit_requested = false;

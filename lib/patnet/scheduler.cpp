@@ -83,6 +83,7 @@ Instance* Machine::create_instance(NetClass* cls, const Value* args, std::size_t
   inst->id = static_cast<int>(insts_.size()) + 1;
   inst->cls = cls;
   inst->locals.assign(cls->local_names.size(), Value::nil());
+  inst->entered.assign(cls->nodes.size(), -1);
   inst->created = cycle_;
   inst->label = cls->print_name + "#" + std::to_string(inst->id);
   insts_.push_back(std::move(owned));
@@ -164,8 +165,10 @@ Value Machine::send(Instance* self, const Value& obj, int msg, const Value* a, s
         error(pos, ":wait-fsm options are :state node-name");
       w.kind = Wait::Kind::state;
       w.state = a[2].u.sym;
-      if (!w.inst->cls->nodes.count(w.state))
+      auto node = w.inst->cls->nodes.find(w.state);
+      if (node == w.inst->cls->nodes.end())
         error(pos, fmt::format("{} has no node {}", w.inst->cls->print_name, names_[static_cast<std::size_t>(w.state)]));
+      w.state_index = node->second.index;
       if (done(*w.inst)) {  // it can never pass through the node now
         finish(to, Status::failed, w.inst);
         return Value::nil();
@@ -242,8 +245,7 @@ void Machine::finish(Instance& inst, Status st, const Instance* killer) {
     bool pending = false;
     for (const Wait& x : w->waits)
       if (x.kind == Wait::Kind::state && x.inst == &inst) {
-        auto it = inst.entered.find(x.state);
-        if (it == inst.entered.end() || it->second < x.posted) pending = true;
+        if (inst.entered[static_cast<std::size_t>(x.state_index)] < x.posted) pending = true;
       }
     if (pending) finish(*w, Status::failed, &inst);
   }
@@ -270,8 +272,7 @@ bool Machine::waits_satisfied(Instance& inst) {
         if (!done(*w.inst)) return false;
         break;
       case Wait::Kind::state: {
-        auto it = w.inst->entered.find(w.state);
-        if (it == w.inst->entered.end() || it->second < w.posted) return false;
+        if (w.inst->entered[static_cast<std::size_t>(w.state_index)] < w.posted) return false;
         break;
       }
       case Wait::Kind::time:
@@ -318,7 +319,7 @@ void Machine::runtime_failure(Instance& inst, const LispError& err) {
 
 void Machine::enter_node(Instance& inst) {
   inst.entering = false;
-  inst.entered[inst.node->name] = cycle_;
+  inst.entered[static_cast<std::size_t>(inst.node->index)] = cycle_;
   Event e = make_event(Event::Kind::enter, &inst);
   e.node = names_[static_cast<std::size_t>(inst.node->name)];
   emit(e);
@@ -538,8 +539,7 @@ bool Machine::deadlocked() const {
       if (w.kind == Wait::Kind::fsm && done(*w.inst)) return false;
       if (w.kind == Wait::Kind::semaphore && w.sem->count > 0) return false;
       if (w.kind == Wait::Kind::state) {
-        auto it = w.inst->entered.find(w.state);
-        if (it != w.inst->entered.end() && it->second >= w.posted) return false;
+        if (w.inst->entered[static_cast<std::size_t>(w.state_index)] >= w.posted) return false;
       }
     }
     any = true;

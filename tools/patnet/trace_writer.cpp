@@ -1,5 +1,7 @@
 #include "trace_writer.hpp"
 
+#include <charconv>
+
 #include <fmt/format.h>
 
 #include "core/error.hpp"
@@ -9,6 +11,37 @@ namespace fest::patnet_tool {
 using patnet::Event;
 
 TraceWriter::TraceWriter(std::FILE* out, TraceFormat format) : out_(out), format_(format) {}
+
+namespace {
+// JSON string escaping appended in place (the trace's hot path: no temporaries).
+void append_json(std::string& r, std::string_view s) {
+  r += '"';
+  bool plain = true;
+  for (char c : s) plain &= c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20;
+  if (plain) {
+    r.append(s.data(), s.size());
+    r += '"';
+    return;
+  }
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      r += '\\';
+      r += c;
+    } else if (u < 0x20) {
+      r += c == '\n' ? std::string("\\n") : c == '\t' ? std::string("\\t") : fmt::format("\\u{:04x}", u);
+    } else {
+      r += c;
+    }
+  }
+  r += '"';
+}
+void append_int(std::string& r, std::int64_t v) {
+  char b[24];
+  auto res = std::to_chars(b, b + sizeof b, v);
+  r.append(b, res.ptr);
+}
+}  // namespace
 
 std::string json_string(std::string_view s) {
   std::string r = "\"";
@@ -67,29 +100,55 @@ void TraceWriter::event(const Event& e) {
       buf_ += '\n';
     }
   } else if (format_ == TraceFormat::json) {
-    auto out = std::back_inserter(buf_);
-    fmt::format_to(out, "{{\"cycle\":{},\"t\":{}", e.cycle, format_time(e.t));
-    if (e.inst != nullptr) {
-      buf_ += ",\"net\":";
-      buf_ += json_string(e.inst->label);
-      if (!e.inst->var.empty()) {
-        buf_ += ",\"var\":";
-        buf_ += json_string(e.inst->var);
-      }
+    if (e.cycle != time_cycle_ || time_str_.empty()) {
+      time_cycle_ = e.cycle;
+      time_str_ = format_time(e.t);
     }
-    fmt::format_to(out, ",\"ev\":\"{}\"", kind_name(e.kind));
+    buf_ += "{\"cycle\":";
+    append_int(buf_, e.cycle);
+    buf_ += ",\"t\":";
+    buf_ += time_str_;
+    if (e.inst != nullptr) {
+      // ,"net":"label","var":"name" once per instance (again if its variable changes)
+      const auto id = static_cast<std::size_t>(e.inst->id);
+      if (prefix_.size() <= id) prefix_.resize(id + 1);
+      auto& [pre, var_len] = prefix_[id];
+      if (pre.empty() || var_len != e.inst->var.size()) {
+        pre = ",\"net\":";
+        append_json(pre, e.inst->label);
+        if (!e.inst->var.empty()) {
+          pre += ",\"var\":";
+          append_json(pre, e.inst->var);
+        }
+        var_len = e.inst->var.size();
+      }
+      buf_ += pre;
+    }
+    buf_ += ",\"ev\":\"";
+    buf_ += kind_name(e.kind);
+    buf_ += '"';
+    auto out = std::back_inserter(buf_);
     switch (e.kind) {
       case Event::Kind::create:
         buf_ += ",\"class\":" + json_string(e.cls) + ",\"args\":[";
         for (std::size_t i = 0; i < e.args.size(); ++i) buf_ += (i ? "," : "") + json_string(e.args[i]);
         buf_ += "]";
         break;
-      case Event::Kind::enter: buf_ += ",\"node\":" + json_string(e.node); break;
+      case Event::Kind::enter:
+        buf_ += ",\"node\":";
+        append_json(buf_, e.node);
+        break;
       case Event::Kind::arc:
-        buf_ += ",\"from\":" + json_string(e.from);
-        if (e.prob >= 0) fmt::format_to(out, ",\"prob\":{}", e.prob);
-        else buf_ += ",\"cond\":" + json_string(e.cond);
-        buf_ += ",\"to\":" + json_string(e.to);
+        buf_ += ",\"from\":";
+        append_json(buf_, e.from);
+        if (e.prob >= 0) {
+          fmt::format_to(out, ",\"prob\":{}", e.prob);
+        } else {
+          buf_ += ",\"cond\":";
+          append_json(buf_, e.cond);
+        }
+        buf_ += ",\"to\":";
+        append_json(buf_, e.to);
         break;
       case Event::Kind::wait:
         buf_ += ",\"waits\":[";
@@ -118,18 +177,19 @@ void TraceWriter::event(const Event& e) {
     buf_ += "}\n";
   } else {
     if (events_ == 1) buf_ += "cycle\tt\tnet\tevent\tdetail\n";
-    auto clean = [](std::string s) {
+    auto clean = [](std::string& s) -> const std::string& {
       for (char& c : s)
         if (c == '\t' || c == '\n') c = ' ';
       return s;
     };
-    std::string detail;
+    detail_.clear();
+    std::string& detail = detail_;
     switch (e.kind) {
       case Event::Kind::create:
         detail = "class=" + std::string(e.cls);
         for (const auto& a : e.args) detail += " " + a;
         break;
-      case Event::Kind::enter: detail = std::string(e.node); break;
+      case Event::Kind::enter: detail.assign(e.node.data(), e.node.size()); break;
       case Event::Kind::arc:
         detail = std::string(e.from) + " " + (e.prob >= 0 ? fmt::format("{}", e.prob) : std::string(e.cond)) + " " + std::string(e.to);
         break;
@@ -147,8 +207,20 @@ void TraceWriter::event(const Event& e) {
         break;
       default: break;
     }
-    fmt::format_to(std::back_inserter(buf_), "{}\t{}\t{}\t{}\t{}\n", e.cycle, format_time(e.t),
-                   e.inst != nullptr ? e.inst->label : std::string("-"), kind_name(e.kind), clean(detail));
+    if (e.cycle != time_cycle_ || time_str_.empty()) {
+      time_cycle_ = e.cycle;
+      time_str_ = format_time(e.t);
+    }
+    append_int(buf_, e.cycle);
+    buf_ += '\t';
+    buf_ += time_str_;
+    buf_ += '\t';
+    buf_ += e.inst != nullptr ? e.inst->label : std::string("-");
+    buf_ += '\t';
+    buf_ += kind_name(e.kind);
+    buf_ += '\t';
+    buf_ += clean(detail);
+    buf_ += '\n';
   }
   if (!hold_ && buf_.size() > (1u << 16)) flush();
 }

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "patnet/machine.hpp"
 
@@ -27,6 +29,9 @@ class TraceWriter : public patnet::TraceSink {
   std::string buf_;
   bool hold_ = false;
   std::int64_t events_ = 0;
+  std::int64_t time_cycle_ = -1;
+  std::string time_str_, detail_;
+  std::vector<std::pair<std::string, std::size_t>> prefix_;  // by instance id
 };
 
 std::string json_string(std::string_view s);
