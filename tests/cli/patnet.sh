@@ -115,4 +115,33 @@ printf '%s\n' '{"t": 0.1, "spawn": ["greeter", "agent1"]}' '{"t": 0.2, "eval": "
 run patnet run "$WORK/greet.pat" --events "$WORK/ev3.jsonl" --raw-print
 if [ "$(tr '\n' ';' < "$out")" = "hello agent1;hello AGENT2;" ]; then pass; else fail "spawned: $(cat "$out")"; fi
 
+case_ "posture network (§8): every pair but the matrix's -1 reaches its goal"
+run patnet run "$EX/posture.pat" --raw-print \
+  --eval "(dolist (a postures) (dolist (b postures) (unless (eq a b) (send posture-net :new a b))))"
+expect_status 0
+if [ "$(grep -c ': reached ' "$out")" -eq 29 ]; then pass; else fail "$(grep -c ': reached ' "$out") of 29 pairs reached"; fi
+if [ "$(grep 'no transition' "$out")" = "SUPINE -> STAND: no transition" ]; then pass; else fail "the -1 pair: $(grep 'no transition' "$out")"; fi
+
+case_ "markov round trip: a known 24-state chain, sampled, estimated within 4 sigma per entry"
+# P(i -> i) = 0.6, P(i -> i+1) = 0.3, P(i -> i+7) = 0.1 (mod 24), as a net of def-probnodes
+{ echo "(defnet chain :start S0"
+  for i in $(seq 0 23); do echo "  (def-probnode S$i :no-op (0.6 S$i) (0.3 S$(( (i + 1) % 24 ))) (0.1 S$(( (i + 7) % 24 ))))"; done
+  echo ")"; echo "(send chain :new)"; } > "$WORK/chain.pat"
+run patnet run "$WORK/chain.pat" --cycles 100000 --seed 5 --trace tsv
+awk -F'\t' 'BEGIN{print "state"} $4=="enter"{print substr($5,2)}' "$out" > "$WORK/states.csv"
+run patnet markov "$WORK/states.csv" --cols state --states 24
+expect_status 0
+if awk -F, 'NR>1 { i=$1; for (j=0;j<24;j++) { p=0; if (j==i) p=0.6; else if (j==(i+1)%24) p=0.3; else if (j==(i+7)%24) p=0.1;
+       sd = sqrt((p>0 ? p*(1-p) : 0.0001) / 4166); d=$(j+2)-p; if (d<0) d=-d; if (d > 4*sd) { print i, j, $(j+2), p; bad=1 } } }
+       END { exit bad }' "$out"; then pass; else fail "estimate outside 4 sigma"; fi
+run patnet markov "$WORK/states.csv" --cols state --states 24 --net chain2
+expect_status 0
+check "the estimated net passes check" bash -c "'$FEST_BIN/patnet' check '$out'"
+run patnet markov "$EX/dialog.tsv" --net gaze24
+expect_status 0
+expect_stderr_has "warning: .* states have no observed transition"
+printf 't\tturn_state\tgaze1\tgaze2\n0\t7\t0\t0\n0.1\t1\t0\t1\n' > "$WORK/badts.tsv"
+run patnet markov "$WORK/badts.tsv"
+expect_clean_failure 3 patnet
+
 finish
