@@ -295,11 +295,17 @@ bool eql(const Value& a, const Value& b) {
   }
 }
 
-bool equal(const Value& a, const Value& b) {
-  if (a.tag == Tag::string && b.tag == Tag::string) return str_of(a) == str_of(b);
-  if (a.tag == Tag::cons && b.tag == Tag::cons)
-    return equal(cons_of(a)->car, cons_of(b)->car) && equal(cons_of(a)->cdr, cons_of(b)->cdr);
-  return eql(a, b);
+bool equal(const Value& a0, const Value& b0) {
+  const Value* a = &a0;
+  const Value* b = &b0;
+  // along the cdr chain in a loop, into the cars by recursion
+  while (a->tag == Tag::cons && b->tag == Tag::cons) {
+    if (!equal(cons_of(*a)->car, cons_of(*b)->car)) return false;
+    a = &cons_of(*a)->cdr;
+    b = &cons_of(*b)->cdr;
+  }
+  if (a->tag == Tag::string && b->tag == Tag::string) return str_of(*a) == str_of(*b);
+  return eql(*a, *b);
 }
 
 }  // namespace
@@ -624,6 +630,13 @@ void Machine::format_into(std::string& out, const Value* a, std::size_t n, SrcPo
 }
 
 std::string Machine::print(const Value& v, bool escape) const {
+  thread_local int depth = 0;
+  struct Guard {
+    int& d;
+    explicit Guard(int& x) : d(++x) {}
+    ~Guard() { --d; }
+  } guard(depth);
+  if (depth > 1000) return "...";  // lists nested in their cars deeper than this
   switch (v.tag) {
     case Tag::nil: return "NIL";
     case Tag::t: return "T";

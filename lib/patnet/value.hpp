@@ -61,6 +61,7 @@ struct StringObj : HeapObj {
 };
 struct Cons : HeapObj {
   Value car, cdr;
+  ~Cons() override;
 };
 struct Frame;
 // A lambda closed over its lexical frame and the instance it was made in (so that
@@ -87,6 +88,15 @@ inline Value Value::cons(Value car, Value cdr) {
   o->cdr = std::move(cdr);
   v.obj = std::move(o);
   return v;
+}
+// A long list is freed cell by cell in a loop: the default chain of destructors would
+// recurse once per cell and overflow the stack on a million-element list.
+inline Cons::~Cons() {
+  Value rest = std::move(cdr);
+  while (rest.tag == Tag::cons && rest.obj.use_count() == 1) {
+    Value next = std::move(static_cast<Cons*>(rest.obj.get())->cdr);
+    rest = std::move(next);
+  }
 }
 inline const std::string& str_of(const Value& v) { return static_cast<const StringObj*>(v.obj.get())->s; }
 inline Cons* cons_of(const Value& v) { return static_cast<Cons*>(v.obj.get()); }

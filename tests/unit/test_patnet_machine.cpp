@@ -355,3 +355,15 @@ TEST(PatnetMarkov, EstimateRecoversAKnownChain) {
   EXPECT_EQ(gaze_state(6, 0, 0), -1);
   EXPECT_TRUE(estimate_markov({0, 0, 1}, 4, false).unvisited == (std::vector<int>{1, 2, 3}));
 }
+
+TEST(PatnetMachine, LongListsDoNotOverflowTheStack) {
+  RunOptions o;
+  o.max_steps = 100000000;
+  Machine m(o, nullptr);
+  m.load("(setq l nil) (dotimes (i 1000000) (setq l (cons i l)))", "t.pat", true);
+  EXPECT_EQ(m.print(m.eval_text("(length l)", "e"), false), "1000000");
+  EXPECT_EQ(m.print(m.eval_text("(equal l (reverse (reverse l)))", "e"), false), "T");
+  m.eval_text("(setq l nil)", "e");  // frees a million cells in a loop
+  m.load("(setq d nil) (dotimes (i 5000) (setq d (list d)))", "t2.pat", true);
+  EXPECT_NE(m.print(m.eval_text("d", "e"), false).find("..."), std::string::npos);
+}
