@@ -42,6 +42,7 @@ TEST_TOOL_PKGS=(
   jq                         # CLI tests read the JSON that tools print
   unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
+  libqt5scxml5-dev           # Qt SCXML: the same-run anchor of tests/bench/bench_patnet_scxml
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
   graphviz                   # dot: tests/cli/patnet.sh checks that `patnet dot` output is valid Graphviz
 )

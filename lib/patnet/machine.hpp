@@ -172,7 +172,7 @@ class Machine {
   Instance* current_ = nullptr;  // instance whose code runs (for :exit of self)
 
   double time_of(std::int64_t k) const { return opt_.t0 + static_cast<double>(k) * opt_.dt; }
-  void emit(Event& e);
+  void emit_event(Event& e);
   Event make_event(Event::Kind k, const Instance* inst) const;
 
   // load

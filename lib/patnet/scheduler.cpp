@@ -48,7 +48,7 @@ Event Machine::make_event(Event::Kind k, const Instance* inst) const {
   return e;
 }
 
-void Machine::emit(Event& e) {
+void Machine::emit_event(Event& e) {
   e.cycle = cycle_;
   e.t = time_of(cycle_);
   if (sink_ != nullptr) sink_->event(e);
@@ -62,14 +62,14 @@ void Machine::flush_print(Instance* inst, bool all) {
     if (nl == std::string::npos) break;
     Event e = make_event(Event::Kind::print, inst);
     e.text = buf.substr(start, nl - start);
-    emit(e);
+    emit_event(e);
     start = nl + 1;
   }
   buf.erase(0, start);
   if (all && !buf.empty()) {
     Event e = make_event(Event::Kind::print, inst);
     e.text = buf;
-    emit(e);
+    emit_event(e);
     buf.clear();
   }
 }
@@ -90,7 +90,7 @@ Instance* Machine::create_instance(NetClass* cls, const Value* args, std::size_t
   Event e = make_event(Event::Kind::create, inst);
   e.cls = cls->print_name;
   for (std::size_t i = 0; i < n; ++i) e.args.push_back(print(args[i], true));
-  emit(e);
+  emit_event(e);
   if (cls->initializer != nullptr) {
     call_function(cls->initializer, inst, nullptr, args, n, pos);
   } else if (n > 0) {
@@ -236,7 +236,7 @@ void Machine::finish(Instance& inst, Status st, const Instance* killer) {
   if (opt_.dump_locals)
     for (std::size_t i = 0; i < inst.locals.size(); ++i)
       e.args.push_back(names_[static_cast<std::size_t>(inst.cls->local_names[i])] + "=" + print(inst.locals[i], true));
-  emit(e);
+  emit_event(e);
   // The exiting net kills its dependents and the nets waiting for it to pass a node
   // (seed App. A 3D1).
   for (Instance* d : inst.dependents) finish(*d, Status::failed, &inst);
@@ -312,7 +312,7 @@ void Machine::runtime_failure(Instance& inst, const LispError& err) {
   ++errors_;
   Event e = make_event(Event::Kind::error, &inst);
   e.text = fmt::format("{} ({})", err.message, where(err.pos));
-  emit(e);
+  emit_event(e);
   finish(inst, Status::failed, nullptr);
   if (opt_.strict) throw Error(fest::Status::failure, fmt::format("{}: {}", inst.label, e.text));
 }
@@ -322,7 +322,7 @@ void Machine::enter_node(Instance& inst) {
   inst.entered[static_cast<std::size_t>(inst.node->index)] = cycle_;
   Event e = make_event(Event::Kind::enter, &inst);
   e.node = names_[static_cast<std::size_t>(inst.node->name)];
-  emit(e);
+  emit_event(e);
   if (inst.node->action_fn != nullptr) run_code(inst, inst.node->action_fn, nullptr);
 }
 
@@ -360,7 +360,7 @@ void Machine::choose_arc(Instance& inst) {
   if (nd.kind == NodeKind::plain) e.cond = names_[static_cast<std::size_t>(taken->cond)];
   else e.prob = taken->prob;
   e.to = names_[static_cast<std::size_t>(taken->target)];
-  emit(e);
+  emit_event(e);
   if (taken->to == nullptr) {
     finish(inst, Status::finished, nullptr);
   } else {
@@ -383,7 +383,7 @@ void Machine::step_instance(Instance& inst) {
     if (!r.truthy()) continue;
     Event e = make_event(Event::Kind::monitor, &inst);
     e.name = names_[static_cast<std::size_t>(m.name)];
-    emit(e);
+    emit_event(e);
     if (m.action_fn != nullptr && !run_code(inst, m.action_fn, nullptr)) return;
   }
   if (inst.status == Status::waiting) {
@@ -393,7 +393,7 @@ void Machine::step_instance(Instance& inst) {
     inst.waits.clear();
     inst.status = Status::running;
     Event e = make_event(Event::Kind::resume, &inst);
-    emit(e);
+    emit_event(e);
   } else {
     // (c)
     if (inst.entering) {
@@ -407,7 +407,7 @@ void Machine::step_instance(Instance& inst) {
         inst.status = Status::waiting;
         Event e = make_event(Event::Kind::wait, &inst);
         for (const Wait& w : inst.waits) e.waits.push_back(wait_kind_name(w.kind));
-        emit(e);
+        emit_event(e);
         return;
       }
       inst.waits.clear();
@@ -499,7 +499,7 @@ void Machine::apply_inputs() {
       ++errors_;
       Event e = make_event(Event::Kind::error, nullptr);
       e.text = err.pos.line > 0 ? fmt::format("{} ({})", err.message, where(err.pos)) : fmt::format("{} ({})", err.message, in.where);
-      emit(e);
+      emit_event(e);
       if (opt_.strict) throw Error(fest::Status::failure, e.text);
     }
   }
@@ -564,7 +564,7 @@ RunSummary Machine::run() {
       if (deadlocked()) {
         sum.deadlock = true;
         Event e = make_event(Event::Kind::deadlock, nullptr);
-        emit(e);
+        emit_event(e);
         if (opt_.strict) throw Error(fest::Status::failure, fmt::format("deadlock at cycle {}: every live net waits", cycle_));
         break;
       }
@@ -582,7 +582,7 @@ RunSummary Machine::run() {
   } catch (const LimitError& lim) {
     Event e = make_event(Event::Kind::error, current_);
     e.text = lim.message;
-    emit(e);
+    emit_event(e);
     throw Error(fest::Status::failure, lim.message);
   }
   sum.cycles = cycle_;
