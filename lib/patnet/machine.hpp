@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -61,6 +62,8 @@ struct RunOptions {
   int max_depth = 2000;              // nested calls
   bool strict = false;
   bool dump_locals = false;
+  // Called before each cycle with its number and motion time (the tool paces --realtime).
+  std::function<void(std::int64_t, double)> on_cycle;
 };
 
 // Inputs from the outside world (docs/patnet.md "Inputs").
@@ -123,6 +126,7 @@ class Machine {
 
   void set_inputs(std::vector<InputEvent> events) { inputs_ = std::move(events); }
   void set_table(TableInput table);
+  void set_cycle_hook(std::function<void(std::int64_t, double)> hook) { opt_.on_cycle = std::move(hook); }
   // Runs cycles until done; throws fest::Error(failure) for --strict errors and limits.
   RunSummary run();
 

@@ -571,6 +571,7 @@ RunSummary Machine::run() {
       if (cycle_ >= opt_.max_cycles)
         throw LimitError{fmt::format("the run reached the cycle limit ({} cycles) with nets still live", opt_.max_cycles)};
       ++cycle_;
+      if (opt_.on_cycle) opt_.on_cycle(cycle_, time_of(cycle_));
       apply_inputs();
       bind_table_row();
       const std::size_t n = insts_.size();

@@ -37,6 +37,19 @@ if cmp -s "$out" "$GOLD/semaphore.jsonl"; then pass; else fail "trace differs fr
 run patnet run "$EX/semaphore.pat" --raw-print
 if [ "$(cat "$out" | tr '\n' ';')" = "in state 1;in state 1;in state 2;in state 2;" ]; then pass; else fail "--raw-print: $(head -c 200 "$out")"; fi
 
+case_ "spawn and waits (App. A §3B, §3C): resumes at cycles 5, 9, 100 (hand-derived)"
+run patnet run "$EX/spawn.pat"
+expect_status 0
+got=$(jq -r 'select(.net=="spawner#1" and (.ev=="resume" or .ev=="exit")) | "\(.ev)@\(.cycle)"' "$out" | tr '\n' ' ')
+if [ "$got" = "resume@5 resume@9 resume@100 exit@100 " ]; then pass; else fail "spawner: $got"; fi
+if cmp -s "$out" "$GOLD/spawn.jsonl"; then pass; else fail "trace differs from tests/data/patnet/spawn.jsonl"; fi
+
+case_ "--realtime paces cycles with the wall clock"
+start=$(date +%s%N)
+run patnet run "$EX/semaphore.pat" --realtime --dt 0.2 --raw-print
+elapsed=$(( ($(date +%s%N) - start) / 1000000 ))
+if [ "$rc" -eq 0 ] && [ "$elapsed" -ge 550 ]; then pass; else fail "3 cycles of 0.2 s took $elapsed ms (rc $rc)"; fi
+
 case_ "wait-time (+ (motion-time) 3.0) at 30 fps: 90 cycles"
 printf '%s\n' "(defnet sl (defaction :z (send self :wait-time (+ (motion-time) 3.0))) (defnode a :z (:default exit)))" \
   "(send sl :new)" > "$WORK/sleep.pat"

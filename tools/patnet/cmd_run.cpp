@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -69,6 +70,18 @@ int cmd_run(const RunArgs& a) {
     throw runtime_failure("{} (while loading)", e.message);
   }
   writer.hold(false);
+  if (a.realtime) {
+    // Interactive use: cycle k starts when k dt seconds have passed, and the trace so far
+    // is on standard output by then.
+    const auto wall0 = std::chrono::steady_clock::now();
+    const double t_first = opt.t0;
+    m.set_cycle_hook([&writer, wall0, t_first](std::int64_t, double t) {
+      writer.flush();
+      std::fflush(stdout);
+      std::this_thread::sleep_until(wall0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                std::chrono::duration<double>(t - t_first)));
+    });
+  }
   patnet::RunSummary sum;
   try {
     sum = m.run();

@@ -25,6 +25,7 @@ struct RunArgs {
   std::int64_t max_nets = 100000;
   std::int64_t max_steps = 1000000;
   bool strict = false;
+  bool realtime = false;
   bool verbose = false;
   std::string report;
 };

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   r->add_option("--max-nets", run.max_nets, "Fail (exit 1) when more instances are created")->check(CLI::PositiveNumber);
   r->add_option("--max-steps", run.max_steps, "Fail (exit 1) when one action, condition or monitor evaluates more steps")
       ->check(CLI::PositiveNumber);
+  r->add_flag("--realtime", run.realtime, "Pace cycles with the wall clock (motion time = seconds since the start)");
   r->add_flag("--strict", run.strict, "Run-time errors and deadlock end the run with exit 1");
   r->add_option("--report", run.report, "JSON report: cycles, instances, statuses, events, seconds");
 
