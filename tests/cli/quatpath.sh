@@ -54,6 +54,11 @@ expect_status 0
 # identity orientation: looking along -z with +y up
 expect_json 'select(.t==0) | [.eye, .target, .up]' '[[0,0,0],[0,0,-10],[0,1,0]]'
 
+case_ "camera-args: volrender look-at flags"
+run quatpath "$WORK/k.csv" --fps 1 --to camera-args --camera-distance 10
+expect_status 0
+if [ "$(head -1 "$out")" = "--eye 0,0,0 --look-at 0,0,-10 --up 0,1,0" ]; then pass; else fail "$(head -1 "$out")"; fi
+
 case_ "bad input: NaN key, times not increasing, one key, zero quaternion, unknown column"
 printf 't,x,y,z,qw,qx,qy,qz\n0,0,nan,0,1,0,0,0\n1,1,0,0,1,0,0,0\n' > "$WORK/nan.csv"
 run quatpath "$WORK/nan.csv"

@@ -49,6 +49,7 @@ int cmd_path(const PathArgs& a) {
     std::string bytes;
     if (to == "csv") bytes = write_csv(poses);
     else if (to == "jsonl") bytes = write_jsonl(poses);
+    else if (to == "camera-args") bytes = write_camera_args(poses, CameraOptions{a.camera_distance, a.fovy_deg, a.width, a.height, a.tau_px});
     else bytes = write_cameras(poses, CameraOptions{a.camera_distance, a.fovy_deg, a.width, a.height, a.tau_px});
     write_output(a.output, bytes);
     if (!a.report.empty()) {

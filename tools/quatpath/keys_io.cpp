@@ -141,4 +141,16 @@ std::string write_cameras(const std::vector<Pose>& poses, const CameraOptions& c
   return out;
 }
 
+std::string write_camera_args(const std::vector<Pose>& poses, const CameraOptions& cam) {
+  std::string out;
+  for (const Pose& p : poses) {
+    const motionpath::Vec3 fwd = motionpath::rotate(p.q, {0, 0, -1});
+    const motionpath::Vec3 up = motionpath::rotate(p.q, {0, 1, 0});
+    const motionpath::Vec3 target = p.p + cam.distance * fwd;
+    out += fmt::format("--eye {},{},{} --look-at {},{},{} --up {},{},{}\n", p.p.x, p.p.y, p.p.z, target.x, target.y, target.z,
+                       up.x, up.y, up.z);
+  }
+  return out;
+}
+
 }  // namespace fest::quatpath_tool

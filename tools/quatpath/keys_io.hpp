@@ -22,5 +22,8 @@ std::vector<motionpath::Key> read_keys(const std::string& bytes, const std::stri
 std::string write_csv(const std::vector<motionpath::Pose>& poses);
 std::string write_jsonl(const std::vector<motionpath::Pose>& poses);
 std::string write_cameras(const std::vector<motionpath::Pose>& poses, const CameraOptions& cam);
+// One line of look-at flags per frame, "--eye X,Y,Z --look-at X,Y,Z --up X,Y,Z", for a
+// shell loop around volrender (its look-at camera).
+std::string write_camera_args(const std::vector<motionpath::Pose>& poses, const CameraOptions& cam);
 
 }  // namespace fest::quatpath_tool

@@ -18,8 +18,8 @@ int main(int argc, char** argv) {
   PathArgs a;
   app.add_option("input", a.input, "Keys: CSV/TSV t,x,y,z,qw,qx,qy,qz[,way][,tension,continuity,bias] or JSON Lines; - = standard input");
   app.add_option("-o,--output", a.output, "Poses (.csv, .jsonl) or cameras; - = standard output");
-  app.add_option("--to", a.to, "Output: csv, jsonl, or camera (terrainlod --path JSON Lines)")
-      ->check(CLI::IsMember({"csv", "jsonl", "camera"}));
+  app.add_option("--to", a.to, "Output: csv, jsonl, camera (terrainlod --path JSON Lines), or camera-args (volrender look-at flags, one line per frame)")
+      ->check(CLI::IsMember({"csv", "jsonl", "camera", "camera-args"}));
   app.add_option("--fps", a.fps, "Output frames per second")->check(CLI::PositiveNumber);
   app.add_option("--orientation", a.orientation, "slerp (piecewise great arcs) or squad (C1 at the keys)")
       ->check(CLI::IsMember({"slerp", "squad"}));
