@@ -128,6 +128,7 @@ void Machine::load(std::string_view text, const std::string& file_name, bool exe
 }
 
 void Machine::top_level(const Datum& d, bool execute, std::vector<const Datum*>& to_run) {
+  loop_depth_ = 0;
   try {
     if (d.is_list() && !d.items.empty() && d.items[0].kind == Datum::Kind::symbol) {
       const int head = intern(d.items[0].text);
@@ -313,7 +314,13 @@ Expr* Machine::compile(const Datum& d) {
         cfail(p.pos, "malformed parameter list");
       }
     }
-    fn->body = body(2, d.pos);
+    {
+      // RETURN leaves the innermost loop of its own function only
+      const int saved = loop_depth_;
+      loop_depth_ = 0;
+      fn->body = body(2, d.pos);
+      loop_depth_ = saved;
+    }
     Expr* e = new_expr(exprs_, Op::lambda, d.pos);
     e->fn = fn.get();
     funcs_.push_back(std::move(fn));
@@ -424,11 +431,19 @@ Expr* Machine::compile(const Datum& d) {
     e->syms.push_back(intern(d.items[1].items[0].text));
     e->kids.push_back(compile(d.items[1].items[1]));
     e->kids.push_back(d.items[1].items.size() == 3 ? compile(d.items[1].items[2]) : new_expr(exprs_, Op::constant, d.pos));
-    e->kids.push_back(body(2, d.pos));
+    ++loop_depth_;
+    try {
+      e->kids.push_back(body(2, d.pos));
+    } catch (...) {
+      --loop_depth_;
+      throw;
+    }
+    --loop_depth_;
     return e;
   }
   if (head == s.return_) {
     need(n <= 2, "(return [value])");
+    if (loop_depth_ == 0) cfail(d.pos, "RETURN outside a DOLIST or DOTIMES body");
     Expr* e = new_expr(exprs_, Op::return_, d.pos);
     e->kids.push_back(n == 2 ? compile(d.items[1]) : new_expr(exprs_, Op::constant, d.pos));
     return e;

@@ -259,9 +259,14 @@ Value Machine::call_function(const Function* fn, Instance* self, const std::shar
       }
     }
   }
-  Value r = eval(fn->body, self, f);
-  --depth_;
-  return r;
+  try {
+    Value r = eval(fn->body, self, f);
+    --depth_;
+    return r;
+  } catch (const ReturnSignal&) {  // unreachable after the compiler's check; never let it escape
+    --depth_;
+    error(pos, "RETURN outside a DOLIST or DOTIMES body");
+  }
 }
 
 Value Machine::apply(const Value& f, const Value* args, std::size_t n, SrcPos pos) {

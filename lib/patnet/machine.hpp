@@ -201,6 +201,7 @@ class Machine {
   void format_into(std::string& out, const Value* args, std::size_t n, SrcPos pos);
   void flush_print(Instance* inst, bool all);
   std::string top_print_;
+  int loop_depth_ = 0;  // compiling inside DOLIST/DOTIMES bodies (where RETURN may appear)
 
   // scheduler
   Instance* create_instance(NetClass* cls, const Value* args, std::size_t n, SrcPos pos);
