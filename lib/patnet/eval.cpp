@@ -448,9 +448,13 @@ Value Machine::call_builtin(int id, const Value* a, std::size_t n, SrcPos pos, I
     case B_EXPT: {
       arity(2, 2);
       if (num(0).tag == Tag::integer && num(1).tag == Tag::integer && a[1].u.i >= 0) {
+        // Exponentiation by squaring: O(log e) steps, whatever the exponent.
         std::int64_t r = 1, b = a[0].u.i;
         bool over = false;
-        for (std::int64_t e = a[1].u.i; e > 0 && !over; --e) over = __builtin_mul_overflow(r, b, &r);
+        for (std::int64_t e = a[1].u.i; e > 0 && !over; e >>= 1) {
+          if (e & 1) over = __builtin_mul_overflow(r, b, &r);
+          if ((e >> 1) > 0 && !over) over = __builtin_mul_overflow(b, b, &b);
+        }
         if (!over) return Value::integer(r);
       }
       return Value::real(std::pow(real(0), real(1)));

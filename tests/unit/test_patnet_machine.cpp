@@ -232,6 +232,9 @@ TEST(PatnetMachine, LanguageBasics) {
   EXPECT_EQ(m.print(m.eval_text("(funcall (let ((k 5)) #'(lambda (z) (+ k z))) 1)", "e"), false), "6");
   EXPECT_EQ(m.print(m.eval_text("(cadr (assoc 'b '((a 1) (b 2))))", "e"), false), "2");
   EXPECT_EQ(m.print(m.eval_text("(mod -7 3)", "e"), false), "2");
+  EXPECT_EQ(m.print(m.eval_text("(expt 3 13)", "e"), false), "1594323");
+  EXPECT_EQ(m.print(m.eval_text("(expt 1 4000000000000)", "e"), false), "1");  // no loop over the exponent
+  EXPECT_EQ(m.print(m.eval_text("(expt 2 64)", "e"), false), "1.8446744073709552e+19");
   EXPECT_EQ(m.print(m.eval_text("(dotimes (i 10) (when (= i 4) (return (* i i))))", "e"), false), "16");
   EXPECT_THROW(m.eval_text("(return 1)", "e"), LispError);  // outside a loop: refused when compiled
   EXPECT_THROW(m.eval_text("(dolist (x '(1)) (funcall #'(lambda () (return x))))", "e"), LispError);
