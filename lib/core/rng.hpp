@@ -1,24 +1,54 @@
 #pragma once
-// The project's portable random generator (first written for facefit, lib/facefit/rng.hpp,
-// moved here so that every domain draws from the same one).
-// A seeded random source whose output is the same on every standard library:
-// xoshiro256** seeded through splitmix64, and an own Box-Muller transform, because
+// A seeded random source whose output is the same on every standard library (header
+// only): xoshiro256** seeded through splitmix64 and an own Box-Muller transform, because
 // std::normal_distribution differs between libraries and would break golden files.
+// (The same generator as lib/facefit/rng.hpp, here for every domain.)
 
+#include <cmath>
 #include <cstdint>
 
 namespace fest {
 
 class Rng {
  public:
-  explicit Rng(std::uint64_t seed);
-  std::uint64_t next();          // 64 uniform bits
-  double uniform();              // [0, 1), 53 bits
+  explicit Rng(std::uint64_t seed) {
+    for (auto& s : s_) s = splitmix64(seed);
+  }
+  std::uint64_t next() {  // 64 uniform bits
+    const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+    const std::uint64_t t = s_[1] << 17;
+    s_[2] ^= s_[0];
+    s_[3] ^= s_[1];
+    s_[1] ^= s_[2];
+    s_[0] ^= s_[3];
+    s_[2] ^= t;
+    s_[3] = rotl(s_[3], 45);
+    return result;
+  }
+  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  double normal();               // N(0, 1)
-  std::uint64_t below(std::uint64_t n);  // uniform integer in [0, n)
+  double normal() {  // N(0, 1)
+    if (has_spare_) {
+      has_spare_ = false;
+      return spare_;
+    }
+    const double u1 = 1.0 - uniform();  // (0, 1]: the log stays finite
+    const double u2 = uniform();
+    const double radius = std::sqrt(-2.0 * std::log(u1));
+    const double angle = 2.0 * 3.14159265358979323846 * u2;
+    spare_ = radius * std::sin(angle);
+    has_spare_ = true;
+    return radius * std::cos(angle);
+  }
 
  private:
+  static std::uint64_t splitmix64(std::uint64_t& x) {
+    std::uint64_t z = (x += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
   double spare_ = 0.0;
   bool has_spare_ = false;

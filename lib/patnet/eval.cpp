@@ -489,7 +489,12 @@ Value Machine::call_builtin(int id, const Value* a, std::size_t n, SrcPos pos, I
       arity(1, 1);
       if (num(0).tag == Tag::integer) {
         if (a[0].u.i <= 0) error(pos, "RANDOM needs a positive limit");
-        return Value::integer(static_cast<std::int64_t>(rng_.below(static_cast<std::uint64_t>(a[0].u.i))));
+        // Uniform on [0, n) by rejection (exact, unlike a bare modulo).
+        const auto lim = static_cast<std::uint64_t>(a[0].u.i);
+        const std::uint64_t cut = ~std::uint64_t{0} - (~std::uint64_t{0} % lim);
+        std::uint64_t x;
+        do x = rng_.next(); while (x >= cut);
+        return Value::integer(static_cast<std::int64_t>(x % lim));
       }
       if (!(a[0].u.d > 0)) error(pos, "RANDOM needs a positive limit");
       return Value::real(rng_.uniform() * a[0].u.d);
