@@ -142,8 +142,6 @@ class Machine {
   std::int64_t cycle() const { return cycle_; }
 
  private:
-  friend class Compiler;
-  friend struct Eval;
   RunOptions opt_;
   TraceSink* sink_;
   Rng rng_;

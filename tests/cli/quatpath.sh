@@ -59,6 +59,16 @@ run quatpath "$WORK/k.csv" --fps 1 --to camera-args --camera-distance 10
 expect_status 0
 if [ "$(head -1 "$out")" = "--eye 0,0,0 --look-at 0,0,-10 --up 0,1,0" ]; then pass; else fail "$(head -1 "$out")"; fi
 
+case_ "golden: the Jacksboro camera flight (examples/quatpath), numbers within 1e-9 relative"
+KEYS="$(cd "$(dirname "$0")/../../examples/quatpath" && pwd)/jacksboro_keys.csv"
+run quatpath "$KEYS" --fps 1 --orientation squad --constant-speed --to camera --camera-distance 5000 --width 800 --height 500 --tau 8
+expect_status 0
+if paste <(jq -c '[.. | numbers]' "$out") <(jq -c '[.. | numbers]' "$FEST_FIXTURES/quatpath/jacksboro_cams.jsonl") |
+   awk -F'\t' '{ n = split(substr($1, 2, length($1) - 2), a, ","); m = split(substr($2, 2, length($2) - 2), b, ",");
+                  if (n != m) bad = 1; for (i = 1; i <= n; i++) { d = a[i] - b[i]; if (d < 0) d = -d; s = (b[i] < 0 ? -b[i] : b[i]);
+                  if (d > 1e-9 * (s > 1 ? s : 1)) bad = 1 } } END { exit bad || NR != 7 }'; then pass
+else fail "cameras differ from tests/data/quatpath/jacksboro_cams.jsonl"; fi
+
 case_ "bad input: NaN key, times not increasing, one key, zero quaternion, unknown column"
 printf 't,x,y,z,qw,qx,qy,qz\n0,0,nan,0,1,0,0,0\n1,1,0,0,1,0,0,0\n' > "$WORK/nan.csv"
 run quatpath "$WORK/nan.csv"
