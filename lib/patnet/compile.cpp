@@ -802,6 +802,38 @@ void Machine::finalize_class(NetClass& c) {
       c.initializer = k->init;
       break;
     }
+  // Loops that can never end (warnings): following nodes whose action is :no-op and whose
+  // first arc is :default leads back to where it started, so nothing in the loop can wait,
+  // exit or test anything. The net then spins until --max-cycles (unless a monitor acts).
+  if (c.monitors.empty()) {
+    auto forced = [&](const NodeDef* nd) -> const NodeDef* {
+      if (nd->kind != NodeKind::plain || nd->action >= 0 || nd->action == -2 || nd->arcs.empty() || !nd->arcs[0].is_default)
+        return nullptr;
+      return nd->arcs[0].to;
+    };
+    std::set<int> reported;
+    for (const NodeDef& own : c.own_nodes) {
+      const NodeDef* start = &c.nodes.at(own.name);
+      const NodeDef* nd = start;
+      std::string path = names_[start->name];
+      for (std::size_t k = 0; k <= c.nodes.size(); ++k) {
+        nd = forced(nd);
+        if (nd == nullptr) break;
+        path += " -> " + names_[nd->name];
+        if (nd == start) {
+          if (!reported.count(start->name)) {
+            add_diag(false, fmt::format("the loop {} never ends: :no-op actions and :default arcs only", path), own.pos);
+            const NodeDef* x = start;
+            do {
+              reported.insert(x->name);
+              x = forced(x);
+            } while (x != start);
+          }
+          break;
+        }
+      }
+    }
+  }
   // Unreachable own nodes (warnings), from the start node along all arcs.
   if (c.start != nullptr) {
     std::set<int> seen{c.start->name};

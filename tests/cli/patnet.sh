@@ -122,6 +122,16 @@ expect_clean_failure 3 patnet
 run patnet run "$EX/samp.pat" --cycles -3
 expect_status 2
 
+case_ "a loop that never yields: warned by check, stopped by --max-cycles (exit 1)"
+printf '%s\n' "(defnet spin (defnode a :no-op (:default b)) (defnode b :no-op (:default a)))" "(send spin :new)" > "$WORK/spin.pat"
+run patnet check "$WORK/spin.pat"
+expect_status 0
+expect_stderr_has "warning: the loop A -> B -> A never ends: .*spin.pat:1:23"
+run patnet run "$WORK/spin.pat" --max-cycles 500
+expect_status 1
+expect_stderr_has "cycle limit \(500 cycles\)"
+if [ "$(tail -1 "$out" | jq -r .ev)" = "error" ]; then pass; else fail "trace should end with an error event"; fi
+
 case_ "events drive a net: spawn and set"
 printf '%s\n' "(defnet greeter (definit (who) (format t \"hello ~a~%\" who)) (defnode a :no-op (:default exit)))" > "$WORK/greet.pat"
 printf '%s\n' '{"t": 0.1, "spawn": ["greeter", "agent1"]}' '{"t": 0.2, "eval": "(send greeter :new (quote agent2))"}' > "$WORK/ev3.jsonl"
