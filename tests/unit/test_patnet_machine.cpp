@@ -395,3 +395,15 @@ TEST(PatnetMachine, ProbabilisticNodeChiSquareOverTenSeeds) {
     EXPECT_LT(chi2, 13.82) << "seed " << seed;
   }
 }
+
+TEST(PatnetMachine, ClosuresCaptureTheirInstance) {
+  Machine m;
+  m.load(R"(
+(defnet holder :locals '(n)
+  (definit (n) (val n n))
+  (defaction :share (setf getter #'(lambda () (val n))))
+  (defnode s :share (:default exit)))
+(send holder :new 41))", "t.pat", true);
+  m.run();
+  EXPECT_EQ(m.print(m.eval_text("(+ 1 (funcall getter))", "e"), false), "42");
+}
