@@ -82,8 +82,12 @@ Path::Path(std::vector<Key> keys, PathOptions opt) : keys_(std::move(keys)), opt
   // Arc length per segment: composite 8-point Gauss-Legendre over 16 sub-intervals.
   seg_len_.resize(n - 1);
   cum_len_.assign(n, 0.0);
+  sub_cum_.assign((n - 1) * (sub_intervals + 1), 0.0);
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    seg_len_[i] = length_to(i, 1.0);
+    double* cum = &sub_cum_[i * (sub_intervals + 1)];
+    for (int k = 0; k < sub_intervals; ++k)
+      cum[k + 1] = cum[k] + gauss(i, static_cast<double>(k) / sub_intervals, static_cast<double>(k + 1) / sub_intervals);
+    seg_len_[i] = cum[sub_intervals];
     cum_len_[i + 1] = cum_len_[i] + seg_len_[i];
   }
   total_length_ = cum_len_.back();
@@ -105,14 +109,19 @@ Vec3 Path::velocity_param(std::size_t i, double u) const {
   return (6 * u2 - 6 * u) * p0 + (3 * u2 - 4 * u + 1) * d_out_[i] + (-6 * u2 + 6 * u) * p1 + (3 * u2 - 2 * u) * d_in_[i + 1];
 }
 
-double Path::length_to(std::size_t seg, double u) const {
+double Path::gauss(std::size_t seg, double a, double b) const {
+  const double mid = (a + b) / 2, half = (b - a) / 2;
   double total = 0;
-  const double h = u / sub_intervals;
-  for (int k = 0; k < sub_intervals; ++k) {
-    const double a = k * h, mid = a + h / 2;
-    for (int g = 0; g < 8; ++g) total += gl_w[g] * (h / 2) * norm(velocity_param(seg, mid + gl_x[g] * h / 2));
-  }
+  for (int g = 0; g < 8; ++g) total += gl_w[g] * half * norm(velocity_param(seg, mid + gl_x[g] * half));
   return total;
+}
+
+double Path::length_to(std::size_t seg, double u) const {
+  // Whole sub-intervals from the table, the last partial one by one more rule.
+  u = std::clamp(u, 0.0, 1.0);
+  const int k = std::min(sub_intervals - 1, static_cast<int>(u * sub_intervals));
+  const double a = static_cast<double>(k) / sub_intervals;
+  return sub_cum_[seg * (sub_intervals + 1) + static_cast<std::size_t>(k)] + gauss(seg, a, u);
 }
 
 void Path::locate_length(double s, std::size_t& seg, double& u) const {

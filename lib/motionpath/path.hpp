@@ -70,9 +70,11 @@ class Path {
   std::vector<Quat> s_;         // squad control points
   std::vector<Vec3> d_out_, d_in_;  // Hermite tangents per key (per unit of u)
   std::vector<double> seg_len_, cum_len_;  // arc length per segment and cumulative
+  std::vector<double> sub_cum_;           // per segment: length at u = k/16, k = 0..16
   double total_length_ = 0;
 
   Vec3 position(std::size_t seg, double u) const;
+  double gauss(std::size_t seg, double a, double b) const;  // 8-point Gauss-Legendre of |p'| on [a, b]
   Quat orientation(std::size_t seg, double u) const;
   void segment_of_time(double t, std::size_t& seg, double& u) const;
 };
