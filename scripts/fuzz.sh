@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-600}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_json fuzz_clers fuzz_ebm)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_json fuzz_clers fuzz_ebm fuzz_patnet)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -20,6 +20,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_json) echo tests/data/table tests/data/regress/json ;;
     fuzz_clers) echo tests/data/regress/clers ;;
     fuzz_ebm) echo tests/data/ebm tests/data/regress/ebm ;;
+    fuzz_patnet) echo examples/patnet tests/data/regress/patnet ;;
   esac
 }
 
