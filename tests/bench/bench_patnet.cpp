@@ -82,6 +82,18 @@ int main() {
   m.load(big, "big.pat", true);
   std::printf("{\"case\":\"load_1000_lines\",\"lines\":1000,\"seconds\":%.4f,\"goal_seconds\":0.02}\n", seconds_since(t1));
 
+  // Primitive calls per CPU second (goal >= 5 million): 3 x 10^6 calls of + and < in a loop.
+  {
+    patnet::RunOptions o;
+    o.max_steps = 100000000;
+    patnet::Machine calc(o, nullptr);
+    const std::clock_t c0 = std::clock();
+    calc.load("(setq s 0) (dotimes (i 1000000) (setq s (+ s (if (< i 5) 1 2) 1)))", "calls.pat", true);
+    const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+    std::printf("{\"case\":\"primitive_calls\",\"calls\":2000000,\"cpu_seconds\":%.3f,\"calls_per_cpu_s\":%.4g,\"goal_calls_per_s\":5e6}\n",
+                cpu, 2e6 / cpu);
+  }
+
   const long rss0 = peak_rss_kb();
   patnet::Machine idle;
   idle.load("(defnet idler :locals '(a b c) (defcond :never nil) (defnode s :no-op (:never s)))\n"
