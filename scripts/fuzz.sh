@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-600}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json fuzz_image_stream)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json fuzz_image_stream fuzz_patnet)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -22,6 +22,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_ebm) echo tests/data/ebm tests/data/regress/ebm ;;
     fuzz_camera_json) echo tests/data/markerpose ;;
     fuzz_image_stream) echo tests/data/image ;;
+    fuzz_patnet) echo examples/patnet tests/data/regress/patnet ;;
   esac
 }
 

@@ -43,6 +43,7 @@ TEST_TOOL_PKGS=(
   jq                         # CLI tests read the JSON that tools print
   unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
+  libqt5scxml5-dev           # Qt SCXML: the same-run anchor of tests/bench/bench_patnet_scxml
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
   # tests/interop: independent readers of every format fest writes
   assimp-utils               # `assimp info`: meshes (PLY OBJ OFF STL)
@@ -52,6 +53,7 @@ TEST_TOOL_PKGS=(
   gdal-bin                   # gdalinfo: TIFF
   python3-nibabel            # the independent volume reader of tests/cli/fconv_nibabel.sh; its test files are fetched as real data
   libopencv-contrib-dev libapriltag-dev   # cv::aruco and AprilTag 3: anchors of tests/bench/bench_markerpose only
+  graphviz                   # dot: tests/cli/patnet.sh checks that `patnet dot` output is valid Graphviz
 )
 
 # --- arguments ----------------------------------------------------------------
