@@ -1,0 +1,159 @@
+#include "wavelet/band_coder.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+
+#include "core/error.hpp"
+#include "wavelet/range_coder.hpp"
+
+namespace fest::wavelet {
+
+std::vector<Slab> slabs_of(const Subband& band) {
+  std::vector<Slab> out;
+  for (std::size_t z = band.lo[2]; z < band.hi[2]; z += kSlabPlanes)
+    out.push_back({z, std::min(band.hi[2], z + kSlabPlanes)});
+  return out;
+}
+
+const Subband* parent_of(const std::vector<Subband>& bands, const Subband& band) noexcept {
+  if (band.orientation == 0) return nullptr;
+  for (const auto& b : bands)
+    if (b.orientation == band.orientation && b.level == band.level + 1) return &b;
+  return nullptr;
+}
+
+namespace {
+
+constexpr int kMagClasses = 16;
+constexpr int kParentClasses = 3;
+constexpr int kMaxExponent = 62;
+
+int bit_width(std::uint64_t v) noexcept { return v == 0 ? 0 : 64 - __builtin_clzll(v); }
+
+// Neighbourhood activity -> one of kMagClasses classes (0, 1, 2 exactly; then by octave).
+int magnitude_class(std::uint64_t s) noexcept {
+  if (s < 3) return static_cast<int>(s);
+  return std::min(kMagClasses - 1, 1 + bit_width(s));
+}
+
+int parent_class(std::uint64_t p) noexcept { return p == 0 ? 0 : (p < 3 ? 1 : 2); }
+
+struct Models {
+  std::array<BitModel, kMagClasses * kParentClasses> zero;
+  std::array<std::array<BitModel, kMaxExponent + 1>, kMagClasses> exponent;
+  std::array<BitModel, kMaxExponent + 1> second_bit;
+  std::array<BitModel, 9> sign;
+};
+
+int sign_of(std::int64_t v) noexcept { return v > 0 ? 1 : (v < 0 ? 2 : 0); }
+
+// Walks the slab in coding order, handing the coder each position with its contexts.
+// `value(i)` reads the current (already coded) coefficient at linear index i.
+template <typename Visit>
+void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent, const Slab& slab,
+          const Visit& visit) {
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  for (std::size_t z = slab.z0; z < slab.z1; ++z)
+    for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y)
+      for (std::size_t x = band.lo[0]; x < band.hi[0]; ++x) {
+        const std::size_t i = x + y * sy + z * sz;
+        const std::int64_t a = x > band.lo[0] ? data[i - 1] : 0;
+        const std::int64_t b = y > band.lo[1] ? data[i - sy] : 0;
+        const std::int64_t c = z > slab.z0 ? data[i - sz] : 0;
+        const std::int64_t d = (x > band.lo[0] && y > band.lo[1]) ? data[i - 1 - sy] : 0;
+        std::uint64_t p = 0;
+        if (parent) {
+          const std::size_t px = std::min(parent->lo[0] + (x - band.lo[0]) / 2, parent->hi[0] - 1);
+          const std::size_t py = std::min(parent->lo[1] + (y - band.lo[1]) / 2, parent->hi[1] - 1);
+          const std::size_t pz = std::min(parent->lo[2] + (z - band.lo[2]) / 2, parent->hi[2] - 1);
+          p = static_cast<std::uint64_t>(std::llabs(data[px + py * sy + pz * sz]));
+        }
+        const std::uint64_t activity = 2 * static_cast<std::uint64_t>(std::llabs(a)) +
+                                       static_cast<std::uint64_t>(std::llabs(b)) +
+                                       static_cast<std::uint64_t>(std::llabs(c)) +
+                                       static_cast<std::uint64_t>(std::llabs(d)) / 2;
+        visit(i, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c);
+      }
+}
+
+// The prediction of an approximation coefficient from its first available neighbour.
+std::int64_t approx_prediction(std::int64_t a, std::int64_t b, std::int64_t c, const std::size_t* pos,
+                               const Subband& band, const Slab& slab) {
+  if (pos[0] > band.lo[0]) return a;
+  if (pos[1] > band.lo[1]) return b;
+  if (pos[2] > slab.z0) return c;
+  return 0;
+}
+
+}  // namespace
+
+std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
+                        const Slab& slab) {
+  RangeEncoder enc;
+  auto models = std::make_unique<Models>();
+  const bool approx = band.orientation == 0;
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  walk(data, dims, band, parent, slab,
+       [&](std::size_t i, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
+         std::int64_t v = data[i];
+         if (approx) {
+           const std::size_t pos[3] = {i % sy, (i / sy) % dims[1], i / sz};
+           v -= approx_prediction(a, b, c, pos, band, slab);
+         }
+         enc.encode(models->zero[mc * kParentClasses + pc], v != 0);
+         if (v == 0) return;
+         const std::uint64_t mag = static_cast<std::uint64_t>(v < 0 ? -v : v);
+         const int e = bit_width(mag) - 1;
+         for (int k = 0; k < e; ++k) enc.encode(models->exponent[mc][k], 1);
+         if (e < kMaxExponent) enc.encode(models->exponent[mc][e], 0);
+         if (e >= 1) {
+           enc.encode(models->second_bit[e], static_cast<int>((mag >> (e - 1)) & 1));
+           for (int k = e - 2; k >= 0; --k) enc.encode_direct(static_cast<int>((mag >> k) & 1));
+         }
+         enc.encode(models->sign[sc], v < 0);
+       });
+  return enc.finish();
+}
+
+void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
+                 const Subband* parent, const Slab& slab, int max_exponent) {
+  RangeDecoder dec(bytes);
+  auto models = std::make_unique<Models>();
+  const bool approx = band.orientation == 0;
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  const int limit = std::min(max_exponent, kMaxExponent);
+  bool bad = false;
+  walk(data, dims, band, parent, slab,
+       [&](std::size_t i, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
+         std::int64_t v = 0;
+         if (!bad && dec.decode(models->zero[mc * kParentClasses + pc])) {
+           int e = 0;
+           while (e < kMaxExponent && dec.decode(models->exponent[mc][e])) ++e;
+           if (e > limit) {
+             bad = true;
+           } else {
+             std::uint64_t mag = 1;
+             if (e >= 1) {
+               mag = (mag << 1) | static_cast<std::uint64_t>(dec.decode(models->second_bit[e]));
+               for (int k = e - 2; k >= 0; --k) mag = (mag << 1) | static_cast<std::uint64_t>(dec.decode_direct());
+             }
+             v = dec.decode(models->sign[sc]) ? -static_cast<std::int64_t>(mag) : static_cast<std::int64_t>(mag);
+           }
+         }
+         if (approx && !bad) {
+           const std::size_t pos[3] = {i % sy, (i / sy) % dims[1], i / sz};
+           const std::int64_t pred = approx_prediction(a, b, c, pos, band, slab);
+           // The prediction is a neighbour already checked against the bound, so the
+           // sum stays far inside int64.
+           v += pred;
+           if (bit_width(static_cast<std::uint64_t>(v < 0 ? -v : v)) - 1 > limit) bad = true;
+         }
+         data[i] = bad ? 0 : v;
+       });
+  if (bad || dec.overrun())
+    throw bad_input("corrupt or truncated coefficient stream (level {} band {}, planes {}-{})", band.level,
+                    band.orientation, slab.z0, slab.z1 - 1);
+}
+
+}  // namespace fest::wavelet
