@@ -1,0 +1,169 @@
+#!/usr/bin/env bash
+# volwave: the L-infinity bound checked by an independent comparison (fcompare max-abs),
+# bit-exact lossless coding, truncated files decoding to coarser volumes whose stated
+# error is the real one, a golden .vw that must keep decoding, and bad input.
+source "$(dirname "$0")/lib.sh"
+HERE=$(cd "$(dirname "$0")" && pwd)
+MAKE="python3 $HERE/volwave_make.py"
+V="$FEST_BIN/volwave"
+FC="$FEST_BIN/fcompare"
+
+for k in smooth ct nan mask; do $MAKE $k "$WORK/$k.nrrd"; done
+
+case_ "--version and --help"
+run volwave --version; expect_status 0; expect_stderr_has '^$|.*' 
+run volwave encode --help; expect_status 0
+
+# The bound holds on every voxel, as fcompare (not volwave) measures it.
+for vol in smooth ct; do
+  for e in 0.1 0.5 1 3 25; do
+    for w in cdf53 haar; do
+      case_ "bound $e on $vol with $w"
+      run volwave encode "$WORK/$vol.nrrd" --max-error "$e" --wavelet "$w" -o "$WORK/a.vw"
+      expect_status 0
+      run volwave decode "$WORK/a.vw" -o "$WORK/a.nrrd"
+      expect_status 0
+      check "fcompare max-abs <= $e" "$FC" "$WORK/$vol.nrrd" "$WORK/a.nrrd" --tol "$e"
+    done
+  done
+done
+
+# Fixtures of other formats and types (big-endian NIfTI, gzip NRRD, zlib MHA).
+for f in be_int16.nii gzip_uint16.nrrd zlib_float.mha msb_short.mha scaled_uint8.nii; do
+  case_ "bound 1 on $f"
+  run volwave encode "$FEST_FIXTURES/volume/$f" --max-error 1 -o "$WORK/f.vw"
+  expect_status 0
+  run volwave decode "$WORK/f.vw" -o "$WORK/f.nrrd"
+  check "fcompare $f" "$FC" "$FEST_FIXTURES/volume/$f" "$WORK/f.nrrd" --tol 1
+  case_ "lossless on $f"
+  run volwave encode "$FEST_FIXTURES/volume/$f" --lossless -o "$WORK/f.vw"
+  expect_status 0
+  run volwave decode "$WORK/f.vw" -o "$WORK/f.nrrd"
+  check "fcompare $f exact" "$FC" "$FEST_FIXTURES/volume/$f" "$WORK/f.nrrd" --tol 0
+done
+
+# Lossless is bit-exact: the decoded NRRD's data bytes equal the input's.
+for vol in smooth ct; do
+  case_ "lossless $vol"
+  run volwave encode "$WORK/$vol.nrrd" --lossless -o "$WORK/l.vw"
+  expect_status 0
+  run volwave decode "$WORK/l.vw" -o "$WORK/l.nrrd"
+  expect_status 0
+  check "data bytes identical" cmp <(tail -c 53760 "$WORK/$vol.nrrd") <(tail -c 53760 "$WORK/l.nrrd")
+  check "fcompare exact" "$FC" "$WORK/$vol.nrrd" "$WORK/l.nrrd" --tol 0
+done
+case_ "lossless keeps a NaN"
+run volwave encode "$WORK/nan.nrrd" --lossless -o "$WORK/n.vw"
+expect_status 0
+run volwave decode "$WORK/n.vw" -o "$WORK/n.nrrd"
+check "NaN data bytes identical" cmp <(tail -c 107520 "$WORK/nan.nrrd") <(tail -c 107520 "$WORK/n.nrrd")
+
+# Deterministic: any thread count gives the same bytes.
+case_ "deterministic"
+"$V" encode "$WORK/smooth.nrrd" --max-error 0.5 --threads 1 -o "$WORK/t1.vw"
+"$V" encode "$WORK/smooth.nrrd" --max-error 0.5 --threads 3 -o "$WORK/t3.vw"
+check "same bytes with 1 and 3 threads" cmp "$WORK/t1.vw" "$WORK/t3.vw"
+
+# Truncation: a file cut inside chunk k decodes to the chunks before it, the stated
+# error is what fcompare measures, and the error shrinks as more chunks arrive.
+"$V" encode "$WORK/smooth.nrrd" --max-error 0.5 -o "$WORK/full.vw"
+run volwave info "$WORK/full.vw"
+expect_status 0
+cp "$out" "$WORK/info.json"
+nchunks=$(jq '.chunks | length' "$WORK/info.json")
+prev=1e300
+for k in $(seq 1 $((nchunks - 2))); do
+  case_ "truncated inside chunk $k"
+  through=$(jq ".chunks[$((k - 1))].file_bytes_through" "$WORK/info.json")
+  size=$(jq ".chunks[$k].bytes" "$WORK/info.json")
+  head -c $((through + size / 2)) "$WORK/full.vw" >"$WORK/cut.vw"
+  run volwave decode "$WORK/cut.vw" -o "$WORK/cut.nrrd" --report "$WORK/cut.json"
+  expect_status 0
+  expect_stderr_has "^volwave: warning: truncated file: decoded $k of $nchunks chunks"
+  stated=$(jq .max_error "$WORK/cut.json")
+  measured=$("$FC" "$WORK/smooth.nrrd" "$WORK/cut.nrrd" --tol 1e9 --report "$WORK/fc.json" >/dev/null; jq .metrics.max_abs "$WORK/fc.json")
+  check "stated error $stated = measured $measured" python3 -c "import sys; a,b=float('$stated'),float('$measured'); sys.exit(abs(a-b) > 1e-6*max(1,a))"
+  rms=$(jq .rmse "$WORK/cut.json")
+  check "rmse $rms does not grow with more chunks (was $prev)" python3 -c "import sys; sys.exit(not float('$rms') <= float('$prev') * 1.0001)"
+  prev=$rms
+  run volwave info "$WORK/cut.vw"
+  expect_json '.truncated' 'true'
+  expect_json '.chunks_complete' "$k"
+done
+case_ "--chunks decodes a coarser volume on purpose"
+run volwave decode "$WORK/full.vw" --chunks 2 -o "$WORK/c2.nrrd" --report "$WORK/c2.json"
+expect_status 0
+check "two chunks used" test "$(jq .chunks_decoded "$WORK/c2.json")" = 2
+
+# Region of interest: a box and a mask get their own, tighter bound.
+case_ "roi box"
+run volwave encode "$WORK/smooth.nrrd" --max-error 20 --roi-box 8,8,4,15,15,9 --roi-error 0.25 -o "$WORK/roi.vw" --report "$WORK/roi.json"
+expect_status 0
+run volwave decode "$WORK/roi.vw" -o "$WORK/roi.nrrd"
+check "outside within 20" "$FC" "$WORK/smooth.nrrd" "$WORK/roi.nrrd" --tol 20
+check "region bound reported" python3 -c "import json,sys; r=json.load(open('$WORK/roi.json')); sys.exit(not r['roi_max_error'] <= 0.25)"
+case_ "roi mask"
+run volwave encode "$WORK/smooth.nrrd" --max-error 20 --roi-mask "$WORK/mask.nrrd" --roi-error 0.25 -o "$WORK/roim.vw" --report "$WORK/roim.json"
+expect_status 0
+check "mask region bound reported" python3 -c "import json,sys; r=json.load(open('$WORK/roim.json')); sys.exit(not r['roi_max_error'] <= 0.25)"
+
+# RMS targets, with CDF 9/7 and 5/3.
+for w in cdf97 cdf53; do
+  case_ "rmse 2 with $w"
+  run volwave encode "$WORK/smooth.nrrd" --rmse 2 --wavelet "$w" -o "$WORK/r.vw"
+  expect_status 0
+  run volwave decode "$WORK/r.vw" -o "$WORK/r.nrrd"
+  check "fcompare rmse <= 2" "$FC" "$WORK/smooth.nrrd" "$WORK/r.nrrd" --tol 1e9 -t 'rmse<=2'
+done
+
+# Golden: a .vw written by this version must keep decoding to within its bound of the
+# volume it came from (file-format stability), and encoding again gives the same bytes.
+case_ "golden"
+golden="$FEST_FIXTURES/volwave/smooth_e0.5.vw"
+run volwave decode "$golden" -o "$WORK/g.nrrd"
+expect_status 0
+check "golden decodes within 0.5" "$FC" "$WORK/smooth.nrrd" "$WORK/g.nrrd" --tol 0.5
+check "encoding again gives the golden bytes" cmp "$golden" "$WORK/full.vw"
+
+# Standard input and output.
+case_ "pipes"
+"$V" encode --max-error 1 <"$WORK/ct.nrrd" | "$V" decode >"$WORK/p.nrrd"
+check "pipe round trip" "$FC" "$WORK/ct.nrrd" "$WORK/p.nrrd" --tol 1
+
+# Bad input and usage.
+case_ "bound zero"; run volwave encode "$WORK/smooth.nrrd" --max-error 0 -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "bound negative"; run volwave encode "$WORK/smooth.nrrd" --max-error -1 -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "rmse zero"; run volwave encode "$WORK/smooth.nrrd" --rmse 0 -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "two modes"; run volwave encode "$WORK/smooth.nrrd" --max-error 1 --lossless -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "no mode"; run volwave encode "$WORK/smooth.nrrd" -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "cdf97 with a bound"; run volwave encode "$WORK/smooth.nrrd" --max-error 1 --wavelet cdf97 -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "NaN with a bound"
+run volwave encode "$WORK/nan.nrrd" --max-error 1 -o "$WORK/x.vw"
+expect_clean_failure 3 volwave
+expect_stderr_has "1 voxels are NaN"
+check "nothing written" test ! -e "$WORK/x.vw"
+case_ "roi box outside"; run volwave encode "$WORK/smooth.nrrd" --max-error 5 --roi-box 0,0,0,40,10,10 --roi-error 1 -o "$WORK/x.vw"; expect_clean_failure 3 volwave
+expect_stderr_has "outside the volume"
+case_ "roi error above bound"; run volwave encode "$WORK/smooth.nrrd" --max-error 1 --roi-box 0,0,0,4,4,4 --roi-error 2 -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+case_ "roi mask of other size"; run volwave encode "$WORK/smooth.nrrd" --max-error 1 --roi-mask "$FEST_FIXTURES/volume/be_int16.nii" --roi-error 0.5 -o "$WORK/x.vw"; expect_clean_failure 3 volwave
+case_ "truncated header"
+head -c 60 "$WORK/full.vw" >"$WORK/h.vw"
+run volwave decode "$WORK/h.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+expect_stderr_has "truncated"
+check "nothing written" test ! -e "$WORK/x.nrrd"
+case_ "truncated inside the coarsest level"
+through=$(jq '.chunks[0].file_bytes_through' "$WORK/info.json")
+head -c $((through - 1)) "$WORK/full.vw" >"$WORK/h.vw"
+run volwave decode "$WORK/h.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+case_ "damaged chunk"
+python3 -c "
+b=bytearray(open('$WORK/full.vw','rb').read()); b[-200]^=0x55; open('$WORK/d.vw','wb').write(b)"
+run volwave decode "$WORK/d.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+expect_stderr_has "checksum"
+case_ "not a .vw"; run volwave decode "$WORK/smooth.nrrd" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+case_ "empty .vw"; : >"$WORK/e.vw"; run volwave decode "$WORK/e.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+case_ "info on garbage"; run volwave info "$WORK/smooth.nrrd"; expect_clean_failure 3 volwave
+case_ "not a volume"; run volwave encode "$WORK/info.json" --max-error 1 -o "$WORK/x.vw"; expect_clean_failure 3 volwave
+case_ "missing file"; run volwave encode "$WORK/none.nrrd" --max-error 1 -o "$WORK/x.vw"; expect_clean_failure 4 volwave
+
+finish
