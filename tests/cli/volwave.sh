@@ -125,6 +125,32 @@ expect_status 0
 check "golden decodes within 0.5" "$FC" "$WORK/smooth.nrrd" "$WORK/g.nrrd" --tol 0.5
 check "encoding again gives the golden bytes" cmp "$golden" "$WORK/full.vw"
 
+# Edges of analytic volumes lie where the mathematics puts them, within half a voxel
+# (sub-voxel points in voxel coordinates from --points; the surfaces of volwave_make.py).
+for k in sphere step cylinder; do $MAKE $k "$WORK/$k.nrrd"; done
+edge_check() {  # edge_check KIND PYTHON-DISTANCE-EXPRESSION MIN-POINTS
+  local kind="$1" expr="$2" min="$3"
+  case_ "edges of the $kind"
+  run volwave edges "$WORK/$kind.nrrd" -o "$WORK/$kind.edges.nrrd" --points "$WORK/$kind.csv" --report "$WORK/$kind.ej.json"
+  expect_status 0
+  check "$kind edge points within 0.5 voxel, at least $min" python3 - "$WORK/$kind.csv" "$min" <<PY
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+worst = 0.0
+for r in rows:
+    i, j, k = float(r["i"]), float(r["j"]), float(r["k"])
+    worst = max(worst, abs($expr))
+print(len(rows), worst, file=sys.stderr)
+sys.exit(not (len(rows) >= int(sys.argv[2]) and worst <= 0.5))
+PY
+  check "$kind edge volume has the edge count" test "$(jq .edge_voxels "$WORK/$kind.ej.json")" -ge "$min"
+}
+edge_check sphere "math.sqrt((i-16.2)**2 + (j-15.7)**2 + (k-14.4)**2) - 9.3" 700
+edge_check step "i - 12.5" 840
+edge_check cylinder "math.hypot(i-15.5, j-16.25) - 7.6" 1000
+case_ "edges of NaN data"; run volwave edges "$WORK/nan.nrrd" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+case_ "edges min-scales above scales"; run volwave edges "$WORK/step.nrrd" --scales 2 --min-scales 3 -o "$WORK/x.nrrd"; expect_clean_failure 2 volwave
+
 # Standard input and output.
 case_ "pipes"
 "$V" encode --max-error 1 <"$WORK/ct.nrrd" | "$V" decode >"$WORK/p.nrrd"
