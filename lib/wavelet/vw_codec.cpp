@@ -245,7 +245,8 @@ std::string write_header(const VwHeader& h, const std::vector<std::uint8_t>& roi
   return w.out;
 }
 
-VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vector<std::uint8_t>* roi) {
+VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vector<std::uint8_t>* roi,
+                      bool check_hash = true) {
   if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
     if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a version-1 .vw file");
     throw bad_input("not a .vw file (no \\x89VW magic)");
@@ -312,7 +313,7 @@ VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vec
   if (has_roi) mask = read_runs(r, static_cast<std::size_t>(voxels));
   const std::size_t end = r.pos;
   const std::uint64_t hash = r.u64();
-  if (hash != fnv1a(bytes.substr(0, end))) throw bad_input(".vw header: checksum mismatch (damaged header)");
+  if (check_hash && hash != fnv1a(bytes.substr(0, end))) throw bad_input(".vw header: checksum mismatch (damaged header)");
   h.header_bytes = r.pos;
   if (roi) *roi = std::move(mask);
   return h;
@@ -532,6 +533,24 @@ std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats*
     stats->step = h.quantiser.step;
   }
   return out;
+}
+
+void reseal_vw(std::string& bytes, std::uint64_t max_voxels) {
+  std::vector<std::uint8_t> roi;
+  VwHeader h;
+  try {
+    h = parse_header(bytes, max_voxels, &roi, false);
+  } catch (const Error&) {
+    return;
+  }
+  std::size_t pos = h.header_bytes;
+  for (auto& c : h.chunks) {
+    if (bytes.size() - pos < c.bytes) break;
+    c.hash = fnv1a(std::string_view(bytes).substr(pos, c.bytes));
+    pos += c.bytes;
+  }
+  const std::string header = write_header(h, roi);
+  if (header.size() == h.header_bytes) bytes.replace(0, header.size(), header);
 }
 
 DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std::uint64_t max_voxels) {

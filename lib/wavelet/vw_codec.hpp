@@ -99,4 +99,8 @@ struct DecodeResult {
 DecodeResult decode_vw(std::string_view bytes, int threads = 1, int max_chunks = -1,
                        std::uint64_t max_voxels = kMaxVoxels);
 
+// Recomputes the header's and the complete chunks' hashes in place (fuzzers use it to
+// get past the checksums to the parsers behind them). Leaves unparsable bytes alone.
+void reseal_vw(std::string& bytes, std::uint64_t max_voxels = kMaxVoxels);
+
 }  // namespace fest::wavelet

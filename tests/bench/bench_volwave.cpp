@@ -23,6 +23,7 @@
 #include <zstd.h>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "volume_input.hpp"
 #include "wavelet/vw_codec.hpp"
 
@@ -97,6 +98,7 @@ int main(int argc, char** argv) {
       files.push_back(a);
     }
   }
+  const int cores = available_cores();
   blosc_init();
   blosc_set_nthreads(1);
   try {
@@ -175,9 +177,11 @@ int main(int argc, char** argv) {
           const double te = best_of(1, [&] { vw = wavelet::encode_vw(v, o); });
           wavelet::DecodeResult d;
           const double td = best_of(repeat, [&] { d = wavelet::decode_vw(vw, 1); });
+          const double tdn = best_of(repeat, [&] { (void)wavelet::decode_vw(vw, cores); });
           nlohmann::json j = base;
           j.update({{"codec", "volwave-cdf53"}, {"bound", e}, {"bytes", vw.size()}, {"ratio", rawn / vw.size()},
-                    {"max_error", max_abs(v.voxels, d.volume.voxels)}, {"encode_s", te}, {"decode_s", td}});
+                    {"max_error", max_abs(v.voxels, d.volume.voxels)}, {"encode_s", te}, {"decode_s", td},
+                    {"decode_s_threads", tdn}, {"threads", cores}});
           line(j);
         }
         {

@@ -248,3 +248,32 @@ TEST(WaveletCodec, SameBytesForAnyThreadCount) {
   o.threads = 4;
   EXPECT_EQ(a, encode_vw(v, o));
 }
+
+TEST(WaveletCodec, ResealedMutationsFailCleanly) {
+  // What tests/fuzz/fuzz_vw.cpp does, for a fixed budget in the suite: mutations with
+  // valid hashes reach the parsers and the range decoder; only fest::Error may come out.
+  const Volume v = test_volume(ScalarType::f32, 12, 10, 9);
+  EncodeOptions o;
+  o.bound = 0.5;
+  o.roi_mask.assign(v.size(), 0);
+  o.roi_mask[5] = 1;
+  o.roi_bound = 0.1;
+  const std::string bytes = encode_vw(v, o);
+  std::mt19937_64 rng(17);
+  int decoded = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string b = bytes;
+    const int flips = 1 + static_cast<int>(rng() % 3);
+    for (int f = 0; f < flips; ++f) b[rng() % b.size()] ^= static_cast<char>(1u << (rng() % 8));
+    if (rng() % 4 == 0) b.resize(rng() % b.size());
+    reseal_vw(b, 1 << 16);
+    try {
+      const DecodeResult d = decode_vw(b, 1, -1, 1 << 16);
+      EXPECT_EQ(d.volume.voxels.size(), d.volume.size());
+      ++decoded;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), Status::bad_input) << e.what();
+    }
+  }
+  EXPECT_GT(decoded, 0);
+}
