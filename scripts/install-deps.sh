@@ -43,6 +43,7 @@ TEST_TOOL_PKGS=(
   unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
+  libzfp-dev zfp libblosc-dev libzstd-dev zstd   # anchors of tests/bench/volwave.sh (bench_volwave links ZFP, Blosc, zstd)
 )
 
 # --- arguments ----------------------------------------------------------------
