@@ -54,27 +54,39 @@ template <typename Visit>
 void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent, const Slab& slab,
           const Visit& visit) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  const std::size_t w = band.hi[0] - band.lo[0];
+  // Rows of zeros stand in for the neighbours outside the band or the slab, so the
+  // inner loop has no branches for them.
+  const std::vector<std::int64_t> zeros(w + 1, 0);
+  std::vector<std::size_t> px(w, 0);
+  if (parent)
+    for (std::size_t k = 0; k < w; ++k) px[k] = std::min(parent->lo[0] + k / 2, parent->hi[0] - 1);
   for (std::size_t z = slab.z0; z < slab.z1; ++z)
-    for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y)
-      for (std::size_t x = band.lo[0]; x < band.hi[0]; ++x) {
-        const std::size_t i = x + y * sy + z * sz;
-        const std::int64_t a = x > band.lo[0] ? data[i - 1] : 0;
-        const std::int64_t b = y > band.lo[1] ? data[i - sy] : 0;
-        const std::int64_t c = z > slab.z0 ? data[i - sz] : 0;
-        const std::int64_t d = (x > band.lo[0] && y > band.lo[1]) ? data[i - 1 - sy] : 0;
-        std::uint64_t p = 0;
-        if (parent) {
-          const std::size_t px = std::min(parent->lo[0] + (x - band.lo[0]) / 2, parent->hi[0] - 1);
-          const std::size_t py = std::min(parent->lo[1] + (y - band.lo[1]) / 2, parent->hi[1] - 1);
-          const std::size_t pz = std::min(parent->lo[2] + (z - band.lo[2]) / 2, parent->hi[2] - 1);
-          p = static_cast<std::uint64_t>(std::llabs(data[px + py * sy + pz * sz]));
-        }
+    for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
+      const std::size_t row0 = band.lo[0] + y * sy + z * sz;
+      const std::int64_t* row = data + row0;
+      const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data() + 1;
+      const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data() + 1;
+      const std::int64_t* prow = nullptr;
+      if (parent) {
+        const std::size_t py = std::min(parent->lo[1] + (y - band.lo[1]) / 2, parent->hi[1] - 1);
+        const std::size_t pz = std::min(parent->lo[2] + (z - band.lo[2]) / 2, parent->hi[2] - 1);
+        prow = data + py * sy + pz * sz;
+      }
+      for (std::size_t k = 0; k < w; ++k) {
+        const std::int64_t a = k > 0 ? row[k - 1] : 0;
+        const std::int64_t b = up[k];
+        const std::int64_t c = back[k];
+        const std::int64_t d = k > 0 ? up[k - 1] : 0;
+        const std::uint64_t p = prow ? static_cast<std::uint64_t>(std::llabs(prow[px[k]])) : 0;
         const std::uint64_t activity = 2 * static_cast<std::uint64_t>(std::llabs(a)) +
                                        static_cast<std::uint64_t>(std::llabs(b)) +
                                        static_cast<std::uint64_t>(std::llabs(c)) +
                                        static_cast<std::uint64_t>(std::llabs(d)) / 2;
-        visit(i, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c);
+        const std::size_t pos[3] = {band.lo[0] + k, y, z};
+        visit(row0 + k, pos, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c);
       }
+    }
 }
 
 // The prediction of an approximation coefficient from its first available neighbour.
@@ -93,14 +105,10 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
   RangeEncoder enc;
   auto models = std::make_unique<Models>();
   const bool approx = band.orientation == 0;
-  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   walk(data, dims, band, parent, slab,
-       [&](std::size_t i, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
+       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
          std::int64_t v = data[i];
-         if (approx) {
-           const std::size_t pos[3] = {i % sy, (i / sy) % dims[1], i / sz};
-           v -= approx_prediction(a, b, c, pos, band, slab);
-         }
+         if (approx) v -= approx_prediction(a, b, c, pos, band, slab);
          enc.encode(models->zero[mc * kParentClasses + pc], v != 0);
          if (v == 0) return;
          const std::uint64_t mag = static_cast<std::uint64_t>(v < 0 ? -v : v);
@@ -121,11 +129,10 @@ void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, c
   RangeDecoder dec(bytes);
   auto models = std::make_unique<Models>();
   const bool approx = band.orientation == 0;
-  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const int limit = std::min(max_exponent, kMaxExponent);
   bool bad = false;
   walk(data, dims, band, parent, slab,
-       [&](std::size_t i, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
+       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
          std::int64_t v = 0;
          if (!bad && dec.decode(models->zero[mc * kParentClasses + pc])) {
            int e = 0;
@@ -142,7 +149,6 @@ void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, c
            }
          }
          if (approx && !bad) {
-           const std::size_t pos[3] = {i % sy, (i / sy) % dims[1], i / sz};
            const std::int64_t pred = approx_prediction(a, b, c, pos, band, slab);
            // The prediction is a neighbour already checked against the bound, so the
            // sum stays far inside int64.

@@ -17,7 +17,8 @@ constexpr double kMaxKey = 1125899906842624.0;  // 2^50: keys and their sums sta
 template <typename T>
 double clamp_round(double v) noexcept {
   if (std::isnan(v)) return 0.0;
-  const double r = std::round(v);  // halves away from zero
+  // Decoded integer data is integral already: skip the (slow) libm rounding then.
+  const double r = (std::fabs(v) < 9e15 && v == static_cast<double>(static_cast<std::int64_t>(v))) ? v : std::round(v);
   const double lo = static_cast<double>(std::numeric_limits<T>::lowest());
   const double hi = static_cast<double>(std::numeric_limits<T>::max());
   return std::clamp(r, lo, hi);
