@@ -84,14 +84,23 @@ void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const
                                        static_cast<std::uint64_t>(std::llabs(c)) +
                                        static_cast<std::uint64_t>(std::llabs(d)) / 2;
         const std::size_t pos[3] = {band.lo[0] + k, y, z};
-        visit(row0 + k, pos, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c);
+        visit(row0 + k, pos, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c, d);
       }
     }
 }
 
-// The prediction of an approximation coefficient from its first available neighbour.
-std::int64_t approx_prediction(std::int64_t a, std::int64_t b, std::int64_t c, const std::size_t* pos,
+// The prediction of an approximation coefficient: LOCO-I's median edge detector
+// (JPEG-LS) from a = x-1, b = y-1, d = (x-1, y-1) inside the plane, else the first
+// available neighbour. The result lies between neighbours, so it cannot overflow; and
+// for float32 bit keys (monotone in the value) it is the key of the MED of the values.
+std::int64_t approx_prediction(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d, const std::size_t* pos,
                                const Subband& band, const Slab& slab) {
+  if (pos[0] > band.lo[0] && pos[1] > band.lo[1]) {
+    const std::int64_t lo = std::min(a, b), hi = std::max(a, b);
+    if (d >= hi) return lo;
+    if (d <= lo) return hi;
+    return a + (b - d);  // d lies strictly between a and b here
+  }
   if (pos[0] > band.lo[0]) return a;
   if (pos[1] > band.lo[1]) return b;
   if (pos[2] > slab.z0) return c;
@@ -106,9 +115,10 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
   auto models = std::make_unique<Models>();
   const bool approx = band.orientation == 0;
   walk(data, dims, band, parent, slab,
-       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
+       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c,
+           std::int64_t d) {
          std::int64_t v = data[i];
-         if (approx) v -= approx_prediction(a, b, c, pos, band, slab);
+         if (approx) v -= approx_prediction(a, b, c, d, pos, band, slab);
          enc.encode(models->zero[mc * kParentClasses + pc], v != 0);
          if (v == 0) return;
          const std::uint64_t mag = static_cast<std::uint64_t>(v < 0 ? -v : v);
@@ -132,7 +142,8 @@ void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, c
   const int limit = std::min(max_exponent, kMaxExponent);
   bool bad = false;
   walk(data, dims, band, parent, slab,
-       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c) {
+       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c,
+           std::int64_t d) {
          std::int64_t v = 0;
          if (!bad && dec.decode(models->zero[mc * kParentClasses + pc])) {
            int e = 0;
@@ -149,7 +160,7 @@ void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, c
            }
          }
          if (approx && !bad) {
-           const std::int64_t pred = approx_prediction(a, b, c, pos, band, slab);
+           const std::int64_t pred = approx_prediction(a, b, c, d, pos, band, slab);
            // The prediction is a neighbour already checked against the bound, so the
            // sum stays far inside int64.
            v += pred;

@@ -7,7 +7,8 @@
 //   exponent e = floor(log2 |v|) in unary, each bit with its own adaptive model;
 //   the bit below the leading one adaptively, the remaining bits directly;
 //   the sign, modelled on the signs of the x-1 and y-1 neighbours.
-// The approximation band codes v - (its x-1, else y-1, else z-1 neighbour) instead.
+// The approximation band codes v minus a prediction instead: the median edge detector
+// of JPEG-LS (LOCO-I) from x-1, y-1 and (x-1, y-1), else the first available neighbour.
 // A band is cut into slabs of kSlabPlanes z-planes, each an independent stream, so
 // slabs decode in parallel and a damaged stream spoils one slab only.
 

@@ -355,6 +355,20 @@ double search_step(double target, double first, const Eval& rmse_of) {
 }  // namespace
 
 std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats* stats) {
+  // Lossless float32 bit patterns: sparse or rough data (a smoke plume: zeros and a few
+  // thousand distinct floats) codes better with no transform at all (MED prediction on
+  // the keys) than through a wavelet of bit patterns; smooth data the other way round.
+  // Without a stated level count, both are tried and the smaller kept.
+  if (o.mode == Mode::lossless && o.levels < 0 && plan_lossless(volume).kind == KeyKind::float32_bits) {
+    EncodeOptions flat = o, deep = o;
+    flat.levels = 0;
+    deep.levels = default_levels(volume.dims);
+    EncodeStats s0, s1;
+    std::string a = encode_vw(volume, flat, &s0), b = encode_vw(volume, deep, &s1);
+    const bool first = a.size() <= b.size();
+    if (stats) *stats = first ? s0 : s1;
+    return first ? a : b;
+  }
   const std::size_t n = volume.size();
   if (n == 0 || volume.voxels.size() != n) throw bad_input("volume has {} voxels for dimensions {}x{}x{}", volume.voxels.size(),
                                                           volume.dims[0], volume.dims[1], volume.dims[2]);
