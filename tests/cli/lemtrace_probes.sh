@@ -67,6 +67,42 @@ expect_status 0
 check "one tube" test "$(jq .tubes "$WORK/t.json")" = 1
 check "VTP opens in fconv" "$FEST_BIN/fconv" --info "$WORK/t.vtp"
 
+case_ "glyphs coloured by a point array (linear pressure: interpolation is exact)"
+python3 - "$WORK/p.vti" <<'PY'
+import sys
+n = 9
+pts = [(-1 + 2 * i / (n - 1), -1 + 2 * j / (n - 1), -1 + 2 * k / (n - 1)) for k in range(n) for j in range(n) for i in range(n)]
+vel = " ".join(f"{-y} {x} 0.05" for x, y, z in pts)
+pre = " ".join(f"{x + 2 * y + 3 * z}" for x, y, z in pts)
+open(sys.argv[1], "w").write(f"""<?xml version="1.0"?>
+<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">
+<ImageData WholeExtent="0 {n-1} 0 {n-1} 0 {n-1}" Origin="-1 -1 -1" Spacing="{2/(n-1)} {2/(n-1)} {2/(n-1)}">
+<Piece Extent="0 {n-1} 0 {n-1} 0 {n-1}"><PointData Vectors="velocity">
+<DataArray type="Float64" Name="velocity" NumberOfComponents="3" format="ascii">{vel}</DataArray>
+<DataArray type="Float64" Name="pressure" format="ascii">{pre}</DataArray>
+</PointData></Piece></ImageData></VTKFile>
+""")
+PY
+run lemtrace probes "$WORK/p.vti" --seed-point 0.31,-0.22,0.45 --seed-point -0.6,0.1,-0.3 --glyphs --color pressure --sides 6 -o "$WORK/pg.ply"
+expect_status 0
+check "glyph colours = pressure at the seeds" python3 - "$WORK/pg.ply" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+head, body = data.split(b"end_header\n", 1)
+lines = head.decode().splitlines()
+n = int([l for l in lines if l.startswith("element vertex")][0].split()[2])
+props = [l.split()[2] for l in lines if l.startswith("property float")]
+rec = struct.Struct("<" + "f" * len(props))
+per = 3 * 6 + 2
+assert n == 2 * per and "pressure" in props, (n, props)
+k = props.index("pressure")
+for g, (x, y, z) in enumerate([(0.31, -0.22, 0.45), (-0.6, 0.1, -0.3)]):
+    got = rec.unpack_from(body, g * per * rec.size)[k]
+    assert abs(got - (x + 2 * y + 3 * z)) < 1e-5, (got, x + 2 * y + 3 * z)
+PY
+case_ "colour by a vector array"; run lemtrace probes "$WORK/p.vti" --seed-point 0,0,0 --glyphs --color velocity -o "$WORK/x.ply"
+expect_clean_failure 3 lemtrace
+
 case_ "nothing to draw"; run lemtrace probes "$WORK/helix.vtu" --seed-point 0,0,0 -o "$WORK/x.ply"; expect_clean_failure 2 lemtrace
 case_ "unknown output"; run lemtrace probes "$WORK/helix.vtu" --seed-point 0,0,0 --glyphs -o "$WORK/x.obj"; expect_clean_failure 2 lemtrace
 case_ "colour by a missing array"; run lemtrace probes "$WORK/helix.vtu" --seed-point 0,0,0 --glyphs --color pressure -o "$WORK/x.ply"
