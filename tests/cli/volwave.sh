@@ -151,6 +151,51 @@ edge_check cylinder "math.hypot(i-15.5, j-16.25) - 7.6" 1000
 case_ "edges of NaN data"; run volwave edges "$WORK/nan.nrrd" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
 case_ "edges min-scales above scales"; run volwave edges "$WORK/step.nrrd" --scales 2 --min-scales 3 -o "$WORK/x.nrrd"; expect_clean_failure 2 volwave
 
+# VTI (two point arrays: one must be chosen) and a fluidsim frame stream (frames and
+# fields must be chosen; a vector component by name.x).
+python3 - "$WORK/two.vti" <<'PY'
+import sys
+n = 6
+pts = [(i, j, k) for k in range(n) for j in range(n) for i in range(n)]
+a = " ".join(f"{x * 10 + y - z}" for x, y, z in pts)
+b = " ".join(f"{0.5 * x} {y} {z}" for x, y, z in pts)
+open(sys.argv[1], "w").write(f"""<?xml version="1.0"?>
+<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">
+<ImageData WholeExtent="0 5 0 5 0 5" Origin="0 0 0" Spacing="1 1 1"><Piece Extent="0 5 0 5 0 5"><PointData>
+<DataArray type="Int16" Name="density" format="ascii">{a}</DataArray>
+<DataArray type="Float32" Name="velocity" NumberOfComponents="3" format="ascii">{b}</DataArray>
+</PointData></Piece></ImageData></VTKFile>
+""")
+PY
+case_ "vti with two arrays needs --field"
+run volwave encode "$WORK/two.vti" --max-error 1 -o "$WORK/v.vw"
+expect_clean_failure 3 volwave
+expect_stderr_has "name one with --field"
+case_ "vti field and component"
+run volwave encode "$WORK/two.vti" --field density --lossless -o "$WORK/v.vw"
+expect_status 0
+run volwave info "$WORK/v.vw"
+expect_json '.value_type' '"int16"'
+run volwave encode "$WORK/two.vti" --field velocity.x --max-error 0.01 -o "$WORK/vx.vw"
+expect_status 0
+if [ -x "$FEST_BIN/fluidsim" ]; then
+  printf '{"dims": [12, 10, 9], "frame_dt": 0.05, "frames": 3, "scalars": [{"name": "density", "alpha": 0.1, "sources": [{"shape": "box", "min": [3, 3, 1], "max": [5, 5, 2], "rate": 10, "velocity": [0, 0, 0.4]}]}], "forces": [{"type": "buoyancy", "scalar": "density", "beta": 0.3}]}\n' >"$WORK/s.json"
+  "$FEST_BIN/fluidsim" run "$WORK/s.json" -o - >"$WORK/s.stream" 2>/dev/null
+  case_ "frame stream needs --frame"
+  run volwave encode "$WORK/s.stream" --max-error 0.001 -o "$WORK/s.vw"
+  expect_clean_failure 3 volwave
+  expect_stderr_has "choose one with --frame"
+  case_ "frame stream field and component"
+  run volwave encode "$WORK/s.stream" --frame 2 --field density --max-error 0.001 -o "$WORK/s.vw" --report "$WORK/s.json2"
+  expect_status 0
+  check "bound on the plume frame" python3 -c "import json,sys; sys.exit(not json.load(open('$WORK/s.json2'))['max_error'] <= 0.001)"
+  run volwave encode "$WORK/s.stream" --frame 2 --field velocity.z --lossless -o "$WORK/sv.vw"
+  expect_status 0
+  run volwave encode "$WORK/s.stream" --frame 2 --field velocity --lossless -o "$WORK/sv.vw"
+  expect_clean_failure 3 volwave
+  expect_stderr_has "components"
+fi
+
 # Standard input and output.
 case_ "pipes"
 "$V" encode --max-error 1 <"$WORK/ct.nrrd" | "$V" decode >"$WORK/p.nrrd"
