@@ -37,6 +37,11 @@ int magnitude_class(std::uint64_t s) noexcept {
   return std::min(kMagClasses - 1, 1 + bit_width(s));
 }
 
+inline std::uint64_t mag(std::int64_t v) noexcept {
+  const std::uint64_t m = static_cast<std::uint64_t>(v >> 63);
+  return (static_cast<std::uint64_t>(v) ^ m) - m;
+}
+
 int parent_class(std::uint64_t p) noexcept { return p == 0 ? 0 : (p < 3 ? 1 : 2); }
 
 struct Models {
@@ -78,11 +83,8 @@ void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const
         const std::int64_t b = up[k];
         const std::int64_t c = back[k];
         const std::int64_t d = k > 0 ? up[k - 1] : 0;
-        const std::uint64_t p = prow ? static_cast<std::uint64_t>(std::llabs(prow[px[k]])) : 0;
-        const std::uint64_t activity = 2 * static_cast<std::uint64_t>(std::llabs(a)) +
-                                       static_cast<std::uint64_t>(std::llabs(b)) +
-                                       static_cast<std::uint64_t>(std::llabs(c)) +
-                                       static_cast<std::uint64_t>(std::llabs(d)) / 2;
+        const std::uint64_t p = prow ? mag(prow[px[k]]) : 0;
+        const std::uint64_t activity = 2 * mag(a) + mag(b) + mag(c) + mag(d) / 2;
         const std::size_t pos[3] = {band.lo[0] + k, y, z};
         visit(row0 + k, pos, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c, d);
       }

@@ -16,7 +16,7 @@ struct BitModel {
 
 class RangeEncoder {
  public:
-  void encode(BitModel& m, int bit) {
+  __attribute__((always_inline)) void encode(BitModel& m, int bit) {
     const std::uint32_t bound = (range_ >> 11) * m.p;
     if (bit == 0) {
       range_ = bound;
@@ -76,7 +76,7 @@ class RangeDecoder {
   explicit RangeDecoder(std::string_view bytes) : data_(bytes) {
     for (int i = 0; i < 5; ++i) code_ = (code_ << 8) | next();
   }
-  int decode(BitModel& m) {
+  __attribute__((always_inline)) int decode(BitModel& m) {
     const std::uint32_t bound = (range_ >> 11) * m.p;
     int bit;
     if (code_ < bound) {
@@ -95,7 +95,7 @@ class RangeDecoder {
     }
     return bit;
   }
-  int decode_direct() {
+  __attribute__((always_inline)) int decode_direct() {
     range_ >>= 1;
     int bit = 0;
     if (code_ >= range_) {
