@@ -49,15 +49,18 @@ struct Models {
   std::array<std::array<BitModel, kMaxExponent + 1>, kMagClasses> exponent;
   std::array<BitModel, kMaxExponent + 1> second_bit;
   std::array<BitModel, 9> sign;
+  std::array<BitModel, 4> zero_row;
 };
 
 int sign_of(std::int64_t v) noexcept { return v > 0 ? 1 : (v < 0 ? 2 : 0); }
 
 // Walks the slab in coding order, handing the coder each position with its contexts.
-// `value(i)` reads the current (already coded) coefficient at linear index i.
-template <typename Visit>
+// Before each row, `skip_row(row0, width, context)` may code the row as all zero (detail
+// bands: one decision for a row of zeros instead of one per coefficient) and return
+// true; the context says whether the rows at y-1 and z-1 were all zero.
+template <typename SkipRow, typename Visit>
 void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent, const Slab& slab,
-          const Visit& visit) {
+          const SkipRow& skip_row, const Visit& visit) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t w = band.hi[0] - band.lo[0];
   // Rows of zeros stand in for the neighbours outside the band or the slab, so the
@@ -66,9 +69,18 @@ void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const
   std::vector<std::size_t> px(w, 0);
   if (parent)
     for (std::size_t k = 0; k < w; ++k) px[k] = std::min(parent->lo[0] + k / 2, parent->hi[0] - 1);
+  const std::size_t h = band.hi[1] - band.lo[1];
+  std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
   for (std::size_t z = slab.z0; z < slab.z1; ++z)
     for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
       const std::size_t row0 = band.lo[0] + y * sy + z * sz;
+      const std::size_t r = (z - slab.z0) * h + (y - band.lo[1]);
+      const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
+      const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
+      if (skip_row(row0, w, up_zero + 2 * back_zero)) {
+        zero_rows[r] = 1;
+        continue;
+      }
       const std::int64_t* row = data + row0;
       const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data() + 1;
       const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data() + 1;
@@ -116,7 +128,14 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
   RangeEncoder enc;
   auto models = std::make_unique<Models>();
   const bool approx = band.orientation == 0;
-  walk(data, dims, band, parent, slab,
+  auto skip_row = [&](std::size_t row0, std::size_t w, int ctx) {
+    if (approx) return false;
+    bool all_zero = true;
+    for (std::size_t k = 0; k < w && all_zero; ++k) all_zero = data[row0 + k] == 0;
+    enc.encode(models->zero_row[static_cast<std::size_t>(ctx)], all_zero);
+    return all_zero;
+  };
+  walk(data, dims, band, parent, slab, skip_row,
        [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c,
            std::int64_t d) {
          std::int64_t v = data[i];
@@ -143,7 +162,13 @@ void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, c
   const bool approx = band.orientation == 0;
   const int limit = std::min(max_exponent, kMaxExponent);
   bool bad = false;
-  walk(data, dims, band, parent, slab,
+  auto skip_row = [&](std::size_t row0, std::size_t w, int ctx) {
+    if (approx) return false;
+    const bool all_zero = bad || dec.decode(models->zero_row[static_cast<std::size_t>(ctx)]);
+    if (all_zero) std::fill_n(data + row0, w, 0);
+    return all_zero;
+  };
+  walk(data, dims, band, parent, slab, skip_row,
        [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c,
            std::int64_t d) {
          std::int64_t v = 0;

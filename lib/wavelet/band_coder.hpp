@@ -9,6 +9,8 @@
 //   the sign, modelled on the signs of the x-1 and y-1 neighbours.
 // The approximation band codes v minus a prediction instead: the median edge detector
 // of JPEG-LS (LOCO-I) from x-1, y-1 and (x-1, y-1), else the first available neighbour.
+// Detail bands first say per row (x line) whether it is all zero, with a context from
+// the rows at y-1 and z-1, and code nothing more for such rows.
 // A band is cut into slabs of kSlabPlanes z-planes, each an independent stream, so
 // slabs decode in parallel and a damaged stream spoils one slab only.
 
