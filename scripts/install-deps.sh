@@ -54,6 +54,7 @@ TEST_TOOL_PKGS=(
   python3-nibabel            # the independent volume reader of tests/cli/fconv_nibabel.sh; its test files are fetched as real data
   libopencv-contrib-dev libapriltag-dev   # cv::aruco and AprilTag 3: anchors of tests/bench/bench_markerpose only
   graphviz                   # dot: tests/cli/patnet.sh checks that `patnet dot` output is valid Graphviz
+  libzfp-dev zfp libblosc-dev libzstd-dev zstd   # anchors of tests/bench/volwave.sh (bench_volwave links ZFP, Blosc, zstd)
 )
 
 # --- arguments ----------------------------------------------------------------

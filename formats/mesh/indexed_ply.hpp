@@ -17,6 +17,11 @@ namespace fest::formats {
 // xyz: 3 floats per vertex. Throws bad_input when a triangle names a vertex >= vertices.
 std::string write_indexed_ply(const std::vector<float>& xyz, const std::vector<std::array<std::uint32_t, 3>>& triangles);
 
+// The same with per-vertex float properties after x, y, z (one named array per scalar,
+// each as long as the vertex count): what ParaView and fest's renderers colour by.
+std::string write_indexed_ply(const std::vector<float>& xyz, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                              const std::vector<std::string>& scalar_names, const std::vector<std::vector<float>>& scalars);
+
 // The same file for many vertex sets over one triangle list (facefit fit --batch): the
 // header and the face block are encoded once, into a buffer kept between calls; each
 // encode() only copies the positions in. Throws bad_input like write_indexed_ply.

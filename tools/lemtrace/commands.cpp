@@ -19,8 +19,16 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
+#include "core/tool_main.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/input.hpp"
+#include "formats/mesh/indexed_ply.hpp"
+#include "lemtrace/probes.hpp"
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include "formats/table/table_io.hpp"
 #include "vtk_bridge.hpp"
 
@@ -490,6 +498,194 @@ int run_gen(const GenArgs& a) {
   const GeneratedGrid g = generate(o);
   vtkSmartPointer<vtkUnstructuredGrid> ug = dataset_from_generated(g, a.kind);
   write_output(a.output, formats::write_dataset(ug, to == "vtu" ? formats::Format::vtu : formats::Format::vtk));
+  return 0;
+}
+
+namespace {
+
+// Values of a point array at x: barycentric interpolation in the tet containing x. The
+// mesh's vertices must be the dataset's points (no split that adds points).
+struct PointArray {
+  std::vector<double> values;
+  bool ok(const FieldGrid& grid) const { return values.size() == grid.mesh().points.size(); }
+  double at(const FieldGrid& grid, const Vec3& x) const {
+    const int32_t cell = grid.locator().locate(x);
+    if (cell < 0) return std::nan("");
+    const TetGeometry g = tet_geometry(grid.mesh(), cell);
+    const Eigen::Vector4d b = g.bary(x);
+    const Tet& t = grid.mesh().tets[static_cast<std::size_t>(cell)];
+    double v = 0;
+    for (int k = 0; k < 4; ++k) v += b[k] * values[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+    return v;
+  }
+};
+
+PointArray point_array(const std::string& path, const std::string& name) {
+  const formats::Input in = formats::load_input(path);
+  vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+  vtkDataArray* arr = ds->GetPointData()->GetArray(name.c_str());
+  if (!arr) throw bad_input("{}", with_location(fmt::format("no point array '{}' to colour by", name), in.name));
+  if (arr->GetNumberOfComponents() != 1)
+    throw bad_input("{}", with_location(fmt::format("point array '{}' has {} components; colour by a scalar", name,
+                                                    arr->GetNumberOfComponents()), in.name));
+  PointArray out;
+  out.values.resize(static_cast<std::size_t>(arr->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < arr->GetNumberOfTuples(); ++i) out.values[static_cast<std::size_t>(i)] = arr->GetComponent(i, 0);
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> probe_dataset(const ProbeMesh& mesh) {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]);
+  poly->SetPoints(points);
+  auto tris = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& t : mesh.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    tris->InsertNextCell(3, ids);
+  }
+  poly->SetPolys(tris);
+  for (std::size_t k = 0; k < mesh.scalars.size(); ++k) {
+    auto a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(mesh.scalar_names[k].c_str());
+    a->SetNumberOfValues(static_cast<vtkIdType>(mesh.points.size()));
+    for (std::size_t i = 0; i < mesh.points.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), static_cast<float>(mesh.scalars[k][i]));
+    poly->GetPointData()->AddArray(a);
+  }
+  return poly;
+}
+
+}  // namespace
+
+int run_probes(const ProbesArgs& a) {
+  std::string to = a.trace.to;
+  if (to.empty() && !is_stdio(a.trace.output)) {
+    const auto dot = a.trace.output.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? "" : a.trace.output.substr(dot);
+    if (ext == ".ply") to = "ply";
+    else if (ext == ".vtp") to = "vtp";
+    else throw usage_error("cannot tell the output format from '{}'; use --to ply|vtp", a.trace.output);
+  }
+  if (to.empty()) to = "ply";
+  if (to != "ply" && to != "vtp") throw usage_error("probes write ply or vtp, not {}", to);
+  if (!(a.ribbon_width > 0) && !(a.tube_radius > 0) && !a.glyphs)
+    throw usage_error("nothing to draw: give --ribbon WIDTH, --tube RADIUS and/or --glyphs");
+  if (a.ribbon_width < 0 || a.tube_radius < 0 || a.glyph_scale < 0)
+    throw usage_error("--ribbon, --tube and --glyph-scale must not be negative");
+
+  const Seeds seeds = load_seeds(a.trace);
+  Loaded loaded = load_grid(a.trace.grid, false);
+  const FieldGrid& grid = *loaded.grid;
+  TraceOptions o = trace_options(a.trace);
+  if (o.method == Method::lem && o.samples_per_cell == 0) o.samples_per_cell = 4;  // smooth ribbons
+  const int threads = resolve_threads(a.trace.grid.threads);
+  grid.locator();
+
+  PointArray colour;
+  const bool by_speed = a.color == "speed";
+  if (!by_speed) {
+    colour = point_array(a.trace.grid.grid, a.color);
+    if (!colour.ok(grid))
+      throw bad_input("point array '{}' has {} values for {} mesh points (a split added points); colour by speed",
+                      a.color, colour.values.size(), grid.mesh().points.size());
+  }
+  auto value_at = [&](const Vec3& x) {
+    if (!by_speed) return colour.at(grid, x);
+    const int32_t cell = grid.locator().locate(x);
+    return cell < 0 ? 0.0 : velocity_at(grid, cell, x).norm();
+  };
+
+  // Size of the grid, for default glyph and tube sizes.
+  Vec3 lo = grid.mesh().points.front(), hi = lo;
+  for (const Vec3& p : grid.mesh().points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double extent = (hi - lo).norm();
+
+  ProbeMesh mesh;
+  std::size_t ribbons = 0, tubes = 0, glyphs = 0, outside = 0;
+  std::vector<Polyline> lines;
+  if (a.ribbon_width > 0 || a.tube_radius > 0) lines = trace_all(grid, seeds.x, seeds.t0, o, threads);
+  if (a.ribbon_width > 0) {
+    std::vector<Vec3> side(seeds.x.size());
+    for (std::size_t s = 0; s < seeds.x.size(); ++s) {
+      const int32_t cell = grid.locator().locate(seeds.x[s]);
+      const Vec3 v = cell < 0 ? Vec3::UnitX() : velocity_at(grid, cell, seeds.x[s]);
+      side[s] = seeds.x[s] + a.ribbon_width * perpendicular(v);
+    }
+    const std::vector<Polyline> neighbours = trace_all(grid, side, seeds.t0, o, threads);
+    for (std::size_t s = 0; s < lines.size(); ++s) {
+      const auto edges = ribbon_edges(lines[s], neighbours[s]);
+      // Half the streamwise vorticity on the main line: the rate the twist should have.
+      std::vector<double> rate;
+      for (const auto& e : edges) {
+        const int32_t cell = grid.locator().locate(e.a);
+        double r = 0;
+        if (cell >= 0) {
+          const TetGeometry g = tet_geometry(grid.mesh(), cell);
+          Mat3 A;
+          Vec3 b;
+          linear_field(g, A, b);
+          r = 0.5 * streamwise_vorticity(A, A * e.a + b);
+        }
+        rate.push_back(r);
+      }
+      if (edges.size() >= 2) ++ribbons;
+      append_ribbon(mesh, edges, "half_streamwise_vorticity", rate);
+    }
+  }
+  if (a.tube_radius > 0) {
+    for (const Polyline& l : lines) {
+      std::vector<double> values;
+      for (const Vec3& x : l.x) values.push_back(value_at(x));
+      if (l.x.size() >= 2) ++tubes;
+      append_tube(mesh, l, a.tube_radius, a.sides, a.color, values);
+    }
+  }
+  if (a.glyphs) {
+    const double scale = a.glyph_scale > 0 ? a.glyph_scale : 0.1 * extent / std::max(grid.max_speed(), 1e-300);
+    for (const Vec3& x : seeds.x) {
+      const int32_t cell = grid.locator().locate(x);
+      if (cell < 0) {
+        ++outside;
+        continue;
+      }
+      const Vec3 v = velocity_at(grid, cell, x);
+      const double len = scale * v.norm();
+      if (!(len > 0)) {
+        ++outside;
+        continue;
+      }
+      append_arrow(mesh, x, v, len, 0.06 * len, a.sides, a.color, value_at(x));
+      ++glyphs;
+    }
+  }
+  for (auto& s : mesh.scalars) s.resize(mesh.points.size(), 0.0);
+
+  std::string bytes;
+  if (to == "ply") {
+    std::vector<float> xyz;
+    xyz.reserve(3 * mesh.points.size());
+    for (const Vec3& p : mesh.points)
+      for (int k = 0; k < 3; ++k) xyz.push_back(static_cast<float>(p[k]));
+    std::vector<std::vector<float>> sc;
+    for (const auto& s : mesh.scalars) sc.emplace_back(s.begin(), s.end());
+    bytes = formats::write_indexed_ply(xyz, mesh.triangles, mesh.scalar_names, sc);
+  } else {
+    bytes = formats::write_dataset(probe_dataset(mesh), formats::Format::vtp);
+  }
+  write_output(a.trace.output, bytes);
+  if (outside > 0) warn("lemtrace", fmt::format("{} seeds outside the grid or at rest got no glyph", outside));
+  if (!a.trace.report.empty()) {
+    nlohmann::json r = {{"seeds", seeds.x.size()}, {"ribbons", ribbons}, {"tubes", tubes}, {"glyphs", glyphs},
+                        {"seeds_without_glyph", outside}, {"vertices", mesh.points.size()},
+                        {"triangles", mesh.triangles.size()}, {"scalars", mesh.scalar_names}};
+    write_output(a.trace.report, r.dump(2) + "\n");
+  }
   return 0;
 }
 

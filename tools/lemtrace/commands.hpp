@@ -62,7 +62,20 @@ struct GenArgs {
   std::string to;
 };
 
+// Particle probes (seed ch. 4.3): stream ribbons, tubes and glyphs from the seeds, as a
+// triangle mesh with per-vertex scalars (PLY or VTP).
+struct ProbesArgs {
+  TraceArgs trace;
+  double ribbon_width = 0;   // > 0: a ribbon per seed, the neighbour line this far off
+  double tube_radius = 0;    // > 0: a tube per seed
+  int sides = 12;
+  bool glyphs = false;       // an arrow at every seed
+  double glyph_scale = 0;    // arrow length per unit speed (0: a tenth of the grid's size / max speed)
+  std::string color = "speed";  // glyph and tube colour: speed or a point array
+};
+
 int run_trace(const TraceArgs& args);
+int run_probes(const ProbesArgs& args);
 int run_classify(const ClassifyArgs& args);
 int run_bench(const BenchArgs& args);
 int run_gen(const GenArgs& args);

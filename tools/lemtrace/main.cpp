@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   static char trace_name[] = "trace";
   if (argc > 1) {
     const std::string first = argv[1];
-    const bool known = first == "trace" || first == "classify" || first == "bench" || first == "gen" ||
+    const bool known = first == "trace" || first == "probes" || first == "classify" || first == "bench" || first == "gen" ||
                        first == "--help" || first == "-h" || first == "--version";
     if (!known) args.insert(args.begin() + 1, trace_name);
   }
@@ -89,6 +89,17 @@ int main(int argc, char** argv) {
   add_trace_options(trace_cmd, trace, false);
   trace_cmd->add_option("--method", trace.method, "lem, euler, heun, rk3, rk4 or rk45")
       ->check(CLI::IsMember({"lem", "euler", "heun", "rk3", "rk4", "rk45"}));
+
+  ProbesArgs probes;
+  probes.trace.command_line = command_line;
+  auto* probes_cmd = app.add_subcommand("probes", "Stream ribbons, tubes and glyphs at the seeds as a mesh (PLY, VTP)");
+  add_trace_options(probes_cmd, probes.trace, false);
+  probes_cmd->add_option("--ribbon", probes.ribbon_width, "Ribbon width: a second line this far off, paired by time");
+  probes_cmd->add_option("--tube", probes.tube_radius, "Tube radius around each line");
+  probes_cmd->add_option("--sides", probes.sides, "Sides of tubes and arrows")->check(CLI::Range(3, 64));
+  probes_cmd->add_flag("--glyphs", probes.glyphs, "An arrow at every seed along the velocity");
+  probes_cmd->add_option("--glyph-scale", probes.glyph_scale, "Arrow length per unit speed (default: 1/10 of the grid per max speed)");
+  probes_cmd->add_option("--color", probes.color, "Scalar on tubes and glyphs: speed or a point array of the grid");
 
   ClassifyArgs classify;
   auto* classify_cmd = app.add_subcommand("classify", "Cell types and their statistics (Tables 9.1/9.2)");
@@ -123,6 +134,7 @@ int main(int argc, char** argv) {
   const int n = static_cast<int>(args.size());
   return fest::cli::run(app, n, args.data(), [&] {
     if (trace_cmd->parsed()) return run_trace(trace);
+    if (probes_cmd->parsed()) return run_probes(probes);
     if (classify_cmd->parsed()) return run_classify(classify);
     if (bench_cmd->parsed()) return run_bench(bench);
     return run_gen(gen);

@@ -1,0 +1,48 @@
+#pragma once
+// Context-adaptive coding of the integer coefficients of one subband slab
+// (docs/volwave.md §4). Each coefficient is coded as
+//   zero?   -- context: the magnitudes of the already coded neighbours x-1, y-1, z-1,
+//              (x-1, y-1) of the same band, and the parent (same orientation, next
+//              coarser level, at half the position), which the decoder already has;
+//   exponent e = floor(log2 |v|) in unary, each bit with its own adaptive model;
+//   the bit below the leading one adaptively, the remaining bits directly;
+//   the sign, modelled on the signs of the x-1 and y-1 neighbours.
+// The approximation band codes v minus a prediction instead: the median edge detector
+// of JPEG-LS (LOCO-I) from x-1, y-1 and (x-1, y-1), else the first available neighbour.
+// Detail bands first say per row (x line) whether it is all zero, with a context from
+// the rows at y-1 and z-1, and code nothing more for such rows.
+// A band is cut into slabs of kSlabPlanes z-planes, each an independent stream, so
+// slabs decode in parallel and a damaged stream spoils one slab only.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "wavelet/lifting.hpp"
+
+namespace fest::wavelet {
+
+constexpr std::size_t kSlabPlanes = 16;
+
+// Slabs of a band: [z0, z1) ranges of absolute z.
+struct Slab {
+  std::size_t z0 = 0, z1 = 0;
+};
+std::vector<Slab> slabs_of(const Subband& band);
+
+// The parent of a detail band (same orientation, one level coarser), or nullptr when
+// the band's level is the coarsest.
+const Subband* parent_of(const std::vector<Subband>& bands, const Subband& band) noexcept;
+
+// Codes the coefficients of `band` in the z-range of `slab`, read from the pyramid
+// `data` (extent dims). `parent` may be null.
+std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
+                        const Slab& slab);
+
+// Decodes a slab into `data`. Exponents above max_exponent, or a stream that ends too
+// early, throw fest::Error(bad_input) naming the band.
+void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
+                 const Subband* parent, const Slab& slab, int max_exponent);
+
+}  // namespace fest::wavelet

@@ -1,0 +1,266 @@
+#include "wavelet/lifting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string_view>
+
+#include "core/parallel_for.hpp"
+
+namespace fest::wavelet {
+
+const char* wavelet_name(Wavelet w) noexcept {
+  switch (w) {
+    case Wavelet::haar: return "haar";
+    case Wavelet::cdf53: return "cdf53";
+    case Wavelet::cdf97: return "cdf97";
+  }
+  return "?";
+}
+
+bool parse_wavelet(const char* name, Wavelet& out) noexcept {
+  const std::string_view n(name);
+  if (n == "haar") out = Wavelet::haar;
+  else if (n == "cdf53" || n == "53" || n == "5/3") out = Wavelet::cdf53;
+  else if (n == "cdf97" || n == "97" || n == "9/7") out = Wavelet::cdf97;
+  else return false;
+  return true;
+}
+
+bool wavelet_is_integer(Wavelet w) noexcept { return w != Wavelet::cdf97; }
+
+Dims level_dims(const Dims& dims, int level) noexcept {
+  Dims d = dims;
+  for (int l = 0; l < level; ++l)
+    for (auto& n : d) n = (n + 1) / 2;
+  return d;
+}
+
+int default_levels(const Dims& dims) noexcept {
+  int levels = 0;
+  while (levels < 8) {
+    const Dims d = level_dims(dims, levels);
+    if (std::max({d[0], d[1], d[2]}) <= 8) break;
+    ++levels;
+  }
+  return levels;
+}
+
+std::vector<Subband> subbands(const Dims& dims, int levels) {
+  std::vector<Subband> out;
+  Subband approx;
+  approx.level = levels;
+  approx.hi = level_dims(dims, levels);
+  out.push_back(approx);
+  for (int l = levels - 1; l >= 0; --l) {
+    const Dims n = level_dims(dims, l), h = level_dims(dims, l + 1);
+    for (int o = 1; o < 8; ++o) {
+      Subband b;
+      b.level = l;
+      b.orientation = o;
+      for (int a = 0; a < 3; ++a) {
+        const bool high = (o >> a) & 1;
+        b.lo[a] = high ? h[a] : 0;
+        b.hi[a] = high ? n[a] : h[a];
+      }
+      if (b.size() > 0) out.push_back(b);
+    }
+  }
+  return out;
+}
+
+int chunk_of(const Subband& band, int levels) noexcept {
+  return band.orientation == 0 ? 0 : levels - band.level;
+}
+
+// ---- 1-D lifting ----------------------------------------------------------------
+// Even samples s[i] = x[2i] (h = ceil(n/2) of them), odd samples d[i] = x[2i+1]
+// (m = floor(n/2)). Whole-sample symmetric extension: x[n] = x[n-2], x[-1] = x[1],
+// which for the lifting steps means s[h] -> s[h-1] and d[-1] -> d[0], d[m] -> d[m-1].
+
+namespace {
+
+// Floor division by 2 and 4 of possibly negative integers (arithmetic shifts).
+inline std::int64_t floor2(std::int64_t v) { return v >> 1; }
+inline std::int64_t floor4(std::int64_t v) { return v >> 2; }
+
+}  // namespace
+
+void forward_line(std::int64_t* x, std::size_t n, Wavelet w, std::int64_t* scratch) {
+  if (n < 2) return;
+  const std::size_t h = (n + 1) / 2, m = n / 2;
+  std::int64_t* s = scratch;
+  std::int64_t* d = scratch + h;
+  if (w == Wavelet::haar) {
+    // S-transform: d = odd - even, s = even + floor(d / 2) (the integer mean).
+    for (std::size_t i = 0; i < m; ++i) {
+      d[i] = x[2 * i + 1] - x[2 * i];
+      s[i] = x[2 * i] + floor2(d[i]);
+    }
+    if (h > m) s[h - 1] = x[n - 1];
+  } else {
+    // JPEG 2000 reversible 5/3: predict d from the two even neighbours, update s from
+    // the two neighbouring details.
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::int64_t right = (2 * i + 2 < n) ? x[2 * i + 2] : x[2 * i];
+      d[i] = x[2 * i + 1] - floor2(x[2 * i] + right);
+    }
+    for (std::size_t i = 0; i < h; ++i) {
+      const std::int64_t left = d[i > 0 ? i - 1 : 0];
+      const std::int64_t right = d[i < m ? i : m - 1];
+      s[i] = x[2 * i] + floor4(left + right + 2);
+    }
+  }
+  std::memcpy(x, scratch, n * sizeof(std::int64_t));
+}
+
+void inverse_line(std::int64_t* x, std::size_t n, Wavelet w, std::int64_t* scratch) {
+  if (n < 2) return;
+  const std::size_t h = (n + 1) / 2, m = n / 2;
+  std::memcpy(scratch, x, n * sizeof(std::int64_t));
+  const std::int64_t* s = scratch;
+  const std::int64_t* d = scratch + h;
+  if (w == Wavelet::haar) {
+    for (std::size_t i = 0; i < m; ++i) {
+      x[2 * i] = s[i] - floor2(d[i]);
+      x[2 * i + 1] = d[i] + x[2 * i];
+    }
+    if (h > m) x[n - 1] = s[h - 1];
+  } else {
+    for (std::size_t i = 0; i < h; ++i) {
+      const std::int64_t left = d[i > 0 ? i - 1 : 0];
+      const std::int64_t right = d[i < m ? i : m - 1];
+      x[2 * i] = s[i] - floor4(left + right + 2);
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::int64_t right = (2 * i + 2 < n) ? x[2 * i + 2] : x[2 * i];
+      x[2 * i + 1] = d[i] + floor2(x[2 * i] + right);
+    }
+  }
+}
+
+namespace {
+
+// CDF 9/7 lifting constants (Daubechies & Sweldens 1998, as in JPEG 2000 Part 1).
+constexpr double kAlpha = -1.586134342059924;
+constexpr double kBeta = -0.052980118572961;
+constexpr double kGamma = 0.882911075530934;
+constexpr double kDelta = 0.443506852043971;
+constexpr double kK = 1.230174104914001;
+// After the four steps a constant line gives s = K and an alternating one d = -2/K;
+// these scales make both filters' gains sqrt(2), i.e. the transform nearly orthonormal,
+// so a uniform quantiser step means the same error in every subband.
+const double kLowScale = std::sqrt(2.0) / kK;
+const double kHighScale = kK / std::sqrt(2.0);
+
+void predict(double* s, double* d, std::size_t h, std::size_t m, double c) {
+  for (std::size_t i = 0; i < m; ++i) d[i] += c * (s[i] + s[i + 1 < h ? i + 1 : i]);
+}
+void update(double* s, const double* d, std::size_t h, std::size_t m, double c) {
+  for (std::size_t i = 0; i < h; ++i) s[i] += c * (d[i > 0 ? i - 1 : 0] + d[i < m ? i : m - 1]);
+}
+
+}  // namespace
+
+void forward_line_97(double* x, std::size_t n, double* scratch) {
+  if (n < 2) return;
+  const std::size_t h = (n + 1) / 2, m = n / 2;
+  double* s = scratch;
+  double* d = scratch + h;
+  for (std::size_t i = 0; i < h; ++i) s[i] = x[2 * i];
+  for (std::size_t i = 0; i < m; ++i) d[i] = x[2 * i + 1];
+  predict(s, d, h, m, kAlpha);
+  update(s, d, h, m, kBeta);
+  predict(s, d, h, m, kGamma);
+  update(s, d, h, m, kDelta);
+  for (std::size_t i = 0; i < h; ++i) x[i] = s[i] * kLowScale;
+  for (std::size_t i = 0; i < m; ++i) x[h + i] = d[i] * kHighScale;
+}
+
+void inverse_line_97(double* x, std::size_t n, double* scratch) {
+  if (n < 2) return;
+  const std::size_t h = (n + 1) / 2, m = n / 2;
+  double* s = scratch;
+  double* d = scratch + h;
+  for (std::size_t i = 0; i < h; ++i) s[i] = x[i] / kLowScale;
+  for (std::size_t i = 0; i < m; ++i) d[i] = x[h + i] / kHighScale;
+  update(s, d, h, m, -kDelta);
+  predict(s, d, h, m, -kGamma);
+  update(s, d, h, m, -kBeta);
+  predict(s, d, h, m, -kAlpha);
+  for (std::size_t i = 0; i < h; ++i) x[2 * i] = s[i];
+  for (std::size_t i = 0; i < m; ++i) x[2 * i + 1] = d[i];
+}
+
+// ---- 3-D ---------------------------------------------------------------------------
+
+namespace {
+
+// Lines along axis a of the cube `c` inside an array of extent `dims`. Lines along y and
+// z are gathered kBlock at a time (neighbouring x), so each read touches whole cache lines.
+constexpr std::size_t kBlock = 16;
+
+template <typename T, typename LineOp>
+void transform_axis(std::vector<T>& data, const Dims& dims, const Dims& c, int axis, int threads, const LineOp& op) {
+  const std::size_t n = c[axis];
+  if (n < 2) return;
+  const std::size_t sx = 1, sy = dims[0], sz = dims[0] * dims[1];
+  if (axis == 0) {
+    parallel_for(c[2], threads, [&](std::size_t z) {
+      std::vector<T> scratch(n);
+      for (std::size_t y = 0; y < c[1]; ++y) op(&data[y * sy + z * sz], n, scratch.data());
+    });
+    return;
+  }
+  const std::size_t stride = axis == 1 ? sy : sz;
+  const std::size_t outer = axis == 1 ? c[2] : c[1];
+  const std::size_t outer_stride = axis == 1 ? sz : sy;
+  parallel_for(outer, threads, [&](std::size_t o) {
+    std::vector<T> lines(kBlock * n), scratch(n);
+    for (std::size_t x0 = 0; x0 < c[0]; x0 += kBlock) {
+      const std::size_t w = std::min(kBlock, c[0] - x0);
+      T* base = &data[o * outer_stride + x0 * sx];
+      for (std::size_t k = 0; k < n; ++k)
+        for (std::size_t j = 0; j < w; ++j) lines[j * n + k] = base[k * stride + j];
+      for (std::size_t j = 0; j < w; ++j) op(&lines[j * n], n, scratch.data());
+      for (std::size_t k = 0; k < n; ++k)
+        for (std::size_t j = 0; j < w; ++j) base[k * stride + j] = lines[j * n + k];
+    }
+  });
+}
+
+}  // namespace
+
+void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads) {
+  auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { forward_line(line, n, w, scratch); };
+  for (int l = 0; l < levels; ++l) {
+    const Dims c = level_dims(dims, l);
+    for (int a = 0; a < 3; ++a) transform_axis(data, dims, c, a, threads, op);
+  }
+}
+
+void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads) {
+  auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { inverse_line(line, n, w, scratch); };
+  for (int l = levels - 1; l >= 0; --l) {
+    const Dims c = level_dims(dims, l);
+    for (int a = 2; a >= 0; --a) transform_axis(data, dims, c, a, threads, op);
+  }
+}
+
+void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads) {
+  auto op = [](double* line, std::size_t n, double* scratch) { forward_line_97(line, n, scratch); };
+  for (int l = 0; l < levels; ++l) {
+    const Dims c = level_dims(dims, l);
+    for (int a = 0; a < 3; ++a) transform_axis(data, dims, c, a, threads, op);
+  }
+}
+
+void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int threads) {
+  auto op = [](double* line, std::size_t n, double* scratch) { inverse_line_97(line, n, scratch); };
+  for (int l = levels - 1; l >= 0; --l) {
+    const Dims c = level_dims(dims, l);
+    for (int a = 2; a >= 0; --a) transform_axis(data, dims, c, a, threads, op);
+  }
+}
+
+}  // namespace fest::wavelet

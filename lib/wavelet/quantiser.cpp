@@ -1,0 +1,166 @@
+#include "wavelet/quantiser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/parallel_for.hpp"
+
+namespace fest::wavelet {
+
+namespace {
+
+constexpr double kMaxKey = 1125899906842624.0;  // 2^50: keys and their sums stay exact
+
+template <typename T>
+double clamp_round(double v) noexcept {
+  if (std::isnan(v)) return 0.0;
+  // Decoded integer data is integral already: skip the (slow) libm rounding then.
+  const double r = (std::fabs(v) < 9e15 && v == static_cast<double>(static_cast<std::int64_t>(v))) ? v : std::round(v);
+  const double lo = static_cast<double>(std::numeric_limits<T>::lowest());
+  const double hi = static_cast<double>(std::numeric_limits<T>::max());
+  return std::clamp(r, lo, hi);
+}
+
+struct Range {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+  std::size_t nonfinite = 0;
+  bool integral = true;
+};
+
+Range range_of(const Volume& v) {
+  Range r;
+  for (double x : v.voxels) {
+    if (!std::isfinite(x)) {
+      ++r.nonfinite;
+      continue;
+    }
+    r.lo = std::min(r.lo, x);
+    r.hi = std::max(r.hi, x);
+    if (r.integral && (x != std::floor(x) || std::fabs(x) >= kMaxKey)) r.integral = false;
+  }
+  if (r.lo > r.hi) r.lo = r.hi = 0.0;
+  return r;
+}
+
+void refuse_nonfinite(const Range& r) {
+  if (r.nonfinite > 0)
+    throw bad_input("{} voxels are NaN or infinite: no error bound can hold for them (only lossless coding keeps them)",
+                    r.nonfinite);
+}
+
+}  // namespace
+
+std::int64_t float_key(float f) noexcept {
+  std::uint32_t u;
+  std::memcpy(&u, &f, 4);
+  if (u & 0x80000000u) return -static_cast<std::int64_t>(u & 0x7fffffffu) - 1;
+  return static_cast<std::int64_t>(u);
+}
+
+float key_float(std::int64_t key) noexcept {
+  std::uint32_t u = key >= 0 ? static_cast<std::uint32_t>(key & 0xffffffff)
+                             : (static_cast<std::uint32_t>((-(key + 1)) & 0x7fffffff) | 0x80000000u);
+  float f;
+  std::memcpy(&f, &u, 4);
+  return f;
+}
+
+double stored_as(double v, ScalarType type) noexcept {
+  switch (type) {
+    case ScalarType::u8: return clamp_round<std::uint8_t>(v);
+    case ScalarType::i8: return clamp_round<std::int8_t>(v);
+    case ScalarType::u16: return clamp_round<std::uint16_t>(v);
+    case ScalarType::i16: return clamp_round<std::int16_t>(v);
+    case ScalarType::u32: return clamp_round<std::uint32_t>(v);
+    case ScalarType::i32: return clamp_round<std::int32_t>(v);
+    case ScalarType::u64: return clamp_round<std::uint64_t>(v);
+    case ScalarType::i64: return clamp_round<std::int64_t>(v);
+    case ScalarType::f32: {
+      if (std::isnan(v)) return v;
+      const double m = static_cast<double>(std::numeric_limits<float>::max());
+      if (v > m * (1 + 1e-7)) return std::numeric_limits<double>::infinity();
+      if (v < -m * (1 + 1e-7)) return -std::numeric_limits<double>::infinity();
+      return static_cast<double>(static_cast<float>(std::clamp(v, -m, m)));
+    }
+    case ScalarType::f64: return v;
+  }
+  return v;
+}
+
+Quantiser plan_max_error(const Volume& volume, double bound) {
+  if (!(bound > 0) || !std::isfinite(bound)) throw bad_input("the error bound must be positive and finite, not {}", bound);
+  const Range r = range_of(volume);
+  refuse_nonfinite(r);
+  Quantiser q;
+  if (scalar_type_is_integer(volume.type) && r.integral) {
+    q.step = 2.0 * std::floor(bound) + 1.0;
+    q.offset = std::round(r.lo);
+  } else {
+    q.step = 2.0 * bound;
+    q.offset = 0.5 * (r.lo + r.hi);
+  }
+  if ((r.hi - r.lo) / q.step > kMaxKey)
+    throw bad_input("error bound {} is too small for the value range [{}, {}] (more than 2^50 steps)", bound, r.lo, r.hi);
+  return q;
+}
+
+Quantiser plan_step(const Volume& volume, double step) {
+  if (!(step > 0) || !std::isfinite(step)) throw bad_input("the quantiser step must be positive, not {}", step);
+  const Range r = range_of(volume);
+  refuse_nonfinite(r);
+  Quantiser q;
+  q.step = step;
+  q.offset = scalar_type_is_integer(volume.type) ? std::round(r.lo) : 0.5 * (r.lo + r.hi);
+  if ((r.hi - r.lo) / q.step > kMaxKey)
+    throw bad_input("quantiser step {} is too small for the value range [{}, {}]", step, r.lo, r.hi);
+  return q;
+}
+
+Quantiser plan_lossless(const Volume& volume) {
+  const Range r = range_of(volume);
+  Quantiser q;
+  if (r.nonfinite == 0 && r.integral) return q;  // step 1, offset 0: the values themselves
+  std::size_t misfits = 0;
+  for (double x : volume.voxels) {
+    if (std::isnan(x)) continue;
+    if (static_cast<double>(static_cast<float>(x)) != x) ++misfits;
+  }
+  if (misfits > 0)
+    throw bad_input("lossless coding of {} float64 voxels that float32 cannot hold exactly is not supported", misfits);
+  q.kind = KeyKind::float32_bits;
+  return q;
+}
+
+std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int threads) {
+  std::vector<std::int64_t> keys(volume.voxels.size());
+  const std::size_t block = 1 << 16;
+  const std::size_t n = keys.size();
+  parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
+    const std::size_t end = std::min(n, (b + 1) * block);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const double v = volume.voxels[i];
+      keys[i] = q.kind == KeyKind::float32_bits ? float_key(static_cast<float>(v))
+                                                : static_cast<std::int64_t>(std::llround((v - q.offset) / q.step));
+    }
+  });
+  return keys;
+}
+
+void dequantise(const std::vector<std::int64_t>& keys, const Quantiser& q, ScalarType type, std::vector<double>& values,
+                int threads) {
+  values.resize(keys.size());
+  const std::size_t block = 1 << 16;
+  const std::size_t n = keys.size();
+  parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
+    const std::size_t end = std::min(n, (b + 1) * block);
+    for (std::size_t i = b * block; i < end; ++i)
+      values[i] = q.kind == KeyKind::float32_bits ? static_cast<double>(key_float(keys[i]))
+                                                  : stored_as(key_value(q, keys[i]), type);
+  });
+}
+
+}  // namespace fest::wavelet

@@ -1,0 +1,650 @@
+#include "wavelet/vw_codec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/parallel_for.hpp"
+#include "wavelet/band_coder.hpp"
+
+namespace fest::wavelet {
+
+const char* mode_name(Mode m) noexcept {
+  switch (m) {
+    case Mode::lossless: return "lossless";
+    case Mode::max_error: return "max-error";
+    case Mode::rmse: return "rmse";
+  }
+  return "?";
+}
+
+std::uint64_t VwHeader::total_bytes() const noexcept {
+  std::uint64_t t = header_bytes;
+  for (const auto& c : chunks) t += c.bytes;
+  return t;
+}
+
+namespace {
+
+constexpr char kMagic[8] = {'\x89', 'V', 'W', '\r', '\n', '\x1a', '\n', '\x01'};
+constexpr int kMaxLevels = 16;
+
+std::uint64_t fnv1a(std::string_view s) noexcept {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+int bit_width(std::uint64_t v) noexcept { return v == 0 ? 0 : 64 - __builtin_clzll(v); }
+
+// ---- little-endian bytes ----
+struct Writer {
+  std::string out;
+  void u8(std::uint8_t v) { out.push_back(static_cast<char>(v)); }
+  void u32(std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+  }
+  void u64(std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+  }
+  void f64(double v) {
+    std::uint64_t u;
+    std::memcpy(&u, &v, 8);
+    u64(u);
+  }
+  void varint(std::uint64_t v) {
+    while (v >= 0x80) {
+      u8(static_cast<std::uint8_t>(v | 0x80));
+      v >>= 7;
+    }
+    u8(static_cast<std::uint8_t>(v));
+  }
+};
+
+struct Reader {
+  std::string_view in;
+  std::size_t pos = 0;
+  const char* what;
+  void need(std::size_t n) {
+    if (in.size() - pos < n) throw bad_input("truncated {}: needs {} more bytes at byte {}", what, n, pos);
+  }
+  std::uint8_t u8() {
+    need(1);
+    return static_cast<std::uint8_t>(in[pos++]);
+  }
+  std::uint32_t u32() {
+    need(4);
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<std::uint8_t>(in[pos + i])) << (8 * i);
+    pos += 4;
+    return v;
+  }
+  std::uint64_t u64() {
+    need(8);
+    std::uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(static_cast<std::uint8_t>(in[pos + i])) << (8 * i);
+    pos += 8;
+    return v;
+  }
+  double f64() {
+    const std::uint64_t u = u64();
+    double v;
+    std::memcpy(&v, &u, 8);
+    return v;
+  }
+  std::uint64_t varint() {
+    std::uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      const std::uint8_t b = u8();
+      v |= static_cast<std::uint64_t>(b & 0x7f) << shift;
+      if (!(b & 0x80)) return v;
+    }
+    throw bad_input("{}: a variable-length number runs past 64 bits at byte {}", what, pos);
+  }
+};
+
+// ---- the region of interest as runs (alternating outside/inside, starting outside) ----
+void write_runs(Writer& w, const std::vector<std::uint8_t>& mask) {
+  std::vector<std::uint64_t> runs;
+  std::uint8_t cur = 0;
+  std::uint64_t len = 0;
+  for (std::uint8_t m : mask) {
+    const std::uint8_t b = m ? 1 : 0;
+    if (b != cur) {
+      runs.push_back(len);
+      cur = b;
+      len = 0;
+    }
+    ++len;
+  }
+  runs.push_back(len);
+  w.varint(runs.size());
+  for (auto r : runs) w.varint(r);
+}
+
+std::vector<std::uint8_t> read_runs(Reader& r, std::size_t voxels) {
+  const std::uint64_t count = r.varint();
+  if (count == 0 || count > voxels + 1) throw bad_input(".vw region of interest: {} runs for {} voxels", count, voxels);
+  std::vector<std::uint8_t> mask;
+  mask.reserve(voxels);
+  std::uint8_t cur = 0;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::uint64_t len = r.varint();
+    if (len > voxels - mask.size()) throw bad_input(".vw region of interest: runs exceed the {} voxels", voxels);
+    mask.insert(mask.end(), len, cur);
+    cur ^= 1;
+  }
+  if (mask.size() != voxels) throw bad_input(".vw region of interest: runs cover {} of {} voxels", mask.size(), voxels);
+  return mask;
+}
+
+// ---- reconstruction shared by the encoder's table and the decoder ----
+
+double step_at(const VwHeader& h, const std::vector<std::uint8_t>& roi, std::size_t i) noexcept {
+  return (!roi.empty() && roi[i]) ? h.roi_step : h.quantiser.step;
+}
+
+// Coefficients (consumed) -> voxel values in the stored type.
+std::vector<double> reconstruct(const VwHeader& h, std::vector<std::int64_t> coef, const std::vector<std::uint8_t>& roi,
+                                int threads) {
+  std::vector<double> values;
+  if (h.wavelet == Wavelet::cdf97) {
+    std::vector<double> c(coef.size());
+    for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<double>(coef[i]) * h.quantiser.step;
+    coef.clear();
+    coef.shrink_to_fit();
+    inverse_3d(c, h.dims, h.levels, threads);
+    for (auto& v : c) v = stored_as(v + h.quantiser.offset, h.type);
+    return c;
+  }
+  inverse_3d(coef, h.dims, h.levels, h.wavelet, threads);
+  if (roi.empty()) {
+    dequantise(coef, h.quantiser, h.type, values, threads);
+  } else {
+    values.resize(coef.size());
+    for (std::size_t i = 0; i < coef.size(); ++i)
+      values[i] = stored_as(h.quantiser.offset + step_at(h, roi, i) * static_cast<double>(coef[i]), h.type);
+  }
+  return values;
+}
+
+struct Errors {
+  double max_error = 0, rmse = 0, roi_max_error = 0;
+};
+
+Errors measure(const std::vector<double>& a, const std::vector<double>& b, const std::vector<std::uint8_t>& roi) {
+  Errors e;
+  const std::size_t block = 1 << 16, n = a.size();
+  const std::size_t blocks = (n + block - 1) / block;
+  std::vector<double> sums(blocks, 0.0);
+  for (std::size_t k = 0; k < blocks; ++k) {
+    double s = 0;
+    for (std::size_t i = k * block; i < std::min(n, (k + 1) * block); ++i) {
+      if (std::isnan(a[i]) && std::isnan(b[i])) continue;
+      const double d = std::isnan(a[i]) != std::isnan(b[i]) ? std::numeric_limits<double>::infinity() : std::fabs(a[i] - b[i]);
+      e.max_error = std::max(e.max_error, d);
+      if (!roi.empty() && roi[i]) e.roi_max_error = std::max(e.roi_max_error, d);
+      s += d * d;
+    }
+    sums[k] = s;
+  }
+  double total = 0;
+  for (double s : sums) total += s;
+  e.rmse = n ? std::sqrt(total / static_cast<double>(n)) : 0.0;
+  return e;
+}
+
+// Every (band, slab) stream of a chunk, in file order.
+struct Stream {
+  const Subband* band;
+  const Subband* parent;
+  Slab slab;
+};
+
+std::vector<std::vector<Stream>> streams_by_chunk(const std::vector<Subband>& bands, int levels) {
+  std::vector<std::vector<Stream>> out(static_cast<std::size_t>(levels) + 1);
+  for (const auto& b : bands)
+    for (const auto& s : slabs_of(b)) out[static_cast<std::size_t>(chunk_of(b, levels))].push_back({&b, parent_of(bands, b), s});
+  return out;
+}
+
+std::string write_header(const VwHeader& h, const std::vector<std::uint8_t>& roi) {
+  Writer w;
+  w.out.append(kMagic, 8);
+  w.u8(static_cast<std::uint8_t>(h.mode));
+  w.u8(static_cast<std::uint8_t>(h.wavelet));
+  w.u8(static_cast<std::uint8_t>(h.levels));
+  w.u8(static_cast<std::uint8_t>(h.type));
+  w.u8(static_cast<std::uint8_t>(h.quantiser.kind));
+  w.u8(static_cast<std::uint8_t>(h.max_exponent));
+  w.u8(roi.empty() ? 0 : 1);
+  w.u8(0);
+  for (auto d : h.dims) w.u64(d);
+  for (double v : h.spacing) w.f64(v);
+  for (double v : h.origin) w.f64(v);
+  for (double v : h.direction) w.f64(v);
+  w.f64(h.quantiser.step);
+  w.f64(h.quantiser.offset);
+  w.f64(h.bound);
+  w.f64(h.roi_step);
+  w.f64(h.roi_bound);
+  w.u32(static_cast<std::uint32_t>(h.chunks.size()));
+  for (const auto& c : h.chunks) {
+    w.u64(c.bytes);
+    w.u64(c.hash);
+    w.f64(c.max_error);
+    w.f64(c.rmse);
+  }
+  if (!roi.empty()) write_runs(w, roi);
+  w.u64(fnv1a(w.out));
+  return w.out;
+}
+
+VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vector<std::uint8_t>* roi,
+                      bool check_hash = true) {
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
+    if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a version-1 .vw file");
+    throw bad_input("not a .vw file (no \\x89VW magic)");
+  }
+  Reader r{bytes, 8, ".vw header"};
+  VwHeader h;
+  const int mode = r.u8(), wavelet = r.u8(), levels = r.u8(), type = r.u8(), kind = r.u8();
+  h.max_exponent = r.u8();
+  const int has_roi = r.u8();
+  r.u8();
+  if (mode > 2) throw bad_input(".vw header: unknown mode {}", mode);
+  if (wavelet > 2) throw bad_input(".vw header: unknown wavelet {}", wavelet);
+  if (levels > kMaxLevels) throw bad_input(".vw header: {} levels (at most {})", levels, kMaxLevels);
+  if (type > static_cast<int>(ScalarType::f64)) throw bad_input(".vw header: unknown value type {}", type);
+  if (kind > 1) throw bad_input(".vw header: unknown key kind {}", kind);
+  if (h.max_exponent > 60) throw bad_input(".vw header: coefficient exponent {} too large", h.max_exponent);
+  if (has_roi > 1) throw bad_input(".vw header: bad region flag {}", has_roi);
+  h.mode = static_cast<Mode>(mode);
+  h.wavelet = static_cast<Wavelet>(wavelet);
+  h.levels = levels;
+  h.type = static_cast<ScalarType>(type);
+  h.quantiser.kind = static_cast<KeyKind>(kind);
+  std::uint64_t voxels = 1;
+  for (auto& d : h.dims) {
+    const std::uint64_t v = r.u64();
+    if (v == 0 || v > max_voxels) throw bad_input(".vw header: dimension {} out of range", v);
+    d = static_cast<std::size_t>(v);
+    voxels *= v;
+    if (voxels > max_voxels) throw bad_input(".vw header: more than {} voxels", max_voxels);
+  }
+  for (double& v : h.spacing) v = r.f64();
+  for (double& v : h.origin) v = r.f64();
+  for (double& v : h.direction) v = r.f64();
+  h.quantiser.step = r.f64();
+  h.quantiser.offset = r.f64();
+  h.bound = r.f64();
+  h.roi_step = r.f64();
+  h.roi_bound = r.f64();
+  if (!(h.quantiser.step > 0) || !std::isfinite(h.quantiser.step) || !std::isfinite(h.quantiser.offset))
+    throw bad_input(".vw header: bad quantiser step {} / offset {}", h.quantiser.step, h.quantiser.offset);
+  if (has_roi && (!(h.roi_step > 0) || !std::isfinite(h.roi_step)))
+    throw bad_input(".vw header: bad region step {}", h.roi_step);
+  if (h.wavelet == Wavelet::cdf97 && h.quantiser.kind != KeyKind::scaled)
+    throw bad_input(".vw header: cdf97 with float bit keys");
+  const std::uint32_t nchunks = r.u32();
+  if (nchunks != static_cast<std::uint32_t>(levels) + 2)
+    throw bad_input(".vw header: {} chunks for {} levels (expected {})", nchunks, levels, levels + 2);
+  std::uint64_t declared = 0;
+  for (std::uint32_t i = 0; i < nchunks; ++i) {
+    ChunkInfo c;
+    c.bytes = r.u64();
+    c.hash = r.u64();
+    c.max_error = r.f64();
+    c.rmse = r.f64();
+    if (c.bytes > (1ull << 48)) throw bad_input(".vw header: chunk {} claims {} bytes", i, c.bytes);
+    declared += c.bytes;
+    h.chunks.push_back(c);
+  }
+  // A coded coefficient costs at least ~0.022 bit (the coder's most skewed
+  // probability), so a file cannot describe more than ~400 voxels per byte.
+  if (voxels > 400 * declared + (1u << 16))
+    throw bad_input(".vw header: {} voxels cannot be coded in {} bytes", voxels, declared);
+  std::vector<std::uint8_t> mask;
+  if (has_roi) mask = read_runs(r, static_cast<std::size_t>(voxels));
+  const std::size_t end = r.pos;
+  const std::uint64_t hash = r.u64();
+  if (check_hash && hash != fnv1a(bytes.substr(0, end))) throw bad_input(".vw header: checksum mismatch (damaged header)");
+  h.header_bytes = r.pos;
+  if (roi) *roi = std::move(mask);
+  return h;
+}
+
+}  // namespace
+
+VwHeader read_vw_header(std::string_view bytes, std::uint64_t max_voxels) {
+  return parse_header(bytes, max_voxels, nullptr);
+}
+
+namespace {
+
+// Chooses the largest step whose reconstruction stays at or under the RMS target:
+// doubling until it fails, then bisection of the step's logarithm.
+template <typename Eval>
+double search_step(double target, double first, const Eval& rmse_of) {
+  double good = 0, bad = 0;
+  double s = first;
+  for (int i = 0; i < 60 && (good == 0 || bad == 0); ++i) {
+    if (rmse_of(s) <= target) {
+      good = s;
+      s *= 2;
+    } else {
+      bad = s;
+      s /= 2;
+    }
+  }
+  if (good == 0) return 0;  // nothing meets the target
+  if (bad == 0) return good;
+  for (int i = 0; i < 8; ++i) {
+    const double mid = std::sqrt(good * bad);
+    if (rmse_of(mid) <= target) good = mid;
+    else bad = mid;
+  }
+  return good;
+}
+
+}  // namespace
+
+std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats* stats) {
+  // Lossless float32 bit patterns: sparse or rough data (a smoke plume: zeros and a few
+  // thousand distinct floats) codes better with no transform at all (MED prediction on
+  // the keys) than through a wavelet of bit patterns; smooth data the other way round.
+  // Without a stated level count, both are tried and the smaller kept.
+  if (o.mode == Mode::lossless && o.levels < 0 && plan_lossless(volume).kind == KeyKind::float32_bits) {
+    EncodeOptions flat = o, deep = o;
+    flat.levels = 0;
+    deep.levels = default_levels(volume.dims);
+    EncodeStats s0, s1;
+    std::string a = encode_vw(volume, flat, &s0), b = encode_vw(volume, deep, &s1);
+    const bool first = a.size() <= b.size();
+    if (stats) *stats = first ? s0 : s1;
+    return first ? a : b;
+  }
+  const std::size_t n = volume.size();
+  if (n == 0 || volume.voxels.size() != n) throw bad_input("volume has {} voxels for dimensions {}x{}x{}", volume.voxels.size(),
+                                                          volume.dims[0], volume.dims[1], volume.dims[2]);
+  const int threads = std::max(1, o.threads);
+  VwHeader h;
+  h.mode = o.mode;
+  h.wavelet = o.wavelet;
+  h.type = volume.type;
+  h.dims = volume.dims;
+  h.spacing = volume.spacing;
+  h.origin = volume.origin;
+  h.direction = volume.direction;
+  h.levels = o.levels < 0 ? default_levels(h.dims) : std::min(o.levels, kMaxLevels);
+  h.bound = o.mode == Mode::lossless ? 0.0 : o.bound;
+  std::vector<std::uint8_t> roi;
+  if (!o.roi_mask.empty()) {
+    if (o.mode != Mode::max_error) throw usage_error("a region of interest needs an L-infinity bound");
+    if (o.roi_mask.size() != n) throw bad_input("region mask has {} voxels, the volume {}", o.roi_mask.size(), n);
+    if (!(o.roi_bound > 0) || !(o.roi_bound <= o.bound))
+      throw bad_input("the region's bound must be positive and at most the volume's bound {}, not {}", o.bound, o.roi_bound);
+    roi = o.roi_mask;
+    for (auto& m : roi) m = m ? 1 : 0;
+    h.roi_bound = o.roi_bound;
+  }
+  if (o.mode != Mode::rmse && !wavelet_is_integer(o.wavelet))
+    throw usage_error("{} coding needs an integer wavelet (haar or cdf53); cdf97 is for RMS targets", mode_name(o.mode));
+  if (o.mode != Mode::lossless && (!(o.bound > 0) || !std::isfinite(o.bound)))
+    throw bad_input("the error bound must be positive and finite, not {}", o.bound);
+
+  std::vector<std::int64_t> coef;
+  if (o.mode == Mode::lossless) {
+    h.quantiser = plan_lossless(volume);
+    coef = quantise(volume, h.quantiser, threads);
+  } else if (o.mode == Mode::max_error) {
+    h.quantiser = plan_max_error(volume, o.bound);
+    coef = quantise(volume, h.quantiser, threads);
+    if (!roi.empty()) {
+      h.roi_step = plan_max_error(volume, o.roi_bound).step;
+      for (std::size_t i = 0; i < n; ++i)
+        if (roi[i]) coef[i] = std::llround((volume.voxels[i] - h.quantiser.offset) / h.roi_step);
+    }
+  } else if (o.wavelet != Wavelet::cdf97) {
+    // RMS target with an integer wavelet: the voxel-domain step is the only loss.
+    h.quantiser = plan_step(volume, o.bound * std::sqrt(12.0));
+    std::vector<double> values;
+    const double step = search_step(o.bound, h.quantiser.step, [&](double s) {
+      Quantiser q = h.quantiser;
+      q.step = s;
+      dequantise(quantise(volume, q, threads), q, h.type, values, threads);
+      return measure(volume.voxels, values, {}).rmse;
+    });
+    if (step == 0) throw bad_input("no quantiser step reaches RMS error {} for this volume", o.bound);
+    h.quantiser.step = step;
+    coef = quantise(volume, h.quantiser, threads);
+  } else {
+    // RMS target with CDF 9/7: quantise the (nearly orthonormal) coefficients.
+    h.quantiser = plan_step(volume, 1.0);
+    std::vector<double> c(n);
+    for (std::size_t i = 0; i < n; ++i) c[i] = volume.voxels[i] - h.quantiser.offset;
+    forward_3d(c, h.dims, h.levels, threads);
+    double cmax = 0;
+    for (double v : c) cmax = std::max(cmax, std::fabs(v));
+    auto keys_for = [&](double delta) {
+      std::vector<std::int64_t> k(n);
+      for (std::size_t i = 0; i < n; ++i) k[i] = std::llround(c[i] / delta);
+      return k;
+    };
+    const double step = search_step(o.bound, o.bound * std::sqrt(12.0), [&](double delta) {
+      if (cmax / delta > 1e15) return 0.0;
+      VwHeader t = h;
+      t.quantiser.step = delta;
+      return measure(volume.voxels, reconstruct(t, keys_for(delta), {}, threads), {}).rmse;
+    });
+    if (step == 0 || cmax / step > 1e15) throw bad_input("no quantiser step reaches RMS error {} for this volume", o.bound);
+    h.quantiser.step = step;
+    coef = keys_for(step);
+  }
+  if (o.mode != Mode::rmse || o.wavelet != Wavelet::cdf97) forward_3d(coef, h.dims, h.levels, o.wavelet, threads);
+
+  std::uint64_t cmax = 0;
+  for (auto v : coef) cmax = std::max<std::uint64_t>(cmax, static_cast<std::uint64_t>(v < 0 ? -v : v));
+  h.max_exponent = bit_width(cmax) + 1;  // the approximation codes differences up to 2 cmax
+  if (h.max_exponent > 60) throw bad_input("coefficients too large to code (2^{})", h.max_exponent);
+
+  // Code every stream; streams are independent, so any thread count gives the same bytes.
+  const auto bands = subbands(h.dims, h.levels);
+  const auto by_chunk = streams_by_chunk(bands, h.levels);
+  std::vector<const Stream*> all;
+  for (const auto& c : by_chunk)
+    for (const auto& s : c) all.push_back(&s);
+  std::vector<std::string> coded(all.size());
+  parallel_for(all.size(), threads, [&](std::size_t i) {
+    coded[i] = encode_slab(coef.data(), h.dims, *all[i]->band, all[i]->parent, all[i]->slab);
+  });
+  std::vector<std::string> chunks;
+  std::size_t next = 0;
+  for (const auto& c : by_chunk) {
+    Writer w;
+    for (std::size_t k = 0; k < c.size(); ++k) w.u32(static_cast<std::uint32_t>(coded[next + k].size()));
+    for (std::size_t k = 0; k < c.size(); ++k) w.out += coded[next + k];
+    next += c.size();
+    chunks.push_back(std::move(w.out));
+  }
+
+  // Error of every truncation point: decode with the finer bands zeroed.
+  h.chunks.resize(chunks.size() + 1);
+  std::vector<double> full;
+  for (int k = 0; k <= h.levels; ++k) {
+    std::vector<std::int64_t> part = coef;
+    if (k < h.levels)
+      for (const auto& b : bands)
+        if (chunk_of(b, h.levels) > k)
+          for (std::size_t z = b.lo[2]; z < b.hi[2]; ++z)
+            for (std::size_t y = b.lo[1]; y < b.hi[1]; ++y)
+              std::fill_n(&part[b.lo[0] + h.dims[0] * (y + h.dims[1] * z)], b.hi[0] - b.lo[0], 0);
+    std::vector<double> rec = reconstruct(h, std::move(part), roi, threads);
+    const Errors e = measure(volume.voxels, rec, roi);
+    h.chunks[static_cast<std::size_t>(k)].max_error = e.max_error;
+    h.chunks[static_cast<std::size_t>(k)].rmse = e.rmse;
+    if (k == h.levels) full = std::move(rec);
+  }
+  coef.clear();
+  coef.shrink_to_fit();
+
+  // Outliers: voxels the stored type's rounding pushed past the bound, kept exactly.
+  Writer ow;
+  std::size_t outliers = 0;
+  if (o.mode == Mode::max_error) {
+    std::vector<std::size_t> idx;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double bound = (!roi.empty() && roi[i]) ? o.roi_bound : o.bound;
+      if (std::fabs(volume.voxels[i] - full[i]) > bound) idx.push_back(i);
+    }
+    ow.varint(idx.size());
+    std::size_t prev = 0;
+    for (std::size_t i : idx) {
+      ow.varint(i - prev);
+      ow.f64(volume.voxels[i]);
+      prev = i;
+      full[i] = volume.voxels[i];
+    }
+    outliers = idx.size();
+  } else {
+    ow.varint(0);
+  }
+  chunks.push_back(std::move(ow.out));
+  {
+    const Errors e = measure(volume.voxels, full, roi);
+    h.chunks.back().max_error = e.max_error;
+    h.chunks.back().rmse = e.rmse;
+  }
+  for (std::size_t k = 0; k < chunks.size(); ++k) {
+    h.chunks[k].bytes = chunks[k].size();
+    h.chunks[k].hash = fnv1a(chunks[k]);
+  }
+  std::string out = write_header(h, roi);
+  for (const auto& c : chunks) out += c;
+
+  // The guarantee, checked on the bytes themselves by the decoder.
+  const DecodeResult back = decode_vw(out, threads);
+  const Errors e = measure(volume.voxels, back.volume.voxels, roi);
+  if (o.mode == Mode::lossless) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = volume.voxels[i], b = back.volume.voxels[i];
+      const bool same = (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0 || (a == b && a != 0);
+      if (!same) throw runtime_failure("lossless check failed at voxel {}: {} decoded as {}", i, a, b);
+    }
+  } else if (o.mode == Mode::max_error && (e.max_error > o.bound || (!roi.empty() && e.roi_max_error > o.roi_bound))) {
+    throw runtime_failure("decoded error {} exceeds the bound {}", e.max_error, o.bound);
+  }
+  if (stats) {
+    stats->max_error = e.max_error;
+    stats->rmse = e.rmse;
+    stats->roi_max_error = e.roi_max_error;
+    stats->outliers = outliers;
+    stats->step = h.quantiser.step;
+  }
+  return out;
+}
+
+void reseal_vw(std::string& bytes, std::uint64_t max_voxels) {
+  std::vector<std::uint8_t> roi;
+  VwHeader h;
+  try {
+    h = parse_header(bytes, max_voxels, &roi, false);
+  } catch (const Error&) {
+    return;
+  }
+  std::size_t pos = h.header_bytes;
+  for (auto& c : h.chunks) {
+    if (bytes.size() - pos < c.bytes) break;
+    c.hash = fnv1a(std::string_view(bytes).substr(pos, c.bytes));
+    pos += c.bytes;
+  }
+  const std::string header = write_header(h, roi);
+  if (header.size() == h.header_bytes) bytes.replace(0, header.size(), header);
+}
+
+DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std::uint64_t max_voxels) {
+  threads = std::max(1, threads);
+  std::vector<std::uint8_t> roi;
+  const VwHeader h = parse_header(bytes, max_voxels, &roi);
+  DecodeResult res;
+  res.chunks_total = static_cast<int>(h.chunks.size());
+  const int limit = max_chunks < 0 ? res.chunks_total : std::min(max_chunks, res.chunks_total);
+  const auto bands = subbands(h.dims, h.levels);
+  const auto by_chunk = streams_by_chunk(bands, h.levels);
+  std::vector<std::int64_t> coef(h.dims[0] * h.dims[1] * h.dims[2], 0);
+  std::size_t pos = h.header_bytes;
+  int decoded = 0;
+  for (int k = 0; k <= h.levels && k < limit; ++k) {
+    const ChunkInfo& info = h.chunks[static_cast<std::size_t>(k)];
+    if (bytes.size() - pos < info.bytes) {
+      res.truncated = true;
+      break;
+    }
+    const std::string_view chunk = bytes.substr(pos, info.bytes);
+    if (fnv1a(chunk) != info.hash) throw bad_input(".vw chunk {}: checksum mismatch (damaged data)", k);
+    const auto& streams = by_chunk[static_cast<std::size_t>(k)];
+    Reader r{chunk, 0, ".vw chunk"};
+    std::vector<std::string_view> parts(streams.size());
+    std::size_t at = 4 * streams.size();
+    if (chunk.size() < at) throw bad_input(".vw chunk {}: {} bytes cannot list {} streams", k, chunk.size(), streams.size());
+    for (std::size_t s = 0; s < streams.size(); ++s) {
+      const std::uint32_t len = r.u32();
+      if (len > chunk.size() - at) throw bad_input(".vw chunk {}: stream {} runs past the chunk", k, s);
+      parts[s] = chunk.substr(at, len);
+      at += len;
+    }
+    if (at != chunk.size()) throw bad_input(".vw chunk {}: {} unused bytes", k, chunk.size() - at);
+    parallel_for(streams.size(), threads, [&](std::size_t s) {
+      decode_slab(parts[s], coef.data(), h.dims, *streams[s].band, streams[s].parent, streams[s].slab, h.max_exponent);
+    });
+    pos += info.bytes;
+    ++decoded;
+  }
+  if (decoded == 0) {
+    if (limit == 0) throw usage_error("at least the first chunk must be decoded");
+    throw bad_input("truncated .vw: the coarsest level (chunk 0, {} bytes) is incomplete", h.chunks[0].bytes);
+  }
+  res.volume.dims = h.dims;
+  res.volume.spacing = h.spacing;
+  res.volume.origin = h.origin;
+  res.volume.direction = h.direction;
+  res.volume.type = h.type;
+  res.volume.voxels = reconstruct(h, std::move(coef), roi, threads);
+  // Outliers apply to the full-resolution volume only.
+  const std::size_t last = h.chunks.size() - 1;
+  if (decoded == h.levels + 1 && limit > h.levels + 1) {
+    const ChunkInfo& info = h.chunks[last];
+    if (bytes.size() - pos < info.bytes) {
+      res.truncated = true;
+    } else {
+      const std::string_view chunk = bytes.substr(pos, info.bytes);
+      if (fnv1a(chunk) != info.hash) throw bad_input(".vw outlier chunk: checksum mismatch (damaged data)");
+      Reader r{chunk, 0, ".vw outlier chunk"};
+      const std::uint64_t count = r.varint();
+      const std::size_t n = res.volume.voxels.size();
+      if (count > n || count > chunk.size()) throw bad_input(".vw outlier chunk: {} outliers", count);
+      std::size_t index = 0;
+      for (std::uint64_t i = 0; i < count; ++i) {
+        const std::uint64_t step = r.varint();
+        if (step >= n - index) throw bad_input(".vw outlier chunk: index out of range");
+        index += static_cast<std::size_t>(step);
+        res.volume.voxels[index] = r.f64();
+      }
+      if (r.pos != chunk.size()) throw bad_input(".vw outlier chunk: {} unused bytes", chunk.size() - r.pos);
+      ++decoded;
+    }
+  } else if (decoded < limit) {
+    res.truncated = true;
+  }
+  res.chunks_decoded = decoded;
+  res.max_error = h.chunks[static_cast<std::size_t>(decoded - 1)].max_error;
+  res.rmse = h.chunks[static_cast<std::size_t>(decoded - 1)].rmse;
+  return res;
+}
+
+}  // namespace fest::wavelet

@@ -1,0 +1,106 @@
+#pragma once
+// The .vw file (man/man5/fest-vw.5, docs/volwave.md §5): a volume coded by volwave.
+// Bytes <-> types only; no I/O.
+//
+//   header   magic "\x89VW\r\n\x1a\n\x01", mode, wavelet, levels, stored type, key kind,
+//            largest coded exponent, dimensions, spacing, origin, direction, quantiser
+//            step and offset, the requested bound, and a table with one row per chunk:
+//            byte length, FNV-1a hash, and the L-infinity and RMS error of a volume
+//            decoded from the chunks up to and including this one (measured by the
+//            encoder); the header ends with its own FNV-1a hash.
+//   chunks   0: the approximation band; 1..levels: the seven detail bands of one level,
+//            coarsest first; last: the outliers (voxels stored exactly).
+// A file cut anywhere after the first chunk still decodes: the missing finer detail
+// bands count as zero, which gives a smoother volume, and the table says its error.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/volume.hpp"
+#include "wavelet/lifting.hpp"
+#include "wavelet/quantiser.hpp"
+
+namespace fest::wavelet {
+
+enum class Mode : std::uint8_t { lossless = 0, max_error = 1, rmse = 2 };
+const char* mode_name(Mode m) noexcept;  // "lossless", "max-error", "rmse"
+
+struct EncodeOptions {
+  Mode mode = Mode::max_error;
+  double bound = 0.0;     // max_error: L-infinity bound; rmse: the RMS error to stay under
+  Wavelet wavelet = Wavelet::cdf53;
+  int levels = -1;        // -1: default_levels()
+  int threads = 1;
+  // Region of interest coded with its own, tighter L-infinity bound (max_error mode):
+  // the voxels whose mask byte is non-zero (mask empty: no region).
+  std::vector<std::uint8_t> roi_mask;
+  double roi_bound = 0.0;
+};
+
+struct ChunkInfo {
+  std::uint64_t bytes = 0;
+  std::uint64_t hash = 0;
+  double max_error = 0.0;  // of the volume decoded through this chunk
+  double rmse = 0.0;
+};
+
+struct VwHeader {
+  Mode mode = Mode::max_error;
+  Wavelet wavelet = Wavelet::cdf53;
+  int levels = 0;
+  ScalarType type = ScalarType::f32;
+  Quantiser quantiser;         // step, offset, key kind
+  double roi_step = 0.0;       // > 0: the region's step (max_error with a region)
+  int max_exponent = 0;
+  Dims dims{0, 0, 0};
+  std::array<double, 3> spacing{1, 1, 1};
+  std::array<double, 3> origin{0, 0, 0};
+  std::array<double, 9> direction{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  double bound = 0.0;          // as requested (0 for lossless)
+  double roi_bound = 0.0;
+  std::vector<ChunkInfo> chunks;
+  std::size_t header_bytes = 0;  // where chunk 0 starts
+
+  std::uint64_t total_bytes() const noexcept;
+};
+
+// What encoding measured on its own output, decoded again (the guarantee checked).
+struct EncodeStats {
+  double max_error = 0.0;
+  double rmse = 0.0;
+  double roi_max_error = 0.0;
+  std::size_t outliers = 0;
+  double step = 0.0;
+};
+
+// Throws bad_input for data the mode cannot code (NaN with a bound, ...), and
+// Status::failure if the decoded output breaks the bound (which would be a bug).
+std::string encode_vw(const Volume& volume, const EncodeOptions& options, EncodeStats* stats = nullptr);
+
+// Parses and checks the header. Throws bad_input for a damaged or truncated header.
+// `max_voxels` caps the dimensions a header may claim (decoders of untrusted bytes,
+// fuzzers).
+VwHeader read_vw_header(std::string_view bytes, std::uint64_t max_voxels = kMaxVoxels);
+
+struct DecodeResult {
+  Volume volume;
+  int chunks_decoded = 0;   // complete chunks used
+  int chunks_total = 0;
+  bool truncated = false;   // the file ended before its last chunk
+  double max_error = 0.0;   // from the header table, for the chunks used
+  double rmse = 0.0;
+};
+
+// Decodes all complete chunks (at most `max_chunks`, -1 = all). A file whose
+// approximation chunk is incomplete, or a chunk whose hash does not match, throws
+// bad_input.
+DecodeResult decode_vw(std::string_view bytes, int threads = 1, int max_chunks = -1,
+                       std::uint64_t max_voxels = kMaxVoxels);
+
+// Recomputes the header's and the complete chunks' hashes in place (fuzzers use it to
+// get past the checksums to the parsers behind them). Leaves unparsable bytes alone.
+void reseal_vw(std::string& bytes, std::uint64_t max_voxels = kMaxVoxels);
+
+}  // namespace fest::wavelet

@@ -1,0 +1,279 @@
+// The .vw codec: the L-infinity bound on every voxel, bit-exact lossless coding,
+// truncation to coarser volumes with the stated error, and damaged input refused.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+#include "core/error.hpp"
+#include "wavelet/range_coder.hpp"
+#include "wavelet/vw_codec.hpp"
+
+using namespace fest;
+using namespace fest::wavelet;
+
+namespace {
+
+// A smooth blob plus noise, as `type`.
+Volume test_volume(ScalarType type, std::size_t nx = 23, std::size_t ny = 17, std::size_t nz = 11, double noise = 3.0) {
+  Volume v;
+  v.resize(nx, ny, nz);
+  v.type = type;
+  v.spacing = {0.5, 0.7, 1.2};
+  v.origin = {-3, 4, 5};
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> g(0.0, noise);
+  for (std::size_t z = 0; z < nz; ++z)
+    for (std::size_t y = 0; y < ny; ++y)
+      for (std::size_t x = 0; x < nx; ++x) {
+        const double r2 = std::pow(x - nx / 2.0, 2) + std::pow(y - ny / 2.0, 2) + std::pow(z - nz / 2.0, 2);
+        double val = 100.0 + 900.0 * std::exp(-r2 / 40.0) + g(rng);
+        if (scalar_type_is_integer(type)) val = std::round(val);
+        if (type == ScalarType::f32) val = static_cast<double>(static_cast<float>(val));
+        v.at(x, y, z) = val;
+      }
+  return v;
+}
+
+double max_abs(const Volume& a, const Volume& b) {
+  double m = 0;
+  for (std::size_t i = 0; i < a.voxels.size(); ++i) m = std::max(m, std::fabs(a.voxels[i] - b.voxels[i]));
+  return m;
+}
+
+}  // namespace
+
+TEST(WaveletCodec, RangeCoderRoundTrips) {
+  std::mt19937_64 rng(1);
+  std::vector<int> bits(5000);
+  for (auto& b : bits) b = (rng() % 10) < 2;
+  RangeEncoder enc;
+  BitModel m;
+  for (std::size_t i = 0; i < bits.size(); ++i) {
+    if (i % 3 == 0) enc.encode_direct(bits[i]);
+    else enc.encode(m, bits[i]);
+  }
+  const std::string bytes = enc.finish();
+  RangeDecoder dec(bytes);
+  BitModel m2;
+  for (std::size_t i = 0; i < bits.size(); ++i) {
+    const int b = (i % 3 == 0) ? dec.decode_direct() : dec.decode(m2);
+    ASSERT_EQ(b, bits[i]) << i;
+  }
+  EXPECT_FALSE(dec.overrun());
+}
+
+TEST(WaveletCodec, MaxErrorHoldsOnEveryVoxel) {
+  for (ScalarType type : {ScalarType::u16, ScalarType::i16, ScalarType::f32, ScalarType::f64}) {
+    const Volume v = test_volume(type);
+    for (double bound : {0.25, 1.0, 2.5, 10.0}) {
+      for (Wavelet w : {Wavelet::haar, Wavelet::cdf53}) {
+        EncodeOptions o;
+        o.bound = bound;
+        o.wavelet = w;
+        EncodeStats st;
+        const std::string bytes = encode_vw(v, o, &st);
+        const DecodeResult d = decode_vw(bytes, 2);
+        EXPECT_LE(max_abs(v, d.volume), bound) << scalar_type_name(type) << " " << bound;
+        EXPECT_FALSE(d.truncated);
+        EXPECT_EQ(d.volume.dims, v.dims);
+        EXPECT_EQ(d.volume.spacing, v.spacing);
+        EXPECT_EQ(d.volume.type, v.type);
+        EXPECT_DOUBLE_EQ(d.max_error, st.max_error);
+      }
+    }
+  }
+}
+
+TEST(WaveletCodec, IntegerBoundUsesOddSteps) {
+  // Integer data with bound 1: step 3, so every error is -1, 0 or 1, and some are 1.
+  const Volume v = test_volume(ScalarType::i16);
+  EncodeOptions o;
+  o.bound = 1.0;
+  EncodeStats st;
+  const DecodeResult d = decode_vw(encode_vw(v, o, &st));
+  EXPECT_EQ(st.step, 3.0);
+  EXPECT_EQ(max_abs(v, d.volume), 1.0);
+}
+
+TEST(WaveletCodec, LosslessIsBitExact) {
+  for (ScalarType type : {ScalarType::u8, ScalarType::u16, ScalarType::i16, ScalarType::f32}) {
+    Volume v = test_volume(type == ScalarType::u8 ? ScalarType::u16 : type);
+    v.type = type;
+    if (type == ScalarType::u8)
+      for (auto& x : v.voxels) x = std::min(255.0, std::max(0.0, x / 4));
+    if (type == ScalarType::f32) {
+      v.voxels[3] = std::numeric_limits<double>::quiet_NaN();
+      v.voxels[4] = -0.0;
+      v.voxels[5] = static_cast<double>(static_cast<float>(1e-40));  // a float32 subnormal
+      for (std::size_t i = 6; i < v.voxels.size(); i += 7) v.voxels[i] = static_cast<float>(v.voxels[i] * 1.0001);
+    } else {
+      for (auto& x : v.voxels) x = std::round(x);
+    }
+    EncodeOptions o;
+    o.mode = Mode::lossless;
+    const DecodeResult d = decode_vw(encode_vw(v, o));
+    for (std::size_t i = 0; i < v.voxels.size(); ++i) {
+      const double a = v.voxels[i], b = d.volume.voxels[i];
+      if (std::isnan(a)) {
+        EXPECT_TRUE(std::isnan(b));
+        continue;
+      }
+      ASSERT_EQ(std::memcmp(&a, &b, 8), 0) << scalar_type_name(type) << " voxel " << i << ": " << a << " vs " << b;
+    }
+    EXPECT_EQ(d.max_error, 0.0);
+  }
+}
+
+TEST(WaveletCodec, Float64ThatFloat32CannotHoldIsRefusedLossless) {
+  Volume v = test_volume(ScalarType::f64);
+  v.voxels[0] = 0.1;
+  EncodeOptions o;
+  o.mode = Mode::lossless;
+  try {
+    encode_vw(v, o);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), Status::bad_input);
+  }
+}
+
+TEST(WaveletCodec, NanWithABoundIsBadInput) {
+  Volume v = test_volume(ScalarType::f32);
+  v.voxels[10] = std::numeric_limits<double>::quiet_NaN();
+  EncodeOptions o;
+  o.bound = 1;
+  try {
+    encode_vw(v, o);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), Status::bad_input);
+    EXPECT_NE(std::string(e.what()).find("NaN"), std::string::npos);
+  }
+  o.bound = 0;
+  EXPECT_THROW(encode_vw(test_volume(ScalarType::f32), o), Error);
+  o.bound = -1;
+  EXPECT_THROW(encode_vw(test_volume(ScalarType::f32), o), Error);
+}
+
+TEST(WaveletCodec, TruncatedFilesDecodeCoarserWithTheStatedError) {
+  const Volume v = test_volume(ScalarType::f32, 40, 36, 20);
+  EncodeOptions o;
+  o.bound = 0.5;
+  const std::string bytes = encode_vw(v, o);
+  const VwHeader h = read_vw_header(bytes);
+  ASSERT_GE(h.levels, 2);
+  std::size_t end = h.header_bytes;
+  double previous = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < h.chunks.size(); ++k) {
+    end += h.chunks[k].bytes;
+    // Cut in the middle of the next chunk: only chunks 0..k are complete.
+    const std::size_t cut = end + h.chunks[k + 1].bytes / 2;
+    const DecodeResult d = decode_vw(std::string_view(bytes).substr(0, cut));
+    EXPECT_TRUE(d.truncated);
+    EXPECT_EQ(d.chunks_decoded, static_cast<int>(k + 1));
+    // The error the file states is the error of what was decoded.
+    EXPECT_NEAR(max_abs(v, d.volume), d.max_error, 1e-9);
+    EXPECT_LE(d.rmse, previous * 1.0001);
+    previous = d.rmse;
+  }
+  // Cut inside the header or inside chunk 0: refused.
+  EXPECT_THROW(decode_vw(std::string_view(bytes).substr(0, h.header_bytes - 1)), Error);
+  EXPECT_THROW(decode_vw(std::string_view(bytes).substr(0, h.header_bytes + h.chunks[0].bytes - 1)), Error);
+}
+
+TEST(WaveletCodec, DamagedBytesAreRefusedNotTrusted) {
+  const Volume v = test_volume(ScalarType::u16);
+  EncodeOptions o;
+  o.bound = 2;
+  std::string bytes = encode_vw(v, o);
+  std::mt19937_64 rng(9);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::string b = bytes;
+    b[rng() % b.size()] ^= static_cast<char>(1 + rng() % 255);
+    try {
+      (void)decode_vw(b);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), Status::bad_input);
+    }
+  }
+}
+
+TEST(WaveletCodec, RegionOfInterestGetsItsOwnBound) {
+  const Volume v = test_volume(ScalarType::f32, 30, 30, 12);
+  EncodeOptions o;
+  o.bound = 20;
+  o.roi_bound = 0.5;
+  o.roi_mask.assign(v.size(), 0);
+  for (std::size_t z = 3; z < 8; ++z)
+    for (std::size_t y = 10; y < 20; ++y)
+      for (std::size_t x = 10; x < 20; ++x) o.roi_mask[v.index(x, y, z)] = 1;
+  const DecodeResult d = decode_vw(encode_vw(v, o));
+  double inside = 0, outside = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double e = std::fabs(v.voxels[i] - d.volume.voxels[i]);
+    (o.roi_mask[i] ? inside : outside) = std::max(o.roi_mask[i] ? inside : outside, e);
+  }
+  EXPECT_LE(inside, 0.5);
+  EXPECT_LE(outside, 20);
+  EXPECT_GT(outside, 1);
+}
+
+TEST(WaveletCodec, RmseTargetIsMet) {
+  const Volume v = test_volume(ScalarType::f32, 32, 32, 16);
+  for (Wavelet w : {Wavelet::cdf97, Wavelet::cdf53}) {
+    EncodeOptions o;
+    o.mode = Mode::rmse;
+    o.bound = 2.0;
+    o.wavelet = w;
+    EncodeStats st;
+    const DecodeResult d = decode_vw(encode_vw(v, o, &st));
+    double s = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) s += std::pow(v.voxels[i] - d.volume.voxels[i], 2);
+    const double rmse = std::sqrt(s / static_cast<double>(v.size()));
+    EXPECT_LE(rmse, 2.0) << wavelet_name(w);
+    EXPECT_GT(rmse, 1.0) << wavelet_name(w);  // the search uses the budget
+  }
+}
+
+TEST(WaveletCodec, SameBytesForAnyThreadCount) {
+  const Volume v = test_volume(ScalarType::f32, 40, 40, 40);
+  EncodeOptions o;
+  o.bound = 1;
+  o.threads = 1;
+  const std::string a = encode_vw(v, o);
+  o.threads = 4;
+  EXPECT_EQ(a, encode_vw(v, o));
+}
+
+TEST(WaveletCodec, ResealedMutationsFailCleanly) {
+  // What tests/fuzz/fuzz_vw.cpp does, for a fixed budget in the suite: mutations with
+  // valid hashes reach the parsers and the range decoder; only fest::Error may come out.
+  const Volume v = test_volume(ScalarType::f32, 12, 10, 9);
+  EncodeOptions o;
+  o.bound = 0.5;
+  o.roi_mask.assign(v.size(), 0);
+  o.roi_mask[5] = 1;
+  o.roi_bound = 0.1;
+  const std::string bytes = encode_vw(v, o);
+  std::mt19937_64 rng(17);
+  int decoded = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string b = bytes;
+    const int flips = 1 + static_cast<int>(rng() % 3);
+    for (int f = 0; f < flips; ++f) b[rng() % b.size()] ^= static_cast<char>(1u << (rng() % 8));
+    if (rng() % 4 == 0) b.resize(rng() % b.size());
+    reseal_vw(b, 1 << 16);
+    try {
+      const DecodeResult d = decode_vw(b, 1, -1, 1 << 16);
+      EXPECT_EQ(d.volume.voxels.size(), d.volume.size());
+      ++decoded;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), Status::bad_input) << e.what();
+    }
+  }
+  EXPECT_GT(decoded, 0);
+}
