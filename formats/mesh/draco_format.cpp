@@ -142,7 +142,8 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
   // A mesh without faces is a point cloud to Draco (its mesh coders need triangles).
   std::unique_ptr<draco::PointCloud> cloud;
   draco::Mesh* triangles = nullptr;
-  if (mesh.n_faces() > 0) {
+  const FacesBeside extra = extra_faces_to_write(mesh);
+  if (mesh.n_faces() + extra.faces.size() > 0) {
     auto owned = std::make_unique<draco::Mesh>();
     triangles = owned.get();
     cloud = std::move(owned);
@@ -182,11 +183,12 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
     set_values<float>(*cloud, id, mesh, 2, [&](Mesh::VertexHandle v) { return mesh.texcoord2D(v); });
   }
   if (triangles)
-    for (auto f : mesh.faces()) {
-      std::vector<draco::PointIndex> corners;
-      for (auto v : mesh.fv_range(f)) corners.emplace_back(static_cast<uint32_t>(v.idx()));
-      for (std::size_t k = 1; k + 1 < corners.size(); ++k) triangles->AddFace({corners[0], corners[k], corners[k + 1]});
-    }
+    for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color*, Mesh::FaceHandle) {
+      for (std::size_t k = 1; k + 1 < face.size(); ++k)
+        triangles->AddFace({draco::PointIndex(static_cast<uint32_t>(face[0])),
+                            draco::PointIndex(static_cast<uint32_t>(face[k])),
+                            draco::PointIndex(static_cast<uint32_t>(face[k + 1]))});
+    });
 
   draco::Encoder encoder;
   encoder.SetSpeedOptions(options.draco_speed, options.draco_speed);
