@@ -16,7 +16,9 @@
 //  * OBJ: v (with the optional "r g b" colour extension), vt, vn, f (all index forms,
 //    negative = relative), l (polylines) and p (points). OBJ attaches normals and
 //    texture coordinates to face corners;
-//    the first corner that names a vertex gives that vertex its normal/texcoord. Face
+//    the first corner that names a vertex gives that vertex its normal/texcoord (with no
+//    corner naming normals and one vn per v -- MeshLab's point clouds -- vn i is vertex
+//    i's). Face
 //    colours are not kept (OBJ needs a material library for them).
 //  * STL: triangles only (polygons are written as fans); vertices with exactly equal
 //    coordinates are merged on reading (STL stores each triangle on its own), in order

@@ -3,7 +3,8 @@
 // far), l (polylines) and p (points), kept as line and point elements (mesh_io.hpp).
 // Other statements (o, g, s, usemtl, mtllib ...) are ignored. OBJ gives normals and
 // texture coordinates per face corner; fest::Mesh keeps them per vertex, taken from the
-// first corner that names the vertex.
+// first corner that names the vertex. When no corner names a normal and there is one vn
+// per v (MeshLab's point clouds), the normals are the vertices' in order.
 
 #include <vector>
 
@@ -135,13 +136,18 @@ Mesh read_obj(std::string_view bytes) {
       any_normal = any_normal || corner.normal != no_index;
       any_texcoord = any_texcoord || corner.texcoord != no_index;
     }
-  if (any_normal) mesh.request_vertex_normals();
+  // A point cloud (MeshLab writes one vn per v and no faces): no corner names the
+  // normals, which belong to the vertices in order.
+  const bool normal_per_vertex = !any_normal && !normals.empty() && normals.size() == mesh.n_vertices();
+  if (any_normal || normal_per_vertex) mesh.request_vertex_normals();
   if (any_texcoord) mesh.request_vertex_texcoords2D();
   std::vector<bool> has_normal(any_normal ? mesh.n_vertices() : 0), has_texcoord(any_texcoord ? mesh.n_vertices() : 0);
   for (auto v : mesh.vertices()) {
     if (any_normal) mesh.set_normal(v, Mesh::Normal(0, 0, 0));
     if (any_texcoord) mesh.set_texcoord2D(v, Mesh::TexCoord2D(0, 0));
   }
+  if (normal_per_vertex)
+    for (auto v : mesh.vertices()) mesh.set_normal(v, normals[static_cast<std::size_t>(v.idx())]);
   for (const Corner& corner : corners) {
     Mesh::VertexHandle vh(corner.vertex);
     if (corner.normal != no_index && !has_normal[corner.vertex]) {

@@ -172,5 +172,13 @@ TEST(MeshKeptElements, PlyHeaderLineWithoutCommentKeyword) {
   EXPECT_TRUE(formats::read_warnings(formats::read_mesh(formats::write_mesh(m, Format::ply), Format::ply)).empty());
 }
 
+TEST(MeshKeptElements, ObjPointCloudNormalsBelongToTheVertices) {
+  // assimp's point_cloud.obj (written by MeshLab): vn before each v, no faces.
+  const Mesh m = formats::read_mesh("vn 0 0 1\nv 1 2 3\nvn 0 1 0\nv 4 5 6\n", Format::obj);
+  ASSERT_TRUE(m.has_vertex_normals());
+  EXPECT_EQ(m.normal(Mesh::VertexHandle(0)), Mesh::Normal(0, 0, 1));
+  EXPECT_EQ(m.normal(Mesh::VertexHandle(1)), Mesh::Normal(0, 1, 0));
+}
+
 }  // namespace
 }  // namespace fest::test
