@@ -134,6 +134,10 @@ void set_point_elements(Mesh& mesh, std::vector<std::vector<int>> points) {
   mesh_detail::set_mesh_property(mesh, point_elements_property, std::move(points));
 }
 
+std::vector<MeshPart> unread_parts(const Mesh& mesh) {
+  return mesh_detail::get_mesh_property<std::vector<MeshPart>>(mesh, "fest:unread_parts");
+}
+
 std::vector<std::string> read_warnings(const Mesh& mesh) {
   return mesh_detail::get_mesh_property<std::vector<std::string>>(mesh, mesh_detail::read_warnings_property);
 }
@@ -146,6 +150,10 @@ void add_read_warning(Mesh& mesh, std::string message) {
   auto warnings = read_warnings(mesh);
   warnings.push_back(std::move(message));
   set_mesh_property(mesh, read_warnings_property, std::move(warnings));
+}
+
+void set_unread_parts(Mesh& mesh, std::vector<MeshPart> parts) {
+  set_mesh_property(mesh, "fest:unread_parts", std::move(parts));
 }
 
 void set_point_storage(Mesh& mesh, CoordinateStorage storage) {

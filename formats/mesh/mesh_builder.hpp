@@ -103,6 +103,9 @@ bool write_normals_as_float(const Mesh& mesh, CoordinatePrecision precision);
 // decimal file held for it fits a float (values that are exactly floats included).
 bool decimal_fits_float(double value);
 
+// What a reader read and did not keep (unread_parts()).
+void set_unread_parts(Mesh& mesh, std::vector<MeshPart> parts);
+
 // A reader's lenient-reading message (read_warnings()).
 void add_read_warning(Mesh& mesh, std::string message);
 

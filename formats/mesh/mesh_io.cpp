@@ -164,6 +164,11 @@ nlohmann::json describe_mesh(const Mesh& mesh) {
     info["line_segments"] = line_segments(mesh);
   }
   if (const auto points = point_elements(mesh); !points.empty()) info["points"] = point_count(mesh);
+  if (const auto parts = unread_parts(mesh); !parts.empty()) {
+    nlohmann::json not_kept = nlohmann::json::array();
+    for (const MeshPart& part : parts) not_kept.push_back(part.describe());
+    info["not_kept"] = not_kept;
+  }
   return info;
 }
 

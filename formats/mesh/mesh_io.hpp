@@ -107,7 +107,8 @@ std::string write_mesh(const Mesh& mesh, Format format, const MeshWriteOptions& 
 // (from "vertex_normals", "vertex_colors", "vertex_texcoords", "face_colors",
 // "face_normals"), "skipped_faces" when a reader kept faces beside the halfedge mesh
 // ("faces" counts them too), "lines" / "line_segments" / "points" when the mesh has
-// line or point elements.
+// line or point elements, "not_kept" (unread_parts(), as text) when a reader did not
+// keep something.
 nlohmann::json describe_mesh(const Mesh& mesh);
 
 // Name of the mesh property (std::size_t) holding the number of faces a reader skipped.
@@ -152,6 +153,12 @@ void set_line_elements(Mesh& mesh, std::vector<std::vector<int>> lines);
 void set_point_elements(Mesh& mesh, std::vector<std::vector<int>> points);
 std::size_t line_segments(const Mesh& mesh);  // sum over lines of (vertices - 1)
 std::size_t point_count(const Mesh& mesh);     // sum over point elements of their vertices
+
+// What the file holds that the reader read but fest's mesh does not keep: PLY
+// properties other than the known ones ("1889 vertices' confidence, intensity (PLY
+// properties)") and PLY elements other than vertex, face and edge. Empty for other
+// formats. A converter must refuse or report them (fconv does, like unwritable_parts).
+std::vector<MeshPart> unread_parts(const Mesh& mesh);
 
 // What a reader could read only leniently (a PLY header line without `comment`), one
 // message each, for the tool to print as warnings. Mesh property "fest:read_warnings".

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
@@ -146,6 +148,20 @@ Layout face_layout(const PlyElement& e) {
 
 std::uint8_t to_color(double value, PlyType type) {
   return ply_type_is_integer(type) ? color_from_byte_range(value) : color_from_unit(value);
+}
+
+// Where the scalar integer properties vertex1 and vertex2 of an edge element are;
+// false when it lacks them (then the element is not read as lines).
+bool edge_ends(const PlyElement& e, std::size_t* ends) {
+  std::size_t found[2] = {e.properties.size(), e.properties.size()};
+  for (std::size_t k = 0; k < e.properties.size(); ++k) {
+    const PlyProperty& p = e.properties[k];
+    if (p.is_list || !ply_type_is_integer(p.type)) continue;
+    if (p.name == "vertex1") found[0] = k;
+    if (p.name == "vertex2") found[1] = k;
+  }
+  if (ends) ends[0] = found[0], ends[1] = found[1];
+  return found[0] < e.properties.size() && found[1] < e.properties.size();
 }
 
 struct Faces {
@@ -303,18 +319,6 @@ class BodyReader {
     }
   }
 
-  // Where the scalar integer properties vertex1 and vertex2 of an edge element are.
-  static bool edge_ends(const PlyElement& e, std::size_t* ends) {
-    std::size_t found[2] = {e.properties.size(), e.properties.size()};
-    for (std::size_t k = 0; k < e.properties.size(); ++k) {
-      const PlyProperty& p = e.properties[k];
-      if (p.is_list || !ply_type_is_integer(p.type)) continue;
-      if (p.name == "vertex1") found[0] = k;
-      if (p.name == "vertex2") found[1] = k;
-    }
-    if (ends) ends[0] = found[0], ends[1] = found[1];
-    return found[0] < e.properties.size() && found[1] < e.properties.size();
-  }
 
   void read_edges(const PlyElement& e) {
     std::size_t ends[2];
@@ -356,6 +360,30 @@ class BodyReader {
   Mesh& mesh_;
 };
 
+// What the header declares that fest reads but does not keep (other vertex, face and
+// edge properties, other elements), for unread_parts(): never dropped without a word.
+std::vector<MeshPart> parts_not_kept(const PlyHeader& header) {
+  std::vector<MeshPart> parts;
+  for (const PlyElement& e : header.elements) {
+    if (e.count == 0 || e.properties.empty()) continue;
+    const bool lines = e.name == "edge" && edge_ends(e, nullptr);
+    if (e.name != "vertex" && e.name != "face" && !lines) {
+      parts.push_back({fmt::format("PLY '{}' elements", e.name), e.count});
+      continue;
+    }
+    std::string names;
+    for (const PlyProperty& p : e.properties) {
+      const bool kept = (e.name == "vertex" && vertex_role(p.name) != Role::skip) ||
+                        (e.name == "face" && face_role(p.name) != Role::skip) ||
+                        (lines && (p.name == "vertex1" || p.name == "vertex2"));
+      if (!kept) names += (names.empty() ? "" : ", ") + p.name;
+    }
+    const char* plural = e.name == "vertex" ? "vertices" : e.name == "face" ? "faces" : "edges";
+    if (!names.empty()) parts.push_back({fmt::format("{}' {} (PLY properties)", plural, names), e.count});
+  }
+  return parts;
+}
+
 }  // namespace
 
 Mesh read_ply(std::string_view bytes) {
@@ -375,6 +403,7 @@ Mesh read_ply(std::string_view bytes) {
     lines = std::move(reader.lines_);
   }
   for (std::string& warning : header.warnings) add_read_warning(mesh, std::move(warning));
+  if (std::vector<MeshPart> parts = parts_not_kept(header); !parts.empty()) set_unread_parts(mesh, std::move(parts));
   if (!lines.empty()) set_line_elements(mesh, std::move(lines));
   // Faces are added after every element is read: a file may list faces first.
   const std::size_t n_faces = faces.offsets.size() - 1;

@@ -79,4 +79,13 @@ expect_status 0
 expect_json '.faces' "$(assimp_primitives "$dir/Wuson.ply")"
 expect_stderr_has "^fconv: warning: PLY header line 3: \"Created by Blender3D 247"
 
+case_ "PLY properties fest does not keep are refused by name, or dropped with a warning"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float confidence\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n' >"$WORK/scan.ply"
+run fconv "$WORK/scan.ply" --to off
+expect_clean_failure 3 fconv
+expect_stderr_has "does not keep the input's 3 vertices' confidence \\(PLY properties\\)"
+run fconv "$WORK/scan.ply" --to off --drop-unrepresentable
+expect_status 0
+expect_stderr_has "^fconv: warning: dropped 3 vertices' confidence"
+
 finish

@@ -172,6 +172,26 @@ TEST(MeshKeptElements, PlyHeaderLineWithoutCommentKeyword) {
   EXPECT_TRUE(formats::read_warnings(formats::read_mesh(formats::write_mesh(m, Format::ply), Format::ply)).empty());
 }
 
+TEST(MeshKeptElements, PlyPropertiesAndElementsNotKeptAreNamed) {
+  // The Stanford scans' header (opencv's bunny.ply): confidence and intensity per vertex.
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float confidence\nproperty float intensity\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "property uchar flags\nelement material 2\nproperty float shine\nelement edge 1\nproperty int vertex1\n"
+      "property int vertex2\nproperty uchar red\nend_header\n"
+      "0 0 0 1 2\n1 0 0 1 2\n0 1 0 1 2\n3 0 1 2 7\n0.5\n0.25\n0 1 9\n";
+  const Mesh m = formats::read_mesh(ply, Format::ply);
+  const auto parts = formats::unread_parts(m);
+  ASSERT_EQ(parts.size(), 4u);
+  EXPECT_EQ(parts[0].describe(), "3 vertices' confidence, intensity (PLY properties)");
+  EXPECT_EQ(parts[1].describe(), "1 faces' flags (PLY properties)");
+  EXPECT_EQ(parts[2].describe(), "2 PLY 'material' elements");
+  EXPECT_EQ(parts[3].describe(), "1 edges' red (PLY properties)");
+  EXPECT_EQ(formats::describe_mesh(m)["not_kept"].size(), 4u);
+  // What fest writes itself reads back with nothing left out.
+  EXPECT_TRUE(formats::unread_parts(formats::read_mesh(formats::write_mesh(m, Format::ply), Format::ply)).empty());
+}
+
 TEST(MeshKeptElements, ObjPointCloudNormalsBelongToTheVertices) {
   // assimp's point_cloud.obj (written by MeshLab): vn before each v, no faces.
   const Mesh m = formats::read_mesh("vn 0 0 1\nv 1 2 3\nvn 0 1 0\nv 4 5 6\n", Format::obj);

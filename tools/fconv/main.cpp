@@ -50,17 +50,28 @@ Mesh read_whole_mesh(const Input& in) {
   return mesh;
 }
 
-// What the output format cannot hold: refused (exit 3) unless --drop-unrepresentable,
-// then counted in a warning.
-void check_unwritable(const Mesh& mesh, Format to, const Options& opt, const std::string& name) {
-  const std::vector<MeshPart> parts = unwritable_parts(mesh, to);
-  if (parts.empty()) return;
+std::string list_parts(const std::vector<MeshPart>& parts) {
   std::string what;
   for (const MeshPart& part : parts) what += (what.empty() ? "" : ", ") + part.describe();
-  if (!opt.drop_unrepresentable)
-    throw bad_input("{} cannot hold the input's {}; --drop-unrepresentable converts without them ({})",
-                    format_name(to), what, name);
-  warn("fconv", fmt::format("dropped {}, which {} cannot hold ({})", what, format_name(to), name));
+  return what;
+}
+
+// What fest does not keep from the input, and what the output format cannot hold:
+// refused (exit 3) unless --drop-unrepresentable, then counted in a warning.
+void check_losses(const Mesh& mesh, Format to, const Options& opt, const std::string& name) {
+  const std::vector<MeshPart> unread = unread_parts(mesh), unwritable = unwritable_parts(mesh, to);
+  if (!unread.empty()) {
+    if (!opt.drop_unrepresentable)
+      throw bad_input("fest does not keep the input's {}; --drop-unrepresentable converts without them ({})",
+                      list_parts(unread), name);
+    warn("fconv", fmt::format("dropped {}, which fest does not keep ({})", list_parts(unread), name));
+  }
+  if (!unwritable.empty()) {
+    if (!opt.drop_unrepresentable)
+      throw bad_input("{} cannot hold the input's {}; --drop-unrepresentable converts without them ({})",
+                      format_name(to), list_parts(unwritable), name);
+    warn("fconv", fmt::format("dropped {}, which {} cannot hold ({})", list_parts(unwritable), format_name(to), name));
+  }
 }
 
 const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
@@ -104,7 +115,7 @@ std::string convert(const Input& in, Format to, const Options& opt) {
       if (opt.precision == "float") w.precision = CoordinatePrecision::float32;
       else if (opt.precision == "double") w.precision = CoordinatePrecision::float64;
       const Mesh mesh = read_whole_mesh(in);
-      check_unwritable(mesh, to, opt, in.name);
+      check_losses(mesh, to, opt, in.name);
       return write_mesh(mesh, to, w);
     }
     case Kind::image: {
@@ -188,8 +199,9 @@ int main(int argc, char** argv) {
                  "precision the input had)")
       ->check(CLI::IsMember({"float", "double"}));
   app.add_flag("--drop-unrepresentable", opt.drop_unrepresentable,
-               "Meshes: convert without what the output format cannot hold (line or point elements, "
-               "faces of fewer than 3 vertices) and count it in a warning, instead of failing");
+               "Meshes: convert without what fest or the output format cannot hold (other PLY properties "
+               "and elements; line or point elements, faces of fewer than 3 vertices) and count it in a "
+               "warning, instead of failing");
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See fconv(1), fest-formats(5).");
   return fest::cli::run(app, argc, argv, [&] { return run(opt); });
 }
