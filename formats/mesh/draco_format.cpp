@@ -14,6 +14,7 @@
 #include <draco/point_cloud/point_cloud.h>
 
 #include "core/error.hpp"
+#include "core/polygon_triangulation.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/draco_counts.hpp"
 #include "formats/mesh/mesh_formats.hpp"
@@ -184,10 +185,16 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
   }
   if (triangles)
     for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color*, Mesh::FaceHandle) {
-      for (std::size_t k = 1; k + 1 < face.size(); ++k)
-        triangles->AddFace({draco::PointIndex(static_cast<uint32_t>(face[0])),
-                            draco::PointIndex(static_cast<uint32_t>(face[k])),
-                            draco::PointIndex(static_cast<uint32_t>(face[k + 1]))});
+      // A fan around the first corner, or ears for a concave polygon.
+      std::vector<std::array<double, 3>> positions;
+      for (int v : face) {
+        const Mesh::Point& p = mesh.point(Mesh::VertexHandle(v));
+        positions.push_back({p[0], p[1], p[2]});
+      }
+      for (const auto& t : triangulate_polygon(positions))
+        triangles->AddFace({draco::PointIndex(static_cast<uint32_t>(face[t[0]])),
+                            draco::PointIndex(static_cast<uint32_t>(face[t[1]])),
+                            draco::PointIndex(static_cast<uint32_t>(face[t[2]]))});
     });
 
   draco::Encoder encoder;

@@ -25,7 +25,8 @@ struct SurfaceDistance {
 
 // Samples every vertex and `extra_samples` area-weighted random points (fixed seed) on
 // each mesh, and measures each sample's distance to the other surface (exact
-// point-triangle distance through an AABB tree; polygons are fan-triangulated).
+// point-triangle distance through an AABB tree; polygons are cut into triangles by
+// core/polygon_triangulation.hpp: fans, ears where concave).
 // The samples are split into fixed chunks whose partial sums are added in order, so
 // the figures are identical for every thread count.
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra_samples = 100000,

@@ -6,6 +6,7 @@
 
 #include "compare/mesh_compare.hpp"
 #include "compare/triangle_tree.hpp"
+#include "core/polygon_triangulation.hpp"
 
 namespace fest::compare {
 
@@ -13,20 +14,31 @@ namespace {
 
 Vec3 to_eigen(const Mesh::Point& p) { return Vec3(p[0], p[1], p[2]); }
 
-// Fan triangulation of every face: enough for distances, and exact for triangles.
+// Triangles of every face: the fan of a convex polygon, ears of a concave one (so a
+// concave face covers what it covers), exact for triangles.
 std::vector<Triangle> triangles_of(const Mesh& mesh, const FaceList& beside) {
   std::vector<Triangle> out;
   out.reserve(mesh.n_faces() + beside.size());
   std::vector<Vec3> corners;
+  std::vector<std::array<double, 3>> positions;
+  auto add = [&] {
+    if (corners.size() == 3) {
+      out.push_back({corners[0], corners[1], corners[2]});
+      return;
+    }
+    positions.clear();
+    for (const Vec3& c : corners) positions.push_back({c[0], c[1], c[2]});
+    for (const auto& t : triangulate_polygon(positions)) out.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  };
   for (auto f : mesh.faces()) {
     corners.clear();
     for (auto v : mesh.fv_range(f)) corners.push_back(to_eigen(mesh.point(v)));
-    for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
+    add();
   }
   for (const auto& face : beside) {
     corners.clear();
     for (int v : face) corners.push_back(to_eigen(mesh.point(Mesh::VertexHandle(v))));
-    for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
+    add();
   }
   return out;
 }

@@ -57,6 +57,36 @@ TEST(MeshAssimp, ConcavePolygonIsOneFaceOf66Corners) {
   EXPECT_EQ(formats::faces_beside(m)[0].size(), 66u);
 }
 
+TEST(MeshAssimp, ConcavePolygonAsTrianglesCoversItsOwnArea) {
+  FEST_REQUIRE_TESTDATA(path, "meshes/assimp/concave_polygon.obj");
+  if (!std::ifstream(path).good()) GTEST_SKIP() << "fetched test data lacks " << path;
+  Mesh m = formats::read_mesh(slurp(path), Format::obj);
+  const std::vector<int> polygon = formats::faces_beside(m).at(0);
+  // Anchor: the polygon's area from Newell's formula (half the length of the sum of
+  // its edges' cross products), independent of any triangulation. Its fan around the
+  // first corner covers 13 times that area (3.22 against 0.245).
+  Mesh::Point newell(0, 0, 0);
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    newell += m.point(Mesh::VertexHandle(polygon[i])) % m.point(Mesh::VertexHandle(polygon[(i + 1) % polygon.size()]));
+  const double area = 0.5 * newell.norm();
+  formats::carry_skipped_faces(m);
+  formats::MeshWriteOptions ascii;
+  ascii.ascii = true;
+  const Mesh stl = formats::read_mesh(formats::write_mesh(m, Format::stl, ascii), Format::stl);
+  EXPECT_EQ(formats::total_faces(stl), 64u);  // n - 2 triangles
+  double sum = 0;
+  auto add = [&](const std::vector<Mesh::Point>& c) { sum += 0.5 * ((c[1] - c[0]) % (c[2] - c[0])).norm(); };
+  for (auto f : stl.faces()) {
+    std::vector<Mesh::Point> c;
+    for (auto v : stl.fv_range(f)) c.push_back(stl.point(v));
+    add(c);
+  }
+  for (const auto& face : formats::faces_beside(stl))
+    add({stl.point(Mesh::VertexHandle(face[0])), stl.point(Mesh::VertexHandle(face[1])),
+         stl.point(Mesh::VertexHandle(face[2]))});
+  EXPECT_NEAR(sum, area, 1e-9 * area);
+}
+
 TEST(MeshAssimp, BlenderPlyWithoutCommentKeyword) {
   FEST_REQUIRE_TESTDATA(path, "meshes/assimp/Wuson.ply");
   if (!std::ifstream(path).good()) GTEST_SKIP() << "fetched test data lacks " << path;
