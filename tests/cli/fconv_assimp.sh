@@ -27,7 +27,7 @@ for name in WusonOBJ spider box_longline regr_3429812 space_in_material_name con
   "$FEST_BIN/fconv" "$f" -o "$WORK/$name.obj"
   check "OBJ round trip keeps $expected primitives" test "$(fest_primitives "$WORK/$name.obj")" = "$expected"
   check "assimp reads fest's OBJ: $expected primitives" test "$(assimp_primitives "$WORK/$name.obj")" = "$expected"
-  run fcompare "$f" "$WORK/$name.obj"
+  run fcompare --samples 2000 "$f" "$WORK/$name.obj"
   expect_status 0
   # PLY holds faces and lines (edges), not points.
   points=$("$FEST_BIN/fconv" --info "$f" | jq '.points // 0')
@@ -35,7 +35,7 @@ for name in WusonOBJ spider box_longline regr_3429812 space_in_material_name con
     run fconv "$WORK/$name.obj" -o "$WORK/$name.ply"
     expect_status 0
     check "PLY keeps $expected primitives" test "$(fest_primitives "$WORK/$name.ply")" = "$expected"
-    run fcompare "$f" "$WORK/$name.ply" --tol 1e-6
+    run fcompare --samples 2000 "$f" "$WORK/$name.ply" --tol 1e-6
     expect_status 0
   else
     run fconv "$WORK/$name.obj" -o "$WORK/$name.ply"
