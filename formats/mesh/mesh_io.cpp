@@ -94,9 +94,15 @@ std::vector<MeshPart> unwritable_parts(const Mesh& mesh, Format format) {
   const bool holds_lines = format == Format::obj || format == Format::ply;
   const bool holds_points = format == Format::obj;
   const bool holds_small_faces = format == Format::obj || format == Format::ply || format == Format::off;
-  if (!holds_lines)
-    if (const auto lines = line_elements(mesh); !lines.empty())
-      parts.push_back({fmt::format("line elements ({} segments)", line_segments(mesh)), lines.size()});
+  const auto lines = line_elements(mesh);
+  if (!holds_lines && !lines.empty())
+    parts.push_back({fmt::format("line elements ({} segments)", line_segments(mesh)), lines.size()});
+  if (format == Format::ply) {
+    // PLY edges join two vertices: a line element of one vertex (or none) has no edge.
+    std::size_t short_lines = 0;
+    for (const auto& line : lines) short_lines += line.size() < 2 ? 1 : 0;
+    if (short_lines > 0) parts.push_back({"line elements of fewer than 2 vertices", short_lines});
+  }
   if (!holds_points)
     if (const auto points = point_elements(mesh); !points.empty())
       parts.push_back({fmt::format("point elements ({} points)", point_count(mesh)), points.size()});

@@ -127,6 +127,14 @@ TEST(MeshKeptElements, ObjLinesAndPointsGoToObjAndPly) {
   }
 }
 
+TEST(MeshKeptElements, LineOfOneVertexHasNoPlyEdge) {
+  const Mesh m = formats::read_mesh("v 0 0 0\nv 1 0 0\nl 1 2\nl 2\n", Format::obj);
+  const auto parts = formats::unwritable_parts(m, Format::ply);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0].describe(), "1 line elements of fewer than 2 vertices");
+  EXPECT_TRUE(formats::unwritable_parts(m, Format::obj).empty());
+}
+
 TEST(MeshKeptElements, PlyEdgeElementIsRead) {
   const std::string ply =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
