@@ -15,11 +15,11 @@
 //    supported (bad_input).
 //  * OBJ: v (with the optional "r g b" colour extension), vt, vn, f (all index forms,
 //    negative = relative), l (polylines) and p (points). OBJ attaches normals and
-//    texture coordinates to face corners;
-//    the first corner that names a vertex gives that vertex its normal/texcoord (with no
-//    corner naming normals and one vn per v -- MeshLab's point clouds -- vn i is vertex
-//    i's). Face
-//    colours are not kept (OBJ needs a material library for them).
+//    texture coordinates to face corners; the first corner that names a vertex gives
+//    that vertex its normal/texcoord, and later corners naming other values are counted
+//    in unread_parts() (with no corner naming normals and one vn per v -- MeshLab's
+//    point clouds -- vn i is vertex i's). Face colours are not kept (OBJ needs a
+//    material library for them).
 //  * STL: triangles only (polygons are written as fans); vertices with exactly equal
 //    coordinates are merged on reading (STL stores each triangle on its own), in order
 //    of first appearance; facet normals are kept as face normals. Binary STL stores
@@ -156,8 +156,9 @@ std::size_t point_count(const Mesh& mesh);     // sum over point elements of the
 
 // What the file holds that the reader read but fest's mesh does not keep: PLY
 // properties other than the known ones ("1889 vertices' confidence, intensity (PLY
-// properties)") and PLY elements other than vertex, face and edge. Empty for other
-// formats. A converter must refuse or report them (fconv does, like unwritable_parts).
+// properties)"), PLY elements other than vertex, face and edge, and OBJ face corners
+// whose normal or texture coordinates differ from their vertex's (hard edges, seams:
+// fest keeps one per vertex). Empty for OFF, STL and Draco. A converter must refuse or report them (fconv does, like unwritable_parts).
 std::vector<MeshPart> unread_parts(const Mesh& mesh);
 
 // What a reader could read only leniently (a PLY header line without `comment`), one

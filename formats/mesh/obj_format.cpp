@@ -3,8 +3,9 @@
 // far), l (polylines) and p (points), kept as line and point elements (mesh_io.hpp).
 // Other statements (o, g, s, usemtl, mtllib ...) are ignored. OBJ gives normals and
 // texture coordinates per face corner; fest::Mesh keeps them per vertex, taken from the
-// first corner that names the vertex. When no corner names a normal and there is one vn
-// per v (MeshLab's point clouds), the normals are the vertices' in order.
+// first corner that names the vertex; corners that name other values are counted as not
+// kept (unread_parts()). When no corner names a normal and there is one vn per v
+// (MeshLab's point clouds), the normals are the vertices' in order.
 
 #include <vector>
 
@@ -148,17 +149,35 @@ Mesh read_obj(std::string_view bytes) {
   }
   if (normal_per_vertex)
     for (auto v : mesh.vertices()) mesh.set_normal(v, normals[static_cast<std::size_t>(v.idx())]);
+  // Corners whose normal or texture coordinates differ from the ones their vertex got
+  // (hard edges, texture seams) are not kept: counted, for unread_parts().
+  std::size_t other_normals = 0, other_texcoords = 0;
   for (const Corner& corner : corners) {
     Mesh::VertexHandle vh(corner.vertex);
-    if (corner.normal != no_index && !has_normal[corner.vertex]) {
-      has_normal[corner.vertex] = true;
-      mesh.set_normal(vh, normals[corner.normal]);
+    if (corner.normal != no_index) {
+      if (!has_normal[corner.vertex]) {
+        has_normal[corner.vertex] = true;
+        mesh.set_normal(vh, normals[corner.normal]);
+      } else if (mesh.normal(vh) != normals[corner.normal]) {
+        ++other_normals;
+      }
     }
-    if (corner.texcoord != no_index && !has_texcoord[corner.vertex]) {
-      has_texcoord[corner.vertex] = true;
-      mesh.set_texcoord2D(vh, texcoords[corner.texcoord]);
+    if (corner.texcoord != no_index) {
+      if (!has_texcoord[corner.vertex]) {
+        has_texcoord[corner.vertex] = true;
+        mesh.set_texcoord2D(vh, texcoords[corner.texcoord]);
+      } else if (mesh.texcoord2D(vh) != texcoords[corner.texcoord]) {
+        ++other_texcoords;
+      }
     }
   }
+  std::vector<MeshPart> not_kept;
+  if (other_normals > 0)
+    not_kept.push_back({"face corners' normals that differ from their vertex's (OBJ vn per corner)", other_normals});
+  if (other_texcoords > 0)
+    not_kept.push_back(
+        {"face corners' texture coordinates that differ from their vertex's (OBJ vt per corner)", other_texcoords});
+  if (!not_kept.empty()) set_unread_parts(mesh, std::move(not_kept));
 
   MeshBuilder builder(mesh, "OBJ");
   std::vector<std::uint32_t> indices;

@@ -24,7 +24,9 @@ for name in WusonOBJ spider box_longline regr_3429812 space_in_material_name con
   check "fest $(fest_primitives "$f") = assimp $expected" test "$(fest_primitives "$f")" = "$expected"
 
   case_ "$name.obj -> OBJ -> PLY: every element survives, and fcompare sees the same file"
-  "$FEST_BIN/fconv" "$f" -o "$WORK/$name.obj"
+  # spider.obj has per-corner normals and texture coordinates (fest keeps one per
+  # vertex; the case below checks that fconv refuses them): drop those here.
+  "$FEST_BIN/fconv" --drop-unrepresentable "$f" -o "$WORK/$name.obj" 2>/dev/null
   check "OBJ round trip keeps $expected primitives" test "$(fest_primitives "$WORK/$name.obj")" = "$expected"
   check "assimp reads fest's OBJ: $expected primitives" test "$(assimp_primitives "$WORK/$name.obj")" = "$expected"
   run fcompare --samples 2000 "$f" "$WORK/$name.obj"
@@ -51,6 +53,23 @@ expect_json '.faces' '3732'
 "$FEST_BIN/fconv" --ascii "$dir/WusonOBJ.obj" -o "$WORK/wuson.ply"
 check "ascii PLY declares 3732 faces" grep -qx "element face 3732" "$WORK/wuson.ply"
 check "assimp reads 3732 faces from fest's PLY" test "$(assimp_primitives "$WORK/wuson.ply")" = 3732
+
+case_ "spider.obj: corners whose normal or texture coordinates differ from their vertex's are named"
+# Counted here independently of fest: corners whose vn/vt text differs from the text
+# at the first corner of the same vertex.
+counts=$(awk '$1=="vt"{t[++nt]=$2" "$3} $1=="vn"{n[++nn]=$2" "$3" "$4}
+  $1=="f"{for(i=2;i<=NF;i++){split($i,c,"/"); v=c[1]
+    if(c[2]!=""){if(v in ft){if(ft[v]!=t[c[2]])dt++}else ft[v]=t[c[2]]}
+    if(c[3]!=""){if(v in fn){if(fn[v]!=n[c[3]])dn++}else fn[v]=n[c[3]]}}}
+  END{print dn+0, dt+0}' "$dir/spider.obj")
+read -r normals texcoords <<<"$counts"
+run fconv "$dir/spider.obj" --to ply
+expect_clean_failure 3 fconv
+expect_stderr_has "does not keep the input's $normals face corners' normals that differ from their vertex's"
+expect_stderr_has "$texcoords face corners' texture coordinates that differ"
+run fconv "$dir/spider.obj" --to ply --drop-unrepresentable
+expect_status 0
+expect_stderr_has "^fconv: warning: dropped $normals face corners' normals"
 
 case_ "concave_polygon.obj: one face of 66 corners (it visits two vertices twice)"
 "$FEST_BIN/fconv" --ascii "$dir/concave_polygon.obj" -o "$WORK/concave.ply"

@@ -200,6 +200,22 @@ TEST(MeshKeptElements, PlyPropertiesAndElementsNotKeptAreNamed) {
   EXPECT_TRUE(formats::unread_parts(formats::read_mesh(formats::write_mesh(m, Format::ply), Format::ply)).empty());
 }
 
+TEST(MeshKeptElements, ObjCornerNormalsThatDifferAreNamed) {
+  // Two triangles folded along their shared edge, each with its own flat normal: the
+  // shared vertices 1 and 3 get the first triangle's normal; the second triangle's two
+  // corners there name another one. Texture coordinates agree (index 1 and 3 are equal).
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 1\nvn 0 0 1\nvn 0 1 0\nvt 0 0\nvt 1 0\nvt 0 0\n"
+      "f 1/1/1 2/2/1 4/3/1\nf 2/2/2 3/2/2 4/1/2\n";
+  const Mesh m = formats::read_mesh(obj, Format::obj);
+  const auto parts = formats::unread_parts(m);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0].count, 2u);
+  EXPECT_NE(parts[0].what.find("normals"), std::string::npos);
+  // fest's own OBJ (one normal per vertex) reads back with nothing left out.
+  EXPECT_TRUE(formats::unread_parts(formats::read_mesh(formats::write_mesh(m, Format::obj), Format::obj)).empty());
+}
+
 TEST(MeshKeptElements, ObjPointCloudNormalsBelongToTheVertices) {
   // assimp's point_cloud.obj (written by MeshLab): vn before each v, no faces.
   const Mesh m = formats::read_mesh("vn 0 0 1\nv 1 2 3\nvn 0 1 0\nv 4 5 6\n", Format::obj);
