@@ -181,12 +181,13 @@ bool storage_allows_float(const Mesh& mesh, const char* property, CoordinatePrec
   if (precision == CoordinatePrecision::float32) return true;
   if (precision == CoordinatePrecision::float64) return false;
   const auto storage = static_cast<CoordinateStorage>(get_mesh_property<int>(mesh, property));
-  if (storage == CoordinateStorage::float32) return true;
   for (auto v : mesh.vertices()) {
     const auto& value = values(v);
     for (int k = 0; k < 3; ++k) {
       const double x = value[k];
-      if (storage == CoordinateStorage::decimal ? !decimal_fits_float(x) : !exactly_float(&x, 1)) return false;
+      // Values are checked even for float storage: a tool may have computed new ones.
+      const bool text = storage == CoordinateStorage::decimal || storage == CoordinateStorage::float32;
+      if (text ? !decimal_fits_float(x) : !exactly_float(&x, 1)) return false;
     }
   }
   return true;

@@ -91,7 +91,9 @@ void for_each_written_face(const Mesh& mesh, const FacesBeside& beside, Visit&& 
 enum class CoordinateStorage : int {
   unknown = 0,   // no reader: float when every value is exactly a float
   binary = 1,    // binary numbers (double, int32 ...): float when every value is exactly a float
-  float32 = 2,   // declared float32 (or a smaller integer type): float
+  float32 = 2,   // declared float32 (or a smaller integer type): float when every value's
+                 // text reads back from its float (binary floats always do; a tool's
+                 // computed values mostly do not, and stay double)
   decimal = 3,   // decimal text: float when every value's text reads back from its float
 };
 void set_point_storage(Mesh& mesh, CoordinateStorage storage);

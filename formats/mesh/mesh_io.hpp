@@ -68,9 +68,10 @@ namespace fest::formats {
 // it): a binary float input is float; a binary double (or 32-bit integer) input is
 // double when any value is not exactly a float; decimal text (OBJ, OFF, ascii PLY/STL)
 // is float when every value's text reads back from its float32 (up to 7 significant
-// digits always do: 0.1 is a float to a text file), else double. A mesh no reader made
-// is float when every value is exactly a float. `float32`/`float64` force the type
-// (float32 then rounds to nearest).
+// digits always do: 0.1 is a float to a text file), else double. The values are always
+// checked, so coordinates a tool computed after reading stay double. A mesh no reader
+// made is float when every value is exactly a float. `float32`/`float64` force the
+// type (float32 then rounds to nearest).
 enum class CoordinatePrecision { automatic, float32, float64 };
 
 struct MeshWriteOptions {

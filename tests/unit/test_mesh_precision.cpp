@@ -62,6 +62,14 @@ TEST(MeshPrecision, BinaryInputKeepsItsStorage) {
                        "property float x"));
 }
 
+TEST(MeshPrecision, CoordinatesComputedAfterReadingStayDouble) {
+  Mesh floats;
+  floats.add_vertex(Mesh::Point(0.5, 0.25, 3));
+  Mesh m = formats::read_mesh(ply_with(floats), Format::ply);  // a float PLY
+  m.point(Mesh::VertexHandle(0))[0] = 1.0 / 3.0;               // a tool computes a new value
+  EXPECT_TRUE(declares(ply_with(m), "property double x"));
+}
+
 TEST(MeshPrecision, AsciiPlyTextOfForcedFloatsIsTheFloats) {
   const Mesh m = formats::read_mesh("v 0.123456789 0 0\nv 0.1 0 0\n", Format::obj);
   const std::string ascii = ply_with(m, CoordinatePrecision::float32, true);
