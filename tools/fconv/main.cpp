@@ -200,8 +200,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"float", "double"}));
   app.add_flag("--drop-unrepresentable", opt.drop_unrepresentable,
                "Meshes: convert without what fest or the output format cannot hold (other PLY properties "
-               "and elements; line or point elements, faces of fewer than 3 vertices) and count it in a "
-               "warning, instead of failing");
+               "and elements, OBJ per-corner normals/texture coordinates; line or point elements, faces of "
+               "fewer than 3 vertices) and count it in a warning, instead of failing");
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See fconv(1), fest-formats(5).");
   return fest::cli::run(app, argc, argv, [&] { return run(opt); });
 }
