@@ -75,6 +75,16 @@ python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/nifti2.hdr volu
 python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/row_major.dconn.nii volumes/nibabel/row_major.dconn.nii
 python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/minc1_4d.mnc volumes/nibabel/minc1_4d.mnc
 python3-nibabel usr/lib/python3/dist-packages/nibabel/tests/data/minc2_4d.mnc volumes/nibabel/minc2_4d.mnc
+assimp-testmodels usr/share/assimp/models/OBJ/WusonOBJ.obj meshes/assimp/WusonOBJ.obj
+assimp-testmodels usr/share/assimp/models/OBJ/spider.obj meshes/assimp/spider.obj
+assimp-testmodels usr/share/assimp/models/OBJ/box_longline.obj meshes/assimp/box_longline.obj
+assimp-testmodels usr/share/assimp/models/OBJ/regr_3429812.obj meshes/assimp/regr_3429812.obj
+assimp-testmodels usr/share/assimp/models/OBJ/space_in_material_name.obj meshes/assimp/space_in_material_name.obj
+assimp-testmodels usr/share/assimp/models/OBJ/concave_polygon.obj meshes/assimp/concave_polygon.obj
+assimp-testmodels usr/share/assimp/models/OBJ/testline.obj meshes/assimp/testline.obj
+assimp-testmodels usr/share/assimp/models/OBJ/testpoints.obj meshes/assimp/testpoints.obj
+assimp-testmodels usr/share/assimp/models/OBJ/testmixed.obj meshes/assimp/testmixed.obj
+assimp-testmodels usr/share/assimp/models/PLY/Wuson.ply meshes/assimp/Wuson.ply
 EOF
 )
 CGAL_MESHES="bunny00.off armadillo.off ChineseDragon-10kv.off elephant.off elephant-with-holes.off fandisk.off cow.off eight.off femur.off mushroom.off lion.off camel.off bull.off homer.off man.off mannequin-devil.off knot1.off turbine.off head.off hand.off bones.off ellipsoid.off icosahedron.off octahedron.off cube.off blobby.off"

@@ -46,7 +46,6 @@ TEST_TOOL_PKGS=(
   libqt5scxml5-dev           # Qt SCXML: the same-run anchor of tests/bench/bench_patnet_scxml
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
   # tests/interop: independent readers of every format fest writes
-  assimp-utils               # `assimp info`: meshes (PLY OBJ OFF STL)
   python3-vtk9               # VTK's own readers (PLY STL OBJ, VTK XML and legacy, MetaImage), from /usr/bin/python3
   teem-apps                  # teem-unu: NRRD's reference implementation
   openexr                    # exrheader
@@ -55,6 +54,7 @@ TEST_TOOL_PKGS=(
   libopencv-contrib-dev libapriltag-dev   # cv::aruco and AprilTag 3: anchors of tests/bench/bench_markerpose only
   graphviz                   # dot: tests/cli/patnet.sh checks that `patnet dot` output is valid Graphviz
   libzfp-dev zfp libblosc-dev libzstd-dev zstd   # anchors of tests/bench/volwave.sh (bench_volwave links ZFP, Blosc, zstd)
+  assimp-utils assimp-testmodels  # `assimp info`: independent mesh reader (tests/interop, fconv_assimp) and its test models
 )
 
 # --- arguments ----------------------------------------------------------------

@@ -14,6 +14,7 @@
 #include <draco/point_cloud/point_cloud.h>
 
 #include "core/error.hpp"
+#include "core/polygon_triangulation.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/draco_counts.hpp"
 #include "formats/mesh/mesh_formats.hpp"
@@ -142,7 +143,8 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
   // A mesh without faces is a point cloud to Draco (its mesh coders need triangles).
   std::unique_ptr<draco::PointCloud> cloud;
   draco::Mesh* triangles = nullptr;
-  if (mesh.n_faces() > 0) {
+  const FacesBeside extra = extra_faces_to_write(mesh);
+  if (mesh.n_faces() + extra.faces.size() > 0) {
     auto owned = std::make_unique<draco::Mesh>();
     triangles = owned.get();
     cloud = std::move(owned);
@@ -182,11 +184,18 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
     set_values<float>(*cloud, id, mesh, 2, [&](Mesh::VertexHandle v) { return mesh.texcoord2D(v); });
   }
   if (triangles)
-    for (auto f : mesh.faces()) {
-      std::vector<draco::PointIndex> corners;
-      for (auto v : mesh.fv_range(f)) corners.emplace_back(static_cast<uint32_t>(v.idx()));
-      for (std::size_t k = 1; k + 1 < corners.size(); ++k) triangles->AddFace({corners[0], corners[k], corners[k + 1]});
-    }
+    for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color*, Mesh::FaceHandle) {
+      // A fan around the first corner, or ears for a concave polygon.
+      std::vector<std::array<double, 3>> positions;
+      for (int v : face) {
+        const Mesh::Point& p = mesh.point(Mesh::VertexHandle(v));
+        positions.push_back({p[0], p[1], p[2]});
+      }
+      for (const auto& t : triangulate_polygon(positions))
+        triangles->AddFace({draco::PointIndex(static_cast<uint32_t>(face[t[0]])),
+                            draco::PointIndex(static_cast<uint32_t>(face[t[1]])),
+                            draco::PointIndex(static_cast<uint32_t>(face[t[2]]))});
+    });
 
   draco::Encoder encoder;
   encoder.SetSpeedOptions(options.draco_speed, options.draco_speed);

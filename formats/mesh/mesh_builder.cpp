@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <cstdlib>
 #include <limits>
+#include <string>
 
 #include <OpenMesh/Core/System/omstream.hh>
 #include <fmt/format.h>
@@ -23,7 +25,8 @@ void silence_openmesh() {
   (void)silenced;
 }
 
-Mesh::FaceHandle MeshBuilder::add_face(const std::uint32_t* indices, std::size_t count, std::size_t face_number) {
+Mesh::FaceHandle MeshBuilder::add_face(const std::uint32_t* indices, std::size_t count, std::size_t face_number,
+                                       const Mesh::Color* color) {
   const std::size_t n_vertices = mesh_.n_vertices();
   handles_.clear();
   for (std::size_t i = 0; i < count; ++i) {
@@ -49,17 +52,158 @@ Mesh::FaceHandle MeshBuilder::add_face(const std::uint32_t* indices, std::size_t
   if (!face.is_valid()) {
     ++skipped_;
     skipped_list_.emplace_back(indices, indices + count);
+    skipped_places_.push_back(face_number - 1);
+    skipped_colors_.push_back(color ? *color : Mesh::Color(255, 255, 255));
   }
   return face;
 }
 
+namespace {
+
+template <typename T>
+void set_mesh_property(Mesh& mesh, const char* name, T value) {
+  OpenMesh::MPropHandleT<T> handle;
+  if (!mesh.get_property_handle(handle, name)) mesh.add_property(handle, name);
+  mesh.property(handle) = std::move(value);
+}
+
+template <typename T>
+T get_mesh_property(const Mesh& mesh, const char* name) {
+  OpenMesh::MPropHandleT<T> handle;
+  if (!mesh.get_property_handle(handle, name)) return T{};
+  return mesh.property(handle);
+}
+
+constexpr const char* skipped_places_property = "fest:skipped_face_places";
+constexpr const char* skipped_colors_property = "fest:skipped_face_colors";
+constexpr const char* extra_places_property = "fest:extra_face_places";
+constexpr const char* extra_colors_property = "fest:extra_face_colors";
+constexpr const char* point_storage_property = "fest:point_storage";
+constexpr const char* normal_storage_property = "fest:normal_storage";
+constexpr const char* read_warnings_property = "fest:read_warnings";
+
+}  // namespace
+
 void MeshBuilder::finish() {
   if (skipped_ > 0) set_skipped_faces_property(mesh_, skipped_);
   if (!skipped_list_.empty()) {
-    OpenMesh::MPropHandleT<std::vector<std::vector<int>>> handle;
-    if (!mesh_.get_property_handle(handle, skipped_face_list_property)) mesh_.add_property(handle, skipped_face_list_property);
-    mesh_.property(handle) = std::move(skipped_list_);
+    set_mesh_property(mesh_, skipped_face_list_property, std::move(skipped_list_));
+    set_mesh_property(mesh_, skipped_places_property, std::move(skipped_places_));
+    set_mesh_property(mesh_, skipped_colors_property, std::move(skipped_colors_));
   }
+}
+
+FacesBeside extra_faces_to_write(const Mesh& mesh) {
+  FacesBeside beside;
+  beside.faces = get_mesh_property<std::vector<std::vector<int>>>(mesh, extra_faces_property);
+  beside.places = get_mesh_property<std::vector<std::size_t>>(mesh, extra_places_property);
+  beside.colors = get_mesh_property<std::vector<Mesh::Color>>(mesh, extra_colors_property);
+  if (beside.places.size() != beside.faces.size()) beside.places.clear();  // set_extra_faces(): append
+  if (beside.colors.size() != beside.faces.size()) beside.colors.clear();
+  return beside;
+}
+
+}  // namespace fest::formats::mesh_detail
+
+namespace fest::formats {
+
+void carry_skipped_faces(Mesh& mesh) {
+  using namespace mesh_detail;
+  set_mesh_property(mesh, extra_faces_property, skipped_face_list(mesh));
+  set_mesh_property(mesh, extra_places_property, get_mesh_property<std::vector<std::size_t>>(mesh, skipped_places_property));
+  set_mesh_property(mesh, extra_colors_property, get_mesh_property<std::vector<Mesh::Color>>(mesh, skipped_colors_property));
+}
+
+void set_extra_faces(Mesh& mesh, std::vector<std::vector<int>> faces) {
+  using namespace mesh_detail;
+  set_mesh_property(mesh, extra_faces_property, std::move(faces));
+  set_mesh_property(mesh, extra_places_property, std::vector<std::size_t>{});
+  set_mesh_property(mesh, extra_colors_property, std::vector<Mesh::Color>{});
+}
+
+std::vector<std::vector<int>> line_elements(const Mesh& mesh) {
+  return mesh_detail::get_mesh_property<std::vector<std::vector<int>>>(mesh, line_elements_property);
+}
+std::vector<std::vector<int>> point_elements(const Mesh& mesh) {
+  return mesh_detail::get_mesh_property<std::vector<std::vector<int>>>(mesh, point_elements_property);
+}
+void set_line_elements(Mesh& mesh, std::vector<std::vector<int>> lines) {
+  mesh_detail::set_mesh_property(mesh, line_elements_property, std::move(lines));
+}
+void set_point_elements(Mesh& mesh, std::vector<std::vector<int>> points) {
+  mesh_detail::set_mesh_property(mesh, point_elements_property, std::move(points));
+}
+
+std::vector<MeshPart> unread_parts(const Mesh& mesh) {
+  return mesh_detail::get_mesh_property<std::vector<MeshPart>>(mesh, "fest:unread_parts");
+}
+
+std::vector<std::string> read_warnings(const Mesh& mesh) {
+  return mesh_detail::get_mesh_property<std::vector<std::string>>(mesh, mesh_detail::read_warnings_property);
+}
+
+}  // namespace fest::formats
+
+namespace fest::formats::mesh_detail {
+
+void add_read_warning(Mesh& mesh, std::string message) {
+  auto warnings = read_warnings(mesh);
+  warnings.push_back(std::move(message));
+  set_mesh_property(mesh, read_warnings_property, std::move(warnings));
+}
+
+void set_unread_parts(Mesh& mesh, std::vector<MeshPart> parts) {
+  set_mesh_property(mesh, "fest:unread_parts", std::move(parts));
+}
+
+void set_point_storage(Mesh& mesh, CoordinateStorage storage) {
+  set_mesh_property(mesh, point_storage_property, static_cast<int>(storage));
+}
+void set_normal_storage(Mesh& mesh, CoordinateStorage storage) {
+  set_mesh_property(mesh, normal_storage_property, static_cast<int>(storage));
+}
+
+bool decimal_fits_float(double value) {
+  if (exactly_float(&value, 1)) return true;
+  if (!std::isfinite(value) || std::fabs(value) > static_cast<double>(std::numeric_limits<float>::max())) return false;
+  // The shortest text of the nearest float; parsing it as a double gives back `value`
+  // exactly when the file's text and the float's text are the same number.
+  char text[32];
+  const auto end = fmt::format_to_n(text, sizeof text - 1, "{}", static_cast<float>(value)).out;
+  *end = '\0';
+  return std::strtod(text, nullptr) == value;
+}
+
+namespace {
+
+template <class Values>
+bool storage_allows_float(const Mesh& mesh, const char* property, CoordinatePrecision precision, Values values) {
+  if (precision == CoordinatePrecision::float32) return true;
+  if (precision == CoordinatePrecision::float64) return false;
+  const auto storage = static_cast<CoordinateStorage>(get_mesh_property<int>(mesh, property));
+  for (auto v : mesh.vertices()) {
+    const auto& value = values(v);
+    for (int k = 0; k < 3; ++k) {
+      const double x = value[k];
+      // Values are checked even for float storage: a tool may have computed new ones.
+      const bool text = storage == CoordinateStorage::decimal || storage == CoordinateStorage::float32;
+      if (text ? !decimal_fits_float(x) : !exactly_float(&x, 1)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool write_points_as_float(const Mesh& mesh, CoordinatePrecision precision) {
+  return storage_allows_float(mesh, point_storage_property, precision,
+                              [&](Mesh::VertexHandle v) -> const Mesh::Point& { return mesh.point(v); });
+}
+
+bool write_normals_as_float(const Mesh& mesh, CoordinatePrecision precision) {
+  if (!mesh.has_vertex_normals()) return true;
+  return storage_allows_float(mesh, normal_storage_property, precision,
+                              [&](Mesh::VertexHandle v) -> const Mesh::Normal& { return mesh.normal(v); });
 }
 
 void set_skipped_faces_property(Mesh& mesh, std::size_t count) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mesh.hpp"
+#include "formats/mesh/mesh_io.hpp"
 
 namespace fest::formats::mesh_detail {
 
@@ -20,16 +21,19 @@ void silence_openmesh();
 
 // Adds faces in file order. A vertex index outside [0, n_vertices) is malformed input
 // and throws; a face OpenMesh's connectivity cannot hold (fewer than three vertices,
-// a vertex repeated, a complex edge or non-manifold vertex) is skipped and counted,
-// so it never vanishes without a trace (finish() stores the count on the mesh).
+// a vertex repeated, a complex edge or non-manifold vertex) is kept beside the mesh
+// with its place in the file's face order and its colour, so it never vanishes
+// (finish() stores them on the mesh).
 class MeshBuilder {
  public:
   MeshBuilder(Mesh& mesh, const char* format_label) : mesh_(mesh), label_(format_label) {}
 
-  // `face_number` is 1-based, for the message.
-  Mesh::FaceHandle add_face(const std::uint32_t* indices, std::size_t count, std::size_t face_number);
+  // `face_number` is 1-based: the face's place in the file, and for the message.
+  // `color` (may be null) is kept for a skipped face; white when null.
+  Mesh::FaceHandle add_face(const std::uint32_t* indices, std::size_t count, std::size_t face_number,
+                            const Mesh::Color* color = nullptr);
   std::size_t skipped() const { return skipped_; }
-  // Stores the count of skipped faces as the mesh property (only when non-zero).
+  // Stores the skipped faces (count, list, places, colours) as mesh properties.
   void finish();
 
  private:
@@ -39,7 +43,73 @@ class MeshBuilder {
   std::vector<std::uint32_t> sorted_;
   std::size_t skipped_ = 0;
   std::vector<std::vector<int>> skipped_list_;  // their vertex indices, for skipped_face_list()
+  std::vector<std::size_t> skipped_places_;     // 0-based place among the file's faces
+  std::vector<Mesh::Color> skipped_colors_;
 };
+
+// Faces kept beside the halfedge mesh, as a writer sees them: vertex indices, the
+// place of each among the written faces (empty: after the mesh's own faces) and
+// colours (empty: white).
+struct FacesBeside {
+  std::vector<std::vector<int>> faces;
+  std::vector<std::size_t> places;
+  std::vector<Mesh::Color> colors;
+};
+FacesBeside extra_faces_to_write(const Mesh& mesh);
+
+// Calls visit(const std::vector<int>& vertices, const Mesh::Color* face_color,
+// Mesh::FaceHandle face) for every face a writer writes, in order: the mesh's own faces
+// with `beside` at their places. face_color is null when the mesh has no face colours;
+// `face` is invalid for a face from `beside`.
+template <class Visit>
+void for_each_written_face(const Mesh& mesh, const FacesBeside& beside, Visit&& visit) {
+  std::vector<int> vertices;
+  const bool colors = mesh.has_face_colors();
+  const Mesh::Color white(255, 255, 255);
+  std::size_t next = 0, written = 0;
+  auto flush_beside = [&](bool all) {
+    while (next < beside.faces.size() &&
+           (all || (next < beside.places.size() && beside.places[next] <= written))) {
+      const Mesh::Color* c = colors ? (next < beside.colors.size() ? &beside.colors[next] : &white) : nullptr;
+      visit(beside.faces[next], c, Mesh::FaceHandle());
+      ++next;
+      ++written;
+    }
+  };
+  for (auto f : mesh.faces()) {
+    if (!beside.places.empty()) flush_beside(false);
+    vertices.clear();
+    for (auto v : mesh.fv_range(f)) vertices.push_back(v.idx());
+    visit(vertices, colors ? &mesh.color(f) : nullptr, f);
+    ++written;
+  }
+  flush_beside(true);
+}
+
+// How the input stored positions or normals, recorded by the readers for
+// CoordinatePrecision::automatic (mesh_io.hpp).
+enum class CoordinateStorage : int {
+  unknown = 0,   // no reader: float when every value is exactly a float
+  binary = 1,    // binary numbers (double, int32 ...): float when every value is exactly a float
+  float32 = 2,   // declared float32 (or a smaller integer type): float when every value's
+                 // text reads back from its float (binary floats always do; a tool's
+                 // computed values mostly do not, and stay double)
+  decimal = 3,   // decimal text: float when every value's text reads back from its float
+};
+void set_point_storage(Mesh& mesh, CoordinateStorage storage);
+void set_normal_storage(Mesh& mesh, CoordinateStorage storage);
+// Whether a binary writer stores positions (normals) as float under `precision`.
+bool write_points_as_float(const Mesh& mesh, CoordinatePrecision precision);
+bool write_normals_as_float(const Mesh& mesh, CoordinatePrecision precision);
+// True when the value's shortest float32 text reads back as the same double: the text a
+// decimal file held for it fits a float (values that are exactly floats included).
+bool decimal_fits_float(double value);
+
+// What a reader read and did not keep (unread_parts()).
+void set_unread_parts(Mesh& mesh, std::vector<MeshPart> parts);
+
+// A reader's lenient-reading message (read_warnings()).
+void add_read_warning(Mesh& mesh, std::string message);
 
 void set_skipped_faces_property(Mesh& mesh, std::size_t count);
 

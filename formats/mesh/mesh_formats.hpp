@@ -21,7 +21,7 @@
 namespace fest::formats::mesh_detail {
 
 Mesh read_ply(std::string_view bytes);
-std::string write_ply(const Mesh& mesh, bool ascii);
+std::string write_ply(const Mesh& mesh, bool ascii, CoordinatePrecision precision);
 
 Mesh read_off(std::string_view bytes);
 std::string write_off(const Mesh& mesh);

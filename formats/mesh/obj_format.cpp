@@ -1,8 +1,11 @@
-// Wavefront OBJ reader and writer: v (optionally "x y z r g b", colours 0..1), vt, vn
-// and f with every index form (v, v/t, v//n, v/t/n; negative = relative to the
-// vertices so far). Other statements (o, g, s, usemtl, mtllib, l, p ...) are ignored.
-// OBJ gives normals and texture coordinates per face corner; fest::Mesh keeps them per
-// vertex, taken from the first corner that names the vertex.
+// Wavefront OBJ reader and writer: v (optionally "x y z r g b", colours 0..1), vt, vn,
+// f with every index form (v, v/t, v//n, v/t/n; negative = relative to the vertices so
+// far), l (polylines) and p (points), kept as line and point elements (mesh_io.hpp).
+// Other statements (o, g, s, usemtl, mtllib ...) are ignored. OBJ gives normals and
+// texture coordinates per face corner; fest::Mesh keeps them per vertex, taken from the
+// first corner that names the vertex; corners that name other values are counted as not
+// kept (unread_parts()). When no corner names a normal and there is one vn per v
+// (MeshLab's point clouds), the normals are the vertices' in order.
 
 #include <vector>
 
@@ -60,6 +63,8 @@ Mesh read_obj(std::string_view bytes) {
   std::vector<Corner> corners;
   std::vector<std::size_t> face_offsets{0};
   std::vector<std::string_view> tokens;
+  std::vector<std::vector<int>> lines, points;
+  std::vector<std::size_t> line_numbers, point_numbers;  // where each element was, for messages
   std::string_view line;
   std::size_t line_number = 0;
   while (cursor.next_line(line)) {
@@ -101,9 +106,22 @@ Mesh read_obj(std::string_view bytes) {
       for (std::size_t k = 1; k < tokens.size(); ++k)
         corners.push_back(parse_corner(tokens[k], mesh.n_vertices(), texcoords.size(), normals.size(), line_number));
       face_offsets.push_back(corners.size());
+    } else if (keyword == "l" || keyword == "p") {
+      // Only the vertex part of "v/t" counts: an element's texture coordinates are not kept.
+      std::vector<int> element;
+      for (std::size_t k = 1; k < tokens.size(); ++k)
+        element.push_back(resolve(tokens[k].substr(0, tokens[k].find('/')), mesh.n_vertices(), line_number));
+      (keyword == "l" ? lines : points).push_back(std::move(element));
+      (keyword == "l" ? line_numbers : point_numbers).push_back(line_number);
     }
   }
   if (mesh.n_vertices() == 0 && face_offsets.size() == 1) throw bad_input("OBJ: no vertices or faces found");
+  for (const auto& [elements, numbers] : {std::pair{&lines, &line_numbers}, std::pair{&points, &point_numbers}})
+    for (std::size_t k = 0; k < elements->size(); ++k)
+      for (int v : (*elements)[k])
+        if (static_cast<std::size_t>(v) >= mesh.n_vertices())
+          throw bad_input("OBJ line {}: vertex index {} is out of range (the file has {} vertices)", (*numbers)[k],
+                          v + 1, mesh.n_vertices());
 
   // Indices can only be checked now: a positive index may name a later vertex.
   const std::size_t n_faces = face_offsets.size() - 1;
@@ -119,24 +137,47 @@ Mesh read_obj(std::string_view bytes) {
       any_normal = any_normal || corner.normal != no_index;
       any_texcoord = any_texcoord || corner.texcoord != no_index;
     }
-  if (any_normal) mesh.request_vertex_normals();
+  // A point cloud (MeshLab writes one vn per v and no faces): no corner names the
+  // normals, which belong to the vertices in order.
+  const bool normal_per_vertex = !any_normal && !normals.empty() && normals.size() == mesh.n_vertices();
+  if (any_normal || normal_per_vertex) mesh.request_vertex_normals();
   if (any_texcoord) mesh.request_vertex_texcoords2D();
   std::vector<bool> has_normal(any_normal ? mesh.n_vertices() : 0), has_texcoord(any_texcoord ? mesh.n_vertices() : 0);
   for (auto v : mesh.vertices()) {
     if (any_normal) mesh.set_normal(v, Mesh::Normal(0, 0, 0));
     if (any_texcoord) mesh.set_texcoord2D(v, Mesh::TexCoord2D(0, 0));
   }
+  if (normal_per_vertex)
+    for (auto v : mesh.vertices()) mesh.set_normal(v, normals[static_cast<std::size_t>(v.idx())]);
+  // Corners whose normal or texture coordinates differ from the ones their vertex got
+  // (hard edges, texture seams) are not kept: counted, for unread_parts().
+  std::size_t other_normals = 0, other_texcoords = 0;
   for (const Corner& corner : corners) {
     Mesh::VertexHandle vh(corner.vertex);
-    if (corner.normal != no_index && !has_normal[corner.vertex]) {
-      has_normal[corner.vertex] = true;
-      mesh.set_normal(vh, normals[corner.normal]);
+    if (corner.normal != no_index) {
+      if (!has_normal[corner.vertex]) {
+        has_normal[corner.vertex] = true;
+        mesh.set_normal(vh, normals[corner.normal]);
+      } else if (mesh.normal(vh) != normals[corner.normal]) {
+        ++other_normals;
+      }
     }
-    if (corner.texcoord != no_index && !has_texcoord[corner.vertex]) {
-      has_texcoord[corner.vertex] = true;
-      mesh.set_texcoord2D(vh, texcoords[corner.texcoord]);
+    if (corner.texcoord != no_index) {
+      if (!has_texcoord[corner.vertex]) {
+        has_texcoord[corner.vertex] = true;
+        mesh.set_texcoord2D(vh, texcoords[corner.texcoord]);
+      } else if (mesh.texcoord2D(vh) != texcoords[corner.texcoord]) {
+        ++other_texcoords;
+      }
     }
   }
+  std::vector<MeshPart> not_kept;
+  if (other_normals > 0)
+    not_kept.push_back({"face corners' normals that differ from their vertex's (OBJ vn per corner)", other_normals});
+  if (other_texcoords > 0)
+    not_kept.push_back(
+        {"face corners' texture coordinates that differ from their vertex's (OBJ vt per corner)", other_texcoords});
+  if (!not_kept.empty()) set_unread_parts(mesh, std::move(not_kept));
 
   MeshBuilder builder(mesh, "OBJ");
   std::vector<std::uint32_t> indices;
@@ -148,6 +189,10 @@ Mesh read_obj(std::string_view bytes) {
     builder.add_face(indices.data(), indices.size(), f + 1);
   }
   builder.finish();
+  if (!lines.empty()) set_line_elements(mesh, std::move(lines));
+  if (!points.empty()) set_point_elements(mesh, std::move(points));
+  set_point_storage(mesh, CoordinateStorage::decimal);
+  set_normal_storage(mesh, CoordinateStorage::decimal);
   return mesh;
 }
 
@@ -191,20 +236,10 @@ std::string write_obj(const Mesh& input) {
       }
       out.push_back('\n');
     }
-  for (auto f : mesh.faces()) {
+  for_each_written_face(mesh, extra_faces_to_write(mesh), [&](const std::vector<int>& face, const Mesh::Color*,
+                                                               Mesh::FaceHandle) {
     out.push_back('f');
-    for (auto v : mesh.fv_range(f)) {
-      const int i = v.idx() + 1;
-      if (texcoords && normals) fmt::format_to(std::back_inserter(out), " {0}/{0}/{0}", i);
-      else if (texcoords) fmt::format_to(std::back_inserter(out), " {0}/{0}", i);
-      else if (normals) fmt::format_to(std::back_inserter(out), " {0}//{0}", i);
-      else fmt::format_to(std::back_inserter(out), " {}", i);
-    }
-    out.push_back('\n');
-  }
-  for (const auto& f : extra_faces(mesh)) {
-    out.push_back('f');
-    for (int v : f) {
+    for (int v : face) {
       const int i = v + 1;
       if (texcoords && normals) fmt::format_to(std::back_inserter(out), " {0}/{0}/{0}", i);
       else if (texcoords) fmt::format_to(std::back_inserter(out), " {0}/{0}", i);
@@ -212,7 +247,15 @@ std::string write_obj(const Mesh& input) {
       else fmt::format_to(std::back_inserter(out), " {}", i);
     }
     out.push_back('\n');
-  }
+  });
+  // Line and point elements name vertices only (their texture coordinates, if any,
+  // are the vertices' own).
+  for (const auto& [keyword, elements] : {std::pair{'l', line_elements(mesh)}, std::pair{'p', point_elements(mesh)}})
+    for (const auto& element : elements) {
+      out.push_back(keyword);
+      for (int v : element) fmt::format_to(std::back_inserter(out), " {}", v + 1);
+      out.push_back('\n');
+    }
   return out;
 }
 

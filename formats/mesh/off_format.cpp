@@ -152,23 +152,23 @@ Mesh read_off(std::string_view bytes) {
                         tokens[k].substr(0, 32), n_vertices == 0 ? 0 : n_vertices - 1);
       indices.push_back(static_cast<std::uint32_t>(index));
     }
-    Mesh::FaceHandle fh = builder.add_face(indices.data(), indices.size(), f + 1);
     const std::size_t extra = tokens.size() - 1 - n;
-    if (mesh.has_face_colors() && fh.is_valid()) mesh.set_color(fh, Mesh::Color(255, 255, 255));
-    if (extra == 3 || extra == 4) {
-      Mesh::Color color;
-      if (!parse_color(&tokens[1 + n], color))
-        throw bad_input("OFF line {}: face {} has a colour that is not numbers", lines.line_number(), f + 1);
-      if (!mesh.has_face_colors()) {
-        // Faces listed before the first coloured one get white (OpenMesh leaves new
-        // property values uninitialised).
-        mesh.request_face_colors();
-        for (auto earlier : mesh.faces()) mesh.set_color(earlier, Mesh::Color(255, 255, 255));
-      }
-      if (fh.is_valid()) mesh.set_color(fh, color);
+    Mesh::Color color(255, 255, 255);
+    const bool colored = extra == 3 || extra == 4;
+    if (colored && !parse_color(&tokens[1 + n], color))
+      throw bad_input("OFF line {}: face {} has a colour that is not numbers", lines.line_number(), f + 1);
+    if (colored && !mesh.has_face_colors()) {
+      // Faces listed before the first coloured one get white (OpenMesh leaves new
+      // property values uninitialised).
+      mesh.request_face_colors();
+      for (auto earlier : mesh.faces()) mesh.set_color(earlier, Mesh::Color(255, 255, 255));
     }
+    Mesh::FaceHandle fh = builder.add_face(indices.data(), indices.size(), f + 1, &color);
+    if (mesh.has_face_colors() && fh.is_valid()) mesh.set_color(fh, color);
   }
   builder.finish();
+  set_point_storage(mesh, CoordinateStorage::decimal);
+  set_normal_storage(mesh, CoordinateStorage::decimal);
   return mesh;
 }
 
@@ -178,12 +178,11 @@ std::string write_off(const Mesh& input) {
   const bool normals = mesh.has_vertex_normals();
   const bool colors = mesh.has_vertex_colors();
   const bool texcoords = mesh.has_vertex_texcoords2D();
-  const bool face_colors = mesh.has_face_colors();
-  const std::vector<std::vector<int>> extra = extra_faces(mesh);
+  const FacesBeside extra = extra_faces_to_write(mesh);
   std::string out;
   out.reserve(mesh.n_vertices() * 40 + mesh.n_faces() * 20 + 32);
   fmt::format_to(std::back_inserter(out), "{}{}{}OFF\n{} {} 0\n", texcoords ? "ST" : "", colors ? "C" : "",
-                 normals ? "N" : "", mesh.n_vertices(), mesh.n_faces() + extra.size());
+                 normals ? "N" : "", mesh.n_vertices(), mesh.n_faces() + extra.faces.size());
   auto put_color = [&](const Mesh::Color& c) {
     fmt::format_to(std::back_inserter(out), " {} {} {} 255", static_cast<unsigned>(c[0]), static_cast<unsigned>(c[1]),
                    static_cast<unsigned>(c[2]));
@@ -208,18 +207,12 @@ std::string write_off(const Mesh& input) {
       }
     out.push_back('\n');
   }
-  for (auto f : mesh.faces()) {
-    fmt::format_to(std::back_inserter(out), "{}", mesh.valence(f));
-    for (auto v : mesh.fv_range(f)) fmt::format_to(std::back_inserter(out), " {}", v.idx());
-    if (face_colors) put_color(mesh.color(f));
+  for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color* color, Mesh::FaceHandle) {
+    fmt::format_to(std::back_inserter(out), "{}", face.size());
+    for (int v : face) fmt::format_to(std::back_inserter(out), " {}", v);
+    if (color) put_color(*color);
     out.push_back('\n');
-  }
-  for (const auto& f : extra) {
-    fmt::format_to(std::back_inserter(out), "{}", f.size());
-    for (int v : f) fmt::format_to(std::back_inserter(out), " {}", v);
-    if (face_colors) put_color(Mesh::Color(255, 255, 255));
-    out.push_back('\n');
-  }
+  });
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "formats/mesh/ply_header.hpp"
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 #include "formats/mesh/text_cursor.hpp"
 
@@ -144,7 +146,12 @@ PlyHeader parse_ply_header(std::string_view bytes) {
       if (property.name.empty()) throw bad_input("PLY header line {}: property without a name", line_no);
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      throw bad_input("PLY header line {}: unknown keyword \"{}\"", line_no, keyword);
+      // Not a PLY keyword: some writers put free text in the header without `comment`.
+      // Read it as a comment and say so, rather than refuse a file other readers open.
+      std::string text(line.substr(0, 60));
+      if (line.size() > 60) text += "...";
+      header.warnings.push_back(
+          fmt::format("PLY header line {}: \"{}\" has no PLY keyword; read as a comment", line_no, text));
     }
   }
   if (!ended) throw bad_input("PLY header: no end_header line (truncated header?)");

@@ -38,6 +38,9 @@ struct PlyHeader {
   PlyEncoding encoding = PlyEncoding::ascii;
   std::vector<PlyElement> elements;
   std::size_t body_offset = 0;  // first byte after "end_header\n"
+  // Lines read leniently: a line that starts with no PLY keyword is read as a comment
+  // (Blender 2.47 writes "Created by Blender3D ..." without `comment`).
+  std::vector<std::string> warnings;
 };
 
 // Parses and validates the header: magic, format line, element and property lines,

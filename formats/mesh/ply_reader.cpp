@@ -2,10 +2,13 @@
 // parsed and size-checked by ply_header.cpp; this walks the body element by element.
 // Known properties: vertex x y z, nx ny nz, red green blue, s t / u v / texture_u
 // texture_v / texture_s texture_t; face vertex_indices (or vertex_index), red green
-// blue. Everything else (other properties, other elements) is read and skipped.
+// blue; edge vertex1 vertex2 (line elements). Everything else (other properties, other
+// elements) is read and skipped.
 
 #include <cmath>
 #include <cstring>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "formats/mesh/mesh_builder.hpp"
@@ -147,6 +150,20 @@ std::uint8_t to_color(double value, PlyType type) {
   return ply_type_is_integer(type) ? color_from_byte_range(value) : color_from_unit(value);
 }
 
+// Where the scalar integer properties vertex1 and vertex2 of an edge element are;
+// false when it lacks them (then the element is not read as lines).
+bool edge_ends(const PlyElement& e, std::size_t* ends) {
+  std::size_t found[2] = {e.properties.size(), e.properties.size()};
+  for (std::size_t k = 0; k < e.properties.size(); ++k) {
+    const PlyProperty& p = e.properties[k];
+    if (p.is_list || !ply_type_is_integer(p.type)) continue;
+    if (p.name == "vertex1") found[0] = k;
+    if (p.name == "vertex2") found[1] = k;
+  }
+  if (ends) ends[0] = found[0], ends[1] = found[1];
+  return found[0] < e.properties.size() && found[1] < e.properties.size();
+}
+
 struct Faces {
   std::vector<std::uint32_t> indices;
   std::vector<std::size_t> offsets{0};
@@ -164,6 +181,7 @@ class BodyReader {
       if (e.properties.empty()) continue;  // nothing stored per instance
       if (e.name == "vertex") read_vertices(e);
       else if (e.name == "face") read_faces(e, faces);
+      else if (e.name == "edge" && edge_ends(e, nullptr)) read_edges(e);
       else skip_element(e);
     }
     if (std::size_t extra = source_.trailing(); extra != 0)
@@ -200,6 +218,19 @@ class BodyReader {
     for (std::uint64_t k = 0; k < n; ++k) value(e, i, p.type);
   }
 
+  // How the file stores a vector property (CoordinateStorage): declared float (or a
+  // type every value of which is a float) is float; else text is decimal, binary binary.
+  CoordinateStorage storage_of(const PlyElement& e, const Layout& layout, Role a, Role b, Role c) const {
+    bool fits_float = true;
+    for (std::size_t k = 0; k < e.properties.size(); ++k) {
+      if (layout.roles[k] != a && layout.roles[k] != b && layout.roles[k] != c) continue;
+      const PlyType t = e.properties[k].type;
+      fits_float = fits_float && (t == PlyType::float32 || ply_type_size(t) <= 2);
+    }
+    if (fits_float) return CoordinateStorage::float32;
+    return header_.encoding == PlyEncoding::ascii ? CoordinateStorage::decimal : CoordinateStorage::binary;
+  }
+
   void read_vertices(const PlyElement& e) {
     if (e.count > max_element_count) throw bad_input("PLY header: {} vertices are more than fest can hold", e.count);
     Layout layout = vertex_layout(e);
@@ -208,6 +239,8 @@ class BodyReader {
     const bool texcoords = layout.has(Role::u) || layout.has(Role::v);
     if (normals) mesh_.request_vertex_normals();
     if (colors) mesh_.request_vertex_colors();
+    set_point_storage(mesh_, storage_of(e, layout, Role::x, Role::y, Role::z));
+    if (normals) set_normal_storage(mesh_, storage_of(e, layout, Role::nx, Role::ny, Role::nz));
     if (texcoords) mesh_.request_vertex_texcoords2D();
     mesh_.reserve(e.count, mesh_.n_edges(), mesh_.n_faces());
     for (std::uint64_t i = 0; i < e.count; ++i) {
@@ -286,6 +319,34 @@ class BodyReader {
     }
   }
 
+
+  void read_edges(const PlyElement& e) {
+    std::size_t ends[2];
+    edge_ends(e, ends);
+    const std::uint64_t n_vertices = vertex_count();
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      std::vector<int> line(2, 0);
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
+        if (p.is_list) {
+          skip_list(e, i, p);
+          continue;
+        }
+        const double v = value(e, i, p.type);
+        if (k != ends[0] && k != ends[1]) continue;
+        if (v < 0 || v >= static_cast<double>(n_vertices))
+          throw bad_input("PLY edge {}: vertex index {} is out of range (the file has {} vertices)", i + 1, v,
+                          n_vertices);
+        line[k == ends[0] ? 0 : 1] = static_cast<int>(v);
+      }
+      lines_.push_back(std::move(line));
+    }
+  }
+
+ public:
+  std::vector<std::vector<int>> lines_;
+
+ private:
   void skip_element(const PlyElement& e) {
     for (std::uint64_t i = 0; i < e.count; ++i)
       for (const PlyProperty& p : e.properties) {
@@ -299,19 +360,51 @@ class BodyReader {
   Mesh& mesh_;
 };
 
+// What the header declares that fest reads but does not keep (other vertex, face and
+// edge properties, other elements), for unread_parts(): never dropped without a word.
+std::vector<MeshPart> parts_not_kept(const PlyHeader& header) {
+  std::vector<MeshPart> parts;
+  for (const PlyElement& e : header.elements) {
+    if (e.count == 0 || e.properties.empty()) continue;
+    const bool lines = e.name == "edge" && edge_ends(e, nullptr);
+    if (e.name != "vertex" && e.name != "face" && !lines) {
+      parts.push_back({fmt::format("PLY '{}' elements", e.name), e.count});
+      continue;
+    }
+    std::string names;
+    for (const PlyProperty& p : e.properties) {
+      const bool kept = (e.name == "vertex" && vertex_role(p.name) != Role::skip) ||
+                        (e.name == "face" && face_role(p.name) != Role::skip) ||
+                        (lines && (p.name == "vertex1" || p.name == "vertex2"));
+      if (!kept) names += (names.empty() ? "" : ", ") + p.name;
+    }
+    const char* plural = e.name == "vertex" ? "vertices" : e.name == "face" ? "faces" : "edges";
+    if (!names.empty()) parts.push_back({fmt::format("{}' {} (PLY properties)", plural, names), e.count});
+  }
+  return parts;
+}
+
 }  // namespace
 
 Mesh read_ply(std::string_view bytes) {
   PlyHeader header = parse_ply_header(bytes);
   Mesh mesh;
   Faces faces;
+  std::vector<std::vector<int>> lines;
   if (header.encoding == PlyEncoding::ascii) {
     AsciiSource source(bytes, header.body_offset);
-    BodyReader<AsciiSource>(source, header, mesh).read_all(faces);
+    BodyReader<AsciiSource> reader(source, header, mesh);
+    reader.read_all(faces);
+    lines = std::move(reader.lines_);
   } else {
     BinarySource source(bytes, header.body_offset, header.encoding == PlyEncoding::binary_big_endian);
-    BodyReader<BinarySource>(source, header, mesh).read_all(faces);
+    BodyReader<BinarySource> reader(source, header, mesh);
+    reader.read_all(faces);
+    lines = std::move(reader.lines_);
   }
+  for (std::string& warning : header.warnings) add_read_warning(mesh, std::move(warning));
+  if (std::vector<MeshPart> parts = parts_not_kept(header); !parts.empty()) set_unread_parts(mesh, std::move(parts));
+  if (!lines.empty()) set_line_elements(mesh, std::move(lines));
   // Faces are added after every element is read: a file may list faces first.
   const std::size_t n_faces = faces.offsets.size() - 1;
   const bool colors = !faces.colors.empty();
@@ -319,8 +412,9 @@ Mesh read_ply(std::string_view bytes) {
   mesh.reserve(mesh.n_vertices(), mesh.n_vertices() + n_faces, n_faces);
   MeshBuilder builder(mesh, "PLY");
   for (std::size_t f = 0; f < n_faces; ++f) {
-    Mesh::FaceHandle fh =
-        builder.add_face(faces.indices.data() + faces.offsets[f], faces.offsets[f + 1] - faces.offsets[f], f + 1);
+    Mesh::FaceHandle fh = builder.add_face(faces.indices.data() + faces.offsets[f],
+                                           faces.offsets[f + 1] - faces.offsets[f], f + 1,
+                                           colors ? &faces.colors[f] : nullptr);
     if (colors && fh.is_valid()) mesh.set_color(fh, faces.colors[f]);
   }
   builder.finish();

@@ -1,6 +1,8 @@
-// PLY writer: ascii, or binary little endian. Positions and normals are stored as
-// `float` when every value is exactly a float and as `double` otherwise, so binary
-// output never rounds; ascii output writes shortest round-trip numbers.
+// PLY writer: ascii, or binary little endian. Positions and normals are declared
+// `float` unless float32 would lose precision the input had (write_points_as_float,
+// CoordinatePrecision in mesh_io.hpp), else `double`; ascii output writes shortest
+// round-trip numbers of what is stored. Faces kept beside the halfedge mesh are written
+// in their place; line elements go into an `edge` element (vertex1 vertex2).
 
 #include <cstring>
 
@@ -28,16 +30,18 @@ void put_le(std::string& out, T value) {
   out.append(reinterpret_cast<const char*>(raw), sizeof(T));
 }
 
-// A value that is float or double on output, as the header declared.
+// A value that is float or double on output, as the header declared. Ascii text of a
+// value declared float is its own shortest text when that reads back from the float
+// (what the input's text was), else the float's value (--precision float rounding).
 void put_real(std::string& out, double value, bool as_float, bool ascii) {
-  if (ascii) append_number(out, value);
+  if (ascii) append_number(out, as_float && !decimal_fits_float(value) ? static_cast<double>(narrow_to_float(value)) : value);
   else if (as_float) put_le(out, narrow_to_float(value));
   else put_le(out, value);
 }
 
 }  // namespace
 
-std::string write_ply(const Mesh& input, bool ascii) {
+std::string write_ply(const Mesh& input, bool ascii, CoordinatePrecision precision) {
   std::optional<Mesh> storage;
   const Mesh& mesh = compacted(input, storage);
   const bool normals = mesh.has_vertex_normals();
@@ -46,12 +50,17 @@ std::string write_ply(const Mesh& input, bool ascii) {
   const bool face_colors = mesh.has_face_colors();
   // Ascii text is exact either way; the declared type then only tells readers what
   // precision to expect.
-  const bool float_points = points_are_floats(mesh);
-  const bool float_normals = normals_are_floats(mesh);
-  const std::vector<std::vector<int>> extra = extra_faces(mesh);
+  const bool float_points = write_points_as_float(mesh, precision);
+  const bool float_normals = write_normals_as_float(mesh, precision);
+  const FacesBeside extra = extra_faces_to_write(mesh);
   std::size_t max_valence = 0;
   for (auto f : mesh.faces()) max_valence = std::max<std::size_t>(max_valence, mesh.valence(f));
-  for (const auto& f : extra) max_valence = std::max(max_valence, f.size());
+  for (const auto& f : extra.faces) max_valence = std::max(max_valence, f.size());
+  // Line elements as edges: a polyline of n vertices is n - 1 edges.
+  std::vector<std::pair<int, int>> edges;
+  for (const auto& line : line_elements(mesh))
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) edges.emplace_back(line[k], line[k + 1]);
+  const std::size_t n_faces = mesh.n_faces() + extra.faces.size();
   const bool small_lists = max_valence <= 255;
 
   std::string out = "ply\n";
@@ -65,9 +74,11 @@ std::string write_ply(const Mesh& input, bool ascii) {
                    float_normals ? "float" : "double");
   if (colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   if (texcoords) out += "property float s\nproperty float t\n";
-  fmt::format_to(std::back_inserter(out), "element face {}\n", mesh.n_faces() + extra.size());
+  fmt::format_to(std::back_inserter(out), "element face {}\n", n_faces);
   out += small_lists ? "property list uchar int vertex_indices\n" : "property list int int vertex_indices\n";
   if (face_colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  if (!edges.empty())
+    fmt::format_to(std::back_inserter(out), "element edge {}\nproperty int vertex1\nproperty int vertex2\n", edges.size());
   out += "end_header\n";
   if (!ascii) {
     // Binary records have known sizes (faces taken as triangles): one allocation instead
@@ -75,7 +86,7 @@ std::string write_ply(const Mesh& input, bool ascii) {
     const std::size_t point = float_points ? 4 : 8, normal = float_normals ? 4 : 8;
     const std::size_t per_vertex = 3 * point + (normals ? 3 * normal : 0) + (colors ? 3 : 0) + (texcoords ? 8 : 0);
     const std::size_t per_face = (small_lists ? 1 : 4) + 3 * 4 + (face_colors ? 3 : 0);
-    out.reserve(out.size() + mesh.n_vertices() * per_vertex + (mesh.n_faces() + extra.size()) * per_face);
+    out.reserve(out.size() + mesh.n_vertices() * per_vertex + n_faces * per_face + edges.size() * 8);
   }
 
   auto put_color = [&](const Mesh::Color& c) {
@@ -111,28 +122,24 @@ std::string write_ply(const Mesh& input, bool ascii) {
     }
     if (ascii) out.push_back('\n');
   }
-  for (auto f : mesh.faces()) {
-    const std::size_t valence = mesh.valence(f);
-    if (ascii) fmt::format_to(std::back_inserter(out), "{}", valence);
-    else if (small_lists) out.push_back(static_cast<char>(valence));
-    else put_le(out, static_cast<std::int32_t>(valence));
-    for (auto v : mesh.fv_range(f)) {
-      if (ascii) fmt::format_to(std::back_inserter(out), " {}", v.idx());
-      else put_le(out, static_cast<std::int32_t>(v.idx()));
-    }
-    if (face_colors) put_color(mesh.color(f));
-    if (ascii) out.push_back('\n');
-  }
-  for (const auto& f : extra) {
-    if (ascii) fmt::format_to(std::back_inserter(out), "{}", f.size());
-    else if (small_lists) out.push_back(static_cast<char>(f.size()));
-    else put_le(out, static_cast<std::int32_t>(f.size()));
-    for (int v : f) {
+  for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color* color, Mesh::FaceHandle) {
+    if (ascii) fmt::format_to(std::back_inserter(out), "{}", face.size());
+    else if (small_lists) out.push_back(static_cast<char>(face.size()));
+    else put_le(out, static_cast<std::int32_t>(face.size()));
+    for (int v : face) {
       if (ascii) fmt::format_to(std::back_inserter(out), " {}", v);
       else put_le(out, static_cast<std::int32_t>(v));
     }
-    if (face_colors) put_color(Mesh::Color(255, 255, 255));
+    if (color) put_color(*color);
     if (ascii) out.push_back('\n');
+  });
+  for (const auto& [a, b] : edges) {
+    if (ascii) {
+      fmt::format_to(std::back_inserter(out), "{} {}\n", a, b);
+    } else {
+      put_le(out, static_cast<std::int32_t>(a));
+      put_le(out, static_cast<std::int32_t>(b));
+    }
   }
   return out;
 }

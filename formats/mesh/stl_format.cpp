@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/polygon_triangulation.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
 #include "formats/mesh/text_cursor.hpp"
@@ -199,16 +200,21 @@ Mesh::Normal facet_normal(const Mesh& mesh, Mesh::FaceHandle f, const Mesh::Poin
 }  // namespace
 
 Mesh read_stl(std::string_view bytes) {
-  if (is_binary(bytes)) return read_binary(bytes);
-  return AsciiStlParser(bytes).parse();
+  const bool binary = is_binary(bytes);
+  Mesh mesh = binary ? read_binary(bytes) : AsciiStlParser(bytes).parse();
+  set_point_storage(mesh, binary ? CoordinateStorage::float32 : CoordinateStorage::decimal);
+  return mesh;
 }
 
 std::string write_stl(const Mesh& input, bool ascii) {
   std::optional<Mesh> storage;
   const Mesh& mesh = compacted(input, storage);
-  // STL holds triangles only: a polygon is written as a fan around its first vertex.
+  // STL holds triangles only: a polygon is written as a fan around its first vertex,
+  // a concave one as ears (core/polygon_triangulation.hpp); n - 2 triangles either way.
+  const FacesBeside extra = extra_faces_to_write(mesh);
   std::size_t n_triangles = 0;
   for (auto f : mesh.faces()) n_triangles += mesh.valence(f) - 2;
+  for (const auto& face : extra.faces) n_triangles += face.size() >= 3 ? face.size() - 2 : 0;
   if (!ascii && n_triangles > 0xffffffffu) throw bad_input("binary STL: {} triangles exceed its 32-bit count", n_triangles);
   std::string out;
   if (ascii) {
@@ -221,12 +227,17 @@ std::string write_stl(const Mesh& input, bool ascii) {
     out.reserve(84 + 50 * n_triangles);
   }
   std::vector<Mesh::Point> corners;
-  for (auto f : mesh.faces()) {
+  std::vector<std::array<double, 3>> positions;
+  for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color*, Mesh::FaceHandle f) {
     corners.clear();
-    for (auto v : mesh.fv_range(f)) corners.push_back(mesh.point(v));
-    const bool use_face_normal = mesh.has_face_normals() && corners.size() == 3;
-    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-      const Mesh::Point* tri[3] = {&corners[0], &corners[k], &corners[k + 1]};
+    positions.clear();
+    for (int v : face) {
+      corners.push_back(mesh.point(Mesh::VertexHandle(v)));
+      positions.push_back({corners.back()[0], corners.back()[1], corners.back()[2]});
+    }
+    const bool use_face_normal = f.is_valid() && mesh.has_face_normals() && corners.size() == 3;
+    for (const auto& t : triangulate_polygon(positions)) {
+      const Mesh::Point* tri[3] = {&corners[t[0]], &corners[t[1]], &corners[t[2]]};
       Mesh::Normal normal = facet_normal(mesh, f, *tri[0], *tri[1], *tri[2], use_face_normal);
       if (ascii) {
         out += "facet normal";
@@ -251,7 +262,7 @@ std::string write_stl(const Mesh& input, bool ascii) {
         out.append(2, '\0');  // attribute byte count
       }
     }
-  }
+  });
   if (ascii) out += "endsolid fest\n";
   return out;
 }

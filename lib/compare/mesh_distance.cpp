@@ -6,6 +6,7 @@
 
 #include "compare/mesh_compare.hpp"
 #include "compare/triangle_tree.hpp"
+#include "core/polygon_triangulation.hpp"
 
 namespace fest::compare {
 
@@ -13,15 +14,31 @@ namespace {
 
 Vec3 to_eigen(const Mesh::Point& p) { return Vec3(p[0], p[1], p[2]); }
 
-// Fan triangulation of every face: enough for distances, and exact for triangles.
-std::vector<Triangle> triangles_of(const Mesh& mesh) {
+// Triangles of every face: the fan of a convex polygon, ears of a concave one (so a
+// concave face covers what it covers), exact for triangles.
+std::vector<Triangle> triangles_of(const Mesh& mesh, const FaceList& beside) {
   std::vector<Triangle> out;
-  out.reserve(mesh.n_faces());
+  out.reserve(mesh.n_faces() + beside.size());
   std::vector<Vec3> corners;
+  std::vector<std::array<double, 3>> positions;
+  auto add = [&] {
+    if (corners.size() == 3) {
+      out.push_back({corners[0], corners[1], corners[2]});
+      return;
+    }
+    positions.clear();
+    for (const Vec3& c : corners) positions.push_back({c[0], c[1], c[2]});
+    for (const auto& t : triangulate_polygon(positions)) out.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  };
   for (auto f : mesh.faces()) {
     corners.clear();
     for (auto v : mesh.fv_range(f)) corners.push_back(to_eigen(mesh.point(v)));
-    for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
+    add();
+  }
+  for (const auto& face : beside) {
+    corners.clear();
+    for (int v : face) corners.push_back(to_eigen(mesh.point(Mesh::VertexHandle(v))));
+    add();
   }
   return out;
 }
@@ -40,12 +57,16 @@ struct SplitMix64 {
 };
 
 // Every vertex used by a face, then `extra` points distributed by area.
-std::vector<Vec3> sample_surface(const Mesh& mesh, const std::vector<Triangle>& tris, std::size_t extra,
-                                 std::uint64_t seed) {
+std::vector<Vec3> sample_surface(const Mesh& mesh, const FaceList& beside, const std::vector<Triangle>& tris,
+                                 std::size_t extra, std::uint64_t seed) {
   std::vector<Vec3> samples;
   samples.reserve(mesh.n_vertices() + extra);
+  std::vector<char> in_beside(beside.empty() ? 0 : mesh.n_vertices(), 0);
+  for (const auto& face : beside)
+    for (int v : face) in_beside[static_cast<std::size_t>(v)] = 1;
   for (auto v : mesh.vertices())
-    if (!mesh.is_isolated(v)) samples.push_back(to_eigen(mesh.point(v)));
+    if (!mesh.is_isolated(v) || (!in_beside.empty() && in_beside[static_cast<std::size_t>(v.idx())]))
+      samples.push_back(to_eigen(mesh.point(v)));
   if (tris.empty() || extra == 0) return samples;
   std::vector<double> cumulative(tris.size());
   double total = 0;
@@ -118,10 +139,15 @@ SideResult one_side(const std::vector<Vec3>& samples, const TriangleTree& other,
 
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, std::size_t extra_samples, std::uint64_t seed,
                                  int threads) {
+  return surface_distance(a, FaceList{}, b, FaceList{}, extra_samples, seed, threads);
+}
+
+SurfaceDistance surface_distance(const Mesh& a, const FaceList& beside_a, const Mesh& b, const FaceList& beside_b,
+                                 std::size_t extra_samples, std::uint64_t seed, int threads) {
   SurfaceDistance d;
-  std::vector<Triangle> ta = triangles_of(a), tb = triangles_of(b);
-  const std::vector<Vec3> sa = sample_surface(a, ta, extra_samples, seed);
-  const std::vector<Vec3> sb = sample_surface(b, tb, extra_samples, seed + 1);
+  std::vector<Triangle> ta = triangles_of(a, beside_a), tb = triangles_of(b, beside_b);
+  const std::vector<Vec3> sa = sample_surface(a, beside_a, ta, extra_samples, seed);
+  const std::vector<Vec3> sb = sample_surface(b, beside_b, tb, extra_samples, seed + 1);
   const TriangleTree tree_a(std::move(ta)), tree_b(std::move(tb));
   d.resolution = 1e-12 * std::max(bbox_diagonal(a), bbox_diagonal(b));
   d.samples_a = sa.size();

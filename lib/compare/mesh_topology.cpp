@@ -63,4 +63,11 @@ MeshTopology mesh_topology(const Mesh& mesh) {
   return t;
 }
 
+MeshTopology mesh_topology(const Mesh& mesh, const FaceList& beside) {
+  MeshTopology t = mesh_topology(mesh);
+  t.faces += beside.size();
+  t.faces_beside = beside.size();
+  return t;
+}
+
 }  // namespace fest::compare

@@ -23,6 +23,12 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
   const double denom = va + vb + vc;
   if (!(denom > 0)) return a;  // degenerate (zero-area) triangle: its vertices were sampled anyway
+  // Inside: the projection onto the plane. Taken along the normal rather than from the
+  // barycentric weights vb/denom, vc/denom, whose cancellation on a thin triangle (the
+  // ears of a concave polygon) puts a point lying on it 1e-11 away from itself.
+  const Vec3 normal = ab.cross(ac);
+  const double nn = normal.squaredNorm();
+  if (nn > 0) return p - (normal.dot(ap) / nn) * normal;
   const double v = vb / denom, w = vc / denom;
   return a + ab * v + ac * w;
 }

@@ -21,6 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       continue;
     }
     if (mesh.n_vertices() > 10000) continue;  // keep each run fast
+    // Write the faces the halfedge mesh refused too, in their place (as fconv does).
+    fest::formats::carry_skipped_faces(mesh);
     for (bool ascii : {false, true}) {
       fest::formats::MeshWriteOptions options;
       options.ascii = ascii;

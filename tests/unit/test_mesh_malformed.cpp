@@ -50,7 +50,7 @@ TEST(MeshMalformed, PlyHeaders) {
   expect_rejected(Format::ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nend_header\n0\n",
                   "vertex without x");
   expect_rejected(Format::ply, "ply\nformat ascii 1.0\nelement vertex\nend_header\n", "count missing");
-  expect_rejected(Format::ply, "ply\nformat ascii 1.0\nbogus line\nend_header\n", "unknown keyword");
+  expect_rejected(Format::ply, "ply\nformat ascii 1.0\nelement vertex one\nend_header\n", "count not a number");
   expect_rejected(Format::ply, std::string("ply\nformat ascii 1.0\n\xff\xfe\x00garbage", 27), "garbage after magic");
 }
 

@@ -13,9 +13,12 @@ namespace {
 using formats::Format;
 using formats::MeshWriteOptions;
 
+// Bit-exact chains ask for double PLY coordinates: by default a PLY of decimal text
+// with up to 7 digits stores floats (test_mesh_precision.cpp checks that).
 Mesh convert(const Mesh& mesh, Format format, bool ascii) {
   MeshWriteOptions options;
   options.ascii = ascii;
+  options.precision = formats::CoordinatePrecision::float64;
   return formats::read_mesh(formats::write_mesh(mesh, format, options), format);
 }
 

@@ -22,6 +22,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
+#include "core/tool_main.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -63,15 +64,28 @@ nlohmann::json topology_json(const compare::MeshTopology& t) {
           {"edges", t.edges},             {"isolated_vertices", t.isolated_vertices},
           {"boundary_edges", t.boundary_edges}, {"boundary_loops", t.boundary_loops},
           {"components", t.components},   {"nonmanifold_vertices", t.nonmanifold_vertices},
-          {"euler", t.euler},             {"genus", t.genus}};
+          {"euler", t.euler},             {"genus", t.genus},
+          {"faces_beside_halfedges", t.faces_beside}};
+}
+
+// A mesh file as it is: the halfedge mesh, and the faces it could not hold beside it.
+Mesh read_mesh_file(const Input& in) {
+  Mesh mesh = parse(in, read_mesh);
+  for (const std::string& w : read_warnings(mesh)) warn("fcompare", w + " (" + in.name + ")");
+  return mesh;
 }
 
 void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metrics& m) {
-  const Mesh a = parse(ia, read_mesh);
-  const Mesh b = parse(ib, read_mesh);
-  const auto ta = compare::mesh_topology(a), tb = compare::mesh_topology(b);
+  const Mesh a = read_mesh_file(ia);
+  const Mesh b = read_mesh_file(ib);
+  const compare::FaceList beside_a = faces_beside(a), beside_b = faces_beside(b);
+  const auto ta = compare::mesh_topology(a, beside_a), tb = compare::mesh_topology(b, beside_b);
   m.details["topology_a"] = topology_json(ta);
   m.details["topology_b"] = topology_json(tb);
+  // Line and point elements count like faces: a file that lost them differs.
+  m.set("line_count_diff",
+        std::abs(static_cast<double>(line_segments(a)) - static_cast<double>(line_segments(b))));
+  m.set("point_count_diff", std::abs(static_cast<double>(point_count(a)) - static_cast<double>(point_count(b))));
   m.set("vertex_count_diff", std::abs(static_cast<double>(ta.vertices) - static_cast<double>(tb.vertices)));
   m.set("face_count_diff", std::abs(static_cast<double>(ta.faces) - static_cast<double>(tb.faces)));
   m.set("genus_diff", std::abs(static_cast<double>(ta.genus - tb.genus)));
@@ -89,7 +103,7 @@ void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metric
     }
     m.set("vertex_max_abs", worst);
   }
-  const auto d = compare::surface_distance(a, b, opt.samples, 1, resolve_threads(opt.threads));
+  const auto d = compare::surface_distance(a, beside_a, b, beside_b, opt.samples, 1, resolve_threads(opt.threads));
   m.set("hausdorff", d.hausdorff);
   m.set("rms", d.rms);
   m.set("mean", d.mean);
@@ -102,6 +116,8 @@ void compare_meshes(const Input& ia, const Input& ib, const Options& opt, Metric
   if (!opt.ignore_counts) {
     m.require("vertex_count_diff", "<=", 0);
     m.require("face_count_diff", "<=", 0);
+    m.require("line_count_diff", "<=", 0);
+    m.require("point_count_diff", "<=", 0);
   }
   if (!opt.ignore_topology) {
     for (const char* k : {"genus_diff", "boundary_loops_diff", "components_diff", "nonmanifold_vertices_diff"})
@@ -253,7 +269,7 @@ int main(int argc, char** argv) {
   app.add_option("--samples", opt.samples, "Meshes: random surface samples per mesh besides the vertices")
       ->default_val(100000);
   fest::cli::add_threads(app, opt.threads);
-  app.add_flag("--ignore-counts", opt.ignore_counts, "Meshes: allow different vertex and face counts");
+  app.add_flag("--ignore-counts", opt.ignore_counts, "Meshes: allow different vertex, face, line and point counts");
   app.add_flag("--ignore-topology", opt.ignore_topology, "Meshes: allow different genus, boundaries, components");
   app.add_option("--report", opt.report, "Write every metric and check as JSON to this file");
   app.footer("Exit status: 0 within tolerance, 1 not (failing checks on standard error), 2 usage error,\n"

@@ -7,12 +7,14 @@
 #include <optional>
 #include <string>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <vtkDataSet.h>
 
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/tool_main.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -38,7 +40,42 @@ struct Options {
   long frame = -1;  // --frame K: one frame of a 4-D series; -1: all
   int draco_bits = 0;
   int draco_speed = 5;
+  std::string precision;  // "", "float" or "double"
+  bool drop_unrepresentable = false;
 };
+
+// A mesh as read, with the faces OpenMesh's halfedge structure refused set to be written
+// in their place; what the reader read leniently is said as a warning.
+Mesh read_whole_mesh(const Input& in) {
+  Mesh mesh = parse(in, read_mesh);
+  for (const std::string& w : read_warnings(mesh)) warn("fconv", w + " (" + in.name + ")");
+  carry_skipped_faces(mesh);
+  return mesh;
+}
+
+std::string list_parts(const std::vector<MeshPart>& parts) {
+  std::string what;
+  for (const MeshPart& part : parts) what += (what.empty() ? "" : ", ") + part.describe();
+  return what;
+}
+
+// What fest does not keep from the input, and what the output format cannot hold:
+// refused (exit 3) unless --drop-unrepresentable, then counted in a warning.
+void check_losses(const Mesh& mesh, Format to, const Options& opt, const std::string& name) {
+  const std::vector<MeshPart> unread = unread_parts(mesh), unwritable = unwritable_parts(mesh, to);
+  if (!unread.empty()) {
+    if (!opt.drop_unrepresentable)
+      throw bad_input("fest does not keep the input's {}; --drop-unrepresentable converts without them ({})",
+                      list_parts(unread), name);
+    warn("fconv", fmt::format("dropped {}, which fest does not keep ({})", list_parts(unread), name));
+  }
+  if (!unwritable.empty()) {
+    if (!opt.drop_unrepresentable)
+      throw bad_input("{} cannot hold the input's {}; --drop-unrepresentable converts without them ({})",
+                      format_name(to), list_parts(unwritable), name);
+    warn("fconv", fmt::format("dropped {}, which {} cannot hold ({})", list_parts(unwritable), format_name(to), name));
+  }
+}
 
 const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
 
@@ -72,7 +109,7 @@ nlohmann::json describe(const Input& in) {
   nlohmann::json facts = file_facts(in);
   nlohmann::json content;
   switch (kind_of(in.format)) {
-    case Kind::mesh: content = describe_mesh(parse(in, read_mesh)); break;
+    case Kind::mesh: content = describe_mesh(read_whole_mesh(in)); break;
     case Kind::image: content = describe_image(parse(in, read_image)); break;
     case Kind::volume: content = describe_volume(parse(in, read_volume)); break;
     case Kind::dataset: content = describe_dataset(parse(in, read_dataset)); break;
@@ -94,7 +131,12 @@ std::string convert(const Input& in, Format to, const Options& opt) {
       w.ascii = opt.ascii;
       w.draco_position_bits = opt.draco_bits;
       w.draco_speed = opt.draco_speed;
-      return write_mesh(parse(in, read_mesh), to, w);
+      w.drop_unrepresentable = opt.drop_unrepresentable;
+      if (opt.precision == "float") w.precision = CoordinatePrecision::float32;
+      else if (opt.precision == "double") w.precision = CoordinatePrecision::float64;
+      const Mesh mesh = read_whole_mesh(in);
+      check_losses(mesh, to, opt, in.name);
+      return write_mesh(mesh, to, w);
     }
     case Kind::image: {
       ImageWriteOptions w;
@@ -202,6 +244,14 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 30));
   app.add_option("--draco-speed", opt.draco_speed, "Draco encoder speed, 0 (smallest) to 10 (fastest)")
       ->check(CLI::Range(0, 10));
+  app.add_option("--precision", opt.precision,
+                 "PLY positions and normals: float or double (default: float unless float would lose "
+                 "precision the input had)")
+      ->check(CLI::IsMember({"float", "double"}));
+  app.add_flag("--drop-unrepresentable", opt.drop_unrepresentable,
+               "Meshes: convert without what fest or the output format cannot hold (other PLY properties "
+               "and elements, OBJ per-corner normals/texture coordinates; line or point elements, faces of "
+               "fewer than 3 vertices) and count it in a warning, instead of failing");
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See fconv(1), fest-formats(5).");
   return fest::cli::run(app, argc, argv, [&] { return run(opt); });
 }
