@@ -10,11 +10,11 @@ namespace fest::radiosity {
 
 Scene cornell_box(bool blocks = true);
 
-// The camera of the data set: eye (278, 273, -800) looking along +z, up +y, 35 mm lens
-// on a 35 mm film (vertical field of view 2 atan(17.5/35)).
+// The camera of the data set: eye (278, 273, -800) looking along +z, up +y, focal length
+// 35 mm on a 25 x 25 mm film (field of view 2 atan(12.5/35)).
 struct CornellCamera {
   Eigen::Vector3d eye{278, 273, -800}, target{278, 273, 0}, up{0, 1, 0};
-  double vertical_fov_degrees = 53.13010235415598;  // 2 atan(0.5)
+  double vertical_fov_degrees = 39.30746768437243;  // 2 atan(12.5 / 35)
 };
 
 }  // namespace fest::radiosity

@@ -173,6 +173,19 @@ Model build_model(const Scene& scene, const MeshingOptions& options) {
                                                                        : patch / 4;
   if (element > patch) element = patch;
   const double emission_scale = options.emission_is_radiance ? M_PI : 1.0;
+  if (!options.no_mesh) {
+    // Refuse absurd sizes before allocating: an upper bound of the element count.
+    double estimate = 0;
+    for (const SceneObject& o : scene.objects)
+      for (const auto& f : o.faces)
+        for (const Polygon& face : face_polygons(o, f)) {
+          const double np = std::ceil(face.longest_edge() / patch) + 1, ne = std::ceil(patch / element) + 1;
+          estimate += 4 * np * np * ne * ne;
+        }
+    if (estimate > 5e7)
+      throw bad_input("meshing would make about {:.3g} elements (patch size {:.4g}, element size {:.4g}); use larger sizes",
+                      estimate, patch, element);
+  }
   for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
     const SceneObject& o = scene.objects[oi];
     m.objects.push_back({o.name, o.reflectance, o.emission * emission_scale});

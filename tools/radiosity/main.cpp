@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   fest::cli::Common common;
   fest::cli::add_common(app, common);
   app.require_subcommand(1);
+  app.fallthrough();  // -q / -v after the subcommand too
 
   SolveArgs s;
   CameraArgs cam;

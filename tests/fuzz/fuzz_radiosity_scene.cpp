@@ -1,0 +1,25 @@
+// radiosity's scene JSON codec (lib/radiosity/scene_json.hpp) and the scene checks that
+// follow it: any bytes must give a scene or fest::Error, never a crash or a hang. Small
+// accepted scenes are also meshed (one patch per face).
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "core/error.hpp"
+#include "radiosity/scene.hpp"
+#include "radiosity/scene_json.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  try {
+    const auto file = fest::radiosity::decode_scene_json(std::string_view(reinterpret_cast<const char*>(data), size));
+    std::size_t faces = 0;
+    for (const auto& o : file.scene.objects) faces += o.faces.size();
+    if (faces > 64) return 0;
+    fest::radiosity::MeshingOptions m;
+    m.no_mesh = true;
+    fest::radiosity::build_model(file.scene, m);
+  } catch (const fest::Error&) {
+  }
+  return 0;
+}
