@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fest::formats {
@@ -27,5 +28,13 @@ struct AttributedPly {
 // Throws bad_input for columns of unequal length, an unknown type, a face naming a
 // vertex that does not exist, or a comment containing a line break.
 std::string write_attributed_ply(const AttributedPly& ply);
+
+// Reads any PLY (ascii, binary little or big endian) into the same form: every scalar
+// property of the vertex and face elements as a column (type as the file names it, in
+// its canonical spelling), the face's vertex_indices (or vertex_index) list as faces,
+// comments. Other elements are read and skipped; list properties other than the face
+// indices are refused (bad_input) rather than dropped. Counts are checked against the
+// bytes before anything is allocated.
+AttributedPly read_attributed_ply(std::string_view bytes);
 
 }  // namespace fest::formats

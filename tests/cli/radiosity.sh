@@ -20,6 +20,15 @@ check "closed scene" jq -e '.scene.closed == true' "$WORK/furnace.json"
 check "emitted = absorbed" jq -e '.energy.relative_imbalance | fabs < 1e-3' "$WORK/furnace.json"
 check "PLY header carries rad_r and object_id" grep -a -q 'property float rad_r' "$WORK/furnace.ply"
 
+case_ "furnace as a PLY scene (face properties object_id, refl_*, emit_*) on standard input: B = 2"
+run_stdin "$FEST_FIXTURES/radiosity/furnace_scene.ply" radiosity solve --emission exitance --ff analytic --samples 4 \
+  --tol 1e-6 --levels 0 --patch-size 0.25 --report "$WORK/fply.json" -o "$WORK/fply.ply"
+expect_status 0
+check "B = 2 to 1e-3" jq -e '(.radiosity.min | all(. >= 1.998)) and (.radiosity.max | all(. <= 2.002))' "$WORK/fply.json"
+check "object named from the header comment" jq -e '.scene.objects == ["box"]' "$WORK/fply.json"
+grep -v 'refl_g' "$FEST_FIXTURES/radiosity/furnace_scene.ply" >"$WORK/norefl.ply"
+run radiosity solve "$WORK/norefl.ply"; expect_clean_failure 3 radiosity; expect_stderr_has 'refl_r, refl_g, refl_b'
+
 case_ "furnace rho 0.9 with the hemicube: mean B = 10 (energy), every element within 5 %"
 sed 's/0.5, 0.5, 0.5/0.9, 0.9, 0.9/' "$EX/furnace.json" >"$WORK/furnace9.json"
 run radiosity solve "$WORK/furnace9.json" --emission exitance --hemicube-res 128 --tol 1e-4 --max-shots 100000 --levels 0 \
