@@ -111,12 +111,24 @@ void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, const s
     if (id == -2) continue;
     const int nc = items[k]->n;
     int na = 0;
+    // Outcodes against the five clip planes: a polygon wholly outside one plane is
+    // skipped, one wholly inside all of them needs no clipping (most polygons fall
+    // in one of these for each of the six tasks).
+    unsigned all_out = 0x1f, any_out = 0;
     for (int c = 0; c < nc; ++c) {
       const Eigen::Vector3d& l = local_[4 * k + c];
-      a[na++] = {l[fr.xx], l[fr.yx], fr.zs * l[fr.zx]};
+      const V q{l[fr.xx], l[fr.yx], fr.zs * l[fr.zx]};
+      a[na++] = q;
+      const unsigned code = (q.z - q.x < 0 ? 1u : 0u) | (q.z + q.x < 0 ? 2u : 0u) |
+                            (q.y - fr.ylo * q.z < 0 ? 4u : 0u) | (fr.yhi * q.z - q.y < 0 ? 8u : 0u) |
+                            (q.z - near < 0 ? 16u : 0u);
+      all_out &= code;
+      any_out |= code;
     }
+    if (all_out != 0) continue;
     // Clip against z - x >= 0, z + x >= 0, y - ylo z >= 0, yhi z - y >= 0, z >= near.
-    for (int plane = 0; plane < 5 && na >= 3; ++plane) {
+    for (int plane = 0; plane < 5 && na >= 3 && any_out != 0; ++plane) {
+      if (!(any_out & (1u << plane))) continue;
       auto dist = [&](const V& q) {
         switch (plane) {
           case 0: return q.z - q.x;
@@ -159,25 +171,45 @@ void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, const s
       const int x1 = std::min(w - 1, static_cast<int>(std::floor(maxx - 0.5)));
       const int y0 = std::max(0, static_cast<int>(std::ceil(miny - 0.5)));
       const int y1 = std::min(hh - 1, static_cast<int>(std::floor(maxy - 0.5)));
+      // Edge functions are linear along a row: w0 = a0 px + c0(py), w1 = a1 px + c1(py),
+      // w2 = 1 - w0 - w1. Each row's span where all three are >= -eps is solved for
+      // directly, so no pixel outside the triangle is visited. A small tolerance: a
+      // pixel centre on an edge shared by two polygons must not fall through both by
+      // rounding (overlaps are settled by the depth test).
+      const double eps = 1e-7;
+      const double a0 = (sy[i1] - sy[i2]) * inv, a1 = (sy[i2] - sy[i0]) * inv, a2 = -a0 - a1;
+      const double k0 = (sx[i1] * sy[i2] - sx[i2] * sy[i1]) * inv, m0 = (sx[i2] - sx[i1]) * inv;
+      const double k1 = (sx[i2] * sy[i0] - sx[i0] * sy[i2]) * inv, m1 = (sx[i0] - sx[i2]) * inv;
+      const std::int32_t key = static_cast<std::int32_t>(k);
+      const std::int32_t stored = id >= 0 ? id : -key - 2;  // occluders stored as -(k+2)
       for (int iy = y0; iy <= y1; ++iy) {
         const double py = iy + 0.5;
-        for (int ix = x0; ix <= x1; ++ix) {
+        const double c0 = k0 + m0 * py, c1 = k1 + m1 * py, c2 = 1 - c0 - c1;
+        double lo = x0 + 0.5, hi = x1 + 0.5;
+        bool empty = false;
+        auto limit = [&](double ai, double ci) {
+          if (ai > 0) lo = std::max(lo, (-eps - ci) / ai);
+          else if (ai < 0) hi = std::min(hi, (-eps - ci) / ai);
+          else if (ci < -eps) empty = true;
+        };
+        limit(a0, c0);
+        limit(a1, c1);
+        limit(a2, c2);
+        if (empty || lo > hi) continue;
+        const int xa = std::max(x0, static_cast<int>(std::ceil(lo - 0.5)));
+        const int xb = std::min(x1, static_cast<int>(std::floor(hi - 0.5)));
+        for (int ix = xa; ix <= xb; ++ix) {
           const double px = ix + 0.5;
-          const double w0 = ((sx[i1] - px) * (sy[i2] - py) - (sx[i2] - px) * (sy[i1] - py)) * inv;
-          const double w1 = ((sx[i2] - px) * (sy[i0] - py) - (sx[i0] - px) * (sy[i2] - py)) * inv;
-          const double w2 = 1 - w0 - w1;
-          // A small tolerance: a pixel centre on an edge shared by two polygons must not
-          // fall through both by rounding (overlaps are settled by the depth test).
-          if (w0 < -1e-7 || w1 < -1e-7 || w2 < -1e-7) continue;
+          const double w0 = a0 * px + c0, w1 = a1 * px + c1, w2 = 1 - w0 - w1;
+          if (w0 < -eps || w1 < -eps || w2 < -eps) continue;  // rounding at the span ends
           const float d = static_cast<float>(w0 * iz[i0] + w1 * iz[i1] + w2 * iz[i2]);
           const std::size_t pix = static_cast<std::size_t>(iy) * w + ix;
           // Nearest wins; on equal depth the lower item (occluders count by their index).
-          const std::int32_t key = static_cast<std::int32_t>(k);
           const std::int32_t cur = task.id[pix];
           const std::int32_t cur_key = cur == std::numeric_limits<std::int32_t>::min() ? cur : (cur >= 0 ? cur : -cur - 2);
           if (d > task.depth[pix] || (d == task.depth[pix] && key < cur_key)) {
             task.depth[pix] = d;
-            task.id[pix] = id >= 0 ? id : -key - 2;  // occluders stored as -(k+2)
+            task.id[pix] = stored;
           }
         }
       }

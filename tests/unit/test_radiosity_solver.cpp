@@ -37,7 +37,7 @@ TEST(RadiositySolver, FurnaceHemicube) {
   // get reciprocity values of a point, not of the patch, so the furnace holds to a few
   // per cent (docs/radiosity.md §3, measured there), not to 1e-3.
   for (double rho : {0.5, 0.9}) {
-    Model m = furnace_model(rho, 0.25);
+    Model m = furnace_model(rho, 1.0 / 3);
     FormFactorOptions fo;
     fo.hemicube_res = 128;
     FormFactors ff(m, fo);
@@ -158,7 +158,7 @@ long shots_to(Solver solver, Model m, double tol) {
 }
 
 TEST(RadiositySolver, OverRelaxationNeedsFewerShots) {
-  for (const Model& base : {cornell_model(110, 110), furnace_model(0.9, 0.2)}) {
+  for (const Model& base : {cornell_model(110, 110), furnace_model(0.9, 0.25)}) {
     const long pr = shots_to(Solver::pr, base, 1e-3);
     const long orpr = shots_to(Solver::orpr, base, 1e-3);
     const long over = shots_to(Solver::overshoot, base, 1e-3);
