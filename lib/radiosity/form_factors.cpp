@@ -35,7 +35,8 @@ std::vector<Eigen::Vector3d> stratified(const Polygon& p, int samples, std::uint
 }  // namespace
 
 FormFactors::FormFactors(const Model& model, const FormFactorOptions& options) : model_(model), options_(options) {
-  if (options_.engine == Engine::hemicube) hemicube_ = std::make_unique<Hemicube>(options_.hemicube_res);
+  if (options_.engine == Engine::hemicube || options_.engine == Engine::hybrid)
+    hemicube_ = std::make_unique<Hemicube>(options_.hemicube_res);
   bvh_ = Bvh(model_.occluders);  // shadow rays of the ray engines and of adaptive gathering
   offset_ = 1e-4 * model_.diagonal;
   refresh();
@@ -83,6 +84,29 @@ void FormFactors::shoot(int i, std::vector<double>& recv, std::vector<double>& r
   const Patch& sh = model_.patches[i];
   recv.assign(model_.elements.size(), 0.0);
   row.assign(model_.patches.size(), 0.0);
+  if (options_.engine == Engine::hybrid) {
+    draw_.assign(items_.size(), 1);
+    for (std::size_t k = 0; k < active_.size(); ++k)
+      if (model_.elements[active_[k]].patch == i) draw_[k] = 0;
+    hemicube_->project(sh.centroid, sh.normal, items_, draw_, 1e-9 * model_.diagonal, options_.threads, ff_, &cover_, &vis_);
+    parallel_for(active_.size(), options_.threads, [&](std::size_t k) {
+      if (!draw_[k]) return;
+      const Element& el = model_.elements[active_[k]];
+      // Only the shooter's front side emits.
+      if ((el.centroid - sh.centroid).dot(sh.normal) <= 0) return;
+      double visible;
+      if (cover_[k] > 0) visible = std::min(1.0, vis_[k] / cover_[k]);
+      else if ((sh.centroid - el.centroid).dot(el.normal) <= 0) return;
+      else visible = bvh_.occluded(el.centroid + offset_ * el.normal, sh.centroid + offset_ * sh.normal) ? 0.0 : 1.0;
+      if (visible <= 0) return;
+      recv[active_[k]] = visible * point_polygon_ff(el.centroid, el.normal, sh.poly);
+    });
+    for (int e : active_) {
+      const Element& el = model_.elements[e];
+      row[el.patch] += el.area * recv[e] / sh.area;
+    }
+    return;
+  }
   if (options_.engine == Engine::hemicube) {
     draw_.assign(items_.size(), 1);
     for (std::size_t k = 0; k < active_.size(); ++k)
@@ -123,7 +147,8 @@ void FormFactors::shoot(int i, std::vector<double>& recv, std::vector<double>& r
 }
 
 double polygon_form_factor(const Polygon& a, const Polygon& b, const FormFactorOptions& options, int cells) {
-  if (options.engine == Engine::analytic) return polygon_polygon_ff(a, b);
+  // Without occluders the hybrid engine's value is the analytic one.
+  if (options.engine == Engine::analytic || options.engine == Engine::hybrid) return polygon_polygon_ff(a, b);
   const std::vector<Polygon> parts = split_polygon(a, a.longest_edge() / cells);
   if (options.engine == Engine::hemicube) {
     Hemicube cube(options.hemicube_res);

@@ -9,7 +9,11 @@
 //    stratified points of the shooter, V_s by a shadow ray; an element takes the mean of
 //    its corners;
 //  * analytic: the exact contour integral of polygon_ff.hpp at each corner, times the
-//    fraction of the S shadow rays that are unblocked.
+//    fraction of the S shadow rays that are unblocked;
+//  * hybrid (Baum, Rushmeier & Winget 1989): the hemicube for visibility only, the
+//    exact contour integral from each element's centroid for the value,
+//    F_{e->i} = v_e F_{de->i}, v_e = (dF of the pixels showing e) / (dF of all pixels
+//    e covers); elements too small to cover a pixel take one shadow ray.
 //
 // Both ray engines give the shooter's row by reciprocity, F_{i->k} = (1/A_i) sum_{e in k}
 // A_e F_{e->i}. Results depend only on the model, never on the thread count.
@@ -24,10 +28,10 @@
 
 namespace fest::radiosity {
 
-enum class Engine { hemicube, raycast, analytic };
+enum class Engine { hemicube, raycast, analytic, hybrid };
 
 struct FormFactorOptions {
-  Engine engine = Engine::hemicube;
+  Engine engine = Engine::hybrid;
   int hemicube_res = 256;
   int samples = 16;
   int threads = 1;
@@ -63,7 +67,7 @@ class FormFactors {
   std::vector<int> active_;
   std::vector<const Polygon*> items_;
   std::vector<std::uint8_t> draw_;
-  std::vector<double> ff_;
+  std::vector<double> ff_, cover_, vis_;
 };
 
 // F_{A->B} between two polygons (the formfactor subcommand and tests): analytic by

@@ -68,7 +68,8 @@ Hemicube::Hemicube(int resolution) : res_(resolution) {
 
 void Hemicube::project(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
                        const std::vector<const Polygon*>& items, const std::vector<std::uint8_t>& draw, double near,
-                       int threads, std::vector<double>& ff) {
+                       int threads, std::vector<double>& ff, std::vector<double>* coverage,
+                       std::vector<double>* visible) {
   Eigen::Vector3d u, v;
   tangent_frame(normal, u, v);
   const std::size_t n = items.size();
@@ -90,13 +91,23 @@ void Hemicube::project(const Eigen::Vector3d& centre, const Eigen::Vector3d& nor
     const bool front = s.dot(centre - p.p[0]) > 0;
     item_id_[k] = front ? static_cast<std::int32_t>(k) : -1;
   }
-  parallel_for(6, threads, [&](std::size_t t) { run_task(static_cast<int>(t), items, draw, near); });
+  parallel_for(6, threads, [&](std::size_t t) { run_task(static_cast<int>(t), items, near, coverage != nullptr); });
   ff.assign(n, 0.0);
   for (int t = 0; t < 6; ++t)
     for (std::size_t k = 0; k < n; ++k) ff[k] += tasks_[t].row[k];
+  if (coverage) {
+    coverage->assign(n, 0.0);
+    for (int t = 0; t < 6; ++t)
+      for (std::size_t k = 0; k < n; ++k) (*coverage)[k] += tasks_[t].cover[k];
+  }
+  if (coverage && visible) {
+    visible->assign(n, 0.0);
+    for (int t = 0; t < 6; ++t)
+      for (std::size_t k = 0; k < n; ++k) (*visible)[k] += tasks_[t].vis[k];
+  }
 }
 
-void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, const std::vector<std::uint8_t>&, double near) {
+void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, double near, bool coverage) {
   Task& task = tasks_[t];
   const TaskFrame& fr = kFrames[t];
   const int w = res_, hh = res_ / 2;
@@ -104,6 +115,12 @@ void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, const s
   std::fill(task.depth.begin(), task.depth.end(), 0.0f);  // 1/z: 0 is infinitely far
   std::fill(task.id.begin(), task.id.end(), std::numeric_limits<std::int32_t>::min());
   task.row.assign(items.size(), 0.0);
+  if (coverage) {
+    task.cover.assign(items.size(), 0.0);
+    task.seen.assign(task.id.size(), -1);
+    task.tie.assign(task.id.size(), -1);
+  }
+  double* cover = coverage ? task.cover.data() : nullptr;
 
   std::array<V, 12> a, b;
   for (std::size_t k = 0; k < items.size(); ++k) {
@@ -204,12 +221,28 @@ void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, const s
           if (w0 < -eps || w1 < -eps || w2 < -eps) continue;  // rounding at the span ends
           const float d = static_cast<float>(w0 * iz[i0] + w1 * iz[i1] + w2 * iz[i2]);
           const std::size_t pix = static_cast<std::size_t>(iy) * w + ix;
+          if (cover && id >= 0 && task.seen[pix] != key) {
+            cover[k] += task.dff[pix];
+            task.seen[pix] = key;
+          }
           // Nearest wins; on equal depth the lower item (occluders count by their index).
           const std::int32_t cur = task.id[pix];
           const std::int32_t cur_key = cur == std::numeric_limits<std::int32_t>::min() ? cur : (cur >= 0 ? cur : -cur - 2);
-          if (d > task.depth[pix] || (d == task.depth[pix] && key < cur_key)) {
+          const float old = task.depth[pix];
+          if (cover && std::abs(d - old) <= 1e-5f * old) {
+            // A depth tie (neighbours meeting at an edge): the lower item wins, the other
+            // is remembered as visible too.
+            if (key < cur_key) {
+              task.tie[pix] = cur >= 0 ? cur : -1;
+              task.depth[pix] = d;
+              task.id[pix] = stored;
+            } else if (key != cur_key) {
+              task.tie[pix] = id;
+            }
+          } else if (d > old || (d == old && key < cur_key)) {
             task.depth[pix] = d;
             task.id[pix] = stored;
+            if (cover) task.tie[pix] = -1;
           }
         }
       }
@@ -217,6 +250,11 @@ void Hemicube::run_task(int t, const std::vector<const Polygon*>& items, const s
   }
   for (std::size_t pix = 0; pix < task.id.size(); ++pix)
     if (task.id[pix] >= 0) task.row[static_cast<std::size_t>(task.id[pix])] += task.dff[pix];
+  if (coverage) {
+    task.vis = task.row;
+    for (std::size_t pix = 0; pix < task.id.size(); ++pix)
+      if (task.tie[pix] >= 0) task.vis[static_cast<std::size_t>(task.tie[pix])] += task.dff[pix];
+  }
 }
 
 }  // namespace fest::radiosity

@@ -34,8 +34,13 @@ class Hemicube {
   // Items with draw[k] == 0 are ignored (the shooter's own elements); items facing away
   // from the centre occlude but receive nothing. `near` is a length below which depths
   // are clipped (a tiny fraction of the scene size).
+  // With `coverage` and `visible`, also per item the sum of dF over every pixel it
+  // covers whatever lies in front of it, and over the pixels where it is visible
+  // counting depth ties (a pixel centre on the edge two neighbours share shows both):
+  // visible / coverage is the item's visible fraction (the hybrid engine).
   void project(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const std::vector<const Polygon*>& items,
-               const std::vector<std::uint8_t>& draw, double near, int threads, std::vector<double>& ff);
+               const std::vector<std::uint8_t>& draw, double near, int threads, std::vector<double>& ff,
+               std::vector<double>* coverage = nullptr, std::vector<double>* visible = nullptr);
 
  private:
   struct Task {
@@ -43,8 +48,12 @@ class Hemicube {
     std::vector<float> depth;
     std::vector<std::int32_t> id;
     std::vector<double> row;
+    std::vector<double> cover;
+    std::vector<std::int32_t> seen;  // last item counted in cover, per pixel (fan triangles share edges)
+    std::vector<std::int32_t> tie;   // an item at the same depth as the winner, or -1
+    std::vector<double> vis;
   };
-  void run_task(int t, const std::vector<const Polygon*>& items, const std::vector<std::uint8_t>& draw, double near);
+  void run_task(int t, const std::vector<const Polygon*>& items, double near, bool coverage);
 
   int res_;
   double raw_sum_ = 0;

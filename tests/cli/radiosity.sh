@@ -29,9 +29,14 @@ check "object named from the header comment" jq -e '.scene.objects == ["box"]' "
 sed 's/refl_g/gloss_g/' "$FEST_FIXTURES/radiosity/furnace_scene.ply" >"$WORK/norefl.ply"
 run radiosity solve "$WORK/norefl.ply"; expect_clean_failure 3 radiosity; expect_stderr_has 'refl_r, refl_g, refl_b'
 
+case_ "furnace with the default engine (hybrid: hemicube visibility, exact values): B = 2 to 1e-3"
+run radiosity solve "$EX/furnace.json" --emission exitance --hemicube-res 64 --tol 1e-6 --levels 0 --report "$WORK/fhy.json" -o /dev/null
+expect_status 0
+check "min >= 1.998, max <= 2.002" jq -e '(.radiosity.min | all(. >= 1.998)) and (.radiosity.max | all(. <= 2.002))' "$WORK/fhy.json"
+
 case_ "furnace rho 0.9 with the hemicube: mean B = 10 (energy), every element within 5 %"
 sed 's/0.5, 0.5, 0.5/0.9, 0.9, 0.9/' "$EX/furnace.json" >"$WORK/furnace9.json"
-run radiosity solve "$WORK/furnace9.json" --emission exitance --hemicube-res 128 --tol 1e-4 --max-shots 100000 --levels 0 \
+run radiosity solve "$WORK/furnace9.json" --emission exitance --ff hemicube --hemicube-res 128 --tol 1e-4 --max-shots 100000 --levels 0 \
   --report "$WORK/f9.json" -o /dev/null
 expect_status 0
 check "mean 10 +- 0.01" jq -e '.radiosity.mean | all(. > 9.99 and . < 10.01)' "$WORK/f9.json"

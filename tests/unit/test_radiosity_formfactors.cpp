@@ -10,6 +10,7 @@
 #include "radiosity/form_factors.hpp"
 #include "radiosity/hemicube.hpp"
 #include "radiosity/polygon_ff.hpp"
+#include "radiosity/scene.hpp"
 #include "radiosity_scenes.hpp"
 
 namespace fest::radiosity {
@@ -78,6 +79,63 @@ TEST(RadiosityFormFactors, RaycastMatchesTheSquares) {
   // Wallace's disc approximation underestimates where the receiver nears the shared
   // edge (r^2 comparable to A/S): the error is the method's, checked loosely.
   EXPECT_NEAR(polygon_form_factor(bottom(), wall(), o, 16), 0.20004, 0.20004 * 0.15);
+}
+
+TEST(RadiosityFormFactors, HybridMatchesTheClosedFormUnderALamp) {
+  // A 100 x 100 lamp 300 above a floor of 10 x 10 elements: the hybrid engine's F_{e->lamp}
+  // is the exact point value at each element centre (Howell B-3), no pixel aliasing.
+  Model m;
+  m.diagonal = 600;
+  auto add_patch = [&](const Polygon& poly, int split) {
+    Patch p;
+    p.poly = poly;
+    p.area = poly.area();
+    p.centroid = poly.centroid();
+    p.normal = poly.normal();
+    p.object = 0;
+    m.patches.push_back(p);
+    for (const Polygon& q : split_polygon(poly, poly.longest_edge() / split)) {
+      Element e;
+      e.poly = q;
+      e.area = q.area();
+      e.centroid = q.centroid();
+      e.normal = q.normal();
+      e.patch = static_cast<int>(m.patches.size()) - 1;
+      m.patches.back().elements.push_back(static_cast<int>(m.elements.size()));
+      m.elements.push_back(e);
+    }
+  };
+  add_patch(square(V(0, 0, 0), V(400, 0, 0), V(400, 400, 0), V(0, 400, 0)), 40);     // floor, +z
+  add_patch(square(V(150, 150, 300), V(150, 250, 300), V(250, 250, 300), V(250, 150, 300)), 1);  // lamp, -z
+  m.occluders = {m.patches[0].poly, m.patches[1].poly};
+  m.objects.resize(1);
+  FormFactorOptions o;
+  o.engine = Engine::hybrid;
+  o.hemicube_res = 256;
+  FormFactors ff(m, o);
+  std::vector<double> recv, row;
+  ff.shoot(1, recv, row);
+  double worst = 0;
+  // Against the contour integral at the element centres (tied to Howell B-3 by
+  // PointToSquareMatchesClosedForm).
+  for (int e : m.patches[0].elements) {
+    const V c = m.elements[e].centroid;
+    const double exact = point_polygon_ff(c, V(0, 0, 1), m.patches[1].poly);
+    worst = std::max(worst, std::abs(recv[e] - exact) / exact);
+  }
+  EXPECT_LT(worst, 1e-6);
+  // The plain hemicube's pixel counts alias on 10-unit elements (about 18 pixels each).
+  FormFactorOptions h = o;
+  h.engine = Engine::hemicube;
+  FormFactors fh(m, h);
+  fh.shoot(1, recv, row);
+  double worst_h = 0;
+  for (int e : m.patches[0].elements) {
+    const V c = m.elements[e].centroid;
+    worst_h = std::max(worst_h, std::abs(recv[e] - point_polygon_ff(c, V(0, 0, 1), m.patches[1].poly)) /
+                                    point_polygon_ff(c, V(0, 0, 1), m.patches[1].poly));
+  }
+  EXPECT_GT(worst_h, 0.02);
 }
 
 TEST(RadiosityFormFactors, HemicubeSeesTheWholeClosedCube) {

@@ -39,6 +39,7 @@ TEST(RadiositySolver, FurnaceHemicube) {
   for (double rho : {0.5, 0.9}) {
     Model m = furnace_model(rho, 0.25);
     FormFactorOptions fo;
+    fo.engine = Engine::hemicube;
     fo.hemicube_res = 128;
     FormFactors ff(m, fo);
     SolveOptions so;
@@ -53,6 +54,24 @@ TEST(RadiositySolver, FurnaceHemicube) {
       area += e.area;
     }
     EXPECT_NEAR(mean / area, 1 / (1 - rho), 1e-3 / (1 - rho)) << "rho " << rho;  // energy is exact
+  }
+}
+
+TEST(RadiositySolver, FurnaceHybrid) {
+  // Hemicube visibility with exact point-to-polygon values (Baum et al. 1989): in the
+  // closed convex box every element sees everything, its values sum to 1, and
+  // B = E/(1 - rho) holds per element.
+  for (double rho : {0.5, 0.9}) {
+    Model m = furnace_model(rho, 0.25);
+    FormFactorOptions fo;
+    fo.engine = Engine::hybrid;
+    fo.hemicube_res = 64;
+    FormFactors ff(m, fo);
+    SolveOptions so;
+    so.tol = 1e-6;
+    so.max_shots = 100000;
+    solve(m, ff, so);
+    EXPECT_LT(max_rel_diff_to(m, 1 / (1 - rho)), 1e-3) << "rho " << rho;
   }
 }
 
@@ -76,6 +95,7 @@ TEST(RadiositySolver, FurnaceAnalytic) {
 TEST(RadiositySolver, EnergyIsConservedPerShotAndOverall) {
   Model m = furnace_model(0.5, 0.5);
   FormFactorOptions fo;
+  fo.engine = Engine::hemicube;
   fo.hemicube_res = 128;
   FormFactors ff(m, fo);
   SolveOptions so;

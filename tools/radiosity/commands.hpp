@@ -10,7 +10,7 @@ namespace fest::radiosity_tool {
 struct SolveArgs {
   std::string scene = "-";   // JSON scene (or - for standard input)
   std::string output = "-";  // lit PLY
-  std::string ff = "hemicube";
+  std::string ff = "hybrid";
   int hemicube_res = 256;
   int samples = 16;
   std::string solver = "orpr";

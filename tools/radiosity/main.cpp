@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
   CLI::App* sv = app.add_subcommand("solve", "Light a scene (JSON) and write the lit PLY");
   sv->add_option("scene", s.scene, "Scene JSON (- or nothing: standard input)");
   sv->add_option("-o,--output", s.output, "Lit PLY (- : standard output)");
-  sv->add_option("--ff", s.ff, "Form factors: hemicube, raycast or analytic")
-      ->check(CLI::IsMember({"hemicube", "raycast", "analytic"}));
+  sv->add_option("--ff", s.ff, "Form factors: hybrid (default: hemicube visibility, exact values), hemicube, raycast or analytic")
+      ->check(CLI::IsMember({"hemicube", "hybrid", "raycast", "analytic"}));
   sv->add_option("--hemicube-res", s.hemicube_res, "Hemicube top face resolution H (even)")->check(CLI::Range(2, 8192));
   sv->add_option("--samples", s.samples, "Points per shooter for the ray engines")->check(CLI::Range(1, 4096));
   sv->add_option("--solver", s.solver, "orpr, pr, sor or overshoot")
@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
   CLI::App* fc = app.add_subcommand("formfactor", "Print F_AB and F_BA of two polygons (one-face meshes)");
   fc->add_option("a", f.a, "Polygon A (mesh file with one face)")->required();
   fc->add_option("b", f.b, "Polygon B")->required();
-  fc->add_option("--ff", f.ff, "analytic, hemicube or raycast")->check(CLI::IsMember({"hemicube", "raycast", "analytic"}));
+  fc->add_option("--ff", f.ff, "analytic, hemicube or raycast (hybrid = analytic without occluders)")
+      ->check(CLI::IsMember({"hemicube", "hybrid", "raycast", "analytic"}));
   fc->add_option("--hemicube-res", f.hemicube_res, "Hemicube resolution")->check(CLI::Range(2, 8192));
   fc->add_option("--samples", f.samples, "Points on B for raycast")->check(CLI::Range(1, 4096));
   fc->add_option("--cells", f.cells, "A (and for the hemicube B) cut into cells x cells")->check(CLI::Range(1, 256));

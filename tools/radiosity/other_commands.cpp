@@ -51,7 +51,8 @@ int run_formfactor(const FormFactorArgs& args) {
   if (args.ff == "hemicube") o.engine = radiosity::Engine::hemicube;
   else if (args.ff == "raycast") o.engine = radiosity::Engine::raycast;
   else if (args.ff == "analytic") o.engine = radiosity::Engine::analytic;
-  else throw usage_error("--ff must be hemicube, raycast or analytic, not '{}'", args.ff);
+  else if (args.ff == "hybrid") o.engine = radiosity::Engine::hybrid;
+  else throw usage_error("--ff must be hemicube, hybrid, raycast or analytic, not '{}'", args.ff);
   if (o.engine == radiosity::Engine::hemicube && (args.hemicube_res < 2 || args.hemicube_res % 2 != 0))
     throw usage_error("--hemicube-res must be even and at least 2");
   o.hemicube_res = args.hemicube_res;

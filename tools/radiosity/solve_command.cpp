@@ -33,7 +33,8 @@ radiosity::Engine engine_of(const std::string& s) {
   if (s == "hemicube") return radiosity::Engine::hemicube;
   if (s == "raycast") return radiosity::Engine::raycast;
   if (s == "analytic") return radiosity::Engine::analytic;
-  throw usage_error("--ff must be hemicube, raycast or analytic, not '{}'", s);
+  if (s == "hybrid") return radiosity::Engine::hybrid;
+  throw usage_error("--ff must be hemicube, hybrid, raycast or analytic, not '{}'", s);
 }
 
 radiosity::Solver solver_of(const std::string& s) {
@@ -61,7 +62,7 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
   const radiosity::Solver solver = solver_of(args.solver);
   if (args.emission != "radiance" && args.emission != "exitance")
     throw usage_error("--emission must be radiance or exitance, not '{}'", args.emission);
-  if (engine == radiosity::Engine::hemicube && (args.hemicube_res < 2 || args.hemicube_res % 2 != 0))
+  if ((engine == radiosity::Engine::hemicube || engine == radiosity::Engine::hybrid) && (args.hemicube_res < 2 || args.hemicube_res % 2 != 0))
     throw usage_error("--hemicube-res must be even and at least 2");
   if (args.omega >= 0 && solver == radiosity::Solver::sor && !(args.omega >= 1 && args.omega < 2))
     throw usage_error("--omega for sor must lie in [1, 2)");
@@ -205,7 +206,7 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
                   {"output_s", output_s},
                   {"visibility_fraction", total > 0 ? stats.visibility_seconds / total : 0.0}}},
     };
-    if (engine == radiosity::Engine::hemicube) {
+    if (ff.hemicube()) {
       report["hemicube_res"] = args.hemicube_res;
       report["hemicube_raw_sum"] = ff.hemicube()->raw_sum();
     } else {
