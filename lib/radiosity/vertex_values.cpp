@@ -60,11 +60,21 @@ VertexValues vertex_values(const Model& model, double crease_degrees) {
   return vv;
 }
 
-std::vector<std::array<std::uint8_t, 3>> display_colours(const std::vector<Rgb>& B, double exposure, double* used) {
+std::vector<std::uint8_t> reflector_vertices(const Model& model, const VertexValues& vv) {
+  std::vector<std::uint8_t> r(vv.object.size());
+  for (std::size_t v = 0; v < r.size(); ++v) r[v] = (model.objects[vv.object[v]].emission == 0).all() ? 1 : 0;
+  return r;
+}
+
+std::vector<std::array<std::uint8_t, 3>> display_colours(const std::vector<Rgb>& B, double exposure, double* used,
+                                                         const std::vector<std::uint8_t>& reflector) {
   double k = exposure;
   if (!(k > 0)) {
     std::vector<double> y;
-    for (const Rgb& b : B) y.push_back(luminance(b) / M_PI);
+    for (std::size_t v = 0; v < B.size(); ++v)
+      if (reflector.empty() || reflector[v]) y.push_back(luminance(B[v]) / M_PI);
+    if (y.empty())
+      for (const Rgb& b : B) y.push_back(luminance(b) / M_PI);
     double p99 = 0;
     if (!y.empty()) {
       const std::size_t idx = std::min(y.size() - 1, static_cast<std::size_t>(std::floor(0.99 * (y.size() - 1))));

@@ -26,8 +26,13 @@ struct VertexValues {
 VertexValues vertex_values(const Model& model, double crease_degrees);
 
 // c = 255 clamp((k L)^(1/2.2)), L = B / pi; k = exposure, or 1 / (99th percentile of the
-// vertex luminance) when exposure <= 0. Returns the k used through `used`.
-std::vector<std::array<std::uint8_t, 3>> display_colours(const std::vector<Rgb>& B, double exposure, double* used);
+// vertex luminance) when exposure <= 0, over the vertices with reflector[v] != 0 when
+// any (emitters would otherwise set the exposure whenever they hold more than 1 % of the
+// vertices). Returns the k used through `used`.
+std::vector<std::array<std::uint8_t, 3>> display_colours(const std::vector<Rgb>& B, double exposure, double* used,
+                                                         const std::vector<std::uint8_t>& reflector = {});
+// 1 for the vertices of objects that emit nothing.
+std::vector<std::uint8_t> reflector_vertices(const Model& model, const VertexValues& vv);
 
 struct RadiosityRange {
   Rgb min = Rgb::Zero(), max = Rgb::Zero(), mean = Rgb::Zero();  // mean weighted by area

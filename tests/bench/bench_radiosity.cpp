@@ -4,7 +4,7 @@
 // solvers' shot counts; the furnace cube with 6 x 32 x 32 patches (target < 10 s).
 // One JSON line per case; peak memory is the process's ru_maxrss after the case.
 //
-//   bench_radiosity [--threads 2] [--patch-size 30] [--quick]
+//   bench_radiosity [--threads 2] [--patch-size 30] [--ff hybrid|hemicube] [--quick] [--no-furnace]
 
 #include <sys/resource.h>
 
@@ -51,12 +51,15 @@ double peak_mb() {
   return u.ru_maxrss / 1024.0;
 }
 
+Engine g_engine = Engine::hybrid;
+
 void run_case(const char* name, const Scene& scene, const MeshingOptions& mo, Solver solver, int res, int levels,
               int threads, long max_shots) {
   const auto t0 = Clock::now();
   const double c0 = cpu_seconds();
   Model m = build_model(scene, mo);
   FormFactorOptions fo;
+  fo.engine = g_engine;
   fo.hemicube_res = res;
   fo.threads = threads;
   FormFactors ff(m, fo);
@@ -70,6 +73,7 @@ void run_case(const char* name, const Scene& scene, const MeshingOptions& mo, So
   const double total = std::chrono::duration<double>(Clock::now() - t0).count();
   nlohmann::json j = {{"case", name},
                       {"solver", solver_name(solver)},
+                      {"ff", g_engine == Engine::hybrid ? "hybrid" : "hemicube"},
                       {"patches", m.patches.size()},
                       {"elements", m.active_elements().size()},
                       {"hemicube_res", res},
@@ -93,11 +97,13 @@ void run_case(const char* name, const Scene& scene, const MeshingOptions& mo, So
 int main(int argc, char** argv) {
   int threads = 2;
   double patch = 30;
-  bool quick = false;
+  bool quick = false, furnace = true;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--patch-size") && i + 1 < argc) patch = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--ff") && i + 1 < argc) g_engine = std::strcmp(argv[++i], "hemicube") ? Engine::hybrid : Engine::hemicube;
+    else if (!std::strcmp(argv[i], "--no-furnace")) furnace = false;
   }
   threads = fest::resolve_threads(threads);
   MeshingOptions cornell;
@@ -109,6 +115,7 @@ int main(int argc, char** argv) {
   run_case("cornell", box, cornell, Solver::overshoot, 256, 0, threads, cap);
   if (!quick) run_case("cornell", box, cornell, Solver::pr, 256, 0, threads, cap);  // the anchor
   run_case("cornell_adaptive", box, cornell, Solver::orpr, 256, 2, threads, cap);
+  if (!furnace) return 0;
   MeshingOptions f;
   f.patch_size = 1.0 / 32;
   f.element_size = 1.0 / 32;

@@ -132,7 +132,8 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
   const auto t_out = Clock::now();
   const radiosity::VertexValues vv = radiosity::vertex_values(model, args.crease);
   double exposure = 0;
-  const auto colours = radiosity::display_colours(vv.B, args.exposure, &exposure);
+  const auto colours =
+      radiosity::display_colours(vv.B, args.exposure, &exposure, radiosity::reflector_vertices(model, vv));
   const std::string ply = lit_ply(model, vv, colours);
   std::vector<std::pair<std::string, std::string>> split;
   if (!args.split_objects.empty())
