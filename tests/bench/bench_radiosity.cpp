@@ -4,7 +4,7 @@
 // solvers' shot counts; the furnace cube with 6 x 32 x 32 patches (target < 10 s).
 // One JSON line per case; peak memory is the process's ru_maxrss after the case.
 //
-//   bench_radiosity [--threads 2] [--patch-size 30] [--ff hybrid|hemicube] [--quick] [--no-furnace]
+//   bench_radiosity [--threads 2] [--patch-size 30] [--ff hybrid|hemicube] [--quick] [--no-furnace | --furnace-only]
 
 #include <sys/resource.h>
 
@@ -97,13 +97,14 @@ void run_case(const char* name, const Scene& scene, const MeshingOptions& mo, So
 int main(int argc, char** argv) {
   int threads = 2;
   double patch = 30;
-  bool quick = false, furnace = true;
+  bool quick = false, furnace = true, cornell_cases = true;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--patch-size") && i + 1 < argc) patch = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--ff") && i + 1 < argc) g_engine = std::strcmp(argv[++i], "hemicube") ? Engine::hybrid : Engine::hemicube;
     else if (!std::strcmp(argv[i], "--no-furnace")) furnace = false;
+    else if (!std::strcmp(argv[i], "--furnace-only")) cornell_cases = false;
   }
   threads = fest::resolve_threads(threads);
   MeshingOptions cornell;
@@ -111,10 +112,12 @@ int main(int argc, char** argv) {
   cornell.element_size = patch / 2;
   const Scene box = cornell_box();
   const long cap = 1000000;
-  run_case("cornell", box, cornell, Solver::orpr, 256, 0, threads, cap);
-  run_case("cornell", box, cornell, Solver::overshoot, 256, 0, threads, cap);
-  if (!quick) run_case("cornell", box, cornell, Solver::pr, 256, 0, threads, cap);  // the anchor
-  run_case("cornell_adaptive", box, cornell, Solver::orpr, 256, 2, threads, cap);
+  if (cornell_cases) {
+    run_case("cornell", box, cornell, Solver::orpr, 256, 0, threads, cap);
+    run_case("cornell", box, cornell, Solver::overshoot, 256, 0, threads, cap);
+    if (!quick) run_case("cornell", box, cornell, Solver::pr, 256, 0, threads, cap);  // the anchor
+    run_case("cornell_adaptive", box, cornell, Solver::orpr, 256, 2, threads, cap);
+  }
   if (!furnace) return 0;
   MeshingOptions f;
   f.patch_size = 1.0 / 32;
