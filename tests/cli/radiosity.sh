@@ -118,6 +118,11 @@ expect_status 0
 expect_stderr_has 'open: 4 edge'
 check "closed false" jq -e '.scene.closed == false and .scene.open_edges == 4' "$WORK/open_r.json"
 
+case_ "--help, --version, a missing scene (exit 4)"
+run radiosity --help; expect_status 0; check "usage" grep -q "Usage" "$out"
+run radiosity --version; expect_status 0; check "names fest" grep -q "(fest)" "$out"
+run radiosity solve "$WORK/does-not-exist.json"; expect_clean_failure 4 radiosity; expect_stderr_has 'does-not-exist'
+
 case_ "usage errors: exit 2"
 run radiosity solve "$EX/furnace.json" --hemicube-res 7; expect_clean_failure 2 radiosity
 run radiosity solve "$EX/furnace.json" --solver jacobi; expect_clean_failure 2 radiosity
