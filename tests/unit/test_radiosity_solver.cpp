@@ -266,6 +266,50 @@ TEST(RadiositySolver, AdaptiveSubdivisionRefinesShadowEdgesOnly) {
   EXPECT_GT(r.max.maxCoeff(), 0);
 }
 
+TEST(RadiositySolver, AdaptiveSplitsFollowTheShadowEdge) {
+  // A small lamp 1000 above a 400 x 400 floor, a 100 x 100 blocker half way: the shadow
+  // is the square [100, 300]^2 with a narrow penumbra; the lamp's own falloff changes the
+  // floor by about 1 % per element. Only elements at the shadow edge may split.
+  using V = Eigen::Vector3d;
+  auto quad = [](const char* name, double rho, double e, V a, V b, V c, V d) {
+    SceneObject o;
+    o.name = name;
+    o.reflectance = Rgb::Constant(rho);
+    o.emission = Rgb::Constant(e);
+    o.vertices = {a, b, c, d};
+    o.faces = {{0, 1, 2, 3}};
+    return o;
+  };
+  Scene s;
+  s.objects.push_back(quad("floor", 0.5, 0, V(0, 0, 0), V(400, 0, 0), V(400, 400, 0), V(0, 400, 0)));
+  s.objects.push_back(quad("lamp", 0, 1, V(190, 190, 1000), V(190, 210, 1000), V(210, 210, 1000), V(210, 190, 1000)));
+  s.objects.push_back(quad("blocker", 0, 0, V(150, 150, 500), V(150, 250, 500), V(250, 250, 500), V(250, 150, 500)));
+  MeshingOptions mo;
+  mo.patch_size = 100;
+  mo.element_size = 25;
+  mo.emission_is_radiance = false;
+  Model m = build_model(s, mo);
+  FormFactorOptions fo;
+  fo.hemicube_res = 128;
+  FormFactors ff(m, fo);
+  SolveOptions so;
+  so.levels = 1;
+  so.grad = 0.05;
+  solve(m, ff, so);
+  long near_edge = 0, away = 0;
+  for (const Element& e : m.elements) {
+    if (!e.active || e.level == 0 || m.patches[e.patch].object != 0) continue;
+    // Distance of the child's centre to the shadow square's boundary.
+    const double dx = std::abs(e.centroid.x() - 200), dy = std::abs(e.centroid.y() - 200);
+    const double to_edge = std::max(dx, dy) <= 100 ? 100 - std::max(dx, dy)
+                                                   : std::hypot(std::max(dx - 100, 0.0), std::max(dy - 100, 0.0));
+    if (to_edge <= 40) ++near_edge;
+    else ++away;
+  }
+  EXPECT_GT(near_edge, 40);
+  EXPECT_EQ(away, 0);
+}
+
 TEST(RadiositySolver, BadScenesAreRefused) {
   auto refused = [](Scene s, const char* what) {
     try {
