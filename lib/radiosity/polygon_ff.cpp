@@ -8,19 +8,21 @@
 namespace fest::radiosity {
 
 double point_polygon_ff(const Eigen::Vector3d& y, const Eigen::Vector3d& n, const Polygon& poly) {
-  // Clip to n . (p - y) >= 0 (Sutherland-Hodgman against one plane).
-  std::vector<Eigen::Vector3d> in;
+  // Clip to n . (p - y) >= 0 (Sutherland-Hodgman against one plane; at most 5 corners
+  // remain of 4, kept on the stack: this runs once per element per shot).
+  Eigen::Vector3d in[8];
+  int m = 0;
   for (int k = 0; k < poly.n; ++k) {
     const Eigen::Vector3d& a = poly.p[k];
     const Eigen::Vector3d& b = poly.p[(k + 1) % poly.n];
     const double da = n.dot(a - y), db = n.dot(b - y);
-    if (da >= 0) in.push_back(a);
-    if ((da >= 0) != (db >= 0)) in.push_back(a + (b - a) * (da / (da - db)));
+    if (da >= 0) in[m++] = a;
+    if ((da >= 0) != (db >= 0)) in[m++] = a + (b - a) * (da / (da - db));
   }
-  if (in.size() < 3) return 0;
+  if (m < 3) return 0;
   double sum = 0;
-  for (std::size_t k = 0; k < in.size(); ++k) {
-    const Eigen::Vector3d r0 = in[k] - y, r1 = in[(k + 1) % in.size()] - y;
+  for (int k = 0; k < m; ++k) {
+    const Eigen::Vector3d r0 = in[k] - y, r1 = in[(k + 1) % m] - y;
     const Eigen::Vector3d c = r0.cross(r1);
     const double cn = c.norm();
     if (cn <= 0) continue;
