@@ -34,6 +34,15 @@ run radiosity solve "$EX/furnace.json" --emission exitance --hemicube-res 64 --t
 expect_status 0
 check "min >= 1.998, max <= 2.002" jq -e '(.radiosity.min | all(. >= 1.998)) and (.radiosity.max | all(. <= 2.002))' "$WORK/fhy.json"
 
+case_ "mesh file named by the scene (relative to the scene's folder), scaled by a transform: still B = 2"
+mkdir -p "$WORK/meshdir"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n' >"$WORK/meshdir/box.obj"
+printf '{"objects": [{"name": "box", "mesh": "box.obj", "reflectance": 0.5, "emission": 1, "transform": [3,0,0,0, 0,3,0,0, 0,0,3,0, 0,0,0,1]}]}' >"$WORK/meshdir/scene.json"
+run radiosity solve "$WORK/meshdir/scene.json" --emission exitance --ff analytic --samples 4 --tol 1e-6 --levels 0 \
+  --patch-size 1 --report "$WORK/mesh_r.json" -o /dev/null
+expect_status 0
+check "B = 2 to 1e-3, diagonal 3 sqrt 3" jq -e '(.radiosity.min | all(. >= 1.998)) and (.radiosity.max | all(. <= 2.002)) and ((.scene.diagonal - 5.196152) | fabs < 1e-5)' "$WORK/mesh_r.json"
+
 case_ "furnace rho 0.9 with the hemicube: mean B = 10 (energy), every element within 5 %"
 sed 's/0.5, 0.5, 0.5/0.9, 0.9, 0.9/' "$EX/furnace.json" >"$WORK/furnace9.json"
 run radiosity solve "$WORK/furnace9.json" --emission exitance --ff hemicube --hemicube-res 128 --tol 1e-4 --max-shots 100000 --levels 0 \
