@@ -1,0 +1,206 @@
+#include "formats/mesh/attributed_ply.hpp"
+
+#include <cstring>
+
+#include "core/error.hpp"
+
+namespace fest::formats {
+namespace {
+
+std::size_t type_size(const std::string& t) {
+  if (t == "float" || t == "int") return 4;
+  if (t == "double") return 8;
+  if (t == "uchar") return 1;
+  throw bad_input("PLY writer: unknown property type '{}'", t);
+}
+
+template <typename T>
+void put(std::string& out, T v) {
+  char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));  // little-endian hosts only (the project builds on amd64/arm64)
+  out.append(b, sizeof(T));
+}
+
+void put_value(std::string& out, const std::string& type, double v) {
+  if (type == "float") put(out, static_cast<float>(v));
+  else if (type == "double") put(out, v);
+  else if (type == "int") put(out, static_cast<std::int32_t>(v));
+  else put(out, static_cast<std::uint8_t>(v));
+}
+
+std::size_t column_length(const std::vector<PlyColumn>& cols, const char* element) {
+  if (cols.empty()) return 0;
+  const std::size_t n = cols.front().values.size();
+  for (const PlyColumn& c : cols) {
+    type_size(c.type);
+    if (c.values.size() != n)
+      throw bad_input("PLY writer: {} property {} has {} values, {} expected", element, c.name, c.values.size(), n);
+  }
+  return n;
+}
+
+}  // namespace
+
+std::string write_attributed_ply(const AttributedPly& ply) {
+  const std::size_t nv = column_length(ply.vertex, "vertex");
+  const std::size_t nf = ply.faces.size();
+  if (!ply.face.empty() && column_length(ply.face, "face") != nf)
+    throw bad_input("PLY writer: face properties do not match the {} faces", nf);
+  std::string out = "ply\nformat binary_little_endian 1.0\n";
+  for (const std::string& c : ply.comments) {
+    if (c.find_first_of("\r\n") != std::string::npos) throw bad_input("PLY writer: a comment holds a line break");
+    out += "comment " + c + "\n";
+  }
+  out += "element vertex " + std::to_string(nv) + "\n";
+  for (const PlyColumn& c : ply.vertex) out += "property " + c.type + " " + c.name + "\n";
+  out += "element face " + std::to_string(nf) + "\n";
+  out += "property list uchar int vertex_indices\n";
+  for (const PlyColumn& c : ply.face) out += "property " + c.type + " " + c.name + "\n";
+  out += "end_header\n";
+  for (std::size_t v = 0; v < nv; ++v)
+    for (const PlyColumn& c : ply.vertex) put_value(out, c.type, c.values[v]);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto& face = ply.faces[f];
+    if (face.size() < 3 || face.size() > 255) throw bad_input("PLY writer: face {} has {} corners", f, face.size());
+    put(out, static_cast<std::uint8_t>(face.size()));
+    for (std::uint32_t i : face) {
+      if (i >= nv) throw bad_input("PLY writer: face {} names vertex {} of {}", f, i, nv);
+      put(out, static_cast<std::int32_t>(i));
+    }
+    for (const PlyColumn& c : ply.face) put_value(out, c.type, c.values[f]);
+  }
+  return out;
+}
+
+}  // namespace fest::formats
+
+// --- reading -------------------------------------------------------------------------
+
+#include <cmath>
+
+#include "formats/mesh/ply_header.hpp"
+#include "formats/mesh/text_cursor.hpp"
+
+namespace fest::formats {
+namespace {
+
+using mesh_detail::PlyEncoding;
+using mesh_detail::PlyType;
+
+// One value at a time from the body (the same rules as the mesh reader's sources).
+class Source {
+ public:
+  Source(std::string_view bytes, const mesh_detail::PlyHeader& h)
+      : bytes_(bytes), pos_(h.body_offset), encoding_(h.encoding), cursor_(bytes, h.body_offset) {}
+
+  bool read(PlyType type, double& out) {
+    if (encoding_ == PlyEncoding::ascii) {
+      const std::string_view token = cursor_.next_token();
+      if (!mesh_detail::parse_double(token, out)) return false;
+      return !mesh_detail::ply_type_is_integer(type) || std::floor(out) == out;
+    }
+    const std::size_t size = mesh_detail::ply_type_size(type);
+    if (bytes_.size() - pos_ < size) return false;
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + pos_, size);
+    pos_ += size;
+    if (encoding_ == PlyEncoding::binary_big_endian)
+      for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
+    switch (type) {
+      case PlyType::int8: { std::int8_t v; std::memcpy(&v, raw, 1); out = v; break; }
+      case PlyType::uint8: out = raw[0]; break;
+      case PlyType::int16: { std::int16_t v; std::memcpy(&v, raw, 2); out = v; break; }
+      case PlyType::uint16: { std::uint16_t v; std::memcpy(&v, raw, 2); out = v; break; }
+      case PlyType::int32: { std::int32_t v; std::memcpy(&v, raw, 4); out = v; break; }
+      case PlyType::uint32: { std::uint32_t v; std::memcpy(&v, raw, 4); out = v; break; }
+      case PlyType::float32: { float v; std::memcpy(&v, raw, 4); out = static_cast<double>(v); break; }
+      case PlyType::float64: std::memcpy(&out, raw, 8); break;
+    }
+    return true;
+  }
+  bool can_hold(std::uint64_t count, PlyType type) const {
+    if (encoding_ == PlyEncoding::ascii) return count <= cursor_.remaining() / 2 + 1;
+    return count <= (bytes_.size() - pos_) / mesh_detail::ply_type_size(type);
+  }
+  std::size_t trailing() {
+    if (encoding_ == PlyEncoding::ascii) {
+      cursor_.skip_whitespace();
+      return cursor_.remaining();
+    }
+    return bytes_.size() - pos_;
+  }
+
+ private:
+  std::string_view bytes_;
+  std::size_t pos_;
+  PlyEncoding encoding_;
+  mesh_detail::TextCursor cursor_;
+};
+
+}  // namespace
+
+AttributedPly read_attributed_ply(std::string_view bytes) {
+  const mesh_detail::PlyHeader header = mesh_detail::parse_ply_header(bytes);
+  AttributedPly out;
+  // Comments: the header lines that start with "comment ".
+  {
+    mesh_detail::TextCursor c(bytes.substr(0, header.body_offset));
+    std::string_view line;
+    while (c.next_line(line))
+      if (line.substr(0, 8) == "comment ") out.comments.emplace_back(line.substr(8));
+  }
+  Source src(bytes, header);
+  std::uint64_t nv = 0;
+  for (const auto& e : header.elements) {
+    if (e.name == "vertex") nv = e.count;
+    const bool vertex = e.name == "vertex", face = e.name == "face";
+    std::vector<PlyColumn>* cols = vertex ? &out.vertex : face ? &out.face : nullptr;
+    std::vector<int> column_of(e.properties.size(), -1);
+    int indices = -1;
+    for (std::size_t k = 0; k < e.properties.size(); ++k) {
+      const auto& p = e.properties[k];
+      if (face && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) {
+        if (!mesh_detail::ply_type_is_integer(p.type)) throw bad_input("PLY header: face {} must hold integers", p.name);
+        indices = static_cast<int>(k);
+        continue;
+      }
+      if (!cols) continue;
+      if (p.is_list) throw bad_input("PLY: {} list property {} is not supported", e.name, p.name);
+      column_of[k] = static_cast<int>(cols->size());
+      cols->push_back({p.name, mesh_detail::ply_type_name(p.type), {}});
+      cols->back().values.reserve(static_cast<std::size_t>(e.count));
+    }
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const auto& p = e.properties[k];
+        double v;
+        if (p.is_list) {
+          if (!src.read(p.count_type, v) || !(v >= 0) || !src.can_hold(static_cast<std::uint64_t>(v), p.type))
+            throw bad_input("PLY body: {} {} has a bad {} list", e.name, i + 1, p.name);
+          const auto n = static_cast<std::uint64_t>(v);
+          std::vector<std::uint32_t> list;
+          for (std::uint64_t j = 0; j < n; ++j) {
+            if (!src.read(p.type, v)) throw bad_input("PLY body: {} {} is truncated", e.name, i + 1);
+            if (static_cast<int>(k) == indices) {
+              if (!(v >= 0 && v <= 4294967295.0)) throw bad_input("PLY body: face {} has index {}", i + 1, v);
+              list.push_back(static_cast<std::uint32_t>(v));
+            }
+          }
+          if (static_cast<int>(k) == indices) out.faces.push_back(std::move(list));
+          continue;
+        }
+        if (!src.read(p.type, v)) throw bad_input("PLY body: {} {} of {} is truncated or not a number", e.name, i + 1, e.count);
+        if (column_of[k] >= 0) (*cols)[static_cast<std::size_t>(column_of[k])].values.push_back(v);
+      }
+    }
+    if (face && indices < 0 && e.count > 0) throw bad_input("PLY header: face element has no vertex_indices list");
+  }
+  if (std::size_t extra = src.trailing(); extra != 0)
+    throw bad_input("PLY: {} bytes of unexpected data after the last element", extra);
+  for (const auto& f : out.faces)
+    for (std::uint32_t idx : f)
+      if (idx >= nv) throw bad_input("PLY: a face names vertex {} of {}", idx, nv);
+  return out;
+}
+
+}  // namespace fest::formats
