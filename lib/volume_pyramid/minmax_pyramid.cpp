@@ -1,10 +1,26 @@
 #include "volume_pyramid/minmax_pyramid.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/parallel_for.hpp"
 
 namespace fest::volume_pyramid {
+
+ScalarGrid to_grid(const Volume& v, std::size_t& nans) {
+  ScalarGrid g;
+  g.dims = v.dims;
+  g.values.resize(v.size());
+  nans = 0;
+  for (std::size_t p = 0; p < v.size(); ++p) {
+    g.values[p] = static_cast<float>(v.voxels[p]);
+    nans += std::isnan(v.voxels[p]);
+  }
+  g.origin = v.origin;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) g.axes[3 * r + c] = v.direction[3 * r + c] * v.spacing[c];
+  return g;
+}
 
 ScalarGrid padded(const ScalarGrid& g, float value) {
   ScalarGrid p;

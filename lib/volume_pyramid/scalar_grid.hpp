@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/volume.hpp"
+
 namespace fest::volume_pyramid {
 
 struct ScalarGrid {
@@ -29,6 +31,10 @@ struct ScalarGrid {
     return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
   }
 };
+
+// float32 samples and axes = direction * diag(spacing) of an in-memory volume; the number
+// of NaN samples found is returned in `nans` (they are copied as NaN).
+ScalarGrid to_grid(const Volume& volume, std::size_t& nans);
 
 // A copy surrounded by one layer of `value` on every side (isosurf --cap): the origin
 // moves by one step back along each axis so world positions of the old samples stay.

@@ -1,0 +1,68 @@
+// isosurf: isosurfaces of volumes by loop-construction marching cubes over a min-max
+// pyramid (docs/isosurf.md). Flags only; the subcommands live in cmd_*.cpp.
+
+#include <cstring>
+#include <vector>
+
+#include "cli/cli.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace fest::isosurf;
+  CLI::App app{"Isosurfaces of scalar volumes: exact marching cubes (asymptotic decider, watertight,\n"
+               "deterministic) accelerated by a min-max pyramid, and mesh statistics.",
+               "isosurf"};
+  fest::cli::Common common;
+  fest::cli::add_common(app, common);
+  app.require_subcommand(1);
+  app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error. See isosurf(1).");
+
+  ExactOptions ex;
+  auto* e = app.add_subcommand("exact", "Full-resolution surface f = iso (the default subcommand); mesh to standard output or -o");
+  e->fallthrough();
+  e->add_option("input", ex.input, "Volume: NIfTI, NRRD, MHA, VTI or a fest frame stream (- = stdin)");
+  e->add_option("-o,--output", ex.output, "Mesh output (- = stdout; format from the extension)");
+  e->add_option("--to", ex.to, "Mesh format: ply (binary), plya (ascii PLY), obj, off, stl, drc");
+  e->add_option("--iso", ex.iso, "Iso-value; inside is f >= iso (use half-integers on integer data)");
+  e->add_option("--label", ex.labels, "Surface of the union of these labels K[,K...] (iso 0.5 of the indicator)");
+  e->add_option("--field", ex.field, "VTI point array or frame-stream field");
+  e->add_option("--component", ex.component, "Vector fields: mag, x, y or z")->check(CLI::IsMember({"mag", "x", "y", "z"}));
+  e->add_option("--frame", ex.frame, "Frame of a frame stream (0-based; default the last)")->check(CLI::NonNegativeNumber);
+  auto* cap = e->add_option("--cap", ex.cap_value, "Pad by one layer of VALUE (default min(f)-1) so boundary-cut surfaces close")
+                  ->expected(0, 1);
+  e->add_option("--face-rule", ex.face_rule, "Ambiguous faces: decider (asymptotic decider) or separate")
+      ->check(CLI::IsMember({"decider", "separate"}));
+  e->add_option("--tri", ex.tri, "Loop triangulation: minarea, fan or centroid")->check(CLI::IsMember({"minarea", "fan", "centroid"}));
+  e->add_option("--component-filter", ex.component_filter, "Keep all components, the largest, or the N largest");
+  e->add_flag("--index-space", ex.index_space, "Vertices in voxel coordinates instead of world units");
+  e->add_flag("--nan-outside", ex.nan_outside, "Treat NaN samples as outside instead of refusing the input");
+  e->add_flag("--no-octree", ex.no_octree, "Scan every cell (same output; for comparisons)");
+  e->add_option("--qbits", ex.qbits, "Draco position quantization bits (0 = lossless)")->check(CLI::Range(0, 30));
+  e->add_option("--report", ex.report, "Write counts, topology, area, volume and timings as JSON");
+  fest::cli::add_threads(*e, ex.threads);
+
+  StatsOptions st;
+  auto* s = app.add_subcommand("stats", "Topology (boundary/non-manifold edges, components, Euler, genus), area and volume of a mesh as JSON");
+  s->add_option("mesh", st.input, "Mesh: PLY, OBJ, OFF, STL, Draco (- = stdin)");
+  s->add_option("--report", st.report, "Also write the JSON to this file");
+
+  // `isosurf IN --iso V` means `isosurf exact IN --iso V` (spec §4).
+  std::vector<char*> args(argv, argv + argc);
+  bool named = false, meta = false;
+  for (int i = 1; i < argc; ++i) {
+    for (const char* sub : {"exact", "stats"}) named = named || std::strcmp(argv[i], sub) == 0;
+    for (const char* m : {"-h", "--help", "--version"}) meta = meta || std::strcmp(argv[i], m) == 0;
+  }
+  static char exact_word[] = "exact";
+  if (!named && !meta && argc > 1) args.insert(args.begin() + 1, exact_word);
+
+  return fest::cli::run(app, static_cast<int>(args.size()), args.data(), [&]() -> int {
+    if (*e) {
+      ex.cap = cap->count() > 0;
+      ex.quiet = common.quiet;
+      return run_exact(ex);
+    }
+    if (*s) return run_stats(st);
+    return 2;
+  });
+}
