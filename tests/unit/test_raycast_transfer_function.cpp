@@ -9,7 +9,7 @@
 using namespace fest::raycast;
 
 TEST(RaycastTransferFunction, ParsesCsvAndPercent) {
-  const auto p = parse_transfer_function("value,r,g,b,a\n0%,0,0,0,0\n# c\n50%,1,0.5,0,0.2\n100,1,1,1,1\n", 0, 200, OpacityMode::opacity);
+  const auto p = parse_transfer_function("value,r,g,b,a\n0%,0,0,0,0\n# c\n50%,1,0.5,0,0.2\n150,1,1,1,1\n", 0, 200, OpacityMode::opacity);
   ASSERT_EQ(p.size(), 3u);
   EXPECT_DOUBLE_EQ(p[1].value, 100);
   EXPECT_THROW(parse_transfer_function("0,0,0,0,0\n1,1,1,1,1\n50%,1,1,1,1\n", 0, 200, OpacityMode::opacity), std::invalid_argument);
@@ -60,6 +60,7 @@ TEST(RaycastTransferFunction, IntegralsMatchQuadrature) {
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(kb[c] - ka[c], K[c], 1e-6);
     }
   }
-  EXPECT_TRUE(tf.transparent(-1, -0.99));
+  EXPECT_TRUE(tf.transparent(-1, -1));
+  EXPECT_FALSE(tf.transparent(-1, -0.99));
   EXPECT_FALSE(tf.transparent(-1, 0.5));
 }
