@@ -12,7 +12,7 @@ TEST(RaycastTransferFunction, ParsesCsvAndPercent) {
   const auto p = parse_transfer_function("value,r,g,b,a\n0%,0,0,0,0\n# c\n50%,1,0.5,0,0.2\n150,1,1,1,1\n", 0, 200, OpacityMode::opacity);
   ASSERT_EQ(p.size(), 3u);
   EXPECT_DOUBLE_EQ(p[1].value, 100);
-  EXPECT_THROW(parse_transfer_function("0,0,0,0,0\n1,1,1,1,1\n50%,1,1,1,1\n", 0, 200, OpacityMode::opacity), std::invalid_argument);
+  EXPECT_THROW(parse_transfer_function("0,0,0,0,0\n150,1,1,1,1\n50%,1,1,1,1\n", 0, 200, OpacityMode::opacity), std::invalid_argument);
 }
 
 TEST(RaycastTransferFunction, RefusesBadFunctions) {
