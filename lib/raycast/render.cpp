@@ -60,6 +60,23 @@ class Caster {
             transparent_[i + n[0] * (j + n[1] * k)] = tf.transparent(pyr_->min(3, i, j, k), pyr_->max(3, i, j, k));
       bn_ = n;
     }
+    if (o.shade && o.gradient_cache) {
+      const auto& d = g.dims;
+      grad_.resize(3 * g.size());
+      parallel_for(d[2], o.threads, [&](std::size_t k) {
+        for (std::size_t j = 0; j < d[1]; ++j)
+          for (std::size_t i = 0; i < d[0]; ++i) {
+            const std::size_t q[3] = {i, j, k};
+            float* out = &grad_[3 * g.index(i, j, k)];
+            for (int a = 0; a < 3; ++a) {
+              std::size_t m[3] = {q[0], q[1], q[2]}, up[3] = {q[0], q[1], q[2]};
+              if (m[a] > 0) --m[a];
+              if (up[a] + 1 < d[a]) ++up[a];
+              out[a] = static_cast<float>((double(g.at(up[0], up[1], up[2])) - g.at(m[0], m[1], m[2])) / double(up[a] - m[a]));
+            }
+          }
+      });
+    }
     if (pyr_ && o.skip_empty && o.mode == Mode::iso) {
       const auto n = pyr_->nodes(3);
       transparent_.resize(n[0] * n[1] * n[2]);
@@ -128,6 +145,14 @@ class Caster {
       w[a] = x - c[a];
     }
     Vec3 gi{0, 0, 0};
+    if (!grad_.empty()) {
+      for (int corner = 0; corner < 8; ++corner) {
+        const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
+        const float* q = &grad_[3 * g_.index(c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1))];
+        for (int a = 0; a < 3; ++a) gi[a] += wt * q[a];
+      }
+      return inv_t_ * gi;
+    }
     for (int corner = 0; corner < 8; ++corner) {
       const std::size_t q[3] = {c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1)};
       const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
@@ -254,11 +279,37 @@ class Caster {
     const std::size_t n = segments(t0, t1, dt);
     double best = o_.mode == Mode::mip ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
     double best_t = t0, sum = 0, total = 0;
+    const bool can_skip = pyr_ && o_.skip_empty && o_.mode != Mode::avg;
     for (std::size_t k = 0; k < n; ++k) {
       const double ta = t0 + k * dt, tb = std::min(t0 + (k + 1) * dt, t1);
       if (tb <= ta) continue;
       const double tm = 0.5 * (ta + tb);
-      const double v = value(o + tm * d);
+      const Vec3 p = o + tm * d;
+      if (can_skip && k > 0) {
+        // A block whose range cannot beat the current extreme (strictly) changes nothing.
+        std::size_t b[3];
+        for (int a = 0; a < 3; ++a) {
+          const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
+          b[a] = std::min(static_cast<std::size_t>(x) / kBlock, pyr_->nodes(3)[a] - 1);
+        }
+        const bool useless = o_.mode == Mode::mip ? pyr_->max(3, b[0], b[1], b[2]) <= best : pyr_->min(3, b[0], b[1], b[2]) >= best;
+        if (useless) {
+          double te = std::numeric_limits<double>::infinity();
+          for (int a = 0; a < 3; ++a) {
+            if (d[a] == 0) continue;
+            const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
+            te = std::min(te, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
+          }
+          te -= 1e-9 * dt;
+          const double kk = std::floor((te - t0) / dt - 0.5);
+          std::size_t next = k + 1;
+          if (kk >= double(k + 1)) next = std::min(n, static_cast<std::size_t>(kk));
+          st.skipped += next - k;
+          k = next - 1;
+          continue;
+        }
+      }
+      const double v = value(p);
       ++st.samples;
       if (o_.mode == Mode::mip ? v > best : o_.mode == Mode::minip ? v < best : false) best = v, best_t = tm;
       sum += v * (tb - ta), total += tb - ta;
@@ -343,6 +394,7 @@ class Caster {
   Mat3 inv_, inv_t_;
   double hmin_ = 1, range_ = 1;
   std::vector<char> transparent_;
+  std::vector<float> grad_;
   std::array<std::size_t, 3> bn_{0, 0, 0};
 };
 

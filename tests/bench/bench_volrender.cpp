@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     raycast::RenderOptions o;
     o.mode = c.mode, o.shade = c.shade, o.threads = c.threads, o.skip_empty = c.skip;
     o.step = 0.5;
+    o.gradient_cache = true;
     o.isos = {{225.5, 1.0, std::nullopt}};
     raycast::RenderedImage img;
     const auto [best, median] = timed(5, [&] { img = raycast::render(g, &pyr, tf, cam, o); });

@@ -137,7 +137,7 @@ TEST(RaycastRender, SkippingAndThreadsDoNotChangeBytes) {
                             OpacityMode::opacity, 1.0);
   const MinMaxPyramid p(g, 1);
   Camera c = orbit_camera({23.5, 23.5, 23.5}, 40, 30, 20, 0, 30, 1, 40, 32);
-  for (Mode m : {Mode::dvr, Mode::iso}) {
+  for (Mode m : {Mode::dvr, Mode::iso, Mode::mip}) {
     RenderOptions o;
     o.mode = m;
     o.shade = true;

@@ -220,6 +220,7 @@ int run_render(const RenderArgs& a) {
   const double t_read = seconds_since(t0);
   const auto tf = make_tf(a, L);
   const auto cams = make_cameras(a.camera, &L.grid);
+  o.gradient_cache = a.gradients == "cache" || (a.gradients == "auto" && L.grid.size() <= (std::size_t{64} << 20));
   t0 = Clock::now();
   const volume_pyramid::MinMaxPyramid pyramid(L.grid, o.threads);
   const double t_build = seconds_since(t0);

@@ -48,6 +48,7 @@ struct RenderArgs {
   std::string window;
   std::string iso, iso_color;
   bool no_skip = false;
+  std::string gradients = "auto";  // otf | cache | auto (cache up to 64 M voxels)
   int threads = 0;
   std::string camera_json, report;
   CameraArgs camera;
