@@ -16,7 +16,8 @@ double area2(const std::array<double, 3>& a, const std::array<double, 3>& b, con
 
 bool triangulate_loop(const std::uint32_t* ids_in, const std::array<double, 3>* pts_in, const std::uint8_t* faces_in, int n,
                       Triangulation how, std::vector<std::array<std::uint32_t, 3>>& out) {
-  constexpr int kMax = 16;
+  constexpr int kMax = 64;
+  if (n > kMax) return false;  // the caller fans it around a centroid
   int start = 0;
   for (int k = 1; k < n; ++k)
     if (ids_in[k] < ids_in[start]) start = k;

@@ -11,7 +11,7 @@ namespace fest::isosurface {
 
 enum class Triangulation { minarea, fan, centroid };
 
-// ids: the loop's vertex ids in loop order (3..16); points: their positions (xyz);
+// ids: the loop's vertex ids in loop order (3..64; longer loops return false); points: their positions (xyz);
 // faces: per vertex a bit set of the cell faces on which a diagonal must be avoided (or
 // null). Appends n - 2 triangles, oriented like the loop, and returns true; returns false
 // (appending nothing) when no triangulation avoids those diagonals -- the caller then
