@@ -53,6 +53,24 @@ check "closed with --cap" test "$(jq .closed "$W/capped.json")" = true
 read -r closed _ < <($FX plycheck "$W/capped.ply")
 check "independently closed" test "$closed" = closed
 
+case_ "adaptive: closed, fewer triangles, every vertex where exact mode puts it (independent check)"
+run isosurf adaptive "$W/sphere.nrrd" --iso 0 --cap --max-error 0.2 -o "$W/ad.ply" --report "$W/ad.json"
+expect_status 0
+read -r closed v f chi _ < <($FX plycheck "$W/ad.ply")
+check "closed ($closed)" test "$closed" = closed
+check "chi 2" test "$chi" = 2
+run isosurf exact "$W/sphere.nrrd" --iso 0 --cap -o "$W/ex.ply"
+check "fewer triangles ($f)" test "$f" -lt "$(jq .triangles "$W/s.json")"
+check "vertices are exact-mode vertices" $FX subset "$W/ad.ply" "$W/ex.ply"
+run isosurf adaptive "$W/torus.nrrd" --iso 0 --cap --focus 20,13.5,7.5 --focus-radius 2 --max-error inf -o "$W/adt.ply"
+read -r closed _ _ chi _ < <($FX plycheck "$W/adt.ply")
+check "focus: closed torus" test "$closed" = closed
+check "focus: chi 0" test "$chi" = 0
+run isosurf exact "$W/sphere.nrrd" --iso 0 --focus 1,2,3
+expect_clean_failure 2 isosurf
+run isosurf adaptive "$W/sphere.nrrd" --iso 0 --max-error -1
+expect_clean_failure 2 isosurf
+
 case_ "stats of any mesh: an open triangle"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$W/tri.off"
 run isosurf stats "$W/tri.off"

@@ -1,6 +1,8 @@
 // isosurf exact: full-resolution loop-construction marching cubes over the min-max
 // pyramid (docs/isosurf.md "Exact mode").
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <chrono>
 #include <numeric>
 
@@ -11,6 +13,7 @@
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
+#include "isosurface/adaptive.hpp"
 #include "isosurface/marching_cubes.hpp"
 #include "isosurface/mesh_stats.hpp"
 #include "load_grid.hpp"
@@ -52,7 +55,9 @@ isosurface::Surface keep_largest(const isosurface::Surface& s, std::size_t keep)
 
 }  // namespace
 
-int run_exact(const ExactOptions& o) {
+namespace {
+
+int run(const ExactOptions& o, const AdaptiveArgs* ad) {
   const int threads = resolve_threads(o.threads);
   isosurface::ExtractOptions eo;
   eo.threads = threads;
@@ -82,7 +87,42 @@ int run_exact(const ExactOptions& o) {
   const double t_build = seconds_since(t0);
   t0 = Clock::now();
   isosurface::ExtractStats es;
-  isosurface::Surface s = isosurface::extract_isosurface(in.grid, in.iso, eo, pyramid ? &*pyramid : nullptr, &es);
+  isosurface::Surface s;
+  isosurface::AdaptiveResult ar;
+  if (ad) {
+    isosurface::AdaptiveOptions ao;
+    if (!ad->focus.empty()) {
+      std::array<double, 3> f{};
+      char* end = nullptr;
+      const char* p = ad->focus.c_str();
+      for (int a = 0; a < 3; ++a) {
+        f[a] = std::strtod(p, &end);
+        if (end == p || (a < 2 && *end != ',') || (a == 2 && *end) || !std::isfinite(f[a])) throw usage_error("--focus takes X,Y,Z, not '{}'", ad->focus);
+        p = end + 1;
+      }
+      // (--cap pads around the grid without moving world or --index-space coordinates)
+      ao.focus = f;
+    }
+    if (ad->max_error == "inf") ao.max_error = std::numeric_limits<double>::infinity();
+    else {
+      char* end = nullptr;
+      ao.max_error = std::strtod(ad->max_error.c_str(), &end);
+      if (ad->max_error.empty() || *end || !(ao.max_error >= 0)) throw usage_error("--max-error takes a value >= 0 or inf");
+    }
+    if (ad->focus_radius < 0) throw usage_error("--focus-radius must be positive");
+    ao.focus_radius = ad->focus_radius;
+    ao.error_growth = ad->error_growth;
+    ao.max_level = ad->max_level;
+    ao.face_rule = eo.face_rule;
+    ao.triangulation = eo.triangulation;
+    ao.threads = threads;
+    if (!pyramid) pyramid.emplace(in.grid, threads);
+    ar = isosurface::extract_adaptive(in.grid, in.iso, ao, *pyramid);
+    s = std::move(ar.surface);
+    es.centroid_vertices = ar.centroid_vertices;
+  } else {
+    s = isosurface::extract_isosurface(in.grid, in.iso, eo, pyramid ? &*pyramid : nullptr, &es);
+  }
   if (keep) s = keep_largest(s, keep);
   const double t_extract = seconds_since(t0);
   if (s.triangles.empty() && !o.quiet)
@@ -95,7 +135,12 @@ int run_exact(const ExactOptions& o) {
   if (!o.report.empty()) {
     auto j = stats_json(isosurface::mesh_stats(s, threads));
     j["iso"] = in.iso;
-    j["mode"] = "exact";
+    j["mode"] = ad ? "adaptive" : "exact";
+    if (ad) {
+      j["leaves_per_level"] = ar.leaves_per_level;
+      j["closure_splits"] = ar.closure_splits;
+      j["max_error_bound"] = ar.max_error_bound;
+    }
     j["source"] = in.source;
     j["centroid_vertices"] = es.centroid_vertices;
     j["cells_visited"] = es.cells_visited;
@@ -107,5 +152,10 @@ int run_exact(const ExactOptions& o) {
   }
   return 0;
 }
+
+}  // namespace
+
+int run_exact(const ExactOptions& o) { return run(o, nullptr); }
+int run_adaptive(const ExactOptions& o, const AdaptiveArgs& a) { return run(o, &a); }
 
 }  // namespace fest::isosurf

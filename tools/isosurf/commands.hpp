@@ -30,12 +30,21 @@ struct ExactOptions {
   bool quiet = false;
 };
 
+struct AdaptiveArgs {
+  std::string focus;                  // "X,Y,Z" world units ("" = none)
+  double focus_radius = 0;            // r0; 0 = diagonal / 32
+  std::string max_error = "0";        // eps0 (data units) or "inf"
+  double error_growth = 1;
+  int max_level = -1;
+};
+
 struct StatsOptions {
   std::string input = "-";
   std::string report;                 // also write the JSON here
 };
 
 int run_exact(const ExactOptions& options);
+int run_adaptive(const ExactOptions& options, const AdaptiveArgs& adaptive);
 int run_stats(const StatsOptions& options);
 
 }  // namespace fest::isosurf

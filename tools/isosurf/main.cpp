@@ -41,6 +41,33 @@ int main(int argc, char** argv) {
   e->add_option("--report", ex.report, "Write counts, topology, area, volume and timings as JSON");
   fest::cli::add_threads(*e, ex.threads);
 
+  ExactOptions ad_ex;
+  AdaptiveArgs ad;
+  auto* d = app.add_subcommand("adaptive", "Focus-adaptive crack-free surface: coarser octree leaves far from --focus and where the data is smooth");
+  d->fallthrough();
+  d->add_option("input", ad_ex.input, "Volume (- = stdin)");
+  d->add_option("-o,--output", ad_ex.output, "Mesh output (- = stdout)");
+  d->add_option("--to", ad_ex.to, "Mesh format: ply, plya, obj, off, stl, drc");
+  d->add_option("--iso", ad_ex.iso, "Iso-value");
+  d->add_option("--label", ad_ex.labels, "Surface of the union of these labels");
+  d->add_option("--field", ad_ex.field, "VTI point array or frame-stream field");
+  d->add_option("--component", ad_ex.component, "Vector fields: mag, x, y or z")->check(CLI::IsMember({"mag", "x", "y", "z"}));
+  d->add_option("--frame", ad_ex.frame, "Frame of a frame stream")->check(CLI::NonNegativeNumber);
+  auto* dcap = d->add_option("--cap", ad_ex.cap_value, "Pad by one layer of VALUE (default min(f)-1)")->expected(0, 1);
+  d->add_option("--face-rule", ad_ex.face_rule, "decider or separate")->check(CLI::IsMember({"decider", "separate"}));
+  d->add_option("--tri", ad_ex.tri, "minarea, fan or centroid")->check(CLI::IsMember({"minarea", "fan", "centroid"}));
+  d->add_option("--component-filter", ad_ex.component_filter, "all, largest or N");
+  d->add_flag("--index-space", ad_ex.index_space, "Vertices in voxel coordinates");
+  d->add_flag("--nan-outside", ad_ex.nan_outside, "Treat NaN samples as outside");
+  d->add_option("--qbits", ad_ex.qbits, "Draco quantization bits")->check(CLI::Range(0, 30));
+  d->add_option("--report", ad_ex.report, "JSON report (with leaves per level)");
+  d->add_option("--focus", ad.focus, "Focus point X,Y,Z (world units)");
+  d->add_option("--focus-radius", ad.focus_radius, "Full resolution within r0 of the focus; one level coarser per doubling (default diagonal/32)");
+  d->add_option("--max-error", ad.max_error, "Tolerated trilinear error eps0 (data units), or inf (distance rule only)");
+  d->add_option("--error-growth", ad.error_growth, "eps = eps0 (1 + d/r0)^P")->check(CLI::Range(0.0, 16.0));
+  d->add_option("--max-level", ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
+  fest::cli::add_threads(*d, ad_ex.threads);
+
   StatsOptions st;
   auto* s = app.add_subcommand("stats", "Topology (boundary/non-manifold edges, components, Euler, genus), area and volume of a mesh as JSON");
   s->add_option("mesh", st.input, "Mesh: PLY, OBJ, OFF, STL, Draco (- = stdin)");
@@ -50,7 +77,7 @@ int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   bool named = false, meta = false;
   for (int i = 1; i < argc; ++i) {
-    for (const char* sub : {"exact", "stats"}) named = named || std::strcmp(argv[i], sub) == 0;
+    for (const char* sub : {"exact", "adaptive", "stats"}) named = named || std::strcmp(argv[i], sub) == 0;
     for (const char* m : {"-h", "--help", "--version"}) meta = meta || std::strcmp(argv[i], m) == 0;
   }
   static char exact_word[] = "exact";
@@ -61,6 +88,11 @@ int main(int argc, char** argv) {
       ex.cap = cap->count() > 0;
       ex.quiet = common.quiet;
       return run_exact(ex);
+    }
+    if (*d) {
+      ad_ex.cap = dcap->count() > 0;
+      ad_ex.quiet = common.quiet;
+      return run_adaptive(ad_ex, ad);
     }
     if (*s) return run_stats(st);
     return 2;

@@ -8,6 +8,7 @@ their outputs (pure Python: no fest code).
                                         opposite directions -> prints "closed V F chi area volume"
   fixtures.py pfm IMG.pfm X Y           prints the RGB of pixel (X, Y) (Y from the top)
   fixtures.py centroid IMG.pfm          intensity-weighted centroid "x y" of channel 0
+  fixtures.py subset A.ply B.ply        exit 0 when every vertex of A is a vertex of B (bitwise)
 """
 import math
 import struct
@@ -124,6 +125,13 @@ def plycheck(path):
     print("closed" if closed else "open", nv, nf, nv - len(uses) + nf, "%.6f" % area, "%.6f" % vol)
 
 
+def ply_vertices(path):
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    nv = [int(l.split()[2]) for l in data[:end].decode().splitlines() if l.startswith("element vertex")][0]
+    return {data[end + 12 * i: end + 12 * i + 12] for i in range(nv)}
+
+
 def read_pfm(path):
     data = open(path, "rb").read()
     parts = data.split(b"\n", 3)
@@ -166,5 +174,7 @@ if __name__ == "__main__":
         pfm(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
     elif cmd == "centroid":
         centroid(sys.argv[2])
+    elif cmd == "subset":
+        sys.exit(0 if ply_vertices(sys.argv[2]) <= ply_vertices(sys.argv[3]) else 1)
     else:
         sys.exit(__doc__)
