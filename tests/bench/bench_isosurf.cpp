@@ -23,6 +23,7 @@
 
 #include "formats/input.hpp"
 #include "formats/volume_source/volume_source.hpp"
+#include "isosurface/adaptive.hpp"
 #include "isosurface/marching_cubes.hpp"
 #include "isosurface/mesh_stats.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
@@ -58,6 +59,22 @@ vtkSmartPointer<vtkImageData> to_vtk(const volume_pyramid::ScalarGrid& g) {
   std::copy(g.values.begin(), g.values.end(), a->GetPointer(0));
   img->GetPointData()->SetScalars(a);
   return img;
+}
+
+void run_adaptive(const std::string& name, const volume_pyramid::ScalarGrid& g, float iso, isosurface::AdaptiveOptions o,
+                  std::size_t exact_triangles) {
+  const volume_pyramid::MinMaxPyramid pyr(g, 1);
+  isosurface::AdaptiveResult r;
+  o.threads = 1;
+  const double t = best_of(3, [&] { r = isosurface::extract_adaptive(g, iso, o, pyr); });
+  const auto m = isosurface::mesh_stats(r.surface);
+  nlohmann::json j = {{"case", name}, {"method", "isosurf adaptive"}, {"threads", 1}, {"seconds", t},
+                      {"vertices", r.surface.vertices()}, {"triangles", r.surface.triangles.size()},
+                      {"reduction_vs_exact", double(exact_triangles) / double(std::max<std::size_t>(1, r.surface.triangles.size()))},
+                      {"closed", m.closed}, {"euler", m.euler}, {"leaves_per_level", r.leaves_per_level},
+                      {"closure_splits", r.closure_splits}, {"peak_rss_mb", peak_rss_mb()}};
+  std::printf("%s\n", j.dump().c_str());
+  std::fflush(stdout);
 }
 
 void run_case(const std::string& name, const volume_pyramid::ScalarGrid& g, float iso) {
@@ -132,12 +149,24 @@ int main(int argc, char** argv) {
     const auto in = formats::load_input(ct);
     std::size_t nans = 0;
     auto g = volume_pyramid::to_grid(formats::read_volume_source(in, {}), nans);
-    run_case("cranium bone iso 225.5 cap -1024", volume_pyramid::padded(g, -1024.0f), 225.5f);
+    const auto padded = volume_pyramid::padded(g, -1024.0f);
+    run_case("cranium bone iso 225.5 cap -1024", padded, 225.5f);
+    isosurface::AdaptiveOptions o;
+    o.focus = std::array<double, 3>{122.0, 122.0, 80.25};
+    o.focus_radius = 16;
+    o.max_error = INFINITY;
+    run_adaptive("cranium bone, focus at the centre, r0 16 mm, eps inf", padded, 225.5f, o, 678348);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_isosurf: cranium skipped: %s\n", e.what());
   }
   // f = |x - c| - 100: inside is f >= 0 here, i.e. outside the ball; counts are the same.
-  run_case("sphere r100 on 256^3", sphere(256, 100, 127.5), 0.0f);
+  {
+    const auto sph = sphere(256, 100, 127.5);
+    run_case("sphere r100 on 256^3", sph, 0.0f);
+    isosurface::AdaptiveOptions o;
+    o.max_error = 0.05;
+    run_adaptive("sphere r100 on 256^3, eps0 0.05", sph, 0.0f, o, 377132);
+  }
   // sparse: a small sphere in one 48^3 corner of a 384^3 volume
   run_case("sparse: r16 sphere in a 384^3 corner", sphere(384, 16, 24), 0.0f);
   return 0;
