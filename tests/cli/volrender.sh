@@ -45,21 +45,21 @@ check "step 0.3: $r" near "$r" 0.6560249 1e-4
 # The blob's centre P = index (24, 17, 20) * 0.01 = (0.24, 0.17, 0.20).
 screen='-0.1,-0.1,0.5;0.5,-0.1,0.5;-0.1,0.4,0.5'
 case_ "stereo pair: the blob's disparity is ipd z / (D + z) on the screen (prediction by projection)"
-run volrender mip "$W/blob.nrrd" --window 0,100 --screen "$screen" --eye 0.2,0.15,1.1 --stereo 0.064 --size 600x500 \
+run volrender mip "$W/blob.nrrd" --window 0,100 --screen "$screen" --eye 0.2,0.15,1.1 --stereo 0.064 --size 300x250 \
     --to pfm -o "$W/st_%s.pfm"
 expect_status 0
 read -r lx ly < <($FX centroid "$W/st_L.pfm")
 read -r rx ry < <($FX centroid "$W/st_R.pfm")
 # line eye -> P meets the screen plane z = 0.5 at eye + t (P - eye), t = (1.1 - 0.5) / (1.1 - 0.2)
 pred() { awk -v ex="$1" 'BEGIN { t = 0.6 / 0.9; x = ex + t * (0.24 - ex); y = 0.15 + t * (0.17 - 0.15);
-                                 printf "%.6f %.6f\n", (x + 0.1) / 0.6 * 600, 500 - (y + 0.1) / 0.5 * 500 }'; }
+                                 printf "%.6f %.6f\n", (x + 0.1) / 0.6 * 300, 250 - (y + 0.1) / 0.5 * 250 }'; }
 read -r plx ply < <(pred 0.168)
 read -r prx pry < <(pred 0.232)
 check "left x $lx vs $plx" near "$lx" "$plx" 0.5
 check "left y $ly vs $ply" near "$ly" "$ply" 0.5
 check "right x $rx vs $prx" near "$rx" "$prx" 0.5
-check "disparity $(awk -v a="$rx" -v b="$lx" 'BEGIN{print a-b}') px = 0.064*0.3/0.9 m = 21.33 px" \
-      near "$(awk -v a="$rx" -v b="$lx" 'BEGIN{print a-b}')" 21.3333 0.5
+check "disparity $(awk -v a="$rx" -v b="$lx" 'BEGIN{print a-b}') px = 0.064*0.3/0.9 m = 10.67 px" \
+      near "$(awk -v a="$rx" -v b="$lx" 'BEGIN{print a-b}')" 10.6667 0.5
 
 case_ "beam-splitter mirror: the blob appears at the pixel whose reflection lies on the line eye -> P"
 # A 45-degree mirror n.x = delta, n = (0, 1, 1)/sqrt(2) through (0.2, 0.7, 0.2) between the eye
@@ -67,7 +67,7 @@ case_ "beam-splitter mirror: the blob appears at the pixel whose reflection lies
 # go. Prediction: q = line(eye, P) meets R(screen plane); the pixel is at R(q) on the screen.
 mirror='0,0.70710678118654752,0.70710678118654752,0.63639610306789277'
 run volrender mip "$W/blob.nrrd" --window 0,100 --screen '-0.2,0.3,1.0;0.6,0.3,1.0;-0.2,1.1,1.0' --eye 0.2,1.3,0.2 \
-    --mirror "$mirror" --size 400x400 --to pfm -o "$W/mirror.pfm"
+    --mirror "$mirror" --size 200x200 --to pfm -o "$W/mirror.pfm"
 expect_status 0
 read -r mx my < <($FX centroid "$W/mirror.pfm")
 read -r px py < <(python3 - <<'PY'
@@ -83,7 +83,7 @@ dd = [P[i] - eye[i] for i in range(3)]
 t = sum(nn[i] * (ra[i] - eye[i]) for i in range(3)) / sum(nn[i] * dd[i] for i in range(3))
 q = R(tuple(eye[i] + t * dd[i] for i in range(3)))
 uu = (q[0] - pa[0]) / 0.8; vv = (q[1] - pa[1]) / 0.8
-print("%.6f %.6f" % (uu * 400, 400 - vv * 400))
+print("%.6f %.6f" % (uu * 200, 200 - vv * 200))
 PY
 )
 check "mirror x $mx vs $px" near "$mx" "$px" 0.5
