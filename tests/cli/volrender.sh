@@ -89,6 +89,28 @@ PY
 check "mirror x $mx vs $px" near "$mx" "$px" 0.5
 check "mirror y $my vs $py" near "$my" "$py" 0.5
 
+case_ "cross-tool: iso depth = depth of isosurf's mesh of the same iso-value (--mesh), within 0.05 voxel"
+$FX volume sphere "$W/sphere.nrrd"
+run isosurf "$W/sphere.nrrd" --iso 0 -o "$W/sphere.ply"
+run volrender dvr "$W/sphere.nrrd" --tf contour-only --mesh "$W/sphere.ply" --fov 0 --size 48x48 --depth-image "$W/dm.pfm" --to pfm -o "$W/m.pfm"
+expect_status 0
+run volrender iso "$W/sphere.nrrd" --iso 0:1 --fov 0 --size 48x48 --depth-image "$W/di.pfm" --to pfm -o "$W/i.pfm"
+expect_status 0
+check "depths agree" python3 - "$W/dm.pfm" "$W/di.pfm" <<'PY'
+import math, struct, sys
+def rd(p):
+    d = open(p, "rb").read().split(b"\n", 3)
+    w, h = map(int, d[1].split())
+    return struct.unpack("<%df" % (w * h), d[3][: 4 * w * h])
+a, b = rd(sys.argv[1]), rd(sys.argv[2])
+both = [(x, y) for x, y in zip(a, b) if math.isfinite(x) and math.isfinite(y)]
+only = sum(math.isfinite(x) != math.isfinite(y) for x, y in zip(a, b))
+sys.exit(0 if len(both) > 300 and only <= 12 and max(abs(x - y) for x, y in both) <= 0.05 else 1)
+PY
+printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n1 1 0\n0.5 1.5 0\n0 1 0\n5 0 1 2 3 4\n' > "$W/penta.off"
+run volrender dvr "$W/sphere.nrrd" --mesh "$W/penta.off" -o "$W/x.png"
+expect_clean_failure 3 volrender
+
 case_ "camera --print: off-axis frustum (Kooima) for an on-axis eye is symmetric"
 run volrender camera --screen '-0.4,-0.3,0;0.4,-0.3,0;-0.4,0.3,0' --eye 0,0,2 --near 0.5 --size 8x6
 expect_status 0

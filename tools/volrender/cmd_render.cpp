@@ -17,6 +17,8 @@
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/volume_source/volume_source.hpp"
+#include "formats/mesh/mesh_io.hpp"
+#include "raycast/mesh_tracer.hpp"
 #include "raycast/render.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
 
@@ -176,6 +178,34 @@ raycast::RenderedImage combine(const raycast::RenderedImage& L, const raycast::R
   return out;
 }
 
+// The mesh of --mesh: triangles, quads split in two; larger polygons are refused.
+std::optional<raycast::MeshTracer> load_mesh(const RenderArgs& a) {
+  if (a.mesh.empty()) return std::nullopt;
+  const auto c = parse_numbers(a.mesh_color, 3, 3, "--mesh-color");
+  formats::Input in = formats::load_input(a.mesh);
+  if (in.bytes.empty()) throw bad_input("empty mesh ({})", a.mesh);
+  if (formats::kind_of(in.format) != formats::Kind::mesh) throw bad_input("--mesh expects a mesh, got {} ({})", formats::format_name(in.format), a.mesh);
+  const Mesh m = formats::parse(in, formats::read_mesh);
+  std::vector<float> xyz;
+  for (const auto& v : m.vertices())
+    for (int k = 0; k < 3; ++k) xyz.push_back(static_cast<float>(m.point(v)[k]));
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  std::size_t big = 0;
+  auto add = [&](const std::vector<std::uint32_t>& p) {
+    if (p.size() > 4) return void(++big);
+    for (std::size_t k = 1; k + 1 < p.size(); ++k) tris.push_back({p[0], p[k], p[k + 1]});
+  };
+  std::vector<std::uint32_t> poly;
+  for (const auto& f : m.faces()) {
+    poly.clear();
+    for (const auto& v : m.fv_range(f)) poly.push_back(static_cast<std::uint32_t>(v.idx()));
+    add(poly);
+  }
+  for (const auto& f : formats::skipped_face_list(m)) add(std::vector<std::uint32_t>(f.begin(), f.end()));
+  if (big) throw bad_input("{} faces of the mesh have more than 4 vertices; triangulate it first ({})", big, a.mesh);
+  return raycast::MeshTracer(std::move(xyz), std::move(tris), {c[0], c[1], c[2]});
+}
+
 }  // namespace
 
 int run_render(const RenderArgs& a) {
@@ -226,7 +256,10 @@ int run_render(const RenderArgs& a) {
   const double t_build = seconds_since(t0);
   t0 = Clock::now();
   std::vector<raycast::RenderedImage> images;
-  for (const auto& c : cams) images.push_back(raycast::render(L.grid, &pyramid, tf, c, o));
+  const auto mesh = load_mesh(a);
+  for (const auto& c : cams)
+    images.push_back(mesh ? raycast::render(L.grid, &pyramid, tf, c, o, &raycast::MeshTracer::callback, &*mesh)
+                          : raycast::render(L.grid, &pyramid, tf, c, o));
   const double t_render = seconds_since(t0);
   t0 = Clock::now();
   if (stereo && layout == "files") {

@@ -50,6 +50,8 @@ struct RenderArgs {
   bool no_skip = false;
   std::string gradients = "auto";  // otf | cache | auto (cache up to 64 M voxels)
   int threads = 0;
+  std::string mesh;                // opaque triangle mesh composited with depth
+  std::string mesh_color = "0.9,0.85,0.75";
   std::string camera_json, report;
   CameraArgs camera;
 };

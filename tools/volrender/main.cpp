@@ -76,6 +76,8 @@ int main(int argc, char** argv) {
     s->add_option("--gradients", ra.gradients, "Shading gradients: otf (on the fly), cache (12 bytes/voxel) or auto (cache up to 64 M voxels)")
         ->check(CLI::IsMember({"otf", "cache", "auto"}));
     s->add_flag("--no-skip", ra.no_skip, "Disable empty-space skipping (same image; for comparisons)");
+    s->add_option("--mesh", ra.mesh, "Opaque triangle mesh (PLY, OBJ, OFF, STL, Draco; world units) composited with depth");
+    s->add_option("--mesh-color", ra.mesh_color, "Mesh colour r,g,b (linear)");
     s->add_option("--camera-json", ra.camera_json, "Write the camera(s) as JSON");
     s->add_option("--report", ra.report, "Write rays, samples, skipped samples and timings as JSON");
     add_camera(s, ra.camera);
