@@ -71,6 +71,23 @@ expect_clean_failure 2 isosurf
 run isosurf adaptive "$W/sphere.nrrd" --iso 0 --max-error -1
 expect_clean_failure 2 isosurf
 
+case_ "progressive: closed levels coarse to fine, the last (tolerance 0) identical to exact; focus path; Draco"
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --cap --errors 0.4,0.1,0 -o "$W/prog"
+expect_status 0
+check "three levels" test "$(jq '.levels | length' "$W/prog/manifest.json")" = 3
+check "all closed" test "$(jq '[.levels[].closed] | all' "$W/prog/manifest.json")" = true
+check "coarse first" test "$(jq '.levels[0].triangles < .levels[2].triangles' "$W/prog/manifest.json")" = true
+run isosurf exact "$W/sphere.nrrd" --iso 0 --cap -o "$W/capped0.ply"
+check "last = exact" cmp "$W/prog/level_02.ply" "$W/capped0.ply"
+printf 'x,y,z\n11.5,11.5,20\n3,11.5,11.5\n' > "$W/path.csv"
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --cap --focus-path "$W/path.csv" --focus-radius 2 --to drc -o "$W/prog2"
+expect_status 0
+check "two Draco frames" test -s "$W/prog2/frame_01.drc"
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --errors 0.1,0.2 -o "$W/prog3"
+expect_clean_failure 2 isosurf
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --errors 0.1,0 -o /proc/nope/dir
+expect_clean_failure 4 isosurf
+
 case_ "stats of any mesh: an open triangle"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$W/tri.off"
 run isosurf stats "$W/tri.off"

@@ -38,6 +38,11 @@ struct AdaptiveArgs {
   int max_level = -1;
 };
 
+struct ProgressiveArgs {
+  std::string errors;      // "E0,E1,...,0" descending
+  std::string focus_path;  // CSV rows x,y,z: one adaptive mesh per focus position
+};
+
 struct StatsOptions {
   std::string input = "-";
   std::string report;                 // also write the JSON here
@@ -46,5 +51,6 @@ struct StatsOptions {
 int run_exact(const ExactOptions& options);
 int run_adaptive(const ExactOptions& options, const AdaptiveArgs& adaptive);
 int run_stats(const StatsOptions& options);
+int run_progressive(const ExactOptions& options, const AdaptiveArgs& adaptive, const ProgressiveArgs& progressive);
 
 }  // namespace fest::isosurf

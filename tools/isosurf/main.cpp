@@ -68,6 +68,30 @@ int main(int argc, char** argv) {
   d->add_option("--max-level", ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
   fest::cli::add_threads(*d, ad_ex.threads);
 
+  ExactOptions pr_ex;
+  AdaptiveArgs pr_ad;
+  ProgressiveArgs pr;
+  auto* g = app.add_subcommand("progressive", "Crack-free meshes coarse to fine (--errors E0,...,0) or per focus position (--focus-path) into -o DIR");
+  g->fallthrough();
+  g->add_option("input", pr_ex.input, "Volume (- = stdin)");
+  g->add_option("-o,--output", pr_ex.output, "Output directory (level_NN.* or frame_NN.*, manifest.json)");
+  g->add_option("--to", pr_ex.to, "Mesh format: ply, plya, obj, off, stl, drc");
+  g->add_option("--iso", pr_ex.iso, "Iso-value");
+  g->add_option("--label", pr_ex.labels, "Surface of the union of these labels");
+  g->add_option("--field", pr_ex.field, "VTI point array or frame-stream field");
+  g->add_option("--frame", pr_ex.frame, "Frame of a frame stream")->check(CLI::NonNegativeNumber);
+  auto* gcap = g->add_option("--cap", pr_ex.cap_value, "Pad by one layer of VALUE (default min(f)-1)")->expected(0, 1);
+  g->add_option("--face-rule", pr_ex.face_rule, "decider or separate")->check(CLI::IsMember({"decider", "separate"}));
+  g->add_option("--tri", pr_ex.tri, "minarea, fan or centroid")->check(CLI::IsMember({"minarea", "fan", "centroid"}));
+  g->add_option("--qbits", pr_ex.qbits, "Draco quantization bits")->check(CLI::Range(0, 30));
+  g->add_option("--errors", pr.errors, "Tolerances E0,E1,...,0, descending (coarse first); 0 = the exact surface");
+  g->add_option("--focus-path", pr.focus_path, "CSV of focus positions x,y,z: one adaptive mesh per row");
+  g->add_option("--focus", pr_ad.focus, "Focus point X,Y,Z for --errors");
+  g->add_option("--focus-radius", pr_ad.focus_radius, "r0 (default diagonal/32)");
+  g->add_option("--error-growth", pr_ad.error_growth, "eps = eps0 (1 + d/r0)^P")->check(CLI::Range(0.0, 16.0));
+  g->add_option("--max-level", pr_ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
+  fest::cli::add_threads(*g, pr_ex.threads);
+
   StatsOptions st;
   auto* s = app.add_subcommand("stats", "Topology (boundary/non-manifold edges, components, Euler, genus), area and volume of a mesh as JSON");
   s->add_option("mesh", st.input, "Mesh: PLY, OBJ, OFF, STL, Draco (- = stdin)");
@@ -77,7 +101,7 @@ int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   bool named = false, meta = false;
   for (int i = 1; i < argc; ++i) {
-    for (const char* sub : {"exact", "adaptive", "stats"}) named = named || std::strcmp(argv[i], sub) == 0;
+    for (const char* sub : {"exact", "adaptive", "progressive", "stats"}) named = named || std::strcmp(argv[i], sub) == 0;
     for (const char* m : {"-h", "--help", "--version"}) meta = meta || std::strcmp(argv[i], m) == 0;
   }
   static char exact_word[] = "exact";
@@ -93,6 +117,10 @@ int main(int argc, char** argv) {
       ad_ex.cap = dcap->count() > 0;
       ad_ex.quiet = common.quiet;
       return run_adaptive(ad_ex, ad);
+    }
+    if (*g) {
+      pr_ex.cap = gcap->count() > 0;
+      return run_progressive(pr_ex, pr_ad, pr);
     }
     if (*s) return run_stats(st);
     return 2;
