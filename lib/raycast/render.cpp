@@ -351,8 +351,12 @@ class Caster {
           // no iso-value inside this block: the samples before its exit see no crossing
           const double te = block_exit(o, d, b) - 1e-9 * dt;
           const double kk = std::floor((te - t0) / dt) - 1;
+          if (kk >= double(n)) {  // the rest of the ray lies in this block
+            st.skipped += n - k;
+            break;
+          }
           if (kk > double(k)) {
-            const std::size_t next = std::min(n - 1, static_cast<std::size_t>(kk));
+            const std::size_t next = static_cast<std::size_t>(kk);
             st.skipped += next - k;
             ta = t0 + next * dt;
             va = value(o + ta * d);
