@@ -135,4 +135,17 @@ expect_clean_failure 2 isosurf
 run isosurf stats "$W/sphere.nrrd"
 expect_clean_failure 3 isosurf
 
+case_ "conventions: --help, --version, unknown flag, missing file"
+run isosurf --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run isosurf --version
+expect_status 0
+check "names fest" grep -q "(fest)" "$out"
+run isosurf --no-such-flag x
+expect_clean_failure 2 isosurf
+run isosurf "$W/does-not-exist.nrrd" --iso 1
+expect_clean_failure 4 isosurf
+expect_stderr_has "does-not-exist"
+
 finish

@@ -179,4 +179,17 @@ run volrender dvr "$W/blob.nrrd" -o "$W/nodir/x.png"
 expect_clean_failure 4 volrender
 check "no partial file" test ! -e "$W/nodir/x.png"
 
+case_ "conventions: --help, --version, unknown flag, missing file"
+run volrender --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run volrender --version
+expect_status 0
+check "names fest" grep -q "(fest)" "$out"
+run volrender --no-such-flag x
+expect_clean_failure 2 volrender
+run volrender dvr "$W/does-not-exist.nrrd"
+expect_clean_failure 4 volrender
+expect_stderr_has "does-not-exist"
+
 finish
