@@ -113,6 +113,7 @@ class Caster {
       switch (o_.mode) {
         case Mode::dvr: dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st); break;
         case Mode::iso: iso(o, d, wr.dir, t0, t1, dt, dlen, out, depth, st); break;
+        case Mode::slices: slices(wr, o, d, t0, t1, dlen, out, depth, st); break;
         default: projection(o, d, t0, t1, dt, dlen, out, depth, st); break;
       }
     }
@@ -337,6 +338,42 @@ class Caster {
     depth = (o_.mode == Mode::avg ? t0 : best_t) * dlen;
   }
 
+  // Fig. 4.5b: each plane the ray crosses inside the volume is one layer, front to back:
+  // a contour band colour where |v - c_j| <= w/2, else the TF colour and opacity of v.
+  void slices(const Ray& wr, const Vec3& o, const Vec3& d, double t0, double t1, double dlen, std::array<double, 4>& out,
+              double& depth, RenderStats& st) const {
+    const SliceStack& S = o_.slices;
+    const double md = dot(S.normal, wr.dir), mo = dot(S.normal, wr.origin);
+    if (md == 0) return;
+    std::vector<double> ts;
+    for (double off : S.offsets) {
+      const double t = (off - mo) / md;
+      if (t >= t0 && t <= t1) ts.push_back(t);
+    }
+    std::sort(ts.begin(), ts.end());
+    double C[3] = {0, 0, 0}, A = 0;
+    for (double t : ts) {
+      const double v = value(o + t * d);
+      ++st.samples;
+      std::array<double, 3> c;
+      double alpha;
+      const double j = std::round((v - S.c0) / S.dc);
+      if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= S.width / 2) {
+        c = tf_.at(S.c0 + j * S.dc).rgb;
+        alpha = S.contour_alpha;
+      } else {
+        const auto smp = tf_.at(v);
+        c = smp.rgb;
+        alpha = 1 - std::exp(-smp.tau * S.tf_unit);
+      }
+      const double w = (1 - A) * alpha;
+      for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
+      if (A < 0.5 && A + w >= 0.5) depth = t * dlen;
+      A += w;
+    }
+    out = {C[0], C[1], C[2], A};
+  }
+
   void iso(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double dlen,
            std::array<double, 4>& out, double& depth, RenderStats& st) const {
     const std::size_t n = segments(t0, t1, dt);
@@ -458,6 +495,8 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
   if (!(o.step > 0)) throw std::invalid_argument("step must be positive");
   if (o.spp != 1 && o.spp != 4 && o.spp != 9 && o.spp != 16) throw std::invalid_argument("spp must be 1, 4, 9 or 16");
   if (o.mode == Mode::iso && o.isos.empty()) throw std::invalid_argument("iso mode needs at least one iso-value");
+  if (o.mode == Mode::slices && (o.slices.offsets.empty() || !(o.slices.dc > 0) || norm(o.slices.normal) == 0))
+    throw std::invalid_argument("slices mode needs planes, a positive contour spacing and a normal");
   if (grid.dims[0] < 2 || grid.dims[1] < 2 || grid.dims[2] < 2) throw std::invalid_argument("volume needs 2 samples along every axis");
   const int W = cam.width, H = cam.height;
   RenderedImage img;

@@ -20,12 +20,24 @@
 
 namespace fest::raycast {
 
-enum class Mode { dvr, mip, minip, avg, iso };
+enum class Mode { dvr, mip, minip, avg, iso, slices };
 
 struct IsoLayer {
   double value = 0;
   double alpha = 1;
   std::optional<std::array<double, 3>> color;  // default: the transfer function's colour at value
+};
+
+// The chapter's stacked slice planes with iso-contour bands (fig. 4.5b): planes
+// {x : normal . x = offset} (world units), contour levels c0 + j dc, j < count.
+struct SliceStack {
+  Vec3 normal{0, 0, 1};
+  std::vector<double> offsets;
+  double c0 = 0, dc = 1;
+  int count = 0;
+  double width = 1;          // contour band width, data units
+  double contour_alpha = 1;
+  double tf_unit = 1;        // a plane takes the TF opacity a(v) of one tf_unit layer
 };
 
 struct RenderOptions {
@@ -42,6 +54,7 @@ struct RenderOptions {
   bool keep_alpha = false;      // --bg none: colour un-premultiplied, alpha kept
   std::optional<std::array<double, 2>> window;  // mip/minip/avg: grey window instead of TF colour
   std::vector<IsoLayer> isos;
+  SliceStack slices;
   int spp = 1;                  // 1, 4, 9 or 16 stratified sub-pixel rays
   int threads = 1;
   bool skip_empty = true;

@@ -111,6 +111,28 @@ printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n1 1 0\n0.5 1.5 0\n0 1 0\n5 0 1 2 3 4\n' > "$W/
 run volrender dvr "$W/sphere.nrrd" --mesh "$W/penta.off" -o "$W/x.png"
 expect_clean_failure 3 volrender
 
+case_ "slices (fig. 4.5b): f = x, one plane normal to z, contours 8:8:7 of width 1.01: colour only near x = 8, 16, ..., 56"
+$FX volume xramp "$W/xramp.nrrd"
+# orthographic, looking down z, 64 pixels over x = 0..64: pixel i has its centre at x = i + 0.5
+run volrender slices "$W/xramp.nrrd" --slice-axis z --slices 1 --contours 8:8:7 --contour-width 1.01 --fov 0 --view 0,90 \
+    --zoom 1.7320508075688772 --size 64x64 --to pfm -o "$W/sl.pfm"
+expect_status 0
+check "contour columns" python3 - "$W/sl.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read().split(b"\n", 3)
+w, h = map(int, d[1].split())
+v = struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+for row in range(2, h - 2):
+    lit = [x for x in range(w) if v[(row * w + x) * 3] > 0]
+    near = lambda x: min(abs(x + 0.5 - c) for c in range(8, 57, 8))
+    if any(near(x) > 0.5 + 1 for x in lit):  # +-1 pixel
+        sys.exit(1)
+    if any(not any(abs(x + 0.5 - c) <= 1 for x in lit) for c in range(8, 57, 8)):
+        sys.exit(1)
+PY
+run volrender slices "$W/xramp.nrrd" --slices 4
+expect_clean_failure 2 volrender
+
 case_ "camera --print: off-axis frustum (Kooima) for an on-axis eye is symmetric"
 run volrender camera --screen '-0.4,-0.3,0;0.4,-0.3,0;-0.4,0.3,0' --eye 0,0,2 --near 0.5 --size 8x6
 expect_status 0

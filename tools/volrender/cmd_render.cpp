@@ -1,5 +1,6 @@
 // volrender dvr|mip|minip|avg|iso: read a volume, build the transfer function and the
 // camera(s), ray cast (lib/raycast), write images (docs/volrender.md).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -58,7 +59,7 @@ raycast::TransferFunction make_tf(const RenderArgs& a, const Loaded& L) {
   if (a.tf_mode != "extinction" && a.tf_mode != "opacity") throw usage_error("--tf-mode must be opacity or extinction");
   if (!(a.tf_unit > 0)) throw usage_error("--tf-unit must be positive");
   std::vector<raycast::ControlPoint> pts;
-  const std::string name = a.tf.empty() ? "grey" : a.tf;
+  const std::string name = a.tf.empty() ? (a.mode == "slices" ? "contour-only" : "grey") : a.tf;
   try {
     if (raycast::is_preset(name)) {
       pts = raycast::preset_transfer_function(name, L.lo, L.hi);
@@ -215,6 +216,7 @@ int run_render(const RenderArgs& a) {
   else if (a.mode == "minip") o.mode = raycast::Mode::minip;
   else if (a.mode == "avg") o.mode = raycast::Mode::avg;
   else if (a.mode == "iso") o.mode = raycast::Mode::iso;
+  else if (a.mode == "slices") o.mode = raycast::Mode::slices;
   else throw usage_error("unknown mode '{}'", a.mode);
   if (o.mode == raycast::Mode::iso && a.iso.empty()) throw usage_error("iso mode needs --iso V[:alpha][,...]");
   if (!(a.step > 0 && a.step <= 64)) throw usage_error("--step must be in (0, 64]");
@@ -250,6 +252,37 @@ int run_render(const RenderArgs& a) {
   const double t_read = seconds_since(t0);
   const auto tf = make_tf(a, L);
   const auto cams = make_cameras(a.camera, &L.grid);
+  if (o.mode == raycast::Mode::slices) {
+    if (a.contours.empty()) throw usage_error("slices mode needs --contours c0:dc:n");
+    std::string c = a.contours;
+    std::replace(c.begin(), c.end(), ':', ',');
+    const auto v = parse_numbers(c, 3, 3, "--contours");
+    if (!(v[1] > 0) || v[2] < 1 || v[2] != std::floor(v[2])) throw usage_error("--contours c0:dc:n needs dc > 0 and a whole n >= 1");
+    if (!(a.contour_width > 0)) throw usage_error("--contour-width must be positive");
+    raycast::SliceStack& S = o.slices;
+    S.c0 = v[0], S.dc = v[1], S.count = static_cast<int>(v[2]);
+    S.width = a.contour_width, S.contour_alpha = a.contour_alpha, S.tf_unit = a.tf_unit;
+    const auto& g = L.grid;
+    if (a.slice_axis == "x" || a.slice_axis == "y" || a.slice_axis == "z") {
+      const int ax = a.slice_axis[0] - 'x';
+      S.normal = raycast::normalized(raycast::Vec3{g.axes[ax], g.axes[3 + ax], g.axes[6 + ax]});
+    } else {
+      const auto n = parse_numbers(a.slice_axis, 3, 3, "--slice-axis");
+      if (raycast::norm(raycast::Vec3{n[0], n[1], n[2]}) == 0) throw usage_error("--slice-axis normal has zero length");
+      S.normal = raycast::normalized(raycast::Vec3{n[0], n[1], n[2]});
+    }
+    if (!a.slice_at.empty()) {
+      S.offsets = parse_numbers(a.slice_at, 1, 4096, "--slice-at");
+    } else {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int q = 0; q < 8; ++q) {
+        const auto w = g.world(q & 1 ? g.dims[0] - 1.0 : 0.0, q & 2 ? g.dims[1] - 1.0 : 0.0, q & 4 ? g.dims[2] - 1.0 : 0.0);
+        const double p = raycast::dot(S.normal, raycast::Vec3{w[0], w[1], w[2]});
+        lo = std::min(lo, p), hi = std::max(hi, p);
+      }
+      for (int k = 0; k < a.slice_count; ++k) S.offsets.push_back(lo + (k + 0.5) * (hi - lo) / a.slice_count);
+    }
+  }
   o.gradient_cache = a.gradients == "cache" || (a.gradients == "auto" && L.grid.size() <= (std::size_t{64} << 20));
   t0 = Clock::now();
   const volume_pyramid::MinMaxPyramid pyramid(L.grid, o.threads);

@@ -24,7 +24,7 @@ struct CameraArgs {
 };
 
 struct RenderArgs {
-  std::string mode = "dvr";        // dvr | mip | minip | avg | iso
+  std::string mode = "dvr";        // dvr | mip | minip | avg | iso | slices
   std::string input = "-";
   std::string output = "-";
   std::string to;                  // png | pfm | exr
@@ -50,6 +50,10 @@ struct RenderArgs {
   bool no_skip = false;
   std::string gradients = "auto";  // otf | cache | auto (cache up to 64 M voxels)
   int threads = 0;
+  std::string slice_axis = "z";     // x | y | z | nx,ny,nz
+  int slice_count = 8;
+  std::string slice_at, contours;
+  double contour_width = 1, contour_alpha = 1;
   std::string mesh;                // opaque triangle mesh composited with depth
   std::string mesh_color = "0.9,0.85,0.75";
   std::string camera_json, report;

@@ -39,12 +39,13 @@ int main(int argc, char** argv) {
 
   RenderArgs ra;
   std::vector<CLI::App*> modes;
-  for (const char* m : {"dvr", "mip", "minip", "avg", "iso"}) {
+  for (const char* m : {"dvr", "mip", "minip", "avg", "iso", "slices"}) {
     const std::string help = std::string(m) == "dvr"     ? "Direct volume rendering (emission-absorption)"
                              : std::string(m) == "mip"   ? "Maximum intensity projection"
                              : std::string(m) == "minip" ? "Minimum intensity projection"
                              : std::string(m) == "avg"   ? "Average along the ray"
-                                                         : "Shaded (semi-transparent) isosurfaces";
+                             : std::string(m) == "iso"   ? "Shaded (semi-transparent) isosurfaces"
+                                                         : "Stacked slice planes with iso-contour bands (the chapter's fig. 4.5b)";
     auto* s = app.add_subcommand(m, help);
     modes.push_back(s);
     s->add_option("input", ra.input, "Volume: NIfTI, NRRD, MHA, VTI or a fest frame stream (- = stdin)");
@@ -76,6 +77,12 @@ int main(int argc, char** argv) {
     s->add_option("--gradients", ra.gradients, "Shading gradients: otf (on the fly), cache (12 bytes/voxel) or auto (cache up to 64 M voxels)")
         ->check(CLI::IsMember({"otf", "cache", "auto"}));
     s->add_flag("--no-skip", ra.no_skip, "Disable empty-space skipping (same image; for comparisons)");
+    s->add_option("--slice-axis", ra.slice_axis, "slices: plane normal x, y, z (index axes) or nx,ny,nz (world)");
+    s->add_option("--slices", ra.slice_count, "slices: number of planes, equally spaced over the volume")->check(CLI::Range(1, 4096));
+    s->add_option("--slice-at", ra.slice_at, "slices: plane offsets along the normal (world units), instead of --slices");
+    s->add_option("--contours", ra.contours, "slices: contour levels c0:dc:n");
+    s->add_option("--contour-width", ra.contour_width, "slices: contour band width, data units");
+    s->add_option("--contour-alpha", ra.contour_alpha, "slices: contour opacity")->check(CLI::Range(0.0, 1.0));
     s->add_option("--mesh", ra.mesh, "Opaque triangle mesh (PLY, OBJ, OFF, STL, Draco; world units) composited with depth");
     s->add_option("--mesh-color", ra.mesh_color, "Mesh colour r,g,b (linear)");
     s->add_option("--camera-json", ra.camera_json, "Write the camera(s) as JSON");

@@ -2,7 +2,7 @@
 """Small NRRD volumes for the isosurf/volrender CLI tests, and independent checks of
 their outputs (pure Python: no fest code).
 
-  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | nan | flat
+  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | xramp | nan | flat
   fixtures.py crossings IN.nrrd ISO     number of voxel edges whose ends lie on both sides of ISO
   fixtures.py plycheck MESH.ply         binary PLY: every edge in exactly two triangles, in
                                         opposite directions -> prints "closed V F chi area volume"
@@ -55,6 +55,8 @@ def volume(kind, out):
     elif kind == "blob":  # a bright Gaussian off centre, 40^3, spacing 0.01 (a 0.4 m box)
         write_nrrd(out, (40, 40, 40), field((40, 40, 40), lambda i, j, k: 100 * math.exp(-((i - 24) ** 2 + (j - 17) ** 2 + (k - 20) ** 2) / 6.0)),
                    spacing=(0.01, 0.01, 0.01))
+    elif kind == "xramp":  # f = x on 65^3 (slice contours)
+        write_nrrd(out, (65, 65, 65), field((65, 65, 65), lambda i, j, k: float(i)))
     elif kind == "nan":
         v = [0.0] * 8 ** 3
         v[100] = float("nan")
