@@ -13,7 +13,8 @@ find_package(OpenEXR 3 CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel IOLegacy IOXML
-  FiltersFlowPaths)  # vtkStreamTracer: the anchor of tests/bench/bench_lemtrace
+  FiltersFlowPaths  # vtkStreamTracer: the anchor of tests/bench/bench_lemtrace
+  FiltersCore RenderingCore RenderingVolume RenderingVolumeOpenGL2 RenderingOpenGL2)  # anchors of tests/bench/bench_isosurf, bench_volrender
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(GPIOD  REQUIRED IMPORTED_TARGET libgpiod>=1.6)
 pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0>=1.0.26)

@@ -85,6 +85,7 @@ assimp-testmodels usr/share/assimp/models/OBJ/testline.obj meshes/assimp/testlin
 assimp-testmodels usr/share/assimp/models/OBJ/testpoints.obj meshes/assimp/testpoints.obj
 assimp-testmodels usr/share/assimp/models/OBJ/testmixed.obj meshes/assimp/testmixed.obj
 assimp-testmodels usr/share/assimp/models/PLY/Wuson.ply meshes/assimp/Wuson.ply
+invesalius-examples usr/share/doc/invesalius-examples/examples/Cranium.inv3 volumes/Cranium.inv3
 EOF
 )
 CGAL_MESHES="bunny00.off armadillo.off ChineseDragon-10kv.off elephant.off elephant-with-holes.off fandisk.off cow.off eight.off femur.off mushroom.off lion.off camel.off bull.off homer.off man.off mannequin-devil.off knot1.off turbine.off head.off hand.off bones.off ellipsoid.off icosahedron.off octahedron.off cube.off blobby.off"
@@ -153,6 +154,14 @@ for p in kitten.xyz sphere_1k.xyz; do
 done
 tar -xzf "$test_data_dir/cgal-data.tar.gz" -O data/images/liver.inr.gz > "$test_data_dir/volumes/liver.inr.gz"
 rm -f "$test_data_dir/cgal-data.tar.gz"
+# InVesalius' Cranium CT (isosurf, volrender): a gzip tar whose matrix.dat is raw int16
+# little-endian, x fastest, 256 x 256 x 108, spacing from its main.plist; kept as NRRD.
+{
+  printf 'NRRD0004\n# Cranium.inv3 (invesalius-examples): ProMED CT 0051\ntype: int16\ndimension: 3\n'
+  printf 'sizes: 256 256 108\nspacings: 0.9570312 0.9570312 1.5\nencoding: raw\nendian: little\n\n'
+  tar -xzf "$test_data_dir/volumes/Cranium.inv3" --wildcards -O '*/matrix.dat'
+} > "$test_data_dir/volumes/cranium.nrrd"
+rm -f "$test_data_dir/volumes/Cranium.inv3"
 
 echo "$manifest_new" > "$test_data_dir/MANIFEST"
 echo "fetch-test-data.sh: test data ready in $test_data_dir ($(du -sh "$test_data_dir" | cut -f1))"

@@ -1,0 +1,222 @@
+#include "formats/volume_source/volume_source.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkPointData.h>
+
+#include "core/error.hpp"
+#include "formats/dataset/dataset_io.hpp"
+#include "formats/volume/volume_io.hpp"
+
+namespace fest::formats {
+namespace {
+
+constexpr std::string_view kTag = "# fest-frame:";
+
+std::string_view next_line(std::string_view bytes, std::size_t& pos) {
+  const std::size_t end = bytes.find('\n', pos);
+  if (end == std::string_view::npos) throw bad_input("NRRD frame header without an end");
+  const std::string_view line = bytes.substr(pos, end - pos);
+  pos = end + 1;
+  return line;
+}
+
+double component_value(const double* v, int components, const std::string& c) {
+  if (components == 1) return v[0];
+  if (c == "x") return v[0];
+  if (c == "y") return components > 1 ? v[1] : 0.0;
+  if (c == "z") return components > 2 ? v[2] : 0.0;
+  double s = 0;
+  for (int k = 0; k < components; ++k) s += v[k] * v[k];
+  return std::sqrt(s);
+}
+
+void check_component(const std::string& c) {
+  if (c != "mag" && c != "x" && c != "y" && c != "z") throw usage_error("--component must be mag, x, y or z, not '{}'", c);
+}
+
+Volume from_frames(const Input& in, const VolumeSourceOptions& o) {
+  const auto frames = split_frame_stream(in.bytes, in.name);
+  if (frames.empty()) throw bad_input("empty frame stream ({})", in.name);
+  const long n = static_cast<long>(frames.size());
+  const long f = o.frame < 0 ? n - 1 : o.frame;
+  if (f >= n) throw usage_error("frame {} requested, the stream has {} frames (0..{})", f, n, n - 1);
+  const StreamFrame& fr = frames[static_cast<std::size_t>(f)];
+  int channel = 0, comps = fr.fields.front().second;
+  bool found = o.field.empty();
+  std::string names;
+  int ch = 0;
+  for (const auto& [name, c] : fr.fields) {
+    names += (names.empty() ? "" : ", ") + name;
+    if (!found && name == o.field) found = true, channel = ch, comps = c;
+    ch += c;
+  }
+  if (!found) throw usage_error("no field '{}' in the frame stream (fields: {})", o.field, names);
+  const int channels = ch;
+  Volume v;
+  v.resize(fr.size[0], fr.size[1], fr.size[2]);
+  for (int a = 0; a < 3; ++a) v.spacing[a] = fr.spacing[a];
+  v.type = ScalarType::f32;
+  std::vector<double> val(static_cast<std::size_t>(comps));
+  const std::size_t bytes_per = fr.float64 ? 8 : 4;
+  for (std::size_t p = 0; p < v.size(); ++p) {
+    for (int c = 0; c < comps; ++c) {
+      const char* src = fr.data.data() + (p * channels + channel + c) * bytes_per;
+      if (fr.float64) {
+        std::memcpy(&val[c], src, 8);
+      } else {
+        float x;
+        std::memcpy(&x, src, 4);
+        val[c] = x;
+      }
+    }
+    v.voxels[p] = component_value(val.data(), comps, o.component);
+  }
+  return v;
+}
+
+Volume from_vti(const Input& in, const VolumeSourceOptions& o) {
+  vtkSmartPointer<vtkDataSet> ds = parse(in, read_dataset);
+  auto* img = vtkImageData::SafeDownCast(ds);
+  if (!img) throw bad_input("VTI input holds no image data ({})", in.name);
+  vtkPointData* pd = img->GetPointData();
+  vtkDataArray* arr = o.field.empty() ? pd->GetScalars() : pd->GetArray(o.field.c_str());
+  if (!arr && o.field.empty() && pd->GetNumberOfArrays() > 0) arr = pd->GetArray(0);
+  if (!arr) {
+    std::string names;
+    for (int k = 0; k < pd->GetNumberOfArrays(); ++k)
+      names += (k ? ", " : "") + std::string(pd->GetArrayName(k) ? pd->GetArrayName(k) : "(unnamed)");
+    if (o.field.empty()) throw bad_input("VTI input has no point arrays ({})", in.name);
+    throw usage_error("no point array '{}' in {} (arrays: {})", o.field, in.name, names);
+  }
+  int dims[3];
+  img->GetDimensions(dims);
+  Volume v;
+  v.resize(static_cast<std::size_t>(dims[0]), static_cast<std::size_t>(dims[1]), static_cast<std::size_t>(dims[2]));
+  double sp[3], org[3];
+  img->GetSpacing(sp);
+  img->GetOrigin(org);
+  for (int a = 0; a < 3; ++a) v.spacing[a] = sp[a], v.origin[a] = org[a];
+  if (auto* m = img->GetDirectionMatrix())
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) v.direction[3 * r + c] = m->GetElement(r, c);
+  const int comps = arr->GetNumberOfComponents();
+  if (static_cast<std::size_t>(arr->GetNumberOfTuples()) != v.size())
+    throw bad_input("VTI point array has {} tuples for {} points ({})", arr->GetNumberOfTuples(), v.size(), in.name);
+  std::vector<double> t(static_cast<std::size_t>(comps));
+  for (std::size_t p = 0; p < v.size(); ++p) {
+    arr->GetTuple(static_cast<vtkIdType>(p), t.data());
+    v.voxels[p] = component_value(t.data(), comps, o.component);
+  }
+  v.type = ScalarType::f32;
+  return v;
+}
+
+}  // namespace
+
+bool is_frame_stream(std::string_view bytes) noexcept {
+  if (bytes.substr(0, 7) != "NRRD000") return false;
+  const std::size_t end = bytes.find("\n\n");
+  const std::size_t tag = bytes.find(kTag);
+  return tag != std::string_view::npos && tag < end;
+}
+
+std::vector<StreamFrame> split_frame_stream(std::string_view bytes, const std::string& where) {
+  std::vector<StreamFrame> out;
+  std::size_t pos = 0;
+  while (pos < bytes.size()) {
+    const std::string loc = fmt::format("{}, frame {}", where, out.size());
+    if (bytes.substr(pos, 7) != "NRRD000") throw bad_input("not an NRRD frame ({})", loc);
+    StreamFrame f;
+    std::vector<std::size_t> sizes;
+    bool have_fields = false, raw = false, little = true, have_type = false;
+    std::vector<double> spacings;
+    try {
+      next_line(bytes, pos);
+      for (;;) {
+        const std::string_view line = next_line(bytes, pos);
+        if (line.empty()) break;
+        const std::string s(line);
+        if (s.rfind(kTag, 0) == 0) {
+          const std::size_t at = s.find("fields=");
+          if (at == std::string::npos) throw bad_input("fest-frame line without fields=");
+          std::string list = s.substr(at + 7);
+          list = list.substr(0, list.find(' '));
+          std::stringstream ss(list);
+          for (std::string item; std::getline(ss, item, ',');) {
+            const std::size_t colon = item.find(':');
+            if (colon == std::string::npos || colon == 0) throw bad_input("bad fields entry '{}'", item);
+            const int c = std::atoi(item.c_str() + colon + 1);
+            if (c < 1 || c > 16) throw bad_input("bad component count in '{}'", item);
+            f.fields.emplace_back(item.substr(0, colon), c);
+          }
+          have_fields = !f.fields.empty();
+        } else if (s[0] == '#') {
+          continue;
+        } else if (s.rfind("type:", 0) == 0) {
+          const std::string t = s.substr(s.find_first_not_of(' ', 5));
+          if (t == "float") f.float64 = false;
+          else if (t == "double") f.float64 = true;
+          else throw bad_input("frame type '{}' (float or double expected)", t);
+          have_type = true;
+        } else if (s.rfind("sizes:", 0) == 0) {
+          std::stringstream ss(s.substr(6));
+          for (long long v; ss >> v;) {
+            if (v < 1 || v > (1 << 20)) throw bad_input("frame size {} out of range", v);
+            sizes.push_back(static_cast<std::size_t>(v));
+          }
+        } else if (s.rfind("spacings:", 0) == 0) {
+          std::stringstream ss(s.substr(9));
+          for (std::string w; ss >> w;) spacings.push_back(std::strtod(w.c_str(), nullptr));
+        } else if (s.rfind("encoding:", 0) == 0) {
+          raw = s.find("raw") != std::string::npos;
+        } else if (s.rfind("endian:", 0) == 0) {
+          little = s.find("little") != std::string::npos;
+        }
+      }
+    } catch (const Error& e) {
+      throw bad_input("{} ({})", e.what(), loc);
+    }
+    if (!have_fields || !have_type) throw bad_input("NRRD frame without fields or type ({})", loc);
+    if (!raw || !little) throw bad_input("NRRD frame must be raw little-endian ({})", loc);
+    if (sizes.size() < 3 || sizes.size() > 4) throw bad_input("NRRD frame with {} axes ({})", sizes.size(), loc);
+    int channels = 0;
+    for (const auto& fl : f.fields) channels += fl.second;
+    if (sizes[0] != static_cast<std::size_t>(channels))
+      throw bad_input("NRRD frame has {} channels, its fields name {} ({})", sizes[0], channels, loc);
+    f.dim = static_cast<int>(sizes.size()) - 1;
+    std::size_t count = sizes[0];
+    for (int a = 0; a < f.dim; ++a) {
+      f.size[a] = sizes[static_cast<std::size_t>(a) + 1];
+      if (spacings.size() == sizes.size() && std::isfinite(spacings[static_cast<std::size_t>(a) + 1]) && spacings[a + 1] > 0)
+        f.spacing[a] = spacings[static_cast<std::size_t>(a) + 1];
+      if (count > (std::size_t{1} << 40) / f.size[a]) throw bad_input("NRRD frame too large ({})", loc);
+      count *= f.size[a];
+    }
+    const std::size_t need = count * (f.float64 ? 8 : 4);
+    if (bytes.size() - pos < need)
+      throw bad_input("truncated NRRD frame: expected {} bytes, got {} ({})", need, bytes.size() - pos, loc);
+    f.data = bytes.substr(pos, need);
+    pos += need;
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+Volume read_volume_source(const Input& in, const VolumeSourceOptions& o) {
+  check_component(o.component);
+  if (is_frame_stream(in.bytes)) return from_frames(in, o);
+  if (in.format == Format::vti) return from_vti(in, o);
+  if (kind_of(in.format) == Kind::volume) {
+    if (!o.field.empty()) throw usage_error("--field applies to VTI and frame-stream input, not {} ({})", format_name(in.format), in.name);
+    return parse(in, read_volume);
+  }
+  throw bad_input("expected a volume (NIfTI, NRRD, MHA, VTI or a fest frame stream), got {} ({})", format_name(in.format), in.name);
+}
+
+}  // namespace fest::formats

@@ -1,0 +1,543 @@
+#include "raycast/render.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "core/parallel_for.hpp"
+
+namespace fest::raycast {
+namespace {
+
+using volume_pyramid::MinMaxPyramid;
+using volume_pyramid::ScalarGrid;
+
+constexpr std::size_t kBlock = 8;
+constexpr int kTile = 16;
+
+struct Mat3 {
+  double m[9];
+  Vec3 operator*(const Vec3& v) const {
+    return {m[0] * v[0] + m[1] * v[1] + m[2] * v[2], m[3] * v[0] + m[4] * v[1] + m[5] * v[2], m[6] * v[0] + m[7] * v[1] + m[8] * v[2]};
+  }
+  Mat3 transposed() const { return {{m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]}}; }
+};
+
+Mat3 inverse(const std::array<double, 9>& a) {
+  const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
+  if (std::abs(det) < 1e-300) throw std::invalid_argument("volume axes are singular");
+  const double s = 1.0 / det;
+  return {{(a[4] * a[8] - a[5] * a[7]) * s, (a[2] * a[7] - a[1] * a[8]) * s, (a[1] * a[5] - a[2] * a[4]) * s,
+           (a[5] * a[6] - a[3] * a[8]) * s, (a[0] * a[8] - a[2] * a[6]) * s, (a[2] * a[3] - a[0] * a[5]) * s,
+           (a[3] * a[7] - a[4] * a[6]) * s, (a[1] * a[6] - a[0] * a[7]) * s, (a[0] * a[4] - a[1] * a[3]) * s}};
+}
+
+// Fixed integer hash of a pixel -> [0, 1) (deterministic jitter).
+double pixel_hash(int i, int j, int s) {
+  std::uint32_t h = static_cast<std::uint32_t>(i) * 73856093u ^ static_cast<std::uint32_t>(j) * 19349663u ^
+                    static_cast<std::uint32_t>(s) * 83492791u;
+  h ^= h >> 16, h *= 0x7feb352du, h ^= h >> 15, h *= 0x846ca68bu, h ^= h >> 16;
+  return (h >> 8) * (1.0 / 16777216.0);
+}
+
+class Caster {
+ public:
+  Caster(const ScalarGrid& g, const MinMaxPyramid* p, const TransferFunction& tf, const RenderOptions& o,
+         SurfaceTracer surf, const void* ctx)
+      : g_(g), pyr_(p), tf_(tf), o_(o), surf_(surf), ctx_(ctx), inv_(inverse(g.axes)), inv_t_(inv_.transposed()) {
+    double hmin = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 3; ++c) hmin = std::min(hmin, std::sqrt(g.axes[c] * g.axes[c] + g.axes[3 + c] * g.axes[3 + c] + g.axes[6 + c] * g.axes[6 + c]));
+    hmin_ = hmin;
+    if (o.phong[3] >= 0 && o.phong[3] <= 1024 && o.phong[3] == std::floor(o.phong[3])) spec_int_ = static_cast<int>(o.phong[3]);
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (float v : g.values) lo = std::min(lo, v), hi = std::max(hi, v);
+    range_ = hi > lo ? double(hi) - lo : 1.0;
+    if (pyr_ && o.skip_empty && o.mode == Mode::dvr && !o.preint) {
+      const auto n = pyr_->nodes(3);
+      transparent_.resize(n[0] * n[1] * n[2]);
+      for (std::size_t k = 0; k < n[2]; ++k)
+        for (std::size_t j = 0; j < n[1]; ++j)
+          for (std::size_t i = 0; i < n[0]; ++i)
+            transparent_[i + n[0] * (j + n[1] * k)] = tf.transparent(pyr_->min(3, i, j, k), pyr_->max(3, i, j, k));
+      bn_ = n;
+    }
+    if (o.shade && o.gradient_cache) {
+      const auto& d = g.dims;
+      grad_.resize(3 * g.size());
+      parallel_for(d[2], o.threads, [&](std::size_t k) {
+        for (std::size_t j = 0; j < d[1]; ++j)
+          for (std::size_t i = 0; i < d[0]; ++i) {
+            const std::size_t q[3] = {i, j, k};
+            float* out = &grad_[3 * g.index(i, j, k)];
+            for (int a = 0; a < 3; ++a) {
+              std::size_t m[3] = {q[0], q[1], q[2]}, up[3] = {q[0], q[1], q[2]};
+              if (m[a] > 0) --m[a];
+              if (up[a] + 1 < d[a]) ++up[a];
+              out[a] = static_cast<float>((double(g.at(up[0], up[1], up[2])) - g.at(m[0], m[1], m[2])) / double(up[a] - m[a]));
+            }
+          }
+      });
+    }
+    if (pyr_ && o.skip_empty && o.mode == Mode::iso) {
+      const auto n = pyr_->nodes(3);
+      transparent_.resize(n[0] * n[1] * n[2]);
+      for (std::size_t k = 0; k < n[2]; ++k)
+        for (std::size_t j = 0; j < n[1]; ++j)
+          for (std::size_t i = 0; i < n[0]; ++i) {
+            bool none = true;
+            for (const auto& L : o.isos)
+              none = none && !(pyr_->min(3, i, j, k) <= L.value && L.value <= pyr_->max(3, i, j, k));
+            transparent_[i + n[0] * (j + n[1] * k)] = none;
+          }
+      bn_ = n;
+    }
+  }
+
+  // One ray: premultiplied colour, alpha, depth.
+  void cast(const Ray& wr, double jit, std::array<double, 4>& out, double& depth, RenderStats& st) const {
+    out = {0, 0, 0, 0};
+    depth = std::numeric_limits<double>::infinity();
+    ++st.rays;
+    if (!wr.valid) return;
+    SurfaceHit hit;
+    if (surf_) hit = surf_(ctx_, wr);
+    double t0, t1;
+    const bool in_box = clip_to_grid(g_, wr, t0, t1);
+    t0 = std::max(t0, wr.t_min);
+    if (in_box) t1 = std::min(t1, hit.t);
+    const double dlen = norm(wr.dir);  // world length per unit t
+    if (in_box && t1 > t0) {
+      const Vec3 o = inv_ * (wr.origin - g_.origin), d = inv_ * wr.dir;
+      const double vox_per_t = dlen / hmin_;
+      const double dt = o_.step / vox_per_t;
+      switch (o_.mode) {
+        case Mode::dvr: dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st); break;
+        case Mode::iso: iso(o, d, wr.dir, t0, t1, dt, dlen, out, depth, st); break;
+        case Mode::slices: slices(wr, o, d, t0, t1, dlen, out, depth, st); break;
+        default: projection(o, d, t0, t1, dt, dlen, out, depth, st); break;
+      }
+    }
+    if (hit.t < std::numeric_limits<double>::infinity() && out[3] < 1) {
+      const double w = 1 - out[3];
+      for (int c = 0; c < 3; ++c) out[c] += w * hit.rgb[c];
+      out[3] = 1;
+      if (!(depth < std::numeric_limits<double>::infinity())) depth = hit.t * dlen;
+    }
+  }
+
+ private:
+  double value(const Vec3& p) const {
+    if (o_.nearest) {
+      auto idx = [&](double x, int a) {
+        return static_cast<std::size_t>(std::clamp(std::floor(x + 0.5), 0.0, static_cast<double>(g_.dims[a] - 1)));
+      };
+      return g_.at(idx(p[0], 0), idx(p[1], 1), idx(p[2], 2));
+    }
+    return sample_trilinear(g_, p[0], p[1], p[2]);
+  }
+
+  // Central-difference gradient at the 8 surrounding samples, trilinearly interpolated
+  // (index space), then mapped to world space.
+  Vec3 gradient(const Vec3& p) const {
+    std::size_t c[3];
+    double w[3];
+    for (int a = 0; a < 3; ++a) {
+      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
+      c[a] = std::min(static_cast<std::size_t>(x), g_.dims[a] - 2);
+      w[a] = x - c[a];
+    }
+    Vec3 gi{0, 0, 0};
+    if (!grad_.empty()) {
+      for (int corner = 0; corner < 8; ++corner) {
+        const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
+        const float* q = &grad_[3 * g_.index(c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1))];
+        for (int a = 0; a < 3; ++a) gi[a] += wt * q[a];
+      }
+      return inv_t_ * gi;
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+      const std::size_t q[3] = {c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1)};
+      const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
+      for (int a = 0; a < 3; ++a) {
+        std::size_t lo[3] = {q[0], q[1], q[2]}, hi[3] = {q[0], q[1], q[2]};
+        if (lo[a] > 0) --lo[a];
+        if (hi[a] + 1 < g_.dims[a]) ++hi[a];
+        const double diff = (double(g_.at(hi[0], hi[1], hi[2])) - g_.at(lo[0], lo[1], lo[2])) / double(hi[a] - lo[a]);
+        gi[a] += wt * diff;
+      }
+    }
+    return inv_t_ * gi;  // grad_world = A^-T grad_index
+  }
+
+  std::array<double, 3> shade(const std::array<double, 3>& c, const Vec3& p, const Vec3& wdir) const {
+    const Vec3 g = gradient(p);
+    const double gl = norm(g);
+    if (gl <= 1e-6 * range_) return c;  // no reliable normal: unshaded
+    const Vec3 n = (-1.0 / gl) * g;
+    const Vec3 l = (-1.0 / norm(wdir)) * wdir;  // head light
+    double nl = dot(n, l);
+    if (o_.two_sided) nl = std::abs(nl);
+    const double diff = std::max(0.0, nl);
+    double spec;
+    if (spec_int_ >= 0) {  // integer exponent: by squaring (std::pow dominated the shaded sample)
+      spec = 1;
+      double b = diff;
+      for (int e = spec_int_; e; e >>= 1, b *= b)
+        if (e & 1) spec *= b;
+    } else {
+      spec = std::pow(diff, o_.phong[3]);
+    }
+    std::array<double, 3> out;
+    for (int k = 0; k < 3; ++k) out[k] = c[k] * (o_.phong[0] + o_.phong[1] * diff) + o_.phong[2] * spec;
+    return out;
+  }
+
+  bool block_transparent(const Vec3& p, std::size_t b[3]) const {
+    for (int a = 0; a < 3; ++a) {
+      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
+      b[a] = std::min(static_cast<std::size_t>(x) / kBlock, bn_[a] - 1);
+    }
+    return transparent_[b[0] + bn_[0] * (b[1] + bn_[1] * b[2])];
+  }
+
+  // Ray parameter where the ray leaves block b's closed box.
+  double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3]) const {
+    double t = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      if (d[a] == 0) continue;
+      const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
+      t = std::min(t, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
+    }
+    return t;
+  }
+
+  std::size_t segments(double t0, double t1, double dt) const {
+    const double n = (t1 - t0) / dt;
+    const double r = std::round(n);
+    return static_cast<std::size_t>(std::abs(n - r) < 1e-9 ? r : std::ceil(n));
+  }
+
+  void dvr(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double vox_per_t, double dlen,
+           double jit, std::array<double, 4>& out, double& depth, RenderStats& st) const {
+    const std::size_t n = segments(t0, t1, dt);
+    double C[3] = {0, 0, 0}, A = 0;
+    double prev_v = 0;
+    bool have_prev = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double ta = t0 + k * dt, tb = k + 1 == n ? t1 : std::min(t0 + (k + 1) * dt, t1);
+      if (tb <= ta) continue;
+      const double len = (tb - ta) * vox_per_t;
+      const double tm = (k + 1 < n || tb - ta >= dt) && o_.jitter ? ta + jit * dt : 0.5 * (ta + tb);
+      const Vec3 p = o + tm * d;
+      if (!transparent_.empty()) {
+        std::size_t b[3];
+        if (block_transparent(p, b)) {
+          // Every sample whose midpoint is inside this block contributes exactly nothing;
+          // jump past them (a margin keeps samples on the block's face computed).
+          const double te = block_exit(o, d, b) - 1e-9 * dt;
+          std::size_t next = k + 1;
+          if (te > tm) {
+            const double kk = std::floor((te - t0) / dt - 0.5);
+            if (kk >= double(k + 1)) next = std::min(n, static_cast<std::size_t>(kk));
+          }
+          st.skipped += next - k;
+          k = next - 1;
+          have_prev = false;
+          continue;
+        }
+      }
+      ++st.samples;
+      double alpha;
+      std::array<double, 3> c;
+      if (o_.preint) {
+        const double vf = have_prev ? prev_v : value(o + ta * d), vb = value(o + tb * d);
+        prev_v = vb, have_prev = true;
+        if (std::abs(vb - vf) < 1e-6 * range_) {
+          const auto s = tf_.at(0.5 * (vf + vb));
+          alpha = 1 - std::exp(-s.tau * len);
+          c = s.rgb;
+        } else {
+          const double dT = tf_.integral_tau(vb) - tf_.integral_tau(vf);
+          alpha = 1 - std::exp(-len / (vb - vf) * dT);
+          const auto Kb = tf_.integral_tau_color(vb), Kf = tf_.integral_tau_color(vf);
+          if (std::abs(dT) > 0)
+            for (int ch = 0; ch < 3; ++ch) c[ch] = (Kb[ch] - Kf[ch]) / dT;
+          else
+            c = tf_.at(0.5 * (vf + vb)).rgb;
+        }
+      } else {
+        const auto s = tf_.at(value(p));
+        alpha = 1 - std::exp(-s.tau * len);
+        c = s.rgb;
+      }
+      if (alpha <= 0) continue;
+      if (o_.shade) c = shade(c, p, wdir);
+      const double w = (1 - A) * alpha;
+      for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
+      const double before = A;
+      A += w;
+      if (before < 0.5 && A >= 0.5) depth = tm * dlen;
+      if (A >= o_.ert) {
+        ++st.terminated;
+        break;
+      }
+    }
+    out = {C[0], C[1], C[2], A};
+  }
+
+  void projection(const Vec3& o, const Vec3& d, double t0, double t1, double dt, double dlen, std::array<double, 4>& out,
+                  double& depth, RenderStats& st) const {
+    const std::size_t n = segments(t0, t1, dt);
+    double best = o_.mode == Mode::mip ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+    double best_t = t0, sum = 0, total = 0;
+    const bool can_skip = pyr_ && o_.skip_empty && o_.mode != Mode::avg;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double ta = t0 + k * dt, tb = std::min(t0 + (k + 1) * dt, t1);
+      if (tb <= ta) continue;
+      const double tm = 0.5 * (ta + tb);
+      const Vec3 p = o + tm * d;
+      if (can_skip && k > 0) {
+        // A block whose range cannot beat the current extreme (strictly) changes nothing.
+        std::size_t b[3];
+        for (int a = 0; a < 3; ++a) {
+          const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
+          b[a] = std::min(static_cast<std::size_t>(x) / kBlock, pyr_->nodes(3)[a] - 1);
+        }
+        const bool useless = o_.mode == Mode::mip ? pyr_->max(3, b[0], b[1], b[2]) <= best : pyr_->min(3, b[0], b[1], b[2]) >= best;
+        if (useless) {
+          double te = std::numeric_limits<double>::infinity();
+          for (int a = 0; a < 3; ++a) {
+            if (d[a] == 0) continue;
+            const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
+            te = std::min(te, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
+          }
+          te -= 1e-9 * dt;
+          const double kk = std::floor((te - t0) / dt - 0.5);
+          std::size_t next = k + 1;
+          if (kk >= double(k + 1)) next = std::min(n, static_cast<std::size_t>(kk));
+          st.skipped += next - k;
+          k = next - 1;
+          continue;
+        }
+      }
+      const double v = value(p);
+      ++st.samples;
+      if (o_.mode == Mode::mip ? v > best : o_.mode == Mode::minip ? v < best : false) best = v, best_t = tm;
+      sum += v * (tb - ta), total += tb - ta;
+    }
+    if (total <= 0) return;
+    const double v = o_.mode == Mode::avg ? sum / total : best;
+    std::array<double, 3> c;
+    if (o_.window) {
+      const double g = std::clamp((v - (*o_.window)[0]) / ((*o_.window)[1] - (*o_.window)[0]), 0.0, 1.0);
+      c = {g, g, g};
+    } else {
+      c = tf_.at(v).rgb;
+    }
+    out = {c[0], c[1], c[2], 1};
+    depth = (o_.mode == Mode::avg ? t0 : best_t) * dlen;
+  }
+
+  // Fig. 4.5b: each plane the ray crosses inside the volume is one layer, front to back:
+  // a contour band colour where |v - c_j| <= w/2, else the TF colour and opacity of v.
+  void slices(const Ray& wr, const Vec3& o, const Vec3& d, double t0, double t1, double dlen, std::array<double, 4>& out,
+              double& depth, RenderStats& st) const {
+    const SliceStack& S = o_.slices;
+    const double md = dot(S.normal, wr.dir), mo = dot(S.normal, wr.origin);
+    if (md == 0) return;
+    std::vector<double> ts;
+    for (double off : S.offsets) {
+      const double t = (off - mo) / md;
+      if (t >= t0 && t <= t1) ts.push_back(t);
+    }
+    std::sort(ts.begin(), ts.end());
+    double C[3] = {0, 0, 0}, A = 0;
+    for (double t : ts) {
+      const double v = value(o + t * d);
+      ++st.samples;
+      std::array<double, 3> c;
+      double alpha;
+      const double j = std::round((v - S.c0) / S.dc);
+      if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= S.width / 2) {
+        c = tf_.at(S.c0 + j * S.dc).rgb;
+        alpha = S.contour_alpha;
+      } else {
+        const auto smp = tf_.at(v);
+        c = smp.rgb;
+        alpha = 1 - std::exp(-smp.tau * S.tf_unit);
+      }
+      const double w = (1 - A) * alpha;
+      for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
+      if (A < 0.5 && A + w >= 0.5) depth = t * dlen;
+      A += w;
+    }
+    out = {C[0], C[1], C[2], A};
+  }
+
+  void iso(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double dlen,
+           std::array<double, 4>& out, double& depth, RenderStats& st) const {
+    const std::size_t n = segments(t0, t1, dt);
+    double C[3] = {0, 0, 0}, A = 0;
+    double ta = t0, va = value(o + t0 * d);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double tb = std::min(t0 + (k + 1) * dt, t1);
+      if (!transparent_.empty()) {
+        std::size_t b[3];
+        const Vec3 pa = o + ta * d;
+        if (block_transparent(pa, b)) {
+          // no iso-value inside this block: the samples before its exit see no crossing
+          const double te = block_exit(o, d, b) - 1e-9 * dt;
+          const double kk = std::floor((te - t0) / dt) - 1;
+          if (kk >= double(n)) {  // the rest of the ray lies in this block
+            st.skipped += n - k;
+            break;
+          }
+          if (kk > double(k)) {
+            const std::size_t next = static_cast<std::size_t>(kk);
+            st.skipped += next - k;
+            ta = t0 + next * dt;
+            va = value(o + ta * d);
+            k = next - 1;
+            continue;
+          }
+        }
+      }
+      const double vb = value(o + tb * d);
+      ++st.samples;
+      // every iso-value crossed in [ta, tb], front to back
+      std::vector<std::pair<double, const IsoLayer*>> hits;
+      for (const auto& L : o_.isos) {
+        if ((va >= L.value) == (vb >= L.value)) continue;
+        double lo = ta, hi = tb, flo = va - L.value;
+        for (int it = 0; it < 8; ++it) {  // bisection: position error <= step / 256
+          const double mid = 0.5 * (lo + hi);
+          const double fm = value(o + mid * d) - L.value;
+          if ((fm >= 0) == (flo >= 0)) lo = mid, flo = fm;
+          else hi = mid;
+        }
+        hits.emplace_back(0.5 * (lo + hi), &L);
+      }
+      std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (const auto& [t, L] : hits) {
+        const Vec3 p = o + t * d;
+        std::array<double, 3> c = L->color ? *L->color : tf_.at(L->value).rgb;
+        if (o_.shade) c = shade(c, p, wdir);
+        const double w = (1 - A) * L->alpha;
+        for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
+        if (A < 1 && !(depth < std::numeric_limits<double>::infinity()) && L->alpha >= 1) depth = t * dlen;
+        A += w;
+      }
+      if (A >= o_.ert) {
+        ++st.terminated;
+        break;
+      }
+      ta = tb, va = vb;
+    }
+    out = {C[0], C[1], C[2], A};
+  }
+
+  const ScalarGrid& g_;
+  const MinMaxPyramid* pyr_;
+  const TransferFunction& tf_;
+  const RenderOptions& o_;
+  SurfaceTracer surf_;
+  const void* ctx_;
+  Mat3 inv_, inv_t_;
+  double hmin_ = 1, range_ = 1;
+  std::vector<char> transparent_;
+  std::vector<float> grad_;
+  int spec_int_ = -1;
+  std::array<std::size_t, 3> bn_{0, 0, 0};
+};
+
+}  // namespace
+
+double sample_trilinear(const ScalarGrid& g, double x, double y, double z) {
+  const double p[3] = {x, y, z};
+  std::size_t c[3];
+  double w[3];
+  for (int a = 0; a < 3; ++a) {
+    const double q = std::clamp(p[a], 0.0, static_cast<double>(g.dims[a] - 1));
+    c[a] = std::min(static_cast<std::size_t>(q), g.dims[a] - 2);
+    w[a] = q - c[a];
+  }
+  const std::size_t sx = 1, sy = g.dims[0], sz = g.dims[0] * g.dims[1];
+  const float* b = &g.values[g.index(c[0], c[1], c[2])];
+  const double c00 = b[0] + w[0] * (double(b[sx]) - b[0]);
+  const double c10 = b[sy] + w[0] * (double(b[sy + sx]) - b[sy]);
+  const double c01 = b[sz] + w[0] * (double(b[sz + sx]) - b[sz]);
+  const double c11 = b[sz + sy] + w[0] * (double(b[sz + sy + sx]) - b[sz + sy]);
+  const double c0 = c00 + w[1] * (c10 - c00), c1 = c01 + w[1] * (c11 - c01);
+  return c0 + w[2] * (c1 - c0);
+}
+
+bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
+  const Mat3 inv = inverse(g.axes);
+  const Vec3 o = inv * (wr.origin - g.origin), d = inv * wr.dir;
+  t0 = -std::numeric_limits<double>::infinity();
+  t1 = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const double hi = static_cast<double>(g.dims[a] - 1);
+    if (d[a] == 0) {
+      if (o[a] < 0 || o[a] > hi) return false;
+      continue;
+    }
+    double ta = (0 - o[a]) / d[a], tb = (hi - o[a]) / d[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1;
+}
+
+RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const TransferFunction& tf, const Camera& cam,
+                     const RenderOptions& o, SurfaceTracer surface, const void* ctx) {
+  if (!(o.step > 0)) throw std::invalid_argument("step must be positive");
+  if (o.spp != 1 && o.spp != 4 && o.spp != 9 && o.spp != 16) throw std::invalid_argument("spp must be 1, 4, 9 or 16");
+  if (o.mode == Mode::iso && o.isos.empty()) throw std::invalid_argument("iso mode needs at least one iso-value");
+  if (o.mode == Mode::slices && (o.slices.offsets.empty() || !(o.slices.dc > 0) || norm(o.slices.normal) == 0))
+    throw std::invalid_argument("slices mode needs planes, a positive contour spacing and a normal");
+  if (grid.dims[0] < 2 || grid.dims[1] < 2 || grid.dims[2] < 2) throw std::invalid_argument("volume needs 2 samples along every axis");
+  const int W = cam.width, H = cam.height;
+  RenderedImage img;
+  img.width = W, img.height = H;
+  img.rgba.assign(static_cast<std::size_t>(W) * H * 4, 0.0f);
+  img.depth.assign(static_cast<std::size_t>(W) * H, std::numeric_limits<float>::infinity());
+  const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
+  std::vector<RenderStats> tile_stats(static_cast<std::size_t>(tiles_x) * tiles_y);
+  const Caster caster(grid, pyramid, tf, o, surface, ctx);
+  const int sub = o.spp == 16 ? 4 : o.spp == 9 ? 3 : o.spp == 4 ? 2 : 1;
+  parallel_for(tile_stats.size(), o.threads, [&](std::size_t tile) {
+    const int tx = static_cast<int>(tile % tiles_x), ty = static_cast<int>(tile / tiles_x);
+    RenderStats& st = tile_stats[tile];
+    for (int j = ty * kTile; j < std::min(H, (ty + 1) * kTile); ++j)
+      for (int i = tx * kTile; i < std::min(W, (tx + 1) * kTile); ++i) {
+        std::array<double, 4> acc{0, 0, 0, 0};
+        double depth = std::numeric_limits<double>::infinity();
+        for (int s = 0; s < sub * sub; ++s) {
+          const double x = i + (s % sub + 0.5) / sub, y = j + (s / sub + 0.5) / sub;
+          std::array<double, 4> c;
+          double dd;
+          caster.cast(cam.ray(x, y), o.jitter ? pixel_hash(i, j, s) : 0.5, c, dd, st);
+          for (int k = 0; k < 4; ++k) acc[k] += c[k];
+          if (s == 0) depth = dd;
+        }
+        for (auto& v : acc) v /= sub * sub;
+        float* px = &img.rgba[(static_cast<std::size_t>(j) * W + i) * 4];
+        if (o.keep_alpha) {
+          for (int k = 0; k < 3; ++k) px[k] = static_cast<float>(acc[3] > 0 ? acc[k] / acc[3] : 0.0);
+          px[3] = static_cast<float>(acc[3]);
+        } else {
+          for (int k = 0; k < 3; ++k) px[k] = static_cast<float>(acc[k] + (1 - acc[3]) * o.background[k]);
+          px[3] = 1.0f;
+        }
+        img.depth[static_cast<std::size_t>(j) * W + i] = static_cast<float>(depth);
+      }
+  });
+  for (const auto& s : tile_stats) {
+    img.stats.rays += s.rays, img.stats.samples += s.samples, img.stats.skipped += s.skipped, img.stats.terminated += s.terminated;
+  }
+  return img;
+}
+
+}  // namespace fest::raycast

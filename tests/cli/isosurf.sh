@@ -1,0 +1,151 @@
+#!/usr/bin/env bash
+# isosurf end-to-end: analytic surfaces checked by an independent Python program
+# (isovol/fixtures.py: crossed-edge count = vertex count, edge-use watertightness, area and
+# volume), determinism, stats, and bad input.
+source "$(dirname "$0")/lib.sh"
+FX="python3 $(dirname "$0")/isovol/fixtures.py"
+W="$WORK"
+$FX volume sphere "$W/sphere.nrrd"
+$FX volume torus "$W/torus.nrrd"
+$FX volume nan "$W/nan.nrrd"
+$FX volume flat "$W/flat.nrrd"
+
+case_ "sphere: vertices = crossed voxel edges (independent count), closed, area/volume near the sphere's"
+run isosurf exact "$W/sphere.nrrd" --iso 0 -o "$W/s.ply" --report "$W/s.json"
+expect_status 0
+n=$($FX crossings "$W/sphere.nrrd" 0)
+check "vertex count $n" test "$(jq .vertices "$W/s.json")" = "$n"
+read -r closed v f chi area vol < <($FX plycheck "$W/s.ply")
+check "independent check: closed ($closed)" test "$closed" = closed
+check "independent check: chi = 2 ($chi)" test "$chi" = 2
+check "stats agree: closed" test "$(jq .closed "$W/s.json")" = true
+check "stats agree: genus 0" test "$(jq .genus "$W/s.json")" = 0
+# R = 9.3: 4 pi R^2 = 1086.865, 4/3 pi R^3 = 3369.283; marching cubes at R/h = 9.3 is within 1 %
+check "area $area" awk -v a="$area" 'BEGIN { exit !(a > 1086.865 * 0.99 && a < 1086.865) }'
+check "volume $vol" awk -v a="$vol" 'BEGIN { exit !(a > 3369.283 * 0.99 && a < 3369.283) }'
+check "triangles = 2 (V - chi)" test "$f" = $((2 * (v - 2)))
+
+case_ "torus: genus 1 (chi 0), closed"
+run isosurf "$W/torus.nrrd" --iso 0 --to ply -o "$W/t.ply"
+expect_status 0
+read -r closed v f chi area vol < <($FX plycheck "$W/t.ply")
+check "closed torus" test "$closed" = closed
+check "chi 0 ($chi)" test "$chi" = 0
+
+case_ "golden: sphere counts and measures (tests/data/isosurf/sphere.json, fcompare-free: exact integers, 1e-6 relative)"
+gold="$FEST_FIXTURES/isosurf/sphere.json"
+check "vertices" test "$(jq .vertices "$W/s.json")" = "$(jq .vertices "$gold")"
+check "triangles" test "$(jq .triangles "$W/s.json")" = "$(jq .triangles "$gold")"
+check "area" awk -v a="$(jq .area "$W/s.json")" -v b="$(jq .area "$gold")" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * b) }'
+
+case_ "determinism: threads 1 = threads 2 = brute-force scan, byte for byte"
+run isosurf "$W/sphere.nrrd" --iso 0.25 --threads 1 -o "$W/a.ply"
+run isosurf "$W/sphere.nrrd" --iso 0.25 --threads 2 -o "$W/b.ply"
+run isosurf "$W/sphere.nrrd" --iso 0.25 --no-octree -o "$W/c.ply"
+check "threads" cmp "$W/a.ply" "$W/b.ply"
+check "octree vs scan" cmp "$W/a.ply" "$W/c.ply"
+
+case_ "--cap closes a surface cut by the volume boundary"
+run isosurf "$W/sphere.nrrd" --iso -5 -o "$W/open.ply" --report "$W/open.json"
+check "open without --cap" test "$(jq .boundary_edges "$W/open.json")" -gt 0
+run isosurf "$W/sphere.nrrd" --iso -5 --cap -o "$W/capped.ply" --report "$W/capped.json"
+check "closed with --cap" test "$(jq .closed "$W/capped.json")" = true
+read -r closed _ < <($FX plycheck "$W/capped.ply")
+check "independently closed" test "$closed" = closed
+
+case_ "adaptive: closed, fewer triangles, every vertex where exact mode puts it (independent check)"
+run isosurf adaptive "$W/sphere.nrrd" --iso 0 --cap --max-error 0.2 -o "$W/ad.ply" --report "$W/ad.json"
+expect_status 0
+read -r closed v f chi _ < <($FX plycheck "$W/ad.ply")
+check "closed ($closed)" test "$closed" = closed
+check "chi 2" test "$chi" = 2
+run isosurf exact "$W/sphere.nrrd" --iso 0 --cap -o "$W/ex.ply"
+check "fewer triangles ($f)" test "$f" -lt "$(jq .triangles "$W/s.json")"
+check "vertices are exact-mode vertices" $FX subset "$W/ad.ply" "$W/ex.ply"
+run isosurf adaptive "$W/torus.nrrd" --iso 0 --cap --focus 20,13.5,7.5 --focus-radius 2 --max-error inf -o "$W/adt.ply"
+read -r closed _ _ chi _ < <($FX plycheck "$W/adt.ply")
+check "focus: closed torus" test "$closed" = closed
+check "focus: chi 0" test "$chi" = 0
+run isosurf exact "$W/sphere.nrrd" --iso 0 --focus 1,2,3
+expect_clean_failure 2 isosurf
+run isosurf adaptive "$W/sphere.nrrd" --iso 0 --max-error -1
+expect_clean_failure 2 isosurf
+
+case_ "progressive: closed levels coarse to fine, the last (tolerance 0) identical to exact; focus path; Draco"
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --cap --errors 0.4,0.1,0 -o "$W/prog"
+expect_status 0
+check "three levels" test "$(jq '.levels | length' "$W/prog/manifest.json")" = 3
+check "all closed" test "$(jq '[.levels[].closed] | all' "$W/prog/manifest.json")" = true
+check "coarse first" test "$(jq '.levels[0].triangles < .levels[2].triangles' "$W/prog/manifest.json")" = true
+run isosurf exact "$W/sphere.nrrd" --iso 0 --cap -o "$W/capped0.ply"
+check "last = exact" cmp "$W/prog/level_02.ply" "$W/capped0.ply"
+printf 'x,y,z\n11.5,11.5,20\n3,11.5,11.5\n' > "$W/path.csv"
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --cap --focus-path "$W/path.csv" --focus-radius 2 --to drc -o "$W/prog2"
+expect_status 0
+check "two Draco frames" test -s "$W/prog2/frame_01.drc"
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --errors 0.1,0.2 -o "$W/prog3"
+expect_clean_failure 2 isosurf
+run isosurf progressive "$W/sphere.nrrd" --iso 0 --errors 0.1,0 -o /proc/nope/dir
+expect_clean_failure 4 isosurf
+
+case_ "stats of any mesh: an open triangle"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$W/tri.off"
+run isosurf stats "$W/tri.off"
+expect_status 0
+expect_json .boundary_edges 3
+expect_json .closed false
+expect_json .area 0.5
+
+case_ "stdin and other formats"
+run_stdin "$W/sphere.nrrd" isosurf --iso 0 --to off
+expect_status 0
+check "OFF on stdout" grep -q '^OFF' "$out"
+
+case_ "iso outside the range: empty mesh, warning, exit 0"
+run isosurf "$W/sphere.nrrd" --iso 1000 -o "$W/e.ply"
+expect_status 0
+expect_stderr_has "^isosurf: warning: no surface"
+
+case_ "bad input"
+run isosurf "$W/sphere.nrrd" -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+run isosurf "$W/sphere.nrrd" --iso abc
+expect_clean_failure 2 isosurf
+: > "$W/empty"
+run_stdin "$W/empty" isosurf --iso 0
+expect_clean_failure 3 isosurf
+head -c 2000 "$W/sphere.nrrd" > "$W/trunc.nrrd"
+run isosurf "$W/trunc.nrrd" --iso 0
+expect_clean_failure 3 isosurf
+run isosurf "$W/nan.nrrd" --iso 0.5
+expect_clean_failure 3 isosurf
+expect_stderr_has "NaN"
+run isosurf "$W/nan.nrrd" --iso -0.5 --nan-outside -o "$W/n.ply"
+expect_status 0
+run isosurf "$W/flat.nrrd" --iso 3.5
+expect_clean_failure 3 isosurf
+expect_stderr_has "2-D"
+run isosurf "$W/sphere.nrrd" --iso 0 -o "$W/nodir/x.ply"
+expect_clean_failure 4 isosurf
+check "no partial file" test ! -e "$W/nodir/x.ply"
+run isosurf "$W/sphere.nrrd" --iso 0 --to xyz
+expect_clean_failure 2 isosurf
+run isosurf "$W/sphere.nrrd" --iso 0 --frame 3 --field rho
+expect_clean_failure 2 isosurf
+run isosurf stats "$W/sphere.nrrd"
+expect_clean_failure 3 isosurf
+
+case_ "conventions: --help, --version, unknown flag, missing file"
+run isosurf --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run isosurf --version
+expect_status 0
+check "names fest" grep -q "(fest)" "$out"
+run isosurf --no-such-flag x
+expect_clean_failure 2 isosurf
+run isosurf "$W/does-not-exist.nrrd" --iso 1
+expect_clean_failure 4 isosurf
+expect_stderr_has "does-not-exist"
+
+finish

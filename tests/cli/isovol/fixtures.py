@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""Small NRRD volumes for the isosurf/volrender CLI tests, and independent checks of
+their outputs (pure Python: no fest code).
+
+  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | xramp | nan | flat
+  fixtures.py crossings IN.nrrd ISO     number of voxel edges whose ends lie on both sides of ISO
+  fixtures.py plycheck MESH.ply         binary PLY: every edge in exactly two triangles, in
+                                        opposite directions -> prints "closed V F chi area volume"
+  fixtures.py pfm IMG.pfm X Y           prints the RGB of pixel (X, Y) (Y from the top)
+  fixtures.py centroid IMG.pfm          intensity-weighted centroid "x y" of channel 0
+  fixtures.py subset A.ply B.ply        exit 0 when every vertex of A is a vertex of B (bitwise)
+"""
+import math
+import struct
+import sys
+
+
+def write_nrrd(path, dims, values, spacing=(1, 1, 1)):
+    with open(path, "wb") as f:
+        f.write(b"NRRD0004\ntype: float\ndimension: 3\n")
+        f.write(("sizes: %d %d %d\n" % dims).encode())
+        f.write(("spacings: %r %r %r\n" % spacing).encode())
+        f.write(b"encoding: raw\nendian: little\n\n")
+        f.write(struct.pack("<%df" % len(values), *values))
+
+
+def read_nrrd(path):
+    data = open(path, "rb").read()
+    head, body = data.split(b"\n\n", 1)
+    dims = None
+    for line in head.decode().splitlines():
+        if line.startswith("sizes:"):
+            dims = tuple(int(x) for x in line.split()[1:])
+    n = dims[0] * dims[1] * dims[2]
+    return dims, struct.unpack("<%df" % n, body[: 4 * n])
+
+
+def field(dims, f):
+    nx, ny, nz = dims
+    return [f(i, j, k) for k in range(nz) for j in range(ny) for i in range(nx)]
+
+
+def volume(kind, out):
+    if kind == "sphere":  # R = 9.3 in 24^3, high inside
+        c = 11.5
+        write_nrrd(out, (24, 24, 24), field((24, 24, 24), lambda i, j, k: 9.3 - math.sqrt((i - c) ** 2 + (j - c) ** 2 + (k - c) ** 2)))
+    elif kind == "torus":  # R = 8, r = 3.5 in 28 x 28 x 16
+        write_nrrd(out, (28, 28, 16), field((28, 28, 16), lambda i, j, k: 3.5 - math.hypot(math.hypot(i - 13.5, j - 13.5) - 8, k - 7.5)))
+    elif kind == "slab":  # homogeneous 33^3 (docs/volrender.md)
+        write_nrrd(out, (33, 33, 33), [5.0] * 33 ** 3)
+    elif kind == "ramp":  # f = y / 32
+        write_nrrd(out, (33, 33, 33), field((33, 33, 33), lambda i, j, k: j / 32.0))
+    elif kind == "quadratic":  # f = (y / 32)^2 at the samples
+        write_nrrd(out, (33, 33, 33), field((33, 33, 33), lambda i, j, k: (j / 32.0) ** 2))
+    elif kind == "blob":  # a bright Gaussian off centre, 40^3, spacing 0.01 (a 0.4 m box)
+        write_nrrd(out, (40, 40, 40), field((40, 40, 40), lambda i, j, k: 100 * math.exp(-((i - 24) ** 2 + (j - 17) ** 2 + (k - 20) ** 2) / 6.0)),
+                   spacing=(0.01, 0.01, 0.01))
+    elif kind == "xramp":  # f = x on 65^3 (slice contours)
+        write_nrrd(out, (65, 65, 65), field((65, 65, 65), lambda i, j, k: float(i)))
+    elif kind == "nan":
+        v = [0.0] * 8 ** 3
+        v[100] = float("nan")
+        write_nrrd(out, (8, 8, 8), v)
+    elif kind == "flat":  # 2-D: 16 x 16 x 1
+        write_nrrd(out, (16, 16, 1), [float(i % 16) for i in range(256)])
+    else:
+        sys.exit("unknown kind " + kind)
+
+
+def crossings(path, iso):
+    (nx, ny, nz), v = read_nrrd(path)
+    inside = [x >= iso for x in v]
+    n = 0
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                p = i + nx * (j + ny * k)
+                if i + 1 < nx and inside[p] != inside[p + 1]:
+                    n += 1
+                if j + 1 < ny and inside[p] != inside[p + nx]:
+                    n += 1
+                if k + 1 < nz and inside[p] != inside[p + nx * ny]:
+                    n += 1
+    print(n)
+
+
+def plycheck(path):
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    head = data[:end].decode().splitlines()
+    nv = nf = 0
+    vprops = []
+    in_vertex = False
+    for line in head:
+        w = line.split()
+        if w[:2] == ["element", "vertex"]:
+            nv, in_vertex = int(w[2]), True
+        elif w[:2] == ["element", "face"]:
+            nf, in_vertex = int(w[2]), False
+        elif w[0] == "property" and in_vertex:
+            vprops.append(w[1])
+    assert all(p == "float" for p in vprops), vprops
+    stride = 4 * len(vprops)
+    pos = end
+    V = []
+    for _ in range(nv):
+        V.append(struct.unpack_from("<3f", data, pos))
+        pos += stride
+    uses = {}
+    area = vol = 0.0
+    for _ in range(nf):
+        cnt = data[pos]
+        assert cnt == 3
+        a, b, c = struct.unpack_from("<3I", data, pos + 1)
+        pos += 13
+        for x, y in ((a, b), (b, c), (c, a)):
+            key = (min(x, y), max(x, y))
+            fwd, bwd = uses.get(key, (0, 0))
+            uses[key] = (fwd + (x < y), bwd + (x > y))
+        A, B, C = V[a], V[b], V[c]
+        u = [B[i] - A[i] for i in range(3)]
+        w = [C[i] - A[i] for i in range(3)]
+        cr = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+        area += 0.5 * math.sqrt(sum(x * x for x in cr))
+        vol += (A[0] * (B[1] * C[2] - B[2] * C[1]) - A[1] * (B[0] * C[2] - B[2] * C[0]) + A[2] * (B[0] * C[1] - B[1] * C[0])) / 6
+    closed = all(f == 1 and b == 1 for f, b in uses.values())
+    print("closed" if closed else "open", nv, nf, nv - len(uses) + nf, "%.6f" % area, "%.6f" % vol)
+
+
+def ply_vertices(path):
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    nv = [int(l.split()[2]) for l in data[:end].decode().splitlines() if l.startswith("element vertex")][0]
+    return {data[end + 12 * i: end + 12 * i + 12] for i in range(nv)}
+
+
+def read_pfm(path):
+    data = open(path, "rb").read()
+    parts = data.split(b"\n", 3)
+    kind, (w, h), scale = parts[0], map(int, parts[1].split()), float(parts[2])
+    ch = 3 if kind == b"PF" else 1
+    fmt = "<" if scale < 0 else ">"
+    vals = struct.unpack(fmt + "%df" % (w * h * ch), parts[3][: 4 * w * h * ch])
+    return w, h, ch, vals  # rows bottom to top
+
+
+def pfm(path, x, y):
+    w, h, ch, v = read_pfm(path)
+    row = h - 1 - y
+    p = (row * w + x) * ch
+    print(" ".join("%.9f" % v[p + c] for c in range(ch)))
+
+
+def centroid(path):
+    w, h, ch, v = read_pfm(path)
+    sx = sy = s = 0.0
+    for row in range(h):
+        for x in range(w):
+            val = v[(row * w + x) * ch]
+            y = h - 1 - row
+            sx += val * (x + 0.5)
+            sy += val * (y + 0.5)
+            s += val
+    print("%.6f %.6f" % (sx / s, sy / s))
+
+
+if __name__ == "__main__":
+    cmd = sys.argv[1]
+    if cmd == "volume":
+        volume(sys.argv[2], sys.argv[3])
+    elif cmd == "crossings":
+        crossings(sys.argv[2], float(sys.argv[3]))
+    elif cmd == "plycheck":
+        plycheck(sys.argv[2])
+    elif cmd == "pfm":
+        pfm(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+    elif cmd == "centroid":
+        centroid(sys.argv[2])
+    elif cmd == "subset":
+        sys.exit(0 if ply_vertices(sys.argv[2]) <= ply_vertices(sys.argv[3]) else 1)
+    else:
+        sys.exit(__doc__)

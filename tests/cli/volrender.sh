@@ -1,0 +1,217 @@
+#!/usr/bin/env bash
+# volrender end-to-end: the analytic compositing cases of docs/volrender.md (exact answers
+# from the emission-absorption integral), stereo disparity and the mirror camera checked by
+# projecting a bright blob independently (Python), determinism, a golden image, bad input.
+source "$(dirname "$0")/lib.sh"
+FX="python3 $(dirname "$0")/isovol/fixtures.py"
+W="$WORK"
+for k in slab ramp quadratic blob nan flat; do $FX volume $k "$W/$k.nrrd"; done
+near() {  # near VALUE EXPECTED TOLERANCE
+  awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }'
+}
+ortho=(--fov 0 --view 0,0 --size 8x8 --ert 1 --to pfm)
+
+case_ "homogeneous slab: A = 1 - 0.9^32 = 0.965663, C = A (1, 0.5, 0.25), for any step"
+printf 'value,r,g,b,a\n0,1,0.5,0.25,0.1\n10,1,0.5,0.25,0.1\n' > "$W/slab.csv"
+for s in 1 0.5 0.3 0.1; do
+  run volrender dvr "$W/slab.nrrd" --tf "$W/slab.csv" "${ortho[@]}" --step $s -o "$W/slab.pfm"
+  expect_status 0
+  read -r r g b < <($FX pfm "$W/slab.pfm" 4 4)
+  check "step $s: r $r" near "$r" 0.9656631618 1e-5
+  check "step $s: g $g" near "$g" 0.4828315809 1e-5
+  check "step $s: b $b" near "$b" 0.2414157904 1e-5
+done
+
+case_ "extinction ramp f = y/32, tau = 0.1 v: A = 1 - e^-1.6 = 0.798103 for any step, also pre-integrated"
+printf '0,1,1,1,0\n1,1,1,1,0.1\n' > "$W/ramp.csv"
+for s in 1 0.5 0.3 0.1; do
+  for p in "" --preint; do
+    run volrender dvr "$W/ramp.nrrd" --tf "$W/ramp.csv" --tf-mode extinction "${ortho[@]}" --step $s $p -o "$W/ramp.pfm"
+    read -r r _ < <($FX pfm "$W/ramp.pfm" 4 4)
+    check "step $s $p: $r" near "$r" 0.7981034 1e-6
+  done
+done
+
+case_ "quadratic samples: trapezoid integral 0.1 * 10928/1024 -> A = 0.656025"
+for s in 0.5 0.25; do
+  run volrender dvr "$W/quadratic.nrrd" --tf "$W/ramp.csv" --tf-mode extinction "${ortho[@]}" --step $s -o "$W/q.pfm"
+  read -r r _ < <($FX pfm "$W/q.pfm" 4 4)
+  check "step $s: $r" near "$r" 0.6560249 1e-6
+done
+run volrender dvr "$W/quadratic.nrrd" --tf "$W/ramp.csv" --tf-mode extinction "${ortho[@]}" --step 0.3 -o "$W/q.pfm"
+read -r r _ < <($FX pfm "$W/q.pfm" 4 4)
+check "step 0.3: $r" near "$r" 0.6560249 1e-4
+
+# The blob's centre P = index (24, 17, 20) * 0.01 = (0.24, 0.17, 0.20).
+screen='-0.1,-0.1,0.5;0.5,-0.1,0.5;-0.1,0.4,0.5'
+case_ "stereo pair: the blob's disparity is ipd z / (D + z) on the screen (prediction by projection)"
+run volrender mip "$W/blob.nrrd" --window 0,100 --screen "$screen" --eye 0.2,0.15,1.1 --stereo 0.064 --size 300x250 \
+    --to pfm -o "$W/st_%s.pfm"
+expect_status 0
+read -r lx ly < <($FX centroid "$W/st_L.pfm")
+read -r rx ry < <($FX centroid "$W/st_R.pfm")
+# line eye -> P meets the screen plane z = 0.5 at eye + t (P - eye), t = (1.1 - 0.5) / (1.1 - 0.2)
+pred() { awk -v ex="$1" 'BEGIN { t = 0.6 / 0.9; x = ex + t * (0.24 - ex); y = 0.15 + t * (0.17 - 0.15);
+                                 printf "%.6f %.6f\n", (x + 0.1) / 0.6 * 300, 250 - (y + 0.1) / 0.5 * 250 }'; }
+read -r plx ply < <(pred 0.168)
+read -r prx pry < <(pred 0.232)
+check "left x $lx vs $plx" near "$lx" "$plx" 0.5
+check "left y $ly vs $ply" near "$ly" "$ply" 0.5
+check "right x $rx vs $prx" near "$rx" "$prx" 0.5
+check "disparity $(awk -v a="$rx" -v b="$lx" 'BEGIN{print a-b}') px = 0.064*0.3/0.9 m = 10.67 px" \
+      near "$(awk -v a="$rx" -v b="$lx" 'BEGIN{print a-b}')" 10.6667 0.5
+
+case_ "beam-splitter mirror: the blob appears at the pixel whose reflection lies on the line eye -> P"
+# A 45-degree mirror n.x = delta, n = (0, 1, 1)/sqrt(2) through (0.2, 0.7, 0.2) between the eye
+# (at +y) and the volume; the screen is horizontal at z = 1 where the reflected lines of sight
+# go. Prediction: q = line(eye, P) meets R(screen plane); the pixel is at R(q) on the screen.
+mirror='0,0.70710678118654752,0.70710678118654752,0.63639610306789277'
+run volrender mip "$W/blob.nrrd" --window 0,100 --screen '-0.2,0.3,1.0;0.6,0.3,1.0;-0.2,1.1,1.0' --eye 0.2,1.3,0.2 \
+    --mirror "$mirror" --size 200x200 --to pfm -o "$W/mirror.pfm"
+expect_status 0
+read -r mx my < <($FX centroid "$W/mirror.pfm")
+read -r px py < <(python3 - <<'PY'
+import math
+n = (0, 1 / math.sqrt(2), 1 / math.sqrt(2)); d = 0.63639610306789277
+R = lambda x: tuple(x[i] - 2 * (sum(n[k] * x[k] for k in range(3)) - d) * n[i] for i in range(3))
+pa, pb, pc = (-0.2, 0.3, 1.0), (0.6, 0.3, 1.0), (-0.2, 1.1, 1.0)
+eye, P = (0.2, 1.3, 0.2), (0.24, 0.17, 0.20)
+ra, rb, rc = R(pa), R(pb), R(pc)
+u = [rb[i] - ra[i] for i in range(3)]; v = [rc[i] - ra[i] for i in range(3)]
+nn = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+dd = [P[i] - eye[i] for i in range(3)]
+t = sum(nn[i] * (ra[i] - eye[i]) for i in range(3)) / sum(nn[i] * dd[i] for i in range(3))
+q = R(tuple(eye[i] + t * dd[i] for i in range(3)))
+uu = (q[0] - pa[0]) / 0.8; vv = (q[1] - pa[1]) / 0.8
+print("%.6f %.6f" % (uu * 200, 200 - vv * 200))
+PY
+)
+check "mirror x $mx vs $px" near "$mx" "$px" 0.5
+check "mirror y $my vs $py" near "$my" "$py" 0.5
+
+case_ "cross-tool: iso depth = depth of isosurf's mesh of the same iso-value (--mesh), within 0.05 voxel"
+$FX volume sphere "$W/sphere.nrrd"
+run isosurf "$W/sphere.nrrd" --iso 0 -o "$W/sphere.ply"
+run volrender dvr "$W/sphere.nrrd" --tf contour-only --mesh "$W/sphere.ply" --fov 0 --size 48x48 --depth-image "$W/dm.pfm" --to pfm -o "$W/m.pfm"
+expect_status 0
+run volrender iso "$W/sphere.nrrd" --iso 0:1 --fov 0 --size 48x48 --depth-image "$W/di.pfm" --to pfm -o "$W/i.pfm"
+expect_status 0
+check "depths agree" python3 - "$W/dm.pfm" "$W/di.pfm" <<'PY'
+import math, struct, sys
+def rd(p):
+    d = open(p, "rb").read().split(b"\n", 3)
+    w, h = map(int, d[1].split())
+    return struct.unpack("<%df" % (w * h), d[3][: 4 * w * h])
+a, b = rd(sys.argv[1]), rd(sys.argv[2])
+both = [(x, y) for x, y in zip(a, b) if math.isfinite(x) and math.isfinite(y)]
+only = sum(math.isfinite(x) != math.isfinite(y) for x, y in zip(a, b))
+sys.exit(0 if len(both) > 300 and only <= 12 and max(abs(x - y) for x, y in both) <= 0.05 else 1)
+PY
+printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n1 1 0\n0.5 1.5 0\n0 1 0\n5 0 1 2 3 4\n' > "$W/penta.off"
+run volrender dvr "$W/sphere.nrrd" --mesh "$W/penta.off" -o "$W/x.png"
+expect_clean_failure 3 volrender
+
+case_ "slices (fig. 4.5b): f = x, one plane normal to z, contours 8:8:7 of width 1.01: colour only near x = 8, 16, ..., 56"
+$FX volume xramp "$W/xramp.nrrd"
+# orthographic, looking down z, 64 pixels over x = 0..64: pixel i has its centre at x = i + 0.5
+run volrender slices "$W/xramp.nrrd" --slice-axis z --slices 1 --contours 8:8:7 --contour-width 1.01 --fov 0 --view 0,90 \
+    --zoom 1.7320508075688772 --size 64x64 --to pfm -o "$W/sl.pfm"
+expect_status 0
+check "contour columns" python3 - "$W/sl.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read().split(b"\n", 3)
+w, h = map(int, d[1].split())
+v = struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+for row in range(2, h - 2):
+    lit = [x for x in range(w) if v[(row * w + x) * 3] > 0]
+    near = lambda x: min(abs(x + 0.5 - c) for c in range(8, 57, 8))
+    if any(near(x) > 0.5 + 1 for x in lit):  # +-1 pixel
+        sys.exit(1)
+    if any(not any(abs(x + 0.5 - c) <= 1 for x in lit) for c in range(8, 57, 8)):
+        sys.exit(1)
+PY
+run volrender slices "$W/xramp.nrrd" --slices 4
+expect_clean_failure 2 volrender
+
+case_ "camera --print: off-axis frustum (Kooima) for an on-axis eye is symmetric"
+run volrender camera --screen '-0.4,-0.3,0;0.4,-0.3,0;-0.4,0.3,0' --eye 0,0,2 --near 0.5 --size 8x6
+expect_status 0
+expect_json '.[0].frustum.left' -0.1
+expect_json '.[0].frustum.top' 0.075
+expect_json '.[0].frustum.eye_screen_distance' 2
+
+case_ "determinism: threads and empty-space skipping do not change bytes"
+run volrender dvr "$W/blob.nrrd" --tf rainbow --shade on --view 30,20 --size 64x48 --threads 1 -o "$W/a.png"
+run volrender dvr "$W/blob.nrrd" --tf rainbow --shade on --view 30,20 --size 64x48 --threads 2 -o "$W/b.png"
+run volrender dvr "$W/blob.nrrd" --tf rainbow --shade on --view 30,20 --size 64x48 --no-skip -o "$W/c.png"
+check "threads" cmp "$W/a.png" "$W/b.png"
+check "skipping" cmp "$W/a.png" "$W/c.png"
+
+case_ "golden image (tests/data/volrender/blob_dvr.pfm; guard only): max difference 2e-3"
+run volrender dvr "$W/blob.nrrd" --tf rainbow --shade on --view 30,20 --size 64x48 --to pfm -o "$W/g.pfm"
+check "fcompare-free numeric comparison" python3 - "$W/g.pfm" "$FEST_FIXTURES/volrender/blob_dvr.pfm" <<'PY'
+import struct, sys
+def rd(p):
+    d = open(p, "rb").read().split(b"\n", 3)
+    w, h = map(int, d[1].split())
+    return struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+a, b = rd(sys.argv[1]), rd(sys.argv[2])
+sys.exit(0 if len(a) == len(b) and max(abs(x - y) for x, y in zip(a, b)) <= 2e-3 else 1)
+PY
+
+case_ "bad input"
+run volrender dvr "$W/blob.nrrd" -o "$W/x.png" --tf "$W/nope.csv"
+expect_clean_failure 4 volrender
+printf '1,0,0,0,0\n0,1,1,1,1\n' > "$W/dec.csv"
+run volrender dvr "$W/blob.nrrd" --tf "$W/dec.csv" -o "$W/x.png"
+expect_clean_failure 3 volrender
+expect_stderr_has "increase"
+printf '0,0,0,0,0\n1,1,1,1,1.5\n' > "$W/alpha.csv"
+run volrender dvr "$W/blob.nrrd" --tf "$W/alpha.csv" -o "$W/x.png"
+expect_clean_failure 3 volrender
+printf 'this is not a transfer function\n' > "$W/junk.csv"
+run volrender dvr "$W/blob.nrrd" --tf "$W/junk.csv" -o "$W/x.png"
+expect_clean_failure 3 volrender
+run volrender iso "$W/blob.nrrd" -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender warp "$W/blob.nrrd"
+expect_clean_failure 2 volrender
+run volrender dvr "$W/blob.nrrd" --screen '0,0,0;1,0,0;2,0,0' --eye 0,0,1 -o "$W/x.png"
+expect_clean_failure 2 volrender
+expect_stderr_has "collinear"
+run volrender dvr "$W/blob.nrrd" --screen '0,0,0;1,0,0;0,1,0' --eye 0.5,0.5,0 -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender dvr "$W/blob.nrrd" --screen '0,0,0;1,0,0;0,1,0' --eye 0.5,0.5,1 --mirror 0,0,0,1 -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender dvr "$W/blob.nrrd" --size 0x10 -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender dvr "$W/nan.nrrd" -o "$W/x.png"
+expect_clean_failure 3 volrender
+run volrender dvr "$W/flat.nrrd" -o "$W/x.png"
+expect_clean_failure 3 volrender
+: > "$W/empty"
+run_stdin "$W/empty" volrender dvr -o "$W/x.png"
+expect_clean_failure 3 volrender
+run volrender dvr "$W/blob.nrrd" --screen "$screen" --eye 0.2,0.15,1.1 --stereo 0.064 -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender dvr "$W/blob.nrrd" --eye 0.2,0.2,0.2 --look-at 0,0,0 -o "$W/x.png"
+expect_clean_failure 2 volrender
+expect_stderr_has "inside the volume"
+run volrender dvr "$W/blob.nrrd" -o "$W/nodir/x.png"
+expect_clean_failure 4 volrender
+check "no partial file" test ! -e "$W/nodir/x.png"
+
+case_ "conventions: --help, --version, unknown flag, missing file"
+run volrender --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run volrender --version
+expect_status 0
+check "names fest" grep -q "(fest)" "$out"
+run volrender --no-such-flag x
+expect_clean_failure 2 volrender
+run volrender dvr "$W/does-not-exist.nrrd"
+expect_clean_failure 4 volrender
+expect_stderr_has "does-not-exist"
+
+finish

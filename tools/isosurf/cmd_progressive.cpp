@@ -1,0 +1,139 @@
+// isosurf progressive: a sequence of crack-free meshes, coarse first (--errors), or one
+// adaptive mesh per focus position (--focus-path); docs/isosurf.md "Progressive mode".
+// The volume and its min-max pyramid are built once.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/threads.hpp"
+#include "isosurface/adaptive.hpp"
+#include "isosurface/marching_cubes.hpp"
+#include "isosurface/mesh_stats.hpp"
+#include "load_grid.hpp"
+#include "surface_io.hpp"
+#include "volume_pyramid/minmax_pyramid.hpp"
+
+namespace fest::isosurf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::vector<double> parse_list(const std::string& s, const char* flag) {
+  std::vector<double> v;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, ',');) {
+    char* end = nullptr;
+    const double x = item == "inf" ? std::numeric_limits<double>::infinity() : std::strtod(item.c_str(), &end);
+    if (item.empty() || (item != "inf" && *end) || !(x >= 0)) throw usage_error("{} takes values >= 0 separated by commas, not '{}'", flag, s);
+    v.push_back(x);
+  }
+  return v;
+}
+
+std::vector<std::array<double, 3>> read_path(const std::string& path) {
+  const std::string text = read_input(path);
+  std::vector<std::array<double, 3>> out;
+  std::stringstream ss(text);
+  int line_no = 0;
+  for (std::string line; std::getline(ss, line);) {
+    ++line_no;
+    if (line.empty() || line[0] == '#') continue;
+    std::array<double, 3> p{};
+    char* end = nullptr;
+    const char* c = line.c_str();
+    bool ok = true;
+    for (int a = 0; a < 3 && ok; ++a) {
+      p[a] = std::strtod(c, &end);
+      ok = end != c && std::isfinite(p[a]) && (a == 2 || *end == ',');
+      c = end + 1;
+    }
+    if (!ok) {
+      if (out.empty() && line_no == 1) continue;  // a header
+      throw bad_input("focus path line {}: x,y,z expected ({})", line_no, path);
+    }
+    out.push_back(p);
+  }
+  if (out.empty()) throw bad_input("focus path has no positions ({})", path);
+  return out;
+}
+
+}  // namespace
+
+int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const ProgressiveArgs& p) {
+  if (p.errors.empty() == p.focus_path.empty()) throw usage_error("progressive needs exactly one of --errors and --focus-path");
+  if (o.output.empty() || o.output == "-") throw usage_error("progressive writes a directory: give -o DIR");
+  const std::string format = o.to.empty() ? "ply" : output_format(o.to, "");
+  const int threads = resolve_threads(o.threads);
+  std::vector<double> errors;
+  std::vector<std::array<double, 3>> path;
+  if (!p.errors.empty()) {
+    errors = parse_list(p.errors, "--errors");
+    for (std::size_t k = 1; k < errors.size(); ++k)
+      if (!(errors[k] < errors[k - 1])) throw usage_error("--errors must be descending (coarse first), not '{}'", p.errors);
+  } else {
+    path = read_path(p.focus_path);
+  }
+  const LoadedGrid in = load_grid(o);
+  std::error_code ec;
+  std::filesystem::create_directories(o.output, ec);
+  if (ec || !std::filesystem::is_directory(o.output)) throw io_error("cannot create the output directory {}: {}", o.output, ec.message());
+  auto t0 = Clock::now();
+  const volume_pyramid::MinMaxPyramid pyramid(in.grid, threads);
+  const double t_build = std::chrono::duration<double>(Clock::now() - t0).count();
+  isosurface::AdaptiveOptions ao;
+  ao.face_rule = o.face_rule == "separate" ? isosurface::FaceRule::separate : isosurface::FaceRule::decider;
+  ao.triangulation = o.tri == "fan" ? isosurface::Triangulation::fan : o.tri == "centroid" ? isosurface::Triangulation::centroid
+                                                                                          : isosurface::Triangulation::minarea;
+  ao.threads = threads;
+  ao.focus_radius = a.focus_radius;
+  ao.error_growth = a.error_growth;
+  ao.max_level = a.max_level;
+  if (!a.focus.empty()) {
+    std::stringstream ss(a.focus);
+    std::array<double, 3> f{};
+    char comma;
+    if (!(ss >> f[0] >> comma >> f[1] >> comma >> f[2])) throw usage_error("--focus takes X,Y,Z, not '{}'", a.focus);
+    ao.focus = f;
+  }
+  const std::size_t count = errors.empty() ? path.size() : errors.size();
+  nlohmann::json levels = nlohmann::json::array();
+  std::size_t cumulative = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    t0 = Clock::now();
+    isosurface::Surface s;
+    if (!errors.empty()) ao.max_error = errors[k];
+    else ao.focus = path[k], ao.max_error = std::numeric_limits<double>::infinity();
+    if (!errors.empty() && errors[k] == 0 && !ao.focus) {
+      isosurface::ExtractOptions eo;  // tolerance 0 everywhere: the exact surface itself
+      eo.face_rule = ao.face_rule, eo.triangulation = ao.triangulation, eo.threads = threads;
+      s = isosurface::extract_isosurface(in.grid, in.iso, eo, &pyramid);
+    } else {
+      s = isosurface::extract_adaptive(in.grid, in.iso, ao, pyramid).surface;
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    const std::string bytes = encode_surface(s, format, o.qbits);
+    char name[32];
+    std::snprintf(name, sizeof name, "%s_%02zu.%s", errors.empty() ? "frame" : "level", k, format == "plya" ? "ply" : format.c_str());
+    write_output((std::filesystem::path(o.output) / name).string(), bytes);
+    cumulative += bytes.size();
+    const auto m = isosurface::mesh_stats(s);
+    nlohmann::json j = {{"file", name}, {"vertices", s.vertices()}, {"triangles", s.triangles.size()}, {"closed", m.closed},
+                        {"bytes", bytes.size()}, {"cumulative_bytes", cumulative}, {"seconds", seconds}};
+    if (!errors.empty()) j["max_error"] = errors[k];
+    else j["focus"] = path[k];
+    levels.push_back(j);
+  }
+  nlohmann::json manifest = {{"iso", in.iso}, {"source", in.source}, {"format", format}, {"build_s", t_build},
+                             {errors.empty() ? "frames" : "levels", levels}};
+  write_output((std::filesystem::path(o.output) / "manifest.json").string(), manifest.dump(2) + "\n");
+  return 0;
+}
+
+}  // namespace fest::isosurf
