@@ -68,7 +68,9 @@ struct Violation {};
 
 }  // namespace
 
-ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify) {
+ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify, bool decode) {
+  // The adaptive coder's contexts come from the decoder's state, so it always runs it.
+  const bool run_decoder = decode || mode == ConnMode::adaptive;
   for (bool exclusion : {true, false}) {
     if (!exclusion && mode == ConnMode::static_model)
       throw runtime_failure("the static model cannot code this mesh (a symbol it excludes occurs)");
@@ -99,12 +101,12 @@ ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int mod
           enc.encode(sf.cum[static_cast<std::size_t>(s)], sf.f[static_cast<std::size_t>(s)], static_total);
         }
         if (mode == ConnMode::static_model) machine.advance(s);
-        decoder.step(s);
+        if (run_decoder) decoder.step(s);
       }
       ConnEncoded out;
       out.bytes = enc.finish();
       out.exclusion = exclusion;
-      out.decoded = decoder.finish(verify);
+      if (decode) out.decoded = decoder.finish(verify);
       return out;
     } catch (const Violation&) {
     }
