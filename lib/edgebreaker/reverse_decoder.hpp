@@ -66,6 +66,8 @@ class ReverseDecoder {
   int incoming_open_edge(int a);
   void count_triangle(int c);
   void remember_events(int c);
+  // Most symbols are no handle event's source: checked inline before the call.
+  bool event_here() const noexcept { return next_event_ > 0 && events_[next_event_ - 1].source == position_; }
 
   void inverse_E();
   void inverse_L();
