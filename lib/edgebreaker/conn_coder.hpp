@@ -30,10 +30,12 @@ struct ConnEncoded {
 // that tries several coders asks for it once. Without it the static and raw coders do
 // not run the decoder at all (their contexts do not need it): half of the work of
 // trying both coders.
-ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify, bool decode = true);
+// `opposite` asks for DecodedConnectivity::opposite (the multi-way predictor's).
+ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify, bool decode = true,
+                                bool opposite = true);
 
 // Inverse; throws bad_input for any stream that is not one encode_connectivity wrote.
 DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
-                                        ConnMode mode, int model, bool exclusion, bool verify);
+                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite = true);
 
 }  // namespace fest::edgebreaker

@@ -376,7 +376,8 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   bool verified = false;  // the symbols decode the same whatever the coder: check once
   const auto consider = [&](ConnMode mode) {
     // The decoded connectivity is the same whatever the coder: built (and checked) once.
-    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify && !verified, !conn);
+    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify && !verified, !conn,
+                                        options.predictor == Predictor::multi);
     verified = true;
     if (!conn) {
       conn = std::move(c);
@@ -753,7 +754,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   } else {
     dec = decode_connectivity(section("CONN"), static_cast<std::size_t>(h.symbols), std::move(events),
                               static_cast<ConnMode>(h.conn_mode), h.model_id, (h.flags & ebm_flags::exclusion) != 0,
-                              verify);
+                              verify, static_cast<Predictor>(h.predictor) == Predictor::multi);
   }
   if (static_cast<std::uint64_t>(dec.components) != h.components)
     throw bad_input("connectivity has {} components, the header says {}", dec.components, h.components);

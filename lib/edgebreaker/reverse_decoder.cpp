@@ -233,7 +233,7 @@ void ReverseDecoder::step(Symbol s) {
   last_was_L_ = s == Symbol::L;
 }
 
-DecodedConnectivity ReverseDecoder::finish(bool verify) {
+DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
   if (position_ != 0) throw bad_input("invalid connectivity: {} symbols missing", position_);
   position_ = symbols_;
   if (!pending_.empty() || next_event_ != 0) fail("a handle event has no S");
@@ -342,8 +342,8 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
   const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
-  out.opposite.resize(static_cast<std::size_t>(3 * t));
-  for (int f = 0; f < t; ++f) {  // per triangle: one new_index lookup for its own corners
+  if (verify || opposite) out.opposite.resize(static_cast<std::size_t>(3 * t));
+  for (int f = 0; f < t && (verify || opposite); ++f) {  // per triangle: one new_index lookup for its own corners
     const int base = 3 * new_index[static_cast<std::size_t>(f)];
     for (int k = 0; k < 3; ++k) out.opposite[static_cast<std::size_t>(base + k)] = moved(O_[static_cast<std::size_t>(3 * f + k)]);
   }
