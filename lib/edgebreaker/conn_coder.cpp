@@ -68,7 +68,10 @@ struct Violation {};
 
 }  // namespace
 
-ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify) {
+ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify, bool decode,
+                                bool opposite) {
+  // The adaptive coder's contexts come from the decoder's state, so it always runs it.
+  const bool run_decoder = decode || mode == ConnMode::adaptive;
   for (bool exclusion : {true, false}) {
     if (!exclusion && mode == ConnMode::static_model)
       throw runtime_failure("the static model cannot code this mesh (a symbol it excludes occurs)");
@@ -99,12 +102,12 @@ ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int mod
           enc.encode(sf.cum[static_cast<std::size_t>(s)], sf.f[static_cast<std::size_t>(s)], static_total);
         }
         if (mode == ConnMode::static_model) machine.advance(s);
-        decoder.step(s);
+        if (run_decoder) decoder.step(s);
       }
       ConnEncoded out;
       out.bytes = enc.finish();
       out.exclusion = exclusion;
-      out.decoded = decoder.finish(verify);
+      if (decode) out.decoded = decoder.finish(verify, opposite);
       return out;
     } catch (const Violation&) {
     }
@@ -113,7 +116,7 @@ ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int mod
 }
 
 DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
-                                        ConnMode mode, int model, bool exclusion, bool verify) {
+                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite) {
   RangeDecoder dec(bytes);
   ReverseDecoder decoder(symbols, std::move(events));
   AdaptiveModel adaptive;
@@ -148,7 +151,7 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
     if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
   }
   if (dec.truncated()) throw bad_input("connectivity section is truncated");
-  return decoder.finish(verify);
+  return decoder.finish(verify, opposite);
 }
 
 }  // namespace fest::edgebreaker

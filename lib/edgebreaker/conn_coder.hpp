@@ -18,17 +18,24 @@ enum class ConnMode : std::uint8_t { raw = 0, static_model = 1, adaptive = 2 };
 struct ConnEncoded {
   std::string bytes;
   bool exclusion = true;  // C was excluded where the decoder knows it impossible
-  DecodedConnectivity decoded;  // what the decoder will rebuild (G ids)
+  DecodedConnectivity decoded;  // what the decoder will rebuild (G ids); empty unless asked
 };
 
 // `model` names a static model (state_machine.hpp) for ConnMode::static_model. With
 // exclusion, the adaptive coder gives C no probability where c_possible() is false; an
 // input that violates this (only non-simple meshes can) is coded again without it, and
 // the static mode then throws runtime_failure (the caller falls back to adaptive).
-ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify);
+// With `decode`, the result carries what the decoder rebuilds (checked with `verify`);
+// the decoded connectivity depends on the symbols only, not on the coder, so a caller
+// that tries several coders asks for it once. Without it the static and raw coders do
+// not run the decoder at all (their contexts do not need it): half of the work of
+// trying both coders.
+// `opposite` asks for DecodedConnectivity::opposite (the multi-way predictor's).
+ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int model, bool verify, bool decode = true,
+                                bool opposite = true);
 
 // Inverse; throws bad_input for any stream that is not one encode_connectivity wrote.
 DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
-                                        ConnMode mode, int model, bool exclusion, bool verify);
+                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite = true);
 
 }  // namespace fest::edgebreaker

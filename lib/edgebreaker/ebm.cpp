@@ -174,7 +174,9 @@ float float_up(double x) {
 struct Quantiser {
   std::array<float, 4> box{};
   int bits = 14;
-  double steps() const { return std::ldexp(1.0, bits) - 1.0; }
+  // 2^bits - 1, exactly (bits <= 30); an integer shift, since ldexp per coordinate was a
+  // tenth of the encoder's instructions.
+  double steps() const { return static_cast<double>((std::uint64_t{1} << bits) - 1u); }
   QPoint quantise(const std::array<double, 3>& x) const {
     QPoint q{};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -268,7 +270,9 @@ struct Attribute {
   std::array<float, 3> box{};  // min of the first two components, extent
   const char* tag() const { return kind == 1 ? "NRML" : kind == 2 ? "COLR" : "TEXC"; }
   const char* name() const { return kind == 1 ? "normal" : kind == 2 ? "color" : "texcoord"; }
-  double steps() const { return std::ldexp(1.0, bits) - 1.0; }
+  // 2^bits - 1, exactly (bits <= 30); an integer shift, since ldexp per coordinate was a
+  // tenth of the encoder's instructions.
+  double steps() const { return static_cast<double>((std::uint64_t{1} << bits) - 1u); }
   double lo(std::size_t k) const { return kind == 1 ? -1.0 : kind == 2 ? 0.0 : static_cast<double>(box[k]); }
   double extent() const { return kind == 1 ? 2.0 : kind == 2 ? 255.0 : static_cast<double>(box[2]); }
   QPoint quantise(const double* x) const {
@@ -371,10 +375,16 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   int conn_mode = 0;
   bool verified = false;  // the symbols decode the same whatever the coder: check once
   const auto consider = [&](ConnMode mode) {
-    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify && !verified);
+    // The decoded connectivity is the same whatever the coder: built (and checked) once.
+    ConnEncoded c = encode_connectivity(trav.code, mode, options.model_id, options.verify && !verified, !conn,
+                                        options.predictor == Predictor::multi);
     verified = true;
-    if (!conn || c.bytes.size() < conn->bytes.size()) {
+    if (!conn) {
       conn = std::move(c);
+      conn_mode = static_cast<int>(mode);
+    } else if (c.bytes.size() < conn->bytes.size()) {
+      conn->bytes = std::move(c.bytes);
+      conn->exclusion = c.exclusion;
       conn_mode = static_cast<int>(mode);
     }
   };
@@ -744,7 +754,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   } else {
     dec = decode_connectivity(section("CONN"), static_cast<std::size_t>(h.symbols), std::move(events),
                               static_cast<ConnMode>(h.conn_mode), h.model_id, (h.flags & ebm_flags::exclusion) != 0,
-                              verify);
+                              verify, static_cast<Predictor>(h.predictor) == Predictor::multi);
   }
   if (static_cast<std::uint64_t>(dec.components) != h.components)
     throw bad_input("connectivity has {} components, the header says {}", dec.components, h.components);

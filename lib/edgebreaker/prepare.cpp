@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <utility>
 
 #include "core/error.hpp"
@@ -16,61 +15,50 @@ namespace {
 
 constexpr std::size_t max_faces = static_cast<std::size_t>(std::numeric_limits<int>::max() / 16);
 
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int v) {
-    while (parent[static_cast<std::size_t>(v)] != v) {
-      const int up = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
-      parent[static_cast<std::size_t>(v)] = up;
-      v = up;
-    }
-    return v;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-  }
-};
-
 // Pairs u->v with v->u per undirected edge, first with first, in face order (step 3).
 // Half-edges are bucketed by their first vertex (a counting sort, so corners stay in face
-// order within a bucket); each undirected edge is handled once, from its smaller vertex,
-// by scanning the two buckets: O(sum of valence^2), linear on real meshes.
+// order within a bucket), with each entry's end vertex stored beside it so that the scans
+// below read one contiguous array instead of chasing V through next/prev. Each undirected
+// edge is handled once, from its smaller vertex, by walking its u->v entries in bucket u
+// and its v->u entries in bucket v side by side: O(sum of valence^2), linear on real meshes.
 void pair_edges(CornerTable& table) {
   const int n = table.corners();
-  const auto from = [&](int c) { return table.V[static_cast<std::size_t>(next(c))]; };
-  const auto to = [&](int c) { return table.V[static_cast<std::size_t>(prev(c))]; };
+  const int* V = table.V.data();
   std::vector<int> start(static_cast<std::size_t>(table.vertex_count) + 1, 0);
-  for (int c = 0; c < n; ++c) ++start[static_cast<std::size_t>(from(c)) + 1];
+  for (int c = 0; c < n; ++c) ++start[static_cast<std::size_t>(V[next(c)]) + 1];
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<int> bucket(static_cast<std::size_t>(n));
+  std::vector<int> bucket(static_cast<std::size_t>(n)), bucket_to(static_cast<std::size_t>(n));
   {
     std::vector<int> fill(start.begin(), start.end() - 1);
-    for (int c = 0; c < n; ++c) bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(from(c))]++)] = c;
+    for (int f = 0; f < n; f += 3)
+      for (int j = 0; j < 3; ++j) {
+        // corner f+j is opposite the half-edge V[next] -> V[prev]
+        const int from = V[f + (j + 1) % 3], to = V[f + (j + 2) % 3];
+        const int slot = fill[static_cast<std::size_t>(from)]++;
+        bucket[static_cast<std::size_t>(slot)] = f + j;
+        bucket_to[static_cast<std::size_t>(slot)] = to;
+      }
   }
-  std::vector<int> forward, backward;
+  int* O = table.O.data();
   for (int u = 0; u < table.vertex_count; ++u) {
-    const int* ub = bucket.data() + start[static_cast<std::size_t>(u)];
-    const int un = start[static_cast<std::size_t>(u) + 1] - start[static_cast<std::size_t>(u)];
-    for (int i = 0; i < un; ++i) {
-      const int v = to(ub[i]);
+    const int ub = start[static_cast<std::size_t>(u)], ue = start[static_cast<std::size_t>(u) + 1];
+    for (int i = ub; i < ue; ++i) {
+      const int v = bucket_to[static_cast<std::size_t>(i)];
       if (v < u) continue;  // from the smaller vertex only
       bool first = true;    // handle each (u, v) at its first u->v half-edge
-      for (int k = 0; k < i && first; ++k) first = to(ub[k]) != v;
+      for (int k = ub; k < i && first; ++k) first = bucket_to[static_cast<std::size_t>(k)] != v;
       if (!first) continue;
-      forward.clear();
-      backward.clear();
-      for (int k = i; k < un; ++k)
-        if (to(ub[k]) == v) forward.push_back(ub[k]);
-      const int* vb = bucket.data() + start[static_cast<std::size_t>(v)];
-      const int vn = start[static_cast<std::size_t>(v) + 1] - start[static_cast<std::size_t>(v)];
-      for (int k = 0; k < vn; ++k)
-        if (to(vb[k]) == u) backward.push_back(vb[k]);
-      for (std::size_t k = 0; k < std::min(forward.size(), backward.size()); ++k) {
-        table.O[static_cast<std::size_t>(forward[k])] = backward[k];
-        table.O[static_cast<std::size_t>(backward[k])] = forward[k];
+      const int vb = start[static_cast<std::size_t>(v)], ve = start[static_cast<std::size_t>(v) + 1];
+      int f = i, b = vb;
+      for (;;) {  // the k-th u->v with the k-th v->u
+        while (b < ve && bucket_to[static_cast<std::size_t>(b)] != u) ++b;
+        if (b == ve) break;
+        const int cf = bucket[static_cast<std::size_t>(f)], cb = bucket[static_cast<std::size_t>(b)];
+        O[cf] = cb;
+        O[cb] = cf;
+        ++b;
+        for (++f; f < ue && bucket_to[static_cast<std::size_t>(f)] != v;) ++f;
+        if (f == ue) break;
       }
     }
   }
@@ -87,6 +75,8 @@ PreparedMesh prepare_mesh(const std::vector<Triangle>& faces, int vertex_count, 
 
   // Step 2: indices checked, degenerate faces dropped.
   std::vector<char> used(static_cast<std::size_t>(vertex_count), 0);
+  table.V.reserve(3 * faces.size());
+  out.face_of.reserve(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Triangle& t = faces[f];
     for (int v : t)
@@ -110,30 +100,51 @@ PreparedMesh prepare_mesh(const std::vector<Triangle>& faces, int vertex_count, 
 
   // Step 4: corners around a vertex joined through paired edges form fans. The corner
   // next to c across its edge V[c] -> V[prev(c)]... is next(O[next(c)]), at the same vertex.
-  UnionFind fans(kept_corners);
-  for (int c = 0; c < kept_corners; ++c) {
-    const int o = table.O[static_cast<std::size_t>(next(c))];
-    if (o >= 0) fans.unite(c, next(o));
-  }
+  // The corners of one fan form a path or a cycle under c -> next(O[next(c)]), whose
+  // inverse is c -> prev(O[prev(c)]); walking it from the fan's lowest corner labels the
+  // whole fan at once (a union-find over all corners cost a tenth of the encoder).
   // The fan met first (lowest face) keeps the vertex; later fans get copies in order.
-  std::vector<int> owner(static_cast<std::size_t>(vertex_count), -1);  // root keeping the id
-  std::vector<int> fan_vertex(static_cast<std::size_t>(kept_corners), -1);  // per root
+  std::vector<char> owned(static_cast<std::size_t>(vertex_count), 0);  // some fan keeps the id
+  std::vector<char> labelled(static_cast<std::size_t>(kept_corners), 0);
+  std::vector<int> fan;
   int next_vertex = vertex_count;
+  int* V = table.V.data();
+  const int* O = table.O.data();
   for (int c = 0; c < kept_corners; ++c) {
-    const int root = fans.find(c);
-    int& id = fan_vertex[static_cast<std::size_t>(root)];
-    const int v = table.V[static_cast<std::size_t>(c)];
-    if (id == -1) {
-      if (owner[static_cast<std::size_t>(v)] == -1) {
-        owner[static_cast<std::size_t>(v)] = root;
-        id = v;
-      } else {
-        if (strict) throw bad_input("vertex {} is non-manifold (--strict)", v);
-        out.copy_of.push_back(v);
-        id = next_vertex++;
-      }
+    if (labelled[static_cast<std::size_t>(c)]) continue;
+    const int v = V[c];
+    int id = v;
+    if (!owned[static_cast<std::size_t>(v)]) {
+      owned[static_cast<std::size_t>(v)] = 1;
+    } else {
+      if (strict) throw bad_input("vertex {} is non-manifold (--strict)", v);
+      out.copy_of.push_back(v);
+      id = next_vertex++;
     }
-    table.V[static_cast<std::size_t>(c)] = id;
+    fan.clear();
+    fan.push_back(c);
+    bool cycle = false;
+    for (int k = c;;) {  // forwards
+      const int o = O[next(k)];
+      if (o < 0) break;
+      k = next(o);
+      if (k == c) {
+        cycle = true;
+        break;
+      }
+      fan.push_back(k);
+    }
+    if (!cycle)
+      for (int k = c;;) {  // backwards
+        const int o = O[prev(k)];
+        if (o < 0) break;
+        k = prev(o);
+        fan.push_back(k);
+      }
+    for (int k : fan) {
+      labelled[static_cast<std::size_t>(k)] = 1;
+      V[k] = id;
+    }
   }
   out.first_dummy = next_vertex;
 

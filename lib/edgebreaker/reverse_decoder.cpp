@@ -43,8 +43,10 @@ void ReverseDecoder::fail(const char* why) const {
 
 int ReverseDecoder::new_triangle() {
   const int c = static_cast<int>(V_.size());
-  V_.insert(V_.end(), {-1, -1, -1});
-  O_.insert(O_.end(), {-1, -1, -1});
+  for (int k = 0; k < 3; ++k) {  // push_back: a range insert per triangle was the slow path
+    V_.push_back(-1);
+    O_.push_back(-1);
+  }
   return c;
 }
 
@@ -95,9 +97,13 @@ int ReverseDecoder::incoming_open_edge(int a) {
 }
 
 // Valence context (spec 2.7): decoded triangles at the new triangle's left vertex.
+// c is a triangle's first corner (new_triangle), so next(c) = c + 1: its root is found once.
 void ReverseDecoder::count_triangle(int c) {
-  for (int k = 0; k < 3; ++k) ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c + k)]))];
-  const int d = degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(next(c))]))];
+  ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c)]))];
+  const int left = find(V_[static_cast<std::size_t>(c + 1)]);
+  ++degree_[static_cast<std::size_t>(left)];
+  ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c + 2)]))];
+  const int d = degree_[static_cast<std::size_t>(left)];
   valence_class_ = std::clamp(d + 1, 2, 7) - 2;
 }
 
@@ -122,7 +128,7 @@ void ReverseDecoder::inverse_E() {
   for (int k = 0; k < 3; ++k) V_[static_cast<std::size_t>(c + k)] = new_vertex();
   loops_.push_back({c, 3});
   count_triangle(c);
-  remember_events(c);
+  if (event_here()) remember_events(c);
 }
 
 void ReverseDecoder::inverse_L() {
@@ -134,7 +140,7 @@ void ReverseDecoder::inverse_L() {
   link(next(c), a);
   loop = {c, loop.length < 0 ? -1 : loop.length + 1};
   count_triangle(c);
-  remember_events(c);
+  if (event_here()) remember_events(c);
 }
 
 void ReverseDecoder::inverse_R() {
@@ -146,7 +152,7 @@ void ReverseDecoder::inverse_R() {
   link(prev(c), a);
   loop = {c, loop.length < 0 ? -1 : loop.length + 1};
   count_triangle(c);
-  remember_events(c);
+  if (event_here()) remember_events(c);
 }
 
 void ReverseDecoder::inverse_C() {
@@ -169,7 +175,7 @@ void ReverseDecoder::inverse_C() {
   closed_at_.push_back(c);
   loop = {c, loop.length < 0 ? -1 : loop.length - 1};
   count_triangle(c);
-  remember_events(c);
+  if (event_here()) remember_events(c);
 }
 
 void ReverseDecoder::inverse_S() {
@@ -208,7 +214,7 @@ void ReverseDecoder::inverse_S() {
   const bool known = left_branch.length >= 0 && right_branch.length >= 0;
   loops_.push_back({c, known ? left_branch.length + right_branch.length - 1 : -1});
   count_triangle(c);
-  remember_events(c);
+  if (event_here()) remember_events(c);
 }
 
 void ReverseDecoder::step(Symbol s) {
@@ -227,7 +233,7 @@ void ReverseDecoder::step(Symbol s) {
   last_was_L_ = s == Symbol::L;
 }
 
-DecodedConnectivity ReverseDecoder::finish(bool verify) {
+DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
   if (position_ != 0) throw bad_input("invalid connectivity: {} symbols missing", position_);
   position_ = symbols_;
   if (!pending_.empty() || next_event_ != 0) fail("a handle event has no S");
@@ -308,7 +314,10 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
   for (std::size_t v = 0; v < parent_.size(); ++v)
     if (final_id[static_cast<std::size_t>(find(static_cast<int>(v)))] == -1) fail("a vertex is never closed by a C");
   out.vertex_count = next_id;
-  const auto id = [&](int corner) { return final_id[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(corner)]))]; };
+  // Every provisional vertex's G id, its root looked up once (not once per corner).
+  std::vector<int> g_of(parent_.size());
+  for (std::size_t v = 0; v < parent_.size(); ++v) g_of[v] = final_id[static_cast<std::size_t>(find(static_cast<int>(v)))];
+  const auto id = [&](int corner) { return g_of[static_cast<std::size_t>(V_[static_cast<std::size_t>(corner)])]; };
   for (int c : g_corner)
     out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1}
                                       : std::array<int, 3>{id(next(c)), id(prev(c)), id(O_[static_cast<std::size_t>(c)])});
@@ -333,8 +342,11 @@ DecodedConnectivity ReverseDecoder::finish(bool verify) {
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
   const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
-  out.opposite.resize(static_cast<std::size_t>(3 * t));
-  for (int c = 0; c < 3 * t; ++c) out.opposite[static_cast<std::size_t>(moved(c))] = moved(O_[static_cast<std::size_t>(c)]);
+  if (verify || opposite) out.opposite.resize(static_cast<std::size_t>(3 * t));
+  for (int f = 0; f < t && (verify || opposite); ++f) {  // per triangle: one new_index lookup for its own corners
+    const int base = 3 * new_index[static_cast<std::size_t>(f)];
+    for (int k = 0; k < 3; ++k) out.opposite[static_cast<std::size_t>(base + k)] = moved(O_[static_cast<std::size_t>(3 * f + k)]);
+  }
 
   if (verify) {
     // Re-encode the decoded corner table itself (not a table rebuilt from the faces, which

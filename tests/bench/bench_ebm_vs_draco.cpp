@@ -6,6 +6,13 @@
 // through libdraco, and draco_encoder's file size at cl7 when Debian's `draco` is installed.
 //
 //   build/bin/bench_ebm_vs_draco [TESTDATA_DIR] [--quick]     (default: $FEST_TESTDATA)
+//   build/bin/bench_ebm_vs_draco [TESTDATA_DIR] --profile MESH QP
+//
+// --profile codes one mesh (a name of the list below, or bunny_sub2) once with each coder
+// and prints nothing else: for valgrind --tool=callgrind, whose inclusive instruction
+// counts of encode_ebm, decode_ebm, draco::Encoder::EncodeMeshToBuffer and
+// draco::Decoder::DecodeMeshFromBuffer are then exactly one call each (deterministic,
+// unlike wall-clock time on a shared machine).
 //
 // Draco's connectivity is measured by encoding the same mesh with every position equal:
 // its geometry then costs a few bytes, so the rest is connectivity and header (the spec's
@@ -201,15 +208,34 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
   std::fflush(stdout);
 }
 
+// One call of each coder (see --profile above).
+void profile(const MeshSoup& soup, int qp) {
+  EncodeOptions o;
+  o.qp = qp;
+  o.verify = false;
+  const std::string ebm = encode_ebm(soup, o);
+  const MeshSoup back = decode_ebm(ebm, true, false);
+  const auto draco_mesh = to_draco(soup, false);
+  const std::string d7 = draco_encode(*draco_mesh, 7, qp);
+  draco_decode(d7);
+  std::printf("{\"bench\":\"ebm_vs_draco_profile\",\"triangles\":%zu,\"qp\":%d,\"ebm_bytes\":%zu,\"draco_cl7_bytes\":%zu}\n",
+              soup.triangles.size(), qp, ebm.size(), d7.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string dir;
   bool quick = false;
+  std::string profile_mesh;
+  int profile_qp = 14;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") quick = true;
-    else dir = a;
+    else if (a == "--profile" && i + 2 < argc) {
+      profile_mesh = argv[++i];
+      profile_qp = std::atoi(argv[++i]);
+    } else dir = a;
   }
   if (dir.empty()) {
     const char* env = std::getenv("FEST_TESTDATA");
@@ -217,6 +243,12 @@ int main(int argc, char** argv) {
     dir = env ? env : std::string(home ? home : ".") + "/.cache/fest/testdata";
   }
   try {
+    if (!profile_mesh.empty()) {
+      const bool sub = profile_mesh == "bunny_sub2";
+      const MeshSoup soup = load(dir + "/meshes/" + (sub ? std::string("bunny00") : profile_mesh) + ".off");
+      profile(sub ? subdivide(subdivide(soup)) : soup, profile_qp);
+      return 0;
+    }
     MeshSoup bunny;
     for (const char* name : {"bunny00", "armadillo", "ChineseDragon-10kv", "camel", "fandisk"}) {
       const std::string path = dir + "/meshes/" + name + ".off";

@@ -49,10 +49,16 @@ PY
 for src in "${sources[@]}"; do
   name=$(basename "$src"); name=${name%%.*}
   facts "$src" >"$WORK/$name.ref.json"
-  for ext in nii nii.gz; do
+  # NIfTI-1 (.nii, .nii.gz), NIfTI-2, the NIfTI-1 header/image pair and FreeSurfer's MGZ:
+  # nibabel reads every one. (MGH stores its geometry as float32: 1e-4 mm still holds.)
+  for ext in nii nii.gz n2.nii hdr mgz; do
     f="$WORK/$name.$ext"
-    "$FEST_BIN/fconv" "$src" -o "$f"
+    case $ext in
+      n2.nii) "$FEST_BIN/fconv" --to nifti2 "$src" -o "$f" ;;
+      *) "$FEST_BIN/fconv" "$src" -o "$f" ;;
+    esac
     case_ "nibabel reads fconv's $name.$ext: shape, affine and values of the source"
+    [ $ext = n2.nii ] && check "a NIfTI-2 header (sizeof_hdr 540)" "$PY" -c "import nibabel as nib, sys; sys.exit(0 if isinstance(nib.load('$f'), nib.Nifti2Image) else 1)"
     facts "$f" >"$out" 2>"$err"; rc=$?
     expect_status 0
     check "same shape, affine (1e-4 mm), values (1e-6 relative)" "$PY" - "$WORK/$name.ref.json" "$out" <<'PY'
