@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "softobj/shrinkwrap.hpp"
+
 namespace fest::softobj {
 
 namespace {
@@ -50,6 +52,18 @@ double max_iso_error(const Field& field, const TriMesh& m, double iso) {
   double e = 0;
   for (auto v : m.vertices()) e = std::max(e, std::abs(field.value(P(m, v)) - iso) / iso);
   return e;
+}
+
+double max_centroid_deviation(const Field& field, const TriMesh& m, double iso) {
+  double worst = 0;
+  for (auto f : m.faces()) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (auto v : m.fv_range(f)) c += P(m, v) / 3.0;
+    Eigen::Vector3d r = c;
+    project_to_iso(field, r, iso, 1e-12, 0);
+    worst = std::max(worst, (r - c).norm());
+  }
+  return worst;
 }
 
 }  // namespace fest::softobj

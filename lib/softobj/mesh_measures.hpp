@@ -21,4 +21,8 @@ MeshMeasures measure(const TriMesh& mesh);
 // max |f(v) - iso| / iso over the vertices.
 double max_iso_error(const Field& field, const TriMesh& mesh, double iso);
 
+// Largest distance from a triangle centroid to the iso-surface (Newton projection of the
+// centroid along grad f): the deviation measure of the adaptivity comparison.
+double max_centroid_deviation(const Field& field, const TriMesh& mesh, double iso);
+
 }  // namespace fest::softobj

@@ -138,6 +138,42 @@ class Wrapper {
     if (o_.relax > 0) relax(value, tol);
     refine(value, tol);
     if (o_.coarsen) coarsen();
+    flip_to_delaunay();
+  }
+
+  // Edge flips towards the Delaunay triangulation (our addition, docs/softobj.md §3.3):
+  // an edge whose opposite angles sum to more than pi is flipped when the new chord is
+  // acceptable and neither new triangle folds against the field normals. Thin triangles
+  // from splitting and collapsing are what fold when the surface shrinks further.
+  void flip_to_delaunay() {
+    for (int sweep = 0; sweep < 4; ++sweep) {
+      std::size_t flips = 0;
+      for (auto e : m_.edges()) {
+        if (!m_.is_flip_ok(e)) continue;
+        const auto h0 = m_.halfedge_handle(e, 0), h1 = m_.halfedge_handle(e, 1);
+        const VH a = m_.to_vertex_handle(h0), b = m_.to_vertex_handle(h1);
+        const VH c = m_.to_vertex_handle(m_.next_halfedge_handle(h0));
+        const VH d = m_.to_vertex_handle(m_.next_halfedge_handle(h1));
+        const Vec pa = P(m_, a), pb = P(m_, b), pc = P(m_, c), pd = P(m_, d);
+        auto opp = [](const Vec& apex, const Vec& u, const Vec& w) {
+          const Vec x = u - apex, y = w - apex;
+          return std::atan2(x.cross(y).norm(), x.dot(y));
+        };
+        if (opp(pc, pa, pb) + opp(pd, pa, pb) <= M_PI + 1e-9) continue;
+        if ((pc - pd).norm() > lmax_ || angle(N(m_, c), N(m_, d)) > alpha_) continue;
+        // h0 runs b -> a in face (b, a, c), h1 runs a -> b in face (a, b, d): the quad is
+        // a c b d, and the flipped triangles are (a, c, d) and (c, b, d).
+        auto agrees = [](const Vec& p0, const Vec& p1, const Vec& p2, const Vec& n) {
+          return (p1 - p0).cross(p2 - p0).normalized().dot(n) > 0.5;
+        };
+        if (!agrees(pa, pc, pd, (N(m_, a) + N(m_, c) + N(m_, d)).normalized()) ||
+            !agrees(pc, pb, pd, (N(m_, c) + N(m_, b) + N(m_, d)).normalized()))
+          continue;
+        m_.flip(e);
+        ++flips;
+      }
+      if (!flips) break;
+    }
   }
 
   // Tangential umbrella smoothing (docs/softobj.md §3.3b), then re-projection.
@@ -258,22 +294,50 @@ class Wrapper {
     return true;
   }
 
-  void finish(double vstar) {
-    double worst = 0;
-    for (auto v : m_.vertices()) worst = std::max(worst, std::abs(field_.value(P(m_, v)) - vstar) / vstar);
-    st_.max_abs_f_err_rel = worst;
-    std::size_t folded = 0;
+  std::vector<TriMesh::FaceHandle> folded_faces() const {
+    std::vector<TriMesh::FaceHandle> out;
     for (auto f : m_.faces()) {
       std::array<Vec, 3> q;
       int k = 0;
       for (auto v : m_.fv_range(f)) q[k++] = P(m_, v);
       const Vec g = (q[1] - q[0]).cross(q[2] - q[0]);
       const Vec grad = field_.eval((q[0] + q[1] + q[2]) / 3).grad;
-      if (g.dot(-grad) < 0) ++folded;
+      if (g.dot(-grad) <= 0) out.push_back(f);
     }
-    if (worst > o_.newton_tol || folded > 0)
+    return out;
+  }
+
+  // Fold check and repair (docs/softobj.md §3.3e): the vertices of folded triangles and
+  // their neighbours move to their tangential umbrella centre and back onto the surface.
+  void finish(double vstar) {
+    auto folded = folded_faces();
+    for (int attempt = 0; attempt < 3 && !folded.empty(); ++attempt) {
+      std::vector<VH> verts;
+      for (auto f : folded)
+        for (auto v : m_.fv_range(f)) {
+          verts.push_back(v);
+          for (auto w : m_.vv_range(v)) verts.push_back(w);
+        }
+      for (int round = 0; round < 4; ++round)
+        for (VH v : verts) {
+          Vec mean = Vec::Zero();
+          int n = 0;
+          for (auto w : m_.vv_range(v)) mean += P(m_, w), ++n;
+          const Vec p = P(m_, v), nv = N(m_, v);
+          Vec u = mean / n - p;
+          u -= u.dot(nv) * nv;
+          set_P(m_, v, p + u);
+          project(v, vstar, 1e-12);
+        }
+      refine(vstar, 1e-12);
+      folded = folded_faces();
+    }
+    double worst = 0;
+    for (auto v : m_.vertices()) worst = std::max(worst, std::abs(field_.value(P(m_, v)) - vstar) / vstar);
+    st_.max_abs_f_err_rel = worst;
+    if (worst > o_.newton_tol || !folded.empty())
       throw runtime_failure("surface is not genus 0 ({} folded triangles, largest |f - V*|/V* {:.3g})",
-                            folded, worst);
+                            folded.size(), worst);
   }
 };
 

@@ -89,17 +89,20 @@ Skeleton decode_skeleton(std::string_view text) {
   return s;
 }
 
+// One vertex or triangle per line: readable and diffable.
 std::string encode_skeleton(const Skeleton& s) {
-  json doc;
-  doc["vertices"] = json::array();
-  for (const auto& v : s.vertices) doc["vertices"].push_back({v.x(), v.y(), v.z()});
-  doc["triangles"] = s.triangles;
-  if (!s.segments.empty()) doc["segments"] = s.segments;
-  if (!s.points.empty()) doc["points"] = s.points;
-  if (s.charges.empty()) doc["charge"] = s.charge; else doc["charge"] = s.charges;
-  if (s.iso > 0) doc["iso"] = s.iso;
-  if (!s.units.empty()) doc["units"] = s.units;
-  return doc.dump(1) + "\n";
+  std::string out = "{\n \"vertices\": [";
+  for (std::size_t i = 0; i < s.vertices.size(); ++i)
+    out += (i ? ",\n  " : "\n  ") + json({s.vertices[i].x(), s.vertices[i].y(), s.vertices[i].z()}).dump();
+  out += "\n ],\n \"triangles\": [";
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) out += (i ? ", " : "") + json(s.triangles[i]).dump();
+  out += "]";
+  if (!s.segments.empty()) out += ",\n \"segments\": " + json(s.segments).dump();
+  if (!s.points.empty()) out += ",\n \"points\": " + json(s.points).dump();
+  out += ",\n \"charge\": " + (s.charges.empty() ? json(s.charge).dump() : json(s.charges).dump());
+  if (s.iso > 0) out += ",\n \"iso\": " + json(s.iso).dump();
+  if (!s.units.empty()) out += ",\n \"units\": " + json(s.units).dump();
+  return out + "\n}\n";
 }
 
 }  // namespace fest::softobj

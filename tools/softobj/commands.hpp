@@ -1,0 +1,47 @@
+#pragma once
+// softobj's subcommands (docs/softobj.md §7), each taking its parsed options.
+
+#include <string>
+#include <vector>
+
+namespace fest::softobj_tool {
+
+struct PolygonizeArgs {
+  std::string input = "-";
+  std::string output = "-";
+  std::string to;
+  double iso = 0, radius = 0;  // at most one; neither: the file's "iso", else radius 1
+  double alpha_deg = 15;
+  double lmax = 0;             // 0 = rho
+  int steps = 16;
+  int start_level = 1;
+  double relax = 0.5;
+  bool no_coarsen = false;
+  long long max_verts = 500000;
+  std::string method = "shrinkwrap";
+  double grid = 0;             // mc spacing; 0 = lmax / 2
+  std::string skeleton_format = "json";
+  std::string report;
+};
+
+struct TongueArgs {
+  std::string input = "-";
+  std::string output = "-";
+  bool neutral = false;              // start from the neutral shape, read no input
+  int frame = 0;
+  std::string layout = "default";
+  std::vector<std::string> set;      // name=value
+  double radius = 6;
+};
+
+struct FieldArgs {
+  std::string input = "-";
+  std::string at;
+  std::string output = "-";
+};
+
+int run_polygonize(const PolygonizeArgs& a);
+int run_tongue(const TongueArgs& a);
+int run_field(const FieldArgs& a);
+
+}  // namespace fest::softobj_tool
