@@ -40,6 +40,14 @@ struct FieldArgs {
   std::string output = "-";
 };
 
+struct AnimateArgs {
+  std::string input = "-";   // timeline
+  std::string table;
+  double fps = 30;
+  std::string output = "-";
+};
+
+int run_animate(const AnimateArgs& a);
 int run_polygonize(const PolygonizeArgs& a);
 int run_tongue(const TongueArgs& a);
 int run_field(const FieldArgs& a);

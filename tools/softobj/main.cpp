@@ -55,9 +55,17 @@ int main(int argc, char** argv) {
   field->add_option("--at", fa.at, "Points table")->required();
   field->add_option("-o,--output", fa.output, "TSV x y z f gx gy gz, - = standard output");
 
+  AnimateArgs aa;
+  auto* animate = app.add_subcommand("animate", "Phoneme timeline -> tongue parameters per frame (coarticulation)");
+  animate->add_option("input", aa.input, "Timeline: phoneme start_s end_s per line, - = standard input");
+  animate->add_option("--table", aa.table, "Phoneme table JSON (targets, classes, speeds, lags)")->required();
+  animate->add_option("--fps", aa.fps, "Frames per second")->check(CLI::Range(0.1, 10000.0));
+  animate->add_option("-o,--output", aa.output, "Parameter TSV, - = standard output");
+
   return fest::cli::run(app, argc, argv, [&] {
     if (*poly) return run_polygonize(pa);
     if (*tongue) return run_tongue(ta);
+    if (*animate) return run_animate(aa);
     return run_field(fa);
   });
 }
