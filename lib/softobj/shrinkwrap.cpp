@@ -76,10 +76,16 @@ class Wrapper {
     const double v0 = std::min(Q / (4 * rb), vstar);
     st_.v0 = v0;
     start_mesh(c.centre, v0);
+    const double lmax_final = lmax_;
     for (int k = 1; k <= o_.steps; ++k) {
       const double vk = v0 * std::pow(vstar / v0, static_cast<double>(k) / o_.steps);
+      // The length bound matters on the final surface only: on the larger intermediate
+      // surfaces (radius ~ Q/V_k far out) it grows with them, so the triangle count stays
+      // about constant while shrinking (our addition; docs/softobj.md §3).
+      lmax_ = lmax_final * std::max(1.0, vstar / vk);
       pass(vk, o_.newton_tol);
     }
+    lmax_ = lmax_final;
     pass(vstar, 1e-12);  // final pass at V* (docs/softobj.md §3.4)
     finish(vstar);
     return std::move(m_);

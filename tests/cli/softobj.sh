@@ -146,4 +146,24 @@ case_ "nothing written on failure"
 run softobj polygonize --max-verts 100 -o "$WORK/never.ply" "$softobj_tongue_json"
 check "no file" test ! -e "$WORK/never.ply"
 
+case_ "animate /b i b/ at 10 fps: rule 2 gives /i/'s target from t = 0 on (keys at 0, 0.2, 0.3)"
+printf '{"phonemes": {"i": {"class": "vowel", "tongue": {"a1": 40}}, "b": {"class": "consonant", "tongue": null}}, "lag_s": {"tip": 0, "middle": 0, "back": 0}}\n' >"$WORK/table.json"
+printf 'b 0 0.1\ni 0.1 0.3\nb 0.3 0.4\n' >"$WORK/bib.tsv"
+run softobj animate --table "$WORK/table.json" --fps 10 "$WORK/bib.tsv"
+expect_status 0
+check "5 frames (t = 0 .. 0.4) and a header" test "$(wc -l <"$out")" -eq 6
+check "a1 = 40 in every frame" test "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "a1") c = i; next } $c != 40 { bad++ } END { print bad + 0 }' "$out")" = 0
+cp "$out" "$WORK/bib.params.tsv"
+run softobj tongue --frame 4 "$WORK/bib.params.tsv"
+expect_status 0
+check "frame 4 -> skeleton with vl1.x = 15 sin 40 deg" within "$(jq '.vertices[1][0]' "$out")" "$(awk 'BEGIN { printf "%.15g", 15 * sin(40 * 3.14159265358979323846 / 180) }')" 1e-12
+case_ "animate bad input: unknown phoneme, overlapping phonemes"
+printf 'i 0 0.1\nx 0.1 0.2\n' >"$WORK/bad.tsv"
+run softobj animate --table "$WORK/table.json" "$WORK/bad.tsv"
+expect_clean_failure 3 softobj
+expect_stderr_has 'line 2: phoneme "x" is not in the table'
+printf 'i 0 0.3\nb 0.2 0.4\n' >"$WORK/bad.tsv"
+run softobj animate --table "$WORK/table.json" "$WORK/bad.tsv"
+expect_clean_failure 3 softobj
+
 finish
