@@ -166,4 +166,23 @@ printf 'i 0 0.3\nb 0.2 0.4\n' >"$WORK/bad.tsv"
 run softobj animate --table "$WORK/table.json" "$WORK/bad.tsv"
 expect_clean_failure 3 softobj
 
+case_ "palate pass 1: the tip 4 mm beyond the virtual plane x = 14 - 6 steps onto it"
+cp "$(dirname "$0")/../../examples/tongue/palate.json" "$WORK/palate.json"
+run softobj tongue --neutral --set x0=12 --palate "$WORK/palate.json"
+expect_status 0
+check "vl0.x = 8" within "$(jq '.vertices[0][0]' "$out")" 8 1e-12
+cp "$out" "$WORK/tip.json"
+case_ "palate pass 2: no vertex beyond the true plane x = 14 in the strip, none outside the sphere"
+run softobj polygonize -o "$WORK/tip.ply" "$WORK/tip.json"
+expect_status 0
+run softobj palate --palate "$WORK/palate.json" --to off "$WORK/tip.ply"
+expect_status 0
+check "inside" awk 'NR == 2 { n = $1 } NR > 2 && NR <= n + 2 { x = $1; y = $2; z = $3;
+  if (y >= -8 && y <= 6 && (z < 0 ? -z : z) <= 20 && x > 14 + 1e-9) bad++;
+  if (x > -10 && (x + 10)^2 + (y + 24)^2 + z^2 > 1600 + 1e-6) bad++ } END { exit bad > 0 }' "$out"
+case_ "palate bad input"
+printf '{"sphere": {"center": [0, 0], "radius": 4}, "strip": {}}\n' >"$WORK/badpal.json"
+run softobj palate --palate "$WORK/badpal.json" "$WORK/tip.ply"
+expect_clean_failure 3 softobj
+
 finish

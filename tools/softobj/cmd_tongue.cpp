@@ -7,6 +7,8 @@
 #include "core/table.hpp"
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
+#include "core/file_io.hpp"
+#include "softobj/palate.hpp"
 #include "softobj/skeleton_json.hpp"
 #include "softobj/tongue.hpp"
 
@@ -52,6 +54,16 @@ int run_tongue(const TongueArgs& a) {
   }
   for (int l = 3; l <= 11; ++l)
     if (!(p[l] >= 0)) throw bad_input("length {} is negative ({})", softobj::TongueParams::names()[static_cast<std::size_t>(l)], p[l]);
+  if (!a.palate.empty()) {
+    softobj::Palate pl;
+    try {
+      pl = softobj::decode_palate(read_input(a.palate));
+    } catch (const Error& e) {
+      if (e.status() != Status::bad_input) throw;
+      throw Error(e.status(), with_location(e.what(), a.palate));
+    }
+    softobj::palate_pass1(p, pl, a.radius);
+  }
   const auto layout = a.layout == "paper9" ? softobj::TongueLayout::paper9 : softobj::TongueLayout::default10;
   formats::store_output(a.output, softobj::encode_skeleton(softobj::tongue_skeleton(p, layout, a.radius)), false);
   return 0;

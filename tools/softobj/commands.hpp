@@ -32,7 +32,17 @@ struct TongueArgs {
   std::string layout = "default";
   std::vector<std::string> set;      // name=value
   double radius = 6;
+  std::string palate;                // pass 1 of the penetration avoidance
 };
+
+struct PalateArgs {
+  std::string input = "-";   // mesh
+  std::string palate;
+  std::string output = "-";
+  std::string to;
+};
+
+int run_palate(const PalateArgs& a);
 
 struct FieldArgs {
   std::string input = "-";

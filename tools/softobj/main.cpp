@@ -49,6 +49,15 @@ int main(int argc, char** argv) {
   tongue->add_option("--set", ta.set, "Override parameters: name=value[,name=value...]")->delimiter(',');
   tongue->add_option("--radius", ta.radius, "Offset radius rho in mm (iso = 1/rho)")->check(CLI::PositiveNumber);
 
+  tongue->add_option("--palate", ta.palate, "Palate JSON: keep the skeleton inside the virtual palate (pass 1)");
+
+  PalateArgs pla;
+  auto* palate = app.add_subcommand("palate", "Project mesh vertices outside the palate onto it (pass 2)");
+  palate->add_option("input", pla.input, "Mesh, - = standard input");
+  palate->add_option("--palate", pla.palate, "Palate JSON")->required();
+  palate->add_option("-o,--output", pla.output, "Mesh file, - = standard output (binary PLY)");
+  palate->add_option("--to", pla.to, "Output format: ply, plya, obj, off, stl");
+
   FieldArgs fa;
   auto* field = app.add_subcommand("field", "f and grad f of a skeleton at points (TSV/CSV with x y z)");
   field->add_option("input", fa.input, "Skeleton JSON, - = standard input");
@@ -66,6 +75,7 @@ int main(int argc, char** argv) {
     if (*poly) return run_polygonize(pa);
     if (*tongue) return run_tongue(ta);
     if (*animate) return run_animate(aa);
+    if (*palate) return run_palate(pla);
     return run_field(fa);
   });
 }
