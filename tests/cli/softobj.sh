@@ -185,4 +185,14 @@ printf '{"sphere": {"center": [0, 0], "radius": 4}, "strip": {}}\n' >"$WORK/badp
 run softobj palate --palate "$WORK/badpal.json" "$WORK/tip.ply"
 expect_clean_failure 3 softobj
 
+case_ "a mesh as skeleton (--skeleton-format mesh): a closed tetrahedron, outer sheet closed and on the surface"
+printf 'OFF\n4 4 0\n0 0 0\n10 0 0\n0 10 0\n0 0 10\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$WORK/tet.off"
+run softobj polygonize --skeleton-format mesh --radius 2 --report "$WORK/r.json" -o "$WORK/tet.ply" "$WORK/tet.off"
+expect_status 0
+check "closed, Euler 2" test "$(jq '[.closed, .euler_characteristic, .skeleton_euler_characteristic]' -c "$WORK/r.json")" = '[true,2,2]'
+check "on the surface" below "$(jq .max_abs_f_err_rel "$WORK/r.json")" 1e-6
+run softobj polygonize "$WORK/tet.off"
+expect_clean_failure 3 softobj
+expect_stderr_has "skeleton-format mesh"
+
 finish
