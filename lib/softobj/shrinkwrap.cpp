@@ -204,7 +204,7 @@ class Wrapper {
     const auto h = m_.halfedge_handle(e, 0);
     const VH a = m_.from_vertex_handle(h), b = m_.to_vertex_handle(h);
     *len = (P(m_, a) - P(m_, b)).norm();
-    if (*len <= 1e-9 * lmax_) return false;
+    if (*len <= 1e-3 * lmax_) return false;  // no endless splitting across a fold: the fold check repairs it
     return *len > lmax_ || angle(N(m_, a), N(m_, b)) > alpha_;
   }
 
@@ -247,7 +247,7 @@ class Wrapper {
       const auto h = m_.halfedge_handle(e, 0);
       const VH a = m_.from_vertex_handle(h), b = m_.to_vertex_handle(h);
       const double len = (P(m_, a) - P(m_, b)).norm();
-      if (len < 0.6 * lmax_ && angle(N(m_, a), N(m_, b)) < 0.6 * alpha_) cand.push_back({len, e.idx()});
+      if (len < 0.5 * lmax_ && angle(N(m_, a), N(m_, b)) < 0.5 * alpha_) cand.push_back({len, e.idx()});
     }
     std::sort(cand.begin(), cand.end());
     std::vector<char> touched(m_.n_vertices(), 0);
@@ -276,7 +276,7 @@ class Wrapper {
     if (m_.valence(v1) + m_.valence(v0) > 14) return false;
     for (auto w : m_.vv_range(v0)) {
       if (w == v1) continue;
-      if ((P(m_, w) - p1).norm() > 0.9 * lmax_ || angle(N(m_, w), n1) > 0.9 * alpha_) return false;
+      if ((P(m_, w) - p1).norm() > 0.8 * lmax_ || angle(N(m_, w), n1) > 0.8 * alpha_) return false;
     }
     for (auto f : m_.vf_range(v0)) {
       std::array<Vec, 3> q;
@@ -367,7 +367,19 @@ bool project_to_iso(const Field& field, Eigen::Vector3d& r, double value, double
 TriMesh shrinkwrap(const Field& field, const ShrinkwrapOptions& options, ShrinkwrapStats* stats) {
   if (!(options.iso > 0)) throw usage_error("iso value {} is not positive", options.iso);
   ShrinkwrapStats local;
-  Wrapper w(field, options, stats ? *stats : local);
+  ShrinkwrapStats& st = stats ? *stats : local;
+  try {
+    Wrapper w(field, options, st);
+    return w.run();
+  } catch (const Error& e) {
+    if (e.status() != Status::failure) throw;
+  }
+  // One retry with twice the iso steps: a surface with deep concavities (a tongue tip
+  // curled back towards its body) can trap vertices when it shrinks too fast.
+  ShrinkwrapOptions slower = options;
+  slower.steps = 2 * options.steps;
+  st = ShrinkwrapStats{};
+  Wrapper w(field, slower, st);
   return w.run();
 }
 

@@ -195,4 +195,16 @@ run softobj polygonize "$WORK/tet.off"
 expect_clean_failure 3 softobj
 expect_stderr_has "skeleton-format mesh"
 
+case_ "tongue --polygonize: every row of the animation, palate passes, a manifest, files in frame order"
+mkdir -p "$WORK/frames"
+run softobj tongue --polygonize --palate "$WORK/palate.json" --threads 2 -o "$WORK/frames/t%03d.ply" "$WORK/bib.params.tsv"
+expect_status 0
+check "manifest: header + 5 frames" test "$(wc -l <"$out")" -eq 6
+check "5 files" test "$(ls "$WORK/frames" | wc -l)" -eq 5
+check "row 3 names t003.ply" test "$(awk -F'\t' 'NR == 5 { print $3 }' "$out")" = "$WORK/frames/t003.ply"
+run softobj tongue --polygonize -o "$WORK/frames/no_pattern.ply" "$WORK/bib.params.tsv"
+expect_clean_failure 2 softobj
+run softobj tongue --polygonize --max-verts 10 -o "$WORK/frames/t%d.ply" "$WORK/bib.params.tsv"
+expect_status 2
+
 finish

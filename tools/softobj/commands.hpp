@@ -33,6 +33,11 @@ struct TongueArgs {
   std::vector<std::string> set;      // name=value
   double radius = 6;
   std::string palate;                // pass 1 of the penetration avoidance
+  // --polygonize: every row -> pass 1 -> shrink-wrap -> pass 2 -> output % frame number
+  bool polygonize = false;
+  double alpha_deg = 15, lmax = 0;
+  int steps = 16;
+  int threads = 0;
 };
 
 struct PalateArgs {

@@ -49,6 +49,14 @@ int main(int argc, char** argv) {
   tongue->add_option("--set", ta.set, "Override parameters: name=value[,name=value...]")->delimiter(',');
   tongue->add_option("--radius", ta.radius, "Offset radius rho in mm (iso = 1/rho)")->check(CLI::PositiveNumber);
 
+  tongue->add_flag("--polygonize", ta.polygonize,
+                   "Every row: palate pass 1, shrink-wrap, pass 2; -o is a pattern (frames/t%04d.ply); "
+                   "a TSV manifest on standard output");
+  tongue->add_option("--alpha", ta.alpha_deg, "With --polygonize: largest chord normal angle, degrees")
+      ->check(CLI::Range(0.5, 90.0));
+  tongue->add_option("--lmax", ta.lmax, "With --polygonize: longest chord (default rho)")->check(CLI::PositiveNumber);
+  tongue->add_option("--steps", ta.steps, "With --polygonize: iso steps")->check(CLI::Range(1, 1000));
+  fest::cli::add_threads(*tongue, ta.threads);
   tongue->add_option("--palate", ta.palate, "Palate JSON: keep the skeleton inside the virtual palate (pass 1)");
 
   PalateArgs pla;
