@@ -41,3 +41,33 @@ TEST(SoftobjRandom, StripsAreClosedOnSurfaceAndAcceptable) {
     EXPECT_LE(mm.max_normal_angle_deg, 15 + 1e-9);
   }
 }
+
+TEST(SoftobjRandom, ScalingAndTranslationCarryOver) {
+  // f for the skeleton scaled by s, at s r, is f(r)/s: with iso / s the surface (and, the
+  // thresholds being relative, the mesh) scales by s. A translation moves it.
+  Skeleton s;
+  s.vertices = {{0, 0, 0}, {12, 0, 0}, {5, 9, 2}, {3, -7, 4}};
+  s.triangles = {{0, 1, 2}, {0, 3, 1}};
+  Skeleton t = s;
+  const double k = 2.5;
+  const Eigen::Vector3d shift(100, -40, 7);
+  for (auto& v : t.vertices) v = k * v + shift;
+  ShrinkwrapOptions o;
+  o.iso = 1.0 / 3;
+  const fest::TriMesh a = shrinkwrap(Field(compile_terms(s)), o);
+  o.iso /= k;
+  const fest::TriMesh b = shrinkwrap(Field(compile_terms(t)), o);
+  const MeshMeasures ma = measure(a), mb = measure(b);
+  EXPECT_NEAR(mb.volume, k * k * k * ma.volume, 1e-3 * mb.volume);
+  EXPECT_NEAR(mb.area, k * k * ma.area, 1e-3 * mb.area);
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());  // the same decisions at every step
+  {
+    double worst = 0;
+    for (auto v : a.vertices()) {
+      const auto& p = a.point(v);
+      const auto& q = b.point(fest::TriMesh::VertexHandle(v.idx()));
+      worst = std::max(worst, (Eigen::Vector3d(q[0], q[1], q[2]) - (k * Eigen::Vector3d(p[0], p[1], p[2]) + shift)).norm());
+    }
+    EXPECT_LT(worst, 1e-6 * 3 * k);
+  }
+}
