@@ -207,4 +207,12 @@ expect_clean_failure 2 softobj
 run softobj tongue --polygonize --max-verts 10 -o "$WORK/frames/t%d.ply" "$WORK/bib.params.tsv"
 expect_status 2
 
+case_ "golden (regression snapshot, validated by the analytic cases): the default tongue"
+GOLDEN="$(dirname "$0")/softobj"
+"$FEST_BIN/softobj" tongue --neutral | "$FEST_BIN/softobj" polygonize --report "$WORK/g.json" -o "$WORK/g.ply"
+check "triangles within 2 %" within "$(jq .triangles "$WORK/g.json")" "$(jq .triangles "$GOLDEN/tongue_default.json")" 0.02
+check "volume within 0.2 %" within "$(jq .volume "$WORK/g.json")" "$(jq .volume "$GOLDEN/tongue_default.json")" 0.002
+run fcompare --ignore-counts --samples 20000 --tol 0.06 "$WORK/g.ply" "$GOLDEN/tongue_default.ply"
+expect_status 0
+
 finish
