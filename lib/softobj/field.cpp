@@ -7,7 +7,7 @@
 
 namespace fest::softobj {
 
-Field::Field(CompiledSkeleton compiled) : c_(std::move(compiled)) {
+Field::Field(CompiledSkeleton compiled, Kernel kernel) : c_(std::move(compiled)), kernel_(kernel) {
   dmin_ = 1e-9 * std::max(1.0, c_.bound_radius);
 }
 
@@ -22,6 +22,14 @@ FieldSample Field::eval(const Eigen::Vector3d& r) const {
     }
     const Eigen::Vector3d dr = r - R;
     const double d = std::max(dr.norm(), dmin_);
+    if (kernel_.kind == Kernel::wyvill) {
+      const double R2 = kernel_.radius * kernel_.radius, x = d * d / R2;
+      if (x >= 1) continue;
+      s.f += t.p * (1 - 4.0 / 9 * x * x * x + 17.0 / 9 * x * x - 22.0 / 9 * x);
+      const double dCdx = -4.0 / 3 * x * x + 34.0 / 9 * x - 22.0 / 9;
+      s.grad += (t.p * dCdx * 2 / R2) * dr;  // dC/dd (r - R)/d with dx/dd = 2 d / R^2
+      continue;
+    }
     s.f += t.p / d;                       // Coulomb potential p / |r - R|
     s.grad -= (t.p / (d * d * d)) * dr;   // its gradient -p (r - R) / d^3
   }

@@ -14,15 +14,26 @@ struct FieldSample {
   Eigen::Vector3d grad = Eigen::Vector3d::Zero();
 };
 
+// The kernel of a primitive's contribution: the seed's Coulomb p/d, or (for comparison
+// with classic soft objects; Wyvill, McPheeters & Wyvill 1986) p C(d) with
+// C = 1 - 4/9 x^3 + 17/9 x^2 - 22/9 x, x = (d/R)^2, for d < R, else 0. Compact support:
+// no far-field sphere, so shrink-wrap cannot start from one.
+struct Kernel {
+  enum Kind { coulomb, wyvill } kind = coulomb;
+  double radius = 0;  // R of wyvill
+};
+
 class Field {
  public:
-  explicit Field(CompiledSkeleton compiled);
+  explicit Field(CompiledSkeleton compiled, Kernel kernel = {});
+  const Kernel& kernel() const { return kernel_; }
   FieldSample eval(const Eigen::Vector3d& r) const;
   double value(const Eigen::Vector3d& r) const { return eval(r).f; }
   const CompiledSkeleton& skeleton() const { return c_; }
 
  private:
   CompiledSkeleton c_;
+  Kernel kernel_;
   double dmin_;
 };
 

@@ -64,6 +64,8 @@ class Wrapper {
 
   TriMesh run() {
     const CompiledSkeleton& c = field_.skeleton();
+    if (field_.kernel().kind != Kernel::coulomb)
+      throw usage_error("shrink-wrap needs the Coulomb kernel's far field; a compact kernel needs marching cubes");
     const double Q = c.total_charge;
     if (!(Q > 0))
       throw bad_input("the skeleton's total charge is {} (Euler characteristic {}): shrink-wrap needs a far-field "

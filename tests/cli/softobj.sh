@@ -215,4 +215,14 @@ check "volume within 0.2 %" within "$(jq .volume "$WORK/g.json")" "$(jq .volume 
 run fcompare --ignore-counts --samples 20000 --tol 0.06 "$WORK/g.ply" "$GOLDEN/tongue_default.ply"
 expect_status 0
 
+case_ "Wyvill kernel with marching cubes: C(R/2) = 1 - 4/9 (1/4)^3 + 17/9 (1/4)^2 - 22/9 (1/4) = 1/2, so iso 0.5 is a sphere of radius 5"
+run softobj polygonize --method mc --kernel wyvill:10 --iso 0.5 --grid 0.25 --report "$WORK/r.json" -o "$WORK/w.ply" "$WORK/point.json"
+expect_status 0
+check "volume 4/3 pi 125 within 0.5 %" within "$(jq .volume "$WORK/r.json")" 523.5988 0.005
+check "on the surface" below "$(jq .max_abs_f_err_rel "$WORK/r.json")" 1e-6
+run softobj polygonize --kernel wyvill:10 --iso 0.5 "$WORK/point.json"
+expect_clean_failure 2 softobj
+run softobj polygonize --method mc --kernel wyvill:-1 --iso 0.5 "$WORK/point.json"
+expect_clean_failure 2 softobj
+
 finish

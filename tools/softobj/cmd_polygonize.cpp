@@ -1,5 +1,7 @@
 // softobj polygonize: skeleton -> closed mesh of f = V* (docs/softobj.md §3).
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 
 #include <nlohmann/json.hpp>
 
@@ -21,13 +23,26 @@ int run_polygonize(const PolygonizeArgs& a) {
   if (a.iso != 0 && a.radius != 0) throw usage_error("--iso and --radius exclude each other");
   if (a.iso < 0 || (a.iso == 0 && a.radius < 0)) throw usage_error("--iso/--radius must be positive");
   if (a.method != "shrinkwrap" && a.method != "mc") throw usage_error("--method {} is not shrinkwrap or mc", a.method);
+  softobj::Kernel kernel;
+  if (a.kernel.rfind("wyvill:", 0) == 0) {
+    char* end = nullptr;
+    kernel.kind = softobj::Kernel::wyvill;
+    kernel.radius = std::strtod(a.kernel.c_str() + 7, &end);
+    if (*end != '\0' || !(kernel.radius > 0) || !std::isfinite(kernel.radius))
+      throw usage_error("--kernel {}: R must be a positive number", a.kernel);
+    if (a.method != "mc") throw usage_error("--kernel wyvill has no far field for shrink-wrap: use --method mc");
+    if (a.iso == 0) throw usage_error("--kernel wyvill needs --iso (0 < iso < charge)");
+  } else if (a.kernel != "coulomb") {
+    throw usage_error("--kernel {} is not coulomb or wyvill:R", a.kernel);
+  }
   const MeshTarget target = mesh_target(a.output, a.to);  // usage errors before any work
   const softobj::Skeleton s = read_skeleton(a.input, a.skeleton_format);
   const softobj::CompiledSkeleton compiled = softobj::compile_terms(s);
   const double iso = a.iso > 0 ? a.iso : a.radius > 0 ? s.charge / a.radius : s.iso > 0 ? s.iso : s.charge;
-  const double rho = s.charge / iso;
+  // The offset radius: p / V* for Coulomb; for Wyvill the grid margin is R.
+  const double rho = kernel.kind == softobj::Kernel::wyvill ? kernel.radius : s.charge / iso;
   const double lmax = a.lmax > 0 ? a.lmax : rho;
-  const softobj::Field field(compiled);
+  const softobj::Field field(compiled, kernel);
   softobj::ShrinkwrapStats stats;
   TriMesh mesh;
   if (a.method == "mc") {

@@ -21,6 +21,7 @@ struct PolygonizeArgs {
   std::string method = "shrinkwrap";
   double grid = 0;             // mc spacing; 0 = lmax / 2
   std::string skeleton_format = "json";
+  std::string kernel = "coulomb";  // or wyvill:R
   std::string report;
 };
 

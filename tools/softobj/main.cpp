@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   poly->add_option("--method", pa.method, "shrinkwrap (adaptive, genus 0) or mc (marching cubes, any topology)")
       ->check(CLI::IsMember({"shrinkwrap", "mc"}));
   poly->add_option("--grid", pa.grid, "Marching-cubes grid spacing (default lmax/2)")->check(CLI::PositiveNumber);
+  poly->add_option("--kernel", pa.kernel, "coulomb (p/d), or wyvill:R (compact; needs --method mc)");
   poly->add_option("--skeleton-format", pa.skeleton_format, "json, or mesh: a mesh's triangles are the skeleton")
       ->check(CLI::IsMember({"json", "mesh"}));
   poly->add_option("--report", pa.report, "JSON statistics: counts, errors, volume, area");
