@@ -172,3 +172,28 @@ TEST(SoftobjJson, RoundTripAndBadInput) {
   EXPECT_THROW(decode_skeleton("{"), fest::Error);
   EXPECT_THROW(decode_skeleton("{\"vertices\": [], \"triangles\": []}"), fest::Error);
 }
+
+TEST(SoftobjShrinkwrap, FlatFacesGetLargerTrianglesThanTheRim) {
+  // Square slab 20 x 20, rho = 5, alpha = 15, L_max = 3 rho: triangles whose centroid
+  // lies over the square's interior (the flat faces, 2 < x, y < 18) against the rounded
+  // rim (outside the square).
+  Field f(compile_terms(square(20)));
+  ShrinkwrapOptions o;
+  o.iso = 0.2;
+  o.lmax = 15;
+  const TriMesh m = shrinkwrap(f, o);
+  double flat = 0, rim = 0;
+  int nf = 0, nr = 0;
+  for (auto fh : m.faces()) {
+    std::array<Vector3d, 3> q;
+    int k = 0;
+    for (auto v : m.fv_range(fh)) q[k++] = Vector3d(m.point(v)[0], m.point(v)[1], m.point(v)[2]);
+    const Vector3d c = (q[0] + q[1] + q[2]) / 3;
+    const double area = 0.5 * (q[1] - q[0]).cross(q[2] - q[0]).norm();
+    if (c.x() > 2 && c.x() < 18 && c.y() > 2 && c.y() < 18) flat += area, ++nf;
+    else if (c.x() < 0 || c.x() > 20 || c.y() < 0 || c.y() > 20) rim += area, ++nr;
+  }
+  ASSERT_GT(nf, 0);
+  ASSERT_GT(nr, 0);
+  EXPECT_GE((flat / nf) / (rim / nr), 4.0) << "flat " << flat / nf << " rim " << rim / nr;
+}
