@@ -232,12 +232,10 @@ class Wrapper {
       m_.split(e, nv);
       ++st_.splits;
       project(nv, value, tol);
-      for (auto ve : m_.ve_range(nv)) {
+      for (auto ve : m_.ve_range(nv)) {  // only the edges at the new vertex are new
         double l;
         if (unacceptable(ve, &l)) q.push({l, ve.idx()});
       }
-      // The edges opposite the new vertex changed their neighbours' nothing, but their
-      // ends may have moved nowhere: only edges at nv are new.
     }
   }
 
