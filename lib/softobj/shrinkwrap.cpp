@@ -374,10 +374,12 @@ TriMesh shrinkwrap(const Field& field, const ShrinkwrapOptions& options, Shrinkw
   } catch (const Error& e) {
     if (e.status() != Status::failure) throw;
   }
-  // One retry with twice the iso steps: a surface with deep concavities (a tongue tip
-  // curled back towards its body) can trap vertices when it shrinks too fast.
+  // One retry with twice the iso steps and a finer start mesh: a surface with deep
+  // concavities (a tongue tip curled back towards its body, a strip folding over itself)
+  // can trap vertices when it shrinks too fast from too coarse a membrane.
   ShrinkwrapOptions slower = options;
   slower.steps = 2 * options.steps;
+  slower.start_level = std::min(options.start_level + 1, 6);
   st = ShrinkwrapStats{};
   Wrapper w(field, slower, st);
   return w.run();

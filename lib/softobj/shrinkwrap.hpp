@@ -32,7 +32,7 @@ struct ShrinkwrapStats {
 };
 
 // Returns a closed triangle mesh with unit vertex normals n = -grad f / |grad f|. A run
-// that fails is retried once with twice the iso steps.
+// that fails is retried once with twice the iso steps and one more start-mesh level.
 // Throws fest::Error(failure) when the surface is not genus 0 (vertices cannot reach it,
 // folded triangles remain) or the vertex limit is exceeded; Error(bad_input) when the
 // skeleton's total charge is not positive (no far-field sphere to start from).
