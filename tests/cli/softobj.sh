@@ -225,4 +225,13 @@ expect_clean_failure 2 softobj
 run softobj polygonize --method mc --kernel wyvill:-1 --iso 0.5 "$WORK/point.json"
 expect_clean_failure 2 softobj
 
+case_ "two unit charges at one point: f = 2/d, so radius 5 gives a sphere of radius 10 (beyond rho: the mc box must grow)"
+printf '{"vertices": [[0, 0, 0]], "points": [0, 0]}\n' >"$WORK/double.json"
+for m in shrinkwrap mc; do
+  run softobj polygonize --method $m --grid 0.5 --alpha 7 --radius 5 --report "$WORK/r.json" -o "$WORK/d.ply" "$WORK/double.json"
+  expect_status 0
+  check "$m: closed" test "$(jq .closed "$WORK/r.json")" = true
+  check "$m: volume 4/3 pi 10^3 within 0.5 %" within "$(jq .volume "$WORK/r.json")" 4188.790 0.005
+done
+
 finish

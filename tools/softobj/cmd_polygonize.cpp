@@ -45,8 +45,13 @@ int run_polygonize(const PolygonizeArgs& a) {
   const softobj::Field field(compiled, kernel);
   softobj::ShrinkwrapStats stats;
   TriMesh mesh;
+  std::size_t dropped = 0;
   if (a.method == "mc") {
-    mesh = marching_cubes(field, iso, rho, a.grid > 0 ? a.grid : lmax / 2, static_cast<std::size_t>(a.max_verts));
+    mesh = marching_cubes(field, iso, rho, a.grid > 0 ? a.grid : lmax / 2, static_cast<std::size_t>(a.max_verts),
+                          &dropped);
+    if (dropped)
+      throw runtime_failure("marching cubes made {} non-manifold triangles the mesh cannot hold; try another --grid",
+                            dropped);
   } else {
     softobj::ShrinkwrapOptions o;
     o.iso = iso;

@@ -16,29 +16,40 @@
 
 namespace fest::softobj_tool {
 
-TriMesh marching_cubes(const softobj::Field& field, double iso, double rho, double h, std::size_t max_vertices) {
+TriMesh marching_cubes(const softobj::Field& field, double iso, double rho, double h, std::size_t max_vertices,
+                       std::size_t* dropped) {
   const auto& c = field.skeleton();
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  Eigen::Vector3d lo0 = Eigen::Vector3d::Constant(1e300), hi0 = -lo0;
   for (const auto& t : c.terms)
-    for (const auto& v : t.v) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  const double grow = rho + 2 * h;
-  lo.array() -= grow;
-  hi.array() += grow;
-  int n[3];
-  double cells = 1;
-  for (int k = 0; k < 3; ++k) n[k] = static_cast<int>(std::ceil((hi[k] - lo[k]) / h)) + 1, cells *= n[k];
-  if (cells > 4e8) throw runtime_failure("a grid of {} x {} x {} samples is too large", n[0], n[1], n[2]);
+    for (const auto& v : t.v) lo0 = lo0.cwiseMin(v), hi0 = hi0.cwiseMax(v);
+  // The box grows by rho + 2h; overlapping primitives (a skeleton folding over itself)
+  // push the surface further out, so the box grows until no sample on its faces reaches
+  // the iso value (an open mesh otherwise).
   vtkNew<vtkImageData> img;
-  img->SetDimensions(n[0], n[1], n[2]);
-  img->SetOrigin(lo.x(), lo.y(), lo.z());
-  img->SetSpacing(h, h, h);
   vtkNew<vtkDoubleArray> values;
-  values->SetName("f");
-  values->SetNumberOfTuples(static_cast<vtkIdType>(cells));
-  vtkIdType id = 0;
-  for (int z = 0; z < n[2]; ++z)
-    for (int y = 0; y < n[1]; ++y)
-      for (int x = 0; x < n[0]; ++x) values->SetValue(id++, field.value(lo + h * Eigen::Vector3d(x, y, z)));
+  for (double grow = rho + 2 * h;; grow *= 1.5) {
+    Eigen::Vector3d lo = lo0.array() - grow, hi = hi0.array() + grow;
+    int n[3];
+    double cells = 1;
+    for (int k = 0; k < 3; ++k) n[k] = static_cast<int>(std::ceil((hi[k] - lo[k]) / h)) + 1, cells *= n[k];
+    if (cells > 4e8) throw runtime_failure("a grid of {} x {} x {} samples is too large", n[0], n[1], n[2]);
+    img->SetDimensions(n[0], n[1], n[2]);
+    img->SetOrigin(lo.x(), lo.y(), lo.z());
+    img->SetSpacing(h, h, h);
+    values->SetName("f");
+    values->SetNumberOfTuples(static_cast<vtkIdType>(cells));
+    vtkIdType id = 0;
+    bool boundary_inside = false;
+    for (int z = 0; z < n[2]; ++z)
+      for (int y = 0; y < n[1]; ++y)
+        for (int x = 0; x < n[0]; ++x) {
+          const double v = field.value(lo + h * Eigen::Vector3d(x, y, z));
+          values->SetValue(id++, v);
+          if (v >= iso && (x == 0 || y == 0 || z == 0 || x == n[0] - 1 || y == n[1] - 1 || z == n[2] - 1))
+            boundary_inside = true;
+        }
+    if (!boundary_inside) break;
+  }
   img->GetPointData()->SetScalars(values);
   vtkNew<vtkFlyingEdges3D> fe;
   fe->SetInputData(img);
@@ -74,8 +85,12 @@ TriMesh marching_cubes(const softobj::Field& field, double iso, double rho, doub
     const auto a = m.point(vh[t[0]]), b = m.point(vh[t[1]]), cc = m.point(vh[t[2]]);
     s += ((b - a) % (cc - a)) | m.normal(vh[t[0]]);
   }
-  for (const auto& t : tris)
-    if (s >= 0) m.add_face(vh[t[0]], vh[t[1]], vh[t[2]]); else m.add_face(vh[t[0]], vh[t[2]], vh[t[1]]);
+  std::size_t lost = 0;
+  for (const auto& t : tris) {
+    const auto f = s >= 0 ? m.add_face(vh[t[0]], vh[t[1]], vh[t[2]]) : m.add_face(vh[t[0]], vh[t[2]], vh[t[1]]);
+    if (!f.is_valid()) ++lost;
+  }
+  if (dropped) *dropped = lost;
   return m;
 }
 

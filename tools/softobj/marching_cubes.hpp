@@ -8,6 +8,9 @@
 
 namespace fest::softobj_tool {
 
-TriMesh marching_cubes(const softobj::Field& field, double iso, double rho, double h, std::size_t max_vertices);
+// Triangles OpenMesh's halfedge structure cannot hold (non-manifold configurations of the
+// case table) are not added; their number goes to *dropped.
+TriMesh marching_cubes(const softobj::Field& field, double iso, double rho, double h, std::size_t max_vertices,
+                       std::size_t* dropped = nullptr);
 
 }  // namespace fest::softobj_tool
