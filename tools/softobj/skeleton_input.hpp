@@ -1,0 +1,13 @@
+#pragma once
+// Reading a skeleton: the scene JSON, or a mesh (OBJ/OFF/PLY...) whose triangles become
+// charges (docs/softobj.md §7.2).
+
+#include <string>
+
+#include "softobj/skeleton.hpp"
+
+namespace fest::softobj_tool {
+
+softobj::Skeleton read_skeleton(const std::string& path, const std::string& format);
+
+}  // namespace fest::softobj_tool
