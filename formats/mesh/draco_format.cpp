@@ -1,8 +1,9 @@
 // Draco .drc through the Draco library. Decoding accepts triangle meshes and point
 // clouds; positions, normals, colours and texture coordinates are carried over.
 // Encoding: lossless (position bits 0) uses sequential coding with no quantization,
-// which keeps vertex and face order and stores positions as float64 unless they are
-// all floats; quantized output lets Draco choose its method from the speed.
+// which keeps vertex and face order and stores positions as float32 unless float32 would
+// lose precision the input had (then float64, as PLY does; see CoordinatePrecision);
+// quantized output lets Draco choose its method from the speed.
 // Polygons are written as fans (Draco holds triangles); face colours are not kept.
 
 #include <cstring>
@@ -153,8 +154,10 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
   }
   cloud->set_num_points(static_cast<uint32_t>(n));
 
-  // Quantization works on float32; lossless keeps doubles unless they are all floats.
-  if (lossless && !points_are_floats(mesh)) {
+  // Quantization works on float32; lossless keeps doubles only where float32 would lose
+  // precision the input had (the PLY writer's rule, CoordinatePrecision): most readers of
+  // .drc (draco_decoder's PLY output, three.js) handle float32 positions only.
+  if (lossless && !write_points_as_float(mesh, options.precision)) {
     int id = add_attribute<double>(*cloud, draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT64, n);
     set_values<double>(*cloud, id, mesh, 3, [&](Mesh::VertexHandle v) { return mesh.point(v); });
   } else {
@@ -167,7 +170,7 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
     }
   }
   if (mesh.has_vertex_normals()) {
-    if (normals_are_floats(mesh)) {
+    if (write_normals_as_float(mesh, options.precision)) {
       int id = add_attribute<float>(*cloud, draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32, n);
       set_values<float>(*cloud, id, mesh, 3, [&](Mesh::VertexHandle v) { return mesh.normal(v); });
     } else {

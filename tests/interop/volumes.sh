@@ -41,7 +41,7 @@ import json, sys
 import nibabel as nib, numpy as np
 img = nib.load(sys.argv[1])
 d = np.asarray(img.dataobj, dtype=np.float64)
-print(json.dumps({"shape": list(img.shape), "affine": img.affine.tolist(),
+print(json.dumps({"shape": [int(n) for n in img.shape], "affine": img.affine.tolist(),
                   "min": float(np.nanmin(d)), "max": float(np.nanmax(d)), "sum": float(np.nansum(d))}))
 PY
 }
