@@ -426,9 +426,20 @@ class SolverT final : public Solver {
           bool inside = true;
           for (int a = 0; a < D; ++a) inside = inside && g[a] >= 0 && g[a] < global_[a];
           if (init && inside) init(g[0], g[1], D == 3 ? g[2] : 0, rho, u);
-          Real ur[3] = {static_cast<Real>(u[0]), static_cast<Real>(u[1]), static_cast<Real>(u[2])};
+          // Stored populations are post-collision: collide the equilibrium whose Guo
+          // velocity (u_pre + F/(2 rho)) is the wanted u.
+          Real ur[3];
+          for (int a = 0; a < 3; ++a) ur[a] = static_cast<Real>(u[a] - (force_on_ ? 0.5 * c_.force[a] / rho : 0.0));
           const std::size_t n = index(x, y, z);
-          for (int i = 0; i < Q; ++i) a_[i * N_ + n] = equilibrium<L, Real>(i, static_cast<Real>(rho - 1), ur);
+          Real f[Q], o[Q];
+          for (int i = 0; i < Q; ++i) f[i] = equilibrium<L, Real>(i, static_cast<Real>(rho - 1), ur);
+          if (force_on_) {
+            if (trt_) collide<L, Real, true, true>(f, o, par_);
+            else collide<L, Real, false, true>(f, o, par_);
+          } else {
+            std::memcpy(o, f, sizeof f);
+          }
+          for (int i = 0; i < Q; ++i) a_[i * N_ + n] = o[i];
         }
     finish(a_.data());
     b_ = a_;
