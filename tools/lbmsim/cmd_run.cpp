@@ -132,7 +132,7 @@ int run_command(const RunOptions& o) {
   const long frames = c.output.every > 0 ? c.steps / c.output.every + 1 : 1;
   if (out.format != "stream" && frames > 1 && !has_index_conversion(out.pattern))
     throw usage_error("-o \"{}\" needs a %d for {} output steps", out.pattern, frames);
-  if (comm.root())
+  if (comm.root() && !o.quiet)
     for (const std::string& w : c.warnings) warn("lbmsim", w);
 
   const int S = c.dim - 1;
