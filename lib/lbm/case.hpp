@@ -87,6 +87,7 @@ struct Case {
   bool steady = false;
   double tol = 1e-6;
   long check_every = 100;
+  bool bouzidi = false;       // curved_walls: interpolated bounce-back on sphere/cylinder shapes
   Output output;
   std::vector<std::array<double, 3>> probes;
   std::vector<int> forces;   // flag ids whose force is monitored

@@ -218,7 +218,7 @@ Case parse_case(const json& doc, const std::string& where) {
   const Ctx ctx{where};
   Case c;
   check_keys(doc, "", {"lattice", "size", "collision", "re", "u_ref", "l_ref", "faces", "geometry", "force", "init",
-                       "steps", "tol", "check_every", "output", "probes", "forces", "units"}, ctx);
+                       "steps", "tol", "check_every", "output", "probes", "forces", "units", "curved_walls"}, ctx);
   if (!doc.contains("size")) throw bad_input("case key \"size\" is required ({})", where);
   const json& sz = doc["size"];
   if (!sz.is_array() || (sz.size() != 2 && sz.size() != 3))
@@ -335,6 +335,11 @@ Case parse_case(const json& doc, const std::string& where) {
     c.steps = integer(doc["steps"], "steps", 0, 2'000'000'000, ctx);
   }
   if (doc.contains("tol")) c.tol = positive(doc["tol"], "tol", ctx);
+  if (doc.contains("curved_walls")) {
+    const std::string w = str(doc["curved_walls"], "curved_walls", ctx);
+    if (w != "halfway" && w != "bouzidi") throw bad_input("case key \"curved_walls\" must be halfway or bouzidi ({})", where);
+    c.bouzidi = w == "bouzidi";
+  }
   if (doc.contains("check_every")) c.check_every = integer(doc["check_every"], "check_every", 1, 1'000'000'000, ctx);
   if (doc.contains("output")) {
     const json& o = doc["output"];

@@ -341,6 +341,7 @@ json check_cylinder(const CheckOptions& o) {
   const double umax = 0.05, umean = 2.0 / 3.0 * umax;
   const double nu = umean * D / 20.0;
   Case c = make_case(2, {nx, ny, 1}, 3 * nu + 0.5, CollisionModel::trt);
+  c.bouzidi = true;  // interpolated bounce-back on the cylinder
   c.faces[0].kind = Face::Kind::velocity;
   c.faces[0].speed = umax;
   c.faces[0].profile = Face::Profile::parabolic;

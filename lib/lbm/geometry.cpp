@@ -32,6 +32,29 @@ Flags shape_flags(const Case& c) {
   return f;
 }
 
+double link_fraction(const Case& c, const std::array<double, 3>& p, const std::array<double, 3>& d) {
+  double best = -1;
+  for (const Shape& s : c.shapes) {
+    if (s.kind == Shape::Kind::box) continue;
+    // Solve |(p + t d - centre) restricted to the shape's axes| = r for the entry t in (0, 1].
+    double a = 0, b = 0, k = 0;
+    for (int ax = 0; ax < c.dim; ++ax) {
+      if (s.kind == Shape::Kind::cylinder && c.dim == 3 && ax == s.axis) continue;
+      const double e = p[ax] - s.center[ax];
+      a += d[ax] * d[ax];
+      b += 2 * e * d[ax];
+      k += e * e;
+    }
+    k -= s.radius * s.radius;
+    if (a == 0 || k <= 0) continue;  // parallel to the axis, or p inside the shape
+    const double disc = b * b - 4 * a * k;
+    if (disc < 0) continue;
+    const double t = (-b - std::sqrt(disc)) / (2 * a);
+    if (t > 0 && t <= 1 && (best < 0 || t < best)) best = t;
+  }
+  return best;
+}
+
 namespace {
 int face_priority(Face::Kind k) {
   switch (k) {

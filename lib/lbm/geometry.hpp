@@ -24,6 +24,11 @@ struct Flags {
 // is (lattice coordinates put the halfway walls of the box at 0 and n).
 Flags shape_flags(const Case& c);
 
+// Where the surface of the case's spheres and cylinders cuts the link from node centre p
+// (lattice coordinates) to p + c: the fraction q in (0, 1] of the link, or -1 when the
+// far end lies in no sphere or cylinder (interpolated bounce-back, Bouzidi et al. 2001).
+double link_fraction(const Case& c, const std::array<double, 3>& p, const std::array<double, 3>& dir);
+
 // Class of a node given by global coordinates that may lie one beyond each face
 // (ghost nodes). Periodic faces wrap; elsewhere the face's type decides, corners by the
 // priority moving > wall > velocity > pressure (the lid rule of the cavity).

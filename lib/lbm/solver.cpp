@@ -31,6 +31,7 @@ struct BoundaryNode {
   std::size_t n;
   std::uint32_t bounce;  // bit i: population i comes from a solid (bounce back)
   int coef = -1;         // offset of Q moving-wall coefficients 6 w_i (c_i . u_w), or -1
+  int q = -1;            // offset of Q link fractions (interpolated bounce-back), or -1
 };
 
 struct ForceLink {
@@ -171,7 +172,8 @@ class SolverT final : public Solver {
         extra = coefs_[b.coef + l.i] * rho;
       }
       // Momentum given to the solid: c_o (f_o* + f_i(t+1)), with c_o = -c_i and f = g + w.
-      const double m = 2.0 * (A[o * N_ + b.n] + L::w[o]) + extra;
+      double m = 2.0 * (A[o * N_ + b.n] + L::w[o]) + extra;
+      if (b.q >= 0) m = A[o * N_ + b.n] + L::w[o] + incoming(A, b, b.n, l.i, Real(1)) + L::w[l.i];
       for (int a = 0; a < 3; ++a) f[3 * l.layer + a] -= L::c[l.i][a] * m;
     }
     return f;
@@ -213,14 +215,31 @@ class SolverT final : public Solver {
       for (int i = 0; i < Q; ++i) rho += A[i * N_ + n];
     for (int i = 0; i < Q; ++i) {
       if (b.bounce & (1u << i)) {
-        // Halfway bounce-back; Ladd's moving-wall term f_i = f_o* + 6 w_i rho (c_i . u_w).
-        Real v = A[L::opp[i] * N_ + n];
-        if (b.coef >= 0) v += static_cast<Real>(coefs_[b.coef + i]) * rho;
-        f[i] = v;
+        f[i] = incoming(A, b, n, i, rho);
       } else {
         f[i] = A[i * N_ + n - off_[i]];
       }
     }
+  }
+
+  // Population i arriving at boundary node n from the solid at n - c_i (o = opposite):
+  // halfway bounce-back f_i = f_o*, plus Ladd's moving-wall term 6 w_i rho (c_i . u_w);
+  // on curved links the linear interpolation of Bouzidi, Firdaouss & Lallemand (2001)
+  // with the wall at fraction q of the link: q < 1/2: 2q f_o*(x) + (1-2q) f_o*(x + c_i);
+  // q >= 1/2: f_o*(x)/(2q) + (1 - 1/(2q)) f_i*(x).
+  inline Real incoming(const Real* A, const BoundaryNode& b, std::size_t n, int i, Real rho) const {
+    const int o = L::opp[i];
+    if (b.q >= 0) {
+      const double q = qs_[b.q + i];
+      if (q > 0) {
+        if (q < 0.5)
+          return static_cast<Real>(2 * q) * A[o * N_ + n] + static_cast<Real>(1 - 2 * q) * A[o * N_ + n + off_[i]];
+        return static_cast<Real>(0.5 / q) * A[o * N_ + n] + static_cast<Real>(1 - 0.5 / q) * A[i * N_ + n];
+      }
+    }
+    Real v = A[o * N_ + n];
+    if (b.coef >= 0) v += static_cast<Real>(coefs_[b.coef + i]) * rho;
+    return v;
   }
 
   template <bool TRT, bool FORCE>
@@ -375,8 +394,8 @@ class SolverT final : public Solver {
         }
         ++fluid_;
         BoundaryNode b{n, 0u, -1};
-        std::vector<double> coef(Q, 0.0);
-        bool moving = false;
+        std::vector<double> coef(Q, 0.0), qv(Q, -1.0);
+        bool moving = false, curved = false;
         for (int i = 0; i < Q; ++i) {
           if (cls[n - off_[i]] != K::solid) continue;
           const NodeClass src = class_at(flags, x - L::c[i][0], y - L::c[i][1], z - L::c[i][2]);
@@ -386,6 +405,19 @@ class SolverT final : public Solver {
           if (cu != 0) {
             coef[i] = 6.0 * L::w[i] * cu;
             moving = true;
+          }
+          if (c_.bouzidi && src.id != 0) {
+            int g[3] = {x, y, z};
+            g[D - 1] += lo_;
+            const std::array<double, 3> p{g[0] + 0.5, g[1] + 0.5, D == 3 ? g[2] + 0.5 : 0.0};
+            const std::array<double, 3> dir{-1.0 * L::c[i][0], -1.0 * L::c[i][1], -1.0 * L::c[i][2]};
+            double q = link_fraction(c_, p, dir);
+            // q < 1/2 reads the next node away from the wall: it must be fluid.
+            if (q > 0 && q < 0.5 && cls[n + off_[i]] != K::fluid) q = 0.5;
+            if (q > 0) {
+              qv[i] = q;
+              curved = true;
+            }
           }
           if (src.id != 0) links_.push_back({n, z * (D == 3 ? 1 : 0) + y * (D == 2 ? 1 : 0), i,
                                              static_cast<int>(bnodes_.size()), src.id});
@@ -398,6 +430,10 @@ class SolverT final : public Solver {
         if (moving) {
           b.coef = static_cast<int>(coefs_.size());
           coefs_.insert(coefs_.end(), coef.begin(), coef.end());
+        }
+        if (curved) {
+          b.q = static_cast<int>(qs_.size());
+          qs_.insert(qs_.end(), qv.begin(), qv.end());
         }
         segs_.push_back({x, x + 1, static_cast<int>(bnodes_.size())});
         bnodes_.push_back(b);
@@ -467,7 +503,7 @@ class SolverT final : public Solver {
   std::vector<Segment> segs_;
   std::vector<int> row_begin_;
   std::vector<BoundaryNode> bnodes_;
-  std::vector<double> coefs_;
+  std::vector<double> coefs_, qs_;
   std::vector<ForceLink> links_;
   std::vector<NeeNode> nee_;
   std::vector<int> up_, down_;
