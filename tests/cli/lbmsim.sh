@@ -79,6 +79,11 @@ if "$FEST_BIN/lbmsim" --version | grep -q "with MPI" && command -v mpirun >/dev/
   rc=$?
   check "non-zero status" test "$rc" -ne 0
   expect_stderr_has 'lbmsim: error: 4 ranks for 3 layers along y'
+  case_ "MPI: a case on standard input is refused (rank 0 alone would read it)"
+  mpirun --oversubscribe --allow-run-as-root -np 2 "$FEST_BIN/lbmsim" run -o "$WORK/x.vti" <"$WORK/cav.json" >"$out" 2>"$err"
+  rc=$?
+  expect_status 2
+  expect_stderr_has 'lbmsim: error: mpirun gives standard input to rank 0 only'
 fi
 
 case_ "info: the unit table with Re, Ma and tau"

@@ -112,6 +112,10 @@ int run_command(const RunOptions& o) {
                         o.output);
   }
   Comm& comm = Comm::world();
+  if (comm.size() > 1 && (o.case_file.empty() || o.case_file == "-")) {
+    if (!comm.root()) return static_cast<int>(Status::usage);
+    throw usage_error("mpirun gives standard input to rank 0 only: name the case file for {} ranks", comm.size());
+  }
   LoadedCase L;
   try {
     L = load_case(o.case_file, o.set);
