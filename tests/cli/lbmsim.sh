@@ -167,6 +167,10 @@ case_ "bad input: unknown field"
 run lbmsim run "$WORK/cav.json" --fields velocty -o "$WORK/x%d.vti"
 expect_clean_failure 3 lbmsim
 expect_stderr_has 'did you mean "velocity"'
+case_ "usage: an unstable value given by --set"
+run lbmsim run "$WORK/cav.json" --set collision.tau=0.5 -o "$WORK/x%d.vti"
+expect_clean_failure 2 lbmsim
+expect_stderr_has 'collision.tau = 0.5 gives zero viscosity'
 case_ "usage: several frames need a %d"
 run lbmsim run "$WORK/cav.json" -o "$WORK/one.vti"
 expect_clean_failure 2 lbmsim

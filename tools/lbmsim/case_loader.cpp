@@ -65,7 +65,17 @@ LoadedCase load_case(const std::string& path, const std::vector<std::string>& se
     throw bad_input("invalid case JSON: {} ({})", at == std::string::npos ? what : what.substr(at), L.where);
   }
   for (const std::string& s : sets) lbm::apply_override(doc, s);
-  L.c = lbm::parse_case(doc, L.where);
+  try {
+    L.c = lbm::parse_case(doc, L.where);
+  } catch (const Error& e) {
+    // A value that came from --set is a usage error (status 2), not bad input.
+    const std::string what = e.what();
+    for (const std::string& s : sets) {
+      const std::string key = s.substr(0, s.find('='));
+      if (what.find(key) != std::string::npos) throw usage_error("--set {}: {}", s, what);
+    }
+    throw;
+  }
   const std::string dir =
       path == "-" || path.empty() ? std::string() : std::filesystem::path(path).parent_path().string();
   L.flags = lbm::shape_flags(L.c);
