@@ -45,6 +45,24 @@ expect_status 0
 run fcompare --tol 1e-12 "$G/cavity32_speed.nrrd" "$WORK/g_speed.nrrd"
 expect_status 0
 
+case_ "restart: 1000 steps, init.file, 1000 more steps is the 2000-step field up to the lost non-equilibrium part"
+run lbmsim run "$WORK/cav.json" --steps 1000 --every 0 -o "$WORK/half.vti" --threads 1
+expect_status 0
+cat >"$WORK/restart.json" <<'JSON'
+{ "size": [32, 32], "re": 100, "u_ref": 0.1,
+  "faces": { "x-": "wall", "x+": "wall", "y-": "wall", "y+": { "moving": { "u": [0.1, 0] } } },
+  "init": { "file": "half.vti" }, "steps": 1000, "output": { "precision": "float64" } }
+JSON
+run lbmsim run "$WORK/restart.json" --every 0 --fields speed -o "$WORK/r.nrrd" --threads 1
+expect_status 0
+run fcompare --tol 1e-4 "$G/cavity32_speed.nrrd" "$WORK/r_speed.nrrd"
+expect_status 0
+case_ "bad input: init.file of another size"
+echo '{ "size": [16, 16], "collision": { "tau": 0.6 }, "init": { "file": "half.vti" }, "steps": 1 }' >"$WORK/r2.json"
+run lbmsim run "$WORK/r2.json" -o "$WORK/x.vti"
+expect_clean_failure 3 lbmsim
+expect_stderr_has 'init.file is 32x32x1 but size is 16x16x1'
+
 case_ "determinism: 1 and 2 threads give identical bytes"
 cat >"$WORK/c3.json" <<'JSON'
 { "size": [20, 20, 20], "re": 100, "u_ref": 0.1, "collision": { "model": "trt" },

@@ -11,6 +11,10 @@
 #include <omp.h>
 
 #include <nlohmann/json.hpp>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
 
 #include "case_loader.hpp"
 #include "comm.hpp"
@@ -20,6 +24,8 @@
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "field_output.hpp"
+#include "formats/dataset/dataset_io.hpp"
+#include "formats/input.hpp"
 #include "lbm/case_json.hpp"
 #include "lbm/fields.hpp"
 #include "lbm/solver.hpp"
@@ -95,6 +101,40 @@ void write_frame(Output& out, const FieldFrame& f) {
   write_output((p.parent_path() / "series.pvd").string(), encode_pvd(out.series));
 }
 
+// init.file: a .vti that lbmsim wrote (or any image data of the lattice size) with a
+// 3-component "velocity" and optionally "density"; physical velocities are converted.
+void read_init_file(const lbm::Case& c, const std::string& where, std::vector<double>& rho, std::vector<double>& u) {
+  std::string path = c.init.file;
+  if (!path.empty() && path[0] != '/' && where != "stdin") {
+    const std::filesystem::path dir = std::filesystem::path(where).parent_path();
+    if (!dir.empty()) path = (dir / path).string();
+  }
+  const formats::Input in = formats::load_input(path);
+  if (in.format != formats::Format::vti) throw bad_input("init.file must be a .vti ({})", path);
+  vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+  auto* img = vtkImageData::SafeDownCast(ds);
+  if (!img) throw bad_input("init.file holds no image data ({})", path);
+  int dims[3];
+  img->GetDimensions(dims);
+  if (dims[0] != c.size[0] || dims[1] != c.size[1] || dims[2] != c.size[2])
+    throw bad_input("init.file is {}x{}x{} but size is {}x{}x{} ({})", dims[0], dims[1], dims[2], c.size[0], c.size[1],
+                    c.size[2], path);
+  vtkDataArray* v = img->GetPointData()->GetArray("velocity");
+  if (!v || v->GetNumberOfComponents() != 3) throw bad_input("init.file has no 3-component \"velocity\" array ({})", path);
+  vtkDataArray* d = img->GetPointData()->GetArray("density");
+  const std::size_t N = c.cells();
+  const double scale = c.units.physical ? c.units.dt() / c.units.dx : 1.0;
+  rho.assign(N, c.init.rho);
+  u.assign(3 * N, 0.0);
+  for (std::size_t k = 0; k < N; ++k) {
+    for (int a = 0; a < 3; ++a) u[3 * k + a] = v->GetComponent(static_cast<vtkIdType>(k), a) * scale;
+    if (d) rho[k] = d->GetComponent(static_cast<vtkIdType>(k), 0);
+    if (!std::isfinite(rho[k]) || !(rho[k] > 0) || !std::isfinite(u[3 * k]) || !std::isfinite(u[3 * k + 1]) ||
+        !std::isfinite(u[3 * k + 2]))
+      throw bad_input("init.file holds a non-finite or non-positive value at node {} ({})", k, path);
+  }
+}
+
 }  // namespace
 
 int run_command(const RunOptions& o) {
@@ -131,8 +171,6 @@ int run_command(const RunOptions& o) {
   out.float64 = c.output.float64;
   out.zlib = c.output.compress;
   lbm::check_field_names(c.output.fields, o.fields.empty() ? L.where : "--fields");
-  if (c.init.kind == lbm::Init::Kind::file)
-    throw bad_input("init.file is not supported by this version; use init.rho/init.u or taylor-green ({})", L.where);
   const long frames = c.output.every > 0 ? c.steps / c.output.every + 1 : 1;
   if (out.format != "stream" && frames > 1 && !has_index_conversion(out.pattern))
     throw usage_error("-o \"{}\" needs a %d for {} output steps", out.pattern, frames);
@@ -157,6 +195,16 @@ int run_command(const RunOptions& o) {
     setup.init = [=](int x, int y, int, double& rho, std::array<double, 3>& u) {
       rho = 1 - 0.75 * U * U * (std::cos(2 * kx * x) + std::cos(2 * ky * y));
       u = {-U * std::cos(kx * x) * std::sin(ky * y), U * std::sin(kx * x) * std::cos(ky * y), 0.0};
+    };
+  }
+  std::vector<double> init_rho, init_u;
+  if (c.init.kind == lbm::Init::Kind::file) {
+    read_init_file(c, L.where, init_rho, init_u);
+    const int nx = c.size[0], ny = c.size[1];
+    setup.init = [&, nx, ny](int x, int y, int z, double& rho, std::array<double, 3>& u) {
+      const std::size_t k = static_cast<std::size_t>(x) + static_cast<std::size_t>(nx) * (y + static_cast<std::size_t>(ny) * z);
+      rho = init_rho[k];
+      u = {init_u[3 * k], init_u[3 * k + 1], init_u[3 * k + 2]};
     };
   }
   auto solver = lbm::make_solver(setup);
