@@ -68,11 +68,15 @@ std::vector<double> velocity_gradient(const Case& c, const Flags& flags, const s
 
 std::vector<Field> derived_fields(const std::vector<std::string>& names, const Case& c, const Flags& flags,
                                   const std::vector<double>& rho, const std::vector<double>& u,
-                                  double pressure_scale) {
+                                  double pressure_scale, double spacing) {
   const std::size_t N = c.cells();
   std::vector<double> grad;
   auto need_grad = [&] {
-    if (grad.empty()) grad = velocity_gradient(c, flags, u);
+    if (grad.empty()) {
+      grad = velocity_gradient(c, flags, u);
+      if (spacing != 1.0)
+        for (double& g : grad) g /= spacing;
+    }
   };
   std::vector<Field> out;
   for (const std::string& name : field_names()) {

@@ -25,9 +25,10 @@ const std::vector<std::string>& field_names();
 void check_field_names(const std::vector<std::string>& names, const std::string& where);
 
 // rho and u (3 components) of the whole lattice. Pressure is (rho - 1)/3 times
-// `pressure_scale` (1 in lattice units). 2-D vorticity is the scalar omega_z.
+// `pressure_scale` (1 in lattice units); derivatives are per `spacing` (dx). 2-D
+// vorticity is the scalar omega_z.
 std::vector<Field> derived_fields(const std::vector<std::string>& names, const Case& c, const Flags& flags,
                                   const std::vector<double>& rho, const std::vector<double>& u,
-                                  double pressure_scale = 1.0);
+                                  double pressure_scale = 1.0, double spacing = 1.0);
 
 }  // namespace fest::lbm

@@ -262,7 +262,7 @@ int run_command(const RunOptions& o) {
     std::vector<double> uphys = u;
     if (c.units.physical)
       for (double& v : uphys) v *= units.dx / dt;
-    f.fields = lbm::derived_fields(c.output.fields, c, L.flags, rho, uphys, units.pressure_scale);
+    f.fields = lbm::derived_fields(c.output.fields, c, L.flags, rho, uphys, units.pressure_scale, units.dx);
     write_frame(out, f);
   };
 
