@@ -43,6 +43,7 @@ TEST_TOOL_PKGS=(
   unzip                      # terrainlod_realdata takes the Jacksboro DEM out of its .npz
   libvips-tools imagemagick openimageio-tools   # anchors of tests/bench/resample_bench.sh only
   draco                      # draco_encoder/draco_decoder: tests/bench/bench_ebm_vs_draco runs them as an anchor
+  libmeshoptimizer-dev libcgal-dev   # anchors of tests/bench/bench_decimate (meshopt_simplify, CGAL edge_collapse); built only when found
 )
 
 # --- arguments ----------------------------------------------------------------

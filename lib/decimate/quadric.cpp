@@ -79,6 +79,39 @@ void Quadric::add_to_packed(double* packed) const {
   packed[na + static_cast<std::size_t>(n_) + 1] += w_;
 }
 
+double Quadric::evaluate_packed(const double* q, int n, const double* v) {
+  // Packed rows of A: row i holds A(i, i..n-1).
+  const double* b = q + n * (n + 1) / 2;
+  double s = b[n];
+  const double* row = q;
+  for (int i = 0; i < n; ++i) {
+    double r = row[0] * v[i];
+    for (int j = i + 1; j < n; ++j) r += 2.0 * row[j - i] * v[j];
+    s += v[i] * r + 2.0 * b[i] * v[i];
+    row += n - i;
+  }
+  return s > 0 ? s : 0.0;
+}
+
+bool Quadric::minimise_packed(const double* q, int n, double* v) {
+  if (n == 3) {
+    // Closed form for positions only: Cramer's rule on the 3x3 system A v = -b, refused
+    // when det A is tiny against the cube of the mean diagonal (flat/straight neighbourhood).
+    const double a00 = q[0], a01 = q[1], a02 = q[2], a11 = q[3], a12 = q[4], a22 = q[5];
+    const double b0 = -q[6], b1 = -q[7], b2 = -q[8];
+    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+    const double det = a00 * c00 + a01 * c01 + a02 * c02;
+    const double tr = (a00 + a11 + a22) / 3;
+    if (!(tr > 0) || !(std::abs(det) > 1e-8 * tr * tr * tr)) return false;
+    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+    v[0] = (c00 * b0 + c01 * b1 + c02 * b2) / det;
+    v[1] = (c01 * b0 + c11 * b1 + c12 * b2) / det;
+    v[2] = (c02 * b0 + c12 * b1 + c22 * b2) / det;
+    return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+  }
+  return unpack(q, n).minimise(v);
+}
+
 double Quadric::evaluate(const double* v) const {
   double s = c_;
   for (int i = 0; i < n_; ++i) {

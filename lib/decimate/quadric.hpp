@@ -41,9 +41,13 @@ class Quadric {
 
   // Packed form for per-vertex storage (n(n+1)/2 + n + 2 doubles: A, b, c, weight), so a
   // mesh of positions only costs 11 doubles per vertex, not the fixed maximum.
-  static std::size_t packed_size(int n) { return static_cast<std::size_t>(n * (n + 1) / 2 + n + 2); }
+  static constexpr std::size_t packed_size(int n) { return static_cast<std::size_t>(n * (n + 1) / 2 + n + 2); }
   static Quadric unpack(const double* packed, int n);
   void add_to_packed(double* packed) const;
+  // Evaluation and minimisation straight on the packed form (the collapse loop's path:
+  // no copies of the fixed-size arrays).
+  static double evaluate_packed(const double* packed, int n, const double* v);
+  static bool minimise_packed(const double* packed, int n, double* v);
   double evaluate(const double* v) const;
   // The minimiser of Q (solves A v = -b); false when A is singular or badly conditioned.
   bool minimise(double* v) const;

@@ -28,6 +28,14 @@ struct Layout {
   double scale = 1;  // attribute units -> length units
 };
 
+// A view of a packed quadric with the calls of Quadric.
+struct PackedQuadric {
+  const double* q;
+  int n;
+  double evaluate(const double* v) const { return Quadric::evaluate_packed(q, n, v); }
+  bool minimise(double* v) const { return Quadric::minimise_packed(q, n, v); }
+};
+
 struct Candidate {
   double cost;
   std::uint32_t edge;
@@ -195,9 +203,11 @@ class Engine {
     const VH a = mesh_.from_vertex_handle(h0), b = mesh_.to_vertex_handle(h0);
     const bool la = locked_[static_cast<std::size_t>(a.idx())] != 0, lb = locked_[static_cast<std::size_t>(b.idx())] != 0;
     if (la && lb) return false;
-    Quadric q = Quadric::unpack(packed(a), layout_.n);
-    q += Quadric::unpack(packed(b), layout_.n);
     const int n = layout_.n;
+    double qsum[Quadric::packed_size(max_dimension)];
+    const double *qa = packed(a), *qb = packed(b);
+    for (std::size_t i = 0; i < stride_; ++i) qsum[i] = qa[i] + qb[i];
+    const PackedQuadric q{qsum, n};
     double xa[max_dimension], xb[max_dimension];
     vertex_vector(a, xa);
     vertex_vector(b, xb);
@@ -277,7 +287,9 @@ class Engine {
 
   void collapse(const Plan& plan) {
     const VH from = mesh_.from_vertex_handle(plan.h), to = mesh_.to_vertex_handle(plan.h);
-    Quadric::unpack(packed(from), layout_.n).add_to_packed(packed(to));
+    const double* qf = packed(from);
+    double* qt = packed(to);
+    for (std::size_t i = 0; i < stride_; ++i) qt[i] += qf[i];
     mesh_.collapse(plan.h);
     store_vector(to, plan.v);
     for (const EH e : mesh_.ve_range(to)) push(e);
