@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
     fest::reflectance::PinholeCamera cam;
     cam.width = static_cast<int>(size * std::min(aspect, 3.0));
     cam.height = size;
-    const double fov = 0.5;  // half-angle tangent
+    const double fov = 0.1;  // half-angle tangent: a long lens, so side-by-side meshes are seen alike
     cam.fx = cam.fy = 0.5 * size / fov;
     cam.cx = 0.5 * cam.width;
     cam.cy = 0.5 * cam.height;
