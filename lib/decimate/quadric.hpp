@@ -30,6 +30,7 @@ class Quadric {
 
   int dimension() const noexcept { return n_; }
   double weight() const noexcept { return w_; }
+  void set_weight(double w) noexcept { w_ = w; }
 
   // Area-weighted quadric of triangle (p, q, r) in R^n (GH98 eq. 2-4).
   static Quadric triangle(const double* p, const double* q, const double* r, int n, double weight);

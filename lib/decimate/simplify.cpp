@@ -155,7 +155,8 @@ class Engine {
       for (const VH v : mesh_.fv_range(f)) vs[k++] = v;
       for (int i = 0; i < 3; ++i) vertex_vector(vs[i], x[i]);
       const double area = 0.5 * OpenMesh::cross(mesh_.point(vs[1]) - mesh_.point(vs[0]), mesh_.point(vs[2]) - mesh_.point(vs[0])).norm();
-      const Quadric q = Quadric::triangle(x[0], x[1], x[2], n, area);
+      Quadric q = Quadric::triangle(x[0], x[1], x[2], n, opt_.area_weighted ? area : 1.0);
+      q.set_weight(area);  // the area W of the error estimate either way
       for (const VH v : vs) q.add_to_packed(packed(v));
     }
     for (const EH e : mesh_.edges()) {

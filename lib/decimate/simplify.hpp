@@ -27,6 +27,7 @@ struct SimplifyOptions {
   double constraint_weight = 1000;// weight of the boundary/feature constraint planes (GH97 6)
   double min_normal_cos = 0.0;    // a collapse may turn no face by more than acos(this)
   bool optimal_placement = true;  // false: surviving vertex stays where it is (half-edge collapse)
+  bool area_weighted = true;      // face quadrics weighted by area (GH97 7) or each plane once
 };
 
 struct SimplifyStats {

@@ -53,9 +53,12 @@ void bernstein_values(int n, double s, double* b) {
   }
 }
 
-void bernstein(int count, double s, AxisWeights& out) {
+void bernstein(int count, double s, AxisWeights& out, bool derivatives) {
   const int n = count - 1;
   bernstein_values(n, s, out.w.data());
+  out.first = 0;
+  out.count = count;
+  if (!derivatives) return;
   // d/ds B_{i,n} = n (B_{i-1,n-1} - B_{i,n-1}).
   double lower[max_axis_points];
   bernstein_values(n - 1, s, lower);
@@ -63,8 +66,6 @@ void bernstein(int count, double s, AxisWeights& out) {
     const double a = i >= 1 ? lower[i - 1] : 0.0, b = i <= n - 1 ? lower[i] : 0.0;
     out.dw[static_cast<std::size_t>(i)] = n * (a - b);
   }
-  out.first = 0;
-  out.count = count;
 }
 
 // Cox-de Boor with first derivatives (The NURBS Book, algorithm A2.3 for k = 1).
@@ -149,9 +150,9 @@ void catmull_rom(int count, double s, AxisWeights& out) {
 
 }  // namespace
 
-void axis_weights(Basis basis, int count, double s, AxisWeights& out) {
+void axis_weights(Basis basis, int count, double s, AxisWeights& out, bool derivatives) {
   switch (basis) {
-    case Basis::bernstein: bernstein(count, s, out); return;
+    case Basis::bernstein: bernstein(count, s, out, derivatives); return;
     case Basis::bspline: bspline(count, s, out); return;
     case Basis::linear: linear(count, s, out); return;
     case Basis::catmull_rom: catmull_rom(count, s, out); return;

@@ -32,8 +32,9 @@ struct AxisWeights {
   std::array<double, max_axis_points> dw{};
 };
 
-// s must lie in [0, 1]. The weights sum to 1 (partition of unity).
-void axis_weights(Basis basis, int count, double s, AxisWeights& out);
+// s must lie in [0, 1]. The weights sum to 1 (partition of unity). Derivatives are
+// filled only when asked (the deformation itself does not need them).
+void axis_weights(Basis basis, int count, double s, AxisWeights& out, bool derivatives = true);
 
 // Local coordinate of control point i at rest (uniform i/(count-1); Greville abscissa
 // for bspline).

@@ -54,18 +54,18 @@ struct Weights3 {
   AxisWeights a[3];
 };
 
-bool evaluate_weights(const Deformer& d, const Eigen::Vector3d& x, Outside outside, Weights3& w) {
+bool evaluate_weights(const Deformer& d, const Eigen::Vector3d& x, Outside outside, Weights3& w, bool derivatives) {
   Eigen::Vector3d stu = d.local(x);
   if (!Deformer::inside(stu) && outside == Outside::none) return false;
   const Lattice& l = d.lattice();
-  for (int a = 0; a < 3; ++a) axis_weights(l.basis[a], l.dims[a], std::clamp(stu[a], 0.0, 1.0), w.a[a]);
+  for (int a = 0; a < 3; ++a) axis_weights(l.basis[a], l.dims[a], std::clamp(stu[a], 0.0, 1.0), w.a[a], derivatives);
   return true;
 }
 }  // namespace
 
 Eigen::Vector3d Deformer::apply(const Eigen::Vector3d& x, Outside outside) const {
   Weights3 w;
-  if (!evaluate_weights(*this, x, outside, w)) return x;
+  if (!evaluate_weights(*this, x, outside, w, false)) return x;
   const AxisWeights &wu = w.a[0], &wv = w.a[1], &ww = w.a[2];
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int c = 0; c < ww.count; ++c) {
@@ -83,7 +83,7 @@ Eigen::Vector3d Deformer::apply(const Eigen::Vector3d& x, Outside outside) const
 
 Eigen::Matrix3d Deformer::jacobian(const Eigen::Vector3d& x, Outside outside) const {
   Weights3 w;
-  if (!evaluate_weights(*this, x, outside, w)) return Eigen::Matrix3d::Identity();
+  if (!evaluate_weights(*this, x, outside, w, true)) return Eigen::Matrix3d::Identity();
   // Clamped outside points see a displacement constant along the clamped direction.
   const Eigen::Vector3d stu = local(x);
   double inside_axis[3];
@@ -105,7 +105,7 @@ Eigen::Matrix3d Deformer::jacobian(const Eigen::Vector3d& x, Outside outside) co
 void Deformer::weights(const Eigen::Vector3d& x, std::vector<std::pair<std::size_t, double>>& out) const {
   out.clear();
   Weights3 w;
-  if (!evaluate_weights(*this, x, Outside::none, w)) return;
+  if (!evaluate_weights(*this, x, Outside::none, w, false)) return;
   const AxisWeights &wu = w.a[0], &wv = w.a[1], &ww = w.a[2];
   for (int c = 0; c < ww.count; ++c)
     for (int b = 0; b < wv.count; ++b)
