@@ -105,4 +105,14 @@ case_ "no output file is left behind on bad input"
 run decimate "$WORK/trunc.off" --faces 10 -o "$WORK/never.off"
 check "nothing written" test ! -e "$WORK/never.off"
 
+case_ "decimate --help, --version, unknown flag"
+run decimate --help
+expect_status 0
+check "usage printed" grep -q "Usage" "$out"
+run decimate --version
+expect_status 0
+check "version names fest" grep -q "(fest)" "$out"
+run decimate --no-such-flag
+expect_clean_failure 2 decimate
+
 finish

@@ -136,4 +136,14 @@ case_ "I/O: missing mesh file"
 run ffd apply --lattice "$WORK/bend.json" "$WORK/does-not-exist.off"
 expect_clean_failure 4 ffd
 
+case_ "ffd --help, --version, unknown flag"
+run ffd --help
+expect_status 0
+check "usage printed" grep -q "Usage" "$out"
+run ffd --version
+expect_status 0
+check "version names fest" grep -q "(fest)" "$out"
+run ffd --no-such-flag
+expect_clean_failure 2 ffd
+
 finish
