@@ -155,7 +155,11 @@ class Engine {
       for (const VH v : mesh_.fv_range(f)) vs[k++] = v;
       for (int i = 0; i < 3; ++i) vertex_vector(vs[i], x[i]);
       const double area = 0.5 * OpenMesh::cross(mesh_.point(vs[1]) - mesh_.point(vs[0]), mesh_.point(vs[2]) - mesh_.point(vs[0])).norm();
-      Quadric q = Quadric::triangle(x[0], x[1], x[2], n, opt_.area_weighted ? area : 1.0);
+      // Plane weight (docs/decimate.md 2.1): GH97's area, each plane once, or the square
+      // root of the area -- between the two, it keeps small features (low Hausdorff error)
+      // without giving up the area weighting's low RMS error (tests/bench/RESULTS.md).
+      const double wgt = opt_.weighting == Weighting::area ? area : opt_.weighting == Weighting::uniform ? 1.0 : std::sqrt(area);
+      Quadric q = Quadric::triangle(x[0], x[1], x[2], n, wgt);
       q.set_weight(area);  // the area W of the error estimate either way
       for (const VH v : vs) q.add_to_packed(packed(v));
     }

@@ -14,6 +14,9 @@
 
 namespace fest::decimate {
 
+// Weight of a face's plane in the vertex quadrics.
+enum class Weighting { area, sqrt_area, uniform };
+
 struct SimplifyOptions {
   std::size_t target_faces = 0;   // stop at or below this many faces (0: no face target)
   double max_error = -1;          // stop before a collapse whose error estimate exceeds this (< 0: none)
@@ -27,7 +30,7 @@ struct SimplifyOptions {
   double constraint_weight = 1000;// weight of the boundary/feature constraint planes (GH97 6)
   double min_normal_cos = 0.0;    // a collapse may turn no face by more than acos(this)
   bool optimal_placement = true;  // false: surviving vertex stays where it is (half-edge collapse)
-  bool area_weighted = true;      // face quadrics weighted by area (GH97 7) or each plane once
+  Weighting weighting = Weighting::sqrt_area;  // area: GH97 section 7; uniform: each plane once
 };
 
 struct SimplifyStats {

@@ -94,10 +94,10 @@ struct Result {
   std::size_t faces = 0;
 };
 
-Result run_fest(const Mesh& in, std::size_t target, bool area_weighted) {
+Result run_fest(const Mesh& in, std::size_t target, decimate::Weighting weighting) {
   decimate::SimplifyOptions o;
   o.target_faces = target;
-  o.area_weighted = area_weighted;
+  o.weighting = weighting;
   o.use_normals = o.use_colors = o.use_texcoords = false;
   const auto t0 = Clock::now();
   const double c0 = thread_cpu_ms();
@@ -219,8 +219,8 @@ int main(int argc, char** argv) {
       for (const double ratio : ratios) {
         const std::size_t target = static_cast<std::size_t>(ratio * static_cast<double>(mesh.n_faces()));
         std::vector<std::pair<std::string, std::function<Result()>>> methods;
-        methods.push_back({"fest", [&] { return run_fest(mesh, target, true); }});
-        methods.push_back({"fest-uniform", [&] { return run_fest(mesh, target, false); }});
+        methods.push_back({"fest", [&] { return run_fest(mesh, target, decimate::Weighting::sqrt_area); }});
+        methods.push_back({"fest-area", [&] { return run_fest(mesh, target, decimate::Weighting::area); }});
 #ifdef FEST_HAVE_MESHOPT
         methods.push_back({"meshoptimizer", [&] { return run_meshopt(soup, target); }});
 #endif

@@ -50,9 +50,10 @@ decimate::SimplifyOptions simplify_options(const Options& o, const Mesh& mesh) {
   if (o.placement == "optimal") s.optimal_placement = true;
   else if (o.placement == "vertex") s.optimal_placement = false;
   else throw usage_error("--placement: unknown '{}' (optimal, vertex)", o.placement);
-  if (o.weighting == "area") s.area_weighted = true;
-  else if (o.weighting == "uniform") s.area_weighted = false;
-  else throw usage_error("--weighting: unknown '{}' (area, uniform)", o.weighting);
+  if (o.weighting == "sqrt-area") s.weighting = decimate::Weighting::sqrt_area;
+  else if (o.weighting == "area") s.weighting = decimate::Weighting::area;
+  else if (o.weighting == "uniform") s.weighting = decimate::Weighting::uniform;
+  else throw usage_error("--weighting: unknown '{}' (sqrt-area, area, uniform)", o.weighting);
   return s;
 }
 

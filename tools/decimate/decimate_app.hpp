@@ -21,7 +21,7 @@ struct Options {
   bool no_attributes = false;
   double attribute_weight = 1.0;
   std::string placement = "optimal";  // optimal | vertex
-  std::string weighting = "area";     // area | uniform
+  std::string weighting = "sqrt-area";  // sqrt-area | area | uniform
   bool drop_nonmanifold = false;
   bool ascii = false;
   std::string report;             // JSON with counts, time, Hausdorff and RMS

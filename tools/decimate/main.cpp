@@ -28,8 +28,8 @@ int main(int argc, char** argv) {
       ->default_val(1.0);
   app.add_option("--placement", o.placement, "optimal (quadric minimiser) or vertex (half-edge collapse)")
       ->default_val("optimal");
-  app.add_option("--weighting", o.weighting, "Face quadrics weighted by area, or uniform (each plane once)")
-      ->default_val("area");
+  app.add_option("--weighting", o.weighting, "Plane weights of the quadrics: sqrt-area (default), area (GH97), uniform")
+      ->default_val("sqrt-area");
   app.add_flag("--drop-nonmanifold", o.drop_nonmanifold, "Drop faces the reader could not attach instead of refusing");
   app.add_flag("--ascii", o.ascii, "ASCII PLY/STL output");
   app.add_option("--report", o.report, "Write counts, time, Hausdorff and RMS error (input vs output) as JSON");
