@@ -105,6 +105,36 @@ TEST(DecimateSimplify, SubdividedCubeBecomesTheCube) {
   EXPECT_EQ(topo.genus, 0);
 }
 
+TEST(DecimateSimplify, LockedFeaturesKeepEveryCubeEdgeVertex) {
+  // All 12 cube edges are features (90 deg > 45 deg); with them locked only the face
+  // interiors can go: 8 corners + 12 x 5 edge vertices = 68 vertices, and a closed genus-0
+  // triangle mesh with V vertices has 2V - 4 = 132 faces.
+  const Mesh cube = subdivided_cube(6);
+  fest::decimate::SimplifyOptions o;
+  o.target_faces = 12;
+  o.feature_angle_deg = 45;
+  o.lock_features = true;
+  fest::decimate::SimplifyStats st;
+  const Mesh out = fest::decimate::simplify(cube, o, &st);
+  EXPECT_EQ(st.feature_edges, 12u * 6u);
+  EXPECT_EQ(st.locked_vertices, 68u);
+  EXPECT_EQ(out.n_vertices(), 68u);
+  EXPECT_EQ(out.n_faces(), 132u);
+  EXPECT_LT(fest::compare::surface_distance(cube, out, 20000).hausdorff, 1e-12);
+}
+
+TEST(DecimateSimplify, EveryWeightingKeepsTheCubeExact) {
+  for (const auto w : {fest::decimate::Weighting::area, fest::decimate::Weighting::sqrt_area, fest::decimate::Weighting::uniform}) {
+    const Mesh cube = subdivided_cube(4);
+    fest::decimate::SimplifyOptions o;
+    o.target_faces = 12;
+    o.weighting = w;
+    const Mesh out = fest::decimate::simplify(cube, o);
+    EXPECT_LE(out.n_faces(), 24u);
+    EXPECT_LT(fest::compare::surface_distance(cube, out, 20000).hausdorff, 1e-9);
+  }
+}
+
 TEST(DecimateSimplify, LockedBoundaryOfASquareStaysPut) {
   // The top face of a subdivided cube, alone: an open square with a boundary.
   Mesh sq;
