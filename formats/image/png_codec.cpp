@@ -1,5 +1,6 @@
-// PNG through libpng directly (not OpenCV's imgcodecs, whose link line maps ~140 shared
-// libraries into every tool at start-up: docs/fconv.md, "Start-up"). The transforms are
+// PNG through libpng directly (not OpenCV's imgcodecs, whose dependencies -- GDAL, gdcm,
+// poppler, ffmpeg -- mapped ~140 shared libraries into every tool at start-up, paid once
+// per file when tools run from Makefiles over thousands of files). The transforms are
 // the ones OpenCV 4.6 applied for IMREAD_UNCHANGED, so pixels are unchanged:
 // palette -> RGB (RGBA with tRNS), RGB + tRNS -> RGBA, grey 1/2/4-bit -> 8-bit (scaled),
 // grey + alpha kept as two channels, 16-bit samples in native byte order. Encoding uses
