@@ -29,11 +29,13 @@ struct TiffStream {
   char message[512] = {};
 };
 
-int on_error(TIFF*, void* user, const char* module, const char* format, va_list args) {
+// The module (the name given to TIFFClientOpenExt, or a codec's name) adds nothing for
+// the user: the message alone, on one line.
+int on_error(TIFF*, void* user, const char*, const char* format, va_list args) {
   auto* s = static_cast<TiffStream*>(user);
-  char text[400];
-  std::vsnprintf(text, sizeof text, format, args);
-  std::snprintf(s->message, sizeof s->message, "%s%s%s", module ? module : "", module ? ": " : "", text);
+  std::vsnprintf(s->message, sizeof s->message, format, args);
+  for (char* c = s->message; *c; ++c)
+    if (*c == '\n' || *c == '\r') *c = ' ';
   return 1;  // handled: libtiff's global handler (stderr) is not called
 }
 
