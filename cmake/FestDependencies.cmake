@@ -11,6 +11,11 @@ find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
 find_package(OpenCV 4 REQUIRED COMPONENTS photo)
 find_package(OpenEXR 3 CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
+# Image codecs used directly by formats/image (not through OpenCV imgcodecs, whose
+# dependencies would load ~140 shared libraries into every tool: issue 21).
+find_package(PNG REQUIRED)
+find_package(JPEG REQUIRED)
+find_package(TIFF 4.5 REQUIRED)
 find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel IOLegacy IOXML
   FiltersFlowPaths  # vtkStreamTracer: the anchor of tests/bench/bench_lemtrace

@@ -28,6 +28,7 @@ BUILD_PKGS=(
   libgdal-dev           # GDAL 3.6.2   find_package(GDAL)    -> GDAL::GDAL (DEMs, GeoTIFF)
   libfftw3-dev          # FFTW 3.3.10  pkg-config fftw3 / fftw3f
   zlib1g-dev            # .nii.gz, .nrrd gzip encoding
+  libpng-dev libjpeg62-turbo-dev libtiff-dev   # formats/image codecs, used directly (not via OpenCV imgcodecs: start-up, issue 21)
   libminizip-dev        # minizip 1.1  pkg-config minizip (facefit: .npz model import)
   libssl-dev            # OpenSSL 3.0  find_package(OpenSSL) -> OpenSSL::Crypto (brdffit: SHA-256 of meshes in .ltx)
   ccache                # faster rebuilds on 2 cores
@@ -55,6 +56,7 @@ TEST_TOOL_PKGS=(
   graphviz                   # dot: tests/cli/patnet.sh checks that `patnet dot` output is valid Graphviz
   libzfp-dev zfp libblosc-dev libzstd-dev zstd   # anchors of tests/bench/volwave.sh (bench_volwave links ZFP, Blosc, zstd)
   assimp-utils assimp-testmodels  # `assimp info`: independent mesh reader (tests/interop, fconv_assimp) and its test models
+  libmeshoptimizer-dev libcgal-dev   # anchors of tests/bench/bench_decimate (meshopt_simplify, CGAL edge_collapse); built only when found
 )
 
 # --- arguments ----------------------------------------------------------------

@@ -212,7 +212,7 @@ vtkSmartPointer<vtkDataSet> read_legacy(std::string_view bytes) {
 }
 
 template <typename Writer>
-std::string write_xml(vtkDataSet* dataset, bool ascii, const char* format) {
+std::string write_xml(vtkDataSet* dataset, bool ascii, const char* format, bool zlib = false) {
   auto messages = vtkSmartPointer<MessageCollector>::New();
   MessageCapture capture(messages);
   auto writer = vtkSmartPointer<Writer>::New();
@@ -222,6 +222,7 @@ std::string write_xml(vtkDataSet* dataset, bool ascii, const char* format) {
   // Uncompressed, fixed byte order and header widths: the same dataset always gives
   // the same bytes, on any machine.
   writer->SetCompressorTypeToNone();
+  if (zlib) writer->SetCompressorTypeToZLib();  // deterministic too: same input, same bytes
   writer->SetByteOrderToLittleEndian();
   writer->SetHeaderTypeToUInt64();
   writer->SetIdTypeToInt64();
@@ -289,7 +290,7 @@ std::string write_dataset(vtkDataSet* dataset, Format format, const DatasetWrite
       return write_xml<vtkXMLUnstructuredGridWriter>(dataset, options.ascii, "vtu");
     case Format::vti:
       require_class(dataset, "vtkImageData", "vti", "image data");
-      return write_xml<vtkXMLImageDataWriter>(dataset, options.ascii, "vti");
+      return write_xml<vtkXMLImageDataWriter>(dataset, options.ascii, "vti", options.zlib);
     case Format::vtp:
       require_class(dataset, "vtkPolyData", "vtp", "polygonal data");
       return write_xml<vtkXMLPolyDataWriter>(dataset, options.ascii, "vtp");

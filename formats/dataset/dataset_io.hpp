@@ -16,6 +16,7 @@ namespace fest::formats {
 
 struct DatasetWriteOptions {
   bool ascii = false;  // legacy: ASCII instead of BINARY; XML: ascii data arrays
+  bool zlib = false;   // .vti: zlib-compressed appended data (lbmsim's default)
 };
 
 // Throws fest::Error(Status::bad_input) for malformed input; VTK's own error output is

@@ -1,22 +1,20 @@
-// DEM reading: .npy and PFM by fest's own readers, everything else through GDAL.
-// Files are opened by path (so GDAL finds sidecars such as .tfw world files); standard
-// input goes through a /vsimem/ buffer.
+// DEM reading: .npy, PFM and PGM by fest's own readers, everything else through GDAL,
+// which lives in a plugin loaded with dlopen only then (gdal_plugin_loader.hpp): a tool
+// reading a PGM or .npy DEM never maps GDAL. Files are opened by path (so GDAL finds
+// sidecars such as .tfw world files); standard input goes through a /vsimem/ buffer.
 
 #include "formats/dem/dem_io.hpp"
 
-#include <atomic>
+#include <unistd.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 
-#include <cpl_conv.h>
-#include <cpl_error.h>
-#include <cpl_vsi.h>
-#include <gdal.h>
-
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "formats/dem/gdal_plugin_loader.hpp"
 #include "formats/image/image_io.hpp"
 
 namespace fest::formats {
@@ -29,7 +27,8 @@ DemRaster read_image_dem(std::string_view bytes, Format format) {
   if (img.pixels.channels() != 1)
     throw bad_input("{} DEM has {} channels; a single-channel image is needed", format_name(format), img.pixels.channels());
   DemRaster r;
-  r.format = format_name(format);
+  // PNG keeps the name GDAL's driver gave it before fest read PNG DEMs itself.
+  r.format = format == Format::png ? std::string("PNG") : std::string(format_name(format));
   r.integer = format != Format::pfm;
   cv::Mat values;
   img.pixels.convertTo(values, CV_32F);
@@ -41,20 +40,33 @@ DemRaster read_image_dem(std::string_view bytes, Format format) {
   return r;
 }
 
-// GDAL reports problems through a global handler; keep them off stderr and use the last
-// message in our own one-line error.
-struct QuietGdal {
-  QuietGdal() {
-    GDALAllRegister();
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-  }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-  static std::string last(const char* fallback) {
-    const char* m = CPLGetLastErrorMsg();
-    return (m && *m) ? std::string(m) : std::string(fallback);
-  }
-};
+// A PNG whose georeference could only come from a sidecar GDAL reads (world file,
+// .aux.xml) goes to GDAL; any other PNG is read by fest, without loading GDAL.
+bool png_without_sidecar(const std::string& path, std::string_view bytes) {
+  if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return false;
+  if (is_stdio(path)) return true;
+  const auto dot = path.rfind('.');
+  const std::string stem = dot == std::string::npos || path.find('/', dot) != std::string::npos ? path : path.substr(0, dot);
+  for (const std::string& sidecar : {stem + ".pgw", stem + ".pngw", stem + ".wld", path + ".aux.xml", stem + ".PGW"})
+    if (::access(sidecar.c_str(), F_OK) == 0) return false;
+  return true;
+}
+
+using dem_detail::gdal_plugin;
+using dem_detail::GdalRasterHolder;
+
+// Opens `path` (or `bytes`, for standard input) through the plugin and reads up to
+// `max_values` samples of band 1; GDAL's failures are bad input.
+void open_with_gdal(const std::string& path, const std::string& bytes, std::size_t max_values, GdalRasterHolder& held,
+                    const char* what) {
+  char message[512] = {};
+  const bool stdio = is_stdio(path);
+  const int rc = gdal_plugin().open_raster(stdio ? nullptr : path.c_str(), bytes.data(), bytes.size(), max_values,
+                                           &held.raster, message, sizeof message);
+  if (rc == FEST_GDAL_CANNOT_OPEN) throw bad_input("{}: {}", what, message);
+  if (rc == FEST_GDAL_CANNOT_READ) throw bad_input("cannot read the DEM's samples: {}", message);
+  if (rc != FEST_GDAL_OK) throw runtime_failure("GDAL: {}", message);
+}
 
 // GDAL's ESRI ASCII grid driver reads a non-numeric or missing value of an integer grid
 // as 0, and "nan" as 0 too, without a word: check the samples' text ourselves. A "nan"
@@ -103,49 +115,26 @@ void check_ascii_grid_samples(std::string_view text, DemRaster& r) {
 }
 
 DemRaster read_gdal(const std::string& path, const std::string& bytes) {
-  QuietGdal quiet;
-  static std::atomic<int> counter{0};
-  std::string name = path;
-  VSILFILE* mem = nullptr;
-  if (is_stdio(path)) {
-    name = "/vsimem/fest_terrainlod_dem_" + std::to_string(counter++);
-    mem = VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
-                               static_cast<vsi_l_offset>(bytes.size()), FALSE);
-    if (mem) VSIFCloseL(mem);
-  }
-  struct Cleanup {
-    GDALDatasetH ds = nullptr;
-    std::string mem_name;
-    ~Cleanup() {
-      if (ds) GDALClose(ds);
-      if (!mem_name.empty()) VSIUnlink(mem_name.c_str());
-    }
-  } cleanup;
-  if (mem) cleanup.mem_name = name;
-  cleanup.ds = GDALOpenEx(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
-  if (!cleanup.ds) throw bad_input("not a DEM that GDAL can read: {}", QuietGdal::last("unrecognised format"));
-  GDALDatasetH ds = cleanup.ds;
-
+  // The plugin reads the samples only up to the limit below, checked here for the message.
+  const double limit = (8.0 * static_cast<double>(max_input_bytes()) + 1e9) / sizeof(double);
+  GdalRasterHolder held(gdal_plugin());
+  open_with_gdal(path, bytes, static_cast<std::size_t>(limit), held, "not a DEM that GDAL can read");
+  const FestGdalRaster& h = held.raster;
   DemRaster r;
-  r.format = GDALGetDriverShortName(GDALGetDatasetDriver(ds));
-  r.width = GDALGetRasterXSize(ds);
-  r.height = GDALGetRasterYSize(ds);
-  const int bands = GDALGetRasterCount(ds);
-  if (bands != 1) throw bad_input("DEM has {} bands; a single-band raster is needed", bands);
+  r.format = h.driver;
+  r.width = h.width;
+  r.height = h.height;
+  if (h.bands != 1) throw bad_input("DEM has {} bands; a single-band raster is needed", h.bands);
   if (r.width <= 0 || r.height <= 0) throw bad_input("DEM has no samples");
   const double samples = static_cast<double>(r.width) * r.height;
   if (samples * sizeof(double) > 8.0 * static_cast<double>(max_input_bytes()) + 1e9)
     throw bad_input("DEM of {} x {} samples is larger than fest accepts", r.width, r.height);
-  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
-  const GDALDataType type = GDALGetRasterDataType(band);
-  if (GDALDataTypeIsComplex(type)) throw bad_input("DEM has complex samples");
-  r.integer = GDALDataTypeIsInteger(type) != 0;
-  int has_nodata = 0;
-  const double nd = GDALGetRasterNoDataValue(band, &has_nodata);
-  if (has_nodata) r.nodata = nd;
+  if (h.complex_samples) throw bad_input("DEM has complex samples");
+  r.integer = h.integer != 0;
+  if (h.has_nodata) r.nodata = h.nodata;
 
-  double gt[6];
-  if (GDALGetGeoTransform(ds, gt) == CE_None) {
+  if (h.has_geotransform) {
+    const double* gt = h.geotransform;
     if (gt[2] != 0 || gt[4] != 0) throw bad_input("DEM georeference is rotated; north-up rasters only");
     if (gt[1] == 0 || gt[5] == 0) throw bad_input("DEM georeference has a zero pixel size");
     r.georeferenced = true;
@@ -158,13 +147,10 @@ DemRaster read_gdal(const std::string& path, const std::string& bytes) {
     if (gt[5] > 0) throw bad_input("DEM rows run south to north; north-up rasters only");
     if (gt[1] < 0) throw bad_input("DEM columns run east to west; north-up rasters only");
   }
-  const char* wkt = GDALGetProjectionRef(ds);
-  if (wkt) r.crs = wkt;
+  if (h.crs) r.crs = h.crs;
 
-  r.values.resize(static_cast<std::size_t>(r.width) * r.height);
-  if (GDALRasterIO(band, GF_Read, 0, 0, r.width, r.height, r.values.data(), r.width, r.height, GDT_Float64, 0, 0) !=
-      CE_None)
-    throw bad_input("cannot read the DEM's samples: {}", QuietGdal::last("read error"));
+  if (!h.values) throw bad_input("cannot read the DEM's samples");
+  r.values.assign(h.values, h.values + std::size_t(r.width) * std::size_t(r.height));
   if (r.format == "AAIGrid") check_ascii_grid_samples(bytes, r);
   return r;
 }
@@ -172,17 +158,19 @@ DemRaster read_gdal(const std::string& path, const std::string& bytes) {
 }  // namespace
 
 RasterGeoreference read_georeference(const std::string& path) {
-  read_input(path);  // the usual I/O errors (missing, unreadable) before GDAL's own
-  QuietGdal quiet;
-  GDALDatasetH ds = GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
-  if (!ds) throw bad_input("not a raster that GDAL can read: {} ({})", QuietGdal::last("unrecognised format"), path);
+  const std::string bytes = read_input(path);  // the usual I/O errors (missing, unreadable) before GDAL's own
+  GdalRasterHolder held(gdal_plugin());
+  try {
+    open_with_gdal(path, bytes, 0, held, "not a raster that GDAL can read");
+  } catch (const Error& e) {
+    if (e.status() != Status::bad_input) throw;
+    throw Error(e.status(), with_location(e.what(), path));
+  }
   RasterGeoreference g;
-  g.width = GDALGetRasterXSize(ds);
-  g.height = GDALGetRasterYSize(ds);
-  double gt[6];
-  const bool has = GDALGetGeoTransform(ds, gt) == CE_None;
-  GDALClose(ds);
-  if (!has) return g;
+  g.width = held.raster.width;
+  g.height = held.raster.height;
+  if (!held.raster.has_geotransform) return g;
+  const double* gt = held.raster.geotransform;
   if (gt[2] != 0 || gt[4] != 0) throw bad_input("georeference is rotated; north-up rasters only ({})", path);
   if (gt[1] <= 0 || gt[5] >= 0) throw bad_input("georeference is not north-up with columns running east ({})", path);
   g.georeferenced = true;
@@ -206,6 +194,7 @@ DemRaster read_dem(const std::string& path, std::optional<double> nodata) {
     else if (bytes.size() >= 3 && bytes[0] == 'P' && (bytes[1] == '2' || bytes[1] == '5') &&
              std::isspace(static_cast<unsigned char>(bytes[2])))
       r = read_image_dem(bytes, Format::pgm);
+    else if (png_without_sidecar(path, bytes)) r = read_image_dem(bytes, Format::png);
     else r = read_gdal(path, bytes);
   } catch (const Error& e) {
     if (e.status() != Status::bad_input) throw;

@@ -1,6 +1,6 @@
 // JPEG (JFIF/Exif) header: a walk over the marker segments up to the frame header
-// (SOFn), which gives the size and the number of components. Read only: fest writes no
-// lossy images (measurements must not pass through lossy compression).
+// (SOFn), which gives the size and the number of components. JPEG is written only when a
+// caller asks for a quality (measurements must not pass through lossy compression).
 #include <cstdint>
 
 #include "core/error.hpp"

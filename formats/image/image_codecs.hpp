@@ -11,21 +11,29 @@
 
 namespace fest::formats::image_detail {
 
-// OpenCV (PNG, TIFF): decodes to RGB(A) order and checks the result matches
-// `expected` (size, and depth unless the header could not know it).
-cv::Mat decode_with_opencv(std::string_view bytes, const ImageHeader& expected, const char* what);
-// Encodes RGB(A) pixels; `extension` picks OpenCV's encoder (".png", ".pfm", ".tiff").
-std::string encode_with_opencv(const cv::Mat& rgb, const char* extension, const std::vector<int>& params);
+// PNG through libpng (png_codec.cpp): decodes to RGB(A), grey or grey + alpha;
+// encodes 1, 3 or 4 channels with zlib `level` and `strategy` and adaptive filters.
+cv::Mat decode_png(std::string_view bytes);
+std::string encode_png(const cv::Mat& pixels, int level, int strategy);
+
+// JPEG through libjpeg-turbo (jpeg_codec.cpp): 8-bit grey or RGB; quality 1-100.
+cv::Mat decode_jpeg(std::string_view bytes);
+std::string encode_jpeg(const cv::Mat& pixels, int quality);
+
+// TIFF through libtiff (tiff_codec.cpp): `expected` is the checked header.
+cv::Mat decode_tiff(std::string_view bytes, const ImageHeader& expected);
+std::string encode_tiff(const cv::Mat& pixels);  // LZW for integers, uncompressed float
 
 // PGM/PPM/PAM, both directions (netpbm_codec.cpp says why not OpenCV).
 cv::Mat decode_netpbm(std::string_view bytes, const NetpbmLayout& layout);
 std::string encode_pnm(const cv::Mat& pixels, bool ascii);  // P2/P3/P5/P6 by channels
 std::string encode_pam(const cv::Mat& pixels);
 
-// PFM reading (pfm_codec.cpp says why not OpenCV); writing is OpenCV's.
+// PFM (pfm_codec.cpp says why not OpenCV): grey or RGB float.
 cv::Mat decode_pfm(std::string_view bytes, const NetpbmLayout& layout);
+std::string encode_pfm(const cv::Mat& pixels);
 
-// PNG with two channels (grey + alpha), which OpenCV's encoder refuses.
+// PNG with two channels (grey + alpha), written as before by fest's own encoder.
 std::string encode_png_grey_alpha(const cv::Mat& pixels);
 // PNG of 1-4 channels, 8 or 16 bits, rows unfiltered, zlib `level` and `strategy`
 // (Z_HUFFMAN_ONLY for noisy raw data).

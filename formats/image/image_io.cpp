@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include <opencv2/imgcodecs.hpp>
 #include <zlib.h>
 
 #include "core/error.hpp"
@@ -83,7 +82,21 @@ Image read_image(std::string_view bytes, Format format) {
     return image;
   }
   const ImageHeader header = read_image_header(bytes, format);
-  image.pixels = decode_with_opencv(bytes, header, format_name_of(format));
+  const char* what = format_name_of(format);
+  switch (format) {
+    case Format::png: image.pixels = decode_png(bytes); break;
+    case Format::jpeg: image.pixels = decode_jpeg(bytes); break;
+    case Format::tiff: image.pixels = decode_tiff(bytes, header); break;
+    default: throw bad_input("{} is not an image format", what);
+  }
+  const cv::Mat& decoded = image.pixels;
+  if (decoded.cols != header.width || decoded.rows != header.height)
+    throw bad_input("{} data: decoded {} x {} pixels, header says {} x {}", what, decoded.cols, decoded.rows,
+                    header.width, header.height);
+  const int expected_depth = header.is_float ? CV_32F : (header.bits == 16 ? CV_16U : CV_8U);
+  if (decoded.depth() != expected_depth)
+    throw bad_input("{} data: decoded {} samples, header says {}", what, depth_label(decoded.depth()),
+                    depth_label(expected_depth));
   // Float TIFF holds scene-referred values.
   if (header.is_float) image.color_space = ColorSpace::linear;
   return image;
@@ -102,9 +115,8 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
       if (channels == 2) return encode_png_grey_alpha(m);
       if (options.png_huffman_only && options.png_compression > 0)
         return encode_png_unfiltered(m, std::min(options.png_compression, 9), Z_HUFFMAN_ONLY);
-      return encode_with_opencv(m, ".png",
-                                {cv::IMWRITE_PNG_COMPRESSION, std::clamp(options.png_compression, 0, 9), cv::IMWRITE_PNG_STRATEGY,
-                                 options.png_huffman_only ? cv::IMWRITE_PNG_STRATEGY_HUFFMAN_ONLY : cv::IMWRITE_PNG_STRATEGY_DEFAULT});
+      return encode_png(m, std::clamp(options.png_compression, 0, 9),
+                        options.png_huffman_only ? Z_HUFFMAN_ONLY : Z_DEFAULT_STRATEGY);
     case Format::pgm:
     case Format::ppm: {
       const int wanted = format == Format::pgm ? 1 : 3;
@@ -118,21 +130,19 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::pfm:
       if (integer) refuse(m, format, "PFM holds float; convert explicitly");
       if (channels != 1 && channels != 3) refuse(m, format, "PFM holds grey or RGB");
-      // OpenCV writes PFM correctly: little-endian (scale -1), rows bottom to top.
-      return encode_with_opencv(m, ".pfm", {});
+      return encode_pfm(m);
     case Format::exr:
       if (integer) refuse(m, format, "EXR is written as half or float; convert explicitly");
       return encode_exr(m, options.exr_half);
     case Format::tiff:
-      if (channels == 2) refuse(m, format, "OpenCV's TIFF writer takes 1, 3 or 4 channels");
-      // No compression for float: OpenCV would otherwise pick lossy SGILOG for RGB float.
-      return encode_with_opencv(m, ".tiff", {cv::IMWRITE_TIFF_COMPRESSION, integer ? 5 /* LZW */ : 1 /* none */});
+      if (channels == 2) refuse(m, format, "fest's TIFF writer takes 1, 3 or 4 channels");
+      return encode_tiff(m);
     case Format::jpeg:
       // Lossy compression has no place in a measurement pipeline (specs/capture.md §2.5);
       // only a caller that asks for a quality gets it (texture tiles for display).
       if (options.jpeg_quality <= 0) refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
       if (depth != CV_8U || (channels != 1 && channels != 3)) refuse(m, format, "JPEG holds 8-bit grey or RGB");
-      return encode_with_opencv(m, ".jpg", {cv::IMWRITE_JPEG_QUALITY, std::clamp(options.jpeg_quality, 1, 100)});
+      return encode_jpeg(m, std::clamp(options.jpeg_quality, 1, 100));
     default:
       throw bad_input("cannot write an image as {}", format_name_of(format));
   }

@@ -123,4 +123,29 @@ case_ "--frame on a mesh is a usage error"
 run fconv "$WORK/tet.off" --frame 0 --to ply
 expect_clean_failure 2 fconv
 
+case_ "JPEG output: a flat colour comes back within rounding, --quality checked"
+# A flat 16x16 block is pure DC in every 8x8 DCT block: at quality 95 (DC step 2 for
+# luma, 3 for chroma) it returns within a few levels of (200, 100, 50).
+{ printf 'P6\n16 16\n255\n'; for _ in $(seq 256); do printf '\310\144\062'; done; } >"$WORK/flat.ppm"
+run fconv "$WORK/flat.ppm" -o "$WORK/flat.jpg"
+expect_status 0
+run fconv "$WORK/flat.jpg" --to ppm
+expect_status 0
+check "every pixel within 3 of (200,100,50)" test "$(tail -c 768 "$out" | od -An -v -tu1 | tr -s ' ' '\n' | grep -v '^$' |
+  awk 'BEGIN{bad=0} {want=(NR%3==1)?200:(NR%3==2)?100:50; d=$1-want; if (d<-3||d>3) bad++} END{print bad}')" = 0
+run fconv "$WORK/flat.ppm" --to jpg --quality 0
+expect_clean_failure 2 fconv
+run fconv "$WORK/flat.ppm" --to jpg --quality 101
+expect_clean_failure 2 fconv
+
+case_ "truncated PNG, JPEG and TIFF: one line, exit 3, no output file"
+run fconv "$WORK/flat.ppm" -o "$WORK/flat.png"
+run fconv "$WORK/flat.ppm" -o "$WORK/flat.tiff"
+for f in png jpg tiff; do
+  head -c $(( $(wc -c <"$WORK/flat.$f") - 12 )) "$WORK/flat.$f" >"$WORK/cut.$f"
+  run fconv "$WORK/cut.$f" -o "$WORK/cut_out.pam"
+  expect_clean_failure 3 fconv
+  check "no output for cut.$f" test ! -e "$WORK/cut_out.pam"
+done
+
 finish

@@ -142,4 +142,17 @@ case_ "unknown output extension is a usage error before reading"
 bad 2 'error:' simplify "$WORK/plane.asc" --max-error 1 -o "$WORK/out.xyz"
 bad 2 'start' simplify "$WORK/bowl.asc" --max-error 4 --start quadtree -o "$WORK/out.ply"
 
+case_ "GDAL is a plugin: PGM and PNG DEMs need none, an ASCII grid without it is exit 4 naming the package"
+printf 'P2\n3 2\n65535\n0 1000 65535\n7 8 9\n' >"$WORK/nogdal.pgm"
+FEST_PLUGIN_DIR="$WORK/no-plugins" run terrainlod stats "$WORK/nogdal.pgm" --tile 4
+expect_status 0
+if "$FEST_BIN/fconv" "$WORK/nogdal.pgm" -o "$WORK/nogdal.png" 2>/dev/null; then
+  FEST_PLUGIN_DIR="$WORK/no-plugins" run terrainlod stats "$WORK/nogdal.png" --tile 4
+  expect_status 0
+  expect_json '[.dem.format, .dem.z_max]' '["PNG",65535]'
+fi
+FEST_PLUGIN_DIR="$WORK/no-plugins" run terrainlod stats "$WORK/plane.asc"
+expect_clean_failure 4 terrainlod
+expect_stderr_has "libgdal32"
+
 finish

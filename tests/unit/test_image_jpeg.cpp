@@ -1,5 +1,6 @@
-// JPEG reading (read only): the header walk gives size and components before anything
-// is decoded, malformed headers are bad input, and writing JPEG is refused.
+// JPEG reading: the header walk gives size and components before anything is decoded,
+// malformed headers are bad input, and writing JPEG is refused unless a quality is given
+// (test_image_codecs.cpp checks the writer).
 
 #include <string>
 #include <vector>

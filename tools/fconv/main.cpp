@@ -35,6 +35,7 @@ struct Options {
   bool ascii = false;
   bool compress = false;
   bool half = false;
+  int quality = 95;  // JPEG output
   std::string volume_type;
   bool rescale = false;
   long frame = -1;  // --frame K: one frame of a 4-D series; -1: all
@@ -142,6 +143,7 @@ std::string convert(const Input& in, Format to, const Options& opt) {
       ImageWriteOptions w;
       w.ascii = opt.ascii;
       w.exr_half = opt.half;
+      w.jpeg_quality = opt.quality;
       return write_image(parse(in, read_image), to, w);
     }
     case Kind::volume: throw usage_error("internal: volumes are converted by convert_volume");
@@ -228,7 +230,7 @@ int main(int argc, char** argv) {
   app.add_option("input", opt.input, "Input file, or - for standard input")->default_val("-");
   app.add_option("-o,--output", opt.output, "Output file, or - for standard output")->default_val("-");
   app.add_option("--to", opt.to,
-                 "Output format: ply obj off stl drc | png pgm ppm pam pfm exr tiff | nifti (nii) nifti2 hdr mgh mgz nrrd mha | "
+                 "Output format: ply obj off stl drc | png jpg pgm ppm pam pfm exr tiff | nifti (nii) nifti2 hdr mgh mgz nrrd mha | "
                  "vtu vti vtp vtk | csv tsv json; append .gz to compress (nii.gz)");
   app.add_flag("--info", opt.info, "Print the input's metadata as JSON instead of converting");
   app.add_flag("--ascii", opt.ascii, "Text variant where the format has one (PLY, STL, PGM/PPM, VTK)");
@@ -240,6 +242,9 @@ int main(int argc, char** argv) {
   app.add_option("--frame", opt.frame, "Volume: write only frame K (0-based) of a 4-D series, as a 3-D volume")
       ->check(CLI::Range(0L, 1L << 31));
   app.add_flag("--half", opt.half, "EXR: 16-bit half channels instead of 32-bit float");
+  app.add_option("--quality", opt.quality, "JPEG output quality, 1 (smallest) to 100 (best)")
+      ->check(CLI::Range(1, 100))
+      ->default_val(95);
   app.add_option("--draco-bits", opt.draco_bits, "Draco position quantization bits (0 = lossless)")
       ->check(CLI::Range(0, 30));
   app.add_option("--draco-speed", opt.draco_speed, "Draco encoder speed, 0 (smallest) to 10 (fastest)")

@@ -1,0 +1,44 @@
+// decimate: simplify a triangle mesh by quadric-ordered edge collapses to a face count or
+// an error bound (docs/decimate.md). Flags only; the work is in decimate_app.cpp.
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include "cli/cli.hpp"
+#include "decimate_app.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Simplify a triangle mesh to a face count or an error bound (Garland-Heckbert quadrics with attributes,\n"
+               "manifold-safe edge collapses, boundary/feature constraints); Hausdorff and RMS error in --report.",
+               "decimate"};
+  fest::cli::Common common;
+  fest::cli::add_common(app, common);
+  fest::decimate_tool::Options o;
+  app.add_option("input", o.input, "Input mesh (PLY, OFF, OBJ, STL, Draco), or - for standard input")->default_val("-");
+  app.add_option("-o,--output", o.output, "Output mesh, or - for standard output")->default_val("-");
+  app.add_option("--to", o.to, "Output format (ply, off, obj, stl, drc); default: from -o, else the input's");
+  app.add_option("--faces", o.faces, "Target face count");
+  app.add_option("--ratio", o.ratio, "Target face count as a fraction of the input's (0 < r <= 1)");
+  app.add_option("--error", o.error, "Stop before a collapse whose error estimate exceeds this length");
+  app.add_option("--error-rel", o.error_rel, "The same, as a fraction of the bounding-box diagonal");
+  app.add_option("--lock", o.lock, "Vertices that never move: boundary, features (comma-separated)");
+  app.add_option("--feature-angle", o.feature_angle, "Dihedral angle (degrees) above which an edge is a feature")
+      ->default_val(180);
+  app.add_flag("--no-attributes", o.no_attributes, "Quadrics over positions only (ignore normals, colours, texcoords)");
+  app.add_option("--attribute-weight", o.attribute_weight, "Weight of attribute differences (in bbox diagonals)")
+      ->default_val(1.0);
+  app.add_option("--placement", o.placement, "optimal (quadric minimiser) or vertex (half-edge collapse)")
+      ->default_val("optimal");
+  app.add_option("--weighting", o.weighting, "Plane weights of the quadrics: sqrt-area (default), area (GH97), uniform")
+      ->default_val("sqrt-area");
+  app.add_flag("--drop-nonmanifold", o.drop_nonmanifold, "Drop faces the reader could not attach instead of refusing");
+  app.add_flag("--ascii", o.ascii, "ASCII PLY/STL output");
+  app.add_option("--report", o.report, "Write counts, time, Hausdorff and RMS error (input vs output) as JSON");
+  app.add_option("--samples", o.samples, "Extra area-weighted samples of the error measurement")->default_val(100000);
+  fest::cli::add_threads(app, o.threads);
+  app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See decimate(1).");
+  return fest::cli::run(app, argc, argv, [&] {
+    ::omerr().disable();
+    o.quiet = common.quiet;
+    return fest::decimate_tool::run(o);
+  });
+}

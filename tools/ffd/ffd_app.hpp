@@ -1,0 +1,63 @@
+#pragma once
+// ffd's command library (fest_ffd_app): one function per subcommand; reads meshes with
+// formats/, deforms with lib/ffd, writes with formats/. Typed options, no flags here.
+
+#include <string>
+#include <vector>
+
+namespace fest::ffd_tool {
+
+struct InitOptions {
+  std::string input = "-", output = "-";
+  std::vector<int> dims{4, 4, 4};
+  std::string basis = "bernstein";
+  double pad = 0.05;
+};
+
+struct ApplyOptions {
+  std::string lattice;                 // JSON or PyGeM .prm (recognised by content)
+  std::string input = "-", output = "-";
+  std::vector<std::string> inputs;     // NAME=FILE, each an object
+  std::vector<std::string> objects;    // NAME=deform|rigid|ignore
+  std::string joints, fixed_cp;
+  std::string outside = "none";        // none | clamp
+  std::string normals = "recompute";   // recompute | jacobian
+  std::string to;
+  std::string report;
+  bool strict = false, allow_large = false, ascii = false;
+  int threads = 0;
+};
+
+struct JacobianOptions {
+  std::string lattice, input = "-", output = "-";
+  std::string outside = "none";
+  int threads = 0;
+};
+
+struct LatticeMeshOptions {
+  std::string input = "-", output = "-";
+};
+
+struct ConvertOptions {
+  std::string input = "-", output = "-";
+  std::string to = "json";  // json | pygem
+};
+
+struct AnimateOptions {
+  std::string keys;                    // TSV rows: time lattice_file
+  std::string input = "-";
+  std::string output;                  // pattern with %d (frame number)
+  double fps = 30;
+  std::string manifest = "-";
+  std::string outside = "none";
+  int threads = 0;
+};
+
+int run_init(const InitOptions& o);
+int run_apply(const ApplyOptions& o);
+int run_jacobian(const JacobianOptions& o);
+int run_lattice_mesh(const LatticeMeshOptions& o);
+int run_convert(const ConvertOptions& o);
+int run_animate(const AnimateOptions& o);
+
+}  // namespace fest::ffd_tool

@@ -1,0 +1,357 @@
+// lbmsim run: case -> solver (one process or the slabs of an MPI job) -> fields as VTI
+// series, NRRD files or the frame stream; forces and probes as CSV; a JSON report.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include <omp.h>
+
+#include <nlohmann/json.hpp>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+
+#include "case_loader.hpp"
+#include "comm.hpp"
+#include "commands.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/threads.hpp"
+#include "core/tool_main.hpp"
+#include "field_output.hpp"
+#include "formats/dataset/dataset_io.hpp"
+#include "formats/input.hpp"
+#include "lbm/case_json.hpp"
+#include "lbm/fields.hpp"
+#include "lbm/solver.hpp"
+#include "lbm/units.hpp"
+
+namespace fest::lbmsim {
+
+using nlohmann::json;
+
+void set_threads(int threads) { omp_set_num_threads(fest::resolve_threads(threads)); }
+
+std::string build_features() {
+  return mpi_built() ? "with MPI (" + std::string("Open MPI") + ")" : std::string("without MPI");
+}
+
+namespace {
+
+std::string extension_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  return path.substr(dot + 1);
+}
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+void make_parent_dir(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (parent.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(parent, ec);
+  if (ec) throw io_error("cannot create the output folder: {} ({})", ec.message(), parent.string());
+}
+
+// Sums per-layer values of every rank in global layer order (the same bits on any
+// number of ranks and threads).
+std::vector<double> global_layer_sum(lbm::SlabExchange& ex, const std::vector<double>& local, int comps) {
+  const std::vector<double> all = ex.allgather(local);
+  std::vector<double> s(comps, 0.0);
+  for (std::size_t l = 0; l < all.size() / comps; ++l)
+    for (int k = 0; k < comps; ++k) s[k] += all[l * comps + k];
+  return s;
+}
+
+struct Output {
+  std::string pattern, format;  // format: vti, nrrd, stream
+  bool float64 = false, zlib = true;
+  std::vector<std::pair<double, std::string>> series;
+};
+
+void write_frame(Output& out, const FieldFrame& f) {
+  if (out.format == "stream") {
+    const std::string bytes = encode_stream_frame(f, out.float64);
+    if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() || std::fflush(stdout) != 0)
+      throw io_error("cannot write the frame stream (stdout)");
+    return;
+  }
+  const std::string path = expand_pattern(out.pattern, f.index);
+  make_parent_dir(path);
+  if (out.format == "nrrd") {
+    for (const auto& [name, bytes] : encode_nrrd(f, path, out.float64)) write_output(name, bytes);
+    return;
+  }
+  write_output(path, encode_vti(f, out.float64, out.zlib));
+  const std::filesystem::path p(path);
+  out.series.emplace_back(f.time, p.filename().string());
+  write_output((p.parent_path() / "series.pvd").string(), encode_pvd(out.series));
+}
+
+// init.file: a .vti that lbmsim wrote (or any image data of the lattice size) with a
+// 3-component "velocity" and optionally "density"; physical velocities are converted.
+void read_init_file(const lbm::Case& c, const std::string& where, std::vector<double>& rho, std::vector<double>& u) {
+  std::string path = c.init.file;
+  if (!path.empty() && path[0] != '/' && where != "stdin") {
+    const std::filesystem::path dir = std::filesystem::path(where).parent_path();
+    if (!dir.empty()) path = (dir / path).string();
+  }
+  const formats::Input in = formats::load_input(path);
+  if (in.format != formats::Format::vti) throw bad_input("init.file must be a .vti ({})", path);
+  vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+  auto* img = vtkImageData::SafeDownCast(ds);
+  if (!img) throw bad_input("init.file holds no image data ({})", path);
+  int dims[3];
+  img->GetDimensions(dims);
+  if (dims[0] != c.size[0] || dims[1] != c.size[1] || dims[2] != c.size[2])
+    throw bad_input("init.file is {}x{}x{} but size is {}x{}x{} ({})", dims[0], dims[1], dims[2], c.size[0], c.size[1],
+                    c.size[2], path);
+  vtkDataArray* v = img->GetPointData()->GetArray("velocity");
+  if (!v || v->GetNumberOfComponents() != 3) throw bad_input("init.file has no 3-component \"velocity\" array ({})", path);
+  vtkDataArray* d = img->GetPointData()->GetArray("density");
+  const std::size_t N = c.cells();
+  const double scale = c.units.physical ? c.units.dt() / c.units.dx : 1.0;
+  rho.assign(N, c.init.rho);
+  u.assign(3 * N, 0.0);
+  for (std::size_t k = 0; k < N; ++k) {
+    for (int a = 0; a < 3; ++a) u[3 * k + a] = v->GetComponent(static_cast<vtkIdType>(k), a) * scale;
+    if (d) rho[k] = d->GetComponent(static_cast<vtkIdType>(k), 0);
+    if (!std::isfinite(rho[k]) || !(rho[k] > 0) || !std::isfinite(u[3 * k]) || !std::isfinite(u[3 * k + 1]) ||
+        !std::isfinite(u[3 * k + 2]))
+      throw bad_input("init.file holds a non-finite or non-positive value at node {} ({})", k, path);
+  }
+}
+
+}  // namespace
+
+int run_command(const RunOptions& o) {
+  // Flags first (usage errors), then the case (bad input).
+  Output out;
+  out.pattern = o.output;
+  if (o.output.empty() || o.output == "-") {
+    if (!o.to.empty() && o.to != "stream" && o.to != "nrrd")
+      throw usage_error("standard output carries the frame stream only (--to stream)");
+    out.format = "stream";
+  } else {
+    out.format = o.to.empty() ? extension_of(o.output) : o.to;
+    if (out.format != "vti" && out.format != "nrrd")
+      throw usage_error("output format must be vti or nrrd (from --to or the extension of \"{}\"), or - for the stream",
+                        o.output);
+  }
+  Comm& comm = Comm::world();
+  if (comm.size() > 1 && (o.case_file.empty() || o.case_file == "-")) {
+    if (!comm.root()) return static_cast<int>(Status::usage);
+    throw usage_error("mpirun gives standard input to rank 0 only: name the case file for {} ranks", comm.size());
+  }
+  LoadedCase L;
+  try {
+    L = load_case(o.case_file, o.set);
+  } catch (const Error& e) {
+    if (!comm.root()) return e.exit_code();  // every rank sees the same error; rank 0 reports it
+    throw;
+  }
+  lbm::Case& c = L.c;
+  if (o.steps >= 0) c.steps = o.steps, c.steady = false;
+  if (o.every >= 0) c.output.every = o.every;
+  if (!o.fields.empty()) c.output.fields = split_list(o.fields);
+  if (!o.compress.empty()) c.output.compress = o.compress == "on";
+  out.float64 = c.output.float64;
+  out.zlib = c.output.compress;
+  lbm::check_field_names(c.output.fields, o.fields.empty() ? L.where : "--fields");
+  const long frames = c.output.every > 0 ? c.steps / c.output.every + 1 : 1;
+  if (out.format != "stream" && frames > 1 && !has_index_conversion(out.pattern))
+    throw usage_error("-o \"{}\" needs a %d for {} output steps", out.pattern, frames);
+  if (comm.root() && !o.quiet)
+    for (const std::string& w : c.warnings) warn("lbmsim", w);
+
+  const int S = c.dim - 1;
+  if (comm.size() > c.size[S])
+    throw usage_error("{} ranks for {} layers along {}: a slab needs at least one layer; use at most {} ranks",
+                      comm.size(), c.size[S], "xyz"[S], c.size[S]);
+  const std::vector<int> starts = lbm::slab_starts(c.size[S], comm.size());
+
+  lbm::SolverSetup setup;
+  setup.c = &c;
+  setup.flags = &L.flags;
+  setup.precision = o.precision == "float" ? lbm::Precision::f32 : lbm::Precision::f64;
+  setup.exchange = &comm.exchange();
+  setup.slab_lo = starts[comm.rank()];
+  setup.slab_hi = starts[comm.rank() + 1];
+  if (c.init.kind == lbm::Init::Kind::taylor_green) {
+    const double U = c.init.amplitude, kx = 2 * M_PI / c.size[0], ky = 2 * M_PI / c.size[1];
+    setup.init = [=](int x, int y, int, double& rho, std::array<double, 3>& u) {
+      rho = 1 - 0.75 * U * U * (std::cos(2 * kx * x) + std::cos(2 * ky * y));
+      u = {-U * std::cos(kx * x) * std::sin(ky * y), U * std::sin(kx * x) * std::cos(ky * y), 0.0};
+    };
+  }
+  std::vector<double> init_rho, init_u;
+  if (c.init.kind == lbm::Init::Kind::file) {
+    read_init_file(c, L.where, init_rho, init_u);
+    const int nx = c.size[0], ny = c.size[1];
+    setup.init = [&, nx, ny](int x, int y, int z, double& rho, std::array<double, 3>& u) {
+      const std::size_t k = static_cast<std::size_t>(x) + static_cast<std::size_t>(nx) * (y + static_cast<std::size_t>(ny) * z);
+      rho = init_rho[k];
+      u = {init_u[3 * k], init_u[3 * k + 1], init_u[3 * k + 2]};
+    };
+  }
+  auto solver = lbm::make_solver(setup);
+  const lbm::UnitTable units = lbm::unit_table(c, setup.precision == lbm::Precision::f32);
+  lbm::SlabExchange& ex = comm.exchange();
+
+  auto gathered_moments = [&](std::vector<double>& rho, std::vector<double>& u) {
+    std::vector<double> r, v;
+    solver->moments(r, v);
+    rho = ex.allgather(r);
+    u = ex.allgather(v);
+  };
+  auto mass = [&] { return global_layer_sum(ex, solver->layer_mass(), 1)[0]; };
+
+  std::string forces_csv, probes_csv;
+  if (!o.forces.empty()) forces_csv = "step,t,flag,Fx,Fy,Fz,CD,CL\n";
+  if (!o.probes.empty()) probes_csv = "step,t,probe,x,y,z,rho,ux,uy,uz\n";
+  const double dt = units.dt;
+  const double ref_len = c.lref(), ref_u = c.u_ref;
+  json force_stats = json::object();
+  std::map<int, std::array<double, 4>> cd_stats;  // sum, min, max, last
+
+  auto record_forces = [&](long step) {
+    for (int id : c.forces) {
+      const auto F = global_layer_sum(ex, solver->layer_force(static_cast<std::uint8_t>(id)), 3);
+      const double norm = 0.5 * ref_u * ref_u * (c.dim == 3 ? ref_len * ref_len : ref_len);
+      const double cd = F[0] / norm, cl = F[1] / norm;
+      auto& st = cd_stats[id];
+      if (step == 1) st = {0, cd, cd, cd};
+      st[0] += cd, st[1] = std::min(st[1], cd), st[2] = std::max(st[2], cd), st[3] = cd;
+      if (!forces_csv.empty())
+        forces_csv += fmt::format("{},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", step, step * dt, id,
+                                  F[0] * units.force_scale, F[1] * units.force_scale, F[2] * units.force_scale, cd, cl);
+    }
+  };
+  auto record_probes = [&](long step, const std::vector<double>& rho, const std::vector<double>& u) {
+    for (std::size_t p = 0; p < c.probes.size(); ++p) {
+      int ix[3];
+      for (int a = 0; a < 3; ++a)
+        ix[a] = a < c.dim ? std::clamp(static_cast<int>(std::floor(c.probes[p][a])), 0, c.size[a] - 1) : 0;
+      const std::size_t k = L.flags.index(ix[0], ix[1], ix[2]);
+      probes_csv += fmt::format("{},{:.17g},{},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", step, step * dt, p,
+                                c.probes[p][0], c.probes[p][1], c.probes[p][2], rho[k], u[3 * k] * units.dx / dt,
+                                u[3 * k + 1] * units.dx / dt, u[3 * k + 2] * units.dx / dt);
+    }
+  };
+  auto emit = [&](long step, const std::vector<double>& rho, const std::vector<double>& u) {
+    if (!comm.root()) return;
+    FieldFrame f;
+    f.index = step;
+    f.time = step * dt;
+    f.dim = c.dim;
+    f.size = c.size;
+    f.spacing = units.dx;
+    std::vector<double> uphys = u;
+    if (c.units.physical)
+      for (double& v : uphys) v *= units.dx / dt;
+    f.fields = lbm::derived_fields(c.output.fields, c, L.flags, rho, uphys, units.pressure_scale, units.dx);
+    write_frame(out, f);
+  };
+
+  const double m0 = mass();
+  std::vector<double> rho, u, prev_u;
+  const auto t0 = std::chrono::steady_clock::now();
+  long steps_done = 0;
+  double residual = -1;
+  bool converged = false;
+  try {
+    if (c.output.every > 0) {
+      gathered_moments(rho, u);
+      emit(0, rho, u);
+    }
+    for (long t = 1; t <= c.steps; ++t) {
+      solver->step();
+      steps_done = t;
+      if (!c.forces.empty()) record_forces(t);
+      const bool guard = t % c.check_every == 0;
+      const bool write = c.output.every > 0 && t % c.output.every == 0;
+      const bool steady_check = c.steady && t % 1000 == 0;
+      if (!(guard || write || steady_check || (!probes_csv.empty() && guard))) continue;
+      gathered_moments(rho, u);
+      double umax = 0;
+      bool finite = true;
+      for (double v : u) {
+        finite = finite && std::isfinite(v);
+        umax = std::max(umax, std::abs(v));
+      }
+      for (double v : rho) finite = finite && std::isfinite(v);
+      if (!finite) throw runtime_failure("state became non-finite at step {} (velocity)", t);
+      if (umax > 0.5) throw runtime_failure("lattice speed {:.3g} > 0.5 at step {}: the run diverges", umax, t);
+      if (!probes_csv.empty() && guard) record_probes(t, rho, u);
+      if (write) emit(t, rho, u);
+      if (steady_check) {
+        if (!prev_u.empty()) {
+          double d = 0;
+          for (std::size_t k = 0; k < u.size(); ++k) d = std::max(d, std::abs(u[k] - prev_u[k]));
+          residual = d / c.u_ref;
+          if (residual < c.tol) {
+            converged = true;
+            break;
+          }
+        }
+        prev_u = u;
+      }
+    }
+    if (c.output.every == 0 || steps_done % c.output.every != 0) {
+      gathered_moments(rho, u);
+      emit(steps_done, rho, u);
+    }
+  } catch (const Error& e) {
+    if (comm.size() > 1 && e.status() == Status::io) {
+      std::fprintf(stderr, "lbmsim: error: %s\n", e.what());
+      comm.abort(e.exit_code());
+    }
+    if (!comm.root()) return e.exit_code();
+    throw;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double m1 = mass();
+  std::size_t fluid = solver->fluid_nodes();
+  fluid = static_cast<std::size_t>(global_layer_sum(ex, {static_cast<double>(fluid)}, 1)[0]);
+  if (!comm.root()) return 0;
+  if (!o.forces.empty()) write_output(o.forces, forces_csv);
+  if (!o.probes.empty()) write_output(o.probes, probes_csv);
+  if (!o.report.empty()) {
+    json r;
+    r["case"] = lbm::case_to_json(c);
+    r["units"] = lbm::unit_table_json(units, c);
+    r["steps"] = steps_done;
+    r["converged"] = converged;
+    if (residual >= 0) r["final_residual"] = residual;
+    r["wall_seconds"] = seconds;
+    r["mlups"] = seconds > 0 ? static_cast<double>(fluid) * steps_done / seconds / 1e6 : 0.0;
+    r["threads"] = omp_get_max_threads();
+    r["ranks"] = comm.size();
+    r["precision"] = o.precision;
+    double umax = 0;
+    for (double v : u) umax = std::max(umax, std::abs(v));
+    r["max_speed"] = umax;
+    r["mass_drift"] = std::abs(m1 - m0) / m0;
+    json fs = json::object();
+    for (const auto& [id, st] : cd_stats)
+      fs[std::to_string(id)] = {{"cd_mean", st[0] / std::max<long>(1, steps_done)}, {"cd_min", st[1]}, {"cd_max", st[2]}, {"cd_last", st[3]}};
+    r["forces"] = fs;
+    write_output(o.report, r.dump(2) + "\n");
+  }
+  return 0;
+}
+
+}  // namespace fest::lbmsim
