@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 seconds="${1:-600}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json fuzz_image_stream fuzz_patnet)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_mgh fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json
+  fuzz_image_stream fuzz_patnet fuzz_vw fuzz_radiosity_scene fuzz_volume_source fuzz_softobj fuzz_lbm_case fuzz_ffd_lattice)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -23,6 +24,13 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_camera_json) echo tests/data/markerpose ;;
     fuzz_image_stream) echo tests/data/image ;;
     fuzz_patnet) echo examples/patnet tests/data/regress/patnet ;;
+    fuzz_mgh) echo tests/data/volume ;;
+    fuzz_vw) echo tests/data/volwave ;;
+    fuzz_radiosity_scene) echo tests/data/radiosity examples/radiosity ;;
+    fuzz_volume_source) echo tests/data/volume ;;
+    fuzz_softobj) echo examples/tongue ;;
+    fuzz_lbm_case) echo examples/lbmsim ;;
+    fuzz_ffd_lattice) echo tests/data/ffd ;;
   esac
 }
 
