@@ -10,7 +10,7 @@ command -v readelf >/dev/null || { echo "readelf not installed (binutils): skipp
 
 # Tools that still link VTK directly (issue 21: to move behind a dlopen plugin as GDAL
 # did, formats/dem/gdal_plugin.cpp).
-KNOWN_HEAVY=" fcompare fconv fluidsim lemtrace lmfsim volwave "
+KNOWN_HEAVY=" fcompare fconv fluidsim isosurf lbmsim lemtrace lmfsim softobj volrender volwave "
 
 TOOLS_DIR="$(cd "$(dirname "$0")/../../tools" && pwd)"
 checked=0
