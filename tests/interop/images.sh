@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Images fest writes (PNG, PGM/PPM, PAM, TIFF, PFM, EXR), read by OpenImageIO, ImageMagick,
+# Images fest writes (PNG, PGM/PPM, PAM, TIFF, JPEG, PFM, EXR), read by OpenImageIO, ImageMagick,
 # GDAL and OpenEXR's exrheader. The reference is always the source file as the same
 # independent program reads it, so fest's readers are not involved on either side.
 . "$(dirname "$0")/../cli/lib.sh"
@@ -47,6 +47,19 @@ for src in "$rgb" "$grey"; do
     fi
   done
 done
+
+# JPEG is lossy (and subsamples chroma 2x2, so a tiny image of saturated primaries is no
+# test): a smooth 48x32 colour ramp must come back from ImageMagick at its size and
+# within 30 dB PSNR of the source (fconv writes quality 95 by default).
+if [ $have_im = 1 ]; then
+  awk 'BEGIN { print "P3\n48 32\n255"; for (y = 0; y < 32; y++) for (x = 0; x < 48; x++)
+               print int(255 * x / 47), int(255 * y / 31), int(128 + 60 * sin(x / 7.0)) }' >"$WORK/ramp.ppm"
+  "$FEST_BIN/fconv" "$WORK/ramp.ppm" -o "$WORK/ramp.jpg"
+  case_ "ImageMagick reads fconv's JPEG"
+  check "same size" test "$(/usr/bin/identify -format '%w %h' "$WORK/ramp.jpg")" = "48 32"
+  psnr=$(/usr/bin/compare -metric PSNR "$WORK/ramp.ppm" "$WORK/ramp.jpg" null: 2>&1 | awk '{print $1}')
+  check "PSNR $psnr >= 30 dB" awk -v p="$psnr" 'BEGIN { exit !(p == "inf" || p + 0 >= 30) }'
+fi
 
 case_ "float images: PFM and EXR"
 "$FEST_BIN/fconv" "$hdr" -o "$WORK/hdr.exr"
