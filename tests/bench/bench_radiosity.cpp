@@ -105,6 +105,14 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--ff") && i + 1 < argc) g_engine = std::strcmp(argv[++i], "hemicube") ? Engine::hybrid : Engine::hemicube;
     else if (!std::strcmp(argv[i], "--no-furnace")) furnace = false;
     else if (!std::strcmp(argv[i], "--furnace-only")) cornell_cases = false;
+    else {
+      // Unknown words stop here: the full run includes a furnace case of minutes.
+      std::fprintf(stderr,
+                   "usage: bench_radiosity [--threads N] [--patch-size MM] [--quick] [--ff hybrid|hemicube]\n"
+                   "                       [--no-furnace | --furnace-only]\n"
+                   "JSON lines: Cornell box (orpr, overshoot, pr, adaptive), then the 6x32x32 furnace.\n");
+      return std::strcmp(argv[i], "--help") && std::strcmp(argv[i], "-h") ? 2 : 0;
+    }
   }
   threads = fest::resolve_threads(threads);
   MeshingOptions cornell;
