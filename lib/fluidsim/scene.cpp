@@ -6,35 +6,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/closest_word.hpp"
 #include "core/error.hpp"
 
 namespace fest::fluidsim {
 
 using nlohmann::json;
-
-std::string closest_name(const std::string& word, const std::vector<std::string>& candidates) {
-  std::string best;
-  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
-  for (const auto& c : candidates) {
-    // Levenshtein distance, one row at a time.
-    std::vector<std::size_t> row(c.size() + 1);
-    for (std::size_t j = 0; j <= c.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= word.size(); ++i) {
-      std::size_t diag = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= c.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (word[i - 1] == c[j - 1] ? 0 : 1)});
-        diag = up;
-      }
-    }
-    if (row[c.size()] < best_d) {
-      best_d = row[c.size()];
-      best = c;
-    }
-  }
-  return best;
-}
 
 namespace {
 
@@ -49,7 +26,7 @@ struct Parser {
     if (!obj.is_object()) fail("must be a JSON object", path.empty() ? "scene" : path);
     for (const auto& [key, value] : obj.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      const std::string hint = closest_name(key, allowed);
+      const std::string hint = closest_word(key, allowed);
       const std::string full = path.empty() ? key : path + "." + key;
       if (hint.empty())
         throw bad_input("scene key \"{}\" is unknown ({})", full, where);

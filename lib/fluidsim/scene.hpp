@@ -74,7 +74,5 @@ struct Scene {
 // Status::bad_input: `scene key "viscocity" is unknown (did you mean "viscosity"?) (scene.json)`.
 Scene parse_scene(const nlohmann::json& doc, const std::string& where);
 
-// The closest candidate by edit distance, or "" when none is close.
-std::string closest_name(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace fest::fluidsim

@@ -7,34 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/closest_word.hpp"
 #include "core/error.hpp"
 
 namespace fest::lbm {
 
 using nlohmann::json;
-
-std::string closest_key(const std::string& word, const std::vector<std::string>& candidates) {
-  std::string best;
-  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
-  for (const std::string& c : candidates) {
-    std::vector<std::size_t> row(c.size() + 1);
-    for (std::size_t j = 0; j <= c.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= word.size(); ++i) {
-      std::size_t diag = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= c.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (word[i - 1] == c[j - 1] ? 0u : 1u)});
-        diag = up;
-      }
-    }
-    if (row[c.size()] < best_d) {
-      best_d = row[c.size()];
-      best = c;
-    }
-  }
-  return best;
-}
 
 namespace {
 
@@ -47,7 +25,7 @@ void check_keys(const json& obj, const std::string& path, const std::vector<std:
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
     const std::string full = path.empty() ? it.key() : path + "." + it.key();
-    const std::string hint = closest_key(it.key(), allowed);
+    const std::string hint = closest_word(it.key(), allowed);
     if (hint.empty()) throw bad_input("case key \"{}\" is unknown ({})", full, ctx.where);
     throw bad_input("case key \"{}\" is unknown (did you mean \"{}\"?) ({})", full,
                     path.empty() ? hint : path + "." + hint, ctx.where);
@@ -104,7 +82,7 @@ Face parse_face(const json& v, const std::string& path, int dim, const Ctx& ctx)
     else if (s == "wall") f.kind = Face::Kind::wall;
     else if (s == "slip") throw bad_input("case key \"{}\": slip faces are not supported in this version ({})", path, ctx.where);
     else {
-      const std::string hint = closest_key(s, {"periodic", "wall", "moving", "velocity", "pressure"});
+      const std::string hint = closest_word(s, {"periodic", "wall", "moving", "velocity", "pressure"});
       throw bad_input("case key \"{}\" = \"{}\" is not a face type{} ({})", path, s,
                       hint.empty() ? "" : " (did you mean \"" + hint + "\"?)", ctx.where);
     }

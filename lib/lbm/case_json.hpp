@@ -22,7 +22,5 @@ nlohmann::json case_to_json(const Case& c);
 // case document. Throws Status::usage for a malformed assignment.
 void apply_override(nlohmann::json& doc, const std::string& assignment);
 
-// The closest candidate by edit distance, or "" when none is close.
-std::string closest_key(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace fest::lbm

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/closest_word.hpp"
 #include "core/error.hpp"
 #include "lbm/case_json.hpp"
 
@@ -19,7 +20,7 @@ void check_field_names(const std::vector<std::string>& names, const std::string&
     bool ok = false;
     for (const std::string& k : field_names()) ok = ok || k == n;
     if (ok) continue;
-    const std::string hint = closest_key(n, field_names());
+    const std::string hint = closest_word(n, field_names());
     throw bad_input("field \"{}\" is unknown{} ({})", n, hint.empty() ? "" : " (did you mean \"" + hint + "\"?)", where);
   }
 }
