@@ -41,8 +41,9 @@ find_package(GDAL CONFIG REQUIRED)
 # SHA-256 checksums of capture sessions and of the mesh a lumitexel file belongs to
 # (libssl-dev: OpenSSL's libcrypto).
 find_package(OpenSSL REQUIRED COMPONENTS Crypto)
-# V4L2 cameras of capture (devices/v4l2_camera): OpenCV's VideoCapture with CAP_V4L2.
-find_package(OpenCV 4 REQUIRED COMPONENTS videoio)
+# V4L2 cameras of capture (devices/v4l2_camera) talk to the kernel through
+# linux/videodev2.h (linux-libc-dev), not OpenCV's videoio, which maps ~240 shared
+# libraries (ffmpeg, GStreamer...) at every start (issue 21).
 # capture calib-*: chessboard corners, Zhang's calibration, solvePnP (lib/capture calib).
 find_package(OpenCV 4 REQUIRED COMPONENTS calib3d)
 # Volumes: NIfTI-1/-2 and Analyze headers through nifti_clib (libnifti2-dev). Debian 12's
