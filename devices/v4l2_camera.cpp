@@ -92,6 +92,16 @@ V4l2Camera::V4l2Camera(const std::string& uri, std::unique_ptr<VideoNode> node) 
 }
 
 void V4l2Camera::open(const Options& o) {
+  // A constructor that throws runs no destructor: give back what was mapped so far.
+  try {
+    setup(o);
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+void V4l2Camera::setup(const Options& o) {
   settle_ = o.settle;
   v4l2_capability cap{};
   if (const int e = node_->control(VIDIOC_QUERYCAP, &cap))

@@ -47,6 +47,7 @@ class V4l2Camera : public capture::Camera {
   struct Options;
   static Options parse(const std::string& uri);
   void open(const Options& options);
+  void setup(const Options& options);
   void negotiate_format(const Options& options);
   void map_buffers();
   void start_streaming();

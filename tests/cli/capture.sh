@@ -197,6 +197,17 @@ jq '.camera.uri = "v4l2:/dev/null,gain=3"' "$S" > "$WORK/v4l2_key.json"
 run capture run --station "$WORK/v4l2_key.json" --plan "$WORK/two.json" -o "$WORK/v4l2_key"
 expect_clean_failure 2 capture
 
+case_ "v4l2: a node that is not a V4L2 device: one line, exit 6"
+# /dev/null opens but answers VIDIOC_QUERYCAP with ENOTTY, as any non-video node does.
+jq '.camera.uri = "v4l2:/dev/null"' "$S" > "$WORK/v4l2_null.json"
+run capture run --station "$WORK/v4l2_null.json" --plan "$WORK/two.json" -o "$WORK/v4l2_null"
+expect_clean_failure 6 capture
+expect_stderr_has "v4l2 camera: /dev/null is not a V4L2 device"
+jq '.camera.uri = "v4l2:/dev/null,fourcc=H264"' "$S" > "$WORK/v4l2_h264.json"
+run capture run --station "$WORK/v4l2_h264.json" --plan "$WORK/two.json" -o "$WORK/v4l2_h264"
+expect_clean_failure 2 capture
+expect_stderr_has "fourcc 'H264' is not a format fest converts .YUYV, MJPG, GREY, RGB3, Y16."
+
 case_ "a move that never completes: exit 7"
 station_with "sim:steps=51200,speed=90,fail_at=3" > "$WORK/stuck.json"
 run capture run --station "$WORK/stuck.json" --plan "$P" -o "$WORK/stuck"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Start-up cost: no fest tool lists OpenCV's imgcodecs among its DT_NEEDED entries (it
-# alone maps ~140 shared libraries: GDAL, gdcm, poppler, ffmpeg...), and only the tools
+# Start-up cost: no fest tool lists OpenCV's imgcodecs or videoio among its DT_NEEDED
+# entries (imgcodecs alone maps ~140 shared libraries: GDAL, gdcm, poppler, ffmpeg...;
+# videoio ~240: ffmpeg, GStreamer...; capture talks to V4L2 directly), and only the tools
 # named below still list GDAL or VTK. Issue 21 ("Batch speed: every tool starts in
 # milliseconds") moves GDAL and VTK into plugin libraries opened with dlopen when an
 # input needs them; each tool that gets there leaves KNOWN_HEAVY, and a tool that
@@ -22,6 +23,8 @@ for dir in "$TOOLS_DIR"/*/; do
   needed=$(readelf -d "$exe" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
   case_ "$tool: no libopencv_imgcodecs in DT_NEEDED"
   if grep -q '^libopencv_imgcodecs' <<<"$needed"; then fail "$tool needs libopencv_imgcodecs"; else pass; fi
+  case_ "$tool: no libopencv_videoio in DT_NEEDED"
+  if grep -q '^libopencv_videoio' <<<"$needed"; then fail "$tool needs libopencv_videoio"; else pass; fi
   case_ "$tool: GDAL/VTK only where known"
   heavy=$(grep -E '^lib(gdal|vtk)' <<<"$needed" | tr '\n' ' ')
   if [ -n "$heavy" ] && [[ "$KNOWN_HEAVY" != *" $tool "* ]]; then
