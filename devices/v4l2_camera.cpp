@@ -49,13 +49,12 @@ struct V4l2Camera::Options {
   std::string path;
   std::uint32_t fourcc = 0;  // 0: choose
   int width = 0, height = 0; // 0: keep the device's
-  int settle = 2;
 };
 
 V4l2Camera::Options V4l2Camera::parse(const std::string& uri) {
   const capture::DeviceUri u = capture::parse_device_uri(uri);
   if (u.scheme != "v4l2") throw usage_error("not a v4l2: camera URI: {}", uri);
-  u.expect_only({"fourcc", "width", "height", "settle"});
+  u.expect_only({"fourcc", "width", "height"});
   Options o;
   o.path = u.path.empty() ? "/dev/video0" : u.path;
   const std::string fourcc = u.get("fourcc");
@@ -68,7 +67,6 @@ V4l2Camera::Options V4l2Camera::parse(const std::string& uri) {
   }
   if (u.has("width")) o.width = bounded_int("width", u.get("width"), 1, 65535);
   if (u.has("height")) o.height = bounded_int("height", u.get("height"), 1, 65535);
-  if (u.has("settle")) o.settle = bounded_int("settle", u.get("settle"), 0, 100);
   return o;
 }
 
@@ -102,7 +100,6 @@ void V4l2Camera::open(const Options& o) {
 }
 
 void V4l2Camera::setup(const Options& o) {
-  settle_ = o.settle;
   v4l2_capability cap{};
   if (const int e = node_->control(VIDIOC_QUERYCAP, &cap))
     throw make_error(Status::device_error, "v4l2 camera: {} is not a V4L2 device ({})", path_, std::strerror(e));
@@ -220,7 +217,6 @@ void V4l2Camera::set_exposure(double seconds) {
   if (node_->control(VIDIOC_S_CTRL, &c) != 0)
     throw make_error(Status::device_error, "v4l2 camera: {} refused exposure {} s", path_, seconds);
   exposure_s_ = seconds;
-  if (streaming_) drain_ = true;
 }
 
 void V4l2Camera::start_streaming() {
@@ -229,7 +225,6 @@ void V4l2Camera::start_streaming() {
   if (const int e = node_->control(VIDIOC_STREAMON, &type))
     throw make_error(Status::device_error, "v4l2 camera: {} cannot start streaming ({})", path_, std::strerror(e));
   streaming_ = true;
-  frames_to_drop_ = settle_;
 }
 
 void V4l2Camera::stop_streaming() noexcept {
@@ -287,25 +282,23 @@ bool V4l2Camera::dequeue(unsigned& index, std::uint32_t& bytes_used, std::uint32
 }
 
 Image V4l2Camera::capture() {
-  if (!streaming_) start_streaming();
   unsigned index = 0;
   std::uint32_t used = 0, flags = 0;
-  if (drain_) {
-    // Frames already in the queue were exposed before set_exposure: give them back, then
-    // drop `settle` more (a sensor applies a new exposure a frame or two late).
-    while (dequeue(index, used, flags, false)) requeue(index);
-    drain_ = false;
-    frames_to_drop_ = settle_;
+  if (!streaming_) {
+    start_streaming();  // every frame from now on begins after this call
+  } else {
+    // The driver kept filling buffers since the last picture, while the table turned or
+    // the lights switched: give the filled ones back unread (at most one pass, so that a
+    // driver that always has a frame ready cannot keep this going), then drop the frame
+    // in flight, whose exposure began before this call.
+    for (std::size_t n = 0; n < buffers_.size() && dequeue(index, used, flags, false); ++n) requeue(index);
+    dequeue(index, used, flags, true);
+    requeue(index);
   }
   int corrupt = 0;
   std::string last_problem;
   while (true) {
     dequeue(index, used, flags, true);
-    if (frames_to_drop_ > 0) {
-      --frames_to_drop_;
-      requeue(index);
-      continue;
-    }
     if (flags & V4L2_BUF_FLAG_ERROR) {
       last_problem = "the driver marked the buffer as corrupt";
     } else {
@@ -316,7 +309,10 @@ Image V4l2Camera::capture() {
         requeue(index);
         return image;
       } catch (const Error& e) {
-        if (e.status() != Status::bad_input) throw;
+        if (e.status() != Status::bad_input) {
+          requeue(index);
+          throw;
+        }
         last_problem = e.what();
       }
     }

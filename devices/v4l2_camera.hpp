@@ -1,5 +1,5 @@
 #pragma once
-// A V4L2 camera (URI `v4l2:/dev/video0[,fourcc=F][,width=W][,height=H][,settle=N]`,
+// A V4L2 camera (URI `v4l2:/dev/video0[,fourcc=F][,width=W][,height=H]`,
 // specs/capture.md §2.2): UVC and machine-vision cameras driven through the kernel's
 // V4L2 interface directly (linux/videodev2.h), the way v4l2-ctl and fswebcam do:
 // VIDIOC_QUERYCAP, ENUM_FMT/S_FMT, REQBUFS + mmap streaming, QBUF/DQBUF with a poll
@@ -10,10 +10,12 @@
 // Pixel formats (devices/v4l2_frame.hpp): fourcc=Y16 delivers 16-bit grey unconverted;
 // YUYV (BT.601 limited range), MJPG (libjpeg-turbo), GREY and RGB3 arrive as 8-bit RGB.
 // Without fourcc= the first the camera offers of RGB3, YUYV, GREY, MJPG is used.
-// The first `settle` frames (default 2) after streaming starts or the exposure changes
-// are dropped, so no picture is one exposed before the change; a corrupt frame (a
-// truncated MJPEG, a buffer the driver flags as bad) is skipped, three in a row are a
-// device error.
+// Every picture is a frame whose exposure began after capture() was called: frames the
+// driver buffered in between (while the table turned, the lights switched or the
+// exposure changed) are given back unread and the frame in flight is dropped; a sensor
+// that applies a new exposure a frame late is covered by the station's flush_frames.
+// A corrupt frame (a truncated MJPEG, a buffer the driver flags as bad) is skipped;
+// three in a row are a device error.
 
 #include <cstdint>
 #include <memory>
@@ -67,9 +69,6 @@ class V4l2Camera : public capture::Camera {
   int stride_ = 0;
   std::vector<Buffer> buffers_;
   bool streaming_ = false;
-  bool drain_ = false;  // the exposure changed while streaming: frames in the queue are stale
-  int settle_ = 2;
-  int frames_to_drop_ = 0;
   double exposure_s_ = 0;
   capture::CameraInfo info_;
 };

@@ -1,5 +1,6 @@
 // devices/v4l2_camera against a scripted V4L2 driver (there is no camera in CI): format
-// negotiation, mmap streaming, dropped frames after an exposure change, corrupt frames,
+// negotiation, mmap streaming, no picture from a frame buffered before the request,
+// corrupt frames,
 // timeouts, and the clean-up on destruction. The driver follows the V4L2 API as the
 // kernel documents it (VIDIOC_* ioctls, EAGAIN on a non-blocking DQBUF with nothing
 // ready, S_FMT adjusting an unsupported pixel format to one it has).
@@ -213,7 +214,7 @@ TEST(DevicesV4l2Camera, AskedSizeAndFormat) {
 TEST(DevicesV4l2Camera, Y16IsSixteenBitGrey) {
   auto d = std::make_shared<Driver>();
   d->formats = {capture::fourcc_grey, capture::fourcc_y16};
-  auto cam = open(d, ",fourcc=Y16,settle=0");
+  auto cam = open(d, ",fourcc=Y16");
   EXPECT_EQ(cam->info().bits, 16);
   EXPECT_EQ(cam->info().channels, 1);
   std::string frame;
@@ -264,33 +265,33 @@ TEST(DevicesV4l2Camera, NodesThatAreNotStreamingCaptureDevices) {
 TEST(DevicesV4l2Camera, YuyvFramesWithPaddedRows) {
   auto d = std::make_shared<Driver>();
   d->padding = 6;
-  auto cam = open(d, ",fourcc=YUYV,width=4,height=2,settle=0");
+  auto cam = open(d, ",fourcc=YUYV,width=4,height=2");
   d->frames.push_back({yuyv(*d, 235)});
   const Image img = cam->capture();
   ASSERT_EQ(img.pixels.type(), CV_8UC3);
   EXPECT_EQ(img.pixels.at<cv::Vec3b>(1, 3), cv::Vec3b(255, 255, 255));
 }
 
-TEST(DevicesV4l2Camera, FirstFramesAfterStreamOnAreDropped) {
+TEST(DevicesV4l2Camera, TheFirstPictureIsTheFirstFrameAfterStreamOn) {
   auto d = std::make_shared<Driver>();
-  auto cam = open(d, ",fourcc=YUYV,width=4,height=2");  // settle=2 by default
-  for (const int y : {16, 16, 126}) d->frames.push_back({yuyv(*d, y), false});
+  auto cam = open(d, ",fourcc=YUYV,width=4,height=2");
+  EXPECT_FALSE(d->streaming);  // streaming starts with the first picture
+  for (const int y : {126, 16}) d->frames.push_back({yuyv(*d, y), false});
   EXPECT_EQ(grey_of(cam->capture()), 128);  // 255/219 * 110 = 128.08
-  EXPECT_TRUE(d->frames.empty());
+  EXPECT_EQ(d->frames.size(), 1u);
 }
 
-TEST(DevicesV4l2Camera, FramesExposedBeforeAnExposureChangeAreNeverReturned) {
+TEST(DevicesV4l2Camera, FramesBufferedBeforeTheRequestAreNeverReturned) {
   auto d = std::make_shared<Driver>();
-  auto cam = open(d, ",fourcc=YUYV,width=4,height=2,settle=1");
-  d->frames.push_back({yuyv(*d, 16), false});   // dropped: settle
-  d->frames.push_back({yuyv(*d, 235), false});  // first picture
+  auto cam = open(d, ",fourcc=YUYV,width=4,height=2");
+  d->frames.push_back({yuyv(*d, 235), false});
   EXPECT_EQ(grey_of(cam->capture()), 255);
-  // Two frames exposed with the old setting are waiting in the queue...
-  d->frames.push_back({yuyv(*d, 235), true});
-  d->frames.push_back({yuyv(*d, 235), true});
+  // While the table turned, the driver filled two buffers...
+  d->frames.push_back({yuyv(*d, 16), true});
+  d->frames.push_back({yuyv(*d, 16), true});
   cam->set_exposure(0.0125);
   EXPECT_EQ(d->controls[V4L2_CID_EXPOSURE_ABSOLUTE], 125);  // units of 100 us
-  // ...then the one in the sensor when the control arrived (settle=1), then the new one.
+  // ...and a third was being exposed when the picture was asked for.
   d->frames.push_back({yuyv(*d, 16), false});
   d->frames.push_back({yuyv(*d, 126), false});
   EXPECT_EQ(grey_of(cam->capture()), 128);
@@ -307,7 +308,7 @@ std::string jpeg_frame(int width, int height, int level) {
 
 TEST(DevicesV4l2Camera, CorruptFramesAreSkippedThenReported) {
   auto d = std::make_shared<Driver>();
-  auto cam = open(d, ",fourcc=MJPG,width=16,height=16,settle=0");
+  auto cam = open(d, ",fourcc=MJPG,width=16,height=16");
   const std::string good = jpeg_frame(16, 16, 200);
   d->frames.push_back({good.substr(0, good.size() / 2)});  // truncated in transfer
   d->frames.push_back({good, true, V4L2_BUF_FLAG_ERROR});  // flagged by the driver
@@ -315,7 +316,8 @@ TEST(DevicesV4l2Camera, CorruptFramesAreSkippedThenReported) {
   const Image img = cam->capture();
   EXPECT_NEAR(img.pixels.at<cv::Vec3b>(8, 8)[0], 200, 2);
 
-  for (int i = 0; i < 3; ++i) d->frames.push_back({good.substr(0, 100)});
+  d->frames.push_back({good, false});  // in flight when asked: dropped
+  for (int i = 0; i < 3; ++i) d->frames.push_back({good.substr(0, 100), false});
   const Error e = error_of([&] { cam->capture(); });
   EXPECT_EQ(e.status(), Status::device_error);
   const std::string m = e.what();
@@ -327,7 +329,7 @@ TEST(DevicesV4l2Camera, CorruptFramesAreSkippedThenReported) {
 
 TEST(DevicesV4l2Camera, NoFrameIsATimeout) {
   auto d = std::make_shared<Driver>();
-  auto cam = open(d, ",fourcc=YUYV,settle=0");
+  auto cam = open(d, ",fourcc=YUYV");
   const Error e = error_of([&] { cam->capture(); });
   EXPECT_EQ(e.status(), Status::timeout);
   EXPECT_STREQ(e.what(), "v4l2 camera: /dev/video7 did not deliver a frame in 5 s");
@@ -346,7 +348,7 @@ TEST(DevicesV4l2Camera, ExposureErrors) {
 TEST(DevicesV4l2Camera, DestructionStopsStreamingAndFreesTheBuffers) {
   auto d = std::make_shared<Driver>();
   {
-    auto cam = open(d, ",fourcc=YUYV,settle=0");
+    auto cam = open(d, ",fourcc=YUYV");
     d->frames.push_back({yuyv(*d, 100)});
     cam->capture();
     EXPECT_TRUE(d->streaming);
