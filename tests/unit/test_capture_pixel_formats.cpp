@@ -1,12 +1,16 @@
 // lib/capture/pixel_formats: V4L2 frames -> Image. The expected colours come from the
 // BT.601 equations (Kr = 0.299, Kb = 0.114, limited range 16-235 / 16-240) evaluated
-// here in double precision, and from the published 8-bit YCbCr values of the 100 %
-// and 75 % colour bars (ITU-R BT.601 / SMPTE EG 1).
+// here in double precision, from the published 8-bit YCbCr values of the 100 % and 75 %
+// colour bars (ITU-R BT.601 / SMPTE EG 1), and from an independent implementation:
+// OpenCV's cvtColor(COLOR_YUV2RGB_YUYV), which uses the same equations in 20-bit fixed
+// point.
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "capture/pixel_formats.hpp"
 #include "core/error.hpp"
@@ -105,6 +109,26 @@ TEST(CapturePixelFormats, YuyvPairsShareTheirChromaAndRowsHonourTheStride) {
   EXPECT_NEAR(px(1, 0)[2], 255, 1);
   EXPECT_NEAR(px(1, 1)[0], 0, 1);
   EXPECT_EQ(px(1, 2), cv::Vec3b(128, 128, 128));
+}
+
+TEST(CapturePixelFormats, YuyvAgreesWithOpenCvWithinOneLevel) {
+  const int w = 256, h = 64;
+  // Legal studio-range samples: OpenCV clamps Y - 16 at 0 before scaling, the equation
+  // does not (footroom below Y = 16 with strong chroma differs; both clamp the result).
+  cv::Mat luma(h, w, CV_8UC1), chroma(h, w, CV_8UC1), yuyv;
+  cv::RNG rng(21);
+  rng.fill(luma, cv::RNG::UNIFORM, 16, 236);
+  rng.fill(chroma, cv::RNG::UNIFORM, 16, 241);
+  cv::merge(std::vector<cv::Mat>{luma, chroma}, yuyv);
+  cv::Mat anchor;
+  cv::cvtColor(yuyv, anchor, cv::COLOR_YUV2RGB_YUYV);
+  const Image ours = unpack_raw_frame(
+      {fourcc_yuyv, w, h, int(yuyv.step), std::string_view(reinterpret_cast<const char*>(yuyv.data), yuyv.total() * 2)});
+  ASSERT_EQ(ours.pixels.type(), anchor.type());
+  EXPECT_LE(cv::norm(ours.pixels, anchor, cv::NORM_INF), 1.0);
+  cv::Mat diff;
+  cv::absdiff(ours.pixels, anchor, diff);
+  EXPECT_LT(cv::countNonZero(diff.reshape(1)), int(diff.total() * 3) / 20) << "more than 5 % off by one";
 }
 
 TEST(CapturePixelFormats, GreyRgbAndY16) {
