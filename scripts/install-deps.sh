@@ -37,6 +37,7 @@ BUILD_PKGS=(
   libode-dev            # ODE 0.16.2  pkg-config ode (lmfsim benchmark anchor only)
   libssl-dev            # OpenSSL 3.0 find_package(OpenSSL) -> OpenSSL::Crypto (SHA-256 of capture files)
   libnifti2-dev         # nifti_clib 3.0.1  find_package(NIFTI) -> NIFTI::niftiio (NIfTI-1/-2, Analyze headers)
+  linux-libc-dev        # linux/videodev2.h: capture's V4L2 cameras, driven directly (not via OpenCV videoio: start-up, issue 21)
 )
 TEST_TOOL_PKGS=(
   umockdev libumockdev-dev   # USB (usbdevfs) and GPIO emulation without hardware
