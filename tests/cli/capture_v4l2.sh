@@ -46,6 +46,8 @@ check "1 ms: Y 26 -> 12" same "$WORK/yuyv/a000/L0/e00.png" "$WORK/g12.ppm"
 check "4 ms: Y 56 -> 47" same "$WORK/yuyv/a000/L0/e01.png" "$WORK/g47.ppm"
 check "second view, 1 ms" same "$WORK/yuyv/a001/L0/e00.png" "$WORK/g12.ppm"
 check "second view, 4 ms" same "$WORK/yuyv/a001/L0/e01.png" "$WORK/g47.ppm"
+check "the size comes from the negotiated format: exposure set before streaming starts" \
+  test "$(head -3 "$LOG" | tr '\n' ' ')" = "reqbufs 4 exposure 10 streamon 0 "
 check "exposures set in units of 100 us" test "$(grep exposure "$LOG" | cut -d' ' -f2 | tr '\n' ' ')" = "10 40 10 40 "
 check "streaming stopped and buffers freed at the end" test "$(tail -2 "$LOG" | tr '\n' ' ')" = "streamoff 0 reqbufs 0 "
 

@@ -80,8 +80,11 @@ Devices open_devices(const LoadedStation& loaded) {
     std::unique_ptr<capture::Camera> camera;
     if (camera_uri.scheme == "exec") camera = std::make_unique<devices::ExecCamera>(camera_uri.path);
     else camera = std::make_unique<devices::V4l2Camera>(st.camera.uri);
-    // The size is known once a picture was taken; without intrinsics, take one.
+    // Without intrinsics the default ones need the size: a V4L2 camera knows it from the
+    // format it negotiated; an exec: camera once a picture was taken, so take one.
+    const capture::CameraInfo info = camera->info();
     if (st.camera.intrinsics) d.intrinsics = *st.camera.intrinsics;
+    else if (info.width > 0 && info.height > 0) d.intrinsics = capture::default_intrinsics(info.width, info.height);
     else {
       const Image first = camera->capture();
       d.intrinsics = capture::default_intrinsics(first.pixels.cols, first.pixels.rows);
