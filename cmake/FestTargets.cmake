@@ -24,6 +24,22 @@ function(fest_library name)
   target_compile_options(${name} PRIVATE ${FEST_WARNINGS})
 endfunction()
 
+# fest_plugin(NAME SOURCES ...) -- a module opened with dlopen (formats/plugin_loader.hpp),
+# beside the executables in the build tree and in <libdir>/fest when installed. Only its
+# entry point is exported, and its own symbols bind inside it (-Bsymbolic), so the code it
+# shares with the host (fest_core, header parsers) cannot be interposed either way.
+include(GNUInstallDirs)
+function(fest_plugin name)
+  cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
+  add_library(${name} MODULE ${ARG_SOURCES})
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
+  target_compile_options(${name} PRIVATE ${FEST_WARNINGS})
+  target_link_options(${name} PRIVATE LINKER:--no-undefined LINKER:-Bsymbolic)
+  set_target_properties(${name} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/bin
+                        CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  install(TARGETS ${name} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/fest)
+endfunction()
+
 # fest_tool(NAME SOURCES ...) -- an executable in bin/ with fest's warnings.
 function(fest_tool name)
   cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})

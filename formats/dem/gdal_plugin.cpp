@@ -40,7 +40,6 @@ int fail(int code, char* message, std::size_t size, const char* text) {
 
 }  // namespace
 
-extern "C" int fest_gdal_plugin_abi(void) { return FEST_GDAL_PLUGIN_ABI; }
 
 extern "C" int fest_gdal_open_raster(const char* path, const void* bytes, size_t size, size_t max_values,
                                      FestGdalRaster* out, char* message, size_t message_size) {
@@ -96,4 +95,9 @@ extern "C" void fest_gdal_free_raster(FestGdalRaster* raster) {
   std::free(raster->crs);
   raster->values = nullptr;
   raster->crs = nullptr;
+}
+
+extern "C" __attribute__((visibility("default"))) const FestGdalPluginTable* fest_gdal_plugin_table(void) {
+  static const FestGdalPluginTable table{FEST_GDAL_PLUGIN_ABI, &fest_gdal_open_raster, &fest_gdal_free_raster};
+  return &table;
 }

@@ -44,7 +44,14 @@ enum {
 int fest_gdal_open_raster(const char* path, const void* bytes, size_t size, size_t max_values,
                           FestGdalRaster* out, char* message, size_t message_size);
 void fest_gdal_free_raster(FestGdalRaster* raster);
-int fest_gdal_plugin_abi(void);
+
+/* The one symbol the loader looks up (formats/plugin_loader.hpp). */
+typedef struct FestGdalPluginTable {
+  int abi; /* FEST_GDAL_PLUGIN_ABI of the plugin's build */
+  int (*open_raster)(const char*, const void*, size_t, size_t, FestGdalRaster*, char*, size_t);
+  void (*free_raster)(FestGdalRaster*);
+} FestGdalPluginTable;
+const FestGdalPluginTable* fest_gdal_plugin_table(void);
 
 #ifdef __cplusplus
 }

@@ -12,9 +12,8 @@ struct GdalPlugin {
 };
 
 // The plugin's entry points. Throws Status::io (exit 4) when the plugin or GDAL itself
-// cannot be loaded, naming the Debian package to install. The plugin is looked for in
-// $FEST_PLUGIN_DIR when set, else beside the executable (build tree), else in the
-// installed plugin folder (FEST_PLUGIN_RELDIR relative to the executable).
+// cannot be loaded, naming the Debian package to install (formats/plugin_loader.hpp
+// says where the plugin is looked for).
 const GdalPlugin& gdal_plugin();
 
 // RAII for a raster the plugin fills; made from the loaded plugin, so that the

@@ -150,9 +150,9 @@ std::string encode_exr(const cv::Mat& pixels, bool half) {
 
 #include "formats/image/exr_extras.hpp"
 
-namespace fest::formats {
+namespace fest::formats::image_detail {
 
-std::string write_exr_with_extras(const cv::Mat& rgb, const ExrExtras& extras, bool half) {
+std::string exr_write_with_extras(const cv::Mat& rgb, const ExrExtras& extras, bool half) {
   if (rgb.type() != CV_32FC3) throw bad_input("EXR writer: extras need a float RGB image");
   std::vector<std::pair<std::string, cv::Mat>> planes;
   {
@@ -165,7 +165,7 @@ std::string write_exr_with_extras(const cv::Mat& rgb, const ExrExtras& extras, b
       throw bad_input("EXR writer: channel '{}' must be one float plane of the image's size", name);
     planes.emplace_back(name, m.isContinuous() ? m : m.clone());
   }
-  image_detail::MemoryOutput stream;
+  MemoryOutput stream;
   try {
     Imf::Header header(rgb.cols, rgb.rows);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -197,10 +197,10 @@ std::string write_exr_with_extras(const cv::Mat& rgb, const ExrExtras& extras, b
   return stream.take();
 }
 
-cv::Mat read_exr_channel(std::string_view bytes, const std::string& name) {
-  image_detail::read_exr_layout(bytes);  // the same sanity checks as read_image
+cv::Mat exr_read_channel(std::string_view bytes, const std::string& name) {
+  read_exr_layout(bytes);  // the same sanity checks as read_image
   try {
-    image_detail::MemoryInput stream(bytes);
+    MemoryInput stream(bytes);
     Imf::InputFile file(stream);
     if (!file.header().channels().findChannel(name)) throw bad_input("EXR data: no channel '{}'", name);
     const Imath::Box2i window = file.header().dataWindow();
@@ -218,12 +218,12 @@ cv::Mat read_exr_channel(std::string_view bytes, const std::string& name) {
   }
 }
 
-ExrExtras read_exr_attributes(std::string_view bytes) {
-  image_detail::read_exr_layout(bytes);
+ExrExtras exr_read_attributes(std::string_view bytes) {
+  read_exr_layout(bytes);
   ExrExtras out;
   out.srgb_chromaticities = false;
   try {
-    image_detail::MemoryInput stream(bytes);
+    MemoryInput stream(bytes);
     Imf::InputFile file(stream);
     for (auto it = file.header().begin(); it != file.header().end(); ++it) {
       if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) out.strings[it.name()] = s->value();
@@ -238,4 +238,4 @@ ExrExtras read_exr_attributes(std::string_view bytes) {
   return out;
 }
 
-}  // namespace fest::formats
+}  // namespace fest::formats::image_detail

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "formats/image/exr_extras.hpp"
 #include "formats/image/image_headers.hpp"
 
 namespace fest::formats::image_detail {
@@ -20,7 +21,9 @@ std::string encode_png(const cv::Mat& pixels, int level, int strategy);
 cv::Mat decode_jpeg(std::string_view bytes);
 std::string encode_jpeg(const cv::Mat& pixels, int quality);
 
-// TIFF through libtiff (tiff_codec.cpp): `expected` is the checked header.
+// TIFF through libtiff (tiff_codec.cpp), compiled into libfest_tiff_plugin.so: callers in
+// the host reach it through tiff_codec() (codec_plugins.hpp). `expected` is the checked
+// header.
 cv::Mat decode_tiff(std::string_view bytes, const ImageHeader& expected);
 std::string encode_tiff(const cv::Mat& pixels);  // LZW for integers, uncompressed float
 
@@ -39,8 +42,13 @@ std::string encode_png_grey_alpha(const cv::Mat& pixels);
 // (Z_HUFFMAN_ONLY for noisy raw data).
 std::string encode_png_unfiltered(const cv::Mat& pixels, int level, int strategy);
 
-// EXR through OpenEXR on in-memory streams.
+// EXR through OpenEXR on in-memory streams (exr_codec.cpp), compiled into
+// libfest_exr_plugin.so: callers in the host reach it through exr_codec()
+// (codec_plugins.hpp), and the exr_extras.hpp calls through the last three.
 cv::Mat decode_exr(std::string_view bytes);
 std::string encode_exr(const cv::Mat& pixels, bool half);
+std::string exr_write_with_extras(const cv::Mat& rgb, const ExrExtras& extras, bool half);
+cv::Mat exr_read_channel(std::string_view bytes, const std::string& name);
+ExrExtras exr_read_attributes(std::string_view bytes);
 
 }  // namespace fest::formats::image_detail

@@ -7,6 +7,7 @@
 #include <zlib.h>
 
 #include "core/error.hpp"
+#include "formats/image/codec_plugins.hpp"
 #include "formats/image/image_codecs.hpp"
 #include "formats/image/image_headers.hpp"
 
@@ -77,7 +78,7 @@ Image read_image(std::string_view bytes, Format format) {
   }
   if (format == Format::exr) {
     if (bytes.empty()) throw bad_input("EXR header: the input is empty");
-    image.pixels = decode_exr(bytes);
+    image.pixels = exr_codec().decode(bytes);
     image.color_space = ColorSpace::linear;
     return image;
   }
@@ -86,7 +87,7 @@ Image read_image(std::string_view bytes, Format format) {
   switch (format) {
     case Format::png: image.pixels = decode_png(bytes); break;
     case Format::jpeg: image.pixels = decode_jpeg(bytes); break;
-    case Format::tiff: image.pixels = decode_tiff(bytes, header); break;
+    case Format::tiff: image.pixels = tiff_codec().decode(bytes, header); break;
     default: throw bad_input("{} is not an image format", what);
   }
   const cv::Mat& decoded = image.pixels;
@@ -133,10 +134,10 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
       return encode_pfm(m);
     case Format::exr:
       if (integer) refuse(m, format, "EXR is written as half or float; convert explicitly");
-      return encode_exr(m, options.exr_half);
+      return exr_codec().encode(m, options.exr_half);
     case Format::tiff:
       if (channels == 2) refuse(m, format, "fest's TIFF writer takes 1, 3 or 4 channels");
-      return encode_tiff(m);
+      return tiff_codec().encode(m);
     case Format::jpeg:
       // Lossy compression has no place in a measurement pipeline (specs/capture.md §2.5);
       // only a caller that asks for a quality gets it (texture tiles for display).
