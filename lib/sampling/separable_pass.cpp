@@ -1,5 +1,7 @@
 #include "sampling/separable_pass.hpp"
 
+#include "sampling/separable_kernels.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <functional>
@@ -26,6 +28,12 @@ void for_row_blocks(int rows, int threads, const std::function<void(int, int)>& 
   }
   for (auto& th : pool) th.join();
 }
+
+}  // namespace
+
+namespace pass_detail {
+
+namespace {
 
 // Four floats as one SSE/NEON register (GCC/Clang vector extension): element-wise
 // arithmetic, so per channel exactly the scalar operations.
@@ -108,6 +116,13 @@ void filter_four_rows(const float* const* src, float* const* dst, const WeightTa
   }
 }
 
+}  // namespace
+
+void filter_four_rows_any(const float* const* src, float* const* dst, const WeightTable& t, int c) {
+  if (c == 3) return filter_four_rows<3>(src, dst, t);
+  return filter_four_rows<4>(src, dst, t);
+}
+
 void filter_row_any(const float* src, float* dst, const WeightTable& t, int c) {
   switch (c) {
     case 1: return filter_row<1>(src, dst, t, c);
@@ -148,6 +163,8 @@ template <typename V>
   }
 }
 
+namespace {
+
 #if defined(__x86_64__) && defined(__GNUC__)
 // The optional AVX2 path of spec §7: 8-lane vectors where the CPU has them.
 __attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const float* const* src, const float* w,
@@ -157,6 +174,8 @@ __attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const floa
 const bool has_avx2 = __builtin_cpu_supports("avx2");
 #endif
 
+}  // namespace
+
 void accumulate_rows(float* dst, const float* const* src, const float* w, std::size_t taps, std::size_t begin,
                      std::size_t end) {
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -165,7 +184,9 @@ void accumulate_rows(float* dst, const float* const* src, const float* w, std::s
   accumulate_rows_with<Lanes4>(dst, src, w, taps, begin, end);
 }
 
-}  // namespace
+}  // namespace pass_detail
+
+using namespace pass_detail;
 
 FloatImage resample_rows(const FloatImage& in, const WeightTable& table, int threads) {
   FloatImage out(table.n_out, in.height, in.channels);
