@@ -218,65 +218,6 @@ FloatImage resample_rows_decoded(const cv::Mat& in, const Encoding& enc, const W
   return out;
 }
 
-FloatImage resample_columns_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads) {
-  const int c = in.channels();
-  FloatImage out(in.cols, table.n_out, c);
-  const std::size_t row_len = static_cast<std::size_t>(in.cols) * static_cast<std::size_t>(c);
-  for_row_blocks(table.n_out, threads, [&](int begin, int end) {
-    // Decoded input rows kept while output rows still read them: the taps of successive
-    // outputs move forward, so a row is decoded once per block.
-    struct Slot {
-      int row = -1;
-      std::vector<float> values;
-    };
-    std::vector<Slot> slots;
-    std::vector<const float*> sources;
-    auto decoded = [&](int row) -> const float* {
-      Slot* free_slot = nullptr;
-      for (auto& s : slots) {
-        if (s.row == row) return s.values.data();
-        if (!free_slot && s.row < 0) free_slot = &s;
-      }
-      if (!free_slot) {
-        slots.push_back({-1, std::vector<float>(row_len)});
-        free_slot = &slots.back();
-      }
-      free_slot->row = row;
-      decode_row(in, row, enc, free_slot->values.data());
-      return free_slot->values.data();
-    };
-    // Groups of output rows, each swept in column strips: a strip of the group's input
-    // rows (~75 rows x 4 KiB for R1) stays in L2 while all the group's outputs read it,
-    // instead of every output streaming its ~35 full rows (2 MiB) from L3.
-    constexpr int group = 8;
-    constexpr std::size_t strip = 1024;
-    std::vector<std::size_t> starts;
-    for (int g = begin; g < end; g += group) {
-      const int g_end = std::min(end, g + group);
-      int lo = in.rows;
-      for (std::size_t j = table.offset[static_cast<std::size_t>(g)]; j < table.offset[static_cast<std::size_t>(g_end)]; ++j)
-        lo = std::min(lo, table.index[j]);
-      for (auto& s : slots)
-        if (s.row < lo) s.row = -1;  // no later output reads rows above this group's first
-      sources.clear();
-      starts.clear();
-      for (int o = g; o < g_end; ++o) {
-        starts.push_back(sources.size());
-        for (std::size_t j = table.offset[static_cast<std::size_t>(o)]; j < table.offset[static_cast<std::size_t>(o) + 1]; ++j)
-          sources.push_back(decoded(table.index[j]));
-      }
-      for (std::size_t i0 = 0; i0 < row_len; i0 += strip)
-        for (int o = g; o < g_end; ++o) {
-          const std::size_t first = table.offset[static_cast<std::size_t>(o)];
-          const std::size_t taps = table.offset[static_cast<std::size_t>(o) + 1] - first;
-          accumulate_rows(out.row(o), sources.data() + starts[static_cast<std::size_t>(o - g)], table.weight.data() + first,
-                          taps, i0, std::min(row_len, i0 + strip));
-        }
-    }
-  });
-  return out;
-}
-
 FloatImage resample_columns(const FloatImage& in, const WeightTable& table, int threads) {
   FloatImage out(in.width, table.n_out, in.channels);
   const std::size_t row_len = static_cast<std::size_t>(in.width) * static_cast<std::size_t>(in.channels);
