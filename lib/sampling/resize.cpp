@@ -186,7 +186,7 @@ Image resize(const StoredRows& in, ColorSpace color_space, int width, int height
                         clamp_range && float_in ? &range : nullptr);
     if (streamed) {
       out = std::move(*streamed);
-    } else {  // wrap edges: the y taps jump back, so the whole image takes rows then columns
+    } else {  // wrap edges: the last outputs' taps jump back, so the whole image takes both passes
       const Image img = whole();
       out = resample_columns(resample_rows_decoded(img.pixels, decode, tx, threads), ty, threads);
       if (clamp_range && float_in) range = input_range(to_working(img, decode));

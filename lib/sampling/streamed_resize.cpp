@@ -78,7 +78,7 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
   const int c = CV_MAT_CN(in.type());
   const std::vector<Span> spans = group_spans(ty);
   // The ring drops the rows above a group's first row: that needs first rows that never
-  // move back (true of clamp, zero and reflect edges, not of wrap).
+  // move back (true of clamp, zero and reflect edges; wrap edges move back at the end).
   int max_span = 1;
   for (std::size_t g = 0, last_lo = 0; g < spans.size(); ++g) {
     if (spans[g].empty()) continue;

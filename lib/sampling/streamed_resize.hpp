@@ -28,8 +28,9 @@ struct ChannelRange {
 };
 
 // The resize of `in` (decoded as `enc` says) through both tables, or nullopt when the
-// y table's taps do not move forward with the output (wrap edges): then a ring cannot
-// drop rows, and the caller takes the whole-image passes. `range`, when given, receives
+// first input row a group of outputs reads moves back (wrap edges, where the last
+// outputs read the first rows again): the ring has dropped those rows, and the caller
+// takes the whole-image passes. `range`, when given, receives
 // the decoded input's per-channel min and max.
 std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& enc, const StreamedPasses& passes,
                                           int threads, ChannelRange* range = nullptr);
