@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -39,6 +40,31 @@ std::size_t read_at(int fd, void* dst, std::size_t n, std::uint64_t offset, cons
     }
     if (got == 0) break;
     done += static_cast<std::size_t>(got);
+  }
+  return done;
+}
+
+constexpr std::size_t max_parts = 512;  // below every system's IOV_MAX (1024 on Linux)
+
+// preadv until the parts are full or the file ends; returns the count read. `parts` is
+// consumed.
+std::size_t read_scattered(int fd, std::vector<iovec>& parts, std::uint64_t offset, const std::string& path) {
+  std::size_t done = 0, at = 0;
+  while (at < parts.size()) {
+    const ssize_t got = ::preadv(fd, parts.data() + at, static_cast<int>(parts.size() - at), static_cast<off_t>(offset + done));
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw io_error("cannot read: {} ({})", std::strerror(errno), path);
+    }
+    if (got == 0) break;
+    done += static_cast<std::size_t>(got);
+    for (std::size_t left = static_cast<std::size_t>(got); left > 0 && at < parts.size();) {
+      const std::size_t take = std::min(left, parts[at].iov_len);
+      parts[at].iov_base = static_cast<char*>(parts[at].iov_base) + take;
+      parts[at].iov_len -= take;
+      left -= take;
+      if (parts[at].iov_len == 0) ++at;
+    }
   }
   return done;
 }
@@ -100,17 +126,15 @@ void NetpbmRowFile::read_rows(int first, int last, void* dst) const {
   if (!pfm_) {  // rows top to bottom: one read
     if (read_at(fd_, out, n * row, data_offset_ + static_cast<std::uint64_t>(first) * row, path_) != n * row)
       throw io_error("cannot read: the file ended early, it changed while being read ({})", path_);
-  } else {  // PFM stores the bottom row first: rows [first, last) are file rows in reverse
+  } else {  // PFM stores the bottom row first: one scattered read puts each file row in place
     const std::uint64_t file_first = static_cast<std::uint64_t>(header_.height - last);
-    if (read_at(fd_, out, n * row, data_offset_ + file_first * row, path_) != n * row)
-      throw io_error("cannot read: the file ended early, it changed while being read ({})", path_);
-    std::vector<char> tmp(row);
-    for (std::size_t i = 0; i < n / 2; ++i) {  // reverse the band's rows in place
-      char* a = out + i * row;
-      char* b = out + (n - 1 - i) * row;
-      std::memcpy(tmp.data(), a, row);
-      std::memcpy(a, b, row);
-      std::memcpy(b, tmp.data(), row);
+    std::vector<iovec> parts;
+    for (std::size_t i = 0; i < n; i += max_parts) {
+      const std::size_t k = std::min(max_parts, n - i);  // file rows file_first + i ... + i + k
+      parts.resize(k);
+      for (std::size_t j = 0; j < k; ++j) parts[j] = {out + (n - 1 - i - j) * row, row};
+      if (read_scattered(fd_, parts, data_offset_ + (file_first + i) * row, path_) != k * row)
+        throw io_error("cannot read: the file ended early, it changed while being read ({})", path_);
     }
   }
   if (!swap_) return;

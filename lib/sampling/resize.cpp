@@ -156,11 +156,12 @@ Image resize(const StoredRows& in, ColorSpace color_space, int width, int height
   FloatImage out;
   const bool streaming = !options.hicomp && options.clamp != ClampMode::local && options.kernel.reconstruction.empty() &&
                          options.kernel.name != "sinc" && !options.kernel_y;
-  std::vector<std::uint8_t> whole_scratch;
   // The whole stored image, for the paths that need it (read only when they run).
   auto whole = [&] {
     Image img;
-    img.pixels = in.rows(0, in.height(), whole_scratch);
+    cv::Mat owner(in.height(), in.width(), type);
+    const cv::Mat view = in.rows(0, in.height(), owner.data);
+    img.pixels = view.data == owner.data ? owner : view;
     img.color_space = color_space;
     return img;
   };

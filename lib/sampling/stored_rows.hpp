@@ -18,10 +18,10 @@ class StoredRows {
   virtual int type() const = 0;  // CV_8UC(c), CV_16UC(c) or CV_32FC(c), native byte order
 
   // Rows [first, last) of the image (top to bottom) as a (last - first) x width matrix:
-  // a view of memory the source owns, or of `scratch`, which the source may resize and
-  // fill. Called from several threads at once, each with its own scratch. Errors in the
-  // stored data (a sample above a Netpbm maxval, a read failure) throw fest::Error.
-  virtual cv::Mat rows(int first, int last, std::vector<std::uint8_t>& scratch) const = 0;
+  // a view of memory the source owns, or of `buffer` (room for the rows, packed, aligned
+  // for the samples), which the source fills. Called from several threads at once, each
+  // with its own buffer. A read failure throws fest::Error.
+  virtual cv::Mat rows(int first, int last, void* buffer) const = 0;
 };
 
 // An image already in memory: rows() returns views, nothing is copied.
@@ -31,7 +31,7 @@ class MatRows final : public StoredRows {
   int width() const override { return m_.cols; }
   int height() const override { return m_.rows; }
   int type() const override { return m_.type(); }
-  cv::Mat rows(int first, int last, std::vector<std::uint8_t>&) const override { return m_.rowRange(first, last); }
+  cv::Mat rows(int first, int last, void*) const override { return m_.rowRange(first, last); }
 
  private:
   const cv::Mat& m_;

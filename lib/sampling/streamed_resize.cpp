@@ -92,6 +92,10 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
   const std::size_t in_len = static_cast<std::size_t>(in.width()) * static_cast<std::size_t>(c);
   const std::size_t stage_len = passes.columns_first ? in_len : static_cast<std::size_t>(tx.n_out) * static_cast<std::size_t>(c);
 
+  // Float samples that decode to themselves (no sRGB, no alpha to premultiply) need no
+  // decoding: when columns go first they are read into the ring as they are.
+  const bool direct = passes.columns_first && CV_MAT_DEPTH(in.type()) == CV_32F && !enc.decode_srgb &&
+                      !(enc.premultiply && alpha_channel(c) >= 0);
   FloatImage out(tx.n_out, ty.n_out, c);
   const int groups = static_cast<int>(spans.size());
   const int jobs = std::max(1, std::min(threads, groups));
@@ -107,7 +111,7 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
     int needed = 0;  // rows this job reads stop here
     for (int g = g_begin; g < g_end; ++g) needed = std::max(needed, spans[static_cast<std::size_t>(g)].hi);
     Ring ring(capacity, stage_len);
-    std::vector<std::uint8_t> scratch;
+    std::vector<float> scratch;  // a band of stored rows (floats: aligned for any sample)
     std::vector<float> decoded(passes.columns_first ? 0 : in_len);
     std::vector<float> sums(passes.columns_first ? static_cast<std::size_t>(group_rows) * in_len : 0);
     std::vector<const float*> sources;
@@ -115,7 +119,19 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
     ChannelRange& job_range = ranges[job];
 
     auto fill = [&](int first, int last) {
-      const cv::Mat stored = in.rows(first, last, scratch);
+      if (direct) {  // stored floats read straight into the ring, split where it wraps
+        for (int a = first, b; a < last; a = b) {
+          b = std::min(last, a + ring.capacity() - a % ring.capacity());
+          const cv::Mat stored = in.rows(a, b, ring.slot(a));
+          for (int r = a; r < b; ++r) {
+            if (stored.data != reinterpret_cast<const std::uint8_t*>(ring.slot(a))) decode_row(stored, r - a, enc, ring.slot(r));
+            if (range) widen_range(ring.slot(r), in_len, c, job_range);
+          }
+        }
+        return;
+      }
+      scratch.resize((static_cast<std::size_t>(last - first) * stored_row_bytes + sizeof(float) - 1) / sizeof(float));
+      const cv::Mat stored = in.rows(first, last, scratch.data());
       for (int r = first; r < last; ++r) {
         float* dst = passes.columns_first ? ring.slot(r) : decoded.data();
         decode_row(stored, r - first, enc, dst);

@@ -28,16 +28,15 @@ class CountingRows final : public StoredRows {
   int width() const override { return m_.cols; }
   int height() const override { return m_.rows; }
   int type() const override { return m_.type(); }
-  cv::Mat rows(int first, int last, std::vector<std::uint8_t>& scratch) const override {
+  cv::Mat rows(int first, int last, void* buffer) const override {
     EXPECT_LE(0, first);
     EXPECT_LT(first, last);
     EXPECT_LE(last, m_.rows);
     rows_read += last - first;
     widest = std::max(widest.load(), last - first);
     const std::size_t row = m_.cols * m_.elemSize();
-    scratch.resize(static_cast<std::size_t>(last - first) * row);
-    for (int y = first; y < last; ++y) std::memcpy(scratch.data() + (y - first) * row, m_.ptr(y), row);
-    return cv::Mat(last - first, m_.cols, m_.type(), scratch.data());
+    for (int y = first; y < last; ++y) std::memcpy(static_cast<char*>(buffer) + (y - first) * row, m_.ptr(y), row);
+    return cv::Mat(last - first, m_.cols, m_.type(), buffer);
   }
   mutable std::atomic<long> rows_read{0};
   mutable std::atomic<int> widest{0};

@@ -8,10 +8,9 @@ std::unique_ptr<StreamedInput> StreamedInput::open(const std::string& path) {
   return std::unique_ptr<StreamedInput>(new StreamedInput(std::move(f)));
 }
 
-cv::Mat StreamedInput::rows(int first, int last, std::vector<std::uint8_t>& scratch) const {
-  scratch.resize(static_cast<std::size_t>(last - first) * file_->row_bytes());
-  file_->read_rows(first, last, scratch.data());
-  return cv::Mat(last - first, width(), type(), scratch.data());
+cv::Mat StreamedInput::rows(int first, int last, void* buffer) const {
+  file_->read_rows(first, last, buffer);
+  return cv::Mat(last - first, width(), type(), buffer);
 }
 
 }  // namespace resample_tool

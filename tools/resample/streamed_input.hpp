@@ -20,7 +20,7 @@ class StreamedInput final : public fest::sampling::StoredRows {
   int width() const override { return file_->header().width; }
   int height() const override { return file_->header().height; }
   int type() const override { return file_->cv_type(); }
-  cv::Mat rows(int first, int last, std::vector<std::uint8_t>& scratch) const override;
+  cv::Mat rows(int first, int last, void* buffer) const override;
   fest::ColorSpace color_space() const { return file_->color_space(); }
 
  private:
