@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/parallel_for.hpp"
+#include "sampling/grey_row_filter.hpp"
 #include "sampling/separable_kernels.hpp"
 
 namespace fest::sampling {
@@ -97,6 +98,11 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
   const bool direct = passes.columns_first && CV_MAT_DEPTH(in.type()) == CV_32F && !enc.decode_srgb &&
                       !(enc.premultiply && alpha_channel(c) >= 0);
   FloatImage out(tx.n_out, ty.n_out, c);
+  const GreyRowFilter grey(tx);  // one channel: eight outputs at a time
+  auto filter_x = [&](const float* src, float* dst) {
+    if (c == 1) return grey(src, dst);
+    filter_row_any(src, dst, tx, c);
+  };
   const int groups = static_cast<int>(spans.size());
   const int jobs = std::max(1, std::min(threads, groups));
   std::vector<ChannelRange> ranges(static_cast<std::size_t>(jobs));
@@ -136,7 +142,7 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
         float* dst = passes.columns_first ? ring.slot(r) : decoded.data();
         decode_row(stored, r - first, enc, dst);
         if (range) widen_range(dst, in_len, c, job_range);
-        if (!passes.columns_first) filter_row_any(dst, ring.slot(r), tx, c);
+        if (!passes.columns_first) filter_x(dst, ring.slot(r));
       }
     };
 
@@ -178,7 +184,7 @@ std::optional<FloatImage> resize_streamed(const StoredRows& in, const Encoding& 
           float* dst[4] = {out.row(o), out.row(o + 1), out.row(o + 2), out.row(o + 3)};
           filter_four_rows_any(src, dst, tx, c);
         }
-      for (; o < o_end; ++o) filter_row_any(sum_row(o), out.row(o), tx, c);
+      for (; o < o_end; ++o) filter_x(sum_row(o), out.row(o));
     }
   });
 
