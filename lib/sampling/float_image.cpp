@@ -1,6 +1,9 @@
 #include "sampling/float_image.hpp"
 
 #include <cmath>
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 #include <cstring>
 #include <cstdint>
 #include <type_traits>
@@ -43,6 +46,20 @@ __attribute__((target("avx2"))) void scale_bytes_avx2(const std::uint8_t* src, s
   scale_values(src, n, scale, dst);
 }
 const bool has_avx2 = __builtin_cpu_supports("avx2");
+
+// dst[i] = lut[src[i]] for whole groups of 8 codes (one gather each); returns how many
+// values it did. A table lookup either way: the values are identical.
+__attribute__((target("avx2"))) std::size_t lookup_bytes_avx2(const std::uint8_t* src, std::size_t n, const float* lut,
+                                                              float* dst) {
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    long long eight;
+    std::memcpy(&eight, src + i, sizeof eight);
+    const __m256i codes = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(eight));
+    _mm256_storeu_ps(dst + i, _mm256_i32gather_ps(lut, codes, 4));
+  }
+  return i;
+}
 #endif
 
 template <typename T>
@@ -66,7 +83,12 @@ void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, const float* l
   }
   if (a < 0) {  // sRGB codes without alpha: one lookup per value, no per-channel branches
     const std::size_t n = static_cast<std::size_t>(m.cols) * static_cast<std::size_t>(c);
-    for (std::size_t i = 0; i < n; ++i) dst[i] = lut[static_cast<std::size_t>(src[i])];
+    std::size_t i = 0;
+#if defined(__x86_64__) && defined(__GNUC__)
+    if constexpr (std::is_same_v<T, std::uint8_t>)
+      if (has_avx2) i = lookup_bytes_avx2(src, n, lut, dst);
+#endif
+    for (; i < n; ++i) dst[i] = lut[static_cast<std::size_t>(src[i])];
     return;
   }
   for (int x = 0; x < m.cols; ++x, src += c, dst += c) {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 #include "core/parallel_for.hpp"
 #include "sampling/grey_row_filter.hpp"
@@ -50,16 +51,17 @@ std::vector<Span> group_spans(const WeightTable& t) {
 // slot r mod capacity; [lo, hi) are present.
 class Ring {
  public:
+  // Left uninitialised: every row is written before it is read.
   Ring(int capacity, std::size_t row_len)
-      : capacity_(capacity), row_len_(row_len), values_(static_cast<std::size_t>(capacity) * row_len) {}
-  float* slot(int row) { return values_.data() + static_cast<std::size_t>(row % capacity_) * row_len_; }
+      : capacity_(capacity), row_len_(row_len), values_(new float[static_cast<std::size_t>(capacity) * row_len]) {}
+  float* slot(int row) { return values_.get() + static_cast<std::size_t>(row % capacity_) * row_len_; }
   int capacity() const { return capacity_; }
   int lo = 0, hi = 0;
 
  private:
   int capacity_;
   std::size_t row_len_;
-  std::vector<float> values_;
+  std::unique_ptr<float[]> values_;
 };
 
 void widen_range(const float* v, std::size_t n, int c, ChannelRange& r) {
