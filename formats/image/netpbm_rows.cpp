@@ -73,12 +73,15 @@ std::size_t read_scattered(int fd, std::vector<iovec>& parts, std::uint64_t offs
 
 std::unique_ptr<NetpbmRowFile> NetpbmRowFile::open(const std::string& path) {
   if (is_stdio(path)) return nullptr;
+  // Only regular files are opened here: opening a named pipe and closing it again would
+  // take its data from the reader that follows (or block).
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return nullptr;
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return nullptr;  // the whole-file reader gives the message
   std::unique_ptr<NetpbmRowFile> f(new NetpbmRowFile);
   f->fd_ = fd;
   f->path_ = path;
-  struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return nullptr;
   std::string head(std::min<std::uint64_t>(header_probe, static_cast<std::uint64_t>(st.st_size)), '\0');
   head.resize(read_at(fd, head.data(), head.size(), 0, path));

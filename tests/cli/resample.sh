@@ -152,6 +152,13 @@ check "16-bit PGM, reflect edges, bitwise equal" cmp "$WORK/s2.pgm" "$WORK/s3.pg
 "$R" resize --size 97x61 --filter lanczos3 --edge wrap --depth 8 --to pgm <"$WORK/s16.pgm" >"$WORK/s5.pgm"
 check "wrap edges (whole-image passes), bitwise equal" cmp "$WORK/s4.pgm" "$WORK/s5.pgm"
 
+case_ "a named pipe is read whole, with the bytes of the streamed file"
+mkfifo "$WORK/pipe.pgm"
+cat "$WORK/s16.pgm" >"$WORK/pipe.pgm" &
+"$R" resize "$WORK/pipe.pgm" --size 97x61 --filter mitchell --edge reflect -o "$WORK/s6.pgm"
+wait
+check "bitwise equal" cmp "$WORK/s2.pgm" "$WORK/s6.pgm"
+
 case_ "render is reproducible for a seed and differs for another"
 "$R" render --scene edges --size 64x64 --spp 16 --pattern jitter --seed 7 >"$WORK/e1.pfm"
 "$R" render --scene edges --size 64x64 --spp 16 --pattern jitter --seed 7 --threads 1 >"$WORK/e2.pfm"
