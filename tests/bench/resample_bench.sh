@@ -10,7 +10,8 @@
 #     16-bit PGM that every tool filters as plain values, reduced to 256² with lanczos3,
 #     mitchell and point sampling; AE/PR measured by `resample metrics` for each tool.
 # R1: 4928×3279 RGB8 PPM -> 852×567, lanczos3, end to end (min of 3 runs), resample in
-#     gamma-encoded (codes) and linear-light mode; peak RSS.
+#     gamma-encoded (codes) and linear-light mode; peak RSS and CPU seconds (user + system,
+#     the figure to compare on a shared machine).
 # R2: 8192² one-channel float PFM -> 1024², mitchell.
 set -u
 BIN=${1:-build/bin}
