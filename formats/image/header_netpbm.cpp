@@ -143,7 +143,9 @@ void read_pfm_fields(HeaderCursor& cursor, NetpbmLayout& layout) {
 
 }  // namespace
 
-NetpbmLayout read_netpbm_layout(std::string_view bytes, bool pfm) {
+NetpbmLayout read_netpbm_layout(std::string_view bytes, bool pfm) { return read_netpbm_layout(bytes, pfm, bytes.size()); }
+
+NetpbmLayout read_netpbm_layout(std::string_view bytes, bool pfm, std::uint64_t total_size) {
   const char* what = pfm ? "PFM" : "PNM";
   if (bytes.size() < 2 || bytes[0] != 'P')
     throw bad_input("{} header: missing 'P' magic at byte 0", what);
@@ -184,7 +186,7 @@ NetpbmLayout read_netpbm_layout(std::string_view bytes, bool pfm) {
   // Data size, checked before anything is allocated.
   const std::uint64_t values = std::uint64_t(layout.header.width) * std::uint64_t(layout.header.height) *
                                std::uint64_t(layout.header.channels);
-  const std::uint64_t available = bytes.size() - layout.data_offset;
+  const std::uint64_t available = total_size - layout.data_offset;
   if (layout.ascii) {
     // Each sample needs at least one digit and all but the last a separator.
     if (available < 2 * values - 1)

@@ -4,6 +4,7 @@
 // Every parser validates sizes with check_dimensions() and throws bad_input.
 
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 #include "formats/image/image_io.hpp"
@@ -29,6 +30,10 @@ struct NetpbmLayout {
 // pgm/ppm/pam (they are one family), PF/Pf for pfm. Checks the data is long enough
 // for what the header promises (exactly, for raw data) before anything is allocated.
 NetpbmLayout read_netpbm_layout(std::string_view bytes, bool pfm);
+// The same from the first bytes of a file of `total_size` bytes (netpbm_rows.cpp reads
+// the header only): the header must lie within `bytes`, the data size is checked
+// against total_size.
+NetpbmLayout read_netpbm_layout(std::string_view bytes, bool pfm, std::uint64_t total_size);
 
 }  // namespace fest::formats::image_detail
 

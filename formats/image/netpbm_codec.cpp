@@ -7,6 +7,7 @@
 // Samples are kept as stored (maxval only picks 8 or 16 bits) and must not exceed it.
 // Rows are top to bottom, samples R,G,B(,A) -- fest's in-memory order already.
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 #include <fmt/format.h>
@@ -80,6 +81,22 @@ void read_ascii(std::string_view data, const NetpbmLayout& layout, cv::Mat& out)
 template <typename Sample>
 void append_samples(std::string& out, const cv::Mat& pixels, bool ascii) {
   const std::size_t per_row = std::size_t(pixels.cols) * pixels.channels();
+  if (!ascii) {  // raw: rows copied in place (16-bit samples big-endian)
+    std::size_t at = out.size();
+    out.resize(at + per_row * sizeof(Sample) * std::size_t(pixels.rows));
+    for (int y = 0; y < pixels.rows; ++y, at += per_row * sizeof(Sample)) {
+      const Sample* row = pixels.ptr<Sample>(y);
+      if (sizeof(Sample) == 1) {
+        std::memcpy(&out[at], row, per_row);
+        continue;
+      }
+      for (std::size_t i = 0; i < per_row; ++i) {
+        out[at + 2 * i] = static_cast<char>(unsigned(row[i]) >> 8);
+        out[at + 2 * i + 1] = static_cast<char>(unsigned(row[i]) & 0xff);
+      }
+    }
+    return;
+  }
   for (int y = 0; y < pixels.rows; ++y) {
     const Sample* row = pixels.ptr<Sample>(y);
     std::size_t line = 0;

@@ -1,6 +1,10 @@
 #include "sampling/float_image.hpp"
 
 #include <cmath>
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
+#include <cstring>
 #include <cstdint>
 #include <type_traits>
 
@@ -42,6 +46,20 @@ __attribute__((target("avx2"))) void scale_bytes_avx2(const std::uint8_t* src, s
   scale_values(src, n, scale, dst);
 }
 const bool has_avx2 = __builtin_cpu_supports("avx2");
+
+// dst[i] = lut[src[i]] for whole groups of 8 codes (one gather each); returns how many
+// values it did. A table lookup either way: the values are identical.
+__attribute__((target("avx2"))) std::size_t lookup_bytes_avx2(const std::uint8_t* src, std::size_t n, const float* lut,
+                                                              float* dst) {
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    long long eight;
+    std::memcpy(&eight, src + i, sizeof eight);
+    const __m256i codes = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(eight));
+    _mm256_storeu_ps(dst + i, _mm256_i32gather_ps(lut, codes, 4));
+  }
+  return i;
+}
 #endif
 
 template <typename T>
@@ -65,7 +83,12 @@ void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, const float* l
   }
   if (a < 0) {  // sRGB codes without alpha: one lookup per value, no per-channel branches
     const std::size_t n = static_cast<std::size_t>(m.cols) * static_cast<std::size_t>(c);
-    for (std::size_t i = 0; i < n; ++i) dst[i] = lut[static_cast<std::size_t>(src[i])];
+    std::size_t i = 0;
+#if defined(__x86_64__) && defined(__GNUC__)
+    if constexpr (std::is_same_v<T, std::uint8_t>)
+      if (has_avx2) i = lookup_bytes_avx2(src, n, lut, dst);
+#endif
+    for (; i < n; ++i) dst[i] = lut[static_cast<std::size_t>(src[i])];
     return;
   }
   for (int x = 0; x < m.cols; ++x, src += c, dst += c) {
@@ -110,6 +133,17 @@ T quantise(float v, float max_code) {
   return static_cast<T>(scaled);  // truncation is floor here (scaled > 0), without a call
 }
 
+// quantise<std::uint8_t> over a row, written without branches so that it vectorises:
+// the same round half up, saturation and NaN -> 0.
+void quantise8_row(const float* src, std::size_t n, std::uint8_t* dst) {
+  for (std::size_t i = 0; i < n; ++i) {
+    float scaled = src[i] * 255.0f + 0.5f;
+    scaled = scaled > 0 ? scaled : 0.0f;
+    scaled = scaled < 255.0f ? scaled : 255.0f;
+    dst[i] = static_cast<std::uint8_t>(static_cast<int>(scaled));
+  }
+}
+
 }  // namespace
 
 void decode_row(const cv::Mat& m, int y, const Encoding& enc, float* dst) {
@@ -144,11 +178,18 @@ cv::Mat from_working(const FloatImage& img, int depth, const Encoding& enc) {
       std::uint8_t* dst = out.ptr<std::uint8_t>(y);
       if (enc.decode_srgb && a < 0)
         linear_to_srgb8_row(src, n, dst);
+      else if (!enc.decode_srgb)
+        quantise8_row(src, n, dst);
       else
         for (std::size_t i = 0; i < n; ++i)
           dst[i] = enc.decode_srgb && static_cast<int>(i % static_cast<std::size_t>(c)) != a ? linear_to_srgb8(src[i])
                                                                                             : quantise<std::uint8_t>(src[i], 255.0f);
     }
+    return out;
+  }
+  if (depth == CV_32F && !enc.decode_srgb && (a < 0 || !enc.premultiply)) {  // the values as they are
+    for (int y = 0; y < img.height; ++y)
+      std::memcpy(out.ptr<float>(y), img.row(y), static_cast<std::size_t>(img.width) * static_cast<std::size_t>(c) * sizeof(float));
     return out;
   }
   std::vector<float> px(static_cast<std::size_t>(c));

@@ -13,6 +13,7 @@
 #include "sampling/line_filters.hpp"
 #include "sampling/local_clamp.hpp"
 #include "sampling/separable_pass.hpp"
+#include "sampling/streamed_resize.hpp"
 
 namespace fest::sampling {
 
@@ -29,25 +30,32 @@ void check_size(int width, int height) {
     throw usage_error("resize: output size {}x{} exceeds 2^31 pixels", width, height);
 }
 
+// Each channel of `out` clamped to [lo, hi] of that channel.
+void clamp_to_range(const ChannelRange& r, FloatImage& out) {
+  const auto c = static_cast<std::size_t>(out.channels);
+  for (std::size_t i = 0; i < out.data.size(); ++i) out.data[i] = std::clamp(out.data[i], r.lo[i % c], r.hi[i % c]);
+}
+
+// Each channel's [min, max] over the working values of a float input.
+ChannelRange input_range(const FloatImage& in) {
+  const auto c = static_cast<std::size_t>(in.channels);
+  ChannelRange r{std::vector<float>(c, std::numeric_limits<float>::infinity()),
+                 std::vector<float>(c, -std::numeric_limits<float>::infinity())};
+  for (std::size_t i = 0; i < in.data.size(); ++i) {
+    r.lo[i % c] = std::min(r.lo[i % c], in.data[i]);
+    r.hi[i % c] = std::max(r.hi[i % c], in.data[i]);
+  }
+  return r;
+}
+
 // ClampMode::range: integer inputs clamp to their representable [0, 1]; float inputs to
 // each channel's [min, max] in the working domain.
 void clamp_to_input_range(const FloatImage& in, bool integer, FloatImage& out) {
-  const int c = in.channels;
-  std::vector<float> lo(static_cast<std::size_t>(c), integer ? 0.0f : std::numeric_limits<float>::infinity());
-  std::vector<float> hi(static_cast<std::size_t>(c), integer ? 1.0f : -std::numeric_limits<float>::infinity());
-  for (std::size_t i = 0; !integer && i < in.data.size(); ++i) {
-    const auto ch = i % static_cast<std::size_t>(c);
-    lo[ch] = std::min(lo[ch], in.data[i]);
-    hi[ch] = std::max(hi[ch], in.data[i]);
-  }
   if (integer) {  // one range for every channel: a loop without the channel index
     for (float& v : out.data) v = std::min(std::max(v, 0.0f), 1.0f);
     return;
   }
-  for (std::size_t i = 0; i < out.data.size(); ++i) {
-    const auto ch = i % static_cast<std::size_t>(c);
-    out.data[i] = std::clamp(out.data[i], lo[ch], hi[ch]);
-  }
+  clamp_to_range(input_range(in), out);
 }
 
 // The correction of a dual prefilter on the output grid along one axis (§2.2): the
@@ -126,57 +134,83 @@ FloatImage resize_working(const FloatImage& work, int width, int height, const R
 }
 
 Image resize(const Image& in, int width, int height, const ResizeOptions& options) {
-  check_size(width, height);
   check_supported(in);
-  const cv::Mat& m = in.pixels;
-  if (static_cast<std::int64_t>(m.cols) * m.rows > max_pixels)
-    throw bad_input("resize: input size {}x{} exceeds 2^31 pixels", m.cols, m.rows);
+  return resize(MatRows(in.pixels), in.color_space, width, height, options);
+}
 
-  const int depth = options.output_depth < 0 ? m.depth() : options.output_depth;
-  const bool float_in = m.depth() == CV_32F, float_out = depth == CV_32F;
+Image resize(const StoredRows& in, ColorSpace color_space, int width, int height, const ResizeOptions& options) {
+  check_size(width, height);
+  const int type = in.type(), c = CV_MAT_CN(type), in_depth = CV_MAT_DEPTH(type);
+  if (in.width() <= 0 || in.height() <= 0) throw bad_input("resize: the input image is empty");
+  if (c < 1 || c > 4) throw bad_input("resize: {} channels are not supported (1 to 4)", c);
+  if (in_depth != CV_8U && in_depth != CV_16U && in_depth != CV_32F)
+    throw bad_input("resize: pixel depth {} is not supported (8-bit, 16-bit or 32-bit float)", in_depth);
+  if (static_cast<std::int64_t>(in.width()) * in.height() > max_pixels)
+    throw bad_input("resize: input size {}x{} exceeds 2^31 pixels", in.width(), in.height());
+
+  const int depth = options.output_depth < 0 ? in_depth : options.output_depth;
+  const bool float_in = in_depth == CV_32F, float_out = depth == CV_32F;
   Encoding decode;
-  decode.decode_srgb = options.linear_light && in.color_space == ColorSpace::srgb;
-  decode.premultiply = options.premultiply_alpha && alpha_channel(m.channels()) >= 0;
+  decode.decode_srgb = options.linear_light && color_space == ColorSpace::srgb;
+  decode.premultiply = options.premultiply_alpha && alpha_channel(c) >= 0;
   FloatImage out;
   const bool streaming = !options.hicomp && options.clamp != ClampMode::local && options.kernel.reconstruction.empty() &&
                          options.kernel.name != "sinc" && !options.kernel_y;
+  // The whole stored image, for the paths that need it (read only when they run).
+  auto whole = [&] {
+    Image img;
+    cv::Mat owner(in.height(), in.width(), type);
+    const cv::Mat view = in.rows(0, in.height(), owner.data);
+    img.pixels = view.data == owner.data ? owner : view;
+    img.color_space = color_space;
+    return img;
+  };
   if (streaming) {
-    // The common case: rows first, straight from the stored pixels (no float copy of
-    // the input), then columns; the clamp needs only the [0, 1] range of integer input.
+    // The common case: both passes streamed over the stored rows through a ring
+    // (docs/resample.md, "Streaming"); the clamp needs only the [0, 1] range of integer
+    // input, or the decoded float input's range, gathered on the way.
     const int threads = resolve_threads(options.threads);
-    const WeightTable tx = make_weight_table(m.cols, width, options.kernel, options.shift_x, options.edge);
-    const WeightTable ty = make_weight_table(m.rows, height, options.kernel, options.shift_y, options.edge);
+    const WeightTable tx = make_weight_table(in.width(), width, options.kernel, options.shift_x, options.edge);
+    const WeightTable ty = make_weight_table(in.height(), height, options.kernel, options.shift_y, options.edge);
     // Columns first moves the larger share of the work into the contiguous, vectorised
-    // column loop (counted ~4x cheaper per tap than the per-pixel row loop); it needs taps
-    // that move forward, so wrap and reflect edges keep rows first.
-    const double c = m.channels();
+    // column loop (counted ~4x cheaper per tap than the per-pixel row loop). Reflect and
+    // wrap edges keep rows first, as they always have: the order changes float rounding.
+    const double cn = c;
     const double taps_x = static_cast<double>(tx.index.size()) / width, taps_y = static_cast<double>(ty.index.size()) / height;
-    const double rows_first = double(m.rows) * width * taps_x * c + double(width) * c * height * taps_y / 4;
-    const double cols_first = double(m.cols) * c * height * taps_y / 4 + double(height) * width * taps_x * c;
-    const bool forward_taps = options.edge == EdgeMode::clamp || options.edge == EdgeMode::zero;
-    if (forward_taps && cols_first < rows_first)
-      out = resample_rows(resample_columns_decoded(m, decode, ty, threads), tx, threads);
-    else
-      out = resample_columns(resample_rows_decoded(m, decode, tx, threads), ty, threads);
-    if (options.clamp == ClampMode::range || (options.clamp == ClampMode::automatic && !float_out)) {
+    const double rows_first = double(in.height()) * width * taps_x * cn + double(width) * cn * height * taps_y / 4;
+    const double cols_first = double(in.width()) * cn * height * taps_y / 4 + double(height) * width * taps_x * cn;
+    const bool forward_edges = options.edge == EdgeMode::clamp || options.edge == EdgeMode::zero;
+    const bool clamp_range = options.clamp == ClampMode::range || (options.clamp == ClampMode::automatic && !float_out);
+    ChannelRange range;
+    std::optional<FloatImage> streamed =
+        resize_streamed(in, decode, StreamedPasses{&tx, &ty, forward_edges && cols_first < rows_first}, threads,
+                        clamp_range && float_in ? &range : nullptr);
+    if (streamed) {
+      out = std::move(*streamed);
+    } else {  // wrap edges: the last outputs' taps jump back, so the whole image takes both passes
+      const Image img = whole();
+      out = resample_columns(resample_rows_decoded(img.pixels, decode, tx, threads), ty, threads);
+      if (clamp_range && float_in) range = input_range(to_working(img, decode));
+    }
+    if (clamp_range) {
       if (float_in)
-        clamp_to_input_range(to_working(in, decode), false, out);
+        clamp_to_range(range, out);
       else
-        clamp_to_input_range(FloatImage(1, 1, m.channels()), true, out);
+        clamp_to_input_range(FloatImage(1, 1, c), true, out);
     }
   } else {
-    out = resize_working(to_working(in, decode), width, height, options, !float_in, !float_out);
+    out = resize_working(to_working(whole(), decode), width, height, options, !float_in, !float_out);
   }
 
   // Float outputs hold linear light; integer outputs are sRGB codes when the input was
   // sRGB or (linear) float, and keep the input's coding when it was linear integers.
   Encoding encode = decode;
-  encode.decode_srgb = options.linear_light && !float_out && (in.color_space == ColorSpace::srgb || float_in);
+  encode.decode_srgb = options.linear_light && !float_out && (color_space == ColorSpace::srgb || float_in);
   encode.dither = options.dither;
   encode.seed = options.seed;
   Image result;
-  result.color_space = float_out ? (decode.decode_srgb ? ColorSpace::linear : in.color_space)
-                                 : (encode.decode_srgb ? ColorSpace::srgb : in.color_space);
+  result.color_space = float_out ? (decode.decode_srgb ? ColorSpace::linear : color_space)
+                                 : (encode.decode_srgb ? ColorSpace::srgb : color_space);
   result.pixels = from_working(out, depth, encode);
   return result;
 }

@@ -10,6 +10,7 @@
 #include "core/image.hpp"
 #include "sampling/float_image.hpp"
 #include "sampling/kernel.hpp"
+#include "sampling/stored_rows.hpp"
 #include "sampling/weight_table.hpp"
 
 namespace fest::sampling {
@@ -46,6 +47,12 @@ struct ResizeOptions {
 // (and depth unless output_depth says otherwise). Sizes of 0, or of more than 2^31
 // output pixels, are usage errors; an empty or unsupported input is bad_input.
 Image resize(const Image& in, int width, int height, const ResizeOptions& options = {});
+
+// The same from stored rows read a band at a time (a file streamed through the passes:
+// docs/resample.md, "Streaming"); `color_space` is the stored image's. The common
+// options stream both passes; hicomp, the local clamp, sinc, dual kernels, a separate y
+// kernel and wrap edges read the whole image first.
+Image resize(const StoredRows& in, ColorSpace color_space, int width, int height, const ResizeOptions& options = {});
 
 // The filtering alone, on working values (linear, premultiplied as the caller decided).
 // `integer_input`: ClampMode::range clamps to [0, 1]; `integer_output`: ClampMode::automatic

@@ -1,5 +1,7 @@
 #include "sampling/separable_pass.hpp"
 
+#include "sampling/separable_kernels.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <functional>
@@ -26,6 +28,12 @@ void for_row_blocks(int rows, int threads, const std::function<void(int, int)>& 
   }
   for (auto& th : pool) th.join();
 }
+
+}  // namespace
+
+namespace pass_detail {
+
+namespace {
 
 // Four floats as one SSE/NEON register (GCC/Clang vector extension): element-wise
 // arithmetic, so per channel exactly the scalar operations.
@@ -108,6 +116,13 @@ void filter_four_rows(const float* const* src, float* const* dst, const WeightTa
   }
 }
 
+}  // namespace
+
+void filter_four_rows_any(const float* const* src, float* const* dst, const WeightTable& t, int c) {
+  if (c == 3) return filter_four_rows<3>(src, dst, t);
+  return filter_four_rows<4>(src, dst, t);
+}
+
 void filter_row_any(const float* src, float* dst, const WeightTable& t, int c) {
   switch (c) {
     case 1: return filter_row<1>(src, dst, t, c);
@@ -148,6 +163,8 @@ template <typename V>
   }
 }
 
+namespace {
+
 #if defined(__x86_64__) && defined(__GNUC__)
 // The optional AVX2 path of spec §7: 8-lane vectors where the CPU has them.
 __attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const float* const* src, const float* w,
@@ -157,6 +174,8 @@ __attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const floa
 const bool has_avx2 = __builtin_cpu_supports("avx2");
 #endif
 
+}  // namespace
+
 void accumulate_rows(float* dst, const float* const* src, const float* w, std::size_t taps, std::size_t begin,
                      std::size_t end) {
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -165,7 +184,9 @@ void accumulate_rows(float* dst, const float* const* src, const float* w, std::s
   accumulate_rows_with<Lanes4>(dst, src, w, taps, begin, end);
 }
 
-}  // namespace
+}  // namespace pass_detail
+
+using namespace pass_detail;
 
 FloatImage resample_rows(const FloatImage& in, const WeightTable& table, int threads) {
   FloatImage out(table.n_out, in.height, in.channels);
@@ -192,65 +213,6 @@ FloatImage resample_rows_decoded(const cv::Mat& in, const Encoding& enc, const W
     for (int y = begin; y < end; ++y) {
       decode_row(in, y, enc, row.data());
       filter_row_any(row.data(), out.row(y), table, in.channels());
-    }
-  });
-  return out;
-}
-
-FloatImage resample_columns_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads) {
-  const int c = in.channels();
-  FloatImage out(in.cols, table.n_out, c);
-  const std::size_t row_len = static_cast<std::size_t>(in.cols) * static_cast<std::size_t>(c);
-  for_row_blocks(table.n_out, threads, [&](int begin, int end) {
-    // Decoded input rows kept while output rows still read them: the taps of successive
-    // outputs move forward, so a row is decoded once per block.
-    struct Slot {
-      int row = -1;
-      std::vector<float> values;
-    };
-    std::vector<Slot> slots;
-    std::vector<const float*> sources;
-    auto decoded = [&](int row) -> const float* {
-      Slot* free_slot = nullptr;
-      for (auto& s : slots) {
-        if (s.row == row) return s.values.data();
-        if (!free_slot && s.row < 0) free_slot = &s;
-      }
-      if (!free_slot) {
-        slots.push_back({-1, std::vector<float>(row_len)});
-        free_slot = &slots.back();
-      }
-      free_slot->row = row;
-      decode_row(in, row, enc, free_slot->values.data());
-      return free_slot->values.data();
-    };
-    // Groups of output rows, each swept in column strips: a strip of the group's input
-    // rows (~75 rows x 4 KiB for R1) stays in L2 while all the group's outputs read it,
-    // instead of every output streaming its ~35 full rows (2 MiB) from L3.
-    constexpr int group = 8;
-    constexpr std::size_t strip = 1024;
-    std::vector<std::size_t> starts;
-    for (int g = begin; g < end; g += group) {
-      const int g_end = std::min(end, g + group);
-      int lo = in.rows;
-      for (std::size_t j = table.offset[static_cast<std::size_t>(g)]; j < table.offset[static_cast<std::size_t>(g_end)]; ++j)
-        lo = std::min(lo, table.index[j]);
-      for (auto& s : slots)
-        if (s.row < lo) s.row = -1;  // no later output reads rows above this group's first
-      sources.clear();
-      starts.clear();
-      for (int o = g; o < g_end; ++o) {
-        starts.push_back(sources.size());
-        for (std::size_t j = table.offset[static_cast<std::size_t>(o)]; j < table.offset[static_cast<std::size_t>(o) + 1]; ++j)
-          sources.push_back(decoded(table.index[j]));
-      }
-      for (std::size_t i0 = 0; i0 < row_len; i0 += strip)
-        for (int o = g; o < g_end; ++o) {
-          const std::size_t first = table.offset[static_cast<std::size_t>(o)];
-          const std::size_t taps = table.offset[static_cast<std::size_t>(o) + 1] - first;
-          accumulate_rows(out.row(o), sources.data() + starts[static_cast<std::size_t>(o - g)], table.weight.data() + first,
-                          taps, i0, std::min(row_len, i0 + strip));
-        }
     }
   });
   return out;

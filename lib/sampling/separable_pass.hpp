@@ -15,11 +15,6 @@ FloatImage resample_rows(const FloatImage& in, const WeightTable& table, int thr
 // the first pass of a resize never holds a float copy of the whole input.
 FloatImage resample_rows_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads);
 
-// resample_columns on the stored pixels of `in`, rows decoded on the fly and kept only
-// while the outputs still read them. Needs a table whose taps move forward with the
-// output index (clamp or zero edges), as the separable resize's tables do.
-FloatImage resample_columns_decoded(const cv::Mat& in, const Encoding& enc, const WeightTable& table, int threads);
-
 // Resamples along y: table.n_in == in.height; the result is table.n_out high.
 FloatImage resample_columns(const FloatImage& in, const WeightTable& table, int threads);
 

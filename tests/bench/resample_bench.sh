@@ -10,7 +10,8 @@
 #     16-bit PGM that every tool filters as plain values, reduced to 256² with lanczos3,
 #     mitchell and point sampling; AE/PR measured by `resample metrics` for each tool.
 # R1: 4928×3279 RGB8 PPM -> 852×567, lanczos3, end to end (min of 3 runs), resample in
-#     gamma-encoded (codes) and linear-light mode; peak RSS.
+#     gamma-encoded (codes) and linear-light mode; peak RSS and CPU seconds (user + system,
+#     the figure to compare on a shared machine).
 # R2: 8192² one-channel float PFM -> 1024², mitchell.
 set -u
 BIN=${1:-build/bin}
@@ -28,15 +29,18 @@ for c in magick convert-im6.q16 convert; do
 done
 have() { command -v "$1" >/dev/null 2>&1; }
 
-# timed CMD...: runs RUNS times, sets $secs (minimum wall time) and $peak_mb (peak RSS of
-# the fastest run); $ok = 0 when the command failed.
+# timed CMD...: runs RUNS times, sets $secs (minimum wall time), $peak_mb (peak RSS of
+# the fastest run) and $cpu (minimum user + system CPU seconds, all threads: the figure
+# to compare on a shared machine); $ok = 0 when the command failed.
 timed() {
-  secs="" peak_mb="" ok=1
-  local i t m
+  secs="" peak_mb="" cpu="" ok=1
+  local i t m u s c
   for ((i = 0; i < RUNS; i++)); do
-    if ! /usr/bin/time -f "%e %M" -o "$WORK/time" "$@" >/dev/null 2>"$WORK/err"; then ok=0; return; fi
-    read -r t m <"$WORK/time"
+    if ! /usr/bin/time -f "%e %M %U %S" -o "$WORK/time" "$@" >/dev/null 2>"$WORK/err"; then ok=0; return; fi
+    read -r t m u s <"$WORK/time"
+    c=$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.2f", u + s }')
     if [ -z "$secs" ] || awk -v a="$t" -v b="$secs" 'BEGIN { exit !(a < b) }'; then secs=$t; peak_mb=$((m / 1024)); fi
+    if [ -z "$cpu" ] || awk -v a="$c" -v b="$cpu" 'BEGIN { exit !(a < b) }'; then cpu=$c; fi
   done
 }
 
@@ -94,8 +98,8 @@ r1() {  # tool mode command...
   local tool=$1 mode=$2; shift 2
   timed "$@"
   if [ "$ok" -ne 1 ]; then json_skip R1 "$tool" "failed: $(head -c 200 "$WORK/err" | tr '\n"' ' ')"; return; fi
-  printf '{"bench":"resample","case":"R1","tool":"%s","mode":"%s","seconds":%s,"peak_mb":%s}\n' "$tool" "$mode" "$secs" "$peak_mb"
-  eval "r1_${tool}_${mode}=$secs"
+  printf '{"bench":"resample","case":"R1","tool":"%s","mode":"%s","seconds":%s,"cpu_seconds":%s,"peak_mb":%s}\n' "$tool" "$mode" "$secs" "$cpu" "$peak_mb"
+  eval "r1_${tool}_${mode}=$secs r1_${tool}_${mode}_cpu=$cpu"
 }
 r1 resample codes "$R" resize "$WORK/r1.ppm" --size 852x567 --filter lanczos3 --colorspace codes --threads 2 -o "$WORK/o.ppm"
 r1 resample linear "$R" resize "$WORK/r1.ppm" --size 852x567 --filter lanczos3 --threads 2 -o "$WORK/o.ppm"
@@ -111,9 +115,11 @@ if have oiiotool; then
   RUNS=1 r1 oiiotool codes oiiotool "$WORK/r1.ppm" --resize 852x567 -o "$WORK/o.ppm"
 else json_skip R1 oiiotool "oiiotool not installed (openimageio-tools)"; fi
 ratio() { [ -n "${1:-}" ] && [ -n "${2:-}" ] && awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", a / b }' || printf null; }
-printf '{"bench":"resample","case":"R1","summary":true,"codes_vs_vips":%s,"linear_vs_vips_codes":%s,"linear_vs_vips_linear":%s,"imagemagick_vs_resample":%s,"oiiotool_vs_resample":%s}\n' \
-  "$(ratio "${r1_resample_codes:-}" "${r1_vips_codes:-}")" "$(ratio "${r1_resample_linear:-}" "${r1_vips_codes:-}")" \
-  "$(ratio "${r1_resample_linear:-}" "${r1_vips_linear:-}")" "$(ratio "${r1_imagemagick_codes:-}" "${r1_resample_codes:-}")" \
+printf '{"bench":"resample","case":"R1","summary":true,"codes_vs_vips":%s,"codes_cpu_vs_vips":%s,"linear_vs_vips_codes":%s,"linear_vs_vips_linear":%s,"linear_cpu_vs_vips_linear":%s,"imagemagick_vs_resample":%s,"oiiotool_vs_resample":%s}\n' \
+  "$(ratio "${r1_resample_codes:-}" "${r1_vips_codes:-}")" "$(ratio "${r1_resample_codes_cpu:-}" "${r1_vips_codes_cpu:-}")" \
+  "$(ratio "${r1_resample_linear:-}" "${r1_vips_codes:-}")" \
+  "$(ratio "${r1_resample_linear:-}" "${r1_vips_linear:-}")" "$(ratio "${r1_resample_linear_cpu:-}" "${r1_vips_linear_cpu:-}")" \
+  "$(ratio "${r1_imagemagick_codes:-}" "${r1_resample_codes:-}")" \
   "$(ratio "${r1_oiiotool_codes:-}" "${r1_resample_codes:-}")"
 rm -f "$WORK/r1.ppm"
 
@@ -123,8 +129,13 @@ r2() {
   local tool=$1; shift
   timed "$@"
   if [ "$ok" -ne 1 ]; then json_skip R2 "$tool" "failed: $(head -c 200 "$WORK/err" | tr '\n"' ' ')"; return; fi
-  printf '{"bench":"resample","case":"R2","tool":"%s","seconds":%s,"peak_mb":%s}\n' "$tool" "$secs" "$peak_mb"
+  printf '{"bench":"resample","case":"R2","tool":"%s","seconds":%s,"cpu_seconds":%s,"peak_mb":%s}\n' "$tool" "$secs" "$cpu" "$peak_mb"
+  eval "r2_${tool}=$secs r2_${tool}_cpu=$cpu r2_${tool}_mb=$peak_mb"
 }
 r2 resample "$R" resize "$WORK/r2.pfm" --size 1024x1024 --filter mitchell --threads 2 -o "$WORK/o.pfm"
+r2 resample1thread "$R" resize "$WORK/r2.pfm" --size 1024x1024 --filter mitchell --threads 1 -o "$WORK/o.pfm"
 if have vips; then r2 vips vips resize "$WORK/r2.pfm" "$WORK/o.pfm" 0.125 --kernel mitchell
 else json_skip R2 vips "vips not installed (libvips-tools)"; fi
+printf '{"bench":"resample","case":"R2","summary":true,"seconds_vs_vips":%s,"cpu_vs_vips":%s,"peak_vs_vips":%s}\n' \
+  "$(ratio "${r2_resample:-}" "${r2_vips:-}")" "$(ratio "${r2_resample_cpu:-}" "${r2_vips_cpu:-}")" \
+  "$(ratio "${r2_resample_mb:-}" "${r2_vips_mb:-}")"

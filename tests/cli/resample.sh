@@ -140,6 +140,25 @@ case_ "threads 1 and 2 give identical bytes"
 "$R" resize --size 301x177 --filter lanczos3 --threads 2 <"$WORK/zp.pfm" >"$WORK/t2.pfm"
 check "bitwise equal" cmp "$WORK/t1.pfm" "$WORK/t2.pfm"
 
+case_ "a file streamed a band at a time gives the bytes of the whole-file read (standard input)"
+# Files of raw Netpbm/PFM stream through the passes; standard input is read whole first.
+"$R" resize "$WORK/zp.pfm" --size 301x177 --filter lanczos3 --threads 2 -o "$WORK/s1.pfm"
+check "PFM, bitwise equal" cmp "$WORK/s1.pfm" "$WORK/t1.pfm"
+"$R" render --scene zoneplate --size 300x200 --spp 1 --depth 16 --to pgm -o "$WORK/s16.pgm"
+"$R" resize "$WORK/s16.pgm" --size 97x61 --filter mitchell --edge reflect -o "$WORK/s2.pgm"
+"$R" resize --size 97x61 --filter mitchell --edge reflect --to pgm <"$WORK/s16.pgm" >"$WORK/s3.pgm"
+check "16-bit PGM, reflect edges, bitwise equal" cmp "$WORK/s2.pgm" "$WORK/s3.pgm"
+"$R" resize "$WORK/s16.pgm" --size 97x61 --filter lanczos3 --edge wrap --depth 8 -o "$WORK/s4.pgm"
+"$R" resize --size 97x61 --filter lanczos3 --edge wrap --depth 8 --to pgm <"$WORK/s16.pgm" >"$WORK/s5.pgm"
+check "wrap edges (whole-image passes), bitwise equal" cmp "$WORK/s4.pgm" "$WORK/s5.pgm"
+
+case_ "a named pipe is read whole, with the bytes of the streamed file"
+mkfifo "$WORK/pipe.pgm"
+cat "$WORK/s16.pgm" >"$WORK/pipe.pgm" &
+"$R" resize "$WORK/pipe.pgm" --size 97x61 --filter mitchell --edge reflect -o "$WORK/s6.pgm"
+wait
+check "bitwise equal" cmp "$WORK/s2.pgm" "$WORK/s6.pgm"
+
 case_ "render is reproducible for a seed and differs for another"
 "$R" render --scene edges --size 64x64 --spp 16 --pattern jitter --seed 7 >"$WORK/e1.pfm"
 "$R" render --scene edges --size 64x64 --spp 16 --pattern jitter --seed 7 --threads 1 >"$WORK/e2.pfm"

@@ -11,6 +11,7 @@
 #include "sampling/display_model.hpp"
 #include "sampling/resize.hpp"
 #include "sizes.hpp"
+#include "streamed_input.hpp"
 
 namespace resample_tool {
 
@@ -78,16 +79,26 @@ int run_resize(const ResizeArgs& a) {
   const Depth depth = parse_depth(a.out.depth);
   if (!a.size.empty()) parse_size(a.size, "--size");  // a bad --size is a usage error even before input
 
+  auto pick_colour = [&](ColorSpace stored) {
+    if (a.colorspace == "srgb") return ColorSpace::srgb;
+    if (a.colorspace == "linear") return ColorSpace::linear;
+    return stored;
+  };
+  auto finish = [&](int in_w, int in_h, int in_depth, auto&& run) {
+    const auto [w, h] = target_size(a, in_w, in_h);
+    const auto f = output_format(a.out.to, a.out.output, depth.cv_depth >= 0 ? depth.cv_depth : in_depth);
+    o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, in_depth);
+    store_image(run(w, h), a.out.output, f, depth.half);
+    return 0;
+  };
+  // Raw Netpbm and PFM files stream through the passes a band of rows at a time.
+  if (const auto streamed = StreamedInput::open(a.input))
+    return finish(streamed->width(), streamed->height(), CV_MAT_DEPTH(streamed->type()),
+                  [&](int w, int h) { return resize(*streamed, pick_colour(streamed->color_space()), w, h, o); });
   LoadedImage in = load_image(a.input);
-  if (a.colorspace == "srgb") in.image.color_space = ColorSpace::srgb;
-  if (a.colorspace == "linear") in.image.color_space = ColorSpace::linear;
-  const auto [w, h] = target_size(a, in.image.pixels.cols, in.image.pixels.rows);
-  const int image_depth = depth.cv_depth >= 0 ? depth.cv_depth : in.image.pixels.depth();
-  const auto f = output_format(a.out.to, a.out.output, image_depth);
-  o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, in.image.pixels.depth());
-  const Image out = resize(in.image, w, h, o);
-  store_image(out, a.out.output, f, depth.half);
-  return 0;
+  in.image.color_space = pick_colour(in.image.color_space);
+  const cv::Mat& m = in.image.pixels;
+  return finish(m.cols, m.rows, m.depth(), [&](int w, int h) { return resize(in.image, w, h, o); });
 }
 
 int run_display(const DisplayArgs& a) {
