@@ -8,8 +8,8 @@
 source "$(dirname "$0")/lib.sh"
 command -v readelf >/dev/null || { echo "readelf not installed (binutils): skipped"; exit 77; }
 
-# Tools allowed to link GDAL or VTK directly (softobj: VTK flying edges for --method mc).
-KNOWN_HEAVY=" softobj "
+# Tools allowed to link GDAL or VTK directly: none.
+KNOWN_HEAVY=" "
 
 TOOLS_DIR="$(cd "$(dirname "$0")/../../tools" && pwd)"
 checked=0
