@@ -9,6 +9,7 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkLookupTable.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -51,8 +52,15 @@ DataArray array_from_vtk(vtkAbstractArray* array, const char* format, const char
   if (numeric == nullptr || (a.type != vtk_type::bit && vtk_type_size(a.type) == 0))
     throw bad_input("{}: {} array '{}' is of type {}, which fest cannot carry", format, where, a.name,
                     array->GetDataTypeAsString());
-  if (numeric->GetLookupTable() != nullptr)
-    throw bad_input("{}: {} array '{}' has a lookup table, which fest cannot carry", format, where, a.name);
+  if (vtkScalarsToColors* colors = numeric->GetLookupTable()) {
+    auto* lut = vtkLookupTable::SafeDownCast(colors);
+    if (lut == nullptr)
+      throw bad_input("{}: {} array '{}' has a {}, which fest cannot carry", format, where, a.name,
+                      colors->GetClassName());
+    const vtkIdType n = lut->GetNumberOfTableValues();
+    a.lookup_table.resize(std::size_t(n) * 4);
+    if (n > 0) std::memcpy(a.lookup_table.data(), lut->GetPointer(0), a.lookup_table.size());
+  }
   a.bytes.resize(byte_count(a.type, a.value_count));
   if (!a.bytes.empty()) std::memcpy(a.bytes.data(), numeric->GetVoidPointer(0), a.bytes.size());
   return a;
@@ -104,6 +112,17 @@ vtkSmartPointer<vtkAbstractArray> array_to_vtk(const DataArray& a) {
     for (std::size_t i = 0; i < a.strings.size(); ++i) strings->SetValue(static_cast<vtkIdType>(i), a.strings[i]);
   } else if (!a.bytes.empty()) {
     std::memcpy(array->GetVoidPointer(0), a.bytes.data(), a.bytes.size());
+  }
+  if (auto* numeric = vtkDataArray::SafeDownCast(array); numeric && !a.lookup_table.empty()) {
+    auto lut = vtkSmartPointer<vtkLookupTable>::New();
+    const std::size_t n = a.lookup_table.size() / 4;
+    lut->SetNumberOfTableValues(static_cast<vtkIdType>(n));
+    // c / 255 goes back to c exactly (SetTableValue rounds x * 255 to the nearest byte).
+    for (std::size_t i = 0; i < n; ++i) {
+      const unsigned char* c = &a.lookup_table[4 * i];
+      lut->SetTableValue(static_cast<vtkIdType>(i), c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, c[3] / 255.0);
+    }
+    numeric->SetLookupTable(lut);
   }
   return array;
 }

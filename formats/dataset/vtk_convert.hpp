@@ -11,7 +11,8 @@ class vtkDataSet;
 namespace fest::formats {
 
 // Throws bad_input("<format>: ...") for content a Dataset cannot carry (arrays of
-// variant or unicode type, lookup tables, polyhedron face lists), naming what and how many.
+// variant or unicode type, colour maps other than a lookup table, polyhedron face
+// lists), naming what and how many.
 Dataset from_vtk(vtkDataSet* dataset, const char* format = "vtk");
 vtkSmartPointer<vtkDataSet> to_vtk(const Dataset& dataset);
 

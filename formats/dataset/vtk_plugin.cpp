@@ -54,6 +54,8 @@ const char* name_of(fest::formats::Format f) {
 
 extern "C" int fest_vtk_plugin_abi(void) { return FEST_VTK_PLUGIN_ABI; }
 
+extern "C" size_t fest_vtk_plugin_layout(void) { return sizeof(fest::Dataset) * 65536 + sizeof(fest::DataArray); }
+
 extern "C" int fest_vtk_read_dataset(const char* bytes, size_t size, int format, void* dataset, char* message,
                                      size_t message_size) {
   return guarded(message, message_size, [&] {

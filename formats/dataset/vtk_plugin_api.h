@@ -7,7 +7,7 @@
  * fill are fest's own C++ types (fest::Dataset, std::string), which is sound because the
  * plugin is built with fest, by the same compiler, from the same headers: the ABI number
  * below changes whenever core/dataset.hpp does, and the loader refuses a plugin that
- * reports another one. */
+ * reports another number or another layout of those types. */
 #ifndef FEST_VTK_PLUGIN_API_H
 #define FEST_VTK_PLUGIN_API_H
 
@@ -29,6 +29,10 @@ int fest_vtk_read_dataset(const char* bytes, size_t size, int format, void* data
 int fest_vtk_write_dataset(const void* dataset, int format, int ascii, int zlib, void* bytes, char* message,
                            size_t message_size);
 int fest_vtk_plugin_abi(void);
+/* sizeof(fest::Dataset) * 65536 + sizeof(fest::DataArray) as the plugin was built: a
+ * second guard, against a plugin and a tool built from different versions of
+ * core/dataset.hpp under the same ABI number. */
+size_t fest_vtk_plugin_layout(void);
 
 #ifdef __cplusplus
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dataset.hpp"
 #include "core/error.hpp"
 #include "formats/dataset/vtk_plugin_api.h"
 
@@ -50,10 +51,12 @@ VtkPlugin load() {
       break;  // found but unloadable: most likely libvtk itself is missing
     }
     auto abi = reinterpret_cast<int (*)()>(::dlsym(handle, "fest_vtk_plugin_abi"));
+    auto layout = reinterpret_cast<std::size_t (*)()>(::dlsym(handle, "fest_vtk_plugin_layout"));
     VtkPlugin p;
     p.read_dataset = reinterpret_cast<decltype(p.read_dataset)>(::dlsym(handle, "fest_vtk_read_dataset"));
     p.write_dataset = reinterpret_cast<decltype(p.write_dataset)>(::dlsym(handle, "fest_vtk_write_dataset"));
-    if (!abi || abi() != FEST_VTK_PLUGIN_ABI || !p.read_dataset || !p.write_dataset) {
+    if (!abi || abi() != FEST_VTK_PLUGIN_ABI || !layout ||
+        layout() != sizeof(Dataset) * 65536 + sizeof(DataArray) || !p.read_dataset || !p.write_dataset) {
       why = path + " is from another fest version";
       break;
     }

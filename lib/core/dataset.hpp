@@ -44,6 +44,9 @@ struct DataArray {
   std::vector<std::string> component_names;  // empty, or one per component
   std::vector<unsigned char> bytes;          // numeric values
   std::vector<std::string> strings;          // type == vtk_type::string
+  // A legacy file's own LOOKUP_TABLE for these scalars: 4 bytes (RGBA) per entry;
+  // empty for "LOOKUP_TABLE default".
+  std::vector<unsigned char> lookup_table;
   std::size_t value_count = 0;               // tuples * components
 
   std::size_t tuples() const noexcept { return components > 0 ? value_count / std::size_t(components) : 0; }

@@ -43,6 +43,13 @@ expect_status 0
 check "2^60 + 1 survives" grep -q '1152921504606846977' "$WORK/back.vtk"
 check "cells as written" grep -q '^CELL_TYPES 2' "$WORK/back.vtk"
 
+case_ "a legacy file's own lookup table is carried to the legacy output"
+printf '# vtk DataFile Version 3.0\nlut\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS s float 1\nLOOKUP_TABLE mine\n0 0.5 1\nLOOKUP_TABLE mine 2\n0 0.2 0.4 1\n1 1 1 1\n' >"$WORK/lut.vtk"
+run fconv --ascii "$WORK/lut.vtk" -o "$WORK/lut_out.vtk"
+expect_status 0
+check "two table entries" grep -q '^LOOKUP_TABLE lookup_table 2' "$WORK/lut_out.vtk"
+check "entry 0 (0.2 = 51/255, 0.4 = 102/255)" grep -q '^0 0.2 0.4 1$' "$WORK/lut_out.vtk"
+
 case_ "fcompare: a dataset equals its own conversion"
 run fcompare "$WORK/two.vtk" "$WORK/two.vtu"
 expect_status 0
