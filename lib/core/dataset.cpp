@@ -206,7 +206,7 @@ std::array<double, 3> Dataset::point(std::size_t i) const noexcept {
       return {x_coordinates.value(loc[0]), y_coordinates.value(loc[1]), z_coordinates.value(loc[2])};
     // vtkImageData::TransformIndexToPhysicalPoint: origin + direction * (spacing * index)
     double ijk[3];
-    for (int a = 0; a < 3; ++a) ijk[a] = double(std::size_t(extent[2 * a]) + loc[a]);
+    for (int a = 0; a < 3; ++a) ijk[a] = double(extent[2 * a]) + double(loc[a]);  // extents may be negative
     std::array<double, 3> x{};
     for (int r = 0; r < 3; ++r)
       x[r] = direction[3 * r] * spacing[0] * ijk[0] + direction[3 * r + 1] * spacing[1] * ijk[1] +

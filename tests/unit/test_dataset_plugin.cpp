@@ -97,10 +97,21 @@ TEST(DatasetPlugin, PolyDataKeepsVtkCellOrder) {
   EXPECT_EQ(back.bounds()[1], 9.0);
 }
 
+// Image data with a negative extent and a rotated, flipped direction matrix.
+vtkSmartPointer<vtkDataSet> oriented_image() {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(-2, 1, -1, 1, 0, 2);
+  image->SetOrigin(1, 2, 3);
+  image->SetSpacing(0.5, 2, 1);
+  image->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, -1);
+  return image;
+}
+
 // Every sample the VTK tests build: points, cells and bounds as VTK computes them.
 TEST(DatasetPlugin, GeometryQueriesMatchVtk) {
-  vtkSmartPointer<vtkDataSet> samples[] = {test::make_image(), test::make_tets(), test::make_poly(),
-                                           test::make_structured_grid(), test::make_rectilinear_grid()};
+  vtkSmartPointer<vtkDataSet> samples[] = {test::make_image(),          test::make_tets(),
+                                           test::make_poly(),           test::make_structured_grid(),
+                                           test::make_rectilinear_grid(), oriented_image()};
   vtkNew<vtkIdList> vtk_ids;
   std::vector<int64_t> ids;
   for (vtkDataSet* vtk : samples) {
