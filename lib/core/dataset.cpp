@@ -326,11 +326,9 @@ std::array<double, 6> Dataset::bounds() const noexcept {
         b[2 * a] = std::min(b[2 * a], v);
         b[2 * a + 1] = std::max(b[2 * a + 1], v);
       }
-  } else if (kind == DatasetKind::polydata && cell_count() > 0) {
-    // vtkPolyData::ComputeBounds counts only the points that cells use.
-    for (const CellArray* list : {&verts, &lines, &polys, &strips})
-      for (int64_t id : list->connectivity) include(point(std::size_t(id)));
   } else {
+    // Every point, used by a cell or not, as VTK 9.1's vtkPointSet::ComputeBounds
+    // (polygonal data included: checked against VTK in unit_dataset).
     for (std::size_t i = 0; i < point_count(); ++i) include(point(i));
   }
   return b;

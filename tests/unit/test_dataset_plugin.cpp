@@ -93,7 +93,6 @@ TEST(DatasetPlugin, PolyDataKeepsVtkCellOrder) {
   for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(back.cell_type(c), types[c]) << c;
   back.cell_points(2, ids);
   EXPECT_EQ(ids, std::vector<int64_t>({0, 1, 3, 2}));
-  // Bounds over the points the cells use: here all five (the vertex uses point 4).
   EXPECT_EQ(back.bounds()[1], 9.0);
 }
 
@@ -107,11 +106,26 @@ vtkSmartPointer<vtkDataSet> oriented_image() {
   return image;
 }
 
+// Polygonal data with a point no cell uses (it still counts for the bounds).
+vtkSmartPointer<vtkDataSet> poly_with_unused_point() {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  for (double p : {0.0, 1.0, 7.0}) points->InsertNextPoint(p, p == 1.0 ? 0.0 : p, 0.0);
+  points->InsertNextPoint(0, 1, 0);
+  poly->SetPoints(points);
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType tri[3] = {0, 1, 3};
+  polys->InsertNextCell(3, tri);
+  poly->SetPolys(polys);
+  return poly;
+}
+
 // Every sample the VTK tests build: points, cells and bounds as VTK computes them.
 TEST(DatasetPlugin, GeometryQueriesMatchVtk) {
   vtkSmartPointer<vtkDataSet> samples[] = {test::make_image(),          test::make_tets(),
                                            test::make_poly(),           test::make_structured_grid(),
-                                           test::make_rectilinear_grid(), oriented_image()};
+                                           test::make_rectilinear_grid(), oriented_image(),
+                                           poly_with_unused_point()};
   vtkNew<vtkIdList> vtk_ids;
   std::vector<int64_t> ids;
   for (vtkDataSet* vtk : samples) {
