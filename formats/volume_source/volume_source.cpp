@@ -4,10 +4,6 @@
 #include <cstring>
 #include <sstream>
 
-#include <vtkDataArray.h>
-#include <vtkImageData.h>
-#include <vtkMatrix3x3.h>
-#include <vtkPointData.h>
 
 #include "core/error.hpp"
 #include "formats/dataset/dataset_io.hpp"
@@ -80,37 +76,43 @@ Volume from_frames(const Input& in, const VolumeSourceOptions& o) {
   return v;
 }
 
+// The point array VTK's vtkPointData would hand out: GetScalars() (the active scalars),
+// GetArray(name) (the first array of that name), GetArray(0); each only when numeric.
+const DataArray* pick_array(const Dataset& img, const std::string& field) {
+  const std::vector<DataArray>& pd = img.point_data;
+  if (!field.empty()) {
+    for (const DataArray& a : pd)
+      if (a.name == field) return a.numeric() ? &a : nullptr;
+    return nullptr;
+  }
+  for (const DataArray& a : pd)
+    if (a.attribute == 0 && a.numeric()) return &a;
+  if (!pd.empty() && pd.front().numeric()) return &pd.front();
+  return nullptr;
+}
+
 Volume from_vti(const Input& in, const VolumeSourceOptions& o) {
-  vtkSmartPointer<vtkDataSet> ds = parse(in, read_dataset);
-  auto* img = vtkImageData::SafeDownCast(ds);
-  if (!img) throw bad_input("VTI input holds no image data ({})", in.name);
-  vtkPointData* pd = img->GetPointData();
-  vtkDataArray* arr = o.field.empty() ? pd->GetScalars() : pd->GetArray(o.field.c_str());
-  if (!arr && o.field.empty() && pd->GetNumberOfArrays() > 0) arr = pd->GetArray(0);
+  const Dataset img = parse(in, read_dataset);
+  if (img.kind != DatasetKind::image) throw bad_input("VTI input holds no image data ({})", in.name);
+  const DataArray* arr = pick_array(img, o.field);
   if (!arr) {
     std::string names;
-    for (int k = 0; k < pd->GetNumberOfArrays(); ++k)
-      names += (k ? ", " : "") + std::string(pd->GetArrayName(k) ? pd->GetArrayName(k) : "(unnamed)");
+    for (std::size_t k = 0; k < img.point_data.size(); ++k)
+      names += (k ? ", " : "") + (img.point_data[k].name.empty() ? std::string("(unnamed)") : img.point_data[k].name);
     if (o.field.empty()) throw bad_input("VTI input has no point arrays ({})", in.name);
     throw usage_error("no point array '{}' in {} (arrays: {})", o.field, in.name, names);
   }
-  int dims[3];
-  img->GetDimensions(dims);
+  const auto dims = img.dimensions();
   Volume v;
   v.resize(static_cast<std::size_t>(dims[0]), static_cast<std::size_t>(dims[1]), static_cast<std::size_t>(dims[2]));
-  double sp[3], org[3];
-  img->GetSpacing(sp);
-  img->GetOrigin(org);
-  for (int a = 0; a < 3; ++a) v.spacing[a] = sp[a], v.origin[a] = org[a];
-  if (auto* m = img->GetDirectionMatrix())
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) v.direction[3 * r + c] = m->GetElement(r, c);
-  const int comps = arr->GetNumberOfComponents();
-  if (static_cast<std::size_t>(arr->GetNumberOfTuples()) != v.size())
-    throw bad_input("VTI point array has {} tuples for {} points ({})", arr->GetNumberOfTuples(), v.size(), in.name);
+  for (int a = 0; a < 3; ++a) v.spacing[a] = img.spacing[std::size_t(a)], v.origin[a] = img.origin[std::size_t(a)];
+  for (int k = 0; k < 9; ++k) v.direction[k] = img.direction[std::size_t(k)];
+  const int comps = arr->components;
+  if (arr->tuples() != v.size())
+    throw bad_input("VTI point array has {} tuples for {} points ({})", arr->tuples(), v.size(), in.name);
   std::vector<double> t(static_cast<std::size_t>(comps));
   for (std::size_t p = 0; p < v.size(); ++p) {
-    arr->GetTuple(static_cast<vtkIdType>(p), t.data());
+    for (int c = 0; c < comps; ++c) t[std::size_t(c)] = arr->component(p, c);
     v.voxels[p] = component_value(t.data(), comps, o.component);
   }
   v.type = ScalarType::f32;

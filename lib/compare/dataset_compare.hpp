@@ -1,13 +1,12 @@
 #pragma once
-// VTK datasets compared as data: counts, cell types and connectivity, point coordinates,
-// and every point and cell array matched by name. Its own library (fest_compare_dataset)
-// so that only code comparing datasets pays for VTK.
+// Datasets compared as data: counts, cell types and connectivity, point coordinates,
+// and every point and cell array matched by name.
 
 #include <cstddef>
 #include <map>
 #include <string>
 
-class vtkDataSet;
+#include "core/dataset.hpp"
 
 namespace fest::compare {
 
@@ -21,6 +20,6 @@ struct DatasetDifference {
   double array_max_abs_all = 0;
 };
 
-DatasetDifference dataset_difference(vtkDataSet* a, vtkDataSet* b);
+DatasetDifference dataset_difference(const Dataset& a, const Dataset& b);
 
 }  // namespace fest::compare

@@ -1,14 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkDataSet.h>
-#include <vtkFieldData.h>
-#include <vtkIdList.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
+#include <vector>
 
 #include "compare/dataset_compare.hpp"
 
@@ -22,55 +15,54 @@ double value_difference(double x, double y) {
   return x == y ? 0.0 : std::abs(x - y);
 }
 
-void compare_arrays(vtkFieldData* fa, vtkFieldData* fb, const std::string& prefix, DatasetDifference& d) {
-  for (int i = 0; i < fa->GetNumberOfArrays(); ++i) {
-    vtkDataArray* a = fa->GetArray(i);
-    if (a == nullptr || a->GetName() == nullptr) continue;  // string arrays: not numeric data
-    vtkDataArray* b = fb->GetArray(a->GetName());
-    if (b == nullptr || b->GetNumberOfTuples() != a->GetNumberOfTuples() ||
-        b->GetNumberOfComponents() != a->GetNumberOfComponents()) {
+// Arrays are matched by name; string arrays and unnamed arrays are not numeric data
+// and are left out, as VTK's vtkFieldData::GetArray(name) would.
+const DataArray* numeric_named(const std::vector<DataArray>& arrays, const std::string& name) {
+  for (const DataArray& a : arrays)
+    if (a.numeric() && !a.name.empty() && a.name == name) return &a;
+  return nullptr;
+}
+
+void compare_arrays(const std::vector<DataArray>& fa, const std::vector<DataArray>& fb, const std::string& prefix,
+                    DatasetDifference& d) {
+  for (const DataArray& a : fa) {
+    if (!a.numeric() || a.name.empty()) continue;
+    const DataArray* b = numeric_named(fb, a.name);
+    if (b == nullptr || b->tuples() != a.tuples() || b->components != a.components) {
       ++d.missing_arrays;
       continue;
     }
     double worst = 0;
-    for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
-      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-        worst = std::max(worst, value_difference(a->GetComponent(t, c), b->GetComponent(t, c)));
-    d.array_max_abs[prefix + a->GetName()] = worst;
+    for (std::size_t i = 0; i < a.value_count; ++i) worst = std::max(worst, value_difference(a.value(i), b->value(i)));
+    d.array_max_abs[prefix + a.name] = worst;
     d.array_max_abs_all = std::max(d.array_max_abs_all, worst);
   }
-  for (int i = 0; i < fb->GetNumberOfArrays(); ++i) {
-    vtkDataArray* b = fb->GetArray(i);
-    if (b != nullptr && b->GetName() != nullptr && fa->GetArray(b->GetName()) == nullptr) ++d.missing_arrays;
-  }
+  for (const DataArray& b : fb)
+    if (b.numeric() && !b.name.empty() && numeric_named(fa, b.name) == nullptr) ++d.missing_arrays;
 }
 
 }  // namespace
 
-DatasetDifference dataset_difference(vtkDataSet* a, vtkDataSet* b) {
+DatasetDifference dataset_difference(const Dataset& a, const Dataset& b) {
   DatasetDifference d;
-  d.points_a = static_cast<std::size_t>(a->GetNumberOfPoints());
-  d.points_b = static_cast<std::size_t>(b->GetNumberOfPoints());
-  d.cells_a = static_cast<std::size_t>(a->GetNumberOfCells());
-  d.cells_b = static_cast<std::size_t>(b->GetNumberOfCells());
-  const vtkIdType points = std::min(a->GetNumberOfPoints(), b->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < points; ++i) {
-    double pa[3], pb[3];
-    a->GetPoint(i, pa);
-    b->GetPoint(i, pb);
+  d.points_a = a.point_count();
+  d.points_b = b.point_count();
+  d.cells_a = a.cell_count();
+  d.cells_b = b.cell_count();
+  const std::size_t points = std::min(d.points_a, d.points_b);
+  for (std::size_t i = 0; i < points; ++i) {
+    const auto pa = a.point(i), pb = b.point(i);
     for (int k = 0; k < 3; ++k) d.point_max_abs = std::max(d.point_max_abs, value_difference(pa[k], pb[k]));
   }
-  const vtkIdType cells = std::min(a->GetNumberOfCells(), b->GetNumberOfCells());
-  vtkNew<vtkIdList> ia, ib;
-  for (vtkIdType i = 0; i < cells; ++i) {
-    a->GetCellPoints(i, ia);
-    b->GetCellPoints(i, ib);
-    bool same = a->GetCellType(i) == b->GetCellType(i) && ia->GetNumberOfIds() == ib->GetNumberOfIds();
-    for (vtkIdType k = 0; same && k < ia->GetNumberOfIds(); ++k) same = ia->GetId(k) == ib->GetId(k);
-    if (!same) ++d.cell_diffs;
+  const std::size_t cells = std::min(d.cells_a, d.cells_b);
+  std::vector<int64_t> ia, ib;
+  for (std::size_t i = 0; i < cells; ++i) {
+    a.cell_points(i, ia);
+    b.cell_points(i, ib);
+    if (a.cell_type(i) != b.cell_type(i) || ia != ib) ++d.cell_diffs;
   }
-  if (d.points_a == d.points_b) compare_arrays(a->GetPointData(), b->GetPointData(), "point:", d);
-  if (d.cells_a == d.cells_b) compare_arrays(a->GetCellData(), b->GetCellData(), "cell:", d);
+  if (d.points_a == d.points_b) compare_arrays(a.point_data, b.point_data, "point:", d);
+  if (d.cells_a == d.cells_b) compare_arrays(a.cell_data, b.cell_data, "cell:", d);
   return d;
 }
 

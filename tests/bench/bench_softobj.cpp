@@ -1,5 +1,5 @@
 // softobj benchmarks (docs/softobj.md §6): shrink-wrap against the marching-cubes anchor
-// (VTK flying edges on the same field, vertices projected) at equal maximum deviation --
+// (fest's exact marching cubes on the same field, vertices projected) at equal maximum deviation --
 // the largest distance of a triangle centroid from the surface -- found by bisecting the
 // grid spacing; and the time of one default tongue frame. One JSON line per case.
 #include <chrono>

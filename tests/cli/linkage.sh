@@ -1,17 +1,12 @@
 #!/usr/bin/env bash
 # Start-up cost: no fest tool lists OpenCV's imgcodecs or videoio among its DT_NEEDED
 # entries (imgcodecs alone maps ~140 shared libraries: GDAL, gdcm, poppler, ffmpeg...;
-# videoio ~240: ffmpeg, GStreamer...; capture talks to V4L2 directly), and only the tools
-# named below still list GDAL or VTK. Issue 21 ("Batch speed: every tool starts in
-# milliseconds") moves GDAL and VTK into plugin libraries opened with dlopen when an
-# input needs them; each tool that gets there leaves KNOWN_HEAVY, and a tool that
-# gains a heavy link fails here.
+# videoio ~240: ffmpeg, GStreamer...; capture talks to V4L2 directly), and no tool lists
+# GDAL, VTK, libtiff or OpenEXR. Issue 21 ("Batch speed: every tool starts in
+# milliseconds") moved them into plugin modules opened with dlopen when an input needs
+# them (formats/plugin_loader.hpp); a tool that gains a heavy link fails here.
 source "$(dirname "$0")/lib.sh"
 command -v readelf >/dev/null || { echo "readelf not installed (binutils): skipped"; exit 77; }
-
-# Tools that still link VTK directly (issue 21: to move behind a dlopen plugin as GDAL
-# did, formats/dem/gdal_plugin.cpp).
-KNOWN_HEAVY=" fcompare fconv fluidsim isosurf lbmsim lemtrace lmfsim softobj volrender volwave "
 
 TOOLS_DIR="$(cd "$(dirname "$0")/../../tools" && pwd)"
 checked=0
@@ -25,15 +20,9 @@ for dir in "$TOOLS_DIR"/*/; do
   if grep -q '^libopencv_imgcodecs' <<<"$needed"; then fail "$tool needs libopencv_imgcodecs"; else pass; fi
   case_ "$tool: no libopencv_videoio in DT_NEEDED"
   if grep -q '^libopencv_videoio' <<<"$needed"; then fail "$tool needs libopencv_videoio"; else pass; fi
-  case_ "$tool: GDAL/VTK only where known"
-  heavy=$(grep -E '^lib(gdal|vtk)' <<<"$needed" | tr '\n' ' ')
-  if [ -n "$heavy" ] && [[ "$KNOWN_HEAVY" != *" $tool "* ]]; then
-    fail "$tool needs $heavy (load it from a plugin with dlopen instead)"
-  elif [ -z "$heavy" ] && [[ "$KNOWN_HEAVY" == *" $tool "* ]]; then
-    fail "$tool no longer needs GDAL or VTK: remove it from KNOWN_HEAVY"
-  else
-    pass
-  fi
+  case_ "$tool: GDAL, VTK, libtiff and OpenEXR only through plugins"
+  heavy=$(grep -E '^lib(gdal|vtk|tiff|OpenEXR)' <<<"$needed" | tr '\n' ' ')
+  if [ -n "$heavy" ]; then fail "$tool needs $heavy (load it from a plugin module instead)"; else pass; fi
 done
 case_ "some tools were checked"
 if [ "$checked" -gt 0 ]; then pass; else fail "no fest executables found in $FEST_BIN"; fi

@@ -24,6 +24,7 @@
 #include "core/file_io.hpp"
 #include "core/tool_main.hpp"
 #include "formats/dataset/dataset_io.hpp"
+#include "formats/dataset/vtk_convert.hpp"
 #include "formats/input.hpp"
 
 int main(int argc, char** argv) {
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
       if (colon == std::string::npos) throw fest::usage_error("{}: expected FILE.vtp:SCALAR", arg);
       const std::string file = arg.substr(0, colon), name = arg.substr(colon + 1);
       const fest::formats::Input in = fest::formats::load_input(file);
-      vtkSmartPointer<vtkDataSet> ds = fest::formats::parse(in, fest::formats::read_dataset);
+      vtkSmartPointer<vtkDataSet> ds = fest::formats::to_vtk(fest::formats::parse(in, fest::formats::read_dataset));
       auto* poly = vtkPolyData::SafeDownCast(ds);
       if (!poly || poly->GetNumberOfPoints() == 0) throw fest::bad_input("{}: no polygon data", file);
       vtkDataArray* s = poly->GetPointData()->GetArray(name.c_str());

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "formats/dataset/dataset_io.hpp"
+#include "test_dataset_vtk_adapter.hpp"
 #include "lib/core/error.hpp"
 #include "test_dataset_samples.hpp"
 

@@ -9,7 +9,7 @@
 #include <vtkPointData.h>
 #include <vtkCellData.h>
 
-#include "formats/dataset/dataset_io.hpp"
+#include "test_dataset_vtk_adapter.hpp"
 #include "testdata.hpp"
 
 namespace fest::formats {
@@ -18,7 +18,7 @@ namespace {
 TEST(DatasetFixture, RotatingTetsHoldsTheRotationField) {
   std::string bytes = test::slurp(test::fixture("dataset/rotating_tets.vtu"));
   ASSERT_FALSE(bytes.empty());
-  vtkSmartPointer<vtkDataSet> grid = read_dataset(bytes, Format::vtu);
+  vtkSmartPointer<vtkDataSet> grid = read_vtk(bytes, Format::vtu);
   ASSERT_EQ(grid->GetNumberOfPoints(), 5);
   ASSERT_EQ(grid->GetNumberOfCells(), 2);
   const vtkIdType tets[2][4] = {{0, 1, 2, 3}, {1, 2, 3, 4}};
@@ -46,11 +46,11 @@ TEST(DatasetFixture, RotatingTetsHoldsTheRotationField) {
 }
 
 TEST(DatasetFixture, RotatingTetsConvertsToLegacyAndBack) {
-  vtkSmartPointer<vtkDataSet> grid = read_dataset(test::slurp(test::fixture("dataset/rotating_tets.vtu")), Format::vtu);
+  vtkSmartPointer<vtkDataSet> grid = read_vtk(test::slurp(test::fixture("dataset/rotating_tets.vtu")), Format::vtu);
   for (bool ascii : {true, false}) {
     DatasetWriteOptions options;
     options.ascii = ascii;
-    vtkSmartPointer<vtkDataSet> back = read_dataset(write_dataset(grid, Format::vtk, options), Format::vtk);
+    vtkSmartPointer<vtkDataSet> back = read_vtk(write_dataset(grid, Format::vtk, options), Format::vtk);
     EXPECT_EQ(back->GetNumberOfCells(), 2);
     EXPECT_EQ(back->GetPointData()->GetArray("velocity")->GetComponent(4, 0), -1.0);
   }

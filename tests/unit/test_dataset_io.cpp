@@ -12,7 +12,7 @@
 #include <vtkUnstructuredGridWriter.h>
 #include <vtkPolyData.h>
 
-#include "formats/dataset/dataset_io.hpp"
+#include "test_dataset_vtk_adapter.hpp"
 #include "lib/core/error.hpp"
 #include "test_dataset_samples.hpp"
 
@@ -44,7 +44,7 @@ TEST_P(DatasetRoundTrip, ReadsBackWhatItWrote) {
   testing::internal::CaptureStderr();
   testing::internal::CaptureStdout();
   std::string bytes = write_dataset(original, c.format, options);
-  vtkSmartPointer<vtkDataSet> back = read_dataset(bytes, c.format);
+  vtkSmartPointer<vtkDataSet> back = read_vtk(bytes, c.format);
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
   ASSERT_FALSE(bytes.empty());
@@ -59,7 +59,7 @@ TEST_P(DatasetRoundTrip, WritingIsDeterministic) {
   std::string second = write_dataset(c.make(), c.format, options);
   EXPECT_EQ(first, second);
   // And what was read back writes the same bytes again.
-  std::string again = write_dataset(read_dataset(first, c.format), c.format, options);
+  std::string again = write_dataset(read_vtk(first, c.format), c.format, options);
   EXPECT_EQ(first, again);
 }
 
@@ -124,7 +124,7 @@ TEST(DatasetRoundTrip, ReadsLegacyVersion42Files) {
       vtkSmartPointer<vtkDataSet> original = make();
       std::string bytes = write_version_42(original, ascii);
       ASSERT_EQ(bytes.rfind("# vtk DataFile Version 4.2", 0), 0u);
-      test::expect_same_dataset(original, read_dataset(bytes, Format::vtk));
+      test::expect_same_dataset(original, read_vtk(bytes, Format::vtk));
     }
   }
 }
@@ -143,30 +143,30 @@ TEST(DatasetRoundTrip, ArraysNamedLikeKeywords) {
     for (bool ascii : {true, false}) {
       DatasetWriteOptions options;
       options.ascii = ascii;
-      test::expect_same_dataset(original, read_dataset(write_dataset(original, Format::vtk, options), Format::vtk));
-      test::expect_same_dataset(original, read_dataset(write_version_42(original, ascii), Format::vtk));
+      test::expect_same_dataset(original, read_vtk(write_dataset(original, Format::vtk, options), Format::vtk));
+      test::expect_same_dataset(original, read_vtk(write_version_42(original, ascii), Format::vtk));
     }
   }
 }
 
 TEST(DatasetRoundTrip, ReadsTheRightTypeBack) {
-  EXPECT_TRUE(read_dataset(write_dataset(test::make_tets(), Format::vtk), Format::vtk)->IsA("vtkUnstructuredGrid"));
-  EXPECT_TRUE(read_dataset(write_dataset(test::make_poly(), Format::vtk), Format::vtk)->IsA("vtkPolyData"));
-  EXPECT_TRUE(read_dataset(write_dataset(test::make_image(), Format::vtk), Format::vtk)->IsA("vtkImageData"));
-  EXPECT_TRUE(read_dataset(write_dataset(structured(), Format::vtk), Format::vtk)->IsA("vtkStructuredGrid"));
-  EXPECT_TRUE(read_dataset(write_dataset(rectilinear(), Format::vtk), Format::vtk)->IsA("vtkRectilinearGrid"));
-  EXPECT_STREQ(read_dataset(write_dataset(test::make_image(), Format::vti), Format::vti)->GetClassName(), "vtkImageData");
+  EXPECT_TRUE(read_vtk(write_dataset(test::make_tets(), Format::vtk), Format::vtk)->IsA("vtkUnstructuredGrid"));
+  EXPECT_TRUE(read_vtk(write_dataset(test::make_poly(), Format::vtk), Format::vtk)->IsA("vtkPolyData"));
+  EXPECT_TRUE(read_vtk(write_dataset(test::make_image(), Format::vtk), Format::vtk)->IsA("vtkImageData"));
+  EXPECT_TRUE(read_vtk(write_dataset(structured(), Format::vtk), Format::vtk)->IsA("vtkStructuredGrid"));
+  EXPECT_TRUE(read_vtk(write_dataset(rectilinear(), Format::vtk), Format::vtk)->IsA("vtkRectilinearGrid"));
+  EXPECT_STREQ(read_vtk(write_dataset(test::make_image(), Format::vti), Format::vti)->GetClassName(), "vtkImageData");
 }
 
 TEST(DatasetRoundTrip, EmptyDatasetsSurvive) {
   auto empty_grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   for (Format f : {Format::vtu, Format::vtk}) {
-    vtkSmartPointer<vtkDataSet> back = read_dataset(write_dataset(empty_grid, f), f);
+    vtkSmartPointer<vtkDataSet> back = read_vtk(write_dataset(empty_grid, f), f);
     EXPECT_EQ(back->GetNumberOfPoints(), 0);
     EXPECT_EQ(back->GetNumberOfCells(), 0);
   }
   auto empty_poly = vtkSmartPointer<vtkPolyData>::New();
-  vtkSmartPointer<vtkDataSet> back = read_dataset(write_dataset(empty_poly, Format::vtp), Format::vtp);
+  vtkSmartPointer<vtkDataSet> back = read_vtk(write_dataset(empty_poly, Format::vtp), Format::vtp);
   EXPECT_EQ(back->GetNumberOfPoints(), 0);
 }
 
@@ -193,7 +193,7 @@ TEST(DatasetWrite, RefusesTypesTheFormatCannotHold) {
 
 TEST(DatasetWrite, RefusesFormatsThatAreNotDatasets) {
   EXPECT_THROW(write_dataset(test::make_tets(), Format::ply), Error);
-  EXPECT_THROW(read_dataset("x", Format::png), Error);
+  EXPECT_THROW(read_vtk("x", Format::png), Error);
 }
 
 }  // namespace

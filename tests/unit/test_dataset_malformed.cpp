@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "formats/dataset/dataset_io.hpp"
+#include "test_dataset_vtk_adapter.hpp"
 #include "lib/core/error.hpp"
 #include "test_dataset_samples.hpp"
 #include "testdata.hpp"
@@ -31,7 +31,7 @@ void expect_rejected(const std::string& bytes, Format format, const std::string&
   std::string message;
   bool threw = false;
   try {
-    read_dataset(bytes, format);
+    read_vtk(bytes, format);
   } catch (const Error& e) {
     threw = true;
     message = e.what();
@@ -88,7 +88,7 @@ TEST(DatasetMalformed, EveryPrefixOfAFileIsHandled) {
       testing::internal::CaptureStderr();
       for (size_t cut = 0; cut < full.size(); ++cut) {
         try {
-          vtkSmartPointer<vtkDataSet> d = read_dataset(full.substr(0, cut), f);
+          vtkSmartPointer<vtkDataSet> d = read_vtk(full.substr(0, cut), f);
           if (f == Format::vtu) {
             EXPECT_EQ(d->GetNumberOfCells(), 6) << "prefix " << cut;
           } else {
@@ -159,7 +159,7 @@ std::string one_tet_vtu(const std::string& connectivity, const std::string& offs
 }
 
 TEST(DatasetMalformed, XmlCellsThatDoNotAddUp) {
-  EXPECT_NO_THROW(read_dataset(one_tet_vtu("0 1 2 3", "4", "10"), Format::vtu));
+  EXPECT_NO_THROW(read_vtk(one_tet_vtu("0 1 2 3", "4", "10"), Format::vtu));
   expect_rejected(one_tet_vtu("0 1 2 9", "4", "10"), Format::vtu, "point 9");
   expect_rejected(one_tet_vtu("0 1 2 -1", "4", "10"), Format::vtu);
   expect_rejected(one_tet_vtu("0 1 2", "3", "10"), Format::vtu, "points instead of 4");
@@ -190,7 +190,7 @@ TEST(DatasetMalformed, LegacyPointCountBeyondTheData) {
 TEST(DatasetMalformed, LegacyCellListsThatDoNotAddUp) {
   const std::string points = "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n";
   // A valid file first, so the rejections below are about the one thing changed.
-  EXPECT_NO_THROW(read_dataset(kLegacyUgHead + points + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n", Format::vtk));
+  EXPECT_NO_THROW(read_vtk(kLegacyUgHead + points + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n", Format::vtk));
   // A cell claims 100 points in a list of 5 values: VTK would write past its buffer.
   expect_rejected(kLegacyUgHead + points + "CELLS 1 5\n100 0 1 2 3\nCELL_TYPES 1\n10\n", Format::vtk, "overruns");
   expect_rejected(kLegacyUgHead + points + "CELLS 1 6\n4 0 1 2 3 3\nCELL_TYPES 1\n10\n", Format::vtk, "values of");
@@ -224,7 +224,7 @@ TEST(DatasetMalformed, LegacyAsciiValueThatIsNotANumber) {
                   Format::vtk, "not a number");
   expect_rejected(head + "POINT_DATA 2\nSCALARS a int\nLOOKUP_TABLE default\n1 2.5\n", Format::vtk, "not a number");
   expect_rejected(head + "POINT_DATA 2\nSCALARS a float\nLOOKUP_TABLE default\n1 2x\n", Format::vtk, "not a number");
-  EXPECT_NO_THROW(read_dataset(head + "POINT_DATA 2\nSCALARS a float\nLOOKUP_TABLE default\n-1.5e+3 .25\n", Format::vtk));
+  EXPECT_NO_THROW(read_vtk(head + "POINT_DATA 2\nSCALARS a float\nLOOKUP_TABLE default\n-1.5e+3 .25\n", Format::vtk));
 }
 
 TEST(DatasetMalformed, LegacyGridWithoutDimensionsFirst) {
@@ -291,7 +291,7 @@ TEST(DatasetMalformed, MutatedFilesFailCleanly) {
           std::ofstream(dump, std::ios::binary | std::ios::trunc) << bytes;
         }
         try {
-          read_dataset(bytes, seed.format);
+          read_vtk(bytes, seed.format);
         } catch (const Error& e) {
           EXPECT_EQ(e.status(), Status::bad_input) << e.what();
         }

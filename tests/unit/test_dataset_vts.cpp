@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "formats/dataset/dataset_io.hpp"
+#include "test_dataset_vtk_adapter.hpp"
 #include "formats/detect.hpp"
 #include "lib/core/error.hpp"
 #include "test_dataset_samples.hpp"
@@ -26,7 +26,7 @@ TEST(DatasetVts, TruncatedFileIsBadInput) {
   // last appended array is not caught: vtkXMLStructuredGridReader reports nothing.)
   for (std::size_t keep : {std::size_t{200}, bytes.size() / 2, bytes.find("<AppendedData") + 40}) {
     try {
-      read_dataset(bytes.substr(0, keep), Format::vts);
+      read_vtk(bytes.substr(0, keep), Format::vts);
       ADD_FAILURE() << "a .vts cut at " << keep << " bytes was accepted";
     } catch (const Error& e) {
       EXPECT_EQ(e.status(), Status::bad_input);

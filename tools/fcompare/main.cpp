@@ -10,7 +10,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli.hpp"
-#include <vtkDataSet.h>
 
 #include "compare/checks.hpp"
 #include "compare/dataset_compare.hpp"
@@ -195,7 +194,7 @@ void compare_datasets(const Input& ia, const Input& ib, const Options& opt, Metr
   nlohmann::json arrays = nlohmann::json::object();
   for (const auto& [name, value] : d.array_max_abs) arrays[name] = compare::json_number(value);
   m.details["arrays"] = arrays;
-  m.details["dataset_type"] = {a->GetClassName(), b->GetClassName()};
+  m.details["dataset_type"] = {a.class_name(), b.class_name()};
   for (const char* k : {"point_count_diff", "cell_count_diff", "cell_diffs", "missing_arrays"}) m.require(k, "<=", 0);
   require_main(m, "point_max_abs", opt);
   require_main(m, "max_abs", opt);

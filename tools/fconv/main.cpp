@@ -9,7 +9,6 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <vtkDataSet.h>
 
 #include "cli/cli.hpp"
 #include "core/error.hpp"

@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <vtkDataArray.h>
-#include <vtkDataSet.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -81,9 +77,8 @@ std::vector<Frame> load_frames(const std::string& path) {
     f.data = v.voxels;
   } else if (in.format == formats::Format::vti) {
     // VTK image data as fluidsim writes it: every point array becomes a field.
-    vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
-    auto* img = vtkImageData::SafeDownCast(ds);
-    if (!img) throw bad_input("VTI input holds no image data ({})", where);
+    const Dataset img = formats::parse(in, formats::read_dataset);
+    if (img.kind != DatasetKind::image) throw bad_input("VTI input holds no image data ({})", where);
     read_image_data_frame(img, f, UnnamedArrays::name_by_index);
     if (f.fields.empty()) throw bad_input("VTI input has no point arrays ({})", where);
   } else if (in.format == formats::Format::pfm || in.format == formats::Format::exr) {

@@ -10,11 +10,6 @@
 #include <omp.h>
 
 #include <nlohmann/json.hpp>
-#include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -63,28 +58,24 @@ Scene load_scene(const std::string& path) {
   return parse_scene(doc, where);
 }
 
-vtkSmartPointer<vtkImageData> frame_to_vti(const Frame& f, bool float64) {
-  auto img = vtkSmartPointer<vtkImageData>::New();
-  img->SetDimensions(f.size[0], f.size[1], f.size[2]);
-  img->SetSpacing(f.spacing, f.spacing, f.spacing);
-  img->SetOrigin(0, 0, 0);
+Dataset frame_to_vti(const Frame& f, bool float64) {
+  Dataset img = Dataset::image_data({f.size[0], f.size[1], f.size[2]}, {f.spacing, f.spacing, f.spacing}, {0, 0, 0});
   const int C = f.channels();
   int c0 = 0;
+  bool have_scalars = false;
   for (const FrameField& ff : f.fields) {
-    vtkSmartPointer<vtkDataArray> arr;
-    if (float64)
-      arr = vtkSmartPointer<vtkDoubleArray>::New();
-    else
-      arr = vtkSmartPointer<vtkFloatArray>::New();
-    arr->SetName(ff.name.c_str());
-    arr->SetNumberOfComponents(ff.components);
-    arr->SetNumberOfTuples(static_cast<vtkIdType>(f.nodes()));
+    std::vector<double> values(f.nodes() * std::size_t(ff.components));
     for (std::size_t n = 0; n < f.nodes(); ++n)
-      for (int k = 0; k < ff.components; ++k)
-        arr->SetComponent(static_cast<vtkIdType>(n), k, f.data[n * C + c0 + k]);
-    img->GetPointData()->AddArray(arr);
-    if (ff.name == "velocity") img->GetPointData()->SetActiveVectors("velocity");
-    if (ff.components == 1 && !img->GetPointData()->GetScalars()) img->GetPointData()->SetActiveScalars(ff.name.c_str());
+      for (int k = 0; k < ff.components; ++k) values[n * std::size_t(ff.components) + std::size_t(k)] = f.data[n * C + c0 + k];
+    DataArray arr = DataArray::from_doubles(ff.name, ff.components, values, float64 ? vtk_type::double_ : vtk_type::float_);
+    // Active vectors: velocity; active scalars: the first one-component field.
+    if (ff.name == "velocity" && ff.components == 3) {
+      arr.attribute = 1;
+    } else if (ff.components == 1 && !have_scalars) {
+      arr.attribute = 0;
+      have_scalars = true;
+    }
+    img.point_data.push_back(std::move(arr));
     c0 += ff.components;
   }
   return img;
@@ -120,9 +111,8 @@ State read_init_file(const std::string& path, const Layout& layout, const std::v
   } else {
     const formats::Input in = formats::recognise(std::string(bytes), path);
     if (in.format != formats::Format::vti) throw bad_input("init file must be a .vti or an NRRD frame ({})", path);
-    vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
-    auto* img = vtkImageData::SafeDownCast(ds);
-    if (!img) throw bad_input("init file holds no image data ({})", path);
+    const Dataset img = formats::parse(in, formats::read_dataset);
+    if (img.kind != DatasetKind::image) throw bad_input("init file holds no image data ({})", path);
     read_image_data_frame(img, f, UnnamedArrays::skip);
   }
   if (f.size != layout.size)

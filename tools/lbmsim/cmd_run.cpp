@@ -11,10 +11,6 @@
 #include <omp.h>
 
 #include <nlohmann/json.hpp>
-#include <vtkDataArray.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
 
 #include "case_loader.hpp"
 #include "comm.hpp"
@@ -111,24 +107,28 @@ void read_init_file(const lbm::Case& c, const std::string& where, std::vector<do
   }
   const formats::Input in = formats::load_input(path);
   if (in.format != formats::Format::vti) throw bad_input("init.file must be a .vti ({})", path);
-  vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
-  auto* img = vtkImageData::SafeDownCast(ds);
-  if (!img) throw bad_input("init.file holds no image data ({})", path);
-  int dims[3];
-  img->GetDimensions(dims);
+  const Dataset img = formats::parse(in, formats::read_dataset);
+  if (img.kind != DatasetKind::image) throw bad_input("init.file holds no image data ({})", path);
+  const auto dims = img.dimensions();
   if (dims[0] != c.size[0] || dims[1] != c.size[1] || dims[2] != c.size[2])
     throw bad_input("init.file is {}x{}x{} but size is {}x{}x{} ({})", dims[0], dims[1], dims[2], c.size[0], c.size[1],
                     c.size[2], path);
-  vtkDataArray* v = img->GetPointData()->GetArray("velocity");
-  if (!v || v->GetNumberOfComponents() != 3) throw bad_input("init.file has no 3-component \"velocity\" array ({})", path);
-  vtkDataArray* d = img->GetPointData()->GetArray("density");
+  // The first numeric point array of that name, as VTK's GetArray(name) finds it.
+  auto numeric_array = [&img](const char* name) -> const DataArray* {
+    for (const DataArray& a : img.point_data)
+      if (a.name == name) return a.numeric() ? &a : nullptr;
+    return nullptr;
+  };
+  const DataArray* v = numeric_array("velocity");
+  if (!v || v->components != 3) throw bad_input("init.file has no 3-component \"velocity\" array ({})", path);
+  const DataArray* d = numeric_array("density");
   const std::size_t N = c.cells();
   const double scale = c.units.physical ? c.units.dt() / c.units.dx : 1.0;
   rho.assign(N, c.init.rho);
   u.assign(3 * N, 0.0);
   for (std::size_t k = 0; k < N; ++k) {
-    for (int a = 0; a < 3; ++a) u[3 * k + a] = v->GetComponent(static_cast<vtkIdType>(k), a) * scale;
-    if (d) rho[k] = d->GetComponent(static_cast<vtkIdType>(k), 0);
+    for (int a = 0; a < 3; ++a) u[3 * k + a] = v->component(k, a) * scale;
+    if (d) rho[k] = d->component(k, 0);
     if (!std::isfinite(rho[k]) || !(rho[k] > 0) || !std::isfinite(u[3 * k]) || !std::isfinite(u[3 * k + 1]) ||
         !std::isfinite(u[3 * k + 2]))
       throw bad_input("init.file holds a non-finite or non-positive value at node {} ({})", k, path);

@@ -4,11 +4,6 @@
 #include <cstdio>
 #include <regex>
 
-#include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
 
 #include "core/error.hpp"
 #include "fluidsim/frame.hpp"
@@ -18,24 +13,19 @@
 namespace fest::lbmsim {
 
 std::string encode_vti(const FieldFrame& f, bool float64, bool zlib) {
-  auto img = vtkSmartPointer<vtkImageData>::New();
-  img->SetDimensions(f.size[0], f.size[1], f.size[2]);
-  img->SetSpacing(f.spacing, f.spacing, f.spacing);
-  img->SetOrigin(0, 0, 0);
-  const std::size_t N = static_cast<std::size_t>(f.size[0]) * f.size[1] * f.size[2];
+  Dataset img = Dataset::image_data({f.size[0], f.size[1], f.size[2]}, {f.spacing, f.spacing, f.spacing}, {0, 0, 0});
+  bool have_scalars = false;
   for (const lbm::Field& field : f.fields) {
-    vtkSmartPointer<vtkDataArray> arr;
-    if (float64) arr = vtkSmartPointer<vtkDoubleArray>::New();
-    else arr = vtkSmartPointer<vtkFloatArray>::New();
-    arr->SetName(field.name.c_str());
-    arr->SetNumberOfComponents(field.components);
-    arr->SetNumberOfTuples(static_cast<vtkIdType>(N));
-    for (std::size_t n = 0; n < N; ++n)
-      for (int k = 0; k < field.components; ++k)
-        arr->SetComponent(static_cast<vtkIdType>(n), k, field.values[n * field.components + k]);
-    img->GetPointData()->AddArray(arr);
-    if (field.name == "velocity") img->GetPointData()->SetActiveVectors("velocity");
-    if (field.components == 1 && !img->GetPointData()->GetScalars()) img->GetPointData()->SetActiveScalars(field.name.c_str());
+    DataArray arr = DataArray::from_doubles(field.name, field.components, field.values,
+                                            float64 ? vtk_type::double_ : vtk_type::float_);
+    // Active vectors: velocity; active scalars: the first one-component field.
+    if (field.name == "velocity" && field.components == 3) {
+      arr.attribute = 1;
+    } else if (field.components == 1 && !have_scalars) {
+      arr.attribute = 0;
+      have_scalars = true;
+    }
+    img.point_data.push_back(std::move(arr));
   }
   formats::DatasetWriteOptions o;
   o.zlib = zlib;

@@ -12,9 +12,6 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <vtkDataSet.h>
-#include <vtkPolyData.h>
-#include <vtkUnstructuredGrid.h>
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -24,13 +21,8 @@
 #include "formats/input.hpp"
 #include "formats/mesh/indexed_ply.hpp"
 #include "lemtrace/probes.hpp"
-#include <vtkCellArray.h>
-#include <vtkDataArray.h>
-#include <vtkFloatArray.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include "formats/table/table_io.hpp"
-#include "vtk_bridge.hpp"
+#include "dataset_bridge.hpp"
 
 namespace fest::lemtrace_tool {
 namespace {
@@ -61,12 +53,12 @@ Loaded load_grid(const GridArgs& a, bool force_all) {
   if (formats::kind_of(in.format) != formats::Kind::dataset)
     throw bad_input("{}", with_location(fmt::format("the grid is a {} file, not a VTK dataset",
                                                     formats::format_name(in.format)), in.name));
-  vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+  Dataset ds = formats::parse(in, formats::read_dataset);
   out.read_s = seconds_since(t0);
   t0 = Clock::now();
   try {
     out.source = grid_from_dataset(ds, a.vectors);
-    ds = nullptr;
+    ds = Dataset();  // the grid's memory is not needed while the mesh is built
     BuildOptions bo;
     bo.split = a.split == "conforming";
     TetMesh mesh = build_tet_mesh(out.source.points, out.source.vectors, out.source.cells, bo, &out.report);
@@ -138,7 +130,7 @@ Seeds load_seeds(const TraceArgs& a) {
                    ct == Table::npos ? 0.0 : table.columns[ct][r],
                    cid == Table::npos ? static_cast<double>(r) : table.columns[cid][r]);
       } else if (kind == formats::Kind::dataset) {
-        vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
+        const Dataset ds = formats::parse(in, formats::read_dataset);
         for (const Vec3& p : points_of(ds)) add_seed(s, p, 0.0, static_cast<double>(s.x.size()));
       } else {
         throw bad_input("{}", with_location(fmt::format("seeds must be CSV or VTK points, not {}",
@@ -274,7 +266,7 @@ int run_trace(const TraceArgs& a) {
     bytes = write_json_lines(lines, seeds);
   } else {
     LineSet set{&lines, &seeds.id, a.command_line};
-    vtkSmartPointer<vtkPolyData> poly = polylines_to_dataset(grid, set);
+    const Dataset poly = polylines_to_dataset(grid, set);
     bytes = formats::write_dataset(poly, to == "vtp" ? formats::Format::vtp : formats::Format::vtk);
   }
 
@@ -358,7 +350,7 @@ int run_classify(const ClassifyArgs& a) {
     }
   }
   if (!a.output.empty()) {
-    vtkSmartPointer<vtkUnstructuredGrid> ug = classified_dataset(grid, records);
+    const Dataset ug = classified_dataset(grid, records);
     const formats::OutputFormat of = formats::output_format_from_path(a.output);
     if (of.format != formats::Format::vtu && of.format != formats::Format::vtk)
       throw usage_error("classify -o writes .vtu or .vtk, not '{}'", a.output);
@@ -496,7 +488,7 @@ int run_gen(const GenArgs& a) {
   o.seed = a.seed;
   o.hex = a.hex;
   const GeneratedGrid g = generate(o);
-  vtkSmartPointer<vtkUnstructuredGrid> ug = dataset_from_generated(g, a.kind);
+  const Dataset ug = dataset_from_generated(g, a.kind);
   write_output(a.output, formats::write_dataset(ug, to == "vtu" ? formats::Format::vtu : formats::Format::vtk));
   return 0;
 }
@@ -522,38 +514,42 @@ struct PointArray {
 
 PointArray point_array(const std::string& path, const std::string& name) {
   const formats::Input in = formats::load_input(path);
-  vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
-  vtkDataArray* arr = ds->GetPointData()->GetArray(name.c_str());
+  const Dataset ds = formats::parse(in, formats::read_dataset);
+  // vtkFieldData::GetArray(name): the first array of that name, when it is numeric.
+  const DataArray* arr = nullptr;
+  for (const DataArray& candidate : ds.point_data)
+    if (candidate.name == name) {
+      if (candidate.numeric()) arr = &candidate;
+      break;
+    }
   if (!arr) throw bad_input("{}", with_location(fmt::format("no point array '{}' to colour by", name), in.name));
-  if (arr->GetNumberOfComponents() != 1)
+  if (arr->components != 1)
     throw bad_input("{}", with_location(fmt::format("point array '{}' has {} components; colour by a scalar", name,
-                                                    arr->GetNumberOfComponents()), in.name));
+                                                    arr->components), in.name));
   PointArray out;
-  out.values.resize(static_cast<std::size_t>(arr->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < arr->GetNumberOfTuples(); ++i) out.values[static_cast<std::size_t>(i)] = arr->GetComponent(i, 0);
+  out.values.resize(arr->tuples());
+  for (std::size_t i = 0; i < arr->tuples(); ++i) out.values[i] = arr->component(i, 0);
   return out;
 }
 
-vtkSmartPointer<vtkPolyData> probe_dataset(const ProbeMesh& mesh) {
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (std::size_t i = 0; i < mesh.points.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]);
-  poly->SetPoints(points);
-  auto tris = vtkSmartPointer<vtkCellArray>::New();
+Dataset probe_dataset(const ProbeMesh& mesh) {
+  Dataset poly;
+  poly.kind = DatasetKind::polydata;
+  poly.has_points = true;
+  std::vector<float> xyz;
+  xyz.reserve(3 * mesh.points.size());
+  for (const auto& p : mesh.points)
+    for (int k = 0; k < 3; ++k) xyz.push_back(static_cast<float>(p[k]));
+  poly.points = DataArray::from_floats("Points", 3, xyz);
   for (const auto& t : mesh.triangles) {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    tris->InsertNextCell(3, ids);
+    const int64_t ids[3] = {t[0], t[1], t[2]};
+    poly.polys.push_back(ids, 3);
   }
-  poly->SetPolys(tris);
   for (std::size_t k = 0; k < mesh.scalars.size(); ++k) {
-    auto a = vtkSmartPointer<vtkFloatArray>::New();
-    a->SetName(mesh.scalar_names[k].c_str());
-    a->SetNumberOfValues(static_cast<vtkIdType>(mesh.points.size()));
-    for (std::size_t i = 0; i < mesh.points.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), static_cast<float>(mesh.scalars[k][i]));
-    poly->GetPointData()->AddArray(a);
+    std::vector<float> values;
+    values.reserve(mesh.points.size());
+    for (std::size_t i = 0; i < mesh.points.size(); ++i) values.push_back(static_cast<float>(mesh.scalars[k][i]));
+    poly.point_data.push_back(DataArray::from_floats(mesh.scalar_names[k], 1, values));
   }
   return poly;
 }

@@ -5,12 +5,6 @@
 #include <map>
 
 #include <fmt/format.h>
-#include <vtkCellArray.h>
-#include <vtkIntArray.h>
-#include <vtkCellData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -151,21 +145,19 @@ int cmd_export(const ExportOptions& opt) {
     }
     const std::string stem = fmt::format("frame_{:06d}", f);
     if (!opt.vtk.empty()) {
-      auto points = vtkSmartPointer<vtkPoints>::New();
-      points->SetDataTypeToDouble();
-      for (const Vec3& v : verts) points->InsertNextPoint(v.x(), v.y(), v.z());
-      auto cells = vtkSmartPointer<vtkCellArray>::New();
+      fest::Dataset poly;
+      poly.kind = fest::DatasetKind::polydata;
+      poly.has_points = true;
+      std::vector<double> xyz;
+      xyz.reserve(3 * verts.size());
+      for (const Vec3& v : verts) xyz.insert(xyz.end(), {v.x(), v.y(), v.z()});
+      poly.points = fest::DataArray::from_doubles("Points", 3, xyz);
       for (const auto& t : tris) {
-        const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
+        const int64_t ids[3] = {t[0], t[1], t[2]};
+        poly.polys.push_back(ids, 3);
       }
-      auto body = vtkSmartPointer<vtkIntArray>::New();
-      body->SetName("body");
-      for (int b : tri_body) body->InsertNextValue(b);
-      auto poly = vtkSmartPointer<vtkPolyData>::New();
-      poly->SetPoints(points);
-      poly->SetPolys(cells);
-      poly->GetCellData()->AddArray(body);
+      poly.cell_data.push_back(fest::DataArray::from_ints("body", 1, std::vector<int64_t>(tri_body.begin(), tri_body.end()),
+                                                          fest::vtk_type::int_));
       fest::write_output(dir + "/" + stem + ".vtp", fest::formats::write_dataset(poly, fest::formats::Format::vtp));
       pvd += fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}.vtp\"/>\n", frames[f].first, stem);
     } else {

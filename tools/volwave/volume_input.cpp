@@ -3,10 +3,6 @@
 #include <string_view>
 #include <vector>
 
-#include <vtkDataArray.h>
-#include <vtkDataSet.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -93,39 +89,35 @@ Volume from_frame_stream(const std::string& bytes, const InputSelect& sel, const
   return v;
 }
 
-Volume from_image_data(vtkImageData* img, const InputSelect& sel, const std::string& where) {
-  int d[3];
-  img->GetDimensions(d);
-  vtkPointData* pd = img->GetPointData();
+Volume from_image_data(const Dataset& img, const InputSelect& sel, const std::string& where) {
+  const auto d = img.dimensions();
   std::vector<Candidate> cands;
-  std::vector<vtkDataArray*> arrays;
-  for (int a = 0; a < pd->GetNumberOfArrays(); ++a) {
-    vtkDataArray* arr = pd->GetArray(a);
-    if (!arr) continue;
-    cands.push_back({arr->GetName() ? arr->GetName() : fmt::format("array{}", a), arr->GetNumberOfComponents()});
-    arrays.push_back(arr);
+  std::vector<const DataArray*> arrays;
+  for (std::size_t a = 0; a < img.point_data.size(); ++a) {
+    const DataArray& arr = img.point_data[a];
+    if (!arr.numeric()) continue;  // string arrays hold no samples
+    cands.push_back({arr.name.empty() ? fmt::format("array{}", a) : arr.name, arr.components});
+    arrays.push_back(&arr);
   }
   const auto [idx, comp] = choose(cands, sel.field, where);
-  vtkDataArray* arr = arrays[idx];
+  const DataArray* arr = arrays[idx];
   Volume v;
   v.resize(static_cast<std::size_t>(d[0]), static_cast<std::size_t>(d[1]), static_cast<std::size_t>(d[2]));
-  const double* sp = img->GetSpacing();
-  const double* org = img->GetOrigin();
-  v.spacing = {sp[0], sp[1], sp[2]};
-  v.origin = {org[0], org[1], org[2]};
-  switch (arr->GetDataType()) {
-    case VTK_UNSIGNED_CHAR: v.type = ScalarType::u8; break;
-    case VTK_SIGNED_CHAR: case VTK_CHAR: v.type = ScalarType::i8; break;
-    case VTK_UNSIGNED_SHORT: v.type = ScalarType::u16; break;
-    case VTK_SHORT: v.type = ScalarType::i16; break;
-    case VTK_UNSIGNED_INT: v.type = ScalarType::u32; break;
-    case VTK_INT: v.type = ScalarType::i32; break;
-    case VTK_FLOAT: v.type = ScalarType::f32; break;
+  v.spacing = {img.spacing[0], img.spacing[1], img.spacing[2]};
+  v.origin = {img.origin[0], img.origin[1], img.origin[2]};
+  switch (arr->type) {
+    case vtk_type::unsigned_char: v.type = ScalarType::u8; break;
+    case vtk_type::signed_char: case vtk_type::char_: v.type = ScalarType::i8; break;
+    case vtk_type::unsigned_short: v.type = ScalarType::u16; break;
+    case vtk_type::short_: v.type = ScalarType::i16; break;
+    case vtk_type::unsigned_int: v.type = ScalarType::u32; break;
+    case vtk_type::int_: v.type = ScalarType::i32; break;
+    case vtk_type::float_: v.type = ScalarType::f32; break;
     default: v.type = ScalarType::f64; break;
   }
-  if (static_cast<std::size_t>(arr->GetNumberOfTuples()) != v.size())
-    throw bad_input("array {} has {} values for {} points ({})", cands[idx].name, arr->GetNumberOfTuples(), v.size(), where);
-  for (std::size_t i = 0; i < v.size(); ++i) v.voxels[i] = arr->GetComponent(static_cast<vtkIdType>(i), comp);
+  if (arr->tuples() != v.size())
+    throw bad_input("array {} has {} values for {} points ({})", cands[idx].name, arr->tuples(), v.size(), where);
+  for (std::size_t i = 0; i < v.size(); ++i) v.voxels[i] = arr->component(i, comp);
   return v;
 }
 
@@ -145,9 +137,8 @@ Volume read_any_volume(const std::string& path, const InputSelect& select) {
     return formats::parse(in, formats::read_volume);
   }
   if (in.format == formats::Format::vti) {
-    vtkSmartPointer<vtkDataSet> ds = formats::parse(in, formats::read_dataset);
-    auto* img = vtkImageData::SafeDownCast(ds);
-    if (!img) throw bad_input("VTI input holds no image data ({})", where);
+    const Dataset img = formats::parse(in, formats::read_dataset);
+    if (img.kind != DatasetKind::image) throw bad_input("VTI input holds no image data ({})", where);
     return from_image_data(img, select, where);
   }
   throw bad_input("expected a volume (NIfTI, NRRD, MHA, VTI or a frame stream), got {} ({})",
