@@ -76,3 +76,9 @@ extern "C" int fest_vtk_write_dataset(const void* dataset, int format, int ascii
         fest::formats::detail::write_vtk_dataset(vtk, static_cast<fest::formats::Format>(format), options);
   });
 }
+
+extern "C" __attribute__((visibility("default"))) const FestVtkPluginTable* fest_vtk_plugin_table(void) {
+  static const FestVtkPluginTable table{FEST_VTK_PLUGIN_ABI, fest_vtk_plugin_layout(), &fest_vtk_read_dataset,
+                                        &fest_vtk_write_dataset};
+  return &table;
+}

@@ -3,7 +3,8 @@
  * libraries only when an input or output is a VTK dataset (a tool's start-up is paid
  * once per file in batch runs).
  *
- * The entry points have C linkage, so dlsym finds them by plain names; the objects they
+ * The one entry point, fest_vtk_plugin_table, has C linkage, so dlsym finds it by a
+ * plain name (formats/plugin_loader.hpp); the objects the table's functions
  * fill are fest's own C++ types (fest::Dataset, std::string), which is sound because the
  * plugin is built with fest, by the same compiler, from the same headers: the ABI number
  * below changes whenever core/dataset.hpp does, and the loader refuses a plugin that
@@ -33,6 +34,14 @@ int fest_vtk_plugin_abi(void);
  * second guard, against a plugin and a tool built from different versions of
  * core/dataset.hpp under the same ABI number. */
 size_t fest_vtk_plugin_layout(void);
+
+typedef struct FestVtkPluginTable {
+  int abi;       /* FEST_VTK_PLUGIN_ABI */
+  size_t layout; /* fest_vtk_plugin_layout() */
+  int (*read_dataset)(const char*, size_t, int, void*, char*, size_t);
+  int (*write_dataset)(const void*, int, int, int, void*, char*, size_t);
+} FestVtkPluginTable;
+const FestVtkPluginTable* fest_vtk_plugin_table(void);
 
 #ifdef __cplusplus
 }

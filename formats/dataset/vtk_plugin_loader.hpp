@@ -12,9 +12,8 @@ struct VtkPlugin {
 };
 
 // The plugin's entry points. Throws Status::io (exit 4) when the plugin or VTK itself
-// cannot be loaded, naming the Debian package to install. The plugin is looked for in
-// $FEST_PLUGIN_DIR when set, else beside the executable (build tree), else in the
-// installed plugin folder (FEST_PLUGIN_RELDIR relative to the executable).
+// cannot be loaded, naming the Debian package to install (formats/plugin_loader.hpp says
+// where the plugin is looked for).
 const VtkPlugin& vtk_plugin();
 
 }  // namespace fest::formats::detail
