@@ -3,7 +3,7 @@
 // Touma & Gotsman and Draco): per axis residual r = q - prediction, wrapped into the
 // quantisation range, zigzagged, its bit length coded with adaptive binary contexts and
 // the bits below the leading one as two adaptive and the rest bypass bits.
-// Two binarisations of the bit length (docs/ebcode.md, "Geometry coding"): .ebm 1.x's
+// Two binarisations of the bit length (ebm(5), GEOM): .ebm 1.x's
 // 6-level tree (six decisions per coordinate), and .ebm 2.x's, which codes the length as
 // a signed unary distance from the previous length on the axis (about three decisions)
 // with contexts that adapt fast while they are new.
