@@ -312,6 +312,30 @@ namespace {
 // Hostile streams behind a valid CRC (what the fuzz target explores): random byte
 // changes in the header and the sections, resealed, must give a clean bad_input or a
 // mesh whose indices are all in range -- never a crash, a hang or a huge allocation.
+// 2.0's header fields out of range, behind a valid CRC: each is named in the error.
+TEST(EdgebreakerEbm, CompactHeaderFieldsAreChecked) {
+  const auto t = fest::test::eb::tetrahedron();
+  const std::string good = encode_ebm(with_positions(t.triangles, t.vertex_count), EncodeOptions{});
+  ASSERT_EQ(good[8], 2);
+  const auto with = [&](std::size_t at, char value) {
+    std::string bad = good;
+    bad[at] = value;
+    reseal_ebm(bad);
+    return bad;
+  };
+  expect_bad_input([&] { decode_ebm(with(9, 1)); }, "version 2.1");
+  expect_bad_input([&] { decode_ebm(with(10, static_cast<char>(0x83))); }, "reserved flag");
+  expect_bad_input([&] { decode_ebm(with(11, 0x03)); }, "modes byte");
+  expect_bad_input([&] { decode_ebm(with(11, 0x42)); }, "modes byte");
+  // flag bit 6 (several components) with the symbol count read as the component count
+  expect_bad_input([&] { decode_ebm(with(10, 0x43)); });
+  // the holes flag without holes: its count is read from the next byte (qp 14) and the
+  // sections no longer match
+  expect_bad_input([&] { decode_ebm(with(10, 0x07)); });
+  expect_bad_input([&] { decode_ebm(with(13, 31)); }, "quantisation bits 31");
+  expect_bad_input([&] { decode_ebm(good.substr(0, 14)); }, "CRC");
+}
+
 // Version 2.0 has no redundant fields (no tags, no counts the decoder rebuilds), so fewer
 // mutations are caught by a consistency check there: most that hit the range-coded
 // positions give another valid mesh, which only the CRC (bypassed here) can tell.
