@@ -42,12 +42,8 @@ void ReverseDecoder::fail(const char* why) const {
 }
 
 int ReverseDecoder::new_triangle() {
-  const int c = static_cast<int>(V_.size());
-  for (int k = 0; k < 3; ++k) {  // push_back: a range insert per triangle was the slow path
-    V_.push_back(-1);
-    O_.push_back(-1);
-  }
-  return c;
+  O_.append(-1, 3);
+  return V_.append(-1, 3);
 }
 
 int ReverseDecoder::new_vertex() {
