@@ -317,7 +317,7 @@ namespace {
 
 // The prediction of G vertex g: the parallelogram of its C triangle inline (almost every
 // vertex), everything else through Prediction.
-inline QPoint predict_at(const Prediction& predict, const GeometryPlan& plan, const Domain& domain, bool fast,
+[[gnu::always_inline]] inline QPoint predict_at(const Prediction& predict, const GeometryPlan& plan, const Domain& domain, bool fast,
                          const std::vector<QPoint>& q, std::size_t g, const QPoint& previous) {
   if (fast) {
     const auto& pg = plan.parallelogram[g];
