@@ -38,30 +38,40 @@ class AdaptiveModel {
  public:
   AdaptiveModel() {
     for (auto& c : counts_) c.fill(16);
+    totals_.fill(16 * symbol_count);
   }
   static int context(const ReverseDecoder& d, bool exclusion) {
     return (d.valence_class() * 6 + d.previous()) * 2 + (exclusion && !d.c_possible() ? 1 : 0);
   }
   // Frequencies in Symbol order with C zeroed when excluded; returns the total.
+  // (The context's total is kept alongside its counts rather than summed per symbol.)
   std::uint32_t table(int ctx, std::array<std::uint32_t, symbol_count>& f) const {
-    std::uint32_t total = 0;
-    for (int s = 0; s < symbol_count; ++s) {
-      f[static_cast<std::size_t>(s)] = (s == 0 && (ctx & 1)) ? 0 : counts_[static_cast<std::size_t>(ctx)][static_cast<std::size_t>(s)];
-      total += f[static_cast<std::size_t>(s)];
+    const auto& c = counts_[static_cast<std::size_t>(ctx)];
+    for (std::size_t s = 0; s < symbol_count; ++s) f[s] = c[s];
+    std::uint32_t total = totals_[static_cast<std::size_t>(ctx)];
+    if (ctx & 1) {
+      total -= f[0];
+      f[0] = 0;
     }
     return total;
   }
   void update(int ctx, Symbol s) {
     auto& c = counts_[static_cast<std::size_t>(ctx)];
+    auto& total = totals_[static_cast<std::size_t>(ctx)];
     c[static_cast<std::size_t>(s)] += 32;
-    std::uint32_t total = 0;
-    for (auto v : c) total += v;
-    if (total > 65536 - 32)
-      for (auto& v : c) v = static_cast<std::uint16_t>((v + 1) / 2);
+    total += 32;
+    if (total > 65536 - 32) {
+      total = 0;
+      for (auto& v : c) {
+        v = static_cast<std::uint16_t>((v + 1) / 2);
+        total += v;
+      }
+    }
   }
 
  private:
   std::array<std::array<std::uint16_t, symbol_count>, 72> counts_{};
+  std::array<std::uint32_t, 72> totals_{};
 };
 
 struct Violation {};

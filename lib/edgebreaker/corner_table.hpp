@@ -23,7 +23,7 @@ struct CornerTable {
 // traversal and both reverse decoders. Equal to c - c % 3 + (c + 1) % 3 for c >= -2, so
 // the -1 of an open corner maps as before.
 inline int next(int c) { return c % 3 == 2 ? c - 2 : c + 1; }
-inline int prev(int c) { return next(next(c)); }
+inline int prev(int c) { return c % 3 == 0 ? c + 2 : c - 1; }  // next(next(c)), one remainder
 // right(c): the corner across the edge (V[c], V[prev(c)]); left(c): across (V[next(c)], V[c]).
 inline int right(const CornerTable& t, int c) { return t.O[static_cast<std::size_t>(next(c))]; }
 inline int left(const CornerTable& t, int c) { return t.O[static_cast<std::size_t>(prev(c))]; }

@@ -105,6 +105,24 @@ std::uint32_t crc32_of(std::string_view bytes) {
   return static_cast<std::uint32_t>(crc);
 }
 
+// ---- .ebm 2.x flags byte ----------------------------------------------------------------
+// bit 0 geometry, 1 exclusion, 2 holes, 3 stitch, 4 events, 5 isolated, 6 several
+// components, 7 reserved (0). Lossless is qp 0; the rest of 1.x's flags were never set.
+namespace v2_bit {
+constexpr unsigned geometry = 1u << 0, exclusion = 1u << 1, holes = 1u << 2, stitch = 1u << 3, events = 1u << 4,
+                   isolated = 1u << 5, several = 1u << 6, reserved = 1u << 7;
+}
+constexpr std::pair<std::uint16_t, unsigned> v2_flag_map[] = {
+    {ebm_flags::geometry, v2_bit::geometry}, {ebm_flags::exclusion, v2_bit::exclusion}, {ebm_flags::holes, v2_bit::holes},
+    {ebm_flags::stitch, v2_bit::stitch},     {ebm_flags::events, v2_bit::events},       {ebm_flags::isolated, v2_bit::isolated}};
+
+unsigned v2_flags_of(std::uint16_t flags, bool several) {
+  unsigned out = several ? v2_bit::several : 0u;
+  for (const auto& [v1, v2] : v2_flag_map)
+    if (flags & v1) out |= v2;
+  return out;
+}
+
 void put_section(std::string& out, const char* tag, const std::string& payload) {
   out.append(tag, 4);
   put_u32(out, static_cast<std::uint32_t>(payload.size()));
@@ -171,6 +189,16 @@ float float_up(double x) {
   return f;
 }
 
+// clamp(llround(t), 0, top) for finite t, without the library call (a tenth of the
+// encoder's quantisation cost): below 2^62 the cast truncates to floor(t) for t > 0, and
+// t - floor(t) is exact, so "fraction >= 1/2 rounds up" is llround's half-away-from-zero.
+std::int64_t round_to_step(double t, std::int64_t top) {
+  if (!(t > 0)) return 0;  // llround of anything <= 0.5 below zero clamps to 0 as well
+  if (t >= static_cast<double>(top)) return top;
+  const auto r = static_cast<std::int64_t>(t);
+  return std::min(r + (t - static_cast<double>(r) >= 0.5 ? 1 : 0), top);
+}
+
 struct Quantiser {
   std::array<float, 4> box{};
   int bits = 14;
@@ -186,7 +214,7 @@ struct Quantiser {
         q[k] = 0;
       } else {
         const double t = (x[k] - static_cast<double>(box[k])) / static_cast<double>(box[3]) * steps();
-        q[k] = static_cast<std::int64_t>(std::clamp(std::llround(t), 0LL, static_cast<long long>(steps())));
+        q[k] = round_to_step(t, static_cast<std::int64_t>((std::uint64_t{1} << bits) - 1u));
       }
     }
     return q;
@@ -355,6 +383,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   if (options.qp < 0 || options.qp > 30) throw usage_error("--qp {} is outside 0..30", options.qp);
   if (options.qn < 1 || options.qn > 30) throw usage_error("--qn {} is outside 1..30", options.qn);
   if (options.qt < 1 || options.qt > 30) throw usage_error("--qt {} is outside 1..30", options.qt);
+  if (options.version != 1 && options.version != 2) throw usage_error(".ebm version {} cannot be written (1 or 2)", options.version);
   if (mesh.positions.size() > max_elements) throw bad_input("{} vertices, more than supported", mesh.positions.size());
   if (options.geometry)
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
@@ -459,6 +488,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
       ++out_faces;
 
   // Geometry.
+  const ResidualCoding coding = options.version == 1 ? ResidualCoding::tree_v1 : ResidualCoding::distance_v2;
   Quantiser quant;
   quant.bits = options.qp;
   quant.box = options.box ? *options.box : bounding_box(mesh.positions);
@@ -467,22 +497,24 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   double max_error = 0, sum_sq = 0;
   std::size_t n_coords = 0;
   if (options.geometry) {
+    // Every input vertex quantised once: for the G order, the isolated ones and the errors.
+    std::vector<QPoint> qv(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) qv[v] = quant.quantise(mesh.positions[v]);
     std::vector<QPoint> q(static_cast<std::size_t>(g_count), QPoint{0, 0, 0});
     for (int g = 0; g < g_count; ++g)
-      if (!dummy[static_cast<std::size_t>(g)])
-        q[static_cast<std::size_t>(g)] = quant.quantise(mesh.positions[static_cast<std::size_t>(input_of[static_cast<std::size_t>(g)])]);
+      if (!dummy[static_cast<std::size_t>(g)]) q[static_cast<std::size_t>(g)] = qv[static_cast<std::size_t>(input_of[static_cast<std::size_t>(g)])];
     GeometryPlan plan;
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
     plan.triangles = &dec.triangles;
     plan.opposite = &dec.opposite;
-    geom = encode_positions(q, plan, options.qp, options.predictor);
+    geom = encode_positions(q, plan, options.qp, options.predictor, coding);
     std::vector<QPoint> iq;
-    for (int v : isolated) iq.push_back(quant.quantise(mesh.positions[static_cast<std::size_t>(v)]));
-    if (!iq.empty()) isol = encode_point_list(iq, options.qp);
+    for (int v : isolated) iq.push_back(qv[static_cast<std::size_t>(v)]);
+    if (!iq.empty()) isol = encode_point_list(iq, options.qp, coding);
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      const auto back = quant.restore(quant.quantise(mesh.positions[v]));
+      const auto back = quant.restore(qv[v]);
       for (std::size_t k = 0; k < 3; ++k) {
         const double e = std::fabs(back[k] - mesh.positions[v][k]);
         max_error = std::max(max_error, e);
@@ -507,7 +539,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
-    const std::string main = encode_positions(q, plan, a.bits, Predictor::parallelogram);
+    const std::string main = encode_positions(q, plan, a.bits, Predictor::parallelogram, coding);
     std::vector<QPoint> iq;
     for (int v : isolated) {
       attribute_values(mesh, a, static_cast<std::size_t>(v), x);
@@ -516,11 +548,11 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     std::string payload;
     put_varint(payload, main.size());
     payload += main;
-    if (!iq.empty()) payload += encode_point_list(iq, a.bits);
+    if (!iq.empty()) payload += encode_point_list(iq, a.bits, coding);
     attr_payloads.push_back(std::move(payload));
   }
 
-  // Header.
+  // Header and sections (ebm(5)).
   std::uint16_t flags = 0;
   if (options.geometry) flags |= ebm_flags::geometry;
   if (options.qp == 0) flags |= ebm_flags::lossless;
@@ -529,38 +561,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   if (!trav.code.events.empty()) flags |= ebm_flags::events;
   if (!isolated.empty()) flags |= ebm_flags::isolated;
   if (conn->exclusion) flags |= ebm_flags::exclusion;
-  std::string header;
-  put_varint(header, static_cast<std::uint64_t>(num.count) + isolated.size());
-  put_varint(header, out_faces);
-  put_varint(header, static_cast<std::uint64_t>(trav.components));
-  put_varint(header, prepared.holes);
-  put_varint(header, stitch_pairs.size());
-  put_varint(header, trav.code.events.size());
-  put_varint(header, isolated.size());
-  put_varint(header, symbols);
-  put_varint(header, static_cast<std::uint64_t>(conn_mode));
-  put_varint(header, conn_mode == static_cast<int>(ConnMode::static_model) ? static_cast<std::uint64_t>(options.model_id) : 0u);
-  put_varint(header, static_cast<std::uint64_t>(options.qp));
-  put_varint(header, static_cast<std::uint64_t>(options.predictor));
-  put_varint(header, attrs.size());
-  for (float f : quant.box) put_f32(header, f);
-  for (const Attribute& a : attrs) {
-    put_u8(header, static_cast<unsigned>(a.kind));
-    put_u8(header, static_cast<unsigned>(a.bits));
-    for (float f : a.box) put_f32(header, f);
-  }
-
-  std::string out(reinterpret_cast<const char*>(magic), 8);
-  put_u8(out, 1);
-  put_u8(out, 0);
-  put_u16(out, flags);
-  put_u32(out, static_cast<std::uint32_t>(header.size()));
-  out += header;
-  std::map<std::string, std::size_t> sizes;
-  const auto section = [&](const char* tag, const std::string& payload) {
-    put_section(out, tag, payload);
-    sizes[tag] = payload.size();
-  };
+  std::vector<std::pair<const char*, std::string>> sections;  // in file order
   if (!stitch_pairs.empty()) {
     std::string s;
     int previous = 0;
@@ -569,7 +570,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
       put_varint(s, static_cast<std::uint64_t>(orig));
       previous = copy;
     }
-    section("STCH", s);
+    sections.emplace_back("STCH", std::move(s));
   }
   if (!trav.code.events.empty()) {
     std::string s;
@@ -580,14 +581,83 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
       put_u8(s, e.right_edge ? 1 : 0);
       previous = e.source;
     }
-    section("HNDL", s);
+    sections.emplace_back("HNDL", std::move(s));
   }
-  section("CONN", conn->bytes);
-  if (prepared.holes > 0) section("HOLE", encode_hole_flags(dummy, valences(dec.triangles, g_count)));
-  if (options.geometry) section("GEOM", geom);
-  if (!isol.empty()) section("ISOL", isol);
-  for (std::size_t k = 0; k < attrs.size(); ++k) section(attrs[k].tag(), attr_payloads[k]);
-  out += "END!";
+  sections.emplace_back("CONN", conn->bytes);
+  if (prepared.holes > 0) sections.emplace_back("HOLE", encode_hole_flags(dummy, valences(dec.triangles, g_count)));
+  if (options.geometry) sections.emplace_back("GEOM", std::move(geom));
+  // 1.x writes ISOL only when it is not empty; 2.x whenever positions of isolated
+  // vertices exist, since its sections are implied by the flags.
+  if (options.version == 1 ? !isol.empty() : options.geometry && !isolated.empty()) sections.emplace_back("ISOL", std::move(isol));
+  for (std::size_t k = 0; k < attrs.size(); ++k) sections.emplace_back(attrs[k].tag(), std::move(attr_payloads[k]));
+
+  std::string out(reinterpret_cast<const char*>(magic), 8);
+  std::map<std::string, std::size_t> sizes;
+  const std::uint64_t model = conn_mode == static_cast<int>(ConnMode::static_model) ? static_cast<std::uint64_t>(options.model_id) : 0u;
+  if (options.version == 1) {
+    std::string header;
+    put_varint(header, static_cast<std::uint64_t>(num.count) + isolated.size());
+    put_varint(header, out_faces);
+    put_varint(header, static_cast<std::uint64_t>(trav.components));
+    put_varint(header, prepared.holes);
+    put_varint(header, stitch_pairs.size());
+    put_varint(header, trav.code.events.size());
+    put_varint(header, isolated.size());
+    put_varint(header, symbols);
+    put_varint(header, static_cast<std::uint64_t>(conn_mode));
+    put_varint(header, model);
+    put_varint(header, static_cast<std::uint64_t>(options.qp));
+    put_varint(header, static_cast<std::uint64_t>(options.predictor));
+    put_varint(header, attrs.size());
+    for (float f : quant.box) put_f32(header, f);
+    for (const Attribute& a : attrs) {
+      put_u8(header, static_cast<unsigned>(a.kind));
+      put_u8(header, static_cast<unsigned>(a.bits));
+      for (float f : a.box) put_f32(header, f);
+    }
+    put_u8(out, 1);
+    put_u8(out, 0);
+    put_u16(out, flags);
+    put_u32(out, static_cast<std::uint32_t>(header.size()));
+    out += header;
+    for (const auto& [tag, payload] : sections) {
+      put_section(out, tag, payload);
+      sizes[tag] = payload.size();
+    }
+    out += "END!";
+  } else {
+    // 2.0: what the flags say is absent or default costs nothing; the output counts are
+    // what the decoder rebuilds; sections are implied by the flags, each with a varint
+    // length except the last, which runs to the CRC.
+    const bool several = trav.components > 1;
+    put_u8(out, 2);
+    put_u8(out, 0);
+    put_u8(out, v2_flags_of(flags, several));
+    put_u8(out, static_cast<unsigned>(conn_mode) | static_cast<unsigned>(options.predictor) << 2 |
+                    static_cast<unsigned>(attrs.size()) << 4);
+    put_varint(out, symbols);
+    if (several) put_varint(out, static_cast<std::uint64_t>(trav.components));
+    if (prepared.holes > 0) put_varint(out, prepared.holes);
+    if (!stitch_pairs.empty()) put_varint(out, stitch_pairs.size());
+    if (!trav.code.events.empty()) put_varint(out, trav.code.events.size());
+    if (!isolated.empty()) put_varint(out, isolated.size());
+    if (conn_mode == static_cast<int>(ConnMode::static_model)) put_u8(out, static_cast<unsigned>(model));
+    if (options.geometry) {
+      put_u8(out, static_cast<unsigned>(options.qp));
+      for (float f : quant.box) put_f32(out, f);
+    }
+    for (const Attribute& a : attrs) {
+      put_u8(out, static_cast<unsigned>(a.kind));
+      put_u8(out, static_cast<unsigned>(a.bits));
+      if (a.kind == 3)
+        for (float f : a.box) put_f32(out, f);
+    }
+    for (std::size_t k = 0; k < sections.size(); ++k) {
+      if (k + 1 < sections.size()) put_varint(out, sections[k].second.size());
+      out += sections[k].second;
+      sizes[sections[k].first] = sections[k].second.size();
+    }
+  }
   put_u32(out, crc32_of(out));
 
   if (stats) {
@@ -621,24 +691,37 @@ struct Parsed {
   std::vector<Attribute> attributes;
 };
 
-Parsed parse(std::string_view bytes) {
-  if (!is_ebm(bytes)) throw bad_input("not an .ebm stream (bad magic)");
-  if (bytes.size() < 8 + 2 + 2 + 4 + 8) throw bad_input(".ebm stream is truncated ({} bytes)", bytes.size());
-  Parsed p;
-  EbmHeader& h = p.header;
-  h.total_bytes = bytes.size();
-  Reader r(bytes.substr(8), ".ebm stream");
-  h.major = r.u8();
-  h.minor = r.u8();
-  if (h.major != 1) throw bad_input(".ebm major version {} is not supported (this decoder reads version 1)", h.major);
-  // The CRC covers everything before it: check it before trusting any length.
-  const std::string_view body = bytes.substr(0, bytes.size() - 4);
-  Reader tail(bytes.substr(bytes.size() - 8), ".ebm trailer");
-  const std::string_view end_tag = tail.bytes(4);
+void parse_attribute(Reader& hr, Parsed& p, std::uint64_t k, bool with_box) {
+  Attribute a;
+  a.kind = hr.u8();
+  a.bits = hr.u8();
+  if (with_box)
+    for (float& f : a.box) f = hr.f32();
+  a.components = a.kind == 3 ? 2 : 3;
+  if (a.kind < 1 || a.kind > 3 || a.bits < 1 || a.bits > 30 || (a.kind == 2 && a.bits != 8))
+    throw bad_input(".ebm header: attribute {} has kind {} and {} bits", k, a.kind, a.bits);
+  for (const Attribute& b : p.attributes)
+    if (b.kind == a.kind) throw bad_input(".ebm header: attribute kind {} twice", a.kind);
+  if (!std::isfinite(a.box[0]) || !std::isfinite(a.box[1]) || !std::isfinite(a.box[2]) || !(a.box[2] >= 0))
+    throw bad_input(".ebm header: attribute {} has a box that is not finite", k);
+  p.attributes.push_back(a);
+  p.header.attribute_names.push_back(a.name());
+}
+
+void check_crc(std::string_view bytes) {
+  // The CRC covers everything before it: checked before any length is trusted.
+  Reader tail(bytes.substr(bytes.size() - 4), ".ebm trailer");
   const std::uint32_t stored = tail.u32();
-  if (end_tag != "END!") throw bad_input(".ebm stream is truncated (no END! trailer)");
-  const std::uint32_t computed = crc32_of(body);
+  const std::uint32_t computed = crc32_of(bytes.substr(0, bytes.size() - 4));
   if (stored != computed) throw bad_input("CRC mismatch (stored 0x{:08x}, computed 0x{:08x})", stored, computed);
+}
+
+// 1.x: u16 flags, a length-prefixed header record, tagged sections, END!, CRC.
+void parse_v1(std::string_view bytes, Reader& r, Parsed& p) {
+  EbmHeader& h = p.header;
+  Reader tail(bytes.substr(bytes.size() - 8), ".ebm trailer");
+  if (tail.bytes(4) != "END!") throw bad_input(".ebm stream is truncated (no END! trailer)");
+  check_crc(bytes);
 
   h.flags = r.u16();
   const std::uint32_t header_len = r.u32();
@@ -663,21 +746,7 @@ Parsed parse(std::string_view bytes) {
   h.attributes = hr.varint();
   if (h.attributes > 3) throw bad_input(".ebm header: {} attributes (at most normals, colours, texture coordinates)", h.attributes);
   for (float& f : h.box) f = hr.f32();
-  for (std::uint64_t k = 0; k < h.attributes; ++k) {
-    Attribute a;
-    a.kind = hr.u8();
-    a.bits = hr.u8();
-    for (float& f : a.box) f = hr.f32();
-    a.components = a.kind == 3 ? 2 : 3;
-    if (a.kind < 1 || a.kind > 3 || a.bits < 1 || a.bits > 30 || (a.kind == 2 && a.bits != 8))
-      throw bad_input(".ebm header: attribute {} has kind {} and {} bits", k, a.kind, a.bits);
-    for (const Attribute& b : p.attributes)
-      if (b.kind == a.kind) throw bad_input(".ebm header: attribute kind {} twice", a.kind);
-    if (!std::isfinite(a.box[0]) || !std::isfinite(a.box[1]) || !std::isfinite(a.box[2]) || !(a.box[2] >= 0))
-      throw bad_input(".ebm header: attribute {} has a box that is not finite", k);
-    p.attributes.push_back(a);
-    h.attribute_names.push_back(a.name());
-  }
+  for (std::uint64_t k = 0; k < h.attributes; ++k) parse_attribute(hr, p, k, true);
   // Later minor versions may append header fields: ignore them.
   while (r.left() > 8) {
     const std::string tag(r.bytes(4));
@@ -689,6 +758,86 @@ Parsed parse(std::string_view bytes) {
     h.section_bytes[tag] = len;
   }
   if (r.left() != 8) throw bad_input(".ebm stream is truncated");
+}
+
+// 2.x: u8 flags, u8 modes, varint counts the flags announce, and the sections they imply.
+void parse_v2(std::string_view bytes, Parsed& p) {
+  EbmHeader& h = p.header;
+  check_crc(bytes);
+  Reader r(bytes.substr(10, bytes.size() - 14), ".ebm stream");
+  const unsigned f = r.u8();
+  if (f & v2_bit::reserved) throw bad_input(".ebm header: reserved flag bit 7 is set");
+  h.flags = 0;
+  for (const auto& [v1, v2] : v2_flag_map)
+    if (f & v2) h.flags = static_cast<std::uint16_t>(h.flags | v1);
+  const unsigned modes = r.u8();
+  h.conn_mode = static_cast<int>(modes & 3u);
+  h.predictor = static_cast<int>((modes >> 2) & 3u);
+  h.attributes = (modes >> 4) & 3u;
+  if (h.conn_mode > 2 || (modes >> 6) != 0) throw bad_input(".ebm header: modes byte 0x{:02x} is out of range", modes);
+  h.symbols = r.varint();
+  h.components = h.symbols > 0 ? 1 : 0;
+  if (f & v2_bit::several) {
+    h.components = r.varint();
+    if (h.components < 2) throw bad_input(".ebm header: the several-components flag with {} components", h.components);
+  }
+  const auto count = [&](unsigned bit, const char* what) {
+    if (!(f & bit)) return std::uint64_t{0};
+    const std::uint64_t v = r.varint();
+    if (v == 0) throw bad_input(".ebm header: the {} flag with no {}", what, what);
+    return v;
+  };
+  h.dummies = count(v2_bit::holes, "holes");
+  h.stitch = count(v2_bit::stitch, "stitch");
+  h.events = count(v2_bit::events, "events");
+  h.isolated = count(v2_bit::isolated, "isolated");
+  if (h.conn_mode == static_cast<int>(ConnMode::static_model)) h.model_id = r.u8();
+  if (f & v2_bit::geometry) {
+    h.qp = r.u8();
+    if (h.qp > 30) throw bad_input(".ebm header: quantisation bits {} is out of range", h.qp);
+    if (h.qp == 0) h.flags = static_cast<std::uint16_t>(h.flags | ebm_flags::lossless);
+    for (float& x : h.box) x = r.f32();
+  }
+  for (std::uint64_t k = 0; k < h.attributes; ++k) {
+    // Only texture coordinates have a box of their own; peek at the kind.
+    Reader peek = r;
+    const unsigned kind = peek.u8();
+    parse_attribute(r, p, k, kind == 3);
+  }
+  std::vector<const char*> tags;
+  if (h.stitch) tags.push_back("STCH");
+  if (h.events) tags.push_back("HNDL");
+  tags.push_back("CONN");
+  if (h.dummies) tags.push_back("HOLE");
+  if (f & v2_bit::geometry) tags.push_back("GEOM");
+  if ((f & v2_bit::geometry) && h.isolated) tags.push_back("ISOL");
+  for (const Attribute& a : p.attributes) tags.push_back(a.tag());
+  for (std::size_t k = 0; k < tags.size(); ++k) {
+    const std::uint64_t len = k + 1 < tags.size() ? r.varint() : r.left();
+    if (len > r.left()) throw bad_input(".ebm section {} is truncated", tags[k]);
+    p.sections.emplace(tags[k], r.bytes(static_cast<std::size_t>(len)));
+    h.section_bytes[tags[k]] = static_cast<std::size_t>(len);
+  }
+}
+
+Parsed parse(std::string_view bytes) {
+  if (!is_ebm(bytes)) throw bad_input("not an .ebm stream (bad magic)");
+  if (bytes.size() < 8 + 2 + 4) throw bad_input(".ebm stream is truncated ({} bytes)", bytes.size());
+  Parsed p;
+  EbmHeader& h = p.header;
+  h.total_bytes = bytes.size();
+  Reader r(bytes.substr(8), ".ebm stream");
+  h.major = r.u8();
+  h.minor = r.u8();
+  if (h.major == 1) {
+    if (bytes.size() < 8 + 2 + 2 + 4 + 8) throw bad_input(".ebm stream is truncated ({} bytes)", bytes.size());
+    parse_v1(bytes, r, p);
+  } else if (h.major == 2) {
+    if (h.minor != 0) throw bad_input(".ebm version 2.{} is not supported (this decoder reads 1.x and 2.0)", h.minor);
+    parse_v2(bytes, p);
+  } else {
+    throw bad_input(".ebm major version {} is not supported (this decoder reads versions 1 and 2)", h.major);
+  }
 
   // Counts against what the bytes can hold, before anything is allocated from them.
   const auto bytes_of = [&](const char* tag) {
@@ -725,11 +874,17 @@ Parsed parse(std::string_view bytes) {
 
 }  // namespace
 
-EbmHeader read_ebm_header(std::string_view bytes) { return parse(bytes).header; }
+EbmHeader read_ebm_header(std::string_view bytes) {
+  EbmHeader h = parse(bytes).header;
+  if (h.major >= 2) decode_ebm(bytes, true, false, &h);  // 2.x does not store the output counts
+  return h;
+}
 
 MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader* header_out) {
   const Parsed p = parse(bytes);
   const EbmHeader& h = p.header;
+  const bool v1 = h.major == 1;
+  const ResidualCoding coding = v1 ? ResidualCoding::tree_v1 : ResidualCoding::distance_v2;
   const auto section = [&](const char* tag) {
     const auto it = p.sections.find(tag);
     return it == p.sections.end() ? std::string_view{} : it->second;
@@ -792,8 +947,9 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   }
   const Numbering num = number_vertices(dummy, original_of, stitch);
   const std::uint64_t expected_vertices = h.vertices;
-  const std::uint64_t stitched_count = static_cast<std::uint64_t>(number_vertices(dummy, original_of, true).count);
-  if (stitched_count + h.isolated != expected_vertices)
+  const std::uint64_t stitched_count =
+      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true).count);
+  if (v1 && stitched_count + h.isolated != expected_vertices)
     throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
 
   MeshSoup out;
@@ -810,12 +966,12 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     plan.triangles = &dec.triangles;
     plan.opposite = &dec.opposite;
     const std::vector<QPoint> q =
-        decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor));
+        decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor), coding);
     for (int g = 0; g < g_count; ++g)
       if (num.output[static_cast<std::size_t>(g)] >= 0)
         out.positions[static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)])] = quant.restore(q[static_cast<std::size_t>(g)]);
     if (h.isolated > 0) {
-      const std::vector<QPoint> iq = decode_point_list(section("ISOL"), static_cast<std::size_t>(h.isolated), h.qp);
+      const std::vector<QPoint> iq = decode_point_list(section("ISOL"), static_cast<std::size_t>(h.isolated), h.qp, coding);
       for (std::size_t k = 0; k < iq.size(); ++k) out.positions[static_cast<std::size_t>(num.count) + k] = quant.restore(iq[k]);
     }
   }
@@ -830,8 +986,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     plan.parallelogram = dec.parallelogram;
     plan.unusable = dummy;
     plan.same_as = num.same_as;
-    const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram);
-    const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits)
+    const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram, coding);
+    const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits, coding)
                                                    : std::vector<QPoint>{};
     const std::size_t n = out.positions.size();
     const auto store = [&](std::size_t v, const QPoint& x) {
@@ -857,9 +1013,13 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     out.triangles.push_back({num.output[static_cast<std::size_t>(t[0])], num.output[static_cast<std::size_t>(t[1])],
                              num.output[static_cast<std::size_t>(t[2])]});
   }
-  if (out.triangles.size() != h.faces)
+  if (v1 && out.triangles.size() != h.faces)
     throw bad_input("connectivity gives {} faces, the header says {}", out.triangles.size(), h.faces);
-  if (header_out) *header_out = h;
+  if (header_out) {
+    *header_out = h;
+    header_out->vertices = stitched_count + h.isolated;  // 1.x: equal to the stored counts
+    header_out->faces = out.triangles.size();
+  }
   return out;
 }
 

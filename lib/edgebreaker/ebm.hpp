@@ -43,6 +43,7 @@ struct EncodeOptions {
   bool strict = false;
   std::optional<std::array<float, 4>> box;  // min x, y, z and extent
   bool verify = true;
+  int version = 2;  // .ebm major version written: 2 (compact container), or 1 for old readers
 };
 
 struct EbmHeader {
@@ -80,7 +81,9 @@ struct EncodeStats {
 // self-verification fails.
 std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, EncodeStats* stats = nullptr);
 
-// Checks magic, version, lengths and CRC; parses the header. Throws bad_input.
+// Checks magic, version, lengths and CRC; parses the header. Version 2 leaves the output
+// vertex and face counts out of the file: for it they are found by decoding (without the
+// re-encoding check). Throws bad_input.
 EbmHeader read_ebm_header(std::string_view bytes);
 
 // Decodes completely (everything is checked before anything is returned). With stitch

@@ -11,77 +11,198 @@ namespace {
 
 constexpr int length_levels = 6;  // bit lengths 0..63 (lossless residuals reach 34 bits)
 
+std::uint64_t zigzag(std::int64_t r) {
+  return r >= 0 ? static_cast<std::uint64_t>(r) << 1 : (static_cast<std::uint64_t>(-(r + 1)) << 1) | 1u;
+}
+std::int64_t unzigzag(std::uint64_t z) {
+  return (z & 1u) ? -static_cast<std::int64_t>(z >> 1) - 1 : static_cast<std::int64_t>(z >> 1);
+}
+int bit_length(std::uint64_t z) { return z == 0 ? 0 : 64 - __builtin_clzll(z); }  // one instruction, not a loop
+
+// ---- .ebm 1.x: the bit length through a 6-level binary tree --------------------------
+
 // Adaptive contexts of the residual coder: the bit length through a binary tree per
 // (axis, previous length on that axis), the two bits below the leading one per (axis, length).
-struct ResidualContexts {
+struct TreeCoder {
   std::array<std::array<std::array<std::uint16_t, 1 << length_levels>, 16>, 3> length;
   std::array<std::array<std::array<std::uint16_t, 4>, 64>, 3> high;
   std::array<int, 3> previous{};
-  ResidualContexts() {
+  explicit TreeCoder(int /*bits*/) {
     for (auto& a : length)
       for (auto& b : a) b.fill(probability_half);
     for (auto& a : high)
       for (auto& b : a) b.fill(probability_half);
   }
-};
 
-int bit_length(std::uint64_t z) { return z == 0 ? 0 : 64 - __builtin_clzll(z); }  // one instruction, not a loop
-
-void put_residual(RangeEncoder& enc, ResidualContexts& ctx, int axis, std::int64_t r) {
-  const std::uint64_t z = r >= 0 ? static_cast<std::uint64_t>(r) << 1 : (static_cast<std::uint64_t>(-(r + 1)) << 1) | 1u;
-  const int k = bit_length(z);
-  auto& tree = ctx.length[static_cast<std::size_t>(axis)][static_cast<std::size_t>(std::min(ctx.previous[static_cast<std::size_t>(axis)], 15))];
-  int node = 1;
-  for (int level = length_levels - 1; level >= 0; --level) {
-    const int b = (k >> level) & 1;
-    enc.bit(tree[static_cast<std::size_t>(node)], b);
-    node = node * 2 + b;
-  }
-  ctx.previous[static_cast<std::size_t>(axis)] = k;
-  if (k <= 1) return;
-  // Bits below the leading one: the top two adaptive, the rest bypass.
-  auto& high = ctx.high[static_cast<std::size_t>(axis)][static_cast<std::size_t>(k)];
-  int below = k - 1;
-  int hnode = 1;
-  for (int h = 0; h < 2 && below > 0; ++h) {
-    --below;
-    const int b = static_cast<int>((z >> below) & 1u);
-    enc.bit(high[static_cast<std::size_t>(hnode)], b);
-    hnode = std::min(hnode * 2 + b, 3);
-  }
-  while (below > 0) {
-    const int chunk = std::min(below, 16);
-    below -= chunk;
-    enc.bypass_bits(static_cast<std::uint32_t>((z >> below) & ((1u << chunk) - 1u)), chunk);
-  }
-}
-
-std::int64_t get_residual(RangeDecoder& dec, ResidualContexts& ctx, int axis) {
-  auto& tree = ctx.length[static_cast<std::size_t>(axis)][static_cast<std::size_t>(std::min(ctx.previous[static_cast<std::size_t>(axis)], 15))];
-  int node = 1;
-  for (int level = 0; level < length_levels; ++level) node = node * 2 + dec.bit(tree[static_cast<std::size_t>(node)]);
-  const int k = node - (1 << length_levels);
-  ctx.previous[static_cast<std::size_t>(axis)] = k;
-  if (k > 40) throw bad_input("geometry: a residual of {} bits", k);
-  std::uint64_t z = k == 0 ? 0 : 1;
-  if (k > 1) {
-    auto& high = ctx.high[static_cast<std::size_t>(axis)][static_cast<std::size_t>(k)];
+  void put(RangeEncoder& enc, int axis, std::int64_t r) {
+    const std::uint64_t z = zigzag(r);
+    const int k = bit_length(z);
+    auto& tree = length[static_cast<std::size_t>(axis)][static_cast<std::size_t>(std::min(previous[static_cast<std::size_t>(axis)], 15))];
+    int node = 1;
+    for (int level = length_levels - 1; level >= 0; --level) {
+      const int b = (k >> level) & 1;
+      enc.bit(tree[static_cast<std::size_t>(node)], b);
+      node = node * 2 + b;
+    }
+    previous[static_cast<std::size_t>(axis)] = k;
+    if (k <= 1) return;
+    // Bits below the leading one: the top two adaptive, the rest bypass.
+    auto& h = high[static_cast<std::size_t>(axis)][static_cast<std::size_t>(k)];
     int below = k - 1;
     int hnode = 1;
-    for (int h = 0; h < 2 && below > 0; ++h) {
+    for (int step = 0; step < 2 && below > 0; ++step) {
       --below;
-      const int b = dec.bit(high[static_cast<std::size_t>(hnode)]);
-      z = (z << 1) | static_cast<std::uint64_t>(b);
+      const int b = static_cast<int>((z >> below) & 1u);
+      enc.bit(h[static_cast<std::size_t>(hnode)], b);
       hnode = std::min(hnode * 2 + b, 3);
+    }
+    while (below > 0) {
+      const int chunk = std::min(below, 16);
+      below -= chunk;
+      enc.bypass_bits(static_cast<std::uint32_t>((z >> below) & ((1u << chunk) - 1u)), chunk);
+    }
+  }
+
+  std::int64_t get(RangeDecoder& dec, int axis) {
+    auto& tree = length[static_cast<std::size_t>(axis)][static_cast<std::size_t>(std::min(previous[static_cast<std::size_t>(axis)], 15))];
+    int node = 1;
+    for (int level = 0; level < length_levels; ++level) node = node * 2 + dec.bit(tree[static_cast<std::size_t>(node)]);
+    const int k = node - (1 << length_levels);
+    previous[static_cast<std::size_t>(axis)] = k;
+    if (k > 40) throw bad_input("geometry: a residual of {} bits", k);
+    std::uint64_t z = k == 0 ? 0 : 1;
+    if (k > 1) {
+      auto& h = high[static_cast<std::size_t>(axis)][static_cast<std::size_t>(k)];
+      int below = k - 1;
+      int hnode = 1;
+      for (int step = 0; step < 2 && below > 0; ++step) {
+        --below;
+        const int b = dec.bit(h[static_cast<std::size_t>(hnode)]);
+        z = (z << 1) | static_cast<std::uint64_t>(b);
+        hnode = std::min(hnode * 2 + b, 3);
+      }
+      while (below > 0) {
+        const int chunk = std::min(below, 16);
+        below -= chunk;
+        z = (z << chunk) | dec.bypass_bits(chunk);
+      }
+    }
+    return unzigzag(z);
+  }
+};
+
+// ---- .ebm 2.x: the bit length as a signed distance from the previous one -------------
+
+// An adaptive decision that also counts its uses: its first decisions move the
+// probability by 1/2, 1/4, ... (about the Krichevsky-Trofimov estimate of a new
+// context), from the 16th on by 1/32 as every other context of the format. Small meshes
+// spend most of their decisions in contexts that are still new.
+struct CountedBit {
+  std::uint16_t p = probability_half;
+  std::uint16_t n = 0;
+};
+constexpr std::array<std::uint8_t, 16> counted_shift = {1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 5};
+
+inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
+  enc.bit_at_rate(c.p, b, counted_shift[c.n]);
+  c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
+}
+inline int get_counted(RangeDecoder& dec, CountedBit& c) {
+  const int b = dec.bit_at_rate(c.p, counted_shift[c.n]);
+  c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
+  return b;
+}
+
+// The length k of a coordinate's zigzagged residual is coded around m, the length of the
+// same axis's previous residual: "k == m?", then the side, then unary steps away from m
+// (each step its own context up to 8, truncated at 0 and at the largest length the
+// quantisation allows). A smooth surface keeps k within one of m, so most coordinates
+// cost two or three decisions where the tree always cost six.
+struct DistanceCoder {
+  static constexpr int max_length = 33;  // lossless: |r| < 2^32, zigzag < 2^33
+  static constexpr int steps = 8;
+  struct AxisContexts {
+    std::array<CountedBit, max_length + 1> same, above;
+    std::array<std::array<CountedBit, steps>, max_length + 1> up, down;
+    std::array<std::array<CountedBit, 3>, max_length + 1> high;  // the two bits below the leading one
+  };
+  std::array<AxisContexts, 3> axes;
+  std::array<int, 3> previous{};
+  int kmax;
+  explicit DistanceCoder(int bits) : kmax(bits == 0 ? max_length : bits) {}
+
+  void put(RangeEncoder& enc, int axis, std::int64_t r) {
+    const std::uint64_t z = zigzag(r);
+    const int k = bit_length(z);
+    AxisContexts& a = axes[static_cast<std::size_t>(axis)];
+    const int m = previous[static_cast<std::size_t>(axis)];
+    previous[static_cast<std::size_t>(axis)] = k;
+    const auto mi = static_cast<std::size_t>(m);
+    put_counted(enc, a.same[mi], k != m);
+    if (k != m) {
+      bool up = k > m;
+      if (m > 0 && m < kmax) put_counted(enc, a.above[mi], up);
+      if (up)
+        for (int j = m + 1; j < kmax; ++j) {
+          put_counted(enc, a.up[mi][static_cast<std::size_t>(std::min(j - m - 1, steps - 1))], k > j);
+          if (k == j) break;
+        }
+      else
+        for (int j = m - 1; j > 0; --j) {
+          put_counted(enc, a.down[mi][static_cast<std::size_t>(std::min(m - 1 - j, steps - 1))], k < j);
+          if (k == j) break;
+        }
+    }
+    if (k <= 1) return;
+    auto& h = a.high[static_cast<std::size_t>(k)];
+    int below = k - 1;
+    --below;
+    const int b0 = static_cast<int>((z >> below) & 1u);
+    put_counted(enc, h[0], b0);
+    if (below > 0) {
+      --below;
+      put_counted(enc, h[static_cast<std::size_t>(1 + b0)], static_cast<int>((z >> below) & 1u));
+    }
+    while (below > 0) {
+      const int chunk = std::min(below, 16);
+      below -= chunk;
+      enc.bypass_bits(static_cast<std::uint32_t>((z >> below) & ((1u << chunk) - 1u)), chunk);
+    }
+  }
+
+  std::int64_t get(RangeDecoder& dec, int axis) {
+    AxisContexts& a = axes[static_cast<std::size_t>(axis)];
+    const int m = previous[static_cast<std::size_t>(axis)];
+    const auto mi = static_cast<std::size_t>(m);
+    int k = m;
+    if (get_counted(dec, a.same[mi])) {
+      const bool up = m == 0 || (m < kmax && get_counted(dec, a.above[mi]));
+      if (up) {
+        k = m + 1;
+        while (k < kmax && get_counted(dec, a.up[mi][static_cast<std::size_t>(std::min(k - m - 1, steps - 1))])) ++k;
+      } else {
+        k = m - 1;
+        while (k > 0 && get_counted(dec, a.down[mi][static_cast<std::size_t>(std::min(m - 1 - k, steps - 1))])) --k;
+      }
+    }
+    previous[static_cast<std::size_t>(axis)] = k;
+    if (k <= 1) return k == 0 ? 0 : unzigzag(1);
+    auto& h = a.high[static_cast<std::size_t>(k)];
+    int below = k - 2;
+    const int b0 = get_counted(dec, h[0]);
+    std::uint64_t z = 2u | static_cast<std::uint64_t>(b0);
+    if (below > 0) {
+      --below;
+      z = (z << 1) | static_cast<std::uint64_t>(get_counted(dec, h[static_cast<std::size_t>(1 + b0)]));
     }
     while (below > 0) {
       const int chunk = std::min(below, 16);
       below -= chunk;
       z = (z << chunk) | dec.bypass_bits(chunk);
     }
+    return unzigzag(z);
   }
-  return (z & 1u) ? -static_cast<std::int64_t>(z >> 1) - 1 : static_cast<std::int64_t>(z >> 1);
-}
+};
 
 // Value range of one coordinate: [lo, hi]; residuals are wrapped into it when quantised.
 struct Domain {
@@ -94,16 +215,16 @@ struct Domain {
   std::int64_t clamp(std::int64_t v) const { return std::clamp(v, lo, hi); }
   std::int64_t centre() const { return bits_zero() ? 0 : (hi + 1) / 2; }
   bool bits_zero() const { return !wrap; }
+  // The range has 2^bits values: reduction modulo its size is a mask in two's complement
+  // (the same values as the remainder arithmetic the format describes, without a division).
   std::int64_t wrap_residual(std::int64_t r) const {
     if (!wrap) return r;
-    const std::int64_t size = hi + 1, half = size / 2;
-    r = ((r % size) + size) % size;
-    return r >= half ? r - size : r;
+    const std::int64_t half = (hi + 1) / 2;
+    return ((r + half) & hi) - half;
   }
   std::int64_t unwrap(std::int64_t prediction, std::int64_t r) const {
     if (!wrap) return prediction + r;
-    const std::int64_t size = hi + 1;
-    return (((prediction + r) % size) + size) % size;
+    return (prediction + r) & hi;
   }
 };
 
@@ -192,29 +313,52 @@ class Prediction {
 
 }  // namespace
 
-std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor) {
+namespace {
+
+// The prediction of G vertex g: the parallelogram of its C triangle inline (almost every
+// vertex), everything else through Prediction.
+[[gnu::always_inline]] inline QPoint predict_at(const Prediction& predict, const GeometryPlan& plan, const Domain& domain, bool fast,
+                         const std::vector<QPoint>& q, std::size_t g, const QPoint& previous) {
+  if (fast) {
+    const auto& pg = plan.parallelogram[g];
+    if (pg[0] >= 0 && !plan.unusable[static_cast<std::size_t>(pg[0])] && !plan.unusable[static_cast<std::size_t>(pg[1])] &&
+        !plan.unusable[static_cast<std::size_t>(pg[2])]) {
+      const QPoint& a = q[static_cast<std::size_t>(pg[0])];
+      const QPoint& b = q[static_cast<std::size_t>(pg[1])];
+      const QPoint& o = q[static_cast<std::size_t>(pg[2])];
+      return {domain.clamp(a[0] + b[0] - o[0]), domain.clamp(a[1] + b[1] - o[1]), domain.clamp(a[2] + b[2] - o[2])};
+    }
+  }
+  return predict(q, static_cast<int>(g), previous);
+}
+
+template <class Coder>
+std::string encode_with(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor) {
   const Domain domain(bits);
   const Prediction predict(plan, domain, predictor);
+  const bool fast = predictor == Predictor::parallelogram;
   RangeEncoder enc;
-  ResidualContexts ctx;
+  Coder coder(bits);
   QPoint previous{domain.centre(), domain.centre(), domain.centre()};
   for (std::size_t g = 0; g < q.size(); ++g) {
     if (plan.unusable[g]) continue;
     if (plan.same_as[g] < 0) {
-      const QPoint p = predict(q, static_cast<int>(g), previous);
+      const QPoint p = predict_at(predict, plan, domain, fast, q, g, previous);
       for (int k = 0; k < 3; ++k)
-        put_residual(enc, ctx, k, domain.wrap_residual(q[g][static_cast<std::size_t>(k)] - p[static_cast<std::size_t>(k)]));
+        coder.put(enc, k, domain.wrap_residual(q[g][static_cast<std::size_t>(k)] - p[static_cast<std::size_t>(k)]));
     }
     previous = q[g];
   }
   return enc.finish();
 }
 
-std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+template <class Coder>
+std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
   const Domain domain(bits);
   const Prediction predict(plan, domain, predictor);
+  const bool fast = predictor == Predictor::parallelogram;
   RangeDecoder dec(bytes);
-  ResidualContexts ctx;
+  Coder coder(bits);
   std::vector<QPoint> q(plan.unusable.size(), QPoint{0, 0, 0});
   QPoint previous{domain.centre(), domain.centre(), domain.centre()};
   for (std::size_t g = 0; g < q.size(); ++g) {
@@ -224,9 +368,9 @@ std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan&
       if (static_cast<std::size_t>(same) >= g) throw bad_input("geometry: a stitch partner comes later");
       q[g] = q[static_cast<std::size_t>(same)];
     } else {
-      const QPoint p = predict(q, static_cast<int>(g), previous);
+      const QPoint p = predict_at(predict, plan, domain, fast, q, g, previous);
       for (int k = 0; k < 3; ++k) {
-        const std::int64_t v = domain.unwrap(p[static_cast<std::size_t>(k)], get_residual(dec, ctx, k));
+        const std::int64_t v = domain.unwrap(p[static_cast<std::size_t>(k)], coder.get(dec, k));
         if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
         q[g][static_cast<std::size_t>(k)] = v;
       }
@@ -238,20 +382,34 @@ std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan&
   return q;
 }
 
-std::string encode_point_list(const std::vector<QPoint>& q, int bits) {
+}  // namespace
+
+std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor,
+                             ResidualCoding coding) {
+  return coding == ResidualCoding::tree_v1 ? encode_with<TreeCoder>(q, plan, bits, predictor)
+                                           : encode_with<DistanceCoder>(q, plan, bits, predictor);
+}
+
+std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor,
+                                     ResidualCoding coding) {
+  return coding == ResidualCoding::tree_v1 ? decode_with<TreeCoder>(bytes, plan, bits, predictor)
+                                           : decode_with<DistanceCoder>(bytes, plan, bits, predictor);
+}
+
+std::string encode_point_list(const std::vector<QPoint>& q, int bits, ResidualCoding coding) {
   GeometryPlan plan;
   plan.parallelogram.assign(q.size(), {-1, -1, -1});
   plan.unusable.assign(q.size(), 0);
   plan.same_as.assign(q.size(), -1);
-  return encode_positions(q, plan, bits, Predictor::delta);
+  return encode_positions(q, plan, bits, Predictor::delta, coding);
 }
 
-std::vector<QPoint> decode_point_list(std::string_view bytes, std::size_t count, int bits) {
+std::vector<QPoint> decode_point_list(std::string_view bytes, std::size_t count, int bits, ResidualCoding coding) {
   GeometryPlan plan;
   plan.parallelogram.assign(count, {-1, -1, -1});
   plan.unusable.assign(count, 0);
   plan.same_as.assign(count, -1);
-  return decode_positions(bytes, plan, bits, Predictor::delta);
+  return decode_positions(bytes, plan, bits, Predictor::delta, coding);
 }
 
 }  // namespace fest::edgebreaker

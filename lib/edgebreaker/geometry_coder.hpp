@@ -3,6 +3,10 @@
 // Touma & Gotsman and Draco): per axis residual r = q - prediction, wrapped into the
 // quantisation range, zigzagged, its bit length coded with adaptive binary contexts and
 // the bits below the leading one as two adaptive and the rest bypass bits.
+// Two binarisations of the bit length (ebm(5), GEOM): .ebm 1.x's
+// 6-level tree (six decisions per coordinate), and .ebm 2.x's, which codes the length as
+// a signed unary distance from the previous length on the axis (about three decisions)
+// with contexts that adapt fast while they are new.
 
 #include <array>
 #include <cstdint>
@@ -15,6 +19,9 @@ namespace fest::edgebreaker {
 enum class Predictor : std::uint8_t { parallelogram = 0, multi = 1, delta = 2, none = 3 };
 
 using QPoint = std::array<std::int64_t, 3>;
+
+// Which residual binarisation a stream uses: the .ebm major version's.
+enum class ResidualCoding : std::uint8_t { tree_v1 = 1, distance_v2 = 2 };
 
 // What the geometry coder needs of the connectivity, per G vertex.
 struct GeometryPlan {
@@ -29,14 +36,17 @@ struct GeometryPlan {
 // `bits` 1..30 quantised (values 0 .. 2^bits - 1), 0 lossless (monotone int32 of float
 // bits). Entries of q for unusable vertices are ignored; a vertex with same_as >= 0 costs
 // nothing (the decoder copies the earlier value).
-std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor);
+std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor,
+                             ResidualCoding coding = ResidualCoding::distance_v2);
 
 // Inverse: returns q per G vertex (zeros for unusable ones). Throws bad_input for a
 // truncated stream.
-std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor);
+std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor,
+                                     ResidualCoding coding = ResidualCoding::distance_v2);
 
 // Isolated vertices: delta-coded in order, after the others.
-std::string encode_point_list(const std::vector<QPoint>& q, int bits);
-std::vector<QPoint> decode_point_list(std::string_view bytes, std::size_t count, int bits);
+std::string encode_point_list(const std::vector<QPoint>& q, int bits, ResidualCoding coding = ResidualCoding::distance_v2);
+std::vector<QPoint> decode_point_list(std::string_view bytes, std::size_t count, int bits,
+                                      ResidualCoding coding = ResidualCoding::distance_v2);
 
 }  // namespace fest::edgebreaker

@@ -25,7 +25,9 @@ void pair_edges(CornerTable& table) {
   const int n = table.corners();
   const int* V = table.V.data();
   std::vector<int> start(static_cast<std::size_t>(table.vertex_count) + 1, 0);
-  for (int c = 0; c < n; ++c) ++start[static_cast<std::size_t>(V[next(c)]) + 1];
+  // Half-edges leaving each vertex: one per corner next(c); next permutes each triangle's
+  // corners, so counting V[c] over all corners gives the same counts without it.
+  for (int c = 0; c < n; ++c) ++start[static_cast<std::size_t>(V[c]) + 1];
   for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
   std::vector<int> bucket(static_cast<std::size_t>(n)), bucket_to(static_cast<std::size_t>(n));
   {

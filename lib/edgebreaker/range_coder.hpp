@@ -27,17 +27,25 @@ class RangeEncoder {
     range_ = r * freq;
     normalise();
   }
-  void bit(std::uint16_t& p, int b) {
+  void bit(std::uint16_t& p, int b) { bit_at_rate(p, b, adapt_shift); }
+  // The same decision with the adaptation shift given (1..5; ebm v2's counted contexts).
+  // Probabilities stay in [31, 2017] (shift 5 cannot leave that range, smaller shifts are
+  // only used for a context's first few decisions), so both sub-ranges keep at least
+  // 31/2048 of a range >= 2^24, and one byte of renormalisation is always enough.
+  void bit_at_rate(std::uint16_t& p, int b, int shift) {
     const std::uint32_t bound = (range_ >> probability_bits) * p;
     if (b == 0) {
       range_ = bound;
-      p = static_cast<std::uint16_t>(p + (((1u << probability_bits) - p) >> adapt_shift));
+      p = static_cast<std::uint16_t>(p + (((1u << probability_bits) - p) >> shift));
     } else {
       low_ += bound;
       range_ -= bound;
-      p = static_cast<std::uint16_t>(p - (p >> adapt_shift));
+      p = static_cast<std::uint16_t>(p - (p >> shift));
     }
-    normalise();
+    if (range_ < range_top) {
+      range_ <<= 8;
+      shift_low();
+    }
   }
   void bypass(int b) {
     range_ >>= 1;
@@ -115,21 +123,22 @@ class RangeDecoder {
     range_ = r_ * freq;
     normalise();
   }
-  int bit(std::uint16_t& p) {
+  int bit(std::uint16_t& p) { return bit_at_rate(p, adapt_shift); }
+  // Branch-free: the outcome selects range, code and probability by conditional moves
+  // (a mispredicted branch per decision cost more than the decision); one byte of
+  // renormalisation suffices (see RangeEncoder::bit_at_rate).
+  int bit_at_rate(std::uint16_t& p, int shift) {
     const std::uint32_t bound = (range_ >> probability_bits) * p;
-    int b;
-    if (code_ < bound) {
-      range_ = bound;
-      p = static_cast<std::uint16_t>(p + (((1u << probability_bits) - p) >> adapt_shift));
-      b = 0;
-    } else {
-      code_ -= bound;
-      range_ -= bound;
-      p = static_cast<std::uint16_t>(p - (p >> adapt_shift));
-      b = 1;
+    const bool one = code_ >= bound;
+    const std::uint32_t up = p + (((1u << probability_bits) - p) >> shift), down = p - (p >> shift);
+    code_ = one ? code_ - bound : code_;
+    range_ = one ? range_ - bound : bound;
+    p = static_cast<std::uint16_t>(one ? down : up);
+    if (range_ < range_top) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | next_byte();
     }
-    normalise();
-    return b;
+    return one ? 1 : 0;
   }
   int bypass() {
     range_ >>= 1;

@@ -41,13 +41,12 @@ void ReverseDecoder::fail(const char* why) const {
   throw bad_input("invalid connectivity: {} (symbol {} of {})", why, position_, symbols_);
 }
 
+// A new triangle's first corner c is a multiple of 3, so its next and previous corners are
+// written c + 1 and c + 2 below (the remainder in next() and prev() was a tenth of the
+// decoder's instructions).
 int ReverseDecoder::new_triangle() {
-  const int c = static_cast<int>(V_.size());
-  for (int k = 0; k < 3; ++k) {  // push_back: a range insert per triangle was the slow path
-    V_.push_back(-1);
-    O_.push_back(-1);
-  }
-  return c;
+  O_.append(-1, 3);
+  return V_.append(-1, 3);
 }
 
 int ReverseDecoder::new_vertex() {
@@ -82,16 +81,17 @@ ReverseDecoder::Loop& ReverseDecoder::top(const char* op) {
 // The open edge y -> x that ends at x = V[next(a)], other than a's gate; returns the
 // corner opposite it. A manifold vertex is swung around at most twice in all.
 int ReverseDecoder::incoming_open_edge(int a) {
-  int k = next(a);
+  // Corners j = next(next(a)) = prev(a), then next(next(O[j])) = prev(O[j]): one step of
+  // the swing is one remainder, not two.
+  int j = prev(a);
   const int limit = static_cast<int>(V_.size());
   for (int step = 0; step <= limit; ++step) {
-    const int j = next(k);
     const int o = O_[static_cast<std::size_t>(j)];
     if (o == -1) {
       if (j == a) fail("a loop closed on itself");
       return j;
     }
-    k = next(o);
+    j = prev(o);
   }
   fail("a vertex fan does not end");
 }
@@ -112,7 +112,7 @@ void ReverseDecoder::count_triangle(int c) {
 void ReverseDecoder::remember_events(int c) {
   while (next_event_ > 0 && events_[next_event_ - 1].source == position_) {
     const HandleEvent& e = events_[--next_event_];
-    const int corner = e.right_edge ? next(c) : prev(c);
+    const int corner = e.right_edge ? c + 1 : c + 2;
     if (!pending_.emplace(e.split, corner).second) fail("two handle events for one S");
   }
 }
@@ -135,9 +135,9 @@ void ReverseDecoder::inverse_L() {
   Loop& loop = top("L with no open loop");
   const int a = loop.gate, c = new_triangle();
   V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(a))];
-  V_[static_cast<std::size_t>(prev(c))] = V_[static_cast<std::size_t>(prev(a))];
-  V_[static_cast<std::size_t>(next(c))] = new_vertex();
-  link(next(c), a);
+  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(a))];
+  V_[static_cast<std::size_t>(c + 1)] = new_vertex();
+  link(c + 1, a);
   loop = {c, loop.length < 0 ? -1 : loop.length + 1};
   count_triangle(c);
   if (event_here()) remember_events(c);
@@ -146,10 +146,10 @@ void ReverseDecoder::inverse_L() {
 void ReverseDecoder::inverse_R() {
   Loop& loop = top("R with no open loop");
   const int a = loop.gate, c = new_triangle();
-  V_[static_cast<std::size_t>(next(c))] = V_[static_cast<std::size_t>(next(a))];
+  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(a))];
   V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(prev(a))];
-  V_[static_cast<std::size_t>(prev(c))] = new_vertex();
-  link(prev(c), a);
+  V_[static_cast<std::size_t>(c + 2)] = new_vertex();
+  link(c + 2, a);
   loop = {c, loop.length < 0 ? -1 : loop.length + 1};
   count_triangle(c);
   if (event_here()) remember_events(c);
@@ -168,10 +168,10 @@ void ReverseDecoder::inverse_C() {
   const int e = incoming_open_edge(a);  // the open edge y -> x
   const int c = new_triangle();
   V_[static_cast<std::size_t>(c)] = x;
-  V_[static_cast<std::size_t>(next(c))] = V_[static_cast<std::size_t>(next(e))];
-  V_[static_cast<std::size_t>(prev(c))] = V_[static_cast<std::size_t>(prev(a))];
-  link(next(c), a);
-  link(prev(c), e);
+  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(e))];
+  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(a))];
+  link(c + 1, a);
+  link(c + 2, e);
   closed_at_.push_back(c);
   loop = {c, loop.length < 0 ? -1 : loop.length - 1};
   count_triangle(c);
@@ -207,10 +207,10 @@ void ReverseDecoder::inverse_S() {
   }
   const int c = new_triangle();
   V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(ab))];
-  V_[static_cast<std::size_t>(next(c))] = V_[static_cast<std::size_t>(next(at))];
-  V_[static_cast<std::size_t>(prev(c))] = V_[static_cast<std::size_t>(prev(ab))];
-  link(prev(c), at);
-  link(next(c), ab);
+  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(at))];
+  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(ab))];
+  link(c + 2, at);
+  link(c + 1, ab);
   const bool known = left_branch.length >= 0 && right_branch.length >= 0;
   loops_.push_back({c, known ? left_branch.length + right_branch.length - 1 : -1});
   count_triangle(c);
@@ -254,11 +254,11 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
       fail("a last open loop is not a triangle");
     const int s = new_triangle();
     V_[static_cast<std::size_t>(s)] = V_[static_cast<std::size_t>(next(e))];
-    V_[static_cast<std::size_t>(next(s))] = V_[static_cast<std::size_t>(prev(a))];
-    V_[static_cast<std::size_t>(prev(s))] = V_[static_cast<std::size_t>(next(a))];
+    V_[static_cast<std::size_t>(s + 1)] = V_[static_cast<std::size_t>(prev(a))];
+    V_[static_cast<std::size_t>(s + 2)] = V_[static_cast<std::size_t>(next(a))];
     link(s, a);
-    link(next(s), e);
-    link(prev(s), f);
+    link(s + 1, e);
+    link(s + 2, f);
     start_corner.push_back(s);
   }
   for (int o : O_)
@@ -320,7 +320,7 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
   const auto id = [&](int corner) { return g_of[static_cast<std::size_t>(V_[static_cast<std::size_t>(corner)])]; };
   for (int c : g_corner)
     out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1}
-                                      : std::array<int, 3>{id(next(c)), id(prev(c)), id(O_[static_cast<std::size_t>(c)])});
+                                      : std::array<int, 3>{id(c + 1), id(c + 2), id(O_[static_cast<std::size_t>(c)])});
 
   // Output faces: per component the start triangle, then its symbols in forward order
   // (symbol i was triangle symbol_triangles - 1 - i). new_index maps this decoder's

@@ -149,6 +149,28 @@ expect_json '.states' '26'
 run ebcode model --to inc
 check "the committed tables are what the tool generates" diff "$out" "$(dirname "$0")/../../lib/edgebreaker/ebm_models.inc"
 
+# --- container versions (ebm(5)): 2.0 written, 1.0 still read and writable ------------
+case_ "a committed 1.0 stream and its 2.0 twin decode to the same mesh"
+for name in eight_genus2 mushroom_hole bowtie_stitch tetrahedron_attributes; do
+  "$FEST_BIN/ebdecode" --to plya "$FEST_FIXTURES/ebm/$name.ebm" -o "$WORK/$name.v1.ply"
+  "$FEST_BIN/ebdecode" --to plya "$FEST_FIXTURES/ebm/${name}_v2.ebm" -o "$WORK/$name.v2.ply"
+  check "$name: identical PLY" cmp "$WORK/$name.v1.ply" "$WORK/$name.v2.ply"
+done
+run ebdecode --info "$FEST_FIXTURES/ebm/eight_genus2_v2.ebm"
+expect_json '.version' '"2.0"'
+expect_json '.vertices' '315'
+expect_json '.faces' '634'
+expect_json '.events' '4'
+
+case_ "--ebm-version 1 writes the old container, byte for byte the committed stream"
+"$FEST_BIN/ebdecode" --to plya "$FEST_FIXTURES/ebm/eight_genus2.ebm" -o "$WORK/e.ply"
+box=$("$FEST_BIN/ebdecode" --info "$FEST_FIXTURES/ebm/eight_genus2.ebm" | jq -r '.box | map(tostring) | join(",")')
+run ebcode --ebm-version 1 --qp 6 --box "$box" "$WORK/e.ply" -o "$WORK/e1.ebm"
+expect_status 0
+check "same bytes as tests/data/ebm/eight_genus2.ebm" cmp "$WORK/e1.ebm" "$FEST_FIXTURES/ebm/eight_genus2.ebm"
+run ebcode --ebm-version 3 "$WORK/tet.off"
+expect_clean_failure 2 ebcode
+
 # --- bad input ------------------------------------------------------------------------
 "$FEST_BIN/ebcode" "$WORK/moebius.off" -o "$WORK/good.ebm"
 size=$(wc -c <"$WORK/good.ebm")
@@ -167,12 +189,12 @@ run ebdecode "$WORK/flip.ebm"
 expect_clean_failure 3 ebdecode
 expect_stderr_has "CRC mismatch"
 
-case_ "major version 2"
-cp "$WORK/good.ebm" "$WORK/v2.ebm"
-printf '\x02' | dd of="$WORK/v2.ebm" bs=1 seek=8 conv=notrunc 2>/dev/null
-run ebdecode "$WORK/v2.ebm"
+case_ "major version 3"
+cp "$WORK/good.ebm" "$WORK/v3.ebm"
+printf '\x03' | dd of="$WORK/v3.ebm" bs=1 seek=8 conv=notrunc 2>/dev/null
+run ebdecode "$WORK/v3.ebm"
 expect_clean_failure 3 ebdecode
-expect_stderr_has "major version 2"
+expect_stderr_has "major version 3"
 
 case_ "binary garbage to ebdecode"
 head -c 300 /dev/urandom | tr '\211' 'x' >"$WORK/garbage"

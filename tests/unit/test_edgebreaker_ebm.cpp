@@ -51,18 +51,25 @@ std::vector<Point> point_set(const MeshSoup& m) {
   return p;
 }
 
+// Both container versions: 2.0 (written by default) and 1.0 (still written on request,
+// and read for the streams that exist).
 void expect_exact_round_trip(const MeshSoup& in, ConnChoice conn = ConnChoice::automatic,
                              Predictor predictor = Predictor::parallelogram) {
-  EncodeOptions o;
-  o.qp = 0;  // lossless: positions identify vertices
-  o.conn = conn;
-  o.predictor = predictor;
-  EncodeStats stats;
-  const std::string bytes = encode_ebm(in, o, &stats);
-  const MeshSoup out = decode_ebm(bytes);
-  EXPECT_EQ(out.positions.size(), in.positions.size());
-  EXPECT_EQ(point_set(out), point_set(in));
-  EXPECT_EQ(face_set(out), face_set(in));
+  for (int version : {2, 1}) {
+    SCOPED_TRACE(version);
+    EncodeOptions o;
+    o.qp = 0;  // lossless: positions identify vertices
+    o.conn = conn;
+    o.predictor = predictor;
+    o.version = version;
+    EncodeStats stats;
+    const std::string bytes = encode_ebm(in, o, &stats);
+    EXPECT_EQ(static_cast<int>(bytes[8]), version);
+    const MeshSoup out = decode_ebm(bytes);
+    EXPECT_EQ(out.positions.size(), in.positions.size());
+    EXPECT_EQ(point_set(out), point_set(in));
+    EXPECT_EQ(face_set(out), face_set(in));
+  }
 }
 
 TEST(EdgebreakerEbm, ClosedMeshesRoundTripWithEveryCoder) {
@@ -250,15 +257,52 @@ TEST(EdgebreakerEbm, QuantisationErrorIsAtMostHalfAStep) {
 
 TEST(EdgebreakerEbm, DamagedStreamsAreRejected) {
   const auto s = fest::test::eb::subdivided_icosahedron(2);
-  const std::string good = encode_ebm(with_positions(s.triangles, s.vertex_count), EncodeOptions{});
-  for (std::size_t n = 0; n < good.size(); n += 97) expect_bad_input([&] { decode_ebm(good.substr(0, n)); });
-  std::string flipped = good;
-  flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
-  expect_bad_input([&] { decode_ebm(flipped); }, "CRC mismatch");
-  std::string v2 = good;
-  v2[8] = 2;
-  expect_bad_input([&] { decode_ebm(v2); }, "major version 2");
+  for (int version : {2, 1}) {
+    SCOPED_TRACE(version);
+    EncodeOptions o;
+    o.version = version;
+    const std::string good = encode_ebm(with_positions(s.triangles, s.vertex_count), o);
+    for (std::size_t n = 0; n < good.size(); n += 37) expect_bad_input([&] { decode_ebm(good.substr(0, n)); });
+    std::string flipped = good;
+    flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
+    expect_bad_input([&] { decode_ebm(flipped); }, "CRC mismatch");
+    std::string v3 = good;
+    v3[8] = 3;
+    expect_bad_input([&] { decode_ebm(v3); }, "major version 3");
+  }
   expect_bad_input([&] { decode_ebm("not an ebm stream at all"); }, "magic");
+}
+
+// ebm(5), version 2.0: a closed single-component mesh without side information costs
+// magic 8 + version 2 + flags 1 + modes 1 + varint symbols + qp 1 + box 16, then the CONN
+// length as a varint, CONN and GEOM (the last section, no length), and the CRC 4.
+TEST(EdgebreakerEbm, CompactContainerLayout) {
+  const auto t = fest::test::eb::tetrahedron();
+  EncodeStats st2, st1;
+  EncodeOptions o;
+  const std::string v2 = encode_ebm(with_positions(t.triangles, t.vertex_count), o, &st2);
+  o.version = 1;
+  const std::string v1 = encode_ebm(with_positions(t.triangles, t.vertex_count), o, &st1);
+  ASSERT_EQ(st2.symbols, 3u);
+  const std::size_t conn = st2.section_bytes.at("CONN"), geom = st2.section_bytes.at("GEOM");
+  ASSERT_LT(conn, 128u);
+  EXPECT_EQ(v2.size(), 8 + 2 + 1 + 1 + 1 + 1 + 16 + 1 + conn + geom + 4);
+  EXPECT_EQ(v2[10], 0x03);  // geometry and exclusion
+  // 1.0's container (everything but the section payloads) has 4 more bytes of version and
+  // flags, a 4-byte header length, 13 one-byte varints, an 8-byte tag and length per section, END!.
+  const auto container = [](const std::string& bytes, const EncodeStats& st) {
+    std::size_t payload = 0;
+    for (const auto& [tag, n] : st.section_bytes) payload += n;
+    return bytes.size() - payload;
+  };
+  EXPECT_EQ(container(v2, st2), 35u);
+  EXPECT_EQ(container(v1, st1), 8 + 2 + 2 + 4 + 13 + 16 + 2 * 8 + 4 + 4u);
+  const EbmHeader h = read_ebm_header(v2);
+  EXPECT_EQ(h.major, 2);
+  EXPECT_EQ(h.vertices, 4u);  // not stored in 2.0: rebuilt by decoding
+  EXPECT_EQ(h.faces, 4u);
+  EXPECT_EQ(h.components, 1u);
+  EXPECT_EQ(h.section_bytes.at("GEOM"), geom);
 }
 
 }  // namespace
@@ -268,10 +312,46 @@ namespace {
 // Hostile streams behind a valid CRC (what the fuzz target explores): random byte
 // changes in the header and the sections, resealed, must give a clean bad_input or a
 // mesh whose indices are all in range -- never a crash, a hang or a huge allocation.
+// 2.0's header fields out of range, behind a valid CRC: each is named in the error.
+TEST(EdgebreakerEbm, CompactHeaderFieldsAreChecked) {
+  const auto t = fest::test::eb::tetrahedron();
+  const std::string good = encode_ebm(with_positions(t.triangles, t.vertex_count), EncodeOptions{});
+  ASSERT_EQ(good[8], 2);
+  const auto with = [&](std::size_t at, char value) {
+    std::string bad = good;
+    bad[at] = value;
+    reseal_ebm(bad);
+    return bad;
+  };
+  expect_bad_input([&] { decode_ebm(with(9, 1)); }, "version 2.1");
+  expect_bad_input([&] { decode_ebm(with(10, static_cast<char>(0x83))); }, "reserved flag");
+  expect_bad_input([&] { decode_ebm(with(11, 0x03)); }, "modes byte");
+  expect_bad_input([&] { decode_ebm(with(11, 0x42)); }, "modes byte");
+  // flag bit 6 (several components) with the symbol count read as the component count
+  expect_bad_input([&] { decode_ebm(with(10, 0x43)); });
+  // the holes flag without holes: its count is read from the next byte (qp 14) and the
+  // sections no longer match
+  expect_bad_input([&] { decode_ebm(with(10, 0x07)); });
+  expect_bad_input([&] { decode_ebm(with(13, 31)); }, "quantisation bits 31");
+  expect_bad_input([&] { decode_ebm(good.substr(0, 14)); }, "CRC");
+}
+
+// Version 2.0 has no redundant fields (no tags, no counts the decoder rebuilds), so fewer
+// mutations are caught by a consistency check there: most that hit the range-coded
+// positions give another valid mesh, which only the CRC (bypassed here) can tell.
+void expect_mutations_rejected_cleanly(int version, int at_least);
 TEST(EdgebreakerEbm, ResealedMutationsAreRejectedCleanly) {
+  expect_mutations_rejected_cleanly(1, 1000);
+  expect_mutations_rejected_cleanly(2, 300);
+}
+
+void expect_mutations_rejected_cleanly(int version, int at_least) {
+  SCOPED_TRACE(version);
   std::vector<Triangle> t = fest::test::eb::subdivided_icosahedron(2).triangles;
   t.push_back({0, 1, 50});  // some side information: a fin makes a hole and copies
-  const std::string good = encode_ebm(with_positions(t, 162), EncodeOptions{});
+  EncodeOptions options;
+  options.version = version;
+  const std::string good = encode_ebm(with_positions(t, 162), options);
   std::mt19937 rng(11);
   int rejected = 0;
   for (int round = 0; round < 3000; ++round) {
@@ -291,7 +371,7 @@ TEST(EdgebreakerEbm, ResealedMutationsAreRejectedCleanly) {
       ++rejected;
     }
   }
-  EXPECT_GT(rejected, 1000);
+  EXPECT_GT(rejected, at_least);
 }
 
 }  // namespace
@@ -311,20 +391,49 @@ TEST(EdgebreakerEbm, CommittedStreamsDecode) {
     const char* file;
     std::size_t vertices, faces;
   };
-  for (const Case& c : std::vector<Case>{{"tetrahedron.ebm", 4, 4},
-                                         {"tetrahedron_raw_lossless.ebm", 4, 4},
-                                         {"icosahedron_static.ebm", 12, 20},
-                                         {"eight_genus2.ebm", 315, 634},
-                                         {"eight_multi.ebm", 315, 634},
-                                         {"mushroom_hole.ebm", 2337, 4608},
-                                         {"bowtie_stitch.ebm", 7, 8},
-                                         {"tetrahedron_attributes.ebm", 4, 4}}) {
+  for (const Case& c : std::vector<Case>{{"tetrahedron", 4, 4},
+                                         {"tetrahedron_raw_lossless", 4, 4},
+                                         {"icosahedron_static", 12, 20},
+                                         {"eight_genus2", 315, 634},
+                                         {"eight_multi", 315, 634},
+                                         {"mushroom_hole", 2337, 4608},
+                                         {"bowtie_stitch", 7, 8},
+                                         {"tetrahedron_attributes", 4, 4}}) {
     SCOPED_TRACE(c.file);
-    const std::string bytes = slurp(dir + c.file);
-    ASSERT_FALSE(bytes.empty());
-    const MeshSoup m = decode_ebm(bytes);
-    EXPECT_EQ(m.positions.size(), c.vertices);
-    EXPECT_EQ(m.triangles.size(), c.faces);
+    // X.ebm is a 1.0 stream (committed before 2.0 existed), X_v2.ebm the same mesh, options
+    // and box written as 2.0: both decode to exactly the same mesh, stitched or not.
+    const std::string v1 = slurp(dir + c.file + ".ebm"), v2 = slurp(dir + c.file + "_v2.ebm");
+    ASSERT_FALSE(v1.empty());
+    ASSERT_FALSE(v2.empty());
+    EXPECT_EQ(v1[8], 1);
+    EXPECT_EQ(v2[8], 2);
+    EXPECT_LT(v2.size(), v1.size());
+    for (bool stitch : {true, false}) {
+      const MeshSoup m = decode_ebm(v1, stitch);
+      if (stitch) {
+        EXPECT_EQ(m.positions.size(), c.vertices);
+        EXPECT_EQ(m.triangles.size(), c.faces);
+      }
+      const MeshSoup m2 = decode_ebm(v2, stitch);
+      EXPECT_EQ(m2.positions, m.positions);
+      EXPECT_EQ(m2.triangles, m.triangles);
+      EXPECT_EQ(m2.normals, m.normals);
+      EXPECT_EQ(m2.colors, m.colors);
+      EXPECT_EQ(m2.texcoords, m.texcoords);
+    }
+    // The 1.0 writer is kept byte for byte: re-encoding the decoded mesh with the stream's
+    // own options gives the committed bytes back.
+    const EbmHeader h = read_ebm_header(v1);
+    EncodeOptions o;
+    o.version = 1;
+    o.qp = h.qp;
+    o.box = h.box;
+    o.predictor = static_cast<Predictor>(h.predictor);
+    o.conn = h.conn_mode == 0 ? ConnChoice::raw : h.conn_mode == 1 ? ConnChoice::static_model : ConnChoice::adaptive;
+    if (h.conn_mode == 1) o.model_id = h.model_id;
+    EXPECT_EQ(encode_ebm(decode_ebm(v1), o), v1);
+    o.version = 2;
+    EXPECT_EQ(encode_ebm(decode_ebm(v1), o), v2);
   }
 }
 

@@ -51,6 +51,7 @@ struct Options {
   std::string report;
   bool symbols = false;
   bool no_verify = false;
+  int ebm_version = 2;
   bool quiet = false;
 };
 
@@ -139,6 +140,7 @@ int encode(const Options& opt) {
   e.geometry = !opt.no_geometry;
   e.strict = opt.strict;
   e.verify = !opt.no_verify;
+  e.version = opt.ebm_version;
   EncodeStats stats;
   const Clock::time_point t1 = Clock::now();
   const std::string bytes = encode_ebm(soup, e, &stats);
@@ -299,6 +301,8 @@ int main(int argc, char** argv) {
   app.add_option("--report", opt.report, "Write counts, bits per section, errors and times as JSON to this file");
   app.add_flag("--symbols", opt.symbols, "Write the forward CLERS string instead of the stream");
   app.add_flag("--no-verify", opt.no_verify, "Skip re-encoding the decoded connectivity (the cheap check stays)");
+  app.add_option("--ebm-version", opt.ebm_version, "Container version: 2 (compact, the default) or 1 (for readers before fest 0.2)")
+      ->default_val(2)->check(CLI::Range(1, 2));
 
   ModelOptions mopt;
   std::string lmax = "-", pmax = "-", smax = "-";
