@@ -32,6 +32,7 @@ int fit_global_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, cons
   double mu = 1e-3, energy = 0;
   int it = 0;
   converged = false;
+  std::vector<double> history;  // energy per iteration: stop when 10 iterations gain < 0.1 %
   for (; it < o.max_iter; ++it) {
     const std::vector<Eigen::Vector3d> before = m.node_positions();
     if (it % std::max(1, o.reassign_every) == 0) {
@@ -49,7 +50,10 @@ int fit_global_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, cons
     }
     const bool stepped = global_step_smooth(m, points, uv, mu, energy, o.threads);
     check_finite(m);
-    if (!stepped || max_move(before, m.node_positions()) < o.move_tol) {
+    history.push_back(energy);
+    const std::size_t h = history.size();
+    const bool stalled = h > 10 && history[h - 11] - history[h - 1] <= 1e-3 * history[h - 11];
+    if (!stepped || stalled || max_move(before, m.node_positions()) < o.move_tol) {
       converged = true;
       ++it;
       break;

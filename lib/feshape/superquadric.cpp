@@ -73,6 +73,14 @@ std::string check_global(const GlobalParams& q) {
 
 void clamp_global(GlobalParams& q) {
   q[ia] = std::max(q[ia], 1e-9);
+  // s depends on a and a_i only through the semi-axes a a_i (and e3/(a a3) = S_u^e1), so
+  // an a_i above 1 is folded into a: the same shape, with max a_i = 1 (the gauge that
+  // keeps the representation unique and the steps unclipped).
+  const double largest = std::max({q[ia1], q[ia2], q[ia3]});
+  if (largest > 1) {
+    q[ia] *= largest;
+    for (int i : {ia1, ia2, ia3}) q[i] /= largest;
+  }
   for (int i : {ia1, ia2, ia3}) q[i] = std::clamp(q[i], 1e-3, 1.0);
   for (int i : {ie1, ie2}) q[i] = std::clamp(q[i], 0.1, 4.0);
   for (int i : {it1, it2, ib2}) q[i] = std::clamp(q[i], -1.0, 1.0);

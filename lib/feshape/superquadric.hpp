@@ -24,7 +24,8 @@ const std::array<const char*, n_global>& global_names();
 // |t_i| <= 1, |b2| <= 1, 0 <= b3 <= 1, all finite); empty when it is valid.
 std::string check_global(const GlobalParams& q);
 // The same ranges enforced after an update step (e_i kept in [0.1, 4]; a_i in
-// [1e-3, 1]; a >= 1e-9), as in docs/feshape.md §2.4.
+// [1e-3, 1]; a >= 1e-9), as in docs/feshape.md §2.4. An a_i above 1 is first folded
+// into a (a *= max a_i, a_i /= max a_i): the shape is unchanged.
 void clamp_global(GlobalParams& q);
 
 // s(u, v; q_s), eq. 2 + eq. 3, in the model frame.
