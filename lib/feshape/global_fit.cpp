@@ -32,6 +32,16 @@ GlobalStep damped_solve(const Normal& h, const GlobalStep& g, double mu) {
   return a.ldlt().solve(g);
 }
 
+// On the axis angles (sin or cos of u or v exactly 0, where mesh nodes sit) the
+// parameterisation is singular for e != 1: the tangent is 0 (e > 1) or infinite (e < 1),
+// and Gauss-Newton cannot leave the point. Start a hair away from them.
+double off_axis(double w) {
+  constexpr double nudge = 1e-7;
+  const double r = std::remainder(w, pi / 2);  // distance to the nearest multiple of pi/2
+  if (std::abs(r) < nudge) return w + (r >= 0 ? nudge : -nudge);
+  return w;
+}
+
 }  // namespace
 
 void apply_global_step(Model& m, const GlobalStep& step) {
@@ -42,6 +52,8 @@ void apply_global_step(Model& m, const GlobalStep& step) {
 }
 
 double project_to_surface(const Model& m, const Eigen::Vector3d& z, Eigen::Vector2d& uv) {
+  uv[0] = std::clamp(off_axis(uv[0]), -pi / 2, pi / 2);
+  uv[1] = wrap_v(off_axis(uv[1]));
   const Eigen::Vector3d y = m.rotation.conjugate() * (z - m.center);
   Eigen::Vector3d r = y - shape(m.qs, uv[0], uv[1]);
   double e = r.squaredNorm();
