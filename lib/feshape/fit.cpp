@@ -109,12 +109,26 @@ int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOpt
 
 }  // namespace
 
+std::size_t count_folded(const Model& m) {
+  const std::vector<Eigen::Vector3d> x = m.node_positions();
+  std::vector<Eigen::Vector3d> g(x.size());
+  for (std::size_t i = 0; i < g.size(); ++i) g[i] = m.global_point(m.mesh.u[i], m.mesh.v[i]);
+  std::size_t folded = 0;
+  for (const auto& f : m.mesh.tris) {
+    const Eigen::Vector3d n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
+    const Eigen::Vector3d ng = (g[f[1]] - g[f[0]]).cross(g[f[2]] - g[f[0]]);
+    if (n.dot(ng) < 0) ++folded;
+  }
+  return folded;
+}
+
 std::vector<LevelResult> fit(const std::vector<Eigen::Vector3d>& points, Model m, const FitOptions& o,
                              const std::function<void(const LevelResult&)>& on_level) {
   std::vector<LevelResult> out;
   auto finish = [&](LevelResult r, std::chrono::steady_clock::time_point t0) {
     const std::vector<MeshPoint> a = assign_points(points, m.node_positions(), m.mesh.tris, o.threads);
     r.error = error_stats(a);
+    r.folded = count_folded(m);
     r.model = m;
     r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (on_level) on_level(r);

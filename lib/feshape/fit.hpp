@@ -47,8 +47,14 @@ struct LevelResult {
   bool converged = false;      // the move tolerance was reached before max_iter
   ErrorStats error;            // distances of the data points to this level's mesh
   double surface_rms = -1;     // level G: RMS distance to the smooth global surface
+  std::size_t folded = 0;      // elements whose normal opposes their global-shape normal
   double time_s = 0;
 };
+
+// Elements turned over by the local displacements: the normal of the flat triangle
+// x_i = c + R(s_i + d_i) points against the normal of the same triangle on the global
+// shape (d = 0). Folds mean the stiffness is too weak for the data (docs/feshape.md §1.5).
+std::size_t count_folded(const Model& m);
 
 // Fits `initial` to the points and returns every level. Stops early (fewer levels) when no
 // point is farther than tau. Fails with Status::failure on numerical breakdown or when

@@ -128,4 +128,24 @@ run feshape fit "$WORK/bump.xyz" --grid 6x6 --levels 3 --tau 0.001 --max-nodes 6
 expect_clean_failure 1 feshape
 check "no output file" test ! -e "$WORK/limit.ply"
 
+case_ "--help, --version, unknown flag"
+run feshape --help
+expect_status 0
+check "usage" grep -q "Usage" "$out"
+run feshape --version
+expect_status 0
+check "names fest" grep -q "(fest)" "$out"
+run feshape fit --no-such-flag
+expect_clean_failure 2 feshape
+
+case_ "Makefile.inc: make NAME.feshape.ply from NAME.xyz"
+if command -v make >/dev/null; then
+  mkdir -p "$WORK/mk"
+  cp "$WORK/sphere.xyz" "$WORK/mk/ball.xyz"
+  printf 'FEST_BIN := %s\ninclude %s\nFESHAPE_FLAGS := --levels 1\nall: ball.feshape.ply\n' "$FEST_BIN" \
+    "$(cd "$(dirname "$0")/../.." && pwd)/Makefile.inc" >"$WORK/mk/Makefile"
+  check "make" make -s -C "$WORK/mk"
+  check "report written" jq -e '.levels | length >= 2' "$WORK/mk/ball.feshape.ply.json"
+fi
+
 finish

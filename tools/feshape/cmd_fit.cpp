@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
+#include "core/tool_main.hpp"
 #include "feshape/fit.hpp"
 #include "model_args.hpp"
 #include "model_output.hpp"
@@ -98,6 +99,11 @@ int run_fit(const FitArgs& a) {
     o.move_tol = 5e-5 * 0.5 * (hi - lo).norm();
   }
   const std::vector<feshape::LevelResult> levels = feshape::fit(points, model, o);
+  for (const auto& l : levels)
+    if (l.folded > 0)
+      warn("feshape", fmt::format("level {}: {} of {} elements folded over; raise the membrane weights "
+                                  "(--w w00,w01,w10,...: w01, w10)",
+                                  l.name, l.folded, l.model.mesh.elements()));
   // Everything is known: write the levels, the final model, the report.
   if (!a.levels_out.empty())
     for (const auto& l : levels) {
@@ -126,6 +132,7 @@ int run_fit(const FitArgs& a) {
       j["max"] = l.error.max;
       j["std"] = l.error.std;
       j["var"] = l.error.var;
+      j["folded"] = l.folded;
       if (l.surface_rms >= 0) j["surface_rms"] = l.surface_rms;
       j["time_s"] = l.time_s;
       r["levels"].push_back(j);
