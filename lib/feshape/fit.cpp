@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/parallel_for.hpp"
 #include "feshape/global_fit.hpp"
 #include "feshape/local_fit.hpp"
 #include "feshape/refine.hpp"
@@ -38,15 +39,18 @@ int fit_global_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, cons
     if (it % std::max(1, o.reassign_every) == 0) {
       // Fresh start points from the mesh; a warm start that is nearer stays.
       const std::vector<MeshPoint> a = assign_points(points, before, m.mesh.tris, o.threads);
-      for (std::size_t p = 0; p < points.size(); ++p) {
-        Eigen::Vector2d fresh = material_point(m.mesh, a[p]);
-        if (it == 0) {
-          uv[p] = fresh;
-          continue;
+      constexpr std::size_t chunk = 128;
+      parallel_for((points.size() + chunk - 1) / chunk, o.threads, [&](std::size_t c) {
+        for (std::size_t p = c * chunk; p < std::min(points.size(), (c + 1) * chunk); ++p) {
+          Eigen::Vector2d fresh = material_point(m.mesh, a[p]);
+          if (it == 0) {
+            uv[p] = fresh;
+            continue;
+          }
+          Eigen::Vector2d warm = uv[p];
+          if (project_to_surface(m, points[p], fresh) < project_to_surface(m, points[p], warm)) uv[p] = fresh;
         }
-        Eigen::Vector2d warm = uv[p];
-        if (project_to_surface(m, points[p], fresh) < project_to_surface(m, points[p], warm)) uv[p] = fresh;
-      }
+      });
     }
     const bool stepped = global_step_smooth(m, points, uv, mu, energy, o.threads);
     check_finite(m);

@@ -110,29 +110,37 @@ double projected_energy(const Model& m, const std::vector<Eigen::Vector3d>& poin
 bool global_step_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector2d>& uv,
                         double& mu, double& energy, int threads) {
   energy = projected_energy(m, points, uv, threads);
+  const Eigen::Matrix3d r = m.rotation.toRotationMatrix();
+  // One row of the point-to-plane Jacobian per point (in parallel), summed in index order.
+  std::vector<Row> rows(points.size(), Row::Zero());
+  std::vector<double> residual(points.size(), 0.0);
+  constexpr std::size_t chunk = 128;
+  parallel_for((points.size() + chunk - 1) / chunk, threads, [&](std::size_t c) {
+    for (std::size_t p = c * chunk; p < std::min(points.size(), (c + 1) * chunk); ++p) {
+      const double u = uv[p][0], v = uv[p][1];
+      const Eigen::Vector3d x = m.global_point(u, v);
+      const Eigen::Vector3d res = points[p] - x;
+      const Eigen::Matrix<double, 3, 2> t = r * shape_tangents(m.qs, u, v);
+      Eigen::Vector3d n = t.col(0).cross(t.col(1));
+      // Point-to-plane: the residual along the surface normal (the residual itself where
+      // the parameterisation is singular, at the poles).
+      if (n.norm() > 1e-12 * (t.col(0).norm() * t.col(1).norm() + 1e-300))
+        n.normalize();
+      else if (res.norm() > 0)
+        n = res.normalized();
+      else
+        continue;
+      rows[p].segment<3>(0) = n.transpose();
+      rows[p].segment<3>(3) = (x - m.center).cross(n).transpose();
+      rows[p].segment<n_global>(6) = n.transpose() * r * shape_jacobian(m.qs, u, v);
+      residual[p] = n.dot(res);
+    }
+  });
   Normal h = Normal::Zero();
   GlobalStep g = GlobalStep::Zero();
-  const Eigen::Matrix3d r = m.rotation.toRotationMatrix();
   for (std::size_t p = 0; p < points.size(); ++p) {
-    const double u = uv[p][0], v = uv[p][1];
-    const Eigen::Vector3d x = m.global_point(u, v);
-    const Eigen::Vector3d res = points[p] - x;
-    const Eigen::Matrix<double, 3, 2> t = r * shape_tangents(m.qs, u, v);
-    Eigen::Vector3d n = t.col(0).cross(t.col(1));
-    // Point-to-plane: the residual along the surface normal (the residual itself where
-    // the parameterisation is singular, at the poles).
-    if (n.norm() > 1e-12 * (t.col(0).norm() * t.col(1).norm() + 1e-300))
-      n.normalize();
-    else if (res.norm() > 0)
-      n = res.normalized();
-    else
-      continue;
-    Row row;
-    row.segment<3>(0) = n.transpose();
-    row.segment<3>(3) = (x - m.center).cross(n).transpose();
-    row.segment<n_global>(6) = n.transpose() * r * shape_jacobian(m.qs, u, v);
-    h.noalias() += row.transpose() * row;
-    g.noalias() += row.transpose() * n.dot(res);
+    h.noalias() += rows[p].transpose() * rows[p];
+    g.noalias() += rows[p].transpose() * residual[p];
   }
   for (int tries = 0; tries < 12; ++tries) {
     const GlobalStep step = damped_solve(h, g, mu);
