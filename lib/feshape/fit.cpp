@@ -75,6 +75,7 @@ int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOpt
   if (o.solver != Solver::equilibrium)
     euler = std::make_unique<EulerIntegrator>(k, o.beta, o.dt, o.damping, local, o.solver == Solver::semi_implicit);
   std::vector<MeshPoint> assigned;
+  std::vector<Eigen::Vector3d> normals;
   double mu = 1e-3, energy = 0;
   int it = 0;
   converged = false;
@@ -83,6 +84,9 @@ int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOpt
     const std::vector<Eigen::Vector3d> before = m.node_positions();
     if (it % std::max(1, o.reassign_every) == 0) {
       assigned = assign_points(points, before, m.mesh.tris, o.threads);
+      // Residual directions belong to the assignment: between reassignments the points
+      // keep their elements, barycentric coordinates and directions (§2.5).
+      normals = residual_directions(points, before, m.mesh.tris, assigned);
       // Stall test: points near element edges can change elements back and forth, so the
       // nodes jitter above the move tolerance while the fit no longer improves. Stop when
       // the mean distance has not fallen by 1e-4 (relative) over 10 assignments.
@@ -97,7 +101,6 @@ int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOpt
     if (euler) {
       euler->step(m, points, assigned);
     } else {
-      const std::vector<Eigen::Vector3d> normals = residual_directions(points, before, m.mesh.tris, assigned);
       global_step_flat(m, points, assigned, normals, mu, energy);
       if (local) solve_local_equilibrium(m, points, assigned, normals, k, o.beta);
     }
