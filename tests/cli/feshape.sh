@@ -128,6 +128,16 @@ run feshape fit "$WORK/bump.xyz" --grid 6x6 --levels 3 --tau 0.001 --max-nodes 6
 expect_clean_failure 1 feshape
 check "no output file" test ! -e "$WORK/limit.ply"
 
+case_ "standard input and gzip-compressed rows give the same model as the file"
+run feshape fit "$WORK/sphere.xyz" --levels 1 -o "$WORK/file.ply"
+run_stdin "$WORK/sphere.xyz" feshape fit --levels 1
+expect_status 0
+check "stdin = file" cmp "$out" "$WORK/file.ply"
+gzip -c "$WORK/sphere.xyz" >"$WORK/sphere.xyz.gz"
+run feshape fit "$WORK/sphere.xyz.gz" --levels 1 -o "$WORK/gz.ply"
+expect_status 0
+check "gzip = file" cmp "$WORK/gz.ply" "$WORK/file.ply"
+
 case_ "--help, --version, unknown flag"
 run feshape --help
 expect_status 0

@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "feshape/xyz_codec.hpp"
+#include "formats/gzip.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
@@ -13,6 +14,13 @@ std::vector<Eigen::Vector3d> read_points(const std::string& path, const std::str
     throw usage_error("--in-format {}: expected auto, xyz or mesh", format);
   const std::string name = is_stdio(path) ? "-" : path;
   std::string bytes = read_input(path);
+  if (formats::is_gzip(bytes)) {
+    try {
+      bytes = formats::gunzip(bytes);
+    } catch (const Error& e) {
+      throw Error(e.status(), with_location(e.what(), name));
+    }
+  }
   std::vector<Eigen::Vector3d> points;
   auto rows = [&](const std::string& text) {
     try {
@@ -39,7 +47,7 @@ std::vector<Eigen::Vector3d> read_points(const std::string& path, const std::str
       for (const auto& p : points)
         if (!p.allFinite()) throw bad_input("{}", with_location("a vertex has a non-finite coordinate", name));
     } else {
-      points = rows(in.was_gzip ? in.bytes : bytes);
+      points = rows(bytes);
     }
   }
   if (points.size() < 10)
