@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "core/parallel_for.hpp"
 
 namespace fest::feshape {
@@ -10,12 +11,18 @@ namespace fest::feshape {
 std::vector<MeshPoint> assign_points(const std::vector<Eigen::Vector3d>& points,
                                      const std::vector<Eigen::Vector3d>& positions,
                                      const std::vector<std::array<int, 3>>& tris, int threads) {
+  // A non-finite node (a diverged fit, coordinates near the double range) would break the
+  // tree's ordering; stop with a failure instead.
+  for (const auto& x : positions)
+    if (!x.allFinite()) throw make_error(Status::failure, "the model became non-finite (NaN) during fitting");
   const TriangleTree tree(positions, tris);
   std::vector<MeshPoint> r(points.size());
   constexpr std::size_t chunk = 256;
   parallel_for((points.size() + chunk - 1) / chunk, threads, [&](std::size_t c) {
     for (std::size_t i = c * chunk; i < std::min(points.size(), (c + 1) * chunk); ++i) r[i] = tree.closest(points[i]);
   });
+  for (const MeshPoint& p : r)  // every squared distance overflowed to infinity
+    if (p.face < 0) throw make_error(Status::failure, "point-to-model distances overflow double precision: rescale the points");
   return r;
 }
 

@@ -48,6 +48,8 @@ void auto_initialize(const std::vector<Eigen::Vector3d>& points, Model& m) {
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
   cov /= static_cast<double>(points.size());
+  if (!cov.allFinite() || !mean.allFinite())
+    throw make_error(Status::failure, "the points' spread overflows double precision: rescale them");
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // ascending eigenvalues
   Eigen::Matrix3d axes = eig.eigenvectors();                // column 2 = largest variance
   if (axes.determinant() < 0) axes.col(0) = -axes.col(0);

@@ -113,6 +113,12 @@ for i in $(seq 20); do echo "1 2 3"; done >"$WORK/same.xyz"
 run feshape fit "$WORK/same.xyz"; expect_clean_failure 1 feshape
 expect_stderr_has "coincide"
 run feshape fit "$WORK/no-such-file.xyz"; expect_clean_failure 4 feshape
+# coordinates near the double range: squared distances overflow -- a failure, not a crash
+printf '1e300 0 0\n-1e300 0 0\n0 1e300 0\n0 -1e300 0\n0 0 1e300\n0 0 -1e300\n1 1 1\n2 2 2\n3 3 1\n1 3 2\n' >"$WORK/huge.xyz"
+run feshape fit "$WORK/huge.xyz"; expect_clean_failure 1 feshape
+run feshape fit "$WORK/huge.xyz" --qs 1,1,1,1,1,1,0,0,0,0,0; expect_clean_failure 1 feshape
+# the seed's Euler with a step far beyond its stability limit diverges: a failure
+run feshape fit "$FEST_FIXTURES/feshape/squash123.xyz" --solver explicit --dt 10 --max-iter 1000; expect_clean_failure 1 feshape
 
 case_ "bad usage: --grid 2x2, a1 = 0, e1 = 0, tau <= 0, --levels-out without %s"
 run feshape fit "$WORK/sphere.xyz" --grid 2x2; expect_clean_failure 2 feshape
