@@ -133,6 +133,11 @@ case_ "node limit: a failure, nothing written"
 run feshape fit "$WORK/bump.xyz" --grid 6x6 --levels 3 --tau 0.001 --max-nodes 60 -o "$WORK/limit.ply"
 expect_clean_failure 1 feshape
 check "no output file" test ! -e "$WORK/limit.ply"
+run feshape fit "$WORK/bump.xyz" --grid 6x6 --levels 3 --tau 0.001 --max-nodes 60 -o "$WORK/limit.ply" --partial "$WORK/part.off"
+expect_clean_failure 1 feshape
+expect_stderr_has "written to"
+check "no output file" test ! -e "$WORK/limit.ply"
+check "the partial level is closed" awk 'NR == 2 { exit !($2 == 2 * $1 - 4 && $1 <= 60) }' "$WORK/part.off"
 
 case_ "standard input and gzip-compressed rows give the same model as the file"
 run feshape fit "$WORK/sphere.xyz" --levels 1 -o "$WORK/file.ply"

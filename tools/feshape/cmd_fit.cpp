@@ -79,6 +79,7 @@ int run_fit(const FitArgs& a) {
   feshape::FitOptions o = fit_options(a);
   const MeshTarget target = mesh_target(a.output, a.to);
   if (!a.levels_out.empty()) (void)level_path(a.levels_out, "G");
+  if (!a.partial.empty()) (void)mesh_target(a.partial, a.to);
   if (a.init != "auto" && a.init != "given") throw usage_error("--init {}: expected auto or given", a.init);
   const bool given = !a.model.qs.empty();
   if (a.init == "given" && !given) throw usage_error("--init given needs --qs");
@@ -98,7 +99,22 @@ int run_fit(const FitArgs& a) {
     }
     o.move_tol = 5e-5 * 0.5 * (hi - lo).norm();
   }
-  const std::vector<feshape::LevelResult> levels = feshape::fit(points, model, o);
+  std::vector<feshape::LevelResult> done;  // levels finished so far, for --partial
+  std::vector<feshape::LevelResult> levels;
+  try {
+    levels = feshape::fit(points, model, o, [&](const feshape::LevelResult& l) {
+      if (!a.partial.empty()) done.push_back(l);
+    });
+  } catch (const Error& e) {
+    // A failure after some levels (the node limit, a breakdown): the last finished level
+    // goes to --partial when asked, never to the output.
+    if (e.status() == Status::failure && !a.partial.empty() && !done.empty()) {
+      const MeshTarget t = mesh_target(a.partial, a.to);
+      write_output(t.path, encode_model(done.back().model, t));
+      throw Error(e.status(), fmt::format("{}; level {} written to {}", e.what(), done.back().name, a.partial));
+    }
+    throw;
+  }
   for (const auto& l : levels)
     if (l.folded > 0)
       warn("feshape", fmt::format("level {}: {} of {} elements folded over; raise the membrane weights "

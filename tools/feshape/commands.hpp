@@ -35,6 +35,7 @@ struct FitArgs {
   int reassign_every = 1;
   bool no_global_phase = false;
   std::string levels_out;           // pattern with %s
+  std::string partial;              // on a failure after some levels: the last one
   std::string report;
   int threads = 0;
 };

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   fit->add_option("--reassign-every", fa.reassign_every, "Force assignment every K iterations");
   fit->add_flag("--no-global-phase", fa.no_global_phase, "Start with global + local at once (no level G)");
   fit->add_option("--levels-out", fa.levels_out, "Write every level: a path with %s (G, 0, 1, ...)");
+  fit->add_option("--partial", fa.partial, "On a failure after some levels (node limit): write the last finished one here");
   fit->add_option("--report", fa.report, "JSON: parameters and the per-level table (nodes, elements, errors)");
   fest::cli::add_threads(*fit, fa.threads);
 
