@@ -147,3 +147,60 @@ TEST(FeshapeFit, AutoInitFailsOnDegenerateData) {
   for (int i = 0; i < 20; ++i) line.emplace_back(i, 2.0 * i, 0);
   EXPECT_THROW(auto_initialize(line, m), fest::Error);
 }
+
+TEST(FeshapeDynamics, GeneralizedForcesAreMinusTheEnergyGradient) {
+  // Eq. 5: f_c, f_s (and f_d - K q_d) are -dE/dq for E = beta/2 sum |z - x(u_z)|^2
+  // + 1/2 q_d^T K q_d at a fixed assignment, so one Euler step with D = I moves q by
+  // dt * (-grad E). Checked against central differences of E.
+  Model m = truth_model();
+  for (std::size_t i = 0; i < m.d.size(); ++i) m.d[i] = 0.01 * Eigen::Vector3d(std::sin(1.0 * i), std::cos(2.0 * i), 0.3);
+  SampleOptions so;
+  so.count = 300;
+  so.bumps = 2;
+  so.bump_amplitude = 0.05;
+  const std::vector<Eigen::Vector3d> pts = sample_points(m, so);
+  const auto assigned = assign_points(pts, m.node_positions(), m.mesh.tris, 1);
+  const double beta = 3;
+  const Eigen::SparseMatrix<double> k = assemble_stiffness(m.mesh, StiffnessWeights{0.2, 0.3, 0.4, 0, 0, 0});
+  auto energy = [&](const Model& q) {
+    const auto x = q.node_positions();
+    double e = 0;
+    for (std::size_t p = 0; p < pts.size(); ++p) {
+      const auto& f = q.mesh.tris[assigned[p].face];
+      const auto& l = assigned[p].lambda;
+      e += 0.5 * beta * (pts[p] - (l[0] * x[f[0]] + l[1] * x[f[1]] + l[2] * x[f[2]])).squaredNorm();
+    }
+    for (int c = 0; c < 3; ++c) {
+      Eigen::VectorXd dc(static_cast<Eigen::Index>(q.d.size()));
+      for (std::size_t i = 0; i < q.d.size(); ++i) dc[static_cast<Eigen::Index>(i)] = q.d[i][c];
+      e += 0.5 * dc.dot(k * dc);
+    }
+    return e;
+  };
+  const double dt = 1e-7;
+  Model stepped = m;
+  EulerIntegrator(k, beta, dt, Damping{}, true, false).step(stepped, pts, assigned);
+  const double h = 1e-6;
+  for (int i = 0; i < n_global; ++i) {
+    Model plus = m, minus = m;
+    plus.qs[i] += h;
+    minus.qs[i] -= h;
+    const double grad = (energy(plus) - energy(minus)) / (2 * h);
+    EXPECT_NEAR((stepped.qs[i] - m.qs[i]) / dt, -grad, 1e-5 * std::max(1.0, std::abs(grad))) << global_names()[i];
+  }
+  for (int c = 0; c < 3; ++c) {
+    Model plus = m, minus = m;
+    plus.center[c] += h;
+    minus.center[c] -= h;
+    const double grad = (energy(plus) - energy(minus)) / (2 * h);
+    EXPECT_NEAR((stepped.center[c] - m.center[c]) / dt, -grad, 1e-5 * std::max(1.0, std::abs(grad)));
+  }
+  for (std::size_t node : {0ul, 17ul, 40ul})
+    for (int c = 0; c < 3; ++c) {
+      Model plus = m, minus = m;
+      plus.d[node][c] += h;
+      minus.d[node][c] -= h;
+      const double grad = (energy(plus) - energy(minus)) / (2 * h);
+      EXPECT_NEAR((stepped.d[node][c] - m.d[node][c]) / dt, -grad, 1e-5 * std::max(1.0, std::abs(grad)));
+    }
+}
