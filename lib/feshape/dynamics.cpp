@@ -61,10 +61,10 @@ void EulerIntegrator::step(Model& m, const std::vector<Eigen::Vector3d>& points,
       next = factor_->solver.solve(damping_.d * d + dt_ * fd);
     else
       next = d + dt_ / damping_.d * (fd - k_ * d);
-    if (!next.allFinite()) throw make_error(Status::failure, "explicit integration diverged (NaN); reduce --dt");
+    if (!next.allFinite()) throw make_error(Status::failure, "explicit integration diverged (NaN): the time step is too large for the data's scale");
     for (Eigen::Index i = 0; i < d.rows(); ++i) m.d[static_cast<std::size_t>(i)] = next.row(i).transpose();
   }
-  if (!step.allFinite()) throw make_error(Status::failure, "explicit integration diverged (NaN); reduce --dt");
+  if (!step.allFinite()) throw make_error(Status::failure, "explicit integration diverged (NaN): the time step is too large for the data's scale");
   apply_global_step(m, step);
 }
 

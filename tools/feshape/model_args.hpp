@@ -7,7 +7,7 @@
 
 namespace fest::feshape_tool {
 
-// "MxN" -> rings, meridians (rings >= 3? no: >= 1 ring; the seed's smallest is 5x5).
+// "MxN" -> rings, meridians, each in 3..1000 (the seed's smallest grid is 5x5).
 void parse_grid(const std::string& grid, int& rings, int& meridians);
 // The model the flags describe; `qs` empty gives the unit sphere (1,1,1,1,1,1,0,0,0,0,0).
 feshape::Model model_from_args(const ModelArgs& a);
