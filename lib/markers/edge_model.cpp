@@ -175,6 +175,9 @@ bool fit_edge_model(const cv::Mat& grey8, Corners& corners, int cells, const Cam
   double side = 0;
   for (int k = 0; k < 4; ++k) side += cv::norm(ideal[(k + 1) % 4] - ideal[k]) / 4;
   const double cell = side / cells;
+  // Below about 2 px a cell, the band of half a cell holds no plateau on either side
+  // and the next edges fall inside it: the edge-point corners are kept.
+  if (cell < 1.75) return false;
   const double band = std::clamp(o.band_cells * cell, o.band_min_px, o.band_max_px);
   std::array<Line, 4> lines;
   for (int s = 0; s < 4; ++s) {
