@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "markers/corner_refine.hpp"
+#include "markers/edge_model.hpp"
 
 namespace fest::markers {
 
@@ -174,7 +175,8 @@ std::vector<Detection> detect_markers(const cv::Mat& grey8, const DetectorOption
   // In a noisy image the edges are located on a lightly smoothed copy: the noise of single
   // pixels averages out, and a symmetric blur moves no edge. On a clean image smoothing
   // only widens the edge, so it is skipped.
-  const double sigma = o.edge_sigma >= 0 ? o.edge_sigma : (image_noise(grey8) > 2.5 ? 0.8 : 0.0);
+  const double noise = image_noise(grey8);
+  const double sigma = o.edge_sigma >= 0 ? o.edge_sigma : (noise > 2.5 ? 0.8 : 0.0);
   cv::Mat smooth;
   if (sigma > 0) cv::GaussianBlur(grey8, smooth, cv::Size(0, 0), sigma);
   else smooth = grey8;
@@ -188,6 +190,10 @@ std::vector<Detection> detect_markers(const cv::Mat& grey8, const DetectorOption
     Detection d;
     const bool ok = o.dictionary ? identify_binary(grey8, quad, o, d) : identify_pattern(grey8, quad, o, d);
     if (!ok) continue;
+    // The edge points located the sides well enough to read the code; the blurred-step
+    // model over every pixel along the sides (on the unsmoothed image) places them
+    // closer, for markers only (docs/markerpose.md §2.4).
+    if (o.refine_corners && o.edge_model) fit_edge_model(grey8, d.corners, cells, o.camera, noise);
     bool duplicate = false;
     for (Detection& f : found)
       if (f.id == d.id && same_place(f.corners, d.corners)) {

@@ -24,6 +24,7 @@ struct DetectorOptions {
   double uncertain_margin = 0.25;     // cells this close to the threshold (fraction of the
                                       // contrast) are erasures in the decoding
   bool refine_corners = true;
+  bool edge_model = true;  // after identification, fit the blurred-step edge model (§2.4)
   double edge_sigma = -1;  // Gaussian smoothing (px) of the image the edges are fitted on;
                            // -1: 0.8 when image_noise() exceeds 2.5 grey levels, else none
   const CameraModel* camera = nullptr;  // lens distortion for the edge fit (optional)
