@@ -217,7 +217,28 @@ class Adaptive {
     return false;
   }
 
-  // Each of the 12 edges has exactly one finest sign change if its ends differ, else none.
+  // Whether an active leaf finer than L owns a cell around L's edge along axis a through
+  // p (the other two coordinates) from t0 to t1: such a leaf sees part of the edge at its own
+  // resolution, so both views of the edge must agree.
+  bool edge_touches_finer(const Leaf& L, int a, const std::size_t p[3], std::size_t t0, std::size_t t1) const {
+    const int u = (a + 1) % 3, w = (a + 2) % 3;
+    for (int du = -1; du <= 0; ++du)
+      for (int dw = -1; dw <= 0; ++dw) {
+        const long cu = long(p[u]) + du, cw = long(p[w]) + dw;
+        if (cu < 0 || cw < 0 || cu >= long(cn_[u]) || cw >= long(cn_[w])) continue;
+        std::size_t c[3];
+        c[u] = std::size_t(cu), c[w] = std::size_t(cw);
+        for (std::size_t t = t0; t < t1; ++t) {
+          c[a] = t;
+          const int lv = level_[cell(c[0], c[1], c[2])];
+          if (lv >= 0 && lv < L.level) return true;
+        }
+      }
+    return false;
+  }
+
+  // Each of the 12 edges has exactly one finest sign change if its ends differ, else none
+  // (on the edges that EdgeRule selects).
   bool edges_consistent(const Leaf& L) const {
     std::size_t lo[3], hi[3];
     box(L, lo, hi);
@@ -237,7 +258,7 @@ class Adaptive {
           changes += c != prev;
           prev = c;
         }
-        if (changes != (first != prev ? 1 : 0)) return false;
+        if (changes != (first != prev ? 1 : 0) && (o_.edge_rule == EdgeRule::all || edge_touches_finer(L, a, p, lo[a], hi[a]))) return false;
       }
     }
     return true;

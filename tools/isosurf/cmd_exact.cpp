@@ -113,6 +113,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     ao.focus_radius = ad->focus_radius;
     ao.error_growth = ad->error_growth;
     ao.max_level = ad->max_level;
+    ao.edge_rule = ad->edge_rule == "all" ? isosurface::EdgeRule::all : isosurface::EdgeRule::transitions;
     ao.face_rule = eo.face_rule;
     ao.triangulation = eo.triangulation;
     ao.threads = threads;
@@ -138,6 +139,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     j["mode"] = ad ? "adaptive" : "exact";
     if (ad) {
       j["leaves_per_level"] = ar.leaves_per_level;
+      j["edge_rule"] = ad->edge_rule;
       j["closure_splits"] = ar.closure_splits;
       j["max_error_bound"] = ar.max_error_bound;
     }

@@ -36,6 +36,7 @@ struct AdaptiveArgs {
   std::string max_error = "0";        // eps0 (data units) or "inf"
   double error_growth = 1;
   int max_level = -1;
+  std::string edge_rule = "transitions";  // closure: "transitions" or "all" (docs/isosurf.md 5.2)
 };
 
 struct ProgressiveArgs {

@@ -66,6 +66,8 @@ int main(int argc, char** argv) {
   d->add_option("--max-error", ad.max_error, "Tolerated trilinear error eps0 (data units), or inf (distance rule only)");
   d->add_option("--error-growth", ad.error_growth, "eps = eps0 (1 + d/r0)^P")->check(CLI::Range(0.0, 16.0));
   d->add_option("--max-level", ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
+  d->add_option("--edge-rule", ad.edge_rule, "Leaf edges with one finest crossing at most: transitions (default) or all (keeps thin features)")
+      ->check(CLI::IsMember({"transitions", "all"}));
   fest::cli::add_threads(*d, ad_ex.threads);
 
   ExactOptions pr_ex;
@@ -90,6 +92,8 @@ int main(int argc, char** argv) {
   g->add_option("--focus-radius", pr_ad.focus_radius, "r0 (default diagonal/32)");
   g->add_option("--error-growth", pr_ad.error_growth, "eps = eps0 (1 + d/r0)^P")->check(CLI::Range(0.0, 16.0));
   g->add_option("--max-level", pr_ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
+  g->add_option("--edge-rule", pr_ad.edge_rule, "Leaf edges with one finest crossing at most: transitions (default) or all")
+      ->check(CLI::IsMember({"transitions", "all"}));
   fest::cli::add_threads(*g, pr_ex.threads);
 
   StatsOptions st;

@@ -9,6 +9,10 @@ their outputs (pure Python: no fest code).
   fixtures.py pfm IMG.pfm X Y           prints the RGB of pixel (X, Y) (Y from the top)
   fixtures.py centroid IMG.pfm          intensity-weighted centroid "x y" of channel 0
   fixtures.py subset A.ply B.ply        exit 0 when every vertex of A is a vertex of B (bitwise)
+  fixtures.py crop IN.ply OUT.ply X,Y,Z R0 R1
+                                        binary PLY of the triangles whose three vertices lie at a
+                                        distance in [R0, R1) from (X, Y, Z) (for region-wise
+                                        Hausdorff distances; unused vertices dropped)
 """
 import math
 import struct
@@ -164,6 +168,48 @@ def centroid(path):
     print("%.6f %.6f" % (sx / s, sy / s))
 
 
+def crop(src, dst, centre, r0, r1):
+    data = open(src, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    head = data[:end].decode().splitlines()
+    nv = [int(l.split()[2]) for l in head if l.startswith("element vertex")][0]
+    nf = [int(l.split()[2]) for l in head if l.startswith("element face")][0]
+    nprops = 0
+    for l in head:
+        if l.startswith("element face"):
+            break
+        if l.startswith("property"):
+            nprops += 1
+    assert all(l.split()[1] == "float" for l in head if l.startswith("property") and "list" not in l)
+    stride = 4 * nprops
+    c = [float(x) for x in centre.split(",")]
+    V, keep = [], []
+    for i in range(nv):
+        x = struct.unpack_from("<3f", data, end + stride * i)
+        V.append(x)
+        d = math.sqrt(sum((x[a] - c[a]) ** 2 for a in range(3)))
+        keep.append(r0 <= d < r1)
+    pos = end + stride * nv
+    F = []
+    for _ in range(nf):
+        assert data[pos] == 3
+        t = struct.unpack_from("<3I", data, pos + 1)
+        pos += 13
+        if keep[t[0]] and keep[t[1]] and keep[t[2]]:
+            F.append(t)
+    used = sorted({v for t in F for v in t})
+    new = {v: i for i, v in enumerate(used)}
+    out = bytearray(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+                     "property float y\nproperty float z\nelement face %d\n"
+                     "property list uchar uint vertex_indices\nend_header\n" % (len(used), len(F))).encode())
+    for v in used:
+        out += struct.pack("<3f", *V[v])
+    for t in F:
+        out += struct.pack("<B3I", 3, new[t[0]], new[t[1]], new[t[2]])
+    open(dst, "wb").write(out)
+    print(len(used), len(F))
+
+
 if __name__ == "__main__":
     cmd = sys.argv[1]
     if cmd == "volume":
@@ -178,5 +224,7 @@ if __name__ == "__main__":
         centroid(sys.argv[2])
     elif cmd == "subset":
         sys.exit(0 if ply_vertices(sys.argv[2]) <= ply_vertices(sys.argv[3]) else 1)
+    elif cmd == "crop":
+        crop(sys.argv[2], sys.argv[3], sys.argv[4], float(sys.argv[5]), float(sys.argv[6]))
     else:
         sys.exit(__doc__)
