@@ -12,8 +12,9 @@ namespace {
 using volume_pyramid::MinMaxPyramid;
 using volume_pyramid::ScalarGrid;
 
-constexpr std::size_t kBlock = 8;
 constexpr int kTile = 16;
+constexpr bool kValueFromShading = true;
+constexpr int kSkipLevels = 4;  // skipping tables: the pyramid's finest level and up to 3 coarser
 
 struct Mat3 {
   double m[9];
@@ -43,53 +44,49 @@ double pixel_hash(int i, int j, int s) {
 class Caster {
  public:
   Caster(const ScalarGrid& g, const MinMaxPyramid* p, const TransferFunction& tf, const RenderOptions& o,
-         SurfaceTracer surf, const void* ctx)
+         SurfaceTracer surf, const void* ctx, const ShadingVolume* sv)
       : g_(g), pyr_(p), tf_(tf), o_(o), surf_(surf), ctx_(ctx), inv_(inverse(g.axes)), inv_t_(inv_.transposed()) {
     double hmin = std::numeric_limits<double>::infinity();
     for (int c = 0; c < 3; ++c) hmin = std::min(hmin, std::sqrt(g.axes[c] * g.axes[c] + g.axes[3 + c] * g.axes[3 + c] + g.axes[6 + c] * g.axes[6 + c]));
     hmin_ = hmin;
     if (o.phong[3] >= 0 && o.phong[3] <= 1024 && o.phong[3] == std::floor(o.phong[3])) spec_int_ = static_cast<int>(o.phong[3]);
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (float v : g.values) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (p && p->root_level() >= p->finest_level()) {  // the root node holds every sample
+      const int r = p->root_level();
+      for (std::size_t k = 0; k < p->nodes(r)[2]; ++k)
+        for (std::size_t j = 0; j < p->nodes(r)[1]; ++j)
+          for (std::size_t i = 0; i < p->nodes(r)[0]; ++i) lo = std::min(lo, p->min(r, i, j, k)), hi = std::max(hi, p->max(r, i, j, k));
+    } else {
+      for (float v : g.values) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
     range_ = hi > lo ? double(hi) - lo : 1.0;
-    if (pyr_ && o.skip_empty && o.mode == Mode::dvr && !o.preint) {
-      const auto n = pyr_->nodes(3);
-      transparent_.resize(n[0] * n[1] * n[2]);
-      for (std::size_t k = 0; k < n[2]; ++k)
-        for (std::size_t j = 0; j < n[1]; ++j)
-          for (std::size_t i = 0; i < n[0]; ++i)
-            transparent_[i + n[0] * (j + n[1] * k)] = tf.transparent(pyr_->min(3, i, j, k), pyr_->max(3, i, j, k));
-      bn_ = n;
+    if (pyr_) lf_ = pyr_->finest_level();
+    // Skipping tables, finest level first: a node is skippable when no sample in it can
+    // contribute (DVR: tau = 0 over [min, max]; iso: no iso-value in [min, max]). A node
+    // skippable at one level is skippable at every finer level inside it (its range shrinks).
+    const bool skip_dvr = pyr_ && o.skip_empty && o.mode == Mode::dvr && !o.preint;
+    const bool skip_iso = pyr_ && o.skip_empty && o.mode == Mode::iso;
+    if (skip_dvr || skip_iso) {
+      for (int L = lf_; L <= pyr_->root_level() && L < lf_ + kSkipLevels; ++L) {
+        const auto n = pyr_->nodes(L);
+        std::vector<char> t(n[0] * n[1] * n[2]);
+        for (std::size_t k = 0; k < n[2]; ++k)
+          for (std::size_t j = 0; j < n[1]; ++j)
+            for (std::size_t i = 0; i < n[0]; ++i) {
+              const float mn = pyr_->min(L, i, j, k), mx = pyr_->max(L, i, j, k);
+              bool none = true;
+              if (skip_dvr) none = tf.transparent(mn, mx);
+              else
+                for (const auto& I : o.isos) none = none && !(mn <= I.value && I.value <= mx);
+              t[i + n[0] * (j + n[1] * k)] = none;
+            }
+        transparent_.push_back(std::move(t));
+        bn_.push_back(n);
+      }
     }
     if (o.shade && o.gradient_cache) {
-      const auto& d = g.dims;
-      grad_.resize(3 * g.size());
-      parallel_for(d[2], o.threads, [&](std::size_t k) {
-        for (std::size_t j = 0; j < d[1]; ++j)
-          for (std::size_t i = 0; i < d[0]; ++i) {
-            const std::size_t q[3] = {i, j, k};
-            float* out = &grad_[3 * g.index(i, j, k)];
-            for (int a = 0; a < 3; ++a) {
-              std::size_t m[3] = {q[0], q[1], q[2]}, up[3] = {q[0], q[1], q[2]};
-              if (m[a] > 0) --m[a];
-              if (up[a] + 1 < d[a]) ++up[a];
-              out[a] = static_cast<float>((double(g.at(up[0], up[1], up[2])) - g.at(m[0], m[1], m[2])) / double(up[a] - m[a]));
-            }
-          }
-      });
-    }
-    if (pyr_ && o.skip_empty && o.mode == Mode::iso) {
-      const auto n = pyr_->nodes(3);
-      transparent_.resize(n[0] * n[1] * n[2]);
-      for (std::size_t k = 0; k < n[2]; ++k)
-        for (std::size_t j = 0; j < n[1]; ++j)
-          for (std::size_t i = 0; i < n[0]; ++i) {
-            bool none = true;
-            for (const auto& L : o.isos)
-              none = none && !(pyr_->min(3, i, j, k) <= L.value && L.value <= pyr_->max(3, i, j, k));
-            transparent_[i + n[0] * (j + n[1] * k)] = none;
-          }
-      bn_ = n;
+      if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
+      f4_ = sv->data.get();
     }
   }
 
@@ -126,6 +123,36 @@ class Caster {
   }
 
  private:
+  // Where a point falls: its cell's lower corner (clamped into the box) and the trilinear
+  // weights; shared by the value and the gradient of one sample.
+  struct Cell {
+    std::size_t c[3];
+    std::size_t base;
+    double w[3];
+  };
+  Cell locate(const Vec3& p) const {
+    Cell e;
+    for (int a = 0; a < 3; ++a) {
+      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
+      e.c[a] = std::min(static_cast<std::size_t>(x), g_.dims[a] - 2);
+      e.w[a] = x - e.c[a];
+    }
+    e.base = g_.index(e.c[0], e.c[1], e.c[2]);
+    return e;
+  }
+  // Trilinear value (the same arithmetic as sample_trilinear).
+  double trilinear(const Cell& e) const {
+    const float* b;
+    std::size_t sx, sy, sz;
+    if (kValueFromShading && f4_) b = f4_ + 4 * e.base, sx = 4, sy = 4 * g_.dims[0], sz = sy * g_.dims[1];
+    else b = &g_.values[e.base], sx = 1, sy = g_.dims[0], sz = sy * g_.dims[1];
+    const double c00 = b[0] + e.w[0] * (double(b[sx]) - b[0]);
+    const double c10 = b[sy] + e.w[0] * (double(b[sy + sx]) - b[sy]);
+    const double c01 = b[sz] + e.w[0] * (double(b[sz + sx]) - b[sz]);
+    const double c11 = b[sz + sy] + e.w[0] * (double(b[sz + sy + sx]) - b[sz + sy]);
+    const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
+    return c0 + e.w[2] * (c1 - c0);
+  }
   double value(const Vec3& p) const {
     if (o_.nearest) {
       auto idx = [&](double x, int a) {
@@ -133,28 +160,24 @@ class Caster {
       };
       return g_.at(idx(p[0], 0), idx(p[1], 1), idx(p[2], 2));
     }
-    return sample_trilinear(g_, p[0], p[1], p[2]);
+    return trilinear(locate(p));
   }
 
   // Central-difference gradient at the 8 surrounding samples, trilinearly interpolated
   // (index space), then mapped to world space.
-  Vec3 gradient(const Vec3& p) const {
-    std::size_t c[3];
-    double w[3];
-    for (int a = 0; a < 3; ++a) {
-      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-      c[a] = std::min(static_cast<std::size_t>(x), g_.dims[a] - 2);
-      w[a] = x - c[a];
-    }
+  Vec3 gradient(const Cell& e) const {
+    const double* w = e.w;
     Vec3 gi{0, 0, 0};
-    if (!grad_.empty()) {
+    if (f4_) {
+      const std::size_t sy = g_.dims[0], sz = sy * g_.dims[1];
       for (int corner = 0; corner < 8; ++corner) {
         const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
-        const float* q = &grad_[3 * g_.index(c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1))];
+        const float* q = f4_ + 4 * (e.base + (corner & 1) + (corner >> 1 & 1) * sy + (corner >> 2 & 1) * sz) + 1;
         for (int a = 0; a < 3; ++a) gi[a] += wt * q[a];
       }
       return inv_t_ * gi;
     }
+    const std::size_t* c = e.c;
     for (int corner = 0; corner < 8; ++corner) {
       const std::size_t q[3] = {c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1)};
       const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
@@ -169,12 +192,13 @@ class Caster {
     return inv_t_ * gi;  // grad_world = A^-T grad_index
   }
 
-  std::array<double, 3> shade(const std::array<double, 3>& c, const Vec3& p, const Vec3& wdir) const {
-    const Vec3 g = gradient(p);
+  // l: unit vector towards the head light, -dir/|dir| (one per ray).
+  static Vec3 head_light(const Vec3& wdir) { return (-1.0 / norm(wdir)) * wdir; }
+  std::array<double, 3> shade(const std::array<double, 3>& c, const Cell& cell, const Vec3& l) const {
+    const Vec3 g = gradient(cell);
     const double gl = norm(g);
     if (gl <= 1e-6 * range_) return c;  // no reliable normal: unshaded
     const Vec3 n = (-1.0 / gl) * g;
-    const Vec3 l = (-1.0 / norm(wdir)) * wdir;  // head light
     double nl = dot(n, l);
     if (o_.two_sided) nl = std::abs(nl);
     const double diff = std::max(0.0, nl);
@@ -182,8 +206,8 @@ class Caster {
     if (spec_int_ >= 0) {  // integer exponent: by squaring (std::pow dominated the shaded sample)
       spec = 1;
       double b = diff;
-      for (int e = spec_int_; e; e >>= 1, b *= b)
-        if (e & 1) spec *= b;
+      for (int x = spec_int_; x; x >>= 1, b *= b)
+        if (x & 1) spec *= b;
     } else {
       spec = std::pow(diff, o_.phong[3]);
     }
@@ -192,20 +216,31 @@ class Caster {
     return out;
   }
 
-  bool block_transparent(const Vec3& p, std::size_t b[3]) const {
-    for (int a = 0; a < 3; ++a) {
-      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-      b[a] = std::min(static_cast<std::size_t>(x) / kBlock, bn_[a] - 1);
+  // The coarsest skipping level whose node containing p is skippable (0 = the finest), its
+  // node in b; -1 when the finest node is not.
+  int skippable(const Vec3& p, std::size_t b[3]) const {
+    b[0] = b[1] = b[2] = 0;
+    std::size_t c[3];
+    for (int a = 0; a < 3; ++a) c[a] = static_cast<std::size_t>(std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1)));
+    int found = -1;
+    for (int L = 0; L < static_cast<int>(transparent_.size()); ++L) {
+      const auto& n = bn_[L];
+      std::size_t q[3];
+      for (int a = 0; a < 3; ++a) q[a] = std::min(c[a] >> (lf_ + L), n[a] - 1);
+      if (!transparent_[L][q[0] + n[0] * (q[1] + n[1] * q[2])]) break;
+      found = L;
+      b[0] = q[0], b[1] = q[1], b[2] = q[2];
     }
-    return transparent_[b[0] + bn_[0] * (b[1] + bn_[1] * b[2])];
+    return found;
   }
 
-  // Ray parameter where the ray leaves block b's closed box.
-  double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3]) const {
+  // Ray parameter where the ray leaves the closed box of node b of skipping level L.
+  double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3], int L) const {
+    const std::size_t size = std::size_t{1} << (lf_ + L);
     double t = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
       if (d[a] == 0) continue;
-      const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
+      const double lo = double(b[a] * size), hi = double(std::min((b[a] + 1) * size, g_.dims[a] - 1));
       t = std::min(t, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
     }
     return t;
@@ -223,18 +258,21 @@ class Caster {
     double C[3] = {0, 0, 0}, A = 0;
     double prev_v = 0;
     bool have_prev = false;
+    const Vec3 light = head_light(wdir);
+    double opaque_until = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < n; ++k) {
       const double ta = t0 + k * dt, tb = k + 1 == n ? t1 : std::min(t0 + (k + 1) * dt, t1);
       if (tb <= ta) continue;
       const double len = (tb - ta) * vox_per_t;
       const double tm = (k + 1 < n || tb - ta >= dt) && o_.jitter ? ta + jit * dt : 0.5 * (ta + tb);
       const Vec3 p = o + tm * d;
-      if (!transparent_.empty()) {
+      if (!transparent_.empty() && !(tm < opaque_until)) {
         std::size_t b[3];
-        if (block_transparent(p, b)) {
-          // Every sample whose midpoint is inside this block contributes exactly nothing;
-          // jump past them (a margin keeps samples on the block's face computed).
-          const double te = block_exit(o, d, b) - 1e-9 * dt;
+        const int L = skippable(p, b);
+        if (L >= 0) {
+          // Every sample whose midpoint is inside this node contributes exactly nothing;
+          // jump past them (a margin keeps samples on the node's face computed).
+          const double te = block_exit(o, d, b, L) - 1e-9 * dt;
           std::size_t next = k + 1;
           if (te > tm) {
             const double kk = std::floor((te - t0) / dt - 0.5);
@@ -245,6 +283,12 @@ class Caster {
           have_prev = false;
           continue;
         }
+        // Not skippable: neither is any sample before the ray leaves this finest node
+        // (computing a sample that could have been skipped changes nothing either).
+        std::size_t c[3];
+        for (int a = 0; a < 3; ++a)
+          c[a] = std::min(static_cast<std::size_t>(std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1))) >> lf_, bn_[0][a] - 1);
+        opaque_until = block_exit(o, d, c, 0);
       }
       ++st.samples;
       double alpha;
@@ -265,13 +309,24 @@ class Caster {
           else
             c = tf_.at(0.5 * (vf + vb)).rgb;
         }
-      } else {
+        if (alpha <= 0) continue;
+        if (o_.shade) c = shade(c, locate(p), light);
+      } else if (o_.nearest) {
         const auto s = tf_.at(value(p));
+        if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
         alpha = 1 - std::exp(-s.tau * len);
         c = s.rgb;
+        if (alpha <= 0) continue;
+        if (o_.shade) c = shade(c, locate(p), light);
+      } else {
+        const Cell e = locate(p);
+        const auto s = tf_.at(trilinear(e));
+        if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
+        alpha = 1 - std::exp(-s.tau * len);
+        c = s.rgb;
+        if (alpha <= 0) continue;
+        if (o_.shade) c = shade(c, e, light);
       }
-      if (alpha <= 0) continue;
-      if (o_.shade) c = shade(c, p, wdir);
       const double w = (1 - A) * alpha;
       for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
       const double before = A;
@@ -301,16 +356,11 @@ class Caster {
         std::size_t b[3];
         for (int a = 0; a < 3; ++a) {
           const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-          b[a] = std::min(static_cast<std::size_t>(x) / kBlock, pyr_->nodes(3)[a] - 1);
+          b[a] = std::min(static_cast<std::size_t>(x) >> lf_, pyr_->nodes(lf_)[a] - 1);
         }
-        const bool useless = o_.mode == Mode::mip ? pyr_->max(3, b[0], b[1], b[2]) <= best : pyr_->min(3, b[0], b[1], b[2]) >= best;
+        const bool useless = o_.mode == Mode::mip ? pyr_->max(lf_, b[0], b[1], b[2]) <= best : pyr_->min(lf_, b[0], b[1], b[2]) >= best;
         if (useless) {
-          double te = std::numeric_limits<double>::infinity();
-          for (int a = 0; a < 3; ++a) {
-            if (d[a] == 0) continue;
-            const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
-            te = std::min(te, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
-          }
+          double te = block_exit(o, d, b, 0);
           te -= 1e-9 * dt;
           const double kk = std::floor((te - t0) / dt - 0.5);
           std::size_t next = k + 1;
@@ -379,14 +429,16 @@ class Caster {
     const std::size_t n = segments(t0, t1, dt);
     double C[3] = {0, 0, 0}, A = 0;
     double ta = t0, va = value(o + t0 * d);
+    const Vec3 light = head_light(wdir);
     for (std::size_t k = 0; k < n; ++k) {
       const double tb = std::min(t0 + (k + 1) * dt, t1);
       if (!transparent_.empty()) {
         std::size_t b[3];
         const Vec3 pa = o + ta * d;
-        if (block_transparent(pa, b)) {
-          // no iso-value inside this block: the samples before its exit see no crossing
-          const double te = block_exit(o, d, b) - 1e-9 * dt;
+        const int L = skippable(pa, b);
+        if (L >= 0) {
+          // no iso-value inside this node: the samples before its exit see no crossing
+          const double te = block_exit(o, d, b, L) - 1e-9 * dt;
           const double kk = std::floor((te - t0) / dt) - 1;
           if (kk >= double(n)) {  // the rest of the ray lies in this block
             st.skipped += n - k;
@@ -421,7 +473,7 @@ class Caster {
       for (const auto& [t, L] : hits) {
         const Vec3 p = o + t * d;
         std::array<double, 3> c = L->color ? *L->color : tf_.at(L->value).rgb;
-        if (o_.shade) c = shade(c, p, wdir);
+        if (o_.shade) c = shade(c, locate(p), light);
         const double w = (1 - A) * L->alpha;
         for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
         if (A < 1 && !(depth < std::numeric_limits<double>::infinity()) && L->alpha >= 1) depth = t * dlen;
@@ -444,13 +496,38 @@ class Caster {
   const void* ctx_;
   Mat3 inv_, inv_t_;
   double hmin_ = 1, range_ = 1;
-  std::vector<char> transparent_;
-  std::vector<float> grad_;
+  int lf_ = 3;                                      // the pyramid's finest level
+  std::vector<std::vector<char>> transparent_;      // skipping tables, finest level first
+  std::vector<std::array<std::size_t, 3>> bn_;      // their nodes per axis
+  ShadingVolume own_;                               // built here when the caller gave none
+  const float* f4_ = nullptr;                       // {f, grad f} per sample, or null
   int spec_int_ = -1;
-  std::array<std::size_t, 3> bn_{0, 0, 0};
 };
 
 }  // namespace
+
+ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
+  ShadingVolume sv;
+  const auto& d = g.dims;
+  sv.samples = g.size();
+  sv.data.reset(new float[4 * sv.samples]);
+  float* data = sv.data.get();
+  parallel_for(d[2], threads, [&](std::size_t k) {
+    for (std::size_t j = 0; j < d[1]; ++j)
+      for (std::size_t i = 0; i < d[0]; ++i) {
+        const std::size_t q[3] = {i, j, k};
+        float* out = data + 4 * g.index(i, j, k);
+        out[0] = g.at(i, j, k);
+        for (int a = 0; a < 3; ++a) {
+          std::size_t m[3] = {q[0], q[1], q[2]}, up[3] = {q[0], q[1], q[2]};
+          if (m[a] > 0) --m[a];
+          if (up[a] + 1 < d[a]) ++up[a];
+          out[1 + a] = static_cast<float>((double(g.at(up[0], up[1], up[2])) - g.at(m[0], m[1], m[2])) / double(up[a] - m[a]));
+        }
+      }
+  });
+  return sv;
+}
 
 double sample_trilinear(const ScalarGrid& g, double x, double y, double z) {
   const double p[3] = {x, y, z};
@@ -491,7 +568,7 @@ bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
 }
 
 RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const TransferFunction& tf, const Camera& cam,
-                     const RenderOptions& o, SurfaceTracer surface, const void* ctx) {
+                     const RenderOptions& o, SurfaceTracer surface, const void* ctx, const ShadingVolume* shading) {
   if (!(o.step > 0)) throw std::invalid_argument("step must be positive");
   if (o.spp != 1 && o.spp != 4 && o.spp != 9 && o.spp != 16) throw std::invalid_argument("spp must be 1, 4, 9 or 16");
   if (o.mode == Mode::iso && o.isos.empty()) throw std::invalid_argument("iso mode needs at least one iso-value");
@@ -505,7 +582,8 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
   img.depth.assign(static_cast<std::size_t>(W) * H, std::numeric_limits<float>::infinity());
   const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
   std::vector<RenderStats> tile_stats(static_cast<std::size_t>(tiles_x) * tiles_y);
-  const Caster caster(grid, pyramid, tf, o, surface, ctx);
+  if (shading && shading->samples != grid.size()) throw std::invalid_argument("shading volume does not match the grid");
+  const Caster caster(grid, pyramid, tf, o, surface, ctx, shading);
   const int sub = o.spp == 16 ? 4 : o.spp == 9 ? 3 : o.spp == 4 ? 2 : 1;
   parallel_for(tile_stats.size(), o.threads, [&](std::size_t tile) {
     const int tx = static_cast<int>(tile % tiles_x), ty = static_cast<int>(tile / tiles_x);
