@@ -1,5 +1,9 @@
 #include "raycast/render.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -13,7 +17,6 @@ using volume_pyramid::MinMaxPyramid;
 using volume_pyramid::ScalarGrid;
 
 constexpr int kTile = 16;
-constexpr bool kValueFromShading = true;
 constexpr int kSkipLevels = 4;  // skipping tables: the pyramid's finest level and up to 3 coarser
 
 struct Mat3 {
@@ -87,6 +90,7 @@ class Caster {
     if (o.shade && o.gradient_cache) {
       if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
       f4_ = sv->data.get();
+      sy4_ = 4 * g.dims[0], sz4_ = sy4_ * g.dims[1];
     }
   }
 
@@ -144,7 +148,7 @@ class Caster {
   double trilinear(const Cell& e) const {
     const float* b;
     std::size_t sx, sy, sz;
-    if (kValueFromShading && f4_) b = f4_ + 4 * e.base, sx = 4, sy = 4 * g_.dims[0], sz = sy * g_.dims[1];
+    if (f4_) b = f4_ + 4 * e.base, sx = 4, sy = sy4_, sz = sz4_;
     else b = &g_.values[e.base], sx = 1, sy = g_.dims[0], sz = sy * g_.dims[1];
     const double c00 = b[0] + e.w[0] * (double(b[sx]) - b[0]);
     const double c10 = b[sy] + e.w[0] * (double(b[sy + sx]) - b[sy]);
@@ -169,12 +173,32 @@ class Caster {
     const double* w = e.w;
     Vec3 gi{0, 0, 0};
     if (f4_) {
-      const std::size_t sy = g_.dims[0], sz = sy * g_.dims[1];
+      const std::size_t sy = sy4_, sz = sz4_;
+      const std::size_t offset[8] = {0, 4, sy, sy + 4, sz, sz + 4, sz + sy, sz + sy + 4};
+      // corner weights ((x-weight * y-weight) * z-weight), the same products as the scalar
+      // loop below
+      const double x0 = 1 - w[0], y0 = 1 - w[1], z0 = 1 - w[2];
+      const double xy[4] = {x0 * y0, w[0] * y0, x0 * w[1], w[0] * w[1]};
+      const float* q = f4_ + 4 * e.base;
+#if defined(__SSE2__)
+      // the x and y components in the two lanes of one register, z alone: per component the
+      // same double products and sums in the same order as the scalar loop
+      __m128d gxy = _mm_setzero_pd();
+      double gz = 0;
       for (int corner = 0; corner < 8; ++corner) {
-        const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
-        const float* q = f4_ + 4 * (e.base + (corner & 1) + (corner >> 1 & 1) * sy + (corner >> 2 & 1) * sz) + 1;
-        for (int a = 0; a < 3; ++a) gi[a] += wt * q[a];
+        const double wt = xy[corner & 3] * (corner & 4 ? w[2] : z0);
+        const __m128 v = _mm_loadu_ps(q + offset[corner]);  // f, fx, fy, fz
+        gxy = _mm_add_pd(gxy, _mm_mul_pd(_mm_set1_pd(wt), _mm_cvtps_pd(_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 2, 1)))));
+        gz += wt * double(_mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3))));
       }
+      _mm_storeu_pd(&gi[0], gxy);
+      gi[2] = gz;
+#else
+      for (int corner = 0; corner < 8; ++corner) {
+        const double wt = xy[corner & 3] * (corner & 4 ? w[2] : z0);
+        for (int a = 0; a < 3; ++a) gi[a] += wt * q[offset[corner] + 1 + a];
+      }
+#endif
       return inv_t_ * gi;
     }
     const std::size_t* c = e.c;
@@ -500,7 +524,8 @@ class Caster {
   std::vector<std::vector<char>> transparent_;      // skipping tables, finest level first
   std::vector<std::array<std::size_t, 3>> bn_;      // their nodes per axis
   ShadingVolume own_;                               // built here when the caller gave none
-  const float* f4_ = nullptr;                       // {f, grad f} per sample, or null
+  const float* f4_ = nullptr;                       // {f, grad f} per sample (bricked), or null
+  std::size_t sy4_ = 0, sz4_ = 0;                  // its strides in floats along y and z
   int spec_int_ = -1;
 };
 
@@ -512,19 +537,23 @@ ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
   sv.samples = g.size();
   sv.data.reset(new float[4 * sv.samples]);
   float* data = sv.data.get();
+  const std::size_t sy = d[0], sz = d[0] * d[1];
   parallel_for(d[2], threads, [&](std::size_t k) {
-    for (std::size_t j = 0; j < d[1]; ++j)
-      for (std::size_t i = 0; i < d[0]; ++i) {
-        const std::size_t q[3] = {i, j, k};
-        float* out = data + 4 * g.index(i, j, k);
-        out[0] = g.at(i, j, k);
-        for (int a = 0; a < 3; ++a) {
-          std::size_t m[3] = {q[0], q[1], q[2]}, up[3] = {q[0], q[1], q[2]};
-          if (m[a] > 0) --m[a];
-          if (up[a] + 1 < d[a]) ++up[a];
-          out[1 + a] = static_cast<float>((double(g.at(up[0], up[1], up[2])) - g.at(m[0], m[1], m[2])) / double(up[a] - m[a]));
-        }
+    for (std::size_t j = 0; j < d[1]; ++j) {
+      const float* f = &g.values[g.index(0, j, k)];
+      float* out = data + 4 * g.index(0, j, k);
+      // central differences, one-sided at the border: (f[up] - f[down]) / (up - down)
+      const std::ptrdiff_t dy0 = j > 0 ? -std::ptrdiff_t(sy) : 0, dy1 = j + 1 < d[1] ? std::ptrdiff_t(sy) : 0;
+      const std::ptrdiff_t dz0 = k > 0 ? -std::ptrdiff_t(sz) : 0, dz1 = k + 1 < d[2] ? std::ptrdiff_t(sz) : 0;
+      const double hy = double((dy1 - dy0) / std::ptrdiff_t(sy)), hz = double((dz1 - dz0) / std::ptrdiff_t(sz));
+      for (std::size_t i = 0; i < d[0]; ++i, out += 4) {
+        const std::ptrdiff_t dx0 = i > 0 ? -1 : 0, dx1 = i + 1 < d[0] ? 1 : 0;
+        out[0] = f[i];
+        out[1] = static_cast<float>((double(f[std::ptrdiff_t(i) + dx1]) - f[std::ptrdiff_t(i) + dx0]) / double(dx1 - dx0));
+        out[2] = static_cast<float>((double(f[std::ptrdiff_t(i) + dy1]) - f[std::ptrdiff_t(i) + dy0]) / hy);
+        out[3] = static_cast<float>((double(f[std::ptrdiff_t(i) + dz1]) - f[std::ptrdiff_t(i) + dz0]) / hz);
       }
+    }
   });
   return sv;
 }
