@@ -5,6 +5,7 @@
 #endif
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -63,7 +64,10 @@ class Caster {
       for (float v : g.values) lo = std::min(lo, v), hi = std::max(hi, v);
     }
     range_ = hi > lo ? double(hi) - lo : 1.0;
+    gmin_ = 1e-6 * range_;
+    ka_ = o.phong[0], kd_ = o.phong[1], ks_ = o.phong[2];
     if (pyr_) lf_ = pyr_->finest_level();
+    for (int a = 0; a < 3; ++a) hi_[a] = static_cast<double>(g.dims[a] - 1), cmax_[a] = g.dims[a] - 2;
     // Skipping tables, finest level first: a node is skippable when no sample in it can
     // contribute (DVR: tau = 0 over [min, max]; iso: no iso-value in [min, max]). A node
     // skippable at one level is skippable at every finer level inside it (its range shrinks).
@@ -86,6 +90,9 @@ class Caster {
         transparent_.push_back(std::move(t));
         bn_.push_back(n);
       }
+      skip_levels_ = static_cast<int>(transparent_.size());
+      for (int L = 0; L < skip_levels_; ++L)
+        skip_[L] = {transparent_[L].data(), bn_[L][0], bn_[L][1], {bn_[L][0] - 1, bn_[L][1] - 1, bn_[L][2] - 1}, lf_ + L};
     }
     if (o.shade && o.gradient_cache) {
       if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
@@ -129,6 +136,8 @@ class Caster {
  private:
   // Where a point falls: its cell's lower corner (clamped into the box) and the trilinear
   // weights; shared by the value and the gradient of one sample.
+  // floor of a coordinate already clamped to [0, n - 1] (a signed conversion: one instruction)
+  static std::size_t index_of(double x) { return static_cast<std::size_t>(static_cast<std::int64_t>(x)); }
   struct Cell {
     std::size_t c[3];
     std::size_t base;
@@ -137,8 +146,8 @@ class Caster {
   Cell locate(const Vec3& p) const {
     Cell e;
     for (int a = 0; a < 3; ++a) {
-      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-      e.c[a] = std::min(static_cast<std::size_t>(x), g_.dims[a] - 2);
+      const double x = std::clamp(p[a], 0.0, hi_[a]);
+      e.c[a] = std::min(index_of(x), cmax_[a]);
       e.w[a] = x - e.c[a];
     }
     e.base = g_.index(e.c[0], e.c[1], e.c[2]);
@@ -221,7 +230,7 @@ class Caster {
   std::array<double, 3> shade(const std::array<double, 3>& c, const Cell& cell, const Vec3& l) const {
     const Vec3 g = gradient(cell);
     const double gl = norm(g);
-    if (gl <= 1e-6 * range_) return c;  // no reliable normal: unshaded
+    if (gl <= gmin_) return c;  // no reliable normal: unshaded
     const Vec3 n = (-1.0 / gl) * g;
     double nl = dot(n, l);
     if (o_.two_sided) nl = std::abs(nl);
@@ -236,7 +245,8 @@ class Caster {
       spec = std::pow(diff, o_.phong[3]);
     }
     std::array<double, 3> out;
-    for (int k = 0; k < 3; ++k) out[k] = c[k] * (o_.phong[0] + o_.phong[1] * diff) + o_.phong[2] * spec;
+    const double lit = ka_ + kd_ * diff, highlight = ks_ * spec;
+    for (int k = 0; k < 3; ++k) out[k] = c[k] * lit + highlight;
     return out;
   }
 
@@ -245,13 +255,13 @@ class Caster {
   int skippable(const Vec3& p, std::size_t b[3]) const {
     b[0] = b[1] = b[2] = 0;
     std::size_t c[3];
-    for (int a = 0; a < 3; ++a) c[a] = static_cast<std::size_t>(std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1)));
+    for (int a = 0; a < 3; ++a) c[a] = index_of(std::clamp(p[a], 0.0, hi_[a]));
     int found = -1;
-    for (int L = 0; L < static_cast<int>(transparent_.size()); ++L) {
-      const auto& n = bn_[L];
+    for (int L = 0; L < skip_levels_; ++L) {
+      const SkipLevel& S = skip_[L];
       std::size_t q[3];
-      for (int a = 0; a < 3; ++a) q[a] = std::min(c[a] >> (lf_ + L), n[a] - 1);
-      if (!transparent_[L][q[0] + n[0] * (q[1] + n[1] * q[2])]) break;
+      for (int a = 0; a < 3; ++a) q[a] = std::min(c[a] >> S.shift, S.last[a]);
+      if (!S.table[q[0] + S.n0 * (q[1] + S.n1 * q[2])]) break;
       found = L;
       b[0] = q[0], b[1] = q[1], b[2] = q[2];
     }
@@ -284,11 +294,13 @@ class Caster {
     bool have_prev = false;
     const Vec3 light = head_light(wdir);
     double opaque_until = -std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < n; ++k) {
-      const double ta = t0 + k * dt, tb = k + 1 == n ? t1 : std::min(t0 + (k + 1) * dt, t1);
+    const bool jitter = o_.jitter;
+    double kd = 0;  // double(k), kept exactly (integers) without a conversion per sample
+    for (std::size_t k = 0; k < n; ++k, kd += 1) {
+      const double ta = t0 + kd * dt, tb = k + 1 == n ? t1 : std::min(t0 + (kd + 1) * dt, t1);
       if (tb <= ta) continue;
       const double len = (tb - ta) * vox_per_t;
-      const double tm = (k + 1 < n || tb - ta >= dt) && o_.jitter ? ta + jit * dt : 0.5 * (ta + tb);
+      const double tm = jitter && (k + 1 < n || tb - ta >= dt) ? ta + jit * dt : 0.5 * (ta + tb);
       const Vec3 p = o + tm * d;
       if (!transparent_.empty() && !(tm < opaque_until)) {
         std::size_t b[3];
@@ -304,6 +316,7 @@ class Caster {
           }
           st.skipped += next - k;
           k = next - 1;
+          kd = static_cast<double>(k);
           have_prev = false;
           continue;
         }
@@ -311,7 +324,7 @@ class Caster {
         // (computing a sample that could have been skipped changes nothing either).
         std::size_t c[3];
         for (int a = 0; a < 3; ++a)
-          c[a] = std::min(static_cast<std::size_t>(std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1))) >> lf_, bn_[0][a] - 1);
+          c[a] = std::min(index_of(std::clamp(p[a], 0.0, hi_[a])) >> lf_, bn_[0][a] - 1);
         opaque_until = block_exit(o, d, c, 0);
       }
       ++st.samples;
@@ -519,9 +532,18 @@ class Caster {
   SurfaceTracer surf_;
   const void* ctx_;
   Mat3 inv_, inv_t_;
-  double hmin_ = 1, range_ = 1;
+  double hmin_ = 1, range_ = 1, gmin_ = 0, ka_ = 0, kd_ = 0, ks_ = 0;
   int lf_ = 3;                                      // the pyramid's finest level
+  double hi_[3] = {0, 0, 0};                        // dims - 1 (the sample box)
+  std::size_t cmax_[3] = {0, 0, 0};                 // dims - 2 (the last cell)
   std::vector<std::vector<char>> transparent_;      // skipping tables, finest level first
+  struct SkipLevel {
+    const char* table;
+    std::size_t n0, n1, last[3];
+    int shift;
+  };
+  SkipLevel skip_[kSkipLevels] = {};               // the same tables, flat, for the hot loop
+  int skip_levels_ = 0;
   std::vector<std::array<std::size_t, 3>> bn_;      // their nodes per axis
   ShadingVolume own_;                               // built here when the caller gave none
   const float* f4_ = nullptr;                       // {f, grad f} per sample (bricked), or null

@@ -108,9 +108,15 @@ int main(int argc, char** argv) {
     bool shade;
     int threads;
     bool skip;
+    double ert = 0.995;
   };
   for (const Case c : {Case{"dvr shaded ct-skin-bone", raycast::Mode::dvr, true, 2, true},
                        Case{"dvr shaded ct-skin-bone", raycast::Mode::dvr, true, 1, true},
+                       // VTK's mapper stops a ray when the remaining opacity falls below 0xff in
+                       // 15-bit fixed point (VTKKWRCHelper_CompositeColorAndCheckEarlyTermination):
+                       // A > 1 - 255/32767 = 0.99222
+                       Case{"dvr shaded ct-skin-bone, ERT as VTK's", raycast::Mode::dvr, true, 2, true, 1 - 255.0 / 32767},
+                       Case{"dvr shaded ct-skin-bone, ERT as VTK's", raycast::Mode::dvr, true, 1, true, 1 - 255.0 / 32767},
                        Case{"dvr shaded ct-skin-bone, no ESS", raycast::Mode::dvr, true, 2, false},
                        Case{"mip", raycast::Mode::mip, false, 2, true},
                        Case{"iso 225.5", raycast::Mode::iso, true, 2, true}}) {
@@ -118,13 +124,14 @@ int main(int argc, char** argv) {
     raycast::RenderOptions o;
     o.mode = c.mode, o.shade = c.shade, o.threads = c.threads, o.skip_empty = c.skip;
     o.step = 0.5;
+    o.ert = c.ert;
     o.gradient_cache = true;
     o.isos = {{225.5, 1.0, std::nullopt}};
     raycast::RenderedImage img;
     const Timing t = timed(frames, [&] { img = raycast::render(g, &pyr, tf, cam, o, nullptr, nullptr, &shading); });
     print({{"case", c.name}, {"method", "volrender"}, {"size", "512x512"}, {"threads", c.threads}, {"best_s", t.best_s},
            {"median_s", t.median_s}, {"cpu_best_s", t.cpu_best_s}, {"cpu_median_s", t.cpu_median_s},
-           {"samples", img.stats.samples}, {"skipped", img.stats.skipped},
+           {"ert", c.ert}, {"samples", img.stats.samples}, {"skipped", img.stats.skipped},
            {"skipped_fraction", double(img.stats.skipped) / double(img.stats.samples + img.stats.skipped)}});
   }
 
