@@ -25,6 +25,21 @@ check "area $area" awk -v a="$area" 'BEGIN { exit !(a > 1086.865 * 0.99 && a < 1
 check "volume $vol" awk -v a="$vol" 'BEGIN { exit !(a > 3369.283 * 0.99 && a < 3369.283) }'
 check "triangles = 2 (V - chi)" test "$f" = $((2 * (v - 2)))
 
+case_ "--normals: -grad f is the sphere's outward radial direction (analytic)"
+# f = 9.3 - |x - c|: the exact normal at x is (x - c)/|x - c|. Central differences and
+# their trilinear interpolation err in direction by O((h/R)^2) = 1/86 rad = 0.66 degree.
+run isosurf exact "$W/sphere.nrrd" --iso 0 --normals -o "$W/sn.ply"
+expect_status 0
+ang=$($FX radial "$W/sn.ply" 11.5,11.5,11.5)
+check "largest angle to the radial direction $ang <= 0.66 degree" awk -v a="$ang" 'BEGIN { exit !(a <= 0.66) }'
+run isosurf adaptive "$W/sphere.nrrd" --iso 0 --normals --max-error inf --focus 11.5,11.5,21 --focus-radius 3 -o "$W/san.ply"
+expect_status 0
+ang=$($FX radial "$W/san.ply" 11.5,11.5,11.5)
+check "adaptive: largest angle $ang <= 0.66 degree" awk -v a="$ang" 'BEGIN { exit !(a <= 0.66) }'
+run isosurf exact "$W/sphere.nrrd" --iso 0 --normals -o "$W/sn.stl"
+expect_clean_failure 2 isosurf
+expect_stderr_has "normals"
+
 case_ "torus: genus 1 (chi 0), closed"
 run isosurf "$W/torus.nrrd" --iso 0 --to ply -o "$W/t.ply"
 expect_status 0

@@ -16,6 +16,7 @@
 #include "isosurface/adaptive.hpp"
 #include "isosurface/marching_cubes.hpp"
 #include "isosurface/mesh_stats.hpp"
+#include "isosurface/vertex_normals.hpp"
 #include "load_grid.hpp"
 #include "surface_io.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
@@ -77,6 +78,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     keep = static_cast<std::size_t>(n);
   }
   const std::string format = output_format(o.to, o.output);
+  if (o.normals && format == "stl") throw usage_error("--normals needs a format with vertex normals (ply, plya, obj, off or drc), not stl");
 
   auto t0 = Clock::now();
   const LoadedGrid in = load_grid(o);
@@ -125,6 +127,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     s = isosurface::extract_isosurface(in.grid, in.iso, eo, pyramid ? &*pyramid : nullptr, &es);
   }
   if (keep) s = keep_largest(s, keep);
+  if (o.normals) isosurface::add_gradient_normals(in.grid, s, threads);
   const double t_extract = seconds_since(t0);
   if (s.triangles.empty() && !o.quiet)
     warn("isosurf", fmt::format("no surface: iso {} is outside the data range [{}, {}] or never crossed ({})", in.iso,

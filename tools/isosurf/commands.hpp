@@ -23,6 +23,7 @@ struct ExactOptions {
   std::string component_filter = "all";  // all | largest | N
   bool index_space = false;
   bool nan_outside = false;
+  bool normals = false;               // per-vertex normals -grad f / |grad f| in the output
   bool no_octree = false;             // brute-force scan (same output; for comparisons)
   int qbits = 14;                     // drc position quantization (0 = lossless)
   int threads = 0;

@@ -9,6 +9,8 @@ their outputs (pure Python: no fest code).
   fixtures.py pfm IMG.pfm X Y           prints the RGB of pixel (X, Y) (Y from the top)
   fixtures.py centroid IMG.pfm          intensity-weighted centroid "x y" of channel 0
   fixtures.py subset A.ply B.ply        exit 0 when every vertex of A is a vertex of B (bitwise)
+  fixtures.py radial MESH.ply X,Y,Z      binary PLY with nx ny nz: the largest angle (degrees)
+                                        between a vertex normal and the ray from (X, Y, Z) to it
   fixtures.py crop IN.ply OUT.ply X,Y,Z R0 R1
                                         binary PLY of the triangles whose three vertices lie at a
                                         distance in [R0, R1) from (X, Y, Z) (for region-wise
@@ -168,6 +170,30 @@ def centroid(path):
     print("%.6f %.6f" % (sx / s, sy / s))
 
 
+def radial(path, centre):
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    head = data[:end].decode().splitlines()
+    nv = [int(l.split()[2]) for l in head if l.startswith("element vertex")][0]
+    props = []
+    for l in head:
+        if l.startswith("element face"):
+            break
+        if l.startswith("property"):
+            props.append(l.split()[2])
+    assert props[:6] == ["x", "y", "z", "nx", "ny", "nz"], props
+    c = [float(x) for x in centre.split(",")]
+    worst = 0.0
+    for i in range(nv):
+        x = struct.unpack_from("<6f", data, end + 4 * len(props) * i)
+        r = [x[a] - c[a] for a in range(3)]
+        rl = math.sqrt(sum(v * v for v in r))
+        nl = math.sqrt(sum(v * v for v in x[3:]))
+        cosang = sum(r[a] * x[3 + a] for a in range(3)) / (rl * nl)
+        worst = max(worst, math.degrees(math.acos(max(-1.0, min(1.0, cosang)))))
+    print("%.6f" % worst)
+
+
 def crop(src, dst, centre, r0, r1):
     data = open(src, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
@@ -224,6 +250,8 @@ if __name__ == "__main__":
         centroid(sys.argv[2])
     elif cmd == "subset":
         sys.exit(0 if ply_vertices(sys.argv[2]) <= ply_vertices(sys.argv[3]) else 1)
+    elif cmd == "radial":
+        radial(sys.argv[2], sys.argv[3])
     elif cmd == "crop":
         crop(sys.argv[2], sys.argv[3], sys.argv[4], float(sys.argv[5]), float(sys.argv[6]))
     else:
