@@ -445,7 +445,10 @@ class Caster {
       std::array<double, 3> c;
       double alpha;
       const double j = std::round((v - S.c0) / S.dc);
-      if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= S.width / 2) {
+      // --contour-width-world W: the band |v - c_j| <= W |grad f| / 2 is W world units wide
+      // across the contour (to first order), whatever the local gradient
+      const double width = S.width_world > 0 ? S.width_world * norm(gradient(locate(o + t * d))) : S.width;
+      if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= width / 2) {
         c = tf_.at(S.c0 + j * S.dc).rgb;
         alpha = S.contour_alpha;
       } else {

@@ -37,6 +37,7 @@ struct SliceStack {
   double c0 = 0, dc = 1;
   int count = 0;
   double width = 1;          // contour band width, data units
+  double width_world = 0;    // > 0: band width width_world * |grad f| (world units: lines of constant width)
   double contour_alpha = 1;
   double tf_unit = 1;        // a plane takes the TF opacity a(v) of one tf_unit layer
 };

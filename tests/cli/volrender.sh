@@ -133,6 +133,37 @@ PY
 run volrender slices "$W/xramp.nrrd" --slices 4
 expect_clean_failure 2 volrender
 
+case_ "slices --contour-width-world W: band W |grad f| in data units (lines of constant world width)"
+# f = x has |grad f| = 1 exactly (central differences of a linear field), so W = 1.01 world
+# units is the same band as --contour-width 1.01: identical images.
+run volrender slices "$W/xramp.nrrd" --slice-axis z --slices 1 --contours 8:8:7 --contour-width-world 1.01 --fov 0 --view 0,90 \
+    --zoom 1.7320508075688772 --size 64x64 --to pfm -o "$W/slw.pfm"
+expect_status 0
+check "same image as --contour-width 1.01" cmp "$W/sl.pfm" "$W/slw.pfm"
+# spacing 2: f = i grows by 1/2 per world unit, so W = 4.04 world units is 2.02 data units;
+# W = 2.02 lights exactly the pixel columns whose centre x + 0.5 lies within 1.01 of a
+# contour at x = 8, 16, ..., 56 (world units; same orthographic camera as above)
+$FX volume xramp2 "$W/xramp2.nrrd"
+cam=(--slice-axis z --slices 1 --contours 4:4:7 --fov 0 --view 0,90 --zoom 1.7320508075688772 --size 64x64 --to pfm)
+run volrender slices "$W/xramp2.nrrd" "${cam[@]}" --contour-width 2.02 -o "$W/s2a.pfm"
+run volrender slices "$W/xramp2.nrrd" "${cam[@]}" --contour-width-world 4.04 -o "$W/s2b.pfm"
+expect_status 0
+check "spacing 2: W = 4.04 world is 2.02 data units" cmp "$W/s2a.pfm" "$W/s2b.pfm"
+run volrender slices "$W/xramp2.nrrd" "${cam[@]}" --contour-width-world 2.02 -o "$W/s2c.pfm"
+expect_status 0
+check "W = 2.02: lit columns = |x + 0.5 - 8m| <= 1.01" python3 - "$W/s2c.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read().split(b"\n", 3)
+w, h = map(int, d[1].split())
+v = struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+want = [x for x in range(w) if any(abs(x + 0.5 - c) <= 1.01 for c in range(8, 57, 8))]
+for row in range(2, h - 2):
+    if [x for x in range(w) if v[(row * w + x) * 3] > 0] != want:
+        sys.exit(1)
+PY
+run volrender slices "$W/xramp.nrrd" --contours 8:8:7 --contour-width-world 0 -o "$W/x.png"
+expect_clean_failure 2 volrender
+
 case_ "camera --print: off-axis frustum (Kooima) for an on-axis eye is symmetric"
 run volrender camera --screen '-0.4,-0.3,0;0.4,-0.3,0;-0.4,0.3,0' --eye 0,0,2 --near 0.5 --size 8x6
 expect_status 0

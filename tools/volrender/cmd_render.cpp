@@ -259,9 +259,12 @@ int run_render(const RenderArgs& a) {
     const auto v = parse_numbers(c, 3, 3, "--contours");
     if (!(v[1] > 0) || v[2] < 1 || v[2] != std::floor(v[2])) throw usage_error("--contours c0:dc:n needs dc > 0 and a whole n >= 1");
     if (!(a.contour_width > 0)) throw usage_error("--contour-width must be positive");
+    if (a.contour_width_world && !(*a.contour_width_world > 0 && std::isfinite(*a.contour_width_world)))
+      throw usage_error("--contour-width-world must be positive");
     raycast::SliceStack& S = o.slices;
     S.c0 = v[0], S.dc = v[1], S.count = static_cast<int>(v[2]);
     S.width = a.contour_width, S.contour_alpha = a.contour_alpha, S.tf_unit = a.tf_unit;
+    S.width_world = a.contour_width_world.value_or(0.0);
     const auto& g = L.grid;
     if (a.slice_axis == "x" || a.slice_axis == "y" || a.slice_axis == "z") {
       const int ax = a.slice_axis[0] - 'x';

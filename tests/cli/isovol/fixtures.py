@@ -2,7 +2,7 @@
 """Small NRRD volumes for the isosurf/volrender CLI tests, and independent checks of
 their outputs (pure Python: no fest code).
 
-  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | xramp | nan | flat
+  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | xramp | xramp2 | nan | flat
   fixtures.py crossings IN.nrrd ISO     number of voxel edges whose ends lie on both sides of ISO
   fixtures.py plycheck MESH.ply         binary PLY: every edge in exactly two triangles, in
                                         opposite directions -> prints "closed V F chi area volume"
@@ -63,6 +63,8 @@ def volume(kind, out):
                    spacing=(0.01, 0.01, 0.01))
     elif kind == "xramp":  # f = x on 65^3 (slice contours)
         write_nrrd(out, (65, 65, 65), field((65, 65, 65), lambda i, j, k: float(i)))
+    elif kind == "xramp2":  # f = i on 33^3 with spacing 2: |grad f| = 1/2 per world unit
+        write_nrrd(out, (33, 33, 33), field((33, 33, 33), lambda i, j, k: float(i)), spacing=(2, 2, 2))
     elif kind == "nan":
         v = [0.0] * 8 ** 3
         v[100] = float("nan")
