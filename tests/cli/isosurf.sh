@@ -40,6 +40,30 @@ run isosurf exact "$W/sphere.nrrd" --iso 0 --normals -o "$W/sn.stl"
 expect_clean_failure 2 isosurf
 expect_stderr_has "normals"
 
+case_ "--smooth K (Taubin lambda|mu): a plane stays the plane, its boundary stays put"
+# f = y/32, iso 0.49: the plane y = 32 * 0.49 = 15.68 with boundary on the volume's faces.
+# The umbrella Laplacian of coplanar neighbours has no normal component, so every vertex
+# keeps y = 15.68; boundary vertices are fixed, so the extent in x and z stays [0, 32].
+$FX volume ramp "$W/ramp.nrrd"
+run isosurf exact "$W/ramp.nrrd" --iso 0.49 --smooth 5 -o "$W/plane.ply"
+expect_status 0
+check "y = 15.68 everywhere, x and z span [0, 32]" python3 - "$W/plane.ply" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+nv = [int(l.split()[2]) for l in data[:end].decode().splitlines() if l.startswith("element vertex")][0]
+V = [struct.unpack_from("<3f", data, end + 12 * i) for i in range(nv)]
+ok = all(abs(v[1] - 15.68) < 1e-4 for v in V)
+ok = ok and min(v[0] for v in V) == 0 and max(v[0] for v in V) == 32 and min(v[2] for v in V) == 0 and max(v[2] for v in V) == 32
+sys.exit(0 if ok and nv > 1000 else 1)
+PY
+run isosurf exact "$W/sphere.nrrd" --iso 0 --smooth 10 -o "$W/ss.ply" --report "$W/ss.json"
+expect_status 0
+read -r closed _ < <($FX plycheck "$W/ss.ply")
+check "smoothed sphere still closed (independent)" test "$closed" = closed
+run isosurf exact "$W/sphere.nrrd" --iso 0 --smooth -1 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+
 case_ "torus: genus 1 (chi 0), closed"
 run isosurf "$W/torus.nrrd" --iso 0 --to ply -o "$W/t.ply"
 expect_status 0

@@ -16,6 +16,7 @@
 #include "isosurface/adaptive.hpp"
 #include "isosurface/marching_cubes.hpp"
 #include "isosurface/mesh_stats.hpp"
+#include "isosurface/taubin_smooth.hpp"
 #include "isosurface/vertex_normals.hpp"
 #include "load_grid.hpp"
 #include "surface_io.hpp"
@@ -127,6 +128,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     s = isosurface::extract_isosurface(in.grid, in.iso, eo, pyramid ? &*pyramid : nullptr, &es);
   }
   if (keep) s = keep_largest(s, keep);
+  isosurface::taubin_smooth(s, o.smooth);
   if (o.normals) isosurface::add_gradient_normals(in.grid, s, threads);
   const double t_extract = seconds_since(t0);
   if (s.triangles.empty() && !o.quiet)

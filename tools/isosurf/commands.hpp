@@ -24,6 +24,7 @@ struct ExactOptions {
   bool index_space = false;
   bool nan_outside = false;
   bool normals = false;               // per-vertex normals -grad f / |grad f| in the output
+  int smooth = 0;                     // Taubin lambda|mu iterations
   bool no_octree = false;             // brute-force scan (same output; for comparisons)
   int qbits = 14;                     // drc position quantization (0 = lossless)
   int threads = 0;
