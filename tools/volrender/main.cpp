@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     s->add_option("--window", ra.window, "mip/minip/avg: grey window lo,hi instead of the TF colour");
     s->add_option("--iso", ra.iso, "iso: V[:alpha][,V:alpha...]");
     s->add_option("--iso-color", ra.iso_color, "iso: r,g,b[;r,g,b...] per iso-value");
-    s->add_option("--gradients", ra.gradients, "Shading gradients: otf (on the fly), cache (12 bytes/voxel) or auto (cache up to 64 M voxels)")
+    s->add_option("--gradients", ra.gradients, "Shading gradients: otf (on the fly), cache (value and gradient, 16 bytes/voxel) or auto (cache up to 64 M voxels)")
         ->check(CLI::IsMember({"otf", "cache", "auto"}));
     s->add_flag("--no-skip", ra.no_skip, "Disable empty-space skipping (same image; for comparisons)");
     s->add_option("--slice-axis", ra.slice_axis, "slices: plane normal x, y, z (index axes) or nx,ny,nz (world)");
