@@ -64,6 +64,32 @@ check "smoothed sphere still closed (independent)" test "$closed" = closed
 run isosurf exact "$W/sphere.nrrd" --iso 0 --smooth -1 -o "$W/x.ply"
 expect_clean_failure 2 isosurf
 
+case_ "--roi: a box holding the whole surface gives the same surface; a cut one, capped, is closed"
+# The sphere (R 9.3 about 11.5) lies within samples 2..21: the ROI 1..22 keeps every cell
+# the surface crosses, and world positions stay (origin moved to the ROI's first sample),
+# so the meshes agree up to float rounding (fcompare, an independent program).
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 1,22,1,22,1,22 -o "$W/roi.ply" --report "$W/roi.json"
+expect_status 0
+check "same counts" test "$(jq -c '[.vertices, .triangles]' "$W/roi.json")" = "$(jq -c '[.vertices, .triangles]' "$W/s.json")"
+check "same surface within 1e-5 (fcompare)" "$FEST_BIN/fcompare" -q "$W/s.ply" "$W/roi.ply" --tol 1e-5
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 12,23,0,23,0,23 --cap -o "$W/half.ply"
+expect_status 0
+read -r closed _ < <($FX plycheck "$W/half.ply")
+check "half sphere capped: closed (independent)" test "$closed" = closed
+check "nothing left of x = 11 (the cap layer)" python3 - "$W/half.ply" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+nv = [int(l.split()[2]) for l in data[:end].decode().splitlines() if l.startswith("element vertex")][0]
+sys.exit(0 if nv > 100 and min(struct.unpack_from("<f", data, end + 12 * i)[0] for i in range(nv)) >= 11 else 1)
+PY
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 0,30,0,23,0,23 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+expect_stderr_has "not inside"
+check "no output on bad --roi" test ! -e "$W/x.ply"
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 1,2,3 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+
 case_ "torus: genus 1 (chi 0), closed"
 run isosurf "$W/torus.nrrd" --iso 0 --to ply -o "$W/t.ply"
 expect_status 0

@@ -23,6 +23,7 @@ struct ExactOptions {
   std::string component_filter = "all";  // all | largest | N
   bool index_space = false;
   bool nan_outside = false;
+  std::string roi;                    // "i0,i1,j0,j1,k0,k1": inclusive sample ranges ("" = all)
   bool normals = false;               // per-vertex normals -grad f / |grad f| in the output
   int smooth = 0;                     // Taubin lambda|mu iterations
   bool no_octree = false;             // brute-force scan (same output; for comparisons)

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   e->add_option("--component-filter", ex.component_filter, "Keep all components, the largest, or the N largest");
   e->add_flag("--index-space", ex.index_space, "Vertices in voxel coordinates instead of world units");
   e->add_option("--smooth", ex.smooth, "Taubin lambda|mu smoothing iterations (0.5 / -0.53; boundary fixed)")->check(CLI::Range(0, 100000));
+  e->add_option("--roi", ex.roi, "Only the samples i0..i1, j0..j1, k0..k1 (inclusive): i0,i1,j0,j1,k0,k1");
   e->add_flag("--normals", ex.normals, "Per-vertex normals from the interpolated gradient (-grad f); ply, plya, obj, off or drc");
   e->add_flag("--nan-outside", ex.nan_outside, "Treat NaN samples as outside instead of refusing the input");
   e->add_flag("--no-octree", ex.no_octree, "Scan every cell (same output; for comparisons)");
@@ -61,6 +62,7 @@ int main(int argc, char** argv) {
   d->add_option("--component-filter", ad_ex.component_filter, "all, largest or N");
   d->add_flag("--index-space", ad_ex.index_space, "Vertices in voxel coordinates");
   d->add_option("--smooth", ad_ex.smooth, "Taubin lambda|mu smoothing iterations (0.5 / -0.53; boundary fixed)")->check(CLI::Range(0, 100000));
+  d->add_option("--roi", ad_ex.roi, "Only the samples i0..i1, j0..j1, k0..k1 (inclusive): i0,i1,j0,j1,k0,k1");
   d->add_flag("--normals", ad_ex.normals, "Per-vertex normals from the interpolated gradient (-grad f); ply, plya, obj, off or drc");
   d->add_flag("--nan-outside", ad_ex.nan_outside, "Treat NaN samples as outside");
   d->add_option("--qbits", ad_ex.qbits, "Draco quantization bits")->check(CLI::Range(0, 30));
