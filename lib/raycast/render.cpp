@@ -425,6 +425,19 @@ class Caster {
     depth = (o_.mode == Mode::avg ? t0 : best_t) * dlen;
   }
 
+  // --slice-frame: a point of a plane lies on the plane's outline when it is within
+  // frame_width (world) of a box face the plane meets (faces parallel to the plane excluded).
+  // The world distance from face i = 0 is i / |row i of A^-1|.
+  bool on_frame(const Vec3& p, const SliceStack& S) const {
+    for (int a = 0; a < 3; ++a) {
+      const Vec3 row{inv_.m[3 * a], inv_.m[3 * a + 1], inv_.m[3 * a + 2]};
+      const double rl = norm(row);
+      if (std::abs(dot(row, S.normal)) >= rl * (1 - 1e-9)) continue;  // face parallel to the plane
+      if (std::min(p[a], hi_[a] - p[a]) / rl <= S.frame_width) return true;
+    }
+    return false;
+  }
+
   // Fig. 4.5b: each plane the ray crosses inside the volume is one layer, front to back:
   // a contour band colour where |v - c_j| <= w/2, else the TF colour and opacity of v.
   void slices(const Ray& wr, const Vec3& o, const Vec3& d, double t0, double t1, double dlen, std::array<double, 4>& out,
@@ -448,7 +461,10 @@ class Caster {
       // --contour-width-world W: the band |v - c_j| <= W |grad f| / 2 is W world units wide
       // across the contour (to first order), whatever the local gradient
       const double width = S.width_world > 0 ? S.width_world * norm(gradient(locate(o + t * d))) : S.width;
-      if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= width / 2) {
+      if (S.frame_width > 0 && on_frame(o + t * d, S)) {
+        c = {1, 1, 1};
+        alpha = 1;
+      } else if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= width / 2) {
         c = tf_.at(S.c0 + j * S.dc).rgb;
         alpha = S.contour_alpha;
       } else {

@@ -38,6 +38,7 @@ struct SliceStack {
   int count = 0;
   double width = 1;          // contour band width, data units
   double width_world = 0;    // > 0: band width width_world * |grad f| (world units: lines of constant width)
+  double frame_width = 0;    // > 0: the plane's outline on the volume box, this wide (world units), in white
   double contour_alpha = 1;
   double tf_unit = 1;        // a plane takes the TF opacity a(v) of one tf_unit layer
 };

@@ -161,6 +161,22 @@ for row in range(2, h - 2):
     if [x for x in range(w) if v[(row * w + x) * 3] > 0] != want:
         sys.exit(1)
 PY
+case_ "slices --slice-frame: the plane's outline, one voxel wide, on the box faces the plane meets"
+# plane z = 32 of the 65^3 box seen from above (pixel i centred at x = i + 0.5): the outline
+# is the points within 1 voxel of x = 0, x = 64, y = 0 or y = 64, i.e. exactly the border
+# pixel rows and columns (no contour is in range: 1000:1:1)
+run volrender slices "$W/xramp.nrrd" --slice-axis z --slices 1 --contours 1000:1:1 --slice-frame --fov 0 --view 0,90 \
+    --zoom 1.7320508075688772 --size 64x64 --to pfm -o "$W/frame.pfm"
+expect_status 0
+check "lit pixels = the image border" python3 - "$W/frame.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read().split(b"\n", 3)
+w, h = map(int, d[1].split())
+v = struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+lit = {(x, r) for r in range(h) for x in range(w) if v[3 * (r * w + x)] > 0}
+want = {(x, r) for r in range(h) for x in range(w) if x in (0, w - 1) or r in (0, h - 1)}
+sys.exit(0 if lit == want else 1)
+PY
 run volrender slices "$W/xramp.nrrd" --contours 8:8:7 --contour-width-world 0 -o "$W/x.png"
 expect_clean_failure 2 volrender
 

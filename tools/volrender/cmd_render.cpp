@@ -265,6 +265,12 @@ int run_render(const RenderArgs& a) {
     S.c0 = v[0], S.dc = v[1], S.count = static_cast<int>(v[2]);
     S.width = a.contour_width, S.contour_alpha = a.contour_alpha, S.tf_unit = a.tf_unit;
     S.width_world = a.contour_width_world.value_or(0.0);
+    if (a.slice_frame) {  // one smallest spacing wide
+      double h = INFINITY;
+      for (int ax = 0; ax < 3; ++ax)
+        h = std::min(h, std::sqrt(L.grid.axes[ax] * L.grid.axes[ax] + L.grid.axes[3 + ax] * L.grid.axes[3 + ax] + L.grid.axes[6 + ax] * L.grid.axes[6 + ax]));
+      S.frame_width = h;
+    }
     const auto& g = L.grid;
     if (a.slice_axis == "x" || a.slice_axis == "y" || a.slice_axis == "z") {
       const int ax = a.slice_axis[0] - 'x';

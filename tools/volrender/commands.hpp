@@ -55,6 +55,7 @@ struct RenderArgs {
   std::string slice_at, contours;
   double contour_width = 1, contour_alpha = 1;
   std::optional<double> contour_width_world;  // world units; replaces contour_width
+  bool slice_frame = false;                   // outline each plane (one smallest spacing wide)
   std::string mesh;                // opaque triangle mesh composited with depth
   std::string mesh_color = "0.9,0.85,0.75";
   std::string camera_json, report;

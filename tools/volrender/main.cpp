@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
     s->add_option("--contours", ra.contours, "slices: contour levels c0:dc:n");
     s->add_option("--contour-width", ra.contour_width, "slices: contour band width, data units");
     s->add_option("--contour-width-world", ra.contour_width_world, "slices: contour band width in world units (W |grad f| in data units)");
+    s->add_flag("--slice-frame", ra.slice_frame, "slices: draw each plane's outline on the volume box (white, one voxel wide)");
     s->add_option("--contour-alpha", ra.contour_alpha, "slices: contour opacity")->check(CLI::Range(0.0, 1.0));
     s->add_option("--mesh", ra.mesh, "Opaque triangle mesh (PLY, OBJ, OFF, STL, Draco; world units) composited with depth");
     s->add_option("--mesh-color", ra.mesh_color, "Mesh colour r,g,b (linear)");
