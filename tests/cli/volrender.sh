@@ -161,6 +161,29 @@ for row in range(2, h - 2):
     if [x for x in range(w) if v[(row * w + x) * 3] > 0] != want:
         sys.exit(1)
 PY
+case_ "composite: over in linear light, the first image on top (analytic)"
+# A = sRGB red at alpha 128/255 over opaque blue: linear (a, 0, 1 - a) with a = 128/255,
+# opaque, so 8-bit sRGB (round(255 srgb(a)), 0, round(255 srgb(1 - a))) = (188, 0, 187)
+$FX png "$W/ca.png" 8 6 255,0,0,128
+$FX png "$W/cb.png" 8 6 0,0,255
+want=$(python3 -c "
+s = lambda v: 12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
+a = 128 / 255
+print(round(255 * s(a)), 0, round(255 * s(1 - a)))")
+run volrender composite "$W/ca.png" "$W/cb.png" -o "$W/cab.png"
+expect_status 0
+check "pixel = $want" test "$($FX pngpixel "$W/cab.png" 3 2)" = "$want"
+run volrender composite "$W/cb.png" "$W/ca.png" -o "$W/cba.png"
+check "opaque blue on top hides red" test "$($FX pngpixel "$W/cba.png" 5 4)" = "0 0 255"
+$FX png "$W/cc.png" 4 6 0,0,255
+run volrender composite "$W/ca.png" "$W/cc.png" -o "$W/x.png"
+expect_clean_failure 3 volrender
+expect_stderr_has "4x6"
+run volrender composite "$W/ca.png" -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender composite "$W/ca.png" "$W/xramp.nrrd" -o "$W/x.png"
+expect_clean_failure 3 volrender
+
 case_ "slices --slice-frame: the plane's outline, one voxel wide, on the box faces the plane meets"
 # plane z = 32 of the 65^3 box seen from above (pixel i centred at x = i + 0.5): the outline
 # is the points within 1 voxel of x = 0, x = 64, y = 0 or y = 64, i.e. exactly the border

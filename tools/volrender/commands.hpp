@@ -67,7 +67,14 @@ struct CameraPrintArgs {
   std::string input;  // optional volume (orbit cameras need its bounds)
 };
 
+struct CompositeArgs {
+  std::vector<std::string> inputs;  // top first
+  std::string output = "-";
+};
+
 int run_render(const RenderArgs& args);
+// Stacks the images with "over" (the first on top) in linear light; 8-bit sRGB PNG out.
+int run_composite(const CompositeArgs& args);
 int run_camera_print(const CameraPrintArgs& args);
 
 }  // namespace fest::volrender

@@ -99,6 +99,11 @@ int main(int argc, char** argv) {
   c->add_option("input", cp.input, "Volume (orbit cameras need its bounds)");
   add_camera(c, cp.camera);
 
+  CompositeArgs ca;
+  auto* k = app.add_subcommand("composite", "Stack images with the over operator (the first on top) in linear light: a showcase screen from its viewers' parts");
+  k->add_option("images", ca.inputs, "Images (PNG, PAM, EXR, ...), top first")->required();
+  k->add_option("-o,--output", ca.output, "PNG output (- = stdout)");
+
   return fest::cli::run(app, argc, argv, [&]() -> int {
     for (auto* s : modes)
       if (*s) {
@@ -106,6 +111,7 @@ int main(int argc, char** argv) {
         return run_render(ra);
       }
     if (*c) return run_camera_print(cp);
+    if (*k) return run_composite(ca);
     return 2;
   });
 }

@@ -9,6 +9,8 @@ their outputs (pure Python: no fest code).
   fixtures.py pfm IMG.pfm X Y           prints the RGB of pixel (X, Y) (Y from the top)
   fixtures.py centroid IMG.pfm          intensity-weighted centroid "x y" of channel 0
   fixtures.py subset A.ply B.ply        exit 0 when every vertex of A is a vertex of B (bitwise)
+  fixtures.py png OUT.png W H R,G,B[,A]  a constant 8-bit RGB(A) PNG
+  fixtures.py pngpixel IN.png X Y       prints the channels of pixel (X, Y) of an 8-bit PNG
   fixtures.py radial MESH.ply X,Y,Z      binary PLY with nx ny nz: the largest angle (degrees)
                                         between a vertex normal and the ray from (X, Y, Z) to it
   fixtures.py crop IN.ply OUT.ply X,Y,Z R0 R1
@@ -172,6 +174,47 @@ def centroid(path):
     print("%.6f %.6f" % (sx / s, sy / s))
 
 
+def png_write(path, w, h, px):
+    import zlib
+    raw = b"".join(b"\0" + bytes(px) * w for _ in range(h))
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", w, h, 8, 6 if len(px) == 4 else 2, 0, 0, 0)
+    open(path, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def png_pixel(path, x, y):
+    import zlib
+    data = open(path, "rb").read()
+    pos, idat, w = 8, b"", 0
+    while pos < len(data):
+        n, t = struct.unpack(">I4s", data[pos:pos + 8])
+        d = data[pos + 8:pos + 8 + n]
+        if t == b"IHDR":
+            w, h, bits, ctype = struct.unpack(">IIBB", d[:10])
+            assert bits == 8
+            ch = {0: 1, 2: 3, 4: 2, 6: 4}[ctype]
+        elif t == b"IDAT":
+            idat += d
+        pos += 12 + n
+    raw, stride, prev, rows = zlib.decompress(idat), w * ch, bytearray(w * ch), []
+    for r in range(h):
+        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - ch] if i >= ch else 0
+            b, c = prev[i], prev[i - ch] if i >= ch else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    print(" ".join(str(v) for v in rows[y][x * ch:(x + 1) * ch]))
+
+
 def radial(path, centre):
     data = open(path, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
@@ -252,6 +295,10 @@ if __name__ == "__main__":
         centroid(sys.argv[2])
     elif cmd == "subset":
         sys.exit(0 if ply_vertices(sys.argv[2]) <= ply_vertices(sys.argv[3]) else 1)
+    elif cmd == "png":
+        png_write(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), [int(v) for v in sys.argv[5].split(",")])
+    elif cmd == "pngpixel":
+        png_pixel(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
     elif cmd == "radial":
         radial(sys.argv[2], sys.argv[3])
     elif cmd == "crop":
