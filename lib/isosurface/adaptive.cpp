@@ -41,21 +41,40 @@ class Adaptive {
     AdaptiveResult r;
     select(r);
     rebuild_levels();
-    for (bool changed = true; changed;) {  // the closure loop
+    // The closure loop. A leaf's verdict depends only on the levels of the cells in its box
+    // and the one-cell shell around it, and levels only change where a leaf is split; so a
+    // leaf found fine stays fine until a split touches an 8^3 block under its shell, and
+    // only such leaves (and new ones) are examined again. Same result as examining all.
+    std::vector<char> ok(leaves_.size(), 0);
+    for (int a = 0; a < 3; ++a) db_[a] = (cn_[a] + 7) / 8;
+    dirty_.assign(db_[0] * db_[1] * db_[2], 0);
+    for (bool changed = true; changed;) {
       changed = false;
-      std::vector<Leaf> next;
+      std::vector<Leaf> next, split, fresh;
+      std::vector<char> next_ok;
       next.reserve(leaves_.size());
-      for (const Leaf& L : leaves_) {
-        if (L.level > 0 && (unbalanced(L) || !edges_consistent(L))) {
+      next_ok.reserve(leaves_.size());
+      for (std::size_t x = 0; x < leaves_.size(); ++x) {
+        const Leaf& L = leaves_[x];
+        const bool fine = L.level == 0 || (ok[x] && !shell_dirty(L)) || !(unbalanced(L) || !edges_consistent(L));
+        if (!fine) {
           changed = true;
           ++r.closure_splits;
+          split.push_back(L);
+          const std::size_t before = next.size();
           push_active_children(L, next);
+          fresh.insert(fresh.end(), next.begin() + std::ptrdiff_t(before), next.end());
+          next_ok.resize(next.size(), 0);
         } else {
           next.push_back(L);
+          next_ok.push_back(1);
         }
       }
       leaves_.swap(next);
-      if (changed) rebuild_levels();
+      ok.swap(next_ok);
+      std::fill(dirty_.begin(), dirty_.end(), 0);
+      for (const Leaf& L : split) mark(L, -1), mark_dirty(L);
+      for (const Leaf& L : fresh) mark(L, static_cast<std::int8_t>(L.level));
     }
     std::sort(leaves_.begin(), leaves_.end(), [](const Leaf& a, const Leaf& b) {
       const std::uint64_t ka = std::uint64_t{a.k} << a.level, kb = std::uint64_t{b.k} << b.level;
@@ -182,6 +201,39 @@ class Adaptive {
   }
 
   std::size_t cell(std::size_t i, std::size_t j, std::size_t k) const { return i + cn_[0] * (j + cn_[1] * k); }
+  // Sets the level of every cell of L's box.
+  void mark(const Leaf& L, std::int8_t level) {
+    const std::size_t s = S(L);
+    for (std::size_t k = L.k * s; k < std::min((L.k + 1) * s, cn_[2]); ++k)
+      for (std::size_t j = L.j * s; j < std::min((L.j + 1) * s, cn_[1]); ++j) {
+        const std::size_t i0 = L.i * s, i1 = std::min((L.i + 1) * s, cn_[0]);
+        if (i1 > i0) std::fill_n(&level_[cell(i0, j, k)], i1 - i0, level);
+      }
+  }
+  // The 8^3 blocks of cells [lo, hi] per axis (clipped to the grid), visited by f(index).
+  template <typename F>
+  bool any_block(long lo0, long lo1, long lo2, long hi0, long hi1, long hi2, const F& f) const {
+    const long lo[3] = {lo0, lo1, lo2}, hi[3] = {hi0, hi1, hi2};
+    std::size_t b0[3], b1[3];
+    for (int a = 0; a < 3; ++a) {
+      const long l = std::max(0L, lo[a]), h = std::min(long(cn_[a]) - 1, hi[a]);
+      if (h < l) return false;
+      b0[a] = std::size_t(l) / 8, b1[a] = std::size_t(h) / 8;
+    }
+    for (std::size_t z = b0[2]; z <= b1[2]; ++z)
+      for (std::size_t y = b0[1]; y <= b1[1]; ++y)
+        for (std::size_t x = b0[0]; x <= b1[0]; ++x)
+          if (f(x + db_[0] * (y + db_[1] * z))) return true;
+    return false;
+  }
+  void mark_dirty(const Leaf& L) {
+    const long s = long(S(L)), lo[3] = {long(L.i) * s, long(L.j) * s, long(L.k) * s};
+    any_block(lo[0], lo[1], lo[2], lo[0] + s - 1, lo[1] + s - 1, lo[2] + s - 1, [&](std::size_t b) { dirty_[b] = 1; return false; });
+  }
+  bool shell_dirty(const Leaf& L) const {
+    const long s = long(S(L)), lo[3] = {long(L.i) * s, long(L.j) * s, long(L.k) * s};
+    return any_block(lo[0] - 1, lo[1] - 1, lo[2] - 1, lo[0] + s, lo[1] + s, lo[2] + s, [&](std::size_t b) { return dirty_[b] != 0; });
+  }
   void rebuild_levels() {
     level_.assign(cn_[0] * cn_[1] * cn_[2], -1);
     for (const Leaf& L : leaves_) {
@@ -217,7 +269,28 @@ class Adaptive {
     return false;
   }
 
-  // Each of the 12 edges has exactly one finest sign change if its ends differ, else none.
+  // Whether an active leaf finer than L owns a cell around L's edge along axis a through
+  // p (the other two coordinates) from t0 to t1: such a leaf sees part of the edge at its own
+  // resolution, so both views of the edge must agree.
+  bool edge_touches_finer(const Leaf& L, int a, const std::size_t p[3], std::size_t t0, std::size_t t1) const {
+    const int u = (a + 1) % 3, w = (a + 2) % 3;
+    for (int du = -1; du <= 0; ++du)
+      for (int dw = -1; dw <= 0; ++dw) {
+        const long cu = long(p[u]) + du, cw = long(p[w]) + dw;
+        if (cu < 0 || cw < 0 || cu >= long(cn_[u]) || cw >= long(cn_[w])) continue;
+        std::size_t c[3];
+        c[u] = std::size_t(cu), c[w] = std::size_t(cw);
+        for (std::size_t t = t0; t < t1; ++t) {
+          c[a] = t;
+          const int lv = level_[cell(c[0], c[1], c[2])];
+          if (lv >= 0 && lv < L.level) return true;
+        }
+      }
+    return false;
+  }
+
+  // Each of the 12 edges has exactly one finest sign change if its ends differ, else none
+  // (on the edges that EdgeRule selects).
   bool edges_consistent(const Leaf& L) const {
     std::size_t lo[3], hi[3];
     box(L, lo, hi);
@@ -237,7 +310,7 @@ class Adaptive {
           changes += c != prev;
           prev = c;
         }
-        if (changes != (first != prev ? 1 : 0)) return false;
+        if (changes != (first != prev ? 1 : 0) && (o_.edge_rule == EdgeRule::all || edge_touches_finer(L, a, p, lo[a], hi[a]))) return false;
       }
     }
     return true;
@@ -457,6 +530,8 @@ class Adaptive {
   double max_error_bound_ = 0;
   std::vector<Leaf> leaves_;
   std::vector<std::int8_t> level_;
+  std::vector<char> dirty_;          // 8^3 blocks of cells whose levels changed in the last closure pass
+  std::size_t db_[3] = {0, 0, 0};
 };
 
 }  // namespace

@@ -21,12 +21,19 @@
 
 namespace fest::isosurface {
 
+// Where the closure loop demands that a leaf edge has at most its one finest crossing
+// (docs/isosurf.md 5.2): `transitions` only on edges that a finer active leaf also touches
+// (what crack-freeness needs: the two views of the edge must agree); `all` on every edge
+// of every leaf (keeps each thin feature that crosses a leaf edge, at many more leaves).
+enum class EdgeRule { transitions, all };
+
 struct AdaptiveOptions {
   std::optional<std::array<double, 3>> focus;  // world units; none = no distance rule
   double focus_radius = 0;   // r0 (world units); <= 0: diagonal / 32
   double max_error = 0;      // eps0 in data units; +inf = distance rule only
   double error_growth = 1;   // eps = eps0 (1 + d / r0)^P
   int max_level = -1;        // coarsest leaf level; -1 = the root's
+  EdgeRule edge_rule = EdgeRule::transitions;
   FaceRule face_rule = FaceRule::decider;
   Triangulation triangulation = Triangulation::minarea;
   int threads = 1;

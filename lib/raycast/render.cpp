@@ -1,6 +1,11 @@
 #include "raycast/render.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -12,8 +17,8 @@ namespace {
 using volume_pyramid::MinMaxPyramid;
 using volume_pyramid::ScalarGrid;
 
-constexpr std::size_t kBlock = 8;
 constexpr int kTile = 16;
+constexpr int kSkipLevels = 4;  // skipping tables: the pyramid's finest level and up to 3 coarser
 
 struct Mat3 {
   double m[9];
@@ -43,53 +48,56 @@ double pixel_hash(int i, int j, int s) {
 class Caster {
  public:
   Caster(const ScalarGrid& g, const MinMaxPyramid* p, const TransferFunction& tf, const RenderOptions& o,
-         SurfaceTracer surf, const void* ctx)
+         SurfaceTracer surf, const void* ctx, const ShadingVolume* sv)
       : g_(g), pyr_(p), tf_(tf), o_(o), surf_(surf), ctx_(ctx), inv_(inverse(g.axes)), inv_t_(inv_.transposed()) {
     double hmin = std::numeric_limits<double>::infinity();
     for (int c = 0; c < 3; ++c) hmin = std::min(hmin, std::sqrt(g.axes[c] * g.axes[c] + g.axes[3 + c] * g.axes[3 + c] + g.axes[6 + c] * g.axes[6 + c]));
     hmin_ = hmin;
     if (o.phong[3] >= 0 && o.phong[3] <= 1024 && o.phong[3] == std::floor(o.phong[3])) spec_int_ = static_cast<int>(o.phong[3]);
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (float v : g.values) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (p && p->root_level() >= p->finest_level()) {  // the root node holds every sample
+      const int r = p->root_level();
+      for (std::size_t k = 0; k < p->nodes(r)[2]; ++k)
+        for (std::size_t j = 0; j < p->nodes(r)[1]; ++j)
+          for (std::size_t i = 0; i < p->nodes(r)[0]; ++i) lo = std::min(lo, p->min(r, i, j, k)), hi = std::max(hi, p->max(r, i, j, k));
+    } else {
+      for (float v : g.values) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
     range_ = hi > lo ? double(hi) - lo : 1.0;
-    if (pyr_ && o.skip_empty && o.mode == Mode::dvr && !o.preint) {
-      const auto n = pyr_->nodes(3);
-      transparent_.resize(n[0] * n[1] * n[2]);
-      for (std::size_t k = 0; k < n[2]; ++k)
-        for (std::size_t j = 0; j < n[1]; ++j)
-          for (std::size_t i = 0; i < n[0]; ++i)
-            transparent_[i + n[0] * (j + n[1] * k)] = tf.transparent(pyr_->min(3, i, j, k), pyr_->max(3, i, j, k));
-      bn_ = n;
+    gmin_ = 1e-6 * range_;
+    ka_ = o.phong[0], kd_ = o.phong[1], ks_ = o.phong[2];
+    if (pyr_) lf_ = pyr_->finest_level();
+    for (int a = 0; a < 3; ++a) hi_[a] = static_cast<double>(g.dims[a] - 1), cmax_[a] = g.dims[a] - 2;
+    // Skipping tables, finest level first: a node is skippable when no sample in it can
+    // contribute (DVR: tau = 0 over [min, max]; iso: no iso-value in [min, max]). A node
+    // skippable at one level is skippable at every finer level inside it (its range shrinks).
+    const bool skip_dvr = pyr_ && o.skip_empty && o.mode == Mode::dvr && !o.preint;
+    const bool skip_iso = pyr_ && o.skip_empty && o.mode == Mode::iso;
+    if (skip_dvr || skip_iso) {
+      for (int L = lf_; L <= pyr_->root_level() && L < lf_ + kSkipLevels; ++L) {
+        const auto n = pyr_->nodes(L);
+        std::vector<char> t(n[0] * n[1] * n[2]);
+        for (std::size_t k = 0; k < n[2]; ++k)
+          for (std::size_t j = 0; j < n[1]; ++j)
+            for (std::size_t i = 0; i < n[0]; ++i) {
+              const float mn = pyr_->min(L, i, j, k), mx = pyr_->max(L, i, j, k);
+              bool none = true;
+              if (skip_dvr) none = tf.transparent(mn, mx);
+              else
+                for (const auto& I : o.isos) none = none && !(mn <= I.value && I.value <= mx);
+              t[i + n[0] * (j + n[1] * k)] = none;
+            }
+        transparent_.push_back(std::move(t));
+        bn_.push_back(n);
+      }
+      skip_levels_ = static_cast<int>(transparent_.size());
+      for (int L = 0; L < skip_levels_; ++L)
+        skip_[L] = {transparent_[L].data(), bn_[L][0], bn_[L][1], {bn_[L][0] - 1, bn_[L][1] - 1, bn_[L][2] - 1}, lf_ + L};
     }
     if (o.shade && o.gradient_cache) {
-      const auto& d = g.dims;
-      grad_.resize(3 * g.size());
-      parallel_for(d[2], o.threads, [&](std::size_t k) {
-        for (std::size_t j = 0; j < d[1]; ++j)
-          for (std::size_t i = 0; i < d[0]; ++i) {
-            const std::size_t q[3] = {i, j, k};
-            float* out = &grad_[3 * g.index(i, j, k)];
-            for (int a = 0; a < 3; ++a) {
-              std::size_t m[3] = {q[0], q[1], q[2]}, up[3] = {q[0], q[1], q[2]};
-              if (m[a] > 0) --m[a];
-              if (up[a] + 1 < d[a]) ++up[a];
-              out[a] = static_cast<float>((double(g.at(up[0], up[1], up[2])) - g.at(m[0], m[1], m[2])) / double(up[a] - m[a]));
-            }
-          }
-      });
-    }
-    if (pyr_ && o.skip_empty && o.mode == Mode::iso) {
-      const auto n = pyr_->nodes(3);
-      transparent_.resize(n[0] * n[1] * n[2]);
-      for (std::size_t k = 0; k < n[2]; ++k)
-        for (std::size_t j = 0; j < n[1]; ++j)
-          for (std::size_t i = 0; i < n[0]; ++i) {
-            bool none = true;
-            for (const auto& L : o.isos)
-              none = none && !(pyr_->min(3, i, j, k) <= L.value && L.value <= pyr_->max(3, i, j, k));
-            transparent_[i + n[0] * (j + n[1] * k)] = none;
-          }
-      bn_ = n;
+      if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
+      f4_ = sv->data.get();
+      sy4_ = 4 * g.dims[0], sz4_ = sy4_ * g.dims[1];
     }
   }
 
@@ -126,6 +134,38 @@ class Caster {
   }
 
  private:
+  // Where a point falls: its cell's lower corner (clamped into the box) and the trilinear
+  // weights; shared by the value and the gradient of one sample.
+  // floor of a coordinate already clamped to [0, n - 1] (a signed conversion: one instruction)
+  static std::size_t index_of(double x) { return static_cast<std::size_t>(static_cast<std::int64_t>(x)); }
+  struct Cell {
+    std::size_t c[3];
+    std::size_t base;
+    double w[3];
+  };
+  Cell locate(const Vec3& p) const {
+    Cell e;
+    for (int a = 0; a < 3; ++a) {
+      const double x = std::clamp(p[a], 0.0, hi_[a]);
+      e.c[a] = std::min(index_of(x), cmax_[a]);
+      e.w[a] = x - e.c[a];
+    }
+    e.base = g_.index(e.c[0], e.c[1], e.c[2]);
+    return e;
+  }
+  // Trilinear value (the same arithmetic as sample_trilinear).
+  double trilinear(const Cell& e) const {
+    const float* b;
+    std::size_t sx, sy, sz;
+    if (f4_) b = f4_ + 4 * e.base, sx = 4, sy = sy4_, sz = sz4_;
+    else b = &g_.values[e.base], sx = 1, sy = g_.dims[0], sz = sy * g_.dims[1];
+    const double c00 = b[0] + e.w[0] * (double(b[sx]) - b[0]);
+    const double c10 = b[sy] + e.w[0] * (double(b[sy + sx]) - b[sy]);
+    const double c01 = b[sz] + e.w[0] * (double(b[sz + sx]) - b[sz]);
+    const double c11 = b[sz + sy] + e.w[0] * (double(b[sz + sy + sx]) - b[sz + sy]);
+    const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
+    return c0 + e.w[2] * (c1 - c0);
+  }
   double value(const Vec3& p) const {
     if (o_.nearest) {
       auto idx = [&](double x, int a) {
@@ -133,28 +173,44 @@ class Caster {
       };
       return g_.at(idx(p[0], 0), idx(p[1], 1), idx(p[2], 2));
     }
-    return sample_trilinear(g_, p[0], p[1], p[2]);
+    return trilinear(locate(p));
   }
 
   // Central-difference gradient at the 8 surrounding samples, trilinearly interpolated
   // (index space), then mapped to world space.
-  Vec3 gradient(const Vec3& p) const {
-    std::size_t c[3];
-    double w[3];
-    for (int a = 0; a < 3; ++a) {
-      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-      c[a] = std::min(static_cast<std::size_t>(x), g_.dims[a] - 2);
-      w[a] = x - c[a];
-    }
+  Vec3 gradient(const Cell& e) const {
+    const double* w = e.w;
     Vec3 gi{0, 0, 0};
-    if (!grad_.empty()) {
+    if (f4_) {
+      const std::size_t sy = sy4_, sz = sz4_;
+      const std::size_t offset[8] = {0, 4, sy, sy + 4, sz, sz + 4, sz + sy, sz + sy + 4};
+      // corner weights ((x-weight * y-weight) * z-weight), the same products as the scalar
+      // loop below
+      const double x0 = 1 - w[0], y0 = 1 - w[1], z0 = 1 - w[2];
+      const double xy[4] = {x0 * y0, w[0] * y0, x0 * w[1], w[0] * w[1]};
+      const float* q = f4_ + 4 * e.base;
+#if defined(__SSE2__)
+      // the x and y components in the two lanes of one register, z alone: per component the
+      // same double products and sums in the same order as the scalar loop
+      __m128d gxy = _mm_setzero_pd();
+      double gz = 0;
       for (int corner = 0; corner < 8; ++corner) {
-        const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
-        const float* q = &grad_[3 * g_.index(c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1))];
-        for (int a = 0; a < 3; ++a) gi[a] += wt * q[a];
+        const double wt = xy[corner & 3] * (corner & 4 ? w[2] : z0);
+        const __m128 v = _mm_loadu_ps(q + offset[corner]);  // f, fx, fy, fz
+        gxy = _mm_add_pd(gxy, _mm_mul_pd(_mm_set1_pd(wt), _mm_cvtps_pd(_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 2, 1)))));
+        gz += wt * double(_mm_cvtss_f32(_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3))));
       }
+      _mm_storeu_pd(&gi[0], gxy);
+      gi[2] = gz;
+#else
+      for (int corner = 0; corner < 8; ++corner) {
+        const double wt = xy[corner & 3] * (corner & 4 ? w[2] : z0);
+        for (int a = 0; a < 3; ++a) gi[a] += wt * q[offset[corner] + 1 + a];
+      }
+#endif
       return inv_t_ * gi;
     }
+    const std::size_t* c = e.c;
     for (int corner = 0; corner < 8; ++corner) {
       const std::size_t q[3] = {c[0] + (corner & 1), c[1] + (corner >> 1 & 1), c[2] + (corner >> 2 & 1)};
       const double wt = (corner & 1 ? w[0] : 1 - w[0]) * (corner >> 1 & 1 ? w[1] : 1 - w[1]) * (corner >> 2 & 1 ? w[2] : 1 - w[2]);
@@ -169,12 +225,13 @@ class Caster {
     return inv_t_ * gi;  // grad_world = A^-T grad_index
   }
 
-  std::array<double, 3> shade(const std::array<double, 3>& c, const Vec3& p, const Vec3& wdir) const {
-    const Vec3 g = gradient(p);
+  // l: unit vector towards the head light, -dir/|dir| (one per ray).
+  static Vec3 head_light(const Vec3& wdir) { return (-1.0 / norm(wdir)) * wdir; }
+  std::array<double, 3> shade(const std::array<double, 3>& c, const Cell& cell, const Vec3& l) const {
+    const Vec3 g = gradient(cell);
     const double gl = norm(g);
-    if (gl <= 1e-6 * range_) return c;  // no reliable normal: unshaded
+    if (gl <= gmin_) return c;  // no reliable normal: unshaded
     const Vec3 n = (-1.0 / gl) * g;
-    const Vec3 l = (-1.0 / norm(wdir)) * wdir;  // head light
     double nl = dot(n, l);
     if (o_.two_sided) nl = std::abs(nl);
     const double diff = std::max(0.0, nl);
@@ -182,30 +239,42 @@ class Caster {
     if (spec_int_ >= 0) {  // integer exponent: by squaring (std::pow dominated the shaded sample)
       spec = 1;
       double b = diff;
-      for (int e = spec_int_; e; e >>= 1, b *= b)
-        if (e & 1) spec *= b;
+      for (int x = spec_int_; x; x >>= 1, b *= b)
+        if (x & 1) spec *= b;
     } else {
       spec = std::pow(diff, o_.phong[3]);
     }
     std::array<double, 3> out;
-    for (int k = 0; k < 3; ++k) out[k] = c[k] * (o_.phong[0] + o_.phong[1] * diff) + o_.phong[2] * spec;
+    const double lit = ka_ + kd_ * diff, highlight = ks_ * spec;
+    for (int k = 0; k < 3; ++k) out[k] = c[k] * lit + highlight;
     return out;
   }
 
-  bool block_transparent(const Vec3& p, std::size_t b[3]) const {
-    for (int a = 0; a < 3; ++a) {
-      const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-      b[a] = std::min(static_cast<std::size_t>(x) / kBlock, bn_[a] - 1);
+  // The coarsest skipping level whose node containing p is skippable (0 = the finest), its
+  // node in b; -1 when the finest node is not.
+  int skippable(const Vec3& p, std::size_t b[3]) const {
+    b[0] = b[1] = b[2] = 0;
+    std::size_t c[3];
+    for (int a = 0; a < 3; ++a) c[a] = index_of(std::clamp(p[a], 0.0, hi_[a]));
+    int found = -1;
+    for (int L = 0; L < skip_levels_; ++L) {
+      const SkipLevel& S = skip_[L];
+      std::size_t q[3];
+      for (int a = 0; a < 3; ++a) q[a] = std::min(c[a] >> S.shift, S.last[a]);
+      if (!S.table[q[0] + S.n0 * (q[1] + S.n1 * q[2])]) break;
+      found = L;
+      b[0] = q[0], b[1] = q[1], b[2] = q[2];
     }
-    return transparent_[b[0] + bn_[0] * (b[1] + bn_[1] * b[2])];
+    return found;
   }
 
-  // Ray parameter where the ray leaves block b's closed box.
-  double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3]) const {
+  // Ray parameter where the ray leaves the closed box of node b of skipping level L.
+  double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3], int L) const {
+    const std::size_t size = std::size_t{1} << (lf_ + L);
     double t = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
       if (d[a] == 0) continue;
-      const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
+      const double lo = double(b[a] * size), hi = double(std::min((b[a] + 1) * size, g_.dims[a] - 1));
       t = std::min(t, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
     }
     return t;
@@ -223,18 +292,23 @@ class Caster {
     double C[3] = {0, 0, 0}, A = 0;
     double prev_v = 0;
     bool have_prev = false;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double ta = t0 + k * dt, tb = k + 1 == n ? t1 : std::min(t0 + (k + 1) * dt, t1);
+    const Vec3 light = head_light(wdir);
+    double opaque_until = -std::numeric_limits<double>::infinity();
+    const bool jitter = o_.jitter;
+    double kd = 0;  // double(k), kept exactly (integers) without a conversion per sample
+    for (std::size_t k = 0; k < n; ++k, kd += 1) {
+      const double ta = t0 + kd * dt, tb = k + 1 == n ? t1 : std::min(t0 + (kd + 1) * dt, t1);
       if (tb <= ta) continue;
       const double len = (tb - ta) * vox_per_t;
-      const double tm = (k + 1 < n || tb - ta >= dt) && o_.jitter ? ta + jit * dt : 0.5 * (ta + tb);
+      const double tm = jitter && (k + 1 < n || tb - ta >= dt) ? ta + jit * dt : 0.5 * (ta + tb);
       const Vec3 p = o + tm * d;
-      if (!transparent_.empty()) {
+      if (!transparent_.empty() && !(tm < opaque_until)) {
         std::size_t b[3];
-        if (block_transparent(p, b)) {
-          // Every sample whose midpoint is inside this block contributes exactly nothing;
-          // jump past them (a margin keeps samples on the block's face computed).
-          const double te = block_exit(o, d, b) - 1e-9 * dt;
+        const int L = skippable(p, b);
+        if (L >= 0) {
+          // Every sample whose midpoint is inside this node contributes exactly nothing;
+          // jump past them (a margin keeps samples on the node's face computed).
+          const double te = block_exit(o, d, b, L) - 1e-9 * dt;
           std::size_t next = k + 1;
           if (te > tm) {
             const double kk = std::floor((te - t0) / dt - 0.5);
@@ -242,9 +316,16 @@ class Caster {
           }
           st.skipped += next - k;
           k = next - 1;
+          kd = static_cast<double>(k);
           have_prev = false;
           continue;
         }
+        // Not skippable: neither is any sample before the ray leaves this finest node
+        // (computing a sample that could have been skipped changes nothing either).
+        std::size_t c[3];
+        for (int a = 0; a < 3; ++a)
+          c[a] = std::min(index_of(std::clamp(p[a], 0.0, hi_[a])) >> lf_, bn_[0][a] - 1);
+        opaque_until = block_exit(o, d, c, 0);
       }
       ++st.samples;
       double alpha;
@@ -265,13 +346,24 @@ class Caster {
           else
             c = tf_.at(0.5 * (vf + vb)).rgb;
         }
-      } else {
+        if (alpha <= 0) continue;
+        if (o_.shade) c = shade(c, locate(p), light);
+      } else if (o_.nearest) {
         const auto s = tf_.at(value(p));
+        if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
         alpha = 1 - std::exp(-s.tau * len);
         c = s.rgb;
+        if (alpha <= 0) continue;
+        if (o_.shade) c = shade(c, locate(p), light);
+      } else {
+        const Cell e = locate(p);
+        const auto s = tf_.at(trilinear(e));
+        if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
+        alpha = 1 - std::exp(-s.tau * len);
+        c = s.rgb;
+        if (alpha <= 0) continue;
+        if (o_.shade) c = shade(c, e, light);
       }
-      if (alpha <= 0) continue;
-      if (o_.shade) c = shade(c, p, wdir);
       const double w = (1 - A) * alpha;
       for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
       const double before = A;
@@ -301,16 +393,11 @@ class Caster {
         std::size_t b[3];
         for (int a = 0; a < 3; ++a) {
           const double x = std::clamp(p[a], 0.0, static_cast<double>(g_.dims[a] - 1));
-          b[a] = std::min(static_cast<std::size_t>(x) / kBlock, pyr_->nodes(3)[a] - 1);
+          b[a] = std::min(static_cast<std::size_t>(x) >> lf_, pyr_->nodes(lf_)[a] - 1);
         }
-        const bool useless = o_.mode == Mode::mip ? pyr_->max(3, b[0], b[1], b[2]) <= best : pyr_->min(3, b[0], b[1], b[2]) >= best;
+        const bool useless = o_.mode == Mode::mip ? pyr_->max(lf_, b[0], b[1], b[2]) <= best : pyr_->min(lf_, b[0], b[1], b[2]) >= best;
         if (useless) {
-          double te = std::numeric_limits<double>::infinity();
-          for (int a = 0; a < 3; ++a) {
-            if (d[a] == 0) continue;
-            const double lo = double(b[a] * kBlock), hi = double(std::min((b[a] + 1) * kBlock, g_.dims[a] - 1));
-            te = std::min(te, ((d[a] > 0 ? hi : lo) - o[a]) / d[a]);
-          }
+          double te = block_exit(o, d, b, 0);
           te -= 1e-9 * dt;
           const double kk = std::floor((te - t0) / dt - 0.5);
           std::size_t next = k + 1;
@@ -338,6 +425,19 @@ class Caster {
     depth = (o_.mode == Mode::avg ? t0 : best_t) * dlen;
   }
 
+  // --slice-frame: a point of a plane lies on the plane's outline when it is within
+  // frame_width (world) of a box face the plane meets (faces parallel to the plane excluded).
+  // The world distance from face i = 0 is i / |row i of A^-1|.
+  bool on_frame(const Vec3& p, const SliceStack& S) const {
+    for (int a = 0; a < 3; ++a) {
+      const Vec3 row{inv_.m[3 * a], inv_.m[3 * a + 1], inv_.m[3 * a + 2]};
+      const double rl = norm(row);
+      if (std::abs(dot(row, S.normal)) >= rl * (1 - 1e-9)) continue;  // face parallel to the plane
+      if (std::min(p[a], hi_[a] - p[a]) / rl <= S.frame_width) return true;
+    }
+    return false;
+  }
+
   // Fig. 4.5b: each plane the ray crosses inside the volume is one layer, front to back:
   // a contour band colour where |v - c_j| <= w/2, else the TF colour and opacity of v.
   void slices(const Ray& wr, const Vec3& o, const Vec3& d, double t0, double t1, double dlen, std::array<double, 4>& out,
@@ -358,7 +458,13 @@ class Caster {
       std::array<double, 3> c;
       double alpha;
       const double j = std::round((v - S.c0) / S.dc);
-      if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= S.width / 2) {
+      // --contour-width-world W: the band |v - c_j| <= W |grad f| / 2 is W world units wide
+      // across the contour (to first order), whatever the local gradient
+      const double width = S.width_world > 0 ? S.width_world * norm(gradient(locate(o + t * d))) : S.width;
+      if (S.frame_width > 0 && on_frame(o + t * d, S)) {
+        c = {1, 1, 1};
+        alpha = 1;
+      } else if (j >= 0 && j < S.count && std::abs(v - (S.c0 + j * S.dc)) <= width / 2) {
         c = tf_.at(S.c0 + j * S.dc).rgb;
         alpha = S.contour_alpha;
       } else {
@@ -379,14 +485,16 @@ class Caster {
     const std::size_t n = segments(t0, t1, dt);
     double C[3] = {0, 0, 0}, A = 0;
     double ta = t0, va = value(o + t0 * d);
+    const Vec3 light = head_light(wdir);
     for (std::size_t k = 0; k < n; ++k) {
       const double tb = std::min(t0 + (k + 1) * dt, t1);
       if (!transparent_.empty()) {
         std::size_t b[3];
         const Vec3 pa = o + ta * d;
-        if (block_transparent(pa, b)) {
-          // no iso-value inside this block: the samples before its exit see no crossing
-          const double te = block_exit(o, d, b) - 1e-9 * dt;
+        const int L = skippable(pa, b);
+        if (L >= 0) {
+          // no iso-value inside this node: the samples before its exit see no crossing
+          const double te = block_exit(o, d, b, L) - 1e-9 * dt;
           const double kk = std::floor((te - t0) / dt) - 1;
           if (kk >= double(n)) {  // the rest of the ray lies in this block
             st.skipped += n - k;
@@ -421,7 +529,7 @@ class Caster {
       for (const auto& [t, L] : hits) {
         const Vec3 p = o + t * d;
         std::array<double, 3> c = L->color ? *L->color : tf_.at(L->value).rgb;
-        if (o_.shade) c = shade(c, p, wdir);
+        if (o_.shade) c = shade(c, locate(p), light);
         const double w = (1 - A) * L->alpha;
         for (int ch = 0; ch < 3; ++ch) C[ch] += w * c[ch];
         if (A < 1 && !(depth < std::numeric_limits<double>::infinity()) && L->alpha >= 1) depth = t * dlen;
@@ -443,14 +551,53 @@ class Caster {
   SurfaceTracer surf_;
   const void* ctx_;
   Mat3 inv_, inv_t_;
-  double hmin_ = 1, range_ = 1;
-  std::vector<char> transparent_;
-  std::vector<float> grad_;
+  double hmin_ = 1, range_ = 1, gmin_ = 0, ka_ = 0, kd_ = 0, ks_ = 0;
+  int lf_ = 3;                                      // the pyramid's finest level
+  double hi_[3] = {0, 0, 0};                        // dims - 1 (the sample box)
+  std::size_t cmax_[3] = {0, 0, 0};                 // dims - 2 (the last cell)
+  std::vector<std::vector<char>> transparent_;      // skipping tables, finest level first
+  struct SkipLevel {
+    const char* table;
+    std::size_t n0, n1, last[3];
+    int shift;
+  };
+  SkipLevel skip_[kSkipLevels] = {};               // the same tables, flat, for the hot loop
+  int skip_levels_ = 0;
+  std::vector<std::array<std::size_t, 3>> bn_;      // their nodes per axis
+  ShadingVolume own_;                               // built here when the caller gave none
+  const float* f4_ = nullptr;                       // {f, grad f} per sample (bricked), or null
+  std::size_t sy4_ = 0, sz4_ = 0;                  // its strides in floats along y and z
   int spec_int_ = -1;
-  std::array<std::size_t, 3> bn_{0, 0, 0};
 };
 
 }  // namespace
+
+ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
+  ShadingVolume sv;
+  const auto& d = g.dims;
+  sv.samples = g.size();
+  sv.data.reset(new float[4 * sv.samples]);
+  float* data = sv.data.get();
+  const std::size_t sy = d[0], sz = d[0] * d[1];
+  parallel_for(d[2], threads, [&](std::size_t k) {
+    for (std::size_t j = 0; j < d[1]; ++j) {
+      const float* f = &g.values[g.index(0, j, k)];
+      float* out = data + 4 * g.index(0, j, k);
+      // central differences, one-sided at the border: (f[up] - f[down]) / (up - down)
+      const std::ptrdiff_t dy0 = j > 0 ? -std::ptrdiff_t(sy) : 0, dy1 = j + 1 < d[1] ? std::ptrdiff_t(sy) : 0;
+      const std::ptrdiff_t dz0 = k > 0 ? -std::ptrdiff_t(sz) : 0, dz1 = k + 1 < d[2] ? std::ptrdiff_t(sz) : 0;
+      const double hy = double((dy1 - dy0) / std::ptrdiff_t(sy)), hz = double((dz1 - dz0) / std::ptrdiff_t(sz));
+      for (std::size_t i = 0; i < d[0]; ++i, out += 4) {
+        const std::ptrdiff_t dx0 = i > 0 ? -1 : 0, dx1 = i + 1 < d[0] ? 1 : 0;
+        out[0] = f[i];
+        out[1] = static_cast<float>((double(f[std::ptrdiff_t(i) + dx1]) - f[std::ptrdiff_t(i) + dx0]) / double(dx1 - dx0));
+        out[2] = static_cast<float>((double(f[std::ptrdiff_t(i) + dy1]) - f[std::ptrdiff_t(i) + dy0]) / hy);
+        out[3] = static_cast<float>((double(f[std::ptrdiff_t(i) + dz1]) - f[std::ptrdiff_t(i) + dz0]) / hz);
+      }
+    }
+  });
+  return sv;
+}
 
 double sample_trilinear(const ScalarGrid& g, double x, double y, double z) {
   const double p[3] = {x, y, z};
@@ -491,7 +638,7 @@ bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
 }
 
 RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const TransferFunction& tf, const Camera& cam,
-                     const RenderOptions& o, SurfaceTracer surface, const void* ctx) {
+                     const RenderOptions& o, SurfaceTracer surface, const void* ctx, const ShadingVolume* shading) {
   if (!(o.step > 0)) throw std::invalid_argument("step must be positive");
   if (o.spp != 1 && o.spp != 4 && o.spp != 9 && o.spp != 16) throw std::invalid_argument("spp must be 1, 4, 9 or 16");
   if (o.mode == Mode::iso && o.isos.empty()) throw std::invalid_argument("iso mode needs at least one iso-value");
@@ -505,7 +652,8 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
   img.depth.assign(static_cast<std::size_t>(W) * H, std::numeric_limits<float>::infinity());
   const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
   std::vector<RenderStats> tile_stats(static_cast<std::size_t>(tiles_x) * tiles_y);
-  const Caster caster(grid, pyramid, tf, o, surface, ctx);
+  if (shading && shading->samples != grid.size()) throw std::invalid_argument("shading volume does not match the grid");
+  const Caster caster(grid, pyramid, tf, o, surface, ctx, shading);
   const int sub = o.spp == 16 ? 4 : o.spp == 9 ? 3 : o.spp == 4 ? 2 : 1;
   parallel_for(tile_stats.size(), o.threads, [&](std::size_t tile) {
     const int tx = static_cast<int>(tile % tiles_x), ty = static_cast<int>(tile / tiles_x);

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct SliceStack {
   double c0 = 0, dc = 1;
   int count = 0;
   double width = 1;          // contour band width, data units
+  double width_world = 0;    // > 0: band width width_world * |grad f| (world units: lines of constant width)
+  double frame_width = 0;    // > 0: the plane's outline on the volume box, this wide (world units), in white
   double contour_alpha = 1;
   double tf_unit = 1;        // a plane takes the TF opacity a(v) of one tf_unit layer
 };
@@ -58,10 +61,21 @@ struct RenderOptions {
   int spp = 1;                  // 1, 4, 9 or 16 stratified sub-pixel rays
   int threads = 1;
   bool skip_empty = true;
-  // Central-difference gradients precomputed at every sample (12 bytes per voxel) and
-  // interpolated, instead of 48 reads per shaded sample; the same values up to rounding.
+  // Central-difference gradients precomputed at every sample and interpolated, instead of
+  // 48 reads per shaded sample; the same values up to rounding. render() builds them when
+  // the caller passes no ShadingVolume.
   bool gradient_cache = false;
 };
+
+// The value and the central-difference gradient (index space) of every sample, interleaved
+// as {f, df/di, df/dj, df/dk} (16 bytes per voxel), so that one cache line per corner serves
+// both the trilinear value and the interpolated gradient of a shaded sample (docs/volrender.md
+// "Acceleration"). Built once per volume and shared by every image rendered from it.
+struct ShadingVolume {
+  std::unique_ptr<float[]> data;  // 4 floats per sample, x fastest (filled in parallel, first touch)
+  std::size_t samples = 0;
+};
+ShadingVolume shading_volume(const volume_pyramid::ScalarGrid& grid, int threads);
 
 struct RenderStats {
   std::size_t rays = 0, samples = 0, skipped = 0, terminated = 0;
@@ -82,10 +96,14 @@ struct SurfaceHit {
 };
 using SurfaceTracer = SurfaceHit (*)(const void* context, const Ray& ray);
 
-// `pyramid` may be null (no skipping). Throws std::invalid_argument for bad options.
+// `pyramid` may be null (no skipping); its finest level sets the skipping block size (2^l
+// cells; volrender builds level 2, 4^3 cells), coarser levels skip larger empty regions at
+// once. `shading` (with gradient_cache) must come from shading_volume(grid); null: render()
+// builds one. Throws std::invalid_argument for bad options.
 RenderedImage render(const volume_pyramid::ScalarGrid& grid, const volume_pyramid::MinMaxPyramid* pyramid,
                      const TransferFunction& tf, const Camera& camera, const RenderOptions& options,
-                     SurfaceTracer surface = nullptr, const void* surface_context = nullptr);
+                     SurfaceTracer surface = nullptr, const void* surface_context = nullptr,
+                     const ShadingVolume* shading = nullptr);
 
 // Slab-method clipping of a world ray to the grid's sample box; returns false when the ray
 // misses. t0/t1 are the ray parameters of entry and exit (t0 may be negative for an

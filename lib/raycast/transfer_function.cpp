@@ -160,6 +160,8 @@ TransferFunction::TransferFunction(std::vector<ControlPoint> p, double lo, doubl
     tau_[k] = tau / tf_unit;
     r_[k] = c.r, g_[k] = c.g, b_[k] = c.b;
   }
+  lut_.resize(4 * kBins);
+  for (int k = 0; k < kBins; ++k) lut_[4 * k] = tau_[k], lut_[4 * k + 1] = r_[k], lut_[4 * k + 2] = g_[k], lut_[4 * k + 3] = b_[k];
   // Exact integrals of the piecewise-linear tau and tau*c over each bin.
   T_.assign(kBins, 0.0);
   K_.assign(kBins, {0, 0, 0});
@@ -174,19 +176,6 @@ TransferFunction::TransferFunction(std::vector<ControlPoint> p, double lo, doubl
       K_[k][ch] = K_[k - 1][ch] + width_ * (t0 * c0 + (t0 * dc + dt * c0) / 2 + dt * dc / 3);
     }
   }
-}
-
-double TransferFunction::position(double v) const {
-  const double x = (v - lo_) / width_;
-  return std::clamp(x, 0.0, static_cast<double>(kBins - 1));
-}
-
-TransferFunction::Sample TransferFunction::at(double v) const {
-  const double x = position(v);
-  const int k = std::min(static_cast<int>(x), kBins - 2);
-  const double w = x - k;
-  return {tau_[k] + w * (tau_[k + 1] - tau_[k]),
-          {r_[k] + w * (r_[k + 1] - r_[k]), g_[k] + w * (g_[k + 1] - g_[k]), b_[k] + w * (b_[k + 1] - b_[k])}};
 }
 
 double TransferFunction::integral_tau(double v) const {

@@ -44,7 +44,16 @@ class TransferFunction {
     double tau;                   // extinction per voxel unit
     std::array<double, 3> rgb;    // colour
   };
-  Sample at(double v) const;
+  // Inline: the ray caster calls it for every sample. One interleaved table row per bin
+  // (tau, r, g, b), so a lookup touches one or two cache lines.
+  Sample at(double v) const {
+    const double x = position(v);
+    const int k = x < kBins - 2 ? static_cast<int>(x) : kBins - 2;
+    const double w = x - k;
+    const double* a = &lut_[4 * static_cast<std::size_t>(k)];
+    const double* b = a + 4;
+    return {a[0] + w * (b[0] - a[0]), {a[1] + w * (b[1] - a[1]), a[2] + w * (b[2] - a[2]), a[3] + w * (b[3] - a[3])}};
+  }
   // T(v) and K(v) (per voxel unit, from lo).
   double integral_tau(double v) const;
   std::array<double, 3> integral_tau_color(double v) const;
@@ -54,8 +63,12 @@ class TransferFunction {
   double hi() const { return hi_; }
 
  private:
-  double position(double v) const;  // continuous bin coordinate in [0, kBins - 1]
+  double position(double v) const {  // continuous bin coordinate in [0, kBins - 1]
+    const double x = (v - lo_) / width_;
+    return x < 0.0 ? 0.0 : x > kBins - 1 ? static_cast<double>(kBins - 1) : x;
+  }
   std::vector<double> tau_, r_, g_, b_;
+  std::vector<double> lut_;                        // tau, r, g, b per bin, interleaved
   std::vector<double> T_;                          // integral of tau up to each bin
   std::vector<std::array<double, 3>> K_;           // integral of tau*c up to each bin
   std::vector<int> nonzero_prefix_;                // bins with tau > 0 before each bin

@@ -5,4 +5,5 @@
 set -euo pipefail
 build="${1:-build}"
 "$build/bin/bench_isosurf"
+"$(dirname "$0")/isosurf_adaptive.sh" "$build"
 xvfb-run -a -s "-screen 0 1024x768x24" "$build/bin/bench_volrender"

@@ -25,6 +25,71 @@ check "area $area" awk -v a="$area" 'BEGIN { exit !(a > 1086.865 * 0.99 && a < 1
 check "volume $vol" awk -v a="$vol" 'BEGIN { exit !(a > 3369.283 * 0.99 && a < 3369.283) }'
 check "triangles = 2 (V - chi)" test "$f" = $((2 * (v - 2)))
 
+case_ "--normals: -grad f is the sphere's outward radial direction (analytic)"
+# f = 9.3 - |x - c|: the exact normal at x is (x - c)/|x - c|. Central differences and
+# their trilinear interpolation err in direction by O((h/R)^2) = 1/86 rad = 0.66 degree.
+run isosurf exact "$W/sphere.nrrd" --iso 0 --normals -o "$W/sn.ply"
+expect_status 0
+ang=$($FX radial "$W/sn.ply" 11.5,11.5,11.5)
+check "largest angle to the radial direction $ang <= 0.66 degree" awk -v a="$ang" 'BEGIN { exit !(a <= 0.66) }'
+run isosurf adaptive "$W/sphere.nrrd" --iso 0 --normals --max-error inf --focus 11.5,11.5,21 --focus-radius 3 -o "$W/san.ply"
+expect_status 0
+ang=$($FX radial "$W/san.ply" 11.5,11.5,11.5)
+check "adaptive: largest angle $ang <= 0.66 degree" awk -v a="$ang" 'BEGIN { exit !(a <= 0.66) }'
+run isosurf exact "$W/sphere.nrrd" --iso 0 --normals -o "$W/sn.stl"
+expect_clean_failure 2 isosurf
+expect_stderr_has "normals"
+
+case_ "--smooth K (Taubin lambda|mu): a plane stays the plane, its boundary stays put"
+# f = y/32, iso 0.49: the plane y = 32 * 0.49 = 15.68 with boundary on the volume's faces.
+# The umbrella Laplacian of coplanar neighbours has no normal component, so every vertex
+# keeps y = 15.68; boundary vertices are fixed, so the extent in x and z stays [0, 32].
+$FX volume ramp "$W/ramp.nrrd"
+run isosurf exact "$W/ramp.nrrd" --iso 0.49 --smooth 5 -o "$W/plane.ply"
+expect_status 0
+check "y = 15.68 everywhere, x and z span [0, 32]" python3 - "$W/plane.ply" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+nv = [int(l.split()[2]) for l in data[:end].decode().splitlines() if l.startswith("element vertex")][0]
+V = [struct.unpack_from("<3f", data, end + 12 * i) for i in range(nv)]
+ok = all(abs(v[1] - 15.68) < 1e-4 for v in V)
+ok = ok and min(v[0] for v in V) == 0 and max(v[0] for v in V) == 32 and min(v[2] for v in V) == 0 and max(v[2] for v in V) == 32
+sys.exit(0 if ok and nv > 1000 else 1)
+PY
+run isosurf exact "$W/sphere.nrrd" --iso 0 --smooth 10 -o "$W/ss.ply" --report "$W/ss.json"
+expect_status 0
+read -r closed _ < <($FX plycheck "$W/ss.ply")
+check "smoothed sphere still closed (independent)" test "$closed" = closed
+run isosurf exact "$W/sphere.nrrd" --iso 0 --smooth -1 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+
+case_ "--roi: a box holding the whole surface gives the same surface; a cut one, capped, is closed"
+# The sphere (R 9.3 about 11.5) lies within samples 2..21: the ROI 1..22 keeps every cell
+# the surface crosses, and world positions stay (origin moved to the ROI's first sample),
+# so the meshes agree up to float rounding (fcompare, an independent program).
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 1,22,1,22,1,22 -o "$W/roi.ply" --report "$W/roi.json"
+expect_status 0
+check "same counts" test "$(jq -c '[.vertices, .triangles]' "$W/roi.json")" = "$(jq -c '[.vertices, .triangles]' "$W/s.json")"
+check "same surface within 1e-5 (fcompare)" "$FEST_BIN/fcompare" -q "$W/s.ply" "$W/roi.ply" --tol 1e-5
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 12,23,0,23,0,23 --cap -o "$W/half.ply"
+expect_status 0
+read -r closed _ < <($FX plycheck "$W/half.ply")
+check "half sphere capped: closed (independent)" test "$closed" = closed
+check "nothing left of x = 11 (the cap layer)" python3 - "$W/half.ply" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+nv = [int(l.split()[2]) for l in data[:end].decode().splitlines() if l.startswith("element vertex")][0]
+sys.exit(0 if nv > 100 and min(struct.unpack_from("<f", data, end + 12 * i)[0] for i in range(nv)) >= 11 else 1)
+PY
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 0,30,0,23,0,23 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+expect_stderr_has "not inside"
+check "no output on bad --roi" test ! -e "$W/x.ply"
+run isosurf exact "$W/sphere.nrrd" --iso 0 --roi 1,2,3 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+
 case_ "torus: genus 1 (chi 0), closed"
 run isosurf "$W/torus.nrrd" --iso 0 --to ply -o "$W/t.ply"
 expect_status 0

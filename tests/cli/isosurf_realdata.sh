@@ -41,15 +41,20 @@ check "closed" test "$(jq .closed "$W/bone_s.json")" = true
 check "area within 0.05 %" within "$(jq .area "$W/bone_s.json")" 297930.8 0.0005
 check "volume within 0.1 %" within "$(jq .volume "$W/bone_s.json")" 661509.5 0.001
 
-case_ "Cranium bone, adaptive around the volume centre (r0 16 mm, distance rule only): closed, fewer triangles"
-# The plan asks >= 5x fewer than exact (678 348 here); measured 4.4x (154 238): the
-# edge-consistency rule keeps the thin bone fine. Checked: >= 4x, closed (stats and independent).
+case_ "Cranium bone, adaptive around the volume centre (r0 16 mm, distance rule only): closed, >= 5x fewer triangles"
+# The plan asks >= 5x fewer than exact (678 348 here). Edge rule `transitions` (default):
+# measured 14.8x (45 944); `all` keeps every thin feature that crosses a leaf edge: 4.4x.
 run isosurf adaptive "$ct" --iso 225.5 --cap -1024 --focus 122,122,80 --focus-radius 16 --max-error inf -o "$W/bone_ad.ply" --report "$W/bone_ad.json"
 expect_status 0
 check "closed" test "$(jq .closed "$W/bone_ad.json")" = true
-check ">= 4x fewer triangles ($(jq .triangles "$W/bone_ad.json"))" test "$(jq '.triangles * 4 <= 678348' "$W/bone_ad.json")" = true
+check ">= 5x fewer triangles ($(jq .triangles "$W/bone_ad.json"))" test "$(jq '.triangles * 5 <= 678348' "$W/bone_ad.json")" = true
 read -r closed _ < <($FX plycheck "$W/bone_ad.ply")
 check "closed (independent)" test "$closed" = closed
+run isosurf adaptive "$ct" --iso 225.5 --cap -1024 --focus 122,122,80 --focus-radius 16 --max-error inf --edge-rule all -o "$W/bone_ad_all.ply" --report "$W/bone_ad_all.json"
+expect_status 0
+read -r closed _ < <($FX plycheck "$W/bone_ad_all.ply")
+check "edge rule all: closed (independent)" test "$closed" = closed
+check "edge rule all: more triangles than transitions" test "$(jq .triangles "$W/bone_ad_all.json")" -gt "$(jq .triangles "$W/bone_ad.json")"
 
 case_ "Colin27 brain (ch2bet)"
 run isosurf exact "$mri" --iso 50.5 --cap 0 --face-rule separate -o "$W/brain.ply" --report "$W/brain.json"

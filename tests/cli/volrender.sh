@@ -133,6 +133,76 @@ PY
 run volrender slices "$W/xramp.nrrd" --slices 4
 expect_clean_failure 2 volrender
 
+case_ "slices --contour-width-world W: band W |grad f| in data units (lines of constant world width)"
+# f = x has |grad f| = 1 exactly (central differences of a linear field), so W = 1.01 world
+# units is the same band as --contour-width 1.01: identical images.
+run volrender slices "$W/xramp.nrrd" --slice-axis z --slices 1 --contours 8:8:7 --contour-width-world 1.01 --fov 0 --view 0,90 \
+    --zoom 1.7320508075688772 --size 64x64 --to pfm -o "$W/slw.pfm"
+expect_status 0
+check "same image as --contour-width 1.01" cmp "$W/sl.pfm" "$W/slw.pfm"
+# spacing 2: f = i grows by 1/2 per world unit, so W = 4.04 world units is 2.02 data units;
+# W = 2.02 lights exactly the pixel columns whose centre x + 0.5 lies within 1.01 of a
+# contour at x = 8, 16, ..., 56 (world units; same orthographic camera as above)
+$FX volume xramp2 "$W/xramp2.nrrd"
+cam=(--slice-axis z --slices 1 --contours 4:4:7 --fov 0 --view 0,90 --zoom 1.7320508075688772 --size 64x64 --to pfm)
+run volrender slices "$W/xramp2.nrrd" "${cam[@]}" --contour-width 2.02 -o "$W/s2a.pfm"
+run volrender slices "$W/xramp2.nrrd" "${cam[@]}" --contour-width-world 4.04 -o "$W/s2b.pfm"
+expect_status 0
+check "spacing 2: W = 4.04 world is 2.02 data units" cmp "$W/s2a.pfm" "$W/s2b.pfm"
+run volrender slices "$W/xramp2.nrrd" "${cam[@]}" --contour-width-world 2.02 -o "$W/s2c.pfm"
+expect_status 0
+check "W = 2.02: lit columns = |x + 0.5 - 8m| <= 1.01" python3 - "$W/s2c.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read().split(b"\n", 3)
+w, h = map(int, d[1].split())
+v = struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+want = [x for x in range(w) if any(abs(x + 0.5 - c) <= 1.01 for c in range(8, 57, 8))]
+for row in range(2, h - 2):
+    if [x for x in range(w) if v[(row * w + x) * 3] > 0] != want:
+        sys.exit(1)
+PY
+case_ "composite: over in linear light, the first image on top (analytic)"
+# A = sRGB red at alpha 128/255 over opaque blue: linear (a, 0, 1 - a) with a = 128/255,
+# opaque, so 8-bit sRGB (round(255 srgb(a)), 0, round(255 srgb(1 - a))) = (188, 0, 187)
+$FX png "$W/ca.png" 8 6 255,0,0,128
+$FX png "$W/cb.png" 8 6 0,0,255
+want=$(python3 -c "
+s = lambda v: 12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
+a = 128 / 255
+print(round(255 * s(a)), 0, round(255 * s(1 - a)))")
+run volrender composite "$W/ca.png" "$W/cb.png" -o "$W/cab.png"
+expect_status 0
+check "pixel = $want" test "$($FX pngpixel "$W/cab.png" 3 2)" = "$want"
+run volrender composite "$W/cb.png" "$W/ca.png" -o "$W/cba.png"
+check "opaque blue on top hides red" test "$($FX pngpixel "$W/cba.png" 5 4)" = "0 0 255"
+$FX png "$W/cc.png" 4 6 0,0,255
+run volrender composite "$W/ca.png" "$W/cc.png" -o "$W/x.png"
+expect_clean_failure 3 volrender
+expect_stderr_has "4x6"
+run volrender composite "$W/ca.png" -o "$W/x.png"
+expect_clean_failure 2 volrender
+run volrender composite "$W/ca.png" "$W/xramp.nrrd" -o "$W/x.png"
+expect_clean_failure 3 volrender
+
+case_ "slices --slice-frame: the plane's outline, one voxel wide, on the box faces the plane meets"
+# plane z = 32 of the 65^3 box seen from above (pixel i centred at x = i + 0.5): the outline
+# is the points within 1 voxel of x = 0, x = 64, y = 0 or y = 64, i.e. exactly the border
+# pixel rows and columns (no contour is in range: 1000:1:1)
+run volrender slices "$W/xramp.nrrd" --slice-axis z --slices 1 --contours 1000:1:1 --slice-frame --fov 0 --view 0,90 \
+    --zoom 1.7320508075688772 --size 64x64 --to pfm -o "$W/frame.pfm"
+expect_status 0
+check "lit pixels = the image border" python3 - "$W/frame.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read().split(b"\n", 3)
+w, h = map(int, d[1].split())
+v = struct.unpack("<%df" % (3 * w * h), d[3][: 12 * w * h])
+lit = {(x, r) for r in range(h) for x in range(w) if v[3 * (r * w + x)] > 0}
+want = {(x, r) for r in range(h) for x in range(w) if x in (0, w - 1) or r in (0, h - 1)}
+sys.exit(0 if lit == want else 1)
+PY
+run volrender slices "$W/xramp.nrrd" --contours 8:8:7 --contour-width-world 0 -o "$W/x.png"
+expect_clean_failure 2 volrender
+
 case_ "camera --print: off-axis frustum (Kooima) for an on-axis eye is symmetric"
 run volrender camera --screen '-0.4,-0.3,0;0.4,-0.3,0;-0.4,0.3,0' --eye 0,0,2 --near 0.5 --size 8x6
 expect_status 0

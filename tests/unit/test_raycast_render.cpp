@@ -155,6 +155,42 @@ TEST(RaycastRender, SkippingAndThreadsDoNotChangeBytes) {
   }
 }
 
+// The skipping block size (pyramid finest level 1, 2 or 3, with coarser levels skipping
+// larger nodes), the gradient source (on the fly, a shading volume built by render() or
+// passed in) and pre-integration give the same bytes as the plain march.
+TEST(RaycastRender, SkipLevelsAndShadingVolumeDoNotChangeBytes) {
+  const auto g = grid(40, [](auto i, auto j, auto k) {
+    const double d1 = (i - 12.0) * (i - 12.0) + (j - 20.0) * (j - 20.0) + (k - 25.0) * (k - 25.0);
+    const double d2 = (i - 28.0) * (i - 28.0) + (j - 14.0) * (j - 14.0) + (k - 10.0) * (k - 10.0);
+    return 100 * std::exp(-d1 / 30) + 70 * std::exp(-d2 / 12);
+  });
+  const TransferFunction tf({{0, 0, 0, 0, 0}, {15, 0.2, 0.5, 1, 0}, {60, 1, 0.8, 0.2, 0.3}, {100, 1, 1, 1, 0.8}}, 0, 100,
+                            OpacityMode::opacity, 1.0);
+  Camera c = orbit_camera({19.5, 19.5, 19.5}, 34, 40, 25, 0, 30, 1, 40, 32);
+  const auto sv = shading_volume(g, 2);
+  for (Mode m : {Mode::dvr, Mode::iso}) {
+    RenderOptions o;
+    o.mode = m;
+    o.shade = true;
+    o.isos = {{50, 0.6, std::nullopt}, {20, 0.3, std::nullopt}};
+    o.skip_empty = false;
+    const auto plain = render(g, nullptr, tf, c, o);
+    o.skip_empty = true;
+    for (int level : {1, 2, 3}) {
+      const MinMaxPyramid p(g, 1, level);
+      const auto a = render(g, &p, tf, c, o);
+      EXPECT_EQ(plain.rgba, a.rgba) << "level " << level;
+      EXPECT_GT(a.stats.skipped, 0u);
+      o.gradient_cache = true;
+      const auto b = render(g, &p, tf, c, o);
+      const auto d = render(g, &p, tf, c, o, nullptr, nullptr, &sv);
+      EXPECT_EQ(b.rgba, d.rgba) << "level " << level;
+      for (std::size_t q = 0; q < a.rgba.size(); ++q) EXPECT_NEAR(a.rgba[q], b.rgba[q], 1e-5);
+      o.gradient_cache = false;
+    }
+  }
+}
+
 // Iso depth of a sphere SDF: analytic ray-sphere distance (orthographic view). Tolerance:
 // trilinear reconstruction of |x| - R errs by up to 3 h^2 / (8 R) = 0.0125 voxel, the
 // bisection by step/256 = 0.002 voxel.

@@ -16,6 +16,8 @@
 #include "isosurface/adaptive.hpp"
 #include "isosurface/marching_cubes.hpp"
 #include "isosurface/mesh_stats.hpp"
+#include "isosurface/taubin_smooth.hpp"
+#include "isosurface/vertex_normals.hpp"
 #include "load_grid.hpp"
 #include "surface_io.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
@@ -77,6 +79,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     keep = static_cast<std::size_t>(n);
   }
   const std::string format = output_format(o.to, o.output);
+  if (o.normals && format == "stl") throw usage_error("--normals needs a format with vertex normals (ply, plya, obj, off or drc), not stl");
 
   auto t0 = Clock::now();
   const LoadedGrid in = load_grid(o);
@@ -113,6 +116,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     ao.focus_radius = ad->focus_radius;
     ao.error_growth = ad->error_growth;
     ao.max_level = ad->max_level;
+    ao.edge_rule = ad->edge_rule == "all" ? isosurface::EdgeRule::all : isosurface::EdgeRule::transitions;
     ao.face_rule = eo.face_rule;
     ao.triangulation = eo.triangulation;
     ao.threads = threads;
@@ -124,6 +128,8 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     s = isosurface::extract_isosurface(in.grid, in.iso, eo, pyramid ? &*pyramid : nullptr, &es);
   }
   if (keep) s = keep_largest(s, keep);
+  isosurface::taubin_smooth(s, o.smooth);
+  if (o.normals) isosurface::add_gradient_normals(in.grid, s, threads);
   const double t_extract = seconds_since(t0);
   if (s.triangles.empty() && !o.quiet)
     warn("isosurf", fmt::format("no surface: iso {} is outside the data range [{}, {}] or never crossed ({})", in.iso,
@@ -138,6 +144,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     j["mode"] = ad ? "adaptive" : "exact";
     if (ad) {
       j["leaves_per_level"] = ar.leaves_per_level;
+      j["edge_rule"] = ad->edge_rule;
       j["closure_splits"] = ar.closure_splits;
       j["max_error_bound"] = ar.max_error_bound;
     }

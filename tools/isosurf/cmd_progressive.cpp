@@ -95,6 +95,7 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
   ao.focus_radius = a.focus_radius;
   ao.error_growth = a.error_growth;
   ao.max_level = a.max_level;
+  ao.edge_rule = a.edge_rule == "all" ? isosurface::EdgeRule::all : isosurface::EdgeRule::transitions;
   if (!a.focus.empty()) {
     std::stringstream ss(a.focus);
     std::array<double, 3> f{};

@@ -23,6 +23,9 @@ struct ExactOptions {
   std::string component_filter = "all";  // all | largest | N
   bool index_space = false;
   bool nan_outside = false;
+  std::string roi;                    // "i0,i1,j0,j1,k0,k1": inclusive sample ranges ("" = all)
+  bool normals = false;               // per-vertex normals -grad f / |grad f| in the output
+  int smooth = 0;                     // Taubin lambda|mu iterations
   bool no_octree = false;             // brute-force scan (same output; for comparisons)
   int qbits = 14;                     // drc position quantization (0 = lossless)
   int threads = 0;
@@ -36,6 +39,7 @@ struct AdaptiveArgs {
   std::string max_error = "0";        // eps0 (data units) or "inf"
   double error_growth = 1;
   int max_level = -1;
+  std::string edge_rule = "transitions";  // closure: "transitions" or "all" (docs/isosurf.md 5.2)
 };
 
 struct ProgressiveArgs {

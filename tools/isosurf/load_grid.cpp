@@ -11,6 +11,42 @@
 #include "formats/volume_source/volume_source.hpp"
 
 namespace fest::isosurf {
+namespace {
+
+// --roi i0,i1,j0,j1,k0,k1: keeps the samples of the inclusive index box; world positions
+// stay (the origin moves to the box's first sample, returned in `first`). Returns the NaN
+// samples kept.
+std::size_t crop(volume_pyramid::ScalarGrid& g, const std::string& roi, double first[3]) {
+  long r[6];
+  const char* p = roi.c_str();
+  for (int q = 0; q < 6; ++q) {
+    char* end = nullptr;
+    r[q] = std::strtol(p, &end, 10);
+    if (end == p || (q < 5 && *end != ',') || (q == 5 && *end)) throw usage_error("--roi takes i0,i1,j0,j1,k0,k1 (integers), not '{}'", roi);
+    p = end + 1;
+  }
+  for (int a = 0; a < 3; ++a)
+    if (r[2 * a] < 0 || r[2 * a] >= r[2 * a + 1] || r[2 * a + 1] >= long(g.dims[a]))
+      throw usage_error("--roi {} is not inside the {}x{}x{} volume with at least 2 samples per axis", roi, g.dims[0], g.dims[1], g.dims[2]);
+  volume_pyramid::ScalarGrid c;
+  for (int a = 0; a < 3; ++a) c.dims[a] = std::size_t(r[2 * a + 1] - r[2 * a] + 1);
+  c.axes = g.axes;
+  c.origin = g.world(double(r[0]), double(r[2]), double(r[4]));
+  c.values.resize(c.size());
+  std::size_t nans = 0;
+  for (std::size_t k = 0; k < c.dims[2]; ++k)
+    for (std::size_t j = 0; j < c.dims[1]; ++j)
+      for (std::size_t i = 0; i < c.dims[0]; ++i) {
+        const float x = g.at(i + std::size_t(r[0]), j + std::size_t(r[2]), k + std::size_t(r[4]));
+        nans += std::isnan(x);
+        c.values[c.index(i, j, k)] = x;
+      }
+  g = std::move(c);
+  for (int a = 0; a < 3; ++a) first[a] = double(r[2 * a]);
+  return nans;
+}
+
+}  // namespace
 
 LoadedGrid load_grid(const ExactOptions& o) {
   if (!o.iso && o.labels.empty()) throw usage_error("give --iso VALUE or --label K[,K...]");
@@ -31,6 +67,8 @@ LoadedGrid load_grid(const ExactOptions& o) {
                       v.dims[0], v.dims[1], v.dims[2], out.source);
   std::size_t nans = 0;
   out.grid = volume_pyramid::to_grid(v, nans);
+  double roi_lo[3] = {0, 0, 0};  // the ROI's first sample (for --index-space)
+  if (!o.roi.empty()) nans = crop(out.grid, o.roi, roi_lo);
   auto& values = out.grid.values;
   if (nans > 0) {
     if (!o.nan_outside)
@@ -59,9 +97,10 @@ LoadedGrid load_grid(const ExactOptions& o) {
   if (nans > 0)
     for (auto& x : values)
       if (std::isnan(x)) x = std::min(lo, out.iso) - 1.0f;
-  if (o.index_space) {
+  if (o.index_space) {  // voxel coordinates of the whole volume, also inside a --roi
     out.grid.origin = {0, 0, 0};
     out.grid.axes = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    if (!o.roi.empty()) out.grid.origin = {double(roi_lo[0]), double(roi_lo[1]), double(roi_lo[2])};
   }
   if (o.cap) {
     const double cap = o.cap_value ? *o.cap_value : static_cast<double>(std::min(lo, out.iso)) - 1.0;

@@ -35,6 +35,9 @@ int main(int argc, char** argv) {
   e->add_option("--tri", ex.tri, "Loop triangulation: minarea, fan or centroid")->check(CLI::IsMember({"minarea", "fan", "centroid"}));
   e->add_option("--component-filter", ex.component_filter, "Keep all components, the largest, or the N largest");
   e->add_flag("--index-space", ex.index_space, "Vertices in voxel coordinates instead of world units");
+  e->add_option("--smooth", ex.smooth, "Taubin lambda|mu smoothing iterations (0.5 / -0.53; boundary fixed)")->check(CLI::Range(0, 100000));
+  e->add_option("--roi", ex.roi, "Only the samples i0..i1, j0..j1, k0..k1 (inclusive): i0,i1,j0,j1,k0,k1");
+  e->add_flag("--normals", ex.normals, "Per-vertex normals from the interpolated gradient (-grad f); ply, plya, obj, off or drc");
   e->add_flag("--nan-outside", ex.nan_outside, "Treat NaN samples as outside instead of refusing the input");
   e->add_flag("--no-octree", ex.no_octree, "Scan every cell (same output; for comparisons)");
   e->add_option("--qbits", ex.qbits, "Draco position quantization bits (0 = lossless)")->check(CLI::Range(0, 30));
@@ -58,6 +61,9 @@ int main(int argc, char** argv) {
   d->add_option("--tri", ad_ex.tri, "minarea, fan or centroid")->check(CLI::IsMember({"minarea", "fan", "centroid"}));
   d->add_option("--component-filter", ad_ex.component_filter, "all, largest or N");
   d->add_flag("--index-space", ad_ex.index_space, "Vertices in voxel coordinates");
+  d->add_option("--smooth", ad_ex.smooth, "Taubin lambda|mu smoothing iterations (0.5 / -0.53; boundary fixed)")->check(CLI::Range(0, 100000));
+  d->add_option("--roi", ad_ex.roi, "Only the samples i0..i1, j0..j1, k0..k1 (inclusive): i0,i1,j0,j1,k0,k1");
+  d->add_flag("--normals", ad_ex.normals, "Per-vertex normals from the interpolated gradient (-grad f); ply, plya, obj, off or drc");
   d->add_flag("--nan-outside", ad_ex.nan_outside, "Treat NaN samples as outside");
   d->add_option("--qbits", ad_ex.qbits, "Draco quantization bits")->check(CLI::Range(0, 30));
   d->add_option("--report", ad_ex.report, "JSON report (with leaves per level)");
@@ -66,6 +72,8 @@ int main(int argc, char** argv) {
   d->add_option("--max-error", ad.max_error, "Tolerated trilinear error eps0 (data units), or inf (distance rule only)");
   d->add_option("--error-growth", ad.error_growth, "eps = eps0 (1 + d/r0)^P")->check(CLI::Range(0.0, 16.0));
   d->add_option("--max-level", ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
+  d->add_option("--edge-rule", ad.edge_rule, "Leaf edges with one finest crossing at most: transitions (default) or all (keeps thin features)")
+      ->check(CLI::IsMember({"transitions", "all"}));
   fest::cli::add_threads(*d, ad_ex.threads);
 
   ExactOptions pr_ex;
@@ -90,6 +98,8 @@ int main(int argc, char** argv) {
   g->add_option("--focus-radius", pr_ad.focus_radius, "r0 (default diagonal/32)");
   g->add_option("--error-growth", pr_ad.error_growth, "eps = eps0 (1 + d/r0)^P")->check(CLI::Range(0.0, 16.0));
   g->add_option("--max-level", pr_ad.max_level, "Coarsest leaf level")->check(CLI::Range(0, 30));
+  g->add_option("--edge-rule", pr_ad.edge_rule, "Leaf edges with one finest crossing at most: transitions (default) or all")
+      ->check(CLI::IsMember({"transitions", "all"}));
   fest::cli::add_threads(*g, pr_ex.threads);
 
   StatsOptions st;

@@ -21,10 +21,15 @@ std::string output_format(const std::string& to, const std::string& output) {
 }
 
 std::string encode_surface(const isosurface::Surface& s, const std::string& format, int draco_bits) {
-  if (format == "ply") return formats::write_indexed_ply(s.xyz, s.triangles);
+  const bool normals = s.normals.size() == s.xyz.size() && !s.normals.empty();
+  if (format == "ply" && !normals) return formats::write_indexed_ply(s.xyz, s.triangles);
   Mesh mesh;
+  if (normals) mesh.request_vertex_normals();
   std::vector<Mesh::VertexHandle> vh(s.vertices());
-  for (std::size_t v = 0; v < s.vertices(); ++v) vh[v] = mesh.add_vertex(Mesh::Point(s.xyz[3 * v], s.xyz[3 * v + 1], s.xyz[3 * v + 2]));
+  for (std::size_t v = 0; v < s.vertices(); ++v) {
+    vh[v] = mesh.add_vertex(Mesh::Point(s.xyz[3 * v], s.xyz[3 * v + 1], s.xyz[3 * v + 2]));
+    if (normals) mesh.set_normal(vh[v], Mesh::Normal(s.normals[3 * v], s.normals[3 * v + 1], s.normals[3 * v + 2]));
+  }
   std::vector<std::vector<int>> extra;
   for (const auto& t : s.triangles) {
     const auto f = mesh.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);

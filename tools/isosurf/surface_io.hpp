@@ -11,7 +11,7 @@
 namespace fest::isosurf {
 
 // Bytes of the surface in a mesh format named like --to (ply, plya, obj, off, stl, drc).
-// Binary PLY is written straight from the arrays; the other formats go through the
+// Binary PLY without normals is written straight from the arrays; the rest goes through the
 // project's mesh type, with faces its halfedge structure refuses carried as extra faces.
 std::string encode_surface(const isosurface::Surface& s, const std::string& format, int draco_bits);
 

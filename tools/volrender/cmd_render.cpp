@@ -259,9 +259,18 @@ int run_render(const RenderArgs& a) {
     const auto v = parse_numbers(c, 3, 3, "--contours");
     if (!(v[1] > 0) || v[2] < 1 || v[2] != std::floor(v[2])) throw usage_error("--contours c0:dc:n needs dc > 0 and a whole n >= 1");
     if (!(a.contour_width > 0)) throw usage_error("--contour-width must be positive");
+    if (a.contour_width_world && !(*a.contour_width_world > 0 && std::isfinite(*a.contour_width_world)))
+      throw usage_error("--contour-width-world must be positive");
     raycast::SliceStack& S = o.slices;
     S.c0 = v[0], S.dc = v[1], S.count = static_cast<int>(v[2]);
     S.width = a.contour_width, S.contour_alpha = a.contour_alpha, S.tf_unit = a.tf_unit;
+    S.width_world = a.contour_width_world.value_or(0.0);
+    if (a.slice_frame) {  // one smallest spacing wide
+      double h = INFINITY;
+      for (int ax = 0; ax < 3; ++ax)
+        h = std::min(h, std::sqrt(L.grid.axes[ax] * L.grid.axes[ax] + L.grid.axes[3 + ax] * L.grid.axes[3 + ax] + L.grid.axes[6 + ax] * L.grid.axes[6 + ax]));
+      S.frame_width = h;
+    }
     const auto& g = L.grid;
     if (a.slice_axis == "x" || a.slice_axis == "y" || a.slice_axis == "z") {
       const int ax = a.slice_axis[0] - 'x';
@@ -285,14 +294,19 @@ int run_render(const RenderArgs& a) {
   }
   o.gradient_cache = a.gradients == "cache" || (a.gradients == "auto" && L.grid.size() <= (std::size_t{64} << 20));
   t0 = Clock::now();
-  const volume_pyramid::MinMaxPyramid pyramid(L.grid, o.threads);
+  // Finest level 2 (4^3 cells): skipping blocks fit the skin and bone of a CT closer than
+  // 8^3 blocks (docs/volrender.md "Acceleration"); the shading volume is built once for
+  // every image (both eyes of a stereo pair).
+  const volume_pyramid::MinMaxPyramid pyramid(L.grid, o.threads, 2);
+  raycast::ShadingVolume shading;
+  if (o.shade && o.gradient_cache) shading = raycast::shading_volume(L.grid, o.threads);
   const double t_build = seconds_since(t0);
   t0 = Clock::now();
   std::vector<raycast::RenderedImage> images;
   const auto mesh = load_mesh(a);
   for (const auto& c : cams)
-    images.push_back(mesh ? raycast::render(L.grid, &pyramid, tf, c, o, &raycast::MeshTracer::callback, &*mesh)
-                          : raycast::render(L.grid, &pyramid, tf, c, o));
+    images.push_back(raycast::render(L.grid, &pyramid, tf, c, o, mesh ? &raycast::MeshTracer::callback : nullptr,
+                                     mesh ? &*mesh : nullptr, shading.data ? &shading : nullptr));
   const double t_render = seconds_since(t0);
   t0 = Clock::now();
   if (stereo && layout == "files") {

@@ -54,6 +54,8 @@ struct RenderArgs {
   int slice_count = 8;
   std::string slice_at, contours;
   double contour_width = 1, contour_alpha = 1;
+  std::optional<double> contour_width_world;  // world units; replaces contour_width
+  bool slice_frame = false;                   // outline each plane (one smallest spacing wide)
   std::string mesh;                // opaque triangle mesh composited with depth
   std::string mesh_color = "0.9,0.85,0.75";
   std::string camera_json, report;
@@ -65,7 +67,14 @@ struct CameraPrintArgs {
   std::string input;  // optional volume (orbit cameras need its bounds)
 };
 
+struct CompositeArgs {
+  std::vector<std::string> inputs;  // top first
+  std::string output = "-";
+};
+
 int run_render(const RenderArgs& args);
+// Stacks the images with "over" (the first on top) in linear light; 8-bit sRGB PNG out.
+int run_composite(const CompositeArgs& args);
 int run_camera_print(const CameraPrintArgs& args);
 
 }  // namespace fest::volrender

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     s->add_option("--window", ra.window, "mip/minip/avg: grey window lo,hi instead of the TF colour");
     s->add_option("--iso", ra.iso, "iso: V[:alpha][,V:alpha...]");
     s->add_option("--iso-color", ra.iso_color, "iso: r,g,b[;r,g,b...] per iso-value");
-    s->add_option("--gradients", ra.gradients, "Shading gradients: otf (on the fly), cache (12 bytes/voxel) or auto (cache up to 64 M voxels)")
+    s->add_option("--gradients", ra.gradients, "Shading gradients: otf (on the fly), cache (value and gradient, 16 bytes/voxel) or auto (cache up to 64 M voxels)")
         ->check(CLI::IsMember({"otf", "cache", "auto"}));
     s->add_flag("--no-skip", ra.no_skip, "Disable empty-space skipping (same image; for comparisons)");
     s->add_option("--slice-axis", ra.slice_axis, "slices: plane normal x, y, z (index axes) or nx,ny,nz (world)");
@@ -82,6 +82,8 @@ int main(int argc, char** argv) {
     s->add_option("--slice-at", ra.slice_at, "slices: plane offsets along the normal (world units), instead of --slices");
     s->add_option("--contours", ra.contours, "slices: contour levels c0:dc:n");
     s->add_option("--contour-width", ra.contour_width, "slices: contour band width, data units");
+    s->add_option("--contour-width-world", ra.contour_width_world, "slices: contour band width in world units (W |grad f| in data units)");
+    s->add_flag("--slice-frame", ra.slice_frame, "slices: draw each plane's outline on the volume box (white, one voxel wide)");
     s->add_option("--contour-alpha", ra.contour_alpha, "slices: contour opacity")->check(CLI::Range(0.0, 1.0));
     s->add_option("--mesh", ra.mesh, "Opaque triangle mesh (PLY, OBJ, OFF, STL, Draco; world units) composited with depth");
     s->add_option("--mesh-color", ra.mesh_color, "Mesh colour r,g,b (linear)");
@@ -97,6 +99,11 @@ int main(int argc, char** argv) {
   c->add_option("input", cp.input, "Volume (orbit cameras need its bounds)");
   add_camera(c, cp.camera);
 
+  CompositeArgs ca;
+  auto* k = app.add_subcommand("composite", "Stack images with the over operator (the first on top) in linear light: a showcase screen from its viewers' parts");
+  k->add_option("images", ca.inputs, "Images (PNG, PAM, EXR, ...), top first")->required();
+  k->add_option("-o,--output", ca.output, "PNG output (- = stdout)");
+
   return fest::cli::run(app, argc, argv, [&]() -> int {
     for (auto* s : modes)
       if (*s) {
@@ -104,6 +111,7 @@ int main(int argc, char** argv) {
         return run_render(ra);
       }
     if (*c) return run_camera_print(cp);
+    if (*k) return run_composite(ca);
     return 2;
   });
 }

@@ -2,13 +2,21 @@
 """Small NRRD volumes for the isosurf/volrender CLI tests, and independent checks of
 their outputs (pure Python: no fest code).
 
-  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | xramp | nan | flat
+  fixtures.py volume KIND OUT.nrrd      sphere | torus | slab | ramp | quadratic | blob | xramp | xramp2 | nan | flat
   fixtures.py crossings IN.nrrd ISO     number of voxel edges whose ends lie on both sides of ISO
   fixtures.py plycheck MESH.ply         binary PLY: every edge in exactly two triangles, in
                                         opposite directions -> prints "closed V F chi area volume"
   fixtures.py pfm IMG.pfm X Y           prints the RGB of pixel (X, Y) (Y from the top)
   fixtures.py centroid IMG.pfm          intensity-weighted centroid "x y" of channel 0
   fixtures.py subset A.ply B.ply        exit 0 when every vertex of A is a vertex of B (bitwise)
+  fixtures.py png OUT.png W H R,G,B[,A]  a constant 8-bit RGB(A) PNG
+  fixtures.py pngpixel IN.png X Y       prints the channels of pixel (X, Y) of an 8-bit PNG
+  fixtures.py radial MESH.ply X,Y,Z      binary PLY with nx ny nz: the largest angle (degrees)
+                                        between a vertex normal and the ray from (X, Y, Z) to it
+  fixtures.py crop IN.ply OUT.ply X,Y,Z R0 R1
+                                        binary PLY of the triangles whose three vertices lie at a
+                                        distance in [R0, R1) from (X, Y, Z) (for region-wise
+                                        Hausdorff distances; unused vertices dropped)
 """
 import math
 import struct
@@ -57,6 +65,8 @@ def volume(kind, out):
                    spacing=(0.01, 0.01, 0.01))
     elif kind == "xramp":  # f = x on 65^3 (slice contours)
         write_nrrd(out, (65, 65, 65), field((65, 65, 65), lambda i, j, k: float(i)))
+    elif kind == "xramp2":  # f = i on 33^3 with spacing 2: |grad f| = 1/2 per world unit
+        write_nrrd(out, (33, 33, 33), field((33, 33, 33), lambda i, j, k: float(i)), spacing=(2, 2, 2))
     elif kind == "nan":
         v = [0.0] * 8 ** 3
         v[100] = float("nan")
@@ -164,6 +174,113 @@ def centroid(path):
     print("%.6f %.6f" % (sx / s, sy / s))
 
 
+def png_write(path, w, h, px):
+    import zlib
+    raw = b"".join(b"\0" + bytes(px) * w for _ in range(h))
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", w, h, 8, 6 if len(px) == 4 else 2, 0, 0, 0)
+    open(path, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def png_pixel(path, x, y):
+    import zlib
+    data = open(path, "rb").read()
+    pos, idat, w = 8, b"", 0
+    while pos < len(data):
+        n, t = struct.unpack(">I4s", data[pos:pos + 8])
+        d = data[pos + 8:pos + 8 + n]
+        if t == b"IHDR":
+            w, h, bits, ctype = struct.unpack(">IIBB", d[:10])
+            assert bits == 8
+            ch = {0: 1, 2: 3, 4: 2, 6: 4}[ctype]
+        elif t == b"IDAT":
+            idat += d
+        pos += 12 + n
+    raw, stride, prev, rows = zlib.decompress(idat), w * ch, bytearray(w * ch), []
+    for r in range(h):
+        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - ch] if i >= ch else 0
+            b, c = prev[i], prev[i - ch] if i >= ch else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    print(" ".join(str(v) for v in rows[y][x * ch:(x + 1) * ch]))
+
+
+def radial(path, centre):
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    head = data[:end].decode().splitlines()
+    nv = [int(l.split()[2]) for l in head if l.startswith("element vertex")][0]
+    props = []
+    for l in head:
+        if l.startswith("element face"):
+            break
+        if l.startswith("property"):
+            props.append(l.split()[2])
+    assert props[:6] == ["x", "y", "z", "nx", "ny", "nz"], props
+    c = [float(x) for x in centre.split(",")]
+    worst = 0.0
+    for i in range(nv):
+        x = struct.unpack_from("<6f", data, end + 4 * len(props) * i)
+        r = [x[a] - c[a] for a in range(3)]
+        rl = math.sqrt(sum(v * v for v in r))
+        nl = math.sqrt(sum(v * v for v in x[3:]))
+        cosang = sum(r[a] * x[3 + a] for a in range(3)) / (rl * nl)
+        worst = max(worst, math.degrees(math.acos(max(-1.0, min(1.0, cosang)))))
+    print("%.6f" % worst)
+
+
+def crop(src, dst, centre, r0, r1):
+    data = open(src, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    head = data[:end].decode().splitlines()
+    nv = [int(l.split()[2]) for l in head if l.startswith("element vertex")][0]
+    nf = [int(l.split()[2]) for l in head if l.startswith("element face")][0]
+    nprops = 0
+    for l in head:
+        if l.startswith("element face"):
+            break
+        if l.startswith("property"):
+            nprops += 1
+    assert all(l.split()[1] == "float" for l in head if l.startswith("property") and "list" not in l)
+    stride = 4 * nprops
+    c = [float(x) for x in centre.split(",")]
+    V, keep = [], []
+    for i in range(nv):
+        x = struct.unpack_from("<3f", data, end + stride * i)
+        V.append(x)
+        d = math.sqrt(sum((x[a] - c[a]) ** 2 for a in range(3)))
+        keep.append(r0 <= d < r1)
+    pos = end + stride * nv
+    F = []
+    for _ in range(nf):
+        assert data[pos] == 3
+        t = struct.unpack_from("<3I", data, pos + 1)
+        pos += 13
+        if keep[t[0]] and keep[t[1]] and keep[t[2]]:
+            F.append(t)
+    used = sorted({v for t in F for v in t})
+    new = {v: i for i, v in enumerate(used)}
+    out = bytearray(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+                     "property float y\nproperty float z\nelement face %d\n"
+                     "property list uchar uint vertex_indices\nend_header\n" % (len(used), len(F))).encode())
+    for v in used:
+        out += struct.pack("<3f", *V[v])
+    for t in F:
+        out += struct.pack("<B3I", 3, new[t[0]], new[t[1]], new[t[2]])
+    open(dst, "wb").write(out)
+    print(len(used), len(F))
+
+
 if __name__ == "__main__":
     cmd = sys.argv[1]
     if cmd == "volume":
@@ -178,5 +295,13 @@ if __name__ == "__main__":
         centroid(sys.argv[2])
     elif cmd == "subset":
         sys.exit(0 if ply_vertices(sys.argv[2]) <= ply_vertices(sys.argv[3]) else 1)
+    elif cmd == "png":
+        png_write(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), [int(v) for v in sys.argv[5].split(",")])
+    elif cmd == "pngpixel":
+        png_pixel(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+    elif cmd == "radial":
+        radial(sys.argv[2], sys.argv[3])
+    elif cmd == "crop":
+        crop(sys.argv[2], sys.argv[3], sys.argv[4], float(sys.argv[5]), float(sys.argv[6]))
     else:
         sys.exit(__doc__)
