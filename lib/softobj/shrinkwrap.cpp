@@ -230,7 +230,23 @@ class Wrapper {
     *len = (P(m_, a) - P(m_, b)).norm();
     if (*len <= 1e-3 * lmax_) return false;  // no endless splitting across a fold: the fold check repairs it
     if (*len > lmax_ || angle(N(m_, a), N(m_, b)) > alpha_) return true;
-    return dev_tol_ > 0 && chord_deviation(a, b) > dev_tol_;
+    if (!(dev_tol_ > 0)) return false;
+    // A circular arc's sagitta is at most half its chord: a midpoint farther off is not on
+    // a bend of this sheet but across a fold or gap of the membrane, where splitting would
+    // not converge; the chord rule and the fold check deal with those.
+    const double d = chord_deviation(a, b);
+    if (!(d > dev_tol_ && d <= 0.5 * *len)) return false;
+    // A sliver whose apex lies near the chord's arc: the split point would land on the
+    // apex (a zero-length chord, and the same again on the other side, endlessly). The
+    // Delaunay flip that follows refinement removes such a chord instead.
+    for (int side = 0; side < 2; ++side) {
+      const auto hs = m_.halfedge_handle(e, side);
+      if (m_.is_boundary(hs)) continue;
+      const Vec c = P(m_, m_.to_vertex_handle(m_.next_halfedge_handle(hs)));
+      const Vec x = P(m_, m_.from_vertex_handle(hs)) - c, y = P(m_, m_.to_vertex_handle(hs)) - c;
+      if (std::atan2(x.cross(y).norm(), x.dot(y)) > 150 * M_PI / 180) return false;
+    }
+    return true;
   }
 
   // Split edge e at its midpoint (both triangles 1 -> 2: conforming, no T-junctions) and
@@ -260,14 +276,19 @@ class Wrapper {
         std::array<Vec, 3> q;
         int k = 0;
         for (auto v : m_.fv_range(f)) q[k++] = P(m_, v);
-        if (centroid_deviation(q[0], q[1], q[2]) <= dev_tol_) continue;
+        const double d = centroid_deviation(q[0], q[1], q[2]);
+        if (d <= dev_tol_) continue;
         double best = -1;
-        int best_e = -1;
+        TriMesh::HalfedgeHandle best_h;
         for (auto h : m_.fh_range(f)) {
           const double l = (P(m_, m_.from_vertex_handle(h)) - P(m_, m_.to_vertex_handle(h))).norm();
-          if (l > best) best = l, best_e = m_.edge_handle(h).idx();
+          if (l > best) best = l, best_h = h;
         }
-        if (best > 1e-3 * lmax_) longest.push_back(best_e);
+        // As in unacceptable(): not across a fold, not the base of a sliver (apex > 150 deg).
+        const Vec apex = P(m_, m_.to_vertex_handle(m_.next_halfedge_handle(best_h)));
+        const Vec x = P(m_, m_.from_vertex_handle(best_h)) - apex, y = P(m_, m_.to_vertex_handle(best_h)) - apex;
+        if (std::atan2(x.cross(y).norm(), x.dot(y)) > 150 * M_PI / 180) continue;
+        if (best > 1e-3 * lmax_ && d <= 0.5 * best) longest.push_back(m_.edge_handle(best_h).idx());
       }
       if (longest.empty()) return;
       std::sort(longest.begin(), longest.end());
