@@ -163,6 +163,9 @@ class Wrapper {
     if (dev_tol_ > 0) refine_faces(value, tol);
     if (o_.coarsen) coarsen();
     flip_to_delaunay();
+    // The flips remove the slivers that deviation refinement had to skip; what they leave
+    // beyond the tolerance is refined again (a few rounds: each can create slivers anew).
+    for (int round = 0; round < 3 && dev_tol_ > 0 && refine_faces(value, tol); ++round) flip_to_delaunay();
   }
 
   // Edge flips towards the Delaunay triangulation (our addition, docs/softobj.md §3.3):
@@ -185,8 +188,8 @@ class Wrapper {
         };
         if (opp(pc, pa, pb) + opp(pd, pa, pb) <= M_PI + 1e-9) continue;
         if ((pc - pd).norm() > lmax_ || angle(N(m_, c), N(m_, d)) > alpha_) continue;
-        if (dev_tol_ > 0) {  // the new chord and both new triangles stay within the tolerance
-          const double t = 0.8 * dev_tol_;
+        if (dev_tol_ > 0) {  // the new chord and triangles within the tolerance, or no worse than before
+          const double t = std::max(0.8 * dev_tol_, std::max(centroid_deviation(pb, pa, pc), centroid_deviation(pa, pb, pd)));
           if (deviation(0.5 * (pc + pd)) > t || centroid_deviation(pa, pc, pd) > t ||
               centroid_deviation(pc, pb, pd) > t)
             continue;
@@ -269,7 +272,10 @@ class Wrapper {
   // centroid lies farther than the tolerance from the surface has its longest edge split
   // (Rivara's longest-edge bisection; the neighbour across that edge is split too, so the
   // mesh stays conforming), then the chords at the new vertices are checked as in refine.
-  void refine_faces(double value, double tol) {
+  // Returns whether anything was split.
+  bool refine_faces(double value, double tol) {
+    const std::size_t before = st_.splits;
+    refine(value, tol);
     for (int round = 0; round < 12; ++round) {
       std::vector<int> longest;
       for (auto f : m_.faces()) {
@@ -290,12 +296,13 @@ class Wrapper {
         if (std::atan2(x.cross(y).norm(), x.dot(y)) > 150 * M_PI / 180) continue;
         if (best > 1e-3 * lmax_ && d <= 0.5 * best) longest.push_back(m_.edge_handle(best_h).idx());
       }
-      if (longest.empty()) return;
+      if (longest.empty()) break;
       std::sort(longest.begin(), longest.end());
       longest.erase(std::unique(longest.begin(), longest.end()), longest.end());
       for (int ei : longest) split_edge(m_.edge_handle(ei), value, tol);
       refine(value, tol);
     }
+    return st_.splits != before;
   }
 
   // Split unacceptable chords, longest first (docs/softobj.md §3.3c).
