@@ -1,6 +1,7 @@
 #include "softobj/mesh_measures.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "softobj/shrinkwrap.hpp"
@@ -62,6 +63,25 @@ double max_centroid_deviation(const Field& field, const TriMesh& m, double iso) 
     Eigen::Vector3d r = c;
     project_to_iso(field, r, iso, 1e-12, 0);
     worst = std::max(worst, (r - c).norm());
+  }
+  return worst;
+}
+
+double max_sampled_deviation(const Field& field, const TriMesh& m, double iso, int order) {
+  double worst = 0;
+  for (auto f : m.faces()) {
+    std::array<Eigen::Vector3d, 3> q;
+    int k = 0;
+    for (auto v : m.fv_range(f)) q[k++] = P(m, v);
+    for (int i = 0; i <= order; ++i)
+      for (int j = 0; i + j <= order; ++j) {
+        const int l = order - i - j;
+        if (i == order || j == order || l == order) continue;  // the vertices lie on the surface
+        const Eigen::Vector3d c = (i * q[0] + j * q[1] + l * q[2]) / order;
+        Eigen::Vector3d r = c;
+        project_to_iso(field, r, iso, 1e-12, 0);
+        worst = std::max(worst, (r - c).norm());
+      }
   }
   return worst;
 }

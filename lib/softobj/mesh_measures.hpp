@@ -25,4 +25,11 @@ double max_iso_error(const Field& field, const TriMesh& mesh, double iso);
 // centroid along grad f): the deviation measure of the adaptivity comparison.
 double max_centroid_deviation(const Field& field, const TriMesh& mesh, double iso);
 
+// Largest distance to the iso-surface over a barycentric lattice of every triangle: the
+// points (i, j, k) / order, i + j + k = order, the vertices excluded (order 4: 12 points
+// per triangle, among them the centroid's neighbours and the edge midpoints). A denser
+// measure than the centroid alone, so that a polygoniser refined by its centroids and
+// edge midpoints is not judged on those points only (docs/softobj.md §6).
+double max_sampled_deviation(const Field& field, const TriMesh& mesh, double iso, int order = 4);
+
 }  // namespace fest::softobj

@@ -85,9 +85,11 @@ class Wrapper {
       // surfaces (radius ~ Q/V_k far out) it grows with them, so the triangle count stays
       // about constant while shrinking (our addition; docs/softobj.md §3).
       lmax_ = lmax_final * std::max(1.0, vstar / vk);
+      dev_tol_ = o_.max_deviation * std::max(1.0, vstar / vk);  // sizes scale alike
       pass(vk, o_.newton_tol);
     }
     lmax_ = lmax_final;
+    dev_tol_ = o_.max_deviation;
     pass(vstar, 1e-12);  // final pass at V* (docs/softobj.md §3.4)
     finish(vstar);
     return std::move(m_);
@@ -99,6 +101,18 @@ class Wrapper {
   ShrinkwrapStats& st_;
   TriMesh m_;
   double alpha_ = 0, lmax_ = 0;
+  double dev_tol_ = 0;  // current deviation tolerance (0 = off)
+  double value_ = 0;    // the iso value of the current pass
+
+  // Distance of p from the current iso-surface f = value_, by Newton projection (the
+  // measure of docs/softobj.md §6); infinite when the projection fails.
+  double deviation(const Vec& p) const {
+    Vec r = p;
+    if (!project_to_iso(field_, r, value_, 1e-9, 0.5 * lmax_)) return HUGE_VAL;
+    return (r - p).norm();
+  }
+  double chord_deviation(VH a, VH b) const { return deviation(0.5 * (P(m_, a) + P(m_, b))); }
+  double centroid_deviation(const Vec& a, const Vec& b, const Vec& c) const { return deviation((a + b + c) / 3); }
 
   void start_mesh(const Vec& centre, double v0) {
     std::vector<Vec> V;
@@ -142,11 +156,16 @@ class Wrapper {
   }
 
   void pass(double value, double tol) {
+    value_ = value;
     for (auto v : m_.vertices()) project(v, value, tol);
     if (o_.relax > 0) relax(value, tol);
     refine(value, tol);
+    if (dev_tol_ > 0) refine_faces(value, tol);
     if (o_.coarsen) coarsen();
     flip_to_delaunay();
+    // The flips remove the slivers that deviation refinement had to skip; what they leave
+    // beyond the tolerance is refined again (a few rounds: each can create slivers anew).
+    for (int round = 0; round < 3 && dev_tol_ > 0 && refine_faces(value, tol); ++round) flip_to_delaunay();
   }
 
   // Edge flips towards the Delaunay triangulation (our addition, docs/softobj.md §3.3):
@@ -169,6 +188,12 @@ class Wrapper {
         };
         if (opp(pc, pa, pb) + opp(pd, pa, pb) <= M_PI + 1e-9) continue;
         if ((pc - pd).norm() > lmax_ || angle(N(m_, c), N(m_, d)) > alpha_) continue;
+        if (dev_tol_ > 0) {  // the new chord and triangles within the tolerance, or no worse than before
+          const double t = std::max(0.8 * dev_tol_, std::max(centroid_deviation(pb, pa, pc), centroid_deviation(pa, pb, pd)));
+          if (deviation(0.5 * (pc + pd)) > t || centroid_deviation(pa, pc, pd) > t ||
+              centroid_deviation(pc, pb, pd) > t)
+            continue;
+        }
         // h0 runs b -> a in face (b, a, c), h1 runs a -> b in face (a, b, d): the quad is
         // a c b d, and the flipped triangles are (a, c, d) and (c, b, d).
         auto agrees = [](const Vec& p0, const Vec& p1, const Vec& p2, const Vec& n) {
@@ -207,7 +232,77 @@ class Wrapper {
     const VH a = m_.from_vertex_handle(h), b = m_.to_vertex_handle(h);
     *len = (P(m_, a) - P(m_, b)).norm();
     if (*len <= 1e-3 * lmax_) return false;  // no endless splitting across a fold: the fold check repairs it
-    return *len > lmax_ || angle(N(m_, a), N(m_, b)) > alpha_;
+    if (*len > lmax_ || angle(N(m_, a), N(m_, b)) > alpha_) return true;
+    if (!(dev_tol_ > 0)) return false;
+    // A circular arc's sagitta is at most half its chord: a midpoint farther off is not on
+    // a bend of this sheet but across a fold or gap of the membrane, where splitting would
+    // not converge; the chord rule and the fold check deal with those.
+    const double d = chord_deviation(a, b);
+    if (!(d > dev_tol_ && d <= 0.5 * *len)) return false;
+    // A sliver whose apex lies near the chord's arc: the split point would land on the
+    // apex (a zero-length chord, and the same again on the other side, endlessly). The
+    // Delaunay flip that follows refinement removes such a chord instead.
+    for (int side = 0; side < 2; ++side) {
+      const auto hs = m_.halfedge_handle(e, side);
+      if (m_.is_boundary(hs)) continue;
+      const Vec c = P(m_, m_.to_vertex_handle(m_.next_halfedge_handle(hs)));
+      const Vec x = P(m_, m_.from_vertex_handle(hs)) - c, y = P(m_, m_.to_vertex_handle(hs)) - c;
+      if (std::atan2(x.cross(y).norm(), x.dot(y)) > 150 * M_PI / 180) return false;
+    }
+    return true;
+  }
+
+  // Split edge e at its midpoint (both triangles 1 -> 2: conforming, no T-junctions) and
+  // Newton-project the new vertex onto the surface.
+  VH split_edge(TriMesh::EdgeHandle e, double value, double tol) {
+    if (m_.n_vertices() >= o_.max_vertices)
+      throw runtime_failure("more than {} vertices (the vertex limit; a surface that is not genus 0 also "
+                            "does this)",
+                            o_.max_vertices);
+    const auto h = m_.halfedge_handle(e, 0);
+    const Vec mid = 0.5 * (P(m_, m_.from_vertex_handle(h)) + P(m_, m_.to_vertex_handle(h)));
+    const VH nv = m_.add_vertex(TriMesh::Point(mid.x(), mid.y(), mid.z()));
+    m_.split(e, nv);
+    ++st_.splits;
+    project(nv, value, tol);
+    return nv;
+  }
+
+  // Deviation-driven triangle refinement (docs/softobj.md §3.3c'): a triangle whose
+  // centroid lies farther than the tolerance from the surface has its longest edge split
+  // (Rivara's longest-edge bisection; the neighbour across that edge is split too, so the
+  // mesh stays conforming), then the chords at the new vertices are checked as in refine.
+  // Returns whether anything was split.
+  bool refine_faces(double value, double tol) {
+    const std::size_t before = st_.splits;
+    refine(value, tol);
+    for (int round = 0; round < 12; ++round) {
+      std::vector<int> longest;
+      for (auto f : m_.faces()) {
+        std::array<Vec, 3> q;
+        int k = 0;
+        for (auto v : m_.fv_range(f)) q[k++] = P(m_, v);
+        const double d = centroid_deviation(q[0], q[1], q[2]);
+        if (d <= dev_tol_) continue;
+        double best = -1;
+        TriMesh::HalfedgeHandle best_h;
+        for (auto h : m_.fh_range(f)) {
+          const double l = (P(m_, m_.from_vertex_handle(h)) - P(m_, m_.to_vertex_handle(h))).norm();
+          if (l > best) best = l, best_h = h;
+        }
+        // As in unacceptable(): not across a fold, not the base of a sliver (apex > 150 deg).
+        const Vec apex = P(m_, m_.to_vertex_handle(m_.next_halfedge_handle(best_h)));
+        const Vec x = P(m_, m_.from_vertex_handle(best_h)) - apex, y = P(m_, m_.to_vertex_handle(best_h)) - apex;
+        if (std::atan2(x.cross(y).norm(), x.dot(y)) > 150 * M_PI / 180) continue;
+        if (best > 1e-3 * lmax_ && d <= 0.5 * best) longest.push_back(m_.edge_handle(best_h).idx());
+      }
+      if (longest.empty()) break;
+      std::sort(longest.begin(), longest.end());
+      longest.erase(std::unique(longest.begin(), longest.end()), longest.end());
+      for (int ei : longest) split_edge(m_.edge_handle(ei), value, tol);
+      refine(value, tol);
+    }
+    return st_.splits != before;
   }
 
   // Split unacceptable chords, longest first (docs/softobj.md §3.3c).
@@ -222,16 +317,7 @@ class Wrapper {
       q.pop();
       double len;
       if (!unacceptable(e, &len)) continue;
-      if (m_.n_vertices() >= o_.max_vertices)
-        throw runtime_failure("more than {} vertices (the vertex limit; a surface that is not genus 0 also "
-                              "does this)",
-                              o_.max_vertices);
-      const auto h = m_.halfedge_handle(e, 0);
-      const Vec mid = 0.5 * (P(m_, m_.from_vertex_handle(h)) + P(m_, m_.to_vertex_handle(h)));
-      const VH nv = m_.add_vertex(TriMesh::Point(mid.x(), mid.y(), mid.z()));
-      m_.split(e, nv);
-      ++st_.splits;
-      project(nv, value, tol);
+      const VH nv = split_edge(e, value, tol);
       for (auto ve : m_.ve_range(nv)) {  // only the edges at the new vertex are new
         double l;
         if (unacceptable(ve, &l)) q.push({l, ve.idx()});
@@ -277,6 +363,7 @@ class Wrapper {
     for (auto w : m_.vv_range(v0)) {
       if (w == v1) continue;
       if ((P(m_, w) - p1).norm() > 0.8 * lmax_ || angle(N(m_, w), n1) > 0.8 * alpha_) return false;
+      if (dev_tol_ > 0 && deviation(0.5 * (P(m_, w) + p1)) > 0.8 * dev_tol_) return false;
     }
     for (auto f : m_.vf_range(v0)) {
       std::array<Vec, 3> q;
@@ -292,6 +379,7 @@ class Wrapper {
       if (has_v1) continue;  // removed by the collapse
       const Vec g = (q[1] - q[0]).cross(q[2] - q[0]);
       if (g.norm() <= 0 || g.normalized().dot(nsum.normalized()) < 0.5) return false;
+      if (dev_tol_ > 0 && centroid_deviation(q[0], q[1], q[2]) > 0.8 * dev_tol_) return false;
       for (int i = 0; i < 3; ++i) {  // keep the smallest angle above 10 degrees
         const Vec a = q[(i + 1) % 3] - q[i], b = q[(i + 2) % 3] - q[i];
         if (std::atan2(a.cross(b).norm(), a.dot(b)) < 10 * M_PI / 180) return false;

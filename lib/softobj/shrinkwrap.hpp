@@ -23,6 +23,11 @@ struct ShrinkwrapOptions {
   bool coarsen = true;
   std::size_t max_vertices = 500000;
   double newton_tol = 1e-6;  // relative |f - V| / V at intermediate steps and of the result
+  // Deviation-driven refinement (docs/softobj.md §3.3c'): when > 0, a chord is also
+  // unacceptable when its midpoint lies farther than this from the surface, and a triangle
+  // whose centroid does is split at its longest edge; coarsening and flips keep every new
+  // chord and triangle within 0.8 of it. Absolute, in skeleton units; 0 = off.
+  double max_deviation = 0;
 };
 
 struct ShrinkwrapStats {

@@ -44,6 +44,22 @@ a=$(jq .area "$WORK/r.json")
 check "area $a = 2A + pi r P + 4 pi r^2" within "$a" "$(awk -v p=$PI 'BEGIN { print 800 + p * 5 * 80 + 4 * p * 25 }')" 0.007
 check "OFF with normals written" test "$(head -1 "$WORK/square.off")" = NOFF
 
+case_ "square slab, deviation-driven refinement (--max-deviation 0.04): centroids within 0.04; inscribed, so 0 < V* - V <= A * max deviation"
+run softobj polygonize --radius 5 --alpha 40 --lmax 15 --max-deviation 0.04 --report "$WORK/r.json" -o "$WORK/squared.ply" "$WORK/square.json"
+expect_status 0
+check "closed" test "$(jq .closed "$WORK/r.json")" = true
+check "Euler 2" test "$(jq .euler_characteristic "$WORK/r.json")" = 2
+check "on the surface" below "$(jq .max_abs_f_err_rel "$WORK/r.json")" 1e-6
+check "centroid deviation <= 0.04" below "$(jq .max_centroid_deviation "$WORK/r.json")" 0.0400001
+v=$(jq .volume "$WORK/r.json")
+d=$(jq .max_sampled_deviation "$WORK/r.json")
+check "volume $v within [V - A d, V] (d = $d)" awk -v v="$v" -v d="$d" -v p=$PI 'BEGIN {
+  V = 2 * 5 * 400 + p / 2 * 25 * 80 + 4 / 3 * p * 125; A = 800 + p * 5 * 80 + 4 * p * 25
+  exit !(v < V && v >= V - A * d) }'
+# An isotropic mesh meeting the sagitta bound r (1 - cos(theta/2)) <= d on the rim needs
+# chords <= 2 sqrt(2 r d) = 1.265, so more than A / (0.433 * 1.265^2) = 3420 triangles.
+check "anisotropic: fewer triangles than any isotropic mesh within 0.04 (3420)" below "$(jq .triangles "$WORK/r.json")" 3420
+
 case_ "marching-cubes baseline on the capsule: projected vertices, volume within 1 %"
 run softobj polygonize --method mc --grid 0.5 --radius 5 --report "$WORK/r.json" -o "$WORK/mc.ply" "$WORK/segment.json"
 expect_status 0

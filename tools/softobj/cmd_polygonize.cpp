@@ -57,6 +57,7 @@ int run_polygonize(const PolygonizeArgs& a) {
     o.iso = iso;
     o.alpha_deg = a.alpha_deg;
     o.lmax = lmax;
+    o.max_deviation = a.max_deviation;
     o.steps = a.steps;
     o.start_level = a.start_level;
     o.relax = a.relax;
@@ -85,6 +86,8 @@ int run_polygonize(const PolygonizeArgs& a) {
     r["collapses"] = stats.collapses;
     r["max_abs_f_err_rel"] = softobj::max_iso_error(field, mesh, iso);
     r["max_centroid_deviation"] = softobj::max_centroid_deviation(field, mesh, iso);
+    r["max_sampled_deviation"] = softobj::max_sampled_deviation(field, mesh, iso);
+    r["max_deviation_tolerance"] = a.max_deviation;
     r["min_angle_deg"] = m.min_angle_deg;
     r["max_edge"] = m.max_edge;
     r["max_normal_angle_deg"] = m.max_normal_angle_deg;

@@ -129,6 +129,7 @@ int run_tongue(const TongueArgs& a) {
     o.iso = 1 / a.radius;
     o.alpha_deg = a.alpha_deg;
     o.lmax = a.lmax;
+    o.max_deviation = a.max_deviation;
     o.steps = a.steps;
     try {
       meshes[i] = softobj::shrinkwrap(field, o);

@@ -13,6 +13,7 @@ struct PolygonizeArgs {
   double iso = 0, radius = 0;  // at most one; neither: the file's "iso", else radius 1
   double alpha_deg = 15;
   double lmax = 0;             // 0 = rho
+  double max_deviation = 0;    // deviation-driven refinement tolerance; 0 = off
   int steps = 16;
   int start_level = 1;
   double relax = 0.5;
@@ -37,6 +38,7 @@ struct TongueArgs {
   // --polygonize: every row -> pass 1 -> shrink-wrap -> pass 2 -> output % frame number
   bool polygonize = false;
   double alpha_deg = 15, lmax = 0;
+  double max_deviation = 0;          // deviation-driven refinement tolerance; 0 = off
   int steps = 16;
   int threads = 0;
 };

@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
   poly->add_option("--alpha", pa.alpha_deg, "Largest angle between a chord's end normals, degrees")
       ->check(CLI::Range(0.5, 90.0));
   poly->add_option("--lmax", pa.lmax, "Longest chord (default rho)")->check(CLI::PositiveNumber);
+  poly->add_option("--max-deviation", pa.max_deviation,
+                   "Also split chords/triangles whose midpoint/centroid is farther than this from the surface")
+      ->check(CLI::PositiveNumber);
   poly->add_option("--steps", pa.steps, "Iso steps K from V_0 to V*")->check(CLI::Range(1, 1000));
   poly->add_option("--start-level", pa.start_level, "Icosphere subdivision level of the start mesh")
       ->check(CLI::Range(0, 5));
@@ -56,6 +59,8 @@ int main(int argc, char** argv) {
   tongue->add_option("--alpha", ta.alpha_deg, "With --polygonize: largest chord normal angle, degrees")
       ->check(CLI::Range(0.5, 90.0));
   tongue->add_option("--lmax", ta.lmax, "With --polygonize: longest chord (default rho)")->check(CLI::PositiveNumber);
+  tongue->add_option("--max-deviation", ta.max_deviation, "With --polygonize: deviation tolerance of the refinement")
+      ->check(CLI::PositiveNumber);
   tongue->add_option("--steps", ta.steps, "With --polygonize: iso steps")->check(CLI::Range(1, 1000));
   fest::cli::add_threads(*tongue, ta.threads);
   tongue->add_option("--palate", ta.palate, "Palate JSON: keep the skeleton inside the virtual palate (pass 1)");
