@@ -155,49 +155,97 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
   return enc.finish();
 }
 
+namespace {
+
+[[noreturn]] void corrupt(const Subband& band, const Slab& slab) {
+  throw bad_input("corrupt or truncated coefficient stream (level {} band {}, planes {}-{})", band.level,
+                  band.orientation, slab.z0, slab.z1 - 1);
+}
+
+// The decoder's walk: the same order and the same contexts as walk() + encode_slab,
+// specialised for the band kind so the per-coefficient loop has no tests for it. The
+// left neighbours a = x-1 and d = (x-1, y-1) are carried in registers from the previous
+// coefficient; a corrupt exponent throws at once (the encoder never writes one).
+template <bool Approx, bool HasParent>
+void decode_band_slab(RangeDecoder& dec, Models& models, std::int64_t* data, const Dims& dims, const Subband& band,
+                      const Subband* parent, const Slab& slab, int limit) {
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  const std::size_t w = band.hi[0] - band.lo[0];
+  const std::size_t h = band.hi[1] - band.lo[1];
+  const std::vector<std::int64_t> zeros(w, 0);
+  std::vector<std::size_t> px(HasParent ? w : 0);
+  if (HasParent)
+    for (std::size_t k = 0; k < w; ++k) px[k] = std::min(parent->lo[0] + k / 2, parent->hi[0] - 1);
+  std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
+  for (std::size_t z = slab.z0; z < slab.z1; ++z)
+    for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
+      const std::size_t row0 = band.lo[0] + y * sy + z * sz;
+      std::int64_t* row = data + row0;
+      if (!Approx) {
+        const std::size_t r = (z - slab.z0) * h + (y - band.lo[1]);
+        const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
+        const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
+        if (dec.decode(models.zero_row[static_cast<std::size_t>(up_zero + 2 * back_zero)])) {
+          std::fill_n(row, w, 0);
+          zero_rows[r] = 1;
+          continue;
+        }
+      }
+      const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data();
+      const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data();
+      const std::int64_t* prow = nullptr;
+      if (HasParent) {
+        const std::size_t py = std::min(parent->lo[1] + (y - band.lo[1]) / 2, parent->hi[1] - 1);
+        const std::size_t pz = std::min(parent->lo[2] + (z - band.lo[2]) / 2, parent->hi[2] - 1);
+        prow = data + py * sy + pz * sz;
+      }
+      std::int64_t a = 0, d = 0;
+      for (std::size_t k = 0; k < w; ++k) {
+        const std::int64_t b = up[k];
+        const std::int64_t c = back[k];
+        const std::uint64_t activity = 2 * mag(a) + mag(b) + mag(c) + mag(d) / 2;
+        const int mc = magnitude_class(activity);
+        const int pc = HasParent ? parent_class(mag(prow[px[k]])) : 0;
+        std::int64_t v = 0;
+        if (dec.decode(models.zero[static_cast<std::size_t>(mc * kParentClasses + pc)])) {
+          auto& exponent = models.exponent[static_cast<std::size_t>(mc)];
+          int e = 0;
+          while (e < kMaxExponent && dec.decode(exponent[static_cast<std::size_t>(e)])) ++e;
+          if (e > limit) corrupt(band, slab);
+          std::uint64_t m = 1;
+          if (e >= 1) {
+            m = (m << 1) | static_cast<std::uint64_t>(dec.decode(models.second_bit[static_cast<std::size_t>(e)]));
+            for (int q = e - 2; q >= 0; --q) m = (m << 1) | static_cast<std::uint64_t>(dec.decode_direct());
+          }
+          const int sc = 3 * sign_of(a) + sign_of(b);
+          v = dec.decode(models.sign[static_cast<std::size_t>(sc)]) ? -static_cast<std::int64_t>(m)
+                                                                    : static_cast<std::int64_t>(m);
+        }
+        if (Approx) {
+          const std::size_t pos[3] = {band.lo[0] + k, y, z};
+          // The prediction is a neighbour already checked against the bound, so the
+          // sum stays far inside int64.
+          v += approx_prediction(a, b, c, d, pos, band, slab);
+          if (bit_width(static_cast<std::uint64_t>(v < 0 ? -v : v)) - 1 > limit) corrupt(band, slab);
+        }
+        row[k] = v;
+        a = v;
+        d = b;
+      }
+    }
+}
+
+}  // namespace
+
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                  const Subband* parent, const Slab& slab, int max_exponent) {
   RangeDecoder dec(bytes);
   auto models = std::make_unique<Models>();
-  const bool approx = band.orientation == 0;
   const int limit = std::min(max_exponent, kMaxExponent);
-  bool bad = false;
-  auto skip_row = [&](std::size_t row0, std::size_t w, int ctx) {
-    if (approx) return false;
-    const bool all_zero = bad || dec.decode(models->zero_row[static_cast<std::size_t>(ctx)]);
-    if (all_zero) std::fill_n(data + row0, w, 0);
-    return all_zero;
-  };
-  walk(data, dims, band, parent, slab, skip_row,
-       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c,
-           std::int64_t d) {
-         std::int64_t v = 0;
-         if (!bad && dec.decode(models->zero[mc * kParentClasses + pc])) {
-           int e = 0;
-           while (e < kMaxExponent && dec.decode(models->exponent[mc][e])) ++e;
-           if (e > limit) {
-             bad = true;
-           } else {
-             std::uint64_t mag = 1;
-             if (e >= 1) {
-               mag = (mag << 1) | static_cast<std::uint64_t>(dec.decode(models->second_bit[e]));
-               for (int k = e - 2; k >= 0; --k) mag = (mag << 1) | static_cast<std::uint64_t>(dec.decode_direct());
-             }
-             v = dec.decode(models->sign[sc]) ? -static_cast<std::int64_t>(mag) : static_cast<std::int64_t>(mag);
-           }
-         }
-         if (approx && !bad) {
-           const std::int64_t pred = approx_prediction(a, b, c, d, pos, band, slab);
-           // The prediction is a neighbour already checked against the bound, so the
-           // sum stays far inside int64.
-           v += pred;
-           if (bit_width(static_cast<std::uint64_t>(v < 0 ? -v : v)) - 1 > limit) bad = true;
-         }
-         data[i] = bad ? 0 : v;
-       });
-  if (bad || dec.overrun())
-    throw bad_input("corrupt or truncated coefficient stream (level {} band {}, planes {}-{})", band.level,
-                    band.orientation, slab.z0, slab.z1 - 1);
+  if (band.orientation == 0) decode_band_slab<true, false>(dec, *models, data, dims, band, parent, slab, limit);
+  else if (parent) decode_band_slab<false, true>(dec, *models, data, dims, band, parent, slab, limit);
+  else decode_band_slab<false, false>(dec, *models, data, dims, band, parent, slab, limit);
+  if (dec.overrun()) corrupt(band, slab);
 }
 
 }  // namespace fest::wavelet

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <string_view>
 
 #include "core/parallel_for.hpp"
@@ -127,15 +128,15 @@ void inverse_line(std::int64_t* x, std::size_t n, Wavelet w, std::int64_t* scrat
     }
     if (h > m) x[n - 1] = s[h - 1];
   } else {
-    for (std::size_t i = 0; i < h; ++i) {
-      const std::int64_t left = d[i > 0 ? i - 1 : 0];
-      const std::int64_t right = d[i < m ? i : m - 1];
-      x[2 * i] = s[i] - floor4(left + right + 2);
-    }
-    for (std::size_t i = 0; i < m; ++i) {
-      const std::int64_t right = (2 * i + 2 < n) ? x[2 * i + 2] : x[2 * i];
-      x[2 * i + 1] = d[i] + floor2(x[2 * i] + right);
-    }
+    // The symmetric extension (d[-1] -> d[0], d[m] -> d[m-1], x[n] -> x[n-2]) only
+    // touches the first and last samples: those are done apart, the interior loops
+    // have no branches.
+    x[0] = s[0] - floor4(d[0] + d[0] + 2);
+    for (std::size_t i = 1; i < m; ++i) x[2 * i] = s[i] - floor4(d[i - 1] + d[i] + 2);
+    if (h > m) x[2 * m] = s[m] - floor4(d[m - 1] + d[m - 1] + 2);
+    for (std::size_t i = 0; i + 1 < m; ++i) x[2 * i + 1] = d[i] + floor2(x[2 * i] + x[2 * i + 2]);
+    const std::size_t i = m - 1;
+    x[2 * i + 1] = d[i] + floor2(x[2 * i] + (2 * i + 2 < n ? x[2 * i + 2] : x[2 * i]));
   }
 }
 
@@ -229,6 +230,77 @@ void transform_axis(std::vector<T>& data, const Dims& dims, const Dims& c, int a
   });
 }
 
+// The inverse integer lifting of many lines at once, stored sample-major: row k of `src`
+// (w values, contiguous) holds sample k of every line, rows [0, h) the low half and
+// [h, n) the high half. Sample k of the result goes to dst + k * stride. The arithmetic
+// is inverse_line's, element by element, so the values are the same; but every step is
+// a branch-free loop over contiguous memory, and the boundary cases (the symmetric
+// extension) are settled per row, not per sample.
+void inverse_rows(const std::int64_t* src, std::size_t w, std::size_t n, Wavelet wav, std::int64_t* dst,
+                  std::size_t stride) {
+  const std::size_t h = (n + 1) / 2, m = n / 2;
+  auto s = [&](std::size_t i) { return src + i * w; };
+  auto d = [&](std::size_t i) { return src + (h + i) * w; };
+  auto out = [&](std::size_t k) { return dst + k * stride; };
+  if (wav == Wavelet::haar) {
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::int64_t* si = s(i);
+      const std::int64_t* di = d(i);
+      std::int64_t* e = out(2 * i);
+      std::int64_t* o = out(2 * i + 1);
+      for (std::size_t j = 0; j < w; ++j) {
+        const std::int64_t even = si[j] - floor2(di[j]);
+        e[j] = even;
+        o[j] = di[j] + even;
+      }
+    }
+    if (h > m) std::memcpy(out(n - 1), s(h - 1), w * sizeof(std::int64_t));
+    return;
+  }
+  // Even samples (undo the update), then odd samples (undo the prediction) from the
+  // even ones just written.
+  for (std::size_t i = 0; i < h; ++i) {
+    const std::int64_t* si = s(i);
+    const std::int64_t* left = d(i > 0 ? i - 1 : 0);
+    const std::int64_t* right = d(i < m ? i : m - 1);
+    std::int64_t* e = out(2 * i);
+    for (std::size_t j = 0; j < w; ++j) e[j] = si[j] - floor4(left[j] + right[j] + 2);
+  }
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::int64_t* di = d(i);
+    const std::int64_t* e = out(2 * i);
+    const std::int64_t* e2 = out(2 * i + 2 < n ? 2 * i + 2 : 2 * i);
+    std::int64_t* o = out(2 * i + 1);
+    for (std::size_t j = 0; j < w; ++j) o[j] = di[j] + floor2(e[j] + e2[j]);
+  }
+}
+
+// The inverse integer transform of one level along y or z: blocks of up to kRowBlock
+// neighbouring x (contiguous) are copied sample-major into a scratch buffer (whole
+// cache lines, one memcpy per sample) and transformed from there straight back.
+constexpr std::size_t kRowBlock = 256;
+
+void inverse_axis_rows(std::vector<std::int64_t>& data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
+                       int threads) {
+  const std::size_t n = c[axis];
+  if (n < 2) return;
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  const std::size_t stride = axis == 1 ? sy : sz;
+  const std::size_t outer = axis == 1 ? c[2] : c[1];
+  const std::size_t outer_stride = axis == 1 ? sz : sy;
+  parallel_for(outer, threads, [&](std::size_t o) {
+    // Left uninitialised (every element is written before it is read): zeroing it cost
+    // as much as the transform.
+    const std::unique_ptr<std::int64_t[]> rows(new std::int64_t[n * std::min(kRowBlock, c[0])]);
+    for (std::size_t x0 = 0; x0 < c[0]; x0 += kRowBlock) {
+      const std::size_t w = std::min(kRowBlock, c[0] - x0);
+      std::int64_t* base = &data[o * outer_stride + x0];
+      for (std::size_t k = 0; k < n; ++k) std::memcpy(&rows[k * w], base + k * stride, w * sizeof(std::int64_t));
+      inverse_rows(rows.get(), w, n, wav, base, stride);
+    }
+  });
+}
+
 }  // namespace
 
 void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads) {
@@ -243,7 +315,9 @@ void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
   auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { inverse_line(line, n, w, scratch); };
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 2; a >= 0; --a) transform_axis(data, dims, c, a, threads, op);
+    inverse_axis_rows(data, dims, c, 2, w, threads);
+    inverse_axis_rows(data, dims, c, 1, w, threads);
+    transform_axis(data, dims, c, 0, threads, op);
   }
 }
 

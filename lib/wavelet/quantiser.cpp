@@ -14,11 +14,21 @@ namespace {
 
 constexpr double kMaxKey = 1125899906842624.0;  // 2^50: keys and their sums stay exact
 
+// std::round (halves away from zero, the sign of a zero result kept) without the libm
+// call: below 2^52 the fraction v - trunc(v) is exact, above it every double is integral.
+inline double round_half_away(double v) noexcept {
+  if (!(std::fabs(v) < 4503599627370496.0)) return v;
+  double t = static_cast<double>(static_cast<std::int64_t>(v));
+  const double f = v - t;
+  if (f >= 0.5) t += 1.0;
+  else if (f <= -0.5) t -= 1.0;
+  return std::copysign(t, v);
+}
+
 template <typename T>
-double clamp_round(double v) noexcept {
+inline double clamp_round(double v) noexcept {
   if (std::isnan(v)) return 0.0;
-  // Decoded integer data is integral already: skip the (slow) libm rounding then.
-  const double r = (std::fabs(v) < 9e15 && v == static_cast<double>(static_cast<std::int64_t>(v))) ? v : std::round(v);
+  const double r = round_half_away(v);
   const double lo = static_cast<double>(std::numeric_limits<T>::lowest());
   const double hi = static_cast<double>(std::numeric_limits<T>::max());
   return std::clamp(r, lo, hi);
@@ -150,16 +160,41 @@ std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int
   return keys;
 }
 
+namespace {
+
+template <typename T>
+void dequantise_as(const std::int64_t* k, double* v, std::size_t count, const Quantiser& q) noexcept {
+  for (std::size_t i = 0; i < count; ++i) v[i] = clamp_round<T>(key_value(q, k[i]));
+}
+
+}  // namespace
+
 void dequantise(const std::vector<std::int64_t>& keys, const Quantiser& q, ScalarType type, std::vector<double>& values,
                 int threads) {
   values.resize(keys.size());
   const std::size_t block = 1 << 16;
   const std::size_t n = keys.size();
   parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
-    const std::size_t end = std::min(n, (b + 1) * block);
-    for (std::size_t i = b * block; i < end; ++i)
-      values[i] = q.kind == KeyKind::float32_bits ? static_cast<double>(key_float(keys[i]))
-                                                  : stored_as(key_value(q, keys[i]), type);
+    const std::size_t begin = b * block, end = std::min(n, (b + 1) * block);
+    const std::int64_t* k = keys.data() + begin;
+    double* v = values.data() + begin;
+    const std::size_t count = end - begin;
+    if (q.kind == KeyKind::float32_bits) {
+      for (std::size_t i = 0; i < count; ++i) v[i] = static_cast<double>(key_float(k[i]));
+      return;
+    }
+    // One loop per stored type, so the per-voxel work is a multiply, a rounding and a
+    // clamp (the same arithmetic as stored_as(key_value(...)), hence the same values).
+    switch (type) {
+      case ScalarType::u8: return dequantise_as<std::uint8_t>(k, v, count, q);
+      case ScalarType::i8: return dequantise_as<std::int8_t>(k, v, count, q);
+      case ScalarType::u16: return dequantise_as<std::uint16_t>(k, v, count, q);
+      case ScalarType::i16: return dequantise_as<std::int16_t>(k, v, count, q);
+      case ScalarType::u32: return dequantise_as<std::uint32_t>(k, v, count, q);
+      case ScalarType::i32: return dequantise_as<std::int32_t>(k, v, count, q);
+      default:
+        for (std::size_t i = 0; i < count; ++i) v[i] = stored_as(key_value(q, k[i]), type);
+    }
   });
 }
 

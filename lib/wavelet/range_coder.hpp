@@ -76,41 +76,35 @@ class RangeDecoder {
   explicit RangeDecoder(std::string_view bytes) : data_(bytes) {
     for (int i = 0; i < 5; ++i) code_ = (code_ << 8) | next();
   }
+  // Branch-free (conditional moves): whether a bit is 0 or 1 is what the coder cannot
+  // predict, so a branch on it is mispredicted as often as the data is surprising.
   __attribute__((always_inline)) int decode(BitModel& m) {
-    const std::uint32_t bound = (range_ >> 11) * m.p;
-    int bit;
-    if (code_ < bound) {
-      range_ = bound;
-      m.p = static_cast<std::uint16_t>(m.p + ((2048 - m.p) >> 5));
-      bit = 0;
-    } else {
-      code_ -= bound;
-      range_ -= bound;
-      m.p = static_cast<std::uint16_t>(m.p - (m.p >> 5));
-      bit = 1;
-    }
-    while (range_ < (1u << 24)) {
-      range_ <<= 8;
-      code_ = (code_ << 8) | next();
-    }
+    const std::uint32_t p = m.p;
+    const std::uint32_t bound = (range_ >> 11) * p;
+    const int bit = code_ >= bound;
+    const std::uint32_t one = 0u - static_cast<std::uint32_t>(bit);  // all ones for a 1 bit
+    code_ -= bound & one;
+    range_ = bit ? range_ - bound : bound;
+    m.p = static_cast<std::uint16_t>(bit ? p - (p >> 5) : p + ((2048 - p) >> 5));
+    normalise();
     return bit;
   }
   __attribute__((always_inline)) int decode_direct() {
     range_ >>= 1;
-    int bit = 0;
-    if (code_ >= range_) {
-      code_ -= range_;
-      bit = 1;
-    }
-    while (range_ < (1u << 24)) {
-      range_ <<= 8;
-      code_ = (code_ << 8) | next();
-    }
+    const int bit = code_ >= range_;
+    code_ -= range_ & (0u - static_cast<std::uint32_t>(bit));
+    normalise();
     return bit;
   }
   bool overrun() const noexcept { return overrun_; }
 
  private:
+  __attribute__((always_inline)) void normalise() {
+    while (range_ < (1u << 24)) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | next();
+    }
+  }
   std::uint32_t next() {
     if (pos_ < data_.size()) return static_cast<std::uint8_t>(data_[pos_++]);
     overrun_ = true;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "wavelet/range_coder.hpp"
+#include "wavelet/quantiser.hpp"
 #include "wavelet/vw_codec.hpp"
 
 using namespace fest;
@@ -247,6 +249,48 @@ TEST(WaveletCodec, SameBytesForAnyThreadCount) {
   const std::string a = encode_vw(v, o);
   o.threads = 4;
   EXPECT_EQ(a, encode_vw(v, o));
+}
+
+TEST(WaveletCodec, SameVolumeForAnyDecodeThreadCount) {
+  // Slabs and transform blocks are spread over threads; the voxels must not depend on
+  // how. Integer data (cdf53, 5/3 lossless) and an RMS-coded cdf97 float volume.
+  const Volume v = test_volume(ScalarType::i16, 37, 29, 41, 20.0);
+  const Volume f = test_volume(ScalarType::f32, 30, 21, 35);
+  EncodeOptions a, b, c;
+  a.bound = 3;
+  b.mode = Mode::lossless;
+  c.mode = Mode::rmse;
+  c.bound = 1.0;
+  c.wavelet = Wavelet::cdf97;
+  for (const std::string& bytes : {encode_vw(v, a), encode_vw(v, b), encode_vw(f, c)}) {
+    const std::vector<double> one = decode_vw(bytes, 1).volume.voxels;
+    for (int threads : {2, 3, 7}) {
+      const std::vector<double> many = decode_vw(bytes, threads).volume.voxels;
+      ASSERT_EQ(one.size(), many.size());
+      EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size() * sizeof(double))) << "threads " << threads;
+    }
+  }
+}
+
+TEST(WaveletCodec, StoredAsRoundsLikeStdRound) {
+  // The dequantiser rounds without libm; it must agree with std::round (halves away
+  // from zero, the sign of a zero kept) and clamp to the type.
+  const double values[] = {0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.3, -0.0, 0.0, 3.0000000000000004,
+                           32767.5, -32768.5, 40000.2, -1e300, 1e300, 4503599627370495.5, 9.1e15, -123.50000000001};
+  for (double v : values) {
+    const double want = std::clamp(std::round(v), -32768.0, 32767.0);
+    const double got = stored_as(v, ScalarType::i16);
+    EXPECT_EQ(0, std::memcmp(&want, &got, sizeof got)) << v << " -> " << got << " not " << want;
+    const double want8 = std::clamp(std::round(v), 0.0, 255.0);
+    const double got8 = stored_as(v, ScalarType::u8);
+    EXPECT_EQ(0, std::memcmp(&want8, &got8, sizeof got8)) << v;
+  }
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-40000.0, 40000.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double v = i % 2 ? u(rng) : std::floor(u(rng)) + 0.5;
+    ASSERT_EQ(std::clamp(std::round(v), -32768.0, 32767.0), stored_as(v, ScalarType::i16)) << v;
+  }
 }
 
 TEST(WaveletCodec, ResealedMutationsFailCleanly) {
