@@ -1,0 +1,158 @@
+#include "line_stream.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iterator>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "core/number_text.hpp"
+#include "core/parallel_for.hpp"
+#include "dataset_bridge.hpp"
+
+namespace fest::lemtrace_tool {
+
+void LineTotals::add(const Polyline& l) {
+  ++lines;
+  ++reasons[reason_name(l.reason)];
+  cells += l.cells;
+  points += static_cast<int64_t>(l.x.size());
+  evaluations += l.evaluations;
+  locator_calls += l.locator_calls;
+  for (std::size_t i = 1; i < l.type.size(); ++i) ++types[cell_type_name(static_cast<CellType>(l.type[i]))];
+}
+
+namespace {
+
+// The seed id as fmt's "{}" writes a double (the shortest text that round-trips, fixed
+// notation below 1e16): integers, the usual ids, directly; anything else through fmt.
+void append_seed_id(std::string& out, double id) {
+  if (id == std::floor(id) && std::abs(id) < 1e15 && !(id == 0 && std::signbit(id))) {
+    append_int(out, static_cast<int64_t>(id));
+    return;
+  }
+  fmt::format_to(std::back_inserter(out), "{}", id);
+}
+
+void check_finite(const Polyline& line, std::size_t index) {
+  for (std::size_t i = 0; i < line.x.size(); ++i)
+    if (!line.x[i].allFinite() || !std::isfinite(line.t[i]))
+      throw runtime_failure("line {} produced a non-finite point in cell {}", index, line.cell[i]);
+}
+
+}  // namespace
+
+std::string csv_rows(const FieldGrid& grid, const Polyline& line, double seed_id) {
+  std::string seed;
+  append_seed_id(seed, seed_id);
+  seed += ',';
+  std::string out;
+  out.reserve(line.x.size() * 150);
+  const auto& source_cell = grid.mesh().source_cell;
+  for (std::size_t i = 0; i < line.x.size(); ++i) {
+    const Vec3 v = velocity_at(grid, line.cell[i], line.x[i]);
+    out += seed;
+    append_int(out, static_cast<int64_t>(i));
+    for (int k = 0; k < 3; ++k) {
+      out += ',';
+      append_g17(out, line.x[i][k]);
+    }
+    out += ',';
+    append_g17(out, line.t[i]);
+    out += ',';
+    append_int(out, source_cell[static_cast<std::size_t>(line.cell[i])]);
+    out += ',';
+    append_int(out, static_cast<int>(line.type[i]));
+    out += ',';
+    append_g17(out, v.norm());
+    out += '\n';
+  }
+  return out;
+}
+
+std::string json_element(const Polyline& line, double seed_id) {
+  nlohmann::json pts = nlohmann::json::array();
+  for (std::size_t i = 0; i < line.x.size(); ++i) pts.push_back({line.x[i][0], line.x[i][1], line.x[i][2], line.t[i]});
+  const nlohmann::json element = {{"seed", seed_id},
+                                  {"reason", static_cast<int>(line.reason)},
+                                  {"reason_name", reason_name(line.reason)},
+                                  {"cells", line.cells},
+                                  {"points", pts}};
+  // Inside the top-level array of dump(1) every line of an element is indented by one
+  // more space than the element dumped alone.
+  const std::string alone = element.dump(1);
+  std::string out;
+  out.reserve(alone.size() + alone.size() / 8 + 1);
+  out += ' ';
+  for (char c : alone) {
+    out += c;
+    if (c == '\n') out += ' ';
+  }
+  return out;
+}
+
+LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const TraceOptions& options, int threads,
+                        TextFormat format, OutputFile& out, std::size_t chunk) {
+  const std::size_t n = seeds.x->size();
+  threads = std::max(1, threads);
+  if (chunk == 0) chunk = std::max<std::size_t>(128, 64 * static_cast<std::size_t>(threads));
+  grid.locator();
+  LineTotals totals;
+  std::string pending;  // small pieces (indices, separators), flushed with each line's text
+  if (format == TextFormat::csv) pending = "line,seed,i,x,y,z,t,cell,type,speed\n";
+  else pending = n == 0 ? "[]" : "[\n";
+  int64_t csv_index = 0;  // CSV numbers the lines that have points
+  std::vector<Polyline> lines;
+  std::vector<std::string> text;
+  for (std::size_t begin = 0; begin < n; begin += chunk) {
+    const std::size_t count = std::min(chunk, n - begin);
+    lines.assign(count, Polyline{});
+    text.assign(count, std::string{});
+    parallel_for(count, threads, [&](std::size_t j) {
+      const std::size_t s = begin + j;
+      lines[j] = trace(grid, (*seeds.x)[s], s < seeds.t0->size() ? (*seeds.t0)[s] : 0.0, options);
+      check_finite(lines[j], s);
+      text[j] = format == TextFormat::csv ? csv_rows(grid, lines[j], (*seeds.id)[s])
+                                          : json_element(lines[j], (*seeds.id)[s]);
+    });
+    for (std::size_t j = 0; j < count; ++j) {
+      totals.add(lines[j]);
+      const std::size_t points = lines[j].x.size();
+      lines[j] = Polyline{};
+      if (format == TextFormat::json) {
+        if (begin + j > 0) pending += ",\n";
+        out.write(pending);
+        pending.clear();
+        out.write(text[j]);
+      } else if (!text[j].empty()) {
+        // Each row gets the line's index in front.
+        std::string prefix;
+        append_int(prefix, csv_index++);
+        prefix += ',';
+        const std::string& rows = text[j];
+        std::string block;
+        block.reserve(pending.size() + rows.size() + prefix.size() * points);
+        block += pending;
+        pending.clear();
+        for (std::size_t p = 0; p < rows.size();) {
+          const void* nl = std::memchr(rows.data() + p, '\n', rows.size() - p);
+          const std::size_t e = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - rows.data()) + 1 : rows.size();
+          block += prefix;
+          block.append(rows, p, e - p);
+          p = e;
+        }
+        out.write(block);
+      }
+      std::string().swap(text[j]);
+    }
+  }
+  if (format == TextFormat::json && n > 0) pending += "\n]";
+  if (format == TextFormat::json) pending += '\n';
+  out.write(pending);
+  return totals;
+}
+
+}  // namespace fest::lemtrace_tool
