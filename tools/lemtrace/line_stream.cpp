@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <charconv>
 #include <cstring>
+#include <future>
+#include <string_view>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -107,6 +110,7 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
   int64_t csv_index = 0;  // CSV numbers the lines that have points
   std::vector<Polyline> lines;
   std::vector<std::string> text;
+  std::future<void> writing;
   for (std::size_t begin = 0; begin < n; begin += chunk) {
     const std::size_t count = std::min(chunk, n - begin);
     lines.assign(count, Polyline{});
@@ -118,37 +122,41 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
       text[j] = format == TextFormat::csv ? csv_rows(grid, lines[j], (*seeds.id)[s])
                                           : json_element(lines[j], (*seeds.id)[s]);
     });
+    // The chunk's text in seed order, handed to a writer thread so that the disk write
+    // overlaps the tracing of the next chunk (one write in flight, in order).
+    std::size_t bytes = pending.size();
+    for (std::size_t j = 0; j < count; ++j) bytes += text[j].size() + 2 + 12 * lines[j].x.size();
+    std::string block;
+    block.reserve(bytes);
+    block += pending;
+    pending.clear();
     for (std::size_t j = 0; j < count; ++j) {
       totals.add(lines[j]);
-      const std::size_t points = lines[j].x.size();
       lines[j] = Polyline{};
+      const std::string& rows = text[j];
       if (format == TextFormat::json) {
-        if (begin + j > 0) pending += ",\n";
-        out.write(pending);
-        pending.clear();
-        out.write(text[j]);
-      } else if (!text[j].empty()) {
+        if (begin + j > 0) block += ",\n";
+        block += rows;
+      } else if (!rows.empty()) {
         // Each row gets the line's index in front.
-        std::string prefix;
-        append_int(prefix, csv_index++);
-        prefix += ',';
-        const std::string& rows = text[j];
-        std::string block;
-        block.reserve(pending.size() + rows.size() + prefix.size() * points);
-        block += pending;
-        pending.clear();
+        char prefix[24];
+        const auto r = std::to_chars(prefix, prefix + sizeof prefix - 1, csv_index++);
+        *r.ptr = ',';
+        const std::string_view pre(prefix, static_cast<std::size_t>(r.ptr - prefix) + 1);
         for (std::size_t p = 0; p < rows.size();) {
           const void* nl = std::memchr(rows.data() + p, '\n', rows.size() - p);
           const std::size_t e = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - rows.data()) + 1 : rows.size();
-          block += prefix;
+          block += pre;
           block.append(rows, p, e - p);
           p = e;
         }
-        out.write(block);
       }
       std::string().swap(text[j]);
     }
+    if (writing.valid()) writing.get();
+    writing = std::async(std::launch::async, [&out, b = std::move(block)] { out.write(b); });
   }
+  if (writing.valid()) writing.get();
   if (format == TextFormat::json && n > 0) pending += "\n]";
   if (format == TextFormat::json) pending += '\n';
   out.write(pending);
