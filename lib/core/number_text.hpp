@@ -1,8 +1,8 @@
 #pragma once
-// Numbers appended to text with std::to_chars: no iostreams, no locale, no allocation
-// per number. append_g17 writes exactly what printf("%.17g") (and fmt's "{:.17g}")
-// writes, digits, trailing-zero removal and exponent form included, so text outputs can
-// move to it without changing a byte; 17 significant digits round-trip every double.
+// Numbers appended to text without iostreams, locale or allocation per number.
+// append_g17 writes exactly what printf("%.17g") (and fmt's "{:.17g}") writes, digits,
+// trailing-zero removal and exponent form included, so text outputs can move to it
+// without changing a byte; 17 significant digits round-trip every double.
 
 #include <charconv>
 #include <cstdint>
@@ -10,10 +10,12 @@
 
 namespace fest {
 
+// Writes x as "%.17g" at `out` (at least 32 bytes free); returns the end.
+char* write_g17(char* out, double x) noexcept;
+
 inline void append_g17(std::string& out, double x) {
   char buf[40];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 17);
-  out.append(buf, r.ptr);
+  out.append(buf, write_g17(buf, x));
 }
 
 inline void append_int(std::string& out, std::int64_t v) {

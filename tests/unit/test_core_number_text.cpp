@@ -57,6 +57,40 @@ TEST(NumberText, G17MatchesPrintfOnOrdinaryMagnitudes) {
   }
 }
 
+TEST(NumberText, G17MatchesPrintfAcrossTheFastRangeAndItsEdges) {
+  // Every decade from 1e-20 to 1e20 (the 128-bit path covers 1e-16..1e17), values next
+  // to powers of ten (where log10 misleads), and exact halfway cases at the 17th digit
+  // (doubles in [2^50, 2^51) are multiples of 1/4: .25 and .75 have 18 digits).
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(1.0, 10.0);
+  for (int d = -20; d <= 20; ++d) {
+    const double p10 = std::pow(10.0, d);
+    for (double x : {p10, std::nextafter(p10, 0.0), std::nextafter(p10, 1e300)}) {
+      ASSERT_EQ(g17(x), printf_g17(x)) << x;
+      ASSERT_EQ(g17(-x), printf_g17(-x)) << x;
+    }
+    for (int i = 0; i < 5000; ++i) {
+      const double x = u(rng) * p10;
+      ASSERT_EQ(g17(x), printf_g17(x)) << x;
+    }
+  }
+  for (double base : {1125899906842624.0, 1125899906842625.0, 2000000000000000.0, 2251799813685247.0})
+    for (double frac : {0.25, 0.5, 0.75}) ASSERT_EQ(g17(base + frac), printf_g17(base + frac)) << base + frac;
+  for (double x : {9.99999999999999999e-5, 0.0001, 99999999999999999.0, 1e17, 0.99999999999999994, 1.5e-16})
+    EXPECT_EQ(g17(x), printf_g17(x)) << x;
+}
+
+TEST(NumberText, G17MatchesPrintfOnRandomSignificandsInAndAroundTheFastRange) {
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 400000; ++i) {
+    const std::uint64_t exponent = 1023 - 60 + rng() % 120;  // 2^-60 .. 2^60
+    const std::uint64_t bits = (rng() & ((1ull << 52) - 1)) | (exponent << 52) | (rng() & 1ull) << 63;
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    ASSERT_EQ(g17(x), printf_g17(x)) << bits;
+  }
+}
+
 TEST(NumberText, IntegersAndAppending) {
   std::string s = "a";
   fest::append_int(s, 0);
