@@ -51,9 +51,11 @@ char* write_g17(char* out, double x) noexcept {
   std::memcpy(&bits, &x, sizeof bits);
   const std::uint64_t m = (bits & ((1ull << 52) - 1)) | (1ull << 52);
   const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1075;
-  // k = floor(log10 |x|) (the decimal exponent), from log10, which may be off by one
-  // next to a power of ten: the 17-digit integer n tells.
-  int k = static_cast<int>(std::floor(std::log10(ax)));
+  // k = floor(log10 |x|), the decimal exponent, first estimated from the binary one
+  // (floor(e2 log10 2) with 78913 / 2^18 ~ log10 2): the estimate is k or k - 1, and
+  // the 17-digit integer n tells which.
+  const int e2 = e + 52;
+  int k = e2 >= 0 ? (e2 * 78913) >> 18 : -((-e2 * 78913 + (1 << 18) - 1) >> 18);
   if (k > 15) k = 15;
   if (k < -15) k = -15;
   std::uint64_t n = scaled(m, e, 16 - k);
@@ -77,11 +79,19 @@ char* write_g17(char* out, double x) noexcept {
     n = kTen16;
     ++k;
   }
+  // The 17 digits, two at a time from a table of pairs.
+  static constexpr char kPairs[] =
+      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+      "8081828384858687888990919293949596979899";
   char digits[17];
-  for (int i = 16; i >= 0; --i) {
-    digits[i] = static_cast<char>('0' + n % 10);
-    n /= 10;
+  for (int i = 15; i >= 1; i -= 2) {
+    const std::uint64_t pair = n % 100;
+    n /= 100;
+    digits[i] = kPairs[2 * pair];
+    digits[i + 1] = kPairs[2 * pair + 1];
   }
+  digits[0] = static_cast<char>('0' + n);
   int nd = 17;
   while (nd > 1 && digits[nd - 1] == '0') --nd;  // %g removes trailing zeros
   char* p = out;

@@ -55,23 +55,28 @@ std::string csv_rows(const FieldGrid& grid, const Polyline& line, double seed_id
   std::string out;
   out.reserve(line.x.size() * 150);
   const auto& source_cell = grid.mesh().source_cell;
+  // One row at a time in a stack buffer (a row is at most ~190 bytes), appended once.
+  char row[320];
   for (std::size_t i = 0; i < line.x.size(); ++i) {
     const Vec3 v = velocity_at(grid, line.cell[i], line.x[i]);
-    out += seed;
-    append_int(out, static_cast<int64_t>(i));
+    char* p = row;
+    std::memcpy(p, seed.data(), seed.size());
+    p += seed.size();
+    p = std::to_chars(p, row + sizeof row, static_cast<int64_t>(i)).ptr;
     for (int k = 0; k < 3; ++k) {
-      out += ',';
-      append_g17(out, line.x[i][k]);
+      *p++ = ',';
+      p = write_g17(p, line.x[i][k]);
     }
-    out += ',';
-    append_g17(out, line.t[i]);
-    out += ',';
-    append_int(out, source_cell[static_cast<std::size_t>(line.cell[i])]);
-    out += ',';
-    append_int(out, static_cast<int>(line.type[i]));
-    out += ',';
-    append_g17(out, v.norm());
-    out += '\n';
+    *p++ = ',';
+    p = write_g17(p, line.t[i]);
+    *p++ = ',';
+    p = std::to_chars(p, row + sizeof row, source_cell[static_cast<std::size_t>(line.cell[i])]).ptr;
+    *p++ = ',';
+    p = std::to_chars(p, row + sizeof row, static_cast<int>(line.type[i])).ptr;
+    *p++ = ',';
+    p = write_g17(p, v.norm());
+    *p++ = '\n';
+    out.append(row, p);
   }
   return out;
 }
