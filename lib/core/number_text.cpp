@@ -37,6 +37,21 @@ std::uint64_t scaled(std::uint64_t m, int e, int p) {
   return static_cast<std::uint64_t>(q) + (up ? 1 : 0);
 }
 
+constexpr char kPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+void write4(char* d, std::uint32_t v) {
+  std::memcpy(d, kPairs + 2 * (v / 100), 2);
+  std::memcpy(d + 2, kPairs + 2 * (v % 100), 2);
+}
+
+void write8(char* d, std::uint32_t v) {
+  write4(d, v / 10000);
+  write4(d + 4, v % 10000);
+}
+
 }  // namespace
 
 char* write_g17(char* out, double x) noexcept {
@@ -79,19 +94,13 @@ char* write_g17(char* out, double x) noexcept {
     n = kTen16;
     ++k;
   }
-  // The 17 digits, two at a time from a table of pairs.
-  static constexpr char kPairs[] =
-      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-      "8081828384858687888990919293949596979899";
+  // The 17 digits: the leading one, then two groups of eight in 32-bit arithmetic, two
+  // digits at a time from a table of pairs.
   char digits[17];
-  for (int i = 15; i >= 1; i -= 2) {
-    const std::uint64_t pair = n % 100;
-    n /= 100;
-    digits[i] = kPairs[2 * pair];
-    digits[i + 1] = kPairs[2 * pair + 1];
-  }
-  digits[0] = static_cast<char>('0' + n);
+  digits[0] = static_cast<char>('0' + n / kTen16);
+  const std::uint64_t rest = n % kTen16;
+  write8(digits + 1, static_cast<std::uint32_t>(rest / 100000000u));
+  write8(digits + 9, static_cast<std::uint32_t>(rest % 100000000u));
   int nd = 17;
   while (nd > 1 && digits[nd - 1] == '0') --nd;  // %g removes trailing zeros
   char* p = out;
@@ -99,23 +108,32 @@ char* write_g17(char* out, double x) noexcept {
   if (k >= -4 && k < 17) {  // fixed notation
     if (k >= 0) {
       const int int_digits = k + 1;
-      for (int i = 0; i < int_digits; ++i) *p++ = i < nd ? digits[i] : '0';
-      if (nd > int_digits) {
+      if (nd <= int_digits) {
+        std::memcpy(p, digits, static_cast<std::size_t>(nd));
+        std::memset(p + nd, '0', static_cast<std::size_t>(int_digits - nd));
+        p += int_digits;
+      } else {
+        std::memcpy(p, digits, static_cast<std::size_t>(int_digits));
+        p += int_digits;
         *p++ = '.';
-        for (int i = int_digits; i < nd; ++i) *p++ = digits[i];
+        std::memcpy(p, digits + int_digits, static_cast<std::size_t>(nd - int_digits));
+        p += nd - int_digits;
       }
     } else {
       *p++ = '0';
       *p++ = '.';
-      for (int i = 0; i < -k - 1; ++i) *p++ = '0';
-      for (int i = 0; i < nd; ++i) *p++ = digits[i];
+      std::memset(p, '0', static_cast<std::size_t>(-k - 1));
+      p += -k - 1;
+      std::memcpy(p, digits, static_cast<std::size_t>(nd));
+      p += nd;
     }
     return p;
   }
   *p++ = digits[0];  // scientific: d.ddde+XX, at least two exponent digits
   if (nd > 1) {
     *p++ = '.';
-    for (int i = 1; i < nd; ++i) *p++ = digits[i];
+    std::memcpy(p, digits + 1, static_cast<std::size_t>(nd - 1));
+    p += nd - 1;
   }
   *p++ = 'e';
   *p++ = k < 0 ? '-' : '+';
