@@ -48,12 +48,13 @@ void check_finite(const Polyline& line, std::size_t index) {
 
 }  // namespace
 
-std::string csv_rows(const FieldGrid& grid, const Polyline& line, double seed_id) {
-  std::string seed;
+void csv_rows(std::string& out, const FieldGrid& grid, const Polyline& line, int64_t index, double seed_id) {
+  std::string seed;  // "line,seed," the same on every row
+  append_int(seed, index);
+  seed += ',';
   append_seed_id(seed, seed_id);
   seed += ',';
-  std::string out;
-  out.reserve(line.x.size() * 150);
+  out.reserve(out.size() + line.x.size() * 150);
   const auto& source_cell = grid.mesh().source_cell;
   // One row at a time in a stack buffer (a row is at most ~190 bytes), appended once.
   char row[320];
@@ -78,7 +79,6 @@ std::string csv_rows(const FieldGrid& grid, const Polyline& line, double seed_id
     *p++ = '\n';
     out.append(row, p);
   }
-  return out;
 }
 
 std::string json_element(const Polyline& line, double seed_id) {
@@ -114,52 +114,50 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
   else pending = n == 0 ? "[]" : "[\n";
   int64_t csv_index = 0;  // CSV numbers the lines that have points
   std::vector<Polyline> lines;
-  std::vector<std::string> text;
+  // Two sets of text buffers: one being written while the other is filled; each
+  // buffer keeps its capacity from chunk to chunk (no fresh pages for every line).
+  std::vector<std::string> text[2];
+  int filling = 0;
   std::future<void> writing;
+  std::vector<int64_t> index;
   for (std::size_t begin = 0; begin < n; begin += chunk) {
     const std::size_t count = std::min(chunk, n - begin);
     lines.assign(count, Polyline{});
-    text.assign(count, std::string{});
+    index.assign(count, -1);
+    std::vector<std::string>& tx = text[filling];
+    tx.resize(count);
+    // Trace in parallel; number the lines with points in seed order (the CSV's line
+    // column); format in parallel.
     parallel_for(count, threads, [&](std::size_t j) {
       const std::size_t s = begin + j;
       lines[j] = trace(grid, (*seeds.x)[s], s < seeds.t0->size() ? (*seeds.t0)[s] : 0.0, options);
       check_finite(lines[j], s);
-      text[j] = format == TextFormat::csv ? csv_rows(grid, lines[j], (*seeds.id)[s])
-                                          : json_element(lines[j], (*seeds.id)[s]);
     });
-    // The chunk's text in seed order, handed to a writer thread so that the disk write
-    // overlaps the tracing of the next chunk (one write in flight, in order).
-    std::size_t bytes = pending.size();
-    for (std::size_t j = 0; j < count; ++j) bytes += text[j].size() + 2 + 12 * lines[j].x.size();
-    std::string block;
-    block.reserve(bytes);
-    block += pending;
-    pending.clear();
     for (std::size_t j = 0; j < count; ++j) {
       totals.add(lines[j]);
-      lines[j] = Polyline{};
-      const std::string& rows = text[j];
-      if (format == TextFormat::json) {
-        if (begin + j > 0) block += ",\n";
-        block += rows;
-      } else if (!rows.empty()) {
-        // Each row gets the line's index in front.
-        char prefix[24];
-        const auto r = std::to_chars(prefix, prefix + sizeof prefix - 1, csv_index++);
-        *r.ptr = ',';
-        const std::string_view pre(prefix, static_cast<std::size_t>(r.ptr - prefix) + 1);
-        for (std::size_t p = 0; p < rows.size();) {
-          const void* nl = std::memchr(rows.data() + p, '\n', rows.size() - p);
-          const std::size_t e = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - rows.data()) + 1 : rows.size();
-          block += pre;
-          block.append(rows, p, e - p);
-          p = e;
-        }
-      }
-      std::string().swap(text[j]);
+      index[j] = lines[j].x.empty() ? -1 : csv_index++;
     }
+    parallel_for(count, threads, [&](std::size_t j) {
+      const std::size_t s = begin + j;
+      tx[j].clear();
+      if (format == TextFormat::json) {
+        if (s > 0) tx[j] = ",\n";
+        tx[j] += json_element(lines[j], (*seeds.id)[s]);
+      } else if (index[j] >= 0) {
+        csv_rows(tx[j], grid, lines[j], index[j], (*seeds.id)[s]);
+      }
+      lines[j] = Polyline{};
+    });
+    // The chunk's text goes to a writer thread, in seed order, so that the disk write
+    // overlaps the tracing of the next chunk (one write in flight).
     if (writing.valid()) writing.get();
-    writing = std::async(std::launch::async, [&out, b = std::move(block)] { out.write(b); });
+    writing = std::async(std::launch::async, [&out, &tx, count, head = std::move(pending)] {
+      if (!head.empty()) out.write(head);
+      for (std::size_t j = 0; j < count; ++j)
+        if (!tx[j].empty()) out.write(tx[j]);
+    });
+    pending.clear();
+    filling ^= 1;
   }
   if (writing.valid()) writing.get();
   if (format == TextFormat::json && n > 0) pending += "\n]";

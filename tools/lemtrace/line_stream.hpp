@@ -38,9 +38,10 @@ struct StreamSeeds {
 LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const TraceOptions& options, int threads,
                         TextFormat format, OutputFile& out, std::size_t chunk = 0);
 
-// One line's CSV rows without the leading line index (each row starts at "seed,"), and
-// one line as its element of the JSON array; exposed for the unit tests.
-std::string csv_rows(const FieldGrid& grid, const Polyline& line, double seed_id);
+// One line's CSV rows (`index` is its number among the lines with points), and one line
+// as its element of the JSON array.
+// csv_rows appends to `out` (a buffer reused from chunk to chunk).
+void csv_rows(std::string& out, const FieldGrid& grid, const Polyline& line, int64_t index, double seed_id);
 std::string json_element(const Polyline& line, double seed_id);
 
 }  // namespace fest::lemtrace_tool
