@@ -150,4 +150,44 @@ void write_output(const std::string& path, std::string_view bytes) {
   file.commit();
 }
 
+OutputFile::OutputFile(const std::string& path) : path_(path) {
+  if (is_stdio(path)) {
+    fd_ = STDOUT_FILENO;
+    where_ = "standard output";
+    return;
+  }
+  where_ = path;
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd_ < 0) throw io_error("cannot open: {} ({})", errno_text(), path);
+    owns_fd_ = true;
+    return;
+  }
+  atomic_ = std::make_unique<AtomicFile>(path);
+  fd_ = ::open(atomic_->temp_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd_ < 0) throw io_error("cannot open: {} ({})", errno_text(), path);
+  owns_fd_ = true;
+}
+
+OutputFile::~OutputFile() {
+  if (owns_fd_ && fd_ >= 0) ::close(fd_);
+  // atomic_'s destructor removes the temporary file when commit() was not reached.
+}
+
+void OutputFile::write(std::string_view bytes) {
+  if (fd_ < 0) throw io_error("cannot write after commit ({})", where_);
+  write_all(fd_, bytes, where_);
+}
+
+void OutputFile::commit() {
+  if (owns_fd_ && fd_ >= 0) {
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) throw io_error("cannot write: {} ({})", errno_text(), path_);
+  }
+  fd_ = -1;
+  if (atomic_) atomic_->commit();
+}
+
 }  // namespace fest

@@ -5,6 +5,7 @@
 // A path of "-" or "" means standard input / standard output.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -41,6 +42,29 @@ class AtomicFile {
   std::string path_;
   std::string temp_;
   bool committed_ = false;
+};
+
+// An output written in pieces (a tool streaming results as they are finished) with the
+// guarantees of write_output: to a temporary file next to `path`, renamed into place by
+// commit(); removed, leaving any earlier file untouched, when destroyed uncommitted (an
+// error part-way). Standard output and devices are written as the pieces come. Throws
+// Status::io.
+class OutputFile {
+ public:
+  explicit OutputFile(const std::string& path);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  void write(std::string_view bytes);
+  void commit();
+
+ private:
+  std::string path_;
+  std::string where_;
+  int fd_ = -1;
+  bool owns_fd_ = false;
+  std::unique_ptr<AtomicFile> atomic_;
 };
 
 }  // namespace fest

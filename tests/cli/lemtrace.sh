@@ -198,6 +198,24 @@ run lemtrace "$WORK/helix.vtu" "$WORK/empty.csv"
 expect_status 0
 check "header only" test "$(cat "$out")" = "line,seed,i,x,y,z,t,cell,type,speed"
 
+case_ "streamed output: the same bytes for any thread count (CSV and JSON), atomic -o"
+for to in csv json; do
+  "$FEST_BIN/lemtrace" "$WORK/h6.vtu" --seed-line 0.1,0,-0.9:0.9,0.1,-0.8:300 --seed-point 5,5,5 --to $to --threads 1 >"$WORK/t1.$to"
+  for th in 2 3 4; do
+    run lemtrace "$WORK/h6.vtu" --seed-line 0.1,0,-0.9:0.9,0.1,-0.8:300 --seed-point 5,5,5 --to $to --threads $th \
+      -o "$WORK/t$th.$to"
+    expect_status 0
+    check "$to, $th threads = 1 thread" cmp -s "$WORK/t1.$to" "$WORK/t$th.$to"
+  done
+done
+check "JSON parses, 301 lines" test "$(jq length "$WORK/t1.json")" -eq 301
+printf 'x,y,z\n0.1,0.1,0.1\n0.2,abc,0.1\n' >"$WORK/badseeds.csv"
+echo old >"$WORK/keep.csv"
+run lemtrace "$WORK/h6.vtu" "$WORK/badseeds.csv" -o "$WORK/keep.csv"
+expect_clean_failure 3 lemtrace
+check "bad input leaves the old file and no temporary" test "$(cat "$WORK/keep.csv")" = old
+check "no temporary" test -z "$(ls "$WORK" | grep 'keep.csv.tmp')"
+
 # ---- bad input -------------------------------------------------------------------------
 tet_grid() {  # $1 = point data section
   cat <<VTK

@@ -23,6 +23,7 @@
 #include "lemtrace/probes.hpp"
 #include "formats/table/table_io.hpp"
 #include "dataset_bridge.hpp"
+#include "line_stream.hpp"
 
 namespace fest::lemtrace_tool {
 namespace {
@@ -190,39 +191,6 @@ TraceOptions trace_options(const TraceArgs& a) {
   return o;
 }
 
-std::string write_csv(const FieldGrid& grid, const std::vector<Polyline>& lines, const Seeds& seeds) {
-  std::string out = "line,seed,i,x,y,z,t,cell,type,speed\n";
-  std::size_t index = 0;
-  for (std::size_t l = 0; l < lines.size(); ++l) {
-    const Polyline& line = lines[l];
-    if (line.x.empty()) continue;
-    for (std::size_t i = 0; i < line.x.size(); ++i) {
-      const Vec3 v = velocity_at(grid, line.cell[i], line.x[i]);
-      fmt::format_to(std::back_inserter(out), "{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{},{},{:.17g}\n", index,
-                     seeds.id[l], i, line.x[i][0], line.x[i][1], line.x[i][2], line.t[i],
-                     grid.mesh().source_cell[static_cast<std::size_t>(line.cell[i])], static_cast<int>(line.type[i]),
-                     v.norm());
-    }
-    ++index;
-  }
-  return out;
-}
-
-std::string write_json_lines(const std::vector<Polyline>& lines, const Seeds& seeds) {
-  nlohmann::json doc = nlohmann::json::array();
-  for (std::size_t l = 0; l < lines.size(); ++l) {
-    nlohmann::json pts = nlohmann::json::array();
-    for (std::size_t i = 0; i < lines[l].x.size(); ++i)
-      pts.push_back({lines[l].x[i][0], lines[l].x[i][1], lines[l].x[i][2], lines[l].t[i]});
-    doc.push_back({{"seed", seeds.id[l]},
-                   {"reason", static_cast<int>(lines[l].reason)},
-                   {"reason_name", reason_name(lines[l].reason)},
-                   {"cells", lines[l].cells},
-                   {"points", pts}});
-  }
-  return doc.dump(1) + "\n";
-}
-
 void check_numbers(const std::vector<Polyline>& lines) {
   for (std::size_t l = 0; l < lines.size(); ++l)
     for (std::size_t i = 0; i < lines[l].x.size(); ++i)
@@ -254,33 +222,25 @@ int run_trace(const TraceArgs& a) {
   auto t0 = Clock::now();
   grid.locator();
   const double locator_s = seconds_since(t0);
+  // CSV and JSON stream: each chunk of lines is written as it is finished, in seed order
+  // (line_stream.hpp). VTK outputs go through a dataset, built from all the lines.
+  OutputFile out(a.output);
+  LineTotals totals;
   t0 = Clock::now();
-  const std::vector<Polyline> lines = trace_all(grid, seeds.x, seeds.t0, o, threads);
-  const double trace_s = seconds_since(t0);
-  check_numbers(lines);
-
-  std::string bytes;
-  if (to == "csv") {
-    bytes = write_csv(grid, lines, seeds);
-  } else if (to == "json") {
-    bytes = write_json_lines(lines, seeds);
+  if (to == "csv" || to == "json") {
+    totals = stream_lines(grid, StreamSeeds{&seeds.x, &seeds.t0, &seeds.id}, o, threads,
+                          to == "csv" ? TextFormat::csv : TextFormat::json, out);
   } else {
+    const std::vector<Polyline> lines = trace_all(grid, seeds.x, seeds.t0, o, threads);
+    check_numbers(lines);
+    for (const Polyline& l : lines) totals.add(l);
     LineSet set{&lines, &seeds.id, a.command_line};
     const Dataset poly = polylines_to_dataset(grid, set);
-    bytes = formats::write_dataset(poly, to == "vtp" ? formats::Format::vtp : formats::Format::vtk);
+    out.write(formats::write_dataset(poly, to == "vtp" ? formats::Format::vtp : formats::Format::vtk));
   }
+  const double trace_s = seconds_since(t0);
 
   if (!a.report.empty()) {
-    std::map<std::string, int64_t> reasons, types;
-    int64_t cells = 0, points = 0, evals = 0, locator_calls = 0;
-    for (const Polyline& l : lines) {
-      ++reasons[reason_name(l.reason)];
-      cells += l.cells;
-      points += static_cast<int64_t>(l.x.size());
-      evals += l.evaluations;
-      locator_calls += l.locator_calls;
-      for (std::size_t i = 1; i < l.type.size(); ++i) ++types[cell_type_name(static_cast<CellType>(l.type[i]))];
-    }
     nlohmann::json report = {
         {"seeds", seeds.x.size()},
         {"method", a.method},
@@ -291,20 +251,20 @@ int run_trace(const TraceArgs& a) {
         {"flipped_cells", loaded.report.flipped},
         {"boundary_faces", loaded.report.boundary_faces},
         {"vectors", loaded.source.vector_name},
-        {"reasons", reasons},
-        {"segment_cell_types", types},
-        {"cells_crossed", cells},
-        {"output_points", points},
-        {a.method == "lem" ? "closed_form_evaluations" : "field_evaluations", evals},
-        {"locator_calls", locator_calls},
+        {"reasons", totals.reasons},
+        {"segment_cell_types", totals.types},
+        {"cells_crossed", totals.cells},
+        {"output_points", totals.points},
+        {a.method == "lem" ? "closed_form_evaluations" : "field_evaluations", totals.evaluations},
+        {"locator_calls", totals.locator_calls},
         {"records_computed", grid.records_computed()},
         {"timings_s", {{"read", loaded.read_s}, {"build", loaded.build_s}, {"precompute", loaded.precompute_s},
-                       {"locator", locator_s}, {"trace", trace_s}}},
+                       {"locator", locator_s}, {"trace_and_write", trace_s}}},
         {"memory_mb", {{"grid_estimate", static_cast<double>(grid.bytes()) / 1048576.0}, {"peak_rss", peak_memory_mb()}}},
         {"threads", threads}};
     write_output(a.report, report.dump(2) + "\n");
   }
-  write_output(a.output, bytes);
+  out.commit();
   return 0;
 }
 
