@@ -15,6 +15,11 @@ template <class Real>
 struct CollideParams {
   Real omega_p = 1, omega_m = 1;  // omega+ (sets nu) and omega- (TRT; = omega+ for BGK)
   Real force[3] = {0, 0, 0};      // body force density
+  // 1: the density multiplies the momentum terms of the equilibrium and u = j/rho (the
+  // standard, weakly compressible model); 0: the reference density rho0 = 1 does and
+  // u = j/rho0 (He & Luo 1997, docs/lbmsim.md 2.2). Multiplying by 1 is exact, so the
+  // standard model's bytes do not depend on this factor.
+  Real compressible = 1;
 };
 
 // Density deviation rho - 1 and velocity of shifted populations g (u includes F/2 when
@@ -34,7 +39,7 @@ inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho
     jy += Real(0.5) * p.force[1];
     jz += Real(0.5) * p.force[2];
   }
-  const Real inv = Real(1) / (Real(1) + r);
+  const Real inv = Real(1) / (Real(1) + p.compressible * r);
   drho = r;
   u[0] = jx * inv;
   u[1] = jy * inv;
@@ -42,14 +47,15 @@ inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho
 }
 
 // Shifted equilibrium f_i^eq - w_i, with f_i^eq = w_i rho [1 + 3 c.u + 9/2 (c.u)^2 - 3/2 u^2]
-// and rho = 1 + drho.
+// and rho = 1 + drho; with compressible = 0 the incompressible form of He & Luo (1997),
+// f_i^eq = w_i [rho + rho0 (3 c.u + 9/2 (c.u)^2 - 3/2 u^2)], rho0 = 1.
 template <class L, class Real>
-inline Real equilibrium(int i, Real drho, const Real u[3]) {
+inline Real equilibrium(int i, Real drho, const Real u[3], Real compressible = 1) {
   const Real cu = static_cast<Real>(L::c[i][0]) * u[0] + static_cast<Real>(L::c[i][1]) * u[1] +
                   static_cast<Real>(L::c[i][2]) * u[2];
   const Real usq = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
   return static_cast<Real>(L::w[i]) *
-         (drho + (Real(1) + drho) * (Real(3) * cu + Real(4.5) * cu * cu - Real(1.5) * usq));
+         (drho + (Real(1) + compressible * drho) * (Real(3) * cu + Real(4.5) * cu * cu - Real(1.5) * usq));
 }
 
 // Collides f (pre-collision, Q values) into out.
@@ -57,7 +63,7 @@ template <class L, class Real, bool TRT, bool FORCE>
 inline void collide(const Real* f, Real* out, const CollideParams<Real>& p) {
   Real drho, u[3];
   node_moments<L, Real, FORCE>(f, p, drho, u);
-  const Real rho = Real(1) + drho;
+  const Real rho = Real(1) + p.compressible * drho;  // the density of the momentum terms
   const Real usq15 = Real(1.5) * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
   Real uF = 0;
   if constexpr (FORCE) uF = u[0] * p.force[0] + u[1] * p.force[1] + u[2] * p.force[2];

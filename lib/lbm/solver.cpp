@@ -73,6 +73,7 @@ class SolverT final : public Solver {
     par_.omega_p = static_cast<Real>(rates[0]);
     par_.omega_m = static_cast<Real>(rates[1]);
     for (int a = 0; a < 3; ++a) par_.force[a] = static_cast<Real>(c_.force[a]);
+    par_.compressible = c_.collision.incompressible ? Real(0) : Real(1);
     force_on_ = c_.force[0] != 0 || c_.force[1] != 0 || c_.force[2] != 0;
     trt_ = c_.collision.model == CollisionModel::trt;
     build(*s.flags);
@@ -168,7 +169,8 @@ class SolverT final : public Solver {
       double extra = 0;
       if (b.coef >= 0) {
         double rho = 1;
-        for (int i = 0; i < Q; ++i) rho += A[i * N_ + b.n];
+        if (!c_.collision.incompressible)
+          for (int i = 0; i < Q; ++i) rho += A[i * N_ + b.n];
         extra = coefs_[b.coef + l.i] * rho;
       }
       // Momentum given to the solid: c_o (f_o* + f_i(t+1)), with c_o = -c_i and f = g + w.
@@ -210,8 +212,8 @@ class SolverT final : public Solver {
       return;
     }
     const BoundaryNode& b = bnodes_[rec];
-    Real rho = 1;
-    if (b.coef >= 0)
+    Real rho = 1;  // the density of Ladd's term (rho0 = 1 in the incompressible model)
+    if (b.coef >= 0 && !c_.collision.incompressible)
       for (int i = 0; i < Q; ++i) rho += A[i * N_ + n];
     for (int i = 0; i < Q; ++i) {
       if (b.bounce & (1u << i)) {
@@ -325,15 +327,15 @@ class SolverT final : public Solver {
           rho_n += fn[i];
           for (int a = 0; a < 3; ++a) j[a] += L::c[i][a] * static_cast<double>(fn[i]);
         }
-        for (int a = 0; a < 3; ++a) un[a] = j[a] / rho_n;
+        for (int a = 0; a < 3; ++a) un[a] = j[a] / (c_.collision.incompressible ? 1.0 : rho_n);
       }
       const double rho_b = e.inlet ? rho_n : e.rho;
       const double* ub = e.inlet ? e.u : un;
       Real urb[3] = {static_cast<Real>(ub[0]), static_cast<Real>(ub[1]), static_cast<Real>(ub[2])};
       Real urn[3] = {static_cast<Real>(un[0]), static_cast<Real>(un[1]), static_cast<Real>(un[2])};
       for (int i = 0; i < Q; ++i) {
-        Real v = equilibrium<L, Real>(i, static_cast<Real>(rho_b - 1), urb);
-        if (e.has_neighbour) v += fn[i] - equilibrium<L, Real>(i, static_cast<Real>(rho_n - 1), urn);
+        Real v = equilibrium<L, Real>(i, static_cast<Real>(rho_b - 1), urb, par_.compressible);
+        if (e.has_neighbour) v += fn[i] - equilibrium<L, Real>(i, static_cast<Real>(rho_n - 1), urn, par_.compressible);
         B[i * N_ + e.b] = v;
       }
     }
@@ -474,10 +476,11 @@ class SolverT final : public Solver {
           // Stored populations are post-collision: collide the equilibrium whose Guo
           // velocity (u_pre + F/(2 rho)) is the wanted u.
           Real ur[3];
-          for (int a = 0; a < 3; ++a) ur[a] = static_cast<Real>(u[a] - (force_on_ ? 0.5 * c_.force[a] / rho : 0.0));
+          const double rho_m = c_.collision.incompressible ? 1.0 : rho;
+          for (int a = 0; a < 3; ++a) ur[a] = static_cast<Real>(u[a] - (force_on_ ? 0.5 * c_.force[a] / rho_m : 0.0));
           const std::size_t n = index(x, y, z);
           Real f[Q], o[Q];
-          for (int i = 0; i < Q; ++i) f[i] = equilibrium<L, Real>(i, static_cast<Real>(rho - 1), ur);
+          for (int i = 0; i < Q; ++i) f[i] = equilibrium<L, Real>(i, static_cast<Real>(rho - 1), ur, par_.compressible);
           if (force_on_) {
             if (trt_) collide<L, Real, true, true>(f, o, par_);
             else collide<L, Real, false, true>(f, o, par_);
