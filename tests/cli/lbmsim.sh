@@ -20,6 +20,13 @@ check "probe rows" test "$(grep -c '^6000,' "$WORK/p.csv")" -eq 8
 check "parabola" awk -F, 'NR > 1 && $1 == 6000 { y = $5; e = 1e-6 / (2 * 0.1) * y * (8 - y);
     d = ($8 - e) / e; if (d < 0) d = -d; if (d > 1e-9) bad = 1 } END { exit bad }' "$WORK/p.csv"
 
+case_ "Poiseuille with the incompressible equilibrium: the same closed-form parabola to 1e-9"
+sed 's/"tau": 0.8 }/"tau": 0.8, "equilibrium": "incompressible" }/' "$WORK/poiseuille.json" >"$WORK/poiseuille_inc.json"
+run lbmsim run "$WORK/poiseuille_inc.json" -o "$WORK/p.vti" --probes "$WORK/pi.csv" --threads 1
+expect_status 0
+check "parabola" awk -F, 'NR > 1 && $1 == 6000 { y = $5; e = 1e-6 / (2 * 0.1) * y * (8 - y);
+    d = ($8 - e) / e; if (d < 0) d = -d; if (d > 1e-9) bad = 1; n++ } END { exit bad || n != 8 }' "$WORK/pi.csv"
+
 cat >"$WORK/cav.json" <<'JSON'
 { "size": [32, 32], "re": 100, "u_ref": 0.1,
   "faces": { "x-": "wall", "x+": "wall", "y-": "wall", "y+": { "moving": { "u": [0.1, 0] } } },
@@ -162,6 +169,21 @@ echo '{ "size": [8, 8], "collision": { "tau": 0.6 }, "faces": { "x-": { "velocit
 run lbmsim run "$WORK/bad.json"
 expect_clean_failure 3 lbmsim
 expect_stderr_has 'periodic face needs a periodic opposite face'
+case_ "bad input: curved_walls neither halfway nor bouzidi"
+echo '{ "size": [8, 8], "collision": { "tau": 0.6 }, "curved_walls": "bouzidy", "steps": 1 }' >"$WORK/bad.json"
+run lbmsim run "$WORK/bad.json"
+expect_clean_failure 3 lbmsim
+expect_stderr_has 'case key "curved_walls" must be halfway or bouzidi'
+case_ "bad input: collision.equilibrium misspelt"
+echo '{ "size": [8, 8], "collision": { "tau": 0.6, "equilibrium": "incompresible" }, "steps": 1 }' >"$WORK/bad.json"
+run lbmsim run "$WORK/bad.json"
+expect_clean_failure 3 lbmsim
+expect_stderr_has 'collision.equilibrium" = "incompresible" must be compressible or incompressible'
+case_ "bad input: collision.equilibrium not a string"
+echo '{ "size": [8, 8], "collision": { "tau": 0.6, "equilibrium": 0 }, "steps": 1 }' >"$WORK/bad.json"
+run lbmsim run "$WORK/bad.json"
+expect_clean_failure 3 lbmsim
+expect_stderr_has 'collision.equilibrium'
 case_ "bad input: unknown field"
 run lbmsim run "$WORK/cav.json" --fields velocty -o "$WORK/x%d.vti"
 expect_clean_failure 3 lbmsim
