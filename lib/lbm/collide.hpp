@@ -15,16 +15,11 @@ template <class Real>
 struct CollideParams {
   Real omega_p = 1, omega_m = 1;  // omega+ (sets nu) and omega- (TRT; = omega+ for BGK)
   Real force[3] = {0, 0, 0};      // body force density
-  // 1: the density multiplies the momentum terms of the equilibrium and u = j/rho (the
-  // standard, weakly compressible model); 0: the reference density rho0 = 1 does and
-  // u = j/rho0 (He & Luo 1997, docs/lbmsim.md 2.2). Multiplying by 1 is exact, so the
-  // standard model's bytes do not depend on this factor.
-  Real compressible = 1;
 };
 
 // Density deviation rho - 1 and velocity of shifted populations g (u includes F/2 when
-// FORCE).
-template <class L, class Real, bool FORCE>
+// FORCE). INC: the incompressible model of He & Luo (1997), u = j/rho0 with rho0 = 1.
+template <class L, class Real, bool FORCE, bool INC = false>
 inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho, Real u[3]) {
   Real r = 0, jx = 0, jy = 0, jz = 0;
 #pragma GCC unroll 32
@@ -39,7 +34,7 @@ inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho
     jy += Real(0.5) * p.force[1];
     jz += Real(0.5) * p.force[2];
   }
-  const Real inv = Real(1) / (Real(1) + p.compressible * r);
+  const Real inv = INC ? Real(1) : Real(1) / (Real(1) + r);
   drho = r;
   u[0] = jx * inv;
   u[1] = jy * inv;
@@ -58,12 +53,13 @@ inline Real equilibrium(int i, Real drho, const Real u[3], Real compressible = 1
          (drho + (Real(1) + compressible * drho) * (Real(3) * cu + Real(4.5) * cu * cu - Real(1.5) * usq));
 }
 
-// Collides f (pre-collision, Q values) into out.
-template <class L, class Real, bool TRT, bool FORCE>
+// Collides f (pre-collision, Q values) into out. INC: the incompressible equilibrium
+// (He & Luo 1997), a compile-time choice so that the standard kernel is untouched.
+template <class L, class Real, bool TRT, bool FORCE, bool INC = false>
 inline void collide(const Real* f, Real* out, const CollideParams<Real>& p) {
   Real drho, u[3];
-  node_moments<L, Real, FORCE>(f, p, drho, u);
-  const Real rho = Real(1) + p.compressible * drho;  // the density of the momentum terms
+  node_moments<L, Real, FORCE, INC>(f, p, drho, u);
+  const Real rho = INC ? Real(1) : Real(1) + drho;  // the density of the momentum terms
   const Real usq15 = Real(1.5) * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
   Real uF = 0;
   if constexpr (FORCE) uF = u[0] * p.force[0] + u[1] * p.force[1] + u[2] * p.force[2];
