@@ -109,6 +109,13 @@ expect_json '.dt' '0.0001'
 expect_json '(.tau * 1e6 | round)' '500300'
 expect_json '(.re | round)' '50000'
 
+case_ "info names the incompressible equilibrium and the curved walls"
+sed 's/"re": 100,/"re": 100, "collision": { "equilibrium": "incompressible" }, "curved_walls": "bouzidi",/' "$WORK/cav.json" >"$WORK/cav_inc.json"
+run lbmsim info "$WORK/cav_inc.json"
+expect_status 0
+check "equilibrium" grep -q 'incompressible equilibrium$' "$out"
+check "walls" grep -q '^walls .*Bouzidi' "$out"
+
 case_ "voxelize: a closed octahedron"
 cat >"$WORK/oct.off" <<'MESH'
 OFF
