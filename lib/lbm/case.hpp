@@ -18,6 +18,7 @@ struct Collision {
   CollisionModel model = CollisionModel::bgk;
   double tau = 0.0;          // relaxation time of the symmetric part (sets nu)
   double lambda = 3.0 / 16;  // TRT magic parameter
+  bool incompressible = false;  // He & Luo (1997) equilibrium: rho0 = 1 in the momentum terms
 };
 
 // One face of the box: x-, x+, y-, y+, z-, z+ (index 2*axis + side).

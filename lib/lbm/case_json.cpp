@@ -233,7 +233,13 @@ Case parse_case(const json& doc, const std::string& where) {
   bool tau_given = false;
   if (doc.contains("collision")) {
     const json& co = doc["collision"];
-    check_keys(co, "collision", {"model", "tau", "nu", "lambda"}, ctx);
+    check_keys(co, "collision", {"model", "tau", "nu", "lambda", "equilibrium"}, ctx);
+    if (co.contains("equilibrium")) {
+      const std::string e = str(co["equilibrium"], "collision.equilibrium", ctx);
+      if (e != "compressible" && e != "incompressible")
+        throw bad_input("case key \"collision.equilibrium\" = \"{}\" must be compressible or incompressible ({})", e, where);
+      c.collision.incompressible = e == "incompressible";
+    }
     if (co.contains("model")) {
       const std::string m = str(co["model"], "collision.model", ctx);
       if (m == "bgk") c.collision.model = CollisionModel::bgk;
@@ -365,6 +371,7 @@ json case_to_json(const Case& c) {
   j["collision"] = {{"model", c.collision.model == CollisionModel::bgk ? "bgk" : "trt"},
                     {"tau", c.collision.tau},
                     {"lambda", c.collision.lambda}};
+  if (c.collision.incompressible) j["collision"]["equilibrium"] = "incompressible";
   j["u_ref"] = c.u_ref;
   j["l_ref"] = c.lref();
   json faces;
@@ -386,6 +393,7 @@ json case_to_json(const Case& c) {
   j["faces"] = faces;
   j["steps"] = c.steady ? json("steady") : json(c.steps);
   j["force"] = std::vector<double>(c.force.begin(), c.force.begin() + c.dim);
+  if (c.bouzidi) j["curved_walls"] = "bouzidi";
   return j;
 }
 

@@ -344,7 +344,11 @@ json check_cylinder(const CheckOptions& o) {
   const double umax = 0.05, umean = 2.0 / 3.0 * umax;
   const double nu = umean * D / 20.0;
   Case c = make_case(2, {nx, ny, 1}, 3 * nu + 0.5, CollisionModel::trt);
-  c.bouzidi = true;  // interpolated bounce-back on the cylinder
+  // Interpolated bounce-back on the cylinder, and the incompressible equilibrium: with the
+  // standard one the density varies by O(Ma^2) along the channel and around the cylinder
+  // and C_D carries an error growing as U^2 (docs/lbmsim.md 7: +0.8 % at U_max = 0.05).
+  c.bouzidi = true;
+  c.collision.incompressible = true;
   c.faces[0].kind = Face::Kind::velocity;
   c.faces[0].speed = umax;
   c.faces[0].profile = Face::Profile::parabolic;
@@ -368,49 +372,69 @@ json check_cylinder(const CheckOptions& o) {
     cd = 2 * fx / (umean * umean * D);
     cl = 2 * fy / (umean * umean * D);
   };
-  double cd = 0, cl = 0, prev = 0;
-  const long K = 1000, max_steps = 60L * nx;
+  // The channel rings: the velocity inlet reflects sound like a closed end and the
+  // pressure outlet like an open one, so C_D and C_L carry slowly damped sound waves, the
+  // longest of period 4 nx / c_s. Steadiness is judged on means over that period (sampled
+  // every 10 steps), not on single samples, which may agree by chance.
+  const long every = 10;
+  const long window = every * std::lround(4 * nx * std::sqrt(3.0) / every);
+  const long max_steps = 60L * nx;
+  const double tol = 1e-4;
+  double cd = 0, cl = 0, prev_cd = 0, prev_cl = 0;
   while (s->step_count() < max_steps) {
-    for (long k = 0; k < K; ++k) s->step();
-    coefficients(cd, cl);
+    double sum_cd = 0, sum_cl = 0;
+    for (long k = 0; k < window / every; ++k) {
+      for (long t = 0; t < every; ++t) s->step();
+      double a = 0, b = 0;
+      coefficients(a, b);
+      sum_cd += a, sum_cl += b;
+    }
+    cd = sum_cd / static_cast<double>(window / every);
+    cl = sum_cl / static_cast<double>(window / every);
     if (!std::isfinite(cd)) throw runtime_failure("state became non-finite at step {}", s->step_count());
-    if (std::abs(cd - prev) < 1e-4 * std::abs(cd)) break;
-    prev = cd;
+    // Steady: C_D to 1e-4 relative, C_L to 2e-5 (a thirtieth of its published interval).
+    if (std::abs(cd - prev_cd) < tol * std::abs(cd) && std::abs(cl - prev_cl) < 2e-5) break;
+    prev_cd = cd, prev_cl = cl;
   }
   std::vector<double> rho, u;
   s->moments(rho, u);
-  // Pressure difference between (0.15, 0.2) and (0.25, 0.2): bilinear in the node values
-  // (node j at (j + 1/2) dx), scaled to physical units with U_max = 0.3, rho = 1.
-  // Bilinear weights renormalised over the fluid nodes: the two points lie on the
-  // cylinder's surface, so one of the surrounding nodes is solid.
-  auto p_at = [&](double X, double Y) {
+  // Pressure at the front (0.15, 0.2) and back (0.25, 0.2) of the cylinder, scaled to
+  // physical units with U_max = 0.3, rho = 1. The points lie on the surface, between two
+  // rows of nodes (node j at (j + 1/2) dx): in each row the pressure is extrapolated
+  // linearly along x from the two nearest fluid nodes to the point, then the rows are
+  // interpolated linearly in y.
+  auto p_at = [&](double X, double Y, int outward) {
     const double gx = X / dx - 0.5, gy = Y / dx - 0.5;
-    const int i = static_cast<int>(std::floor(gx)), j = static_cast<int>(std::floor(gy));
-    const double tx = gx - i, ty = gy - j;
-    double sum = 0, wsum = 0;
-    for (int b = 0; b < 2; ++b)
-      for (int a = 0; a < 2; ++a) {
-        const std::size_t k = static_cast<std::size_t>(i + a) + static_cast<std::size_t>(nx) * (j + b);
-        if (f.id[k] != 0) continue;
-        const double w = (a ? tx : 1 - tx) * (b ? ty : 1 - ty);
-        sum += w * rho[k];
-        wsum += w;
-      }
-    return wsum > 0 ? sum / wsum / 3.0 : 1.0 / 3.0;
+    const int j = static_cast<int>(std::floor(gy));
+    const double ty = gy - j;
+    double p = 0;
+    for (int b = 0; b < 2; ++b) {
+      int i = static_cast<int>(outward < 0 ? std::floor(gx) : std::ceil(gx));
+      while (f.id[static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * (j + b)] != 0) i += outward;
+      const std::size_t k1 = static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * (j + b);
+      const std::size_t k2 = outward < 0 ? k1 - 1 : k1 + 1;
+      const double p1 = rho[k1] / 3.0, p2 = rho[k2] / 3.0;
+      p += (b ? ty : 1 - ty) * (p1 - (gx - i) * (p1 - p2) * outward);
+    }
+    return p;
   };
   const double scale = (0.3 / umax) * (0.3 / umax);
-  const double dp = (p_at(0.15, 0.2) - p_at(0.25, 0.2)) * scale;
-  const bool cd_ok = std::abs(cd - 5.58) <= 0.02 * 5.58;
+  const double dp = (p_at(0.15, 0.2, -1) - p_at(0.25, 0.2, +1)) * scale;
+  // Schaefer & Turek's intervals (the benchmark's published bounds, not this program's
+  // output): C_D in [5.57, 5.59], C_L in [0.0104, 0.0110], Delta P in [0.1172, 0.1176].
+  const bool cd_ok = cd >= 5.57 && cd <= 5.59;
+  const bool cl_ok = cl >= 0.0104 && cl <= 0.0110;
   const bool dp_ok = std::abs(dp - 0.1174) <= 0.03 * 0.1174;
-  json metrics = {{"d_cells", D},   {"size", {nx, ny}}, {"tau", c.collision.tau}, {"steps", s->step_count()},
-                  {"cd", cd},       {"cl", cl},         {"delta_p", dp},          {"seconds", seconds_since(t0)}};
-  metrics["cd_in_published_interval"] = cd >= 5.57 && cd <= 5.59;
-  metrics["cl_in_published_interval"] = cl >= 0.0104 && cl <= 0.0110;
+  json metrics = {{"d_cells", D},     {"size", {nx, ny}}, {"tau", c.collision.tau},   {"steps", s->step_count()},
+                  {"window", window}, {"cd", cd},         {"cl", cl},                 {"delta_p", dp},
+                  {"seconds", seconds_since(t0)}};
+  metrics["cd_in_published_interval"] = cd_ok;
+  metrics["cl_in_published_interval"] = cl_ok;
   metrics["delta_p_in_published_interval"] = dp >= 0.1172 && dp <= 0.1176;
-  json criteria = {{"cd", "within 2% of 5.58 at D = 20 (published interval [5.57, 5.59]; Bouzidi walls)"},
-                   {"delta_p", "within 3% of 0.1174 (published [0.1172, 0.1176])"},
-                   {"cl", "reported; published interval [0.0104, 0.0110]"}};
-  return {{"case", "cylinder20"}, {"metrics", metrics}, {"criteria", criteria}, {"pass", cd_ok && dp_ok}};
+  json criteria = {{"cd", "in the published interval [5.57, 5.59] (TRT, Bouzidi walls, incompressible equilibrium)"},
+                   {"cl", "in the published interval [0.0104, 0.0110]"},
+                   {"delta_p", "within 3% of 0.1174 (published [0.1172, 0.1176])"}};
+  return {{"case", "cylinder20"}, {"metrics", metrics}, {"criteria", criteria}, {"pass", cd_ok && cl_ok && dp_ok}};
 }
 
 json check_mass(const CheckOptions&) {

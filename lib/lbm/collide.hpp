@@ -18,8 +18,8 @@ struct CollideParams {
 };
 
 // Density deviation rho - 1 and velocity of shifted populations g (u includes F/2 when
-// FORCE).
-template <class L, class Real, bool FORCE>
+// FORCE). INC: the incompressible model of He & Luo (1997), u = j/rho0 with rho0 = 1.
+template <class L, class Real, bool FORCE, bool INC = false>
 inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho, Real u[3]) {
   Real r = 0, jx = 0, jy = 0, jz = 0;
 #pragma GCC unroll 32
@@ -34,7 +34,7 @@ inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho
     jy += Real(0.5) * p.force[1];
     jz += Real(0.5) * p.force[2];
   }
-  const Real inv = Real(1) / (Real(1) + r);
+  const Real inv = INC ? Real(1) : Real(1) / (Real(1) + r);
   drho = r;
   u[0] = jx * inv;
   u[1] = jy * inv;
@@ -42,22 +42,24 @@ inline void node_moments(const Real* f, const CollideParams<Real>& p, Real& drho
 }
 
 // Shifted equilibrium f_i^eq - w_i, with f_i^eq = w_i rho [1 + 3 c.u + 9/2 (c.u)^2 - 3/2 u^2]
-// and rho = 1 + drho.
+// and rho = 1 + drho; with compressible = 0 the incompressible form of He & Luo (1997),
+// f_i^eq = w_i [rho + rho0 (3 c.u + 9/2 (c.u)^2 - 3/2 u^2)], rho0 = 1.
 template <class L, class Real>
-inline Real equilibrium(int i, Real drho, const Real u[3]) {
+inline Real equilibrium(int i, Real drho, const Real u[3], Real compressible = 1) {
   const Real cu = static_cast<Real>(L::c[i][0]) * u[0] + static_cast<Real>(L::c[i][1]) * u[1] +
                   static_cast<Real>(L::c[i][2]) * u[2];
   const Real usq = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
   return static_cast<Real>(L::w[i]) *
-         (drho + (Real(1) + drho) * (Real(3) * cu + Real(4.5) * cu * cu - Real(1.5) * usq));
+         (drho + (Real(1) + compressible * drho) * (Real(3) * cu + Real(4.5) * cu * cu - Real(1.5) * usq));
 }
 
-// Collides f (pre-collision, Q values) into out.
-template <class L, class Real, bool TRT, bool FORCE>
+// Collides f (pre-collision, Q values) into out. INC: the incompressible equilibrium
+// (He & Luo 1997), a compile-time choice so that the standard kernel is untouched.
+template <class L, class Real, bool TRT, bool FORCE, bool INC = false>
 inline void collide(const Real* f, Real* out, const CollideParams<Real>& p) {
   Real drho, u[3];
-  node_moments<L, Real, FORCE>(f, p, drho, u);
-  const Real rho = Real(1) + drho;
+  node_moments<L, Real, FORCE, INC>(f, p, drho, u);
+  const Real rho = INC ? Real(1) : Real(1) + drho;  // the density of the momentum terms
   const Real usq15 = Real(1.5) * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
   Real uF = 0;
   if constexpr (FORCE) uF = u[0] * p.force[0] + u[1] * p.force[1] + u[2] * p.force[2];

@@ -73,6 +73,8 @@ class SolverT final : public Solver {
     par_.omega_p = static_cast<Real>(rates[0]);
     par_.omega_m = static_cast<Real>(rates[1]);
     for (int a = 0; a < 3; ++a) par_.force[a] = static_cast<Real>(c_.force[a]);
+    inc_ = c_.collision.incompressible;
+    compressible_ = inc_ ? Real(0) : Real(1);
     force_on_ = c_.force[0] != 0 || c_.force[1] != 0 || c_.force[2] != 0;
     trt_ = c_.collision.model == CollisionModel::trt;
     build(*s.flags);
@@ -85,13 +87,8 @@ class SolverT final : public Solver {
     Real* A = a_.data();
     Real* B = b_.data();
     const int rows = static_cast<int>(row_begin_.size()) - 1;
-    if (trt_) {
-      if (force_on_) sweep<true, true>(A, B, rows);
-      else sweep<true, false>(A, B, rows);
-    } else {
-      if (force_on_) sweep<false, true>(A, B, rows);
-      else sweep<false, false>(A, B, rows);
-    }
+    if (inc_) sweep_for<true>(A, B, rows);
+    else sweep_for<false>(A, B, rows);
     finish(B);
     a_.swap(b_);
     ++steps_;
@@ -120,10 +117,13 @@ class SolverT final : public Solver {
           CollideParams<Real> back = par_;
           for (int a = 0; a < 3; ++a) back.force[a] = -par_.force[a];
           Real rr, uu[3];
-          if (force_on_)
-            node_moments<L, Real, true>(f, back, rr, uu);
-          else
-            node_moments<L, Real, false>(f, back, rr, uu);
+          if (force_on_) {
+            if (inc_) node_moments<L, Real, true, true>(f, back, rr, uu);
+            else node_moments<L, Real, true>(f, back, rr, uu);
+          } else {
+            if (inc_) node_moments<L, Real, false, true>(f, back, rr, uu);
+            else node_moments<L, Real, false>(f, back, rr, uu);
+          }
           const std::size_t k = static_cast<std::size_t>(x) + static_cast<std::size_t>(n_[0]) * (y + static_cast<std::size_t>(n_[1]) * z);
           rho[k] = 1.0 + static_cast<double>(rr);
           for (int a = 0; a < 3; ++a) u[3 * k + a] = uu[a];
@@ -168,7 +168,8 @@ class SolverT final : public Solver {
       double extra = 0;
       if (b.coef >= 0) {
         double rho = 1;
-        for (int i = 0; i < Q; ++i) rho += A[i * N_ + b.n];
+        if (!c_.collision.incompressible)
+          for (int i = 0; i < Q; ++i) rho += A[i * N_ + b.n];
         extra = coefs_[b.coef + l.i] * rho;
       }
       // Momentum given to the solid: c_o (f_o* + f_i(t+1)), with c_o = -c_i and f = g + w.
@@ -210,8 +211,8 @@ class SolverT final : public Solver {
       return;
     }
     const BoundaryNode& b = bnodes_[rec];
-    Real rho = 1;
-    if (b.coef >= 0)
+    Real rho = 1;  // the density of Ladd's term (rho0 = 1 in the incompressible model)
+    if (b.coef >= 0 && !c_.collision.incompressible)
       for (int i = 0; i < Q; ++i) rho += A[i * N_ + n];
     for (int i = 0; i < Q; ++i) {
       if (b.bounce & (1u << i)) {
@@ -242,7 +243,18 @@ class SolverT final : public Solver {
     return v;
   }
 
-  template <bool TRT, bool FORCE>
+  template <bool INC>
+  void sweep_for(const Real* A, Real* B, int rows) const {
+    if (trt_) {
+      if (force_on_) sweep<true, true, INC>(A, B, rows);
+      else sweep<true, false, INC>(A, B, rows);
+    } else {
+      if (force_on_) sweep<false, true, INC>(A, B, rows);
+      else sweep<false, false, INC>(A, B, rows);
+    }
+  }
+
+  template <bool TRT, bool FORCE, bool INC>
   void sweep(const Real* __restrict A, Real* __restrict B, int rows) const {
     const std::size_t N = N_;
 #pragma omp parallel for schedule(static) if (N_ > 16384)
@@ -267,7 +279,7 @@ class SolverT final : public Solver {
             Real f[Q], o[Q];
 #pragma GCC unroll 32
             for (int i = 0; i < Q; ++i) f[i] = src[i][x];
-            collide<L, Real, TRT, FORCE>(f, o, par);
+            collide<L, Real, TRT, FORCE, INC>(f, o, par);
 #pragma GCC unroll 32
             for (int i = 0; i < Q; ++i) dst[i][x] = o[i];
           }
@@ -275,7 +287,7 @@ class SolverT final : public Solver {
           const std::size_t n = base + g.x0;
           Real f[Q], o[Q];
           gather(A, n, g.rec, f);
-          collide<L, Real, TRT, FORCE>(f, o, par_);
+          collide<L, Real, TRT, FORCE, INC>(f, o, par_);
           for (int i = 0; i < Q; ++i) B[i * N + n] = o[i];
         }
       }
@@ -325,15 +337,15 @@ class SolverT final : public Solver {
           rho_n += fn[i];
           for (int a = 0; a < 3; ++a) j[a] += L::c[i][a] * static_cast<double>(fn[i]);
         }
-        for (int a = 0; a < 3; ++a) un[a] = j[a] / rho_n;
+        for (int a = 0; a < 3; ++a) un[a] = j[a] / (c_.collision.incompressible ? 1.0 : rho_n);
       }
       const double rho_b = e.inlet ? rho_n : e.rho;
       const double* ub = e.inlet ? e.u : un;
       Real urb[3] = {static_cast<Real>(ub[0]), static_cast<Real>(ub[1]), static_cast<Real>(ub[2])};
       Real urn[3] = {static_cast<Real>(un[0]), static_cast<Real>(un[1]), static_cast<Real>(un[2])};
       for (int i = 0; i < Q; ++i) {
-        Real v = equilibrium<L, Real>(i, static_cast<Real>(rho_b - 1), urb);
-        if (e.has_neighbour) v += fn[i] - equilibrium<L, Real>(i, static_cast<Real>(rho_n - 1), urn);
+        Real v = equilibrium<L, Real>(i, static_cast<Real>(rho_b - 1), urb, compressible_);
+        if (e.has_neighbour) v += fn[i] - equilibrium<L, Real>(i, static_cast<Real>(rho_n - 1), urn, compressible_);
         B[i * N_ + e.b] = v;
       }
     }
@@ -474,12 +486,15 @@ class SolverT final : public Solver {
           // Stored populations are post-collision: collide the equilibrium whose Guo
           // velocity (u_pre + F/(2 rho)) is the wanted u.
           Real ur[3];
-          for (int a = 0; a < 3; ++a) ur[a] = static_cast<Real>(u[a] - (force_on_ ? 0.5 * c_.force[a] / rho : 0.0));
+          const double rho_m = c_.collision.incompressible ? 1.0 : rho;
+          for (int a = 0; a < 3; ++a) ur[a] = static_cast<Real>(u[a] - (force_on_ ? 0.5 * c_.force[a] / rho_m : 0.0));
           const std::size_t n = index(x, y, z);
           Real f[Q], o[Q];
-          for (int i = 0; i < Q; ++i) f[i] = equilibrium<L, Real>(i, static_cast<Real>(rho - 1), ur);
+          for (int i = 0; i < Q; ++i) f[i] = equilibrium<L, Real>(i, static_cast<Real>(rho - 1), ur, compressible_);
           if (force_on_) {
-            if (trt_) collide<L, Real, true, true>(f, o, par_);
+            if (trt_ && inc_) collide<L, Real, true, true, true>(f, o, par_);
+            else if (trt_) collide<L, Real, true, true>(f, o, par_);
+            else if (inc_) collide<L, Real, false, true, true>(f, o, par_);
             else collide<L, Real, false, true>(f, o, par_);
           } else {
             std::memcpy(o, f, sizeof f);
@@ -498,7 +513,8 @@ class SolverT final : public Solver {
   std::size_t N_ = 0, fluid_ = 0;
   std::ptrdiff_t off_[Q]{};
   CollideParams<Real> par_;
-  bool force_on_ = false, trt_ = false;
+  bool force_on_ = false, trt_ = false, inc_ = false;
+  Real compressible_ = 1;  // factor of the density in the equilibrium's momentum terms
   std::vector<Real> a_, b_;
   std::vector<Segment> segs_;
   std::vector<int> row_begin_;

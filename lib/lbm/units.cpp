@@ -55,6 +55,8 @@ nlohmann::json unit_table_json(const UnitTable& t, const Case& c) {
                       {"memory_bytes", t.memory_bytes},
                       {"mlups_estimate", t.mlups_estimate},
                       {"steps_per_second_estimate", t.steps_per_second}};
+  j["equilibrium"] = c.collision.incompressible ? "incompressible" : "compressible";
+  j["curved_walls"] = c.bouzidi ? "bouzidi" : "halfway";
   if (c.units.physical) {
     j["steps_per_physical_second"] = t.steps_per_second_phys;
     j["force_scale"] = t.force_scale;

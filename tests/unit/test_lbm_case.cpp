@@ -57,6 +57,23 @@ TEST(LbmCase, UnstableParametersAreRefusedWithTheReason) {
             std::string::npos);
 }
 
+TEST(LbmCase, EquilibriumAndCurvedWalls) {
+  const Case c = parse_case(
+      json::parse(R"({"size":[8,8],"collision":{"tau":0.6,"equilibrium":"incompressible"},"curved_walls":"bouzidi","steps":1})"),
+      "x");
+  EXPECT_TRUE(c.collision.incompressible);
+  EXPECT_TRUE(c.bouzidi);
+  const json back = case_to_json(c);
+  EXPECT_EQ(back["collision"]["equilibrium"], "incompressible");
+  EXPECT_EQ(back["curved_walls"], "bouzidi");
+  EXPECT_FALSE(parse_case(json::parse(R"({"size":[8,8],"collision":{"tau":0.6},"steps":1})"), "x").collision.incompressible);
+  EXPECT_EQ(error_of(json::parse(R"({"size":[8,8],"collision":{"tau":0.6,"equilibrium":"weak"},"steps":1})")),
+            "case key \"collision.equilibrium\" = \"weak\" must be compressible or incompressible (case.json)");
+  EXPECT_NE(error_of(json::parse(R"({"size":[8,8],"collision":{"tau":0.6,"equilibrum":"incompressible"},"steps":1})"))
+                .find("did you mean \"collision.equilibrium\""),
+            std::string::npos);
+}
+
 TEST(LbmCase, InconsistentFacesAndSizes) {
   EXPECT_NE(error_of(json::parse(R"({"size":[8,8],"collision":{"tau":0.6},"faces":{"x-":"wall"},"steps":1})"))
                 .find("periodic face needs a periodic opposite"),

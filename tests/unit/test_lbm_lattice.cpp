@@ -52,28 +52,34 @@ TEST(LbmLattice, SpecOrderingIsFixed) {
   for (int i = 1; i < 19; ++i) EXPECT_EQ(D3Q19::opp[i], i % 2 ? i + 1 : i - 1);
 }
 
+// compressible = 0: He & Luo's (1997) incompressible form, whose momentum terms carry
+// rho0 = 1: sum f = rho, sum f c = u, sum f c c = rho/3 I + u u.
 template <class L>
-void check_equilibrium_moments() {
+void check_equilibrium_moments(double compressible = 1) {
   const double drho = 0.03, u[3] = {0.04, -0.02, L::D == 3 ? 0.015 : 0.0};
   double m0 = 0, m1[3] = {0, 0, 0}, m2[3][3] = {};
   for (int i = 0; i < L::Q; ++i) {
-    const double f = equilibrium<L, double>(i, drho, u) + L::w[i];
+    const double f = equilibrium<L, double>(i, drho, u, compressible) + L::w[i];
     m0 += f;
     for (int a = 0; a < 3; ++a) {
       m1[a] += f * L::c[i][a];
       for (int b = 0; b < 3; ++b) m2[a][b] += f * L::c[i][a] * L::c[i][b];
     }
   }
-  const double rho = 1 + drho;
+  const double rho = 1 + drho, rho_m = 1 + compressible * drho;
   EXPECT_NEAR(m0, rho, 1e-14);
   for (int a = 0; a < L::D; ++a) {
-    EXPECT_NEAR(m1[a], rho * u[a], 1e-14);
-    for (int b = 0; b < L::D; ++b) EXPECT_NEAR(m2[a][b], rho / 3 * (a == b) + rho * u[a] * u[b], 1e-14);
+    EXPECT_NEAR(m1[a], rho_m * u[a], 1e-14);
+    for (int b = 0; b < L::D; ++b) EXPECT_NEAR(m2[a][b], rho / 3 * (a == b) + rho_m * u[a] * u[b], 1e-14);
   }
 }
 
 TEST(LbmCollide, EquilibriumMomentsD2Q9) { check_equilibrium_moments<D2Q9>(); }
 TEST(LbmCollide, EquilibriumMomentsD3Q19) { check_equilibrium_moments<D3Q19>(); }
+TEST(LbmCollide, IncompressibleEquilibriumMoments) {
+  check_equilibrium_moments<D2Q9>(0);
+  check_equilibrium_moments<D3Q19>(0);
+}
 
 template <class L, bool TRT>
 void check_conservation() {

@@ -178,17 +178,22 @@ void run_decomposed(const Case& c, int ranks, int steps, std::vector<double>& rh
 }
 
 TEST(LbmSolver, SlabsGiveTheSameBitsAsOneSlab) {
+  for (int variant = 0; variant < 3; ++variant)
   for (int dim : {2, 3}) {
-    const Case c = busy_case(dim);
+    // 1: interpolated (Bouzidi) walls on the sphere, whose links next to a cut read the
+    // neighbour slab's populations; 2: also the incompressible equilibrium.
+    Case c = busy_case(dim);
+    c.bouzidi = variant >= 1;
+    c.collision.incompressible = variant == 2;
     std::vector<double> r1, u1, f1;
     run_decomposed(c, 1, 60, r1, u1, f1);
     for (int ranks : {2, 3, 4}) {
       std::vector<double> r, u, f;
       run_decomposed(c, ranks, 60, r, u, f);
       ASSERT_EQ(r.size(), r1.size());
-      EXPECT_EQ(0, std::memcmp(r.data(), r1.data(), r.size() * sizeof(double))) << dim << "D, " << ranks << " ranks";
-      EXPECT_EQ(0, std::memcmp(u.data(), u1.data(), u.size() * sizeof(double))) << dim << "D, " << ranks << " ranks";
-      EXPECT_EQ(0, std::memcmp(f.data(), f1.data(), f.size() * sizeof(double))) << dim << "D, " << ranks << " ranks";
+      EXPECT_EQ(0, std::memcmp(r.data(), r1.data(), r.size() * sizeof(double))) << dim << "D, " << ranks << " ranks, variant " << variant;
+      EXPECT_EQ(0, std::memcmp(u.data(), u1.data(), u.size() * sizeof(double))) << dim << "D, " << ranks << " ranks, variant " << variant;
+      EXPECT_EQ(0, std::memcmp(f.data(), f1.data(), f.size() * sizeof(double))) << dim << "D, " << ranks << " ranks, variant " << variant;
     }
   }
 }
@@ -213,6 +218,62 @@ TEST(LbmSolver, RestingObstacleFeelsNoForce) {
   for (std::size_t l = 0; l < F.size() / 3; ++l) fx += F[3 * l], fy += F[3 * l + 1];
   EXPECT_NEAR(fx, 0.0, 1e-14);
   EXPECT_NEAR(fy, 0.0, 1e-14);
+}
+
+// Where the wall cuts a link (Bouzidi et al. 2001): the root of |p + q c - centre| = r,
+// worked by hand for links whose answer is a closed form.
+TEST(LbmGeometry, LinkFractionOnACircleIsTheAnalyticRoot) {
+  Case c = periodic_case(2, 20);
+  Shape s;
+  s.kind = Shape::Kind::cylinder;
+  s.center = {10, 10.5, 0};
+  s.radius = 3;
+  c.shapes.push_back(s);
+  // Along -x from (13.5, 10.5): the surface is at x = 13, half the link.
+  EXPECT_DOUBLE_EQ(link_fraction(c, {13.5, 10.5, 0}, {-1, 0, 0}), 0.5);
+  // Along (-1, -1): (3.5 - q)^2 + q^2 = 9, q = (7 - sqrt 23) / 4.
+  EXPECT_NEAR(link_fraction(c, {13.5, 10.5, 0}, {-1, -1, 0}), (7 - std::sqrt(23.0)) / 4, 1e-15);
+  // Along +y from (10.5, 7.5): (10.5-10)^2 + (7.5 + q - 10.5)^2 = 9, q = 3 - sqrt 8.75.
+  EXPECT_NEAR(link_fraction(c, {10.5, 7.5, 0}, {0, 1, 0}), 3 - std::sqrt(8.75), 1e-15);
+  // Links that end in the fluid, leave the circle or point away: no fraction.
+  EXPECT_EQ(link_fraction(c, {15.5, 10.5, 0}, {-1, 0, 0}), -1);  // ends at 14.5, outside
+  EXPECT_EQ(link_fraction(c, {10.5, 10.5, 0}, {1, 0, 0}), -1);   // starts inside
+  EXPECT_EQ(link_fraction(c, {13.5, 10.5, 0}, {1, 0, 0}), -1);   // points away
+}
+
+TEST(LbmGeometry, LinkFractionOnSphereAndCylinderIn3D) {
+  Case c = periodic_case(3, 20);
+  Shape sph;
+  sph.kind = Shape::Kind::sphere;
+  sph.center = {0, 0, 0};
+  sph.radius = 2;
+  c.shapes.push_back(sph);
+  // (2.5 - q)^2 + 0.25 + 0.25 = 4.
+  EXPECT_NEAR(link_fraction(c, {2.5, 0.5, 0.5}, {-1, 0, 0}), 2.5 - std::sqrt(3.5), 1e-15);
+  // A cylinder along z ignores the z part of the link: (12.5 - q - 10)^2 + 0.25 = 4.
+  Shape cyl;
+  cyl.kind = Shape::Kind::cylinder;
+  cyl.axis = 2;
+  cyl.center = {10, 0, 0};
+  cyl.radius = 2;
+  c.shapes.push_back(cyl);
+  EXPECT_NEAR(link_fraction(c, {12.5, 0.5, 7.5}, {-1, 0, -1}), 2.5 - std::sqrt(3.75), 1e-15);
+  // A link along the axis never meets the mantle.
+  EXPECT_EQ(link_fraction(c, {10.5, 0.5, 7.5}, {0, 0, 1}), -1);
+  // Two shapes: the nearer crossing counts.
+  Shape near;
+  near.kind = Shape::Kind::sphere;
+  near.center = {2.5, 0.5, 0.5 + 1.5};
+  near.radius = 1.2;  // reached from (2.5, 0.5, 0.5) along +z at q = 0.3
+  c.shapes.push_back(near);
+  EXPECT_NEAR(link_fraction(c, {2.5, 0.5, 0.5}, {0, 0, 1}), 0.3, 1e-15);
+  // Boxes carry no fraction (staircase walls).
+  Case b = periodic_case(2, 20);
+  Shape box;
+  box.lo = {0, 0, -1e300};
+  box.hi = {5, 5, 1e300};
+  b.shapes.push_back(box);
+  EXPECT_EQ(link_fraction(b, {5.5, 2.5, 0}, {-1, 0, 0}), -1);
 }
 
 }  // namespace

@@ -27,8 +27,10 @@ int info_command(const InfoOptions& o) {
   std::string s;
   s += fmt::format("lattice        {} {}{}{} ({} cells, {} solid)\n", c.lattice == lbm::LatticeKind::d2q9 ? "d2q9" : "d3q19",
                    c.size[0], fmt::format("x{}", c.size[1]), c.dim == 3 ? fmt::format("x{}", c.size[2]) : "", c.cells(), solid);
-  s += fmt::format("collision      {}  tau {:.6g}  omega+ {:.6g}  omega- {:.6g}\n",
-                   c.collision.model == lbm::CollisionModel::bgk ? "bgk" : "trt", t.tau, t.omega_p, t.omega_m);
+  s += fmt::format("collision      {}  tau {:.6g}  omega+ {:.6g}  omega- {:.6g}{}\n",
+                   c.collision.model == lbm::CollisionModel::bgk ? "bgk" : "trt", t.tau, t.omega_p, t.omega_m,
+                   c.collision.incompressible ? "  incompressible equilibrium" : "");
+  if (c.bouzidi) s += "walls          interpolated bounce-back (Bouzidi) on spheres and cylinders\n";
   s += fmt::format("viscosity      {:.6g} (lattice)\n", t.nu);
   s += fmt::format("reference      u_ref {:.6g}  l_ref {:.6g} (lattice)\n", t.u_ref, t.l_ref);
   s += fmt::format("Re             {:.6g}\n", t.re);
