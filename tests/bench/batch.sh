@@ -44,7 +44,7 @@ while [ $# -gt 0 ]; do
     --bin) BIN=$2; shift ;;
     --jobs) JOBS=$2; shift ;;
     --tools) TOOLS=",$2,"; shift ;;
-    -h|--help) sed -n '2,33p' "$0"; exit 0 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "batch.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift

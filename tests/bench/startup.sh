@@ -17,7 +17,7 @@
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-case "${1:-}" in -h|--help) sed -n '2,18p' "$0"; exit 0 ;; esac
+case "${1:-}" in -h|--help) awk 'NR > 1 && /^#/ { print; next } NR > 1 { exit }' "$0"; exit 0 ;; esac
 BIN=${1:-$root/build/bin}
 MAX_MS=${MAX_MS:-15} MAX_LIBS=${MAX_LIBS:-40}
 for c in hyperfine jq ldd; do
