@@ -28,7 +28,8 @@
 #            `ctmconv` (openctm-tools), `assimp export` (assimp-utils; it cannot write OFF,
 #            so it writes OBJ: the output is marked "to":"obj").
 # One JSON line per (batch, tool) on standard output: wall seconds of `make -jJ`, files/s,
-# peak RSS (GNU time's %M of make: the largest process of the make tree, make included),
+# CPU ms per file (user + system of the whole make tree: what a loaded machine disturbs
+# least), peak RSS (GNU time's %M of make: the largest process of the make tree, make included),
 # output megabytes. A tool that is not installed gets a "skipped" line; a batch whose
 # outputs are missing or wrong gets a "failed" line. Competitors are Debian packages
 # (scripts/install-deps.sh, TEST_TOOL_PKGS): libvips-tools, netpbm, imagemagick,
@@ -126,12 +127,12 @@ skip() { json "$1" "$2" "\"skipped\":\"$3\""; }
 # run BATCH TOOL FILES CHECK: runs make on $MK/BATCH-TOOL.mk from $IN; CHECK is a
 # command given one output file (exit 0 when it is right).
 run() {
-  local batch=$1 tool=$2 files=$3 check=$4 mk="$MK/$1-$2.mk" secs rss made first
+  local batch=$1 tool=$2 files=$3 check=$4 mk="$MK/$1-$2.mk" secs rss usr sys made first
   rm -rf "${OUT:?}/$tool"
   # -k: a tool that crashes on a few inputs is timed over all of them, and the crashes
   # are counted ("failed_files", "first_error").
-  /usr/bin/time -f "%e %M" -o "$WORK/time" make -k -s -j"$JOBS" -C "$IN" -f "$mk" all >/dev/null 2>"$WORK/err"
-  read -r secs rss < <(tail -n 1 "$WORK/time")
+  /usr/bin/time -f "%e %M %U %S" -o "$WORK/time" make -k -s -j"$JOBS" -C "$IN" -f "$mk" all >/dev/null 2>"$WORK/err"
+  read -r secs rss usr sys < <(tail -n 1 "$WORK/time")
   made=$(find "$OUT/$tool" -type f 2>/dev/null | wc -l)
   first=$(find "$OUT/$tool" -type f 2>/dev/null | sort | head -n 1)
   if [ "$made" -eq 0 ] || [ "$made" -gt "$files" ] || ! $check "$first"; then
@@ -139,8 +140,9 @@ run() {
   fi
   [ "$made" -lt "$files" ] && extra+=$(printf ',"failed_files":%d,"first_error":"%s"' "$((files - made))" \
     "$(grep -m1 -i 'error\|fault' "$WORK/err" | head -c 200 | tr '"\\' '  ')")
-  json "$batch" "$tool" "$(printf '"files":%d,"seconds":%s,"files_per_s":%.1f,"peak_rss_mb":%.1f,"out_mb":%.1f%s' \
+  json "$batch" "$tool" "$(printf '"files":%d,"seconds":%s,"files_per_s":%.1f,"cpu_ms_per_file":%.1f,"peak_rss_mb":%.1f,"out_mb":%.1f%s' \
     "$files" "$secs" "$(awk -v n="$files" -v s="$secs" 'BEGIN { print (s > 0 ? n / s : 0) }')" \
+    "$(awk -v n="$files" -v u="$usr" -v s="$sys" 'BEGIN { print 1000 * (u + s) / n }')" \
     "$(awk -v k="$rss" 'BEGIN { print k / 1024 }')" "$(du -sk "$OUT/$tool" | awk '{print $1 / 1024}')" "${extra:-}")"
   extra=""
 }
