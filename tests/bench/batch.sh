@@ -27,7 +27,10 @@
 #   ply2off  all N meshes PLY -> OFF: `fconv` (Makefile.inc rule $(FEST_OUT)/%.off: %.ply),
 #            `ctmconv` (openctm-tools), `assimp export` (assimp-utils; it cannot write OFF,
 #            so it writes OBJ: the output is marked "to":"obj").
-# One JSON line per (batch, tool) on standard output: wall seconds of `make -jJ`, files/s,
+# Fairness on a machine whose load changes: each batch runs in ten slices of its inputs,
+# the tools taking turns slice by slice (tool A slice 0, tool B slice 0, ..., then B first).
+# One JSON line per (batch, tool) on standard output: wall seconds of `make -jJ` (summed
+# over the slices), files/s,
 # CPU ms per file (user + system of the whole make tree: what a loaded machine disturbs
 # least), peak RSS (GNU time's %M of make: the largest process of the make tree, make included),
 # output megabytes. A tool that is not installed gets a "skipped" line; a batch whose
@@ -50,7 +53,7 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
-case $N in '' | *[!0-9]* | 0 | 1) echo "batch.sh: --files needs a whole number >= 2" >&2; exit 2 ;; esac
+case $N in '' | *[!0-9]* | 0 | 1 | ?????*) echo "batch.sh: --files needs a whole number from 2 to 9999" >&2; exit 2 ;; esac
 BIN=$(cd "$BIN" 2>/dev/null && pwd) || { echo "batch.sh: no folder $BIN" >&2; exit 2; }
 for t in resample fconv; do
   [ -x "$BIN/$t" ] || { echo "batch.sh: no $BIN/$t (build the resample and fconv targets)" >&2; exit 2; }
@@ -115,36 +118,54 @@ done
 have() { command -v "$1" >/dev/null 2>&1; }
 want() { [[ $TOOLS == *",$1,"* ]]; }
 
-# makefile NAME OUTEXT INPUT-EXTS RULE...: a Makefile over the inputs of the batch whose
-# outputs are $(OUT)/<dir>/<name>.OUTEXT, one pattern rule per input extension.
-# $(fest) includes Makefile.inc instead of giving rules.
+# Every batch's Makefile starts with head_mk: its inputs are the files whose number
+# matches $(P) (a glob of four digits, default all), so one Makefile serves every slice.
 head_mk() {  # batch tool
-  printf 'OUT := %s\nIMGS := $(wildcard img/*.png img/*.jpg)\nJPGS := $(wildcard img/*.jpg)\nPLYS := $(wildcard mesh/*.ply)\n' "$OUT/$2"
+  printf 'OUT := %s\nP ?= ????\n' "$OUT/$2"
+  printf 'IMGS := $(wildcard img/img$(P).png img/img$(P).jpg)\nJPGS := $(wildcard img/img$(P).jpg)\nPLYS := $(wildcard mesh/mesh$(P).ply)\n'
 }
 json() { printf '{"bench":"batch","batch":"%s","tool":"%s",%s}\n' "$1" "$2" "$3"; }
 skip() { json "$1" "$2" "\"skipped\":\"$3\""; }
 
-# run BATCH TOOL FILES CHECK: runs make on $MK/BATCH-TOOL.mk from $IN; CHECK is a
-# command given one output file (exit 0 when it is right).
-run() {
-  local batch=$1 tool=$2 files=$3 check=$4 mk="$MK/$1-$2.mk" secs rss usr sys made first
-  rm -rf "${OUT:?}/$tool"
-  # -k: a tool that crashes on a few inputs is timed over all of them, and the crashes
-  # are counted ("failed_files", "first_error").
-  /usr/bin/time -f "%e %M %U %S" -o "$WORK/time" make -k -s -j"$JOBS" -C "$IN" -f "$mk" all >/dev/null 2>"$WORK/err"
-  read -r secs rss usr sys < <(tail -n 1 "$WORK/time")
-  made=$(find "$OUT/$tool" -type f 2>/dev/null | wc -l)
-  first=$(find "$OUT/$tool" -type f 2>/dev/null | sort | head -n 1)
-  if [ "$made" -eq 0 ] || [ "$made" -gt "$files" ] || ! $check "$first"; then
-    json "$batch" "$tool" "\"failed\":\"$made of $files outputs, or a wrong one: ${first:-none}; $(head -c 200 "$WORK/err" | tr '\n"\\' '   ')\""; return
-  fi
-  [ "$made" -lt "$files" ] && extra+=$(printf ',"failed_files":%d,"first_error":"%s"' "$((files - made))" \
-    "$(grep -m1 -i 'error\|fault' "$WORK/err" | head -c 200 | tr '"\\' '  ')")
-  json "$batch" "$tool" "$(printf '"files":%d,"seconds":%s,"files_per_s":%.1f,"cpu_ms_per_file":%.1f,"peak_rss_mb":%.1f,"out_mb":%.1f%s' \
-    "$files" "$secs" "$(awk -v n="$files" -v s="$secs" 'BEGIN { print (s > 0 ? n / s : 0) }')" \
-    "$(awk -v n="$files" -v u="$usr" -v s="$sys" 'BEGIN { print 1000 * (u + s) / n }')" \
-    "$(awk -v k="$rss" 'BEGIN { print k / 1024 }')" "$(du -sk "$OUT/$tool" | awk '{print $1 / 1024}')" "${extra:-}")"
-  extra=""
+# batch BATCH FILES CHECK TOOL...: runs each tool's $MK/BATCH-TOOL.mk from $IN over ten
+# slices of the inputs (file numbers ??0? .. ??9?), the tools taking turns slice by slice
+# with the first one rotating, so a load that changes during the run falls on all tools
+# alike; each tool's times are summed over its slices. make -k: a tool that crashes on a
+# few inputs is timed over all of them and the crashes are counted ("failed_files").
+# CHECK is a command given one output file (exit 0 when it is right).
+batch() {
+  local batch=$1 files=$2 check=$3; shift 3
+  local tools=("$@") n=$# k i t s m u y made first extra
+  [ "$n" -gt 0 ] || return 0
+  local -A secs peak cpu
+  for t in "${tools[@]}"; do rm -rf "${OUT:?}/$t"; : >"$WORK/err-$t"; secs[$t]=0 peak[$t]=0 cpu[$t]=0; done
+  for ((k = 0; k < 10; k++)); do
+    for ((i = 0; i < n; i++)); do
+      t=${tools[$(((i + k) % n))]}
+      /usr/bin/time -f "%e %M %U %S" -o "$WORK/time" make -k -s -j"$JOBS" -C "$IN" -f "$MK/$batch-$t.mk" P="??$k?" all \
+        >/dev/null 2>>"$WORK/err-$t"
+      read -r s m u y < <(tail -n 1 "$WORK/time")
+      secs[$t]=$(awk -v a="${secs[$t]}" -v b="$s" 'BEGIN { print a + b }')
+      cpu[$t]=$(awk -v a="${cpu[$t]}" -v b="$u" -v c="$y" 'BEGIN { print a + b + c }')
+      [ "$m" -gt "${peak[$t]}" ] && peak[$t]=$m
+    done
+  done
+  for t in "${tools[@]}"; do
+    made=$(find "$OUT/$t" -type f 2>/dev/null | wc -l)
+    first=$(find "$OUT/$t" -type f 2>/dev/null | sort | head -n 1)
+    if [ "$made" -eq 0 ] || [ "$made" -gt "$files" ] || ! $check "$first"; then
+      json "$batch" "$t" "\"failed\":\"$made of $files outputs, or a wrong one: ${first:-none}; $(head -c 200 "$WORK/err-$t" | tr '\n"\\' '   ')\""
+      continue
+    fi
+    extra=""
+    [ "$t" = assimp ] && extra=',"to":"obj"'
+    [ "$made" -lt "$files" ] && extra+=$(printf ',"failed_files":%d,"first_error":"%s"' "$((files - made))" \
+      "$(grep -m1 -i 'error\|fault' "$WORK/err-$t" | head -c 200 | tr '"\\' '  ')")
+    json "$batch" "$t" "$(printf '"files":%d,"seconds":%.2f,"files_per_s":%.1f,"cpu_ms_per_file":%.1f,"peak_rss_mb":%.1f,"out_mb":%.1f%s' \
+      "$files" "${secs[$t]}" "$(awk -v n="$files" -v s="${secs[$t]}" 'BEGIN { print (s > 0 ? n / s : 0) }')" \
+      "$(awk -v n="$files" -v c="${cpu[$t]}" 'BEGIN { print 1000 * c / n }')" \
+      "$(awk -v k="${peak[$t]}" 'BEGIN { print k / 1024 }')" "$(du -sk "$OUT/$t" | awk '{print $1 / 1024}')" "$extra")"
+  done
 }
 # The outputs are checked with fconv --info (an independent reader would be better, but
 # each competitor's output is read by fest here, and fest's own by the same code).
@@ -166,55 +187,58 @@ done
 # resize ------------------------------------------------------------------------------
 { head_mk resize fest; printf 'FEST_BIN := %s\nFEST_OUT := $(OUT)\ninclude %s/Makefile.inc\n' "$BIN" "$root"
   printf 'all: $(patsubst %%,$(FEST_OUT)/resized/%%.png,$(basename $(IMGS)))\n'; } >"$MK/resize-fest.mk"
-want fest && run resize fest "$N" is_256x192
+tools=(); want fest && tools+=(fest)
 if ! want vips; then :; elif have vips; then
   { head_mk resize vips; printf 'all: $(patsubst %%,$(OUT)/%%.png,$(basename $(IMGS)))\n'
     printf '$(OUT)/%%.png: %%.%s ; @mkdir -p $(@D) && vips resize $< $@ 0.5 --kernel lanczos3\n' png jpg; } >"$MK/resize-vips.mk"
-  run resize vips "$N" is_256x192
+  tools+=(vips)
 else skip resize vips "vips not installed (libvips-tools)"; fi
 if ! want netpbm; then :; elif have jpegtopnm && have pamscale && have pnmtopng; then
   { head_mk resize netpbm; printf 'all: $(patsubst %%,$(OUT)/%%.png,$(basename $(IMGS)))\n'
     printf '$(OUT)/%%.png: %%.%s ; @mkdir -p $(@D) && %s -quiet $< | pamscale -quiet -width 256 -height 192 -filter=lanczos | pnmtopng -quiet >$@\n' \
       png pngtopam jpg jpegtopnm; } >"$MK/resize-netpbm.mk"
-  run resize netpbm "$N" is_256x192
+  tools+=(netpbm)
 else skip resize netpbm "netpbm not installed"; fi
 if ! want imagemagick; then :; elif [ -n "$IM" ]; then
   { head_mk resize imagemagick; printf 'all: $(patsubst %%,$(OUT)/%%.png,$(basename $(IMGS)))\n'
     printf '$(OUT)/%%.png: %%.%s ; @mkdir -p $(@D) && %s $< -filter Lanczos -resize 256x192 $@\n' png "$IM" jpg "$IM"; } >"$MK/resize-imagemagick.mk"
-  run resize imagemagick "$N" is_256x192
+  tools+=(imagemagick)
 else skip resize imagemagick "ImageMagick not installed"; fi
+batch resize "$N" is_256x192 "${tools[@]}"
 
 # convert -----------------------------------------------------------------------------
 { head_mk convert fest; printf 'FEST_BIN := %s\nFEST_OUT := $(OUT)\ninclude %s/Makefile.inc\n' "$BIN" "$root"
   printf 'all: $(patsubst %%,$(FEST_OUT)/%%.png,$(basename $(JPGS)))\n'; } >"$MK/convert-fest.mk"
-want fest && run convert fest "$n_jpg" is_512x384
+tools=(); want fest && tools+=(fest)
 if ! want vips; then :; elif have vips; then
   { head_mk convert vips; printf 'all: $(patsubst %%,$(OUT)/%%.png,$(basename $(JPGS)))\n'
     printf '$(OUT)/%%.png: %%.jpg ; @mkdir -p $(@D) && vips copy $< $@\n'; } >"$MK/convert-vips.mk"
-  run convert vips "$n_jpg" is_512x384
+  tools+=(vips)
 else skip convert vips "vips not installed (libvips-tools)"; fi
 if ! want netpbm; then :; elif have jpegtopnm && have pnmtopng; then
   { head_mk convert netpbm; printf 'all: $(patsubst %%,$(OUT)/%%.png,$(basename $(JPGS)))\n'
     printf '$(OUT)/%%.png: %%.jpg ; @mkdir -p $(@D) && jpegtopnm -quiet $< | pnmtopng -quiet >$@\n'; } >"$MK/convert-netpbm.mk"
-  run convert netpbm "$n_jpg" is_512x384
+  tools+=(netpbm)
 else skip convert netpbm "netpbm not installed"; fi
 if ! want imagemagick; then :; elif [ -n "$IM" ]; then
   { head_mk convert imagemagick; printf 'all: $(patsubst %%,$(OUT)/%%.png,$(basename $(JPGS)))\n'
     printf '$(OUT)/%%.png: %%.jpg ; @mkdir -p $(@D) && %s $< $@\n' "$IM"; } >"$MK/convert-imagemagick.mk"
-  run convert imagemagick "$n_jpg" is_512x384
+  tools+=(imagemagick)
 else skip convert imagemagick "ImageMagick not installed"; fi
+batch convert "$n_jpg" is_512x384 "${tools[@]}"
 
 # ply2off -----------------------------------------------------------------------------
 { head_mk ply2off fest; printf 'FEST_BIN := %s\nFEST_OUT := $(OUT)\ninclude %s/Makefile.inc\n' "$BIN" "$root"
   printf 'all: $(patsubst %%.ply,$(FEST_OUT)/%%.off,$(PLYS))\n'; } >"$MK/ply2off-fest.mk"
-want fest && run ply2off fest "$N" is_mesh
+tools=(); want fest && tools+=(fest)
 if ! want ctmconv; then :; elif have ctmconv; then
   { head_mk ply2off ctmconv; printf 'all: $(patsubst %%.ply,$(OUT)/%%.off,$(PLYS))\n'
     printf '$(OUT)/%%.off: %%.ply ; @mkdir -p $(@D) && ctmconv $< $@ >/dev/null\n'; } >"$MK/ply2off-ctmconv.mk"
-  run ply2off ctmconv "$N" is_mesh
+  tools+=(ctmconv)
 else skip ply2off ctmconv "ctmconv not installed (openctm-tools)"; fi
 if ! want assimp; then :; elif have assimp; then
   { head_mk ply2off assimp; printf 'all: $(patsubst %%.ply,$(OUT)/%%.obj,$(PLYS))\n'
     printf '$(OUT)/%%.obj: %%.ply ; @mkdir -p $(@D) && assimp export $< $@ -fobjnomtl >/dev/null\n'; } >"$MK/ply2off-assimp.mk"
-  extra=',"to":"obj"' run ply2off assimp "$N" is_mesh
+  tools+=(assimp)
 else skip ply2off assimp "assimp not installed (assimp-utils)"; fi
+batch ply2off "$N" is_mesh "${tools[@]}"

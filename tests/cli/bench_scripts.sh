@@ -23,7 +23,7 @@ done
 case_ "bad arguments"
 bash "$bench/batch.sh" --files 1 >"$out" 2>"$err"; rc=$?
 expect_status 2
-expect_stderr_has '^batch.sh: --files needs a whole number >= 2$'
+expect_stderr_has '^batch.sh: --files needs a whole number from 2 to 9999$'
 bash "$bench/batch.sh" --frobnicate >"$out" 2>"$err"; rc=$?
 expect_status 2
 expect_stderr_has "^batch.sh: unknown argument '--frobnicate'"
