@@ -6,7 +6,7 @@
 #   tests/bench/batch.sh [--files N] [--bin DIR] [--jobs J] [--tools LIST]
 #
 # defaults: 1000 files, build/bin, make -j2, every tool (LIST: comma-separated among fest,
-# vips, netpbm, imagemagick, ctmconv, assimp). About 6 minutes with N = 1000 on 2 cores;
+# vips, netpbm, imagemagick, ctmconv, assimp). N = 1000 took 20 minutes on 2 cores at load 15;
 # KEEP=1 keeps the temporary folder (its path is in the "inputs" line).
 #
 # Needs the real data of scripts/fetch-test-data.sh ($FEST_TESTDATA, default
