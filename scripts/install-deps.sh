@@ -58,6 +58,7 @@ TEST_TOOL_PKGS=(
   libzfp-dev zfp libblosc-dev libzstd-dev zstd   # anchors of tests/bench/volwave.sh (bench_volwave links ZFP, Blosc, zstd)
   assimp-utils assimp-testmodels  # `assimp info`: independent mesh reader (tests/interop, fconv_assimp) and its test models
   libmeshoptimizer-dev libcgal-dev   # anchors of tests/bench/bench_decimate (meshopt_simplify, CGAL edge_collapse); built only when found
+  netpbm openctm-tools hyperfine   # tests/bench/batch.sh and startup.sh only: netpbm and ctmconv anchors, hyperfine timings
 )
 
 # --- arguments ----------------------------------------------------------------
