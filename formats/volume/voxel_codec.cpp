@@ -30,19 +30,19 @@ T load(const unsigned char* p, bool big_endian) noexcept {
   return value;
 }
 
+// Writes into a buffer sized beforehand: appending to a std::string voxel by voxel cost
+// a quarter of `volwave decode` on a CT head (callgrind).
 template <typename T>
-void store(T value, bool big_endian, std::string& out) {
+void store(T value, bool big_endian, char* to) noexcept {
   using U = std::conditional_t<sizeof(T) == 1, std::uint8_t,
             std::conditional_t<sizeof(T) == 2, std::uint16_t,
             std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
   U bits;
   std::memcpy(&bits, &value, sizeof(T));
-  char bytes[sizeof(T)];
   for (std::size_t i = 0; i < sizeof(T); ++i) {
     const std::size_t shift = 8 * (big_endian ? sizeof(T) - 1 - i : i);
-    bytes[i] = static_cast<char>((bits >> shift) & 0xff);
+    to[i] = static_cast<char>((bits >> shift) & 0xff);
   }
-  out.append(bytes, sizeof(T));
 }
 
 template <typename T>
@@ -79,14 +79,16 @@ float to_float(double v) noexcept {
 
 template <typename T>
 void encode_as(const std::vector<double>& values, bool big_endian, std::string& out) {
-  out.reserve(values.size() * sizeof(T));
+  out.resize(values.size() * sizeof(T));
+  char* to = out.data();
   for (double v : values) {
     if constexpr (std::is_same_v<T, float>)
-      store<float>(to_float(v), big_endian, out);
+      store<float>(to_float(v), big_endian, to);
     else if constexpr (std::is_same_v<T, double>)
-      store<double>(v, big_endian, out);
+      store<double>(v, big_endian, to);
     else
-      store<T>(to_integer<T>(v), big_endian, out);
+      store<T>(to_integer<T>(v), big_endian, to);
+    to += sizeof(T);
   }
 }
 
