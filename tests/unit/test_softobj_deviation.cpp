@@ -4,13 +4,13 @@
 // convex surface (every vertex on it) loses at most area x maximum deviation of volume.
 #include <cmath>
 #include <cstdlib>
-#include <random>
 
 #include <gtest/gtest.h>
 
 #include "softobj/field.hpp"
 #include "softobj/mesh_measures.hpp"
 #include "softobj/shrinkwrap.hpp"
+#include "softobj_random_strip.hpp"
 
 using namespace fest::softobj;
 
@@ -93,19 +93,7 @@ TEST(SoftobjDeviation, TighterToleranceMoreTrianglesAndAnisotropy) {
 // 4 strips in the suite; SOFTOBJ_MANY=1 runs 40 (the stress run of docs/softobj.md §6).
 TEST(SoftobjDeviation, RandomStripsClosedOnSurface) {
   for (unsigned seed = 1; seed <= (std::getenv("SOFTOBJ_MANY") ? 40u : 4u); ++seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-1, 1);
-    std::uniform_int_distribution<int> count(1, 20);
-    const int n = count(rng);
-    Skeleton s;
-    s.vertices = {{0, 0, 0}, {4, 0, 0}};
-    for (int i = 0; i < n; ++i) {
-      const Eigen::Vector3d a = s.vertices[s.vertices.size() - 2], b = s.vertices.back();
-      Eigen::Vector3d step(u(rng), u(rng), 0.4 * u(rng));
-      s.vertices.push_back(0.5 * (a + b) + 4 * step.normalized());
-      s.triangles.push_back({static_cast<int>(s.vertices.size()) - 3, static_cast<int>(s.vertices.size()) - 2,
-                             static_cast<int>(s.vertices.size()) - 1});
-    }
+    const Skeleton s = fest::softobj::testing::random_strip(seed);
     const Field f(compile_terms(s));
     ShrinkwrapOptions o;
     o.iso = 1.0 / 3;

@@ -9,24 +9,14 @@
 #include "softobj/field.hpp"
 #include "softobj/mesh_measures.hpp"
 #include "softobj/shrinkwrap.hpp"
+#include "softobj_random_strip.hpp"
 
 using namespace fest::softobj;
 
 TEST(SoftobjRandom, StripsAreClosedOnSurfaceAndAcceptable) {
   for (unsigned seed = 1; seed <= 6; ++seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-1, 1);
-    std::uniform_int_distribution<int> count(1, 20);
-    const int n = count(rng);
-    Skeleton s;
-    s.vertices = {{0, 0, 0}, {4, 0, 0}};
-    for (int i = 0; i < n; ++i) {
-      const Eigen::Vector3d a = s.vertices[s.vertices.size() - 2], b = s.vertices.back();
-      Eigen::Vector3d step(u(rng), u(rng), 0.4 * u(rng));
-      s.vertices.push_back(0.5 * (a + b) + 4 * step.normalized());
-      s.triangles.push_back({static_cast<int>(s.vertices.size()) - 3, static_cast<int>(s.vertices.size()) - 2,
-                             static_cast<int>(s.vertices.size()) - 1});
-    }
+    int n = 0;
+    const Skeleton s = fest::softobj::testing::random_strip(seed, &n);
     const Field f(compile_terms(s));
     ShrinkwrapOptions o;
     o.iso = 1.0 / 3;  // rho = 3
