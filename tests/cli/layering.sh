@@ -249,6 +249,7 @@ LITERALS_AWK='
             if (e > 0) { i += e + length(delim) + 1; continue }
             break
           }
+          if (c == "\x27" && i > 1 && substr(line, i - 1, 1) ~ /[0-9A-Fa-f]/) { i++; continue }  # digit separator
           if (c == "\x27") {  # character literal
             i++; while (i <= n && substr(line, i, 1) != "\x27") { if (substr(line, i, 1) == "\\") i++; i++ }
             i++; continue
