@@ -41,10 +41,26 @@ FLAG_EXCEPTIONS=(
 )
 
 KNOWN_VIOLATIONS=(
+  # formats/facemodel still includes the face model type from lib/facefit (issue 20 moves it).
   "formats/facemodel/import.hpp: formats-include: lib/facefit/model.hpp"
   "formats/facemodel/landmarks_io.hpp: formats-include: lib/facefit/landmark_set.hpp"
   "formats/facemodel/landmarks_io.hpp: formats-include: lib/facefit/synth.hpp"
   "formats/facemodel/mmb.hpp: formats-include: lib/facefit/model.hpp"
+  # A tool including another tool's files.
+  "tools/ebdecode/main.cpp: tool-include: tools/ebcode/mesh_soup.hpp"
+  # A test compiling a tool's source instead of linking fest_<tool>_app.
+  "tests/unit/CMakeLists.txt: test-compiles-tool: tools/brdffit/gltf_export.cpp"
+  # Tools whose command files are not yet the library fest_<tool>_app.
+  "tools/brdffit: tool-app: no fest_brdffit_app library for its other .cpp files"
+  "tools/capture: tool-app: no fest_capture_app library for its other .cpp files"
+  "tools/facefit: tool-app: no fest_facefit_app library for its other .cpp files"
+  "tools/fluidsim: tool-app: no fest_fluidsim_app library for its other .cpp files"
+  "tools/hdrmerge: tool-app: no fest_hdrmerge_app library for its other .cpp files"
+  "tools/lmfsim: tool-app: no fest_lmfsim_app library for its other .cpp files"
+  "tools/resample: tool-app: no fest_resample_app library for its other .cpp files"
+  "tools/segbrain: tool-app: no fest_segbrain_app library for its other .cpp files"
+  "tools/terrainlod: tool-app: no fest_terrainlod_app library for its other .cpp files"
+  # Messages in lib/ that name the tools' flags instead of the domain's terms.
   "lib/brdffit/cluster.cpp: flag-in-lib: --clusters"
   "lib/brdffit/cluster.cpp: flag-in-lib: --global-iters"
   "lib/brdffit/cluster.cpp: flag-in-lib: --min-cluster"
@@ -107,17 +123,6 @@ KNOWN_VIOLATIONS=(
   "lib/terrainlod/pyramid_plan.cpp: flag-in-lib: --texels"
   "lib/terrainlod/pyramid_plan.cpp: flag-in-lib: --tile"
   "lib/terrainlod/simplify.cpp: flag-in-lib: --max-error"
-  "tests/unit/CMakeLists.txt: test-compiles-tool: tools/brdffit/gltf_export.cpp"
-  "tools/brdffit: tool-app: no fest_brdffit_app library for its other .cpp files"
-  "tools/capture: tool-app: no fest_capture_app library for its other .cpp files"
-  "tools/ebdecode/main.cpp: tool-include: tools/ebcode/mesh_soup.hpp"
-  "tools/facefit: tool-app: no fest_facefit_app library for its other .cpp files"
-  "tools/fluidsim: tool-app: no fest_fluidsim_app library for its other .cpp files"
-  "tools/hdrmerge: tool-app: no fest_hdrmerge_app library for its other .cpp files"
-  "tools/lmfsim: tool-app: no fest_lmfsim_app library for its other .cpp files"
-  "tools/resample: tool-app: no fest_resample_app library for its other .cpp files"
-  "tools/segbrain: tool-app: no fest_segbrain_app library for its other .cpp files"
-  "tools/terrainlod: tool-app: no fest_terrainlod_app library for its other .cpp files"
 )
 
 found="$WORK/found"
