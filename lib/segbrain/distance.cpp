@@ -1,4 +1,4 @@
-// Exact Euclidean distance transform and the ball morphology built on it (spec §2.4,
+// Exact Euclidean distance transform and the ball morphology built on it (docs/segbrain.md §3,
 // §7: O(N) for any radius).
 //
 // Separable: the first pass (along x, contiguous) needs only the nearest target of the
