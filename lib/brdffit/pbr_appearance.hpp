@@ -36,8 +36,8 @@ namespace fest::brdffit {
 double pbr_roughness(const reflectance::LafortuneBrdf& brdf);
 
 // A blend sum_j t_j f_j: base colour sum_j t_j rho_d,j (per channel; exact, the diffuse
-// term is linear in the weights), roughness of the f_j with the largest |t_j| (spec: "of
-// the dominant basis BRDF"). `weights` holds one weight per BRDF, or 3 per BRDF
+// term is linear in the weights), roughness of the f_j with the largest |t_j| (docs/brdffit.md §6), i.e. of
+// the dominant basis BRDF. `weights` holds one weight per BRDF, or 3 per BRDF
 // channel-major (3 x count) when rgb.
 PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdfs, const float* weights, bool rgb);
 // The same with each BRDF's pbr_roughness given (baking evaluates millions of texels).
