@@ -1,4 +1,4 @@
-// brdffit materials stages on bird-size synthetic data (specs/brdffit.md §7): 1.9 M
+// brdffit materials stages on bird-size synthetic data (docs/brdffit.md §7): 1.9 M
 // lumitexels with 6.3 samples each (alternately 6 and 7... on average 6.3) of five known
 // materials on random normals, 1 % noise; for the normal stage the stored normals are
 // then tilted by 5..12 degrees (a bump map the mesh lacks). Prints one JSON line per stage (cluster --clusters 5, project --basis 4,

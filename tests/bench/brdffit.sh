@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# brdffit geometry stages on bird-size synthetic data (specs/brdffit.md §7): 25 views of
+# brdffit geometry stages on bird-size synthetic data (docs/brdffit.md §7): 25 views of
 # 3040x2008 (6 Mpixel) of a 20,480-triangle sphere with 5 materials, one point light,
 # about 1.9 million lumitexels. One JSON line per stage with wall and CPU seconds and
 # peak memory, the spec's target and the paper's time (SGI Octane 300 MHz, chapter 8
