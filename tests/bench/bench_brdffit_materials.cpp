@@ -5,7 +5,7 @@
 // normals) with seconds, peak memory and the stage's accuracy against the truth, next to
 // the targets of §7 and the paper's figures (SGI Octane 300 MHz: clustering + projection
 // about 1.5 h for the same data). The paper's method has no public implementation to run
-// as a same-run anchor (spec §6), so its published hours are printed instead.
+// as a same-run anchor (docs/brdffit.md §7), so its published hours are printed instead.
 //
 //   bench_brdffit_materials [--lumitexels N] [--threads T]
 //
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
         {"peak_rss_mb", peak_rss_mb()}, {"paper", "clustering + projection ~1.5 h on an SGI Octane 300 MHz"}});
 
   // normals: from the mesh normals (tilted), against the projection made with the true
-  // ones (clustering and projection are measured on correct geometry, spec §5 tests 4-5;
+  // ones (clustering and projection are measured on correct geometry, docs/brdffit.md §5;
   // the normal stage on perturbed geometry, test 6).
   for (std::size_t i = 0; i < count; ++i) set.lumitexels[i].n = mesh_n[i].cast<float>();
   t0 = Clock::now();

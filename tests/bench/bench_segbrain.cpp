@@ -1,4 +1,4 @@
-// Operator throughputs of spec §7 on a synthetic head volume (single thread): threshold,
+// Operator throughputs (docs/segbrain.md §5) on a synthetic head volume (single thread): threshold,
 // separable Gaussian (sigma 2 mm), 3-D connected components, exact EDT; also erosion by
 // 3 mm and 3-D hole filling, then the same with every core. One JSON line per operator:
 // the median of 5 runs, wall and CPU seconds. Never fails on timing.

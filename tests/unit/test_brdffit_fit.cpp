@@ -15,7 +15,7 @@ using fest::reflectance::Rgb;
 
 namespace {
 
-LafortuneBrdf one_lobe() {  // spec §5 test 2
+LafortuneBrdf one_lobe() {  // docs/brdffit.md §3
   LafortuneBrdf b;
   b.rho_d = Rgb::Constant(0.3);
   b.lobes = {LafortuneLobe{Rgb::Constant(-1.0), Rgb::Constant(1.0), Rgb::Constant(40)}};

@@ -80,7 +80,7 @@ void recovers_a_perturbed_pose(bool FIX_FOCAL) {
               rot, 100 * dist, 100 * std::abs(r.camera.fx / truth.fx - 1), r.xor_cost, r.evaluations);
   EXPECT_LT(r.xor_cost, 0.01);
   // A smooth blob shows out-of-plane tilts only through its foreshortening, so the pose
-  // is bound loosely here; the bunny below carries the spec's 0.1 degree / 0.1 % check.
+  // is bound loosely here; the bunny below carries the 0.1 degree / 0.1 % check of docs/brdffit.md §7.
   EXPECT_LT(rot, 5.0);  // from 10
   if (FIX_FOCAL) {
     EXPECT_LT(dist, 0.01);

@@ -1,6 +1,6 @@
 // Globally linear fields are reproduced exactly by the piecewise-linear interpolant, so
 // the locally exact method must follow the analytic solution x(t) = exp(tA) x0 +
-// t phi1(tA) b to round-off on any grid (spec §5, tests 1, 2 and 9). The expected
+// t phi1(tA) b to round-off on any grid (docs/lemtrace.md §2, §5). The expected
 // values come from the mathematics: the exponential of the known A (Eigen's Pade
 // scaling-and-squaring) and, for the rotations, cos/sin directly.
 
@@ -110,7 +110,7 @@ TEST(LemtraceAnalytic, CircleTestTenRevolutions) {
   for (const Vec3& x : line.x) drift = std::max({drift, std::abs(std::hypot(x[0], x[1]) - 0.7), std::abs(x[2] - 0.05)});
   EXPECT_LE(drift, 1e-10);
   EXPECT_NEAR(line.t.back(), 20 * M_PI, 1e-12);
-  // Heun at 0.2 cell lengths drifts visibly; RK4 less; the LEM not at all (spec §5.2).
+  // Heun at 0.2 cell lengths drifts visibly; RK4 less; the LEM not at all (docs/lemtrace.md §5).
   TraceOptions rk = o;
   rk.method = Method::heun;
   double heun = 0, rk4 = 0;
@@ -197,7 +197,7 @@ TEST(LemtraceAnalytic, PaperNewtonAgreesWithBracket) {
 }
 
 TEST(LemtraceAnalytic, BackwardReturnsToSeed) {
-  // Time reversibility (spec §5.5).
+  // Time reversibility (docs/lemtrace.md §2).
   const FieldGrid grid = make_grid("spiral", 6, 0.2, false);
   TraceOptions o;
   o.max_steps = 40;

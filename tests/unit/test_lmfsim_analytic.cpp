@@ -1,4 +1,4 @@
-// Analytic and reference cases of spec §3/§5: pendulum periods, normal modes, the chaotic
+// Analytic and reference cases of docs/lmfsim.md §7: pendulum periods, normal modes, the chaotic
 // double pendulum against the reduced-coordinate reference, constraint drift with and
 // without stabilisation, the Baumgarte decay law, the four-bar against its 1-DOF
 // equation, rod tension, a motor's first-order feedback and a free body's invariants.

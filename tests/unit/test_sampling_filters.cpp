@@ -1,5 +1,5 @@
 // Dual prefilters, the ideal (DCT) resampler, the local clamp, highlight compression and
-// kernel analysis (spec §2.2, §2.4, §2.10, §5).
+// kernel analysis (docs/resample.md "The 1-D chain and the optimal prefilter", "Separable passes and their order", "Kernels and their responses").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -136,7 +136,7 @@ TEST(SamplingAnalysis, ResponsesMatchClosedForms) {
   EXPECT_EQ(box.overshoot, 0);
   const auto bs = analyse_kernel(make_kernel("bspline"));
   EXPECT_NEAR(bs.k_half, std::pow(2 / pi, 4), 1e-5);
-  // Lanczos3's step response overshoots by the spec table's 0.0731.
+  // Lanczos3's step response overshoots by 0.0731 (docs/resample.md "Kernels and their responses").
   const auto l3 = analyse_kernel(make_kernel("lanczos3"));
   EXPECT_NEAR(l3.overshoot, 0.0731, 1e-4);
   EXPECT_NEAR(l3.k_quarter, 1.0114, 1e-4);
@@ -225,7 +225,7 @@ TEST(SamplingResize, HalfPixelShiftOfABandLimitedSine) {
   // Spec §5 translation consistency: --shift 0.5 of a sine of f = 0.1 is the sine shifted by
   // half a pixel, in phase exactly (the taps are symmetric about the new centre), with the
   // amplitude the normalised half-sample taps give: Σ w cos(2πfd) / Σ w over d = ±½, ±3/2, ...
-  // That is 1.0034 for lanczos3 -- the spec's 1e-3 does not hold for it -- and closer to 1
+  // That is 1.0034 for lanczos3 -- a 1e-3 bound does not hold for it -- and closer to 1
   // for longer windows.
   const int n = 200;
   const double f = 0.1;

@@ -1,5 +1,5 @@
-// Kernel catalogue (spec resample.md §2.3): closed-form values, partition of unity,
-// frequency responses against the spec's kernel table (§3, Z1 table columns K(0.25), K(0.5)),
+// Kernel catalogue (docs/resample.md "Kernels and their responses"): closed-form values, partition of unity,
+// frequency responses against the kernel table of docs/resample.md "Figures reproduced" (Z1 table columns K(0.25), K(0.5)),
 // and lookup errors.
 #include <gtest/gtest.h>
 
