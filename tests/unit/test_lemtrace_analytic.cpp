@@ -219,7 +219,7 @@ TEST(LemtraceAnalytic, SeedOutsideIsNotInitialized) {
 }
 
 TEST(LemtraceAnalytic, RungeKuttaConvergesToTheSamePath) {
-  // Spec §5.4: RK45 at a tight tolerance on the same piecewise-linear field agrees.
+  // docs/lemtrace.md §5: RK45 at a tight tolerance on the same piecewise-linear field agrees.
   bool linear = false;
   const LinearField f = linear_kind("helix", &linear);
   const FieldGrid grid = make_grid("helix", 6, 0.2, false);
@@ -244,7 +244,7 @@ double stream_function(const Vec3& x) {
 }
 
 TEST(LemtraceAnalytic, NonlinearFieldConvergesAtTheInterpolationOrder) {
-  // Spec §5.3: the LEM is exact for the piecewise-linear field, so its drift in psi is
+  // docs/lemtrace.md §5: the LEM is exact for the piecewise-linear field, so its drift in psi is
   // the interpolation error, O(h^2): from n = 8 to n = 32 (two halvings of h) it must
   // shrink by at least 3.5^2.
   double drift[2] = {0, 0};

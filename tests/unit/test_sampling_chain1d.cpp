@@ -38,7 +38,7 @@ TEST(SamplingChain1d, IdealLowPassRemovesTheSignal) {
 }
 
 TEST(SamplingChain1d, DerivedChainTable) {
-  // Spec §3 "Derived chain table", ±1e-4: MSE for the dual, box, ideal and p = r prefilters.
+  // docs/resample.md "Figures reproduced", derived chain table, ±1e-4: MSE for the dual, box, ideal and p = r prefilters.
   struct Row {
     const char* display;
     double f, dual, box, ideal, same;

@@ -147,7 +147,7 @@ TEST(SamplingAnalysis, ResponsesMatchClosedForms) {
 }
 
 TEST(SamplingMipKernel, BoxPyramidKernelIsASpaceVariantBlendOfTwoBoxes) {
-  // Spec C4 (Fig. 10.12): level 3, positions 12.0 and 14.4.
+  // docs/resample.md "Figures reproduced" C4 (Fig. 10.12): level 3, positions 12.0 and 14.4.
   const auto a = mip_kernel_1d(3, 12.0, MipBuild::box), b = mip_kernel_1d(3, 14.4, MipBuild::box);
   double sa = 0, sb = 0;
   for (double w : a) sa += w;
@@ -194,7 +194,7 @@ TEST(SamplingMetrics, IdealZonePlateHasNoAliasAndFullPassBand) {
 }
 
 TEST(SamplingSlopePyramid, KeepsTheRoughnessOfASineHeightField) {
-  // Spec N1: h = sin(2πx/16) on 1024² texels. Central differences give slopes
+  // docs/resample.md "Figures reproduced" N1: h = sin(2πx/16) on 1024² texels. Central differences give slopes
   // cos(·) sin(2π/16); levels ≥ 4 hold whole periods: mean 0, S.xx = sin²(2π/16)/2.
   const int n = 1024;
   FloatImage h(n, n, 1);
@@ -222,7 +222,7 @@ TEST(SamplingSlopePyramid, KeepsTheRoughnessOfASineHeightField) {
 }
 
 TEST(SamplingResize, HalfPixelShiftOfABandLimitedSine) {
-  // Spec §5 translation consistency: --shift 0.5 of a sine of f = 0.1 is the sine shifted by
+  // docs/resample.md "Figures reproduced", translation consistency: --shift 0.5 of a sine of f = 0.1 is the sine shifted by
   // half a pixel, in phase exactly (the taps are symmetric about the new centre), with the
   // amplitude the normalised half-sample taps give: Σ w cos(2πfd) / Σ w over d = ±½, ±3/2, ...
   // That is 1.0034 for lanczos3 -- a 1e-3 bound does not hold for it -- and closer to 1

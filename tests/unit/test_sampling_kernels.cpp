@@ -121,7 +121,7 @@ TEST(SamplingKernels, ClosedFormResponses) {
 }
 
 TEST(SamplingKernels, ResponsesMatchSpecTable) {
-  // Spec §3, zone-plate table: K(0.25) and K(0.5) of the (truncated) resize kernels,
+  // docs/resample.md "Figures reproduced", zone-plate table: K(0.25) and K(0.5) of the (truncated) resize kernels,
   // printed to 4 decimals.
   struct Row {
     const char* name;
