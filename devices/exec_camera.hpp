@@ -1,6 +1,6 @@
 #pragma once
-// A camera driven by an external command (URI `exec:CMD-TEMPLATE`, specs/capture.md
-// §2.2), e.g. the gphoto2 CLI for DSLRs:
+// A camera driven by an external command (URI `exec:CMD-TEMPLATE`, docs/capture.md
+// §4), e.g. the gphoto2 CLI for DSLRs:
 //   exec:gphoto2 --set-config shutterspeed={shutter} --capture-image-and-download --filename {out}
 // Placeholders: {out} (the file the command must write), {exposure_s} (seconds),
 // {shutter} (1/250 style below 1 s, else seconds), {iso} (empty: no ISO control here),

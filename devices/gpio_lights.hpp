@@ -1,5 +1,5 @@
 #pragma once
-// Lights on GPIO output lines through libgpiod 1.6 (uAPI v1), specs/capture.md §2.4:
+// Lights on GPIO output lines through libgpiod 1.6 (uAPI v1), docs/lights.md §3:
 //
 //   gpio:chip=gpiochip0,line=GPIO17[,active_low]     line by name or by offset ("17")
 //

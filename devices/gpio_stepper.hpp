@@ -1,6 +1,6 @@
 #pragma once
 // A turntable on a step/dir stepper driver (A4988, DRV8825, TMC2208/2209) wired to GPIO
-// lines, driven through libgpiod 1.6 (specs/capture.md §2.4): the host generates the
+// lines, driven through libgpiod 1.6 (docs/turntable.md §3): the host generates the
 // step train with a trapezoidal profile on a worker thread, so move_abs returns at once
 // and status() reports progress like any Turntable.
 //

@@ -1,6 +1,6 @@
 #pragma once
 // libgpiod v1 helpers shared by the GPIO backends (lights, step/dir stepper): chip and
-// line lookup and requests, with errno mapped to DESIGN.md's device statuses. Internal
+// line lookup and requests, with errno mapped to the device exit statuses 5-8 (README "Conventions"). Internal
 // to devices/.
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Device URI -> backend, for every tool that drives a station (turntable, lights,
-// capture). specs/capture.md §2.2 lists the URIs.
+// capture). docs/capture.md §4 lists the URIs.
 //
 //   open_turntable("usb:1209:0001#SN7")  TTP/1 over libusb       (devices/usb_turntable)
 //   open_turntable("gpio-stepper:chip=gpiochip0,step=17,dir=27,steps=3200")  (devices/gpio_stepper)
@@ -9,7 +9,7 @@
 //   open_lights({{"L0", "usb-aux:0", false}, ...})    aux outputs of a TTP/1 controller
 //   open_lights({{"L0", "sim:", false}, ...})
 //
-// Errors are fest::Error with DESIGN.md's statuses (2 for a bad URI, 5-8 from devices).
+// Errors are fest::Error with the README's exit statuses ("Conventions": 2 for a bad URI, 5-8 from devices).
 
 #include <memory>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The "lights" array of a station.json (specs/capture.md §4, man 5 capture-station):
+// The "lights" array of a station.json (fest-capture(5)):
 //   "lights": [ {"id": "L0", "uri": "gpio:chip=gpiochip0,line=GPIO17", "active_low": false,
 //                "position_mm": [...], "intensity": [...], "warmup_ms": 300, "max_on_s": 120,
 //                "role": "backlight"}, ... ]

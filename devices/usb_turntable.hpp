@@ -1,11 +1,11 @@
 #pragma once
-// The USB turntable backend: a TTP/1 controller (specs/capture.md §2.3, man 7 ttp) spoken
+// The USB turntable backend: a TTP/1 controller (docs/turntable.md §3, ttp(7)) spoken
 // to through libusb-1.0 with vendor control transfers on EP0.
 //
 //   usb:[VID:PID][#SERIAL]      default 1209:0001; iProduct must start with "TTP/1";
 //                               #SERIAL selects one of several tables
 //
-// libusb errors become DESIGN.md statuses: device gone -> 5, STALL -> 6 with the fault
+// libusb errors become the device exit statuses: device gone -> 5, STALL -> 6 with the fault
 // code read back by GET_STATUS, transfer timeout (1000 ms) -> 7, access denied -> 8 with
 // the udev rule that fixes it.
 

@@ -1,6 +1,6 @@
 #pragma once
 // A V4L2 camera (URI `v4l2:/dev/video0[,fourcc=F][,width=W][,height=H]`,
-// specs/capture.md §2.2): UVC and machine-vision cameras driven through the kernel's
+// docs/capture.md §4.1): UVC and machine-vision cameras driven through the kernel's
 // V4L2 interface directly (linux/videodev2.h), the way v4l2-ctl and fswebcam do:
 // VIDIOC_QUERYCAP, ENUM_FMT/S_FMT, REQBUFS + mmap streaming, QBUF/DQBUF with a poll
 // timeout, STREAMON/OFF. Exposure is manual (V4L2_EXPOSURE_MANUAL); V4L2 counts

@@ -1,5 +1,5 @@
 #pragma once
-// Recognising input by its content (DESIGN.md: "never only by its name", a pipe has no
+// Recognising input by its content (never only by its name: a pipe has no
 // name) and naming output formats by extension or --to.
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // EXR with more than the pixels: extra named float channels (hdrmerge's "valid") and
-// header attributes (specs/capture.md §2.8: chromaticities, exposures, responseSha256,
+// header attributes (docs/hdrmerge.md §5: chromaticities, exposures, responseSha256,
 // turntableAngleDeg, lightId). read_image() reads such a file's R,G,B and skips a
 // "valid" channel; read_exr_channel() reads one named channel.
 

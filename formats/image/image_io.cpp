@@ -139,7 +139,7 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
       if (channels == 2) refuse(m, format, "fest's TIFF writer takes 1, 3 or 4 channels");
       return tiff_codec().encode(m);
     case Format::jpeg:
-      // Lossy compression has no place in a measurement pipeline (specs/capture.md §2.5);
+      // Lossy compression has no place in a measurement pipeline (docs/capture.md §3; seed 000 §8.3.1);
       // only a caller that asks for a quality gets it (texture tiles for display).
       if (options.jpeg_quality <= 0) refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
       if (depth != CV_8U || (channels != 1 && channels != 3)) refuse(m, format, "JPEG holds 8-bit grey or RGB");

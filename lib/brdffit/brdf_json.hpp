@@ -1,5 +1,5 @@
 #pragma once
-// JSON forms of brdffit's materials results (specs/brdffit.md §3): brdf.json (one
+// JSON forms of brdffit's materials results (brdffit(1)): brdf.json (one
 // Lafortune BRDF) and clusters.json (model, per-cluster parameters and covariance,
 // members, errors, split history). Readers validate and throw bad_input naming the field.
 

@@ -89,7 +89,7 @@ struct Clusterer {
     }
   }
   // The better (in E on the same subsample) of the warm-started refit and a fresh fit
-  // from §2.3's initialisation: a warm start inherits the search's lobe, which may be
+  // from docs/brdffit.md §3's initialisation: a warm start inherits the search's lobe, which may be
   // the compromise of a mixture or, projected onto the albedo bound, a narrow spike;
   // the fresh multi-start fit finds the broad lobe of a broad material (N = 5 of 5).
   FitResult refit_or_restart(const Members& m, const Eigen::VectorXd& start, int id) const {
@@ -218,7 +218,7 @@ std::vector<std::uint16_t> nearest_clusters(const LumitexelSet& set, const std::
 
 namespace {
 
-// §2.5's inner loop. Returns the two children (+, -) and the members of each, or nothing.
+// docs/brdffit.md §5's inner loop. Returns the two children (+, -) and the members of each, or nothing.
 struct SplitOutcome {
   FitResult plus, minus;
   Members plus_members, minus_members;

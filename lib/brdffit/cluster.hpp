@@ -1,10 +1,10 @@
 #pragma once
-// Material clustering by split and refit (specs/brdffit.md §2.5; chapter 8 §8.4.3):
+// Material clustering by split and refit (docs/brdffit.md §5; chapter 8 §8.4.3):
 // start with one cluster of all lumitexels and its fitted BRDF; repeatedly take the
 // cluster with the largest total error, move its parameters by +-kappa sigma_max along the
 // principal eigenvector of their covariance, let the members choose the nearer of the two
 // BRDFs and refit both until few change side, then reassign every lumitexel to its
-// nearest cluster. Distances are D(L, f) of §2.5.
+// nearest cluster. Distances are D(L, f) of docs/brdffit.md §5.
 
 #include <cstddef>
 #include <cstdint>
@@ -74,7 +74,7 @@ std::vector<std::uint16_t> nearest_clusters(const LumitexelSet& set, const std::
                                             const ModelSpec& model, const std::vector<Eigen::VectorXd>& params,
                                             int threads);
 
-// One split of a cluster as in §2.5 without replacing it (the projection's basis uses the
+// One split of a cluster as in docs/brdffit.md §5 without replacing it (the projection's basis uses the
 // two children): returns the children's parameters, or nothing when the cluster cannot be
 // split (fewer than two members with samples).
 std::vector<Eigen::VectorXd> trial_split(const LumitexelSet& set, const std::vector<FitSample>& local,

@@ -1,6 +1,6 @@
 #pragma once
-// A radiance sample reduced to what an isotropic BRDF fit needs (specs/brdffit.md §7:
-// "the clusterer keeps samples in local-frame f32 form (28 bytes each)"): the two
+// A radiance sample reduced to what an isotropic BRDF fit needs (docs/brdffit.md §3:
+// the clusterer keeps samples in local-frame f32 form, 28 bytes each): the two
 // products the Lafortune base is made of, the cosine u_z the radiance is multiplied by,
 // the normalised radiance r = f_r u_z per channel and the sample's weight.
 
@@ -20,7 +20,7 @@ struct FitSample {
   float r[3] = {0, 0, 0};
   float w = 1;
 };
-static_assert(sizeof(FitSample) == 28, "FitSample is the 28-byte record of spec §7");
+static_assert(sizeof(FitSample) == 28, "FitSample is the 28-byte record of docs/brdffit.md §3");
 
 // Local directions u, v (unit, z = normal) to a fit sample.
 FitSample make_fit_sample(const Eigen::Vector3d& u_local, const Eigen::Vector3d& v_local,

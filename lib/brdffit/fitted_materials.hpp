@@ -1,5 +1,5 @@
 #pragma once
-// Materials for the renderer from the materials side's result (specs/brdffit.md §4,
+// Materials for the renderer from the materials side's result (brdffit(1),
 // `render --svbrdf`): every triangle takes the BRDF f_C of the cluster most of its
 // lumitexels belong to (the per-cluster model of the chapter's Fig. 8.6; the per-lumitexel
 // blend weights of the .ltw are not carried to the surface). Triangles without a lumitexel

@@ -1,5 +1,5 @@
 #pragma once
-// The texture atlas of the photographs (specs/brdffit.md §2.9; chapter 8 §8.6.3, Fig.
+// The texture atlas of the photographs (docs/brdffit.md §4; chapter 8 §8.6.3, Fig.
 // 8.13): triangles are charted in the pixels of their home image (lumitexel_builder.hpp's
 // step 1), so the atlas holds the photographs' own pixels of the object, background
 // discarded. Texel centres fall on pixel centres (charts move by whole texels), so a texel

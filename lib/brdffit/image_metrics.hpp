@@ -1,5 +1,5 @@
 #pragma once
-// Photograph vs re-rendering (specs/brdffit.md §2.10 `eval`, chapter Fig. 8.17): errors
+// Photograph vs re-rendering (docs/brdffit.md §6, `eval`, chapter Fig. 8.17): errors
 // of linear radiance inside the mask and PSNR of the tone-mapped images.
 
 #include <opencv2/core.hpp>

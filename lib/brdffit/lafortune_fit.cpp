@@ -161,7 +161,7 @@ void seed_lobe(const ModelSpec& spec, Eigen::VectorXd& p, int k, double n, doubl
   if (!spec.shared) {
     const int m = 1 + 3 * spec.lobes;
     for (int c = 0; c < 3; ++c) {
-      // §2.3: C_z = -C_xy = (s (N + 2) / (2 pi))^(1/N).
+      // docs/brdffit.md §3: C_z = -C_xy = (s (N + 2) / (2 pi))^(1/N).
       const double scale = std::pow(peak[c] * (n + 2) / (2 * M_PI), 1 / n);
       p[c * m + 1 + 3 * k] = sxy * scale;
       p[c * m + 2 + 3 * k] = sz * scale;
@@ -178,7 +178,7 @@ void seed_lobe(const ModelSpec& spec, Eigen::VectorXd& p, int k, double n, doubl
 // Replaces the diffuse albedo and the scale of lobe k (its shape and N kept) by their
 // least-squares values: with the shape fixed, rho_d / pi u_z and A max(0, base)^N u_z are
 // linear in (rho_d, A), so each start begins at the best amplitude for its N instead of
-// the percentile guess of §2.3 (which, for a broad dim lobe, can be off by a factor of
+// the percentile guess of docs/brdffit.md §3 (which, for a broad dim lobe, can be off by a factor of
 // ten and send LM into a retro-reflective local minimum). Channels whose solution is not
 // positive keep the guess.
 void fit_lobe_amplitude(const ModelSpec& spec, Eigen::VectorXd& p, int k, const std::vector<FitSample>& s) {
@@ -314,7 +314,7 @@ FitResult fit_brdf(const std::vector<FitSample>& samples, const FitOptions& o) {
   std::vector<FitSample> storage;
   const std::vector<FitSample>& s = fit_set(samples, o, storage);
 
-  // Diffuse part: the 25th percentile of pi r / u_z per channel (§2.3).
+  // Diffuse part: the 25th percentile of pi r / u_z per channel (docs/brdffit.md §3).
   Eigen::VectorXd base = Eigen::VectorXd::Zero(np);
   for (int c = 0; c < 3; ++c) {
     std::vector<double> v;

@@ -1,8 +1,8 @@
 #pragma once
 // Fitting one Lafortune BRDF to radiance samples by Levenberg–Marquardt with the analytic
-// Jacobian (specs/brdffit.md §2.3): E(p) = sum_i w_i sum_c rho(r_i,c - f_c(p; u_i, v_i) u_i,z)
+// Jacobian (docs/brdffit.md §3): E(p) = sum_i w_i sum_c rho(r_i,c - f_c(p; u_i, v_i) u_i,z)
 // with rho the square (default) or Huber's function, log-N parameterisation, projection
-// onto the bounds after every step, the spec's initialisation and multi-start, and the
+// onto the bounds after every step, the initialisation and multi-start of docs/brdffit.md §3, and the
 // parameter covariance sigma^2 (J^T J)^-1 that the clustering's split step uses.
 
 #include <cstddef>
@@ -34,7 +34,7 @@ struct FitResult {
   Eigen::MatrixXd covariance;  // sigma^2 (J^T J)^+ in the parameter layout
   double energy = 0;           // E on the samples fitted
   double sigma2 = 0;           // E / (m - P)
-  double mean_squared = 0;     // D over all given samples (§2.5), after the fit
+  double mean_squared = 0;     // D over all given samples (docs/brdffit.md §5), after the fit
   std::size_t samples_used = 0;
   int iterations = 0;          // LM iterations of the winning start
 };
@@ -47,7 +47,7 @@ FitResult fit_brdf(const std::vector<FitSample>& samples, const FitOptions& opti
 // One LM run from the given parameters (the clustering's refits start from the parent).
 FitResult refine_brdf(const std::vector<FitSample>& samples, const Eigen::VectorXd& start, const FitOptions& options);
 
-// D(L, f) of §2.5 for samples [begin, end): weighted mean of the squared residual per
+// D(L, f) of docs/brdffit.md §5 for samples [begin, end): weighted mean of the squared residual per
 // channel. Returns 0 for an empty range.
 double mean_squared_residual(const ModelSpec& spec, const Eigen::VectorXd& p, const FitSample* begin,
                              const FitSample* end);
@@ -55,7 +55,7 @@ double mean_squared_residual(const ModelEvaluator& f, const FitSample* begin, co
 
 // The albedo bound in the data's units: spec.max_lobe_albedo times the median apparent
 // albedo pi r / u_z of the samples when that exceeds 1. Radiance calibrated against a
-// white target (§2.1) has a median apparent albedo below 1 and keeps the physical bound;
+// white target (docs/brdffit.md §1) has a median apparent albedo below 1 and keeps the physical bound;
 // uncalibrated radiance (light intensity in camera units, as hdrmerge's rigs have it)
 // scales the bound with the unknown intensity instead of crushing every lobe.
 double albedo_bound_in_data_units(double max_lobe_albedo, const std::vector<FitSample>& samples);

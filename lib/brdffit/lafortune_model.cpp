@@ -18,7 +18,7 @@ void check(const ModelSpec& s) {
 
 double clampd(double x, double lo, double hi) { return std::min(hi, std::max(lo, x)); }
 
-// pow(B, N) with its derivatives by B-linear coefficients and by log N (§2.3): zero where
+// pow(B, N) with its derivatives by B-linear coefficients and by log N (docs/brdffit.md §3): zero where
 // the base is not positive (the max(0, .) clamp).
 struct LobeTerm {
   double value = 0, d_base = 0, d_logn = 0;

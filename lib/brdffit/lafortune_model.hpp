@@ -1,5 +1,5 @@
 #pragma once
-// The Lafortune model as a parameter vector for fitting (specs/brdffit.md §2.2): the
+// The Lafortune model as a parameter vector for fitting (docs/brdffit.md §2): the
 // layout of the variants, their bounds, the model and its analytic derivatives per
 // channel, and the conversion to and from reflectance::LafortuneBrdf.
 //
@@ -21,12 +21,12 @@ struct ModelSpec {
   int lobes = 1;        // K, 1..3
   bool shared = false;  // --shared-lobe
   // Upper bound of every lobe's directional albedo (lobe_albedo.hpp), 0 = none. Energy
-  // conservation gives 1 for radiance calibrated against a white target (§2.1); without
+  // conservation gives 1 for radiance calibrated against a white target (docs/brdffit.md §1); without
   // it the bound scales with the light's unknown intensity (--max-lobe-albedo).
   double max_lobe_albedo = 1.0;
 };
 
-// Bounds of §2.2.
+// Bounds of docs/brdffit.md §2.
 inline constexpr double kMinExponent = 0.5;
 inline constexpr double kMaxExponent = 1e4;
 inline constexpr double kMaxCoefficient = 1e3;

@@ -1,5 +1,5 @@
 #pragma once
-// The .ltw weights file (specs/brdffit.md §3; man 5 ltw): brdffit's own format for the
+// The .ltw weights file (ltw(5)): brdffit's own format for the
 // result of `project`, so it lives with the algorithm as bytes in, bytes out.
 //
 //   8 bytes  magic "LUMIWGT1"

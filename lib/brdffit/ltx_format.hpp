@@ -1,5 +1,5 @@
 #pragma once
-// The .ltx lumitexel file (specs/brdffit.md §3, man/man5/ltx.5), little-endian, packed:
+// The .ltx lumitexel file (ltx(5), docs/brdffit.md §4), little-endian, packed:
 //
 //   8 bytes  magic "LUMITEX1"
 //   u32      length H of the header in bytes

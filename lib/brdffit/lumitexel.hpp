@@ -1,5 +1,5 @@
 #pragma once
-// Lumitexels (specs/brdffit.md §2.4; chapter 8 §8.4.3, §8.6.3): one surface point with
+// Lumitexels (docs/brdffit.md §4; chapter 8 §8.4.3, §8.6.3): one surface point with
 // every observation of it. Stored flat, as in the .ltx file: the samples of lumitexel i are
 // samples[first_sample, first_sample + count), and the lumitexels of one triangle are
 // contiguous so a texture atlas can be built from them later.

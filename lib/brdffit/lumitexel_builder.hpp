@@ -1,5 +1,5 @@
 #pragma once
-// Lumitexel generation (specs/brdffit.md §2.4; chapter 8 §8.4.3, §8.6.3): resampling
+// Lumitexel generation (docs/brdffit.md §4; chapter 8 §8.4.3, §8.6.3): resampling
 // registered HDR images onto the surface.
 //
 //  1. Home image: every triangle goes to the image in which it covers the most pixels,

@@ -1,7 +1,7 @@
 #pragma once
 // Downhill simplex (Nelder & Mead 1965) with the standard coefficients (reflection 1,
 // expansion 2, contraction 1/2, shrink 1/2). Derivative-free: the silhouette XOR cost of
-// registration (§2.8) is piecewise constant, so gradients are of no use.
+// registration (docs/brdffit.md §6) is piecewise constant, so gradients are of no use.
 
 #include <functional>
 #include <vector>

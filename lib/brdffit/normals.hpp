@@ -1,5 +1,5 @@
 #pragma once
-// Normal refinement (specs/brdffit.md §2.7; chapter 8 §8.4.4): for every lumitexel with
+// Normal refinement (docs/brdffit.md §6; chapter 8 §8.4.4): for every lumitexel with
 // enough samples, the normal n' = normalize(n + a t + b b) that best explains its samples
 // under its projected BRDF f_L, found by Levenberg–Marquardt over the tangent offset (a, b)
 // from (0, 0) with the tilt bounded. Only u.n', v.n' and u.v enter an isotropic BRDF, so

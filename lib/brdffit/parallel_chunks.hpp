@@ -2,7 +2,7 @@
 // Deterministic data parallelism for the materials side of brdffit: work is cut into
 // chunks of a fixed size (independent of the thread count), workers take chunks in a
 // strided order, and callers reduce the per-chunk results in chunk order. So the same
-// input gives bit-identical sums with 1 or 16 threads (DESIGN.md: deterministic output).
+// input gives bit-identical sums with 1 or 16 threads (deterministic output: the same input gives the same bytes).
 
 #include <algorithm>
 #include <cstddef>

@@ -1,11 +1,11 @@
 #pragma once
-// The metallic-roughness approximation of Lafortune BRDFs for glTF viewers (specs/brdffit.md
-// §2.10 `export`): baseColor = rho_d, roughness = sqrt(2 / (N + 2)) of the dominant lobe of
+// The metallic-roughness approximation of Lafortune BRDFs for glTF viewers (docs/brdffit.md
+// §6, `export`): baseColor = rho_d, roughness = sqrt(2 / (N + 2)) of the dominant lobe of
 // the dominant basis BRDF, metallic = 0.
 //
 // Why this is an approximation: a one-lobe Lafortune BRDF with Cxy = -Cz is a Phong lobe
 // cos^N around the mirror direction; Walter et al. (EGSR 2007) match Phong's exponent to a
-// Beckmann microfacet width by alpha^2 = 2 / (N + 2), and the spec hands that alpha to glTF
+// Beckmann microfacet width by alpha^2 = 2 / (N + 2), and fest hands that alpha to glTF
 // as its roughness (glTF squares its roughness into alpha, so the viewer's highlight is
 // somewhat sharper than the fitted lobe). The lobe's colour and magnitude (|C|^N) are not
 // carried: glTF dielectrics reflect F0 = 0.04 white; off-specular (|Cxy| != |Cz|) and
@@ -15,7 +15,7 @@
 // The surfaces below give baking (texture_bake.hpp) the value at any surface point:
 // - from a materials file (per-triangle materials, or per-vertex blend weights), and
 // - from the fitted result: the lumitexel nearest to the point on its triangle (the
-//   renderer's rule of spec §2.10) with its cluster's basis BRDFs and weights, plus the
+//   renderer's rule of docs/brdffit.md §6) with its cluster's basis BRDFs and weights, plus the
 //   refined normal of that lumitexel when given.
 
 #include <cstdint>
@@ -36,8 +36,8 @@ namespace fest::brdffit {
 double pbr_roughness(const reflectance::LafortuneBrdf& brdf);
 
 // A blend sum_j t_j f_j: base colour sum_j t_j rho_d,j (per channel; exact, the diffuse
-// term is linear in the weights), roughness of the f_j with the largest |t_j| (spec: "of
-// the dominant basis BRDF"). `weights` holds one weight per BRDF, or 3 per BRDF
+// term is linear in the weights), roughness of the f_j with the largest |t_j| (docs/brdffit.md §6), i.e. of
+// the dominant basis BRDF. `weights` holds one weight per BRDF, or 3 per BRDF
 // channel-major (3 x count) when rgb.
 PbrPoint pbr_of_blend(const std::vector<const reflectance::LafortuneBrdf*>& brdfs, const float* weights, bool rgb);
 // The same with each BRDF's pbr_roughness given (baking evaluates millions of texels).

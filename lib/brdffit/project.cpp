@@ -77,7 +77,7 @@ void solve_weights(const FitSample* s, std::size_t n, const BasisFunctions& fns,
   const int nb = static_cast<int>(fns.size());
   const int per = o.weights == WeightMode::rgb ? 3 : 1;
   std::fill(out, out + per * basis_size, 0.0f);
-  if (n < fns.size()) {  // §2.6: too few samples for the basis: the pure cluster BRDF
+  if (n < fns.size()) {  // docs/brdffit.md §5: too few samples for the basis: the pure cluster BRDF
     for (int c = 0; c < per; ++c) out[c * basis_size] = 1;
     return;
   }

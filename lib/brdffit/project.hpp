@@ -1,6 +1,6 @@
 #pragma once
 // Spatially varying weights: every lumitexel's BRDF as a weighted sum of its cluster's
-// basis BRDFs, f_L = sum_j t_j f_j (specs/brdffit.md §2.6; chapter 8 §8.4.3). The basis
+// basis BRDFs, f_L = sum_j t_j f_j (docs/brdffit.md §5; chapter 8 §8.4.3). The basis
 // of cluster C (reconstructed; the paper gives only its size): f_C, the two children of
 // one trial split of C, then the BRDFs of the other clusters nearest to C's members
 // (mean D) until `basis` functions. Weights by linear least squares "computed using

@@ -1,5 +1,5 @@
 #pragma once
-// Silhouette-based registration of photographs to a mesh (specs/brdffit.md §2.8; chapter 8
+// Silhouette-based registration of photographs to a mesh (docs/brdffit.md §6; chapter 8
 // §8.6.2). Cost: the pixels covered by exactly one of the mesh's rendered silhouette and
 // the photograph's mask, divided by the mask's pixel count, evaluated on an image pyramid
 // (1/8, 1/4, 1/2, 1). Unknowns per image: rotation omega (axis-angle), translation t and
@@ -37,7 +37,7 @@ reflectance::PinholeCamera camera_from_parameters(const reflectance::PinholeCame
 struct RegistrationOptions {
   bool automatic = false;     // ignore the initial pose: search orientations (focal length kept)
   int orient_samples = 240;
-  // The spec's 20 coarse steps and 5 candidates found 6 of 10 bunny poses at 320x240;
+  // The first choice of 20 coarse steps and 5 candidates found 6 of 10 bunny poses at 320x240;
   // 40 and 15 found 10 of 10 (tests/bench/brdffit_register_auto.sh) at about twice the time.
   int coarse_iters = 40;
   int keep = 15;              // candidates refined at every level

@@ -1,5 +1,5 @@
 #pragma once
-// Separable BRDF approximation for display (specs/brdffit.md §2.10 `factor`; chapter 8
+// Separable BRDF approximation for display (docs/brdffit.md §6, `factor`; chapter 8
 // §8.7.1 after Kautz & McCool 1999; reconstructed as a rank-1 factorisation of the sampled
 // BRDF). A homogeneous BRDF is tabulated on a grid of two directions -- half and
 // difference vectors (Rusinkiewicz' (theta_h, phi_h) x (theta_d, phi_d)), or, for
@@ -10,7 +10,7 @@
 // not BRDF values; they get weight 0, and g, h minimise the weighted squared error by
 // alternating least squares (g_i = sum_j w_ij F_ij h_j / sum_j w_ij h_j^2 and the same
 // for h). With all weights 1 (the naive grid) this is the power iteration of the leading
-// singular pair, i.e. the rank-1 SVD the spec names.
+// singular pair, i.e. the rank-1 SVD of docs/brdffit.md §6.
 //
 // Grids: directions at cell centres, theta in [0, pi/2) with theta_bins cells, phi in
 // [0, 2 pi) with phi_bins cells; a direction's index is theta_index * phi_bins + phi_index.

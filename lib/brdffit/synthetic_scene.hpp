@@ -1,7 +1,7 @@
 #pragma once
-// Ground-truth scenes for brdffit (specs/brdffit.md §4 `synth`, §5): a mesh split into
-// material patches, a turntable with a fixed camera and fixed point lights (capture.md
-// §2.1), rendered images and everything needed to check a reconstruction.
+// Ground-truth scenes for brdffit (brdffit(1) `synth`, docs/brdffit.md §7): a mesh split into
+// material patches, a turntable with a fixed camera and fixed point lights (docs/capture.md
+// §1), rendered images and everything needed to check a reconstruction.
 
 #include <cstdint>
 #include <vector>

@@ -1,9 +1,9 @@
 #pragma once
-// Texture atlas (specs/brdffit.md §2.9; chapter 8 §8.6.3): triangles that share a flat
+// Texture atlas (docs/brdffit.md §4; chapter 8 §8.6.3): triangles that share a flat
 // parameterization (the same home image, or the same projection plane) are grouped into
 // connected charts; each chart's texel rectangle, with a gutter of `gutter` texels on
 // every side, is packed into one image by a shelf packer (charts sorted by height; the
-// chapter cites Rocchini et al., the spec accepts any dense packer).
+// chapter cites Rocchini et al., any dense packer will do).
 //
 // Coordinates: texel units, texel (i, j) covers [i, i+1) x [j, j+1), its centre is
 // (i + 0.5, j + 0.5); glTF's UV of a point is (x / width, y / height) (origin at the

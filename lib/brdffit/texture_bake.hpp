@@ -4,7 +4,7 @@
 // of the nearest such triangle, so the gutter repeats the chart's border values and
 // bilinear filtering never mixes a chart with its neighbour or the empty background.
 //
-// The maps are the glTF 2.0 metallic-roughness set (specs/brdffit.md §2.10 `export`):
+// The maps are the glTF 2.0 metallic-roughness set (docs/brdffit.md §6, `export`):
 // base colour (linear; the writer encodes sRGB), metallic-roughness (glTF's channels: G =
 // roughness, B = metallic; R is unused and set to 1), and a tangent-space normal map
 // against the tangent frames of corner_tangents().

@@ -1,6 +1,6 @@
 #pragma once
-// What the three calibrations (specs/capture.md §2.6-2.7) share: the chessboard, the
-// camera intrinsics and rigid poses, in the camera frame C of §2.1 with lengths in the
+// What the three calibrations (docs/capture.md §5) share: the chessboard, the
+// camera intrinsics and rigid poses, in the camera frame C of docs/capture.md §1 with lengths in the
 // unit of the board's squares (millimetres by convention).
 
 #include <string_view>

@@ -1,6 +1,6 @@
 #pragma once
 // Camera intrinsics from chessboard views (Zhang's method through cv::calibrateCamera;
-// specs/capture.md §2.6, the chapter's [Zha99]): K, the 5 distortion coefficients and
+// docs/capture.md §5, seed 000 §8.3.3's [Zha99]): K, the 5 distortion coefficients and
 // the RMS reprojection error, as brdffit's cam.json carries them.
 
 #include <vector>

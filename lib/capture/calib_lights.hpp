@@ -1,5 +1,5 @@
 #pragma once
-// Light position calibration with chrome spheres (specs/capture.md §2.7): each sphere
+// Light position calibration with chrome spheres (docs/capture.md §5): each sphere
 // of known radius seen in an image gives its centre (from its outline) and, through the
 // mirror reflection at its highlight, a ray toward the light; the light is the
 // least-squares intersection of the rays of all spheres and views.

@@ -1,6 +1,6 @@
 #pragma once
 // Synthetic calibration images with known geometry, the ground truth of the calibration
-// tests (specs/capture.md §5.1): a chessboard and chrome spheres rendered through a
+// tests (docs/capture.md §6): a chessboard and chrome spheres rendered through a
 // pinhole camera with OpenCV's distortion model, anti-aliased by supersampling.
 
 #include <vector>

@@ -1,8 +1,8 @@
 #pragma once
-// Turntable calibration (specs/capture.md §2.6): a chessboard lying on the table, seen
+// Turntable calibration (docs/capture.md §5): a chessboard lying on the table, seen
 // at several commanded angles, gives the table's rotation axis and its centre, that is
 // the pose (R_T0, t_T0) of the turntable frame T at angle 0 in the camera frame C
-// (§2.1: X_C = R_T0 Rz(theta) X_T + t_T0).
+// (docs/capture.md §1: X_C = R_T0 Rz(theta) X_T + t_T0).
 
 #include <vector>
 

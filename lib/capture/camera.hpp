@@ -1,5 +1,5 @@
 #pragma once
-// The camera every backend implements (specs/capture.md §2.2): set an exposure time, take
+// The camera every backend implements (docs/capture.md §4): set an exposure time, take
 // a picture. Pictures are fest::Image (8- or 16-bit, 1 or 3 channels, R,G,B order).
 
 #include <string>
@@ -15,7 +15,7 @@ struct CameraInfo {
   std::string name;
 };
 
-// Backends throw fest::Error with the device statuses of DESIGN.md: device_not_found (5),
+// Backends throw fest::Error with the device exit statuses (README "Conventions"): device_not_found (5),
 // device_error (6), timeout (7, the camera did not deliver), permission (8).
 class Camera {
  public:

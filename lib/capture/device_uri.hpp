@@ -1,5 +1,5 @@
 #pragma once
-// Device URIs of specs/capture.md §2.2, one string per device:
+// Device URIs of docs/capture.md §4, one string per device:
 //   scheme:[path][,key=value,...]     e.g. usb:1209:0001#SN42, gpio:chip=gpiochip0,line=17,
 //   sim:speed=90,backlash=0.2, v4l2:/dev/video0,fourcc=Y16
 // The part before the first ',' that is not key=value is the path (usb's VID:PID#SERIAL,

@@ -1,5 +1,5 @@
 #pragma once
-// The station's frames (specs/capture.md §2.1): at turntable angle theta the object frame
+// The station's frames (docs/capture.md §1): at turntable angle theta the object frame
 // T maps to the camera frame C by X_C = R_T0 Rz(theta) X_T + t_T0, and a light fixed in C
 // at q sits at Rz(-theta) R_T0^T (q - t_T0) in T.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The light bank every backend implements (specs/capture.md §2.2, §2.4): a set of named
+// The light bank every backend implements (docs/capture.md §4, docs/lights.md §3): a set of named
 // on/off lights. A backend holds its lines while it is alive, because a GPIO value is only
 // guaranteed while the line stays requested; destroying it switches every light off.
 
@@ -13,7 +13,7 @@ struct LightState {
   bool on = false;
 };
 
-// Backends throw fest::Error with the device statuses of DESIGN.md: device_not_found (5),
+// Backends throw fest::Error with the device exit statuses (README "Conventions"): device_not_found (5),
 // device_error (6, e.g. a line busy with another consumer, named in the message),
 // permission (8, naming the group or udev rule that is missing).
 class LightBank {
@@ -27,7 +27,7 @@ class LightBank {
   // the kernel does not promise it (`lights hold` is the guaranteed way). Simulated
   // banks ignore it.
   virtual void keep_state_on_release() {}
-  // Exactly this light on, every other off (the acquisition loop's step, §2.5).
+  // Exactly this light on, every other off (the acquisition loop's step, docs/capture.md §2).
   void only(const std::string& id) {
     for (const LightState& l : list())
       if (l.id != id && l.on) set(l.id, false);

@@ -1,5 +1,5 @@
 #pragma once
-// The session manifest (specs/capture.md §4) and its journal, free of I/O.
+// The session manifest (docs/capture.md §3, fest-capture(5)) and its journal, free of I/O.
 //
 // The journal (SESSION/manifest.journal) is the record that survives a crash: one JSON
 // object per line, appended and flushed per shot --

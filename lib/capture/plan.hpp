@@ -1,5 +1,5 @@
 #pragma once
-// The acquisition plan, plan.json (specs/capture.md §2.5), and its expansion into the
+// The acquisition plan, plan.json (docs/capture.md §2, fest-capture(5)), and its expansion into the
 // ordered list of shots the loop takes: mechanics outermost (angles), then the per-view
 // shots (silhouette, light calibration, dark), then for every light its exposure series.
 

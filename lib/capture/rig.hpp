@@ -1,5 +1,5 @@
 #pragma once
-// The rig JSON of specs/capture.md §2.8, the one definition brdffit reads: per merged
+// The rig JSON of fest-capture(5) (docs/hdrmerge.md §5), the one definition brdffit reads: per merged
 // (angle, light) set the HDR image, the camera (brdffit cam.json fields) and the light
 // (light.json fields), in the turntable frame T at that angle:
 //   R = R_T0 Rz(theta), t = t_T0, light position q^T = Rz(-theta) R_T0^T (q - t_T0).

@@ -1,5 +1,5 @@
 #pragma once
-// The acquisition loop of specs/capture.md §2.5, free of I/O: devices in, pictures out
+// The acquisition loop of docs/capture.md §2, free of I/O: devices in, pictures out
 // through a ShotSink (the tool writes files and the journal). Mechanics outermost,
 // exposures innermost; on any error every light goes off and the table stops before the
 // outcome names the failing step.

@@ -1,5 +1,5 @@
 #pragma once
-// The object's mask from a backlit silhouette shot (specs/capture.md §2.8): the object
+// The object's mask from a backlit silhouette shot (docs/hdrmerge.md §5): the object
 // is dark against a bright background. Otsu's threshold on the grey values, the largest
 // dark connected component, its holes filled.
 

@@ -1,6 +1,6 @@
 #pragma once
-// The simulated camera (camera URI `sim:` or `sim:scene.json`, specs/capture.md §2.2,
-// §5.1): it ray-casts an analytic object -- a sphere on the turntable, one Lafortune
+// The simulated camera (camera URI `sim:` or `sim:scene.json`, docs/capture.md §4.2):
+// it ray-casts an analytic object -- a sphere on the turntable, one Lafortune
 // material or two (one per hemisphere, split by the plane x_T = 0 through its centre) --
 // on a black background, at the table's current angle, lit by the point lights that are
 // on (radiance L = f_r(u, v) I cos(theta_i) / d^2, d in metres), with a backlight
@@ -61,7 +61,7 @@ SimScene default_sim_scene();
 // "gain", "backlight_radiance", "response": {"bits", "gamma", "toe", "shoulder", "black_level",
 // "noise_dn"}, "seed"}; absent keys keep the defaults. Throws bad_input naming where and path.
 SimScene parse_sim_scene(const nlohmann::json& doc, const std::string& where);
-// brdf.json of specs/brdffit.md §3 ({"model":"lafortune","rho_d":[3],"Cxy":[[3]],"Cz":[[3]],"N":[[3]]}).
+// brdf.json of brdffit(1) ({"model":"lafortune","rho_d":[3],"Cxy":[[3]],"Cz":[[3]],"N":[[3]]}).
 reflectance::LafortuneBrdf parse_lafortune(const nlohmann::json& doc, const std::string& where, const std::string& path);
 
 // The object as seen at table angle theta (degrees, the angle the table really is at),

@@ -1,6 +1,6 @@
 #pragma once
 // In-process light bank for tests and simulated sessions (URI `sim:` for a light,
-// specs/capture.md §2.2, §5.1). It keeps a timeline of every switch so tests can assert
+// docs/capture.md §4.2). It keeps a timeline of every switch so tests can assert
 // what was lit when (e.g. exactly the planned light during each exposure, all off after
 // an abort); the simulated camera reads list() to know which lights illuminate the scene.
 

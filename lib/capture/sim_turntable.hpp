@@ -1,6 +1,6 @@
 #pragma once
-// In-process turntable for tests and simulated sessions (URI `sim:...`, specs/capture.md
-// §2.2). Deterministic: time is virtual and advances only through wait_ms(). The table
+// In-process turntable for tests and simulated sessions (URI `sim:...`, docs/capture.md
+// §4.2). Deterministic: time is virtual and advances only through wait_ms(). The table
 // (the object) follows the motor with gear backlash: after a reversal the motor must take
 // up `backlash` degrees of play before the table moves again.
 //

@@ -1,7 +1,7 @@
 #pragma once
-// The station description, station.json (specs/capture.md §4): which devices, where the
+// The station description, station.json (fest-capture(5)): which devices, where the
 // lights are, how the turntable approaches its targets, and the calibrations (camera
-// intrinsics, turntable pose R_T0, t_T0 of §2.1). Parsed from JSON without I/O: a
+// intrinsics, turntable pose R_T0, t_T0 of docs/capture.md §1). Parsed from JSON without I/O: a
 // calibration given as a file name is left for the tool to read and hand to
 // parse_intrinsics / parse_turntable_cal. Lengths are millimetres.
 
@@ -16,14 +16,14 @@
 
 namespace fest::capture {
 
-// brdffit's cam.json fields (specs/brdffit.md §3), without the pose.
+// brdffit's cam.json fields (brdffit(1)), without the pose.
 struct CameraIntrinsics {
   std::array<double, 9> K{};    // row-major fx 0 cx / 0 fy cy / 0 0 1, pixels
   std::array<double, 5> dist{};  // k1 k2 p1 p2 k3 (OpenCV)
   int width = 0, height = 0;
 };
 
-// The pose of the turntable frame T at angle 0 in the camera frame C (§2.1):
+// The pose of the turntable frame T at angle 0 in the camera frame C (docs/capture.md §1):
 // X_C = R_T0 Rz(theta) X_T + t_T0.
 struct TurntableCal {
   std::array<double, 9> R_T0{};  // row-major

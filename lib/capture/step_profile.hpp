@@ -1,5 +1,5 @@
 #pragma once
-// Host-generated step timing for step/dir stepper drivers (specs/capture.md §2.4): a
+// Host-generated step timing for step/dir stepper drivers (docs/turntable.md §3): a
 // trapezoidal velocity profile (constant acceleration, cruise at the maximum speed,
 // constant deceleration; a triangle when the move is too short to reach it).
 

@@ -1,5 +1,5 @@
 #pragma once
-// TTP/1, the vendor protocol of fest's USB turntables (specs/capture.md §2.3): every
+// TTP/1, the vendor protocol of fest's USB turntables (ttp(7), docs/turntable.md §3): every
 // command is a control transfer to the device recipient on EP0, little-endian fields.
 // This file only turns commands into setup packets and payloads and replies into
 // structs; the transport (libusb) lives in its backend.

@@ -1,6 +1,6 @@
 #pragma once
-// The turntable abstraction every backend implements (specs/capture.md §2.2), and the
-// host's motion policy on top of it (§2.1, §2.3): angles in degrees become integer motor
+// The turntable abstraction every backend implements (docs/capture.md §4), and the
+// host's motion policy on top of it (docs/turntable.md §1-2): angles in degrees become integer motor
 // steps, absolute targets are always approached from the same side to cancel gear
 // backlash, moves are polled until idle or time out.
 
@@ -29,7 +29,7 @@ struct TurntableStatus {
   std::uint32_t seq = 0;  // incremented by the device when a move completes
 };
 
-// Backends throw fest::Error with the device statuses of DESIGN.md: device_not_found (5)
+// Backends throw fest::Error with the device exit statuses (README "Conventions"): device_not_found (5)
 // when the device is gone, device_error (6), timeout (7), permission (8).
 class Turntable {
  public:

@@ -1,5 +1,5 @@
 #pragma once
-// The command-line conventions every fest tool shares (DESIGN.md "How every tool
+// The command-line conventions every fest tool shares (README "Conventions", "How every tool
 // behaves"), on top of CLI11. Include only from tools/*/main.cpp.
 //
 //   int main(int argc, char** argv) {
@@ -43,7 +43,7 @@ inline void add_threads(CLI::App& app, int& threads) {
 }
 
 // Parses argv; help and --version go to standard output with status 0; a usage error is
-// one line on standard error and status 2 (DESIGN.md), not CLI11's own codes.
+// one line on standard error and status 2 (README "Conventions"), not CLI11's own codes.
 template <typename Body>
 int run(CLI::App& app, int argc, char** argv, Body&& body) {
   const std::string tool = app.get_name();

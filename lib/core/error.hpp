@@ -1,5 +1,5 @@
 #pragma once
-// The one error type of fest and its mapping to exit statuses (DESIGN.md: "Exit status").
+// The one error type of fest and its mapping to exit statuses (README "Conventions": 0 ok, 1 failure, 2 usage, 3 bad input, 4 I/O, 5-8 devices).
 // Every library throws fest::Error; tools turn it into a one-line message and the status.
 
 #include <stdexcept>

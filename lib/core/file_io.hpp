@@ -1,5 +1,5 @@
 #pragma once
-// Whole-file input and atomic output: the only file access in lib/ (DESIGN.md keeps the
+// Whole-file input and atomic output: the only file access in lib/ (README "Layout" keeps the
 // algorithms free of I/O; tools and formats/ call these).
 //
 // A path of "-" or "" means standard input / standard output.

@@ -1,6 +1,6 @@
 #pragma once
 // A progress bar on standard error, shown only when standard error is a terminal or the
-// user asked with --progress (DESIGN.md: silent in pipelines otherwise).
+// user asked with --progress (README "Conventions": silent in pipelines otherwise).
 
 #include <chrono>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Cameras of the fit (spec 2.6-2.7): a 2×4 matrix P maps a model point (x, y, z, 1) to
+// Cameras of the fit (docs/facefit.md §3): a 2×4 matrix P maps a model point (x, y, z, 1) to
 // image (u, v), u right and v down, model y up. Frontal scaled orthographic:
 // P = [[s, 0, 0, t_u], [0, −s, 0, t_v]] (the paper's L); rotated views multiply the
 // rotation R = R_x(pitch) R_y(yaw) in first.

@@ -1,5 +1,5 @@
 #pragma once
-// Error measures of the chapter (spec 2.6) and its experiment loop (spec 3, `sweep`).
+// Error measures of the chapter (docs/facefit.md §3, eq. 51) and its experiment loop (docs/facefit.md §3, `sweep`).
 
 #include <cstdint>
 #include <vector>

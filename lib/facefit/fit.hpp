@@ -1,5 +1,5 @@
 #pragma once
-// Fitting the model to 2-D feature points (spec 2.6-2.7): build Q = L S diag(σ) from the
+// Fitting the model to 2-D feature points (docs/facefit.md §3): build Q = L S diag(σ) from the
 // rows of S at the feature vertices, subtract the projected mean (r = r_obs − L v̄),
 // solve the regularised problem (ridge.hpp), add v̄ back (eq. 42). Cameras: fixed
 // (known L, the paper's experiments), similarity (translation + scale adapted, eq. 49),

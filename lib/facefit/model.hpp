@@ -1,5 +1,5 @@
 #pragma once
-// The morphable model in memory (spec section 2.2): mean v̄ ∈ R^n, orthonormal basis
+// The morphable model in memory (docs/facefit.md §1): mean v̄ ∈ R^n, orthonormal basis
 // S = (s_1 .. s_k) ∈ R^{n×k} (column-major, column i is s_i), standard deviations σ_i
 // (descending), optional triangles, landmark map and evaluation mask.
 //
@@ -53,7 +53,7 @@ void set_owned_basis_f32(Model& model, const Eigen::MatrixXd& basis);
 // The basis as a double matrix (a copy; tests and model building).
 Eigen::MatrixXd basis_matrix(const Model& model);
 
-// Checks the invariants readers must enforce (spec 2.8): sizes consistent, mean and σ
+// Checks the invariants readers must enforce (docs/facefit.md §1): sizes consistent, mean and σ
 // finite, σ > 0, columns unit length within 1e-3. Throws bad_input naming the problem.
 // σ not descending is repaired by reordering (that copies the basis into owned storage).
 struct CheckResult {

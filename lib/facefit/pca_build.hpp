@@ -1,5 +1,5 @@
 #pragma once
-// Model building (spec 2.2, the chapter's section 1.2): mean, covariance C = (1/m) X X^T
+// Model building (docs/facefit.md §1, the chapter's section 1.2): mean, covariance C = (1/m) X X^T
 // (1/m, not 1/(m-1)), PCA through the m×m Gram matrix because n ≫ m.
 
 #include <cstddef>

@@ -1,10 +1,10 @@
 #pragma once
-// The chapter's estimator (spec 2.3-2.4, eq. 29-39): minimise ‖Q c + T t − r‖² + η ‖c‖²
+// The chapter's estimator (docs/facefit.md §2, eq. 29-39): minimise ‖Q c + T t − r‖² + η ‖c‖²
 // over the standardised coefficients c (penalised) and nuisance parameters t (free,
 // e.g. translation and scale, eq. 49-50). T is eliminated by projecting onto the
 // orthogonal complement of its range, P⊥ = I − T T⁺; then one SVD P⊥Q = U W V^T serves
 // every η:   c(η) = V diag(w_i / (w_i² + η)) U^T P⊥ r                          (eq. 39)
-// and t = T⁺ (r − Q c). Automatic η by GCV or maximum evidence (spec 2.7).
+// and t = T⁺ (r − Q c). Automatic η by GCV or maximum evidence (docs/facefit.md §2, §4).
 
 #include <Eigen/Core>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The synthetic face population G2 of the spec (section 5): an R×R grid over
+// The synthetic face population G2 (docs/facefit.md §4): an R×R grid over
 // (u, w) ∈ [−1, 1]², x = W u, y = H w, depth D √max(0, 1 − u² − 0.8 w²) plus facial
 // features whose centres, widths and heights follow 14 latent parameters θ ~ N(0, I)
 // through smooth nonlinear maps, plus an individual detail field of 24 random bumps that move vertices in x, y and z.

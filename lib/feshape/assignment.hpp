@@ -1,6 +1,6 @@
 #pragma once
-// Force assignment (seed App. C §4.2, docs/feshape.md §2.5) and the error statistics of
-// Tables 1-2 (§2.10): every data point is attached to the closest point of the model's
+// Force assignment (seed App. C §4.2, docs/feshape.md §1.4) and the error statistics of
+// Tables 1-2 (§2.4): every data point is attached to the closest point of the model's
 // flat triangles.
 
 #include <vector>

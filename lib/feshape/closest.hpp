@@ -1,7 +1,7 @@
 #pragma once
 // Closest points on the model's flat triangles (seed App. C eq. 9): per triangle
 // (Ericson's region test, barycentric result) and over all triangles through an AABB
-// tree (docs/feshape.md §2.5: O(n log m) instead of the seed's O(mn) search).
+// tree (docs/feshape.md §1.4: O(n log m) instead of the seed's O(mn) search).
 
 #include <array>
 #include <vector>

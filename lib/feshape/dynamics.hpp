@@ -1,5 +1,5 @@
 #pragma once
-// The seed's own solver (App. C eq. 6, docs/feshape.md §2.4): massless first-order
+// The seed's own solver (App. C eq. 6, docs/feshape.md §1.5): massless first-order
 // dynamics D q' + K q = f_q integrated by explicit Euler, with the generalized forces of
 // eqs. 4-5 and 10-11 gathered at the nodes; optionally semi-implicit in K for q_d.
 

@@ -85,7 +85,7 @@ int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOpt
     if (it % std::max(1, o.reassign_every) == 0) {
       assigned = assign_points(points, before, m.mesh.tris, o.threads);
       // Residual directions belong to the assignment: between reassignments the points
-      // keep their elements, barycentric coordinates and directions (§2.5).
+      // keep their elements, barycentric coordinates and directions (§1.4).
       normals = residual_directions(points, before, m.mesh.tris, assigned);
       // Stall test: points near element edges can change elements back and forth, so the
       // nodes jitter above the move tolerance while the fit no longer improves. Stop when
@@ -159,7 +159,7 @@ std::vector<LevelResult> fit(const std::vector<Eigen::Vector3d>& points, Model m
     LevelResult r;
     r.name = std::to_string(level);
     if (level > 0) {
-      // §2.6: elements near points still farther than tau; §2.7: bisect them.
+      // §2.1: elements near points still farther than tau; §2.2: bisect them.
       const std::vector<std::vector<int>> around = faces_around_nodes(m.mesh);
       std::vector<char> selected(m.mesh.elements(), 0);
       for (const MeshPoint& p : assigned)

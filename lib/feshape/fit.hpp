@@ -1,5 +1,5 @@
 #pragma once
-// The fitting schedule and the hierarchy (seed App. C §1, §5; docs/feshape.md §2.9):
+// The fitting schedule and the hierarchy (seed App. C §1, §5; docs/feshape.md §2.3):
 // level G (global parameters and pose only), level 0 (global + local displacements on
 // the initial mesh), levels 1..L (elements near far data points bisected by Rivara's
 // algorithm, then fitted again). Each level's model and error statistics are returned.
@@ -32,9 +32,9 @@ struct FitOptions {
   double move_tol = 5e-5;          // converged when no node moves farther in one iteration
   int max_iter = 200;              // per level
   int levels = 3;                  // subdivision levels after level 0
-  double tau = 0.05;               // points farther than this select elements (§2.6)
+  double tau = 0.05;               // points farther than this select elements (§2.1)
   std::size_t max_nodes = 100000;
-  int reassign_every = 1;          // force assignment every k iterations (§2.5)
+  int reassign_every = 1;          // force assignment every k iterations (§1.4)
   bool global_phase = true;        // level G before level 0
   int threads = 1;
 };

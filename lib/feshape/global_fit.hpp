@@ -2,7 +2,7 @@
 // The global degrees of freedom q_c, q_theta, q_s (seed App. C eqs. 4-5): their Jacobian
 // L = [I  B  RJ] and Levenberg-Marquardt steps that move them to the equilibrium of the
 // first-order dynamics (eq. 6), where the generalized forces J^T f vanish
-// (docs/feshape.md §2.4, "equilibrium" solver).
+// (docs/feshape.md §1.5, "equilibrium" solver).
 
 #include <vector>
 

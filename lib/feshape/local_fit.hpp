@@ -1,7 +1,7 @@
 #pragma once
 // The local degrees of freedom q_d (seed App. C §3-4): the equilibrium of
 // D q_d' + K q_d = f_d for a fixed assignment, i.e. the minimiser of
-// beta/2 sum |z - x(u_z)|^2 + 1/2 q_d^T K q_d (docs/feshape.md §2.4-2.5), one sparse
+// beta/2 sum |z - x(u_z)|^2 + 1/2 q_d^T K q_d (docs/feshape.md §1.4-1.5), one sparse
 // solve per coordinate of the model frame.
 
 #include <vector>

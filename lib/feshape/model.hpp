@@ -34,11 +34,11 @@ Model make_model(int rings, int meridians, const GlobalParams& qs, const Eigen::
 
 // Gives the nodes that refinement appended (mesh already holds their u, v) the
 // displacement that keeps the surface where it was: d_D = R^T((x_A + x_B)/2 - c) - s(u_D)
-// (docs/feshape.md §2.7).
+// (docs/feshape.md §2.2).
 struct NewNode;
 void displace_new_nodes(Model& m, const std::vector<Eigen::Vector3d>& old_positions, const std::vector<NewNode>& created);
 
-// --init auto (docs/feshape.md §2.9): centre = centroid, axes = principal axes with
+// --init auto (docs/feshape.md §2.3): centre = centroid, axes = principal axes with
 // axis 3 along the largest variance, a = largest half-extent, a_i = half-extents / a,
 // e1 = e2 = 1, no tapering or bending, b3 = 1. Fails (Status::failure) for coincident or
 // collinear points.

@@ -1,5 +1,5 @@
 #pragma once
-// Local subdivision (seed App. C §4.3-4.4, docs/feshape.md §2.6-2.7): which elements a
+// Local subdivision (seed App. C §4.3-4.4, docs/feshape.md §2.1-2.2): which elements a
 // far data point selects, and Rivara's longest-edge bisection with conforming closure
 // (the LEPP form: before an edge is split, the neighbour across it is refined until that
 // edge is also its longest, so no hanging node is ever made).
@@ -14,7 +14,7 @@
 
 namespace fest::feshape {
 
-// Elements selected by a data point whose closest model point is `p` (§2.6): the
+// Elements selected by a data point whose closest model point is `p` (§2.1): the
 // element when p is inside it, both elements of the edge when on an edge (one barycentric
 // coordinate < 1e-6), every element around the node when at a node (two < 1e-6).
 // `node_faces` lists the elements around each node.

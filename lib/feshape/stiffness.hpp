@@ -1,7 +1,7 @@
 #pragma once
 // The stiffness of the local displacements: the "thin plate under tension" energy of
 // seed App. C eq. 7, discretized on linear triangles in the parameter domain
-// (docs/feshape.md §2.2). One matrix acts on each coordinate of d independently.
+// (docs/feshape.md §1.3). One matrix acts on each coordinate of d independently.
 
 #include <array>
 

@@ -24,14 +24,14 @@ const std::array<const char*, n_global>& global_names();
 // |t_i| <= 1, |b2| <= 1, 0 <= b3 <= 1, all finite); empty when it is valid.
 std::string check_global(const GlobalParams& q);
 // The same ranges enforced after an update step (e_i kept in [0.1, 4]; a_i in
-// [1e-3, 1]; a >= 1e-9), as in docs/feshape.md §2.4. An a_i above 1 is first folded
+// [1e-3, 1]; a >= 1e-9), as in docs/feshape.md §1.2. An a_i above 1 is first folded
 // into a (a *= max a_i, a_i /= max a_i): the shape is unchanged.
 void clamp_global(GlobalParams& q);
 
 // s(u, v; q_s), eq. 2 + eq. 3, in the model frame.
 Eigen::Vector3d shape(const GlobalParams& q, double u, double v);
 // J = ds/dq_s (3 x 11) by forward-mode automatic differentiation; the |.|^e ln|.| terms
-// at cos u = 0 or sin v = 0 are taken as 0 (docs/feshape.md §2.3).
+// at cos u = 0 or sin v = 0 are taken as 0 (docs/feshape.md §1.2).
 Eigen::Matrix<double, 3, n_global> shape_jacobian(const GlobalParams& q, double u, double v);
 // ds/du and ds/dv (columns), for projecting points onto the surface.
 Eigen::Matrix<double, 3, 2> shape_tangents(const GlobalParams& q, double u, double v);

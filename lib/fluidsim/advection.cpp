@@ -126,7 +126,7 @@ struct InteriorBox {
 // in index units per second. All three components share the 8 corners of a sample, so
 // one 16-byte load per corner serves them and one vector lerp does the work of three
 // scalar ones (SSE2, the x86-64 baseline; other targets get the same code through the
-// compiler's generic vector lowering). The spec keeps the state in float32 (2.4); float32
+// compiler's generic vector lowering). The state is kept in float32 (docs/fluidsim.md §2); float32
 // sampling moves a departure point by about 1e-7 cells, far below the scheme's error,
 // while the fields themselves are still sampled and stored in double.
 using Float4 = float __attribute__((vector_size(16)));

@@ -1,5 +1,5 @@
 #pragma once
-// Semi-Lagrangian advection (specs/fluidsim.md 2.2 step 2): every node traces back along
+// Semi-Lagrangian advection (docs/fluidsim.md §2, step 2): every node traces back along
 // the frozen velocity field with classical RK4 (substeps optional) and takes the
 // trilinear sample of each field there. Nodes are independent: a parallel loop with
 // dynamic chunks, no synchronisation.

@@ -1,5 +1,5 @@
 #pragma once
-// The analytic self-checks of `fluidsim check` (specs/fluidsim.md 5): each returns a JSON
+// The analytic self-checks of `fluidsim check` (docs/fluidsim.md §7): each returns a JSON
 // report with the measured figures, the thresholds (from the mathematics) and "pass".
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// Implicit diffusion (specs/fluidsim.md 2.2 step 3 and 2.3): (I - c Lap_h) x = b with the
+// Implicit diffusion (docs/fluidsim.md §2, step 3): (I - c Lap_h) x = b with the
 // compact Laplacian and the mirror rules, c = nu dt (or kappa dt), diagonalized axis by
 // axis: even fields on all stored nodes (Neumann, DCT-I), odd fields on the interior
 // nodes (Dirichlet, DST-I), periodic axes by the real DFT.

@@ -1,5 +1,5 @@
 #pragma once
-// The collocated node grid of fluidsim (specs/fluidsim.md 2.4): n_a interior nodes per
+// The collocated node grid of fluidsim (docs/fluidsim.md §3): n_a interior nodes per
 // axis; a closed axis stores one wall node on each side (indices 0 and n+1), a periodic
 // axis stores n nodes that wrap. 2-D grids have a third, inactive axis of one node.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The discrete operators of the projection (specs/fluidsim.md 2.5): central divergence D
+// The discrete operators of the projection (docs/fluidsim.md §4): central divergence D
 // and gradient G with the mirror rules of the grid, and the weighted inner product in
 // which the projection is orthogonal.
 

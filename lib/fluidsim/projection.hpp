@@ -1,5 +1,5 @@
 #pragma once
-// The projection step (specs/fluidsim.md 2.5): solve L q = D w, then w -= G q.
+// The projection step (docs/fluidsim.md §4): solve L q = D w, then w -= G q.
 //
 // With the paper's operators (central D and G) L = D G is the wide Laplacian, which
 // couples a node only with nodes two apart: the grid splits into 2^d parity classes, each

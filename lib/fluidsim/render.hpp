@@ -1,5 +1,5 @@
 #pragma once
-// Previews of a field (specs/fluidsim.md 2.8): a slice, a maximum-intensity projection,
+// Previews of a field (fluidsim(1)): a slice, a maximum-intensity projection,
 // or the emission-absorption integral along an axis,
 //   I = sum_k c s_k exp(-sigma h sum_(j<k) s_j),  c = sigma h (so I stays below 1),
 // and the colour maps that turn the result into RGB.

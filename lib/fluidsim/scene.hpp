@@ -1,5 +1,5 @@
 #pragma once
-// The scene description of fluidsim (specs/fluidsim.md 2.10), parsed from JSON with
+// The scene description of fluidsim (fluidsim(1)), parsed from JSON with
 // validation: unknown keys are errors with a "did you mean" hint, values are checked for
 // range and finiteness. Positions are in node indices of the stored grid (closed axes:
 // 0 and n+1 are the walls), velocities in domain units per second.

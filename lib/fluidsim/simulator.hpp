@@ -1,9 +1,9 @@
 #pragma once
-// One simulation step of the chapter (specs/fluidsim.md 2.2-2.3): velocity
+// One simulation step of the chapter (docs/fluidsim.md §2): velocity
 // force -> advect -> diffuse -> project, scalars source -> advect -> diffuse -> dissipate.
 // Velocity and scalars are advected along the same back-traced characteristics of
 // w1 = u^n + dt f(s^n), which depends on level n only, so one RK4 trace per node serves
-// all 3 + S fields (the cost model of spec section 7).
+// all 3 + S fields (the cost model of docs/fluidsim.md §7).
 
 #include <memory>
 #include <string>

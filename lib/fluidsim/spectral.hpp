@@ -1,5 +1,5 @@
 #pragma once
-// Fast diagonalization of separable operators (specs/fluidsim.md 2.5, solvers `fdm` and
+// Fast diagonalization of separable operators (docs/fluidsim.md §4, solvers `fdm` and
 // `fft`). An operator on a box of nodes that is a Kronecker sum Tx (+) Ty (+) Tz of 1-D
 // operators is diagonalized axis by axis: transform, divide by the eigenvalue sums,
 // transform back. Used for the 2^d parity classes of the wide Laplacian (projection) and

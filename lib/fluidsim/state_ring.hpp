@@ -1,5 +1,5 @@
 #pragma once
-// The producer/consumer buffer of specs/fluidsim.md 2.7 (seed Fig. 6.1): the solver
+// The producer/consumer buffer of docs/fluidsim.md §5 (seed Fig. 6.1): the solver
 // thread writes complete states into a ring of 3 slots while the frame writer reads the
 // two consecutive states it interpolates between; only the hand-over is locked.
 

@@ -1,5 +1,5 @@
 #pragma once
-// A simulated camera for exposure series with a known response (specs/capture.md §5.1):
+// A simulated camera for exposure series with a known response (docs/hdrmerge.md §5):
 //   Z = round(255 min(1, E dt)^(1/gamma) + n),  n ~ N(0, noise_dn^2),  clamped to 0..255.
 // Used to bracket real HDR content (EXR environment maps) into 8-bit exposures whose
 // true response is known, for tests and for the benchmark against OpenCV.

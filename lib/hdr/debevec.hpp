@@ -1,6 +1,6 @@
 #pragma once
 // Camera response recovery after Debevec & Malik, "Recovering High Dynamic Range Radiance
-// Maps from Photographs", SIGGRAPH 1997 (specs/capture.md §2.8).
+// Maps from Photographs", SIGGRAPH 1997 (docs/hdrmerge.md §2).
 //
 // Unknowns g(z) = ln f^-1(z), z = 0..255, and ln E_i of N sample pixels; minimised:
 //   sum_i sum_j [w(Z_ij)(g(Z_ij) - ln E_i - ln dt_j)]^2 + sum_z [lambda w(z) g''(z)]^2
@@ -26,7 +26,7 @@ struct Response {
 struct DebevecOptions {
   // N sample pixels per channel (N(P-1) must exceed Zmax - Zmin). OpenCV uses 70; with
   // 0.5 DN of noise that leaves the dark codes to 2-3 observations each and the curve
-  // 3-6 % off there; 1000 keeps it within the spec's 2 % (about 30 ms per channel).
+  // 3-6 % off there; 1000 keeps it within the 2 % that docs/hdrmerge.md §6 asks (about 30 ms per channel).
   int samples = 1000;
   double lambda = 10;   // smoothness weight
 };

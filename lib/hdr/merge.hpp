@@ -1,5 +1,5 @@
 #pragma once
-// Radiance merge of an exposure series through a known response (specs/capture.md §2.8):
+// Radiance merge of an exposure series through a known response (docs/hdrmerge.md §4):
 //   ln E_i = sum_j w(Z_ij)(g(Z_ij) - ln dt_j) / sum_j w(Z_ij)
 // computed with per-exposure lookup tables, in row bands on worker threads; no float
 // copies of the exposures are made.

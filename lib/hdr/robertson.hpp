@@ -1,6 +1,6 @@
 #pragma once
 // Camera response recovery after Robertson, Borman & Stevenson, "Dynamic range improvement
-// through multiple exposures" (ICIP 1999), the alternative of specs/capture.md §2.8.
+// through multiple exposures" (ICIP 1999), the alternative of docs/hdrmerge.md §3.
 //
 // Alternates two weighted least-squares steps on the linear inverse response I(z) = f^-1(z):
 //   E_i = sum_j w(Z_ij) t_j I(Z_ij) / sum_j w(Z_ij) t_j^2        (radiance given I)

@@ -1,6 +1,6 @@
 #pragma once
 // An exposure series of one static scene: 8-bit images and their exposure times.
-// Shared by response recovery and merging (specs/capture.md §2.8).
+// Shared by response recovery and merging (docs/hdrmerge.md §4).
 
 #include <array>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // The linear field of one tetrahedron, its classification and the per-cell record of
-// chapter 9 (§9.3.1-9.3.3; spec §2.1-2.4).
+// chapter 9 (§9.3.1-9.3.3; docs/lemtrace.md §1-4).
 //
 // Inside T the interpolated field is v(x) = A x + b with A = F E^{-1}, b = v0 - A V0.
 // A cell is PARALLEL (all vectors along one direction: the path is a ray), NORMAL_REAL
@@ -60,7 +60,7 @@ struct ClassifyParams {
   double max_condition = 1e8;   // eigenvector bases worse than this are extraordinary
 };
 
-// The per-cell record (spec §2.4). Plain data, trivially constructible, so that a lazy
+// The per-cell record (docs/lemtrace.md §4). Plain data, trivially constructible, so that a lazy
 // table of them costs memory only where pages are touched.
 struct CellRecord {
   CellType type;
@@ -86,7 +86,7 @@ struct CellRecord {
 };
 
 // 200 bytes: the flags and tau_bary share the first 8, so the speed bound costs nothing.
-static_assert(sizeof(CellRecord) == 200, "the per-cell record of spec §2.4");
+static_assert(sizeof(CellRecord) == 200, "the per-cell record of docs/lemtrace.md §4");
 
 CellRecord classify(const TetGeometry& g, const ClassifyParams& params);
 

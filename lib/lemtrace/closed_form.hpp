@@ -1,5 +1,5 @@
 #pragma once
-// The path through one cell in closed form (spec §2.2): x(tau) from the entry point x0.
+// The path through one cell in closed form (docs/lemtrace.md §2): x(tau) from the entry point x0.
 //
 // normal_real:    z_i(s) = e^{lambda_i s} z_i(0) + psi(lambda_i, s) c_i,  x = S z
 // normal_complex: (z1, z2)(s) = e^{alpha s} R(beta s) z(0) + M2^{-1}(e^{alpha s} R(beta s) - I) c

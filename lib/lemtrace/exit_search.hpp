@@ -1,5 +1,5 @@
 #pragma once
-// Where and when the path leaves the cell (spec §2.5): the smallest tau > 0 at which a
+// Where and when the path leaves the cell (docs/lemtrace.md §3): the smallest tau > 0 at which a
 // barycentric coordinate beta_k(x(tau)) reaches 0 from above.
 //
 // bracket (default): sample the closed form at growing steps until some beta_k < 0, then

@@ -1,5 +1,5 @@
 #pragma once
-// The traced grid: mesh, per-cell records and the seed locator (spec §2.4).
+// The traced grid: mesh, per-cell records and the seed locator (docs/lemtrace.md §4).
 //
 // Precompute modes (§9.4.4): all (the paper's "exact with memory": every record before
 // tracing), none ("on the fly": computed on each visit), lazy (computed on the first

@@ -1,5 +1,5 @@
 #pragma once
-// The closed form of a normal cell in eigen coordinates (spec §2.2) as inline kernels, so
+// The closed form of a normal cell in eigen coordinates (docs/lemtrace.md §2) as inline kernels, so
 // that the predicted exit (exit_search.cpp) evaluates it without a call, and without the
 // math library in the common case: one cell's step is short (|lambda s| <= 0.25 on the
 // fast path), where e^x - 1 and sin/cos are short Taylor polynomials whose first omitted

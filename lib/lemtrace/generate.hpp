@@ -1,5 +1,5 @@
 #pragma once
-// Synthetic grids with known fields (spec §4 `gen`): a cube [-1, 1]^3 of n^3 hexahedra,
+// Synthetic grids with known fields (lemtrace(1) `gen`): a cube [-1, 1]^3 of n^3 hexahedra,
 // optionally jittered, split conformingly into tetrahedra (or kept as hexahedra), with
 // a field evaluated at the vertices. Globally linear fields (v = A x + b) are reproduced
 // exactly by the piecewise-linear interpolant, so their paths are known in closed form:

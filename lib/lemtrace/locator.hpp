@@ -1,8 +1,8 @@
 #pragma once
 // Point location: a uniform bin grid over the cells' bounding boxes for the first cell of
-// a path (the only global search the LEM needs, spec §2.9), and a walk through face
+// a path (the only global search the LEM needs, docs/lemtrace.md §4), and a walk through face
 // neighbours towards the most negative barycentric coordinate for the Runge-Kutta
-// methods (§2.10), whose every evaluation of v needs the cell again.
+// methods (docs/lemtrace.md §4), whose every evaluation of v needs the cell again.
 
 #include <cstdint>
 #include <vector>

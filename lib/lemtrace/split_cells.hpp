@@ -1,5 +1,5 @@
 #pragma once
-// Conforming split of hexahedra, voxels, wedges and pyramids into tetrahedra (spec §2.11).
+// Conforming split of hexahedra, voxels, wedges and pyramids into tetrahedra (docs/lemtrace.md).
 //
 // Rule (after Dompierre et al. 1999): every quadrilateral face is cut along the
 // diagonal through its vertex with the smallest global id. Two cells sharing a face see

@@ -1,5 +1,5 @@
 #pragma once
-// Whole paths (spec §2.9-2.10): the locally exact method, one closed-form step per cell
+// Whole paths (docs/lemtrace.md §4): the locally exact method, one closed-form step per cell
 // with face-neighbour traversal, and the classical integrators for comparison.
 
 #include <cstdint>

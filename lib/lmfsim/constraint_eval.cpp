@@ -1,4 +1,4 @@
-// The constraint calculus of spec §2.2. Notation: anchor P = p + w with w = R r;
+// The constraint calculus of docs/lmfsim.md §2. Notation: anchor P = p + w with w = R r;
 // Pdot = v + omega x w; the part of Pddot not linear in (a, alpha) is omega x (omega x w).
 // Each row is written as C, dC/dt = J xdot (+ dC/dt explicit), J, and c such that
 // Cddot = J xdd + c.
@@ -47,7 +47,7 @@ void ball_rows(ConstraintEval& e, int row, const Anchor& A, const Anchor& B) {
 }
 
 // Orientation lock: C = 2 vec(e), e = q_a (q_b q0)^-1 with e_w >= 0; J ang a = I,
-// ang b = -I, c = 0 (first-order, spec §2.2).
+// ang b = -I, c = 0 (first-order, docs/lmfsim.md §2).
 void orientation_rows(ConstraintEval& e, int row, const Constraint& c, const BodyKin& ka, const BodyKin& kb) {
   const Quat qa(ka.R), qb(kb.R);
   Quat err = qa * (qb * c.rest).conjugate();

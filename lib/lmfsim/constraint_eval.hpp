@@ -1,5 +1,5 @@
 #pragma once
-// Evaluation of one constraint at a state (spec §2.2): C (or C_v for velocity rows),
+// Evaluation of one constraint at a state (docs/lmfsim.md §2): C (or C_v for velocity rows),
 // dC/dt, the Jacobian blocks J_a, J_b (rows x 6, linear | angular) and c of the
 // acceleration form J xdd + c = 0.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Time integration of the system's state (spec §2.6): explicit Euler, symplectic
+// Time integration of the system's state (docs/lmfsim.md §6): explicit Euler, symplectic
 // (semi-implicit) Euler, classic RK4 and Dormand-Prince 5(4) with error control.
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 #pragma once
-// The in-memory scene of lmfsim (spec §2.10, §4): bodies, constraints, force elements,
+// The in-memory scene of lmfsim (docs/lmfsim.md): bodies, constraints, force elements,
 // events and simulation settings. Pure data; parsing and writing live in tools/lmfsim.
 
 #include <array>
@@ -135,13 +135,13 @@ struct Scene {
   SimSettings sim;
 };
 
-// Rows of each constraint type (§2.2 table).
+// Rows of each constraint type (docs/lmfsim.md §2).
 int constraint_rows(ConstraintType t);
 // True for velocity-level (non-holonomic) rows: motor, knife_edge.
 bool is_velocity_constraint(ConstraintType t);
 const char* constraint_type_name(ConstraintType t);
 
-// Body-frame inertia from a primitive shape and mass (spec §4 "inertia: auto").
+// Body-frame inertia from a primitive shape and mass (docs/lmfsim.md "inertia: auto").
 Mat3 shape_inertia(const Shape& shape, double mass);
 
 // Mass, COM and inertia about the COM of a closed triangle mesh of unit density by

@@ -14,7 +14,7 @@
 namespace fest::lmfsim {
 namespace {
 
-// a_ki of spec §2.5: how link i's angle moves link k's COM.
+// a_ki of the reduced references (docs/lmfsim.md §5): how link i's angle moves link k's COM.
 double weight(const ReducedChain& ch, int k, int i) {
   if (i < k) return 1;
   if (i == k) return ch.links[static_cast<std::size_t>(k)].com;

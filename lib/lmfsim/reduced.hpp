@@ -1,5 +1,5 @@
 #pragma once
-// Reduced-coordinate references (spec §2.5), planar in the x-z plane, gravity -g z:
+// Reduced-coordinate references (docs/lmfsim.md §5), planar in the x-z plane, gravity -g z:
 //  * open chains of N links about parallel hinge axes, angles from the downward vertical;
 //  * the four-bar linkage as a 1-DOF Lagrangian system in the crank angle.
 

@@ -1,7 +1,7 @@
 #pragma once
-// The run loop (spec §2.6, §2.8): fixed steps of `dt` (rk45 adapts inside each), events
+// The run loop (docs/lmfsim.md §6): fixed steps of `dt` (rk45 adapts inside each), events
 // at the first step boundary at or after their time, a frame every `every` steps, and
-// the run-time checks of §4 (non-finite state, |C| above the limit).
+// the run-time checks of lmfsim(1) EXIT STATUS (non-finite state, |C| above the limit).
 
 #include <functional>
 

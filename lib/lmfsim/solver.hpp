@@ -1,5 +1,5 @@
 #pragma once
-// Solvers of the LMF system (spec §2.3): given M, F, J and c, find xdd and lambda with
+// Solvers of the LMF system (docs/lmfsim.md §3): given M, F, J and c, find xdd and lambda with
 //   M xdd = F + J^T lambda,   J xdd + c = 0.
 // DenseSolver: assemble A = J M^-1 J^T, Cholesky, truncated-SVD fallback (reference).
 // BaraffSolver: Baraff's O(n) block elimination on the KKT graph of a spanning forest

@@ -1,4 +1,4 @@
-// Baraff's linear-time solver (Baraff 1996; spec §2.3). The KKT matrix
+// Baraff's linear-time solver (Baraff 1996; docs/lmfsim.md §3). The KKT matrix
 //   H = [[M, J^T], [J, 0]]
 // restricted to the primary constraints is the adjacency pattern of a forest whose
 // nodes are bodies and constraints. Eliminating children before parents (block LDL^T)

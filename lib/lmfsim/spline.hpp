@@ -1,6 +1,6 @@
 #pragma once
 // Natural cubic spline through (t_i, y_i) keys (C2), clamped to the end values outside the
-// key range (spec §2.2 `path`, `motor` Omega(t), PID goals).
+// key range (docs/lmfsim.md §2 `path`, `motor` Omega(t), PID goals).
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-// Forces, stabilisation and the derivative evaluation of spec §2.1-§2.5, §2.7.
+// Forces, stabilisation and the derivative evaluation of docs/lmfsim.md §1-§4, §6.
 #include <Eigen/LU>
 
 #include "lmfsim/system.hpp"
@@ -109,7 +109,7 @@ BodyKin System::kinematics(int b, const Eigen::VectorXd& s) const {
   const int o = offset_[static_cast<std::size_t>(m)];
   k.p = s.segment<3>(o);
   if (body.kind == BodyKind::rigid) {
-    // Intermediate RK stages carry unnormalised q: R from q/|q| (spec §2.6).
+    // Intermediate RK stages carry unnormalised q: R from q/|q| (docs/lmfsim.md §6).
     k.R = Quat(s[o + 3], s[o + 4], s[o + 5], s[o + 6]).normalized().toRotationMatrix();
     k.v = s.segment<3>(o + 7);
     k.w = s.segment<3>(o + 10);
@@ -247,7 +247,7 @@ void System::build_problem(double t, const Eigen::VectorXd& s) {
       }
     }
   }
-  // Constraints: evaluate, stabilise (spec §2.4 eq. (6)).
+  // Constraints: evaluate, stabilise (docs/lmfsim.md §4 eq. (6)).
   const SimSettings& sim = scene_.sim;
   const bool baumgarte = sim.stab == Stabilization::baumgarte;
   info_ = EvalInfo();

@@ -1,5 +1,5 @@
 #pragma once
-// The mechanical system in maximal coordinates (spec §2.1, §2.3-§2.5, §2.7-§2.9): state
+// The mechanical system in maximal coordinates (docs/lmfsim.md §1, §3, §5, §6): state
 // layout, forces, the constraint set with its stabilisation, and the derivative
 // f(t, s) = (xdot, xdd) that the integrators call.
 //
@@ -18,7 +18,7 @@
 
 namespace fest::lmfsim {
 
-// Figures of the latest derivative evaluation (spec §2.9).
+// Figures of the latest derivative evaluation (docs/lmfsim.md).
 struct EvalInfo {
   double C_max = 0, Cdot_max = 0, Cv_max = 0;  // active holonomic C, its rate, velocity rows
   int rows = 0;
@@ -58,7 +58,7 @@ class System {
   // Largest |C| over active holonomic rows at (t, s): no solve.
   double max_violation(double t, const Eigen::VectorXd& s) const;
   Energy energy(const Eigen::VectorXd& s) const;
-  // E_scale of spec §2.9 at the initial state.
+  // The energy scale E_scale (docs/lmfsim.md §7) at the initial state.
   double energy_scale() const;
   double length_scale() const { return length_scale_; }
   bool conservative() const;
@@ -73,7 +73,7 @@ class System {
   BodyKin kinematics(int b, const Eigen::VectorXd& s) const;
   Quat orientation(int b, const Eigen::VectorXd& s) const;
 
-  // Events (spec §2.8). Throws bad_input for a target that does not exist.
+  // Events (docs/lmfsim.md §6). Throws bad_input for a target that does not exist.
   void check_event(const Event& e) const;
   void apply_event(const Event& e, Eigen::VectorXd& s);
 

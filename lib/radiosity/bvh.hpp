@@ -1,6 +1,6 @@
 #pragma once
-// A bounding-volume hierarchy over triangles for shadow rays (docs/radiosity.md §2.3,
-// ray-cast form factors and §2.5 gathering): median splits on the longest axis, an
+// A bounding-volume hierarchy over triangles for shadow rays (docs/radiosity.md §3,
+// ray-cast form factors and §5 gathering): median splits on the longest axis, an
 // any-hit query for a segment.
 
 #include <array>

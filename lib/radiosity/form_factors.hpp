@@ -1,5 +1,5 @@
 #pragma once
-// The form factors a shot needs (docs/radiosity.md §2.3), by one of three engines:
+// The form factors a shot needs (docs/radiosity.md §3), by one of three engines:
 //
 //  * hemicube (Cohen & Greenberg 1985): a hemicube at the shooter's centroid sees every
 //    element; F_{i->e} is read off, the receiving value by reciprocity
@@ -49,7 +49,7 @@ class FormFactors {
   void shoot(int i, std::vector<double>& recv, std::vector<double>& row);
 
   // F from a point with a normal to patch k, unoccluded contour integral times the
-  // visible fraction of `samples` shadow rays (adaptive gathering, §2.5).
+  // visible fraction of `samples` shadow rays (adaptive gathering, §5).
   double point_to_patch(const Eigen::Vector3d& y, const Eigen::Vector3d& n, int k) const;
 
   const Hemicube* hemicube() const { return hemicube_.get(); }

@@ -1,5 +1,5 @@
 #pragma once
-// The hemicube of Cohen & Greenberg 1985 (docs/radiosity.md §2.3): a unit hemicube at a
+// The hemicube of Cohen & Greenberg 1985 (docs/radiosity.md §3): a unit hemicube at a
 // point with a normal, its top face H x H pixels and four half faces H x H/2, delta form
 // factors
 //

@@ -1,9 +1,9 @@
 #pragma once
-// The discretised scene of docs/radiosity.md §2.2 and §2.7: objects (name, reflectance,
+// The discretised scene of docs/radiosity.md §2 and §2: objects (name, reflectance,
 // emission) made of input faces, faces split into patches (the shooters), patches into
 // elements (the receivers). Piecewise-constant radiosity B lives on the elements; a
 // patch's B is the area average of its elements, and a patch carries the unshot U and
-// the total shot S of progressive refinement (§2.4).
+// the total shot S of progressive refinement (§4).
 
 #include <array>
 #include <string>
@@ -41,10 +41,10 @@ struct Element {
   double area = 0;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();
   int patch = -1;
-  int level = 0;        // adaptive subdivision level (§2.5)
+  int level = 0;        // adaptive subdivision level (§5)
   bool active = true;   // leaves are active; a split element hands over to its children
   Rgb B = Rgb::Zero();  // radiosity
-  Rgb H = Rgb::Zero();  // irradiance accumulated from shots (§2.4 step 4)
+  Rgb H = Rgb::Zero();  // irradiance accumulated from shots (§4 step 4)
 };
 
 struct Patch {
@@ -66,7 +66,7 @@ struct Model {
   double diagonal = 1;             // bounding-box diagonal of the scene
 
   std::vector<int> active_elements() const;
-  // Resets B = E, U = E, S = 0, H = 0 (the start of §2.4).
+  // Resets B = E, U = E, S = 0, H = 0 (the start of §4).
   void reset_solution();
   // B_p as the area average of the patch's active elements.
   void update_patch_radiosity(int p);

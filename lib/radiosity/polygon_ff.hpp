@@ -1,5 +1,5 @@
 #pragma once
-// Exact (unoccluded) form factors of planar polygons (docs/radiosity.md §2.3):
+// Exact (unoccluded) form factors of planar polygons (docs/radiosity.md §3):
 // the point-to-polygon contour integral of Lambert/Nusselt,
 //
 //   F_{dy->P} = (1/2pi) sum_k gamma_k n_y . (R_k x R_k+1) / |R_k x R_k+1|,

@@ -1,6 +1,6 @@
 #pragma once
 // The input of radiosity: objects made of polygonal faces with one reflectance and one
-// emission each (docs/radiosity.md §2.7), and the checks every scene passes before it is
+// emission each (docs/radiosity.md §2), and the checks every scene passes before it is
 // meshed (bad input is refused here, in the scene's own terms).
 
 #include <cstddef>
@@ -49,7 +49,7 @@ struct MeshingOptions {
   bool emission_is_radiance = true;  // E = pi * emission (Cornell "17 12 4" is radiance)
 };
 
-// Splits faces into patches and elements (§2.2): quads into grids of quads, triangles
+// Splits faces into patches and elements (§2): quads into grids of quads, triangles
 // (and non-planar or non-convex quads, and polygons after fan triangulation) into 4^k
 // triangles. Solution values are reset (B = E, U = E).
 Model build_model(const Scene& scene, const MeshingOptions& options);

@@ -1,13 +1,13 @@
 #pragma once
-// Progressive refinement radiosity (docs/radiosity.md §2.4) with the four shot rules
+// Progressive refinement radiosity (docs/radiosity.md §4) with the four shot rules
 //
 //   pr        s = U_i                                   (Cohen et al. 1988, Southwell)
 //   sor       s = omega U_i                             (Gortler et al. 1993)
 //   overshoot s = U_i + rho_i sum_k F_{i->k} max(U_k, 0) (Feda & Purgathofer 1992)
-//   orpr      s = U_i + omega rho_i sum_k F_{i->k} U_k   (over-relaxed PR, §2.4)
+//   orpr      s = U_i + omega rho_i sum_k F_{i->k} U_k   (over-relaxed PR, §4)
 //
 // keeping the invariant B = E + rho F (B - U) (everything in B except U has been shot),
-// and adaptive element subdivision (§2.5) between rounds of shooting.
+// and adaptive element subdivision (§5) between rounds of shooting.
 
 #include <functional>
 #include <string>
@@ -39,7 +39,7 @@ struct SolveOptions {
   double omega = -1;      // < 0: the solver's default (orpr 1.0, sor 1.5)
   double tol = 1e-3;
   long max_shots = 0;     // 0: 10 x patches (per level)
-  int levels = 0;         // adaptive subdivision rounds (§2.5)
+  int levels = 0;         // adaptive subdivision rounds (§5)
   double grad = 0.05;     // split elements whose relative luminance step exceeds this
   double min_element = 0; // do not split elements whose longest edge is at most this
   int threads = 1;
@@ -61,7 +61,7 @@ struct SolveStats {
 // Solves from the model's current state (build_model leaves B = E, U = E).
 SolveStats solve(Model& model, FormFactors& ff, const SolveOptions& options);
 
-// Vertex luminance gradients and the split of one round of §2.5; returns elements split.
+// Vertex luminance gradients and the split of one round of §5; returns elements split.
 long subdivide(Model& model, const FormFactors& ff, double grad, double min_element, int threads);
 
 }  // namespace fest::radiosity

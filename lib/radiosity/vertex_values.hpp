@@ -1,5 +1,5 @@
 #pragma once
-// Vertex radiosity by nodal averaging (docs/radiosity.md §2.6, Cohen & Greenberg): a
+// Vertex radiosity by nodal averaging (docs/radiosity.md §6, Cohen & Greenberg): a
 // vertex is shared by the elements of one object whose normals lie within the crease
 // angle of each other (never across objects, so objects stay independent); its B and H
 // are the area-weighted means over those elements. Display colours map L = B / pi through

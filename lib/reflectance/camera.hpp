@@ -1,5 +1,5 @@
 #pragma once
-// The calibrated pinhole camera of specs/brdffit.md §2.1 and capture.md §2.8 (cam.json):
+// The calibrated pinhole camera of docs/brdffit.md §1 and fest-capture(5) (cam.json):
 // intrinsics K (fx, fy, cx, cy), OpenCV distortion (k1, k2, p1, p2, k3), extrinsics R, t
 // mapping world to camera (x_cam = R x + t), image size. Pixel centres lie at integer
 // coordinates (OpenCV's convention): pixel (i, j) covers [i - 0.5, i + 0.5] x [j - 0.5, j + 0.5].
@@ -27,7 +27,7 @@ struct PinholeCamera {
     return {fx * xc.x() / xc.z() + cx, fy * xc.y() / xc.z() + cy};
   }
   // Projection of a world point as the real lens images it (distortion applied): where to
-  // read a photograph. Rendering uses the ideal projection (the images of §2.1 are
+  // read a photograph. Rendering uses the ideal projection (the images of docs/brdffit.md §1 are
   // "pinhole after distortion correction"; with dist = 0 both agree).
   Eigen::Vector2d project_distorted(const Eigen::Vector3d& world) const;
   // World direction (unit) of the ray through ideal pixel coordinates (u, v).

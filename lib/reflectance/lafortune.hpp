@@ -1,6 +1,6 @@
 #pragma once
 // The Lafortune BRDF (Lafortune, Foo, Torrance, Greenberg, SIGGRAPH 1997), isotropic, as
-// specs/brdffit.md §2.2 uses it; shared by brdffit (fitting, rendering) and the simulated
+// docs/brdffit.md §2 uses it; shared by brdffit (fitting, rendering) and the simulated
 // camera of capture (which renders objects made of known materials). Per colour channel c:
 //
 //   f_c(u, v) = rho_d,c / pi + sum_k max(0, Cxy_k,c (ux vx + uy vy) + Cz_k,c uz vz)^N_k,c
@@ -32,11 +32,11 @@ struct LafortuneBrdf {
 // surface are the caller's business (the radiance sample multiplies by u_z).
 Rgb evaluate(const LafortuneBrdf& brdf, const Eigen::Vector3d& u_local, const Eigen::Vector3d& v_local);
 
-// The local frame of §2.1: t = normalize(n x a), a = the world axis least aligned with n,
+// The local frame of docs/brdffit.md §1: t = normalize(n x a), a = the world axis least aligned with n,
 // b = n x t. Columns of the result are t, b, n, so local = frame.transpose() * world.
 Eigen::Matrix3d local_frame(const Eigen::Vector3d& unit_normal);
 
-// pbrt-v1's "clay" (3 lobes, measured by Lafortune et al.), the spec's reference material.
+// pbrt-v1's "clay" (3 lobes, measured by Lafortune et al.), the reference material of docs/brdffit.md §7.
 LafortuneBrdf clay();
 
 }  // namespace fest::reflectance

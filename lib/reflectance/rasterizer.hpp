@@ -38,7 +38,7 @@ struct RasterOptions {
 
 Fragments rasterize(const TriangleMesh& mesh, const PinholeCamera& camera, const RasterOptions& options = {});
 
-// Coverage only, as 0/1 bytes in row-major order (silhouette registration, §2.8):
+// Coverage only, as 0/1 bytes in row-major order (silhouette registration, docs/brdffit.md §6):
 // the same inclusive pixel-centre rule, no depth.
 std::vector<std::uint8_t> rasterize_silhouette(const TriangleMesh& mesh, const PinholeCamera& camera, int threads = 1);
 

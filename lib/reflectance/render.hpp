@@ -1,6 +1,6 @@
 #pragma once
-// Rendering of a mesh made of Lafortune materials under one point light (specs/brdffit.md
-// §2.1, §2.10): for every pixel the visible surface point p with its interpolated shading
+// Rendering of a mesh made of Lafortune materials under one point light (docs/brdffit.md
+// §1, §6): for every pixel the visible surface point p with its interpolated shading
 // normal n, u towards the light, v towards the camera, and
 //
 //   L = I f_r(u, v) u_z / d^2      (d = |q - p|; 0 when shadowed or when u_z or v_z <= 0)

@@ -1,5 +1,5 @@
 #pragma once
-// The 1-D sampling-chain analysis behind `resample chain1d` (spec §2.2, §2.10, Fig. 10.10):
+// The 1-D sampling-chain analysis behind `resample chain1d` (docs/resample.md "The 1-D chain and the optimal prefilter", Fig. 10.10):
 // a unit cosine of frequency f is prefiltered by p, sampled at the integers and shown
 // through the display's reconstruction filter r.
 
@@ -23,7 +23,7 @@ struct ChainResult {
   double amplitude_at(int k) const { return amplitude.at(static_cast<std::size_t>(k + terms)); }
 };
 
-// K = 2000 is the spec's default; the tail beyond it changes the figures by < 1e-5 for
+// K = 2000 is the default (docs/resample.md "The 1-D chain"); the tail beyond it changes the figures by < 1e-5 for
 // a box display (Σ sinc² converges like 1/K) and far less for smoother displays.
 ChainResult analyse_chain(const Kernel& prefilter, const Kernel& display, double f, int terms = 2000);
 

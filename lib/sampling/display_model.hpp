@@ -1,5 +1,5 @@
 #pragma once
-// Display reconstruction models of `resample display` (spec §2.5, §10.4.3): the point
+// Display reconstruction models of `resample display` (docs/resample.md "Display reconstruction", §10.4.3): the point
 // response r with which a display turns samples into the continuous image the viewer sees.
 
 #include <string>

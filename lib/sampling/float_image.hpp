@@ -1,5 +1,5 @@
 #pragma once
-// The working form of resize (spec §2.1): 32-bit float, interleaved, C channels, rows
+// The working form of resize (docs/resample.md): 32-bit float, interleaved, C channels, rows
 // top-down, in linear light with premultiplied alpha unless told otherwise.
 
 #include <cstddef>

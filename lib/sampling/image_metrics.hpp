@@ -1,5 +1,5 @@
 #pragma once
-// Image error measures of `resample metrics` (spec §2.10): RMSE / PSNR / max abs error
+// Image error measures of `resample metrics` (docs/resample.md): RMSE / PSNR / max abs error
 // against a reference, and the zone-plate aliasing energy (AE) and pass-band retention (PR).
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The kernel catalogue of resample (spec resample.md §2.3): 1-D even kernels k(x) in units
+// The kernel catalogue of resample (docs/resample.md "Kernels and their responses"): 1-D even kernels k(x) in units
 // of output pixels, looked up by the names used on the command line
 // ("name:key=value,key=value").
 
@@ -18,7 +18,7 @@ struct Kernel {
   bool interpolating = false;  // k(0) = 1 and k(n) = 0 at the other integers
   bool nearest = false;        // `point`: pick the nearest sample, no filtering
   // dual:R only: the spelling of the display's reconstruction filter R (resize correlates
-  // with R, then applies the discrete inverse of R's sampled autocorrelation, §2.2).
+  // with R, then applies the discrete inverse of R's sampled autocorrelation, docs/resample.md "The 1-D chain and the optimal prefilter").
   std::string reconstruction;
   // k(x), not normalised (resize normalises its weights; responses divide by K(0)).
   // Empty where the kernel has no finite spatial form (dual:*).

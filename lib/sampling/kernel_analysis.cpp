@@ -11,7 +11,7 @@ namespace fest::sampling {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-constexpr double step = 1e-4;  // spec §2.10
+constexpr double step = 1e-4;  // docs/resample.md "Kernels and their responses"
 
 bool has_finite_spatial(const Kernel& k) {
   return k.spatial && std::isfinite(k.radius) && k.radius > 0 && !k.nearest;

@@ -1,5 +1,5 @@
 #pragma once
-// Kernel analysis for `resample kernel` (spec §2.10): the frequency response at the
+// Kernel analysis for `resample kernel` (docs/resample.md): the frequency response at the
 // pass-band and Nyquist probes, stop-band leakage, and the step response's over- and
 // undershoot (the ringing that users see on edges).
 

@@ -81,7 +81,7 @@ Kernel gaussian(const KernelSpelling& s) {
   k.name = fmt::format("gaussian:sigma={}", sigma);
   k.radius = 3 * sigma;
   k.spatial = [sigma](double x) { return truncated_gaussian(sigma, x); };
-  // The closed form is the untruncated spot (a CRT display model, §2.5): chain1d treats
+  // The closed form is the untruncated spot (a CRT display model, docs/resample.md "Display reconstruction"): chain1d treats
   // the display as that ideal Gaussian. The resize kernel is cut at 3σ; its own transform
   // (numerical_response) differs by < 0.005.
   k.response = [sigma](double f) { return std::exp(-2 * pi * pi * sigma * sigma * f * f); };
@@ -145,7 +145,7 @@ Kernel point() {
   return k;
 }
 
-// P_opt = R / A_r with A_r(f) = Σ_k R(f + k)² (spec §2.2): the L2-optimal prefilter for a
+// P_opt = R / A_r with A_r(f) = Σ_k R(f + k)² (docs/resample.md "The 1-D chain and the optimal prefilter"): the L2-optimal prefilter for a
 // display whose reconstruction filter is R.
 Kernel dual(const KernelSpelling& s) {
   if (s.rest.empty()) throw usage_error("kernel 'dual' needs a reconstruction kernel: dual:box, dual:tent, ...");
@@ -153,7 +153,7 @@ Kernel dual(const KernelSpelling& s) {
   if (r.nearest || r.name == "sinc" || r.name.rfind("dual:", 0) == 0)
     throw usage_error("kernel 'dual:{}': the display kernel must be a finite reconstruction filter", s.rest);
   if (r.name == "box") {
-    // a_r = δ, so A_r = 1 and the dual of the box is the box itself (§2.2); keeping the
+    // a_r = δ, so A_r = 1 and the dual of the box is the box itself (docs/resample.md "The 1-D chain and the optimal prefilter"); keeping the
     // spatial form lets resize use it directly.
     Kernel k = box();
     k.name = "dual:box";

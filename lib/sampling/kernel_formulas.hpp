@@ -1,5 +1,5 @@
 #pragma once
-// The closed-form kernel shapes of spec §2.3 as plain functions, so that the catalogue
+// The closed-form kernel shapes of docs/resample.md "Kernels and their responses" as plain functions, so that the catalogue
 // only parses names and the tests can evaluate a shape without going through a name.
 
 namespace fest::sampling {
@@ -19,7 +19,7 @@ double blackman_harris(double width, double x);
 // sinc(x) I0(beta sqrt(1 - (x/a)^2)) / I0(beta) for |x| < a, else 0.
 double kaiser(double a, double beta, double x);
 
-// exp(-x^2 / (2 sigma^2)) for |x| < 3 sigma, else 0 (the spec truncates at 3 sigma).
+// exp(-x^2 / (2 sigma^2)) for |x| < 3 sigma, else 0 (truncated at 3 sigma).
 double truncated_gaussian(double sigma, double x);
 
 }  // namespace fest::sampling

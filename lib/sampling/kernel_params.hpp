@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of a kernel spelling "name:key=value,key=value" (spec §2.3).
+// Parameters of a kernel spelling "name:key=value,key=value" (docs/resample.md "Kernels and their responses").
 
 #include <map>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Whole-line filters along one axis of a FloatImage (spec §2.2, §2.4 step 6, §2.3 sinc):
+// Whole-line filters along one axis of a FloatImage (docs/resample.md "The 1-D chain and the optimal prefilter", "Separable passes and their order", "Kernels and their responses" sinc):
 // the recursive B-spline-style inverse filters of the dual prefilters, their frequency-
 // domain counterpart for other displays, and the ideal low-pass (DCT) resampler.
 

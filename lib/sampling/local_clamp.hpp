@@ -1,5 +1,5 @@
 #pragma once
-// ClampMode::local of the resize (spec §2.4 step 7): each output value is clamped to the
+// ClampMode::local of the resize (docs/resample.md "Separable passes and their order"): each output value is clamped to the
 // [min, max] of the input samples under the kernel's main lobe, |n − u| ≤ σ along each
 // axis (σ = max(1, n_in/n_out)), which removes ringing without flattening real contrast.
 

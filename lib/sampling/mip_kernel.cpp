@@ -14,7 +14,7 @@ namespace {
 std::vector<double> level_weights(int level, double x, MipBuild build, int n0) {
   const int b = 1 << level;
   const int n_level = n0 / b;
-  // Lookup at level L: texel j covers [j b, (j+1) b), centre (j + ½) b (§2.8).
+  // Lookup at level L: texel j covers [j b, (j+1) b), centre (j + ½) b (docs/resample.md "Mip-mapping").
   const double t = x / b - 0.5;
   const double j0 = std::floor(t), phi = t - j0;
   std::vector<double> v(static_cast<std::size_t>(n_level), 0.0);

@@ -1,5 +1,5 @@
 #pragma once
-// The filter that mip-mapping really applies (spec §2.8, Fig. 10.12/10.13): the weights
+// The filter that mip-mapping really applies (docs/resample.md "Mip-mapping", Fig. 10.12/10.13): the weights
 // of the level-0 texels in one linearly interpolated lookup at level L. The pyramid is
 // linear, so the weights are the lookup's interpolation vector pulled back through every
 // reduction step (the transposed pyramid).

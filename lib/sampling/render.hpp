@@ -1,5 +1,5 @@
 #pragma once
-// Supersampled rendering of an analytic scene (spec §2.6): each pixel is the normalised
+// Supersampled rendering of an analytic scene (docs/resample.md "Rendering analytic scenes"): each pixel is the normalised
 // weighted sum Σ w(x_s − x_c) f(x_s) / Σ w of the samples within the pixel filter's reach,
 // which may cover neighbouring pixels' samples when the filter is wider than a pixel.
 

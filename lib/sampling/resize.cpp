@@ -58,7 +58,7 @@ void clamp_to_input_range(const FloatImage& in, bool integer, FloatImage& out) {
   clamp_to_range(input_range(in), out);
 }
 
-// The correction of a dual prefilter on the output grid along one axis (§2.2): the
+// The correction of a dual prefilter on the output grid along one axis (docs/resample.md "The 1-D chain and the optimal prefilter"): the
 // discrete filter with DTFT 1/A_r, recursive for the B-spline displays, spectral otherwise.
 void dual_correction(FloatImage& img, Axis axis, const Kernel& r, double epsilon, int threads) {
   if (r.name == "triangle") return recursive_inverse(img, axis, {std::sqrt(3.0) - 2}, threads);

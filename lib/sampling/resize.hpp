@@ -1,5 +1,5 @@
 #pragma once
-// Separable resize (spec resample.md §2.4): image in, image out, any kernel of the
+// Separable resize (docs/resample.md "Separable passes and their order"): image in, image out, any kernel of the
 // catalogue -- finite kernels through weight tables, `sinc` through the line spectra,
 // `dual:R` as correlation with R followed by the inverse of R's sampled autocorrelation --
 // in linear light with premultiplied alpha by default.
@@ -15,7 +15,7 @@
 
 namespace fest::sampling {
 
-// Anti-ringing clamp (§2.4 step 7).
+// Anti-ringing clamp (docs/resample.md "Separable passes and their order").
 enum class ClampMode {
   automatic,  // `range` for integer outputs (saturation does it), `none` for float
   none,       // keep negative lobes' overshoot
@@ -24,7 +24,7 @@ enum class ClampMode {
 };
 
 struct ResizeOptions {
-  Kernel kernel = make_kernel("mitchell");  // the spec's default downscale kernel
+  Kernel kernel = make_kernel("mitchell");  // the default downscale kernel (resample(1))
   // A different kernel along y (the CRT display model: hold-box ⊗ spot along x, spot
   // along y); unset: `kernel` on both axes.
   std::optional<Kernel> kernel_y;
@@ -34,7 +34,7 @@ struct ResizeOptions {
   bool linear_light = true;
   bool premultiply_alpha = true;  // false: --alpha none
   ClampMode clamp = ClampMode::automatic;
-  bool hicomp = false;              // highlight compression for HDR (§2.4 step 3)
+  bool hicomp = false;              // highlight compression for HDR (docs/resample.md "Where each part is implemented")
   bool dither = false;              // triangular ±½ LSB noise before rounding
   std::uint64_t seed = 1;           // of the dither
   int output_depth = -1;            // CV_8U, CV_16U, CV_32F; -1: the input's

@@ -1,5 +1,5 @@
 #pragma once
-// Per-pixel sample patterns of `resample render` (spec §2.6). Every pattern is a pure
+// Per-pixel sample patterns of `resample render` (docs/resample.md "Rendering analytic scenes"). Every pattern is a pure
 // function of (pattern, N, seed, pixel): the samples of a pixel never depend on the order
 // in which pixels are rendered, so output is bit-identical for any thread count.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Analytic test scenes of `resample render` (spec §2.6): continuous functions of screen
+// Analytic test scenes of `resample render` (docs/resample.md "Rendering analytic scenes"): continuous functions of screen
 // position (x, y) in output pixels (origin at the top-left corner, pixel (i, j) covering
 // [i, i+1) × [j, j+1)), with values in linear [0, 1].
 
@@ -27,7 +27,7 @@ struct Scene {
 //   siemens:   spokes (64)
 //   edges:     cx, cy, radius (32.17, 31.61, 20.3), angle (23°), offset (40 (cos + sin))
 //   point:     w (1), x0, y0 (centre), zoom (8); `filter` is the pixel filter, or the
-//              radial "lowpass" / "bandpass" (lo = 0.2) of the spec
+//              radial "lowpass" / "bandpass" (lo = 0.2) of docs/resample.md "Rendering analytic scenes"
 Scene make_scene(const std::string& name, const std::map<std::string, double>& params, int width, int height,
                  const std::string& point_filter = "lowpass");
 

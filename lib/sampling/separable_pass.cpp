@@ -166,7 +166,7 @@ template <typename V>
 namespace {
 
 #if defined(__x86_64__) && defined(__GNUC__)
-// The optional AVX2 path of spec §7: 8-lane vectors where the CPU has them.
+// The optional AVX2 path (docs/resample.md "Separable passes and their order"): 8-lane vectors where the CPU has them.
 __attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const float* const* src, const float* w,
                                                           std::size_t taps, std::size_t begin, std::size_t end) {
   accumulate_rows_with<Lanes8>(dst, src, w, taps, begin, end);

@@ -1,5 +1,5 @@
 #pragma once
-// One axis of the separable resize (spec §2.4 step 5). Rows are independent, so they are
+// One axis of the separable resize (docs/resample.md "Separable passes and their order"). Rows are independent, so they are
 // split across threads; each output value is summed in the same order whatever the
 // thread count, which keeps the output bit-identical for any --threads.
 

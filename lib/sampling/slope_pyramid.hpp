@@ -1,5 +1,5 @@
 #pragma once
-// Roughness-preserving slope pyramid (spec §2.9, §10.7, [Sch97]): instead of averaging
+// Roughness-preserving slope pyramid (docs/resample.md "Roughness-preserving normal pyramid", [Sch97]): instead of averaging
 // normals, which forgets the bumps that a coarse level can no longer show, each level
 // keeps the first and second moments of the surface slopes s = (−n_x/n_z, −n_y/n_z):
 // M₁ = E[s], M₂ = E[s sᵀ]. Moments average exactly under the box pyramid; per level the

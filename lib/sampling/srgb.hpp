@@ -1,5 +1,5 @@
 #pragma once
-// sRGB transfer functions (IEC 61966-2-1), as spec §2.4 steps 1 and 8 state them.
+// sRGB transfer functions (IEC 61966-2-1), for the decode and encode steps of docs/resample.md "Streaming".
 
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Texture minification (spec §2.7, §10.3.2, §10.6): a mip pyramid and the lookups that
+// Texture minification (docs/resample.md "Mip-mapping", §10.3.2, §10.6): a mip pyramid and the lookups that
 // filter it for a screen pixel's footprint -- nearest, bilinear, trilinear, hardware-style
 // anisotropic probes and EWA -- plus the dense supersampled ground truth they approximate.
 

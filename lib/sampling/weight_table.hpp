@@ -1,5 +1,5 @@
 #pragma once
-// Per-axis filter weights of the separable resize (spec §2.4 step 4): for each output
+// Per-axis filter weights of the separable resize (docs/resample.md "Separable passes and their order"): for each output
 // index, the input indices it reads (edge handling already applied) and their weights.
 
 #include <vector>
@@ -8,7 +8,7 @@
 
 namespace fest::sampling {
 
-// How indices outside [0, n) are mapped back (spec §2.4 step 4).
+// How indices outside [0, n) are mapped back (docs/resample.md "Separable passes and their order").
 enum class EdgeMode {
   clamp,    // repeat the edge sample
   reflect,  // mirror without repeating the edge sample: -1 -> 1, n -> n-2

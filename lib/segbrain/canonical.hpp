@@ -1,5 +1,5 @@
 #pragma once
-// Reorientation to the canonical RAS+ voxel order (spec §2.2): axes are permuted and
+// Reorientation to the canonical RAS+ voxel order (docs/segbrain.md): axes are permuted and
 // flipped, never resampled, so the mapping back is exact.
 
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// Tissue classes by intensity (spec §2.4 tissue_classes / classify): 1-D k-means inside
+// Tissue classes by intensity (docs/segbrain.md §3 tissue_classes / classify): 1-D k-means inside
 // a mask and nearest-mean labelling, for the grey/white matter split of --tissue.
 
 #include <vector>

@@ -1,4 +1,4 @@
-// Connected components on runs (spec §2.4, §7: O(N)), and the hole filling built on them.
+// Connected components on runs (docs/segbrain.md §3: O(N)), and the hole filling built on them.
 //
 // Each row (fixed y, z) is cut into runs of consecutive mask voxels; a run joins the runs
 // of the earlier neighbouring rows that it touches (the neighbourhood decides which rows

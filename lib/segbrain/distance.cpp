@@ -1,5 +1,5 @@
-// Exact Euclidean distance transform and the ball morphology built on it (spec §2.4,
-// §7: O(N) for any radius).
+// Exact Euclidean distance transform and the ball morphology built on it (docs/segbrain.md §3,
+// O(N) for any radius).
 //
 // Separable: the first pass (along x, contiguous) needs only the nearest target of the
 // row, found by a forward and a backward scan; the passes along y and z take the lower

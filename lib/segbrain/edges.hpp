@@ -1,5 +1,5 @@
 #pragma once
-// Second-order edge detection (spec §2.4, the chapter's Marr-Hildreth operator): the
+// Second-order edge detection (docs/segbrain.md §3, the chapter's Marr-Hildreth operator): the
 // Laplacian of the Gaussian-smoothed image and its zero crossings.
 
 #include "segbrain/grid.hpp"

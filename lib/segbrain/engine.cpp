@@ -301,7 +301,7 @@ bool Engine::compare_numbers(const std::string& op, const Term& a, const Term& b
   bool ok = op == "<" ? x < y : op == ">" ? x > y : op == "=<" ? x <= y : op == ">=" ? x >= y
           : op == "=:=" ? x == y : x != y;
   if (!ok && ctx) {
-    // Names the failing check with the measured value, as the spec's error message wants.
+    // Names the failing check with the measured value, so the message says why it failed.
     std::string detail = fmt::format("{} {} {}", x, op, y);
     if (!measure_.empty()) {
       detail.clear();

@@ -1,5 +1,5 @@
 #pragma once
-// The control component (spec §2.2-2.3): SLD resolution over the knowledge base with
+// The control component (docs/segbrain.md §2): SLD resolution over the knowledge base with
 // chronological backtracking, cut, if-then-else, negation as failure, the built-ins of
 // the rule language, and foreign predicates (the methods pool) registered from C++.
 //
@@ -20,7 +20,7 @@
 
 namespace fest::segbrain {
 
-// One port of the trace (spec §2.3 "Trace").
+// One port of the trace (docs/segbrain.md §2 "Trace").
 struct TraceEvent {
   double t_ms = 0;
   const char* port = "call";   // call | exit | fail | redo | error
@@ -98,7 +98,7 @@ class Engine {
   // The last check that failed (clause head name and the failing comparison with the
   // measurement behind it), for "goal ... failed" messages.
   const std::string& last_failing_check() const { return last_check_; }
-  // Goals given to optional/1 that failed (recorded as skipped, spec §2.3).
+  // Goals given to optional/1 that failed (recorded as skipped, docs/segbrain.md §2).
   const std::vector<std::string>& skipped() const { return skipped_; }
   // Clause (file:line) that proved each user goal last, keyed by predicate name.
   const std::map<std::string, std::string>& accepted_by() const { return accepted_by_; }

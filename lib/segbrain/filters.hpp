@@ -1,5 +1,5 @@
 #pragma once
-// Intensity operators: Gaussian smoothing and histogram analysis (spec §2.4).
+// Intensity operators: Gaussian smoothing and histogram analysis (docs/segbrain.md §3).
 
 #include "segbrain/grid.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The canonical voxel grid the operators work on: axes point to anatomical Right,
-// Anterior, Superior (spec §2.2), so "axial slice" means constant z. Images are float,
+// Anterior, Superior (docs/segbrain.md), so "axial slice" means constant z. Images are float,
 // masks uint8 0/1, both x fastest.
 
 #include <array>

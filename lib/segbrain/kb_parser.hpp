@@ -1,5 +1,5 @@
 #pragma once
-// Reader of knowledge-base text (spec §2.3): clauses, facts and directives, with the
+// Reader of knowledge-base text (docs/segbrain.md §2): clauses, facts and directives, with the
 // position of each clause so errors and traces can say "file:line". The parser only
 // reads text it is given; following `:- include(F)` is the caller's job (no I/O in lib/).
 

@@ -1,5 +1,5 @@
 #pragma once
-// Measurements behind the verification predicates (spec §2.5); each is a reconstruction
+// Measurements behind the verification predicates (docs/segbrain.md §3); each is a reconstruction
 // of a check the chapter names ("no connection to skin contour", "reasonable contour
 // length", "comparable to adjacent slices").
 

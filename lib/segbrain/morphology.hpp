@@ -1,6 +1,6 @@
 #pragma once
 // Connected components, exact Euclidean distance transform and the morphology built on
-// it, hole filling and region growing (spec §2.4). Distances are in mm with the grid's
+// it, hole filling and region growing (docs/segbrain.md §3). Distances are in mm with the grid's
 // anisotropic spacing. Voxels beyond the grid are "unknown", not background: the
 // distance transforms see only what lies inside the field of view (edge padding).
 

@@ -1,5 +1,5 @@
 #pragma once
-// The operator table of the rule language (standard Prolog priorities, spec §2.3),
+// The operator table of the rule language (standard Prolog priorities, segbrain-rules(5)),
 // shared by the parser and the printer so printed terms parse back identically.
 
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Worker threads of the segbrain operators (spec §4 --threads, §7 determinism). The
+// Worker threads of the segbrain operators (segbrain(1) --threads; deterministic output). The
 // operators split their work into independent slices, rows or line blocks whose results
 // do not depend on which thread computes them, and every reduction runs in a fixed order
 // on the calling thread, so the output is byte-identical for any thread count.

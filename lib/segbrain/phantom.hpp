@@ -1,8 +1,8 @@
 #pragma once
-// The synthetic T1 head of `segbrain synth` (spec §5, simplified in this version): an
+// The synthetic T1 head of `segbrain synth` (docs/segbrain.md §5, simplified in this version): an
 // ellipsoidal head on a neck, scalp fat, skull, subarachnoid CSF, a gyrified cortex,
 // white matter, two ventricles, two eyes and two optic nerves, with Rician noise and a
-// multiplicative bias field; truth labels use the numbering of spec §2.6.
+// multiplicative bias field; truth labels use the numbering of docs/segbrain.md §3-4.
 
 #include <array>
 #include <cstdint>

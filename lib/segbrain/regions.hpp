@@ -1,5 +1,5 @@
 #pragma once
-// Region division and aggregation of the chapter's edge-based find_brain (spec §2.5,
+// Region division and aggregation of the chapter's edge-based find_brain (docs/segbrain.md §3,
 // helpers 2-4): the image is divided by Marr-Hildreth edges into regions, slice by
 // slice; a starting region of brain is chosen in a reference slice of the upper head,
 // then brain regions are aggregated over the region adjacency graph and propagated to

@@ -1,5 +1,5 @@
 #pragma once
-// Location and shape operators for the objects inside the brain (spec §2.4): where a
+// Location and shape operators for the objects inside the brain (docs/segbrain.md §3): where a
 // mask lies, how it mirrors about a sagittal plane, which of its parts lie near a point,
 // and growth that stays inside another object. Positions are canonical-grid millimetres
 // (index × spacing along R, A, S), so rules compare them with each other, never with

@@ -1,5 +1,5 @@
 #pragma once
-// Terms of the knowledge-base language (a Prolog subset, specs/segbrain.md §2.3).
+// Terms of the knowledge-base language (a Prolog subset, docs/segbrain.md §2, segbrain-rules(5)).
 // A term is a shared node; variables are nodes whose `ref` is set while bound, and the
 // engine's trail unsets them on backtracking, so terms never need copying to undo.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Line tracking (the chapter's "line-tracking techniques", spec §2.4): Hessian
+// Line tracking (the chapter's "line-tracking techniques", docs/segbrain.md §3): Hessian
 // tubularity as a feature and the minimum-cost path between two sets of voxels, used for
 // the optic nerves. Paths are voxel index lists on the canonical grid, in order.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The blackboard of named objects (spec §2.2) and the methods pool registered into the
+// The blackboard of named objects (docs/segbrain.md) and the methods pool registered into the
 // engine as foreign predicates. Objects created by an operator are released when the
 // engine backtracks over the creation, so a retry can reuse the name.
 
@@ -43,7 +43,7 @@ class Workspace {
   const std::vector<Emitted>& emitted() const { return emitted_; }
   std::size_t memo_hits() const { return memo_hits_; }
 
-  // Registers the operators of spec §2.4 that this version provides.
+  // Registers the operators of docs/segbrain.md §3 that this version provides.
   void register_operators(Engine& engine);
   // The second-order edge operators (workspace_edges.cpp) and line tracking
   // (workspace_tracking.cpp); register_operators calls them.

@@ -1,5 +1,5 @@
 #pragma once
-// Closest points on skeleton primitives (docs/softobj.md §2.1): point-segment by clamped
+// Closest points on skeleton primitives (docs/softobj.md §1): point-segment by clamped
 // projection, point-triangle by the Voronoi-region test (Ericson, Real-Time Collision
 // Detection, 5.1.5).
 

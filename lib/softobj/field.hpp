@@ -1,5 +1,5 @@
 #pragma once
-// The potential field of a compiled skeleton (docs/softobj.md §2.1):
+// The potential field of a compiled skeleton (docs/softobj.md §1):
 //   f(r) = sum_P p_P / d_P(r),   grad f = -sum_P p_P (r - R_P) / d_P^3,
 // R_P the point of primitive P closest to r; d clamped to 1e-9 x scale.
 

@@ -90,7 +90,7 @@ class Wrapper {
     }
     lmax_ = lmax_final;
     dev_tol_ = o_.max_deviation;
-    pass(vstar, 1e-12);  // final pass at V* (docs/softobj.md §3.4)
+    pass(vstar, 1e-12);  // final pass at V* (docs/softobj.md §3, step 4)
     finish(vstar);
     return std::move(m_);
   }
@@ -168,7 +168,7 @@ class Wrapper {
     for (int round = 0; round < 3 && dev_tol_ > 0 && refine_faces(value, tol); ++round) flip_to_delaunay();
   }
 
-  // Edge flips towards the Delaunay triangulation (our addition, docs/softobj.md §3.3):
+  // Edge flips towards the Delaunay triangulation (our addition, docs/softobj.md §3, step 3 (e)):
   // an edge whose opposite angles sum to more than pi is flipped when the new chord is
   // acceptable and neither new triangle folds against the field normals. Thin triangles
   // from splitting and collapsing are what fold when the surface shrinks further.
@@ -209,7 +209,7 @@ class Wrapper {
     }
   }
 
-  // Tangential umbrella smoothing (docs/softobj.md §3.3b), then re-projection.
+  // Tangential umbrella smoothing (docs/softobj.md §3, step 3 (b)), then re-projection.
   void relax(double value, double tol) {
     std::vector<Vec> moved(m_.n_vertices());
     for (auto v : m_.vertices()) {
@@ -268,7 +268,7 @@ class Wrapper {
     return nv;
   }
 
-  // Deviation-driven triangle refinement (docs/softobj.md §3.3c'): a triangle whose
+  // Deviation-driven triangle refinement (docs/softobj.md §3, step 3 (c')): a triangle whose
   // centroid lies farther than the tolerance from the surface has its longest edge split
   // (Rivara's longest-edge bisection; the neighbour across that edge is split too, so the
   // mesh stays conforming), then the chords at the new vertices are checked as in refine.
@@ -305,7 +305,7 @@ class Wrapper {
     return st_.splits != before;
   }
 
-  // Split unacceptable chords, longest first (docs/softobj.md §3.3c).
+  // Split unacceptable chords, longest first (docs/softobj.md §3, step 3 (c)).
   void refine(double value, double tol) {
     std::priority_queue<std::pair<double, int>> q;
     for (auto e : m_.edges()) {
@@ -326,7 +326,7 @@ class Wrapper {
   }
 
   // Collapse short, flat chords into one end (that end stays on the surface) when every
-  // chord created stays acceptable with margin and no triangle folds (docs/softobj.md §3.3d).
+  // chord created stays acceptable with margin and no triangle folds (docs/softobj.md §3, step 3 (d)).
   void coarsen() {
     std::vector<std::pair<double, int>> cand;
     for (auto e : m_.edges()) {
@@ -401,7 +401,7 @@ class Wrapper {
     return out;
   }
 
-  // Fold check and repair (docs/softobj.md §3.3e): the vertices of folded triangles and
+  // Fold check and repair (docs/softobj.md §3, step 5): the vertices of folded triangles and
   // their neighbours move to their tangential umbrella centre and back onto the surface.
   void finish(double vstar) {
     auto folded = folded_faces();

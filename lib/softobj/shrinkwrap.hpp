@@ -23,7 +23,7 @@ struct ShrinkwrapOptions {
   bool coarsen = true;
   std::size_t max_vertices = 500000;
   double newton_tol = 1e-6;  // relative |f - V| / V at intermediate steps and of the result
-  // Deviation-driven refinement (docs/softobj.md §3.3c'): when > 0, a chord is also
+  // Deviation-driven refinement (docs/softobj.md §3, step 3 (c')): when > 0, a chord is also
   // unacceptable when its midpoint lies farther than this from the surface, and a triangle
   // whose centroid does is split at its longest edge; coarsening and flips keep every new
   // chord and triangle within 0.8 of it. Absolute, in skeleton units; 0 = off.
@@ -43,7 +43,7 @@ struct ShrinkwrapStats {
 // skeleton's total charge is not positive (no far-field sphere to start from).
 TriMesh shrinkwrap(const Field& field, const ShrinkwrapOptions& options, ShrinkwrapStats* stats = nullptr);
 
-// Newton projection along the gradient onto f = value (docs/softobj.md §3.3a): returns
+// Newton projection along the gradient onto f = value (docs/softobj.md §3, step 3 (a)): returns
 // false when it does not reach |f - value| <= tol value within the iteration limit.
 bool project_to_iso(const Field& field, Eigen::Vector3d& r, double value, double tol, double max_step);
 

@@ -62,7 +62,7 @@ CompiledSkeleton compile_terms(const Skeleton& s) {
       v.second += p;
     }
   }
-  // Inclusion-exclusion (docs/softobj.md §2.1): shared edges subtract (k_e - 1) p_e,
+  // Inclusion-exclusion (docs/softobj.md §1): shared edges subtract (k_e - 1) p_e,
   // vertices add w_v p_v.
   std::map<int, int> shared_at_vertex;
   for (const auto& [e, kp] : edges) {

@@ -37,7 +37,7 @@ struct Term {
 
 struct CompiledSkeleton {
   std::vector<Term> terms;
-  double total_charge = 0;  // Q = p chi for a uniform charge (docs/softobj.md §2.1)
+  double total_charge = 0;  // Q = p chi for a uniform charge (docs/softobj.md §1)
   int shared_edges = 0;
   int euler_characteristic = 0;  // of the triangle complex (V_used - E + T)
   std::vector<int> degenerate_triangles;  // zero area: treated as their longest edge
@@ -49,7 +49,7 @@ struct CompiledSkeleton {
 // offending primitive ("triangle 7 references vertex 12 (only 10 vertices)").
 void validate(const Skeleton& s);
 
-// The inclusion-exclusion terms of docs/softobj.md §2.1: +p per triangle, -p per edge
+// The inclusion-exclusion terms of docs/softobj.md §1: +p per triangle, -p per edge
 // shared by k >= 2 triangles (weight k - 1), w_v p per triangle vertex with
 // w_v = 1 - #triangles(v) + sum over shared edges at v of (k_e - 1); plus free segments
 // and points. Edge and vertex charges are the mean charge of the incident triangles.

@@ -1,5 +1,5 @@
 #pragma once
-// The skeleton scene JSON (docs/softobj.md §4.2) as a codec, text <-> Skeleton:
+// The skeleton scene JSON (softobj(1)) as a codec, text <-> Skeleton:
 //   {"vertices": [[x,y,z],...], "triangles": [[i,j,k],...], "segments": [[i,j],...],
 //    "points": [i,...], "charge": 1.0 | [per primitive...], "iso": 0.1667, "units": "mm"}
 

@@ -3,7 +3,7 @@
 % The strategy is the chapter's (Ehricke, seed 000 ch. 2): top-down refinement, head
 % first, then the brain inside the head outline, every result verified and retried with
 % other parameters when a check fails. Everything numeric below is a RECONSTRUCTION
-% (specs/segbrain.md §2.5): the chapter gives rules by name, not thresholds.
+% (docs/segbrain.md §3-4): the chapter gives rules by name, not thresholds.
 %
 % This version ships head, brain (by intensity window and separation, then the
 % chapter's edge-based clause: Marr-Hildreth edges, region division and aggregation),
@@ -21,7 +21,7 @@ part_of(ventricles, csf).          part_of(subarachnoid_csf, csf).
 part_of(cerebellum, brain).        part_of(brainstem, brain).
 part_of(eye, extracranial).        part_of(optic_nerve, head).
 
-% --- output labels (spec §2.6): label(Index, Name, Parent, [R, G, B]) ---
+% --- output labels (numbers used by emit/2, docs/segbrain.md §1): label(Index, Name, Parent, [R, G, B]) ---
 label(0, background, image, [0, 0, 0]).
 label(1, extracranial, head, [230, 190, 150]).
 label(2, subarachnoid_csf, csf, [80, 160, 255]).
@@ -64,7 +64,7 @@ candidates(brain_window, [(0.55, 1.25), (0.60, 1.20), (0.50, 1.30)]).
 limit(skin_contact_max, 0.003).
 % Ventricles (figure 2.4): dark seeds deep in the brain, grown into the CSF window.
 % Mirror Dice measured 0.76 on Colin27 (1 mm) and 0.40 on the ITK head (2x2x3 mm, a
-% slight yaw the plane search does not model), hence 0.35 rather than the spec's 0.5.
+% slight yaw the plane search does not model), hence 0.35 rather than the 0.5 first chosen.
 limit(ventricles_min_ml, 5).          limit(ventricles_max_ml, 80).
 limit(ventricles_off_midline_mm, 15). limit(ventricles_mirror_dice_min, 0.35).
 limit(ventricles_seed_dist_mm, 45).   limit(ventricles_grow_mm, 4).
@@ -144,7 +144,7 @@ find_brain :-
 % chapter's rule the checks read the refined mask: aggregated tissue regions follow
 % every sulcus, and the contour and slice checks are calibrated on closed, filled masks
 % (as the window clause's are).
-% ORDER: the spec puts this clause first; it comes second, as the other method the
+% ORDER (docs/segbrain.md §3, "Order of methods"): the chapter's clause comes second, as the other method the
 % control system tries when the window clause fails, because as reconstructed here it
 % passes the checks on Colin27 with a brain Dice of only 0.66 (propagation across slices
 % loses the temporal and frontal lobes) and fails them on the ITK head (contour ratio
@@ -207,7 +207,7 @@ plausible_brain_size(M) :-
     ratio_ml(M, head, Q), limit(brain_head_ratio_min, Qlo), limit(brain_head_ratio_max, Qhi),
     Q >= Qlo, Q =< Qhi.
 
-% Labels of spec §2.6, outside in (a later emit overwrites an earlier one).
+% Labels of label/4 above, outside in (a later emit overwrites an earlier one).
 emit_objects :-
     emit(head, 1),
     ( exists(eyes) -> emit(eyes, 10) ; true ),
@@ -225,7 +225,7 @@ emit_brain :-
     emit(inner_csf, 2),
     ( tissue_classification -> emit_tissue ; true ).
 
-% --tissue (spec §2.6 labels 4 and 5): the brain tissue (brain_filled outside the CSF
+% --tissue (labels 4 and 5 of label/4 above; docs/segbrain.md §4): the brain tissue (brain_filled outside the CSF
 % window, which keeps label 2) split into grey and white matter by two-class k-means of
 % its intensities and nearest mean. Verified by the order of the means (T1: GM < WM) and
 % the white-matter mean near the white-matter reference.
@@ -343,7 +343,7 @@ verify_eyes(E) :-
     components(E, 26, 2).   % the growth steps are 26-neighbours
 
 % Optic nerves (figure 2.1; the chapter's "line-tracking techniques"), a RECONSTRUCTION
-% (spec §2.5): from the posterior pole of each globe to the chiasm, the minimum-cost
+% (docs/segbrain.md §4): from the posterior pole of each globe to the chiasm, the minimum-cost
 % path on cost = 1 / (0.05 + tubularity), raised where the intensity leaves the nerve
 % window (on T1 the orbital nerve is darker than the fat around it, the cisternal nerve
 % brighter than the CSF around it). The chiasm is not located on its own: each nerve

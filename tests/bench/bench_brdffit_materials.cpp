@@ -1,11 +1,11 @@
-// brdffit materials stages on bird-size synthetic data (specs/brdffit.md §7): 1.9 M
+// brdffit materials stages on bird-size synthetic data (docs/brdffit.md §7): 1.9 M
 // lumitexels with 6.3 samples each (alternately 6 and 7... on average 6.3) of five known
 // materials on random normals, 1 % noise; for the normal stage the stored normals are
 // then tilted by 5..12 degrees (a bump map the mesh lacks). Prints one JSON line per stage (cluster --clusters 5, project --basis 4,
 // normals) with seconds, peak memory and the stage's accuracy against the truth, next to
 // the targets of §7 and the paper's figures (SGI Octane 300 MHz: clustering + projection
 // about 1.5 h for the same data). The paper's method has no public implementation to run
-// as a same-run anchor (spec §6), so its published hours are printed instead.
+// as a same-run anchor (docs/brdffit.md §7), so its published hours are printed instead.
 //
 //   bench_brdffit_materials [--lumitexels N] [--threads T]
 //
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
         {"peak_rss_mb", peak_rss_mb()}, {"paper", "clustering + projection ~1.5 h on an SGI Octane 300 MHz"}});
 
   // normals: from the mesh normals (tilted), against the projection made with the true
-  // ones (clustering and projection are measured on correct geometry, spec §5 tests 4-5;
+  // ones (clustering and projection are measured on correct geometry, docs/brdffit.md §5;
   // the normal stage on perturbed geometry, test 6).
   for (std::size_t i = 0; i < count; ++i) set.lumitexels[i].n = mesh_n[i].cast<float>();
   t0 = Clock::now();

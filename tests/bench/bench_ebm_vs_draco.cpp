@@ -1,4 +1,4 @@
-// ebcode against Draco 1.5.5 (specs/ebcode.md section 7) on the spec's real meshes and the
+// ebcode against Draco 1.5.5 (docs/ebcode.md §6) on its real meshes and the
 // 1.2 M-triangle subdivided bunny, in the same process: one JSON line per mesh and
 // quantisation, with bytes, bits per vertex (connectivity and total), encode and decode
 // throughput (median of 5 runs, one thread) for ebcode --conn auto (and the size with
@@ -15,7 +15,7 @@
 // unlike wall-clock time on a shared machine).
 //
 // Draco's connectivity is measured by encoding the same mesh with every position equal:
-// its geometry then costs a few bytes, so the rest is connectivity and header (the spec's
+// its geometry then costs a few bytes, so the rest is connectivity and header (the
 // harness subclasses MeshEdgebreakerEncoder instead; its figures are printed alongside as
 // draco_conn_bpv_spec).
 
@@ -155,7 +155,7 @@ long draco_cli_bytes(const MeshSoup& soup, int cl, int qp) {
   return n;
 }
 
-// Draco cl7 connectivity (bpv), measured exactly by the spec's harness (section 3.3).
+// Draco cl7 connectivity (bpv), measured exactly by the harness of docs/ebcode.md §6.
 double spec_draco_conn(const std::string& name) {
   static const std::map<std::string, double> table{{"bunny00", 1.974},   {"armadillo", 2.180}, {"ChineseDragon-10kv", 2.558},
                                                    {"camel", 0.988},     {"fandisk", 1.254}};

@@ -1,4 +1,4 @@
-// hdrmerge against OpenCV's photo module (specs/capture.md §3, §7): the same synthetic
+// hdrmerge against OpenCV's photo module (docs/hdrmerge.md §6): the same synthetic
 // series -- 3040x2008 RGB by default, 12 exposures 1 ms .. 2.048 s, gamma-2.2 camera with
 // 0.5 DN of read noise, radiance over 4 decades -- through lib/hdr's Debevec-Malik
 // calibration and merge, and through cv::CalibrateDebevec(70, 10) + cv::MergeDebevec.

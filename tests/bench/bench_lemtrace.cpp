@@ -1,4 +1,4 @@
-// lemtrace against VTK's vtkStreamTracer (the anchor, spec §7), in the same process on
+// lemtrace against VTK's vtkStreamTracer (the anchor, docs/lemtrace.md §5), in the same process on
 // the same grid and seeds: one JSON line per case.
 //
 //   build/bin/bench_lemtrace [--n 56] [--seeds 1000] [--threads 2] [--no-vtk]

@@ -1,5 +1,5 @@
 // The point location of Table 9.4's integrators against VTK's standard cell searches
-// (specs/lemtrace.md §7). The chapter's integration loop (§9.2.1) finds "the cell
+// (docs/lemtrace.md §5). The chapter's integration loop (§9.2.1) finds "the cell
 // containing the new position" after every step -- "in irregular grids a time consuming
 // cell search is needed for every evaluation" -- and the LEM needs none after the seed
 // (§9.2.3). bench_lemtrace_steps' `euler_cell_search` uses lemtrace's bin-grid

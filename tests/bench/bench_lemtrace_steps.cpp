@@ -1,4 +1,4 @@
-// Table 9.4 of the chapter (specs/lemtrace.md §7) in instructions per step: the cost of
+// Table 9.4 of the chapter (docs/lemtrace.md §5) in instructions per step: the cost of
 // one LEM cell crossing against one step of each Runge-Kutta method at equal step count,
 // on `lemtrace gen sphere-rotation --n 20` with 50 seeds on (0.55, 0, 0.13)-(0.8, 0, 0.13)
 // over one revolution, exactly as `lemtrace bench` sets the RK steps (h = T / S per line).

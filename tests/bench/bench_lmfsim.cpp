@@ -1,4 +1,4 @@
-// lmfsim chain benchmark (spec §7) with ODE 0.16 (Debian libode-dev) on the same chains
+// lmfsim chain benchmark (docs/lmfsim.md §7) with ODE 0.16 (Debian libode-dev) on the same chains
 // in the same run: N boxes L x 0.02 x 0.02 m (L = 1/N m, 1 kg in all), ball joints, the
 // first to the world, horizontal at rest, gravity 9.81; h = 1e-3 over 0.5 s.
 // Prints one JSON line per case: steps/s, max joint separation, energy (exact: E = 0).

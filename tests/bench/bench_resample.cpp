@@ -1,5 +1,5 @@
-// Compute-only benchmark of resample's resize (spec resample.md §7 R1/R2: "compute only
-// (no I/O), 1 thread, codes mode: ≤ 120 ms"), in process on synthetic images, so the
+// Compute-only benchmark of resample's resize (docs/resample.md, R1/R2; target: compute only
+// (no I/O), 1 thread, codes mode: ≤ 120 ms), in process on synthetic images, so the
 // figures exclude file I/O and process start-up; tests/bench/resample_bench.sh measures
 // end to end against the anchors. One JSON line per case, minimum of 3 runs, in ms.
 //

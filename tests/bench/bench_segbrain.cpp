@@ -1,4 +1,4 @@
-// Operator throughputs of spec §7 on a synthetic head volume (single thread): threshold,
+// Operator throughputs (docs/segbrain.md §5) on a synthetic head volume (single thread): threshold,
 // separable Gaussian (sigma 2 mm), 3-D connected components, exact EDT; also erosion by
 // 3 mm and 3-D hole filling, then the same with every core. One JSON line per operator:
 // the median of 5 runs, wall and CPU seconds. Never fails on timing.
@@ -58,7 +58,7 @@ int main() {
   const double mvox = double(p.grid.size()) / 1e6;
   Mask m = threshold(p.t1, 60, 140);
   std::size_t sink = 0;
-  // Spec section 7 targets are single-threaded; the same operators are then run with every
+  // The targets of docs/segbrain.md §5 are single-threaded; the same operators are then run with every
   // core (segbrain run --threads 0) so the parallel speed-up shows beside them.
   const int cores = fest::available_cores();
   for (int threads : {1, cores}) {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# brdffit geometry stages on bird-size synthetic data (specs/brdffit.md §7): 25 views of
+# brdffit geometry stages on bird-size synthetic data (docs/brdffit.md §7): 25 views of
 # 3040x2008 (6 Mpixel) of a 20,480-triangle sphere with 5 materials, one point light,
 # about 1.9 million lumitexels. One JSON line per stage with wall and CPU seconds and
-# peak memory, the spec's target and the paper's time (SGI Octane 300 MHz, chapter 8
+# peak memory, the target of docs/brdffit.md §7 and the paper's time (SGI Octane 300 MHz, chapter 8
 # §8.8: "HDR conversion + registration + lumitexel resampling ~ 5 h") beside it.
 #
 #   tests/bench/brdffit.sh [BIN_DIR] [WORK_DIR]      (defaults: build/bin, a temp dir)
@@ -43,7 +43,7 @@ jq -c '{stage: "lumitexels_counts", lumitexels, samples, mean_samples, dropped, 
         paper_bird: {lumitexels: 1917043, mean_samples: 6.3}}' "$work/lumitexels.json"
 
 # Registration of one 6 Mpixel silhouette from a pose perturbed by 10 degrees and 10 %
-# (the spec's case 7), focal length known; then the automatic initial guess.
+# (docs/brdffit.md §6), focal length known; then the automatic initial guess.
 if [ -f "$testdata/meshes/bunny_scan.ply" ]; then
   "$bin/brdffit" synth --mesh "$testdata/meshes/bunny_scan.ply" --materials 1 --views 1 --width 3040 --height 2008 \
     --threads "$threads" -o "$work/bunny" 2>/dev/null

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# brdffit export (textured glTF, spec §2.9/§2.10) and factor (§2.10) timings. The spec
+# brdffit export (textured glTF, docs/brdffit.md §4, §6) and factor (§6) timings. The docs
 # sets no target for either; the cases show how baking scales with the atlas size and the
 # mesh, and what the fitted-surface lookup (nearest lumitexel per texel) costs. One JSON
 # line per case: wall and CPU seconds, peak memory, atlas size.
@@ -49,7 +49,7 @@ case_ lumitexels_atlas "the same rig with --atlas (home images re-read, charts, 
   --atlas "$work/fit_atlas.exr" --report "$work/fit_atlas.json" -o "$work/fit_atlas.ltx"
 jq -c '{case: "lumitexels_atlas_size", atlas}' "$work/fit_atlas.json"
 
-# factor at the spec's default grid (32 x 64 x 32 x 64, a 2048 x 2048 matrix per channel).
+# factor at the default grid (32 x 64 x 32 x 64, a 2048 x 2048 matrix per channel).
 jq '.materials[0]' "$work/fit/truth.json" > "$work/paint.json"
 case_ factor_32x64 "one lobe, half/difference and (omega_o, omega_i)" -- \
   "$bin/brdffit" factor --brdf "$work/paint.json" --threads "$threads" -o "$work/paint_"

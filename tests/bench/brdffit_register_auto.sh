@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# brdffit register --auto (specs/brdffit.md §5.7): the bunny seen from 10 turntable
+# brdffit register --auto (docs/brdffit.md §7): the bunny seen from 10 turntable
 # angles at 320x240; the automatic initial guess (240 orientations on SO(3), 20 simplex
 # steps each at 1/8 resolution, the best 5 refined) must find the pose for >= 9 of 10.
 # One JSON line per view and a summary line. Not run by CTest. REGISTER_FLAGS adds

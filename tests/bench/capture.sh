@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# capture benchmark (specs/capture.md §7): the fully simulated CI session, 24 angles x
+# capture benchmark (docs/capture.md §6): the fully simulated CI session, 24 angles x
 # 1 light x 12 exposures (+ 1 silhouette per view) at 640 x 480, then hdrmerge
 # --manifest, as one pipeline `capture run | hdrmerge --manifest -`. Prints one JSON line
 # per stage and one for the whole: wall, user and system seconds, peak RSS. Target:

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# feshape speed and quality on real points (spec §7 set-ups), one JSON line per run:
+# feshape speed and quality on real points (docs/feshape.md §3 set-ups), one JSON line per run:
 # the solvers (equilibrium, equilibrium with --reassign-every 10, the seed's explicit
 # Euler) on a lung-sized set (857 of the kitten's points) and a head-sized one (all 5210),
 # and as the anchor, measured in the same run, a uniform model with at least as many

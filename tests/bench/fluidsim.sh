@@ -3,7 +3,7 @@
 # `fluidsim bench`, with the Stam-2003 anchor (stam03 order, 20 Gauss-Seidel sweeps:
 # solver "gs") and 40 Jacobi sweeps measured in the same run, next to the exact
 # solvers (fdm, fft) and multigrid. Not run by CTest (timings on shared machines are
-# noise for pass/fail); read the figures, compare with specs/fluidsim.md section 7.
+# noise for pass/fail); read the figures, compare with docs/fluidsim.md §7.
 #
 #   tests/bench/fluidsim.sh [build/bin] [sizes] [threads] [steps]
 #   tests/bench/fluidsim.sh build/bin 31,64,128 1,2,4,8,16 10     # a machine with 16 cores

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The lmfsim chain benchmark of spec lmfsim §7, with ODE (libode-dev) on the same chains
+# The lmfsim chain benchmark of docs/lmfsim.md §7, with ODE (libode-dev) on the same chains
 # in the same run: one JSON line per case on standard output.
 #   tests/bench/lmfsim_chain.sh [build-dir] [--quick]
 set -eu

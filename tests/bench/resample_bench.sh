@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Benchmark of `resample` against its anchors in the same run (spec resample.md §3 Z1, §7
-# R1/R2): libvips (`vips`), ImageMagick (`convert`) and OpenImageIO (`oiiotool`), each
+# Benchmark of `resample` against its anchors in the same run (docs/resample.md "Figures reproduced", Z1;
+# R1/R2 of docs/resample.md "Separable passes and their order"): libvips (`vips`), ImageMagick (`convert`) and OpenImageIO (`oiiotool`), each
 # skipped with a JSON note when not installed (Debian: libvips-tools, imagemagick,
 # openimageio-tools). One JSON line per case on standard output.
 #

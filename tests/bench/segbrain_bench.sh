@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# segbrain benchmark (spec §7): operator throughputs (bench_segbrain), then the real heads
+# segbrain benchmark (docs/segbrain.md §5): operator throughputs (bench_segbrain), then the real heads
 # Debian ships: Colin27 head+brain+ventricles (target <= 10 s), all objects (<= 30 s), the
 # ITK T1 head (<= 2 s); median wall and CPU time over RUNS runs (default 5), peak RSS
 # (target <= 1.5 GB), inferences, backtracks, and the Dice of brain (ch2bet / ITK skull

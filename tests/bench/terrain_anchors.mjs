@@ -1,4 +1,4 @@
-// Anchors of terrainlod's simplify (specs/terrainlod.md §6-7): Martini (RTIN) and Delatin
+// Anchors of terrainlod's simplify (docs/terrainlod.md §6): Martini (RTIN) and Delatin
 // (greedy Delaunay insertion) on the same height grid, one JSON line per case.
 //
 //   node terrain_anchors.mjs GRID.asc ERROR...      (needs `npm install @mapbox/martini delatin`

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# terrainlod simplify against Martini and Delatin on the Jacksboro crop (specs/terrainlod.md
-# §3, §7: rows 40-296, columns 70-326 of python-matplotlib-data's jacksboro_fault_dem.npz,
+# terrainlod simplify against Martini and Delatin on the Jacksboro crop (docs/terrainlod.md
+# §6: rows 40-296, columns 70-326 of python-matplotlib-data's jacksboro_fault_dem.npz,
 # 257 x 257 samples), one JSON line per system and error. Run by hand:
 #   tests/bench/terrainlod.sh [build/bin] [node_modules dir with @mapbox/martini and delatin]
 # The anchors are skipped with a JSON note when Node or the packages are missing.
@@ -61,7 +61,7 @@ jq -c --argjson user "$user" --argjson sys "$sys" --argjson wall "$wall" --argjs
     build_cpu_s: ($user + $sys), build_wall_s: $wall, peak_rss_kb: $rss}' "$work/s.json"
 "$BIN/terrainlod" verify "$work/jb.tlp" --dem "$work/jb.npy" --cell-size 74.5,92.5 --cameras 20 |
   jq -c '{bench: "terrainlod_verify", dem: "jacksboro 403x344", ok, triangulations_checked, tiles_over_bound, max_err_over_eps, open_edges}'
-# fBm 1025^2 (L = 4) and the spec's 4097^2 case (L = 6; <= 60 s on 2 cores, <= 1 GB), 30 m
+# fBm 1025^2 (L = 4) and the 4097^2 case of docs/terrainlod.md §6 (L = 6; <= 60 s on 2 cores, <= 1 GB), 30 m
 # cells, 1500 m amplitude, 2 threads, the default --reference l+2. max_err_over_eps is
 # the largest error of any tile's triangulation against the DEM (measured by the builder
 # on every mask), in units of its level's eps; the bound is 4/3.
@@ -80,7 +80,7 @@ for k in 10 12; do
       max_err_over_eps: ([.level[] | .max_err_over_eps | numbers] | max), build_ms: $b[0].time_ms.build,
       build_cpu_s: ($user + $sys), build_wall_s: $wall, peak_rss_kb: $rss, target: "<= 60 s wall on 2 cores, <= 1 GB (4097^2)"}'
   if [ "$k" = 12 ]; then
-    # Spec §7's view (1920 x 1080, 30 degrees below the horizon, tau = 1 px; the spec
+    # The view of docs/terrainlod.md §6 (1920 x 1080, 30 degrees below the horizon, tau = 1 px; the target
     # names a 16385^2 DEM, this is the 4097^2 one): eye 4 km up over the south-west
     # quarter, looking north-east. select_close reads tile headers only; decode = the
     # drawn tiles' decoding and triangulation for their masks.

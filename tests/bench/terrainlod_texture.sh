@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# terrainlod texture tiles (specs/terrainlod.md 2.1, 2.9): what textures add to a build of
+# terrainlod texture tiles (docs/terrainlod.md §3-4): what textures add to a build of
 # the real Jacksboro DEM (403 x 344, B = T = 64, L = 3) -- time of the texture stage
 # (resample, box-filter, encode), bytes per level and per texel for PNG and JPEG, the
 # directory container against the archive -- and a textured extraction. One JSON line per

@@ -15,7 +15,7 @@ lt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
 env_args=()
 if env_map=$(need_testdata hdr/studio.exr 2>/dev/null); then env_args=(--env "$env_map"); fi
 
-# Spec §5.4: >= 98 % of the lumitexels with >= 6 samples labelled right, 1 % noise.
+# docs/brdffit.md §7: >= 98 % of the lumitexels with >= 6 samples labelled right, 1 % noise.
 case_ "synth (3 materials, 12 views x 3 lights, 1 % noise) -> lumitexels -> cluster -> project"
 run brdffit synth --sphere 3 --materials 3 --views 12 --lights 3 --width 160 --height 120 --noise 0.01 --seed 1 \
   "${env_args[@]}" -o "$WORK/syn"
@@ -50,7 +50,7 @@ expect_stdout_empty
 run brdffit eval --photo "$WORK/fit13_json.exr" --render "$WORK/fit13.exr"
 expect_status 0
 check "same image as the materials derived from the files' layouts" le "$(jq .relative_l2 "$out")" 0
-# Spec §5.9: re-rendering from the fitted materials within 6 % (relative L2 inside the
+# docs/brdffit.md §7: re-rendering from the fitted materials within 6 % (relative L2 inside the
 # mask, 2 % noise; 3 % noise-free) -- here over every one of the 36 input views, not a
 # held-out one, so the worst view (grazing light L1, most of the surface at its rim)
 # counts as much as the median. With 1 % noise the truth itself re-renders at ~1 %.
@@ -84,7 +84,7 @@ run brdffit render --mesh "$WORK/syn/mesh.ply" --svbrdf "$WORK/syn.ltw" --ltx "$
 expect_clean_failure 2
 check "nothing written" test ! -e "$WORK/never.exr"
 
-# Spec §5.6 on synth's data: the written mesh's normals are tilted (mesh_true.ply keeps
+# docs/brdffit.md §7 on synth's data: the written mesh's normals are tilted (mesh_true.ply keeps
 # the truth); the refined normals must be closer to the truth than the tilted ones.
 case_ "synth --perturb-normals 8 -> lumitexels -> cluster -> project -> normals"
 run brdffit synth --sphere 3 --materials 3 --views 8 --lights 2 --width 160 --height 120 --perturb-normals 8 \

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# brdffit export: glTF 2.0 with the materials baked into a texture atlas (spec §2.9,
-# §2.10). Structure checked against the glTF and PNG specifications
+# brdffit export: glTF 2.0 with the materials baked into a texture atlas (docs/brdffit.md §4,
+# §6). Structure checked against the glTF and PNG specifications
 # (brdffit_gltf.py), values against synth's truth.json: each triangle's base colour is
 # sRGB(rho_d) of its material and its roughness sqrt(2/(N+2)); a one-material object bakes
 # one constant colour. Then the fitted chain (lumitexels -> cluster -> project -> normals ->

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # capture plan/run/selftest and hdrmerge --manifest on the simulated station
-# (specs/capture.md §2.5, §2.8, §5.1): a whole session, its files against their recorded
+# (docs/capture.md §2-3, docs/hdrmerge.md §5, docs/capture.md §6): a whole session, its files against their recorded
 # SHA-256 (checked with sha256sum, an independent program), the rig JSON's light
 # positions against the frame change of §2.1 worked by hand, the silhouette mask's area
 # against the sphere's projection, faults mid-session (unplug -> 5, stuck move -> 7) and

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # capture calib-camera / calib-turntable / calib-lights end to end on images rendered
 # with known geometry (tests/tools/calib_render, scenes of tests/unit/calib_scenes.hpp):
-# the targets of specs/capture.md §5.1 -- turntable axis within 0.05 degrees and centre
+# the targets of docs/capture.md §6 -- turntable axis within 0.05 degrees and centre
 # within 0.1 mm, light position within 1 mm at about 500 mm -- and a known camera
 # recovered. Then bad input: one clean line, the right status, nothing on stdout.
 source "$(dirname "$0")/lib.sh"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# capture run's journal with two encoder threads (specs/capture.md §2.5 robustness):
+# capture run's journal with two encoder threads (docs/capture.md §3):
 # faults while several shots are being encoded and written, then --resume. The journal
 # must list shots strictly in plan order, each once, each only once its file is complete
 # (sha256sum, an independent program, checks the files against it), and the resumed

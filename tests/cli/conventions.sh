@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The behaviour DESIGN.md asks of every tool: --help and --version succeed on standard
+# The behaviour README "Conventions" asks of every tool: --help and --version succeed on standard
 # output; a wrong flag is status 2 with one line; a missing file is status 4.
 . "$(dirname "$0")/lib.sh"
 

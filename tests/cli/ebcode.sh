@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ebcode / ebdecode on small hand-made meshes: golden CLERS strings (specs/ebcode.md 2.2),
+# ebcode / ebdecode on small hand-made meshes: golden CLERS strings (docs/ebcode.md §1),
 # exact round trips of closed, open, several-component and non-manifold input (faces
 # compared as position triples, orientation kept), the container's bad-input cases,
 # and the model subcommand's numbers (seed Tables 5.1/5.2, Theorem 5.7.1).
@@ -42,7 +42,7 @@ if [ -f "$FEST_TESTDATA/meshes/octahedron.off" ]; then
   done
 fi
 
-# Non-manifold and open cases of spec 5, integer coordinates (exact in float32).
+# Non-manifold and open cases (docs/ebcode.md §5), integer coordinates (exact in float32).
 V7="0 0 0 1 0 0 0 1 0 0 0 1 -1 0 0 0 -1 0 0 0 -1"
 off bowtie 7 "$V7" "0 1 2 0 3 1 0 2 3 1 3 2 0 4 5 0 6 4 0 5 6 4 6 5"
 off fin 5 "0 0 0 1 0 0 0 1 0 0 -1 0 0 0 1" "0 1 2 1 0 3 0 1 4"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ebcode / ebdecode on the real meshes of specs/ebcode.md 3.3 (CGAL data and the raw
+# ebcode / ebdecode on the real meshes of docs/ebcode.md §6 (CGAL data and the raw
 # Stanford scan, fetched by scripts/fetch-test-data.sh; skipped when absent): lossless
 # connectivity (counts, topology, and the .ebm fixed point), positions within half a
 # quantisation step, and the bit-rate bounds of the chapter.
@@ -7,7 +7,7 @@
 need_testdata meshes/cow.off >/dev/null || exit 77
 M="$FEST_TESTDATA/meshes"
 
-# mesh  genus-0-closed(1/0)  adaptive bpv from the spec's table (+0.05 allowed)
+# mesh  genus-0-closed(1/0)  adaptive bpv from the table of docs/ebcode.md §6 (+0.05 allowed)
 while read -r name closed0 adaptive; do
   f="$M/$name.off"
   [ -f "$f" ] || continue
@@ -40,7 +40,7 @@ while read -r name closed0 adaptive; do
       awk -v b="$(jq .bpv.connectivity "$WORK/static.json")" -v v="$v" 'BEGIN { exit !(b <= 3.525 + 40 / v) }'
     # Rossignac's code needs 4v - 9 bits; the range coder adds at most 4 bytes of flush.
     check "raw <= (4v - 9 + 32) / v" awk -v b="$(jq .bpv.connectivity "$WORK/raw.json")" -v v="$v" 'BEGIN { exit !(b <= (4 * v - 9 + 32) / v) }'
-    # #C = v - 3k on a closed mesh (spec 2.1)
+    # #C = v - 3k on a closed mesh (docs/ebcode.md §1)
     check "#C = v - 3" test "$(jq .symbols.C "$WORK/$name.json")" = $((v - 3))
   fi
 done <<'LIST'

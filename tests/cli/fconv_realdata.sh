@@ -7,7 +7,7 @@ camera=$(need_testdata images/camera.png) || exit 77
 city=$(need_testdata hdr/city.exr) || exit 77
 
 # The bunny has 37 706 vertices and 75 408 triangles (CGAL's data; checked with
-# OpenMesh in specs/platform.md).
+# OpenMesh).
 case_ "bunny: PLY -> OFF -> PLY (binary) -> OBJ through standard input/output"
 "$FEST_BIN/fconv" "$bunny" -o "$WORK/bunny.ply"
 "$FEST_BIN/fconv" --to off <"$WORK/bunny.ply" | "$FEST_BIN/fconv" --to ply | "$FEST_BIN/fconv" --to obj >"$WORK/bunny.obj"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # feshape: answers from the mathematics -- the lat-long mesh has V = MN + 2 and
-# F = 2V - 4 (docs/feshape.md §2.8) and its vertices lie on the superquadric; points
+# F = 2V - 4 (docs/feshape.md §2.3) and its vertices lie on the superquadric; points
 # sampled exactly from a deformable superquadric give back its parameters (semi-axes
 # a*a_i, squareness, tapering, bending, pose) with zero residual; a sphere's points lie
 # on the fitted surface; distances to a single triangle are |h|; every level of a

@@ -44,7 +44,7 @@ awk 'NR == 2 { n = $1; next } NR > 2 && NF == 3 && k < n { if (k % 10 == 0) prin
 check "3771 bunny points" test "$(wc -l <"$WORK/bunny.xyz")" -eq 3771
 adaptive_vs_uniform bunny "$WORK/bunny.xyz" 1.0 --grid 8x8 --levels 2 --tau 0.002 --w "$W"
 
-# The spec's arm-like case: 470 points of CGAL's femur.off with the seed's arm settings
+# The arm-like case of docs/feshape.md §3: 470 points of CGAL's femur.off with the seed's arm settings
 # (9x5 grid = 47 nodes, w0 = w1 = 0.1, beta 20, 3 levels; tau 0.2 on an arm of a = 8 is
 # 0.025 a, here 0.01 for a ~ 0.7). Seed Table 2: 343 adaptive nodes 0.00148 vs 402
 # uniform 0.00280, ratio 0.53; required here: <= 0.7.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # hdrmerge end to end: a known radiance image (hdr_check ramp, 4 decades) bracketed by
 # the simulated gamma-2.2 camera into 12 exposures, response recovered and merged; the
-# errors are measured against the mathematics (specs/capture.md §3: response within 2 %
+# errors are measured against the mathematics (docs/hdrmerge.md §6: response within 2 %
 # on z 10..245, log-radiance RMS within 2.5 %). Then bad input: one clean line, the
 # right status, nothing written.
 source "$(dirname "$0")/lib.sh"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # hdrmerge on real HDR content: Blender's courtyard environment map (blender-data, via
 # scripts/fetch-test-data.sh) bracketed by the simulated gamma-2.2 camera into 12 8-bit
-# exposures 1/256 .. 8 s, response recovered and merged. Targets from specs/capture.md
-# §3: response within 2 % on z 10..245 (the map's 4.3 decades cover the codes well),
+# exposures 1/256 .. 8 s, response recovered and merged. Targets from docs/hdrmerge.md
+# §6: response within 2 % on z 10..245 (the map's 4.3 decades cover the codes well),
 # log-radiance RMS within 2.5 % where the series saw the pixel (validity >= 0.01).
 source "$(dirname "$0")/lib.sh"
 map=$(need_testdata hdr/courtyard.exr) || exit 77

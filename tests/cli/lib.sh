@@ -59,7 +59,7 @@ expect_stderr_has() {
   if grep -Eq -- "$1" "$err"; then pass; else fail "standard error lacks /$1/: $(head -c 300 "$err")"; fi
 }
 
-# A failure the way DESIGN.md wants it: the status, one diagnostic line naming the
+# A failure the way README "Conventions" wants it: the status, one diagnostic line naming the
 # tool, and nothing on standard output.
 expect_clean_failure() {
   local status="$1" tool="${2:-}"

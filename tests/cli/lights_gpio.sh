@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# lights' real libgpiod backend without hardware (specs/capture.md §5.3): the unmodified
+# lights' real libgpiod backend without hardware (docs/lights.md §4): the unmodified
 # binary runs with umockdev's preload library and tests/tools/gpiomock (an emulated
 # gpiochip0 with 32 lines GPIO0..GPIO31) preloaded; the mock logs every line request and
 # write with the physical level, and the cases compare that log with the sequence the

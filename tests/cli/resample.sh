@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# resample: the chapter's figures (spec §3) from the mathematics, linear light, the zone
-# plate against the spec's Z1 table, properties, and bad input.
+# resample: the chapter's figures (docs/resample.md "Figures reproduced") from the mathematics, linear light, the zone
+# plate against the Z1 table of docs/resample.md "Figures reproduced", properties, and bad input.
 . "$(dirname "$0")/lib.sh"
 
 R="$FEST_BIN/resample"

@@ -71,7 +71,7 @@ check "orientation code PSR" test "$(jq -r .input.orientation "$WORK/psr.json")"
 "$S" run "$WORK/ph.nii" -o "$WORK/ras_labels.nii"
 check "labels identical voxel by voxel after mapping back" python3 "$R" compare "$WORK/ras_labels.nii" "$WORK/psr_labels.nii"
 
-# The same anatomy sampled on another grid (2.5 x 2 x 2.5 mm instead of 2 mm): spec §5
+# The same anatomy sampled on another grid (2.5 x 2 x 2.5 mm instead of 2 mm): docs/segbrain.md §5
 # spacing invariance, brain_filled volume within 3 % and Dice >= 0.97 against the 2 mm
 # result (eval maps the grids onto each other by world coordinates).
 case_ "spacing invariance: the phantom on a 2.5 x 2 x 2.5 mm grid gives the same anatomy"

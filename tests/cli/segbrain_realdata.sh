@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # segbrain on the real T1 head that Debian ships (insighttoolkit5-examples: 128x128x62,
-# 2x2x3 mm, stored LSA): brain Dice against its skull-strip labels (spec §5 target >= 0.90)
+# 2x2x3 mm, stored LSA): brain Dice against its skull-strip labels (target >= 0.90, docs/segbrain.md §5)
 # and the orientation code in the report. Skipped (77) when the data is not fetched.
 . "$(dirname "$0")/lib.sh"
 head_t1=$(need_testdata mri/t1_head.nii.gz) || exit 77
@@ -19,7 +19,7 @@ check "brain Dice >= 0.90 ($d)" at_least "$d" 0.90
 check "orientation LSA reported" test "$(jq -r .input.orientation "$WORK/report.json")" = LSA
 check "brain_filled accepted by the window clause" test "$(jq -r .accepted_by.find_brain "$WORK/report.json")" != null
 
-# Storage and intensity invariance on the real head (spec §5 "Orientation invariance",
+# Storage and intensity invariance on the real head (docs/segbrain.md §5, orientation invariance,
 # issue 9): the same voxels stored with rotated, flipped axes (LSA -> ARS, the sform
 # rewritten) give the same labels voxel by voxel after mapping back; a smooth +-30 %
 # intensity shading gives the same brain within Dice 0.97.
@@ -38,7 +38,7 @@ expect_status 0
 "$FEST_BIN/segbrain" eval --ref "$WORK/lsa_labels.nii" --seg "$WORK/bias_labels.nii" --map "brain=2-8" >"$WORK/bias.tsv"
 check "biased brain Dice >= 0.97 against the unbiased result ($(dice_of brain "$WORK/bias.tsv"))" at_least "$(dice_of brain "$WORK/bias.tsv")" 0.97
 
-# Figure 2.5 on real data (spec §3 P3, §5 "Leak recovery"): the first window (0.50, 1.30)W
+# Figure 2.5 on real data (docs/segbrain.md §3, leak recovery): the first window (0.50, 1.30)W
 # with 2 mm separation joins the brain to the scalp; no_connection_to_skincontour measures
 # the skin contact above its 0.3 % limit, the engine backtracks, and the next window passes
 # every check of verify_brain_result.
@@ -69,7 +69,7 @@ check "the leaking candidate is worse by >= 0.03 Dice ($bad vs $good)" at_least 
 
 # Colin27 (mricron-data), the one whole-head run of this suite: brain against ch2bet,
 # cerebellum against the AAL labels drawn on this subject, ventricles against the JHU
-# atlas (another subject, so loose targets; spec §5).
+# atlas (another subject, so loose targets; docs/segbrain.md §5).
 ch2=$(need_testdata mri/ch2.nii.gz) && ch2bet=$(need_testdata mri/ch2bet.nii.gz) &&
     aal=$(need_testdata mri/aal.nii.gz) && jhu=$(need_testdata mri/jhu189.nii.gz) && {
 case_ "Colin27: brain, ventricles, cerebellum and brainstem against ch2bet, JHU and AAL"
@@ -84,18 +84,18 @@ check "cerebellum Dice >= 0.75 vs AAL ($(dice_of cerebellum "$WORK/ch2_cb.tsv"))
 check "ventricles Dice >= 0.40 vs JHU ($(dice_of ventricles "$WORK/ch2_v.tsv"))" at_least "$(dice_of ventricles "$WORK/ch2_v.tsv")" 0.40
 vv=$(jq '.objects.ventricles.volume_ml' "$WORK/ch2.json")
 check "ventricles 15-60 ml ($vv)" awk -v v="$vv" 'BEGIN { exit !(v >= 15 && v <= 60) }'
-# Eyes: no reference labels; the spec asks for two globes of radius 10-14 mm.
+# Eyes: no reference labels; the knowledge base asks for two globes of radius 10-14 mm.
 ev=$(jq '.objects.eyes.volume_ml' "$WORK/ch2.json")
 check "eyes: two globes of radius 10-14 mm ($ev ml)" awk -v v="$ev" 'BEGIN { r = (3 * v / 2 / (4 * 3.14159265)) ^ (1 / 3) * 10; exit !(r >= 10 && r <= 14) }'
 # Brainstem: the JHU labels (midbrain 99/100, pons and medulla 113-116) cover only about
-# 9 ml of it, so the spec asks for its centroid within 10 mm and 15-50 ml.
+# 9 ml of it, so the knowledge base asks for its centroid within 10 mm and 15-50 ml.
 bv=$(jq '.objects.brainstem.volume_ml' "$WORK/ch2.json")
 check "brainstem 15-50 ml ($bv)" awk -v v="$bv" 'BEGIN { exit !(v >= 15 && v <= 50) }'
 ref_c=$(python3 "$(dirname "$0")/segbrain/reorient.py" centroid "$jhu" 99 100 113 116)
 our_c=$(jq -r '.objects.brainstem.centroid_mm | map(tostring) | join(" ")' "$WORK/ch2.json")
 d=$(echo "$ref_c $our_c" | awk '{ print sqrt(($1 - $4)^2 + ($2 - $5)^2 + ($3 - $6)^2) }')
 check "brainstem centroid within 10 mm of JHU's ($d mm)" awk -v d="$d" 'BEGIN { exit !(d <= 10) }'
-# Optic nerves: no reference labels either; plausibility (spec §5): two tracked paths of
+# Optic nerves: no reference labels either; plausibility (docs/segbrain.md §4): two tracked paths of
 # 35-65 mm (Colin27's chord from the posterior pole of a globe to the chiasm is itself
 # about 52 mm), each starting at its globe and heading back and towards the midline,
 # the two meeting behind the eyes.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# segbrain --threads (spec §4 "Determinism"): the label volume, the masks and the
+# segbrain --threads (deterministic output, docs/segbrain.md §5): the label volume, the masks and the
 # report's objects are byte-identical for any thread count; a bad count is a usage error.
 . "$(dirname "$0")/lib.sh"
 S="$FEST_BIN/segbrain"

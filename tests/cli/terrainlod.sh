@@ -94,7 +94,7 @@ expect_status 0
 cp "$WORK/nd.json" "$out"
 expect_json '[.dem.nodata_samples, .triangles]' '[1,2]'
 
-# --- bad input: one line on stderr, the exit status of DESIGN.md, nothing written -------
+# --- bad input: one line on stderr, the exit status of README "Conventions", nothing written -------
 bad() {  # bad STATUS REGEX ARGS...
   local status="$1" regex="$2"; shift 2
   rm -f "$WORK/out.ply"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# terrainlod texture tiles and the directory container (spec 2.1, 2.9, 2.10): stored PNG
+# terrainlod texture tiles and the directory container (docs/terrainlod.md §3-4, terrainlod-pyramid(5)): stored PNG
 # tiles equal the input cut and box-filtered exactly; texture coordinates follow from the
 # tile squares (corners 0/1, closing-only tiles in their ancestor's sub-square); the
 # directory pyramid extracts exactly like the archive; --clip, --atlas, JPEG; bad input.

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checks the texture coordinates of an OBJ written by `terrainlod extract` (one material
-per texture tile, "usemtl tile-L-X-Y") against the mathematics of spec terrainlod 2.10:
+per texture tile, "usemtl tile-L-X-Y") against the mathematics of docs/terrainlod.md §3-4:
 a vertex at grid point (gx, gy) drawn with the texture of tile (L, X, Y), whose square is
 S = cells[L] grid cells, has (u, v) = ((gx - X S) / S, (gy - Y S) / S).
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # turntable with the simulated backend (sim:): the motion policy end to end, expected
-# steps from steps = round(deg / 360 * S_rev) (specs/capture.md §2.1), and device errors.
+# steps from steps = round(deg / 360 * S_rev) (docs/capture.md §1), and device errors.
 source "$(dirname "$0")/lib.sh"
 
 case_ "move 90 on the default 51200-step table: 12800 steps, no overshoot going ccw"

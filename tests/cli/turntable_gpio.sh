@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # turntable's gpio-stepper backend (step/dir driver on GPIO lines, libgpiod v1) on the
-# emulated gpiochip of tests/tools/gpiomock (specs/capture.md §5.3): pulse counts and the
+# emulated gpiochip of tests/tools/gpiomock (docs/lights.md §4): pulse counts and the
 # order of DIR and STEP writes are asserted, not the timing. Skips (77) without umockdev.
 source "$(dirname "$0")/lib.sh"
 command -v umockdev-wrapper >/dev/null 2>&1 || { echo "skipped: umockdev not installed (apt-get install umockdev)"; exit 77; }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# turntable's real libusb backend without hardware (specs/capture.md §5.2): umockdev-run
+# turntable's real libusb backend without hardware (docs/turntable.md §4): umockdev-run
 # replays a TTP/1 device from a .umockdev description and a usbmon pcap written by
 # tests/tools/ttp_mockdev. Replay is strictly in order and OUT data is compared byte for
 # byte, so each case also asserts the exact request sequence the tool sends (a deviation

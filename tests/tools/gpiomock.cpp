@@ -1,4 +1,4 @@
-// gpiomock: an emulated GPIO chip for the lights CLI tests (specs/capture.md §5.3). A
+// gpiomock: an emulated GPIO chip for the lights CLI tests (docs/lights.md §4). A
 // shared object preloaded after umockdev's preload library; its constructor builds a
 // umockdev testbed with /dev/gpiochip0 and answers the GPIO v1 uAPI ioctls that libgpiod
 // 1.6 makes, so the unmodified `lights` binary drives it like a kernel chip:

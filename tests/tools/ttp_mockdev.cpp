@@ -1,4 +1,4 @@
-// ttp_mockdev: writes a replayable TTP/1 turntable for umockdev (specs/capture.md §5.2):
+// ttp_mockdev: writes a replayable TTP/1 turntable for umockdev (docs/turntable.md §4):
 // PREFIX.umockdev (the sysfs description of a full-speed USB device 1209:0001 with one
 // vendor interface) and PREFIX.pcap (usbmon records, DLT_USB_LINUX_MMAPPED, of the
 // control transfers the host is expected to make, in order, with the device's answers).

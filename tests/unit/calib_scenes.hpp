@@ -1,5 +1,5 @@
 #pragma once
-// Known geometry for the calibration tests (specs/capture.md §5.1): cameras, a turntable
+// Known geometry for the calibration tests (docs/capture.md §6): cameras, a turntable
 // with a board lying on it, chrome spheres and a light. Lengths in mm.
 
 #include <cmath>

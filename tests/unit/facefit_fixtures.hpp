@@ -1,5 +1,5 @@
 #pragma once
-// Shared fixtures of the facefit tests: the exact linear model G1 of the spec (section 5)
+// Shared fixtures of the facefit tests: the exact linear model G1 (docs/facefit.md §4)
 // and helpers to draw faces from it.
 
 #include <cmath>

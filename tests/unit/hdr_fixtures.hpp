@@ -1,5 +1,5 @@
 #pragma once
-// Synthetic exposure series with a known camera (specs/capture.md §5.1): a radiance map
+// Synthetic exposure series with a known camera (docs/hdrmerge.md §6): a radiance map
 // spanning 4 decades, a gamma-1/2.2 response, Gaussian read noise, 8-bit rounding.
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Texture atlas (spec §2.9) and the baked glTF maps (§2.10 export): chart geometry,
+// Texture atlas (docs/brdffit.md §4) and the baked glTF maps (§6, `export`): chart geometry,
 // packing without overlaps, gutters under bilinear lookups, and baked values that follow
 // from the materials analytically.
 #include <gtest/gtest.h>

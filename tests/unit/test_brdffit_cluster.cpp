@@ -44,7 +44,7 @@ Scene scene(int materials, unsigned seed) {
 }  // namespace
 
 TEST(BrdffitCluster, TwoAndThreeMaterialsFoundWithTheRightAssignment) {
-  // Spec §5 test 4: >= 98 % of lumitexels labelled right, 6 samples each, 1 % noise.
+  // docs/brdffit.md §7: >= 98 % of lumitexels labelled right, 6 samples each, 1 % noise.
   for (int k : {2, 3}) {
     const Scene s = scene(k, 20 + static_cast<unsigned>(k));
     ClusterOptions o;

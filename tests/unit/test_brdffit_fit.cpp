@@ -15,7 +15,7 @@ using fest::reflectance::Rgb;
 
 namespace {
 
-LafortuneBrdf one_lobe() {  // spec §5 test 2
+LafortuneBrdf one_lobe() {  // docs/brdffit.md §3
   LafortuneBrdf b;
   b.rho_d = Rgb::Constant(0.3);
   b.lobes = {LafortuneLobe{Rgb::Constant(-1.0), Rgb::Constant(1.0), Rgb::Constant(40)}};
@@ -38,7 +38,7 @@ TEST(BrdffitFit, ClayThreeLobesRecoveredFromNoiselessSamples) {
 }
 
 TEST(BrdffitFit, OneLobeWithNoiseWithinFivePercent) {
-  // Spec §5 test 2: 500 samples, 2 % multiplicative noise -> parameters within 5 %.
+  // docs/brdffit.md §7: 500 samples, 2 % multiplicative noise -> parameters within 5 %.
   const LafortuneBrdf truth = one_lobe();
   for (unsigned seed = 0; seed < 5; ++seed) {
     const FitResult r = fit_brdf(brdffit_test::samples_of(truth, 500, 100 + seed, 0.02), FitOptions{});
@@ -52,7 +52,7 @@ TEST(BrdffitFit, OneLobeWithNoiseWithinFivePercent) {
 }
 
 TEST(BrdffitFit, CovarianceMatchesTheScatterOverNoiseSeeds) {
-  // Spec §5 test 2: the diagonal of sigma^2 (J^T J)^-1 within a factor 2 of the variance of
+  // docs/brdffit.md §7: the diagonal of sigma^2 (J^T J)^-1 within a factor 2 of the variance of
   // the parameters over 50 noise seeds. The formula assumes noise of one variance on every
   // residual, so the noise here is additive (2 % of the mean radiance); with multiplicative
   // noise the peak of the lobe carries most of it and the formula is not the right model.
@@ -152,7 +152,7 @@ TEST(BrdffitFit, BadInputIsRefused) {
 }
 
 TEST(BrdffitModel, ReciprocalAndIsotropicForEveryVariant) {
-  // Spec §5 test 3: f(u, v) = f(v, u) and invariance to a common azimuth rotation.
+  // docs/brdffit.md §7: f(u, v) = f(v, u) and invariance to a common azimuth rotation.
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> u01(0, 1);
   for (const ModelSpec spec : {ModelSpec{1, false}, ModelSpec{2, false}, ModelSpec{3, false}, ModelSpec{1, true},

@@ -98,7 +98,7 @@ TEST(BrdffitJson, BrdfAndClustersRoundTrip) {
 }
 
 TEST(BrdffitMerl, IndexMappingRoundTripsAndHasTheSquareRootWarp) {
-  // Spec §5 test 10: cell centre -> directions -> half/diff angles -> the same cell.
+  // docs/brdffit.md §7: cell centre -> directions -> half/diff angles -> the same cell.
   for (int a : {0, 1, 5, 44, 89})
     for (int b : {0, 17, 89})
       for (int c : {0, 90, 179}) {
@@ -118,7 +118,7 @@ TEST(BrdffitMerl, IndexMappingRoundTripsAndHasTheSquareRootWarp) {
 }
 
 TEST(BrdffitMerl, GeneratedFileReadsBackExactlyAndFits) {
-  // Spec §5 test 10: a file written in the MERL layout from a known analytic BRDF reads
+  // docs/brdffit.md §7: a file written in the MERL layout from a known analytic BRDF reads
   // back exactly; fitting its samples recovers the BRDF.
   LafortuneBrdf b;
   b.rho_d = fest::reflectance::Rgb(0.3, 0.2, 0.1);

@@ -66,7 +66,7 @@ LumitexelSet bumped(const LafortuneBrdf& brdf, int count, int lights, unsigned s
 }  // namespace
 
 TEST(BrdffitNormals, DiffuseCaseEqualsClosedFormPhotometricStereo) {
-  // Spec §5 test 6 / §2.7: with f = rho / pi and >= 3 lights, n = normalize((L^T L)^-1 L^T r).
+  // docs/brdffit.md §7: with f = rho / pi and >= 3 lights, n = normalize((L^T L)^-1 L^T r).
   LafortuneBrdf diffuse;
   diffuse.rho_d = Rgb(0.6, 0.5, 0.4);
   diffuse.lobes = {LafortuneLobe{}};
@@ -90,7 +90,7 @@ TEST(BrdffitNormals, DiffuseCaseEqualsClosedFormPhotometricStereo) {
 }
 
 TEST(BrdffitNormals, RefinedNormalsCloserToTheTruthThanMeshNormals) {
-  // Spec §5 test 6: 8 lights -> median within 2 degrees of the truth vs >= 5 for the mesh.
+  // docs/brdffit.md §7: 8 lights -> median within 2 degrees of the truth vs >= 5 for the mesh.
   LafortuneBrdf glossy;
   glossy.rho_d = Rgb(0.5, 0.4, 0.3);
   glossy.lobes = {LafortuneLobe{Rgb::Constant(-1), Rgb::Constant(1), Rgb::Constant(30)}};

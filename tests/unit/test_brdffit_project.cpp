@@ -38,7 +38,7 @@ LumitexelSet blend_set(const LafortuneBrdf& a, const LafortuneBrdf& b, int count
 }  // namespace
 
 TEST(BrdffitProject, KnownBlendOfTwoBasisBrdfsIsRecovered) {
-  // Spec §5 test 5: weights within 0.05 (RMS) of the truth with >= 6 samples.
+  // docs/brdffit.md §7: weights within 0.05 (RMS) of the truth with >= 6 samples.
   const auto mats = brdffit_test::three_materials();
   std::vector<double> t;
   const LumitexelSet set = blend_set(mats[0], mats[1], 400, 8, t);
@@ -92,7 +92,7 @@ TEST(BrdffitProject, RgbWeightsAndNonNegativeWeights) {
 }
 
 TEST(BrdffitProject, ProjectedModelBeatsThePerClusterModel) {
-  // Spec §5 test 5 (the chapter's Fig. 8.6 vs 8.7): one cluster fitted to a blend, then
+  // docs/brdffit.md §7 (the chapter's Fig. 8.6 vs 8.7): one cluster fitted to a blend, then
   // projection into 4 basis BRDFs: strictly smaller error.
   const auto mats = brdffit_test::three_materials();
   std::vector<double> t;

@@ -1,4 +1,4 @@
-// Separable BRDF approximation (spec §2.10 factor, §5 test 11): a Lambertian BRDF is
+// Separable BRDF approximation (docs/brdffit.md §6, `factor`): a Lambertian BRDF is
 // exactly rank 1 in any parameterisation; a Lafortune lobe is more separable in half /
 // difference angles than in (omega_o, omega_i).
 #include <gtest/gtest.h>

@@ -75,7 +75,7 @@ TEST(Ltx, RoundTripIsExact) {
     EXPECT_EQ(t.samples[k].r, s.samples[k].r);
     EXPECT_EQ(t.samples[k].weight, s.samples[k].weight);
   }
-  // Sizes as the spec lays them out: 12 + header + 48 N + 42 M.
+  // Sizes as ltx(5) lays them out: 12 + header + 48 N + 42 M.
   const std::uint32_t hlen = bytes[8] | bytes[9] << 8 | bytes[10] << 16 | static_cast<std::uint32_t>(bytes[11]) << 24;
   EXPECT_EQ(bytes.size(), 12 + hlen + 48 * 3 + 42 * 6);
 }

@@ -1,4 +1,4 @@
-// Lumitexel generation on scenes with known answers (specs/brdffit.md §5.8): one
+// Lumitexel generation on scenes with known answers (docs/brdffit.md §7): one
 // lumitexel per covered pixel, exact reprojection, r = f u_z, sample counts, occlusion and
 // shadows, and the "no lumitexel with enough samples" error.
 

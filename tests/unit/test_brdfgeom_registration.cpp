@@ -1,4 +1,4 @@
-// Silhouette registration (specs/brdffit.md §2.8, §5.7) on a lumpy, asymmetric shape:
+// Silhouette registration (docs/brdffit.md §6, docs/brdffit.md §7) on a lumpy, asymmetric shape:
 // a pose perturbed by 10 degrees and 10 % of the distance is recovered.
 
 #include <cmath>
@@ -80,7 +80,7 @@ void recovers_a_perturbed_pose(bool FIX_FOCAL) {
               rot, 100 * dist, 100 * std::abs(r.camera.fx / truth.fx - 1), r.xor_cost, r.evaluations);
   EXPECT_LT(r.xor_cost, 0.01);
   // A smooth blob shows out-of-plane tilts only through its foreshortening, so the pose
-  // is bound loosely here; the bunny below carries the spec's 0.1 degree / 0.1 % check.
+  // is bound loosely here; the bunny below carries the 0.1 degree / 0.1 % check of docs/brdffit.md §7.
   EXPECT_LT(rot, 5.0);  // from 10
   if (FIX_FOCAL) {
     EXPECT_LT(dist, 0.01);
@@ -160,7 +160,7 @@ TEST(Registration, BunnyPerturbedPose) {
   const double dist = std::abs((r.camera.to_camera(centre)).norm() / c_cam.norm() - 1);
   std::printf("bunny registration: rotation error %.4f deg, distance error %.4f %%, XOR %.5f, %ld renders\n", rot,
               100 * dist, r.xor_cost, r.evaluations);
-  // specs/brdffit.md §5.7: within 0.1 degree and 0.1 %, XOR below 0.5 %.
+  // docs/brdffit.md §7: within 0.1 degree and 0.1 %, XOR below 0.5 %.
   EXPECT_LT(rot, 0.1);
   EXPECT_LT(dist, 0.001);
   EXPECT_LT(r.xor_cost, 0.005);

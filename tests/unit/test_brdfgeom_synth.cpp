@@ -1,5 +1,5 @@
 // Synthetic scenes and the round trip synth -> lumitexels: every sample's normalised
-// radiance r must equal the true material's f_r(u, v) u_z (specs/brdffit.md §2.1).
+// radiance r must equal the true material's f_r(u, v) u_z (docs/brdffit.md §1).
 
 #include <algorithm>
 #include <cmath>

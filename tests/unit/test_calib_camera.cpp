@@ -1,5 +1,5 @@
 // Camera calibration on boards rendered through a known camera (with radial
-// distortion): K and the distortion are recovered (specs/capture.md §5.1).
+// distortion): K and the distortion are recovered (docs/capture.md §6).
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Light position from chrome spheres (specs/capture.md §5.1): rays built from exact
+// Light position from chrome spheres (docs/capture.md §6): rays built from exact
 // geometry meet at the light; spheres rendered with a highlight from a light about
 // 0.5 m away give its position within 1 mm.
 

@@ -1,4 +1,4 @@
-// Turntable calibration against rendered ground truth (specs/capture.md §5.1): a board
+// Turntable calibration against rendered ground truth (docs/capture.md §6): a board
 // lying on a known table, seen at 12 angles over a revolution -> axis within 0.05
 // degrees, centre within 0.1 mm; exact poses give an exact answer.
 

@@ -1,4 +1,4 @@
-// The journal and the manifest (specs/capture.md §2.5, §4): replay keeps the latest
+// The journal and the manifest (docs/capture.md §2-3, fest-capture(5)): replay keeps the latest
 // record per file, ignores a line torn by a crash at the very end, refuses damage
 // elsewhere; the manifest lists the planned shots in plan order with their sets.
 

@@ -1,4 +1,4 @@
-// Plans (specs/capture.md §2.5): flag syntax, JSON forms, expansion into the acquisition
+// Plans (docs/capture.md §2-3): flag syntax, JSON forms, expansion into the acquisition
 // order (mechanics outermost), checks against the station, errors naming file and path.
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The acquisition loop on simulated devices (specs/capture.md §2.5, §5.1): during every
+// The acquisition loop on simulated devices (docs/capture.md §2-3, docs/capture.md §6): during every
 // hdr shot exactly the planned light is on; an unplugged table or a move that never
 // completes ends the session with status 5 or 7 and every light off; a sink that already
 // holds some shots gets only the others.

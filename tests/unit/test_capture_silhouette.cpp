@@ -1,4 +1,4 @@
-// Silhouette masks (specs/capture.md §2.8): a dark object with a hole and a dark speck
+// Silhouette masks (docs/hdrmerge.md §5): a dark object with a hole and a dark speck
 // against a bright backlit background -> the object's disc, hole filled, speck dropped.
 
 #include <gtest/gtest.h>

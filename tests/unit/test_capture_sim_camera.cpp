@@ -1,4 +1,4 @@
-// The simulated camera's radiometry against closed forms (specs/capture.md §5.1): a
+// The simulated camera's radiometry against closed forms (docs/capture.md §6): a
 // sphere straight ahead of the camera, lit by a point light at the camera centre, seen
 // at its front point where n = u = v; L = f_r I cos / d^2 with f_r = rho_d / pi + Cz^N
 // there (ux vx + uy vy = 0, uz vz = 1), and the response's DN of gain L t.

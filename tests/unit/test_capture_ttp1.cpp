@@ -1,4 +1,4 @@
-// TTP/1 codec (specs/capture.md §2.3, §5.1): every request against setup packets and
+// TTP/1 codec (ttp(7), docs/capture.md §6): every request against setup packets and
 // payloads written out by hand from the protocol table (bmRequestType, bRequest, wValue,
 // wIndex, wLength little-endian), replies decoded from hand-made blobs, short replies
 // refused with status 6.

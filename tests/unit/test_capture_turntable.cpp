@@ -1,4 +1,4 @@
-// Motion policy on the simulated turntable (specs/capture.md §5.1): executed angles are
+// Motion policy on the simulated turntable (docs/capture.md §6): executed angles are
 // the commanded ones rounded to the nearest step (error <= 0.5 step), the ccw approach
 // ends every move on the same side of the gear play whatever the direction it came from,
 // a move that never completes times out (status 7) and an unplug reports status 5.

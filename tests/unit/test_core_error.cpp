@@ -5,7 +5,7 @@
 using fest::Status;
 
 TEST(Error, ExitCodesAreTheDesignTable) {
-  // DESIGN.md "Exit status": these numbers are the interface of every tool.
+  // README "Conventions" (exit status): these numbers are the interface of every tool.
   EXPECT_EQ(fest::Error(Status::ok, "").exit_code(), 0);
   EXPECT_EQ(fest::Error(Status::failure, "").exit_code(), 1);
   EXPECT_EQ(fest::usage_error("x").exit_code(), 2);

@@ -1,4 +1,4 @@
-// Tutte's counts and the exhaustive bijection (lib/edgebreaker/counting.cpp; spec 3.1 and
+// Tutte's counts and the exhaustive bijection (lib/edgebreaker/counting.cpp; docs/ebcode.md §1, §6 and
 // 5, "Exhaustive bijection"). Expected counts are the seed's/Tutte's 1, 1, 3, 13, 68, 399,
 // 2530, and Tutte's closed formula evaluated here by prime exponents, independently.
 #include <gtest/gtest.h>
@@ -45,7 +45,7 @@ std::uint64_t tutte_by_primes(int n) {
 TEST(EdgebreakerCounting, TutteFormulaGivesTheSeedCounts) {
   for (int n = 0; n <= 6; ++n) EXPECT_EQ(tutte_rooted_triangulations(n), seed_counts[n]) << "n = " << n;
   for (int n = 0; n <= 17; ++n) EXPECT_EQ(tutte_rooted_triangulations(n), tutte_by_primes(n)) << "n = " << n;
-  // The growth rate is 256/27, Tutte's 3.245 bits per vertex (spec 3.1). The counts grow
+  // The growth rate is 256/27, Tutte's 3.245 bits per vertex (docs/ebcode.md §1). The counts grow
   // like (256/27)^n n^(-5/2) (Stirling on the formula), so undo the polynomial factor.
   const double ratio = static_cast<double>(tutte_rooted_triangulations(17)) / tutte_rooted_triangulations(16);
   EXPECT_NEAR(ratio * std::pow(17.0 / 16.0, 2.5), 256.0 / 27.0, 0.15);
@@ -68,7 +68,7 @@ TEST(EdgebreakerCounting, ExhaustiveBijectionUpToSixInteriorVertices) {
       EXPECT_EQ(eb::sphere_defect(d, n + 3), "") << text;
       EXPECT_EQ(encode(d, n + 3).clers, s) << text;
       EXPECT_TRUE(seen.insert(text).second) << text;
-      // Spec 2.4: all 19 exclusion patterns hold on every valid string up to 8 vertices.
+      // docs/ebcode.md §3: all 19 exclusion patterns hold on every valid string up to 8 vertices.
       for (std::string p : {"E",       "L",       "ESC",     "ELSCC",   "ERSCC",   "ERCSC",   "ELLSCCC",
                             "ELRSCCC", "ELRCCSC", "ERRCSCC", "EESSCCC", "ERCRSCC", "ERRCCSC", "ERRSCCC",
                             "ERCRCSC", "EESCSCC", "ERCLSCC", "ERLSCCC", "ELRCSCC"}) {

@@ -67,7 +67,7 @@ TEST(EdgebreakerDecode, RoundTripsScrambledMeshes) {
   }
 }
 
-// Seed Fig. 5.1: 15 symbols, 7 C's, so v = 10 and t = 16 (spec 2.1-2.2).
+// Seed Fig. 5.1: 15 symbols, 7 C's, so v = 10 and t = 16 (docs/ebcode.md §1-2).
 TEST(EdgebreakerDecode, SeedFigureString) {
   const Clers s = parse_clers("CCCRCCCRRRCSREE");
   const std::vector<Triangle> d = decode(s);

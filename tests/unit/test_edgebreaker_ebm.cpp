@@ -1,4 +1,4 @@
-// The whole .ebm pipeline on general meshes (spec 2.8-2.11): several components, holes,
+// The whole .ebm pipeline on general meshes (docs/ebcode.md §5): several components, holes,
 // handles and non-manifold input come back with the input's vertex count and exactly its
 // faces (as position triples, orientation kept), and the container rejects damage.
 #include <gtest/gtest.h>
@@ -101,7 +101,7 @@ TEST(EdgebreakerEbm, EveryPredictorRoundTrips) {
     expect_exact_round_trip(with_positions(t, m.vertex_count), ConnChoice::automatic, p);
 }
 
-// spec 2.10: colours exact, normals and texture coordinates within half a step, kept
+// docs/ebcode.md §5: colours exact, normals and texture coordinates within half a step, kept
 // through holes, stitching and isolated vertices.
 TEST(EdgebreakerEbm, VertexAttributesComeBackWithTheirVertices) {
   std::vector<Triangle> t = fest::test::eb::subdivided_icosahedron(1).triangles;
@@ -141,7 +141,7 @@ TEST(EdgebreakerEbm, HandlesGiveTwoEventsPerGenus) {
   EXPECT_EQ(stats.events, 2u);
   EXPECT_EQ(read_ebm_header(bytes).events, 2u);
   expect_exact_round_trip(m);
-  // #C = v - 3k and #E - #S = k - 2g (spec 2.1).
+  // #C = v - 3k and #E - #S = k - 2g (docs/ebcode.md §1).
   EXPECT_EQ(stats.histogram[0], 30u - 3u);
   EXPECT_EQ(static_cast<long>(stats.histogram[2]) - static_cast<long>(stats.histogram[4]), 1 - 2);
 }
@@ -165,7 +165,7 @@ TEST(EdgebreakerEbm, ComponentsHolesAndIsolatedVertices) {
   expect_exact_round_trip(m);
 }
 
-// spec 5 "Non-manifold cases": each comes back with the same vertex count and faces.
+// Non-manifold cases (docs/ebcode.md §5): each comes back with the same vertex count and faces.
 TEST(EdgebreakerEbm, NonManifoldInputIsRestoredExactly) {
   const std::vector<Triangle> tetra{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
   std::vector<Triangle> bowtie = tetra;  // two tetrahedra sharing vertex 0
@@ -221,7 +221,7 @@ TEST(EdgebreakerEbm, BadMeshInput) {
   expect_bad_input([&] { encode_ebm(nan, o); }, "not finite");
 }
 
-// Quantised: every coordinate within half a step of the input (spec 2.9).
+// Quantised: every coordinate within half a step of the input (docs/ebcode.md §5).
 TEST(EdgebreakerEbm, QuantisationErrorIsAtMostHalfAStep) {
   const auto s = fest::test::eb::subdivided_icosahedron(3);
   MeshSoup m;

@@ -1,6 +1,6 @@
-// The forward traversal (lib/edgebreaker/encode.cpp). Expected strings are the spec's
-// golden strings (recorded by its independent prototype, specs/ebcode.md 2.2); expected
-// counts follow from Euler's formula (spec 2.1): for a closed genus-0 mesh with v vertices
+// The forward traversal (lib/edgebreaker/encode.cpp). Expected strings are the
+// golden strings (recorded by an independent prototype; docs/ebcode.md §1); expected
+// counts follow from Euler's formula (docs/ebcode.md §1): for a closed genus-0 mesh with v vertices
 // and t = 2v - 4 triangles there are t - 1 symbols, v - 3 of them C, and #E - #S = 1.
 #include <gtest/gtest.h>
 
@@ -76,10 +76,10 @@ TEST(EdgebreakerEncode, RenamingVerticesKeepsTheString) {
     EXPECT_EQ(name[static_cast<std::size_t>(a.vertex_order[i])], b.vertex_order[i]);
 }
 
-// Chapter 5.3 / spec 2.4: in decoding order C never follows E or L, nor any of the 17
+// Chapter 5.3 / docs/ebcode.md §3: in decoding order C never follows E or L, nor any of the 17
 // triangulations of a triangle with 1-3 interior vertices. In forward order that is:
 // the string never contains "C" followed by a reversed pattern. With Gumhold's left-first
-// split order all 19 hold on real meshes (spec 2.2); a right-first traversal breaks them.
+// split order all 19 hold on real meshes (docs/ebcode.md §1); a right-first traversal breaks them.
 TEST(EdgebreakerEncode, ChapterExclusionPatternsHold) {
   const eb::Faces m = eb::subdivided_icosahedron(4);
   const std::string s = to_string(encode(m.triangles, m.vertex_count).clers);

@@ -23,11 +23,11 @@ struct Faces {
   int vertex_count = 0;
 };
 
-// specs/ebcode.md 2.2: vertices (0,0,0), (1,0,0), (0,1,0), (0,0,1), outward faces.
+// The tetrahedron: vertices (0,0,0), (1,0,0), (0,1,0), (0,0,1), outward faces.
 inline Faces tetrahedron() { return {{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}, 4}; }
 
 // The face lists of CGAL's octahedron.off, icosahedron.off and cube.off (Debian
-// libcgal-demo, the project's test data), whose strings the spec's prototype recorded.
+// libcgal-demo, the project's test data), whose strings an independent prototype recorded.
 inline Faces cgal_octahedron() {
   return {{{1, 0, 4}, {4, 0, 3}, {3, 0, 2}, {2, 0, 1}, {1, 5, 2}, {2, 5, 3}, {3, 5, 4}, {4, 5, 1}}, 6};
 }

@@ -1,4 +1,4 @@
-// The range coder (spec 2.7): long random streams of multi-symbol, adaptive-bit and bypass
+// The range coder (docs/ebcode.md §4): long random streams of multi-symbol, adaptive-bit and bypass
 // decisions come back exactly, including the carry path through runs of 0xFF bytes.
 #include <gtest/gtest.h>
 

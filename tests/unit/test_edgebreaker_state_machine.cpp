@@ -1,4 +1,4 @@
-// The chapter's state machines (seed sections 5.4-5.6, spec 2.5-2.6 and 3.2): state counts,
+// The chapter's state machines (seed sections 5.4-5.6, docs/ebcode.md §3): state counts,
 // alpha, rates and unities as printed in Tables 5.1/5.2 and Theorem 5.7.1, the committed
 // frequency tables, and the guarantee checked over every triangulation with n <= 6.
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@ TEST(EdgebreakerStateMachine, OnlyEAndLGiveAlphaOneSixth) {
   EXPECT_EQ(m.states.size(), 2u);
   EXPECT_NEAR(m.alpha, 1.0 / 6.0, 1e-12);
   EXPECT_NEAR(m.rate(), 1.0 + std::log2(6.0), 1e-11);
-  // spec 2.5: root (C, L, E, R, S) = (1/2, 1/12, 1/12, 1/6, 1/6); after E or L C is
+  // docs/ebcode.md §3: root (C, L, E, R, S) = (1/2, 1/12, 1/12, 1/6, 1/6); after E or L C is
   // impossible and the rest doubles.
   EXPECT_NEAR(m.probability(0, Symbol::C), 0.5, 1e-12);
   EXPECT_NEAR(m.probability(0, Symbol::L), 1.0 / 12, 1e-12);
@@ -33,7 +33,7 @@ TEST(EdgebreakerStateMachine, TableFiveOneTwentySixUnities) {
   EXPECT_EQ(m.raw_states, 74u);
   ASSERT_EQ(m.states.size(), 26u);
   EXPECT_NEAR(m.rate(), 3.52676, 5e-5);
-  // spec 3.2, recomputed from seed Table 5.1 (which prints the same values to 1e-5).
+  // docs/ebcode.md §3, recomputed from seed Table 5.1 (which prints the same values to 1e-5).
   std::vector<double> expected{1,        0.984972, 0.969943, 0.945102, 0.9375,   0.901541, 0.875,
                                0.824101, 0.791564, 0.75,     0.686020, 0.642638, 0.629464, 0.5,
                                0.497392, 0.494332, 0.489490, 0.481091, 0.470245, 0.466195, 0.444504,
@@ -67,7 +67,7 @@ TEST(EdgebreakerStateMachine, TableFiveTwoAndTheoremFiveSevenOne) {
 }
 
 TEST(EdgebreakerStateMachine, PatternsWithoutLengthsAndTheLiteralRule) {
-  ModelParams p;  // 19 patterns (17 effective), no lengths: spec 2.6 "m14"
+  ModelParams p;  // 19 patterns (17 effective), no lengths: model "m14" of docs/ebcode.md §3
   const StateMachine m14 = build_state_machine(p);
   EXPECT_EQ(m14.raw_states, 61u);
   EXPECT_EQ(m14.states.size(), 14u);
@@ -98,7 +98,7 @@ TEST(EdgebreakerStateMachine, CommittedTablesEqualRegeneratedOnes) {
   }
 }
 
-// spec 5 "Exhaustive bijection": every triangulation with n <= 6 interior vertices has
+// Exhaustive bijection (docs/ebcode.md §6): every triangulation with n <= 6 interior vertices has
 // probability > 0 under every model, the probabilities sum to at most 1 (Kraft), and the
 // ideal code length stays within the chapter's bound + 2 bits.
 TEST(EdgebreakerStateMachine, EveryTriangulationUpToSixIsCodableWithinTheBound) {

@@ -1,4 +1,4 @@
-// The chapter's experiments (spec section 3, T2-T6 analogues) on the synthetic face
+// The chapter's experiments (docs/facefit.md §5, figs. 1.3-1.5 analogues) on the synthetic face
 // population G2: a 99-component model from 100 training faces, 20 novel test faces,
 // feature sets of 17, 50 and "1000" random vertices (736 at this test's 32×32 grid).
 // Every expectation is a property the mathematics predicts, not a recorded number.

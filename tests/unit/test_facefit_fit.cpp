@@ -1,4 +1,4 @@
-// Fitting through cameras (spec 2.6-2.7; test plan items 5, 7, 10): exact recovery with
+// Fitting through cameras (docs/facefit.md §3): exact recovery with
 // a known camera, similarity invariance, affine pose recovery, posterior uncertainty,
 // landmark checks.
 

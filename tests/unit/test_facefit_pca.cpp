@@ -1,4 +1,4 @@
-// Model building (spec 2.2; test plan item 1): mean, orthonormal basis, the training
+// Model building (docs/facefit.md §1): mean, orthonormal basis, the training
 // set's mean squared Mahalanobis norm equal to k, independence of example order.
 
 #include <algorithm>

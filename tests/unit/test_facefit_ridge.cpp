@@ -1,4 +1,4 @@
-// The estimator (spec 2.3-2.5; test plan items 2, 3, 4, 6): eq. 39 against the normal
+// The estimator (docs/facefit.md §2): eq. 39 against the normal
 // equations, the minimum-norm pseudo-inverse, monotonicity in η, the L = id shrinkage,
 // the nuisance elimination, automatic η.
 

@@ -1,6 +1,6 @@
 // lib/feshape/refine: Rivara bisection keeps the mesh conforming and closed
 // (F = 2V - 4), bounds the smallest angle, leaves far elements alone, never moves the
-// surface; the selection rule of §2.6.
+// surface; the selection rule of §2.1.
 #include <algorithm>
 #include <cmath>
 #include <map>

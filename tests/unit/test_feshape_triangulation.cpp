@@ -33,7 +33,7 @@ double signed_volume(const std::vector<Eigen::Vector3d>& x, const Triangulation&
 }  // namespace
 
 TEST(FeshapeTriangulation, SeedGridsHaveTheSeedCounts) {
-  // The seed's initial meshes (docs/feshape.md §2.8): 27, 51, 66 (128 el.), 47 (90 el.),
+  // The seed's initial meshes (docs/feshape.md §2.3): 27, 51, 66 (128 el.), 47 (90 el.),
   // 227, 627 (1250 el.), 402 (800 el.).
   const std::vector<std::array<int, 4>> grids{{5, 5, 27, 50},     {7, 7, 51, 98},     {8, 8, 66, 128},
                                               {9, 5, 47, 90},     {15, 15, 227, 450}, {25, 25, 627, 1250},

@@ -1,4 +1,4 @@
-// The parallel projection (specs/fluidsim.md 2.5, tests 1-3): class sizes, class
+// The parallel projection (docs/fluidsim.md §4, tests 1-3): class sizes, class
 // independence, exactness of every solver, the checkerboard null mode.
 #include <cmath>
 #include <random>

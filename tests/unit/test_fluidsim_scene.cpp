@@ -1,4 +1,4 @@
-// Scene validation (specs/fluidsim.md 2.10 and "Bad input").
+// Scene validation (fluidsim(1); bad input as README "Conventions" asks).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-// Fast diagonalization (specs/fluidsim.md 2.5): the FFTW transforms have the eigenvalues
+// Fast diagonalization (docs/fluidsim.md §4): the FFTW transforms have the eigenvalues
 // of the assembled 1-D operators, and one implicit diffusion step scales a discrete
 // eigenmode by exactly 1/(1 + nu dt mu) (test 6).
 #include <algorithm>

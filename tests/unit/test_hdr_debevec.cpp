@@ -1,6 +1,6 @@
 // Debevec-Malik response recovery on series made by a known camera (hdr_fixtures.hpp):
 // the recovered g must match ln f^-1 of that camera (normalised by g(128) = 0) within the
-// spec's 2 % on z in [10, 245] (specs/capture.md §3).
+// 2 % on z in [10, 245] (docs/hdrmerge.md §6).
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
-// Radiance merge: log-RMS error against the known radiance within the spec's 2.5 %
-// (specs/capture.md §3), and the properties of §5.1 (time scaling, saturation flags,
+// Radiance merge: log-RMS error against the known radiance within 2.5 %
+// (docs/hdrmerge.md §6), and the properties of docs/hdrmerge.md §5 (time scaling, saturation flags,
 // a known response reproduced exactly) plus the checks on bad series.
 
 #include <cmath>

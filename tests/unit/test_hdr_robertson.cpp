@@ -1,5 +1,5 @@
 // Robertson-Borman-Stevenson response recovery on series of the known gamma-2.2 camera
-// (hdr_fixtures.hpp): the recovered ln I must match 2.2 ln(z/128) within the spec's 2 %
+// (hdr_fixtures.hpp): the recovered ln I must match 2.2 ln(z/128) within 2 %
 // on z in [10, 245], and the radiance merged with it within 2.5 % log-RMS.
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// EXR with extra channels and header attributes (hdrmerge's session EXRs, specs/capture.md
-// §2.8): the extra "valid" channel and the attributes round-trip; read_image still reads
+// EXR with extra channels and header attributes (hdrmerge's session EXRs, docs/hdrmerge.md
+// §5): the extra "valid" channel and the attributes round-trip; read_image still reads
 // the colour of such a file.
 
 #include <gtest/gtest.h>

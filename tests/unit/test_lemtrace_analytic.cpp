@@ -1,6 +1,6 @@
 // Globally linear fields are reproduced exactly by the piecewise-linear interpolant, so
 // the locally exact method must follow the analytic solution x(t) = exp(tA) x0 +
-// t phi1(tA) b to round-off on any grid (spec §5, tests 1, 2 and 9). The expected
+// t phi1(tA) b to round-off on any grid (docs/lemtrace.md §2, §5). The expected
 // values come from the mathematics: the exponential of the known A (Eigen's Pade
 // scaling-and-squaring) and, for the rotations, cos/sin directly.
 
@@ -110,7 +110,7 @@ TEST(LemtraceAnalytic, CircleTestTenRevolutions) {
   for (const Vec3& x : line.x) drift = std::max({drift, std::abs(std::hypot(x[0], x[1]) - 0.7), std::abs(x[2] - 0.05)});
   EXPECT_LE(drift, 1e-10);
   EXPECT_NEAR(line.t.back(), 20 * M_PI, 1e-12);
-  // Heun at 0.2 cell lengths drifts visibly; RK4 less; the LEM not at all (spec §5.2).
+  // Heun at 0.2 cell lengths drifts visibly; RK4 less; the LEM not at all (docs/lemtrace.md §5).
   TraceOptions rk = o;
   rk.method = Method::heun;
   double heun = 0, rk4 = 0;
@@ -197,7 +197,7 @@ TEST(LemtraceAnalytic, PaperNewtonAgreesWithBracket) {
 }
 
 TEST(LemtraceAnalytic, BackwardReturnsToSeed) {
-  // Time reversibility (spec §5.5).
+  // Time reversibility (docs/lemtrace.md §2).
   const FieldGrid grid = make_grid("spiral", 6, 0.2, false);
   TraceOptions o;
   o.max_steps = 40;
@@ -219,7 +219,7 @@ TEST(LemtraceAnalytic, SeedOutsideIsNotInitialized) {
 }
 
 TEST(LemtraceAnalytic, RungeKuttaConvergesToTheSamePath) {
-  // Spec §5.4: RK45 at a tight tolerance on the same piecewise-linear field agrees.
+  // docs/lemtrace.md §5: RK45 at a tight tolerance on the same piecewise-linear field agrees.
   bool linear = false;
   const LinearField f = linear_kind("helix", &linear);
   const FieldGrid grid = make_grid("helix", 6, 0.2, false);
@@ -244,7 +244,7 @@ double stream_function(const Vec3& x) {
 }
 
 TEST(LemtraceAnalytic, NonlinearFieldConvergesAtTheInterpolationOrder) {
-  // Spec §5.3: the LEM is exact for the piecewise-linear field, so its drift in psi is
+  // docs/lemtrace.md §5: the LEM is exact for the piecewise-linear field, so its drift in psi is
   // the interpolation error, O(h^2): from n = 8 to n = 32 (two halvings of h) it must
   // shrink by at least 3.5^2.
   double drift[2] = {0, 0};

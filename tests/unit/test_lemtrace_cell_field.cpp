@@ -1,4 +1,4 @@
-// Cell classification and the eigen form (spec §5, test 7): the decomposition
+// Cell classification and the eigen form (docs/lemtrace.md §1): the decomposition
 // reconstructs A, Cardano's roots match Eigen's general eigensolver, det S = 1, and the
 // cell types of fields whose structure is known by construction.
 

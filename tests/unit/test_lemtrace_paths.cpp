@@ -1,4 +1,4 @@
-// Path properties on fields that are linear only cell by cell (spec §5, tests 6, 8, 10):
+// Path properties on fields that are linear only cell by cell (docs/lemtrace.md §3-5):
 // random vertex vectors on a jittered grid, random seeds. No NaN, a termination reason
 // on every line, time monotone, every exit point on a face of the cell it leaves and
 // the next cell's face; the paper's Newton agrees with the bracketing search where it

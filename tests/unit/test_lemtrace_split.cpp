@@ -1,4 +1,4 @@
-// Splitting and mesh building (spec §5, test 9): conforming tetrahedralisation of
+// Splitting and mesh building (docs/lemtrace.md §4): conforming tetrahedralisation of
 // hexahedra, wedges and pyramids (every interior triangle shared by exactly two tets,
 // volume preserved), orientation repair, and the bad meshes that must be refused.
 

@@ -1,4 +1,4 @@
-// Analytic and reference cases of spec §3/§5: pendulum periods, normal modes, the chaotic
+// Analytic and reference cases of docs/lmfsim.md §7: pendulum periods, normal modes, the chaotic
 // double pendulum against the reduced-coordinate reference, constraint drift with and
 // without stabilisation, the Baumgarte decay law, the four-bar against its 1-DOF
 // equation, rod tension, a motor's first-order feedback and a free body's invariants.
@@ -127,7 +127,7 @@ TEST(LmfsimAnalytic, ChaoticDoublePendulumMatchesReducedReference) {
 }
 
 TEST(LmfsimAnalytic, DriftWithAndWithoutStabilisation) {
-  // Spec §3 table (targets within a factor 3): rk4 h = 1e-3 over 10 s.
+  // docs/lmfsim.md §7, table (targets within a factor 3): rk4 h = 1e-3 over 10 s.
   struct Case { double dt, ab, max_C, drift; } cases[] = {{1e-3, 0, 3.3e-8, 1.9e-8}, {1e-3, 10, 1.4e-10, 6.7e-10},
                                                            {1e-2, 0, 3.3e-4, 1.9e-4}, {1e-2, 10, 1.4e-6, 4.2e-6}};
   double C_with = 0, C_without = 0;

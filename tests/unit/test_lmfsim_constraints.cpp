@@ -1,4 +1,4 @@
-// Constraint calculus (spec §5): J xdot equals dC/dt and c equals Cddot along a free
+// Constraint calculus (docs/lmfsim.md §2): J xdot equals dC/dt and c equals Cddot along a free
 // motion (constant v, constant omega), for every constraint type, at random states.
 #include <gtest/gtest.h>
 
@@ -52,7 +52,7 @@ Constraint make(ConstraintType t, std::mt19937& g, bool b_world) {
   return c;
 }
 
-// Rows whose C is exact (orientation-lock rows are first-order by design, spec §2.2).
+// Rows whose C is exact (orientation-lock rows are first-order by design, docs/lmfsim.md §2).
 bool exact_row(ConstraintType t, int r) {
   if (t == ConstraintType::weld) return r < 3;
   if (t == ConstraintType::slider) return r >= 3;

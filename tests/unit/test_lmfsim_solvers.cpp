@@ -1,5 +1,5 @@
 // Baraff's O(n) solver against the dense reference on trees, loops and redundant sets
-// (spec §5 "Solvers agree"), and the KKT residual of both.
+// (docs/lmfsim.md §3), and the KKT residual of both.
 #include <gtest/gtest.h>
 
 #include <random>

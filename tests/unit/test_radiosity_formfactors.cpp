@@ -1,4 +1,4 @@
-// Form factors against closed forms (docs/radiosity.md §2.3, §3): parallel unit squares at
+// Form factors against closed forms (docs/radiosity.md §3, §7): parallel unit squares at
 // distance 1, F = 0.19982; perpendicular unit squares sharing an edge, F = 0.20004 (the
 // standard tabulated values, e.g. Howell's catalogue C-11 and C-14); a differential area
 // under a square (Howell B-3, summed over four corner rectangles).

@@ -1,4 +1,4 @@
-// 1-D sampling chain (spec resample.md §2.2, §2.10): Fig. 10.10 (C1), the ideal low-pass
+// 1-D sampling chain (docs/resample.md "The 1-D chain and the optimal prefilter"): Fig. 10.10 (C1), the ideal low-pass
 // (C2), the non-linear edge reconstruction of Fig. 10.2 (C3), the derived chain table of
 // §3, and the orthogonal-projection claim of §10.5 (C6).
 #include <gtest/gtest.h>
@@ -38,7 +38,7 @@ TEST(SamplingChain1d, IdealLowPassRemovesTheSignal) {
 }
 
 TEST(SamplingChain1d, DerivedChainTable) {
-  // Spec §3 "Derived chain table", ±1e-4: MSE for the dual, box, ideal and p = r prefilters.
+  // docs/resample.md "Figures reproduced", derived chain table, ±1e-4: MSE for the dual, box, ideal and p = r prefilters.
   struct Row {
     const char* display;
     double f, dual, box, ideal, same;

@@ -1,5 +1,5 @@
 // Dual prefilters, the ideal (DCT) resampler, the local clamp, highlight compression and
-// kernel analysis (spec §2.2, §2.4, §2.10, §5).
+// kernel analysis (docs/resample.md "The 1-D chain and the optimal prefilter", "Separable passes and their order", "Kernels and their responses").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -136,7 +136,7 @@ TEST(SamplingAnalysis, ResponsesMatchClosedForms) {
   EXPECT_EQ(box.overshoot, 0);
   const auto bs = analyse_kernel(make_kernel("bspline"));
   EXPECT_NEAR(bs.k_half, std::pow(2 / pi, 4), 1e-5);
-  // Lanczos3's step response overshoots by the spec table's 0.0731.
+  // Lanczos3's step response overshoots by 0.0731 (docs/resample.md "Kernels and their responses").
   const auto l3 = analyse_kernel(make_kernel("lanczos3"));
   EXPECT_NEAR(l3.overshoot, 0.0731, 1e-4);
   EXPECT_NEAR(l3.k_quarter, 1.0114, 1e-4);
@@ -147,7 +147,7 @@ TEST(SamplingAnalysis, ResponsesMatchClosedForms) {
 }
 
 TEST(SamplingMipKernel, BoxPyramidKernelIsASpaceVariantBlendOfTwoBoxes) {
-  // Spec C4 (Fig. 10.12): level 3, positions 12.0 and 14.4.
+  // docs/resample.md "Figures reproduced" C4 (Fig. 10.12): level 3, positions 12.0 and 14.4.
   const auto a = mip_kernel_1d(3, 12.0, MipBuild::box), b = mip_kernel_1d(3, 14.4, MipBuild::box);
   double sa = 0, sb = 0;
   for (double w : a) sa += w;
@@ -194,7 +194,7 @@ TEST(SamplingMetrics, IdealZonePlateHasNoAliasAndFullPassBand) {
 }
 
 TEST(SamplingSlopePyramid, KeepsTheRoughnessOfASineHeightField) {
-  // Spec N1: h = sin(2πx/16) on 1024² texels. Central differences give slopes
+  // docs/resample.md "Figures reproduced" N1: h = sin(2πx/16) on 1024² texels. Central differences give slopes
   // cos(·) sin(2π/16); levels ≥ 4 hold whole periods: mean 0, S.xx = sin²(2π/16)/2.
   const int n = 1024;
   FloatImage h(n, n, 1);
@@ -222,10 +222,10 @@ TEST(SamplingSlopePyramid, KeepsTheRoughnessOfASineHeightField) {
 }
 
 TEST(SamplingResize, HalfPixelShiftOfABandLimitedSine) {
-  // Spec §5 translation consistency: --shift 0.5 of a sine of f = 0.1 is the sine shifted by
+  // docs/resample.md "Figures reproduced", translation consistency: --shift 0.5 of a sine of f = 0.1 is the sine shifted by
   // half a pixel, in phase exactly (the taps are symmetric about the new centre), with the
   // amplitude the normalised half-sample taps give: Σ w cos(2πfd) / Σ w over d = ±½, ±3/2, ...
-  // That is 1.0034 for lanczos3 -- the spec's 1e-3 does not hold for it -- and closer to 1
+  // That is 1.0034 for lanczos3 -- a 1e-3 bound does not hold for it -- and closer to 1
   // for longer windows.
   const int n = 200;
   const double f = 0.1;

@@ -1,5 +1,5 @@
-// Kernel catalogue (spec resample.md §2.3): closed-form values, partition of unity,
-// frequency responses against the spec's kernel table (§3, Z1 table columns K(0.25), K(0.5)),
+// Kernel catalogue (docs/resample.md "Kernels and their responses"): closed-form values, partition of unity,
+// frequency responses against the kernel table of docs/resample.md "Figures reproduced" (Z1 table columns K(0.25), K(0.5)),
 // and lookup errors.
 #include <gtest/gtest.h>
 
@@ -121,7 +121,7 @@ TEST(SamplingKernels, ClosedFormResponses) {
 }
 
 TEST(SamplingKernels, ResponsesMatchSpecTable) {
-  // Spec §3, zone-plate table: K(0.25) and K(0.5) of the (truncated) resize kernels,
+  // docs/resample.md "Figures reproduced", zone-plate table: K(0.25) and K(0.5) of the (truncated) resize kernels,
   // printed to 4 decimals.
   struct Row {
     const char* name;

@@ -1,4 +1,4 @@
-// Sample patterns and supersampled rendering (spec §2.6, §5): stratification properties,
+// Sample patterns and supersampled rendering (docs/resample.md "Rendering analytic scenes"): stratification properties,
 // reproducibility, and the S1 convergence slopes (jittered ≈ −0.75, random ≈ −0.5).
 #include <gtest/gtest.h>
 
@@ -116,7 +116,7 @@ double error_slope(Pattern p, const FloatImage& truth) {
 }  // namespace
 
 TEST(SamplingRender, ConvergenceSlopesOfJitteredAndRandomSampling) {
-  // S1 (spec §3): a 64² disk XOR half-plane, box pixel filter. Ground truth: 16384
+  // S1 (docs/resample.md "Figures reproduced"): a 64² disk XOR half-plane, box pixel filter. Ground truth: 16384
   // stratified samples per pixel (its own error, ~1e-4, is far below the N = 256 errors).
   RenderOptions gt;
   gt.width = gt.height = 64;
@@ -136,7 +136,7 @@ TEST(SamplingRender, ConvergenceSlopesOfJitteredAndRandomSampling) {
 }
 
 TEST(SamplingRender, BoxFilteredSineIsTheSincScaledCosine) {
-  // (1/Δ)∫ over a pixel of ½ + ½cos(2πf x) = ½ + ½ sinc(f) cos(2πf x_c) (spec §5 analytic case).
+  // (1/Δ)∫ over a pixel of ½ + ½cos(2πf x) = ½ + ½ sinc(f) cos(2πf x_c) (an analytic case).
   const double f = 0.3, pi = std::acos(-1.0);
   RenderOptions o;
   o.width = 32;

@@ -1,4 +1,4 @@
-// Separable resize (spec resample.md §2.4, §5 property tests): linear light (G1), constants,
+// Separable resize (docs/resample.md "Separable passes and their order"): linear light (G1), constants,
 // identity, ramps, block means, alpha, thread independence and absurd sizes.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// The table-driven 8-bit sRGB encoder must give exactly the code of the formula (spec
-// resample.md §2.4 step 8) with from_working's rounding: floor(255 s + 0.5), saturated.
+// The table-driven 8-bit sRGB encoder must give exactly the code of the formula (docs/resample.md
+// "Streaming", encode) with from_working's rounding: floor(255 s + 0.5), saturated.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Weight tables (spec resample.md §2.4 step 4): centre convention, normalisation, and the
+// Weight tables (docs/resample.md "Weights"): centre convention, normalisation, and the
 // four edge modes.
 #include <gtest/gtest.h>
 

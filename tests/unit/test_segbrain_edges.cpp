@@ -1,4 +1,4 @@
-// Second-order edges against analytic cases (spec §5, 3): the moments of the Gaussian
+// Second-order edges against analytic cases (docs/segbrain.md §3): the moments of the Gaussian
 // derivative kernels, the LoG zero crossing of a blurred step at the step's position
 // (isotropic and anisotropic voxels), the zero crossings of a bright ball at its radius,
 // and the in-plane scope that ignores changes along S.
@@ -114,7 +114,7 @@ TEST(SegbrainEdges, SlopeRejectsWeakCrossings) {
 }
 
 TEST(SegbrainEdges, ZeroCrossingsOfABallLieAtItsRadius) {
-  // Bright ball, r = 20 mm, sigma 2 mm (spec §5): every edge voxel within half a voxel
+  // Bright ball, r = 20 mm, sigma 2 mm (docs/segbrain.md §3): every edge voxel within half a voxel
   // (plus the half voxel an axis-wise crossing may sit off the radial line) of r, and
   // the interpolated crossing on the axes through the centre within 0.5 voxel of r.
   Grid g = grid(56, 56, 56);

@@ -1,4 +1,4 @@
-// Engine semantics (spec §5 "Unit and property tests" 1): clause order, backtracking,
+// Engine semantics (docs/segbrain.md §2): clause order, backtracking,
 // cut scoping, if-then-else, negation, findall, arithmetic, errors, limits, and the
 // release of workspace objects on backtracking.
 #include <gtest/gtest.h>

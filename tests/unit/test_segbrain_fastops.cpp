@@ -1,7 +1,7 @@
-// The fast operators (spec §7) against simple reference implementations written for the
+// The fast operators (docs/segbrain.md §5) against simple reference implementations written for the
 // test: flood-fill components (ids in raster order of first voxels), flood-fill hole
 // filling, brute-force distances and balls, direct separable convolution; and the same
-// results for any number of worker threads (spec §4 determinism).
+// results for any number of worker threads (deterministic output).
 #include <gtest/gtest.h>
 
 #include <algorithm>

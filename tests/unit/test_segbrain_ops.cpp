@@ -1,4 +1,4 @@
-// Operators against analytic cases (spec §5, 3): exact distance transform (a point, and
+// Operators against analytic cases (docs/segbrain.md §3): exact distance transform (a point, and
 // brute force on random anisotropic grids), morphology laws, hole filling, components
 // for 6/18/26 connectivity, Otsu on a two-class mixture, Gaussian moments, region growing,
 // reorientation round trips.

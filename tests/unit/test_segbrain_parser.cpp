@@ -1,4 +1,4 @@
-// KB parser (spec §5, 2): round trip parse -> print -> parse, and syntax errors with
+// KB parser (docs/segbrain.md §2, segbrain-rules(5)): round trip parse -> print -> parse, and syntax errors with
 // the right file:line:col.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Line tracking (spec §5, 3): the straight line in a uniform-cost grid, a curved
+// Line tracking (docs/segbrain.md §4): the straight line in a uniform-cost grid, a curved
 // low-cost channel followed through a costly background, the tubularity of a bright and
 // a dark cylinder, and the optic nerves of the synthetic head tracked from the posterior
 // pole of each globe to the chiasm zone against the phantom's known centre lines.

@@ -1,4 +1,4 @@
-// softobj: the deviation-driven shrink-wrap refinement (docs/softobj.md §3.3c') against
+// softobj: the deviation-driven shrink-wrap refinement (docs/softobj.md §3, step 3 (c')) against
 // closed-form offset surfaces. Expected numbers come from formulas: offset volumes and
 // areas of a point, a segment and a square, and the fact that a mesh inscribed in a
 // convex surface (every vertex on it) loses at most area x maximum deviation of volume.

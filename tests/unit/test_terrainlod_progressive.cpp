@@ -1,7 +1,7 @@
-// Progressive (parent-relative) tile coding (spec terrainlod 2.8, our version; tile_parent
+// Progressive (parent-relative) tile coding (docs/terrainlod.md §4, our version; tile_parent
 // and tile_codec): round trips for both codings, progressive and standalone decodes agree
 // tile by tile on a built pyramid, and the bits of the inherited vertices follow from the
-// geometry (spec 5.8 in our version: 1 present bit + k_parent - k_child height bits per
+// geometry (docs/terrainlod.md §4 in our version: 1 present bit + k_parent - k_child height bits per
 // inherited interior vertex, no xy bits; k_parent bits of G for a parent interior vertex
 // on the child's border; nothing for the parent's border points).
 
@@ -216,7 +216,7 @@ TEST(TerrainlodProgressive, ProgressiveAndStandaloneDecodesAgreeOnFbm) {
   expect_codings_agree(build_pyramid(g, 1, 1, p));
 }
 
-// Spec 2.5's residual bound, our version: the parent's base triangulation is within
+// The residual bound of docs/terrainlod.md §4, our version: the parent's base triangulation is within
 // (4/3) eps_p of the DEM (reference l+2, quantized heights included) and a child vertex's
 // G is the DEM sample rounded (1/2), so the parent-surface prediction floor(P / 2^k) of a
 // child interior vertex misses its H = floor(G / 2^k) by at most ((4/3) eps_p + 1/2) / 2^k

@@ -1,4 +1,4 @@
-// The pyramid against the spec's guarantees (terrainlod section 5): every tile and every
+// The pyramid against the guarantees of docs/terrainlod.md §1, §6: every tile and every
 // one of its 16 transition triangulations within (4/3) eps_l of the DEM (eps_l with the
 // DEM as the reference, 2 eps_l with level l+1) (re-measured here on
 // the decoded tile, not taken from the builder), decoding reproduces the encoder's
@@ -37,7 +37,7 @@ Pyramid make_pyramid(double cell, Reference reference = Reference::level_plus_2,
   return build_pyramid(g, cell, cell, p);
 }
 
-// The bound against the DEM for each reference (spec 2.2): eps (1 + 1/4 + 1/16 + ...)
+// The bound against the DEM for each reference (docs/terrainlod.md §1): eps (1 + 1/4 + 1/16 + ...)
 // for level l+2, eps (1 + 1/2 + 1/4 + ...) for level l+1.
 double bound_factor(Reference r) {
   return r == Reference::original ? 1.0 : r == Reference::level_plus_1 ? 2.0 : 4.0 / 3.0;

@@ -1,6 +1,6 @@
 // The coarser-mesh reference (tin_reference.hpp) against the grid reference on the same
 // surface: built from the finest triangulation of a DEM, the TIN *is* the grid's surface,
-// so heights and exact overlay errors of any triangle must agree (spec terrainlod 2.1-2.2).
+// so heights and exact overlay errors of any triangle must agree (docs/terrainlod.md §1).
 
 #include <random>
 

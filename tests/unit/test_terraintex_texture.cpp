@@ -1,4 +1,4 @@
-// Texture tiles (spec terrainlod 2.1, 2.9, 2.10): the leaf canvas, the per-level box
+// Texture tiles (docs/terrainlod.md §3-4, terrainlod-pyramid(5)): the leaf canvas, the per-level box
 // filter, the cut into tiles, the placement rules of an image on a DEM, the hillshade,
 // and the texture that closing-only tiles are drawn with. Expected values come from the
 // definitions (lattice-aligned copies, rounded 2 x 2 means, linear ramps that bilinear
