@@ -8,6 +8,7 @@
 
 #include "cli/cli.hpp"
 #include "commands.hpp"
+#include "core/error.hpp"
 
 int main(int argc, char** argv) {
   using namespace fest::fconv;
