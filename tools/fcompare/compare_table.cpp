@@ -1,0 +1,27 @@
+// fcompare on tables: max abs and max rel per column.
+
+#include <nlohmann/json.hpp>
+
+#include "compare/table_compare.hpp"
+#include "formats/table/table_io.hpp"
+#include "measure.hpp"
+
+namespace fest::fcompare {
+
+using namespace fest::formats;
+using fest::compare::Metrics;
+
+void compare_tables(const Input& ia, const Input& ib, const CompareOptions& opt, Metrics& m) {
+  const Table a = parse(ia, read_table);
+  const Table b = parse(ib, read_table);
+  const auto e = compare::table_error(a, b);
+  m.set("max_abs", e.max_abs);
+  m.set("max_rel", e.max_rel);
+  nlohmann::json cols = nlohmann::json::object();
+  for (const auto& c : e.columns) cols[c.name] = {{"max_abs", c.max_abs}, {"max_rel", c.max_rel}};
+  m.details["columns"] = cols;
+  m.family({"max_abs", "max_rel"});
+  require_main(m, "max_abs", opt);
+}
+
+}  // namespace fest::fcompare

@@ -1,0 +1,74 @@
+// fconv's conversion: choose the output format, check that it is of the input's kind,
+// convert completely, then write.
+
+#include <string>
+
+#include "commands.hpp"
+#include "convert.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "formats/dataset/dataset_io.hpp"
+#include "formats/image/image_io.hpp"
+#include "formats/input.hpp"
+#include "formats/table/table_io.hpp"
+
+namespace fest::fconv {
+
+using namespace fest::formats;
+
+namespace {
+
+const char* article(Kind k) { return k == Kind::image ? "an" : "a"; }
+
+// Every kind but volumes (which convert_volume writes itself): the output file's bytes.
+std::string convert(const Input& in, Format to, const ConvertOptions& opt) {
+  switch (kind_of(in.format)) {
+    case Kind::mesh: return convert_mesh(in, to, opt);
+    case Kind::image: {
+      ImageWriteOptions w;
+      w.ascii = opt.ascii;
+      w.exr_half = opt.half;
+      w.jpeg_quality = opt.quality;
+      return write_image(parse(in, read_image), to, w);
+    }
+    case Kind::volume: throw usage_error("internal: volumes are converted by convert_volume");
+    case Kind::dataset: {
+      DatasetWriteOptions w;
+      w.ascii = opt.ascii;
+      return write_dataset(parse(in, read_dataset), to, w);
+    }
+    case Kind::table: return write_table(parse(in, read_table), to);
+    case Kind::json: return write_json(parse(in, read_json_document));
+  }
+  throw usage_error("unsupported conversion");
+}
+
+}  // namespace
+
+int convert_command(const ConvertOptions& opt) {
+  const Input in = load_input(opt.input);
+  // The output format: --to, else the output file's extension, else (standard output
+  // with no --to) the input's own format, so `fconv < a > b` normalises a file.
+  OutputFormat out{in.format, false};
+  if (opt.to)
+    out = *opt.to;
+  else if (!is_stdio(opt.output))
+    out = output_format_from_path(opt.output);
+  if (kind_of(out.format) != kind_of(in.format))
+    throw usage_error("cannot convert {} {} ({}) to {}, which is {} {} format", article(kind_of(in.format)),
+                      kind_name(kind_of(in.format)), format_name(in.format), format_name(out.format),
+                      article(kind_of(out.format)), kind_name(kind_of(out.format)));
+  if (opt.frame && kind_of(in.format) != Kind::volume)
+    throw usage_error("--frame picks a frame of a 4-D volume; the input is {} {}", article(kind_of(in.format)),
+                      kind_name(kind_of(in.format)));
+  // Convert completely before writing anything: bad input leaves no partial output.
+  if (kind_of(in.format) == Kind::volume) {
+    convert_volume(in, out, opt);
+    return 0;
+  }
+  const std::string bytes = convert(in, out.format, opt);
+  store_output(opt.output, bytes, out.gzip);
+  return 0;
+}
+
+}  // namespace fest::fconv

@@ -1,0 +1,44 @@
+#pragma once
+// fconv's jobs (docs/fconv.md), each taking its typed options. main.cpp fills these from
+// flags; everything else in this folder is the fest_fconv_app library.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "core/volume.hpp"
+#include "formats/detect.hpp"
+#include "formats/mesh/mesh_io.hpp"
+
+namespace fest::fconv {
+
+// Convert a file to another format of the same kind.
+struct ConvertOptions {
+  std::string input = "-";
+  std::string output = "-";
+  // The output format: this, else the output file's extension, else (standard output)
+  // the input's own format.
+  std::optional<formats::OutputFormat> to;
+  bool ascii = false;     // text variant where the format has one
+  bool compress = false;  // NRRD (gzip) and MHA (zlib) data
+  bool half = false;      // EXR half channels
+  int quality = 95;       // JPEG output
+  std::optional<ScalarType> volume_type;  // volumes: store values as this type
+  bool rescale = false;                   // map the value range onto volume_type's
+  std::optional<std::size_t> frame;       // volumes: only this frame of a 4-D series
+  int draco_bits = 0;
+  int draco_speed = 5;
+  formats::CoordinatePrecision precision = formats::CoordinatePrecision::automatic;
+  bool drop_unrepresentable = false;
+};
+
+// Describe a file as JSON (--info).
+struct InfoOptions {
+  std::string input = "-";
+  std::string output = "-";
+};
+
+int convert_command(const ConvertOptions& o);
+int info_command(const InfoOptions& o);
+
+}  // namespace fest::fconv
