@@ -92,3 +92,22 @@ TEST(EbcodeApp, FlagValuesBecomeTypedOptions) {
     EXPECT_NE(std::string(e.what()).find("--conn"), std::string::npos) << e.what();
   }
 }
+
+// lib/edgebreaker says "strict coding"; the command names the flag the user typed.
+TEST(EbcodeApp, StrictRefusalNamesTheFlag) {
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "fin.off";
+  std::ofstream(path) << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n";
+  fest::ebcode::EncodeOptions o;
+  o.input = path.string();
+  o.output = (dir / "fin.ebm").string();
+  o.strict = true;
+  try {
+    fest::ebcode::encode_command(o);
+    FAIL() << "no error";
+  } catch (const fest::Error& e) {
+    EXPECT_EQ(e.status(), fest::Status::bad_input);
+    EXPECT_EQ(std::string(e.what()), "the mesh has a boundary (--strict)");
+  }
+  EXPECT_FALSE(std::filesystem::exists(o.output));
+}
