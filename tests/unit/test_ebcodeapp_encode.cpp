@@ -111,3 +111,27 @@ TEST(EbcodeApp, StrictRefusalNamesTheFlag) {
   }
   EXPECT_FALSE(std::filesystem::exists(o.output));
 }
+
+TEST(EbcodeApp, LosslessRefusalNamesTheFlag) {
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "double.off";
+  std::ofstream(path) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1.1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n";
+  fest::ebcode::EncodeOptions o;
+  o.input = path.string();
+  o.output = (dir / "double.ebm").string();
+  o.qp = 0;
+  try {
+    fest::ebcode::encode_command(o);
+    FAIL() << "no error";
+  } catch (const fest::Error& e) {
+    EXPECT_EQ(e.status(), fest::Status::bad_input);
+    EXPECT_EQ(std::string(e.what()), "--qp 0 stores float32 exactly, but vertex 3 has the double coordinate 1.1");
+  }
+}
+
+TEST(EbcodeApp, DomainPhrasesBecomeFlags) {
+  const fest::Error e = fest::ebcode::in_flag_terms(
+      fest::bad_input("the static model cannot code this mesh: use the adaptive coder, or let the encoder choose"));
+  EXPECT_EQ(e.status(), fest::Status::bad_input);
+  EXPECT_EQ(std::string(e.what()), "the static model cannot code this mesh: use --conn adaptive or auto");
+}
