@@ -380,9 +380,9 @@ Clers mesh_symbols(const MeshSoup& mesh, bool strict) {
 }
 
 std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, EncodeStats* stats) {
-  if (options.qp < 0 || options.qp > 30) throw usage_error("--qp {} is outside 0..30", options.qp);
-  if (options.qn < 1 || options.qn > 30) throw usage_error("--qn {} is outside 1..30", options.qn);
-  if (options.qt < 1 || options.qt > 30) throw usage_error("--qt {} is outside 1..30", options.qt);
+  if (options.qp < 0 || options.qp > 30) throw usage_error("position quantisation bits {} outside 0..30", options.qp);
+  if (options.qn < 1 || options.qn > 30) throw usage_error("normal quantisation bits {} outside 1..30", options.qn);
+  if (options.qt < 1 || options.qt > 30) throw usage_error("texture-coordinate quantisation bits {} outside 1..30", options.qt);
   if (options.version != 1 && options.version != 2) throw usage_error(".ebm version {} cannot be written (1 or 2)", options.version);
   if (mesh.positions.size() > max_elements) throw bad_input("{} vertices, more than supported", mesh.positions.size());
   if (options.geometry)
@@ -393,7 +393,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
       for (double x : mesh.positions[v])
         if (static_cast<double>(static_cast<float>(x)) != x)
-          throw bad_input("--qp 0 stores float32 exactly, but vertex {} has the double coordinate {}", v, x);
+          throw bad_input("lossless positions (0 quantisation bits) store float32 exactly, but vertex {} has the double coordinate {}", v, x);
 
   const PreparedMesh prepared = prepare_mesh(mesh.triangles, static_cast<int>(mesh.positions.size()), options.strict);
   const Traversal trav = traverse(prepared.table);
@@ -425,7 +425,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
         consider(ConnMode::static_model);
       } catch (const Error& e) {
         if (e.status() != Status::failure) throw;
-        throw bad_input("{}: use --conn adaptive or auto", e.what());
+        throw bad_input("{}: use the adaptive coder, or let the encoder choose", e.what());
       }
       break;
     case ConnChoice::automatic:
@@ -492,7 +492,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
   Quantiser quant;
   quant.bits = options.qp;
   quant.box = options.box ? *options.box : bounding_box(mesh.positions);
-  if (options.box && !(quant.box[3] >= 0)) throw usage_error("--box: the extent must be >= 0");
+  if (options.box && !(quant.box[3] >= 0)) throw usage_error("quantisation box: the extent must be >= 0");
   std::string geom, isol;
   double max_error = 0, sum_sq = 0;
   std::size_t n_coords = 0;

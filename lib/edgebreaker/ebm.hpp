@@ -10,8 +10,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "core/triangle_soup.hpp"
 #include "edgebreaker/clers.hpp"
 #include "edgebreaker/conn_coder.hpp"
 #include "edgebreaker/geometry_coder.hpp"
@@ -19,14 +21,10 @@
 namespace fest::edgebreaker {
 
 // A triangle soup with positions: what goes in and comes out. Vertex ids index positions.
-struct MeshSoup {
-  std::vector<std::array<double, 3>> positions;
-  std::vector<Triangle> triangles;
-  // Per-vertex attributes (spec 2.10): each empty, or one entry per position.
-  std::vector<std::array<double, 3>> normals;         // quantised over [-1, 1] (clamped)
-  std::vector<std::array<std::uint8_t, 3>> colors;    // exact
-  std::vector<std::array<double, 2>> texcoords;       // quantised over their own box
-};
+// Per-vertex attributes (spec 2.10): normals are quantised over [-1, 1] (clamped), colours
+// kept exactly, texture coordinates quantised over their own box.
+using MeshSoup = TriangleSoup;
+static_assert(std::is_same_v<decltype(MeshSoup::triangles)::value_type, Triangle>);
 
 enum class ConnChoice { automatic, static_model, adaptive, raw };
 

@@ -85,7 +85,7 @@ PreparedMesh prepare_mesh(const std::vector<Triangle>& faces, int vertex_count, 
       if (v < 0 || v >= vertex_count)
         throw bad_input("face {} refers to vertex {}, outside 0..{}", f, v, vertex_count - 1);
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-      if (strict) throw bad_input("face {} ({} {} {}) repeats a vertex (--strict)", f, t[0], t[1], t[2]);
+      if (strict) throw bad_input("face {} ({} {} {}) repeats a vertex (strict coding)", f, t[0], t[1], t[2]);
       ++out.dropped_degenerate;
       continue;
     }
@@ -119,7 +119,7 @@ PreparedMesh prepare_mesh(const std::vector<Triangle>& faces, int vertex_count, 
     if (!owned[static_cast<std::size_t>(v)]) {
       owned[static_cast<std::size_t>(v)] = 1;
     } else {
-      if (strict) throw bad_input("vertex {} is non-manifold (--strict)", v);
+      if (strict) throw bad_input("vertex {} is non-manifold (strict coding)", v);
       out.copy_of.push_back(v);
       id = next_vertex++;
     }
@@ -162,7 +162,7 @@ PreparedMesh prepare_mesh(const std::vector<Triangle>& faces, int vertex_count, 
     }
   for (int c0 = 0; c0 < kept_corners; ++c0) {
     if (table.O[static_cast<std::size_t>(c0)] != -1) continue;
-    if (strict) throw bad_input("the mesh has a boundary (--strict)");
+    if (strict) throw bad_input("the mesh has a boundary (strict coding)");
     const int d = next_vertex++;
     ++out.holes;
     int c = c0;

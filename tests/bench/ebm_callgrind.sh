@@ -21,7 +21,7 @@ for row in "fandisk 11" "fandisk 14" "camel 11" "camel 14" "ChineseDragon-10kv 1
   t=$(echo "$line" | sed 's/.*"triangles":\([0-9]*\).*/\1/')
   ann=$(callgrind_annotate --inclusive=yes "$out/cg" 2>/dev/null)
   ir() { echo "$ann" | grep -F "$1" | head -1 | awk '{gsub(",","",$1); print $1}'; }
-  ee=$(ir "fest::edgebreaker::encode_ebm[abi:cxx11](fest::edgebreaker::MeshSoup const&, fest::edgebreaker::EncodeOptions const&, fest::edgebreaker::EncodeStats*) [")
+  ee=$(ir "fest::edgebreaker::encode_ebm[abi:cxx11](fest::TriangleSoup const&, fest::edgebreaker::EncodeOptions const&, fest::edgebreaker::EncodeStats*) [")
   ed=$(ir "fest::edgebreaker::decode_ebm(std::basic_string_view<char, std::char_traits<char> >, bool, bool, fest::edgebreaker::EbmHeader*) [")
   de=$(ir "draco::Encoder::EncodeMeshToBuffer(")
   dd=$(ir "draco::Decoder::DecodeMeshFromBuffer(")

@@ -1,139 +1,8 @@
-// ebdecode: .ebm (or Draco .drc) -> triangle mesh. Everything is decoded and checked
-// (magic, version, CRC, counts, every index) before a byte is written.
-//
-// Wiring only: lib/edgebreaker decodes .ebm, formats/ reads Draco and writes the mesh.
+// ebdecode: .ebm (or Draco .drc) -> triangle mesh (docs/ebdecode.md). Flags only; the
+// command lives in cmd_decode.cpp (fest_ebdecode_app).
 
-#include <chrono>
-#include <string>
-
-
-#include <nlohmann/json.hpp>
-#include <OpenMesh/Core/System/omstream.hh>
-
-#include "../ebcode/mesh_soup.hpp"
 #include "cli/cli.hpp"
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/resources.hpp"
-#include "edgebreaker/ebm.hpp"
-#include "formats/input.hpp"
-#include "formats/mesh/mesh_io.hpp"
-
-namespace {
-
-using namespace fest;
-using namespace fest::edgebreaker;
-using Clock = std::chrono::steady_clock;
-
-struct Options {
-  std::string input = "-";
-  std::string output = "-";
-  std::string to;
-  bool info = false;
-  std::string report;
-  bool no_stitch = false;
-  bool no_verify = false;
-};
-
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-nlohmann::json header_json(const EbmHeader& h) {
-  static const char* modes[] = {"raw", "static", "adaptive"};
-  nlohmann::json j;
-  j["format"] = "ebm";
-  j["version"] = std::to_string(h.major) + "." + std::to_string(h.minor);
-  j["bytes"] = h.total_bytes;
-  j["vertices"] = h.vertices;
-  j["faces"] = h.faces;
-  j["components"] = h.components;
-  j["holes"] = h.dummies;
-  j["stitch"] = h.stitch;
-  j["events"] = h.events;
-  j["isolated"] = h.isolated;
-  j["symbols"] = h.symbols;
-  j["conn_mode"] = modes[h.conn_mode];
-  j["model_id"] = h.model_id;
-  j["qp"] = h.qp;
-  j["predictor"] = h.predictor;
-  j["geometry"] = (h.flags & ebm_flags::geometry) != 0;
-  j["exclusion"] = (h.flags & ebm_flags::exclusion) != 0;
-  j["box"] = {h.box[0], h.box[1], h.box[2], h.box[3]};
-  j["attributes"] = h.attribute_names;
-  nlohmann::json sections = nlohmann::json::object();
-  for (const auto& [tag, n] : h.section_bytes) sections[tag] = n;
-  j["sections"] = sections;
-  return j;
-}
-
-formats::Format output_format(const Options& opt) {
-  std::string to = opt.to;
-  if (to.empty() && !is_stdio(opt.output)) {
-    const formats::OutputFormat f = formats::output_format_from_path(opt.output);
-    if (formats::kind_of(f.format) != formats::Kind::mesh) throw usage_error("-o {}: not a mesh file name", opt.output);
-    return f.format;
-  }
-  if (to.empty() || to == "ply" || to == "plya") return formats::Format::ply;
-  if (to == "obj") return formats::Format::obj;
-  if (to == "off") return formats::Format::off;
-  throw usage_error("--to: unknown output '{}' (ply, plya, obj, off)", to);
-}
-
-int run(const Options& opt) {
-  const formats::Format out_format = output_format(opt);
-  const Clock::time_point t0 = Clock::now();
-  // .ebm is recognised here by its magic; anything else goes through formats/ (Draco).
-  std::string bytes_in = read_input(opt.input);
-  formats::Input in;
-  if (is_ebm(bytes_in)) {
-    in.name = opt.input;
-    in.bytes = std::move(bytes_in);
-    in.format = formats::Format::drc;  // unused for .ebm
-  } else if (bytes_in.empty()) {
-    throw bad_input("empty input ({})", opt.input);
-  } else {
-    in = formats::recognise(std::move(bytes_in), opt.input);
-  }
-  Mesh mesh;
-  nlohmann::json report;
-  if (is_ebm(in.bytes)) {
-    if (opt.info) {
-      const EbmHeader h = formats::parse(in, [](const std::string& b, formats::Format) { return read_ebm_header(b); });
-      write_output(opt.output, header_json(h).dump(2) + "\n");
-      return 0;
-    }
-    EbmHeader h;
-    const MeshSoup soup = formats::parse(in, [&](const std::string& b, formats::Format) {
-      return decode_ebm(b, !opt.no_stitch, !opt.no_verify, &h);
-    });
-    const double decode_ms = ms_since(t0);
-    mesh = tools::to_mesh(soup);
-    report = header_json(h);
-    report["ms"] = {{"decode", decode_ms}};
-    report["triangles_per_s"] = decode_ms > 0 ? static_cast<double>(soup.triangles.size()) / (decode_ms / 1000.0) : 0.0;
-  } else if (in.format == formats::Format::drc) {
-    mesh = formats::parse(in, formats::read_mesh);
-    if (opt.info) {
-      nlohmann::json j = formats::describe_mesh(mesh);
-      j["format"] = "drc";
-      write_output(opt.output, j.dump(2) + "\n");
-      return 0;
-    }
-    report = {{"format", "drc"}, {"ms", {{"decode", ms_since(t0)}}}};
-  } else {
-    throw bad_input("not an .ebm or Draco stream ({})", in.name);
-  }
-  formats::MeshWriteOptions w;
-  w.ascii = opt.to == "plya";
-  const std::string bytes = formats::write_mesh(mesh, out_format, w);  // complete before any output
-  formats::store_output(opt.output, bytes, false);
-  if (!opt.report.empty()) {
-    report["peak_rss_kb"] = peak_rss_kb();
-    write_output(opt.report, report.dump(2) + "\n");
-  }
-  return 0;
-}
-
-}  // namespace
+#include "commands.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Decode an .ebm stream (or a Draco .drc file) into a triangle mesh.\n"
@@ -141,18 +10,23 @@ int main(int argc, char** argv) {
                "ebdecode"};
   fest::cli::Common common;
   fest::cli::add_common(app, common);
-  Options opt;
+  using namespace fest::ebdecode;
+  DecodeOptions opt;
+  std::string to;
+  bool no_stitch = false, no_verify = false;
   app.add_option("input", opt.input, "Input .ebm or .drc, or - for standard input")->default_val("-");
   app.add_option("-o,--output", opt.output, "Output file, or - for standard output")->default_val("-");
-  app.add_option("--to", opt.to, "Output format: ply (binary, the default), plya (ascii PLY), obj, off");
+  app.add_option("--to", to, "Output format: ply (binary, the default), plya (ascii PLY), obj, off");
   app.add_flag("--info", opt.info, "Print the .ebm header as JSON (after checking the CRC) instead of decoding");
   app.add_option("--report", opt.report, "Write counts and decode time as JSON to this file");
-  app.add_flag("--no-stitch", opt.no_stitch, "Keep the copies of non-manifold vertices separate");
-  app.add_flag("--no-verify", opt.no_verify, "Skip re-encoding the decoded connectivity");
+  app.add_flag("--no-stitch", no_stitch, "Keep the copies of non-manifold vertices separate");
+  app.add_flag("--no-verify", no_verify, "Skip re-encoding the decoded connectivity");
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input (bad magic, version, CRC, truncated), 4 I/O error.\n"
              "See ebdecode(1), ebcode(1), ebm(5).");
   return fest::cli::run(app, argc, argv, [&] {
-    ::omerr().disable();  // add_face reports rejected (non-manifold) faces there; they are kept aside
-    return run(opt);
+    if (!to.empty()) parse_output_format(to, opt);
+    opt.stitch = !no_stitch;
+    opt.verify = !no_verify;
+    return decode_command(opt);
   });
 }

@@ -1,23 +1,21 @@
-#pragma once
-// Between fest's OpenMesh meshes and the coder's triangle soups, for ebcode and ebdecode:
-// polygons are fan-triangulated from their first vertex, and the faces a reader could not
-// put into OpenMesh (non-manifold ones) travel in the mesh properties that formats/mesh
-// provides for them, so nothing of the input is lost on the way in or out.
+#include "formats/mesh/triangle_soup.hpp"
 
-#include <string>
+#include <utility>
 
-#include "core/mesh.hpp"
-#include "edgebreaker/ebm.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
-namespace fest::tools {
+namespace fest::formats {
 
-inline void append_fan(std::vector<edgebreaker::Triangle>& out, const std::vector<int>& polygon) {
+namespace {
+
+void append_fan(std::vector<std::array<int, 3>>& out, const std::vector<int>& polygon) {
   for (std::size_t k = 1; k + 1 < polygon.size(); ++k) out.push_back({polygon[0], polygon[k], polygon[k + 1]});
 }
 
-inline edgebreaker::MeshSoup to_soup(const Mesh& mesh) {
-  edgebreaker::MeshSoup soup;
+}  // namespace
+
+TriangleSoup to_triangle_soup(const Mesh& mesh) {
+  TriangleSoup soup;
   soup.positions.reserve(mesh.n_vertices());
   for (auto v : mesh.vertices()) {
     const auto& p = mesh.point(v);
@@ -29,7 +27,7 @@ inline edgebreaker::MeshSoup to_soup(const Mesh& mesh) {
     for (auto v : mesh.fv_range(f)) polygon.push_back(v.idx());
     append_fan(soup.triangles, polygon);
   }
-  for (const auto& face : formats::skipped_face_list(mesh)) append_fan(soup.triangles, face);
+  for (const auto& face : skipped_face_list(mesh)) append_fan(soup.triangles, face);
   for (auto v : mesh.vertices()) {
     if (mesh.has_vertex_normals()) soup.normals.push_back({mesh.normal(v)[0], mesh.normal(v)[1], mesh.normal(v)[2]});
     if (mesh.has_vertex_colors()) soup.colors.push_back({mesh.color(v)[0], mesh.color(v)[1], mesh.color(v)[2]});
@@ -39,9 +37,7 @@ inline edgebreaker::MeshSoup to_soup(const Mesh& mesh) {
   return soup;
 }
 
-// Faces OpenMesh rejects go into the extra-faces property, which the PLY/OFF/OBJ writers
-// append, so non-manifold output is written exactly.
-inline Mesh to_mesh(const edgebreaker::MeshSoup& soup) {
+Mesh to_mesh(const TriangleSoup& soup) {
   Mesh mesh;
   for (const auto& p : soup.positions) mesh.add_vertex(Mesh::Point(p[0], p[1], p[2]));
   if (!soup.normals.empty()) mesh.request_vertex_normals();
@@ -60,8 +56,8 @@ inline Mesh to_mesh(const edgebreaker::MeshSoup& soup) {
     for (int k = 0; k < 3; ++k) handles[static_cast<std::size_t>(k)] = Mesh::VertexHandle(t[static_cast<std::size_t>(k)]);
     if (!mesh.add_face(handles).is_valid()) extra.push_back({t[0], t[1], t[2]});
   }
-  if (!extra.empty()) formats::set_extra_faces(mesh, std::move(extra));
+  if (!extra.empty()) set_extra_faces(mesh, std::move(extra));
   return mesh;
 }
 
-}  // namespace fest::tools
+}  // namespace fest::formats
