@@ -47,7 +47,6 @@ KNOWN_VIOLATIONS=(
   "formats/facemodel/landmarks_io.hpp: formats-include: lib/facefit/synth.hpp"
   "formats/facemodel/mmb.hpp: formats-include: lib/facefit/model.hpp"
   # A tool including another tool's files.
-  "tools/ebdecode/main.cpp: tool-include: tools/ebcode/mesh_soup.hpp"
   # A test compiling a tool's source instead of linking fest_<tool>_app.
   "tests/unit/CMakeLists.txt: test-compiles-tool: tools/brdffit/gltf_export.cpp"
   # Tools whose command files are not yet the library fest_<tool>_app.
@@ -78,12 +77,6 @@ KNOWN_VIOLATIONS=(
   "lib/capture/plan.cpp: flag-in-lib: --bracket"
   "lib/core/threads.cpp: flag-in-lib: --threads"
   "lib/core/volume.cpp: flag-in-lib: --frame"
-  "lib/edgebreaker/ebm.cpp: flag-in-lib: --box"
-  "lib/edgebreaker/ebm.cpp: flag-in-lib: --conn"
-  "lib/edgebreaker/ebm.cpp: flag-in-lib: --qn"
-  "lib/edgebreaker/ebm.cpp: flag-in-lib: --qp"
-  "lib/edgebreaker/ebm.cpp: flag-in-lib: --qt"
-  "lib/edgebreaker/prepare.cpp: flag-in-lib: --strict"
   "lib/facefit/landmark_set.cpp: flag-in-lib: --skip-unmapped"
   "lib/facefit/model.cpp: flag-in-lib: --components"
   "lib/facefit/model.cpp: flag-in-lib: --fix-basis"
