@@ -15,9 +15,9 @@
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "formats/table/table_io.hpp"
+#include "lmfsim/scene_json.hpp"
 #include "lmfsim/simulate.hpp"
 #include "lmfsim/solver.hpp"
-#include "scene_json.hpp"
 #include "trajectory_csv.hpp"
 
 namespace lmfsim_tool {
