@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/resources.hpp"
+#include "core/threads.hpp"
 #include "fluidsim/checks.hpp"
 #include "fluidsim/simulator.hpp"
 
@@ -23,9 +24,12 @@ using nlohmann::json;
 
 int omp_threads() { return omp_get_max_threads(); }
 
+void set_threads(int threads) { omp_set_num_threads(fest::resolve_threads(threads)); }
+
 double peak_rss_mb() { return peak_rss_kb() / 1024.0; }
 
 int check_command(const CheckOptions& o) {
+  set_threads(o.threads);
   fluidsim::CheckOptions co;
   co.n = o.n;
   co.dt = o.dt;

@@ -24,6 +24,7 @@ struct RunOptions {
   std::string report, stats;
   bool progress = false;
   bool quiet = false;
+  int threads = 0;       // 0: all cores
 };
 
 struct RenderOptions {
@@ -52,6 +53,7 @@ struct CheckOptions {
   double dt = 0.0;
   double nu = 0.01;
   std::string report;
+  int threads = 0;       // 0: all cores
 };
 
 struct BenchOptions {
@@ -68,7 +70,7 @@ int interp_command(const InterpOptions& o);
 int check_command(const CheckOptions& o);
 int bench_command(const BenchOptions& o);
 
-// Sets the OpenMP thread count (after --threads validation).
+// Sets the OpenMP thread count (--threads of run and check; 0: all cores).
 void set_threads(int threads);
 
 }  // namespace fest::fluidsim_tool

@@ -1,15 +1,8 @@
 // fluidsim: stable fluids with the chapter's 8-way parallel projection and frame
 // interpolation (specs/fluidsim.md). Flags only; the subcommands live in *_command.cpp.
 
-#include <omp.h>
-
 #include "cli/cli.hpp"
 #include "commands.hpp"
-#include "core/threads.hpp"
-
-namespace fest::fluidsim_tool {
-void set_threads(int threads) { omp_set_num_threads(fest::resolve_threads(threads)); }
-}  // namespace fest::fluidsim_tool
 
 int main(int argc, char** argv) {
   using namespace fest::fluidsim_tool;
@@ -17,7 +10,6 @@ int main(int argc, char** argv) {
   fest::cli::Common common;
   fest::cli::add_common(app, common);
   app.require_subcommand(1);
-  int threads = 0;
 
   RunOptions run;
   CLI::App* r = app.add_subcommand("run", "Simulate a scene; frames to files or a frame stream on standard output");
@@ -41,7 +33,7 @@ int main(int argc, char** argv) {
   r->add_option("--report", run.report, "Write totals and figures as JSON");
   r->add_option("--stats", run.stats, "Write one JSON line of figures per frame");
   r->add_flag("--progress", run.progress, "Show a progress bar");
-  fest::cli::add_threads(*r, threads);
+  fest::cli::add_threads(*r, run.threads);
 
   RenderOptions ren;
   CLI::App* d = app.add_subcommand("render", "Turn a field file or a frame stream into PNG (or PFM) images");
@@ -73,7 +65,7 @@ int main(int argc, char** argv) {
   c->add_option("--dt", ck.dt, "Step of the large-step run")->check(CLI::Range(1e-6, 10.0));
   c->add_option("--nu", ck.nu, "Viscosity of the decay cases")->check(CLI::Range(0.0, 10.0));
   c->add_option("--report", ck.report, "Also write the report to this file");
-  fest::cli::add_threads(*c, threads);
+  fest::cli::add_threads(*c, ck.threads);
 
   BenchOptions bo;
   CLI::App* b = app.add_subcommand("bench", "Time the stages per (size, threads, solver); one JSON line each");
@@ -85,16 +77,12 @@ int main(int argc, char** argv) {
 
   return fest::cli::run(app, argc, argv, [&] {
     if (*r) {
-      set_threads(threads);
       run.quiet = common.quiet;
       return run_command(run);
     }
     if (*d) return render_command(ren);
     if (*i) return interp_command(ip);
-    if (*c) {
-      set_threads(threads);
-      return check_command(ck);
-    }
+    if (*c) return check_command(ck);
     return bench_command(bo);
   });
 }

@@ -194,6 +194,7 @@ void write_frame(const Output& out, const Frame& f, const std::string& main_fiel
 }  // namespace
 
 int run_command(const RunOptions& o) {
+  set_threads(o.threads);
   // Flags first (usage errors), then the scene (bad input).
   if (o.order != "paper" && o.order != "stam03") throw usage_error("--order must be paper or stam03");
   if (o.grid == "mac") throw usage_error("--grid mac is unsupported in this build (use collocated)");

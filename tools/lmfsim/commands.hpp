@@ -28,9 +28,10 @@ struct RunOptions {
 // Reads the scene JSON (bytes) into a Scene, meshes from files relative to the cwd.
 fest::lmfsim::Scene load_scene(const std::string& bytes);
 
-int cmd_run(const std::string& scene_bytes, const RunOptions& opt);
-int cmd_check(const std::string& scene_bytes, const SimOverrides& sim);
-int cmd_assemble(const std::string& scene_bytes);
+// run, check, assemble and reduced read the scene JSON from standard input.
+int cmd_run(const RunOptions& opt);
+int cmd_check(const SimOverrides& sim);
+int cmd_assemble();
 
 struct GenOptions {
   std::string kind;
@@ -48,7 +49,7 @@ struct ReducedOptions {
   bool chain = false, fourbar = false;
   SimOverrides sim;
 };
-int cmd_reduced(const std::string& scene_bytes, const ReducedOptions& opt);
+int cmd_reduced(const ReducedOptions& opt);
 
 struct ExportOptions {
   std::string scene, vtk, obj, ply, trajectory = "-";

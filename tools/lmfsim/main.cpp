@@ -5,7 +5,6 @@
 
 #include "cli/cli.hpp"
 #include "commands.hpp"
-#include "core/file_io.hpp"
 
 namespace {
 
@@ -99,11 +98,11 @@ int main(int argc, char** argv) {
   opt_value(df_cmd, "--at", df.at, "Also report the difference at the frame nearest to this time");
 
   return fest::cli::run(app, argc, argv, [&]() -> int {
-    if (run_cmd->parsed()) return cmd_run(fest::read_input("-"), run);
-    if (check_cmd->parsed()) return cmd_check(fest::read_input("-"), check_sim);
-    if (assemble_cmd->parsed()) return cmd_assemble(fest::read_input("-"));
+    if (run_cmd->parsed()) return cmd_run(run);
+    if (check_cmd->parsed()) return cmd_check(check_sim);
+    if (assemble_cmd->parsed()) return cmd_assemble();
     if (gen_cmd->parsed()) return cmd_gen(gen);
-    if (red_cmd->parsed()) return cmd_reduced(fest::read_input("-"), red);
+    if (red_cmd->parsed()) return cmd_reduced(red);
     if (ex_cmd->parsed()) return cmd_export(ex);
     if (df_cmd->parsed()) return cmd_diff(df);
     return 2;

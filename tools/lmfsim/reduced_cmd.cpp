@@ -224,7 +224,9 @@ int reduced_fourbar(const Scene& sc, const SimOverrides& over) {
 
 }  // namespace
 
-int cmd_reduced(const std::string& scene_bytes, const ReducedOptions& opt) {
+int cmd_reduced(const ReducedOptions& opt) {
+  // The scene JSON comes on standard input.
+  const std::string scene_bytes = fest::read_input("-");
   if (opt.chain == opt.fourbar) throw fest::usage_error("reduced: give exactly one of --chain and --fourbar");
   const Scene sc = load_scene(scene_bytes);
   for (const Constraint& c : sc.constraints)

@@ -15,9 +15,9 @@
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "formats/table/table_io.hpp"
+#include "lmfsim/scene_json.hpp"
 #include "lmfsim/simulate.hpp"
 #include "lmfsim/solver.hpp"
-#include "scene_json.hpp"
 #include "trajectory_csv.hpp"
 
 namespace lmfsim_tool {
@@ -104,7 +104,9 @@ TrajectoryRow body_row(const System& sys, int b, long frame, double t, const Eig
 
 }  // namespace
 
-int cmd_run(const std::string& scene_bytes, const RunOptions& opt) {
+int cmd_run(const RunOptions& opt) {
+  // The scene JSON comes on standard input.
+  const std::string scene_bytes = fest::read_input("-");
   Scene scene = load_scene(scene_bytes);
   opt.sim.apply(scene.sim);
   System sys(std::move(scene));
@@ -227,7 +229,9 @@ int cmd_run(const std::string& scene_bytes, const RunOptions& opt) {
   return 0;
 }
 
-int cmd_check(const std::string& scene_bytes, const SimOverrides& over) {
+int cmd_check(const SimOverrides& over) {
+  // The scene JSON comes on standard input.
+  const std::string scene_bytes = fest::read_input("-");
   Scene scene = load_scene(scene_bytes);
   over.apply(scene.sim);
   System sys(std::move(scene));
@@ -300,7 +304,9 @@ int cmd_check(const std::string& scene_bytes, const SimOverrides& over) {
   return 0;
 }
 
-int cmd_assemble(const std::string& scene_bytes) {
+int cmd_assemble() {
+  // The scene JSON comes on standard input.
+  const std::string scene_bytes = fest::read_input("-");
   nlohmann::json doc = fest::formats::read_json(scene_bytes);
   Scene scene = load_scene(scene_bytes);
   scene.sim.stab = Stabilization::project;

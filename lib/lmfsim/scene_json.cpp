@@ -1,4 +1,4 @@
-#include "scene_json.hpp"
+#include "lmfsim/scene_json.hpp"
 
 #include <cmath>
 #include <functional>
@@ -6,9 +6,8 @@
 
 #include "core/error.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim {
 
-using namespace fest::lmfsim;
 using fest::bad_input;
 using nlohmann::json;
 
@@ -402,4 +401,4 @@ void write_state(json& doc, const Scene& scene, const std::vector<Vec3>& pos, co
   }
 }
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim
