@@ -13,7 +13,7 @@
 #include "sampling/kernel_analysis.hpp"
 #include "sampling/mip_kernel.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -142,4 +142,4 @@ int run_mipkernel(const MipKernelArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -14,7 +14,7 @@
 #include "sampling/kernel_params.hpp"
 #include "sampling/srgb.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -97,4 +97,4 @@ int run_metrics(const MetricsArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

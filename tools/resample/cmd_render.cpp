@@ -12,7 +12,7 @@
 #include "sampling/resize.hpp"
 #include "sizes.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -113,4 +113,4 @@ int run_render(const RenderArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -13,7 +13,7 @@
 #include "sizes.hpp"
 #include "streamed_input.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -146,4 +146,4 @@ int run_mip(const MipArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -10,7 +10,7 @@
 #include "sampling/texture.hpp"
 #include "sizes.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -87,4 +87,4 @@ int run_texture(const TextureArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

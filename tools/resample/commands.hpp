@@ -1,12 +1,12 @@
 #pragma once
-// The subcommands of resample (spec §4): option structs filled by main.cpp's CLI11
+// The subcommands of resample (docs/resample.md): option structs filled by main.cpp's CLI11
 // parser, and one function per subcommand that wires formats -> lib/sampling -> output.
 
 #include <map>
 #include <string>
 #include <vector>
 
-namespace resample_tool {
+namespace fest::resample {
 
 struct ImageOutput {
   std::string output = "-";
@@ -127,4 +127,4 @@ int run_chain1d(const ChainArgs& a);
 int run_mipkernel(const MipKernelArgs& a);
 int run_metrics(const MetricsArgs& a);
 
-}  // namespace resample_tool
+}  // namespace fest::resample

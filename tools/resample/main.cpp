@@ -1,5 +1,5 @@
 // resample: prefilter -> sample -> reconstruct, and the numbers that say how well
-// (specs/resample.md; Schilling, "Some Notes on Sampling in Computer Graphics").
+// (docs/resample.md; Schilling, "Some Notes on Sampling in Computer Graphics").
 //
 // Wiring only: this file declares the subcommands and their flags; cmd_*.cpp connect
 // formats/image to lib/sampling.
@@ -12,7 +12,7 @@
 
 namespace {
 
-using namespace resample_tool;
+using namespace fest::resample;
 
 void add_output(CLI::App* sub, ImageOutput& o) {
   sub->add_option("-o,--output", o.output, "Output file, or - for standard output")->default_val("-");
