@@ -33,7 +33,7 @@ TEST(ResampleApp, ConstantImageStaysConstant) {
     a.input = (dir / "in.pgm").string();
     a.out.output = (dir / "out.pgm").string();
     a.width = 5;  // height keeps the aspect ratio: round(9 * 5 / 12) = 4
-    a.filter = filter;
+    a.filter = fest::sampling::make_kernel(filter);
     a.threads = 1;
     ASSERT_EQ(fest::resample::run_resize(a), 0) << filter;
     const std::string out = slurp(dir / "out.pgm");

@@ -50,7 +50,7 @@ Curve step_curve(const Kernel& k) {
 }  // namespace
 
 int run_kernel(const KernelArgs& a) {
-  const Kernel k = make_kernel(a.filter);
+  const Kernel& k = a.filter;
   if (a.csv) {
     if (a.response) return print(csv_of(response_curve(k), "f", "K")), 0;
     if (a.step) return print(csv_of(step_curve(k), "x", "S")), 0;
@@ -111,7 +111,7 @@ int run_chain1d(const ChainArgs& a) {
 }
 
 int run_mipkernel(const MipKernelArgs& a) {
-  const MipBuild build = parse_mip_build(a.build);
+  const MipBuild build = a.build;
   if (a.pos.empty()) throw usage_error("mipkernel needs --pos");
   if (a.dims == 1) {
     std::vector<std::vector<double>> w;

@@ -37,7 +37,6 @@ nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(
 }  // namespace
 
 int run_metrics(const MetricsArgs& a) {
-  if (a.domain != "linear" && a.domain != "encoded") throw usage_error("--domain: '{}' is not linear or encoded", a.domain);
   if (a.ref.empty() && a.zoneplate.empty() && !a.spectrum && a.beat.empty())
     throw usage_error("metrics needs --ref, --zoneplate, --spectrum or --beat");
   if (!a.beat.empty() && (a.beat.size() != 2 || !std::isfinite(a.beat[0]) || !std::isfinite(a.beat[1])))
@@ -46,7 +45,7 @@ int run_metrics(const MetricsArgs& a) {
   std::map<std::string, double> zp;
   if (!a.zoneplate.empty())
     zp = parse_kernel_params("zoneplate", a.zoneplate == "-" ? "" : a.zoneplate, {{"numax", 1}, {"width", 0}, {"height", 0}});
-  const bool linear = a.domain == "linear";
+  const bool linear = a.domain == MetricsDomain::linear;
 
   const LoadedImage test = load_image(a.input);
   const FloatImage t = values(test.image, linear);

@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "sampling/kernel.hpp"
+#include "sampling/mip_kernel.hpp"
+#include "sampling/resize.hpp"
+
 namespace fest::resample {
 
 struct ImageOutput {
@@ -14,18 +18,26 @@ struct ImageOutput {
   std::string depth;   // 8 | 16 | f16 | f32
 };
 
+// --colorspace of resize: what the stored numbers are (automatic: as the file says), or
+// codes: filter the stored numbers themselves, not linear light.
+enum class ResizeColor { automatic, srgb, linear, codes };
+// --alpha of resize: premultiply before filtering, filter straight, or no alpha handling.
+enum class AlphaMode { premul, straight, none };
+// --domain of metrics: compare linear-light values or the encoded numbers.
+enum class MetricsDomain { linear, encoded };
+
 struct ResizeArgs {
   std::string input = "-";
   ImageOutput out;
   std::string size;                 // WxH
   int width = 0, height = 0;        // --width / --height (the other keeps the aspect)
   std::vector<double> scale;        // S or Sx,Sy
-  std::string filter = "mitchell";
+  sampling::Kernel filter = sampling::make_kernel("mitchell");
   std::vector<double> shift;        // dx,dy in input pixels
-  std::string edge = "clamp";
-  std::string colorspace = "auto";  // auto | srgb | linear | codes
-  std::string alpha = "premul";     // premul | straight | none
-  std::string clamp = "auto";       // none | range | local (auto: range for integer output)
+  sampling::EdgeMode edge = sampling::EdgeMode::clamp;
+  ResizeColor colorspace = ResizeColor::automatic;
+  AlphaMode alpha = AlphaMode::premul;
+  sampling::ClampMode clamp = sampling::ClampMode::automatic;  // automatic: range for integer output
   bool hicomp = false, dither = false;
   unsigned long long seed = 1;
   int threads = 0;
@@ -64,7 +76,7 @@ struct RenderArgs {
 };
 
 struct KernelArgs {
-  std::string filter;
+  sampling::Kernel filter;
   bool response = false, step = false, csv = false;
   std::string output = "-";
 };
@@ -79,7 +91,7 @@ struct ChainArgs {
 struct MipKernelArgs {
   double level = 0;
   std::vector<double> pos;
-  std::string build = "box";
+  sampling::MipBuild build = sampling::MipBuild::box;
   int dims = 1;
 };
 
@@ -89,7 +101,7 @@ struct MetricsArgs {
   std::string zoneplate;  // numax=1[,width=W,height=H]
   std::vector<double> alias_band{0.6, 1.0}, pass_band{0.0, 0.2};
   std::string mask;
-  std::string domain = "linear";
+  MetricsDomain domain = MetricsDomain::linear;
   bool spectrum = false;
   std::vector<double> beat;  // f1,f2: report the power at |f1 − f2|
 };
@@ -118,6 +130,14 @@ struct NormalMipArgs {
 };
 
 int run_normalmip(const NormalMipArgs& a);
+
+// The spellings of the enumerated flags (main.cpp turns flags into the types above with
+// these); each throws a usage error naming the flag and the choices.
+sampling::EdgeMode parse_edge(const std::string& s);
+sampling::ClampMode parse_clamp(const std::string& s);
+ResizeColor parse_resize_color(const std::string& s);
+AlphaMode parse_alpha(const std::string& s);
+MetricsDomain parse_metrics_domain(const std::string& s);
 int run_resize(const ResizeArgs& a);
 int run_display(const DisplayArgs& a);
 int run_mip(const MipArgs& a);

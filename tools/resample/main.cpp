@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   ResizeArgs rz;
+  std::string rz_filter = "mitchell", rz_edge = "clamp", rz_colorspace = "auto", rz_alpha = "premul", rz_clamp = "auto";
   auto* resize = app.add_subcommand("resize", "Resize an image (separable, linear light, premultiplied alpha)");
   resize->add_option("input", rz.input, "Input image, or - for standard input")->default_val("-");
   add_output(resize, rz.out);
@@ -38,12 +39,12 @@ int main(int argc, char** argv) {
   resize->add_option("--width", rz.width, "Target width (height keeps the aspect ratio)");
   resize->add_option("--height", rz.height, "Target height (width keeps the aspect ratio)");
   resize->add_option("--scale", rz.scale, "Scale factor S or Sx,Sy")->delimiter(',')->allow_extra_args(false);
-  resize->add_option("--filter", rz.filter, "Kernel NAME[:k=v,...] (see `resample kernel`)")->default_val("mitchell");
+  resize->add_option("--filter", rz_filter, "Kernel NAME[:k=v,...] (see `resample kernel`)")->default_val("mitchell");
   resize->add_option("--shift", rz.shift, "Sub-pixel shift dx,dy in input pixels")->delimiter(',')->allow_extra_args(false);
-  resize->add_option("--edge", rz.edge, "Edges: clamp, reflect, wrap, zero")->default_val("clamp");
-  resize->add_option("--colorspace", rz.colorspace, "auto, srgb, linear, codes (filter the stored numbers)")->default_val("auto");
-  resize->add_option("--alpha", rz.alpha, "premul, straight, none")->default_val("premul");
-  resize->add_option("--clamp", rz.clamp, "Anti-ringing: none, range, local (default: range for integer output)")->default_val("auto");
+  resize->add_option("--edge", rz_edge, "Edges: clamp, reflect, wrap, zero")->default_val("clamp");
+  resize->add_option("--colorspace", rz_colorspace, "auto, srgb, linear, codes (filter the stored numbers)")->default_val("auto");
+  resize->add_option("--alpha", rz_alpha, "premul, straight, none")->default_val("premul");
+  resize->add_option("--clamp", rz_clamp, "Anti-ringing: none, range, local (default: range for integer output)")->default_val("auto");
   resize->add_flag("--hicomp", rz.hicomp, "Highlight compression for HDR input (x > 1 filtered as 1 + ln x)");
   resize->add_flag("--dither", rz.dither, "Triangular ±½ LSB dither before rounding");
   resize->add_option("--seed", rz.seed, "Dither seed")->default_val(1);
@@ -109,8 +110,9 @@ int main(int argc, char** argv) {
   fest::cli::add_threads(*normalmip, nm.threads);
 
   KernelArgs kn;
+  std::string kn_filter;  // required
   auto* kernel = app.add_subcommand("kernel", "Frequency and step response of a kernel, as JSON (or CSV)");
-  kernel->add_option("--filter", kn.filter, "Kernel NAME[:k=v,...]")->required();
+  kernel->add_option("--filter", kn_filter, "Kernel NAME[:k=v,...]")->required();
   kernel->add_flag("--response", kn.response, "Include K(f) for f in [0, 2] (CSV: the f,K table)");
   kernel->add_flag("--step", kn.step, "Include the step response (CSV: the x,S table)");
   kernel->add_flag("--csv", kn.csv, "Print a CSV table instead of JSON (x,k by default)");
@@ -124,13 +126,15 @@ int main(int argc, char** argv) {
   chain->add_option("--terms", ch.terms, "Alias terms K (k = -K..K)")->default_val(2000);
 
   MipKernelArgs mk;
+  std::string mk_build = "box";
   auto* mipkernel = app.add_subcommand("mipkernel", "The level-0 weights of one mip-map lookup (Fig. 10.12/10.13), as CSV");
   mipkernel->add_option("--level", mk.level, "Level L (fractional: trilinear blend)")->required();
   mipkernel->add_option("--pos", mk.pos, "Positions x in level-0 texels (--dims 2: x,y)")->delimiter(',')->allow_extra_args(false)->required();
-  mipkernel->add_option("--build", mk.build, "Pyramid build: box, gaussian")->default_val("box");
+  mipkernel->add_option("--build", mk_build, "Pyramid build: box, gaussian")->default_val("box");
   mipkernel->add_option("--dims", mk.dims, "1 or 2")->default_val(1);
 
   MetricsArgs mt;
+  std::string mt_domain = "linear";
   auto* metrics = app.add_subcommand("metrics", "RMSE/PSNR against a reference and zone-plate aliasing, as JSON");
   metrics->add_option("input", mt.input, "Test image, or - for standard input")->default_val("-");
   metrics->add_option("--ref", mt.ref, "Reference image");
@@ -138,13 +142,21 @@ int main(int argc, char** argv) {
   metrics->add_option("--alias-band", mt.alias_band, "Alias band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--pass-band", mt.pass_band, "Pass band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--mask", mt.mask, "One-channel image: compare where non-zero");
-  metrics->add_option("--domain", mt.domain, "linear or encoded")->default_val("linear");
+  metrics->add_option("--domain", mt_domain, "linear or encoded")->default_val("linear");
   metrics->add_flag("--spectrum", mt.spectrum, "Add the horizontal power spectrum (f, power)");
   metrics->add_option("--beat", mt.beat, "f1,f2 in cycles per pixel: add the power at |f1 - f2| (the beat of §10.4.4)")
       ->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {
-    if (*resize) return run_resize(rz);
+    if (*resize) {
+      // In this order, all before the input is read: the first bad flag is the one named.
+      rz.filter = fest::sampling::make_kernel(rz_filter);
+      rz.edge = parse_edge(rz_edge);
+      rz.clamp = parse_clamp(rz_clamp);
+      rz.colorspace = parse_resize_color(rz_colorspace);
+      rz.alpha = parse_alpha(rz_alpha);
+      return run_resize(rz);
+    }
     if (*display) return run_display(dp);
     if (*mip) {
       if (mip_action != "build") throw fest::usage_error("mip: unknown action '{}' (build)", mip_action);
@@ -153,10 +165,17 @@ int main(int argc, char** argv) {
     if (*render) return run_render(rd);
     if (*normalmip) return run_normalmip(nm);
     if (*texture) return run_texture(tx);
-    if (*kernel) return run_kernel(kn);
+    if (*kernel) {
+      kn.filter = fest::sampling::make_kernel(kn_filter);
+      return run_kernel(kn);
+    }
     if (*chain) return run_chain1d(ch);
-    if (*mipkernel) return run_mipkernel(mk);
+    if (*mipkernel) {
+      mk.build = fest::sampling::parse_mip_build(mk_build);
+      return run_mipkernel(mk);
+    }
     if (*metrics) {
+      mt.domain = parse_metrics_domain(mt_domain);
       if (metrics->count("--zoneplate") > 0 && mt.zoneplate.empty()) mt.zoneplate = "-";
       return run_metrics(mt);
     }
