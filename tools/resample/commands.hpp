@@ -9,6 +9,7 @@
 #include "sampling/kernel.hpp"
 #include "sampling/mip_kernel.hpp"
 #include "sampling/resize.hpp"
+#include "sampling/sample_patterns.hpp"
 
 namespace fest::resample {
 
@@ -23,6 +24,8 @@ struct ImageOutput {
 enum class ResizeColor { automatic, srgb, linear, codes };
 // --alpha of resize: premultiply before filtering, filter straight, or no alpha handling.
 enum class AlphaMode { premul, straight, none };
+// --colorspace of render's integer output: sRGB codes, or the plain linear values.
+enum class RenderColor { srgb, linear };
 // --domain of metrics: compare linear-light values or the encoded numbers.
 enum class MetricsDomain { linear, encoded };
 
@@ -63,15 +66,15 @@ struct MipArgs {
 struct RenderArgs {
   ImageOutput out;
   std::string scene = "zoneplate";
-  std::vector<std::string> params;  // key=value
-  std::string size = "256x256";
+  std::map<std::string, double> params;  // scene parameters (--param key=value)
+  int width = 256, height = 256;
   int spp = 16;
-  std::string pattern = "jitter";
+  sampling::Pattern pattern = sampling::Pattern::jitter;  // not used with ground_truth
   std::string pixel_filter = "box";
   unsigned long long seed = 1;
   bool ground_truth = false;
   int gt_spp = 4096;
-  std::string colorspace = "srgb";  // integer output: sRGB codes, or linear (plain values)
+  RenderColor colorspace = RenderColor::srgb;
   int threads = 0;
 };
 
@@ -138,6 +141,9 @@ sampling::ClampMode parse_clamp(const std::string& s);
 ResizeColor parse_resize_color(const std::string& s);
 AlphaMode parse_alpha(const std::string& s);
 MetricsDomain parse_metrics_domain(const std::string& s);
+RenderColor parse_render_color(const std::string& s);
+// --param k=v (repeatable; each may also hold k=v,k2=v2) -> the scene's parameters.
+std::map<std::string, double> parse_params(const std::vector<std::string>& given);
 int run_resize(const ResizeArgs& a);
 int run_display(const DisplayArgs& a);
 int run_mip(const MipArgs& a);

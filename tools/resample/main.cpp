@@ -5,10 +5,13 @@
 // formats/image to lib/sampling.
 
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli/cli.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "sizes.hpp"
 
 namespace {
 
@@ -70,17 +73,19 @@ int main(int argc, char** argv) {
   fest::cli::add_threads(*mip, mp.threads);
 
   RenderArgs rd;
+  std::vector<std::string> rd_params;
+  std::string rd_size = "256x256", rd_pattern = "jitter", rd_colorspace = "srgb";
   auto* render = app.add_subcommand("render", "Render an analytic scene with supersampling");
   add_output(render, rd.out);
   render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
-  render->add_option("--param", rd.params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
-  render->add_option("--size", rd.size, "Image size WxH")->default_val("256x256");
+  render->add_option("--param", rd_params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
+  render->add_option("--size", rd_size, "Image size WxH")->default_val("256x256");
   render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
-  render->add_option("--pattern", rd.pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
+  render->add_option("--pattern", rd_pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
   render->add_option("--pixel-filter", rd.pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
-  render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
+  render->add_option("--colorspace", rd_colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
   render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(4096);
   fest::cli::add_threads(*render, rd.threads);
 
@@ -162,7 +167,13 @@ int main(int argc, char** argv) {
       if (mip_action != "build") throw fest::usage_error("mip: unknown action '{}' (build)", mip_action);
       return run_mip(mp);
     }
-    if (*render) return run_render(rd);
+    if (*render) {
+      std::tie(rd.width, rd.height) = parse_size(rd_size, "--size");
+      rd.colorspace = parse_render_color(rd_colorspace);
+      rd.params = parse_params(rd_params);
+      if (!rd.ground_truth) rd.pattern = fest::sampling::parse_pattern(rd_pattern);  // unused with --ground-truth
+      return run_render(rd);
+    }
     if (*normalmip) return run_normalmip(nm);
     if (*texture) return run_texture(tx);
     if (*kernel) {

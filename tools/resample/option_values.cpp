@@ -1,6 +1,9 @@
 // The spellings of resample's enumerated flags -> their types (commands.hpp), each a usage
 // error naming the flag and the choices when it is none of them.
 
+#include <cmath>
+#include <cstdlib>
+
 #include "commands.hpp"
 #include "core/error.hpp"
 
@@ -43,6 +46,34 @@ MetricsDomain parse_metrics_domain(const std::string& s) {
   if (s == "linear") return MetricsDomain::linear;
   if (s == "encoded") return MetricsDomain::encoded;
   throw usage_error("--domain: '{}' is not linear or encoded", s);
+}
+
+RenderColor parse_render_color(const std::string& s) {
+  if (s == "srgb") return RenderColor::srgb;
+  if (s == "linear") return RenderColor::linear;
+  throw usage_error("--colorspace: '{}' is not srgb or linear", s);
+}
+
+// --param k=v (repeatable; each may also hold k=v,k2=v2).
+std::map<std::string, double> parse_params(const std::vector<std::string>& given) {
+  std::map<std::string, double> out;
+  for (const auto& g : given) {
+    std::size_t start = 0;
+    while (start <= g.size()) {
+      const std::size_t comma = g.find(',', start);
+      const std::string item = g.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      const auto eq = item.find('=');
+      if (eq == std::string::npos || eq == 0) throw usage_error("--param: '{}' is not key=value", item);
+      char* end = nullptr;
+      const std::string value = item.substr(eq + 1);
+      const double v = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0' || !std::isfinite(v)) throw usage_error("--param: '{}' is not a number", item);
+      out[item.substr(0, eq)] = v;
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
+  return out;
 }
 
 }  // namespace fest::resample
