@@ -10,6 +10,7 @@
 #include "sampling/mip_kernel.hpp"
 #include "sampling/resize.hpp"
 #include "sampling/sample_patterns.hpp"
+#include "sampling/texture.hpp"
 
 namespace fest::resample {
 
@@ -111,9 +112,9 @@ struct MetricsArgs {
 
 struct TextureArgs {
   ImageOutput out;
-  std::string tex, map, uv;
-  std::string size = "512x384";
-  std::string method = "trilinear";
+  std::string tex, map, uv;  // exactly one of map and uv
+  int width = 512, height = 384;
+  sampling::TextureOptions method;  // its lod_bias and threads come from the fields below
   std::string mip = "box";
   double lod_bias = 0;
   bool ground_truth = false;
@@ -122,6 +123,7 @@ struct TextureArgs {
   int threads = 0;
 };
 
+// Needs tex and exactly one of map and uv (main.cpp checks them first).
 int run_texture(const TextureArgs& a);
 
 struct NormalMipArgs {

@@ -90,13 +90,14 @@ int main(int argc, char** argv) {
   fest::cli::add_threads(*render, rd.threads);
 
   TextureArgs tx;
+  std::string tx_size = "512x384", tx_method = "trilinear";
   auto* texture = app.add_subcommand("texture", "Texture minification through mip-map lookups, EWA or dense ground truth");
   add_output(texture, tx.out);
   texture->add_option("--tex", tx.tex, "Texture image (filtered in linear light, one channel)")->required();
   texture->add_option("--map", tx.map, "plane:h=1,pitch=10,fov=60,period=1 (ground plane seen by a pinhole camera)");
   texture->add_option("--uv", tx.uv, "Per-pixel texture coordinates in [0,1]: a 2-channel image of --size");
-  texture->add_option("--size", tx.size, "Screen size WxH")->default_val("512x384");
-  texture->add_option("--method", tx.method, "nearest, bilinear, trilinear, aniso:N[:gauss], ewa[:maxaniso=16]")->default_val("trilinear");
+  texture->add_option("--size", tx_size, "Screen size WxH")->default_val("512x384");
+  texture->add_option("--method", tx_method, "nearest, bilinear, trilinear, aniso:N[:gauss], ewa[:maxaniso=16]")->default_val("trilinear");
   texture->add_option("--mip", tx.mip, "Pyramid filter: box, gaussian, lanczos3")->default_val("box");
   texture->add_option("--lod-bias", tx.lod_bias, "Added to the mip level")->default_val(0);
   texture->add_flag("--ground-truth", tx.ground_truth, "Dense supersampled reference instead of a lookup");
@@ -175,7 +176,13 @@ int main(int argc, char** argv) {
       return run_render(rd);
     }
     if (*normalmip) return run_normalmip(nm);
-    if (*texture) return run_texture(tx);
+    if (*texture) {
+      if (tx.tex.empty()) throw fest::usage_error("texture needs --tex");
+      if (tx.map.empty() == tx.uv.empty()) throw fest::usage_error("texture needs exactly one of --map and --uv");
+      std::tie(tx.width, tx.height) = parse_size(tx_size, "--size");
+      tx.method = fest::sampling::parse_texture_method(tx_method);
+      return run_texture(tx);
+    }
     if (*kernel) {
       kn.filter = fest::sampling::make_kernel(kn_filter);
       return run_kernel(kn);
