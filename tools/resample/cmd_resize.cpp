@@ -82,8 +82,7 @@ int run_resize(const ResizeArgs& a) {
 }
 
 int run_display(const DisplayArgs& a) {
-  if (a.factor < 1 || a.factor > 64) throw usage_error("--factor {} is out of range [1, 64]", a.factor);
-  const DisplayModel model = make_display_model(a.model);
+  const DisplayModel& model = a.model;
   const Depth depth = parse_depth(a.out.depth);
   LoadedImage in = load_image(a.input);
   const cv::Mat& m = in.image.pixels;
@@ -103,12 +102,11 @@ int run_display(const DisplayArgs& a) {
 }
 
 int run_mip(const MipArgs& a) {
-  if (a.prefix.empty()) throw usage_error("mip build needs -o PREFIX");
-  if (a.filter != "box" && a.filter != "gaussian" && a.filter != "lanczos3")
-    throw usage_error("mip --filter: '{}' is not one of box, gaussian, lanczos3", a.filter);
   if (a.levels < 0 || a.levels > 40) throw usage_error("--levels {} is out of range", a.levels);
   ResizeOptions o;
-  o.kernel = make_kernel(a.filter == "gaussian" ? "gaussian:sigma=0.5" : a.filter);
+  o.kernel = make_kernel(a.filter == MipFilter::gaussian ? "gaussian:sigma=0.5"
+                         : a.filter == MipFilter::lanczos3 ? "lanczos3"
+                                                           : "box");
   o.threads = a.threads;
   const LoadedImage in = load_image(a.input);
   const bool is_float = in.image.pixels.depth() == CV_32F;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sampling/display_model.hpp"
 #include "sampling/kernel.hpp"
 #include "sampling/mip_kernel.hpp"
 #include "sampling/resize.hpp"
@@ -27,6 +28,8 @@ enum class ResizeColor { automatic, srgb, linear, codes };
 enum class AlphaMode { premul, straight, none };
 // --colorspace of render's integer output: sRGB codes, or the plain linear values.
 enum class RenderColor { srgb, linear };
+// --filter of mip: the kernel that halves each level.
+enum class MipFilter { box, gaussian, lanczos3 };
 // --domain of metrics: compare linear-light values or the encoded numbers.
 enum class MetricsDomain { linear, encoded };
 
@@ -50,15 +53,15 @@ struct ResizeArgs {
 struct DisplayArgs {
   std::string input = "-";
   ImageOutput out;
-  std::string model = "lcd";
-  int factor = 8;
+  sampling::DisplayModel model = sampling::make_display_model("lcd");
+  int factor = 8;  // in [1, 64] (main.cpp checks it first)
   int threads = 0;
 };
 
 struct MipArgs {
   std::string input = "-";
-  std::string prefix;
-  std::string filter = "box";
+  std::string prefix;  // not empty (main.cpp checks it first)
+  MipFilter filter = MipFilter::box;
   int levels = 0;  // 0: down to 1x1
   std::string to;
   int threads = 0;
@@ -144,6 +147,7 @@ ResizeColor parse_resize_color(const std::string& s);
 AlphaMode parse_alpha(const std::string& s);
 MetricsDomain parse_metrics_domain(const std::string& s);
 RenderColor parse_render_color(const std::string& s);
+MipFilter parse_mip_filter(const std::string& s);
 // --param k=v (repeatable; each may also hold k=v,k2=v2) -> the scene's parameters.
 std::map<std::string, double> parse_params(const std::vector<std::string>& given);
 int run_resize(const ResizeArgs& a);

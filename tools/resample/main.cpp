@@ -54,20 +54,21 @@ int main(int argc, char** argv) {
   fest::cli::add_threads(*resize, rz.threads);
 
   DisplayArgs dp;
+  std::string dp_model = "lcd";
   auto* display = app.add_subcommand("display", "Magnify by an integer factor with a display's point response");
   display->add_option("input", dp.input, "Input image, or - for standard input")->default_val("-");
   add_output(display, dp.out);
-  display->add_option("--model", dp.model, "lcd, tent, bspline, gaussian:sigma=S, crt[:sx=0.45,sy=0.35]")->default_val("lcd");
+  display->add_option("--model", dp_model, "lcd, tent, bspline, gaussian:sigma=S, crt[:sx=0.45,sy=0.35]")->default_val("lcd");
   display->add_option("--factor", dp.factor, "Magnification (integer)")->default_val(8);
   fest::cli::add_threads(*display, dp.threads);
 
   MipArgs mp;
   auto* mip = app.add_subcommand("mip", "Build a mip-map pyramid: PREFIX_<k>.png (or .exr for float), k = 0 full size");
-  std::string mip_action;
+  std::string mip_action, mp_filter = "box";
   mip->add_option("action", mip_action, "build")->required();
   mip->add_option("input", mp.input, "Input image, or - for standard input")->default_val("-");
   mip->add_option("-o,--output", mp.prefix, "Prefix of the level files")->required();
-  mip->add_option("--filter", mp.filter, "box, gaussian, lanczos3")->default_val("box");
+  mip->add_option("--filter", mp_filter, "box, gaussian, lanczos3")->default_val("box");
   mip->add_option("--levels", mp.levels, "Number of levels (0: down to 1x1)")->default_val(0);
   mip->add_option("--to,--format", mp.to, "Level file format");
   fest::cli::add_threads(*mip, mp.threads);
@@ -163,9 +164,15 @@ int main(int argc, char** argv) {
       rz.alpha = parse_alpha(rz_alpha);
       return run_resize(rz);
     }
-    if (*display) return run_display(dp);
+    if (*display) {
+      if (dp.factor < 1 || dp.factor > 64) throw fest::usage_error("--factor {} is out of range [1, 64]", dp.factor);
+      dp.model = fest::sampling::make_display_model(dp_model);
+      return run_display(dp);
+    }
     if (*mip) {
       if (mip_action != "build") throw fest::usage_error("mip: unknown action '{}' (build)", mip_action);
+      if (mp.prefix.empty()) throw fest::usage_error("mip build needs -o PREFIX");
+      mp.filter = parse_mip_filter(mp_filter);
       return run_mip(mp);
     }
     if (*render) {

@@ -48,6 +48,13 @@ MetricsDomain parse_metrics_domain(const std::string& s) {
   throw usage_error("--domain: '{}' is not linear or encoded", s);
 }
 
+MipFilter parse_mip_filter(const std::string& s) {
+  if (s == "box") return MipFilter::box;
+  if (s == "gaussian") return MipFilter::gaussian;
+  if (s == "lanczos3") return MipFilter::lanczos3;
+  throw usage_error("mip --filter: '{}' is not one of box, gaussian, lanczos3", s);
+}
+
 RenderColor parse_render_color(const std::string& s) {
   if (s == "srgb") return RenderColor::srgb;
   if (s == "linear") return RenderColor::linear;
