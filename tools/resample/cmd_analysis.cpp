@@ -83,7 +83,6 @@ int run_kernel(const KernelArgs& a) {
 }
 
 int run_chain1d(const ChainArgs& a) {
-  if (a.freq.empty() == a.edge.empty()) throw usage_error("chain1d needs exactly one of --freq and --edge");
   if (!a.edge.empty()) {
     if (a.edge.size() > 2) throw usage_error("--edge takes x0 or x0,x1");
     const auto crossings = edge_experiment(a.edge[0], a.edge.size() == 2 ? std::optional<double>(a.edge[1]) : std::nullopt);
@@ -92,8 +91,7 @@ int run_chain1d(const ChainArgs& a) {
     print(j.dump() + "\n");
     return 0;
   }
-  if (a.prefilter.empty() || a.recon.empty()) throw usage_error("chain1d --freq needs --prefilter and --recon");
-  const Kernel p = make_kernel(a.prefilter), r = make_kernel(a.recon);
+  const Kernel &p = a.prefilter, &r = a.recon;
   if (r.nearest) throw usage_error("chain1d: the display filter cannot be point sampling");
   nlohmann::json results = nlohmann::json::array();
   for (double f : a.freq) {

@@ -88,8 +88,9 @@ struct KernelArgs {
   std::string output = "-";
 };
 
+// Exactly one of freq (with prefilter and recon) and edge (main.cpp checks that first).
 struct ChainArgs {
-  std::string prefilter, recon;
+  sampling::Kernel prefilter, recon;
   std::vector<double> freq, edge;
   int terms = 2000;
   bool amplitudes = false;

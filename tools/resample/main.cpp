@@ -125,9 +125,10 @@ int main(int argc, char** argv) {
   kernel->add_flag("--csv", kn.csv, "Print a CSV table instead of JSON (x,k by default)");
 
   ChainArgs ch;
+  std::string ch_prefilter, ch_recon;
   auto* chain = app.add_subcommand("chain1d", "1-D prefilter -> sample -> display analysis (Fig. 10.10, 10.2), as JSON");
-  chain->add_option("--prefilter", ch.prefilter, "Prefilter kernel (ideal, dual:R, ...)");
-  chain->add_option("--recon", ch.recon, "Display reconstruction kernel");
+  chain->add_option("--prefilter", ch_prefilter, "Prefilter kernel (ideal, dual:R, ...)");
+  chain->add_option("--recon", ch_recon, "Display reconstruction kernel");
   chain->add_option("--freq", ch.freq, "Signal frequencies in cycles per sample, comma-separated")->delimiter(',')->allow_extra_args(false);
   chain->add_option("--edge", ch.edge, "Fig. 10.2: step at x0, or bar x0,x1")->delimiter(',')->allow_extra_args(false);
   chain->add_option("--terms", ch.terms, "Alias terms K (k = -K..K)")->default_val(2000);
@@ -194,7 +195,15 @@ int main(int argc, char** argv) {
       kn.filter = fest::sampling::make_kernel(kn_filter);
       return run_kernel(kn);
     }
-    if (*chain) return run_chain1d(ch);
+    if (*chain) {
+      if (ch.freq.empty() == ch.edge.empty()) throw fest::usage_error("chain1d needs exactly one of --freq and --edge");
+      if (!ch.freq.empty()) {  // the edge experiment of Fig. 10.2 has its own kernels
+        if (ch_prefilter.empty() || ch_recon.empty()) throw fest::usage_error("chain1d --freq needs --prefilter and --recon");
+        ch.prefilter = fest::sampling::make_kernel(ch_prefilter);
+        ch.recon = fest::sampling::make_kernel(ch_recon);
+      }
+      return run_chain1d(ch);
+    }
     if (*mipkernel) {
       mk.build = fest::sampling::parse_mip_build(mk_build);
       return run_mipkernel(mk);
