@@ -3,6 +3,7 @@
 // parser, and one function per subcommand that wires formats -> lib/sampling -> output.
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,10 +104,19 @@ struct MipKernelArgs {
   int dims = 1;
 };
 
+// metrics --zoneplate numax=1[,width=W,height=H]: the zone plate the image shows (width
+// and height 0: the image's own).
+struct ZonePlate {
+  double numax = 1;
+  int width = 0, height = 0;
+};
+// --zoneplate's text (empty: every default) -> the zone plate; usage error when malformed.
+ZonePlate parse_zoneplate(const std::string& text);
+
 struct MetricsArgs {
   std::string input = "-";
   std::string ref;
-  std::string zoneplate;  // numax=1[,width=W,height=H]
+  std::optional<ZonePlate> zoneplate;  // the image is a zone plate
   std::vector<double> alias_band{0.6, 1.0}, pass_band{0.0, 0.2};
   std::string mask;
   MetricsDomain domain = MetricsDomain::linear;
@@ -158,6 +168,9 @@ int run_render(const RenderArgs& a);
 int run_kernel(const KernelArgs& a);
 int run_chain1d(const ChainArgs& a);
 int run_mipkernel(const MipKernelArgs& a);
+// Usage errors for a metrics request that asks for nothing or gives malformed pairs
+// (zoneplate: whether --zoneplate was given); run_metrics checks them first too.
+void check_metrics_args(const MetricsArgs& a, bool zoneplate);
 int run_metrics(const MetricsArgs& a);
 
 }  // namespace fest::resample

@@ -142,11 +142,11 @@ int main(int argc, char** argv) {
   mipkernel->add_option("--dims", mk.dims, "1 or 2")->default_val(1);
 
   MetricsArgs mt;
-  std::string mt_domain = "linear";
+  std::string mt_domain = "linear", mt_zoneplate;
   auto* metrics = app.add_subcommand("metrics", "RMSE/PSNR against a reference and zone-plate aliasing, as JSON");
   metrics->add_option("input", mt.input, "Test image, or - for standard input")->default_val("-");
   metrics->add_option("--ref", mt.ref, "Reference image");
-  metrics->add_option("--zoneplate", mt.zoneplate, "The image is a zone plate: numax=1[,width=W,height=H]")->expected(0, 1)->default_str("");
+  metrics->add_option("--zoneplate", mt_zoneplate, "The image is a zone plate: numax=1[,width=W,height=H]")->expected(0, 1)->default_str("");
   metrics->add_option("--alias-band", mt.alias_band, "Alias band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--pass-band", mt.pass_band, "Pass band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--mask", mt.mask, "One-channel image: compare where non-zero");
@@ -210,7 +210,9 @@ int main(int argc, char** argv) {
     }
     if (*metrics) {
       mt.domain = parse_metrics_domain(mt_domain);
-      if (metrics->count("--zoneplate") > 0 && mt.zoneplate.empty()) mt.zoneplate = "-";
+      const bool zoneplate = metrics->count("--zoneplate") > 0 || !mt_zoneplate.empty();
+      check_metrics_args(mt, zoneplate);  // before the zone plate's text is read
+      if (zoneplate) mt.zoneplate = parse_zoneplate(mt_zoneplate == "-" ? "" : mt_zoneplate);
       return run_metrics(mt);
     }
     throw fest::usage_error("no subcommand");

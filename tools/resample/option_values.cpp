@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "sampling/kernel_params.hpp"
 
 namespace fest::resample {
 
@@ -53,6 +54,15 @@ MipFilter parse_mip_filter(const std::string& s) {
   if (s == "gaussian") return MipFilter::gaussian;
   if (s == "lanczos3") return MipFilter::lanczos3;
   throw usage_error("mip --filter: '{}' is not one of box, gaussian, lanczos3", s);
+}
+
+ZonePlate parse_zoneplate(const std::string& text) {
+  const auto zp = parse_kernel_params("zoneplate", text, {{"numax", 1}, {"width", 0}, {"height", 0}});
+  ZonePlate z;
+  z.numax = zp.at("numax");
+  z.width = static_cast<int>(zp.at("width"));
+  z.height = static_cast<int>(zp.at("height"));
+  return z;
 }
 
 RenderColor parse_render_color(const std::string& s) {
