@@ -13,7 +13,7 @@
 #include "sampling/kernel_analysis.hpp"
 #include "sampling/mip_kernel.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -50,7 +50,7 @@ Curve step_curve(const Kernel& k) {
 }  // namespace
 
 int run_kernel(const KernelArgs& a) {
-  const Kernel k = make_kernel(a.filter);
+  const Kernel& k = a.filter;
   if (a.csv) {
     if (a.response) return print(csv_of(response_curve(k), "f", "K")), 0;
     if (a.step) return print(csv_of(step_curve(k), "x", "S")), 0;
@@ -83,7 +83,6 @@ int run_kernel(const KernelArgs& a) {
 }
 
 int run_chain1d(const ChainArgs& a) {
-  if (a.freq.empty() == a.edge.empty()) throw usage_error("chain1d needs exactly one of --freq and --edge");
   if (!a.edge.empty()) {
     if (a.edge.size() > 2) throw usage_error("--edge takes x0 or x0,x1");
     const auto crossings = edge_experiment(a.edge[0], a.edge.size() == 2 ? std::optional<double>(a.edge[1]) : std::nullopt);
@@ -92,8 +91,7 @@ int run_chain1d(const ChainArgs& a) {
     print(j.dump() + "\n");
     return 0;
   }
-  if (a.prefilter.empty() || a.recon.empty()) throw usage_error("chain1d --freq needs --prefilter and --recon");
-  const Kernel p = make_kernel(a.prefilter), r = make_kernel(a.recon);
+  const Kernel &p = a.prefilter, &r = a.recon;
   if (r.nearest) throw usage_error("chain1d: the display filter cannot be point sampling");
   nlohmann::json results = nlohmann::json::array();
   for (double f : a.freq) {
@@ -111,7 +109,7 @@ int run_chain1d(const ChainArgs& a) {
 }
 
 int run_mipkernel(const MipKernelArgs& a) {
-  const MipBuild build = parse_mip_build(a.build);
+  const MipBuild build = a.build;
   if (a.pos.empty()) throw usage_error("mipkernel needs --pos");
   if (a.dims == 1) {
     std::vector<std::vector<double>> w;
@@ -142,4 +140,4 @@ int run_mipkernel(const MipKernelArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

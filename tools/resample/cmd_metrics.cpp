@@ -14,7 +14,7 @@
 #include "sampling/kernel_params.hpp"
 #include "sampling/srgb.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -36,17 +36,17 @@ nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(
 
 }  // namespace
 
-int run_metrics(const MetricsArgs& a) {
-  if (a.domain != "linear" && a.domain != "encoded") throw usage_error("--domain: '{}' is not linear or encoded", a.domain);
-  if (a.ref.empty() && a.zoneplate.empty() && !a.spectrum && a.beat.empty())
+void check_metrics_args(const MetricsArgs& a, bool zoneplate) {
+  if (a.ref.empty() && !zoneplate && !a.spectrum && a.beat.empty())
     throw usage_error("metrics needs --ref, --zoneplate, --spectrum or --beat");
   if (!a.beat.empty() && (a.beat.size() != 2 || !std::isfinite(a.beat[0]) || !std::isfinite(a.beat[1])))
     throw usage_error("--beat takes f1,f2");
   if (a.alias_band.size() != 2 || a.pass_band.size() != 2) throw usage_error("a band is lo,hi");
-  std::map<std::string, double> zp;
-  if (!a.zoneplate.empty())
-    zp = parse_kernel_params("zoneplate", a.zoneplate == "-" ? "" : a.zoneplate, {{"numax", 1}, {"width", 0}, {"height", 0}});
-  const bool linear = a.domain == "linear";
+}
+
+int run_metrics(const MetricsArgs& a) {
+  check_metrics_args(a, a.zoneplate.has_value());
+  const bool linear = a.domain == MetricsDomain::linear;
 
   const LoadedImage test = load_image(a.input);
   const FloatImage t = values(test.image, linear);
@@ -67,12 +67,12 @@ int run_metrics(const MetricsArgs& a) {
     j["maxabs"] = e.maxabs;
     j["n_pixels"] = e.n_pixels;
   }
-  if (!zp.empty()) {
-    const int w = static_cast<int>(zp.at("width")), h = static_cast<int>(zp.at("height"));
+  if (a.zoneplate) {
+    const int w = a.zoneplate->width, h = a.zoneplate->height;
     if ((w > 0 && w != t.width) || (h > 0 && h != t.height))
       throw bad_input("metrics --zoneplate: the image is {}x{}, the scene {}x{}", t.width, t.height, w, h);
     const ZonePlateMeasures z =
-        zoneplate_measures(t, zp.at("numax"), {a.alias_band[0], a.alias_band[1]}, {a.pass_band[0], a.pass_band[1]});
+        zoneplate_measures(t, a.zoneplate->numax, {a.alias_band[0], a.alias_band[1]}, {a.pass_band[0], a.pass_band[1]});
     j["ae"] = z.ae;
     j["pr"] = z.pr;
     j["n_alias"] = z.n_alias;
@@ -97,4 +97,4 @@ int run_metrics(const MetricsArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

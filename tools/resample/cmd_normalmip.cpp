@@ -9,7 +9,7 @@
 #include "sampling/float_image.hpp"
 #include "sampling/slope_pyramid.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -49,4 +49,4 @@ int run_normalmip(const NormalMipArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

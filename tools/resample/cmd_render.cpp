@@ -12,34 +12,12 @@
 #include "sampling/resize.hpp"
 #include "sizes.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
 
 namespace {
-
-// --param k=v (repeatable; each may also hold k=v,k2=v2).
-std::map<std::string, double> parse_params(const std::vector<std::string>& given) {
-  std::map<std::string, double> out;
-  for (const auto& g : given) {
-    std::size_t start = 0;
-    while (start <= g.size()) {
-      const std::size_t comma = g.find(',', start);
-      const std::string item = g.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-      const auto eq = item.find('=');
-      if (eq == std::string::npos || eq == 0) throw usage_error("--param: '{}' is not key=value", item);
-      char* end = nullptr;
-      const std::string value = item.substr(eq + 1);
-      const double v = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0' || !std::isfinite(v)) throw usage_error("--param: '{}' is not a number", item);
-      out[item.substr(0, eq)] = v;
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-  }
-  return out;
-}
 
 // NAME[:params][,radius=R] -> the kernel and the stretch that gives it radius R.
 std::pair<Kernel, double> pixel_filter(const std::string& spec) {
@@ -64,15 +42,13 @@ std::pair<Kernel, double> pixel_filter(const std::string& spec) {
 }  // namespace
 
 int run_render(const RenderArgs& a) {
-  const auto [w, h] = parse_size(a.size, "--size");
-  if (a.colorspace != "srgb" && a.colorspace != "linear")
-    throw usage_error("--colorspace: '{}' is not srgb or linear", a.colorspace);
-  const auto params = parse_params(a.params);
+  const int w = a.width, h = a.height;
+  const auto& params = a.params;
   RenderOptions o;
   o.width = w;
   o.height = h;
   o.samples = a.ground_truth ? a.gt_spp : a.spp;
-  o.pattern = a.ground_truth ? Pattern::jitter : parse_pattern(a.pattern);
+  o.pattern = a.ground_truth ? Pattern::jitter : a.pattern;
   o.seed = a.seed;
   o.threads = a.threads;
   // The point scene takes the radial lowpass/bandpass filters the others do not.
@@ -106,11 +82,11 @@ int run_render(const RenderArgs& a) {
   Encoding enc;
   // Integer outputs are sRGB codes of the linear scene values, or the plain values
   // (--colorspace linear: what other tools filter without decoding).
-  enc.decode_srgb = depth.cv_depth != CV_32F && a.colorspace == "srgb";
+  enc.decode_srgb = depth.cv_depth != CV_32F && a.colorspace == RenderColor::srgb;
   out.pixels = from_working(img, depth.cv_depth, enc);
   if (enc.decode_srgb) out.color_space = ColorSpace::srgb;
   store_image(out, a.out.output, f, depth.half);
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -13,28 +13,12 @@
 #include "sizes.hpp"
 #include "streamed_input.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
 
 namespace {
-
-EdgeMode parse_edge(const std::string& s) {
-  if (s == "clamp") return EdgeMode::clamp;
-  if (s == "reflect") return EdgeMode::reflect;
-  if (s == "wrap") return EdgeMode::wrap;
-  if (s == "zero") return EdgeMode::zero;
-  throw usage_error("--edge: '{}' is not one of clamp, reflect, wrap, zero", s);
-}
-
-ClampMode parse_clamp(const std::string& s) {
-  if (s == "auto") return ClampMode::automatic;
-  if (s == "none") return ClampMode::none;
-  if (s == "range") return ClampMode::range;
-  if (s == "local") return ClampMode::local;
-  throw usage_error("--clamp: '{}' is not one of none, range, local", s);
-}
 
 // The target size from --size / --width / --height / --scale.
 std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
@@ -58,15 +42,11 @@ std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
 
 int run_resize(const ResizeArgs& a) {
   ResizeOptions o;
-  o.kernel = make_kernel(a.filter);  // usage errors before the input is read
-  o.edge = parse_edge(a.edge);
-  o.clamp = parse_clamp(a.clamp);
-  if (a.colorspace != "auto" && a.colorspace != "srgb" && a.colorspace != "linear" && a.colorspace != "codes")
-    throw usage_error("--colorspace: '{}' is not one of auto, srgb, linear, codes", a.colorspace);
-  if (a.alpha != "premul" && a.alpha != "straight" && a.alpha != "none")
-    throw usage_error("--alpha: '{}' is not one of premul, straight, none", a.alpha);
-  o.premultiply_alpha = a.alpha == "premul";
-  o.linear_light = a.colorspace != "codes";
+  o.kernel = a.filter;
+  o.edge = a.edge;
+  o.clamp = a.clamp;
+  o.premultiply_alpha = a.alpha == AlphaMode::premul;
+  o.linear_light = a.colorspace != ResizeColor::codes;
   o.hicomp = a.hicomp;
   o.dither = a.dither;
   o.seed = a.seed;
@@ -80,8 +60,8 @@ int run_resize(const ResizeArgs& a) {
   if (!a.size.empty()) parse_size(a.size, "--size");  // a bad --size is a usage error even before input
 
   auto pick_colour = [&](ColorSpace stored) {
-    if (a.colorspace == "srgb") return ColorSpace::srgb;
-    if (a.colorspace == "linear") return ColorSpace::linear;
+    if (a.colorspace == ResizeColor::srgb) return ColorSpace::srgb;
+    if (a.colorspace == ResizeColor::linear) return ColorSpace::linear;
     return stored;
   };
   auto finish = [&](int in_w, int in_h, int in_depth, auto&& run) {
@@ -102,8 +82,7 @@ int run_resize(const ResizeArgs& a) {
 }
 
 int run_display(const DisplayArgs& a) {
-  if (a.factor < 1 || a.factor > 64) throw usage_error("--factor {} is out of range [1, 64]", a.factor);
-  const DisplayModel model = make_display_model(a.model);
+  const DisplayModel& model = a.model;
   const Depth depth = parse_depth(a.out.depth);
   LoadedImage in = load_image(a.input);
   const cv::Mat& m = in.image.pixels;
@@ -123,12 +102,11 @@ int run_display(const DisplayArgs& a) {
 }
 
 int run_mip(const MipArgs& a) {
-  if (a.prefix.empty()) throw usage_error("mip build needs -o PREFIX");
-  if (a.filter != "box" && a.filter != "gaussian" && a.filter != "lanczos3")
-    throw usage_error("mip --filter: '{}' is not one of box, gaussian, lanczos3", a.filter);
   if (a.levels < 0 || a.levels > 40) throw usage_error("--levels {} is out of range", a.levels);
   ResizeOptions o;
-  o.kernel = make_kernel(a.filter == "gaussian" ? "gaussian:sigma=0.5" : a.filter);
+  o.kernel = make_kernel(a.filter == MipFilter::gaussian ? "gaussian:sigma=0.5"
+                         : a.filter == MipFilter::lanczos3 ? "lanczos3"
+                                                           : "box");
   o.threads = a.threads;
   const LoadedImage in = load_image(a.input);
   const bool is_float = in.image.pixels.depth() == CV_32F;
@@ -146,4 +124,4 @@ int run_mip(const MipArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -10,7 +10,7 @@
 #include "sampling/texture.hpp"
 #include "sizes.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -38,10 +38,8 @@ FloatImage grey_linear(const Image& img) {
 }  // namespace
 
 int run_texture(const TextureArgs& a) {
-  if (a.tex.empty()) throw usage_error("texture needs --tex");
-  if (a.map.empty() == a.uv.empty()) throw usage_error("texture needs exactly one of --map and --uv");
-  const auto [w, h] = parse_size(a.size, "--size");
-  TextureOptions o = parse_texture_method(a.method);
+  const int w = a.width, h = a.height;
+  TextureOptions o = a.method;
   o.lod_bias = a.lod_bias;
   o.threads = a.threads;
   if (!std::isfinite(a.lod_bias)) throw usage_error("--lod-bias must be finite");
@@ -87,4 +85,4 @@ int run_texture(const TextureArgs& a) {
   return 0;
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

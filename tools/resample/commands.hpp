@@ -1,12 +1,20 @@
 #pragma once
-// The subcommands of resample (spec §4): option structs filled by main.cpp's CLI11
+// The subcommands of resample (docs/resample.md): option structs filled by main.cpp's CLI11
 // parser, and one function per subcommand that wires formats -> lib/sampling -> output.
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace resample_tool {
+#include "sampling/display_model.hpp"
+#include "sampling/kernel.hpp"
+#include "sampling/mip_kernel.hpp"
+#include "sampling/resize.hpp"
+#include "sampling/sample_patterns.hpp"
+#include "sampling/texture.hpp"
+
+namespace fest::resample {
 
 struct ImageOutput {
   std::string output = "-";
@@ -14,18 +22,30 @@ struct ImageOutput {
   std::string depth;   // 8 | 16 | f16 | f32
 };
 
+// --colorspace of resize: what the stored numbers are (automatic: as the file says), or
+// codes: filter the stored numbers themselves, not linear light.
+enum class ResizeColor { automatic, srgb, linear, codes };
+// --alpha of resize: premultiply before filtering, filter straight, or no alpha handling.
+enum class AlphaMode { premul, straight, none };
+// --colorspace of render's integer output: sRGB codes, or the plain linear values.
+enum class RenderColor { srgb, linear };
+// --filter of mip: the kernel that halves each level.
+enum class MipFilter { box, gaussian, lanczos3 };
+// --domain of metrics: compare linear-light values or the encoded numbers.
+enum class MetricsDomain { linear, encoded };
+
 struct ResizeArgs {
   std::string input = "-";
   ImageOutput out;
   std::string size;                 // WxH
   int width = 0, height = 0;        // --width / --height (the other keeps the aspect)
   std::vector<double> scale;        // S or Sx,Sy
-  std::string filter = "mitchell";
+  sampling::Kernel filter = sampling::make_kernel("mitchell");
   std::vector<double> shift;        // dx,dy in input pixels
-  std::string edge = "clamp";
-  std::string colorspace = "auto";  // auto | srgb | linear | codes
-  std::string alpha = "premul";     // premul | straight | none
-  std::string clamp = "auto";       // none | range | local (auto: range for integer output)
+  sampling::EdgeMode edge = sampling::EdgeMode::clamp;
+  ResizeColor colorspace = ResizeColor::automatic;
+  AlphaMode alpha = AlphaMode::premul;
+  sampling::ClampMode clamp = sampling::ClampMode::automatic;  // automatic: range for integer output
   bool hicomp = false, dither = false;
   unsigned long long seed = 1;
   int threads = 0;
@@ -34,15 +54,15 @@ struct ResizeArgs {
 struct DisplayArgs {
   std::string input = "-";
   ImageOutput out;
-  std::string model = "lcd";
-  int factor = 8;
+  sampling::DisplayModel model = sampling::make_display_model("lcd");
+  int factor = 8;  // in [1, 64] (main.cpp checks it first)
   int threads = 0;
 };
 
 struct MipArgs {
   std::string input = "-";
-  std::string prefix;
-  std::string filter = "box";
+  std::string prefix;  // not empty (main.cpp checks it first)
+  MipFilter filter = MipFilter::box;
   int levels = 0;  // 0: down to 1x1
   std::string to;
   int threads = 0;
@@ -51,26 +71,27 @@ struct MipArgs {
 struct RenderArgs {
   ImageOutput out;
   std::string scene = "zoneplate";
-  std::vector<std::string> params;  // key=value
-  std::string size = "256x256";
+  std::map<std::string, double> params;  // scene parameters (--param key=value)
+  int width = 256, height = 256;
   int spp = 16;
-  std::string pattern = "jitter";
+  sampling::Pattern pattern = sampling::Pattern::jitter;  // not used with ground_truth
   std::string pixel_filter = "box";
   unsigned long long seed = 1;
   bool ground_truth = false;
   int gt_spp = 4096;
-  std::string colorspace = "srgb";  // integer output: sRGB codes, or linear (plain values)
+  RenderColor colorspace = RenderColor::srgb;
   int threads = 0;
 };
 
 struct KernelArgs {
-  std::string filter;
+  sampling::Kernel filter;
   bool response = false, step = false, csv = false;
   std::string output = "-";
 };
 
+// Exactly one of freq (with prefilter and recon) and edge (main.cpp checks that first).
 struct ChainArgs {
-  std::string prefilter, recon;
+  sampling::Kernel prefilter, recon;
   std::vector<double> freq, edge;
   int terms = 2000;
   bool amplitudes = false;
@@ -79,26 +100,35 @@ struct ChainArgs {
 struct MipKernelArgs {
   double level = 0;
   std::vector<double> pos;
-  std::string build = "box";
+  sampling::MipBuild build = sampling::MipBuild::box;
   int dims = 1;
 };
+
+// metrics --zoneplate numax=1[,width=W,height=H]: the zone plate the image shows (width
+// and height 0: the image's own).
+struct ZonePlate {
+  double numax = 1;
+  int width = 0, height = 0;
+};
+// --zoneplate's text (empty: every default) -> the zone plate; usage error when malformed.
+ZonePlate parse_zoneplate(const std::string& text);
 
 struct MetricsArgs {
   std::string input = "-";
   std::string ref;
-  std::string zoneplate;  // numax=1[,width=W,height=H]
+  std::optional<ZonePlate> zoneplate;  // the image is a zone plate
   std::vector<double> alias_band{0.6, 1.0}, pass_band{0.0, 0.2};
   std::string mask;
-  std::string domain = "linear";
+  MetricsDomain domain = MetricsDomain::linear;
   bool spectrum = false;
   std::vector<double> beat;  // f1,f2: report the power at |f1 − f2|
 };
 
 struct TextureArgs {
   ImageOutput out;
-  std::string tex, map, uv;
-  std::string size = "512x384";
-  std::string method = "trilinear";
+  std::string tex, map, uv;  // exactly one of map and uv
+  int width = 512, height = 384;
+  sampling::TextureOptions method;  // its lod_bias and threads come from the fields below
   std::string mip = "box";
   double lod_bias = 0;
   bool ground_truth = false;
@@ -107,6 +137,7 @@ struct TextureArgs {
   int threads = 0;
 };
 
+// Needs tex and exactly one of map and uv (main.cpp checks them first).
 int run_texture(const TextureArgs& a);
 
 struct NormalMipArgs {
@@ -118,6 +149,18 @@ struct NormalMipArgs {
 };
 
 int run_normalmip(const NormalMipArgs& a);
+
+// The spellings of the enumerated flags (main.cpp turns flags into the types above with
+// these); each throws a usage error naming the flag and the choices.
+sampling::EdgeMode parse_edge(const std::string& s);
+sampling::ClampMode parse_clamp(const std::string& s);
+ResizeColor parse_resize_color(const std::string& s);
+AlphaMode parse_alpha(const std::string& s);
+MetricsDomain parse_metrics_domain(const std::string& s);
+RenderColor parse_render_color(const std::string& s);
+MipFilter parse_mip_filter(const std::string& s);
+// --param k=v (repeatable; each may also hold k=v,k2=v2) -> the scene's parameters.
+std::map<std::string, double> parse_params(const std::vector<std::string>& given);
 int run_resize(const ResizeArgs& a);
 int run_display(const DisplayArgs& a);
 int run_mip(const MipArgs& a);
@@ -125,6 +168,9 @@ int run_render(const RenderArgs& a);
 int run_kernel(const KernelArgs& a);
 int run_chain1d(const ChainArgs& a);
 int run_mipkernel(const MipKernelArgs& a);
+// Usage errors for a metrics request that asks for nothing or gives malformed pairs
+// (zoneplate: whether --zoneplate was given); run_metrics checks them first too.
+void check_metrics_args(const MetricsArgs& a, bool zoneplate);
 int run_metrics(const MetricsArgs& a);
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -5,7 +5,7 @@
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 using namespace fest;
 using namespace fest::formats;
@@ -63,4 +63,4 @@ void store_image(const Image& image, const std::string& path, Format f, bool hal
   store_output(path, bytes, false);
 }
 
-}  // namespace resample_tool
+}  // namespace fest::resample

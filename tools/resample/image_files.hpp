@@ -1,5 +1,5 @@
 #pragma once
-// resample's image input and output, all through formats/image (DESIGN.md): recognised by
+// resample's image input and output, all through formats/image (the project layout): recognised by
 // content, written atomically, the output format from --to, the -o extension, or the
 // input's family.
 
@@ -9,7 +9,7 @@
 #include "core/image.hpp"
 #include "formats/detect.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 struct LoadedImage {
   fest::Image image;
@@ -35,4 +35,4 @@ int default_depth(fest::formats::Format f, int image_depth);
 
 void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half);
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -1,18 +1,21 @@
 // resample: prefilter -> sample -> reconstruct, and the numbers that say how well
-// (specs/resample.md; Schilling, "Some Notes on Sampling in Computer Graphics").
+// (docs/resample.md; Schilling, "Some Notes on Sampling in Computer Graphics").
 //
 // Wiring only: this file declares the subcommands and their flags; cmd_*.cpp connect
 // formats/image to lib/sampling.
 
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli/cli.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "sizes.hpp"
 
 namespace {
 
-using namespace resample_tool;
+using namespace fest::resample;
 
 void add_output(CLI::App* sub, ImageOutput& o) {
   sub->add_option("-o,--output", o.output, "Output file, or - for standard output")->default_val("-");
@@ -31,6 +34,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   ResizeArgs rz;
+  std::string rz_filter = "mitchell", rz_edge = "clamp", rz_colorspace = "auto", rz_alpha = "premul", rz_clamp = "auto";
   auto* resize = app.add_subcommand("resize", "Resize an image (separable, linear light, premultiplied alpha)");
   resize->add_option("input", rz.input, "Input image, or - for standard input")->default_val("-");
   add_output(resize, rz.out);
@@ -38,59 +42,63 @@ int main(int argc, char** argv) {
   resize->add_option("--width", rz.width, "Target width (height keeps the aspect ratio)");
   resize->add_option("--height", rz.height, "Target height (width keeps the aspect ratio)");
   resize->add_option("--scale", rz.scale, "Scale factor S or Sx,Sy")->delimiter(',')->allow_extra_args(false);
-  resize->add_option("--filter", rz.filter, "Kernel NAME[:k=v,...] (see `resample kernel`)")->default_val("mitchell");
+  resize->add_option("--filter", rz_filter, "Kernel NAME[:k=v,...] (see `resample kernel`)")->default_val("mitchell");
   resize->add_option("--shift", rz.shift, "Sub-pixel shift dx,dy in input pixels")->delimiter(',')->allow_extra_args(false);
-  resize->add_option("--edge", rz.edge, "Edges: clamp, reflect, wrap, zero")->default_val("clamp");
-  resize->add_option("--colorspace", rz.colorspace, "auto, srgb, linear, codes (filter the stored numbers)")->default_val("auto");
-  resize->add_option("--alpha", rz.alpha, "premul, straight, none")->default_val("premul");
-  resize->add_option("--clamp", rz.clamp, "Anti-ringing: none, range, local (default: range for integer output)")->default_val("auto");
+  resize->add_option("--edge", rz_edge, "Edges: clamp, reflect, wrap, zero")->default_val("clamp");
+  resize->add_option("--colorspace", rz_colorspace, "auto, srgb, linear, codes (filter the stored numbers)")->default_val("auto");
+  resize->add_option("--alpha", rz_alpha, "premul, straight, none")->default_val("premul");
+  resize->add_option("--clamp", rz_clamp, "Anti-ringing: none, range, local (default: range for integer output)")->default_val("auto");
   resize->add_flag("--hicomp", rz.hicomp, "Highlight compression for HDR input (x > 1 filtered as 1 + ln x)");
   resize->add_flag("--dither", rz.dither, "Triangular ±½ LSB dither before rounding");
   resize->add_option("--seed", rz.seed, "Dither seed")->default_val(1);
   fest::cli::add_threads(*resize, rz.threads);
 
   DisplayArgs dp;
+  std::string dp_model = "lcd";
   auto* display = app.add_subcommand("display", "Magnify by an integer factor with a display's point response");
   display->add_option("input", dp.input, "Input image, or - for standard input")->default_val("-");
   add_output(display, dp.out);
-  display->add_option("--model", dp.model, "lcd, tent, bspline, gaussian:sigma=S, crt[:sx=0.45,sy=0.35]")->default_val("lcd");
+  display->add_option("--model", dp_model, "lcd, tent, bspline, gaussian:sigma=S, crt[:sx=0.45,sy=0.35]")->default_val("lcd");
   display->add_option("--factor", dp.factor, "Magnification (integer)")->default_val(8);
   fest::cli::add_threads(*display, dp.threads);
 
   MipArgs mp;
   auto* mip = app.add_subcommand("mip", "Build a mip-map pyramid: PREFIX_<k>.png (or .exr for float), k = 0 full size");
-  std::string mip_action;
+  std::string mip_action, mp_filter = "box";
   mip->add_option("action", mip_action, "build")->required();
   mip->add_option("input", mp.input, "Input image, or - for standard input")->default_val("-");
   mip->add_option("-o,--output", mp.prefix, "Prefix of the level files")->required();
-  mip->add_option("--filter", mp.filter, "box, gaussian, lanczos3")->default_val("box");
+  mip->add_option("--filter", mp_filter, "box, gaussian, lanczos3")->default_val("box");
   mip->add_option("--levels", mp.levels, "Number of levels (0: down to 1x1)")->default_val(0);
   mip->add_option("--to,--format", mp.to, "Level file format");
   fest::cli::add_threads(*mip, mp.threads);
 
   RenderArgs rd;
+  std::vector<std::string> rd_params;
+  std::string rd_size = "256x256", rd_pattern = "jitter", rd_colorspace = "srgb";
   auto* render = app.add_subcommand("render", "Render an analytic scene with supersampling");
   add_output(render, rd.out);
   render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
-  render->add_option("--param", rd.params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
-  render->add_option("--size", rd.size, "Image size WxH")->default_val("256x256");
+  render->add_option("--param", rd_params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
+  render->add_option("--size", rd_size, "Image size WxH")->default_val("256x256");
   render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
-  render->add_option("--pattern", rd.pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
+  render->add_option("--pattern", rd_pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
   render->add_option("--pixel-filter", rd.pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
-  render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
+  render->add_option("--colorspace", rd_colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
   render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(4096);
   fest::cli::add_threads(*render, rd.threads);
 
   TextureArgs tx;
+  std::string tx_size = "512x384", tx_method = "trilinear";
   auto* texture = app.add_subcommand("texture", "Texture minification through mip-map lookups, EWA or dense ground truth");
   add_output(texture, tx.out);
   texture->add_option("--tex", tx.tex, "Texture image (filtered in linear light, one channel)")->required();
   texture->add_option("--map", tx.map, "plane:h=1,pitch=10,fov=60,period=1 (ground plane seen by a pinhole camera)");
   texture->add_option("--uv", tx.uv, "Per-pixel texture coordinates in [0,1]: a 2-channel image of --size");
-  texture->add_option("--size", tx.size, "Screen size WxH")->default_val("512x384");
-  texture->add_option("--method", tx.method, "nearest, bilinear, trilinear, aniso:N[:gauss], ewa[:maxaniso=16]")->default_val("trilinear");
+  texture->add_option("--size", tx_size, "Screen size WxH")->default_val("512x384");
+  texture->add_option("--method", tx_method, "nearest, bilinear, trilinear, aniso:N[:gauss], ewa[:maxaniso=16]")->default_val("trilinear");
   texture->add_option("--mip", tx.mip, "Pyramid filter: box, gaussian, lanczos3")->default_val("box");
   texture->add_option("--lod-bias", tx.lod_bias, "Added to the mip level")->default_val(0);
   texture->add_flag("--ground-truth", tx.ground_truth, "Dense supersampled reference instead of a lookup");
@@ -109,55 +117,102 @@ int main(int argc, char** argv) {
   fest::cli::add_threads(*normalmip, nm.threads);
 
   KernelArgs kn;
+  std::string kn_filter;  // required
   auto* kernel = app.add_subcommand("kernel", "Frequency and step response of a kernel, as JSON (or CSV)");
-  kernel->add_option("--filter", kn.filter, "Kernel NAME[:k=v,...]")->required();
+  kernel->add_option("--filter", kn_filter, "Kernel NAME[:k=v,...]")->required();
   kernel->add_flag("--response", kn.response, "Include K(f) for f in [0, 2] (CSV: the f,K table)");
   kernel->add_flag("--step", kn.step, "Include the step response (CSV: the x,S table)");
   kernel->add_flag("--csv", kn.csv, "Print a CSV table instead of JSON (x,k by default)");
 
   ChainArgs ch;
+  std::string ch_prefilter, ch_recon;
   auto* chain = app.add_subcommand("chain1d", "1-D prefilter -> sample -> display analysis (Fig. 10.10, 10.2), as JSON");
-  chain->add_option("--prefilter", ch.prefilter, "Prefilter kernel (ideal, dual:R, ...)");
-  chain->add_option("--recon", ch.recon, "Display reconstruction kernel");
+  chain->add_option("--prefilter", ch_prefilter, "Prefilter kernel (ideal, dual:R, ...)");
+  chain->add_option("--recon", ch_recon, "Display reconstruction kernel");
   chain->add_option("--freq", ch.freq, "Signal frequencies in cycles per sample, comma-separated")->delimiter(',')->allow_extra_args(false);
   chain->add_option("--edge", ch.edge, "Fig. 10.2: step at x0, or bar x0,x1")->delimiter(',')->allow_extra_args(false);
   chain->add_option("--terms", ch.terms, "Alias terms K (k = -K..K)")->default_val(2000);
 
   MipKernelArgs mk;
+  std::string mk_build = "box";
   auto* mipkernel = app.add_subcommand("mipkernel", "The level-0 weights of one mip-map lookup (Fig. 10.12/10.13), as CSV");
   mipkernel->add_option("--level", mk.level, "Level L (fractional: trilinear blend)")->required();
   mipkernel->add_option("--pos", mk.pos, "Positions x in level-0 texels (--dims 2: x,y)")->delimiter(',')->allow_extra_args(false)->required();
-  mipkernel->add_option("--build", mk.build, "Pyramid build: box, gaussian")->default_val("box");
+  mipkernel->add_option("--build", mk_build, "Pyramid build: box, gaussian")->default_val("box");
   mipkernel->add_option("--dims", mk.dims, "1 or 2")->default_val(1);
 
   MetricsArgs mt;
+  std::string mt_domain = "linear", mt_zoneplate;
   auto* metrics = app.add_subcommand("metrics", "RMSE/PSNR against a reference and zone-plate aliasing, as JSON");
   metrics->add_option("input", mt.input, "Test image, or - for standard input")->default_val("-");
   metrics->add_option("--ref", mt.ref, "Reference image");
-  metrics->add_option("--zoneplate", mt.zoneplate, "The image is a zone plate: numax=1[,width=W,height=H]")->expected(0, 1)->default_str("");
+  metrics->add_option("--zoneplate", mt_zoneplate, "The image is a zone plate: numax=1[,width=W,height=H]")->expected(0, 1)->default_str("");
   metrics->add_option("--alias-band", mt.alias_band, "Alias band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--pass-band", mt.pass_band, "Pass band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--mask", mt.mask, "One-channel image: compare where non-zero");
-  metrics->add_option("--domain", mt.domain, "linear or encoded")->default_val("linear");
+  metrics->add_option("--domain", mt_domain, "linear or encoded")->default_val("linear");
   metrics->add_flag("--spectrum", mt.spectrum, "Add the horizontal power spectrum (f, power)");
   metrics->add_option("--beat", mt.beat, "f1,f2 in cycles per pixel: add the power at |f1 - f2| (the beat of §10.4.4)")
       ->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {
-    if (*resize) return run_resize(rz);
-    if (*display) return run_display(dp);
+    if (*resize) {
+      // In this order, all before the input is read: the first bad flag is the one named.
+      rz.filter = fest::sampling::make_kernel(rz_filter);
+      rz.edge = parse_edge(rz_edge);
+      rz.clamp = parse_clamp(rz_clamp);
+      rz.colorspace = parse_resize_color(rz_colorspace);
+      rz.alpha = parse_alpha(rz_alpha);
+      return run_resize(rz);
+    }
+    if (*display) {
+      if (dp.factor < 1 || dp.factor > 64) throw fest::usage_error("--factor {} is out of range [1, 64]", dp.factor);
+      dp.model = fest::sampling::make_display_model(dp_model);
+      return run_display(dp);
+    }
     if (*mip) {
       if (mip_action != "build") throw fest::usage_error("mip: unknown action '{}' (build)", mip_action);
+      if (mp.prefix.empty()) throw fest::usage_error("mip build needs -o PREFIX");
+      mp.filter = parse_mip_filter(mp_filter);
       return run_mip(mp);
     }
-    if (*render) return run_render(rd);
+    if (*render) {
+      std::tie(rd.width, rd.height) = parse_size(rd_size, "--size");
+      rd.colorspace = parse_render_color(rd_colorspace);
+      rd.params = parse_params(rd_params);
+      if (!rd.ground_truth) rd.pattern = fest::sampling::parse_pattern(rd_pattern);  // unused with --ground-truth
+      return run_render(rd);
+    }
     if (*normalmip) return run_normalmip(nm);
-    if (*texture) return run_texture(tx);
-    if (*kernel) return run_kernel(kn);
-    if (*chain) return run_chain1d(ch);
-    if (*mipkernel) return run_mipkernel(mk);
+    if (*texture) {
+      if (tx.tex.empty()) throw fest::usage_error("texture needs --tex");
+      if (tx.map.empty() == tx.uv.empty()) throw fest::usage_error("texture needs exactly one of --map and --uv");
+      std::tie(tx.width, tx.height) = parse_size(tx_size, "--size");
+      tx.method = fest::sampling::parse_texture_method(tx_method);
+      return run_texture(tx);
+    }
+    if (*kernel) {
+      kn.filter = fest::sampling::make_kernel(kn_filter);
+      return run_kernel(kn);
+    }
+    if (*chain) {
+      if (ch.freq.empty() == ch.edge.empty()) throw fest::usage_error("chain1d needs exactly one of --freq and --edge");
+      if (!ch.freq.empty()) {  // the edge experiment of Fig. 10.2 has its own kernels
+        if (ch_prefilter.empty() || ch_recon.empty()) throw fest::usage_error("chain1d --freq needs --prefilter and --recon");
+        ch.prefilter = fest::sampling::make_kernel(ch_prefilter);
+        ch.recon = fest::sampling::make_kernel(ch_recon);
+      }
+      return run_chain1d(ch);
+    }
+    if (*mipkernel) {
+      mk.build = fest::sampling::parse_mip_build(mk_build);
+      return run_mipkernel(mk);
+    }
     if (*metrics) {
-      if (metrics->count("--zoneplate") > 0 && mt.zoneplate.empty()) mt.zoneplate = "-";
+      mt.domain = parse_metrics_domain(mt_domain);
+      const bool zoneplate = metrics->count("--zoneplate") > 0 || !mt_zoneplate.empty();
+      check_metrics_args(mt, zoneplate);  // before the zone plate's text is read
+      if (zoneplate) mt.zoneplate = parse_zoneplate(mt_zoneplate == "-" ? "" : mt_zoneplate);
       return run_metrics(mt);
     }
     throw fest::usage_error("no subcommand");

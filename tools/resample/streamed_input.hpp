@@ -9,7 +9,7 @@
 #include "formats/image/netpbm_rows.hpp"
 #include "sampling/stored_rows.hpp"
 
-namespace resample_tool {
+namespace fest::resample {
 
 class StreamedInput final : public fest::sampling::StoredRows {
  public:
@@ -28,4 +28,4 @@ class StreamedInput final : public fest::sampling::StoredRows {
   std::unique_ptr<fest::formats::NetpbmRowFile> file_;
 };
 
-}  // namespace resample_tool
+}  // namespace fest::resample

@@ -1,0 +1,35 @@
+// turntable info / status: what the device is, and where it stands.
+
+#include <fmt/format.h>
+
+#include "capture/ttp1.hpp"
+#include "commands.hpp"
+#include "device.hpp"
+
+namespace fest::turntable {
+
+int info_command(const DeviceOptions& d) {
+  const OpenTurntable t(d);
+  const capture::TurntableInfo i = t->info();
+  const nlohmann::json j = {{"name", i.name},           {"serial", i.serial},       {"steps_per_rev", i.steps_per_rev},
+                            {"max_speed", i.max_speed}, {"max_accel", i.max_accel}, {"has_home", i.has_home}};
+  print(d, j,
+        fmt::format("name: {}\nserial: {}\nsteps per revolution: {}\nmax speed: {} steps/s\nmax acceleration: {} steps/s^2\n"
+                    "home switch: {}\n",
+                    i.name, i.serial.empty() ? "-" : i.serial, i.steps_per_rev, i.max_speed, i.max_accel,
+                    i.has_home ? "yes" : "no"));
+  return 0;
+}
+
+int status_command(const DeviceOptions& d) {
+  const OpenTurntable t(d);
+  const std::uint32_t spr = t->info().steps_per_rev;
+  const capture::TurntableStatus s = t->status();
+  print(d, status_json(s, spr),
+        fmt::format("position: {} steps ({:.4f} deg)\ntarget: {} steps\nstate: {}\nhomed: {}\nfault: {} ({})\n", s.position,
+                    capture::angle_for_steps(s.position, spr), s.target, state_name(s.state), s.homed ? "yes" : "no",
+                    s.fault, capture::ttp1::fault_name(s.fault)));
+  return 0;
+}
+
+}  // namespace fest::turntable
