@@ -51,7 +51,6 @@ KNOWN_VIOLATIONS=(
   # Tools whose command files are not yet the library fest_<tool>_app.
   "tools/facefit: tool-app: no fest_facefit_app library for its other .cpp files"
   "tools/hdrmerge: tool-app: no fest_hdrmerge_app library for its other .cpp files"
-  "tools/resample: tool-app: no fest_resample_app library for its other .cpp files"
   "tools/terrainlod: tool-app: no fest_terrainlod_app library for its other .cpp files"
   # Messages in lib/ that name the tools' flags instead of the domain's terms.
   "lib/brdffit/cluster.cpp: flag-in-lib: --clusters"
