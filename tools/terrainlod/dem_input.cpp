@@ -39,6 +39,26 @@ terrainlod::DiagonalRule diagonal_rule(const std::string& name) {
   throw usage_error("--diagonal must be short, alternate or ne (got '{}')", name);
 }
 
+const char* diagonal_name(terrainlod::DiagonalRule d) {
+  switch (d) {
+    case terrainlod::DiagonalRule::alternate: return "alternate";
+    case terrainlod::DiagonalRule::ne: return "ne";
+    default: return "short";
+  }
+}
+
+const char* start_name(terrainlod::StartRule s) { return s == terrainlod::StartRule::lattice ? "lattice" : "rtin"; }
+
+const char* reference_name(terrainlod::Reference r) {
+  switch (r) {
+    case terrainlod::Reference::original: return "original";
+    case terrainlod::Reference::level_plus_1: return "l+1";
+    default: return "l+2";
+  }
+}
+
+const char* coding_name(Coding c) { return c == Coding::progressive ? "progressive" : "standalone"; }
+
 LoadedDem load_dem(const DemArgs& args) {
   LoadedDem d;
   d.name = is_stdio(args.path) ? "-" : args.path;
@@ -61,7 +81,6 @@ LoadedDem load_dem(const DemArgs& args) {
   }
   if (!std::isfinite(args.z_scale) || args.z_scale == 0 || !std::isfinite(args.z_offset))
     throw usage_error("--z-scale must be finite and non-zero, --z-offset finite");
-  diagonal_rule(args.diagonal);
 
   d.raster = formats::read_dem(args.path, nodata);
   auto& r = d.raster;

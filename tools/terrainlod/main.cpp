@@ -1,8 +1,9 @@
 // terrainlod: multiresolution terrain with a guaranteed vertical error per tile
-// (specs/terrainlod.md): simplify, build, decode, extract, verify, stats.
+// (docs/terrainlod.md): simplify, build, decode, extract, verify, stats.
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
+#include <map>
 #include <string>
 
 #include "cli/cli.hpp"
@@ -11,6 +12,15 @@
 namespace {
 
 using namespace fest::terrainlod_tool;
+namespace tl = fest::terrainlod;
+
+const std::map<std::string, tl::DiagonalRule> kDiagonals{
+    {"short", tl::DiagonalRule::shortest}, {"alternate", tl::DiagonalRule::alternate}, {"ne", tl::DiagonalRule::ne}};
+const std::map<std::string, tl::StartRule> kStarts{{"rtin", tl::StartRule::rtin}, {"lattice", tl::StartRule::lattice}};
+const std::map<std::string, tl::Reference> kReferences{
+    {"l+2", tl::Reference::level_plus_2}, {"l+1", tl::Reference::level_plus_1}, {"original", tl::Reference::original}};
+const std::map<std::string, Coding> kCodings{{"progressive", Coding::progressive}, {"standalone", Coding::standalone}};
+const std::map<std::string, TextureFormat> kTextureFormats{{"png", TextureFormat::png}, {"jpeg", TextureFormat::jpeg}};
 
 void add_dem_options(CLI::App* cmd, DemArgs& d) {
   cmd->add_option("dem", d.path,
@@ -22,7 +32,7 @@ void add_dem_options(CLI::App* cmd, DemArgs& d) {
   cmd->add_option("--z-offset", d.z_offset, "Height = value x scale + offset");
   cmd->add_option("--nodata", d.nodata, "Nodata value (overrides the file's); nan accepts NaN heights as nodata");
   cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne")
-      ->check(CLI::IsMember({"short", "alternate", "ne"}));
+      ->transform(CLI::CheckedTransformer(kDiagonals));
 }
 
 }  // namespace
@@ -44,7 +54,7 @@ int main(int argc, char** argv) {
   s->add_option("--to", simplify.to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
   s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)")
-      ->check(CLI::IsMember({"rtin", "lattice"}));
+      ->transform(CLI::CheckedTransformer(kStarts));
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
@@ -56,7 +66,7 @@ int main(int argc, char** argv) {
                 "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
       ->excludes(tex_opt);
   b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg")
-      ->check(CLI::IsMember({"png", "jpeg"}));
+      ->transform(CLI::CheckedTransformer(kTextureFormats));
   b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")
       ->check(CLI::Range(1, 100));
   b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
@@ -67,13 +77,13 @@ int main(int argc, char** argv) {
   b->add_option("--leaf-error", build.leaf_error, "Tolerance of the leaf level (height units)");
   b->add_option("--reference", build.reference,
                 "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)")
-      ->check(CLI::IsMember({"l+2", "l+1", "original"}));
+      ->transform(CLI::CheckedTransformer(kReferences));
   b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice")
-      ->check(CLI::IsMember({"rtin", "lattice"}));
+      ->transform(CLI::CheckedTransformer(kStarts));
   b->add_option("--coding", build.coding,
                 "Tile coding: progressive (a child tile codes only what its parent does not give; decoding needs the parent) "
                 "or standalone (every tile decodable alone)")
-      ->check(CLI::IsMember({"progressive", "standalone"}));
+      ->transform(CLI::CheckedTransformer(kCodings));
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
   b->add_flag("--progress", build.progress, "Progress bar on standard error");
   fest::cli::add_threads(*b, build.threads);

@@ -420,7 +420,7 @@ std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const std
   lay.width = dem.grid.width;
   lay.height = dem.grid.height;
   formats::ImageWriteOptions opt;
-  const formats::Format format = args.texture_format == "jpeg" ? formats::Format::jpeg : formats::Format::png;
+  const formats::Format format = args.texture_format == TextureFormat::jpeg ? formats::Format::jpeg : formats::Format::png;
   if (format == formats::Format::jpeg) opt.jpeg_quality = args.texture_quality;
   std::map<terrainlod::TileId, std::size_t> at;
   for (std::size_t i = 0; i < tiles.size(); ++i) at[tiles[i].id] = i;
@@ -476,11 +476,9 @@ int run_build(const BuildArgs& args) {
   terrainlod::plan_pyramid(2, 2, 1, 1, params.pyramid);  // usage errors before reading
   params.height_quantum = args.height_quantum;
   params.leaf_error = args.leaf_error;
-  params.reference = args.reference == "original" ? terrainlod::Reference::original
-                     : args.reference == "l+1"    ? terrainlod::Reference::level_plus_1
-                                                  : terrainlod::Reference::level_plus_2;
-  params.diagonal = diagonal_rule(args.dem.diagonal);
-  params.start = args.start == "lattice" ? terrainlod::StartRule::lattice : terrainlod::StartRule::rtin;
+  params.reference = args.reference;
+  params.diagonal = args.dem.diagonal;
+  params.start = args.start;
   params.threads = resolve_threads(args.threads);
   if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
 
@@ -583,12 +581,12 @@ int run_build(const BuildArgs& args) {
                              {"height_quantum", args.height_quantum},
                              {"z_quantum", params.z_quantum},
                              {"leaf_error", args.leaf_error},
-                             {"diagonal", args.dem.diagonal},
+                             {"diagonal", diagonal_name(args.dem.diagonal)},
                              {"levels", pyr.levels},
                              {"padded", pyr.padded},
-                             {"coding", args.coding},
+                             {"coding", coding_name(args.coding)},
                              {"connectivity", "strips"},
-                             {"reference", args.reference},
+                             {"reference", reference_name(args.reference)},
                              {"level", levels},
                              {"texture", nullptr},
                              {"tool", "terrainlod 1"}};
@@ -603,14 +601,14 @@ int run_build(const BuildArgs& args) {
     textures = texture_tiles(pyr, entries, pixels, hillshade || !placement ? terrainlod::ImagePlacement::samples : *placement, georeferenced,
                              args, texels, dem, mips);
     for (const auto& t : textures) texture_bytes += t.size();
-    manifest["texture"] = {{"format", args.texture_format},
+    manifest["texture"] = {{"format", args.texture_format == TextureFormat::jpeg ? "jpeg" : "png"},
                            {"texels", texels},
                            {"channels", pixels.channels()},
                            {"source", hillshade ? "hillshade" : std::filesystem::path(texture_name).filename().string()},
                            {"placement", georeferenced ? "georeferenced"
                                          : hillshade || *placement == terrainlod::ImagePlacement::samples ? "samples" : "extent"},
                            {"filter", mips.empty() ? "2x2 box mean per level" : "prefiltered pyramid (--texture-mip), one level per tile level"}};
-    if (args.texture_format == "jpeg") manifest["texture"]["quality"] = args.texture_quality;
+    if (args.texture_format == TextureFormat::jpeg) manifest["texture"]["quality"] = args.texture_quality;
   }
   const double texture_ms = ms_since(t3);
   for (std::size_t i = 0; i < textures.size(); ++i) entries[i].texture_length = static_cast<std::uint32_t>(textures[i].size());
@@ -622,7 +620,7 @@ int run_build(const BuildArgs& args) {
     // final one). Progressive coding recodes each level against the level before it
     // (spec 2.8): that level's standalone blobs are kept (coded, small) and only the
     // parents of the chunk of rows at hand are decoded.
-    const bool progressive = args.coding == "progressive";
+    const bool progressive = args.coding == Coding::progressive;
     auto for_each_tile = [&](auto&& emit) {
       std::string parent_store, level_store;            // standalone blobs of the previous / this level
       std::vector<std::size_t> parent_at, level_at;     // their offsets (one more at the end)
@@ -695,7 +693,7 @@ int run_build(const BuildArgs& args) {
       if (!ok) throw io_error("cannot write {}", args.output);
       out.commit();
     } else {
-      DirectoryPyramidWriter out(args.output, manifest, args.texture_format == "jpeg" ? "jpg" : "png");
+      DirectoryPyramidWriter out(args.output, manifest, args.texture_format == TextureFormat::jpeg ? "jpg" : "png");
       for_each_tile([&](const TileEntry& e, std::string_view blob, std::string_view texture) {
         out.add(e.id, blob, texture);
         file_bytes += blob.size() + texture.size();
