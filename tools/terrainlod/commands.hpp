@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/reference_surface.hpp"
@@ -24,10 +25,10 @@ const char* coding_name(Coding c);
 // How a DEM file becomes heights on a grid (docs/terrainlod.md).
 struct DemArgs {
   std::string path;
-  std::string cell_size;   // "dx" or "dx,dy"; overrides the file's georeference
-  std::string origin;      // "x0,y0": centre of the south-west sample
+  std::vector<double> cell_size;  // {dx} or {dx, dy}; overrides the file's georeference
+  std::vector<double> origin;     // {x0, y0}: centre of the south-west sample
   double z_scale = 1, z_offset = 0;
-  std::string nodata;      // a number, or "nan" to accept NaN heights as nodata
+  std::optional<double> nodata;   // overrides the file's; NaN accepts NaN heights as nodata
   terrainlod::DiagonalRule diagonal = terrainlod::DiagonalRule::shortest;
 };
 

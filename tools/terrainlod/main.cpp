@@ -3,10 +3,12 @@
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
-#include <map>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -14,25 +16,24 @@ namespace {
 using namespace fest::terrainlod_tool;
 namespace tl = fest::terrainlod;
 
-const std::map<std::string, tl::DiagonalRule> kDiagonals{
+const std::vector<std::pair<std::string, tl::DiagonalRule>> kDiagonals{
     {"short", tl::DiagonalRule::shortest}, {"alternate", tl::DiagonalRule::alternate}, {"ne", tl::DiagonalRule::ne}};
-const std::map<std::string, tl::StartRule> kStarts{{"rtin", tl::StartRule::rtin}, {"lattice", tl::StartRule::lattice}};
-const std::map<std::string, tl::Reference> kReferences{
+const std::vector<std::pair<std::string, tl::StartRule>> kStarts{{"rtin", tl::StartRule::rtin}, {"lattice", tl::StartRule::lattice}};
+const std::vector<std::pair<std::string, tl::Reference>> kReferences{
     {"l+2", tl::Reference::level_plus_2}, {"l+1", tl::Reference::level_plus_1}, {"original", tl::Reference::original}};
-const std::map<std::string, Coding> kCodings{{"progressive", Coding::progressive}, {"standalone", Coding::standalone}};
-const std::map<std::string, TextureFormat> kTextureFormats{{"png", TextureFormat::png}, {"jpeg", TextureFormat::jpeg}};
+const std::vector<std::pair<std::string, Coding>> kCodings{{"progressive", Coding::progressive}, {"standalone", Coding::standalone}};
+const std::vector<std::pair<std::string, TextureFormat>> kTextureFormats{{"png", TextureFormat::png}, {"jpeg", TextureFormat::jpeg}};
 
 void add_dem_options(CLI::App* cmd, DemArgs& d) {
   cmd->add_option("dem", d.path,
                   "DEM: GeoTIFF, ESRI ASCII grid, 16-bit PNG/PGM, .npy, PFM or any raster GDAL reads; - = standard input")
       ->required();
-  cmd->add_option("--cell-size", d.cell_size, "Sample spacing dx[,dy] in world units (overrides the file)");
-  cmd->add_option("--origin", d.origin, "x0,y0: world position of the south-west sample (overrides the file)");
+  cmd->add_option("--cell-size", d.cell_size, "Sample spacing dx[,dy] in world units (overrides the file)")->delimiter(',')->allow_extra_args(false);
+  cmd->add_option("--origin", d.origin, "x0,y0: world position of the south-west sample (overrides the file)")->delimiter(',')->allow_extra_args(false);
   cmd->add_option("--z-scale", d.z_scale, "Height = value x scale + offset");
   cmd->add_option("--z-offset", d.z_offset, "Height = value x scale + offset");
   cmd->add_option("--nodata", d.nodata, "Nodata value (overrides the file's); nan accepts NaN heights as nodata");
-  cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne")
-      ->transform(CLI::CheckedTransformer(kDiagonals));
+  fest::cli::enum_words(cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne"), kDiagonals);
 }
 
 }  // namespace
@@ -53,8 +54,7 @@ int main(int argc, char** argv) {
   s->add_option("-o,--output", simplify.output, "Mesh file (.ply .obj .off .stl .drc); - = standard output (PLY)");
   s->add_option("--to", simplify.to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
-  s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)")
-      ->transform(CLI::CheckedTransformer(kStarts));
+  fest::cli::enum_words(s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)"), kStarts);
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
@@ -65,8 +65,7 @@ int main(int argc, char** argv) {
   b->add_option("--texture-mip", build.texture_mip,
                 "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
       ->excludes(tex_opt);
-  b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg")
-      ->transform(CLI::CheckedTransformer(kTextureFormats));
+  fest::cli::enum_words(b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg"), kTextureFormats);
   b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")
       ->check(CLI::Range(1, 100));
   b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
@@ -75,15 +74,13 @@ int main(int argc, char** argv) {
   b->add_option("--height-quantum", build.height_quantum, "Interior height quantum as a fraction of eps_l (q)");
   b->add_option("--z-quantum", build.z_quantum, "Finest height quantum (default 1 for integer DEMs, else 0.01)");
   b->add_option("--leaf-error", build.leaf_error, "Tolerance of the leaf level (height units)");
-  b->add_option("--reference", build.reference,
-                "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)")
-      ->transform(CLI::CheckedTransformer(kReferences));
-  b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice")
-      ->transform(CLI::CheckedTransformer(kStarts));
-  b->add_option("--coding", build.coding,
-                "Tile coding: progressive (a child tile codes only what its parent does not give; decoding needs the parent) "
-                "or standalone (every tile decodable alone)")
-      ->transform(CLI::CheckedTransformer(kCodings));
+  fest::cli::enum_words(b->add_option("--reference", build.reference,
+                "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)"), kReferences);
+  fest::cli::enum_words(b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice"), kStarts);
+  fest::cli::enum_words(b->add_option("--coding", build.coding,
+                                      "Tile coding: progressive (a child tile codes only what its parent does not give; "
+                                      "decoding needs the parent) or standalone (every tile decodable alone)"),
+                        kCodings);
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
   b->add_flag("--progress", build.progress, "Progress bar on standard error");
   fest::cli::add_threads(*b, build.threads);
@@ -117,8 +114,8 @@ int main(int argc, char** argv) {
   auto* v = app.add_subcommand("verify", "Check a pyramid: decoding, the error bound of every transition, cracks");
   v->add_option("pyramid", verify.pyramid, "Pyramid archive (.tlp) or directory")->required();
   v->add_option("--dem", verify.dem.path, "The DEM it was built from: check every triangulation within 4/3 eps");
-  v->add_option("--cell-size", verify.dem.cell_size, "As for build");
-  v->add_option("--origin", verify.dem.origin, "As for build");
+  v->add_option("--cell-size", verify.dem.cell_size, "As for build")->delimiter(',')->allow_extra_args(false);
+  v->add_option("--origin", verify.dem.origin, "As for build")->delimiter(',')->allow_extra_args(false);
   v->add_option("--z-scale", verify.dem.z_scale, "As for build");
   v->add_option("--z-offset", verify.dem.z_offset, "As for build");
   v->add_option("--nodata", verify.dem.nodata, "As for build");
