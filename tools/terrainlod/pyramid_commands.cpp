@@ -669,7 +669,7 @@ int run_build(const BuildArgs& args) {
     if (archive) {
       // The index holds each tile's final length, known only once it is recoded: the head
       // is written as a placeholder of its (fixed) size and filled in at the end.
-      std::string head = archive_head(manifest, entries);
+      std::string head = terrainlod::encode_tlp_head(manifest.dump(), entries);
       AtomicFile out(args.output);
       std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
       if (!f) throw io_error("cannot write {}", args.output);
@@ -682,7 +682,7 @@ int run_build(const BuildArgs& args) {
           if (!texture.empty()) ok = ok && std::fwrite(texture.data(), 1, texture.size(), f) == texture.size();
           file_bytes += blob.size() + texture.size();
         });
-        const std::string final_head = archive_head(manifest, entries);
+        const std::string final_head = terrainlod::encode_tlp_head(manifest.dump(), entries);
         if (final_head.size() != head.size()) throw runtime_failure("archive head changed size");
         ok = ok && std::fseek(f, 0, SEEK_SET) == 0 && std::fwrite(final_head.data(), 1, final_head.size(), f) == final_head.size();
       } catch (...) {
