@@ -56,6 +56,7 @@ TlpHead decode_tlp_head(std::string_view s) {
 }
 
 std::vector<TlpEntry> decode_tlp_index(std::string_view s, std::size_t at) {
+  if (at > s.size() || s.size() - at < 4) throw bad_input("pyramid is truncated in its tile index");
   const std::size_t count = get_le<std::uint32_t>(s, at);
   at += 4;
   if (s.size() < at + count * kEntryBytes) throw bad_input("pyramid is truncated in its tile index");
