@@ -8,6 +8,7 @@
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/reference_surface.hpp"
 #include "terrainlod/simplify.hpp"
+#include "terrainlod/tile.hpp"
 
 namespace fest::terrainlod_tool {
 
@@ -21,6 +22,8 @@ const char* diagonal_name(terrainlod::DiagonalRule d);
 const char* start_name(terrainlod::StartRule s);
 const char* reference_name(terrainlod::Reference r);
 const char* coding_name(Coding c);
+// "L/X/Y" (X east, Y north, from the south-west) -> a tile id; a usage error otherwise.
+terrainlod::TileId parse_tile(const std::string& text);
 
 // How a DEM file becomes heights on a grid (docs/terrainlod.md).
 struct DemArgs {
@@ -72,7 +75,7 @@ struct BuildArgs {
 
 struct DecodeArgs {
   std::string pyramid;
-  std::string tile;       // L/X/Y
+  terrainlod::TileId tile;
   int mask = 0;
   std::string output = "-";
   std::string to;

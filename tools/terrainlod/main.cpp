@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
   DecodeArgs decode;
   auto* d = app.add_subcommand("decode", "Decode one tile for a neighbour mask to a mesh");
   d->add_option("pyramid", decode.pyramid, "Pyramid archive (.tlp) or directory")->required();
-  d->add_option("--tile", decode.tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
+  std::string decode_tile;
+  d->add_option("--tile", decode_tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
   d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer");
   d->add_option("-o,--output", decode.output, "Mesh file; - = standard output (PLY)");
   d->add_option("--to", decode.to, "Output format: ply, obj, off, stl or drc");
@@ -137,7 +138,10 @@ int main(int argc, char** argv) {
   return fest::cli::run(app, argc, argv, [&] {
     if (s->parsed()) return run_simplify(simplify);
     if (b->parsed()) return run_build(build);
-    if (d->parsed()) return run_decode(decode);
+    if (d->parsed()) {
+      decode.tile = parse_tile(decode_tile);
+      return run_decode(decode);
+    }
     if (x->parsed()) return run_extract(extract);
     if (v->parsed()) return run_verify(verify);
     if (q->parsed()) return run_export_qm(qm);

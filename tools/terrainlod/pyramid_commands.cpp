@@ -279,6 +279,8 @@ std::string tile_name(const terrainlod::TileId& id) {
   return std::to_string(id.level) + "-" + std::to_string(id.x) + "-" + std::to_string(id.y);
 }
 
+}  // namespace
+
 terrainlod::TileId parse_tile(const std::string& s) {
   terrainlod::TileId id;
   char a = 0, b = 0;
@@ -287,6 +289,8 @@ terrainlod::TileId parse_tile(const std::string& s) {
     throw usage_error("--tile expects L/X/Y (got '{}')", s);
   return id;
 }
+
+namespace {
 
 terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& where) {
   terrainlod::Camera c;
@@ -815,14 +819,15 @@ int run_pyramid_stats(const std::string& path) {
 }
 
 int run_decode(const DecodeArgs& args) {
-  const terrainlod::TileId id = parse_tile(args.tile);
+  const terrainlod::TileId id = args.tile;
   if (args.mask < 0 || args.mask > 15) throw usage_error("--mask must be 0..15 (got {})", args.mask);
   const auto out = mesh_output(args.output, args.to);
   PyramidFile pyr = open_pyramid(args.pyramid);
   if (!pyr.has(id)) throw bad_input("pyramid has no tile {}/{}/{} ({})", id.level, id.x, id.y, pyr.name());
   const auto& t = pyr.tile(id);
   if ((static_cast<unsigned>(args.mask) & ~t.refinable) != 0)
-    throw bad_input("tile {} has no finer neighbour on the sides of mask {} (refinable sides: {})", args.tile, args.mask, t.refinable);
+    throw bad_input("tile {}/{}/{} has no finer neighbour on the sides of mask {} (refinable sides: {})", id.level, id.x, id.y,
+                    args.mask, t.refinable);
   const std::string bytes = formats::write_mesh(
       world_mesh(pyr, {{id, terrainlod::triangulate(t, static_cast<unsigned>(args.mask), pyr.geometry(id.level))}}), out.format);
   std::string texture;
