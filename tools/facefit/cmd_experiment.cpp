@@ -23,7 +23,7 @@
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
-namespace facefit_tool {
+namespace fest::facefit_tool {
 
 using namespace fest;
 
@@ -67,8 +67,7 @@ int run_project(const ProjectArgs& a) {
     shape = Eigen::Map<const Eigen::VectorXd>(m.mean.data(), static_cast<Eigen::Index>(m.mean.size()));
   }
   const auto set = formats::read_vertex_set(read_text(a.vertices), a.vertices);
-  const auto c = parse_numbers(a.center, "--center");
-  if (c.size() != 2) throw usage_error("--center needs U,V");
+  const auto& c = a.center;
   const auto P = facefit::orthographic_camera(a.scale, {c[0], c[1]}, a.yaw, a.pitch);
   facefit::Rng rng(a.seed);
   std::vector<facefit::LandmarkEntry> out;
@@ -178,13 +177,13 @@ int run_sweep(const SweepArgs& a) {
   std::vector<Eigen::VectorXd> faces;
   for (const auto& p : read_list(a.faces)) faces.push_back(read_shape(p));
   const auto vertices = read_vertex_indices(a.vertices);
-  const auto etas = parse_numbers(a.etas, "--etas");
+  const auto& etas = a.etas;
   for (double e : etas)
     if (e < 0) throw usage_error("--etas: η must be >= 0");
   std::vector<double> comps = a.components.empty() ? std::vector<double>{static_cast<double>(model.components)}
-                                                   : parse_numbers(a.components, "--components");
-  const auto noises = parse_numbers(a.noise, "--noise-sigma");
-  const auto yaws = parse_numbers(a.yaw, "--yaw");
+                                                   : a.components;
+  const auto& noises = a.noise;
+  const auto& yaws = a.yaw;
   std::vector<facefit::SweepSetting> settings;
   for (double k : comps) {
     if (k < 1 || k > static_cast<double>(model.components) || k != std::floor(k))
@@ -224,4 +223,4 @@ int run_sweep(const SweepArgs& a) {
   return 0;
 }
 
-}  // namespace facefit_tool
+}  // namespace fest::facefit_tool

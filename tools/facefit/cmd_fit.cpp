@@ -21,7 +21,7 @@
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 
-namespace facefit_tool {
+namespace fest::facefit_tool {
 
 using namespace fest;
 using Clock = std::chrono::steady_clock;
@@ -30,43 +30,27 @@ namespace {
 
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-Eigen::Vector2d parse_center(const std::string& text) {
-  const auto v = parse_numbers(text, "--center");
-  if (v.size() != 2) throw usage_error("--center needs U,V");
-  return {v[0], v[1]};
-}
-
 facefit::FitOptions fit_options(const FitArgs& a) {
   facefit::FitOptions o;
-  if (a.camera == "fixed") o.camera = facefit::CameraKind::fixed;
-  else if (a.camera == "similarity") o.camera = facefit::CameraKind::similarity;
-  else if (a.camera == "affine") o.camera = facefit::CameraKind::affine;
-  else throw usage_error("--camera must be fixed, similarity or affine, not '{}'", a.camera);
-  o.fixed_camera = facefit::orthographic_camera(a.scale, parse_center(a.center), a.yaw);
-  if (a.nuisance == "free") o.nuisance = facefit::NuisanceKind::free;
-  else if (a.nuisance == "penalized") o.nuisance = facefit::NuisanceKind::penalized;
-  else if (a.nuisance == "none") o.nuisance = facefit::NuisanceKind::none;
-  else throw usage_error("--nuisance must be free, penalized or none, not '{}'", a.nuisance);
+  o.camera = a.camera;
+  o.fixed_camera = facefit::orthographic_camera(a.scale, {a.center[0], a.center[1]}, a.yaw);
+  o.nuisance = a.nuisance;
   o.nuisance_sigma = a.nuisance_sigma;
-  if (a.eta_units != "mm2" && a.eta_units != "px2") throw usage_error("--eta-units must be px2 or mm2");
   if (a.noise_sigma_given) {
     if (!(a.noise_sigma > 0)) throw usage_error("--noise-sigma must be positive");
     o.sigma_ref = a.noise_sigma;
   }
-  if (a.eta == "auto=gcv") {
+  if (a.eta.rule == Eta::Rule::gcv) {
     o.eta_mode = facefit::EtaMode::gcv;
-  } else if (a.eta == "auto=evidence") {
+  } else if (a.eta.rule == Eta::Rule::evidence) {
     o.eta_mode = facefit::EtaMode::evidence;
   } else if (a.noise_sigma_given && !a.eta_given) {
     // The chapter's finding: the best η is the landmark noise variance, in px².
     o.eta = a.noise_sigma * a.noise_sigma;
     o.eta_in_model_units = false;
   } else {
-    char* end = nullptr;
-    o.eta = std::strtod(a.eta.c_str(), &end);
-    if (a.eta.empty() || *end != '\0' || !std::isfinite(o.eta) || o.eta < 0)
-      throw usage_error("--eta must be a number >= 0, auto=gcv or auto=evidence, not '{}'", a.eta);
-    o.eta_in_model_units = a.eta_units == "mm2";
+    o.eta = a.eta.value;
+    o.eta_in_model_units = a.eta_units == EtaUnits::mm2;
   }
   if (a.iterations < 1) throw usage_error("--iterations must be at least 1");
   o.iterations = a.iterations;
@@ -166,9 +150,8 @@ int run_full_shape(const FitArgs& a, const facefit::Model& model) {
   const Eigen::VectorXd shape = read_shape(a.full_shape);
   if (static_cast<std::size_t>(shape.size()) != 3 * model.points)
     throw bad_input("mesh has {} vertices, the model {} ({})", shape.size() / 3, model.points, a.full_shape);
-  char* end = nullptr;
-  const double eta = std::strtod(a.eta.c_str(), &end);
-  if (*end != '\0' || !(eta >= 0)) throw usage_error("--full-shape needs a numeric --eta >= 0 (mm²)");
+  if (a.eta.rule != Eta::Rule::number || !(a.eta.value >= 0)) throw usage_error("--full-shape needs a numeric --eta >= 0 (mm²)");
+  const double eta = a.eta.value;
   Eigen::VectorXd c;
   const Eigen::VectorXd out = facefit::fit_full_shape(model, shape, eta, &c);
   if (!a.coeffs.empty()) {
@@ -247,14 +230,13 @@ int run_fit(const FitArgs& a) {
   if (!a.full_shape.empty()) return run_full_shape(a, model);
   if (!a.batch.empty()) return run_batch(a, model, opt);
 
-  if (a.space != "model" && a.space != "image") throw usage_error("--space must be model or image, not '{}'", a.space);
-  if (a.space == "image" && model.dims != 3) throw usage_error("--space image needs a 3-D model");
+  if (a.space == Space::image && model.dims != 3) throw usage_error("--space image needs a 3-D model");
   const auto lm = load_landmarks(a, a.landmarks, model);
   const auto r = facefit::fit_landmarks(model, lm, opt);
   std::vector<double> sigma;
   if (!a.uncertainty.empty()) sigma = facefit::vertex_uncertainty(model, r, resolve_threads(a.threads));
   // Everything is computed (the textured mesh too) before the first byte is written.
-  const Eigen::VectorXd shape_out = a.space == "image" ? facefit::to_image_space(r.camera, r.shape) : r.shape;
+  const Eigen::VectorXd shape_out = a.space == Space::image ? facefit::to_image_space(r.camera, r.shape) : r.shape;
   std::size_t visible = 0;
   std::optional<Mesh> textured;
   if (!a.texture.empty()) {
@@ -282,4 +264,19 @@ int run_fit(const FitArgs& a) {
   return 0;
 }
 
-}  // namespace facefit_tool
+Eta parse_eta(const std::string& text) {
+  Eta e;
+  if (text == "auto=gcv") {
+    e.rule = Eta::Rule::gcv;
+  } else if (text == "auto=evidence") {
+    e.rule = Eta::Rule::evidence;
+  } else {
+    char* end = nullptr;
+    e.value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(e.value) || e.value < 0)
+      throw usage_error("--eta must be a number >= 0, auto=gcv or auto=evidence, not '{}'", text);
+  }
+  return e;
+}
+
+}  // namespace fest::facefit_tool

@@ -17,7 +17,7 @@
 #include "formats/facemodel/mmb.hpp"
 #include "formats/table/table_io.hpp"
 
-namespace facefit_tool {
+namespace fest::facefit_tool {
 
 using namespace fest;
 
@@ -71,19 +71,17 @@ int run_convert(const ConvertArgs& a) {
   if (!(a.scale > 0) || !std::isfinite(a.scale)) throw usage_error("--scale must be positive");
   facefit::Model m;
   std::string warnings;
-  if (a.from == "eos") {
+  if (a.from == ModelSource::eos) {
     m = formats::read_eos_model(read_input(a.input), a.input);
-  } else if (a.from == "npz") {
+  } else if (a.from == ModelSource::npz) {
     m = formats::read_npz_model(a.input, &warnings);
-  } else if (a.from == "mmb") {
+  } else if (a.from == ModelSource::mmb) {
     formats::MmbReadOptions o;
     o.fix_basis = a.fix_basis;
     m = formats::read_mmb(a.input, o, &warnings);
-  } else if (a.from == "ply-set") {
+  } else {
     BuildArgs b;
     m = build_from_meshes(read_list(a.input), b);
-  } else {
-    throw usage_error("--from must be eos, npz, mmb or ply-set, not '{}'", a.from);
   }
   if (!warnings.empty()) warn(warnings);
   if (a.scale != 1) {
@@ -178,4 +176,4 @@ int run_sample(const SampleArgs& a) {
   return 0;
 }
 
-}  // namespace facefit_tool
+}  // namespace fest::facefit_tool

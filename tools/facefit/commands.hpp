@@ -1,15 +1,40 @@
 #pragma once
-// The subcommands of facefit; main.cpp maps flags onto these structs.
+// facefit's subcommands (docs/facefit.md), each taking its typed options. main.cpp fills
+// these from flags; everything else in this folder is the fest_facefit_app library.
 
+#include <array>
 #include <string>
 #include <vector>
 
-namespace facefit_tool {
+#include "facefit/fit.hpp"
+
+namespace fest::facefit_tool {
+
+// Units of a numeric η: model units squared (scaled by the camera's s²) or pixels squared.
+enum class EtaUnits { mm2, px2 };
+// Where fitted vertices are written: model space (mm) or image space (u, v px, depth).
+enum class Space { model, image };
+// What `convert` imports.
+enum class ModelSource { eos, npz, ply_set, mmb };
+
+// --eta: a number >= 0, or chosen automatically (generalised cross-validation, evidence).
+struct Eta {
+  enum class Rule { number, gcv, evidence } rule = Rule::number;
+  double value = 2;
+};
+// "2", "auto=gcv", "auto=evidence" -> Eta; a usage error otherwise.
+Eta parse_eta(const std::string& text);
 
 struct FitArgs {
-  std::string model, landmarks = "-", map, camera = "similarity", center = "150,150", eta = "2", eta_units = "mm2";
-  std::string space = "model", texture;
-  std::string nuisance = "free", full_shape, coeffs, report, batch, output = "-", to, uncertainty;
+  std::string model, landmarks = "-", map;
+  facefit::CameraKind camera = facefit::CameraKind::similarity;
+  std::array<double, 2> center{150, 150};
+  Eta eta;
+  EtaUnits eta_units = EtaUnits::mm2;
+  Space space = Space::model;
+  std::string texture;
+  facefit::NuisanceKind nuisance = facefit::NuisanceKind::free;
+  std::string full_shape, coeffs, report, batch, output = "-", to, uncertainty;
   double scale = 1, yaw = 0, noise_sigma = 0, nuisance_sigma = 100, pts_origin = 1;
   bool noise_sigma_given = false, eta_given = false, skip_unmapped = false, fix_basis = false;
   int components = 0, iterations = 5, threads = 0;
@@ -26,7 +51,8 @@ struct BuildArgs {
 int run_build(const BuildArgs& a);
 
 struct ConvertArgs {
-  std::string from, input, output, landmarks, mask;
+  ModelSource from = ModelSource::eos;
+  std::string input, output, landmarks, mask;
   double scale = 1;
   bool fix_basis = false;
 };
@@ -47,7 +73,8 @@ struct SampleArgs {
 int run_sample(const SampleArgs& a);
 
 struct ProjectArgs {
-  std::string model, mesh, vertices, center = "150,150";
+  std::string model, mesh, vertices;
+  std::array<double, 2> center{150, 150};
   double scale = 1, yaw = 0, pitch = 0, noise_sigma = 0;
   unsigned long long seed = 1;
   bool by_vertex = false;
@@ -61,8 +88,11 @@ struct EvalArgs {
 int run_eval(const EvalArgs& a);
 
 struct SweepArgs {
-  std::string model, faces, vertices, etas = "0,1e-4,1e-3,1e-2,0.1,0.3,1,2,3,10,100,1000", components, noise = "0", yaw = "0",
-                                       mask;
+  std::string model, faces, vertices, mask;
+  std::vector<double> etas{0, 1e-4, 1e-3, 1e-2, 0.1, 0.3, 1, 2, 3, 10, 100, 1000};
+  std::vector<double> components;  // empty: all
+  std::vector<double> noise{0};
+  std::vector<double> yaw{0};
   bool summary = false;
   unsigned long long seed = 1;
 };
@@ -76,4 +106,4 @@ struct SynthArgs {
 };
 int run_synth(const SynthArgs& a);
 
-}  // namespace facefit_tool
+}  // namespace fest::facefit_tool

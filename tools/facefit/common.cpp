@@ -11,7 +11,7 @@
 #include "formats/mesh/indexed_ply.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
-namespace facefit_tool {
+namespace fest::facefit_tool {
 
 using namespace fest;
 
@@ -122,20 +122,4 @@ std::vector<std::uint32_t> read_vertex_indices(const std::string& path) {
 
 facefit::LandmarkMap read_map(const std::string& path) { return formats::read_landmark_map(read_input(path), path); }
 
-std::vector<double> parse_numbers(const std::string& text, const char* option) {
-  std::vector<double> out;
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    std::size_t end = text.find(',', pos);
-    if (end == std::string::npos) end = text.size();
-    const std::string item = text.substr(pos, end - pos);
-    char* stop = nullptr;
-    const double v = std::strtod(item.c_str(), &stop);
-    if (item.empty() || *stop != '\0' || !std::isfinite(v)) throw usage_error("{}: '{}' is not a number", option, item);
-    out.push_back(v);
-    pos = end + 1;
-  }
-  return out;
-}
-
-}  // namespace facefit_tool
+}  // namespace fest::facefit_tool

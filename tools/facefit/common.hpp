@@ -11,7 +11,7 @@
 #include "facefit/landmark_set.hpp"
 #include "facefit/model.hpp"
 
-namespace facefit_tool {
+namespace fest::facefit_tool {
 
 inline constexpr const char* tool = "facefit";
 
@@ -40,7 +40,4 @@ std::vector<std::string> read_list(const std::string& path);  // one path per li
 std::vector<std::uint32_t> read_vertex_indices(const std::string& path);  // a vertex set or mask file
 fest::facefit::LandmarkMap read_map(const std::string& path);
 
-// "0,1e-4,1" -> numbers; usage error naming the option when malformed.
-std::vector<double> parse_numbers(const std::string& text, const char* option);
-
-}  // namespace facefit_tool
+}  // namespace fest::facefit_tool

@@ -1,11 +1,30 @@
 // facefit: complete 3-D face shape from a few 2-D feature points (Blanz & Vetter,
-// seed 000 chapter 1; specs/facefit.md). Subcommands in the manner of git; this file
-// only declares the flags and hands them to the cmd_*.cpp wiring.
+// chapter 1; docs/facefit.md). Subcommands in the manner of git; this file only maps
+// flags onto the typed options of commands.hpp, one call per subcommand.
+
+#include <utility>
+#include <vector>
+#include <string>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
-using namespace facefit_tool;
+namespace {
+
+using namespace fest::facefit_tool;
+namespace ff = fest::facefit;
+
+const std::vector<std::pair<std::string, ff::CameraKind>> kCameras{
+    {"fixed", ff::CameraKind::fixed}, {"similarity", ff::CameraKind::similarity}, {"affine", ff::CameraKind::affine}};
+const std::vector<std::pair<std::string, ff::NuisanceKind>> kNuisances{
+    {"free", ff::NuisanceKind::free}, {"penalized", ff::NuisanceKind::penalized}, {"none", ff::NuisanceKind::none}};
+const std::vector<std::pair<std::string, EtaUnits>> kEtaUnits{{"mm2", EtaUnits::mm2}, {"px2", EtaUnits::px2}};
+const std::vector<std::pair<std::string, Space>> kSpaces{{"model", Space::model}, {"image", Space::image}};
+const std::vector<std::pair<std::string, ModelSource>> kSources{
+    {"eos", ModelSource::eos}, {"npz", ModelSource::npz}, {"mmb", ModelSource::mmb}, {"ply-set", ModelSource::ply_set}};
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Complete 3-D face shape from a few 2-D feature points with a morphable model\n"
@@ -22,15 +41,16 @@ int main(int argc, char** argv) {
   f->add_option("-m,--model", fit.model, "Model file (.mmb); default $FACEFIT_MODEL");
   f->add_option("--landmarks", fit.landmarks, "Landmark TSV (id|vertex u v [sigma]) or iBUG .pts; - = stdin")->default_val("-");
   f->add_option("--map", fit.map, "Landmark-to-vertex map (TSV or eos TOML); default: the model's");
-  f->add_option("--camera", fit.camera, "fixed | similarity | affine")->default_val("similarity");
+  fest::cli::enum_words(f->add_option("--camera", fit.camera, "fixed | similarity | affine"), kCameras)->default_str("similarity");
   f->add_option("--scale", fit.scale, "Fixed camera: px per model unit")->default_val(1);
-  f->add_option("--center", fit.center, "Fixed camera: image position U,V of the model origin")->default_val("150,150");
+  f->add_option("--center", fit.center, "Fixed camera: image position U,V of the model origin")->delimiter(',')->default_str("150,150");
   f->add_option("--yaw", fit.yaw, "Fixed camera: rotation about the vertical axis (degrees)")->default_val(0);
-  auto* eta = f->add_option("--eta", fit.eta, "η (>= 0), auto=gcv or auto=evidence")->default_val("2");
-  f->add_option("--eta-units", fit.eta_units, "Units of a numeric --eta: mm2 (scaled by s²) or px2")->default_val("mm2");
+  std::string eta_text = "2";
+  auto* eta = f->add_option("--eta", eta_text, "η (>= 0), auto=gcv or auto=evidence")->default_val("2");
+  fest::cli::enum_words(f->add_option("--eta-units", fit.eta_units, "Units of a numeric --eta: mm2 (scaled by s²) or px2"), kEtaUnits)->default_str("mm2");
   auto* noise = f->add_option("--noise-sigma", fit.noise_sigma, "Landmark noise (px): η = S² px² unless --eta is given");
   f->add_option("--components", fit.components, "Use the first K components (0 = all)")->default_val(0);
-  f->add_option("--nuisance", fit.nuisance, "Similarity camera: free | penalized | none")->default_val("free");
+  fest::cli::enum_words(f->add_option("--nuisance", fit.nuisance, "Similarity camera: free | penalized | none"), kNuisances)->default_str("free");
   f->add_option("--nuisance-sigma", fit.nuisance_sigma, "Prior std of penalized nuisance columns")->default_val(100);
   f->add_option("--iterations", fit.iterations, "Affine camera: camera/shape alternations")->default_val(5);
   f->add_option("--full-shape", fit.full_shape, "Project a complete mesh into the model (L = id) instead of landmarks");
@@ -38,7 +58,7 @@ int main(int argc, char** argv) {
   f->add_option("--coeffs", fit.coeffs, "Write the coefficients as TSV (index c sigma)");
   f->add_option("--report", fit.report, "Write a JSON report (η, camera, errors, timings)");
   f->add_option("--texture", fit.texture, "Photo the landmarks come from: visible vertices get its colours (PLY red green blue)");
-  f->add_option("--space", fit.space, "Output vertices in model space (mm) or image space (u, v px, depth)")->default_val("model");
+  fest::cli::enum_words(f->add_option("--space", fit.space, "Output vertices in model space (mm) or image space (u, v px, depth)"), kSpaces)->default_str("model");
   f->add_option("--batch", fit.batch, "File of 'landmarks output' lines; output .tsv = coefficients only");
   f->add_option("-o,--output", fit.output, "Mesh output (- = stdout, binary PLY)")->default_val("-");
   f->add_option("--to", fit.to, "Mesh format: ply | plya | obj | off");
@@ -61,7 +81,7 @@ int main(int argc, char** argv) {
 
   ConvertArgs conv;
   auto* c = app.add_subcommand("convert", "Import a model (eos .bin, NumPy .npz, mesh list, .mmb) to .mmb");
-  c->add_option("--from", conv.from, "eos | npz | ply-set | mmb")->required();
+  fest::cli::enum_words(c->add_option("--from", conv.from, "eos | npz | ply-set | mmb")->required(), kSources);
   c->add_option("input", conv.input, "Input file (for ply-set: a list of meshes)")->required();
   c->add_option("-o,--output", conv.output, "Model file to write (.mmb)")->required();
   c->add_option("--scale", conv.scale, "Multiply mean and sigma (BFM 2009 µm -> mm: 0.001)")->default_val(1);
@@ -90,7 +110,7 @@ int main(int argc, char** argv) {
   p->add_option("--mesh", proj.mesh, "Face mesh to project instead of the model's mean");
   p->add_option("--vertices", proj.vertices, "Vertex set (name vertex)")->required();
   p->add_option("--scale", proj.scale, "px per model unit")->default_val(1);
-  p->add_option("--center", proj.center, "Image position of the model origin U,V")->default_val("150,150");
+  p->add_option("--center", proj.center, "Image position of the model origin U,V")->delimiter(',')->default_str("150,150");
   p->add_option("--yaw", proj.yaw, "Head rotation about the vertical axis (degrees)")->default_val(0);
   p->add_option("--pitch", proj.pitch, "Head rotation about the horizontal axis (degrees)")->default_val(0);
   p->add_option("--noise-sigma", proj.noise_sigma, "Gaussian noise per coordinate (px)")->default_val(0);
@@ -111,10 +131,10 @@ int main(int argc, char** argv) {
   w->add_option("-m,--model", sw.model, "Model file; default $FACEFIT_MODEL");
   w->add_option("--faces", sw.faces, "List of true face meshes")->required();
   w->add_option("--vertices", sw.vertices, "Feature vertex set")->required();
-  w->add_option("--etas", sw.etas, "Comma-separated η values (px²)")->default_val(sw.etas);
-  w->add_option("--components", sw.components, "Comma-separated component counts (default all)");
-  w->add_option("--noise-sigma", sw.noise, "Comma-separated landmark noise levels (px)")->default_val("0");
-  w->add_option("--yaw", sw.yaw, "Comma-separated rotations of the solver's L (degrees; fig. 1.6)")->default_val("0");
+  w->add_option("--etas", sw.etas, "Comma-separated η values (px²)")->delimiter(',')->allow_extra_args(false)->default_str("0,1e-4,1e-3,1e-2,0.1,0.3,1,2,3,10,100,1000");
+  w->add_option("--components", sw.components, "Comma-separated component counts (default all)")->delimiter(',')->allow_extra_args(false);
+  w->add_option("--noise-sigma", sw.noise, "Comma-separated landmark noise levels (px)")->delimiter(',')->allow_extra_args(false)->default_str("0");
+  w->add_option("--yaw", sw.yaw, "Comma-separated rotations of the solver's L (degrees; fig. 1.6)")->delimiter(',')->allow_extra_args(false)->default_str("0");
   w->add_option("--mask", sw.mask, "Evaluation vertex set (default: the model's eval mask)");
   w->add_option("--seed", sw.seed, "Noise seed")->default_val(1);
   w->add_flag("--summary", sw.summary, "Means over faces per setting and η");
@@ -132,6 +152,7 @@ int main(int argc, char** argv) {
     if (*f) {
       fit.eta_given = eta->count() > 0;
       fit.noise_sigma_given = noise->count() > 0;
+      fit.eta = parse_eta(eta_text);
       return run_fit(fit);
     }
     if (*b) return run_build(build);

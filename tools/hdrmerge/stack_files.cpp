@@ -37,9 +37,9 @@ double parse_exposure_time(const std::string& text) {
   throw usage_error("--times: '{}' is not a positive exposure time (seconds, e.g. 0.004 or 1/250)", text);
 }
 
-hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<std::string>& times) {
+hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<double>& times) {
   hdr::ExposureStack stack;
-  for (const std::string& t : times) stack.times.push_back(parse_exposure_time(t));
+  stack.times = times;
   if (paths.size() != times.size())
     throw bad_input("{} images but {} exposure times in --times", paths.size(), times.size());
   for (const std::string& path : paths) {

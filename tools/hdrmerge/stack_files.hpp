@@ -14,10 +14,10 @@ namespace fest::hdrmerge_tool {
 // "0.001", "1e-3", "1/1000" -> seconds. Throws usage_error for anything else.
 double parse_exposure_time(const std::string& text);
 
-// Reads every image (content-detected format) and pairs it with its time. Throws
+// Reads every image (content-detected format) and pairs it with its time (seconds). Throws
 // bad_input naming the file for unreadable or inconsistent images, and for a count
 // mismatch between images and times.
-hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<std::string>& times);
+hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<double>& times);
 
 Table response_table(const hdr::Response& response);
 // Throws bad_input unless the table has 256 rows z = 0..255 and the g columns.

@@ -71,16 +71,16 @@ int run_simplify(const SimplifyArgs& args) {
   const auto t1 = Clock::now();
   terrainlod::SimplifyOptions options;
   options.max_error = args.max_error;
-  options.diagonal = diagonal_rule(args.dem.diagonal);
-  options.start = args.start == "lattice" ? terrainlod::StartRule::lattice : terrainlod::StartRule::rtin;
+  options.diagonal = args.dem.diagonal;
+  options.start = args.start;
   const terrainlod::SimplifyResult result = terrainlod::simplify_grid(dem.grid, options);
   const double simplify_ms = ms_since(t1);
 
   const std::string bytes = formats::write_mesh(world_mesh(result.mesh, dem), out.format);
   nlohmann::json report = {{"dem", dem_json(dem)},
                            {"max_error", args.max_error},
-                           {"diagonal", args.dem.diagonal},
-                           {"start", args.start},
+                           {"diagonal", diagonal_name(args.dem.diagonal)},
+                           {"start", start_name(args.start)},
                            {"vertices", result.mesh.vertices.size()},
                            {"triangles", result.mesh.triangles.size()},
                            {"collapses", result.collapses},

@@ -3,17 +3,36 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "terrainlod/pyramid_build.hpp"
+#include "terrainlod/reference_surface.hpp"
+#include "terrainlod/simplify.hpp"
+#include "terrainlod/tile.hpp"
 
 namespace fest::terrainlod_tool {
 
-// How a DEM file becomes heights on a grid (spec terrainlod 2.11).
+// How tiles are coded in a pyramid (docs/terrainlod.md, tile coding).
+enum class Coding { progressive, standalone };
+// How texture tiles are stored.
+enum class TextureFormat { png, jpeg };
+
+// The flag spellings of the enums, as reports print them.
+const char* diagonal_name(terrainlod::DiagonalRule d);
+const char* start_name(terrainlod::StartRule s);
+const char* reference_name(terrainlod::Reference r);
+const char* coding_name(Coding c);
+// "L/X/Y" (X east, Y north, from the south-west) -> a tile id; a usage error otherwise.
+terrainlod::TileId parse_tile(const std::string& text);
+
+// How a DEM file becomes heights on a grid (docs/terrainlod.md).
 struct DemArgs {
   std::string path;
-  std::string cell_size;   // "dx" or "dx,dy"; overrides the file's georeference
-  std::string origin;      // "x0,y0": centre of the south-west sample
+  std::vector<double> cell_size;  // {dx} or {dx, dy}; overrides the file's georeference
+  std::vector<double> origin;     // {x0, y0}: centre of the south-west sample
   double z_scale = 1, z_offset = 0;
-  std::string nodata;      // a number, or "nan" to accept NaN heights as nodata
-  std::string diagonal = "short";
+  std::optional<double> nodata;   // overrides the file's; NaN accepts NaN heights as nodata
+  terrainlod::DiagonalRule diagonal = terrainlod::DiagonalRule::shortest;
 };
 
 struct SimplifyArgs {
@@ -23,7 +42,7 @@ struct SimplifyArgs {
   std::string to;
   std::string report;
   bool quiet = false;
-  std::string start = "rtin";  // engine start mesh: rtin or lattice
+  terrainlod::StartRule start = terrainlod::StartRule::rtin;  // engine start mesh
 };
 
 struct StatsArgs {
@@ -42,21 +61,21 @@ struct BuildArgs {
   double height_quantum = 0.25;
   double z_quantum = 0;   // 0 = 1 for integer DEMs, else 0.01
   double leaf_error = 0;
-  std::string reference = "l+2";
-  std::string start = "rtin";  // engine start mesh: rtin or lattice
-  std::string coding = "progressive";  // tile coding (spec 2.8): progressive or standalone
+  terrainlod::Reference reference = terrainlod::Reference::level_plus_2;
+  terrainlod::StartRule start = terrainlod::StartRule::rtin;  // engine start mesh
+  Coding coding = Coding::progressive;  // tile coding
   int threads = 0;
   std::string report;
   bool progress = false;
   std::string texture;               // image file, "hillshade", or empty: no textures
   std::string texture_mip;           // or a prefiltered pyramid PREFIX_<k>.png (resample mip build)
-  std::string texture_format = "png";  // png (lossless) or jpeg
+  TextureFormat texture_format = TextureFormat::png;  // png (lossless) or jpeg
   int texture_quality = 90;          // JPEG quality
 };
 
 struct DecodeArgs {
   std::string pyramid;
-  std::string tile;       // L/X/Y
+  terrainlod::TileId tile;
   int mask = 0;
   std::string output = "-";
   std::string to;

@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -11,23 +12,17 @@
 namespace fest::terrainlod_tool {
 namespace {
 
-std::vector<double> numbers(const std::string& text, const char* flag) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ',')) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-      v = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != part.size() || !std::isfinite(v))
-      throw usage_error("{} expects numbers separated by commas (got '{}')", flag, text);
-    out.push_back(v);
-  }
+// "2,3" for messages that quote what was given.
+std::string joined(const std::vector<double>& values) {
+  std::string out;
+  for (double v : values) out += (out.empty() ? "" : ",") + fmt::format("{}", v);
   return out;
+}
+
+bool all_finite(const std::vector<double>& values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
 }
 
 }  // namespace
@@ -39,29 +34,44 @@ terrainlod::DiagonalRule diagonal_rule(const std::string& name) {
   throw usage_error("--diagonal must be short, alternate or ne (got '{}')", name);
 }
 
+const char* diagonal_name(terrainlod::DiagonalRule d) {
+  switch (d) {
+    case terrainlod::DiagonalRule::alternate: return "alternate";
+    case terrainlod::DiagonalRule::ne: return "ne";
+    default: return "short";
+  }
+}
+
+const char* start_name(terrainlod::StartRule s) { return s == terrainlod::StartRule::lattice ? "lattice" : "rtin"; }
+
+const char* reference_name(terrainlod::Reference r) {
+  switch (r) {
+    case terrainlod::Reference::original: return "original";
+    case terrainlod::Reference::level_plus_1: return "l+1";
+    default: return "l+2";
+  }
+}
+
+const char* coding_name(Coding c) { return c == Coding::progressive ? "progressive" : "standalone"; }
+
 LoadedDem load_dem(const DemArgs& args) {
   LoadedDem d;
   d.name = is_stdio(args.path) ? "-" : args.path;
   std::optional<double> nodata;
   bool nan_is_nodata = false;
-  if (!args.nodata.empty()) {
-    if (args.nodata == "nan" || args.nodata == "NaN") nan_is_nodata = true;
-    else nodata = numbers(args.nodata, "--nodata").at(0);
+  if (args.nodata) {
+    if (std::isnan(*args.nodata)) nan_is_nodata = true;
+    else nodata = *args.nodata;
   }
   // Flags are checked before the (possibly large) DEM is read.
-  std::vector<double> cell, origin;
-  if (!args.cell_size.empty()) {
-    cell = numbers(args.cell_size, "--cell-size");
-    if (cell.size() > 2 || cell[0] <= 0 || cell.back() <= 0)
-      throw usage_error("--cell-size expects dx or dx,dy, both positive (got '{}')", args.cell_size);
-  }
-  if (!args.origin.empty()) {
-    origin = numbers(args.origin, "--origin");
-    if (origin.size() != 2) throw usage_error("--origin expects x0,y0 (got '{}')", args.origin);
-  }
+  const std::vector<double>& cell = args.cell_size;
+  const std::vector<double>& origin = args.origin;
+  if (!cell.empty() && (cell.size() > 2 || !all_finite(cell) || cell[0] <= 0 || cell.back() <= 0))
+    throw usage_error("--cell-size expects dx or dx,dy, both positive (got '{}')", joined(cell));
+  if (!origin.empty() && (origin.size() != 2 || !all_finite(origin)))
+    throw usage_error("--origin expects x0,y0 (got '{}')", joined(origin));
   if (!std::isfinite(args.z_scale) || args.z_scale == 0 || !std::isfinite(args.z_offset))
     throw usage_error("--z-scale must be finite and non-zero, --z-offset finite");
-  diagonal_rule(args.diagonal);
 
   d.raster = formats::read_dem(args.path, nodata);
   auto& r = d.raster;

@@ -1,28 +1,39 @@
 // terrainlod: multiresolution terrain with a guaranteed vertical error per tile
-// (specs/terrainlod.md): simplify, build, decode, extract, verify, stats.
+// (docs/terrainlod.md): simplify, build, decode, extract, verify, stats.
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 namespace {
 
 using namespace fest::terrainlod_tool;
+namespace tl = fest::terrainlod;
+
+const std::vector<std::pair<std::string, tl::DiagonalRule>> kDiagonals{
+    {"short", tl::DiagonalRule::shortest}, {"alternate", tl::DiagonalRule::alternate}, {"ne", tl::DiagonalRule::ne}};
+const std::vector<std::pair<std::string, tl::StartRule>> kStarts{{"rtin", tl::StartRule::rtin}, {"lattice", tl::StartRule::lattice}};
+const std::vector<std::pair<std::string, tl::Reference>> kReferences{
+    {"l+2", tl::Reference::level_plus_2}, {"l+1", tl::Reference::level_plus_1}, {"original", tl::Reference::original}};
+const std::vector<std::pair<std::string, Coding>> kCodings{{"progressive", Coding::progressive}, {"standalone", Coding::standalone}};
+const std::vector<std::pair<std::string, TextureFormat>> kTextureFormats{{"png", TextureFormat::png}, {"jpeg", TextureFormat::jpeg}};
 
 void add_dem_options(CLI::App* cmd, DemArgs& d) {
   cmd->add_option("dem", d.path,
                   "DEM: GeoTIFF, ESRI ASCII grid, 16-bit PNG/PGM, .npy, PFM or any raster GDAL reads; - = standard input")
       ->required();
-  cmd->add_option("--cell-size", d.cell_size, "Sample spacing dx[,dy] in world units (overrides the file)");
-  cmd->add_option("--origin", d.origin, "x0,y0: world position of the south-west sample (overrides the file)");
+  cmd->add_option("--cell-size", d.cell_size, "Sample spacing dx[,dy] in world units (overrides the file)")->delimiter(',')->allow_extra_args(false);
+  cmd->add_option("--origin", d.origin, "x0,y0: world position of the south-west sample (overrides the file)")->delimiter(',')->allow_extra_args(false);
   cmd->add_option("--z-scale", d.z_scale, "Height = value x scale + offset");
   cmd->add_option("--z-offset", d.z_offset, "Height = value x scale + offset");
   cmd->add_option("--nodata", d.nodata, "Nodata value (overrides the file's); nan accepts NaN heights as nodata");
-  cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne")
-      ->check(CLI::IsMember({"short", "alternate", "ne"}));
+  fest::cli::enum_words(cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne"), kDiagonals);
 }
 
 }  // namespace
@@ -43,8 +54,7 @@ int main(int argc, char** argv) {
   s->add_option("-o,--output", simplify.output, "Mesh file (.ply .obj .off .stl .drc); - = standard output (PLY)");
   s->add_option("--to", simplify.to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
-  s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)")
-      ->check(CLI::IsMember({"rtin", "lattice"}));
+  fest::cli::enum_words(s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)"), kStarts);
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
@@ -55,8 +65,7 @@ int main(int argc, char** argv) {
   b->add_option("--texture-mip", build.texture_mip,
                 "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
       ->excludes(tex_opt);
-  b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg")
-      ->check(CLI::IsMember({"png", "jpeg"}));
+  fest::cli::enum_words(b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg"), kTextureFormats);
   b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")
       ->check(CLI::Range(1, 100));
   b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
@@ -65,15 +74,13 @@ int main(int argc, char** argv) {
   b->add_option("--height-quantum", build.height_quantum, "Interior height quantum as a fraction of eps_l (q)");
   b->add_option("--z-quantum", build.z_quantum, "Finest height quantum (default 1 for integer DEMs, else 0.01)");
   b->add_option("--leaf-error", build.leaf_error, "Tolerance of the leaf level (height units)");
-  b->add_option("--reference", build.reference,
-                "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)")
-      ->check(CLI::IsMember({"l+2", "l+1", "original"}));
-  b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice")
-      ->check(CLI::IsMember({"rtin", "lattice"}));
-  b->add_option("--coding", build.coding,
-                "Tile coding: progressive (a child tile codes only what its parent does not give; decoding needs the parent) "
-                "or standalone (every tile decodable alone)")
-      ->check(CLI::IsMember({"progressive", "standalone"}));
+  fest::cli::enum_words(b->add_option("--reference", build.reference,
+                "What level l is measured against: l+2 (the seed's, <= 4/3 eps_l), l+1 (<= 2 eps_l) or original (the DEM, eps_l)"), kReferences);
+  fest::cli::enum_words(b->add_option("--start", build.start, "What each tile's engine decimates from: rtin (a coarse RTIN within eps_l) or lattice"), kStarts);
+  fest::cli::enum_words(b->add_option("--coding", build.coding,
+                                      "Tile coding: progressive (a child tile codes only what its parent does not give; "
+                                      "decoding needs the parent) or standalone (every tile decodable alone)"),
+                        kCodings);
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
   b->add_flag("--progress", build.progress, "Progress bar on standard error");
   fest::cli::add_threads(*b, build.threads);
@@ -81,7 +88,8 @@ int main(int argc, char** argv) {
   DecodeArgs decode;
   auto* d = app.add_subcommand("decode", "Decode one tile for a neighbour mask to a mesh");
   d->add_option("pyramid", decode.pyramid, "Pyramid archive (.tlp) or directory")->required();
-  d->add_option("--tile", decode.tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
+  std::string decode_tile;
+  d->add_option("--tile", decode_tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
   d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer");
   d->add_option("-o,--output", decode.output, "Mesh file; - = standard output (PLY)");
   d->add_option("--to", decode.to, "Output format: ply, obj, off, stl or drc");
@@ -107,8 +115,8 @@ int main(int argc, char** argv) {
   auto* v = app.add_subcommand("verify", "Check a pyramid: decoding, the error bound of every transition, cracks");
   v->add_option("pyramid", verify.pyramid, "Pyramid archive (.tlp) or directory")->required();
   v->add_option("--dem", verify.dem.path, "The DEM it was built from: check every triangulation within 4/3 eps");
-  v->add_option("--cell-size", verify.dem.cell_size, "As for build");
-  v->add_option("--origin", verify.dem.origin, "As for build");
+  v->add_option("--cell-size", verify.dem.cell_size, "As for build")->delimiter(',')->allow_extra_args(false);
+  v->add_option("--origin", verify.dem.origin, "As for build")->delimiter(',')->allow_extra_args(false);
   v->add_option("--z-scale", verify.dem.z_scale, "As for build");
   v->add_option("--z-offset", verify.dem.z_offset, "As for build");
   v->add_option("--nodata", verify.dem.nodata, "As for build");
@@ -130,7 +138,10 @@ int main(int argc, char** argv) {
   return fest::cli::run(app, argc, argv, [&] {
     if (s->parsed()) return run_simplify(simplify);
     if (b->parsed()) return run_build(build);
-    if (d->parsed()) return run_decode(decode);
+    if (d->parsed()) {
+      decode.tile = parse_tile(decode_tile);
+      return run_decode(decode);
+    }
     if (x->parsed()) return run_extract(extract);
     if (v->parsed()) return run_verify(verify);
     if (q->parsed()) return run_export_qm(qm);

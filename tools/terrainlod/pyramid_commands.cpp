@@ -279,6 +279,8 @@ std::string tile_name(const terrainlod::TileId& id) {
   return std::to_string(id.level) + "-" + std::to_string(id.x) + "-" + std::to_string(id.y);
 }
 
+}  // namespace
+
 terrainlod::TileId parse_tile(const std::string& s) {
   terrainlod::TileId id;
   char a = 0, b = 0;
@@ -287,6 +289,8 @@ terrainlod::TileId parse_tile(const std::string& s) {
     throw usage_error("--tile expects L/X/Y (got '{}')", s);
   return id;
 }
+
+namespace {
 
 terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& where) {
   terrainlod::Camera c;
@@ -420,7 +424,7 @@ std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const std
   lay.width = dem.grid.width;
   lay.height = dem.grid.height;
   formats::ImageWriteOptions opt;
-  const formats::Format format = args.texture_format == "jpeg" ? formats::Format::jpeg : formats::Format::png;
+  const formats::Format format = args.texture_format == TextureFormat::jpeg ? formats::Format::jpeg : formats::Format::png;
   if (format == formats::Format::jpeg) opt.jpeg_quality = args.texture_quality;
   std::map<terrainlod::TileId, std::size_t> at;
   for (std::size_t i = 0; i < tiles.size(); ++i) at[tiles[i].id] = i;
@@ -476,11 +480,9 @@ int run_build(const BuildArgs& args) {
   terrainlod::plan_pyramid(2, 2, 1, 1, params.pyramid);  // usage errors before reading
   params.height_quantum = args.height_quantum;
   params.leaf_error = args.leaf_error;
-  params.reference = args.reference == "original" ? terrainlod::Reference::original
-                     : args.reference == "l+1"    ? terrainlod::Reference::level_plus_1
-                                                  : terrainlod::Reference::level_plus_2;
-  params.diagonal = diagonal_rule(args.dem.diagonal);
-  params.start = args.start == "lattice" ? terrainlod::StartRule::lattice : terrainlod::StartRule::rtin;
+  params.reference = args.reference;
+  params.diagonal = args.dem.diagonal;
+  params.start = args.start;
   params.threads = resolve_threads(args.threads);
   if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
 
@@ -583,12 +585,12 @@ int run_build(const BuildArgs& args) {
                              {"height_quantum", args.height_quantum},
                              {"z_quantum", params.z_quantum},
                              {"leaf_error", args.leaf_error},
-                             {"diagonal", args.dem.diagonal},
+                             {"diagonal", diagonal_name(args.dem.diagonal)},
                              {"levels", pyr.levels},
                              {"padded", pyr.padded},
-                             {"coding", args.coding},
+                             {"coding", coding_name(args.coding)},
                              {"connectivity", "strips"},
-                             {"reference", args.reference},
+                             {"reference", reference_name(args.reference)},
                              {"level", levels},
                              {"texture", nullptr},
                              {"tool", "terrainlod 1"}};
@@ -603,14 +605,14 @@ int run_build(const BuildArgs& args) {
     textures = texture_tiles(pyr, entries, pixels, hillshade || !placement ? terrainlod::ImagePlacement::samples : *placement, georeferenced,
                              args, texels, dem, mips);
     for (const auto& t : textures) texture_bytes += t.size();
-    manifest["texture"] = {{"format", args.texture_format},
+    manifest["texture"] = {{"format", args.texture_format == TextureFormat::jpeg ? "jpeg" : "png"},
                            {"texels", texels},
                            {"channels", pixels.channels()},
                            {"source", hillshade ? "hillshade" : std::filesystem::path(texture_name).filename().string()},
                            {"placement", georeferenced ? "georeferenced"
                                          : hillshade || *placement == terrainlod::ImagePlacement::samples ? "samples" : "extent"},
                            {"filter", mips.empty() ? "2x2 box mean per level" : "prefiltered pyramid (--texture-mip), one level per tile level"}};
-    if (args.texture_format == "jpeg") manifest["texture"]["quality"] = args.texture_quality;
+    if (args.texture_format == TextureFormat::jpeg) manifest["texture"]["quality"] = args.texture_quality;
   }
   const double texture_ms = ms_since(t3);
   for (std::size_t i = 0; i < textures.size(); ++i) entries[i].texture_length = static_cast<std::uint32_t>(textures[i].size());
@@ -622,7 +624,7 @@ int run_build(const BuildArgs& args) {
     // final one). Progressive coding recodes each level against the level before it
     // (spec 2.8): that level's standalone blobs are kept (coded, small) and only the
     // parents of the chunk of rows at hand are decoded.
-    const bool progressive = args.coding == "progressive";
+    const bool progressive = args.coding == Coding::progressive;
     auto for_each_tile = [&](auto&& emit) {
       std::string parent_store, level_store;            // standalone blobs of the previous / this level
       std::vector<std::size_t> parent_at, level_at;     // their offsets (one more at the end)
@@ -671,7 +673,7 @@ int run_build(const BuildArgs& args) {
     if (archive) {
       // The index holds each tile's final length, known only once it is recoded: the head
       // is written as a placeholder of its (fixed) size and filled in at the end.
-      std::string head = archive_head(manifest, entries);
+      std::string head = terrainlod::encode_tlp_head(manifest.dump(), entries);
       AtomicFile out(args.output);
       std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
       if (!f) throw io_error("cannot write {}", args.output);
@@ -684,7 +686,7 @@ int run_build(const BuildArgs& args) {
           if (!texture.empty()) ok = ok && std::fwrite(texture.data(), 1, texture.size(), f) == texture.size();
           file_bytes += blob.size() + texture.size();
         });
-        const std::string final_head = archive_head(manifest, entries);
+        const std::string final_head = terrainlod::encode_tlp_head(manifest.dump(), entries);
         if (final_head.size() != head.size()) throw runtime_failure("archive head changed size");
         ok = ok && std::fseek(f, 0, SEEK_SET) == 0 && std::fwrite(final_head.data(), 1, final_head.size(), f) == final_head.size();
       } catch (...) {
@@ -695,7 +697,7 @@ int run_build(const BuildArgs& args) {
       if (!ok) throw io_error("cannot write {}", args.output);
       out.commit();
     } else {
-      DirectoryPyramidWriter out(args.output, manifest, args.texture_format == "jpeg" ? "jpg" : "png");
+      DirectoryPyramidWriter out(args.output, manifest, args.texture_format == TextureFormat::jpeg ? "jpg" : "png");
       for_each_tile([&](const TileEntry& e, std::string_view blob, std::string_view texture) {
         out.add(e.id, blob, texture);
         file_bytes += blob.size() + texture.size();
@@ -817,14 +819,15 @@ int run_pyramid_stats(const std::string& path) {
 }
 
 int run_decode(const DecodeArgs& args) {
-  const terrainlod::TileId id = parse_tile(args.tile);
+  const terrainlod::TileId id = args.tile;
   if (args.mask < 0 || args.mask > 15) throw usage_error("--mask must be 0..15 (got {})", args.mask);
   const auto out = mesh_output(args.output, args.to);
   PyramidFile pyr = open_pyramid(args.pyramid);
   if (!pyr.has(id)) throw bad_input("pyramid has no tile {}/{}/{} ({})", id.level, id.x, id.y, pyr.name());
   const auto& t = pyr.tile(id);
   if ((static_cast<unsigned>(args.mask) & ~t.refinable) != 0)
-    throw bad_input("tile {} has no finer neighbour on the sides of mask {} (refinable sides: {})", args.tile, args.mask, t.refinable);
+    throw bad_input("tile {}/{}/{} has no finer neighbour on the sides of mask {} (refinable sides: {})", id.level, id.x, id.y,
+                    args.mask, t.refinable);
   const std::string bytes = formats::write_mesh(
       world_mesh(pyr, {{id, terrainlod::triangulate(t, static_cast<unsigned>(args.mask), pyr.geometry(id.level))}}), out.format);
   std::string texture;

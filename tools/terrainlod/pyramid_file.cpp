@@ -11,19 +11,14 @@ namespace fest::terrainlod_tool {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr char kMagic[4] = {'F', 'T', 'L', 'P'};
-constexpr std::uint8_t kVersion = 1;
-constexpr std::size_t kEntryBytes = 1 + 4 + 4 + 8 + 4 + 8 + 4;
-
-template <typename T>
-void put_le(std::string& s, T v) {
-  for (std::size_t b = 0; b < sizeof(T); ++b) s.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * b)) & 0xff));
-}
-template <typename T>
-T get_le(std::string_view s, std::size_t at) {
-  std::uint64_t v = 0;
-  for (std::size_t b = 0; b < sizeof(T); ++b) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(s[at + b])) << (8 * b);
-  return static_cast<T>(v);
+// The archive codec's errors name no file; the tool adds which one.
+template <typename F>
+auto naming(const std::string& name, F&& f) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    throw Error(e.status(), fmt::format("{} ({})", e.what(), name));
+  }
 }
 
 std::string relative_tile_path(const terrainlod::TileId& id, const std::string& extension) {
@@ -37,30 +32,6 @@ void write_file(const fs::path& p, std::string_view bytes) {
 }
 
 }  // namespace
-
-bool looks_like_archive(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == std::string_view(kMagic, 4); }
-
-std::string archive_head(const nlohmann::json& manifest, const std::vector<TileEntry>& tiles) {
-  const std::string m = manifest.dump();
-  std::string out(kMagic, 4);
-  put_le<std::uint8_t>(out, kVersion);
-  put_le<std::uint32_t>(out, static_cast<std::uint32_t>(m.size()));
-  out += m;
-  put_le<std::uint32_t>(out, static_cast<std::uint32_t>(tiles.size()));
-  std::uint64_t offset = out.size() + kEntryBytes * tiles.size();
-  for (const auto& t : tiles) {
-    put_le<std::uint8_t>(out, static_cast<std::uint8_t>(t.id.level));
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(t.id.x));
-    put_le<std::uint32_t>(out, static_cast<std::uint32_t>(t.id.y));
-    put_le<std::uint64_t>(out, offset);
-    put_le<std::uint32_t>(out, t.length);
-    offset += t.length;
-    put_le<std::uint64_t>(out, t.texture_length ? offset : 0);
-    put_le<std::uint32_t>(out, t.texture_length);
-    offset += t.texture_length;
-  }
-  return out;
-}
 
 DirectoryPyramidWriter::DirectoryPyramidWriter(const std::string& dir, const nlohmann::json& manifest, std::string texture_extension)
     : texture_extension_(std::move(texture_extension)) {
@@ -156,25 +127,9 @@ void PyramidFile::parse_manifest(std::string_view text) {
 PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {
   const std::string_view s(bytes_);
   total_bytes_ = s.size();
-  if (!looks_like_archive(s)) throw bad_input("not a terrainlod pyramid (bad magic) ({})", name_);
-  if (s.size() < 9) throw bad_input("pyramid is truncated: {} bytes ({})", s.size(), name_);
-  if (get_le<std::uint8_t>(s, 4) != kVersion)
-    throw bad_input("pyramid version {} is not supported (this is version {}) ({})", get_le<std::uint8_t>(s, 4), kVersion, name_);
-  const std::size_t mlen = get_le<std::uint32_t>(s, 5);
-  if (s.size() < 9 + mlen + 4) throw bad_input("pyramid is truncated in its manifest ({})", name_);
-  parse_manifest(s.substr(9, mlen));
-  std::size_t at = 9 + mlen;
-  const std::size_t count = get_le<std::uint32_t>(s, at);
-  at += 4;
-  if (s.size() < at + count * kEntryBytes) throw bad_input("pyramid is truncated in its tile index ({})", name_);
-  for (std::size_t i = 0; i < count; ++i, at += kEntryBytes) {
-    TileEntry e;
-    e.id = {get_le<std::uint8_t>(s, at), static_cast<int>(get_le<std::uint32_t>(s, at + 1)),
-            static_cast<int>(get_le<std::uint32_t>(s, at + 5))};
-    e.offset = get_le<std::uint64_t>(s, at + 9);
-    e.length = get_le<std::uint32_t>(s, at + 17);
-    e.texture_offset = get_le<std::uint64_t>(s, at + 21);
-    e.texture_length = get_le<std::uint32_t>(s, at + 29);
+  const terrainlod::TlpHead head = naming(name_, [&] { return terrainlod::decode_tlp_head(s); });
+  parse_manifest(head.manifest);
+  for (const TileEntry& e : naming(name_, [&] { return terrainlod::decode_tlp_index(s, head.index_at); })) {
     if (!layout_.exists(e.id)) throw bad_input("pyramid index names tile {}/{}/{} outside the pyramid ({})", e.id.level, e.id.x, e.id.y, name_);
     if (e.offset > s.size() || s.size() - e.offset < e.length)
       throw bad_input("tile {}/{}/{} is truncated: {} of {} bytes ({})", e.id.level, e.id.x, e.id.y,

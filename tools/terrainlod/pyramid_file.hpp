@@ -1,7 +1,6 @@
 #pragma once
 // The two pyramid containers (man5/terrainlod-pyramid.5):
-//  * the .tlp archive: "FTLP", version, the manifest JSON (length-prefixed), an index of
-//    tiles in transmission order (geometry and texture offsets), then the blobs;
+//  * the .tlp archive (its bytes <-> types codec: lib/terrainlod/tlp_archive.hpp);
 //  * the directory: pyramid.json (the manifest) + L/X/Y.tlt + L/X/Y.png (or .jpg).
 // PyramidFile reads either; everything downstream sees the same tiles and textures.
 
@@ -18,22 +17,12 @@
 #include "terrainlod/extract.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/tile_codec.hpp"
+#include "terrainlod/tlp_archive.hpp"
 
 namespace fest::terrainlod_tool {
 
-struct TileEntry {
-  terrainlod::TileId id;
-  std::uint64_t offset = 0;
-  std::uint32_t length = 0;
-  std::uint64_t texture_offset = 0;  // archive only; 0 with length 0 = no texture
-  std::uint32_t texture_length = 0;
-};
-
-// The archive up to the tile blobs (magic, version, manifest, index) for tiles of the
-// given ids, geometry lengths and texture lengths in that order (offsets are computed);
-// each tile's geometry blob, then its texture, follow in the same order, so a reader
-// streaming in transmission order gets both of a tile together.
-std::string archive_head(const nlohmann::json& manifest, const std::vector<TileEntry>& tiles);
+// One tile of the archive's index (lib/terrainlod/tlp_archive.hpp holds the codec).
+using TileEntry = terrainlod::TlpEntry;
 
 // Writes the directory container tile by tile into a temporary sibling that commit()
 // renames into place; destroyed uncommitted, it removes the partial directory. An
@@ -112,7 +101,5 @@ class PyramidFile {
   std::size_t touched_ = 0;
   std::size_t decoded_ = 0;
 };
-
-bool looks_like_archive(std::string_view bytes);
 
 }  // namespace fest::terrainlod_tool

@@ -1,4 +1,4 @@
-#include "manifest_mode.hpp"
+#include "commands.hpp"
 
 #include <atomic>
 #include <cstdio>
@@ -122,7 +122,7 @@ std::string relative_to(const std::string& path, const std::string& session) {
 
 }  // namespace
 
-int run_manifest(const ManifestArgs& a) {
+int run_session(const SessionOptions& a) {
   const std::string where = is_stdio(a.manifest) ? "<stdin>" : a.manifest;
   const json manifest = formats::parse(formats::load_input(a.manifest), formats::read_json_document);
   if (!manifest.is_object() || manifest.value("version", 0) != 1) throw bad_input("not a capture manifest, version 1 ({})", where);
@@ -180,7 +180,7 @@ int run_manifest(const ManifestArgs& a) {
     response = response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
   } else {
     const hdr::ExposureStack first = stack_of(sets.front());
-    if (a.method == "robertson") response = hdr::recover_response_robertson(first);
+    if (a.method == Method::robertson) response = hdr::recover_response_robertson(first);
     else {
       hdr::DebevecOptions o;
       o.samples = a.samples;
