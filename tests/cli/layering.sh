@@ -49,9 +49,6 @@ KNOWN_VIOLATIONS=(
   # A tool including another tool's files.
   # A test compiling a tool's source instead of linking fest_<tool>_app.
   # Tools whose command files are not yet the library fest_<tool>_app.
-  "tools/facefit: tool-app: no fest_facefit_app library for its other .cpp files"
-  "tools/hdrmerge: tool-app: no fest_hdrmerge_app library for its other .cpp files"
-  "tools/terrainlod: tool-app: no fest_terrainlod_app library for its other .cpp files"
   # Messages in lib/ that name the tools' flags instead of the domain's terms.
   "lib/brdffit/cluster.cpp: flag-in-lib: --clusters"
   "lib/brdffit/cluster.cpp: flag-in-lib: --global-iters"
