@@ -1,6 +1,6 @@
 #pragma once
 // Edgebreaker connectivity coding for closed, connected, oriented genus-0 triangle meshes
-// (the "planar triangulations" of seed chapter 5; specs/ebcode.md sections 2.1-2.3).
+// (the "planar triangulations" of seed chapter 5; docs/ebcode.md §1-2).
 //
 // In memory only: triangles are vertex-index triples, the code is a vector of symbols.
 // Bitstreams, entropy coding and general meshes come later and build on this.

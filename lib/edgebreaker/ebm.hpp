@@ -2,7 +2,7 @@
 // The .ebm bitstream (spec 2.11, documented in man/man5/ebm.5): a whole mesh -- general
 // connectivity, quantised positions, the side information that restores non-manifold
 // input exactly -- in one CRC-protected container. The format is this algorithm's own
-// output, so it lives here with it (DESIGN.md), in memory only: bytes in, bytes out.
+// output, so it lives here with it (a domain's own byte format belongs to its library), in memory only: bytes in, bytes out.
 
 #include <array>
 #include <cstdint>

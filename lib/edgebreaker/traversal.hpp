@@ -1,5 +1,5 @@
 #pragma once
-// Edgebreaker for general closed meshes (specs/ebcode.md 2.2 and 2.8, steps 6-7): several
+// Edgebreaker for general closed meshes (docs/ebcode.md §5): several
 // components, one after the other, and handles (genus > 0) through handle events, the
 // mechanism Draco calls "topology split events". Holes and non-manifold input are made
 // closed and manifold before this (prepare.hpp).

@@ -1,5 +1,5 @@
 #pragma once
-// brdffit factor (specs/brdffit.md §2.10, §4): separable display textures of one BRDF.
+// brdffit factor (docs/brdffit.md §6): separable display textures of one BRDF.
 
 #include <CLI/CLI.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-// glTF 2.0 export (specs/brdffit.md §2.10 `export`): a metallic-roughness approximation of
+// glTF 2.0 export (docs/brdffit.md §6, `export`): a metallic-roughness approximation of
 // the Lafortune materials (lib/brdffit/pbr_appearance.hpp says what is approximated) for
 // viewers that know only PBR materials.
 //

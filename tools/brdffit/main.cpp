@@ -1,8 +1,8 @@
 // brdffit: spatially varying BRDFs from a few registered HDR photographs of a scanned
-// object (specs/brdffit.md; Lensch et al., chapter 8 of the Festschrift). One executable,
+// object (docs/brdffit.md; Lensch et al., chapter 8 of the Festschrift). One executable,
 // one subcommand per stage. The geometry stages (geometry_commands.cpp) run from their
 // CLI11 callbacks; the materials stages (materials_commands.cpp) run after parsing. Both
-// happen inside run_tool, so errors become one line and the exit status of DESIGN.md.
+// happen inside run_tool, so errors become one line and the exit status of README's "Conventions".
 
 #include <cstdio>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The materials side of brdffit (specs/brdffit.md §2.3, §2.5-2.7, §4): the subcommands
+// The materials side of brdffit (docs/brdffit.md §3-5): the subcommands
 // fit, cluster, project and normals. Include only from tools/brdffit/main.cpp.
 
 #include <CLI/CLI.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// capture's calibration subcommands (specs/capture.md §2.6-2.7, §4):
+// capture's calibration subcommands (docs/capture.md §5):
 //   calib-camera     chessboard images -> camera.json (K, dist, RMS; brdffit's cam.json)
 //   calib-turntable  board on the table at known angles -> turntable_cal.json (R_T0, t_T0)
 //   calib-lights     chrome spheres -> lights_cal.json (light position)

@@ -1,4 +1,4 @@
-// capture: acquisition sessions on a turntable station (specs/capture.md §2.5, §4).
+// capture: acquisition sessions on a turntable station (docs/capture.md).
 // Flags only; the subcommands live in *_command.cpp.
 
 #include "calib_commands.hpp"

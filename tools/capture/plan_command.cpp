@@ -1,4 +1,4 @@
-// capture plan: a plan.json from flags (specs/capture.md §4).
+// capture plan: a plan.json from flags (docs/capture.md §2).
 
 #include <cstdio>
 

@@ -1,5 +1,5 @@
 // capture run: the acquisition loop over the station's devices into a session folder
-// (specs/capture.md §2.5), and --dry-run's plan and time estimate.
+// (docs/capture.md §2-3), and --dry-run's plan and time estimate.
 
 #include <atomic>
 #include <csignal>

@@ -1,4 +1,4 @@
-// capture selftest (specs/capture.md §5.4): open every device, read the turntable's
+// capture selftest (docs/capture.md §4): open every device, read the turntable's
 // info, move +10 and -10 degrees, toggle each light with a dark/lit frame difference
 // check, and measure the ambient level with all lights off. A JSON report on standard
 // output; exit 1 when a check fails.

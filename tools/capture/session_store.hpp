@@ -1,5 +1,5 @@
 #pragma once
-// The files of a capture session (specs/capture.md §2.5, §4):
+// The files of a capture session (docs/capture.md §3, fest-capture(5)):
 //   SESSION/a{ai:03}/{light}/e{k:02}.png ...  pictures, each written atomically
 //   SESSION/manifest.journal                   one JSON line per shot, flushed + fsync'ed
 //   SESSION/manifest.json                      rewritten atomically after every view

@@ -1,5 +1,5 @@
 // fluidsim: stable fluids with the chapter's 8-way parallel projection and frame
-// interpolation (specs/fluidsim.md). Flags only; the subcommands live in *_command.cpp.
+// interpolation (docs/fluidsim.md). Flags only; the subcommands live in *_command.cpp.
 
 #include "cli/cli.hpp"
 #include "commands.hpp"

@@ -1,6 +1,6 @@
 // lemtrace: streamlines of a vector field on an unstructured grid with the locally exact
 // method (one closed-form step per tetrahedron), plus cell classification, a benchmark
-// against Runge-Kutta at equal step count, and synthetic grids (specs/lemtrace.md).
+// against Runge-Kutta at equal step count, and synthetic grids (docs/lemtrace.md).
 //
 // Wiring only: this file maps flags onto commands.hpp.
 

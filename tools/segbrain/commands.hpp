@@ -1,5 +1,5 @@
 #pragma once
-// Wiring of segbrain's subcommands (specs/segbrain.md §4).
+// Wiring of segbrain's subcommands (segbrain(1)).
 
 #include <array>
 #include <string>

@@ -1,5 +1,5 @@
 // segbrain: knowledge-based extraction of head and brain from MRI head volumes
-// (Ehricke, seed 000 chapter 2; specs/segbrain.md). This file only declares the flags.
+// (Ehricke, seed 000 chapter 2; docs/segbrain.md). This file only declares the flags.
 
 #include <cstring>
 #include <vector>
