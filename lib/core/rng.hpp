@@ -2,7 +2,7 @@
 // A seeded random source whose output is the same on every standard library (header
 // only): xoshiro256** seeded through splitmix64 and an own Box-Muller transform, because
 // std::normal_distribution differs between libraries and would break golden files.
-// (The same generator as lib/facefit/rng.hpp, here for every domain.)
+// The project's one generator: facefit's Rng is this class.
 
 #include <cmath>
 #include <cstdint>
@@ -27,6 +27,13 @@ class Rng {
   }
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  std::uint64_t below(std::uint64_t n) {  // uniform integer in [0, n)
+    // Rejection keeps the result exactly uniform.
+    const std::uint64_t limit = n == 0 ? 0 : (~std::uint64_t{0} - (~std::uint64_t{0} % n));
+    std::uint64_t x;
+    do x = next(); while (x >= limit);
+    return x % n;
+  }
   double normal() {  // N(0, 1)
     if (has_spare_) {
       has_spare_ = false;
