@@ -118,35 +118,9 @@ void AtomicFile::commit() {
 }
 
 void write_output(const std::string& path, std::string_view bytes) {
-  if (is_stdio(path)) {
-    write_all(STDOUT_FILENO, bytes, "standard output");
-    return;
-  }
-  // A device or pipe (-o /dev/null, a FIFO) is written in place: renaming a temporary
-  // file over it would replace the device node with a regular file.
-  struct stat st;
-  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
-    int dev = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-    if (dev < 0) throw io_error("cannot open: {} ({})", errno_text(), path);
-    try {
-      write_all(dev, bytes, path);
-    } catch (...) {
-      ::close(dev);
-      throw;
-    }
-    if (::close(dev) != 0) throw io_error("cannot write: {} ({})", errno_text(), path);
-    return;
-  }
-  AtomicFile file(path);
-  int fd = ::open(file.temp_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-  if (fd < 0) throw io_error("cannot open: {} ({})", errno_text(), path);
-  try {
-    write_all(fd, bytes, path);
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
-  if (::close(fd) != 0) throw io_error("cannot write: {} ({})", errno_text(), path);
+  // One piece: the same temporary-then-rename, device and standard-output rules.
+  OutputFile file(path);
+  file.write(bytes);
   file.commit();
 }
 
