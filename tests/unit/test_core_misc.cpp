@@ -103,3 +103,16 @@ TEST(Table, ColumnsMustAgree) {
   EXPECT_THROW(t.add_column("z", {1}), fest::Error);
   EXPECT_THROW(t.add_column("x", {1, 2, 3}), fest::Error);
 }
+
+// lib/core/stopwatch.hpp: readings grow and agree in their units.
+#include "core/stopwatch.hpp"
+
+TEST(CoreStopwatch, MsAndSecondsAgree) {
+  fest::Stopwatch w;
+  const double s = w.seconds();
+  const double ms = w.ms();
+  EXPECT_GE(s, 0.0);
+  EXPECT_GE(ms, s * 1000.0);
+  w.restart();
+  EXPECT_LE(w.ms(), ms + 1000.0);
+}
