@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "isosurface/adaptive.hpp"
@@ -22,11 +23,10 @@
 #include "surface_io.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Keeps the `keep` largest components (by triangles; ties: the earlier one), vertices
 // renumbered in their old order.
@@ -63,21 +63,9 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
   const int threads = resolve_threads(o.threads);
   isosurface::ExtractOptions eo;
   eo.threads = threads;
-  if (o.face_rule == "decider") eo.face_rule = isosurface::FaceRule::decider;
-  else if (o.face_rule == "separate") eo.face_rule = isosurface::FaceRule::separate;
-  else throw usage_error("--face-rule must be decider or separate");
-  if (o.tri == "minarea") eo.triangulation = isosurface::Triangulation::minarea;
-  else if (o.tri == "fan") eo.triangulation = isosurface::Triangulation::fan;
-  else if (o.tri == "centroid") eo.triangulation = isosurface::Triangulation::centroid;
-  else throw usage_error("--tri must be minarea, fan or centroid");
-  std::size_t keep = 0;  // 0 = all
-  if (o.component_filter == "largest") keep = 1;
-  else if (o.component_filter != "all") {
-    char* end = nullptr;
-    const long n = std::strtol(o.component_filter.c_str(), &end, 10);
-    if (o.component_filter.empty() || *end || n < 1) throw usage_error("--component-filter must be all, largest or a count >= 1");
-    keep = static_cast<std::size_t>(n);
-  }
+  eo.face_rule = o.face_rule;
+  eo.triangulation = o.tri;
+  const std::size_t keep = o.keep_components;  // 0 = all
   const std::string format = output_format(o.to, o.output);
   if (o.normals && format == "stl") throw usage_error("--normals needs a format with vertex normals (ply, plya, obj, off or drc), not stl");
 
@@ -94,29 +82,15 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
   isosurface::AdaptiveResult ar;
   if (ad) {
     isosurface::AdaptiveOptions ao;
-    if (!ad->focus.empty()) {
-      std::array<double, 3> f{};
-      char* end = nullptr;
-      const char* p = ad->focus.c_str();
-      for (int a = 0; a < 3; ++a) {
-        f[a] = std::strtod(p, &end);
-        if (end == p || (a < 2 && *end != ',') || (a == 2 && *end) || !std::isfinite(f[a])) throw usage_error("--focus takes X,Y,Z, not '{}'", ad->focus);
-        p = end + 1;
-      }
-      // (--cap pads around the grid without moving world or --index-space coordinates)
-      ao.focus = f;
-    }
-    if (ad->max_error == "inf") ao.max_error = std::numeric_limits<double>::infinity();
-    else {
-      char* end = nullptr;
-      ao.max_error = std::strtod(ad->max_error.c_str(), &end);
-      if (ad->max_error.empty() || *end || !(ao.max_error >= 0)) throw usage_error("--max-error takes a value >= 0 or inf");
-    }
+    // (--cap pads around the grid without moving world or --index-space coordinates)
+    ao.focus = ad->focus;
+    if (!(ad->max_error >= 0)) throw usage_error("--max-error takes a value >= 0 or inf");
+    ao.max_error = ad->max_error;
     if (ad->focus_radius < 0) throw usage_error("--focus-radius must be positive");
     ao.focus_radius = ad->focus_radius;
     ao.error_growth = ad->error_growth;
     ao.max_level = ad->max_level;
-    ao.edge_rule = ad->edge_rule == "all" ? isosurface::EdgeRule::all : isosurface::EdgeRule::transitions;
+    ao.edge_rule = ad->edge_rule;
     ao.face_rule = eo.face_rule;
     ao.triangulation = eo.triangulation;
     ao.threads = threads;
@@ -144,7 +118,7 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
     j["mode"] = ad ? "adaptive" : "exact";
     if (ad) {
       j["leaves_per_level"] = ar.leaves_per_level;
-      j["edge_rule"] = ad->edge_rule;
+      j["edge_rule"] = ad->edge_rule == isosurface::EdgeRule::all ? "all" : "transitions";
       j["closure_splits"] = ar.closure_splits;
       j["max_error_bound"] = ar.max_error_bound;
     }
@@ -165,4 +139,4 @@ int run(const ExactOptions& o, const AdaptiveArgs* ad) {
 int run_exact(const ExactOptions& o) { return run(o, nullptr); }
 int run_adaptive(const ExactOptions& o, const AdaptiveArgs& a) { return run(o, &a); }
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool
