@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/file_io.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/volume/voxel_codec.hpp"
 #include "formats/volume/volume_io.hpp"
@@ -261,6 +262,15 @@ Volume read_raw_volume(std::string_view bytes, const RawLayout& layout, const st
                     scalar_type_name(layout.type), need, bytes.size(), where);
   volume_detail::decode_voxels(bytes, layout.type, layout.big_endian, v.voxels);
   return v;
+}
+
+Input load_volume_input(const std::string& path, const VolumeSourceOptions& o) {
+  if (!o.raw) return load_input(path);
+  Input in;
+  in.name = path;
+  in.bytes = read_input(path);
+  in.format = Format::nrrd;  // unused: raw bytes are read with the layout alone
+  return in;
 }
 
 Volume read_volume_source(const Input& in, const VolumeSourceOptions& o) {

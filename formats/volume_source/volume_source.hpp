@@ -42,6 +42,10 @@ RawLayout parse_raw_layout(std::string_view text);
 // layout's type (else Status::bad_input "raw volume of ... needs N bytes, got M (where)").
 Volume read_raw_volume(std::string_view bytes, const RawLayout& layout, const std::string& where);
 
+// The input of read_volume_source: load_input(path), except that the bytes of raw input
+// (options.raw) are taken as they are, neither recognised as a format nor gunzipped.
+Input load_volume_input(const std::string& path, const VolumeSourceOptions& options);
+
 // Throws Status::bad_input naming the input for anything unreadable; Status::usage for a
 // field or frame that does not exist (the message lists what does).
 Volume read_volume_source(const Input& in, const VolumeSourceOptions& options);

@@ -46,13 +46,13 @@ LoadedGrid load_grid(const ExactOptions& o) {
   if (o.iso && !std::isfinite(*o.iso)) throw usage_error("--iso must be a finite number");
   LoadedGrid out;
   out.source = o.input == "-" ? "stdin" : o.input;
-  formats::Input in = formats::load_input(o.input);
-  if (in.bytes.empty()) throw bad_input("empty input ({})", out.source);
   formats::VolumeSourceOptions vo;
   vo.field = o.field;
   vo.component = o.component;
   vo.frame = o.frame;
   vo.raw = o.raw;
+  formats::Input in = formats::load_volume_input(o.input, vo);
+  if (in.bytes.empty()) throw bad_input("empty input ({})", out.source);
   const Volume v = formats::read_volume_source(in, vo);
   for (int a = 0; a < 3; ++a)
     if (v.dims[a] < 2)

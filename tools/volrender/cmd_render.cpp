@@ -367,7 +367,7 @@ int run_render(const RenderArgs& a) {
     // value range over all of them, so that nothing is written for a bad frame and a preset
     // or %-valued transfer function maps a value to the same colour in every frame.
     const std::string name = a.input == "-" ? "stdin" : a.input;
-    const formats::Input in = formats::load_input(a.input);
+    const formats::Input in = formats::load_volume_input(a.input, vo);
     if (in.bytes.empty()) throw bad_input("empty input ({})", name);
     vo.frame = -1;
     const formats::VolumeFrames frames(in, vo);

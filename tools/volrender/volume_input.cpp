@@ -25,7 +25,7 @@ LoadedVolume checked(const Volume& v, const std::string& name) {
 
 LoadedVolume load_volume(const std::string& path, const formats::VolumeSourceOptions& options) {
   const std::string name = path == "-" ? "stdin" : path;
-  formats::Input in = formats::load_input(path);
+  formats::Input in = formats::load_volume_input(path, options);
   if (in.bytes.empty()) throw bad_input("empty input ({})", name);
   return checked(formats::read_volume_source(in, options), name);
 }
