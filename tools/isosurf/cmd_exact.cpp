@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <chrono>
 #include <numeric>
 
 #include <nlohmann/json.hpp>
@@ -26,7 +25,7 @@
 namespace fest::isosurf_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 // Keeps the `keep` largest components (by triangles; ties: the earlier one), vertices
 // renumbered in their old order.

@@ -1,7 +1,6 @@
 // isosurf progressive: a sequence of crack-free meshes, coarse first (--errors), or one
 // adaptive mesh per focus position (--focus-path); docs/isosurf.md "Progressive mode".
 // The volume and its min-max pyramid are built once.
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -24,7 +23,7 @@
 namespace fest::isosurf_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 std::vector<std::array<double, 3>> read_path(const std::string& path) {
   const std::string text = read_input(path);
