@@ -24,18 +24,14 @@ std::string_view next_line(std::string_view bytes, std::size_t& pos) {
   return line;
 }
 
-double component_value(const double* v, int components, const std::string& c) {
+double component_value(const double* v, int components, VectorComponent c) {
   if (components == 1) return v[0];
-  if (c == "x") return v[0];
-  if (c == "y") return components > 1 ? v[1] : 0.0;
-  if (c == "z") return components > 2 ? v[2] : 0.0;
+  if (c == VectorComponent::x) return v[0];
+  if (c == VectorComponent::y) return components > 1 ? v[1] : 0.0;
+  if (c == VectorComponent::z) return components > 2 ? v[2] : 0.0;
   double s = 0;
   for (int k = 0; k < components; ++k) s += v[k] * v[k];
   return std::sqrt(s);
-}
-
-void check_component(const std::string& c) {
-  if (c != "mag" && c != "x" && c != "y" && c != "z") throw usage_error("--component must be mag, x, y or z, not '{}'", c);
 }
 
 Volume decode_frame(const StreamFrame& fr, const VolumeSourceOptions& o);
@@ -274,7 +270,6 @@ Input load_volume_input(const std::string& path, const VolumeSourceOptions& o) {
 }
 
 Volume read_volume_source(const Input& in, const VolumeSourceOptions& o) {
-  check_component(o.component);
   if (o.raw) {
     if (o.frame >= 0) throw usage_error("--frame applies to frame streams and 4-D series, not raw input ({})", in.name);
     if (!o.field.empty()) throw usage_error("--field applies to VTI and frame-stream input, not raw ({})", in.name);
@@ -290,7 +285,6 @@ Volume read_volume_source(const Input& in, const VolumeSourceOptions& o) {
 }
 
 VolumeFrames::VolumeFrames(const Input& in, const VolumeSourceOptions& o) : in_(&in), options_(o) {
-  check_component(o.component);
   if (!o.raw && is_frame_stream(in.bytes)) {
     stream_ = split_frame_stream(in.bytes, in.name);
     if (stream_.empty()) throw bad_input("empty frame stream ({})", in.name);

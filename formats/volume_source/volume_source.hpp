@@ -27,9 +27,12 @@ struct RawLayout {
   std::array<double, 3> spacing{1.0, 1.0, 1.0};
 };
 
+// What a vector field becomes: its magnitude or one component (a scalar field is itself).
+enum class VectorComponent { mag, x, y, z };
+
 struct VolumeSourceOptions {
   std::string field;              // VTI point array / frame-stream field; "" = active scalars / first field
-  std::string component = "mag";  // vectors: mag | x | y | z
+  VectorComponent component = VectorComponent::mag;
   long frame = -1;                // frame-stream / 4-D series frame (0-based); -1 = the last
   std::optional<RawLayout> raw;   // the bytes are a headerless volume of this layout
 };

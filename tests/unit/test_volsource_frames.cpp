@@ -38,7 +38,7 @@ TEST(VolumeSource, FrameStreamFieldsAndFrames) {
   o.field = "velocity";
   v = formats::read_volume_source(in, o);
   EXPECT_DOUBLE_EQ(v.voxels[5], 15.0);  // |(5, 10, 10)|
-  o.component = "y";
+  o.component = formats::VectorComponent::y;
   v = formats::read_volume_source(in, o);
   EXPECT_DOUBLE_EQ(v.voxels[5], 10.0);
   o.field = "pressure";

@@ -20,7 +20,7 @@ struct ExactOptions {
   std::optional<double> iso;
   std::vector<long long> labels;      // surface of the union of these labels (iso 0.5 of the indicator); empty = --iso
   std::string field;                  // VTI / frame stream
-  std::string component = "mag";
+  formats::VectorComponent component = formats::VectorComponent::mag;
   long frame = -1;
   std::optional<formats::RawLayout> raw;  // --raw: the input is a headerless volume
   bool cap = false;                   // pad by one layer of cap_value

@@ -97,6 +97,13 @@ void fill(AdaptiveArgs& a, const ListFlags& t) {
   a.max_error = tolerance(t.max_error, "--max-error");
 }
 
+// --component mag|x|y|z
+void component(CLI::App* s, fest::formats::VectorComponent& c) {
+  using fest::formats::VectorComponent;
+  fest::cli::enum_words<VectorComponent>(s->add_option("--component", c, "Vector fields: mag, x, y or z"),
+                                         {{"mag", VectorComponent::mag}, {"x", VectorComponent::x}, {"y", VectorComponent::y}, {"z", VectorComponent::z}});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -118,7 +125,7 @@ int main(int argc, char** argv) {
   e->add_option("--iso", ex.iso, "Iso-value; inside is f >= iso (use half-integers on integer data)");
   e->add_option("--label", ext.labels, "Surface of the union of these labels K[,K...] (iso 0.5 of the indicator)");
   e->add_option("--field", ex.field, "VTI point array or frame-stream field");
-  e->add_option("--component", ex.component, "Vector fields: mag, x, y or z")->check(CLI::IsMember({"mag", "x", "y", "z"}));
+  component(e, ex.component);
   e->add_option("--frame", ex.frame, "Frame of a frame stream (0-based; default the last)")->check(CLI::NonNegativeNumber);
   auto* cap = e->add_option("--cap", ex.cap_value, "Pad by one layer of VALUE (default min(f)-1) so boundary-cut surfaces close")
                   ->expected(0, 1);
@@ -147,7 +154,7 @@ int main(int argc, char** argv) {
   d->add_option("--iso", ad_ex.iso, "Iso-value");
   d->add_option("--label", adt.labels, "Surface of the union of these labels");
   d->add_option("--field", ad_ex.field, "VTI point array or frame-stream field");
-  d->add_option("--component", ad_ex.component, "Vector fields: mag, x, y or z")->check(CLI::IsMember({"mag", "x", "y", "z"}));
+  component(d, ad_ex.component);
   d->add_option("--frame", ad_ex.frame, "Frame of a frame stream")->check(CLI::NonNegativeNumber);
   auto* dcap = d->add_option("--cap", ad_ex.cap_value, "Pad by one layer of VALUE (default min(f)-1)")->expected(0, 1);
   face_rule(d, ad_ex, "decider or separate");

@@ -50,7 +50,8 @@ struct RenderArgs {
   std::string input = "-";
   std::string output = "-";        // with --all-frames: a pattern with %d (e.g. %05d)
   std::string to;                  // png | pfm | exr ("" = from -o, else png)
-  std::string field, component = "mag";
+  std::string field;
+  formats::VectorComponent component = formats::VectorComponent::mag;
   long frame = -1;                 // -1 = the last
   bool all_frames = false;         // --frame all: one image per frame
   std::optional<formats::RawLayout> raw;  // --raw: the input is a headerless volume

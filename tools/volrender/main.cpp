@@ -162,6 +162,13 @@ void fill(RenderArgs& r, const RenderText& t) {
   r.mesh_color = {mc[0], mc[1], mc[2]};
 }
 
+// --component mag|x|y|z
+void component(CLI::App* s, fest::formats::VectorComponent& c) {
+  using fest::formats::VectorComponent;
+  fest::cli::enum_words<VectorComponent>(s->add_option("--component", c, "Vector fields: mag, x, y or z"),
+                                         {{"mag", VectorComponent::mag}, {"x", VectorComponent::x}, {"y", VectorComponent::y}, {"z", VectorComponent::z}});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -194,7 +201,7 @@ int main(int argc, char** argv) {
     s->add_option("-o,--output", ra.output, "Image (- = stdout; %s pattern for stereo files; %d pattern for --frame all)");
     s->add_option("--to", ra.to, "png (8-bit sRGB), pfm or exr (linear float)");
     s->add_option("--field", ra.field, "VTI point array or frame-stream field");
-    s->add_option("--component", ra.component, "Vector fields: mag, x, y or z")->check(CLI::IsMember({"mag", "x", "y", "z"}));
+    component(s, ra.component);
     s->add_option("--frame", rt.frame, "Frame of a frame stream or 4-D series (0-based; default the last), or all: one image per frame");
     add_raw(s, rt.raw, rt.raw_spacing);
     s->add_option("--spp", ra.spp, "Rays per pixel: 1, 4, 9 or 16 (stratified, box-filtered)")->check(CLI::IsMember({1, 4, 9, 16}));
