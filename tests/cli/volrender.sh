@@ -327,6 +327,11 @@ check "frame 2 of all = --frame 2" cmp "$W/f2.pfm" "$W/fa/f002.pfm"
 run volrender mip "$W/series.nrrd" --frame all "${fcam[@]}" -o "$W/fb/f%03d.pfm"
 expect_status 0
 check "a 4-D NRRD series gives the same frames" cmp "$W/fa/f003.pfm" "$W/fb/f003.pfm"
+mkdir -p "$W/fs"
+run volrender mip "$W/stream.nrrd" --frame all --window 0,100 --screen '-2,-2,30;26,-2,30;-2,26,30' --eye 11,11,60 --stereo 2 \
+    --size 16x16 -o "$W/fs/%02d_%s.png"
+expect_status 0
+check "stereo pairs per frame: %02d and %s" test "$(ls "$W/fs" | tr '\n' ' ')" = "00_L.png 00_R.png 01_L.png 01_R.png 02_L.png 02_R.png 03_L.png 03_R.png "
 run volrender mip "$W/stream.nrrd" --frame all "${fcam[@]}" -o "$W/x.pfm"
 expect_clean_failure 2 volrender
 expect_stderr_has "%d"

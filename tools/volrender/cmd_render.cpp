@@ -76,12 +76,12 @@ std::size_t frame_field(const std::string& pattern, std::size_t& length, int& wi
   std::size_t found = std::string::npos;
   for (std::size_t p = pattern.find('%'); p != std::string::npos; p = pattern.find('%', p + 1)) {
     std::size_t q = p + 1;
-    zero = q < pattern.size() && pattern[q] == '0';
-    width = 0;
-    while (q < pattern.size() && pattern[q] >= '0' && pattern[q] <= '9') width = 10 * width + (pattern[q++] - '0');
+    const bool z = q < pattern.size() && pattern[q] == '0';
+    int w = 0;
+    while (q < pattern.size() && pattern[q] >= '0' && pattern[q] <= '9' && w < 100) w = 10 * w + (pattern[q++] - '0');
     if (q < pattern.size() && pattern[q] == 'd') {
       if (found != std::string::npos) throw usage_error("output pattern '{}' has more than one %d", pattern);
-      found = p, length = q + 1 - p;
+      found = p, length = q + 1 - p, width = w, zero = z;
     }
   }
   return found;
