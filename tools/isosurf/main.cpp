@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
   e->add_option("--label", ext.labels, "Surface of the union of these labels K[,K...] (iso 0.5 of the indicator)");
   e->add_option("--field", ex.field, "VTI point array or frame-stream field");
   component(e, ex.component);
-  e->add_option("--frame", ex.frame, "Frame of a frame stream (0-based; default the last)")->check(CLI::NonNegativeNumber);
+  e->add_option("--frame", ex.frame, "Frame of a frame stream or 4-D series (0-based; default the last)")->check(CLI::NonNegativeNumber);
   auto* cap = e->add_option("--cap", ex.cap_value, "Pad by one layer of VALUE (default min(f)-1) so boundary-cut surfaces close")
                   ->expected(0, 1);
   face_rule(e, ex, "Ambiguous faces: decider (asymptotic decider) or separate");
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
   d->add_option("--label", adt.labels, "Surface of the union of these labels");
   d->add_option("--field", ad_ex.field, "VTI point array or frame-stream field");
   component(d, ad_ex.component);
-  d->add_option("--frame", ad_ex.frame, "Frame of a frame stream")->check(CLI::NonNegativeNumber);
+  d->add_option("--frame", ad_ex.frame, "Frame of a frame stream or 4-D series")->check(CLI::NonNegativeNumber);
   auto* dcap = d->add_option("--cap", ad_ex.cap_value, "Pad by one layer of VALUE (default min(f)-1)")->expected(0, 1);
   face_rule(d, ad_ex, "decider or separate");
   triangulation(d, ad_ex, "minarea, fan or centroid");
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
   g->add_option("--iso", pr_ex.iso, "Iso-value");
   g->add_option("--label", prt.labels, "Surface of the union of these labels");
   g->add_option("--field", pr_ex.field, "VTI point array or frame-stream field");
-  g->add_option("--frame", pr_ex.frame, "Frame of a frame stream")->check(CLI::NonNegativeNumber);
+  g->add_option("--frame", pr_ex.frame, "Frame of a frame stream or 4-D series")->check(CLI::NonNegativeNumber);
   auto* gcap = g->add_option("--cap", pr_ex.cap_value, "Pad by one layer of VALUE (default min(f)-1)")->expected(0, 1);
   face_rule(g, pr_ex, "decider or separate");
   triangulation(g, pr_ex, "minarea, fan or centroid");
