@@ -3,10 +3,12 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
-
+#include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/file_io.hpp"
 #include "formats/dataset/dataset_io.hpp"
+#include "formats/volume/voxel_codec.hpp"
 #include "formats/volume/volume_io.hpp"
 
 namespace fest::formats {
@@ -22,19 +24,17 @@ std::string_view next_line(std::string_view bytes, std::size_t& pos) {
   return line;
 }
 
-double component_value(const double* v, int components, const std::string& c) {
+double component_value(const double* v, int components, VectorComponent c) {
   if (components == 1) return v[0];
-  if (c == "x") return v[0];
-  if (c == "y") return components > 1 ? v[1] : 0.0;
-  if (c == "z") return components > 2 ? v[2] : 0.0;
+  if (c == VectorComponent::x) return v[0];
+  if (c == VectorComponent::y) return components > 1 ? v[1] : 0.0;
+  if (c == VectorComponent::z) return components > 2 ? v[2] : 0.0;
   double s = 0;
   for (int k = 0; k < components; ++k) s += v[k] * v[k];
   return std::sqrt(s);
 }
 
-void check_component(const std::string& c) {
-  if (c != "mag" && c != "x" && c != "y" && c != "z") throw usage_error("--component must be mag, x, y or z, not '{}'", c);
-}
+Volume decode_frame(const StreamFrame& fr, const VolumeSourceOptions& o);
 
 Volume from_frames(const Input& in, const VolumeSourceOptions& o) {
   const auto frames = split_frame_stream(in.bytes, in.name);
@@ -42,7 +42,20 @@ Volume from_frames(const Input& in, const VolumeSourceOptions& o) {
   const long n = static_cast<long>(frames.size());
   const long f = o.frame < 0 ? n - 1 : o.frame;
   if (f >= n) throw usage_error("frame {} requested, the stream has {} frames (0..{})", f, n, n - 1);
-  const StreamFrame& fr = frames[static_cast<std::size_t>(f)];
+  return decode_frame(frames[static_cast<std::size_t>(f)], o);
+}
+
+// One frame of a 4-D volume (a time series): --frame K, by default the last, as for
+// frame streams; a 3-D volume is its own only frame.
+Volume one_frame(Volume v, long frame, const std::string& where) {
+  if (v.frames <= 1) return v;
+  const long n = static_cast<long>(v.frames);
+  const long f = frame < 0 ? n - 1 : frame;
+  if (f >= n) throw usage_error("frame {} requested, the series has {} frames (0..{}) ({})", f, n, n - 1, where);
+  return v.frame(static_cast<std::size_t>(f));
+}
+
+Volume decode_frame(const StreamFrame& fr, const VolumeSourceOptions& o) {
   int channel = 0, comps = fr.fields.front().second;
   bool found = o.field.empty();
   std::string names;
@@ -210,15 +223,86 @@ std::vector<StreamFrame> split_frame_stream(std::string_view bytes, const std::s
   return out;
 }
 
+RawLayout parse_raw_layout(std::string_view text) {
+  std::vector<std::string> items;
+  std::stringstream ss{std::string(text)};
+  for (std::string item; std::getline(ss, item, ',');) items.push_back(item);
+  const std::string form = fmt::format("takes NX,NY,NZ,TYPE[,little|big], not '{}'", text);
+  if (items.size() < 4 || items.size() > 5) throw std::invalid_argument(form);
+  RawLayout layout;
+  for (int a = 0; a < 3; ++a) {
+    const std::string& d = items[static_cast<std::size_t>(a)];
+    char* end = nullptr;
+    const long long n = std::strtoll(d.c_str(), &end, 10);
+    if (d.empty() || *end || n < 1 || n > (1LL << 31)) throw std::invalid_argument(form + " (sizes are whole numbers >= 1)");
+    layout.dims[static_cast<std::size_t>(a)] = static_cast<std::size_t>(n);
+  }
+  if (!parse_scalar_type(items[3], layout.type))
+    throw std::invalid_argument(fmt::format("type '{}' is not one of uint8, int8, uint16, int16, uint32, int32, uint64, int64, float32, float64", items[3]));
+  if (items.size() == 5) {
+    if (items[4] != "little" && items[4] != "big") throw std::invalid_argument(fmt::format("byte order '{}' is not little or big", items[4]));
+    layout.big_endian = items[4] == "big";
+  }
+  return layout;
+}
+
+Volume read_raw_volume(std::string_view bytes, const RawLayout& layout, const std::string& where) {
+  Volume v;
+  v.resize(layout.dims[0], layout.dims[1], layout.dims[2]);  // bad_input for a zero or an overflow
+  v.spacing = layout.spacing;
+  v.type = layout.type;
+  const std::size_t size = scalar_type_size(layout.type);
+  const std::size_t need = v.size() * size;
+  if (bytes.size() != need)
+    throw bad_input("raw volume of {}x{}x{} {} needs {} bytes, got {} ({})", layout.dims[0], layout.dims[1], layout.dims[2],
+                    scalar_type_name(layout.type), need, bytes.size(), where);
+  volume_detail::decode_voxels(bytes, layout.type, layout.big_endian, v.voxels);
+  return v;
+}
+
+Input load_volume_input(const std::string& path, const VolumeSourceOptions& o) {
+  if (!o.raw) return load_input(path);
+  Input in;
+  in.name = path;
+  in.bytes = read_input(path);
+  in.format = Format::nrrd;  // unused: raw bytes are read with the layout alone
+  return in;
+}
+
 Volume read_volume_source(const Input& in, const VolumeSourceOptions& o) {
-  check_component(o.component);
+  if (o.raw) {
+    if (o.frame >= 0) throw usage_error("--frame applies to frame streams and 4-D series, not raw input ({})", in.name);
+    if (!o.field.empty()) throw usage_error("--field applies to VTI and frame-stream input, not raw ({})", in.name);
+    return read_raw_volume(in.bytes, *o.raw, in.name);
+  }
   if (is_frame_stream(in.bytes)) return from_frames(in, o);
   if (in.format == Format::vti) return from_vti(in, o);
   if (kind_of(in.format) == Kind::volume) {
     if (!o.field.empty()) throw usage_error("--field applies to VTI and frame-stream input, not {} ({})", format_name(in.format), in.name);
-    return parse(in, read_volume);
+    return one_frame(parse(in, read_volume), o.frame, in.name);
   }
   throw bad_input("expected a volume (NIfTI, NRRD, MHA, VTI or a fest frame stream), got {} ({})", format_name(in.format), in.name);
+}
+
+VolumeFrames::VolumeFrames(const Input& in, const VolumeSourceOptions& o) : in_(&in), options_(o) {
+  if (!o.raw && is_frame_stream(in.bytes)) {
+    stream_ = split_frame_stream(in.bytes, in.name);
+    if (stream_.empty()) throw bad_input("empty frame stream ({})", in.name);
+    count_ = stream_.size();
+    return;
+  }
+  if (!o.raw && kind_of(in.format) == Kind::volume && in.format != Format::vti) {
+    if (!o.field.empty()) throw usage_error("--field applies to VTI and frame-stream input, not {} ({})", format_name(in.format), in.name);
+    series_ = parse(in, read_volume);  // every frame of a 4-D series
+  } else {
+    series_ = read_volume_source(in, o);  // raw, VTI: one frame; anything else throws
+  }
+  count_ = series_->frames;
+}
+
+Volume VolumeFrames::frame(std::size_t t) const {
+  if (!series_) return decode_frame(stream_.at(t), options_);
+  return series_->frames > 1 ? series_->frame(t) : *series_;
 }
 
 }  // namespace fest::formats

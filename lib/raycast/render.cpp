@@ -646,6 +646,8 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
     throw std::invalid_argument("slices mode needs planes, a positive contour spacing and a normal");
   if (grid.dims[0] < 2 || grid.dims[1] < 2 || grid.dims[2] < 2) throw std::invalid_argument("volume needs 2 samples along every axis");
   const int W = cam.width, H = cam.height;
+  if (!o.pixel_mask.empty() && o.pixel_mask.size() != static_cast<std::size_t>(W) * H)
+    throw std::invalid_argument("pixel mask does not match the image size");
   RenderedImage img;
   img.width = W, img.height = H;
   img.rgba.assign(static_cast<std::size_t>(W) * H * 4, 0.0f);
@@ -662,7 +664,8 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
       for (int i = tx * kTile; i < std::min(W, (tx + 1) * kTile); ++i) {
         std::array<double, 4> acc{0, 0, 0, 0};
         double depth = std::numeric_limits<double>::infinity();
-        for (int s = 0; s < sub * sub; ++s) {
+        const bool cast = o.pixel_mask.empty() || o.pixel_mask[static_cast<std::size_t>(j) * W + i];
+        for (int s = 0; s < (cast ? sub * sub : 0); ++s) {
           const double x = i + (s % sub + 0.5) / sub, y = j + (s / sub + 0.5) / sub;
           std::array<double, 4> c;
           double dd;

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -65,6 +66,10 @@ struct RenderOptions {
   // 48 reads per shaded sample; the same values up to rounding. render() builds them when
   // the caller passes no ShadingVolume.
   bool gradient_cache = false;
+  // The pixels to cast, width x height, row 0 at the top: 0 = not cast, left at the
+  // background (transparent with keep_alpha) at infinite depth (the part of a showcase
+  // screen another viewer's mirror covers); empty = every pixel.
+  std::vector<std::uint8_t> pixel_mask;
 };
 
 // The value and the central-difference gradient (index space) of every sample, interleaved

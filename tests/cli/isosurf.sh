@@ -200,6 +200,43 @@ expect_clean_failure 2 isosurf
 run isosurf stats "$W/sphere.nrrd"
 expect_clean_failure 3 isosurf
 
+case_ "--raw: a headerless big-endian int16 volume gives the same mesh as the same volume in NRRD, bit for bit"
+$FX raw "$W/v.raw" "$W/v.nrrd"
+run isosurf exact "$W/v.raw" --raw 20,17,13,int16,big --raw-spacing 0.5,0.5,1.25 --iso 100.5 -o "$W/raw.ply"
+expect_status 0
+run isosurf exact "$W/v.nrrd" --iso 100.5 -o "$W/nrrd.ply"
+check "same bytes" cmp "$W/raw.ply" "$W/nrrd.ply"
+read -r closed _ < <($FX plycheck "$W/raw.ply")
+check "closed (independent)" test "$closed" = closed
+run isosurf adaptive "$W/v.raw" --raw 20,17,13,int16,big,big --iso 100.5 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+run isosurf exact "$W/v.raw" --raw 20,17,13,int16,little --iso 100.5 -o "$W/le.ply"
+expect_status 0
+check "byte order matters" bash -c "! cmp -s '$W/le.ply' '$W/raw.ply'"
+run isosurf exact "$W/v.raw" --raw 20,17,13,float32 --iso 100.5 -o "$W/x.ply"
+expect_clean_failure 3 isosurf
+expect_stderr_has "needs 17680 bytes, got 8840"
+run isosurf exact "$W/v.raw" --raw 20,17,13,int16 --frame 1 --iso 100.5 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+run isosurf exact "$W/v.raw" --raw 0,17,13,int16 --iso 100.5 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+check "nothing written" test ! -e "$W/x.ply"
+
+case_ "--frame K of a 4-D NRRD series = frame K of the same frames as a frame stream; default the last"
+$FX stream "$W/stream.nrrd" 4
+$FX series "$W/series.nrrd" 4
+run isosurf exact "$W/series.nrrd" --frame 1 --iso 50 -o "$W/se1.ply"
+expect_status 0
+run isosurf exact "$W/stream.nrrd" --frame 1 --iso 50 -o "$W/st1.ply"
+check "same bytes" cmp "$W/se1.ply" "$W/st1.ply"
+run isosurf exact "$W/series.nrrd" --iso 50 -o "$W/se3.ply"
+run isosurf exact "$W/stream.nrrd" --frame 3 --iso 50 -o "$W/st3.ply"
+check "default: the last frame" cmp "$W/se3.ply" "$W/st3.ply"
+check "frames differ" bash -c "! cmp -s '$W/se1.ply' '$W/se3.ply'"
+run isosurf exact "$W/series.nrrd" --frame 4 --iso 50 -o "$W/x.ply"
+expect_clean_failure 2 isosurf
+expect_stderr_has "4 frames"
+
 case_ "conventions: --help, --version, unknown flag, missing file"
 run isosurf --help
 expect_status 0

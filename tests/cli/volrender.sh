@@ -271,6 +271,81 @@ run volrender dvr "$W/blob.nrrd" -o "$W/nodir/x.png"
 expect_clean_failure 4 volrender
 check "no partial file" test ! -e "$W/nodir/x.png"
 
+case_ "--raw: a headerless big-endian int16 volume renders exactly as the same volume in NRRD"
+$FX raw "$W/v.raw" "$W/v.nrrd"
+run volrender dvr "$W/v.raw" --raw 20,17,13,int16,big --raw-spacing 0.5,0.5,1.25 --tf rainbow --shade on --view 30,20 --size 40x30 -o "$W/raw.png"
+expect_status 0
+run volrender dvr "$W/v.nrrd" --tf rainbow --shade on --view 30,20 --size 40x30 -o "$W/nrrd.png"
+check "same bytes" cmp "$W/raw.png" "$W/nrrd.png"
+run_stdin "$W/v.raw" volrender mip - --raw 20,17,13,int16,big --raw-spacing 0.5,0.5,1.25 --size 40x30 -o "$W/raw_stdin.png"
+run volrender mip "$W/v.nrrd" --size 40x30 -o "$W/nrrd_mip.png"
+check "from standard input too" cmp "$W/raw_stdin.png" "$W/nrrd_mip.png"
+run volrender dvr "$W/v.raw" --raw 20,17,14,int16,big -o "$W/x.png"
+expect_clean_failure 3 volrender
+expect_stderr_has "needs 9520 bytes, got 8840"
+run volrender dvr "$W/v.raw" --raw 20,17,13,int12 -o "$W/x.png"
+expect_clean_failure 2 volrender
+expect_stderr_has "int12"
+run volrender dvr "$W/v.nrrd" --raw-spacing 1,1,1 -o "$W/x.png"
+expect_clean_failure 2 volrender
+check "nothing written" test ! -e "$W/x.png"
+
+case_ "--screen-mask: marked pixels as without the mask (bit for bit), the others exactly background, never cast"
+$FX mask "$W/mask.png" 40 30
+mcam=(--tf rainbow --shade on --spp 4 --bg 0.25,0.5,0.75 --view 30,20 --size 40x30 --to pfm)
+run volrender dvr "$W/v.nrrd" "${mcam[@]}" -o "$W/full.pfm"
+run volrender dvr "$W/v.nrrd" "${mcam[@]}" --screen-mask "$W/mask.png" -o "$W/masked.pfm" --report "$W/masked.json"
+expect_status 0
+check "pixels" $FX maskcheck "$W/full.pfm" "$W/masked.pfm" 40 30 0.25,0.5,0.75
+# marked: x < 20 and y >= 2, i.e. 20 x 28 pixels, 4 rays each
+check "rays cast = 4 x 560" test "$(jq .rays "$W/masked.json")" = 2240
+run volrender dvr "$W/v.nrrd" --size 40x31 --screen-mask "$W/mask.png" -o "$W/x.png"
+expect_clean_failure 3 volrender
+expect_stderr_has "screen mask is 40x30, the image 40x31"
+run volrender dvr "$W/v.nrrd" --size 40x30 --screen-mask "$W/v.nrrd" -o "$W/x.png"
+expect_clean_failure 3 volrender
+check "nothing written" test ! -e "$W/x.png"
+
+case_ "--frame all: one image per frame (%d pattern); the blob moves 3 voxels = 6 pixels per frame"
+$FX stream "$W/stream.nrrd" 4
+$FX series "$W/series.nrrd" 4
+# orthographic along +y, zoom sqrt(3): the 24^3 box's 23 voxels span the 46 pixels, so the
+# blob centre x = 7 + 3k lies at pixel 2x = 14 + 6k, and z = 11.5 at 23
+fcam=(--window 0,100 --fov 0 --view 0,0 --zoom 1.7320508075688772 --size 46x46 --to pfm)
+mkdir -p "$W/fa" "$W/fb"
+run volrender mip "$W/stream.nrrd" --frame all "${fcam[@]}" -o "$W/fa/f%03d.pfm" --report "$W/fa.json"
+expect_status 0
+check "4 files" test "$(ls "$W/fa" | tr '\n' ' ')" = "f000.pfm f001.pfm f002.pfm f003.pfm "
+check "report counts 4 frames" test "$(jq .frames "$W/fa.json")" = 4
+for k in 0 1 2 3; do
+  read -r cx cy < <($FX centroid "$W/fa/f00$k.pfm")
+  check "frame $k: centroid $cx $cy" near "$cx" $((14 + 6 * k)) 0.01
+  check "frame $k: row $cy" near "$cy" 23 0.01
+done
+run volrender mip "$W/stream.nrrd" --frame 2 "${fcam[@]}" -o "$W/f2.pfm"
+check "frame 2 of all = --frame 2" cmp "$W/f2.pfm" "$W/fa/f002.pfm"
+run volrender mip "$W/series.nrrd" --frame all "${fcam[@]}" -o "$W/fb/f%03d.pfm"
+expect_status 0
+check "a 4-D NRRD series gives the same frames" cmp "$W/fa/f003.pfm" "$W/fb/f003.pfm"
+mkdir -p "$W/fs"
+run volrender mip "$W/stream.nrrd" --frame all --window 0,100 --screen '-2,-2,30;26,-2,30;-2,26,30' --eye 11,11,60 --stereo 2 \
+    --size 16x16 -o "$W/fs/%02d_%s.png"
+expect_status 0
+check "stereo pairs per frame: %02d and %s" test "$(ls "$W/fs" | tr '\n' ' ')" = "00_L.png 00_R.png 01_L.png 01_R.png 02_L.png 02_R.png 03_L.png 03_R.png "
+run volrender mip "$W/stream.nrrd" --frame all "${fcam[@]}" -o "$W/x.pfm"
+expect_clean_failure 2 volrender
+expect_stderr_has "%d"
+run volrender mip "$W/stream.nrrd" --frame all "${fcam[@]}"
+expect_clean_failure 2 volrender
+run volrender mip "$W/stream.nrrd" --frame every -o "$W/x%d.pfm"
+expect_clean_failure 2 volrender
+head -c 150000 "$W/stream.nrrd" > "$W/cut.nrrd"
+mkdir -p "$W/fc"
+run volrender mip "$W/cut.nrrd" --frame all "${fcam[@]}" -o "$W/fc/f%03d.pfm"
+expect_clean_failure 3 volrender
+expect_stderr_has "truncated"
+check "no frame written" test -z "$(ls "$W/fc")"
+
 case_ "conventions: --help, --version, unknown flag, missing file"
 run volrender --help
 expect_status 0

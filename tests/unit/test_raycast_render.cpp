@@ -214,3 +214,23 @@ TEST(RaycastRender, IsoDepthOfASphere) {
       EXPECT_NEAR(img.depth[static_cast<std::size_t>(j) * 32 + i], expect, 0.0125 + 0.002);
     }
 }
+
+TEST(RaycastRender, PixelMaskCastsOnlyMarkedPixels) {
+  const auto g = grid(17, [](std::size_t i, std::size_t j, std::size_t k) { return double(i + j + k); });
+  const TransferFunction tf({{0, 1, 0.2, 0.1, 0.3}, {48, 0.1, 0.5, 1, 0.6}}, 0, 48, OpacityMode::opacity, 1.0);
+  RenderOptions o;
+  o.background = {0.25, 0.5, 0.75};
+  const MinMaxPyramid p(g, 1);
+  const auto full = render(g, &p, tf, along_z(17), o);
+  o.pixel_mask.assign(64, 0);
+  for (int q = 0; q < 64; q += 3) o.pixel_mask[q] = 1;  // 22 pixels
+  const auto masked = render(g, &p, tf, along_z(17), o);
+  EXPECT_EQ(masked.stats.rays, 22u);
+  for (int q = 0; q < 64; ++q)
+    for (int c = 0; c < 4; ++c) {
+      const float want = o.pixel_mask[q] ? full.rgba[4 * q + c] : c < 3 ? float(o.background[c]) : 1.0f;
+      EXPECT_EQ(masked.rgba[4 * q + c], want) << q << " " << c;
+    }
+  o.pixel_mask.assign(63, 1);
+  EXPECT_THROW(render(g, &p, tf, along_z(17), o), std::invalid_argument);
+}

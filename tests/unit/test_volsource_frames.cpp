@@ -38,7 +38,7 @@ TEST(VolumeSource, FrameStreamFieldsAndFrames) {
   o.field = "velocity";
   v = formats::read_volume_source(in, o);
   EXPECT_DOUBLE_EQ(v.voxels[5], 15.0);  // |(5, 10, 10)|
-  o.component = "y";
+  o.component = formats::VectorComponent::y;
   v = formats::read_volume_source(in, o);
   EXPECT_DOUBLE_EQ(v.voxels[5], 10.0);
   o.field = "pressure";
@@ -56,5 +56,49 @@ TEST(VolumeSource, TruncatedFrameIsBadInput) {
   } catch (const Error& e) {
     EXPECT_EQ(e.status(), Status::bad_input);
     EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos);
+  }
+}
+
+TEST(VolumeSource, FramesOfAStreamOneAtATime) {
+  const auto in = formats::recognise(frame(0) + frame(1) + frame(2), "stream");
+  formats::VolumeSourceOptions o;
+  const formats::VolumeFrames frames(in, o);
+  ASSERT_EQ(frames.count(), 3u);
+  for (std::size_t t = 0; t < 3; ++t) EXPECT_DOUBLE_EQ(frames.frame(t).voxels[3], 3.0 + 10.0 * t);  // density = index + 10 t
+}
+
+TEST(VolumeSource, RawLayoutText) {
+  const auto L = formats::parse_raw_layout("4,3,2,uint16,big");
+  EXPECT_EQ(L.dims[0], 4u);
+  EXPECT_EQ(L.dims[2], 2u);
+  EXPECT_EQ(L.type, ScalarType::u16);
+  EXPECT_TRUE(L.big_endian);
+  EXPECT_FALSE(formats::parse_raw_layout("4,3,2,float64").big_endian);
+  for (const char* bad : {"4,3,2", "4,3,2,int24", "4,3,0,uint8", "4,3,2.5,uint8", "4,3,2,uint8,middle", "4,3,2,uint8,big,x", ""})
+    EXPECT_THROW(formats::parse_raw_layout(bad), std::invalid_argument) << bad;
+}
+
+TEST(VolumeSource, RawVolumeBothByteOrders) {
+  // int16 samples -2, 258 (0x0102), 7, 0x7fff: big-endian bytes written by hand
+  const std::string be("\xff\xfe\x01\x02\x00\x07\x7f\xff", 8);
+  formats::RawLayout L;
+  L.dims = {2, 2, 1};
+  L.type = ScalarType::i16;
+  L.big_endian = true;
+  L.spacing = {0.5, 2, 3};
+  const Volume v = formats::read_raw_volume(be, L, "be");
+  EXPECT_DOUBLE_EQ(v.voxels[0], -2);
+  EXPECT_DOUBLE_EQ(v.voxels[1], 258);
+  EXPECT_DOUBLE_EQ(v.voxels[2], 7);
+  EXPECT_DOUBLE_EQ(v.voxels[3], 32767);
+  EXPECT_DOUBLE_EQ(v.spacing[0], 0.5);
+  L.big_endian = false;
+  EXPECT_DOUBLE_EQ(formats::read_raw_volume(be, L, "le").voxels[1], 513);  // 0x0201
+  try {
+    formats::read_raw_volume(be.substr(1), L, "short");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), Status::bad_input);
+    EXPECT_NE(std::string(e.what()).find("needs 8 bytes, got 7"), std::string::npos);
   }
 }

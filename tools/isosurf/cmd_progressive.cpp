@@ -1,7 +1,6 @@
 // isosurf progressive: a sequence of crack-free meshes, coarse first (--errors), or one
 // adaptive mesh per focus position (--focus-path); docs/isosurf.md "Progressive mode".
 // The volume and its min-max pyramid are built once.
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -12,6 +11,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "isosurface/adaptive.hpp"
 #include "isosurface/marching_cubes.hpp"
@@ -20,22 +20,10 @@
 #include "surface_io.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-std::vector<double> parse_list(const std::string& s, const char* flag) {
-  std::vector<double> v;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');) {
-    char* end = nullptr;
-    const double x = item == "inf" ? std::numeric_limits<double>::infinity() : std::strtod(item.c_str(), &end);
-    if (item.empty() || (item != "inf" && *end) || !(x >= 0)) throw usage_error("{} takes values >= 0 separated by commas, not '{}'", flag, s);
-    v.push_back(x);
-  }
-  return v;
-}
+using Clock = SteadyClock;
 
 std::vector<std::array<double, 3>> read_path(const std::string& path) {
   const std::string text = read_input(path);
@@ -71,12 +59,14 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
   if (o.output.empty() || o.output == "-") throw usage_error("progressive writes a directory: give -o DIR");
   const std::string format = o.to.empty() ? "ply" : output_format(o.to, "");
   const int threads = resolve_threads(o.threads);
-  std::vector<double> errors;
+  const std::vector<double>& errors = p.errors;
   std::vector<std::array<double, 3>> path;
   if (!p.errors.empty()) {
-    errors = parse_list(p.errors, "--errors");
+    for (std::size_t k = 0; k < errors.size(); ++k)
+      if (!(errors[k] >= 0)) throw usage_error("--errors takes values >= 0 separated by commas, not {}", errors[k]);
     for (std::size_t k = 1; k < errors.size(); ++k)
-      if (!(errors[k] < errors[k - 1])) throw usage_error("--errors must be descending (coarse first), not '{}'", p.errors);
+      if (!(errors[k] < errors[k - 1]))
+        throw usage_error("--errors must be descending (coarse first), not {} after {}", errors[k], errors[k - 1]);
   } else {
     path = read_path(p.focus_path);
   }
@@ -86,23 +76,16 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
   if (ec || !std::filesystem::is_directory(o.output)) throw io_error("cannot create the output directory {}: {}", o.output, ec.message());
   auto t0 = Clock::now();
   const volume_pyramid::MinMaxPyramid pyramid(in.grid, threads);
-  const double t_build = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double t_build = seconds_since(t0);
   isosurface::AdaptiveOptions ao;
-  ao.face_rule = o.face_rule == "separate" ? isosurface::FaceRule::separate : isosurface::FaceRule::decider;
-  ao.triangulation = o.tri == "fan" ? isosurface::Triangulation::fan : o.tri == "centroid" ? isosurface::Triangulation::centroid
-                                                                                          : isosurface::Triangulation::minarea;
+  ao.face_rule = o.face_rule;
+  ao.triangulation = o.tri;
   ao.threads = threads;
   ao.focus_radius = a.focus_radius;
   ao.error_growth = a.error_growth;
   ao.max_level = a.max_level;
-  ao.edge_rule = a.edge_rule == "all" ? isosurface::EdgeRule::all : isosurface::EdgeRule::transitions;
-  if (!a.focus.empty()) {
-    std::stringstream ss(a.focus);
-    std::array<double, 3> f{};
-    char comma;
-    if (!(ss >> f[0] >> comma >> f[1] >> comma >> f[2])) throw usage_error("--focus takes X,Y,Z, not '{}'", a.focus);
-    ao.focus = f;
-  }
+  ao.edge_rule = a.edge_rule;
+  ao.focus = a.focus;
   const std::size_t count = errors.empty() ? path.size() : errors.size();
   nlohmann::json levels = nlohmann::json::array();
   std::size_t cumulative = 0;
@@ -118,7 +101,7 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
     } else {
       s = isosurface::extract_adaptive(in.grid, in.iso, ao, pyramid).surface;
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double seconds = seconds_since(t0);
     const std::string bytes = encode_surface(s, format, o.qbits);
     char name[32];
     std::snprintf(name, sizeof name, "%s_%02zu.%s", errors.empty() ? "frame" : "level", k, format == "plya" ? "ply" : format.c_str());
@@ -137,4 +120,4 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
   return 0;
 }
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool

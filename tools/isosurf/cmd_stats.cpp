@@ -6,7 +6,7 @@
 #include "isosurface/mesh_stats.hpp"
 #include "surface_io.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 
 int run_stats(const StatsOptions& o) {
   std::size_t fanned = 0;
@@ -19,4 +19,4 @@ int run_stats(const StatsOptions& o) {
   return 0;
 }
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool

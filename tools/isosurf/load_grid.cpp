@@ -4,30 +4,22 @@
 #include <cmath>
 #include <limits>
 #include <set>
-#include <sstream>
 
 #include "core/error.hpp"
 #include "formats/input.hpp"
 #include "formats/volume_source/volume_source.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 namespace {
 
 // --roi i0,i1,j0,j1,k0,k1: keeps the samples of the inclusive index box; world positions
 // stay (the origin moves to the box's first sample, returned in `first`). Returns the NaN
 // samples kept.
-std::size_t crop(volume_pyramid::ScalarGrid& g, const std::string& roi, double first[3]) {
-  long r[6];
-  const char* p = roi.c_str();
-  for (int q = 0; q < 6; ++q) {
-    char* end = nullptr;
-    r[q] = std::strtol(p, &end, 10);
-    if (end == p || (q < 5 && *end != ',') || (q == 5 && *end)) throw usage_error("--roi takes i0,i1,j0,j1,k0,k1 (integers), not '{}'", roi);
-    p = end + 1;
-  }
+std::size_t crop(volume_pyramid::ScalarGrid& g, const std::array<long long, 6>& r, double first[3]) {
   for (int a = 0; a < 3; ++a)
-    if (r[2 * a] < 0 || r[2 * a] >= r[2 * a + 1] || r[2 * a + 1] >= long(g.dims[a]))
-      throw usage_error("--roi {} is not inside the {}x{}x{} volume with at least 2 samples per axis", roi, g.dims[0], g.dims[1], g.dims[2]);
+    if (r[2 * a] < 0 || r[2 * a] >= r[2 * a + 1] || r[2 * a + 1] >= static_cast<long long>(g.dims[a]))
+      throw usage_error("--roi {},{},{},{},{},{} is not inside the {}x{}x{} volume with at least 2 samples per axis", r[0], r[1], r[2],
+                        r[3], r[4], r[5], g.dims[0], g.dims[1], g.dims[2]);
   volume_pyramid::ScalarGrid c;
   for (int a = 0; a < 3; ++a) c.dims[a] = std::size_t(r[2 * a + 1] - r[2 * a] + 1);
   c.axes = g.axes;
@@ -54,12 +46,13 @@ LoadedGrid load_grid(const ExactOptions& o) {
   if (o.iso && !std::isfinite(*o.iso)) throw usage_error("--iso must be a finite number");
   LoadedGrid out;
   out.source = o.input == "-" ? "stdin" : o.input;
-  formats::Input in = formats::load_input(o.input);
-  if (in.bytes.empty()) throw bad_input("empty input ({})", out.source);
   formats::VolumeSourceOptions vo;
   vo.field = o.field;
   vo.component = o.component;
   vo.frame = o.frame;
+  vo.raw = o.raw;
+  formats::Input in = formats::load_volume_input(o.input, vo);
+  if (in.bytes.empty()) throw bad_input("empty input ({})", out.source);
   const Volume v = formats::read_volume_source(in, vo);
   for (int a = 0; a < 3; ++a)
     if (v.dims[a] < 2)
@@ -68,21 +61,14 @@ LoadedGrid load_grid(const ExactOptions& o) {
   std::size_t nans = 0;
   out.grid = volume_pyramid::to_grid(v, nans);
   double roi_lo[3] = {0, 0, 0};  // the ROI's first sample (for --index-space)
-  if (!o.roi.empty()) nans = crop(out.grid, o.roi, roi_lo);
+  if (o.roi) nans = crop(out.grid, *o.roi, roi_lo);
   auto& values = out.grid.values;
   if (nans > 0) {
     if (!o.nan_outside)
       throw bad_input("{} NaN samples; --nan-outside treats them as outside ({})", nans, out.source);
   }
   if (!o.labels.empty()) {
-    std::set<long> keep;
-    std::stringstream ss(o.labels);
-    for (std::string item; std::getline(ss, item, ',');) {
-      char* end = nullptr;
-      const long k = std::strtol(item.c_str(), &end, 10);
-      if (item.empty() || *end) throw usage_error("--label takes integers separated by commas, not '{}'", o.labels);
-      keep.insert(k);
-    }
+    const std::set<long> keep(o.labels.begin(), o.labels.end());
     for (auto& x : values) x = !std::isnan(x) && keep.count(std::lround(x)) && x == std::round(x) ? 1.0f : 0.0f;
     out.iso = 0.5f;
   } else {
@@ -100,7 +86,7 @@ LoadedGrid load_grid(const ExactOptions& o) {
   if (o.index_space) {  // voxel coordinates of the whole volume, also inside a --roi
     out.grid.origin = {0, 0, 0};
     out.grid.axes = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    if (!o.roi.empty()) out.grid.origin = {double(roi_lo[0]), double(roi_lo[1]), double(roi_lo[2])};
+    if (o.roi) out.grid.origin = {double(roi_lo[0]), double(roi_lo[1]), double(roi_lo[2])};
   }
   if (o.cap) {
     const double cap = o.cap_value ? *o.cap_value : static_cast<double>(std::min(lo, out.iso)) - 1.0;
@@ -110,4 +96,4 @@ LoadedGrid load_grid(const ExactOptions& o) {
   return out;
 }
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool

@@ -7,7 +7,7 @@
 #include "commands.hpp"
 #include "volume_pyramid/scalar_grid.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 
 struct LoadedGrid {
   volume_pyramid::ScalarGrid grid;
@@ -20,4 +20,4 @@ struct LoadedGrid {
 // --nan-outside; usage for a missing --iso/--label.
 LoadedGrid load_grid(const ExactOptions& o);
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool

@@ -5,7 +5,7 @@
 #include "formats/mesh/indexed_ply.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 
 std::string output_format(const std::string& to, const std::string& output) {
   std::string f = to;
@@ -98,4 +98,4 @@ nlohmann::json stats_json(const isosurface::MeshStats& m) {
           {"volume", m.volume}};
 }
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool

@@ -8,7 +8,7 @@
 #include "isosurface/mesh_stats.hpp"
 #include "isosurface/surface.hpp"
 
-namespace fest::isosurf {
+namespace fest::isosurf_tool {
 
 // Bytes of the surface in a mesh format named like --to (ply, plya, obj, off, stl, drc).
 // Binary PLY without normals is written straight from the arrays; the rest goes through the
@@ -24,4 +24,4 @@ nlohmann::json stats_json(const isosurface::MeshStats& m);
 // The output format: --to, else the extension of -o, else ply.
 std::string output_format(const std::string& to, const std::string& output);
 
-}  // namespace fest::isosurf
+}  // namespace fest::isosurf_tool

@@ -1,78 +1,33 @@
 #include "camera_args.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/error.hpp"
 #include "raycast/render.hpp"
 
-namespace fest::volrender {
+namespace fest::volrender_tool {
 using raycast::operator+;
 using raycast::operator-;
 using raycast::operator*;
 
-std::vector<double> parse_numbers(const std::string& s, std::size_t min, std::size_t max, const char* flag) {
-  std::vector<double> v;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end || !std::isfinite(x)) throw usage_error("{} takes numbers separated by commas, not '{}'", flag, s);
-    v.push_back(x);
-  }
-  if (v.size() < min || v.size() > max)
-    throw usage_error("{} takes {} numbers, got {} ('{}')", flag, min == max ? std::to_string(min) : fmt::format("{} to {}", min, max), v.size(), s);
-  return v;
-}
-
-namespace {
-
-raycast::Vec3 vec(const std::string& s, const char* flag) {
-  const auto v = parse_numbers(s, 3, 3, flag);
-  return {v[0], v[1], v[2]};
-}
-
-std::vector<raycast::Vec3> points(const std::string& s, const char* flag) {
-  std::vector<raycast::Vec3> p;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ';');) p.push_back(vec(item, flag));
-  return p;
-}
-
-}  // namespace
-
-std::pair<int, int> parse_size(const std::string& s) {
-  const auto x = s.find('x');
-  int w = 0, h = 0;
-  try {
-    if (x == std::string::npos) throw std::invalid_argument("");
-    std::size_t a = 0, b = 0;
-    w = std::stoi(s.substr(0, x), &a);
-    h = std::stoi(s.substr(x + 1), &b);
-    if (a != x || b != s.size() - x - 1) throw std::invalid_argument("");
-  } catch (const std::exception&) {
-    throw usage_error("--size takes WxH, not '{}'", s);
-  }
-  if (w < 1 || h < 1 || w > 16384 || h > 16384) throw usage_error("--size {}: width and height must be 1..16384", s);
-  return {w, h};
-}
-
 std::vector<raycast::Camera> make_cameras(const CameraArgs& a, const volume_pyramid::ScalarGrid* grid) {
-  const auto [W, H] = parse_size(a.size);
+  const int W = a.width, H = a.height;
+  if (W < 1 || H < 1 || W > 16384 || H > 16384) throw usage_error("--size {}x{}: width and height must be 1..16384", W, H);
   raycast::Camera cam;
   try {
     if (!a.screen.empty()) {
-      const auto c = points(a.screen, "--screen");
+      const auto& c = a.screen;
       if (c.size() != 3) throw usage_error("--screen takes three corners PA;PB;PC (lower left; lower right; upper left)");
-      if (a.eye.empty()) throw usage_error("--screen needs --eye");
-      cam = raycast::off_axis_camera(c[0], c[1], c[2], vec(a.eye, "--eye"), W, H);
-    } else if (!a.eye.empty()) {
-      if (a.look_at.empty()) throw usage_error("--eye needs --look-at (or --screen)");
-      cam = raycast::look_at_camera(vec(a.eye, "--eye"), vec(a.look_at, "--look-at"), vec(a.up, "--up"), a.fov.value_or(30), W, H);
+      if (!a.eye) throw usage_error("--screen needs --eye");
+      cam = raycast::off_axis_camera(c[0], c[1], c[2], *a.eye, W, H);
+    } else if (a.eye) {
+      if (!a.look_at) throw usage_error("--eye needs --look-at (or --screen)");
+      cam = raycast::look_at_camera(*a.eye, *a.look_at, a.up, a.fov.value_or(30), W, H);
     } else {
       if (!grid) throw usage_error("an orbit camera needs the volume");
-      const auto v = parse_numbers(a.view, 2, 3, "--view");
+      const auto& v = a.view;
+      if (v.size() < 2 || v.size() > 3) throw usage_error("--view takes AZ,EL[,ROLL]");
       const auto lo = grid->world(0, 0, 0);
       const auto hi = grid->world(double(grid->dims[0] - 1), double(grid->dims[1] - 1), double(grid->dims[2] - 1));
       raycast::Vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
@@ -89,9 +44,9 @@ std::vector<raycast::Camera> make_cameras(const CameraArgs& a, const volume_pyra
   }
   if (a.near < 0) throw usage_error("--near must be >= 0");
   cam.near = a.near;
-  if (!a.mirror.empty()) {
+  if (a.mirror) {
     if (cam.kind != raycast::Camera::Kind::off_axis) throw usage_error("--mirror needs the off-axis camera (--screen and --eye)");
-    const auto m = parse_numbers(a.mirror, 4, 4, "--mirror");
+    const auto& m = *a.mirror;
     const raycast::Vec3 n{m[0], m[1], m[2]};
     if (raycast::norm(n) < 1e-12) throw usage_error("--mirror normal has zero length");
     raycast::Mirror mirror;
@@ -99,7 +54,7 @@ std::vector<raycast::Camera> make_cameras(const CameraArgs& a, const volume_pyra
     mirror.n = (1 / len) * n;
     mirror.delta = m[3] / len;
     if (!a.mirror_poly.empty()) {
-      mirror.outline = points(a.mirror_poly, "--mirror-poly");
+      mirror.outline = a.mirror_poly;
       if (mirror.outline.size() < 3) throw usage_error("--mirror-poly needs at least 3 points");
     }
     cam.mirror = mirror;
@@ -113,7 +68,7 @@ std::vector<raycast::Camera> make_cameras(const CameraArgs& a, const volume_pyra
   if (!a.stereo) return {cam};
   if (!(*a.stereo > 0)) throw usage_error("--stereo takes a positive eye separation");
   raycast::Vec3 right = cam.kind == raycast::Camera::Kind::off_axis ? cam.screen_right() : cam.right;
-  if (!a.head_right.empty()) right = vec(a.head_right, "--head-right");
+  if (a.head_right) right = *a.head_right;
   if (raycast::norm(right) < 1e-12) throw usage_error("--head-right has zero length");
   const auto [l, r] = raycast::stereo_pair(cam, *a.stereo, right);
   return {l, r};
@@ -145,4 +100,4 @@ nlohmann::json camera_json(const raycast::Camera& c) {
   return j;
 }
 
-}  // namespace fest::volrender
+}  // namespace fest::volrender_tool

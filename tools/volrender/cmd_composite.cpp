@@ -7,51 +7,20 @@
 #include <opencv2/core.hpp>
 
 #include "commands.hpp"
+#include "image_pixels.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/srgb.hpp"
 #include "formats/image/image_io.hpp"
-#include "formats/input.hpp"
 
-namespace fest::volrender {
-namespace {
-
-// Linear, straight (not premultiplied) RGBA of every pixel.
-std::vector<float> linear_rgba(const Image& im, const std::string& name) {
-  const cv::Mat& m = im.pixels;
-  const int ch = m.channels(), depth = m.depth();
-  if (depth != CV_8U && depth != CV_16U && depth != CV_32F) throw bad_input("{}: unsupported sample type", name);
-  std::vector<float> out(std::size_t(m.rows) * m.cols * 4);
-  const double scale = depth == CV_8U ? 1 / 255.0 : depth == CV_16U ? 1 / 65535.0 : 1.0;
-  const bool srgb = depth != CV_32F && im.color_space == ColorSpace::srgb;
-  for (int j = 0; j < m.rows; ++j)
-    for (int i = 0; i < m.cols; ++i) {
-      double v[4];
-      for (int c = 0; c < ch; ++c)
-        v[c] = scale * (depth == CV_8U ? m.ptr<unsigned char>(j)[i * ch + c] : depth == CV_16U ? m.ptr<unsigned short>(j)[i * ch + c]
-                                                                                                : m.ptr<float>(j)[i * ch + c]);
-      double rgba[4];
-      if (ch <= 2) rgba[0] = rgba[1] = rgba[2] = v[0];
-      else rgba[0] = v[0], rgba[1] = v[1], rgba[2] = v[2];
-      rgba[3] = ch == 2 ? v[1] : ch == 4 ? v[3] : 1.0;
-      float* o = &out[(std::size_t(j) * m.cols + i) * 4];
-      for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(srgb ? srgb_to_linear(rgba[c]) : rgba[c]);
-      o[3] = static_cast<float>(std::clamp(rgba[3], 0.0, 1.0));
-    }
-  return out;
-}
-
-}  // namespace
+namespace fest::volrender_tool {
 
 int run_composite(const CompositeArgs& a) {
   if (a.inputs.size() < 2) throw usage_error("composite needs at least two images");
   int w = 0, h = 0;
   std::vector<double> C, A;  // premultiplied linear colour and coverage, front to back
   for (std::size_t n = 0; n < a.inputs.size(); ++n) {
-    const formats::Input in = formats::load_input(a.inputs[n]);
-    if (formats::kind_of(in.format) != formats::Kind::image)
-      throw bad_input("expected an image, got {} ({})", formats::format_name(in.format), a.inputs[n]);
-    const Image im = formats::read_image(in.bytes, in.format);
+    const Image im = load_image(a.inputs[n]);
     if (n == 0) {
       w = im.pixels.cols, h = im.pixels.rows;
       C.assign(std::size_t(w) * h * 3, 0.0);
@@ -82,4 +51,4 @@ int run_composite(const CompositeArgs& a) {
   return 0;
 }
 
-}  // namespace fest::volrender
+}  // namespace fest::volrender_tool

@@ -1,10 +1,10 @@
-// volrender dvr|mip|minip|avg|iso: read a volume, build the transfer function and the
-// camera(s), ray cast (lib/raycast), write images (docs/volrender.md).
+// volrender dvr|mip|minip|avg|iso|slices: read a volume (or every frame of a stream or
+// series), build the transfer function and the camera(s), ray cast (lib/raycast), write
+// images (docs/volrender.md).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -14,92 +14,49 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/srgb.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
-#include "formats/volume_source/volume_source.hpp"
 #include "formats/mesh/mesh_io.hpp"
+#include "image_pixels.hpp"
 #include "raycast/mesh_tracer.hpp"
 #include "raycast/render.hpp"
+#include "volume_input.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
 
-namespace fest::volrender {
+namespace fest::volrender_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+using Clock = SteadyClock;
 
-struct Loaded {
-  volume_pyramid::ScalarGrid grid;
-  double lo = 0, hi = 1;
-  std::string name;
-};
-
-Loaded load(const RenderArgs& a) {
-  Loaded L;
-  L.name = a.input == "-" ? "stdin" : a.input;
-  formats::Input in = formats::load_input(a.input);
-  if (in.bytes.empty()) throw bad_input("empty input ({})", L.name);
-  formats::VolumeSourceOptions vo;
-  vo.field = a.field, vo.component = a.component, vo.frame = a.frame;
-  const Volume v = formats::read_volume_source(in, vo);
-  for (int ax = 0; ax < 3; ++ax)
-    if (v.dims[ax] < 2) throw bad_input("volume is {}x{}x{}: ray casting needs 2 samples along every axis ({})", v.dims[0], v.dims[1], v.dims[2], L.name);
-  std::size_t nans = 0;
-  L.grid = volume_pyramid::to_grid(v, nans);
-  if (nans) throw bad_input("{} NaN samples ({})", nans, L.name);
-  float lo = L.grid.values[0], hi = lo;
-  for (float x : L.grid.values) lo = std::min(lo, x), hi = std::max(hi, x);
-  L.lo = lo, L.hi = hi;
-  return L;
+const char* mode_name(raycast::Mode m) {
+  switch (m) {
+    case raycast::Mode::dvr: return "dvr";
+    case raycast::Mode::mip: return "mip";
+    case raycast::Mode::minip: return "minip";
+    case raycast::Mode::avg: return "avg";
+    case raycast::Mode::iso: return "iso";
+    case raycast::Mode::slices: return "slices";
+  }
+  return "?";
 }
 
-raycast::TransferFunction make_tf(const RenderArgs& a, const Loaded& L) {
-  const auto mode = a.tf_mode == "extinction" ? raycast::OpacityMode::extinction : raycast::OpacityMode::opacity;
-  if (a.tf_mode != "extinction" && a.tf_mode != "opacity") throw usage_error("--tf-mode must be opacity or extinction");
+raycast::TransferFunction make_tf(const RenderArgs& a, double lo, double hi) {
   if (!(a.tf_unit > 0)) throw usage_error("--tf-unit must be positive");
   std::vector<raycast::ControlPoint> pts;
-  const std::string name = a.tf.empty() ? (a.mode == "slices" ? "contour-only" : "grey") : a.tf;
+  const std::string name = a.tf.empty() ? (a.mode == raycast::Mode::slices ? "contour-only" : "grey") : a.tf;
   try {
     if (raycast::is_preset(name)) {
-      pts = raycast::preset_transfer_function(name, L.lo, L.hi);
+      pts = raycast::preset_transfer_function(name, lo, hi);
     } else {
       const std::string text = read_input(name);
-      pts = raycast::parse_transfer_function(text, L.lo, L.hi, mode);
+      pts = raycast::parse_transfer_function(text, lo, hi, a.tf_mode);
     }
   } catch (const std::invalid_argument& e) {
     throw bad_input("{} ({})", e.what(), name);
   }
-  return raycast::TransferFunction(pts, L.lo, L.hi, mode, a.tf_unit);
-}
-
-std::vector<raycast::IsoLayer> parse_isos(const std::string& s, const std::string& colors) {
-  std::vector<raycast::IsoLayer> out;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');) {
-    raycast::IsoLayer L;
-    const auto colon = item.find(':');
-    char* end = nullptr;
-    const std::string v = item.substr(0, colon);
-    L.value = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end || !std::isfinite(L.value)) throw usage_error("--iso takes V[:alpha][,V:alpha...], not '{}'", s);
-    if (colon != std::string::npos) {
-      const std::string al = item.substr(colon + 1);
-      L.alpha = std::strtod(al.c_str(), &end);
-      if (al.empty() || *end || !(L.alpha >= 0 && L.alpha <= 1)) throw usage_error("--iso opacity must be in [0,1] ('{}')", item);
-    }
-    out.push_back(L);
-  }
-  if (!colors.empty()) {
-    std::stringstream cs(colors);
-    std::size_t k = 0;
-    for (std::string item; std::getline(cs, item, ';'); ++k) {
-      if (k >= out.size()) throw usage_error("--iso-color names more colours than iso-values");
-      const auto c = parse_numbers(item, 3, 3, "--iso-color");
-      out[k].color = std::array<double, 3>{c[0], c[1], c[2]};
-    }
-  }
-  return out;
+  return raycast::TransferFunction(pts, lo, hi, a.tf_mode, a.tf_unit);
 }
 
 std::string output_format(const std::string& to, const std::string& out) {
@@ -111,6 +68,87 @@ std::string output_format(const std::string& to, const std::string& out) {
   if (f.empty()) f = "png";
   if (f != "png" && f != "pfm" && f != "exr") throw usage_error("image format '{}' (png, pfm or exr expected)", f);
   return f;
+}
+
+// The position and width of the one printf-style %d (%05d, %4d, ...) in an output pattern
+// of --frame all; npos when there is none.
+std::size_t frame_field(const std::string& pattern, std::size_t& length, int& width, bool& zero) {
+  std::size_t found = std::string::npos;
+  for (std::size_t p = pattern.find('%'); p != std::string::npos; p = pattern.find('%', p + 1)) {
+    std::size_t q = p + 1;
+    const bool z = q < pattern.size() && pattern[q] == '0';
+    int w = 0;
+    while (q < pattern.size() && pattern[q] >= '0' && pattern[q] <= '9' && w < 100) w = 10 * w + (pattern[q++] - '0');
+    if (q < pattern.size() && pattern[q] == 'd') {
+      if (found != std::string::npos) throw usage_error("output pattern '{}' has more than one %d", pattern);
+      found = p, length = q + 1 - p, width = w, zero = z;
+    }
+  }
+  return found;
+}
+
+// The pattern with its %d replaced by the frame number (--frame all).
+std::string frame_path(const std::string& pattern, std::size_t frame) {
+  std::size_t length = 0;
+  int width = 0;
+  bool zero = false;
+  const std::size_t at = frame_field(pattern, length, width, zero);
+  if (at == std::string::npos) throw usage_error("--frame all writes one image per frame: '{}' needs a %d (e.g. png/%05d.png)", pattern);
+  std::string number = std::to_string(frame);
+  if (static_cast<int>(number.size()) < width) number.insert(0, static_cast<std::size_t>(width) - number.size(), zero ? '0' : ' ');
+  return pattern.substr(0, at) + number + pattern.substr(at + length);
+}
+
+// --screen-mask: cast the pixels whose mask pixel is neither black nor transparent.
+std::vector<std::uint8_t> screen_mask(const std::string& path, int width, int height) {
+  const Image im = load_image(path);
+  if (im.pixels.cols != width || im.pixels.rows != height)
+    throw bad_input("screen mask is {}x{}, the image {}x{} ({})", im.pixels.cols, im.pixels.rows, width, height, path);
+  const auto px = linear_rgba(im, path);
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(width) * height);
+  for (std::size_t p = 0; p < mask.size(); ++p)
+    mask[p] = px[4 * p + 3] > 0 && (px[4 * p] > 0 || px[4 * p + 1] > 0 || px[4 * p + 2] > 0);
+  return mask;
+}
+
+// The planes of the slices mode for this volume (docs/volrender.md section 3).
+raycast::SliceStack slice_stack(const RenderArgs& a, const volume_pyramid::ScalarGrid& g) {
+  if (!a.contours) throw usage_error("slices mode needs --contours c0:dc:n");
+  const Contours& v = *a.contours;
+  if (!(v.dc > 0) || v.count < 1 || v.count != std::floor(v.count)) throw usage_error("--contours c0:dc:n needs dc > 0 and a whole n >= 1");
+  if (!(a.contour_width > 0)) throw usage_error("--contour-width must be positive");
+  if (a.contour_width_world && !(*a.contour_width_world > 0 && std::isfinite(*a.contour_width_world)))
+    throw usage_error("--contour-width-world must be positive");
+  raycast::SliceStack S;
+  S.c0 = v.c0, S.dc = v.dc, S.count = static_cast<int>(v.count);
+  S.width = a.contour_width, S.contour_alpha = a.contour_alpha, S.tf_unit = a.tf_unit;
+  S.width_world = a.contour_width_world.value_or(0.0);
+  if (a.slice_frame) {  // one smallest spacing wide
+    double h = INFINITY;
+    for (int ax = 0; ax < 3; ++ax)
+      h = std::min(h, std::sqrt(g.axes[ax] * g.axes[ax] + g.axes[3 + ax] * g.axes[3 + ax] + g.axes[6 + ax] * g.axes[6 + ax]));
+    S.frame_width = h;
+  }
+  if (!a.slice_axis.normal) {
+    const int ax = a.slice_axis.index_axis;
+    S.normal = raycast::normalized(raycast::Vec3{g.axes[ax], g.axes[3 + ax], g.axes[6 + ax]});
+  } else {
+    const raycast::Vec3 n = *a.slice_axis.normal;
+    if (raycast::norm(n) == 0) throw usage_error("--slice-axis normal has zero length");
+    S.normal = raycast::normalized(n);
+  }
+  if (!a.slice_at.empty()) {
+    S.offsets = a.slice_at;
+  } else {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int q = 0; q < 8; ++q) {
+      const auto w = g.world(q & 1 ? g.dims[0] - 1.0 : 0.0, q & 2 ? g.dims[1] - 1.0 : 0.0, q & 4 ? g.dims[2] - 1.0 : 0.0);
+      const double p = raycast::dot(S.normal, raycast::Vec3{w[0], w[1], w[2]});
+      lo = std::min(lo, p), hi = std::max(hi, p);
+    }
+    for (int k = 0; k < a.slice_count; ++k) S.offsets.push_back(lo + (k + 0.5) * (hi - lo) / a.slice_count);
+  }
+  return S;
 }
 
 // Linear float RGBA -> the file's bytes.
@@ -182,7 +220,7 @@ raycast::RenderedImage combine(const raycast::RenderedImage& L, const raycast::R
 // The mesh of --mesh: triangles, quads split in two; larger polygons are refused.
 std::optional<raycast::MeshTracer> load_mesh(const RenderArgs& a) {
   if (a.mesh.empty()) return std::nullopt;
-  const auto c = parse_numbers(a.mesh_color, 3, 3, "--mesh-color");
+  const auto& c = a.mesh_color;
   formats::Input in = formats::load_input(a.mesh);
   if (in.bytes.empty()) throw bad_input("empty mesh ({})", a.mesh);
   if (formats::kind_of(in.format) != formats::Kind::mesh) throw bad_input("--mesh expects a mesh, got {} ({})", formats::format_name(in.format), a.mesh);
@@ -207,155 +245,168 @@ std::optional<raycast::MeshTracer> load_mesh(const RenderArgs& a) {
   return raycast::MeshTracer(std::move(xyz), std::move(tris), {c[0], c[1], c[2]});
 }
 
-}  // namespace
+// What every image of a run shares: options checked, output format, the mesh.
+struct RenderSetup {
+  raycast::RenderOptions options;
+  std::string format;
+  std::optional<raycast::MeshTracer> mesh;
+};
 
-int run_render(const RenderArgs& a) {
-  raycast::RenderOptions o;
-  if (a.mode == "dvr") o.mode = raycast::Mode::dvr;
-  else if (a.mode == "mip") o.mode = raycast::Mode::mip;
-  else if (a.mode == "minip") o.mode = raycast::Mode::minip;
-  else if (a.mode == "avg") o.mode = raycast::Mode::avg;
-  else if (a.mode == "iso") o.mode = raycast::Mode::iso;
-  else if (a.mode == "slices") o.mode = raycast::Mode::slices;
-  else throw usage_error("unknown mode '{}'", a.mode);
-  if (o.mode == raycast::Mode::iso && a.iso.empty()) throw usage_error("iso mode needs --iso V[:alpha][,...]");
+RenderSetup setup(const RenderArgs& a) {
+  RenderSetup S;
+  raycast::RenderOptions& o = S.options;
+  o.mode = a.mode;
+  if (o.mode == raycast::Mode::iso && a.isos.empty()) throw usage_error("iso mode needs --iso V[:alpha][,...]");
   if (!(a.step > 0 && a.step <= 64)) throw usage_error("--step must be in (0, 64]");
   if (!(a.ert > 0 && a.ert <= 1)) throw usage_error("--ert must be in (0, 1]");
-  if (a.interp != "trilinear" && a.interp != "nearest") throw usage_error("--interp must be trilinear or nearest");
-  if (a.shade != "on" && a.shade != "off") throw usage_error("--shade must be on or off");
-  const std::string fmt = output_format(a.to, a.output);
+  S.format = output_format(a.to, a.output);
   const bool stereo = a.camera.stereo.has_value();
-  const std::string layout = a.camera.stereo_layout;
-  if (stereo && layout != "files" && layout != "sbs" && layout != "tb" && layout != "anaglyph")
-    throw usage_error("--stereo-layout must be files, sbs, tb or anaglyph");
-  if (stereo && layout == "files" && a.output.find("%s") == std::string::npos)
+  if (stereo && a.camera.stereo_layout == StereoLayout::files && a.output.find("%s") == std::string::npos)
     throw usage_error("--stereo with the files layout needs an output pattern with %s (L and R)");
-  o.step = a.step, o.jitter = a.jitter, o.nearest = a.interp == "nearest", o.shade = a.shade == "on";
-  const auto ph = parse_numbers(a.phong, 4, 4, "--phong");
-  o.phong = {ph[0], ph[1], ph[2], ph[3]};
+  if (a.all_frames) {
+    if (a.output == "-") throw usage_error("--frame all writes one image per frame: give -o with %d (e.g. png/%05d.png)");
+    frame_path(a.output, 0);
+    if (!a.depth_image.empty()) frame_path(a.depth_image, 0);
+  }
+  o.step = a.step, o.jitter = a.jitter, o.nearest = a.nearest, o.shade = a.shade;
+  o.phong = a.phong;
   o.two_sided = a.two_sided, o.ert = a.ert, o.preint = a.preint, o.spp = a.spp, o.skip_empty = !a.no_skip;
   o.threads = resolve_threads(a.threads);
-  if (a.bg == "none") o.keep_alpha = true;
-  else {
-    const auto bg = parse_numbers(a.bg, 3, 4, "--bg");
-    o.background = {bg[0], bg[1], bg[2]};
-  }
-  if (!a.window.empty()) {
-    const auto w = parse_numbers(a.window, 2, 2, "--window");
+  o.keep_alpha = a.keep_alpha;
+  if (!a.keep_alpha) o.background = a.background;
+  if (a.window) {
+    const auto& w = *a.window;
     if (!(w[1] > w[0])) throw usage_error("--window lo,hi needs lo < hi");
-    o.window = std::array<double, 2>{w[0], w[1]};
+    o.window = w;
   }
-  if (!a.iso.empty()) o.isos = parse_isos(a.iso, a.iso_color);
+  o.isos = a.isos;
+  return S;
+}
 
+struct FrameResult {
+  std::vector<raycast::Camera> cameras;
+  std::vector<raycast::RenderedImage> images;
+  double t_build = 0, t_render = 0;
+  std::size_t pyramid_bytes = 0;
+};
+
+// The image(s) of one volume: one, or a stereo pair.
+FrameResult render_volume(const RenderArgs& a, RenderSetup& S, const LoadedVolume& L, const raycast::TransferFunction& tf) {
+  FrameResult F;
+  raycast::RenderOptions& o = S.options;
+  F.cameras = make_cameras(a.camera, &L.grid);
+  if (o.mode == raycast::Mode::slices) o.slices = slice_stack(a, L.grid);
+  o.gradient_cache = a.gradients == Gradients::cache || (a.gradients == Gradients::automatic && L.grid.size() <= (std::size_t{64} << 20));
   auto t0 = Clock::now();
-  const Loaded L = load(a);
-  const double t_read = seconds_since(t0);
-  const auto tf = make_tf(a, L);
-  const auto cams = make_cameras(a.camera, &L.grid);
-  if (o.mode == raycast::Mode::slices) {
-    if (a.contours.empty()) throw usage_error("slices mode needs --contours c0:dc:n");
-    std::string c = a.contours;
-    std::replace(c.begin(), c.end(), ':', ',');
-    const auto v = parse_numbers(c, 3, 3, "--contours");
-    if (!(v[1] > 0) || v[2] < 1 || v[2] != std::floor(v[2])) throw usage_error("--contours c0:dc:n needs dc > 0 and a whole n >= 1");
-    if (!(a.contour_width > 0)) throw usage_error("--contour-width must be positive");
-    if (a.contour_width_world && !(*a.contour_width_world > 0 && std::isfinite(*a.contour_width_world)))
-      throw usage_error("--contour-width-world must be positive");
-    raycast::SliceStack& S = o.slices;
-    S.c0 = v[0], S.dc = v[1], S.count = static_cast<int>(v[2]);
-    S.width = a.contour_width, S.contour_alpha = a.contour_alpha, S.tf_unit = a.tf_unit;
-    S.width_world = a.contour_width_world.value_or(0.0);
-    if (a.slice_frame) {  // one smallest spacing wide
-      double h = INFINITY;
-      for (int ax = 0; ax < 3; ++ax)
-        h = std::min(h, std::sqrt(L.grid.axes[ax] * L.grid.axes[ax] + L.grid.axes[3 + ax] * L.grid.axes[3 + ax] + L.grid.axes[6 + ax] * L.grid.axes[6 + ax]));
-      S.frame_width = h;
-    }
-    const auto& g = L.grid;
-    if (a.slice_axis == "x" || a.slice_axis == "y" || a.slice_axis == "z") {
-      const int ax = a.slice_axis[0] - 'x';
-      S.normal = raycast::normalized(raycast::Vec3{g.axes[ax], g.axes[3 + ax], g.axes[6 + ax]});
-    } else {
-      const auto n = parse_numbers(a.slice_axis, 3, 3, "--slice-axis");
-      if (raycast::norm(raycast::Vec3{n[0], n[1], n[2]}) == 0) throw usage_error("--slice-axis normal has zero length");
-      S.normal = raycast::normalized(raycast::Vec3{n[0], n[1], n[2]});
-    }
-    if (!a.slice_at.empty()) {
-      S.offsets = parse_numbers(a.slice_at, 1, 4096, "--slice-at");
-    } else {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int q = 0; q < 8; ++q) {
-        const auto w = g.world(q & 1 ? g.dims[0] - 1.0 : 0.0, q & 2 ? g.dims[1] - 1.0 : 0.0, q & 4 ? g.dims[2] - 1.0 : 0.0);
-        const double p = raycast::dot(S.normal, raycast::Vec3{w[0], w[1], w[2]});
-        lo = std::min(lo, p), hi = std::max(hi, p);
-      }
-      for (int k = 0; k < a.slice_count; ++k) S.offsets.push_back(lo + (k + 0.5) * (hi - lo) / a.slice_count);
-    }
-  }
-  o.gradient_cache = a.gradients == "cache" || (a.gradients == "auto" && L.grid.size() <= (std::size_t{64} << 20));
-  t0 = Clock::now();
   // Finest level 2 (4^3 cells): skipping blocks fit the skin and bone of a CT closer than
   // 8^3 blocks (docs/volrender.md "Acceleration"); the shading volume is built once for
   // every image (both eyes of a stereo pair).
   const volume_pyramid::MinMaxPyramid pyramid(L.grid, o.threads, 2);
   raycast::ShadingVolume shading;
   if (o.shade && o.gradient_cache) shading = raycast::shading_volume(L.grid, o.threads);
-  const double t_build = seconds_since(t0);
+  F.t_build = seconds_since(t0);
+  F.pyramid_bytes = pyramid.bytes();
   t0 = Clock::now();
-  std::vector<raycast::RenderedImage> images;
-  const auto mesh = load_mesh(a);
-  for (const auto& c : cams)
-    images.push_back(raycast::render(L.grid, &pyramid, tf, c, o, mesh ? &raycast::MeshTracer::callback : nullptr,
-                                     mesh ? &*mesh : nullptr, shading.data ? &shading : nullptr));
-  const double t_render = seconds_since(t0);
-  t0 = Clock::now();
-  if (stereo && layout == "files") {
+  if (!a.mesh.empty() && !S.mesh) S.mesh = load_mesh(a);
+  const auto* mesh = S.mesh ? &*S.mesh : nullptr;
+  for (const auto& c : F.cameras)
+    F.images.push_back(raycast::render(L.grid, &pyramid, tf, c, o, mesh ? &raycast::MeshTracer::callback : nullptr, mesh,
+                                       shading.data ? &shading : nullptr));
+  F.t_render = seconds_since(t0);
+  return F;
+}
+
+// Writes the image(s) of one volume to `output` (and `depth`; "" = none).
+void write_images(const RenderArgs& a, const RenderSetup& S, const FrameResult& F, const std::string& output, const std::string& depth) {
+  const bool stereo = a.camera.stereo.has_value();
+  if (stereo && a.camera.stereo_layout == StereoLayout::files) {
     for (int e = 0; e < 2; ++e) {
-      std::string path = a.output;
+      std::string path = output;
       path.replace(path.find("%s"), 2, e ? "R" : "L");
-      write_output(path, encode(images[e], fmt, o.keep_alpha, a.linear));
+      write_output(path, encode(F.images[static_cast<std::size_t>(e)], S.format, S.options.keep_alpha, a.linear));
     }
   } else {
-    const raycast::RenderedImage img = stereo ? combine(images[0], images[1], layout) : images[0];
-    if (!a.depth_image.empty()) write_output(a.depth_image, encode_depth(img));
-    write_output(a.output, encode(img, fmt, o.keep_alpha, a.linear));
+    const char* layout = a.camera.stereo_layout == StereoLayout::sbs ? "sbs" : a.camera.stereo_layout == StereoLayout::tb ? "tb" : "anaglyph";
+    const raycast::RenderedImage img = stereo ? combine(F.images[0], F.images[1], layout) : F.images[0];
+    if (!depth.empty()) write_output(depth, encode_depth(img));
+    write_output(output, encode(img, S.format, S.options.keep_alpha, a.linear));
   }
-  const double t_write = seconds_since(t0);
+}
+
+}  // namespace
+
+int run_render(const RenderArgs& a) {
+  RenderSetup S = setup(a);
+  if (!a.screen_mask.empty()) S.options.pixel_mask = screen_mask(a.screen_mask, a.camera.width, a.camera.height);
+  formats::VolumeSourceOptions vo;
+  vo.field = a.field, vo.component = a.component, vo.frame = a.frame, vo.raw = a.raw;
+
+  auto t0 = Clock::now();
+  raycast::RenderStats stats;
+  double t_read = 0, t_build = 0, t_render = 0, t_write = 0;
+  std::size_t pyramid_bytes = 0, frame_count = 1;
+  std::vector<raycast::Camera> cameras;
+  auto account = [&](const FrameResult& F) {
+    for (const auto& im : F.images)
+      stats.rays += im.stats.rays, stats.samples += im.stats.samples, stats.skipped += im.stats.skipped, stats.terminated += im.stats.terminated;
+    t_build += F.t_build, t_render += F.t_render;
+    pyramid_bytes = std::max(pyramid_bytes, F.pyramid_bytes);
+    if (cameras.empty()) cameras = F.cameras;
+  };
+  if (!a.all_frames) {
+    const LoadedVolume L = load_volume(a.input, vo);
+    t_read = seconds_since(t0);
+    const auto tf = make_tf(a, L.lo, L.hi);
+    const FrameResult F = render_volume(a, S, L, tf);
+    account(F);
+    t0 = Clock::now();
+    write_images(a, S, F, a.output, a.depth_image);
+    t_write = seconds_since(t0);
+  } else {
+    // Every frame, one image (or pair) each. A first pass checks every frame and finds the
+    // value range over all of them, so that nothing is written for a bad frame and a preset
+    // or %-valued transfer function maps a value to the same colour in every frame.
+    const std::string name = a.input == "-" ? "stdin" : a.input;
+    const formats::Input in = formats::load_volume_input(a.input, vo);
+    if (in.bytes.empty()) throw bad_input("empty input ({})", name);
+    vo.frame = -1;
+    const formats::VolumeFrames frames(in, vo);
+    frame_count = frames.count();
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t t = 0; t < frame_count; ++t) {
+      const LoadedVolume L = load_frame(frames, t, name);
+      lo = std::min(lo, L.lo), hi = std::max(hi, L.hi);
+    }
+    t_read = seconds_since(t0);
+    const auto tf = make_tf(a, lo, hi);
+    for (std::size_t t = 0; t < frame_count; ++t) {
+      t0 = Clock::now();
+      const LoadedVolume L = load_frame(frames, t, name);
+      t_read += seconds_since(t0);
+      const FrameResult F = render_volume(a, S, L, tf);
+      account(F);
+      t0 = Clock::now();
+      write_images(a, S, F, frame_path(a.output, t), a.depth_image.empty() ? "" : frame_path(a.depth_image, t));
+      t_write += seconds_since(t0);
+    }
+  }
   if (!a.camera_json.empty()) {
     nlohmann::json j = nlohmann::json::array();
-    for (const auto& c : cams) j.push_back(camera_json(c));
+    for (const auto& c : cameras) j.push_back(camera_json(c));
     write_output(a.camera_json, j.dump(2) + "\n");
   }
   if (!a.report.empty()) {
-    raycast::RenderStats s;
-    for (const auto& im : images) s.rays += im.stats.rays, s.samples += im.stats.samples, s.skipped += im.stats.skipped, s.terminated += im.stats.terminated;
-    nlohmann::json j = {{"mode", a.mode},
-                        {"rays", s.rays},
-                        {"samples", s.samples},
-                        {"samples_skipped", s.skipped},
-                        {"rays_terminated", s.terminated},
-                        {"pyramid_bytes", pyramid.bytes()},
+    nlohmann::json j = {{"mode", mode_name(a.mode)},
+                        {"rays", stats.rays},
+                        {"samples", stats.samples},
+                        {"samples_skipped", stats.skipped},
+                        {"rays_terminated", stats.terminated},
+                        {"pyramid_bytes", pyramid_bytes},
                         {"time_s", {{"read", t_read}, {"build", t_build}, {"render", t_render}, {"write", t_write}}}};
+    if (a.all_frames) j["frames"] = frame_count;
     write_output(a.report, j.dump(2) + "\n");
   }
   return 0;
 }
 
-int run_camera_print(const CameraPrintArgs& a) {
-  std::vector<raycast::Camera> cams;
-  if (!a.input.empty()) {
-    RenderArgs ra;
-    ra.input = a.input;
-    const Loaded L = load(ra);
-    cams = make_cameras(a.camera, &L.grid);
-  } else {
-    cams = make_cameras(a.camera, nullptr);
-  }
-  nlohmann::json j = nlohmann::json::array();
-  for (const auto& c : cams) j.push_back(camera_json(c));
-  const std::string text = j.dump(2) + "\n";
-  std::fwrite(text.data(), 1, text.size(), stdout);
-  return 0;
-}
-
-}  // namespace fest::volrender
+}  // namespace fest::volrender_tool

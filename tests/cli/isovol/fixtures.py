@@ -13,6 +13,17 @@ their outputs (pure Python: no fest code).
   fixtures.py pngpixel IN.png X Y       prints the channels of pixel (X, Y) of an 8-bit PNG
   fixtures.py radial MESH.ply X,Y,Z      binary PLY with nx ny nz: the largest angle (degrees)
                                         between a vertex normal and the ray from (X, Y, Z) to it
+  fixtures.py stream OUT N              a fest frame stream (man/man5/fest-frame.5) of N frames, field
+                                        density on 24^3: a Gaussian blob at x = 7 + 3k in frame k
+  fixtures.py series OUT.nrrd N         the same N frames as one 4-D NRRD (a time series)
+  fixtures.py raw OUT.raw OUT.nrrd      one int16 volume twice: headerless big-endian, and NRRD
+                                        (little-endian, spacing 0.5 0.5 1.25)
+  fixtures.py mask OUT.png W H          a screen mask: pixel (x, y) marked (white, opaque) iff
+                                        x < W/2 and y >= 2; rows 0-1 white but transparent; the
+                                        right half black
+  fixtures.py maskcheck FULL MASKED W H R,G,B
+                                        PFMs: marked pixels of MASKED equal FULL bit for bit, the
+                                        others are exactly the background R,G,B
   fixtures.py crop IN.ply OUT.ply X,Y,Z R0 R1
                                         binary PLY of the triangles whose three vertices lie at a
                                         distance in [R0, R1) from (X, Y, Z) (for region-wise
@@ -75,6 +86,71 @@ def volume(kind, out):
         write_nrrd(out, (16, 16, 1), [float(i % 16) for i in range(256)])
     else:
         sys.exit("unknown kind " + kind)
+
+
+def blob_frame(k):
+    return field((24, 24, 24), lambda i, j, m: 100 * math.exp(-((i - 7 - 3 * k) ** 2 + (j - 11.5) ** 2 + (m - 11.5) ** 2) / 8.0))
+
+
+def stream(out, n):
+    with open(out, "wb") as f:
+        for k in range(n):
+            f.write(("NRRD0004\n# fest-frame: index=%d time=%d fields=density:1\ntype: float\ndimension: 4\n"
+                     "sizes: 1 24 24 24\nkinds: list space space space\nspacings: nan 1 1 1\nendian: little\n"
+                     "encoding: raw\n\n" % (k, k)).encode())
+            v = blob_frame(k)
+            f.write(struct.pack("<%df" % len(v), *v))
+
+
+def series(out, n):
+    with open(out, "wb") as f:
+        f.write(("NRRD0004\ntype: float\ndimension: 4\nsizes: 24 24 24 %d\nspacings: 1 1 1 1\n"
+                 "encoding: raw\nendian: little\n\n" % n).encode())
+        for k in range(n):
+            v = blob_frame(k)
+            f.write(struct.pack("<%df" % len(v), *v))
+
+
+def raw_pair(raw, nrrd):
+    dims = (20, 17, 13)
+    v = field(dims, lambda i, j, k: int(round(1000 * math.exp(-((i - 9.5) ** 2 / 30 + (j - 8) ** 2 / 20 + (k - 6) ** 2 / 12)))) - 300)
+    open(raw, "wb").write(struct.pack(">%dh" % len(v), *v))
+    with open(nrrd, "wb") as f:
+        f.write(b"NRRD0004\ntype: short\ndimension: 3\nsizes: 20 17 13\nspacings: 0.5 0.5 1.25\nencoding: raw\nendian: little\n\n")
+        f.write(struct.pack("<%dh" % len(v), *v))
+
+
+def marked(x, y, w):
+    return x < w // 2 and y >= 2
+
+
+def mask(out, w, h):
+    import zlib
+    rows = []
+    for y in range(h):
+        line = bytearray(b"\0")
+        for x in range(w):
+            line += bytes((255, 255, 255, 255) if marked(x, y, w) else (255, 255, 255, 0) if y < 2 else (0, 0, 0, 255))
+        rows.append(bytes(line))
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)
+    open(out, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(b"".join(rows))) + chunk(b"IEND", b""))
+
+
+def maskcheck(full, masked, w, h, bg):
+    wf, hf, ch, a = read_pfm(full)
+    wm, hm, _, b = read_pfm(masked)
+    if (wf, hf, wm, hm) != (w, h, w, h):
+        sys.exit("size")
+    bg = [struct.unpack("<f", struct.pack("<f", float(x)))[0] for x in bg.split(",")]
+    for y in range(h):  # y from the top; PFM rows are stored bottom up
+        row = h - 1 - y
+        for x in range(w):
+            p = (row * w + x) * ch
+            want = a[p:p + 3] if marked(x, y, w) else tuple(bg)
+            if struct.pack("<3f", *b[p:p + 3]) != struct.pack("<3f", *want):
+                sys.exit("pixel %d %d: %r, expected %r" % (x, y, b[p:p + 3], want))
 
 
 def crossings(path, iso):
@@ -301,6 +377,16 @@ if __name__ == "__main__":
         png_pixel(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
     elif cmd == "radial":
         radial(sys.argv[2], sys.argv[3])
+    elif cmd == "stream":
+        stream(sys.argv[2], int(sys.argv[3]))
+    elif cmd == "series":
+        series(sys.argv[2], int(sys.argv[3]))
+    elif cmd == "raw":
+        raw_pair(sys.argv[2], sys.argv[3])
+    elif cmd == "mask":
+        mask(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+    elif cmd == "maskcheck":
+        maskcheck(sys.argv[2], sys.argv[3], int(sys.argv[4]), int(sys.argv[5]), sys.argv[6])
     elif cmd == "crop":
         crop(sys.argv[2], sys.argv[3], sys.argv[4], float(sys.argv[5]), float(sys.argv[6]))
     else:
