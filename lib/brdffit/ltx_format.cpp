@@ -83,24 +83,19 @@ class Reader {
 };
 
 // The two record layouts (the header's lumitexel_layout and sample_layout, below), one
-// list of fields each for writing (Writer, const records) and reading (Reader).
+// list of fields each for writing (Writer, const records) and reading (Reader); the
+// fields go in order (a comma fold runs left to right).
+template <typename Io, typename... Field>
+void fields(Io& io, Field&... f) {
+  (io.field(f), ...);
+}
 template <typename Io, typename L>
 void lumitexel_fields(Io& io, L& l) {
-  io.field(l.p);
-  io.field(l.n);
-  io.field(l.triangle);
-  io.field(l.home_image);
-  io.field(l.home_pixel);
-  io.field(l.first_sample);
-  io.field(l.count);
+  fields(io, l.p, l.n, l.triangle, l.home_image, l.home_pixel, l.first_sample, l.count);
 }
 template <typename Io, typename S>
 void sample_fields(Io& io, S& s) {
-  io.field(s.image);
-  io.field(s.u_world);
-  io.field(s.v_world);
-  io.field(s.r);
-  io.field(s.weight);
+  fields(io, s.image, s.u_world, s.v_world, s.r, s.weight);
 }
 
 nlohmann::json layouts() {

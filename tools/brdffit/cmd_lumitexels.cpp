@@ -19,14 +19,14 @@
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
+#include "option_checks.hpp"
 #include "scene_io.hpp"
 
 namespace fest::brdffit_tool {
 
 int run_lumitexels(const LumitexelArgs& a) {
   const Stopwatch clock;
-  brdffit::LumitexelOptions o = a.o;
-  o.threads = resolve_threads(a.threads);
+  brdffit::LumitexelOptions o = with_threads(a.o, a.threads);
   const LoadedMesh lm = load_mesh(a.mesh);
   const Rig rig = load_rig(a.rig, a.root);
   if (rig.frame != "mesh" && rig.frame != "turntable")

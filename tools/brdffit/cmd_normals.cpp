@@ -50,8 +50,7 @@ std::string normals_ply(const brdffit::LumitexelSet& set, const brdffit::NormalR
 int run_normals(const NormalsArgs& a) {
   const Stopwatch clock;
   if (!a.ascii) refuse_binary_terminal(a.output, "use -o or a pipe");
-  brdffit::NormalOptions o = a.n;
-  o.threads = resolve_threads(a.threads);
+  const brdffit::NormalOptions o = with_threads(a.n, a.threads);
   nlohmann::json wh;
   const brdffit::Projection p = decoded_from(a.svbrdf, [&] { return brdffit::decode_ltw(read_input(a.svbrdf), &wh); });
   nlohmann::json header;

@@ -12,14 +12,14 @@
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "formats/table/table_io.hpp"
+#include "option_checks.hpp"
 #include "scene_io.hpp"
 
 namespace fest::brdffit_tool {
 
 int run_register(const RegisterArgs& a) {
   const Stopwatch clock;
-  brdffit::RegistrationOptions o = a.o;
-  o.threads = resolve_threads(a.threads);
+  const brdffit::RegistrationOptions o = with_threads(a.o, a.threads);
   const LoadedMesh lm = load_mesh(a.mesh);
   nlohmann::json report{{"stage", "register"}};
   if (!a.rig.empty()) {

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "brdffit/brdf_json.hpp"
 #include "brdffit/synthetic_scene.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -113,7 +114,7 @@ int run_synth(const SynthArgs& a) {
                        {"normals_perturbed_deg", a.perturb_deg},
                        {"views", a.setup.views},
                        {"lights", a.setup.lights}};
-  for (const auto& b : mats.brdfs) truth["materials"].push_back(brdf_to_json(b));
+  for (const auto& b : mats.brdfs) truth["materials"].push_back(brdffit::brdf_to_json(b));
   if (!mats.vertex_weights.empty()) {
     truth.erase("triangle_material");
     const std::size_t m = mats.brdfs.size();

@@ -6,6 +6,7 @@
 #include "brdffit/lafortune_fit.hpp"
 #include "brdffit/normals.hpp"
 #include "commands.hpp"
+#include "core/threads.hpp"
 
 namespace fest::brdffit_tool {
 
@@ -20,5 +21,12 @@ void check_normal_options(const brdffit::NormalOptions& o);
 
 // --basis.
 void check_basis(int basis);
+
+// Options of a lib/brdffit stage with --threads resolved (0 = all cores).
+template <typename Options>
+Options with_threads(Options o, int threads) {
+  o.threads = resolve_threads(threads);
+  return o;
+}
 
 }  // namespace fest::brdffit_tool

@@ -235,20 +235,6 @@ LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where) 
   return b;
 }
 
-nlohmann::json brdf_to_json(const LafortuneBrdf& b) {
-  auto arr = [](const Rgb& c) { return nlohmann::json{c[0], c[1], c[2]}; };
-  nlohmann::json j{{"model", "lafortune"}, {"lobes", b.lobes.size()}, {"rho_d", arr(b.rho_d)}};
-  j["Cxy"] = nlohmann::json::array();
-  j["Cz"] = nlohmann::json::array();
-  j["N"] = nlohmann::json::array();
-  for (const auto& l : b.lobes) {
-    j["Cxy"].push_back(arr(l.cxy));
-    j["Cz"].push_back(arr(l.cz));
-    j["N"].push_back(arr(l.n));
-  }
-  return j;
-}
-
 reflectance::SurfaceMaterials materials_from_json(const nlohmann::json& j, const reflectance::TriangleMesh& mesh,
                                                   const std::string& where) {
   reflectance::SurfaceMaterials m;

@@ -52,7 +52,6 @@ reflectance::PointLight light_from_json(const nlohmann::json& j, const std::stri
 nlohmann::json light_to_json(const reflectance::PointLight& l, const std::string& id = "");
 
 reflectance::LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where);
-nlohmann::json brdf_to_json(const reflectance::LafortuneBrdf& b);
 
 // The materials file (brdffit(1) MATERIALS): {"materials": [brdf.json ...],
 // "triangle_material": [per triangle]} or {"materials": [...], "vertex_weights":
