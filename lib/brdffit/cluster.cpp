@@ -273,11 +273,16 @@ bool split_cluster(const Clusterer& cl, const Members& members, const MaterialCl
 }
 
 void check_options(const ClusterOptions& o) {
-  if (o.clusters < 0 || o.clusters > 65535) throw usage_error("--clusters must be 1..65535 or auto, not {}", o.clusters);
-  if (!(o.split_scale > 0)) throw usage_error("--split-scale must be positive");
-  if (o.split_iters < 1 || o.global_iters < 0) throw usage_error("--split-iters must be >= 1 and --global-iters >= 0");
-  if (!(o.stable >= 0 && o.stable < 1) || !(o.min_cluster >= 0 && o.min_cluster < 1) || !(o.min_gain >= 0))
-    throw usage_error("--stable and --min-cluster must lie in [0, 1), --min-gain must be >= 0");
+  if (o.clusters < 0 || o.clusters > 65535)
+    throw usage_error("cluster count {} is outside 1..65535 (0 = split until the gain is small)", o.clusters);
+  if (!(o.split_scale > 0)) throw usage_error("the split step kappa must be positive, not {}", o.split_scale);
+  if (o.split_iters < 1) throw usage_error("refits per split must be at least 1, not {}", o.split_iters);
+  if (o.global_iters < 0) throw usage_error("global reassignment rounds must be >= 0, not {}", o.global_iters);
+  if (!(o.stable >= 0 && o.stable < 1))
+    throw usage_error("the stable fraction of changed members must lie in [0, 1), not {}", o.stable);
+  if (!(o.min_cluster >= 0 && o.min_cluster < 1))
+    throw usage_error("the smallest cluster fraction must lie in [0, 1), not {}", o.min_cluster);
+  if (!(o.min_gain >= 0)) throw usage_error("the smallest split gain must be >= 0, not {}", o.min_gain);
 }
 
 }  // namespace

@@ -310,7 +310,7 @@ FitResult refine_brdf(const std::vector<FitSample>& samples, const Eigen::Vector
 FitResult fit_brdf(const std::vector<FitSample>& samples, const FitOptions& o) {
   check_samples(samples);
   const int np = parameter_count(o.model);
-  if (o.starts < 1 || o.starts > 4) throw usage_error("--starts must be 1..4, not {}", o.starts);
+  if (o.starts < 1 || o.starts > 4) throw usage_error("multi-start count {} is outside 1..4", o.starts);
   std::vector<FitSample> storage;
   const std::vector<FitSample>& s = fit_set(samples, o, storage);
 

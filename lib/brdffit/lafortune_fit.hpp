@@ -20,7 +20,7 @@ namespace fest::brdffit {
 struct FitOptions {
   ModelSpec model;
   int starts = 4;                // multi-start over N in {5, 20, 80, 300} (first `starts`)
-  double huber_delta = 0;        // > 0: Huber loss with this threshold (--robust huber:d)
+  double huber_delta = 0;        // > 0: Huber loss with this threshold
   int max_iterations = 200;
   double tolerance = 1e-8;       // stop when the relative decrease of E is below this
   std::size_t subsample = 200000;  // fit on at most this many samples (0 = all)

@@ -13,7 +13,7 @@ namespace {
 int per_channel(const ModelSpec& s) { return 1 + 3 * s.lobes; }
 
 void check(const ModelSpec& s) {
-  if (s.lobes < 1 || s.lobes > 3) throw usage_error("--lobes must be 1, 2 or 3, not {}", s.lobes);
+  if (s.lobes < 1 || s.lobes > 3) throw usage_error("Lafortune lobe count {} is outside 1..3", s.lobes);
 }
 
 double clampd(double x, double lo, double hi) { return std::min(hi, std::max(lo, x)); }

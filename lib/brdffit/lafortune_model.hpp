@@ -5,7 +5,7 @@
 //
 // Layouts (exponents are optimised as log N):
 //   per channel (default): for c in RGB: [rho_d, (Cxy, Cz, log N) x K]    -> 3 (1 + 3K)
-//   --shared-lobe:         [rho_d x3, (rho_s x3, Cxy, log N) x K]         -> 3 + 5K
+//   shared lobe:           [rho_d x3, (rho_s x3, Cxy, log N) x K]         -> 3 + 5K
 // In the shared variant Cz = 1 and a lobe is rho_s,c max(0, Cxy xy + z)^N, which is a
 // Lafortune lobe with Cxy,c = rho_s,c^(1/N) Cxy and Cz,c = rho_s,c^(1/N).
 
@@ -19,10 +19,10 @@ namespace fest::brdffit {
 
 struct ModelSpec {
   int lobes = 1;        // K, 1..3
-  bool shared = false;  // --shared-lobe
+  bool shared = false;  // one lobe shape shared by the channels
   // Upper bound of every lobe's directional albedo (lobe_albedo.hpp), 0 = none. Energy
   // conservation gives 1 for radiance calibrated against a white target (docs/brdffit.md §1); without
-  // it the bound scales with the light's unknown intensity (--max-lobe-albedo).
+  // it the bound scales with the light's unknown intensity.
   double max_lobe_albedo = 1.0;
 };
 

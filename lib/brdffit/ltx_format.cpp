@@ -24,6 +24,16 @@ class Writer {
   void vec3(const Eigen::Vector3f& v) {
     for (int k = 0; k < 3; ++k) f32(v[k]);
   }
+  // One record field by its type (lumitexel_fields, sample_fields).
+  void field(std::uint16_t v) { u16(v); }
+  void field(std::uint32_t v) { u32(v); }
+  void field(std::uint64_t v) { u64(v); }
+  void field(float v) { f32(v); }
+  void field(const Eigen::Vector3f& v) { vec3(v); }
+  void field(const Eigen::Vector2f& v) {
+    f32(v.x());
+    f32(v.y());
+  }
 
  private:
   void le(std::uint64_t v, int n) {
@@ -50,6 +60,16 @@ class Reader {
     for (int k = 0; k < 3; ++k) v[k] = f32();
     return v;
   }
+  // One record field by its type (lumitexel_fields, sample_fields).
+  void field(std::uint16_t& v) { v = u16(); }
+  void field(std::uint32_t& v) { v = u32(); }
+  void field(std::uint64_t& v) { v = u64(); }
+  void field(float& v) { v = f32(); }
+  void field(Eigen::Vector3f& v) { v = vec3(); }
+  void field(Eigen::Vector2f& v) {
+    v.x() = f32();
+    v.y() = f32();
+  }
 
  private:
   std::uint64_t le(int n) {
@@ -61,6 +81,22 @@ class Reader {
   const std::vector<std::uint8_t>& in_;
   std::size_t pos_;
 };
+
+// The two record layouts (the header's lumitexel_layout and sample_layout, below), one
+// list of fields each for writing (Writer, const records) and reading (Reader); the
+// fields go in order (a comma fold runs left to right).
+template <typename Io, typename... Field>
+void fields(Io& io, Field&... f) {
+  (io.field(f), ...);
+}
+template <typename Io, typename L>
+void lumitexel_fields(Io& io, L& l) {
+  fields(io, l.p, l.n, l.triangle, l.home_image, l.home_pixel, l.first_sample, l.count);
+}
+template <typename Io, typename S>
+void sample_fields(Io& io, S& s) {
+  fields(io, s.image, s.u_world, s.v_world, s.r, s.weight);
+}
 
 nlohmann::json layouts() {
   return {{"lumitexel_layout",
@@ -102,23 +138,8 @@ std::vector<std::uint8_t> encode_ltx(const LumitexelSet& set, const nlohmann::js
   Writer w(out);
   w.u32(static_cast<std::uint32_t>(text.size()));
   for (char ch : text) out.push_back(static_cast<std::uint8_t>(ch));
-  for (const Lumitexel& l : set.lumitexels) {
-    w.vec3(l.p);
-    w.vec3(l.n);
-    w.u32(l.triangle);
-    w.u16(l.home_image);
-    w.f32(l.home_pixel.x());
-    w.f32(l.home_pixel.y());
-    w.u64(l.first_sample);
-    w.u16(l.count);
-  }
-  for (const Sample& s : set.samples) {
-    w.u16(s.image);
-    w.vec3(s.u_world);
-    w.vec3(s.v_world);
-    w.vec3(s.r);
-    w.f32(s.weight);
-  }
+  for (const Lumitexel& l : set.lumitexels) lumitexel_fields(w, l);
+  for (const Sample& s : set.samples) sample_fields(w, s);
   return out;
 }
 
@@ -157,24 +178,9 @@ LumitexelSet decode_ltx(const std::vector<std::uint8_t>& bytes, nlohmann::json* 
     throw bad_input("{} bytes after the records (offset {})", avail - expected, start + expected);
   Reader r(bytes, start);
   set.lumitexels.resize(n);
-  for (Lumitexel& l : set.lumitexels) {
-    l.p = r.vec3();
-    l.n = r.vec3();
-    l.triangle = r.u32();
-    l.home_image = r.u16();
-    l.home_pixel.x() = r.f32();
-    l.home_pixel.y() = r.f32();
-    l.first_sample = r.u64();
-    l.count = r.u16();
-  }
+  for (Lumitexel& l : set.lumitexels) lumitexel_fields(r, l);
   set.samples.resize(m);
-  for (Sample& s : set.samples) {
-    s.image = r.u16();
-    s.u_world = r.vec3();
-    s.v_world = r.vec3();
-    s.r = r.vec3();
-    s.weight = r.f32();
-  }
+  for (Sample& s : set.samples) sample_fields(r, s);
   try {
     check_records(set);
   } catch (const Error& e) {

@@ -1,11 +1,11 @@
 #include "brdffit/lumitexel_builder.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "reflectance/parallel_rows.hpp"
 #include "reflectance/rasterizer.hpp"
 
@@ -15,10 +15,6 @@ namespace {
 using reflectance::Fragments;
 using reflectance::PinholeCamera;
 using reflectance::TriangleMesh;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 bool same_camera(const PinholeCamera& a, const PinholeCamera& b) {
   return a.fx == b.fx && a.fy == b.fy && a.cx == b.cx && a.cy == b.cy && a.width == b.width && a.height == b.height &&
@@ -130,13 +126,13 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
     for (const ImageView& v : views) shadow_res = std::max({shadow_res, v.camera.width, v.camera.height});
     shadow_res = std::clamp(shadow_res, 512, 8192);
   }
-  auto t0 = std::chrono::steady_clock::now();
+  auto t0 = SteadyClock::now();
 
   // 1. Home images.
   const HomeAssignment home = assign_home_images(mesh, views, o.threads);
   for (std::int32_t h : home.image) rep.triangles_with_home += h >= 0;
   rep.seconds.push_back(seconds_since(t0));
-  t0 = std::chrono::steady_clock::now();
+  t0 = SteadyClock::now();
 
   // 2. One lumitexel per home pixel, grouped by triangle.
   std::vector<Lumitexel> points;
@@ -166,7 +162,7 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
   rep.candidates = points.size();
   if (points.size() > std::numeric_limits<std::uint32_t>::max()) throw bad_input("more than 2^32 lumitexels");
   rep.seconds.push_back(seconds_since(t0));
-  t0 = std::chrono::steady_clock::now();
+  t0 = SteadyClock::now();
 
   // 3. Samples, one image at a time; depth buffers per distinct camera are reused.
   std::vector<std::size_t> first_image;

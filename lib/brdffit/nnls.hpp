@@ -1,6 +1,6 @@
 #pragma once
 // Non-negative least squares, min |A x - b| subject to x >= 0, by the active-set method of
-// Lawson and Hanson (Solving Least Squares Problems, 1974, ch. 23): `project --nonneg`.
+// Lawson and Hanson (Solving Least Squares Problems, 1974, ch. 23): the non-negative weights of the projection.
 
 #include <Eigen/Core>
 

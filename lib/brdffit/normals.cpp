@@ -113,9 +113,11 @@ Eigen::Vector3d refine_normal(const Sample* s, std::size_t count, const Eigen::V
 }
 
 NormalResult refine_normals(const LumitexelSet& set, const Projection& p, const NormalOptions& o) {
-  if (o.min_samples < 3) throw usage_error("--normal-min-samples must be at least 3 (two unknowns), not {}", o.min_samples);
-  if (!(o.max_tilt_deg > 0 && o.max_tilt_deg < 90)) throw usage_error("--max-tilt must lie in (0, 90) degrees");
-  if (o.alternate < 1) throw usage_error("--alternate must be at least 1");
+  if (o.min_samples < 3)
+    throw usage_error("normal refinement needs at least 3 samples per lumitexel (two unknowns), not {}", o.min_samples);
+  if (!(o.max_tilt_deg > 0 && o.max_tilt_deg < 90))
+    throw usage_error("the largest normal tilt must lie in (0, 90) degrees, not {}", o.max_tilt_deg);
+  if (o.alternate < 1) throw usage_error("rounds of re-projection and normals must be at least 1, not {}", o.alternate);
   if (p.cluster.size() != set.lumitexels.size()) throw bad_input("the weights are for {} lumitexels, the lumitexel file has {}", p.cluster.size(), set.lumitexels.size());
   const std::size_t n = set.lumitexels.size();
   NormalResult res;

@@ -15,7 +15,7 @@ namespace fest::brdffit {
 namespace {
 
 void check(const ProjectOptions& o) {
-  if (o.basis < 1 || o.basis > 64) throw usage_error("--basis must be 1..64, not {}", o.basis);
+  if (o.basis < 1 || o.basis > 64) throw usage_error("basis size {} per cluster is outside 1..64", o.basis);
   if (!(o.svd_threshold >= 0 && o.svd_threshold < 1)) throw usage_error("the SVD threshold must lie in [0, 1)");
 }
 

@@ -4,7 +4,7 @@
 // of cluster C (reconstructed; the paper gives only its size): f_C, the two children of
 // one trial split of C, then the BRDFs of the other clusters nearest to C's members
 // (mean D) until `basis` functions. Weights by linear least squares "computed using
-// singular value decomposition", or NNLS with --nonneg.
+// singular value decomposition", or NNLS when non-negative weights are asked for.
 
 #include <cstddef>
 #include <cstdint>

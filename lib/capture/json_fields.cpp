@@ -3,27 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/closest_word.hpp"
 #include "core/error.hpp"
 
 namespace fest::capture {
-namespace {
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
-}  // namespace
 
 std::string json_path(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
@@ -38,12 +21,7 @@ void JsonFields::keys(const nlohmann::json& object, const std::string& path, con
   for (const auto& item : object.items()) {
     const std::string& key = item.key();
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-    std::string hint;
-    std::size_t best = std::max<std::size_t>(2, key.size() / 3) + 1;
-    for (const std::string& c : allowed) {
-      const std::size_t d = edit_distance(key, c);
-      if (d < best) best = d, hint = c;
-    }
+    const std::string hint = closest_word(key, allowed);
     fail(hint.empty() ? fmt::format("unknown key \"{}\"", key)
                       : fmt::format("unknown key \"{}\" (did you mean \"{}\"?)", key, hint),
          path);

@@ -13,26 +13,26 @@ namespace fest::capture {
 
 using nlohmann::json;
 
-namespace {
-
 std::vector<double> even_angles(int count) {
   std::vector<double> a;
   for (int i = 0; i < count; ++i) a.push_back(360.0 * i / count);
   return a;
 }
 
-std::vector<double> geometric(double base, double stops, int count) {
+std::vector<double> bracket_exposures(double base_s, double stops, int count) {
   std::vector<double> t;
-  for (int k = 0; k < count; ++k) t.push_back(base * std::pow(2.0, stops * k));
+  for (int k = 0; k < count; ++k) t.push_back(base_s * std::pow(2.0, stops * k));
   return t;
 }
+
+namespace {
 
 double parse_number(const std::string& text, const char* what) {
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || errno != 0 || end != text.c_str() + text.size() || !std::isfinite(v))
-    throw usage_error("{}: '{}' is not a number", what, text);
+    throw usage_error("{} '{}' is not a number", what, text);
   return v;
 }
 
@@ -67,12 +67,13 @@ double seconds_from_text(const std::string& text) {
 
 std::vector<double> angles_from_flag(const std::string& text) {
   if (text.find(',') == std::string::npos) {
-    const double n = parse_number(text, "--angles");
-    if (n < 1 || n > 100000 || n != std::floor(n)) throw usage_error("--angles {}: a count must be an integer >= 1", text);
+    const double n = parse_number(text, "turntable angle count");
+    if (n < 1 || n > 100000 || n != std::floor(n))
+      throw usage_error("turntable angle count {} must be a whole number in 1..100000", text);
     return even_angles(int(n));
   }
   std::vector<double> a;
-  for (const std::string& p : split(text, ',')) a.push_back(parse_number(p, "--angles"));
+  for (const std::string& p : split(text, ',')) a.push_back(parse_number(p, "turntable angle"));
   return a;
 }
 
@@ -80,18 +81,19 @@ std::vector<double> exposures_from_flag(const std::string& text) {
   std::vector<double> t;
   if (text.find(':') != std::string::npos) {
     const std::vector<std::string> p = split(text, ':');
-    if (p.size() != 3) throw usage_error("--bracket {}: expected BASE:STOPS:COUNT, e.g. 1/1000:1:12", text);
+    if (p.size() != 3) throw usage_error("exposure bracket '{}': expected BASE:STOPS:COUNT, e.g. 1/1000:1:12", text);
     const double base = seconds_from_text(p[0]);
-    const double stops = parse_number(p[1], "--bracket stops");
-    const double count = parse_number(p[2], "--bracket count");
-    if (!(stops > 0) || stops > 8) throw usage_error("--bracket: stops must be in (0, 8]");
-    if (count < 1 || count > 64 || count != std::floor(count)) throw usage_error("--bracket: count must be in 1..64");
-    t = geometric(base, stops, int(count));
+    const double stops = parse_number(p[1], "bracket stops");
+    const double count = parse_number(p[2], "bracket count");
+    if (!(stops > 0) || stops > 8) throw usage_error("bracket stops must be in (0, 8], not {}", p[1]);
+    if (count < 1 || count > 64 || count != std::floor(count))
+      throw usage_error("bracket count must be a whole number in 1..64, not {}", p[2]);
+    t = bracket_exposures(base, stops, int(count));
   } else {
     for (const std::string& p : split(text, ',')) t.push_back(seconds_from_text(p));
   }
   for (std::size_t k = 1; k < t.size(); ++k)
-    if (!(t[k] > t[k - 1])) throw usage_error("--bracket: exposure times must increase");
+    if (!(t[k] > t[k - 1])) throw usage_error("the bracket's exposure times must increase");
   return t;
 }
 
@@ -127,8 +129,9 @@ Plan parse_plan(const json& doc, const std::string& where) {
     f.keys(e, "exposures_s", {"base", "stops", "count"});
     for (const char* k : {"base", "stops", "count"})
       if (!e.contains(k)) f.fail("missing", std::string("exposures_s.") + k);
-    p.exposures_s = geometric(f.positive(e["base"], "exposures_s.base"), f.number(e["stops"], "exposures_s.stops", 0.01, 8),
-                              f.integer(e["count"], "exposures_s.count", 1, 64));
+    p.exposures_s = bracket_exposures(f.positive(e["base"], "exposures_s.base"),
+                                      f.number(e["stops"], "exposures_s.stops", 0.01, 8),
+                                      f.integer(e["count"], "exposures_s.count", 1, 64));
   } else {
     p.exposures_s = f.numbers(e, "exposures_s", 0);
   }

@@ -34,9 +34,15 @@ struct Plan {
 Plan parse_plan(const nlohmann::json& doc, const std::string& where);
 nlohmann::json plan_to_json(const Plan& plan);
 
-// `capture plan` flags: "24" (count) or "0,15,30"; "each" or "L0,L1"; "1/1000:1:12"
-// (base : stops : count) or a list "0.001,0.002". Throws usage_error.
+// The text notations of a plan's angles and exposures (capture(1) writes its flags in
+// them): angles "24" (a count of equal steps) or a list "0,15,30" in degrees; exposures
+// "1/1000:1:12" (base : stops : count) or an increasing list "0.001,0.002". Throws
+// usage_error in those terms; the tool adds the flag's name.
 std::vector<double> angles_from_flag(const std::string& text);
+// `count` equal steps over a revolution from 0 degrees.
+std::vector<double> even_angles(int count);
+// base_s * 2^(stops k) for k = 0 .. count-1.
+std::vector<double> bracket_exposures(double base_s, double stops, int count);
 std::vector<double> exposures_from_flag(const std::string& text);
 double seconds_from_text(const std::string& text);  // "0.001", "1e-3", "1/1000"
 

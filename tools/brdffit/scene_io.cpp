@@ -235,20 +235,6 @@ LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where) 
   return b;
 }
 
-nlohmann::json brdf_to_json(const LafortuneBrdf& b) {
-  auto arr = [](const Rgb& c) { return nlohmann::json{c[0], c[1], c[2]}; };
-  nlohmann::json j{{"model", "lafortune"}, {"lobes", b.lobes.size()}, {"rho_d", arr(b.rho_d)}};
-  j["Cxy"] = nlohmann::json::array();
-  j["Cz"] = nlohmann::json::array();
-  j["N"] = nlohmann::json::array();
-  for (const auto& l : b.lobes) {
-    j["Cxy"].push_back(arr(l.cxy));
-    j["Cz"].push_back(arr(l.cz));
-    j["N"].push_back(arr(l.n));
-  }
-  return j;
-}
-
 reflectance::SurfaceMaterials materials_from_json(const nlohmann::json& j, const reflectance::TriangleMesh& mesh,
                                                   const std::string& where) {
   reflectance::SurfaceMaterials m;
@@ -377,9 +363,33 @@ cv::Mat tonemap(const cv::Mat& rgb, double exposure) {
   return out;
 }
 
+void refuse_binary_terminal(const std::string& path, const char* advice) {
+  if (is_stdio(path) && isatty(STDOUT_FILENO)) throw usage_error("refusing to write binary to a terminal ({})", advice);
+}
+
 void write_binary(const std::string& path, const std::vector<std::uint8_t>& bytes) {
-  if (is_stdio(path) && isatty(STDOUT_FILENO)) throw usage_error("refusing to write binary to a terminal (use -o FILE)");
+  refuse_binary_terminal(path);
   write_output(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+void write_report(const std::string& path, const nlohmann::json& j) {
+  if (!path.empty()) write_output(path, formats::write_json(j));
+}
+
+reflectance::EnvironmentMap load_environment(const std::string& path) {
+  cv::Mat rgb, valid;
+  load_radiance(path, rgb, valid);
+  reflectance::EnvironmentMap env;
+  env.width = rgb.cols;
+  env.height = rgb.rows;
+  env.rgb.resize(static_cast<std::size_t>(rgb.cols) * rgb.rows * 3);
+  for (int y = 0; y < rgb.rows; ++y)
+    for (int x = 0; x < rgb.cols; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v = rgb.at<cv::Vec3f>(y, x)[c];
+        env.rgb[(static_cast<std::size_t>(y) * rgb.cols + x) * 3 + static_cast<std::size_t>(c)] = std::isfinite(v) ? v : 0.f;
+      }
+  return env;
 }
 
 }  // namespace fest::brdffit_tool

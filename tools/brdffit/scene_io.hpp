@@ -12,6 +12,7 @@
 #include "brdffit/lumitexel_builder.hpp"
 #include "brdffit/texture_atlas.hpp"
 #include "reflectance/camera.hpp"
+#include "reflectance/environment.hpp"
 #include "reflectance/lafortune.hpp"
 #include "reflectance/render.hpp"
 #include "reflectance/triangle_mesh.hpp"
@@ -51,7 +52,6 @@ reflectance::PointLight light_from_json(const nlohmann::json& j, const std::stri
 nlohmann::json light_to_json(const reflectance::PointLight& l, const std::string& id = "");
 
 reflectance::LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where);
-nlohmann::json brdf_to_json(const reflectance::LafortuneBrdf& b);
 
 // The materials file (brdffit(1) MATERIALS): {"materials": [brdf.json ...],
 // "triangle_material": [per triangle]} or {"materials": [...], "vertex_weights":
@@ -86,7 +86,17 @@ std::string encode_png(const cv::Mat& mat);
 // Tone-mapped 8-bit sRGB preview: x -> sRGB(clamp(exposure x)).
 cv::Mat tonemap(const cv::Mat& rgb, double exposure);
 
+// Binary products go to a terminal only by mistake: a usage error for "-" on a terminal,
+// naming `advice` (what to do instead).
+void refuse_binary_terminal(const std::string& path, const char* advice = "use -o FILE");
+
 // Writes binary data to a path, refusing a terminal for "-" (usage error).
 void write_binary(const std::string& path, const std::vector<std::uint8_t>& bytes);
+
+// A --report JSON; nothing when `path` is empty.
+void write_report(const std::string& path, const nlohmann::json& j);
+
+// A lat-long HDR environment map (EXR/PFM); non-finite texels become 0.
+reflectance::EnvironmentMap load_environment(const std::string& path);
 
 }  // namespace fest::brdffit_tool

@@ -1,15 +1,14 @@
-// brdffit factor: brdf.json -> lib/brdffit/separable -> PREFIXg.exr, PREFIXh.exr and a JSON
-// report of the rank-1 errors on standard output.
-
-#include "factor_command.hpp"
+// brdffit factor (docs/brdffit.md §6): brdf.json -> lib/brdffit/separable -> PREFIXg.exr,
+// PREFIXh.exr and a JSON report of the rank-1 errors on standard output.
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
 #include "brdffit/separable.hpp"
-#include "cli/cli.hpp"
+#include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
@@ -18,12 +17,6 @@
 
 namespace fest::brdffit_tool {
 namespace {
-
-struct FactorArgs {
-  std::string brdf, prefix;
-  int theta_bins = 32, phi_bins = 64, threads = 0;
-  bool no_compare = false;
-};
 
 // One factor as an image: rows theta (0 at the pole), columns phi.
 cv::Mat factor_image(const std::vector<Eigen::Vector3d>& v, int theta_bins, int phi_bins) {
@@ -42,7 +35,9 @@ nlohmann::json error_json(const brdffit::SeparableFactors& f) {
           {"iterations", f.iterations}};
 }
 
-void run_factor(const FactorArgs& a) {
+}  // namespace
+
+int run_factor(const FactorArgs& a) {
   if (a.theta_bins * a.phi_bins > 4096)
     throw usage_error("--theta-bins {} x --phi-bins {}: at most 4096 directions", a.theta_bins, a.phi_bins);
   const reflectance::LafortuneBrdf brdf = brdf_from_json(load_json(a.brdf), a.brdf);
@@ -66,21 +61,7 @@ void run_factor(const FactorArgs& a) {
   gf.commit();
   hf.commit();
   write_output("-", formats::write_json(report));
-}
-
-}  // namespace
-
-void add_factor_command(CLI::App& app) {
-  static FactorArgs fa;
-  auto* f = app.add_subcommand("factor", "Separable approximation of one BRDF for display (Kautz & McCool): rank-1 "
-                                         "factors g(half) h(difference) as EXR, errors as JSON");
-  f->add_option("--brdf", fa.brdf, "brdf.json (brdffit fit)")->required();
-  f->add_option("-o,--output", fa.prefix, "Prefix of PREFIXg.exr and PREFIXh.exr")->required();
-  f->add_option("--theta-bins", fa.theta_bins, "Cells in theta over [0, 90) degrees")->check(CLI::Range(1, 1024));
-  f->add_option("--phi-bins", fa.phi_bins, "Cells in phi over [0, 360) degrees")->check(CLI::Range(1, 1024));
-  f->add_flag("--no-compare", fa.no_compare, "Skip the (omega_o, omega_i) factorisation the report compares with");
-  cli::add_threads(*f, fa.threads);
-  f->callback([] { run_factor(fa); });
+  return 0;
 }
 
 }  // namespace fest::brdffit_tool
