@@ -50,21 +50,6 @@ KNOWN_VIOLATIONS=(
   # A test compiling a tool's source instead of linking fest_<tool>_app.
   # Tools whose command files are not yet the library fest_<tool>_app.
   # Messages in lib/ that name the tools' flags instead of the domain's terms.
-  "lib/brdffit/cluster.cpp: flag-in-lib: --clusters"
-  "lib/brdffit/cluster.cpp: flag-in-lib: --global-iters"
-  "lib/brdffit/cluster.cpp: flag-in-lib: --min-cluster"
-  "lib/brdffit/cluster.cpp: flag-in-lib: --min-gain"
-  "lib/brdffit/cluster.cpp: flag-in-lib: --split-iters"
-  "lib/brdffit/cluster.cpp: flag-in-lib: --split-scale"
-  "lib/brdffit/cluster.cpp: flag-in-lib: --stable"
-  "lib/brdffit/lafortune_fit.cpp: flag-in-lib: --starts"
-  "lib/brdffit/lafortune_model.cpp: flag-in-lib: --lobes"
-  "lib/brdffit/normals.cpp: flag-in-lib: --alternate"
-  "lib/brdffit/normals.cpp: flag-in-lib: --max-tilt"
-  "lib/brdffit/normals.cpp: flag-in-lib: --normal-min-samples"
-  "lib/brdffit/project.cpp: flag-in-lib: --basis"
-  "lib/capture/plan.cpp: flag-in-lib: --angles"
-  "lib/capture/plan.cpp: flag-in-lib: --bracket"
   "lib/core/threads.cpp: flag-in-lib: --threads"
   "lib/core/volume.cpp: flag-in-lib: --frame"
   "lib/facefit/landmark_set.cpp: flag-in-lib: --skip-unmapped"
