@@ -6,7 +6,7 @@
 
 #include "lmfsim/model.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 struct TrajectoryRow {
   long frame = 0;
@@ -21,4 +21,4 @@ void append_row(std::string& out, const TrajectoryRow& r);
 // Throws bad_input naming `name` and the line for anything malformed.
 std::vector<TrajectoryRow> parse_trajectory(const std::string& bytes, const std::string& name);
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool
