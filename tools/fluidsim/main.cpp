@@ -2,6 +2,7 @@
 // interpolation (docs/fluidsim.md). Flags -> typed options; the subcommands live in
 // cmd_<sub>.cpp.
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -25,25 +26,19 @@ PoissonSolver poisson_solver(const std::string& name) {
   throw usage_error("--poisson must be fdm, fft, mg, gs or jacobi, not \"{}\"", name);
 }
 
-std::string extension_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  return path.substr(dot + 1);
-}
-
 // run's frames: the stream on standard output, else --to or the pattern's extension.
 FrameFormat frame_format(const std::string& to, const std::string& output) {
   if (output == "-" || output.empty()) {
     if (!to.empty() && to != "nrrd") throw usage_error("standard output carries the NRRD frame stream only");
     return FrameFormat::stream;
   }
-  const std::string f = to.empty() ? extension_of(output) : to;
-  if (f == "vti") return FrameFormat::vti;
-  if (f == "nrrd") return FrameFormat::nrrd;
-  if (f == "pfm") return FrameFormat::pfm;
-  if (f == "exr") return FrameFormat::exr;
-  if (f == "png") return FrameFormat::png;
+  // ".vti": the pattern's extension, or --to with a dot.
+  const std::string f = to.empty() ? std::filesystem::path(output).extension().string() : "." + to;
+  if (f == ".vti") return FrameFormat::vti;
+  if (f == ".nrrd") return FrameFormat::nrrd;
+  if (f == ".pfm") return FrameFormat::pfm;
+  if (f == ".exr") return FrameFormat::exr;
+  if (f == ".png") return FrameFormat::png;
   throw usage_error("output format must be vti, nrrd, pfm, exr or png (from --to or the extension of \"{}\")", output);
 }
 

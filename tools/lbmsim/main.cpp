@@ -1,6 +1,7 @@
 // lbmsim: lattice-Boltzmann flow solver (D2Q9/D3Q19, BGK/TRT). Flags -> typed options;
 // the subcommands live in the fest_lbmsim_app library (cmd_<sub>.cpp).
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,13 +20,6 @@ namespace lbm = fest::lbm;
 const std::vector<std::pair<std::string, lbm::Precision>> kPrecisions{{"double", lbm::Precision::f64},
                                                                       {"float", lbm::Precision::f32}};
 
-std::string extension_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  return path.substr(dot + 1);
-}
-
 // run's fields: the stream on standard output, else --to or the pattern's extension.
 FieldFormat field_format(const std::string& to, const std::string& output) {
   if (output.empty() || output == "-") {
@@ -33,9 +27,10 @@ FieldFormat field_format(const std::string& to, const std::string& output) {
       throw usage_error("standard output carries the frame stream only (--to stream)");
     return FieldFormat::stream;
   }
-  const std::string f = to.empty() ? extension_of(output) : to;
-  if (f == "vti") return FieldFormat::vti;
-  if (f == "nrrd") return FieldFormat::nrrd;
+  // ".vti": the pattern's extension, or --to with a dot.
+  const std::string f = to.empty() ? std::filesystem::path(output).extension().string() : "." + to;
+  if (f == ".vti") return FieldFormat::vti;
+  if (f == ".nrrd") return FieldFormat::nrrd;
   throw usage_error("output format must be vti or nrrd (from --to or the extension of \"{}\"), or - for the stream",
                     output);
 }

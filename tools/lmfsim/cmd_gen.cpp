@@ -127,7 +127,7 @@ json gen_activation(const GenOptions& o) {
           {"events", events}, {"sim", sim}};
 }
 
-// Knife edge (spec §5): a box held on z = 0 (point_on_plane at the COM, body z parallel
+// Knife edge (docs/lmfsim.md §2, §7): a box held on z = 0 (point_on_plane at the COM, body z parallel
 // to world z) with a blade along body x through the COM; speed 1 m/s, yaw rate --omega0:
 // the COM runs on a circle of radius 1/omega0.
 json gen_sleigh(const GenOptions& o) {

@@ -1,5 +1,5 @@
 // lmfsim reduced: reduced-coordinate references for planar chains and the four-bar
-// (spec §2.5), written in the layout of `run` so that `diff` can compare the two.
+// (docs/lmfsim.md §5), written in the layout of `run` so that `diff` can compare the two.
 #include <cmath>
 
 #include "commands.hpp"

@@ -68,7 +68,7 @@ int cmd_run(const RunOptions& opt) {
   const int nb = static_cast<int>(bodies.size());
 
   if (sim.formulation == Formulation::penalty) {
-    // Stiffness warning of spec §2.5: h w0 sqrt(kappa max diag(J M^-1 J^T)) > 0.5.
+    // Stiffness warning of docs/lmfsim.md §5: h w0 sqrt(kappa max diag(J M^-1 J^T)) > 0.5.
     const Eigen::VectorXd s0 = sys.initial_state();
     Eigen::VectorXd ds;
     sys.derivative(0, s0, ds);

@@ -1,5 +1,5 @@
 #pragma once
-// lmfsim's trajectory CSV (spec §4): `frame,t,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz`.
+// lmfsim's trajectory CSV (lmfsim(1), docs/lmfsim.md): `frame,t,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz`.
 
 #include <string>
 #include <vector>
