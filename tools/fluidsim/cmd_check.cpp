@@ -18,26 +18,28 @@ int check_command(const CheckOptions& o) {
   co.dt = o.dt;
   co.nu = o.nu;
   json report;
-  const std::string& w = o.which;
-  auto run_one = [&](const std::string& name) {
-    if (name == "projection") return check_projection(co);
-    if (name == "taylor-green") return check_taylor_green(co);
-    if (name == "abc") return check_abc(co);
-    if (name == "mass") return check_mass(co);
-    if (name == "stability") return check_stability(co);
-    return check_interp(co);
+  auto run_one = [&](CheckCase which) {
+    switch (which) {
+      case CheckCase::projection: return check_projection(co);
+      case CheckCase::taylor_green: return check_taylor_green(co);
+      case CheckCase::abc: return check_abc(co);
+      case CheckCase::mass: return check_mass(co);
+      case CheckCase::stability: return check_stability(co);
+      default: return check_interp(co);
+    }
   };
-  if (w == "all") {
+  if (o.which == CheckCase::all) {
     report = {{"check", "all"}, {"cases", json::array()}};
     bool pass = true;
-    for (const char* name : {"projection", "taylor-green", "abc", "mass", "stability", "interp"}) {
-      json r = run_one(name);
+    for (const CheckCase which : {CheckCase::projection, CheckCase::taylor_green, CheckCase::abc, CheckCase::mass,
+                                  CheckCase::stability, CheckCase::interp}) {
+      json r = run_one(which);
       pass = pass && r["pass"].get<bool>();
       report["cases"].push_back(r);
     }
     report["pass"] = pass;
   } else {
-    report = run_one(w);
+    report = run_one(o.which);
   }
   const std::string text = report.dump(2) + "\n";
   if (!o.report.empty()) write_output(o.report, text);

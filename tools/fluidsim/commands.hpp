@@ -58,8 +58,11 @@ struct InterpOptions {
   std::string output = "-";
 };
 
+// The analytic cases of `check` (docs/fluidsim.md), or all of them.
+enum class CheckCase { taylor_green, abc, projection, interp, mass, stability, all };
+
 struct CheckOptions {
-  std::string which = "all";
+  CheckCase which = CheckCase::all;
   int n = 0;
   double dt = 0.0;
   double nu = 0.01;

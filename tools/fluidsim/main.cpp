@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 
@@ -154,8 +155,14 @@ int main(int argc, char** argv) {
 
   CheckOptions ck;
   CLI::App* c = app.add_subcommand("check", "Run an analytic case and print its JSON report; exit 1 when it fails");
-  c->add_option("case", ck.which, "taylor-green, abc, projection, interp, mass, stability or all")
-      ->check(CLI::IsMember({"taylor-green", "abc", "projection", "interp", "mass", "stability", "all"}));
+  fest::cli::enum_words<CheckCase>(c->add_option("case", ck.which, "taylor-green, abc, projection, interp, mass, stability or all"),
+                                   {{"taylor-green", CheckCase::taylor_green},
+                                    {"abc", CheckCase::abc},
+                                    {"projection", CheckCase::projection},
+                                    {"interp", CheckCase::interp},
+                                    {"mass", CheckCase::mass},
+                                    {"stability", CheckCase::stability},
+                                    {"all", CheckCase::all}});
   c->add_option("--n", ck.n, "Resolution of the large-step run (taylor-green, abc) or the grid (stability)")
       ->check(CLI::Range(8, 512));
   c->add_option("--dt", ck.dt, "Step of the large-step run")->check(CLI::Range(1e-6, 10.0));
