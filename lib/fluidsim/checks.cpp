@@ -1,9 +1,9 @@
 #include "fluidsim/checks.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <random>
 
+#include "core/stopwatch.hpp"
 #include "fluidsim/advection.hpp"
 #include "fluidsim/diffusion.hpp"
 #include "fluidsim/operators.hpp"
@@ -355,24 +355,17 @@ json check_stability(const CheckOptions& o) {
 }
 
 json check_interp(const CheckOptions&) {
-  using Clock = std::chrono::steady_clock;
+  using Clock = SteadyClock;
   Scene sc;
   sc.dims = {24, 24, 24};
   sc.init.kind = "noise";
   sc.frame_dt = 0.01;
-  ScalarSpec s;
   Source src;
   src.shape = Source::Shape::sphere;
   src.centre = {12, 12, 6};
   src.radius = 3;
   src.rate = 5;
-  s.sources = {src};
-  sc.scalars = {s};
-  Force f;
-  f.type = Force::Type::buoyancy;
-  f.scalar = "density";
-  f.beta = 1.0;
-  sc.forces = {f};
+  add_plume(sc, src);
   const int K = 5;
   const double dt = K * sc.frame_dt;
   const Simulator sim(sc, {});
@@ -383,7 +376,7 @@ json check_interp(const CheckOptions&) {
     State next = states.back();
     const auto t0 = Clock::now();
     sim.step(next, dt);
-    step_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    step_ms += ms_since(t0);
     states.push_back(next);
   }
   step_ms /= 2;
@@ -401,7 +394,7 @@ json check_interp(const CheckOptions&) {
   for (int rep = 0; rep < 5; ++rep) {
     const auto t0 = Clock::now();
     f2 = blend(states[0], states[1], 2.0 / K);
-    interp_ms = std::min(interp_ms, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    interp_ms = std::min(interp_ms, ms_since(t0));
   }
   double ulp_err = 0.0;
   for (int c = 0; c < 3; ++c)

@@ -222,7 +222,7 @@ Frame make_frame(const Layout& L, const State& st, const std::vector<std::string
         channels.push_back(&st.s[i]);
         found = true;
       }
-    if (!found) throw usage_error("--fields names \"{}\", which the scene does not have", name);
+    if (!found) throw usage_error("field \"{}\" is neither velocity nor a scalar of the state", name);
   }
   const std::size_t C = channels.size(), N = L.count();
   f.data.assign(C * N, 0.0);

@@ -189,7 +189,7 @@ int MultigridClass::solve(const Layout& layout, const Field& rhs, Field& q) cons
   int cycles = 0;
   if (bnorm > 0.0) {
     while ((b - levels_[0]->A * x).norm() > tol_ * bnorm) {
-      if (++cycles > 200) throw runtime_failure("multigrid did not reach --tol {} in 200 V-cycles", tol_);
+      if (++cycles > 200) throw runtime_failure("multigrid did not reach the relative residual {} in 200 V-cycles", tol_);
       vcycle(vcycle, 0, b, x);
     }
   }

@@ -10,16 +10,6 @@
 
 namespace fest::fluidsim {
 
-PoissonSolver parse_poisson(const std::string& name) {
-  if (name == "fdm") return PoissonSolver::fdm;
-  if (name == "fft") return PoissonSolver::fft;
-  if (name == "mg") return PoissonSolver::mg;
-  if (name == "gs") return PoissonSolver::gs;
-  if (name == "jacobi") return PoissonSolver::jacobi;
-  if (name == "pcg") throw usage_error("--poisson pcg is unsupported in this build (use fdm, fft, mg, gs or jacobi)");
-  throw usage_error("--poisson must be fdm, fft, mg, gs or jacobi, not \"{}\"", name);
-}
-
 const char* poisson_name(PoissonSolver s) noexcept {
   switch (s) {
     case PoissonSolver::fdm: return "fdm";

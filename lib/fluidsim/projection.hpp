@@ -18,8 +18,7 @@ namespace fest::fluidsim {
 
 enum class PoissonSolver { fdm, fft, mg, gs, jacobi };
 
-// Parses "fdm", "fft", "mg", "gs", "jacobi"; throws Status::usage otherwise.
-PoissonSolver parse_poisson(const std::string& name);
+// "fdm", "fft", "mg", "gs", "jacobi": the solver's name in reports.
 const char* poisson_name(PoissonSolver s) noexcept;
 
 struct ProjectionOptions {

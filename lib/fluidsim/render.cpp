@@ -19,7 +19,7 @@ Plane render_plane(const std::vector<double>& field, const std::array<int, 3>& s
         p.values[static_cast<std::size_t>(p.height - 1 - y) * p.width + x] = field[x + static_cast<std::size_t>(size[0]) * y];
     return p;
   }
-  if (o.axis < 0 || o.axis > 2) throw usage_error("--axis must be x, y or z");
+  if (o.axis < 0 || o.axis > 2) throw usage_error("viewing axis {} is not 0, 1 or 2", o.axis);
   // Image axes: the two remaining axes in order (u right, v up).
   const int u = o.axis == 0 ? 1 : 0, v = o.axis == 2 ? 1 : 2;
   p.width = size[u];
@@ -28,7 +28,7 @@ Plane render_plane(const std::vector<double>& field, const std::array<int, 3>& s
   const int depth = size[o.axis];
   int slice = o.index < 0 ? depth / 2 : o.index;
   if (o.mode == RenderMode::slice && slice >= depth)
-    throw usage_error("--index {} is out of range [0, {}]", o.index, depth - 1);
+    throw usage_error("slice index {} is out of range [0, {}]", o.index, depth - 1);
   auto at = [&](int a, int b, int c) {
     int ijk[3];
     ijk[u] = a;
@@ -59,15 +59,10 @@ Plane render_plane(const std::vector<double>& field, const std::array<int, 3>& s
   return p;
 }
 
-void check_colormap(const std::string& map) {
-  if (map != "gray" && map != "inferno" && map != "velocity")
-    throw usage_error("--colormap must be gray, inferno or velocity, not \"{}\"", map);
-}
-
-std::array<double, 3> colour(const std::string& map, double t) {
+std::array<double, 3> colour(Colormap map, double t) {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
-  if (map == "gray") return {t, t, t};
-  if (map == "velocity") {
+  if (map == Colormap::gray) return {t, t, t};
+  if (map == Colormap::velocity) {
     // Blue (0) - white (0.5) - red (1).
     if (t < 0.5) {
       const double s = t / 0.5;

@@ -5,7 +5,6 @@
 // and the colour maps that turn the result into RGB.
 
 #include <array>
-#include <string>
 #include <vector>
 
 namespace fest::fluidsim {
@@ -31,9 +30,10 @@ struct Plane {
 Plane render_plane(const std::vector<double>& field, const std::array<int, 3>& size, int dim,
                    const RenderOptions& options);
 
-// Maps t in [0, 1] (clamped) to RGB in [0, 1]: "gray", "inferno" or "velocity" (a
-// blue-white-red diverging map centred on 0.5). Throws Status::usage for other names.
-std::array<double, 3> colour(const std::string& map, double t);
-void check_colormap(const std::string& map);
+enum class Colormap { gray, inferno, velocity };
+
+// Maps t in [0, 1] (clamped) to RGB in [0, 1]: gray, inferno or velocity (a
+// blue-white-red diverging map centred on 0.5).
+std::array<double, 3> colour(Colormap map, double t);
 
 }  // namespace fest::fluidsim

@@ -262,4 +262,15 @@ Scene parse_scene(const json& doc, const std::string& where) {
   return s;
 }
 
+void add_plume(Scene& scene, const Source& source) {
+  ScalarSpec s;
+  s.sources = {source};
+  scene.scalars = {s};
+  Force f;
+  f.type = Force::Type::buoyancy;
+  f.scalar = "density";
+  f.beta = 1.0;
+  scene.forces = {f};
+}
+
 }  // namespace fest::fluidsim

@@ -74,5 +74,8 @@ struct Scene {
 // Status::bad_input: `scene key "viscocity" is unknown (did you mean "viscosity"?) (scene.json)`.
 Scene parse_scene(const nlohmann::json& doc, const std::string& where);
 
+// A plume: one scalar ("density") fed by `source` and lifted by buoyancy (beta 1), the
+// scenes of the interpolation check and of the stage benchmark.
+void add_plume(Scene& scene, const Source& source);
 
 }  // namespace fest::fluidsim

@@ -1,10 +1,10 @@
 #include "fluidsim/simulator.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <random>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "fluidsim/advection.hpp"
 #include "fluidsim/operators.hpp"
 
@@ -12,10 +12,7 @@ namespace fest::fluidsim {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = SteadyClock;
 
 // Calls f(n, weight) for every node of a source region.
 template <typename F>

@@ -162,23 +162,20 @@ AxisBasis::AxisBasis(const Layout& L, int axis, std::vector<int> nodes, int reac
 
 AxisBasis::~AxisBasis() = default;
 
+// The work line holds the transform's input, then (from length + 1) its output. Node j of
+// the set in the transform's order: half_whole runs the set backwards; the whole/half
+// kinds see the set mirrored into the odd period 2m - 1 (DCT-V as a real DFT).
 void AxisBasis::forward(double* line, std::ptrdiff_t stride, double* work) const {
   const Fft& f = *fft_;
   const int m = f.m;
   double* in = work;
   double* out = work + f.length + 1;
-  using K = Fft::Kind;
-  if (f.kind == K::whole_half || f.kind == K::half_whole) {
-    for (int j = 0; j < m; ++j) {
-      const double v = line[(f.kind == K::whole_half ? j : m - 1 - j) * stride];
-      in[j] = v;
-      if (j > 0) in[f.length - j] = v;
-    }
-    fftw_execute_r2r(f.fwd, in, out);
-    for (int k = 0; k < m; ++k) line[k * stride] = out[k];
-    return;
+  const bool mirrored = f.kind == Fft::Kind::whole_half || f.kind == Fft::Kind::half_whole;
+  for (int j = 0; j < m; ++j) {
+    const double v = line[(f.kind == Fft::Kind::half_whole ? m - 1 - j : j) * stride];
+    in[j] = v;
+    if (mirrored && j > 0) in[f.length - j] = v;
   }
-  for (int j = 0; j < m; ++j) in[j] = line[j * stride];
   fftw_execute_r2r(f.fwd, in, out);
   for (int k = 0; k < m; ++k) line[k * stride] = out[k];
 }
@@ -186,19 +183,12 @@ void AxisBasis::forward(double* line, std::ptrdiff_t stride, double* work) const
 void AxisBasis::inverse(double* line, std::ptrdiff_t stride, double* work) const {
   const Fft& f = *fft_;
   const int m = f.m;
-  double* in = work;
+  // Modes past m (the mirrored half of the period) are zero.
+  const int filled = f.kind == Fft::Kind::whole_half || f.kind == Fft::Kind::half_whole ? f.length : m;
+  for (int k = 0; k < filled; ++k) work[k] = k < m ? line[k * stride] : 0.0;
   double* out = work + f.length + 1;
-  using K = Fft::Kind;
-  if (f.kind == K::whole_half || f.kind == K::half_whole) {
-    for (int k = 0; k < f.length; ++k) in[k] = k < m ? line[k * stride] : 0.0;
-    fftw_execute_r2r(f.inv, in, out);
-    for (int j = 0; j < m; ++j)
-      line[(f.kind == K::whole_half ? j : m - 1 - j) * stride] = out[j] * f.scale;
-    return;
-  }
-  for (int k = 0; k < m; ++k) in[k] = line[k * stride];
-  fftw_execute_r2r(f.inv, in, out);
-  for (int j = 0; j < m; ++j) line[j * stride] = out[j] * f.scale;
+  fftw_execute_r2r(f.inv, work, out);
+  for (int j = 0; j < m; ++j) line[(f.kind == Fft::Kind::half_whole ? m - 1 - j : j) * stride] = out[j] * f.scale;
 }
 
 BoxSolver::BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, double a, double b)

@@ -397,33 +397,40 @@ json case_to_json(const Case& c) {
   return j;
 }
 
-void apply_override(json& doc, const std::string& assignment) {
+CaseOverride parse_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) throw usage_error("--set \"{}\" must be key=value", assignment);
-  const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  if (eq == std::string::npos || eq == 0) throw usage_error("\"{}\" must be key=value", assignment);
+  CaseOverride o;
+  o.value = assignment.substr(eq + 1);
+  const std::string key = assignment.substr(0, eq);
+  for (std::size_t begin = 0;;) {
+    const std::size_t dot = key.find('.', begin);
+    o.path.push_back(key.substr(begin, dot == std::string::npos ? std::string::npos : dot - begin));
+    if (o.path.back().empty()) throw usage_error("\"{}\": empty key part", assignment);
+    if (dot == std::string::npos) return o;
+    begin = dot + 1;
+  }
+}
+
+void apply_override(json& doc, const std::string& assignment) { apply_override(doc, parse_override(assignment)); }
+
+void apply_override(json& doc, const CaseOverride& o) {
   json value;
   try {
-    value = json::parse(text);
+    value = json::parse(o.value);
   } catch (const json::parse_error&) {
-    value = text;
+    value = o.value;
   }
-  if (!doc.is_object()) throw usage_error("--set needs a case object");
+  if (!doc.is_object()) throw usage_error("the case is not a JSON object");
+  if (o.path.empty()) throw usage_error("an override needs a key");
   json* node = &doc;
-  std::size_t start = 0;
-  while (true) {
-    const auto dot = key.find('.', start);
-    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (part.empty()) throw usage_error("--set \"{}\": empty key part", assignment);
-    if (dot == std::string::npos) {
-      (*node)[part] = value;
-      return;
-    }
-    json& next = (*node)[part];
+  for (std::size_t i = 0; i + 1 < o.path.size(); ++i) {
+    json& next = (*node)[o.path[i]];
     if (next.is_null()) next = json::object();
-    if (!next.is_object()) throw usage_error("--set \"{}\": \"{}\" is not an object", assignment, part);
+    if (!next.is_object()) throw usage_error("\"{}\" is not an object", o.path[i]);
     node = &next;
-    start = dot + 1;
   }
+  (*node)[o.path.back()] = value;
 }
 
 }  // namespace fest::lbm

@@ -4,13 +4,13 @@
 #include "lbm/checks.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 
 #include <omp.h>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "lbm/geometry.hpp"
 #include "lbm/solver.hpp"
 
@@ -60,8 +60,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// A check's report: its metrics (with the seconds since t0), criteria and verdict.
+json check_report(const std::string& name, json metrics, json criteria, bool pass, SteadyClock::time_point t0) {
+  metrics["seconds"] = seconds_since(t0);
+  return {{"case", name}, {"metrics", metrics}, {"criteria", criteria}, {"pass", pass}};
 }
 
 Case make_case(int dim, std::array<int, 3> size, double tau, CollisionModel model) {
@@ -117,7 +119,7 @@ double max_abs(const std::vector<double>& v) {
 }  // namespace
 
 json check_poiseuille(const CheckOptions&) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   json metrics = json::object(), criteria = json::object();
   bool pass = true;
   const double magic = 0.5 + std::sqrt(3.0) / 4.0;
@@ -170,8 +172,7 @@ json check_poiseuille(const CheckOptions&) {
     criteria["float_minus_double_H16"] = "|.| <= 5e-5 (single precision stalls once a step changes g by less than half an ulp)";
     pass = pass && std::abs(f - d) <= 5e-5;
   }
-  metrics["seconds"] = seconds_since(t0);
-  return {{"case", "poiseuille"}, {"metrics", metrics}, {"criteria", criteria}, {"pass", pass}};
+  return check_report("poiseuille", metrics, criteria, pass, t0);
 }
 
 namespace {
@@ -215,7 +216,7 @@ double taylor_green_error(int dim, int N) {
 }  // namespace
 
 json check_taylor_green(const CheckOptions&) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   json metrics = json::object(), criteria = json::object();
   bool pass = true;
   // Second-order convergence; reference magnitudes of the scheme: 2.08e-2, 5.17e-3, 1.29e-3.
@@ -237,8 +238,7 @@ json check_taylor_green(const CheckOptions&) {
     criteria[key] = ">= 1.9";
     pass = pass && order >= 1.9;
   }
-  metrics["seconds"] = seconds_since(t0);
-  return {{"case", "taylor-green"}, {"metrics", metrics}, {"criteria", criteria}, {"pass", pass}};
+  return check_report("taylor-green", metrics, criteria, pass, t0);
 }
 
 namespace {
@@ -283,7 +283,7 @@ double interp(const std::vector<double>& xs, const std::vector<double>& ys, doub
 }  // namespace
 
 json check_cavity(const CheckOptions& o, double re) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   const int col = re == 100 ? 1 : re == 400 ? 2 : 3;
   const int N = o.n > 0 ? o.n : (re == 100 ? 64 : 128);
   const double U = 0.1;
@@ -324,20 +324,16 @@ json check_cavity(const CheckOptions& o, double re) {
                   {"max_dev_u_vertical_line", du},
                   {"max_dev_v_horizontal_line", dv},
                   {"u_centre", interp(ys, us, 0.5)},
-                  {"u_centre_ghia", kGhiaU[8][col]},
-                  {"seconds", seconds_since(t0)}};
+                  {"u_centre_ghia", kGhiaU[8][col]}};
   json criteria = {{"max_dev_u_vertical_line", fmt::format("<= {} U (Ghia et al. 1982, Re {})", tol, re)},
                    {"max_dev_v_horizontal_line", re == 100 ? fmt::format("<= {} U", tol) : std::string("reported")}};
-  return {{"case", re == 100 ? "cavity" : fmt::format("cavity{}", static_cast<int>(re))},
-          {"metrics", metrics},
-          {"criteria", criteria},
-          {"pass", pass}};
+  return check_report(re == 100 ? "cavity" : fmt::format("cavity{}", static_cast<int>(re)), metrics, criteria, pass, t0);
 }
 
 json check_cylinder(const CheckOptions& o) {
   // Schaefer & Turek (1996) 2D-1: channel 2.2 x 0.41, cylinder D = 0.1 centred at
   // (0.2, 0.2), parabolic inflow U_max = 0.3, nu = 1e-3 (Re = 20 with U_mean = 0.2).
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   const int D = o.n > 0 ? o.n : 20;
   const double dx = 0.1 / D;
   const int nx = static_cast<int>(std::lround(2.2 / dx)), ny = static_cast<int>(std::lround(0.41 / dx));
@@ -426,19 +422,18 @@ json check_cylinder(const CheckOptions& o) {
   const bool cl_ok = cl >= 0.0104 && cl <= 0.0110;
   const bool dp_ok = std::abs(dp - 0.1174) <= 0.03 * 0.1174;
   json metrics = {{"d_cells", D},     {"size", {nx, ny}}, {"tau", c.collision.tau},   {"steps", s->step_count()},
-                  {"window", window}, {"cd", cd},         {"cl", cl},                 {"delta_p", dp},
-                  {"seconds", seconds_since(t0)}};
+                  {"window", window}, {"cd", cd},         {"cl", cl},                 {"delta_p", dp}};
   metrics["cd_in_published_interval"] = cd_ok;
   metrics["cl_in_published_interval"] = cl_ok;
   metrics["delta_p_in_published_interval"] = dp >= 0.1172 && dp <= 0.1176;
   json criteria = {{"cd", "in the published interval [5.57, 5.59] (TRT, Bouzidi walls, incompressible equilibrium)"},
                    {"cl", "in the published interval [0.0104, 0.0110]"},
                    {"delta_p", "within 3% of 0.1174 (published [0.1172, 0.1176])"}};
-  return {{"case", "cylinder20"}, {"metrics", metrics}, {"criteria", criteria}, {"pass", cd_ok && cl_ok && dp_ok}};
+  return check_report("cylinder20", metrics, criteria, cd_ok && cl_ok && dp_ok, t0);
 }
 
 json check_mass(const CheckOptions&) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   Case c = cavity_case(32, 100, 0.1, CollisionModel::bgk);
   const Flags f = shape_flags(c);
   auto s = solver_for(c, f);
@@ -450,16 +445,13 @@ json check_mass(const CheckOptions&) {
   const double m0 = total();
   for (int t = 0; t < 10000; ++t) s->step();
   const double drift = std::abs(total() - m0) / m0;
-  json metrics = {{"relative_drift", drift}, {"steps", 10000}, {"seconds", seconds_since(t0)}};
-  return {{"case", "mass"},
-          {"metrics", metrics},
-          {"criteria", {{"relative_drift", "<= 1e-12 (closed cavity, double)"}}},
-          {"pass", drift <= 1e-12}};
+  return check_report("mass", {{"relative_drift", drift}, {"steps", 10000}},
+                      {{"relative_drift", "<= 1e-12 (closed cavity, double)"}}, drift <= 1e-12, t0);
 }
 
 json check_symmetry(const CheckOptions&) {
   // A cavity whose lid moves +x and its mirror image (lid moving -x) give mirrored fields.
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   const int N = 32;
   Case a = cavity_case(N, 100, 0.1, CollisionModel::trt);
   Case b = a;
@@ -484,17 +476,14 @@ json check_symmetry(const CheckOptions&) {
       const std::size_t k = x + static_cast<std::size_t>(N) * y, m = (N - 1 - x) + static_cast<std::size_t>(N) * y;
       d = std::max({d, std::abs(ua[3 * k] + ub[3 * m]), std::abs(ua[3 * k + 1] - ub[3 * m + 1]), std::abs(ra[k] - rb[m])});
     }
-  json metrics = {{"max_mirror_difference", d}, {"steps", 2000}, {"seconds", seconds_since(t0)}};
-  return {{"case", "symmetry"},
-          {"metrics", metrics},
-          {"criteria", {{"max_mirror_difference", "<= 1e-12"}}},
-          {"pass", d <= 1e-12}};
+  return check_report("symmetry", {{"max_mirror_difference", d}, {"steps", 2000}},
+                      {{"max_mirror_difference", "<= 1e-12"}}, d <= 1e-12, t0);
 }
 
 json check_determinism(const CheckOptions&) {
   // The same 3-D case on 1 and 2 threads gives identical bytes (no reductions in the
   // state update).
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   Case c = make_case(3, {20, 20, 20}, 0.56, CollisionModel::trt);
   c.faces[0].kind = c.faces[1].kind = c.faces[2].kind = Face::Kind::wall;
   c.faces[3].kind = Face::Kind::moving;
@@ -517,11 +506,8 @@ json check_determinism(const CheckOptions&) {
   omp_set_num_threads(saved);
   const bool same = pops[0].size() == pops[1].size() &&
                     std::memcmp(pops[0].data(), pops[1].data(), pops[0].size() * sizeof(double)) == 0;
-  json metrics = {{"identical_1_vs_2_threads", same}, {"steps", 200}, {"seconds", seconds_since(t0)}};
-  return {{"case", "determinism"},
-          {"metrics", metrics},
-          {"criteria", {{"identical_1_vs_2_threads", "true (byte-identical populations)"}}},
-          {"pass", same}};
+  return check_report("determinism", {{"identical_1_vs_2_threads", same}, {"steps", 200}},
+                      {{"identical_1_vs_2_threads", "true (byte-identical populations)"}}, same, t0);
 }
 
 const std::vector<std::string>& check_names() {

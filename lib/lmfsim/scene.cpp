@@ -153,9 +153,9 @@ void validate_scene(Scene& scene) {
     if (f.type == ForceType::pid && f.a == kWorld) throw bad_input("pid needs a body");
   }
   const auto& sim = scene.sim;
-  if (!(sim.dt > 0) || !std::isfinite(sim.dt)) throw usage_error("--dt must be positive (got {})", sim.dt);
+  if (!(sim.dt > 0) || !std::isfinite(sim.dt)) throw usage_error("time step dt must be positive (got {})", sim.dt);
   if (!(sim.t_end >= 0) || !std::isfinite(sim.t_end)) throw usage_error("t_end must be >= 0 (got {})", sim.t_end);
-  if (sim.every < 1) throw usage_error("--every must be >= 1 (got {})", sim.every);
+  if (sim.every < 1) throw usage_error("frame interval every must be >= 1 (got {})", sim.every);
 }
 
 }  // namespace fest::lmfsim

@@ -1,15 +1,22 @@
 #include "lmfsim/simulate.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 
 namespace fest::lmfsim {
 
+ViolationLimitExceeded::ViolationLimitExceeded(double violation_, double limit_, double t_)
+    : Error(Status::failure,
+            fmt::format("constraint violation {:.3g} exceeds the limit {:.3g} (t={:.6g})", violation_, limit_, t_)),
+      violation(violation_),
+      limit(limit_),
+      t(t_) {}
+
 RunSummary simulate(System& sys, const FrameCallback& on_frame) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   const SimSettings& sim = sys.settings();
   std::vector<Event> events = sys.scene().events;
   std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
@@ -37,13 +44,12 @@ RunSummary simulate(System& sys, const FrameCallback& on_frame) {
     const double v = sys.max_violation(t1, s);
     sum.max_C = std::max(sum.max_C, v);
     if (v > sim.max_violation)
-      throw runtime_failure("constraint violation {:.3g} exceeds the limit {:.3g} (t={:.6g}, see --max-violation)", v,
-                            sim.max_violation, t1);
+      throw ViolationLimitExceeded(v, sim.max_violation, t1);
     if ((k + 1) % sim.every == 0) on_frame(static_cast<int>((k + 1) / sim.every), t1, s);
   }
   sum.steps = counters.steps;
   sum.evals = counters.evals;
-  sum.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  sum.wall_s = seconds_since(start);
   return sum;
 }
 

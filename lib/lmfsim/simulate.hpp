@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "core/error.hpp"
 #include "lmfsim/integrators.hpp"
 #include "lmfsim/system.hpp"
 
@@ -20,8 +21,16 @@ struct RunSummary {
 
 using FrameCallback = std::function<void(int frame, double t, const Eigen::VectorXd& s)>;
 
-// Throws runtime_failure when the state becomes non-finite or a holonomic constraint
-// is violated by more than settings().max_violation.
+// |C| above SimSettings::max_violation at time t (Status::failure), with the figures, so
+// that a tool can name its own setting of the limit.
+class ViolationLimitExceeded : public Error {
+ public:
+  ViolationLimitExceeded(double violation, double limit, double t);
+  double violation, limit, t;
+};
+
+// Throws runtime_failure when the state becomes non-finite, ViolationLimitExceeded when a
+// holonomic constraint is violated by more than settings().max_violation.
 RunSummary simulate(System& sys, const FrameCallback& on_frame);
 
 }  // namespace fest::lmfsim

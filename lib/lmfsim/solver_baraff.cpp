@@ -7,6 +7,7 @@
 // redundant or ill-conditioned loops lose rank gracefully instead of failing.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include <Eigen/LU>
 
@@ -118,6 +119,20 @@ void invert_fixed(Node& n) {
   if (!n.chol_ok) small_inverse(n.D, n.Dinv);
 }
 
+// Calls f(std::integral_constant<int, k>{}) with k = size (1..5; anything else: 6): block
+// sizes become compile-time constants, so Eigen unrolls the fixed-size kernels.
+template <typename F>
+void with_block_size(int size, const F& f) {
+  switch (size) {
+    case 1: f(std::integral_constant<int, 1>{}); break;
+    case 2: f(std::integral_constant<int, 2>{}); break;
+    case 3: f(std::integral_constant<int, 3>{}); break;
+    case 4: f(std::integral_constant<int, 4>{}); break;
+    case 5: f(std::integral_constant<int, 5>{}); break;
+    default: f(std::integral_constant<int, 6>{}); break;
+  }
+}
+
 void solve_block(const Node& n, double* x) {
   if (!n.chol_ok) {
     double y[6];
@@ -129,25 +144,11 @@ void solve_block(const Node& n, double* x) {
     for (int r = 0; r < n.dim; ++r) x[r] = y[r];
     return;
   }
-  switch (n.dim) {
-    case 1: cholesky_solve_fixed<1>(n, x); break;
-    case 2: cholesky_solve_fixed<2>(n, x); break;
-    case 3: cholesky_solve_fixed<3>(n, x); break;
-    case 4: cholesky_solve_fixed<4>(n, x); break;
-    case 5: cholesky_solve_fixed<5>(n, x); break;
-    default: cholesky_solve_fixed<6>(n, x); break;
-  }
+  with_block_size(n.dim, [&](auto d) { cholesky_solve_fixed<decltype(d)::value>(n, x); });
 }
 
 void invert_block(Node& n) {
-  switch (n.dim) {
-    case 1: invert_fixed<1>(n); break;
-    case 2: invert_fixed<2>(n); break;
-    case 3: invert_fixed<3>(n); break;
-    case 4: invert_fixed<4>(n); break;
-    case 5: invert_fixed<5>(n); break;
-    default: invert_fixed<6>(n); break;
-  }
+  with_block_size(n.dim, [&](auto d) { invert_fixed<decltype(d)::value>(n); });
 }
 
 // Eliminates node n into its parent: L = D^-1 H_ip, D_parent -= H_ip^T L. Fixed-size
@@ -180,62 +181,31 @@ void eliminate(Node& n, Blk& Dp, const HExpr& H) {
     }
 }
 
-template <int d, int p>
-void factor_fixed(Node& n, Blk& Dp) {
-  invert_fixed<d>(n);
-  if (n.constraint < 0) {  // body node under a constraint: H = J^T (J is p x 6)
-    eliminate<d, p>(n, Dp, Eigen::Map<const Eigen::Matrix<double, p, d>>(n.J->data()).transpose());
-  } else {  // constraint node under a body: H = J.leftCols(p) (J is d x 6)
-    eliminate<d, p>(n, Dp, Eigen::Map<const Eigen::Matrix<double, d, p>>(n.J->data()));
+// Factors node n (d x d) into its parent's block Dp (p x p).
+struct FactorInto {
+  Node& n;
+  Blk& Dp;
+  template <int d, int p>
+  void run() const {
+    invert_fixed<d>(n);
+    if (n.constraint < 0) {  // body node under a constraint: H = J^T (J is p x 6)
+      eliminate<d, p>(n, Dp, Eigen::Map<const Eigen::Matrix<double, p, d>>(n.J->data()).transpose());
+    } else {  // constraint node under a body: H = J.leftCols(p) (J is d x 6)
+      eliminate<d, p>(n, Dp, Eigen::Map<const Eigen::Matrix<double, d, p>>(n.J->data()));
+    }
   }
-}
+};
 
-template <int d>
-void factor_p(Node& n, Blk& Dp) {
-  switch (Dp.rows()) {
-    case 1: factor_fixed<d, 1>(n, Dp); break;
-    case 2: factor_fixed<d, 2>(n, Dp); break;
-    case 3: factor_fixed<d, 3>(n, Dp); break;
-    case 4: factor_fixed<d, 4>(n, Dp); break;
-    case 5: factor_fixed<d, 5>(n, Dp); break;
-    default: factor_fixed<d, 6>(n, Dp); break;
-  }
+// Calls f.run<d, p>() with the block sizes d, p as compile-time constants (1..6 each).
+template <typename F>
+void with_sizes(int d, int p, const F& f) {
+  with_block_size(d, [&](auto dc) {
+    with_block_size(p, [&](auto pc) { f.template run<decltype(dc)::value, decltype(pc)::value>(); });
+  });
 }
 
 void factor_block(Node& n, Blk& Dp) {
-  switch (n.dim) {
-    case 1: factor_p<1>(n, Dp); break;
-    case 2: factor_p<2>(n, Dp); break;
-    case 3: factor_p<3>(n, Dp); break;
-    case 4: factor_p<4>(n, Dp); break;
-    case 5: factor_p<5>(n, Dp); break;
-    default: factor_p<6>(n, Dp); break;
-  }
-}
-
-// Calls f.run<d, p>() with the block sizes as compile-time constants (1..6 each).
-template <int d, typename F>
-void with_parent_size(int p, const F& f) {
-  switch (p) {
-    case 1: f.template run<d, 1>(); break;
-    case 2: f.template run<d, 2>(); break;
-    case 3: f.template run<d, 3>(); break;
-    case 4: f.template run<d, 4>(); break;
-    case 5: f.template run<d, 5>(); break;
-    default: f.template run<d, 6>(); break;
-  }
-}
-
-template <typename F>
-void with_sizes(int d, int p, const F& f) {
-  switch (d) {
-    case 1: with_parent_size<1>(p, f); break;
-    case 2: with_parent_size<2>(p, f); break;
-    case 3: with_parent_size<3>(p, f); break;
-    case 4: with_parent_size<4>(p, f); break;
-    case 5: with_parent_size<5>(p, f); break;
-    default: with_parent_size<6>(p, f); break;
-  }
+  with_sizes(n.dim, static_cast<int>(Dp.rows()), FactorInto{n, Dp});
 }
 
 // Forward sweep of the block solve: x_parent -= L^T x_i.

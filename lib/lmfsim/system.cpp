@@ -4,10 +4,10 @@
 #include "lmfsim/system.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 
 namespace fest::lmfsim {
 namespace {
@@ -304,10 +304,10 @@ void System::derivative(double t, const Eigen::VectorXd& s, Eigen::VectorXd& ds)
     }
     return;
   }
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   solver_->solve(bodies_, cons_, topology_changed_, result_);
   topology_changed_ = false;
-  info_.solve_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+  info_.solve_us = 1000.0 * ms_since(t0);
   info_.rank_deficiency = result_.rank_deficiency;
   info_.residual = result_.residual;
   if (!(result_.residual <= 1e-6))

@@ -123,6 +123,14 @@ case_ "deterministic: two runs give byte-identical output"
 "$L" run --t-end 0.3 < "$WORK/fb.json" > "$WORK/r2.csv"
 if cmp -s "$WORK/r1.csv" "$WORK/r2.csv"; then pass; else fail "outputs differ"; fi
 
+case_ "--threads: the integrator is sequential; a count above 1 is said, not silently ignored"
+"$L" run --t-end 0.3 --threads 1 < "$WORK/fb.json" > "$WORK/t1.csv" 2> "$WORK/t1.err"
+run_stdin "$WORK/fb.json" lmfsim run --t-end 0.3 --threads 2
+expect_status 0
+expect_stderr_has '^lmfsim: warning: --threads 2: the integrator is sequential and runs one thread$'
+check "same trajectory" cmp -s "$WORK/t1.csv" "$out"
+check "no warning for one thread" test ! -s "$WORK/t1.err"
+
 # --- bad input: one line, right status, nothing on standard output --------------------
 bad() {  # bad STATUS REGEX JSON [args]
   local status="$1" regex="$2" json="$3"; shift 3

@@ -1,6 +1,8 @@
 // The case codec: defaults, unit conversion, refusals with reasons (docs/lbmsim.md 2.6, 2.10).
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -90,6 +92,33 @@ TEST(LbmCase, Overrides) {
   EXPECT_EQ(c.collision.tau, 0.7);
   EXPECT_EQ(c.collision.model, CollisionModel::trt);
   EXPECT_THROW(apply_override(doc, "novalue"), Error);
+}
+
+// Overrides speak the case's terms (a tool puts its flag before the message): the text
+// comes first, quoted, and no flag is named.
+TEST(LbmCase, OverrideErrorsNameNoFlag) {
+  auto message = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), Status::usage);
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "no error";
+    return std::string();
+  };
+  EXPECT_EQ(message([] { parse_override("novalue"); }), "\"novalue\" must be key=value");
+  EXPECT_EQ(message([] { parse_override("=1"); }), "\"=1\" must be key=value");
+  EXPECT_EQ(message([] { parse_override("a..b=1"); }), "\"a..b=1\": empty key part");
+  const CaseOverride o = parse_override("collision.tau=0.7=x");
+  EXPECT_EQ(o.path, (std::vector<std::string>{"collision", "tau"}));
+  EXPECT_EQ(o.value, "0.7=x");
+  json doc = json::parse(R"({"size":[8,8]})");
+  EXPECT_EQ(message([&] { apply_override(doc, parse_override("size.x=3")); }), "\"size\" is not an object");
+  json list = json::parse("[1, 2]");
+  EXPECT_EQ(message([&] { apply_override(list, parse_override("a=1")); }), "the case is not a JSON object");
+  apply_override(doc, parse_override("output.fields=[\"speed\"]"));
+  EXPECT_EQ(doc["output"]["fields"], json::parse(R"(["speed"])"));
 }
 
 TEST(LbmVoxelize, CubeVolumeAndOpenMesh) {

@@ -372,3 +372,24 @@ TEST(LmfsimAnalytic, PenaltyConvergesToMultipliersAsStiffnessGrows) {
     last = err;
   }
 }
+
+// |C| above the limit ends the run with the figures (the tool names its flag, lib does not).
+TEST(LmfsimAnalytic, ViolationLimitCarriesTheFigures) {
+  Scene s = particle_chain({kPi / 2});
+  s.sim.t_end = 1;
+  s.sim.dt = 1e-2;
+  s.sim.integrator = Integrator::euler;
+  s.sim.stab = Stabilization::none;
+  s.sim.max_violation = 1e-9;
+  System sys(std::move(s));
+  try {
+    simulate(sys, [](int, double, const Eigen::VectorXd&) {});
+    ADD_FAILURE() << "explicit Euler without stabilisation kept |C| below 1e-9";
+  } catch (const ViolationLimitExceeded& e) {
+    EXPECT_EQ(e.status(), fest::Status::failure);
+    EXPECT_EQ(e.limit, 1e-9);
+    EXPECT_GT(e.violation, 1e-9);
+    EXPECT_GT(e.t, 0.0);
+    EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << e.what();
+  }
+}

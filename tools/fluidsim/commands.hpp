@@ -1,42 +1,53 @@
 #pragma once
-// fluidsim's subcommands: options as parsed by main.cpp, one function per subcommand.
+// fluidsim's subcommands: options as parsed by main.cpp, one function per subcommand
+// (cmd_<sub>.cpp).
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "fluidsim/projection.hpp"
+#include "fluidsim/render.hpp"
+
 namespace fest::fluidsim_tool {
+
+// Where run's frames go: the NRRD frame stream on standard output, or files.
+enum class FrameFormat { stream, vti, nrrd, pfm, exr, png };
+// Step order: the paper's, or Stam 2003's (compact Laplacian).
+enum class StepOrder { paper, stam03 };
 
 struct RunOptions {
   std::string scene = "-";
-  std::string output = "-";
-  std::string to;
-  std::string fields;
-  int frames = 0;        // 0: the scene's
-  int interp = 0;        // 0: the scene's
-  std::string poisson;   // "": by size
+  std::string output = "-";             // pattern with %d, or "-"
+  FrameFormat format = FrameFormat::stream;
+  std::vector<std::string> fields;      // empty: velocity and every scalar
+  int frames = 0;                       // 0: the scene's
+  int interp = 0;                       // 0: the scene's
+  std::optional<fluidsim::PoissonSolver> poisson;  // none: by size
   int iters = 20;
   double tol = 1e-8;
-  std::string order = "paper";
-  std::string grid = "collocated";
-  std::string precision = "float";
+  StepOrder order = StepOrder::paper;
+  bool float64 = false;                 // --precision double
   bool mass_correct = false;
-  std::string pipeline = "on";
+  bool pipeline = true;
   std::string report, stats;
   bool progress = false;
   bool quiet = false;
-  int threads = 0;       // 0: all cores
+  int threads = 0;                      // 0: all cores
 };
+
+enum class ImageFormat { png, pfm };
 
 struct RenderOptions {
   std::string input = "-";
   std::string output = "-";
-  std::string to = "png";
-  std::string mode = "absorb";
-  std::string axis = "z";
+  ImageFormat to = ImageFormat::png;
+  fluidsim::RenderMode mode = fluidsim::RenderMode::absorb;
+  int axis = 2;                         // z
   int index = -1;
   std::string field = "density";
   std::vector<double> range;
-  std::string colormap = "inferno";
+  fluidsim::Colormap colormap = fluidsim::Colormap::inferno;
   double sigma = 0.0;   // 0: 4 / (domain length) so a full-density column is mostly opaque
   int depth = 8;
 };
@@ -47,8 +58,11 @@ struct InterpOptions {
   std::string output = "-";
 };
 
+// The analytic cases of `check` (docs/fluidsim.md), or all of them.
+enum class CheckCase { taylor_green, abc, projection, interp, mass, stability, all };
+
 struct CheckOptions {
-  std::string which = "all";
+  CheckCase which = CheckCase::all;
   int n = 0;
   double dt = 0.0;
   double nu = 0.01;
@@ -61,7 +75,8 @@ struct BenchOptions {
   std::vector<int> threads{1, 2};
   int steps = 5;
   double nu = 1e-4;
-  std::vector<std::string> poisson{"fdm", "fft", "mg", "gs"};
+  std::vector<fluidsim::PoissonSolver> poisson{fluidsim::PoissonSolver::fdm, fluidsim::PoissonSolver::fft,
+                                               fluidsim::PoissonSolver::mg, fluidsim::PoissonSolver::gs};
 };
 
 int run_command(const RunOptions& o);
@@ -70,20 +85,4 @@ int interp_command(const InterpOptions& o);
 int check_command(const CheckOptions& o);
 int bench_command(const BenchOptions& o);
 
-// Sets the OpenMP thread count (--threads of run and check; 0: all cores).
-void set_threads(int threads);
-
-}  // namespace fest::fluidsim_tool
-
-// Shared between run and render: a rendered plane as an 8/16-bit RGB image, and output
-// names from a pattern with one printf-style integer conversion (%d, %05d).
-#include <opencv2/core.hpp>
-#include "fluidsim/render.hpp"
-namespace fest::fluidsim_tool {
-cv::Mat plane_to_rgb(const fluidsim::Plane& plane, double lo, double hi, const std::string& colormap, int depth);
-cv::Mat plane_to_float(const fluidsim::Plane& plane);
-bool has_index_conversion(const std::string& pattern);
-int omp_threads();
-double peak_rss_mb();
-std::string expand_pattern(const std::string& pattern, long index);
 }  // namespace fest::fluidsim_tool

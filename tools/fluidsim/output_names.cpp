@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "commands.hpp"
+#include "output_names.hpp"
 #include "core/error.hpp"
 
 namespace fest::fluidsim_tool {

@@ -13,7 +13,7 @@
 #include "formats/volume/volume_io.hpp"
 #include "lbm/case_json.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 using nlohmann::json;
 
@@ -51,7 +51,13 @@ lbm::TriangleSoup read_closed_mesh(const std::string& path) {
   return soup;
 }
 
-LoadedCase load_case(const std::string& path, const std::vector<std::string>& sets) {
+std::string override_text(const lbm::CaseOverride& o) {
+  std::string key;
+  for (const std::string& part : o.path) key += (key.empty() ? "" : ".") + part;
+  return key + "=" + o.value;
+}
+
+LoadedCase load_case(const std::string& path, const std::vector<lbm::CaseOverride>& sets) {
   LoadedCase L;
   L.where = path == "-" || path.empty() ? "stdin" : path;
   const std::string text = read_input(path.empty() ? "-" : path);
@@ -64,15 +70,23 @@ LoadedCase load_case(const std::string& path, const std::vector<std::string>& se
     const auto at = what.find("parse error");
     throw bad_input("invalid case JSON: {} ({})", at == std::string::npos ? what : what.substr(at), L.where);
   }
-  for (const std::string& s : sets) lbm::apply_override(doc, s);
+  for (const lbm::CaseOverride& s : sets) {
+    if (!doc.is_object()) throw usage_error("--set needs a case object");
+    try {
+      lbm::apply_override(doc, s);
+    } catch (const Error& e) {
+      throw usage_error("--set \"{}\": {}", override_text(s), e.what());
+    }
+  }
   try {
     L.c = lbm::parse_case(doc, L.where);
   } catch (const Error& e) {
     // A value that came from --set is a usage error (status 2), not bad input.
     const std::string what = e.what();
-    for (const std::string& s : sets) {
-      const std::string key = s.substr(0, s.find('='));
-      if (what.find(key) != std::string::npos) throw usage_error("--set {}: {}", s, what);
+    for (const lbm::CaseOverride& s : sets) {
+      const std::string given = override_text(s);
+      const std::string key = given.substr(0, given.find('='));
+      if (what.find(key) != std::string::npos) throw usage_error("--set {}: {}", given, what);
     }
     throw;
   }
@@ -131,4 +145,4 @@ LoadedCase load_case(const std::string& path, const std::vector<std::string>& se
   return L;
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

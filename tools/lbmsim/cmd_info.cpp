@@ -11,13 +11,13 @@
 #include "core/tool_main.hpp"
 #include "lbm/units.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 int info_command(const InfoOptions& o) {
   const LoadedCase L = load_case(o.case_file, o.set);
   const lbm::Case& c = L.c;
   for (const std::string& w : c.warnings) warn("lbmsim", w);
-  const lbm::UnitTable t = lbm::unit_table(c, o.precision == "float");
+  const lbm::UnitTable t = lbm::unit_table(c, o.precision == lbm::Precision::f32);
   if (o.json) {
     write_output("-", lbm::unit_table_json(t, c).dump(2) + "\n");
     return 0;
@@ -47,10 +47,10 @@ int info_command(const InfoOptions& o) {
     s += "units          lattice (dx = dt = 1)\n";
   }
   s += fmt::format("steps          {}{}\n", c.steady ? std::string("steady, tol ") + fmt::format("{:g}", c.tol) : std::to_string(c.steps), "");
-  s += fmt::format("memory         {:.1f} MiB ({} precision, two lattices + flags)\n", t.memory_bytes / 1048576.0, o.precision);
+  s += fmt::format("memory         {:.1f} MiB ({} precision, two lattices + flags)\n", t.memory_bytes / 1048576.0, precision_name(o.precision));
   s += fmt::format("speed estimate {:.3g} MLUPS per core, {:.3g} steps/s\n", t.mlups_estimate, t.steps_per_second);
   write_output("-", s);
   return 0;
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

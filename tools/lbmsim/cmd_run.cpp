@@ -1,12 +1,10 @@
 // lbmsim run: case -> solver (one process or the slabs of an MPI job) -> fields as VTI
 // series, NRRD files or the frame stream; forces and probes as CSV; a JSON report.
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <algorithm>
 #include <map>
-#include <sstream>
 
 #include <omp.h>
 
@@ -17,6 +15,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "field_output.hpp"
@@ -27,32 +26,19 @@
 #include "lbm/solver.hpp"
 #include "lbm/units.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 using nlohmann::json;
 
 void set_threads(int threads) { omp_set_num_threads(fest::resolve_threads(threads)); }
+
+const char* precision_name(lbm::Precision p) noexcept { return p == lbm::Precision::f32 ? "float" : "double"; }
 
 std::string build_features() {
   return mpi_built() ? "with MPI (" + std::string("Open MPI") + ")" : std::string("without MPI");
 }
 
 namespace {
-
-std::string extension_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  return path.substr(dot + 1);
-}
-
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 void make_parent_dir(const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
@@ -73,13 +59,14 @@ std::vector<double> global_layer_sum(lbm::SlabExchange& ex, const std::vector<do
 }
 
 struct Output {
-  std::string pattern, format;  // format: vti, nrrd, stream
+  std::string pattern;
+  FieldFormat format = FieldFormat::stream;
   bool float64 = false, zlib = true;
   std::vector<std::pair<double, std::string>> series;
 };
 
 void write_frame(Output& out, const FieldFrame& f) {
-  if (out.format == "stream") {
+  if (out.format == FieldFormat::stream) {
     const std::string bytes = encode_stream_frame(f, out.float64);
     if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() || std::fflush(stdout) != 0)
       throw io_error("cannot write the frame stream (stdout)");
@@ -87,7 +74,7 @@ void write_frame(Output& out, const FieldFrame& f) {
   }
   const std::string path = expand_pattern(out.pattern, f.index);
   make_parent_dir(path);
-  if (out.format == "nrrd") {
+  if (out.format == FieldFormat::nrrd) {
     for (const auto& [name, bytes] : encode_nrrd(f, path, out.float64)) write_output(name, bytes);
     return;
   }
@@ -138,19 +125,10 @@ void read_init_file(const lbm::Case& c, const std::string& where, std::vector<do
 }  // namespace
 
 int run_command(const RunOptions& o) {
-  // Flags first (usage errors), then the case (bad input).
+  // The flags were checked in main.cpp (usage errors); now the case (bad input).
   Output out;
   out.pattern = o.output;
-  if (o.output.empty() || o.output == "-") {
-    if (!o.to.empty() && o.to != "stream" && o.to != "nrrd")
-      throw usage_error("standard output carries the frame stream only (--to stream)");
-    out.format = "stream";
-  } else {
-    out.format = o.to.empty() ? extension_of(o.output) : o.to;
-    if (out.format != "vti" && out.format != "nrrd")
-      throw usage_error("output format must be vti or nrrd (from --to or the extension of \"{}\"), or - for the stream",
-                        o.output);
-  }
+  out.format = o.format;
   Comm& comm = Comm::world();
   if (comm.size() > 1 && (o.case_file.empty() || o.case_file == "-")) {
     if (!comm.root()) return static_cast<int>(Status::usage);
@@ -166,13 +144,13 @@ int run_command(const RunOptions& o) {
   lbm::Case& c = L.c;
   if (o.steps >= 0) c.steps = o.steps, c.steady = false;
   if (o.every >= 0) c.output.every = o.every;
-  if (!o.fields.empty()) c.output.fields = split_list(o.fields);
-  if (!o.compress.empty()) c.output.compress = o.compress == "on";
+  if (o.fields) c.output.fields = *o.fields;
+  if (o.compress) c.output.compress = *o.compress;
   out.float64 = c.output.float64;
   out.zlib = c.output.compress;
-  lbm::check_field_names(c.output.fields, o.fields.empty() ? L.where : "--fields");
+  lbm::check_field_names(c.output.fields, o.fields ? "--fields" : L.where);
   const long frames = c.output.every > 0 ? c.steps / c.output.every + 1 : 1;
-  if (out.format != "stream" && frames > 1 && !has_index_conversion(out.pattern))
+  if (out.format != FieldFormat::stream && frames > 1 && !has_index_conversion(out.pattern))
     throw usage_error("-o \"{}\" needs a %d for {} output steps", out.pattern, frames);
   if (comm.root() && !o.quiet)
     for (const std::string& w : c.warnings) warn("lbmsim", w);
@@ -186,7 +164,7 @@ int run_command(const RunOptions& o) {
   lbm::SolverSetup setup;
   setup.c = &c;
   setup.flags = &L.flags;
-  setup.precision = o.precision == "float" ? lbm::Precision::f32 : lbm::Precision::f64;
+  setup.precision = o.precision;
   setup.exchange = &comm.exchange();
   setup.slab_lo = starts[comm.rank()];
   setup.slab_hi = starts[comm.rank() + 1];
@@ -268,7 +246,7 @@ int run_command(const RunOptions& o) {
 
   const double m0 = mass();
   std::vector<double> rho, u, prev_u;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   long steps_done = 0;
   double residual = -1;
   bool converged = false;
@@ -322,7 +300,7 @@ int run_command(const RunOptions& o) {
     if (!comm.root()) return e.exit_code();
     throw;
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   const double m1 = mass();
   std::size_t fluid = solver->fluid_nodes();
   fluid = static_cast<std::size_t>(global_layer_sum(ex, {static_cast<double>(fluid)}, 1)[0]);
@@ -340,7 +318,7 @@ int run_command(const RunOptions& o) {
     r["mlups"] = seconds > 0 ? static_cast<double>(fluid) * steps_done / seconds / 1e6 : 0.0;
     r["threads"] = omp_get_max_threads();
     r["ranks"] = comm.size();
-    r["precision"] = o.precision;
+    r["precision"] = precision_name(o.precision);
     double umax = 0;
     for (double v : u) umax = std::max(umax, std::abs(v));
     r["max_speed"] = umax;
@@ -354,4 +332,4 @@ int run_command(const RunOptions& o) {
   return 0;
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

@@ -10,7 +10,7 @@
 #include "formats/volume/volume_io.hpp"
 #include "lbm/voxelize.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 int voxelize_command(const VoxelizeOptions& o) {
   if (o.size.size() != 3) throw usage_error("--size needs nx,ny,nz");
@@ -28,7 +28,7 @@ int voxelize_command(const VoxelizeOptions& o) {
   flags.size = {o.size[0], o.size[1], o.size[2]};
   flags.id.assign(static_cast<std::size_t>(o.size[0]) * o.size[1] * o.size[2], 0);
   lbm::VoxelizeOptions vo;
-  vo.fit_box = o.fit == "box";
+  vo.fit_box = o.fit_box;
   vo.margin = o.margin;
   std::size_t marked = 0;
   try {
@@ -45,4 +45,4 @@ int voxelize_command(const VoxelizeOptions& o) {
   return 0;
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

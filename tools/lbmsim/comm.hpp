@@ -7,7 +7,7 @@
 
 #include "lbm/exchange.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 class Comm {
  public:
@@ -32,4 +32,4 @@ class Comm {
 bool mpi_built();
 std::string mpi_library();
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

@@ -11,7 +11,7 @@
 #include "comm.hpp"
 #include "core/error.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 namespace {
 
@@ -103,4 +103,4 @@ Comm& Comm::world() {
   return comm;
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

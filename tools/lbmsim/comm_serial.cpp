@@ -5,7 +5,7 @@
 #include "comm.hpp"
 #include "core/error.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 Comm::Comm() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
@@ -24,4 +24,4 @@ Comm& Comm::world() {
   return comm;
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

@@ -1,22 +1,30 @@
 #pragma once
 // lbmsim's subcommands: typed options as main.cpp parses them, one function each.
 
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace fest::lbmsim {
+#include "lbm/case.hpp"
+#include "lbm/case_json.hpp"
+#include "lbm/solver.hpp"
+
+namespace fest::lbmsim_tool {
+
+// Where run's fields go: the frame stream on standard output, VTI series or NRRD files.
+enum class FieldFormat { stream, vti, nrrd };
 
 struct RunOptions {
   std::string case_file = "-";
   std::string output;          // pattern with %d, "-" or "": the frame stream
-  std::string to;              // vti, nrrd, stream
-  std::string fields;          // comma-separated; "" : the case's
+  FieldFormat format = FieldFormat::stream;  // from --to, else the pattern's extension
+  std::optional<std::vector<std::string>> fields;  // none: the case's
   long every = -1;             // -1: the case's
   long steps = -1;             // -1: the case's
-  std::string precision = "double";
+  lbm::Precision precision = lbm::Precision::f64;
   std::string forces, probes, report;
-  std::vector<std::string> set;
-  std::string compress;        // on/off ("" : the case's)
+  std::vector<lbm::CaseOverride> set;
+  std::optional<bool> compress;  // none: the case's
   bool quiet = false;
 };
 
@@ -27,28 +35,31 @@ struct CheckOptions {
 };
 
 struct BenchOptions {
-  std::string lattice = "d3q19";
+  lbm::LatticeKind lattice = lbm::LatticeKind::d3q19;
   int size = 0;                // 0: 128 (d3q19) / 1024 (d2q9)
   int steps = 0;               // 0: by size
-  std::vector<std::string> precision{"double"};
+  std::vector<lbm::Precision> precision{lbm::Precision::f64};
   std::vector<int> threads{1};
-  std::string collision = "bgk";
+  lbm::CollisionModel collision = lbm::CollisionModel::bgk;
 };
 
 struct VoxelizeOptions {
   std::string mesh;
   std::vector<int> size{64, 64, 64};
-  std::string fit = "box";
+  bool fit_box = true;         // --fit box; false: --fit none
   double margin = 2.0;
   std::string output = "-";
 };
 
 struct InfoOptions {
   std::string case_file = "-";
-  std::vector<std::string> set;
-  std::string precision = "double";
+  std::vector<lbm::CaseOverride> set;
+  lbm::Precision precision = lbm::Precision::f64;
   bool json = false;
 };
+
+// "double" or "float", as --precision spells them (reports, bench lines).
+const char* precision_name(lbm::Precision p) noexcept;
 
 int run_command(const RunOptions& o);
 int check_command(const CheckOptions& o);
@@ -60,4 +71,4 @@ int info_command(const InfoOptions& o);
 std::string build_features();
 void set_threads(int threads);
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

@@ -10,7 +10,7 @@
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/volume/volume_io.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 std::string encode_vti(const FieldFrame& f, bool float64, bool zlib) {
   Dataset img = Dataset::image_data({f.size[0], f.size[1], f.size[2]}, {f.spacing, f.spacing, f.spacing}, {0, 0, 0});
@@ -110,4 +110,4 @@ std::string expand_pattern(const std::string& pattern, long index) {
   return m.prefix().str() + buf + m.suffix().str();
 }
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

@@ -8,7 +8,7 @@
 
 #include "lbm/fields.hpp"
 
-namespace fest::lbmsim {
+namespace fest::lbmsim_tool {
 
 struct FieldFrame {
   long index = 0;     // output frame number (the step)
@@ -30,4 +30,4 @@ std::string encode_pvd(const std::vector<std::pair<double, std::string>>& entrie
 bool has_index_conversion(const std::string& pattern);
 std::string expand_pattern(const std::string& pattern, long index);
 
-}  // namespace fest::lbmsim
+}  // namespace fest::lbmsim_tool

@@ -1,6 +1,7 @@
 #pragma once
 // The subcommands of lmfsim; main.cpp parses flags into these structs and calls them.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,13 +10,17 @@
 
 #include "lmfsim/model.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
-// Command-line overrides of the scene's `sim` block (spec §4).
+// Command-line overrides of the scene's `sim` block (docs/lmfsim.md §4).
 struct SimOverrides {
   std::optional<double> dt, t_end, alpha, beta, kappa, omega0, zeta, svd_tol, max_violation, rtol, atol;
   std::optional<int> every;
-  std::string integrator, solver, formulation, stab;
+  std::optional<fest::lmfsim::Integrator> integrator;
+  std::optional<fest::lmfsim::SolverKind> solver;
+  std::optional<fest::lmfsim::Formulation> formulation;
+  std::optional<fest::lmfsim::Stabilization> stab;
+  // Sets the overridden values and checks dt, t_end, every (usage errors naming the flags).
   void apply(fest::lmfsim::SimSettings& sim) const;
 };
 
@@ -23,6 +28,7 @@ struct RunOptions {
   SimOverrides sim;
   bool wide = false, stream = false;
   std::string forces, diag, report;
+  int threads = 0;  // accepted; the integrator is sequential (one thread)
 };
 
 // Reads the scene JSON (bytes) into a Scene, meshes from files relative to the cwd.
@@ -33,13 +39,18 @@ int cmd_run(const RunOptions& opt);
 int cmd_check(const SimOverrides& sim);
 int cmd_assemble();
 
+enum class GenScene { chain, fourbar, activation, sleigh, bead, motorarm, ring };
+enum class LinkType { box, rod, particle };
+enum class JointType { ball, hinge, distance };
+
 struct GenOptions {
-  std::string kind;
+  GenScene kind = GenScene::chain;
   int n = 2;
-  std::string type = "box", joint;
+  LinkType type = LinkType::box;
+  std::optional<JointType> joint;  // none: ball; hinge with --planar; distance for particles
   double mass = 1, length = 1, angle = 90;
   bool planar = false;
-  std::string abcd = "0.3,1,0.8,1";
+  std::array<double, 4> abcd{0.3, 1, 0.8, 1};  // crank, coupler, rocker, ground
   int gravity = 1;
   double omega0 = 0;
 };
@@ -63,4 +74,4 @@ struct DiffOptions {
 };
 int cmd_diff(const DiffOptions& opt);
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool

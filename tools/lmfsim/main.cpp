@@ -1,14 +1,51 @@
-// lmfsim: constrained rigid-body dynamics with Lagrange multipliers (spec lmfsim.md).
-// Wiring only: flags -> commands (tools/lmfsim/*_cmd.cpp) -> lib/lmfsim.
+// lmfsim: constrained rigid-body dynamics with Lagrange multipliers (docs/lmfsim.md).
+// Wiring only: flags -> typed options -> commands (tools/lmfsim/cmd_<sub>.cpp) -> lib/lmfsim.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
+#include "cli/number_list.hpp"
 #include "commands.hpp"
+#include "core/error.hpp"
 
 namespace {
 
-using namespace lmfsim_tool;
+using namespace fest::lmfsim_tool;
+namespace lm = fest::lmfsim;
+
+// Binds an optional enum to a flag of words (checked like CLI::IsMember).
+template <typename E>
+void opt_words(CLI::App* app, const std::string& name, std::optional<E>& target, const std::string& help,
+               std::vector<std::pair<std::string, E>> words) {
+  fest::cli::enum_words(app->add_option_function<E>(name, [&target](const E& v) { target = v; }, help), std::move(words));
+}
+
+GenScene gen_scene(const std::string& kind) {
+  if (kind == "chain") return GenScene::chain;
+  if (kind == "fourbar") return GenScene::fourbar;
+  if (kind == "activation") return GenScene::activation;
+  if (kind == "sleigh") return GenScene::sleigh;
+  if (kind == "bead") return GenScene::bead;
+  if (kind == "motorarm") return GenScene::motorarm;
+  if (kind == "ring") return GenScene::ring;
+  throw fest::usage_error("unknown scene '{}' (chain, fourbar, activation, sleigh, bead, motorarm, ring)", kind);
+}
+
+// gen's words and lists, into the typed options.
+void resolve_gen(GenOptions& gen, const std::string& kind, const std::string& joint, const std::string& abcd) {
+  gen.kind = gen_scene(kind);
+  if (joint == "ball") gen.joint = JointType::ball;
+  else if (joint == "hinge") gen.joint = JointType::hinge;
+  else if (joint == "distance") gen.joint = JointType::distance;
+  else if (!joint.empty()) throw fest::usage_error("--joint must be ball, hinge or distance");
+  const std::vector<double> v = fest::cli::number_list(abcd, 4, 4, "--abcd");
+  for (double x : v)
+    if (!(x > 0)) throw fest::usage_error("--abcd lengths must be positive");
+  for (int k = 0; k < 4; ++k) gen.abcd[static_cast<std::size_t>(k)] = v[static_cast<std::size_t>(k)];
+}
 
 // Binds an optional<double> to a flag.
 template <typename T>
@@ -21,12 +58,20 @@ void add_sim_flags(CLI::App* app, SimOverrides& s, bool full) {
   opt_value(app, "--t-end", s.t_end, "End time in seconds (default: scene)");
   if (!full) return;
   opt_value(app, "--every", s.every, "Write a frame every N steps (default 10)");
-  app->add_option("--integrator", s.integrator, "rk4 (default), rk45, symplectic or euler")
-      ->check(CLI::IsMember({"rk4", "rk45", "symplectic", "euler"}));
-  app->add_option("--solver", s.solver, "baraff (O(n), default) or dense")->check(CLI::IsMember({"baraff", "dense"}));
-  app->add_option("--formulation", s.formulation, "lmf (default) or penalty")->check(CLI::IsMember({"lmf", "penalty"}));
-  app->add_option("--stab", s.stab, "Stabilisation: baumgarte (default), force, project, none")
-      ->check(CLI::IsMember({"baumgarte", "force", "project", "none"}));
+  opt_words<lm::Integrator>(app, "--integrator", s.integrator, "rk4 (default), rk45, symplectic or euler",
+                            {{"rk4", lm::Integrator::rk4},
+                             {"rk45", lm::Integrator::rk45},
+                             {"symplectic", lm::Integrator::symplectic},
+                             {"euler", lm::Integrator::euler}});
+  opt_words<lm::SolverKind>(app, "--solver", s.solver, "baraff (O(n), default) or dense",
+                            {{"baraff", lm::SolverKind::baraff}, {"dense", lm::SolverKind::dense}});
+  opt_words<lm::Formulation>(app, "--formulation", s.formulation, "lmf (default) or penalty",
+                             {{"lmf", lm::Formulation::lmf}, {"penalty", lm::Formulation::penalty}});
+  opt_words<lm::Stabilization>(app, "--stab", s.stab, "Stabilisation: baumgarte (default), force, project, none",
+                               {{"baumgarte", lm::Stabilization::baumgarte},
+                                {"force", lm::Stabilization::force},
+                                {"project", lm::Stabilization::project},
+                                {"none", lm::Stabilization::none}});
   opt_value(app, "--alpha", s.alpha, "Baumgarte alpha in 1/s (default 10)");
   opt_value(app, "--beta", s.beta, "Baumgarte beta in 1/s (default 10)");
   opt_value(app, "--kappa", s.kappa, "Penalty stiffness scale in kg (default 1)");
@@ -47,7 +92,6 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RunOptions run;
-  int threads = 0;
   auto* run_cmd = app.add_subcommand("run", "Simulate the scene on standard input; trajectory CSV on standard output");
   add_sim_flags(run_cmd, run.sim, true);
   run_cmd->add_flag("--wide", run.wide, "One row per frame with <body>.<field> columns");
@@ -55,7 +99,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--diag", run.diag, "Write energy and drift diagnostics per frame to FILE (CSV)");
   run_cmd->add_option("--report", run.report, "Write a JSON summary (steps/s, drift, max |C|) to FILE");
   run_cmd->add_flag("--stream", run.stream, "Write frames as they come; a failure ends the stream with '# ERROR'");
-  fest::cli::add_threads(*run_cmd, threads);
+  run_cmd->add_option("--threads", run.threads,
+                      "Accepted for the common interface; the integrator is sequential and runs one thread")
+      ->default_val(0);
 
   SimOverrides check_sim;
   auto* check_cmd = app.add_subcommand("check", "Topology, rank and degrees of freedom of the scene (JSON)");
@@ -64,16 +110,18 @@ int main(int argc, char** argv) {
   auto* assemble_cmd = app.add_subcommand("assemble", "Project the initial state onto the constraints; scene JSON out");
 
   GenOptions gen;
+  std::string gen_kind, gen_joint, gen_abcd = "0.3,1,0.8,1";
   auto* gen_cmd = app.add_subcommand("gen", "Write a test scene: chain, fourbar, activation, sleigh, bead, motorarm, ring");
-  gen_cmd->add_option("kind", gen.kind, "chain, fourbar, activation, sleigh, bead, motorarm or ring")->required();
+  gen_cmd->add_option("kind", gen_kind, "chain, fourbar, activation, sleigh, bead, motorarm or ring")->required();
   gen_cmd->add_option("--n", gen.n, "Links (chain)");
-  gen_cmd->add_option("--type", gen.type, "Link type: box, rod or particle")->check(CLI::IsMember({"box", "rod", "particle"}));
-  gen_cmd->add_option("--joint", gen.joint, "ball, hinge or distance (default: ball; hinge with --planar; distance for particles)");
+  fest::cli::enum_words<LinkType>(gen_cmd->add_option("--type", gen.type, "Link type: box, rod or particle"),
+                        {{"box", LinkType::box}, {"rod", LinkType::rod}, {"particle", LinkType::particle}});
+  gen_cmd->add_option("--joint", gen_joint, "ball, hinge or distance (default: ball; hinge with --planar; distance for particles)");
   gen_cmd->add_option("--mass", gen.mass, "Total mass in kg (default 1)");
   gen_cmd->add_option("--length", gen.length, "Total length in m (default 1)");
   gen_cmd->add_option("--angle", gen.angle, "Initial angle from the downward vertical, degrees (fourbar: crank angle)");
   gen_cmd->add_flag("--planar", gen.planar, "Hinges about y (motion in the x-z plane)");
-  gen_cmd->add_option("--abcd", gen.abcd, "Four-bar lengths crank,coupler,rocker,ground (default 0.3,1,0.8,1)");
+  gen_cmd->add_option("--abcd", gen_abcd, "Four-bar lengths crank,coupler,rocker,ground (default 0.3,1,0.8,1)");
   gen_cmd->add_option("--gravity", gen.gravity, "1: g = 9.81 along -z (default), 0: none")->check(CLI::IsMember({0, 1}));
   gen_cmd->add_option("--omega0", gen.omega0, "Initial crank rate in rad/s (fourbar)");
 
@@ -101,7 +149,10 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return cmd_run(run);
     if (check_cmd->parsed()) return cmd_check(check_sim);
     if (assemble_cmd->parsed()) return cmd_assemble();
-    if (gen_cmd->parsed()) return cmd_gen(gen);
+    if (gen_cmd->parsed()) {
+      resolve_gen(gen, gen_kind, gen_joint, gen_abcd);
+      return cmd_gen(gen);
+    }
     if (red_cmd->parsed()) return cmd_reduced(red);
     if (ex_cmd->parsed()) return cmd_export(ex);
     if (df_cmd->parsed()) return cmd_diff(df);

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 void append_row(std::string& out, const TrajectoryRow& r) {
   fmt::format_to(std::back_inserter(out), "{},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n",
@@ -61,4 +61,4 @@ std::vector<TrajectoryRow> parse_trajectory(const std::string& bytes, const std:
   return rows;
 }
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool

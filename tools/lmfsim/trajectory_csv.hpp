@@ -1,12 +1,12 @@
 #pragma once
-// lmfsim's trajectory CSV (spec §4): `frame,t,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz`.
+// lmfsim's trajectory CSV (lmfsim(1), docs/lmfsim.md): `frame,t,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz`.
 
 #include <string>
 #include <vector>
 
 #include "lmfsim/model.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 struct TrajectoryRow {
   long frame = 0;
@@ -21,4 +21,4 @@ void append_row(std::string& out, const TrajectoryRow& r);
 // Throws bad_input naming `name` and the line for anything malformed.
 std::vector<TrajectoryRow> parse_trajectory(const std::string& bytes, const std::string& name);
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool

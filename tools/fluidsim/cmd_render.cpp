@@ -1,14 +1,14 @@
-// fluidsim render (field file or frame stream -> PNG/PFM) and fluidsim interp (blend two
-// frames).
+// fluidsim render: field file or frame stream -> PNG/PFM.
 #include <algorithm>
 #include <cmath>
-
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "fluidsim/frame.hpp"
 #include "image_data_frame.hpp"
+#include "output_names.hpp"
+#include "plane_image.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -17,31 +17,6 @@
 namespace fest::fluidsim_tool {
 
 using namespace fest::fluidsim;
-
-cv::Mat plane_to_rgb(const Plane& p, double lo, double hi, const std::string& map, int depth) {
-  cv::Mat m(p.height, p.width, depth == 16 ? CV_16UC3 : CV_8UC3);
-  const double top = depth == 16 ? 65535.0 : 255.0;
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x) {
-      const double t = (p.values[static_cast<std::size_t>(y) * p.width + x] - lo) / (hi - lo);
-      const auto rgb = colour(map, t);
-      for (int k = 0; k < 3; ++k) {
-        const double v = std::lround(rgb[k] * top);
-        if (depth == 16)
-          m.ptr<std::uint16_t>(y)[3 * x + k] = static_cast<std::uint16_t>(v);
-        else
-          m.ptr<std::uint8_t>(y)[3 * x + k] = static_cast<std::uint8_t>(v);
-      }
-    }
-  return m;
-}
-
-cv::Mat plane_to_float(const Plane& p) {
-  cv::Mat m(p.height, p.width, CV_32FC1);
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x) m.ptr<float>(y)[x] = static_cast<float>(p.values[static_cast<std::size_t>(y) * p.width + x]);
-  return m;
-}
 
 namespace {
 
@@ -105,16 +80,8 @@ std::vector<Frame> load_frames(const std::string& path) {
 
 int render_command(const RenderOptions& o) {
   fluidsim::RenderOptions ro;
-  if (o.mode == "slice") ro.mode = RenderMode::slice;
-  else if (o.mode == "mip") ro.mode = RenderMode::mip;
-  else if (o.mode == "absorb") ro.mode = RenderMode::absorb;
-  else throw usage_error("--mode must be slice, mip or absorb");
-  if (o.axis == "x") ro.axis = 0;
-  else if (o.axis == "y") ro.axis = 1;
-  else if (o.axis == "z") ro.axis = 2;
-  else throw usage_error("--axis must be x, y or z");
-  if (o.to != "png" && o.to != "pfm") throw usage_error("--to must be png or pfm");
-  check_colormap(o.colormap);
+  ro.mode = o.mode;
+  ro.axis = o.axis;
   if (!o.range.empty() && !(o.range[1] > o.range[0])) throw usage_error("--range lo,hi needs lo < hi");
   ro.index = o.index;
 
@@ -149,7 +116,7 @@ int render_command(const RenderOptions& o) {
     ro.spacing = f.spacing;
     ro.sigma = o.sigma > 0 ? o.sigma : 4.0 / (f.spacing * std::max({f.size[0], f.size[1], f.size[2]}));
     const Plane p = render_plane(f.magnitude(field), f.size, f.dim, ro);
-    if (o.to == "pfm") {
+    if (o.to == ImageFormat::pfm) {
       images.push_back(formats::write_image(Image{plane_to_float(p), ColorSpace::linear}, formats::Format::pfm));
       continue;
     }
@@ -173,22 +140,6 @@ int render_command(const RenderOptions& o) {
     for (std::size_t i = 0; i < images.size(); ++i)
       write_output(expand_pattern(o.output, many ? frames[i].index : frames[i].index), images[i]);
   }
-  return 0;
-}
-
-int interp_command(const InterpOptions& o) {
-  auto one = [](const std::string& path) {
-    const std::string where = path == "-" ? "stdin" : path;
-    const std::string bytes = read_input(path);
-    if (bytes.empty()) throw bad_input("empty input ({})", where);
-    Frame f;
-    decode_frame(bytes, 0, f, where, 0);
-    return f;
-  };
-  const Frame a = one(o.a), b = one(o.b);
-  Frame out = blend_frames(a, b, o.alpha);
-  out.float64 = a.float64 || b.float64;
-  write_output(o.output, encode_frame(out));
   return 0;
 }
 

@@ -1,6 +1,5 @@
 // fluidsim run: scene JSON -> simulation -> frames (files or the frame stream).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -15,6 +14,8 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/progress.hpp"
+#include "core/resources.hpp"
+#include "core/stopwatch.hpp"
 #include "core/tool_main.hpp"
 #include "fluidsim/frame.hpp"
 #include "fluidsim/operators.hpp"
@@ -25,23 +26,17 @@
 #include "formats/input.hpp"
 #include "formats/volume/volume_io.hpp"
 #include "image_data_frame.hpp"
+#include "openmp_threads.hpp"
+#include "output_names.hpp"
+#include "plane_image.hpp"
 
 namespace fest::fluidsim_tool {
 
 using namespace fest::fluidsim;
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 namespace {
-
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-std::string extension_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  return path.substr(dot + 1);
-}
 
 Scene load_scene(const std::string& path) {
   const std::string where = path == "-" ? "stdin" : path;
@@ -134,20 +129,20 @@ State read_init_file(const std::string& path, const Layout& layout, const std::v
 
 struct Output {
   std::string pattern;
-  std::string format;  // stream, vti, nrrd, pfm, exr, png
+  FrameFormat format = FrameFormat::stream;
 };
 
 void write_frame(const Output& out, const Frame& f, const std::string& main_field, bool float64) {
-  if (out.format == "stream") {
+  if (out.format == FrameFormat::stream) {
     const std::string bytes = encode_frame(f);
     if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() || std::fflush(stdout) != 0)
       throw io_error("cannot write the frame stream (stdout)");
     return;
   }
   const std::string path = expand_pattern(out.pattern, f.index);
-  if (out.format == "vti") {
+  if (out.format == FrameFormat::vti) {
     write_output(path, formats::write_dataset(frame_to_vti(f, float64), formats::Format::vti));
-  } else if (out.format == "nrrd") {
+  } else if (out.format == FrameFormat::nrrd) {
     // One file per field: f00000_density.nrrd, f00000_velocity.nrrd.
     const auto dot = path.find_last_of('.');
     for (const FrameField& ff : f.fields) {
@@ -170,9 +165,9 @@ void write_frame(const Output& out, const Frame& f, const std::string& main_fiel
         write_output(name, encode_frame(one));
       }
     }
-  } else if (out.format == "pfm" || out.format == "exr") {
+  } else if (out.format == FrameFormat::pfm || out.format == FrameFormat::exr) {
     write_output(path, formats::write_image(frame_to_image(f, main_field),
-                                            out.format == "pfm" ? formats::Format::pfm : formats::Format::exr));
+                                            out.format == FrameFormat::pfm ? formats::Format::pfm : formats::Format::exr));
   } else {  // png preview with the render defaults
     fluidsim::RenderOptions ro;
     ro.axis = 1;
@@ -186,7 +181,7 @@ void write_frame(const Output& out, const Frame& f, const std::string& main_fiel
       lo = std::min(0.0, *std::min_element(p.values.begin(), p.values.end()));
       if (hi <= lo) hi = lo + 1.0;
     }
-    Image img{plane_to_rgb(p, lo, hi, "inferno", 8), ColorSpace::srgb};
+    Image img{plane_to_rgb(p, lo, hi, Colormap::inferno, 8), ColorSpace::srgb};
     write_output(path, formats::write_image(img, formats::Format::png));
   }
 }
@@ -195,34 +190,21 @@ void write_frame(const Output& out, const Frame& f, const std::string& main_fiel
 
 int run_command(const RunOptions& o) {
   set_threads(o.threads);
-  // Flags first (usage errors), then the scene (bad input).
-  if (o.order != "paper" && o.order != "stam03") throw usage_error("--order must be paper or stam03");
-  if (o.grid == "mac") throw usage_error("--grid mac is unsupported in this build (use collocated)");
-  if (o.grid != "collocated") throw usage_error("--grid must be collocated");
-  if (o.precision != "float" && o.precision != "double") throw usage_error("--precision must be float or double");
+  // The flags were checked in main.cpp (usage errors); now the scene (bad input).
   Output out;
   out.pattern = o.output;
-  if (o.output == "-" || o.output.empty()) {
-    out.format = "stream";
-    if (!o.to.empty() && o.to != "nrrd") throw usage_error("standard output carries the NRRD frame stream only");
-  } else {
-    out.format = o.to.empty() ? extension_of(o.output) : o.to;
-    if (out.format != "vti" && out.format != "nrrd" && out.format != "pfm" && out.format != "exr" && out.format != "png")
-      throw usage_error("output format must be vti, nrrd, pfm, exr or png (from --to or the extension of \"{}\")",
-                        o.output);
-  }
-  std::optional<PoissonSolver> solver;
-  if (!o.poisson.empty()) solver = parse_poisson(o.poisson);
+  out.format = o.format;
+  const std::optional<PoissonSolver>& solver = o.poisson;
 
   Scene scene = load_scene(o.scene);
   if (o.frames > 0) scene.frames = o.frames;
   if (o.interp > 0) scene.interp = o.interp;
   for (const std::string& w : scene.warnings) warn("fluidsim", w);
   if (scene.interp > 8) warn("fluidsim", fmt::format("--interp {} > 8 interpolates over long steps (quality)", scene.interp));
-  if (out.format != "stream" && scene.frames > 1 && !has_index_conversion(out.pattern))
+  if (out.format != FrameFormat::stream && scene.frames > 1 && !has_index_conversion(out.pattern))
     throw usage_error("-o \"{}\" needs a %d for {} frames", out.pattern, scene.frames);
-  if ((out.format == "pfm" || out.format == "exr") && scene.dim != 2)
-    throw usage_error("{} output is for 2-D scenes; use vti or nrrd", out.format);
+  if ((out.format == FrameFormat::pfm || out.format == FrameFormat::exr) && scene.dim != 2)
+    throw usage_error("{} output is for 2-D scenes; use vti or nrrd", out.format == FrameFormat::pfm ? "pfm" : "exr");
   const Layout layout = scene.layout();
   for (int a = 0; a < scene.dim; ++a)
     if (scene.bc[a] == Boundary::periodic && scene.dims[a] % 2 == 1)
@@ -234,7 +216,7 @@ int run_command(const RunOptions& o) {
   so.projection.solver = solver ? *solver : (nmax <= 64 ? PoissonSolver::fdm : PoissonSolver::fft);
   so.projection.iters = o.iters;
   so.projection.tol = o.tol;
-  so.stam03 = o.order == "stam03";
+  so.stam03 = o.order == StepOrder::stam03;
   so.mass_correct = o.mass_correct;
 
   if (so.projection.solver == PoissonSolver::fft) {
@@ -253,17 +235,10 @@ int run_command(const RunOptions& o) {
     fields.push_back("velocity");
     for (const auto& n : scalar_names) fields.push_back(n);
   } else {
-    std::string item;
-    for (std::size_t i = 0; i <= o.fields.size(); ++i) {
-      if (i == o.fields.size() || o.fields[i] == ',') {
-        if (item.empty()) throw usage_error("--fields has an empty name");
-        if (item != "velocity" && std::find(scalar_names.begin(), scalar_names.end(), item) == scalar_names.end())
-          throw usage_error("--fields names \"{}\", which the scene does not have", item);
-        fields.push_back(item);
-        item.clear();
-      } else {
-        item += o.fields[i];
-      }
+    for (const std::string& item : o.fields) {
+      if (item != "velocity" && std::find(scalar_names.begin(), scalar_names.end(), item) == scalar_names.end())
+        throw usage_error("--fields names \"{}\", which the scene does not have", item);
+      fields.push_back(item);
     }
   }
   // The field that 1-field outputs (pfm, exr, png) show.
@@ -294,7 +269,7 @@ int run_command(const RunOptions& o) {
   // States come from the solver through the 3-slot ring (the solver thread runs ahead
   // while this thread interpolates and writes), or, with --pipeline off, are computed
   // here on demand. Both give the same bytes.
-  const bool pipeline = o.pipeline == "on";
+  const bool pipeline = o.pipeline;
   StateRing ring(3);
   const int nthreads = omp_threads();
   auto produce = [&] {
@@ -391,7 +366,7 @@ int run_command(const RunOptions& o) {
     const double ms_interp = phase == 0 ? 0.0 : ms_since(t0);
     total_ms[5] += ms_interp;
     Frame frame = make_frame(layout, frame_state, scalar_names, fields, f, f * scene.frame_dt);
-    frame.float64 = o.precision == "double";
+    frame.float64 = o.float64;
     t0 = Clock::now();
     write_frame(out, frame, main_field, frame.float64);
     const double ms_write = ms_since(t0);
@@ -434,7 +409,7 @@ int run_command(const RunOptions& o) {
                 {"max_div_rel", max_div_rel},
                 {"max_speed", peak_speed},
                 {"solver", poisson_name(so.projection.solver)},
-                {"order", o.order},
+                {"order", o.order == StepOrder::stam03 ? "stam03" : "paper"},
                 {"threads", omp_threads()},
                 {"pipeline", pipeline},
                 {"dims", std::vector<int>(scene.dims.begin(), scene.dims.begin() + scene.dim)},
@@ -447,7 +422,7 @@ int run_command(const RunOptions& o) {
                   {"step", (total_ms[0] + total_ms[1] + total_ms[2] + total_ms[3] + total_ms[4]) / steps},
                   {"interp_frame", total_ms[5] / std::max<double>(1.0, scene.frames - std::ceil(scene.frames / double(K)))},
                   {"write_frame", total_ms[6] / scene.frames}}},
-                {"peak_rss_mb", peak_rss_mb()}};
+                {"peak_rss_mb", peak_rss_kb() / 1024.0}};
     for (const auto& n : scalar_names) rep["mass." + n] = stats_lines.back()["mass." + n];
     write_output(o.report, rep.dump(2) + "\n");
   }

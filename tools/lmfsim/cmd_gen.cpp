@@ -1,6 +1,5 @@
-// lmfsim gen: the scenes of the golden and analytic tests (spec §4 `gen`).
+// lmfsim gen: the scenes of the golden and analytic tests (docs/lmfsim.md §4 `gen`).
 #include <cmath>
-#include <sstream>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -8,7 +7,7 @@
 #include "formats/table/table_io.hpp"
 #include "lmfsim/reduced.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 using nlohmann::json;
 
@@ -21,6 +20,15 @@ json v3(double x, double y, double z) { return json::array({x, y, z}); }
 // Quaternion of a rotation about +y by `a` radians (x -> (cos a, 0, -sin a)).
 json quat_y(double a) { return json::array({std::cos(a / 2), 0.0, std::sin(a / 2), 0.0}); }
 
+const char* joint_name(JointType j) {
+  switch (j) {
+    case JointType::ball: return "ball";
+    case JointType::hinge: return "hinge";
+    case JointType::distance: return "distance";
+  }
+  return "?";
+}
+
 json sim_block() {
   return {{"t_end", 1.0}, {"dt", 1e-3}, {"every", 10}, {"integrator", "rk4"},
           {"stab", {{"mode", "baumgarte"}, {"alpha", 10.0}, {"beta", 10.0}}}, {"solver", "baraff"}};
@@ -28,12 +36,11 @@ json sim_block() {
 
 json gen_chain(const GenOptions& o) {
   if (o.n < 1) throw fest::usage_error("--n must be >= 1");
-  const bool particle = o.type == "particle";
-  if (o.type != "box" && o.type != "rod" && !particle) throw fest::usage_error("--type must be box, rod or particle");
-  std::string joint = o.joint.empty() ? (particle ? "distance" : (o.planar ? "hinge" : "ball")) : o.joint;
-  if (joint != "ball" && joint != "hinge" && joint != "distance") throw fest::usage_error("--joint must be ball, hinge or distance");
-  if (particle && joint != "distance") throw fest::usage_error("a particle chain needs --joint distance");
-  if (!particle && joint == "distance") throw fest::usage_error("--joint distance needs --type particle");
+  const bool particle = o.type == LinkType::particle;
+  const JointType joint =
+      o.joint ? *o.joint : (particle ? JointType::distance : (o.planar ? JointType::hinge : JointType::ball));
+  if (particle && joint != JointType::distance) throw fest::usage_error("a particle chain needs --joint distance");
+  if (!particle && joint == JointType::distance) throw fest::usage_error("--joint distance needs --type particle");
   if (!(o.mass > 0) || !(o.length > 0)) throw fest::usage_error("--mass and --length must be positive");
   const double L = o.length / o.n, m = o.mass / o.n, th = o.angle * kPi / 180;
   const double dx = std::sin(th), dz = -std::cos(th);  // link direction from the downward vertical
@@ -44,20 +51,20 @@ json gen_chain(const GenOptions& o) {
     const double along = particle ? (i + 1) * L : (i + 0.5) * L;
     b["pos"] = v3(along * dx, 0, along * dz);
     if (!particle) {
-      if (o.type == "box") b["shape"] = {{"box", v3(L, 0.02, 0.02)}};
+      if (o.type == LinkType::box) b["shape"] = {{"box", v3(L, 0.02, 0.02)}};
       else b["shape"] = {{"rod", L}};
       b["inertia"] = "auto";
       b["quat"] = quat_y(kPi / 2 - th);
     }
     bodies.push_back(b);
     const std::string prev = i == 0 ? "world" : "l" + std::to_string(i);
-    json c = {{"name", "j" + std::to_string(i)}, {"type", joint}, {"a", prev}, {"b", name}};
+    json c = {{"name", "j" + std::to_string(i)}, {"type", joint_name(joint)}, {"a", prev}, {"b", name}};
     if (particle) {
       c["length"] = L;
     } else {
       c["pa"] = i == 0 ? v3(0, 0, 0) : v3(L / 2, 0, 0);
       c["pb"] = v3(-L / 2, 0, 0);
-      if (joint == "hinge") {
+      if (joint == JointType::hinge) {
         c["axis_a"] = v3(0, 1, 0);
         c["axis_b"] = v3(0, 1, 0);
       }
@@ -69,31 +76,16 @@ json gen_chain(const GenOptions& o) {
 }
 
 json gen_fourbar(const GenOptions& o) {
-  double v[4];
-  {
-    std::stringstream ss(o.abcd);
-    std::string item;
-    int k = 0;
-    while (std::getline(ss, item, ',')) {
-      if (k >= 4) throw fest::usage_error("--abcd needs four lengths a,b,c,d");
-      try {
-        v[k++] = std::stod(item);
-      } catch (...) {
-        throw fest::usage_error("--abcd: '{}' is not a number", item);
-      }
-    }
-    if (k != 4) throw fest::usage_error("--abcd needs four lengths a,b,c,d");
-    for (double x : v) if (!(x > 0)) throw fest::usage_error("--abcd lengths must be positive");
-  }
   fest::lmfsim::FourBar fb;
-  fb.a = v[0], fb.b = v[1], fb.c = v[2], fb.d = v[3];
+  fb.a = o.abcd[0], fb.b = o.abcd[1], fb.c = o.abcd[2], fb.d = o.abcd[3];
   fb.branch = 1;
   const double phi = o.angle * kPi / 180;
   fest::lmfsim::FourBar::Pose p;
   try {
     p = fb.pose(phi);
   } catch (const fest::Error&) {
-    throw fest::usage_error("the four-bar {} cannot close at crank angle {} deg", o.abcd, o.angle);
+    throw fest::usage_error("the four-bar {},{},{},{} cannot close at crank angle {} deg", fb.a, fb.b, fb.c, fb.d,
+                            o.angle);
   }
   // Velocities for the crank rate omega0 by a central difference of the closed loop.
   const double eps = 1e-6;
@@ -135,7 +127,7 @@ json gen_activation(const GenOptions& o) {
           {"events", events}, {"sim", sim}};
 }
 
-// Knife edge (spec §5): a box held on z = 0 (point_on_plane at the COM, body z parallel
+// Knife edge (docs/lmfsim.md §2, §7): a box held on z = 0 (point_on_plane at the COM, body z parallel
 // to world z) with a blade along body x through the COM; speed 1 m/s, yaw rate --omega0:
 // the COM runs on a circle of radius 1/omega0.
 json gen_sleigh(const GenOptions& o) {
@@ -215,24 +207,17 @@ json gen_ring(const GenOptions& o) {
 
 int cmd_gen(const GenOptions& o) {
   json doc;
-  if (o.kind == "chain") doc = gen_chain(o);
-  else if (o.kind == "fourbar") doc = gen_fourbar(o);
-  else if (o.kind == "activation") {
-    GenOptions g = o;
-    doc = gen_activation(g);
-  } else if (o.kind == "sleigh") {
-    doc = gen_sleigh(o);
-  } else if (o.kind == "bead") {
-    doc = gen_bead(o);
-  } else if (o.kind == "motorarm") {
-    doc = gen_motorarm(o);
-  } else if (o.kind == "ring") {
-    doc = gen_ring(o);
-  } else {
-    throw fest::usage_error("unknown scene '{}' (chain, fourbar, activation, sleigh, bead, motorarm, ring)", o.kind);
+  switch (o.kind) {
+    case GenScene::chain: doc = gen_chain(o); break;
+    case GenScene::fourbar: doc = gen_fourbar(o); break;
+    case GenScene::activation: doc = gen_activation(o); break;
+    case GenScene::sleigh: doc = gen_sleigh(o); break;
+    case GenScene::bead: doc = gen_bead(o); break;
+    case GenScene::motorarm: doc = gen_motorarm(o); break;
+    case GenScene::ring: doc = gen_ring(o); break;
   }
   fest::write_output("-", fest::formats::write_json(doc));
   return 0;
 }
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool

@@ -1,5 +1,5 @@
 // lmfsim reduced: reduced-coordinate references for planar chains and the four-bar
-// (spec §2.5), written in the layout of `run` so that `diff` can compare the two.
+// (docs/lmfsim.md §5), written in the layout of `run` so that `diff` can compare the two.
 #include <cmath>
 
 #include "commands.hpp"
@@ -8,7 +8,7 @@
 #include "lmfsim/reduced.hpp"
 #include "trajectory_csv.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 using namespace fest::lmfsim;
 
@@ -236,4 +236,4 @@ int cmd_reduced(const ReducedOptions& opt) {
   return opt.chain ? reduced_chain(sc, opt.sim) : reduced_fourbar(sc, opt.sim);
 }
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool

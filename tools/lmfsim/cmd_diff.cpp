@@ -9,7 +9,7 @@
 #include "formats/table/table_io.hpp"
 #include "trajectory_csv.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 int cmd_diff(const DiffOptions& opt) {
   const auto A = parse_trajectory(fest::read_input(opt.a), opt.a);
@@ -58,4 +58,4 @@ int cmd_diff(const DiffOptions& opt) {
   return 0;
 }
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool

@@ -1,20 +1,15 @@
-// fluidsim check (analytic cases -> JSON report) and fluidsim bench (stage timings ->
-// JSON lines).
-#include <chrono>
+// fluidsim bench: stage timings per (size, solver, threads) -> JSON lines.
 #include <cstdio>
 #include <ctime>
 #include <map>
 
 #include <omp.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/resources.hpp"
-#include "core/threads.hpp"
-#include "fluidsim/checks.hpp"
+#include "core/stopwatch.hpp"
 #include "fluidsim/simulator.hpp"
 
 namespace fest::fluidsim_tool {
@@ -22,63 +17,23 @@ namespace fest::fluidsim_tool {
 using namespace fest::fluidsim;
 using nlohmann::json;
 
-int omp_threads() { return omp_get_max_threads(); }
-
-void set_threads(int threads) { omp_set_num_threads(fest::resolve_threads(threads)); }
-
-double peak_rss_mb() { return peak_rss_kb() / 1024.0; }
-
-int check_command(const CheckOptions& o) {
-  set_threads(o.threads);
-  fluidsim::CheckOptions co;
-  co.n = o.n;
-  co.dt = o.dt;
-  co.nu = o.nu;
-  json report;
-  const std::string& w = o.which;
-  auto run_one = [&](const std::string& name) {
-    if (name == "projection") return check_projection(co);
-    if (name == "taylor-green") return check_taylor_green(co);
-    if (name == "abc") return check_abc(co);
-    if (name == "mass") return check_mass(co);
-    if (name == "stability") return check_stability(co);
-    return check_interp(co);
-  };
-  if (w == "all") {
-    report = {{"check", "all"}, {"cases", json::array()}};
-    bool pass = true;
-    for (const char* name : {"projection", "taylor-green", "abc", "mass", "stability", "interp"}) {
-      json r = run_one(name);
-      pass = pass && r["pass"].get<bool>();
-      report["cases"].push_back(r);
-    }
-    report["pass"] = pass;
-  } else {
-    report = run_one(w);
-  }
-  const std::string text = report.dump(2) + "\n";
-  if (!o.report.empty()) write_output(o.report, text);
-  write_output("-", text);
-  return report["pass"].get<bool>() ? 0 : 1;
-}
-
 int bench_command(const BenchOptions& o) {
-  using Clock = std::chrono::steady_clock;
+  using Clock = SteadyClock;
   // (size, solver, stage) -> ms at the first thread count, for the speed-ups.
   std::map<std::string, double> base;
   for (int n : o.sizes)
-    for (const std::string& solver_name : o.poisson) {
+    for (const PoissonSolver solver : o.poisson) {
+      const std::string solver_name = poisson_name(solver);
       SimOptions so;
-      so.projection.solver = parse_poisson(solver_name);
-      if (solver_name == "gs") so.stam03 = true;  // Stam 2003 semantics: 20 Gauss-Seidel sweeps
-      so.projection.iters = solver_name == "jacobi" ? 40 : 20;
+      so.projection.solver = solver;
+      if (solver == PoissonSolver::gs) so.stam03 = true;  // Stam 2003 semantics: 20 Gauss-Seidel sweeps
+      so.projection.iters = solver == PoissonSolver::jacobi ? 40 : 20;
       so.projection.tol = 1e-8;
       for (int t : o.threads) {
         omp_set_num_threads(t);
         Scene sc;
         sc.dims = {n, n, n};
         sc.viscosity = o.nu;
-        ScalarSpec s;
         Source src;
         src.shape = Source::Shape::sphere;
         src.centre = {0.5 * (n + 1), 0.5 * (n + 1), 0.2 * (n + 1)};
@@ -86,16 +41,10 @@ int bench_command(const BenchOptions& o) {
         src.rate = 10.0;
         src.jet = true;
         src.velocity = {0, 0, 0.5};
-        s.sources = {src};
-        sc.scalars = {s};
-        Force f;
-        f.type = Force::Type::buoyancy;
-        f.scalar = "density";
-        f.beta = 1.0;
-        sc.forces = {f};
+        add_plume(sc, src);
         const auto t_setup = Clock::now();
         const Simulator sim(sc, so);
-        const double setup_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_setup).count();
+        const double setup_ms = ms_since(t_setup);
         State st = sim.initial_state();
         sim.step(st, 0.04);  // warm-up (diffusion bases are built on first use)
         std::map<std::string, double> ms;
@@ -113,7 +62,7 @@ int bench_command(const BenchOptions& o) {
           const double c0 = cpu_now();
           const auto t0 = Clock::now();
           const StepStats ss = sim.step(st, 0.04);
-          ms["step"] += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+          ms["step"] += ms_since(t0);
           cpu_ms += cpu_now() - c0;
           ms["advect"] += ss.ms_advect;
           ms["diffuse"] += ss.ms_diffuse;
@@ -125,7 +74,7 @@ int bench_command(const BenchOptions& o) {
         }
         const auto t0 = Clock::now();
         const State mid = blend(before, st, 0.4);
-        ms["interp_frame"] = std::chrono::duration<double, std::milli>(Clock::now() - t0).count() * o.steps;
+        ms["interp_frame"] = ms_since(t0) * o.steps;
         (void)mid;
         ms["step_nu0"] = ms["step"] - ms["diffuse"];
         for (auto& [stage, total] : ms) {
@@ -136,8 +85,8 @@ int bench_command(const BenchOptions& o) {
                        {"stage", stage},      {"ms", mean},   {"speedup", base[key] / mean},
                        {"max_div_rel", max_div_rel}, {"setup_ms", setup_ms}};
           if (stage == "step") line["cpu_ms"] = cpu_ms / o.steps;
-          if (solver_name == "gs") line["anchor"] = "stam03 order, 20 Gauss-Seidel sweeps";
-          if (solver_name == "jacobi") line["anchor"] = "40 Jacobi sweeps (taichi semantics)";
+          if (solver == PoissonSolver::gs) line["anchor"] = "stam03 order, 20 Gauss-Seidel sweeps";
+          if (solver == PoissonSolver::jacobi) line["anchor"] = "40 Jacobi sweeps (taichi semantics)";
           std::printf("%s\n", line.dump().c_str());
           std::fflush(stdout);
         }

@@ -14,7 +14,7 @@
 #include "formats/mesh/mesh_io.hpp"
 #include "trajectory_csv.hpp"
 
-namespace lmfsim_tool {
+namespace fest::lmfsim_tool {
 
 using namespace fest::lmfsim;
 
@@ -177,4 +177,4 @@ int cmd_export(const ExportOptions& opt) {
   return 0;
 }
 
-}  // namespace lmfsim_tool
+}  // namespace fest::lmfsim_tool
