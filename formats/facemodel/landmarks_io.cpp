@@ -72,8 +72,8 @@ double finite_number(const std::string& s, const char* what, const std::string& 
   return v;
 }
 
-std::vector<facefit::LandmarkEntry> read_pts(const std::vector<Line>& lines, const std::string& source, double origin) {
-  std::vector<facefit::LandmarkEntry> out;
+std::vector<face::LandmarkEntry> read_pts(const std::vector<Line>& lines, const std::string& source, double origin) {
+  std::vector<face::LandmarkEntry> out;
   std::size_t i = 0, declared = 0;
   bool have_n = false;
   for (; i < lines.size() && lines[i].fields[0] != "{"; ++i) {
@@ -89,7 +89,7 @@ std::vector<facefit::LandmarkEntry> read_pts(const std::vector<Line>& lines, con
   for (++i; i < lines.size() && lines[i].fields[0] != "}"; ++i) {
     const auto& f = lines[i].fields;
     if (f.size() != 2) throw bad_input("pts: expected 'x y' ({}:{})", source, lines[i].number);
-    facefit::LandmarkEntry e;
+    face::LandmarkEntry e;
     e.id = std::to_string(out.size() + 1);
     e.u = finite_number(f[0], "x", source, lines[i].number) - origin;
     e.v = finite_number(f[1], "y", source, lines[i].number) - origin;
@@ -103,7 +103,7 @@ std::vector<facefit::LandmarkEntry> read_pts(const std::vector<Line>& lines, con
 
 }  // namespace
 
-std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin) {
+std::vector<face::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin) {
   const auto lines = tokenize(text, true);
   if (lines.empty()) throw bad_input("landmark file is empty ({})", source);
   if (lines[0].fields[0] == "version:" || lines[0].fields[0] == "n_points:") return read_pts(lines, source, pts_origin);
@@ -113,13 +113,13 @@ std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const 
       (head.size() == 4 && head[3] != "sigma") || head.size() > 4)
     throw bad_input("landmark TSV needs a header line 'id u v [sigma]' or 'vertex u v [sigma]' ({}:{})", source, lines[0].number);
   const bool with_sigma = head.size() == 4;
-  std::vector<facefit::LandmarkEntry> out;
+  std::vector<face::LandmarkEntry> out;
   std::set<std::string> seen;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto& f = lines[i].fields;
     const std::size_t ln = lines[i].number;
     if (f.size() != head.size()) throw bad_input("expected {} columns, found {} ({}:{})", head.size(), f.size(), source, ln);
-    facefit::LandmarkEntry e;
+    face::LandmarkEntry e;
     e.line = ln;
     e.by_vertex = by_vertex;
     if (by_vertex) {
@@ -139,8 +139,8 @@ std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const 
   return out;
 }
 
-std::vector<facefit::NamedVertex> read_vertex_set(std::string_view text, const std::string& source) {
-  std::vector<facefit::NamedVertex> out;
+std::vector<face::NamedVertex> read_vertex_set(std::string_view text, const std::string& source) {
+  std::vector<face::NamedVertex> out;
   const auto lines = tokenize(text, true);
   // eos TOML subset: only the [landmark_mappings] section counts.
   bool toml = false;
@@ -175,13 +175,13 @@ std::vector<facefit::NamedVertex> read_vertex_set(std::string_view text, const s
   return out;
 }
 
-facefit::LandmarkMap read_landmark_map(std::string_view text, const std::string& source) {
-  facefit::LandmarkMap map;
+face::LandmarkMap read_landmark_map(std::string_view text, const std::string& source) {
+  face::LandmarkMap map;
   for (const auto& nv : read_vertex_set(text, source)) map[nv.name] = nv.vertex;
   return map;
 }
 
-std::string write_landmarks(const std::vector<facefit::LandmarkEntry>& entries) {
+std::string write_landmarks(const std::vector<face::LandmarkEntry>& entries) {
   bool sigma = false;
   bool by_vertex = !entries.empty() && entries.front().by_vertex;
   for (const auto& e : entries) sigma = sigma || e.sigma > 0;
@@ -196,7 +196,7 @@ std::string write_landmarks(const std::vector<facefit::LandmarkEntry>& entries) 
   return out;
 }
 
-std::string write_vertex_set(const std::vector<facefit::NamedVertex>& set) {
+std::string write_vertex_set(const std::vector<face::NamedVertex>& set) {
   std::string out = "name\tvertex\n";
   for (const auto& nv : set) out += nv.name + "\t" + std::to_string(nv.vertex) + "\n";
   return out;

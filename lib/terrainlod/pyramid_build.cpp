@@ -275,11 +275,11 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
                                 const TileSink& sink, const std::function<void(std::size_t, std::size_t)>& progress) {
   const PyramidPlan plan = plan_pyramid(grid.width, grid.height, dx, dy, params.pyramid);
   if (!(params.z_quantum > 0) || !std::isfinite(params.z_quantum))
-    throw usage_error("--z-quantum must be a positive number (got {})", params.z_quantum);
+    throw usage_error("finest height quantum must be a positive number (got {})", params.z_quantum);
   if (!(params.height_quantum > 0) || !(params.height_quantum <= 1))
-    throw usage_error("--height-quantum must be in (0, 1] (got {})", params.height_quantum);
+    throw usage_error("interior height quantum must be in (0, 1] of eps_l (got {})", params.height_quantum);
   if (!(params.leaf_error >= 0) || !std::isfinite(params.leaf_error))
-    throw usage_error("--leaf-error must be a finite number >= 0 (got {})", params.leaf_error);
+    throw usage_error("leaf tolerance must be a finite number >= 0 (got {})", params.leaf_error);
   const int texels = params.pyramid.texels == 0 ? params.pyramid.tile : params.pyramid.texels;
 
   Pyramid pyr;

@@ -62,6 +62,10 @@ facefit::Landmarks load_landmarks(const FitArgs& a, const std::string& path, con
   const auto entries = formats::read_landmarks(read_text(path), source, a.pts_origin);
   facefit::LandmarkMap map = model.landmarks;
   if (!a.map.empty()) map = read_map(a.map);
+  if (!a.skip_unmapped)  // the first unmapped id, named with the flag that would skip it
+    for (const auto& e : entries)
+      if (!e.by_vertex && map.find(e.id) == map.end())
+        throw bad_input("landmark id '{}' is not in the landmark map ({}:{}; --skip-unmapped ignores it)", e.id, source, e.line);
   std::size_t skipped = 0;
   auto lm = facefit::resolve_landmarks(entries, map, a.skip_unmapped, &skipped, source);
   if (skipped > 0) warn(fmt::format("{} landmark(s) not in the map were skipped ({})", skipped, source));
@@ -225,6 +229,8 @@ int run_fit(const FitArgs& a) {
   auto t0 = Clock::now();
   facefit::FitOptions opt = fit_options(a);
   facefit::Model full = load_model(a.model, a.fix_basis);
+  if (a.components > 0 && static_cast<std::size_t>(a.components) > full.components)
+    throw usage_error("--components {} is outside 1..{} (the model's components)", a.components, full.components);
   const facefit::Model model = a.components > 0 ? facefit::truncated(full, static_cast<std::size_t>(a.components)) : full;
   const double ms_load = ms_since(t0);
   if (!a.full_shape.empty()) return run_full_shape(a, model);

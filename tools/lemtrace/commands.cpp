@@ -2,6 +2,7 @@
 
 #include "commands.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -47,6 +48,20 @@ struct Loaded {
   double read_s = 0, build_s = 0, precompute_s = 0;
 };
 
+// --split none: the first cell that is not a tetrahedron is refused here, naming the flag
+// (build_tet_mesh refuses it too, in its own terms). A cell with a point id out of range
+// stops the scan: build_tet_mesh reports that first.
+void refuse_unsplit_cells(const RawCells& cells, std::size_t points) {
+  const auto n_points = static_cast<int64_t>(points);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    for (int64_t i = cells.offsets[c]; i < cells.offsets[c + 1]; ++i)
+      if (cells.ids[static_cast<std::size_t>(i)] < 0 || cells.ids[static_cast<std::size_t>(i)] >= n_points) return;
+    const int type = cells.types[c];
+    if (type != static_cast<int>(CellShape::tetra))
+      throw bad_input("cell {} is a VTK type {} cell and --split none accepts only tetrahedra", c, type);
+  }
+}
+
 Loaded load_grid(const GridArgs& a, bool force_all) {
   Loaded out;
   auto t0 = Clock::now();
@@ -62,6 +77,7 @@ Loaded load_grid(const GridArgs& a, bool force_all) {
     ds = Dataset();  // the grid's memory is not needed while the mesh is built
     BuildOptions bo;
     bo.split = a.split == "conforming";
+    if (!bo.split && out.source.points.size() <= INT32_MAX) refuse_unsplit_cells(out.source.cells, out.source.points.size());
     TetMesh mesh = build_tet_mesh(out.source.points, out.source.vectors, out.source.cells, bo, &out.report);
     out.source.points.clear();
     out.source.vectors.clear();
@@ -441,6 +457,9 @@ int run_gen(const GenArgs& a) {
       else throw usage_error("gen writes .vtu or .vtk, not '{}'", a.output);
     }
   }
+  const auto& kinds = gen_kinds();
+  if (std::find(kinds.begin(), kinds.end(), a.kind) == kinds.end())
+    throw usage_error("unknown grid kind '{}' (see lemtrace gen --help)", a.kind);
   GenOptions o;
   o.kind = a.kind;
   o.n = a.n;

@@ -13,6 +13,7 @@
 #include "core/file_io.hpp"
 #include "core/mesh.hpp"
 #include "dem_input.hpp"
+#include "pyramid_options.hpp"
 #include "formats/detect.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -110,8 +111,8 @@ int run_stats(const StatsArgs& args) {
   params.tile = args.tile;
   params.texels = args.texels;
   params.error_fraction = args.error_fraction;
-  // Parameter checks first (usage errors before reading anything); 2 x 2 is a stand-in size.
-  terrainlod::plan_pyramid(2, 2, 1, 1, params);
+  // Parameter checks first (usage errors before reading anything).
+  check_tile_options(params.tile, params.texels, params.error_fraction);
   const LoadedDem dem = load_dem(args.dem);
   const terrainlod::PyramidPlan plan = terrainlod::plan_pyramid(dem.grid.width, dem.grid.height, dem.dx, dem.dy, params);
   nlohmann::json levels = nlohmann::json::array();

@@ -34,6 +34,7 @@
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "pyramid_file.hpp"
+#include "pyramid_options.hpp"
 #include "render.hpp"
 #include "terrainlod/extract.hpp"
 #include "terrainlod/progressive_recode.hpp"
@@ -477,7 +478,7 @@ int run_build(const BuildArgs& args) {
   params.pyramid.tile = args.tile;
   params.pyramid.texels = args.texels;
   params.pyramid.error_fraction = args.error_fraction;
-  terrainlod::plan_pyramid(2, 2, 1, 1, params.pyramid);  // usage errors before reading
+  check_tile_options(args.tile, args.texels, args.error_fraction);  // usage errors before reading
   params.height_quantum = args.height_quantum;
   params.leaf_error = args.leaf_error;
   params.reference = args.reference;
@@ -528,6 +529,7 @@ int run_build(const BuildArgs& args) {
   const double read_ms = ms_since(t0);
   const bool integer = dem.raster.integer && args.dem.z_scale == 1 && std::floor(args.dem.z_offset) == args.dem.z_offset;
   params.z_quantum = args.z_quantum > 0 ? args.z_quantum : integer ? 1.0 : 0.01;
+  check_quantum_options(args.height_quantum, args.leaf_error);
 
   const auto t1 = Clock::now();
   Progress bar("build", 0, progress_wanted(args.progress));

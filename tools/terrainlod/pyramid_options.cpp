@@ -1,0 +1,27 @@
+#include "pyramid_options.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "terrainlod/pyramid_plan.hpp"
+
+namespace fest::terrainlod_tool {
+
+void check_tile_options(int tile, int texels, double error_fraction) {
+  if (!terrainlod::is_power_of_two(tile) || tile < 4 || tile > 4096)
+    throw usage_error("--tile must be a power of two between 4 and 4096 (got {})", tile);
+  const int t = texels == 0 ? tile : texels;
+  if (!terrainlod::is_power_of_two(t) || t > 65536) throw usage_error("--texels must be a power of two (got {})", t);
+  if (t < tile) throw usage_error("--texels ({}) must be at least --tile ({})", t, tile);
+  if (!(error_fraction > 0) || !std::isfinite(error_fraction))
+    throw usage_error("--error-fraction must be a positive number (got {})", error_fraction);
+}
+
+void check_quantum_options(double height_quantum, double leaf_error) {
+  if (!(height_quantum > 0) || !(height_quantum <= 1))
+    throw usage_error("--height-quantum must be in (0, 1] (got {})", height_quantum);
+  if (!(leaf_error >= 0) || !std::isfinite(leaf_error))
+    throw usage_error("--leaf-error must be a finite number >= 0 (got {})", leaf_error);
+}
+
+}  // namespace fest::terrainlod_tool
