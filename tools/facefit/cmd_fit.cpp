@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
 #include "facefit/fit.hpp"
@@ -24,11 +25,8 @@
 namespace fest::facefit_tool {
 
 using namespace fest;
-using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 facefit::FitOptions fit_options(const FitArgs& a) {
   facefit::FitOptions o;
@@ -226,7 +224,7 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
 }  // namespace
 
 int run_fit(const FitArgs& a) {
-  auto t0 = Clock::now();
+  auto t0 = SteadyClock::now();
   facefit::FitOptions opt = fit_options(a);
   facefit::Model full = load_model(a.model, a.fix_basis);
   if (a.components > 0 && static_cast<std::size_t>(a.components) > full.components)
@@ -249,7 +247,7 @@ int run_fit(const FitArgs& a) {
     if (model.dims != 3 || model.triangles.empty()) throw usage_error("--texture needs a 3-D model with triangles");
     textured = textured_mesh(a.texture, model, r, shape_out, &visible);
   }
-  t0 = Clock::now();
+  t0 = SteadyClock::now();
   if (!a.coeffs.empty()) write_output(a.coeffs, coeffs_tsv(r, model));
   if (!a.uncertainty.empty()) {
     std::string text = "vertex\tsigma\n";

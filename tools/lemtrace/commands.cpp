@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -28,9 +29,6 @@
 
 namespace fest::lemtrace_tool {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Peak resident memory of this process (Linux), in MB; 0 where unknown.
 double peak_memory_mb() {
@@ -64,14 +62,14 @@ void refuse_unsplit_cells(const RawCells& cells, std::size_t points) {
 
 Loaded load_grid(const GridArgs& a, bool force_all) {
   Loaded out;
-  auto t0 = Clock::now();
+  auto t0 = SteadyClock::now();
   const formats::Input in = formats::load_input(a.grid);
   if (formats::kind_of(in.format) != formats::Kind::dataset)
     throw bad_input("{}", with_location(fmt::format("the grid is a {} file, not a VTK dataset",
                                                     formats::format_name(in.format)), in.name));
   Dataset ds = formats::parse(in, formats::read_dataset);
   out.read_s = seconds_since(t0);
-  t0 = Clock::now();
+  t0 = SteadyClock::now();
   try {
     out.source = grid_from_dataset(ds, a.vectors);
     ds = Dataset();  // the grid's memory is not needed while the mesh is built
@@ -89,7 +87,7 @@ Loaded load_grid(const GridArgs& a, bool force_all) {
     Precompute mode = Precompute::lazy;
     if (a.precompute == "all" || force_all) mode = Precompute::all;
     if (a.precompute == "none" && !force_all) mode = Precompute::none;
-    t0 = Clock::now();
+    t0 = SteadyClock::now();
     out.grid = std::make_unique<FieldGrid>(std::move(mesh), cp, mode, resolve_threads(a.threads));
     out.precompute_s = seconds_since(t0);
   } catch (const Error& e) {
@@ -235,14 +233,14 @@ int run_trace(const TraceArgs& a) {
   const FieldGrid& grid = *loaded.grid;
   const TraceOptions o = trace_options(a);
   const int threads = resolve_threads(a.grid.threads);
-  auto t0 = Clock::now();
+  auto t0 = SteadyClock::now();
   grid.locator();
   const double locator_s = seconds_since(t0);
   // CSV and JSON stream: each chunk of lines is written as it is finished, in seed order
   // (line_stream.hpp). VTK outputs go through a dataset, built from all the lines.
   OutputFile out(a.output);
   LineTotals totals;
-  t0 = Clock::now();
+  t0 = SteadyClock::now();
   if (to == "csv" || to == "json") {
     totals = stream_lines(grid, StreamSeeds{&seeds.x, &seeds.t0, &seeds.id}, o, threads,
                           to == "csv" ? TextFormat::csv : TextFormat::json, out);
@@ -369,7 +367,7 @@ int run_bench(const BenchArgs& a) {
     row.seconds = std::numeric_limits<double>::infinity();
     std::vector<Polyline> lines(seeds.x.size());
     for (int rep = 0; rep < a.repeat; ++rep) {
-      auto t0 = Clock::now();
+      auto t0 = SteadyClock::now();
       for (std::size_t i = 0; i < seeds.x.size(); ++i) lines[i] = run_one(grid, i);
       row.seconds = std::min(row.seconds, seconds_since(t0));
     }

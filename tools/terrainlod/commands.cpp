@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/mesh.hpp"
 #include "dem_input.hpp"
@@ -22,9 +23,6 @@
 
 namespace fest::terrainlod_tool {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 // Grid units -> world coordinates of the DEM (x east, y north, z up).
 Mesh world_mesh(const terrainlod::Tin& tin, const LoadedDem& dem) {
@@ -65,11 +63,11 @@ int run_simplify(const SimplifyArgs& args) {
   if (formats::kind_of(out.format) != formats::Kind::mesh)
     throw usage_error("output must be a mesh format (ply, obj, off, stl, drc), not {}", formats::format_name(out.format));
 
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   const LoadedDem dem = load_dem(args.dem);
   const double read_ms = ms_since(t0);
 
-  const auto t1 = Clock::now();
+  const auto t1 = SteadyClock::now();
   terrainlod::SimplifyOptions options;
   options.max_error = args.max_error;
   options.diagonal = args.dem.diagonal;

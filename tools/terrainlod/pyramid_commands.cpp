@@ -24,6 +24,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/mesh.hpp"
 #include "core/progress.hpp"
@@ -46,9 +47,6 @@
 
 namespace fest::terrainlod_tool {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 formats::OutputFormat mesh_output(const std::string& path, const std::string& to) {
   formats::OutputFormat out = !to.empty() ? formats::output_format_from_name(to)
@@ -332,7 +330,7 @@ struct Extraction {
 
 Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
   Extraction x;
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
     x.examined.insert(id);
     const auto [z_min, z_max] = pyr.z_range(id);
@@ -341,7 +339,7 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
     return std::array<double, 2>{z_min - pad, z_max + pad};
   });
   x.select_ms = ms_since(t0);
-  const auto t1 = Clock::now();
+  const auto t1 = SteadyClock::now();
   for (const auto& s : x.selection.tiles) {
     x.parts.emplace_back(s.id, terrainlod::triangulate(pyr.tile(s.id), s.mask, pyr.geometry(s.id.level)));
     x.triangles += x.parts.back().second.triangles.size();
@@ -487,7 +485,7 @@ int run_build(const BuildArgs& args) {
   params.threads = resolve_threads(args.threads);
   if (args.z_quantum < 0 || !std::isfinite(args.z_quantum)) throw usage_error("--z-quantum must be positive (got {})", args.z_quantum);
 
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   // The texture is read before the DEM's work starts, so a bad image costs nothing.
   std::optional<Image> texture_image;
   std::vector<Image> mips;
@@ -531,7 +529,7 @@ int run_build(const BuildArgs& args) {
   params.z_quantum = args.z_quantum > 0 ? args.z_quantum : integer ? 1.0 : 0.01;
   check_quantum_options(args.height_quantum, args.leaf_error);
 
-  const auto t1 = Clock::now();
+  const auto t1 = SteadyClock::now();
   Progress bar("build", 0, progress_wanted(args.progress));
   // Finished tiles go to one temporary spill file per level as they come (leaves first);
   // the archive is then the head and the levels' blobs in transmission order (root first),
@@ -598,7 +596,7 @@ int run_build(const BuildArgs& args) {
                              {"tool", "terrainlod 1"}};
   // Texture tiles (spec 2.1, 2.9): the image (or a hillshade of the DEM) resampled to the
   // leaf canvas, box-filtered level by level, cut into T x T tiles.
-  const auto t3 = Clock::now();
+  const auto t3 = SteadyClock::now();
   std::vector<std::string> textures;
   std::size_t texture_bytes = 0;
   if (!args.texture.empty() || !mips.empty()) {
@@ -618,7 +616,7 @@ int run_build(const BuildArgs& args) {
   }
   const double texture_ms = ms_since(t3);
   for (std::size_t i = 0; i < textures.size(); ++i) entries[i].texture_length = static_cast<std::uint32_t>(textures[i].size());
-  const auto t2 = Clock::now();
+  const auto t2 = SteadyClock::now();
   std::uint64_t file_bytes = 0;
   try {
     // The spilled blobs in index order (the levels' files one after the other), each
@@ -947,7 +945,7 @@ int run_extract(const ExtractArgs& args) {
   PyramidFile pyr = open_pyramid(args.pyramid);
   if (!args.atlas.empty() && !pyr.textured()) throw usage_error("--atlas needs a pyramid with textures (build --texture)");
   const Extraction x = extract_view(pyr, cam);
-  const auto t2 = Clock::now();
+  const auto t2 = SteadyClock::now();
   const Extent extent = extent_of(pyr, args.clip);
   const bool obj_file = out.format == formats::Format::obj && !is_stdio(args.output);
   std::optional<TexturedMesh> tm;
