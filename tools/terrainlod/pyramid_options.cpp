@@ -1,7 +1,10 @@
 #include "pyramid_options.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
+#include "commands.hpp"
 #include "core/error.hpp"
 #include "terrainlod/pyramid_plan.hpp"
 
@@ -22,6 +25,15 @@ void check_quantum_options(double height_quantum, double leaf_error) {
     throw usage_error("--height-quantum must be in (0, 1] (got {})", height_quantum);
   if (!(leaf_error >= 0) || !std::isfinite(leaf_error))
     throw usage_error("--leaf-error must be a finite number >= 0 (got {})", leaf_error);
+}
+
+terrainlod::TileId parse_tile(const std::string& s) {
+  terrainlod::TileId id;
+  char a = 0, b = 0;
+  std::istringstream in(s);
+  if (!(in >> id.level >> a >> id.x >> b >> id.y) || a != '/' || b != '/' || !in.eof() || id.level < 0 || id.x < 0 || id.y < 0)
+    throw usage_error("--tile expects L/X/Y (got '{}')", s);
+  return id;
 }
 
 }  // namespace fest::terrainlod_tool
