@@ -36,11 +36,7 @@ int run_simplify(const SimplifyArgs& args) {
   if (!(args.max_error >= 0) || !std::isfinite(args.max_error))
     throw usage_error("--max-error must be a finite number >= 0 (got {})", args.max_error);
   // The output format is settled before any work, so a bad -o/--to costs nothing.
-  formats::OutputFormat out = !args.to.empty() ? formats::output_format_from_name(args.to)
-                              : is_stdio(args.output) ? formats::OutputFormat{formats::Format::ply, false}
-                                                      : formats::output_format_from_path(args.output);
-  if (formats::kind_of(out.format) != formats::Kind::mesh)
-    throw usage_error("output must be a mesh format (ply, obj, off, stl, drc), not {}", formats::format_name(out.format));
+  const formats::OutputFormat out = mesh_output(args.output, args.to);
 
   const auto t0 = SteadyClock::now();
   const LoadedDem dem = load_dem(args.dem);

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/file_io.hpp"
 #include "terrainlod/pyramid_plan.hpp"
 
 namespace fest::terrainlod_tool {
@@ -34,6 +35,15 @@ terrainlod::TileId parse_tile(const std::string& s) {
   if (!(in >> id.level >> a >> id.x >> b >> id.y) || a != '/' || b != '/' || !in.eof() || id.level < 0 || id.x < 0 || id.y < 0)
     throw usage_error("--tile expects L/X/Y (got '{}')", s);
   return id;
+}
+
+formats::OutputFormat mesh_output(const std::string& path, const std::optional<formats::OutputFormat>& to) {
+  formats::OutputFormat out = to ? *to
+                              : is_stdio(path) ? formats::OutputFormat{formats::Format::ply, false}
+                                               : formats::output_format_from_path(path);
+  if (formats::kind_of(out.format) != formats::Kind::mesh)
+    throw usage_error("output must be a mesh format (ply, obj, off, stl, drc), not {}", formats::format_name(out.format));
+  return out;
 }
 
 }  // namespace fest::terrainlod_tool

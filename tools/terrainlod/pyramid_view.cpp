@@ -25,15 +25,6 @@ struct VertexKeyHash {
 
 }  // namespace
 
-formats::OutputFormat mesh_output(const std::string& path, const std::string& to) {
-  formats::OutputFormat out = !to.empty() ? formats::output_format_from_name(to)
-                              : is_stdio(path) ? formats::OutputFormat{formats::Format::ply, false}
-                                               : formats::output_format_from_path(path);
-  if (formats::kind_of(out.format) != formats::Kind::mesh)
-    throw usage_error("output must be a mesh format (ply, obj, off, stl, drc), not {}", formats::format_name(out.format));
-  return out;
-}
-
 // Level colours for the meshes and renderings (coarse = blue ... fine = red).
 OpenMesh::Vec3uc level_colour(int level, int levels) {
   static const unsigned char palette[8][3] = {{49, 54, 149},  {69, 117, 180}, {116, 173, 209}, {171, 217, 233},

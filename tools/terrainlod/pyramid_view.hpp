@@ -20,9 +20,6 @@
 
 namespace fest::terrainlod_tool {
 
-// -o and --to -> a mesh format (usage error for anything but a mesh format).
-formats::OutputFormat mesh_output(const std::string& path, const std::string& to);
-
 inline PyramidFile open_pyramid(const std::string& path) { return PyramidFile::open(path); }
 
 // Level colours for the meshes and renderings (coarse = blue ... fine = red).
