@@ -8,43 +8,13 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/field_lines.hpp"
 
 namespace fest::formats {
 
 namespace {
 
-struct Line {
-  std::size_t number;
-  std::vector<std::string> fields;
-};
-
-// Splits into lines of whitespace-separated fields; drops comments and blank lines.
-std::vector<Line> tokenize(std::string_view text, bool hash_comments) {
-  std::vector<Line> lines;
-  std::size_t number = 0, pos = 0;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    pos = end + 1;
-    ++number;
-    if (hash_comments) {
-      const auto hash = line.find('#');
-      if (hash != std::string_view::npos) line = line.substr(0, hash);
-    }
-    Line l{number, {}};
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-      std::size_t j = i;
-      while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
-      if (j > i) l.fields.emplace_back(line.substr(i, j - i));
-      i = j;
-    }
-    if (!l.fields.empty()) lines.push_back(std::move(l));
-  }
-  return lines;
-}
+using Line = FieldLine;
 
 bool parse_double(const std::string& s, double& out) {
   errno = 0;
@@ -104,7 +74,7 @@ std::vector<face::LandmarkEntry> read_pts(const std::vector<Line>& lines, const 
 }  // namespace
 
 std::vector<face::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin) {
-  const auto lines = tokenize(text, true);
+  const auto lines = field_lines(text, true);
   if (lines.empty()) throw bad_input("landmark file is empty ({})", source);
   if (lines[0].fields[0] == "version:" || lines[0].fields[0] == "n_points:") return read_pts(lines, source, pts_origin);
   const auto& head = lines[0].fields;
@@ -141,7 +111,7 @@ std::vector<face::LandmarkEntry> read_landmarks(std::string_view text, const std
 
 std::vector<face::NamedVertex> read_vertex_set(std::string_view text, const std::string& source) {
   std::vector<face::NamedVertex> out;
-  const auto lines = tokenize(text, true);
+  const auto lines = field_lines(text, true);
   // eos TOML subset: only the [landmark_mappings] section counts.
   bool toml = false;
   for (const auto& l : lines)

@@ -144,6 +144,25 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
   Eigen::Vector4d carried = Eigen::Vector4d::Zero();
   bool have_beta = false;
   int hops = 0, stuck = 0;
+  // The line has reached the exit point x at time t through face e.face: the point is
+  // recorded, then the line ends (length spent, the domain's boundary) or enters the
+  // neighbour with its entry coordinates carried over. False when the line ends.
+  auto leave_through = [&](const ExitResult& e, const CellRecord& rec, const Tet& tet) {
+    if (e.tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
+    if (length > o.max_length) {
+      line.reason = Reason::out_of_length;
+      return false;
+    }
+    const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
+    if (next < 0) {
+      line.reason = Reason::out_of_domain;
+      return false;
+    }
+    carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
+    have_beta = true;
+    cell = next;
+    return true;
+  };
   for (;;) {
     if (line.cells >= o.max_steps) {
       line.reason = Reason::out_of_steps;
@@ -187,18 +206,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
         if (limit_length) length += (e_x - x).norm();
         x = e_x;
         t += dir * e.tau;
-        if (e.tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
-        if (length > o.max_length) {
-          line.reason = Reason::out_of_length;
-          return;
-        }
-        const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
-        if (next < 0) {
-          line.reason = Reason::out_of_domain;
-          return;
-        }
-        carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
-        cell = next;
+        if (!leave_through(e, rec, tet)) return;
         continue;
       }
     }
@@ -310,19 +318,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     length += moved;
     x = e_x;
     t += dir * tau;
-    if (tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
-    if (length > o.max_length) {
-      line.reason = Reason::out_of_length;
-      return;
-    }
-    const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
-    if (next < 0) {
-      line.reason = Reason::out_of_domain;
-      return;
-    }
-    carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
-    have_beta = true;
-    cell = next;
+    if (!leave_through(e, rec, tet)) return;
   }
 }
 

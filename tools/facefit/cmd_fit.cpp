@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "core/error.hpp"
+#include "core/field_lines.hpp"
 #include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
@@ -171,26 +172,9 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
   std::string dir;
   if (const auto slash = a.batch.rfind('/'); slash != std::string::npos) dir = a.batch.substr(0, slash + 1);
   std::vector<std::pair<std::string, std::string>> jobs;
-  std::size_t pos = 0, line = 0;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string::npos) end = text.size();
-    std::string l = text.substr(pos, end - pos);
-    pos = end + 1;
-    ++line;
-    const auto hash = l.find('#');
-    if (hash != std::string::npos) l.resize(hash);
-    std::vector<std::string> f;
-    std::size_t i = 0;
-    while (i < l.size()) {
-      while (i < l.size() && std::isspace(static_cast<unsigned char>(l[i]))) ++i;
-      std::size_t j = i;
-      while (j < l.size() && !std::isspace(static_cast<unsigned char>(l[j]))) ++j;
-      if (j > i) f.push_back(l.substr(i, j - i));
-      i = j;
-    }
-    if (f.empty()) continue;
-    if (f.size() != 2) throw bad_input("batch list: expected 'landmarks output' ({}:{})", a.batch, line);
+  for (const FieldLine& l : field_lines(text, true)) {
+    const auto& f = l.fields;
+    if (f.size() != 2) throw bad_input("batch list: expected 'landmarks output' ({}:{})", a.batch, l.number);
     auto rel = [&](const std::string& p) { return p[0] == '/' ? p : dir + p; };
     jobs.emplace_back(rel(f[0]), rel(f[1]));
   }
