@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "common.hpp"
+#include "face_files.hpp"
 #include "core/error.hpp"
 #include "core/field_lines.hpp"
 #include "core/stopwatch.hpp"

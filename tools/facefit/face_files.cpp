@@ -1,4 +1,4 @@
-#include "common.hpp"
+#include "face_files.hpp"
 
 #include <cstdlib>
 

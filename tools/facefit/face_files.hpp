@@ -1,5 +1,5 @@
 #pragma once
-// Wiring shared by facefit's subcommands: model loading (path or $FACEFIT_MODEL),
+// The files facefit's subcommands read and write: model loading (path or $FACEFIT_MODEL),
 // shapes <-> meshes, mesh output, small text files.
 
 #include <string>
