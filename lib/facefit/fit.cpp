@@ -3,9 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
-#include <thread>
 #include <unordered_set>
 
+#include "core/parallel_for.hpp"
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
 #include "facefit/ridge.hpp"
@@ -387,14 +387,7 @@ std::vector<double> vertex_uncertainty(const Model& model, const FitResult& fit,
   };
   const std::size_t chunk = 4096;
   const std::size_t chunks = (p + chunk - 1) / chunk;
-  const int nthreads = std::max(1, threads);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < nthreads; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t c = static_cast<std::size_t>(t); c < chunks; c += static_cast<std::size_t>(nthreads))
-        work(c * chunk, std::min(p, (c + 1) * chunk));
-    });
-  for (auto& th : pool) th.join();
+  parallel_for(chunks, threads, [&](std::size_t c) { work(c * chunk, std::min(p, (c + 1) * chunk)); });
   return out;
 }
 

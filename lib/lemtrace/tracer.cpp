@@ -1,11 +1,11 @@
 #include "lemtrace/tracer.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <thread>
+
+#include "core/parallel_for.hpp"
 
 namespace fest::lemtrace {
 
@@ -522,16 +522,8 @@ std::vector<Polyline> trace_all(const FieldGrid& grid, const std::vector<Vec3>& 
                                 const TraceOptions& options, int threads) {
   std::vector<Polyline> lines(seeds.size());
   grid.locator();
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < seeds.size();)
-      lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options);
-  };
-  const int n = std::max(1, std::min<int>(threads, static_cast<int>(seeds.size())));
-  std::vector<std::thread> pool;
-  for (int w = 1; w < n; ++w) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  parallel_for(seeds.size(), threads,
+               [&](std::size_t i) { lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options); });
   return lines;
 }
 

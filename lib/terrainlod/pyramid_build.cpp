@@ -6,7 +6,6 @@
 #include <limits>
 #include <optional>
 #include <set>
-#include <thread>
 
 #include "core/error.hpp"
 #include "core/parallel_for.hpp"
@@ -84,25 +83,19 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
   const int tiles = lv.tiles_x * lv.tiles_y;
   // Tiles are checked in parallel; the answer (all fit?) does not depend on the order.
-  std::atomic<int> next{0};
   std::atomic<bool> fits{true};
-  auto worker = [&] {
-    for (int k; fits.load() && (k = next.fetch_add(1)) < tiles;) {
-      const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
-      const StartMesh s = lattice_mesh(ref, padded, tx * lv.cells, ty * lv.cells, n, step);
-      const TileFrame f = frame_of(lv, levels, tx, ty);
-      for (const auto& t : s.tin.triangles)
-        if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
-            lv.limit) {
-          fits.store(false);
-          return;
-        }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min(threads, tiles); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  parallel_for(static_cast<std::size_t>(tiles), threads, [&](std::size_t j) {
+    if (!fits.load()) return;  // one misfit settles it: the rest is skipped
+    const int k = static_cast<int>(j);
+    const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
+    const StartMesh s = lattice_mesh(ref, padded, tx * lv.cells, ty * lv.cells, n, step);
+    const TileFrame f = frame_of(lv, levels, tx, ty);
+    for (const auto& t : s.tin.triangles)
+      if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) > lv.limit) {
+        fits.store(false);
+        return;
+      }
+  });
   return fits.load();
 }
 

@@ -3,18 +3,15 @@
 
 #include "commands.hpp"
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <map>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/parallel_for.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/progress.hpp"
@@ -121,27 +118,11 @@ std::vector<std::string> texture_tiles(const terrainlod::Pyramid& pyr, const std
         if (it != at.end()) jobs.push_back({it->first, it->second});
       }
     // Encoding is independent per tile: spread it over the build's threads.
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto work = [&] {
-      try {
-        for (std::size_t j; (j = next.fetch_add(1)) < jobs.size();) {
-          Image tile;
-          tile.pixels = terrainlod::tile_texture(canvas, l, jobs[j].first.x, jobs[j].first.y, texels);
-          out[jobs[j].second] = formats::write_image(tile, format, opt);
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = jobs.size();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < resolve_threads(args.threads); ++t) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallel_for(jobs.size(), resolve_threads(args.threads), [&](std::size_t j) {
+      Image tile;
+      tile.pixels = terrainlod::tile_texture(canvas, l, jobs[j].first.x, jobs[j].first.y, texels);
+      out[jobs[j].second] = formats::write_image(tile, format, opt);
+    });
   }
   return out;
 }
