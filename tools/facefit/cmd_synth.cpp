@@ -40,7 +40,7 @@ int run_synth(const SynthArgs& a) {
   for (int i = 0; i < a.faces; ++i) {
     const auto face = facefit::draw_face(rng, a.detail);
     const std::string name = fmt::format("face{:03d}.ply", i + 1);
-    write_mesh_to(shape_to_mesh(facefit::face_shape(face, a.resolution), 3, tris), a.output + "/" + name, "");
+    write_mesh_to(shape_to_mesh(facefit::face_shape(face, a.resolution), 3, tris), a.output + "/" + name, std::nullopt);
     (i < a.train ? train : test) += name + "\n";
   }
   write_output(a.output + "/train.txt", train);

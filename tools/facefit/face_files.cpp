@@ -63,28 +63,37 @@ Eigen::VectorXd read_shape(const std::string& path, std::vector<std::array<std::
   return v;
 }
 
-void write_mesh_to(const Mesh& mesh, const std::string& path, const std::string& to) {
+MeshOutput parse_mesh_output(const std::string& word) {
+  MeshOutput m;
+  m.format = formats::output_format_from_name(word == "plya" ? "ply" : word);
+  if (formats::kind_of(m.format.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", word);
+  m.ascii = word == "plya";
+  m.direct_ply = word == "ply" || word == ".ply";
+  return m;
+}
+
+void write_mesh_to(const Mesh& mesh, const std::string& path, const std::optional<MeshOutput>& to) {
   formats::OutputFormat out{formats::Format::ply, false};
-  if (!to.empty()) {
-    out = formats::output_format_from_name(to == "plya" ? "ply" : to);
+  if (to) {
+    out = to->format;
   } else if (!is_stdio(path)) {
     out = formats::output_format_from_path(path);
   }
-  if (formats::kind_of(out.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", to);
+  if (formats::kind_of(out.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", "");
   formats::MeshWriteOptions w;
-  w.ascii = to == "plya";
+  w.ascii = to && to->ascii;
   formats::store_output(path, formats::write_mesh(mesh, out.format, w), out.gzip);
 }
 
-bool writes_binary_ply(const std::string& path, const std::string& to) {
-  if (!to.empty()) return to == "ply" || to == ".ply";
+bool writes_binary_ply(const std::string& path, const std::optional<MeshOutput>& to) {
+  if (to) return to->direct_ply;
   if (is_stdio(path)) return true;
   const formats::OutputFormat out = formats::output_format_from_path(path);
   return out.format == formats::Format::ply && !out.gzip;
 }
 
 void write_shape(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                 const std::string& path, const std::string& to) {
+                 const std::string& path, const std::optional<MeshOutput>& to) {
   if (!writes_binary_ply(path, to)) return write_mesh_to(shape_to_mesh(shape, dims, triangles), path, to);
   const std::size_t p = static_cast<std::size_t>(shape.size() / dims);
   std::vector<float> xyz(3 * p, 0.0f);
