@@ -147,6 +147,19 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
   // The line has reached the exit point x at time t through face e.face: the point is
   // recorded, then the line ends (length spent, the domain's boundary) or enters the
   // neighbour with its entry coordinates carried over. False when the line ends.
+  // The speed test at a cell's entry point (squared speed): false when the line ends
+  // there, on a non-finite field or at rest (a critical point inside, else stagnation).
+  auto keeps_moving = [&](double speed2, const CellRecord& rec) {
+    if (!std::isfinite(speed2)) {
+      line.reason = Reason::unexpected_value;
+      return false;
+    }
+    if (speed2 <= v_stop * v_stop) {
+      line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
+      return false;
+    }
+    return true;
+  };
   auto leave_through = [&](const ExitResult& e, const CellRecord& rec, const Tet& tet) {
     if (e.tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
     if (length > o.max_length) {
@@ -176,15 +189,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     // the general path below, which decides the same way.
     if (have_beta && rec.bary_frame && try_fast) {
       if (rec.speed_log2 < stop_log2) {
-        const double speed2 = tet_field(mesh, tet, carried).squaredNorm();
-        if (!std::isfinite(speed2)) {
-          line.reason = Reason::unexpected_value;
-          return;
-        }
-        if (speed2 <= v_stop * v_stop) {
-          line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
-          return;
-        }
+        if (!keeps_moving(tet_field(mesh, tet, carried).squaredNorm(), rec)) return;
       }
       ExitResult e;
       if (predicted_exit_local(rec, carried, dir, e) && !(std::abs(t - t0) + e.tau > o.max_time) &&
@@ -226,14 +231,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     // The interpolated (world) field: the speed test is the same in both frames.
     const Vec3 v = local ? tet_field(mesh, tet, beta) : g.interpolate(beta);
     const double speed2 = v.squaredNorm();
-    if (!std::isfinite(speed2)) {
-      line.reason = Reason::unexpected_value;
-      return;
-    }
-    if (speed2 <= v_stop * v_stop) {
-      line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
-      return;
-    }
+    if (!keeps_moving(speed2, rec)) return;
     // A precomputed normal cell first tries the predicted exit in eigen coordinates
     // (no CellPath, no geometry); everything else, and whatever it declines, goes
     // through the general search below (edge/vertex hops included).
