@@ -149,7 +149,7 @@ int run_build(const BuildArgs& args) {
   // The texture is read before the DEM's work starts, so a bad image costs nothing.
   std::optional<Image> texture_image;
   std::vector<Image> mips;
-  if (!args.texture.empty() && args.texture != "hillshade") texture_image = read_texture(args.texture);
+  if (!args.texture.empty()) texture_image = read_texture(args.texture);
   if (!args.texture_mip.empty()) {
     mips = read_texture_mip(args.texture_mip);
     texture_image = mips[0];
@@ -259,8 +259,8 @@ int run_build(const BuildArgs& args) {
   const auto t3 = SteadyClock::now();
   std::vector<std::string> textures;
   std::size_t texture_bytes = 0;
-  if (!args.texture.empty() || !mips.empty()) {
-    const bool hillshade = args.texture == "hillshade";
+  if (args.hillshade || !args.texture.empty() || !mips.empty()) {
+    const bool hillshade = args.hillshade;
     const cv::Mat pixels = hillshade ? terrainlod::hillshade_image(dem.grid, dem.dx, dem.dy) : texture_image->pixels;
     textures = texture_tiles(pyr, entries, pixels, hillshade || !placement ? terrainlod::ImagePlacement::samples : *placement, georeferenced,
                              args, texels, dem, mips);

@@ -71,7 +71,8 @@ struct BuildArgs {
   int threads = 0;
   std::string report;
   bool progress = false;
-  std::string texture;               // image file, "hillshade", or empty: no textures
+  std::string texture;               // image file, or empty: no image texture
+  bool hillshade = false;            // --texture hillshade: textures shaded from the DEM
   std::string texture_mip;           // or a prefiltered pyramid PREFIX_<k>.png (resample mip build)
   TextureFormat texture_format = TextureFormat::png;  // png (lossless) or jpeg
   int texture_quality = 90;          // JPEG quality

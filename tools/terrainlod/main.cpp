@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
   add_dem_options(b, build.dem);
   b->add_option("-o,--output", build.output, "PYRAMID.tlp archive, or a directory (pyramid.json + L/X/Y.tlt + L/X/Y.png); written atomically")->required();
-  auto* tex_opt = b->add_option("--texture", build.texture,
+  std::string texture;  // an image file or the word hillshade
+  auto* tex_opt = b->add_option("--texture", texture,
                 "Texture image covering the DEM (its edges on the outer samples, or one pixel per sample), or 'hillshade'");
   b->add_option("--texture-mip", build.texture_mip,
                 "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
@@ -146,7 +147,11 @@ int main(int argc, char** argv) {
       simplify.to = format(simplify_to);
       return run_simplify(simplify);
     }
-    if (b->parsed()) return run_build(build);
+    if (b->parsed()) {
+      build.hillshade = texture == "hillshade";
+      if (!build.hillshade) build.texture = texture;
+      return run_build(build);
+    }
     if (d->parsed()) {
       decode.tile = parse_tile(decode_tile);
       decode.to = format(decode_to);
