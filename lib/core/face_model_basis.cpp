@@ -76,7 +76,7 @@ CheckResult check_model(Model& model, bool fix_basis) {
       first_bad = i;
     }
   if (bad_norm && !fix_basis)
-    throw bad_input("model: basis column {} has norm {:.6g}, not 1 (renormalising was not asked for)", first_bad,
+    throw bad_input("model: basis column {} has norm {:.6g}, not 1", first_bad,
                     norms[first_bad]);
   if (!descending || bad_norm) {
     std::vector<std::size_t> order(model.components);

@@ -43,7 +43,7 @@ int run_convert(const ConvertArgs& a) {
     for (auto& v : m.mean) v *= a.scale;
     for (auto& s : m.sigma) s *= a.scale;
   }
-  const auto fixed = facefit::check_model(m, a.fix_basis);
+  const auto fixed = check_model_naming_flags(m, a.fix_basis);
   if (fixed.reordered) warn("sigma was not descending: components reordered");
   if (fixed.renormalised) warn("basis columns renormalised (--fix-basis)");
   attach_landmarks(m, a.landmarks, a.mask);

@@ -23,11 +23,53 @@ std::string model_path(const std::string& option) {
   throw usage_error("no model: give -m MODEL.mmb or set FACEFIT_MODEL");
 }
 
+namespace {
+
+// The library refuses a basis whose columns are not unit length in its own terms; when
+// renormalising would have accepted the model, the message also names the flag that does.
+[[noreturn]] void rethrow_with_fix_basis_hint(const Error& e, bool fix_would_pass) {
+  if (!fix_would_pass) throw e;
+  throw Error(e.status(), std::string(e.what()) + "; --fix-basis renormalises it");
+}
+
+}  // namespace
+
+facefit::CheckResult check_model_naming_flags(facefit::Model& m, bool fix_basis) {
+  try {
+    return facefit::check_model(m, fix_basis);
+  } catch (const Error& e) {
+    if (fix_basis || e.status() != Status::bad_input) throw;
+    facefit::Model copy = m;  // renormalising gives the copy its own basis storage
+    bool fix_would_pass = true;
+    try {
+      facefit::check_model(copy, true);
+    } catch (const Error&) {
+      fix_would_pass = false;
+    }
+    rethrow_with_fix_basis_hint(e, fix_would_pass);
+  }
+}
+
 facefit::Model load_model(const std::string& option, bool fix_basis) {
   std::string warnings;
   formats::MmbReadOptions o;
   o.fix_basis = fix_basis;
-  facefit::Model m = formats::read_mmb(model_path(option), o, &warnings);
+  const std::string path = model_path(option);
+  facefit::Model m;
+  try {
+    m = formats::read_mmb(path, o, &warnings);
+  } catch (const Error& e) {
+    if (fix_basis || e.status() != Status::bad_input) throw;
+    bool fix_would_pass = true;
+    try {
+      formats::MmbReadOptions fix;
+      fix.fix_basis = true;
+      formats::read_mmb(path, fix);
+    } catch (const Error&) {
+      fix_would_pass = false;
+    }
+    rethrow_with_fix_basis_hint(e, fix_would_pass);
+  }
   if (!warnings.empty()) warn(warnings.substr(0, warnings.size() - 2));
   return m;
 }

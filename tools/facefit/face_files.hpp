@@ -20,7 +20,10 @@ void warn(const std::string& message);
 
 // -m FILE, else $FACEFIT_MODEL; usage error when neither is given.
 std::string model_path(const std::string& option);
+// Bad input naming --fix-basis where renormalising the basis would accept the model.
 fest::facefit::Model load_model(const std::string& option, bool fix_basis = false);
+// facefit::check_model, its refusal naming --fix-basis where that would accept the model.
+fest::facefit::CheckResult check_model_naming_flags(fest::facefit::Model& m, bool fix_basis);
 
 // A shape vector (interleaved xyz) with the model's triangles as a mesh.
 fest::Mesh shape_to_mesh(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles);
