@@ -26,7 +26,7 @@ int log2_int(int n) {
 std::int64_t finest_code(double z, double delta_min) { return std::llround(z / delta_min); }
 
 // The lattice mesh of a tile: (n+1)^2 DEM samples `step` cells apart, each lattice cell
-// split by its shorter diagonal (spec 2.3 on the tile's lattice), border points locked.
+// split by its shorter diagonal (docs/terrainlod.md §1, on the tile's lattice), border points locked.
 // On the DEM's own grid (step 1) the cells take the reference surface's diagonals, whatever
 // --diagonal chose: that mesh is the reference itself, exact at the leaves' limit 0.
 struct StartMesh {

@@ -1,4 +1,4 @@
-// facefit fit: landmarks -> complete mesh (spec sections 2.4-2.7, 4).
+// facefit fit: landmarks -> complete mesh (docs/facefit.md §2-§4).
 
 #include <chrono>
 #include <algorithm>
@@ -111,7 +111,7 @@ std::string coeffs_tsv(const facefit::FitResult& r, const facefit::Model& model)
   return out;
 }
 
-// Texture transfer (spec 2.7, the chapter's figure 1.1): each vertex projected with the
+// Texture transfer (docs/facefit.md §4, the chapter's figure 1.1): each vertex projected with the
 // fitted camera, tested against a depth buffer at the photo's resolution, coloured by a
 // bilinear sample of the photo; hidden vertices stay grey (128).
 fest::Mesh textured_mesh(const std::string& path, const facefit::Model& model, const facefit::FitResult& r,

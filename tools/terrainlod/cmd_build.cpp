@@ -254,7 +254,7 @@ int run_build(const BuildArgs& args) {
                              {"level", levels},
                              {"texture", nullptr},
                              {"tool", "terrainlod 1"}};
-  // Texture tiles (spec 2.1, 2.9): the image (or a hillshade of the DEM) resampled to the
+  // Texture tiles (docs/terrainlod.md, textures): the image (or a hillshade of the DEM) resampled to the
   // leaf canvas, box-filtered level by level, cut into T x T tiles.
   const auto t3 = SteadyClock::now();
   std::vector<std::string> textures;
@@ -282,7 +282,7 @@ int run_build(const BuildArgs& args) {
     // The spilled blobs in index order (the levels' files one after the other), each
     // handed to `emit` with its tile's texture and its index entry (the length is the
     // final one). Progressive coding recodes each level against the level before it
-    // (spec 2.8): that level's standalone blobs are kept (coded, small) and only the
+    // (docs/terrainlod.md §4): that level's standalone blobs are kept (coded, small) and only the
     // parents of the chunk of rows at hand are decoded.
     const bool progressive = args.coding == Coding::progressive;
     auto for_each_tile = [&](auto&& emit) {

@@ -40,8 +40,8 @@ int run_pyramid_stats(const std::string& path) {
     a.vertices += t.vertices.size();
     a.border += 4 * static_cast<std::size_t>(t.n());
     a.triangles += t.triangles.size();
-    // Both codings of the tile with its stream's strip order (spec 2.8: "stats give both
-    // sizes"): the stored one is one of them, byte for byte (verify checks that).
+    // Both codings of the tile with its stream's strip order (docs/terrainlod.md §4: stats give
+    // both sizes): the stored one is one of them, byte for byte (verify checks that).
     const std::string_view bytes = pyr.tile_bytes(e.id);
     const terrainlod::Tile* parent =
         e.id.level > 0 && pyr.has(terrainlod::parent_id(e.id)) ? &pyr.tile(terrainlod::parent_id(e.id)) : nullptr;

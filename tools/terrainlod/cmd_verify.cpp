@@ -37,7 +37,7 @@ int run_verify(const VerifyArgs& args) {
     padded = terrainlod::pad_grid(dem->grid, pyr.manifest().at("padded").get<int>());
     ref.emplace(*padded, diagonal_rule(pyr.manifest().value("diagonal", std::string("short"))));
   }
-  // The guarantee against the DEM for the reference the pyramid was built with (spec 2.2):
+  // The guarantee against the DEM for the reference the pyramid was built with (docs/terrainlod.md §1):
   // eps (1 + 1/4 + ...) = 4/3 eps for level l+2, eps (1 + 1/2 + ...) = 2 eps for l+1.
   const std::string reference = pyr.manifest().value("reference", std::string("l+2"));
   const double factor = reference == "original" ? 1.0 : reference == "l+1" ? 2.0 : 4.0 / 3.0;
