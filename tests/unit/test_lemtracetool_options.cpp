@@ -4,26 +4,17 @@
 
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <string>
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "expect_error.hpp"
 
 namespace {
 
 using namespace fest::lemtrace_tool;
 
-std::string usage_message(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const fest::Error& e) {
-    EXPECT_EQ(e.status(), fest::Status::usage);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error";
-  return {};
-}
+using fest::test::usage_message;
 
 TEST(LemtraceToolOptions, SeedPoint) {
   const auto p = parse_seed_point("0.5,-1,2e-3");

@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <string>
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "expect_error.hpp"
 #include "pyramid_options.hpp"
 #include "terrainlod/pyramid_plan.hpp"
 
@@ -16,16 +16,7 @@ namespace {
 
 using namespace fest::terrainlod_tool;
 
-std::string usage_message(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const fest::Error& e) {
-    EXPECT_EQ(e.status(), fest::Status::usage);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error";
-  return {};
-}
+using fest::test::usage_message;
 
 TEST(TerrainlodAppOptions, TileFlagsAreNamed) {
   EXPECT_EQ(usage_message([] { check_tile_options(48, 0, 1.0); }), "--tile must be a power of two between 4 and 4096 (got 48)");
