@@ -8,7 +8,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_mgh fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json
   fuzz_image_stream fuzz_patnet fuzz_vw fuzz_radiosity_scene fuzz_volume_source fuzz_softobj fuzz_lbm_case fuzz_ffd_lattice fuzz_v4l2_frame fuzz_feshape_xyz
-  fuzz_ltx fuzz_ltw fuzz_merl)
+  fuzz_ltx fuzz_ltw fuzz_merl fuzz_tlp_archive fuzz_mmb fuzz_eos_model fuzz_npz_model)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -37,6 +37,10 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_ltx) echo tests/data/brdffit ;;
     fuzz_ltw) echo tests/data/brdffit ;;
     fuzz_merl) echo tests/data/brdffit ;;
+    fuzz_tlp_archive) echo tests/data/terrainlod ;;
+    fuzz_mmb) echo tests/data/facefit/seeds ;;
+    fuzz_eos_model) echo tests/data/facefit/seeds ;;
+    fuzz_npz_model) echo tests/data/facefit ;;
   esac
 }
 

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/face_model_basis.hpp"
 #include "formats/facemodel/import.hpp"
 
 namespace fest::formats {
@@ -43,7 +44,7 @@ class Cursor {
 
 }  // namespace
 
-facefit::Model read_eos_model(const std::string& bytes, const std::string& source) {
+face::Model read_eos_model(const std::string& bytes, const std::string& source) {
   Cursor c(bytes, source);
   const auto version = c.get<std::uint32_t>("class version");
   if (version < 1 || version > 4) throw bad_input("eos model: class version {} unknown (1..4): not an eos .bin? ({})", version, source);
@@ -56,7 +57,7 @@ facefit::Model read_eos_model(const std::string& bytes, const std::string& sourc
   if (static_cast<std::int64_t>(er) * ec != bc) throw bad_input("eos model: {} eigenvalues for {} basis columns ({})", er * ec, bc, source);
   const auto tri_count = c.get<std::uint64_t>("triangle count");
   if (tri_count > c.remaining() / 12) throw bad_input("eos model: {} triangles run past the end of the file ({})", tri_count, source);
-  facefit::Model m;
+  face::Model m;
   m.dims = 3;
   m.points = static_cast<std::size_t>(mr / 3);
   m.components = static_cast<std::size_t>(bc);
@@ -76,7 +77,7 @@ facefit::Model read_eos_model(const std::string& bytes, const std::string& sourc
     m.triangles.push_back(tri);
   }
   Eigen::MatrixXd B = Eigen::Map<const Eigen::MatrixXd>(basis.data(), br, bc);
-  facefit::set_owned_basis_f32(m, B);
+  face::set_owned_basis_f32(m, B);
   m.source = "eos model (" + source + ")";
   m.units = "mm";
   return m;

@@ -10,16 +10,16 @@
 
 #include <string>
 
-#include "facefit/model.hpp"
+#include "core/face_model.hpp"
 
 namespace fest::formats {
 
-facefit::Model read_eos_model(const std::string& bytes, const std::string& source);
+face::Model read_eos_model(const std::string& bytes, const std::string& source);
 
 // Reads the .npz at `path`. Key aliases: mean|shapeMU|shape_mean, basis|shapePC|pcaBasis,
 // sigma|shapeEV (std devs) or variance|pcaVariance|eigenvalues (→ √), triangles|tl|cells
 // (1-based when the smallest index is 1; 3×t or t×3). `warnings` gets notes such as
 // "triangles were 1-based".
-facefit::Model read_npz_model(const std::string& path, std::string* warnings);
+face::Model read_npz_model(const std::string& path, std::string* warnings);
 
 }  // namespace fest::formats

@@ -8,43 +8,13 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/field_lines.hpp"
 
 namespace fest::formats {
 
 namespace {
 
-struct Line {
-  std::size_t number;
-  std::vector<std::string> fields;
-};
-
-// Splits into lines of whitespace-separated fields; drops comments and blank lines.
-std::vector<Line> tokenize(std::string_view text, bool hash_comments) {
-  std::vector<Line> lines;
-  std::size_t number = 0, pos = 0;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    pos = end + 1;
-    ++number;
-    if (hash_comments) {
-      const auto hash = line.find('#');
-      if (hash != std::string_view::npos) line = line.substr(0, hash);
-    }
-    Line l{number, {}};
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-      std::size_t j = i;
-      while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
-      if (j > i) l.fields.emplace_back(line.substr(i, j - i));
-      i = j;
-    }
-    if (!l.fields.empty()) lines.push_back(std::move(l));
-  }
-  return lines;
-}
+using Line = FieldLine;
 
 bool parse_double(const std::string& s, double& out) {
   errno = 0;
@@ -72,8 +42,8 @@ double finite_number(const std::string& s, const char* what, const std::string& 
   return v;
 }
 
-std::vector<facefit::LandmarkEntry> read_pts(const std::vector<Line>& lines, const std::string& source, double origin) {
-  std::vector<facefit::LandmarkEntry> out;
+std::vector<face::LandmarkEntry> read_pts(const std::vector<Line>& lines, const std::string& source, double origin) {
+  std::vector<face::LandmarkEntry> out;
   std::size_t i = 0, declared = 0;
   bool have_n = false;
   for (; i < lines.size() && lines[i].fields[0] != "{"; ++i) {
@@ -89,7 +59,7 @@ std::vector<facefit::LandmarkEntry> read_pts(const std::vector<Line>& lines, con
   for (++i; i < lines.size() && lines[i].fields[0] != "}"; ++i) {
     const auto& f = lines[i].fields;
     if (f.size() != 2) throw bad_input("pts: expected 'x y' ({}:{})", source, lines[i].number);
-    facefit::LandmarkEntry e;
+    face::LandmarkEntry e;
     e.id = std::to_string(out.size() + 1);
     e.u = finite_number(f[0], "x", source, lines[i].number) - origin;
     e.v = finite_number(f[1], "y", source, lines[i].number) - origin;
@@ -103,8 +73,8 @@ std::vector<facefit::LandmarkEntry> read_pts(const std::vector<Line>& lines, con
 
 }  // namespace
 
-std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin) {
-  const auto lines = tokenize(text, true);
+std::vector<face::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin) {
+  const auto lines = field_lines(text, true);
   if (lines.empty()) throw bad_input("landmark file is empty ({})", source);
   if (lines[0].fields[0] == "version:" || lines[0].fields[0] == "n_points:") return read_pts(lines, source, pts_origin);
   const auto& head = lines[0].fields;
@@ -113,13 +83,13 @@ std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const 
       (head.size() == 4 && head[3] != "sigma") || head.size() > 4)
     throw bad_input("landmark TSV needs a header line 'id u v [sigma]' or 'vertex u v [sigma]' ({}:{})", source, lines[0].number);
   const bool with_sigma = head.size() == 4;
-  std::vector<facefit::LandmarkEntry> out;
+  std::vector<face::LandmarkEntry> out;
   std::set<std::string> seen;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto& f = lines[i].fields;
     const std::size_t ln = lines[i].number;
     if (f.size() != head.size()) throw bad_input("expected {} columns, found {} ({}:{})", head.size(), f.size(), source, ln);
-    facefit::LandmarkEntry e;
+    face::LandmarkEntry e;
     e.line = ln;
     e.by_vertex = by_vertex;
     if (by_vertex) {
@@ -139,9 +109,9 @@ std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const 
   return out;
 }
 
-std::vector<facefit::NamedVertex> read_vertex_set(std::string_view text, const std::string& source) {
-  std::vector<facefit::NamedVertex> out;
-  const auto lines = tokenize(text, true);
+std::vector<face::NamedVertex> read_vertex_set(std::string_view text, const std::string& source) {
+  std::vector<face::NamedVertex> out;
+  const auto lines = field_lines(text, true);
   // eos TOML subset: only the [landmark_mappings] section counts.
   bool toml = false;
   for (const auto& l : lines)
@@ -175,13 +145,13 @@ std::vector<facefit::NamedVertex> read_vertex_set(std::string_view text, const s
   return out;
 }
 
-facefit::LandmarkMap read_landmark_map(std::string_view text, const std::string& source) {
-  facefit::LandmarkMap map;
+face::LandmarkMap read_landmark_map(std::string_view text, const std::string& source) {
+  face::LandmarkMap map;
   for (const auto& nv : read_vertex_set(text, source)) map[nv.name] = nv.vertex;
   return map;
 }
 
-std::string write_landmarks(const std::vector<facefit::LandmarkEntry>& entries) {
+std::string write_landmarks(const std::vector<face::LandmarkEntry>& entries) {
   bool sigma = false;
   bool by_vertex = !entries.empty() && entries.front().by_vertex;
   for (const auto& e : entries) sigma = sigma || e.sigma > 0;
@@ -196,7 +166,7 @@ std::string write_landmarks(const std::vector<facefit::LandmarkEntry>& entries) 
   return out;
 }
 
-std::string write_vertex_set(const std::vector<facefit::NamedVertex>& set) {
+std::string write_vertex_set(const std::vector<face::NamedVertex>& set) {
   std::string out = "name\tvertex\n";
   for (const auto& nv : set) out += nv.name + "\t" + std::to_string(nv.vertex) + "\n";
   return out;

@@ -11,21 +11,20 @@
 #include <string_view>
 #include <vector>
 
-#include "facefit/landmark_set.hpp"
-#include "facefit/synth.hpp"
+#include "core/face_model.hpp"
 
 namespace fest::formats {
 
 // Throws bad_input with "(source:line)" for malformed lines and non-finite numbers.
-std::vector<facefit::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin = 1.0);
+std::vector<face::LandmarkEntry> read_landmarks(std::string_view text, const std::string& source, double pts_origin = 1.0);
 
-facefit::LandmarkMap read_landmark_map(std::string_view text, const std::string& source);
+face::LandmarkMap read_landmark_map(std::string_view text, const std::string& source);
 // The same map as vertex list in file order (for vertex sets).
-std::vector<facefit::NamedVertex> read_vertex_set(std::string_view text, const std::string& source);
+std::vector<face::NamedVertex> read_vertex_set(std::string_view text, const std::string& source);
 
 // `id u v` TSV (with sigma when any entry has one); numbers as %.9g.
-std::string write_landmarks(const std::vector<facefit::LandmarkEntry>& entries);
+std::string write_landmarks(const std::vector<face::LandmarkEntry>& entries);
 // `name vertex` TSV with a header line.
-std::string write_vertex_set(const std::vector<facefit::NamedVertex>& set);
+std::string write_vertex_set(const std::vector<face::NamedVertex>& set);
 
 }  // namespace fest::formats

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/face_model_basis.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace fest::formats {
@@ -101,7 +102,7 @@ const ArrayRef& need(const std::map<std::string, ArrayRef>& arrays, const char* 
 }
 
 // Builds the model from a validated mapping; `keep` owns the bytes.
-facefit::Model decode(const unsigned char* base, std::uint64_t size, std::shared_ptr<const void> keep,
+face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_ptr<const void> keep,
                       const MmbReadOptions& options, std::string* warnings) {
   if (!little_endian()) throw bad_input("mmb files are little endian; this machine is not");
   if (size < 16) throw bad_input("mmb: file of {} bytes is shorter than the 16-byte preamble: truncated", size);
@@ -125,7 +126,7 @@ facefit::Model decode(const unsigned char* base, std::uint64_t size, std::shared
   if (header.value("sigma_kind", "") != "stddev")
     throw bad_input("mmb header: sigma_kind must be \"stddev\" (convert variances with facefit convert)");
 
-  facefit::Model m;
+  face::Model m;
   m.dims = static_cast<int>(number("dims"));
   if (m.dims != 2 && m.dims != 3) throw bad_input("mmb header: dims {} (2 or 3)", m.dims);
   m.points = number("points");
@@ -155,9 +156,9 @@ facefit::Model decode(const unsigned char* base, std::uint64_t size, std::shared
   const ArrayRef& basis = need(arrays, "basis");
   if (basis.count != n * m.components) throw bad_input("mmb: basis has {} values, expected {}×{}", basis.count, n, m.components);
   if (basis.dtype == "f32")
-    m.basis_type = facefit::Dtype::f32;
+    m.basis_type = face::Dtype::f32;
   else if (basis.dtype == "f64")
-    m.basis_type = facefit::Dtype::f64;
+    m.basis_type = face::Dtype::f64;
   else
     throw bad_input("mmb: basis must be f32 or f64");
   m.basis = basis.data;
@@ -174,7 +175,7 @@ facefit::Model decode(const unsigned char* base, std::uint64_t size, std::shared
     if (it == arrays.end()) throw bad_input("mmb: eval_mask names array '{}', which is missing", name);
     m.eval_mask = to_u32(it->second, "eval_mask");
   }
-  const auto fixed = facefit::check_model(m, options.fix_basis);
+  const auto fixed = face::check_model(m, options.fix_basis);
   if (warnings) {
     if (fixed.reordered) *warnings += "sigma was not descending: components reordered; ";
     if (fixed.renormalised) *warnings += "basis columns renormalised (--fix-basis); ";
@@ -189,14 +190,14 @@ std::string pad_to(std::string s, std::size_t multiple, char fill) {
 
 }  // namespace
 
-facefit::Model parse_mmb(std::string bytes, const MmbReadOptions& options, std::string* warnings) {
+face::Model parse_mmb(std::string bytes, const MmbReadOptions& options, std::string* warnings) {
   auto owned = std::make_shared<std::string>(std::move(bytes));
   const auto* base = reinterpret_cast<const unsigned char*>(owned->data());
   // std::string data is at least 8-byte aligned by the allocator (new), enough for f64.
   return decode(base, owned->size(), owned, options, warnings);
 }
 
-facefit::Model read_mmb(const std::string& path, const MmbReadOptions& options, std::string* warnings) {
+face::Model read_mmb(const std::string& path, const MmbReadOptions& options, std::string* warnings) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw io_error("cannot open model '{}': {}", path, std::strerror(errno));
   struct stat st {};
@@ -223,7 +224,7 @@ facefit::Model read_mmb(const std::string& path, const MmbReadOptions& options, 
   }
 }
 
-std::string write_mmb(const facefit::Model& m) {
+std::string write_mmb(const face::Model& m) {
   if (!little_endian()) throw io_error("writing mmb files needs a little-endian machine");
   struct Blob {
     std::string name, dtype;
@@ -234,7 +235,7 @@ std::string write_mmb(const facefit::Model& m) {
   const std::uint64_t n = m.n();
   auto raw = [](const void* p, std::size_t bytes) { return std::string(static_cast<const char*>(p), bytes); };
   blobs.push_back({"mean", "f64", {n}, raw(m.mean.data(), n * 8)});
-  const std::size_t es = m.basis_type == facefit::Dtype::f32 ? 4 : 8;
+  const std::size_t es = m.basis_type == face::Dtype::f32 ? 4 : 8;
   blobs.push_back({"basis", es == 4 ? "f32" : "f64", {n, m.components}, raw(m.basis, n * m.components * es)});
   blobs.push_back({"sigma", "f64", {m.components}, raw(m.sigma.data(), m.components * 8)});
   if (!m.triangles.empty())

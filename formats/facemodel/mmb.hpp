@@ -11,7 +11,7 @@
 
 #include <string>
 
-#include "facefit/model.hpp"
+#include "core/face_model.hpp"
 
 namespace fest::formats {
 
@@ -24,13 +24,13 @@ struct MmbReadOptions {
 // Opens and validates a model file (see check_model). Throws io_error when it cannot be
 // opened, bad_input (message naming the file) when it is malformed or truncated.
 // `warnings` receives messages such as "sigma reordered".
-facefit::Model read_mmb(const std::string& path, const MmbReadOptions& options, std::string* warnings = nullptr);
+face::Model read_mmb(const std::string& path, const MmbReadOptions& options, std::string* warnings = nullptr);
 
 // The same from bytes in memory (tests, fuzzing); the model owns a copy of the basis.
-facefit::Model parse_mmb(std::string bytes, const MmbReadOptions& options, std::string* warnings = nullptr);
+face::Model parse_mmb(std::string bytes, const MmbReadOptions& options, std::string* warnings = nullptr);
 
 // Serialises a model (mean f64, basis as stored: f32 or f64, sigma f64, triangles u32,
 // eval mask u32).
-std::string write_mmb(const facefit::Model& model);
+std::string write_mmb(const face::Model& model);
 
 }  // namespace fest::formats

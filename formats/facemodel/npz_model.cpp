@@ -10,6 +10,7 @@
 #include <unzip.h>
 
 #include "core/error.hpp"
+#include "core/face_model_basis.hpp"
 #include "formats/facemodel/import.hpp"
 
 namespace fest::formats {
@@ -150,7 +151,7 @@ const NpyArray* find(const std::map<std::string, NpyArray>& m, std::initializer_
 
 }  // namespace
 
-facefit::Model read_npz_model(const std::string& path, std::string* warnings) {
+face::Model read_npz_model(const std::string& path, std::string* warnings) {
   const auto members = read_members(path);
   const NpyArray* mean = find(members, {"mean", "shapeMU", "shape_mean"});
   const NpyArray* basis = find(members, {"basis", "shapePC", "pcaBasis"});
@@ -173,7 +174,7 @@ facefit::Model read_npz_model(const std::string& path, std::string* warnings) {
   for (std::uint64_t r = 0; r < n; ++r)
     for (std::uint64_t c = 0; c < k; ++c)
       B(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = transposed ? basis->values[c * n + r] : basis->values[r * k + c];
-  facefit::Model m;
+  face::Model m;
   m.dims = 3;
   m.points = n / 3;
   m.components = k;
@@ -202,7 +203,7 @@ facefit::Model read_npz_model(const std::string& path, std::string* warnings) {
       m.triangles.push_back(tri);
     }
   }
-  facefit::set_owned_basis_f32(m, B);
+  face::set_owned_basis_f32(m, B);
   m.source = "npz model (" + path + ")";
   return m;
 }

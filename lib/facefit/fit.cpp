@@ -3,18 +3,16 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
-#include <thread>
 #include <unordered_set>
 
+#include "core/parallel_for.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "facefit/ridge.hpp"
 
 namespace fest::facefit {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 Eigen::Vector3d mean_point(const Model& model, std::uint32_t j) {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
@@ -55,7 +53,7 @@ struct Solve {
 Solve solve_once(const Model& model, const Landmarks& lm, const CameraMatrix& P, const Eigen::VectorXd& weight,
                  bool with_nuisance, const FitOptions& opt) {
   Solve s;
-  auto t0 = Clock::now();
+  auto t0 = SteadyClock::now();
   Eigen::MatrixXd Q;
   Eigen::VectorXd r;
   build_measurement(model, lm, P, weight, Q, r);
@@ -88,7 +86,7 @@ Solve solve_once(const Model& model, const Landmarks& lm, const CameraMatrix& P,
     Q = Qa;
   }
   s.ms_build = ms_since(t0);
-  t0 = Clock::now();
+  t0 = SteadyClock::now();
   const RidgeSolver solver(Q, r, with_nuisance && !penalized ? T : Eigen::MatrixXd(), opt.eps_rank);
   const double scale = camera_scale(P);
   switch (opt.eta_mode) {
@@ -140,7 +138,7 @@ namespace {
 
 std::unique_ptr<FitCache::SimilarityPlan> similarity_plan(const Model& model, const Landmarks& lm, const Eigen::VectorXd& weight,
                                                           double eps_rank) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   auto plan = std::make_unique<FitCache::SimilarityPlan>();
   plan->basis = model.basis;
   plan->components = model.components;
@@ -172,7 +170,7 @@ std::unique_ptr<FitCache::SimilarityPlan> similarity_plan(const Model& model, co
 // passes only change r/s, and the solver keeps its SVD.
 Solve solve_similarity(const Model& model, const Landmarks& lm, const Eigen::VectorXd& weight, const FitOptions& opt,
                        CameraMatrix& P, int passes, int& iterations, FitCache* cache) {
-  const auto t1 = Clock::now();
+  const auto t1 = SteadyClock::now();
   const Eigen::Index f = static_cast<Eigen::Index>(lm.size());
   std::unique_ptr<FitCache::SimilarityPlan> local;
   FitCache::SimilarityPlan* plan = nullptr;
@@ -329,7 +327,7 @@ FitResult fit_landmarks(const Model& model, const Landmarks& lm, const FitOption
   out.nuisance = s.t;
   out.ms_build_q = s.ms_build;
   out.ms_svd = s.ms_svd;
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   if (opt.reconstruct) {
     out.shape = reconstruct(model, out.c);
     if (!out.shape.allFinite()) throw runtime_failure("the fit produced non-finite coordinates");
@@ -389,14 +387,7 @@ std::vector<double> vertex_uncertainty(const Model& model, const FitResult& fit,
   };
   const std::size_t chunk = 4096;
   const std::size_t chunks = (p + chunk - 1) / chunk;
-  const int nthreads = std::max(1, threads);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < nthreads; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t c = static_cast<std::size_t>(t); c < chunks; c += static_cast<std::size_t>(nthreads))
-        work(c * chunk, std::min(p, (c + 1) * chunk));
-    });
-  for (auto& th : pool) th.join();
+  parallel_for(chunks, threads, [&](std::size_t c) { work(c * chunk, std::min(p, (c + 1) * chunk)); });
   return out;
 }
 

@@ -16,7 +16,7 @@ Landmarks resolve_landmarks(const std::vector<LandmarkEntry>& entries, const Lan
       auto it = map.find(e.id);
       if (it == map.end()) {
         if (!skip_unmapped)
-          throw bad_input("landmark id '{}' is not in the landmark map ({}:{}; --skip-unmapped ignores it)", e.id, source, e.line);
+          throw bad_input("landmark id '{}' is not in the landmark map ({}:{})", e.id, source, e.line);
         ++missing;
         continue;
       }

@@ -8,20 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "core/face_model.hpp"
 #include "facefit/fit.hpp"
 
 namespace fest::facefit {
 
-struct LandmarkEntry {
-  std::string id;             // landmark name ("37", "nose_tip"); empty when given by vertex
-  bool by_vertex = false;
-  std::uint32_t vertex = 0;
-  double u = 0, v = 0;        // px
-  double sigma = 0;           // px, 0 = not given
-  std::size_t line = 0;       // source line, for messages
-};
-
-using LandmarkMap = std::map<std::string, std::uint32_t>;
+// Entries and maps are plain data shared with formats/facemodel (core/face_model.hpp).
+using face::LandmarkEntry;
+using face::LandmarkMap;
 
 // Ties entries to vertices through `map`. An id missing from the map is bad input
 // (naming the id and `source:line`) unless skip_unmapped, then it is counted in *skipped.

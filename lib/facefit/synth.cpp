@@ -150,7 +150,7 @@ FaceParameters draw_face(Rng& rng, double detail_mm) {
 }
 
 Eigen::VectorXd face_shape(const FaceParameters& face, int R) {
-  if (R < 8) throw usage_error("--resolution must be at least 8, got {}", R);
+  if (R < 8) throw usage_error("grid resolution must be at least 8, got {}", R);
   const Layout L = layout_of(face.theta);
   const Layout L0 = layout_of({});
   Eigen::VectorXd v(3 * R * R);
@@ -195,7 +195,7 @@ std::vector<std::array<std::uint32_t, 3>> grid_triangles(int R) {
 }
 
 SynthLandmarks synth_landmarks(int R, std::uint64_t seed) {
-  if (R < 16) throw usage_error("landmark sets need --resolution 16 or more, got {}", R);
+  if (R < 16) throw usage_error("landmark sets need a grid resolution of 16 or more, got {}", R);
   const Layout L = layout_of({});
   SynthLandmarks out;
   std::set<std::uint32_t> used;

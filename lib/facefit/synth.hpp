@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "core/face_model.hpp"
 #include "facefit/rng.hpp"
 
 namespace fest::facefit {
@@ -37,10 +38,7 @@ Eigen::VectorXd face_shape(const FaceParameters& face, int resolution);
 // Two triangles per grid cell, consistently oriented (normals towards +z, the viewer).
 std::vector<std::array<std::uint32_t, 3>> grid_triangles(int resolution);
 
-struct NamedVertex {
-  std::string name;
-  std::uint32_t vertex = 0;
-};
+using face::NamedVertex;  // core/face_model.hpp
 
 struct SynthLandmarks {
   std::vector<NamedVertex> set17;    // eye/mouth corners, brow ends, nose, lips, chin

@@ -138,6 +138,16 @@ void dip_below(const Geo& g, const CellPath& path, const Sample& prev, Sample& c
   }
 }
 
+// A search that ends inside the cell (stalled or trapped) at the sample `at`.
+ExitResult ended(ExitResult::Kind kind, const Sample& at, int evals) {
+  ExitResult r;
+  r.kind = kind;
+  r.tau = at.tau;
+  r.x = at.x;
+  r.evaluations = evals;
+  return r;
+}
+
 template <class Geo>
 ExitResult finish(const Geo& g, const Sample& at, int face, int evals) {
   ExitResult r;
@@ -347,23 +357,11 @@ ExitResult find_exit_in(const Geo& g, const CellPath& path, const ExitParams& pa
       return finish(g, best, best_face, evals);
     }
     // A path that has come to rest (a sink inside the cell) is trapped.
-    if (cur.v.norm() <= 1e-12 * g.v_max) {
-      ExitResult r;
-      r.kind = ExitResult::stalled;
-      r.tau = cur.tau;
-      r.x = cur.x;
-      r.evaluations = evals;
-      return r;
-    }
+    if (cur.v.norm() <= 1e-12 * g.v_max) return ended(ExitResult::stalled, cur, evals);
     prev = cur;
     delta = std::min(2 * delta, std::max(delta, delta_cap));
   }
-  ExitResult r;
-  r.kind = ExitResult::trapped;
-  r.tau = prev.tau;
-  r.x = prev.x;
-  r.evaluations = evals;
-  return r;
+  return ended(ExitResult::trapped, prev, evals);
 }
 
 }  // namespace

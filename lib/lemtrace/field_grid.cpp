@@ -1,8 +1,9 @@
 #include "lemtrace/field_grid.hpp"
 
 #include <algorithm>
-#include <thread>
 #include <vector>
+
+#include "core/parallel_for.hpp"
 
 namespace fest::lemtrace {
 
@@ -16,18 +17,14 @@ FieldGrid::FieldGrid(TetMesh mesh, const ClassifyParams& params, Precompute mode
   state_.reset(new std::atomic<uint8_t>[n]);
   for (std::size_t i = 0; i < n; ++i) state_[i].store(mode_ == Precompute::all ? 2 : 0, std::memory_order_relaxed);
   if (mode_ != Precompute::all) return;
-  const int workers = std::max(1, threads);
-  std::vector<std::thread> pool;
-  for (int w = 0; w < workers; ++w)
-    pool.emplace_back([this, w, workers, n] {
-      const std::size_t begin = n * static_cast<std::size_t>(w) / static_cast<std::size_t>(workers);
-      const std::size_t end = n * static_cast<std::size_t>(w + 1) / static_cast<std::size_t>(workers);
-      for (std::size_t c = begin; c < end; ++c) {
-        const TetGeometry g = tet_geometry(mesh_, static_cast<int32_t>(c));
-        table_[c] = to_barycentric_frame(g, classify(g, params_));
-      }
-    });
-  for (auto& t : pool) t.join();
+  // Every record depends on its cell alone; chunks of cells keep the job count small.
+  const std::size_t chunk = 4096, chunks = (n + chunk - 1) / chunk;
+  parallel_for(chunks, threads, [this, n, chunk](std::size_t k) {
+    for (std::size_t c = k * chunk; c < std::min(n, (k + 1) * chunk); ++c) {
+      const TetGeometry g = tet_geometry(mesh_, static_cast<int32_t>(c));
+      table_[c] = to_barycentric_frame(g, classify(g, params_));
+    }
+  });
   computed_ = n;
 }
 

@@ -68,9 +68,9 @@ Vec3 abc_velocity(const Vec3& x) {
 GeneratedGrid generate(const GenOptions& o) {
   bool known = false;
   for (const auto& k : gen_kinds()) known = known || k == o.kind;
-  if (!known) throw usage_error("unknown grid kind '{}' (see lemtrace gen --help)", o.kind);
-  if (o.n < 1 || o.n > 400) throw usage_error("--n {} is outside 1..400", o.n);
-  if (!(o.jitter >= 0 && o.jitter < 0.5)) throw usage_error("--jitter {} is outside [0, 0.5)", o.jitter);
+  if (!known) throw usage_error("unknown grid kind '{}'", o.kind);
+  if (o.n < 1 || o.n > 400) throw usage_error("{} cubes per side is outside 1..400", o.n);
+  if (!(o.jitter >= 0 && o.jitter < 0.5)) throw usage_error("jitter {} is outside [0, 0.5) of the cell size", o.jitter);
 
   GeneratedGrid g;
   g.field = linear_kind(o.kind, &g.linear);

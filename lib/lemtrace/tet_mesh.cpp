@@ -81,7 +81,7 @@ TetMesh build_tet_mesh(std::vector<Vec3> points, std::vector<Vec3> vectors, cons
         throw bad_input("cell {} refers to point {}, the grid has {} points", c, cells.ids[static_cast<std::size_t>(i)], n_points);
     if (type != static_cast<int>(CellShape::tetra)) {
       if (!options.split)
-        throw bad_input("cell {} is a VTK type {} cell and --split none accepts only tetrahedra", c, type);
+        throw bad_input("cell {} is a VTK type {} cell and, unsplit, only tetrahedra are accepted", c, type);
       ++rep.split_cells;
     }
     split.clear();

@@ -1,11 +1,11 @@
 #include "lemtrace/tracer.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <thread>
+
+#include "core/parallel_for.hpp"
 
 namespace fest::lemtrace {
 
@@ -144,6 +144,38 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
   Eigen::Vector4d carried = Eigen::Vector4d::Zero();
   bool have_beta = false;
   int hops = 0, stuck = 0;
+  // The line has reached the exit point x at time t through face e.face: the point is
+  // recorded, then the line ends (length spent, the domain's boundary) or enters the
+  // neighbour with its entry coordinates carried over. False when the line ends.
+  // The speed test at a cell's entry point (squared speed): false when the line ends
+  // there, on a non-finite field or at rest (a critical point inside, else stagnation).
+  auto keeps_moving = [&](double speed2, const CellRecord& rec) {
+    if (!std::isfinite(speed2)) {
+      line.reason = Reason::unexpected_value;
+      return false;
+    }
+    if (speed2 <= v_stop * v_stop) {
+      line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
+      return false;
+    }
+    return true;
+  };
+  auto leave_through = [&](const ExitResult& e, const CellRecord& rec, const Tet& tet) {
+    if (e.tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
+    if (length > o.max_length) {
+      line.reason = Reason::out_of_length;
+      return false;
+    }
+    const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
+    if (next < 0) {
+      line.reason = Reason::out_of_domain;
+      return false;
+    }
+    carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
+    have_beta = true;
+    cell = next;
+    return true;
+  };
   for (;;) {
     if (line.cells >= o.max_steps) {
       line.reason = Reason::out_of_steps;
@@ -157,15 +189,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     // the general path below, which decides the same way.
     if (have_beta && rec.bary_frame && try_fast) {
       if (rec.speed_log2 < stop_log2) {
-        const double speed2 = tet_field(mesh, tet, carried).squaredNorm();
-        if (!std::isfinite(speed2)) {
-          line.reason = Reason::unexpected_value;
-          return;
-        }
-        if (speed2 <= v_stop * v_stop) {
-          line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
-          return;
-        }
+        if (!keeps_moving(tet_field(mesh, tet, carried).squaredNorm(), rec)) return;
       }
       ExitResult e;
       if (predicted_exit_local(rec, carried, dir, e) && !(std::abs(t - t0) + e.tau > o.max_time) &&
@@ -187,18 +211,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
         if (limit_length) length += (e_x - x).norm();
         x = e_x;
         t += dir * e.tau;
-        if (e.tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
-        if (length > o.max_length) {
-          line.reason = Reason::out_of_length;
-          return;
-        }
-        const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
-        if (next < 0) {
-          line.reason = Reason::out_of_domain;
-          return;
-        }
-        carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
-        cell = next;
+        if (!leave_through(e, rec, tet)) return;
         continue;
       }
     }
@@ -218,14 +231,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     // The interpolated (world) field: the speed test is the same in both frames.
     const Vec3 v = local ? tet_field(mesh, tet, beta) : g.interpolate(beta);
     const double speed2 = v.squaredNorm();
-    if (!std::isfinite(speed2)) {
-      line.reason = Reason::unexpected_value;
-      return;
-    }
-    if (speed2 <= v_stop * v_stop) {
-      line.reason = rec.critical_inside ? Reason::critical_point : Reason::stagnation;
-      return;
-    }
+    if (!keeps_moving(speed2, rec)) return;
     // A precomputed normal cell first tries the predicted exit in eigen coordinates
     // (no CellPath, no geometry); everything else, and whatever it declines, goes
     // through the general search below (edge/vertex hops included).
@@ -310,19 +316,7 @@ void trace_lem(const FieldGrid& grid, int32_t cell, const Vec3& seed, double t0,
     length += moved;
     x = e_x;
     t += dir * tau;
-    if (tau > 0 || out.size() == 1) out.push(x, t, cell, rec.type);
-    if (length > o.max_length) {
-      line.reason = Reason::out_of_length;
-      return;
-    }
-    const int32_t next = mesh.neighbors[static_cast<std::size_t>(cell)][e.face];
-    if (next < 0) {
-      line.reason = Reason::out_of_domain;
-      return;
-    }
-    carried = across_face(tet, mesh.tets[static_cast<std::size_t>(next)], e.beta);
-    have_beta = true;
-    cell = next;
+    if (!leave_through(e, rec, tet)) return;
   }
 }
 
@@ -526,16 +520,8 @@ std::vector<Polyline> trace_all(const FieldGrid& grid, const std::vector<Vec3>& 
                                 const TraceOptions& options, int threads) {
   std::vector<Polyline> lines(seeds.size());
   grid.locator();
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < seeds.size();)
-      lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options);
-  };
-  const int n = std::max(1, std::min<int>(threads, static_cast<int>(seeds.size())));
-  std::vector<std::thread> pool;
-  for (int w = 1; w < n; ++w) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  parallel_for(seeds.size(), threads,
+               [&](std::size_t i) { lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options); });
   return lines;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// LSB-first bit packing for the tile body (spec terrainlod 2.9) and zig-zag mapping of
+// LSB-first bit packing for the tile body (docs/terrainlod.md §4) and zig-zag mapping of
 // signed deltas.
 
 #include <algorithm>

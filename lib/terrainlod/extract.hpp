@@ -1,5 +1,5 @@
 #pragma once
-// View-dependent extraction (spec terrainlod 2.10, seed 7.3): select the tiles a camera
+// View-dependent extraction (docs/terrainlod.md §5, seed 7.3): select the tiles a camera
 // needs (frustum culling of each tile's box, the distance rule s_l f_px / d <= tau),
 // close the quadtree so that edge neighbours differ by at most one level, and give every
 // drawn tile its neighbour mask (which sides face a finer tile).

@@ -2,7 +2,7 @@
 // The DEM as the algorithms see it: W x H samples on a regular grid, counted from the
 // south-west (i east, j north), with the validity of every sample. NaN marks nodata on
 // input; condition_grid() replaces it by the nearest valid height (geometry needs a value
-// everywhere, spec terrainlod 2.3) and keeps the mask.
+// everywhere, docs/terrainlod.md §1) and keeps the mask.
 
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Turning the builder's standalone tiles into progressive ones (spec terrainlod 2.8). The
+// Turning the builder's standalone tiles into progressive ones (docs/terrainlod.md §4). The
 // builder works from the leaves up, so a tile's parent does not exist yet when the tile is
 // coded; the writer goes root first and recodes each level against the level before it,
 // a chunk of rows at a time, with only the parents of that chunk decoded. Recoding keeps

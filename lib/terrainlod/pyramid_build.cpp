@@ -6,7 +6,6 @@
 #include <limits>
 #include <optional>
 #include <set>
-#include <thread>
 
 #include "core/error.hpp"
 #include "core/parallel_for.hpp"
@@ -27,7 +26,7 @@ int log2_int(int n) {
 std::int64_t finest_code(double z, double delta_min) { return std::llround(z / delta_min); }
 
 // The lattice mesh of a tile: (n+1)^2 DEM samples `step` cells apart, each lattice cell
-// split by its shorter diagonal (spec 2.3 on the tile's lattice), border points locked.
+// split by its shorter diagonal (docs/terrainlod.md §1, on the tile's lattice), border points locked.
 // On the DEM's own grid (step 1) the cells take the reference surface's diagonals, whatever
 // --diagonal chose: that mesh is the reference itself, exact at the leaves' limit 0.
 struct StartMesh {
@@ -84,25 +83,19 @@ bool lattice_fits(const ReferenceSurface& ref, const HeightGrid& padded, const L
   const int n = 1 << lv.lattice_bits, step = lv.cells / n;
   const int tiles = lv.tiles_x * lv.tiles_y;
   // Tiles are checked in parallel; the answer (all fit?) does not depend on the order.
-  std::atomic<int> next{0};
   std::atomic<bool> fits{true};
-  auto worker = [&] {
-    for (int k; fits.load() && (k = next.fetch_add(1)) < tiles;) {
-      const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
-      const StartMesh s = lattice_mesh(ref, padded, tx * lv.cells, ty * lv.cells, n, step);
-      const TileFrame f = frame_of(lv, levels, tx, ty);
-      for (const auto& t : s.tin.triangles)
-        if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) >
-            lv.limit) {
-          fits.store(false);
-          return;
-        }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min(threads, tiles); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  parallel_for(static_cast<std::size_t>(tiles), threads, [&](std::size_t j) {
+    if (!fits.load()) return;  // one misfit settles it: the rest is skipped
+    const int k = static_cast<int>(j);
+    const int tx = k % lv.tiles_x, ty = k / lv.tiles_x;
+    const StartMesh s = lattice_mesh(ref, padded, tx * lv.cells, ty * lv.cells, n, step);
+    const TileFrame f = frame_of(lv, levels, tx, ty);
+    for (const auto& t : s.tin.triangles)
+      if (transition_error(ref, f, s.tin.vertices[t[0]], s.tin.vertices[t[1]], s.tin.vertices[t[2]], lv.limit) > lv.limit) {
+        fits.store(false);
+        return;
+      }
+  });
   return fits.load();
 }
 
@@ -275,11 +268,11 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
                                 const TileSink& sink, const std::function<void(std::size_t, std::size_t)>& progress) {
   const PyramidPlan plan = plan_pyramid(grid.width, grid.height, dx, dy, params.pyramid);
   if (!(params.z_quantum > 0) || !std::isfinite(params.z_quantum))
-    throw usage_error("--z-quantum must be a positive number (got {})", params.z_quantum);
+    throw usage_error("finest height quantum must be a positive number (got {})", params.z_quantum);
   if (!(params.height_quantum > 0) || !(params.height_quantum <= 1))
-    throw usage_error("--height-quantum must be in (0, 1] (got {})", params.height_quantum);
+    throw usage_error("interior height quantum must be in (0, 1] of eps_l (got {})", params.height_quantum);
   if (!(params.leaf_error >= 0) || !std::isfinite(params.leaf_error))
-    throw usage_error("--leaf-error must be a finite number >= 0 (got {})", params.leaf_error);
+    throw usage_error("leaf tolerance must be a finite number >= 0 (got {})", params.leaf_error);
   const int texels = params.pyramid.texels == 0 ? params.pyramid.tile : params.pyramid.texels;
 
   Pyramid pyr;

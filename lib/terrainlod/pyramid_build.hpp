@@ -1,7 +1,7 @@
 #pragma once
-// Building the tile pyramid (spec terrainlod 2.3-2.6): pad the DEM, choose every level's
+// Building the tile pyramid (docs/terrainlod.md §2-§3): pad the DEM, choose every level's
 // lattice and height quantum, and simplify every tile with the collapse engine, from the
-// leaves up. By default (the seed's reference, spec 2.2) level l is measured against the
+// leaves up. By default (the seed's reference, docs/terrainlod.md §1) level l is measured against the
 // finished base triangulations of level l+2 (level L for l = L-1), so the work per tile
 // does not grow with the DEM and the error against the DEM stays within (4/3) eps_l; the
 // DEM itself (`original`, eps_l) and level l+1 (2 eps_l) are there for validation. Level L
@@ -23,7 +23,7 @@
 
 namespace fest::terrainlod {
 
-// What level l is measured against while it is simplified (spec 2.2, 2.11).
+// What level l is measured against while it is simplified (docs/terrainlod.md §1).
 enum class Reference {
   level_plus_2,  // the seed's: the finished level l+2 (level L for l = L-1); <= (4/3) eps_l vs the DEM
   level_plus_1,  // the finished level l+1; <= 2 eps_l vs the DEM
@@ -70,7 +70,7 @@ HeightGrid pad_grid(const HeightGrid& grid, int padded);
 // columns), on the calling thread.
 using TileSink = std::function<void(Tile&&, std::string&&)>;
 
-// `grid` must be conditioned (no NaN); dx, dy only shape eps (spec 2.1). `progress` is
+// `grid` must be conditioned (no NaN); dx, dy only shape eps (docs/terrainlod.md §1). `progress` is
 // called with (tiles done, tiles total) from the calling thread. The returned pyramid
 // has its levels but no tiles: they went to `sink` as they were finished.
 Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, const BuildParams& params,

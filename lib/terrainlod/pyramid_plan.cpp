@@ -11,13 +11,13 @@ bool is_power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 PyramidPlan plan_pyramid(int width, int height, double dx, double dy, const PyramidParams& params) {
   if (!is_power_of_two(params.tile) || params.tile < 4 || params.tile > 4096)
-    throw usage_error("--tile must be a power of two between 4 and 4096 (got {})", params.tile);
+    throw usage_error("tile size {} is not a power of two between 4 and 4096", params.tile);
   const int texels = params.texels == 0 ? params.tile : params.texels;
   if (!is_power_of_two(texels) || texels > 65536)
-    throw usage_error("--texels must be a power of two (got {})", texels);
-  if (texels < params.tile) throw usage_error("--texels ({}) must be at least --tile ({})", texels, params.tile);
+    throw usage_error("texels per tile side {} is not a power of two up to 65536", texels);
+  if (texels < params.tile) throw usage_error("texels per tile side ({}) are fewer than the tile's cells ({})", texels, params.tile);
   if (!(params.error_fraction > 0) || !std::isfinite(params.error_fraction))
-    throw usage_error("--error-fraction must be a positive number (got {})", params.error_fraction);
+    throw usage_error("error fraction must be a positive number (got {})", params.error_fraction);
   if (width < 2 || height < 2) throw bad_input("DEM has {} x {} samples; at least 2 x 2 needed", width, height);
 
   PyramidPlan plan;

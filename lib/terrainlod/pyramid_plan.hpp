@@ -1,5 +1,5 @@
 #pragma once
-// The shape of the tile pyramid for a DEM (spec terrainlod 2.1): number of levels, tiles
+// The shape of the tile pyramid for a DEM (docs/terrainlod.md §1): number of levels, tiles
 // per level and the per-level error budget eps_l = f * S_l / T (one texel by default).
 
 #include <vector>

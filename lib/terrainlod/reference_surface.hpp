@@ -1,6 +1,6 @@
 #pragma once
 // The reference surface: the piecewise-linear interpolant of the DEM on its finest
-// triangulation, every grid cell split by one diagonal (spec terrainlod 2.3). Coordinates
+// triangulation, every grid cell split by one diagonal (docs/terrainlod.md §1). Coordinates
 // here are grid units (i east, j north); the vertical error is invariant under the affine
 // map to world x, y, so all error measurement happens in these units.
 

@@ -520,7 +520,7 @@ Tin finest_triangulation(const HeightGrid& grid, DiagonalRule diagonal) {
 
 SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& options) {
   if (!(options.max_error >= 0) || !std::isfinite(options.max_error))
-    throw usage_error("--max-error must be a finite number >= 0 (got {})", options.max_error);
+    throw usage_error("error bound must be a finite number >= 0 (got {})", options.max_error);
   double lo = grid.h.empty() ? 0 : grid.h[0], hi = lo;
   for (double z : grid.h) lo = std::min(lo, z), hi = std::max(hi, z);
   const double tolerance = 1e-9 * std::max(1.0, hi - lo);

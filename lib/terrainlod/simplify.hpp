@@ -1,6 +1,6 @@
 #pragma once
 // Greedy half-edge-collapse simplification of a DEM with a guaranteed vertical error
-// (spec terrainlod 2.6, the engine of `simplify` and of the tiles): start from a mesh
+// (docs/terrainlod.md §2, the engine of `simplify` and of the tiles): start from a mesh
 // within the bound (the finest triangulation, every sample a vertex and every cell split
 // by one diagonal, or a coarse RTIN within the bound: rtin_start.hpp), repeatedly
 // remove the vertex whose cheapest collapse onto a neighbour changes the surface least,
@@ -57,7 +57,7 @@ Tin finest_triangulation(const HeightGrid& grid, DiagonalRule diagonal);
 // Throws usage_error for a negative or non-finite bound.
 SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& options);
 
-// A tile as the engine sees it (spec terrainlod 2.6): its square in grid units and the
+// A tile as the engine sees it (docs/terrainlod.md §3): its square in grid units and the
 // lattice step of the finer neighbour tiles. A triangle with an edge on a border that can
 // face a finer neighbour is measured in all its transition variants (that edge split at
 // the neighbour's lattice points, heights = DEM samples), so every one of the tile's 16

@@ -1,5 +1,5 @@
 #pragma once
-// Texture tiles (spec terrainlod 2.1, 2.9): every tile of every level carries T x T
+// Texture tiles (docs/terrainlod.md, textures; man5 terrainlod-pyramid): every tile of every level carries T x T
 // texels. The image covering the DEM is resampled once to the leaf canvas of 2^L T texels
 // per side (the padded square of the pyramid, north row first like every image), each
 // coarser canvas is the 2 x 2 box mean of the finer one (the mipmap filter), and a tile's

@@ -9,7 +9,7 @@ namespace fest::terrainlod {
 
 double decode_height(std::int64_t code, bool border, int k, double delta_min) {
   if (border || k == 0) return delta_min * static_cast<double>(code);
-  // The middle of the bucket of 2^k finest steps (spec 2.5).
+  // The middle of the bucket of 2^k finest steps (docs/terrainlod.md §4).
   const double q = std::ldexp(1.0, k);
   return delta_min * (static_cast<double>(code) * q + (q - 1) / 2);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// One tile of the pyramid (spec terrainlod 2.4-2.9, our reconstruction): a free
+// One tile of the pyramid (docs/terrainlod.md §3-§4, our reconstruction): a free
 // triangulation on the tile's lattice of n x n cells (n = 2^lattice_bits, one lattice step
 // = one texel, or one DEM cell where texels are finer than cells), every border lattice
 // point kept. Keeping the whole border lattice is our simplification of the seed's
@@ -10,7 +10,7 @@
 //
 // Heights: border points carry G, the height on the finest lattice (delta_min), so every
 // tile meeting at a border point decodes the same value bit for bit whatever its level;
-// interior vertices carry H = floor(G / 2^k) on the level's coarser lattice (spec 2.5).
+// interior vertices carry H = floor(G / 2^k) on the level's coarser lattice (docs/terrainlod.md §4).
 
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The .tlt tile coding (spec terrainlod 2.9, our version 1; man5 terrainlod-pyramid):
+// The .tlt tile coding (docs/terrainlod.md §4, our version 1; man5 terrainlod-pyramid):
 // a byte-aligned header, then three bit-packed sections.
 //
 // - vertices: the 4n border lattice points are implicit (counter-clockwise from the
@@ -15,7 +15,7 @@
 //   the transitions themselves are implied (tile.hpp), so the 16 triangulations come
 //   from the one stream with no stored conditions.
 //
-// Two codings (spec 2.8; the header's coding byte): standalone, every tile decodable alone,
+// Two codings (docs/terrainlod.md §4; the header's coding byte): standalone, every tile decodable alone,
 // and progressive, a child tile relative to its decoded parent (tile_parent.hpp): the
 // border heights the parent gives are not sent; the parent's interior vertices in the
 // child's square are listed implicitly in parent order, one "present" bit each and, if

@@ -21,7 +21,7 @@ std::int64_t floor_div(Int128 a, Int128 b) {
 }
 
 // Twice the parent vertex's height in finest units: 2 G on the border, the middle of the
-// interior bucket (H 2^k + (2^k - 1) / 2, spec 2.5) doubled inside.
+// interior bucket (H 2^k + (2^k - 1) / 2, docs/terrainlod.md §4) doubled inside.
 std::int64_t twice_height(const TileVertex& v, bool border, int k) {
   if (border) return 2 * v.code;
   return v.code * (std::int64_t{2} << k) + (std::int64_t{1} << k) - 1;

@@ -1,5 +1,5 @@
 #pragma once
-// What a child tile knows from its decoded parent (spec terrainlod 2.8, our version; man5
+// What a child tile knows from its decoded parent (docs/terrainlod.md §4, our version; man5
 // terrainlod-pyramid "Progressive coding"). Used by the progressive tile coding.
 //
 // Lattices nest: a level's lattice has at least half as many cells per side as its

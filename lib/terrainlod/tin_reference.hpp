@@ -1,5 +1,5 @@
 #pragma once
-// A coarser mesh as the reference surface (spec terrainlod 2.2, seed 7.2.1): level l is
+// A coarser mesh as the reference surface (docs/terrainlod.md §1, seed 7.2.1): level l is
 // measured against the finished level-(l+2) base triangulations over its square, not the
 // DEM, so the work per tile does not grow with the DEM's resolution, and the error against
 // the DEM stays below (4/3) eps_l (eps_l + eps_(l+2) + eps_(l+4) + ...).

@@ -1,5 +1,5 @@
 #pragma once
-// Transition refinement of one triangle towards finer neighbour tiles (spec terrainlod 2.6
+// Transition refinement of one triangle towards finer neighbour tiles (docs/terrainlod.md §3
 // step B, seed Figs. 7.6-7.9): points inserted on an edge of the triangle turn it into a
 // fan from the opposite vertex; a triangle with two refined edges (a tile-corner triangle)
 // is split in the fixed border order W, S, E, N, the second split fanning the one

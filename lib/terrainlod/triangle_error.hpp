@@ -1,7 +1,7 @@
 #pragma once
 // Exact vertical L-infinity distance between one triangle of a coarse mesh (vertices on
-// DEM samples) and the reference surface (spec terrainlod 2.1: "evaluated exactly on the
-// overlay of the two triangulations"). The difference of two piecewise-linear functions is
+// DEM samples) and the reference surface (docs/terrainlod.md §1: computed exactly on the
+// overlay of the two triangulations). The difference of two piecewise-linear functions is
 // linear on every cell of their overlay, so its maximum is at an overlay vertex: a DEM
 // sample inside or on the triangle, or a crossing of a triangle edge with a grid line
 // (x = k, y = k) or a cell diagonal (x + y = k, x - y = k). All of these are visited.

@@ -42,28 +42,16 @@ FLAG_EXCEPTIONS=(
 
 KNOWN_VIOLATIONS=(
   # formats/facemodel still includes the face model type from lib/facefit (issue 20 moves it).
-  "formats/facemodel/import.hpp: formats-include: lib/facefit/model.hpp"
-  "formats/facemodel/landmarks_io.hpp: formats-include: lib/facefit/landmark_set.hpp"
-  "formats/facemodel/landmarks_io.hpp: formats-include: lib/facefit/synth.hpp"
-  "formats/facemodel/mmb.hpp: formats-include: lib/facefit/model.hpp"
   # A tool including another tool's files.
   # A test compiling a tool's source instead of linking fest_<tool>_app.
   # Tools whose command files are not yet the library fest_<tool>_app.
   # Messages in lib/ that name the tools' flags instead of the domain's terms.
   "lib/core/threads.cpp: flag-in-lib: --threads"
   "lib/core/volume.cpp: flag-in-lib: --frame"
-  "lib/facefit/landmark_set.cpp: flag-in-lib: --skip-unmapped"
-  "lib/facefit/model.cpp: flag-in-lib: --components"
-  "lib/facefit/model.cpp: flag-in-lib: --fix-basis"
-  "lib/facefit/synth.cpp: flag-in-lib: --resolution"
   "lib/hdr/bracket.cpp: flag-in-lib: --gamma"
   "lib/hdr/bracket.cpp: flag-in-lib: --noise"
   "lib/hdr/debevec.cpp: flag-in-lib: --lambda"
   "lib/hdr/debevec.cpp: flag-in-lib: --samples"
-  "lib/lemtrace/generate.cpp: flag-in-lib: --help"
-  "lib/lemtrace/generate.cpp: flag-in-lib: --jitter"
-  "lib/lemtrace/generate.cpp: flag-in-lib: --n"
-  "lib/lemtrace/tet_mesh.cpp: flag-in-lib: --split"
   "lib/sampling/chain1d.cpp: flag-in-lib: --edge"
   "lib/sampling/image_metrics.cpp: flag-in-lib: --spectrum"
   "lib/sampling/image_metrics.cpp: flag-in-lib: --zoneplate"
@@ -74,13 +62,6 @@ KNOWN_VIOLATIONS=(
   "lib/sampling/texture.cpp: flag-in-lib: --method"
   "lib/sampling/texture.cpp: flag-in-lib: --mip"
   "lib/sampling/texture.cpp: flag-in-lib: --uv"
-  "lib/terrainlod/pyramid_build.cpp: flag-in-lib: --height-quantum"
-  "lib/terrainlod/pyramid_build.cpp: flag-in-lib: --leaf-error"
-  "lib/terrainlod/pyramid_build.cpp: flag-in-lib: --z-quantum"
-  "lib/terrainlod/pyramid_plan.cpp: flag-in-lib: --error-fraction"
-  "lib/terrainlod/pyramid_plan.cpp: flag-in-lib: --texels"
-  "lib/terrainlod/pyramid_plan.cpp: flag-in-lib: --tile"
-  "lib/terrainlod/simplify.cpp: flag-in-lib: --max-error"
 )
 
 found="$WORK/found"

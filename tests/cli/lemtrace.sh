@@ -286,6 +286,11 @@ run lemtrace "$WORK/triangle.vtk" --seed-point 0.1,0.1,0.1 --vectors a
 expect_clean_failure 3 lemtrace
 expect_stderr_has "triangle \(VTK type 5\)"
 
+case_ "--split none refuses hexahedra, naming the flag"
+run lemtrace "$WORK/helix_hex.vtk" --seed-point 0.1,0.1,0.1 --split none
+expect_clean_failure 3 lemtrace
+expect_stderr_has "cell 0 is a VTK type 12 cell and --split none accepts only tetrahedra"
+
 case_ "non-finite vectors"
 run fconv "$WORK/ambiguous.vtk" --ascii -o "$WORK/finite.vtu"
 sed '0,/1 0 0 1 0 0/s//1 0 0 nan 0 0/' "$WORK/finite.vtu" >"$WORK/nan.vtu"

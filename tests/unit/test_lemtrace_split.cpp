@@ -115,7 +115,7 @@ TEST(LemtraceSplit, BadMeshesAreRefused) {
   expect_bad_input(p, out_of_range, "refers to point 9");
   RawCells hex;
   hex.add(12, {0, 1, 2, 3, 4, 5, 6, 0});
-  expect_bad_input(p, hex, "--split none", false);
+  expect_bad_input(p, hex, "only tetrahedra are accepted", false);
 }
 
 }  // namespace

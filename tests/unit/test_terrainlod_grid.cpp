@@ -105,7 +105,7 @@ TEST(TerrainlodPlan, TileMustBeAPowerOfTwo) {
     ADD_FAILURE() << "no error";
   } catch (const fest::Error& e) {
     EXPECT_EQ(e.status(), fest::Status::usage);
-    EXPECT_STREQ(e.what(), "--tile must be a power of two between 4 and 4096 (got 48)");
+    EXPECT_STREQ(e.what(), "tile size 48 is not a power of two between 4 and 4096");
   }
 }
 

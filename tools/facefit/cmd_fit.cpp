@@ -1,4 +1,4 @@
-// facefit fit: landmarks -> complete mesh (spec sections 2.4-2.7, 4).
+// facefit fit: landmarks -> complete mesh (docs/facefit.md §2-§4).
 
 #include <chrono>
 #include <algorithm>
@@ -9,8 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "common.hpp"
+#include "face_files.hpp"
 #include "core/error.hpp"
+#include "core/field_lines.hpp"
+#include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
 #include "facefit/fit.hpp"
@@ -24,11 +26,8 @@
 namespace fest::facefit_tool {
 
 using namespace fest;
-using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 facefit::FitOptions fit_options(const FitArgs& a) {
   facefit::FitOptions o;
@@ -62,6 +61,10 @@ facefit::Landmarks load_landmarks(const FitArgs& a, const std::string& path, con
   const auto entries = formats::read_landmarks(read_text(path), source, a.pts_origin);
   facefit::LandmarkMap map = model.landmarks;
   if (!a.map.empty()) map = read_map(a.map);
+  if (!a.skip_unmapped)  // the first unmapped id, named with the flag that would skip it
+    for (const auto& e : entries)
+      if (!e.by_vertex && map.find(e.id) == map.end())
+        throw bad_input("landmark id '{}' is not in the landmark map ({}:{}; --skip-unmapped ignores it)", e.id, source, e.line);
   std::size_t skipped = 0;
   auto lm = facefit::resolve_landmarks(entries, map, a.skip_unmapped, &skipped, source);
   if (skipped > 0) warn(fmt::format("{} landmark(s) not in the map were skipped ({})", skipped, source));
@@ -108,7 +111,7 @@ std::string coeffs_tsv(const facefit::FitResult& r, const facefit::Model& model)
   return out;
 }
 
-// Texture transfer (spec 2.7, the chapter's figure 1.1): each vertex projected with the
+// Texture transfer (docs/facefit.md §4, the chapter's figure 1.1): each vertex projected with the
 // fitted camera, tested against a depth buffer at the photo's resolution, coloured by a
 // bilinear sample of the photo; hidden vertices stay grey (128).
 fest::Mesh textured_mesh(const std::string& path, const facefit::Model& model, const facefit::FitResult& r,
@@ -169,26 +172,9 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
   std::string dir;
   if (const auto slash = a.batch.rfind('/'); slash != std::string::npos) dir = a.batch.substr(0, slash + 1);
   std::vector<std::pair<std::string, std::string>> jobs;
-  std::size_t pos = 0, line = 0;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string::npos) end = text.size();
-    std::string l = text.substr(pos, end - pos);
-    pos = end + 1;
-    ++line;
-    const auto hash = l.find('#');
-    if (hash != std::string::npos) l.resize(hash);
-    std::vector<std::string> f;
-    std::size_t i = 0;
-    while (i < l.size()) {
-      while (i < l.size() && std::isspace(static_cast<unsigned char>(l[i]))) ++i;
-      std::size_t j = i;
-      while (j < l.size() && !std::isspace(static_cast<unsigned char>(l[j]))) ++j;
-      if (j > i) f.push_back(l.substr(i, j - i));
-      i = j;
-    }
-    if (f.empty()) continue;
-    if (f.size() != 2) throw bad_input("batch list: expected 'landmarks output' ({}:{})", a.batch, line);
+  for (const FieldLine& l : field_lines(text, true)) {
+    const auto& f = l.fields;
+    if (f.size() != 2) throw bad_input("batch list: expected 'landmarks output' ({}:{})", a.batch, l.number);
     auto rel = [&](const std::string& p) { return p[0] == '/' ? p : dir + p; };
     jobs.emplace_back(rel(f[0]), rel(f[1]));
   }
@@ -222,9 +208,11 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
 }  // namespace
 
 int run_fit(const FitArgs& a) {
-  auto t0 = Clock::now();
+  auto t0 = SteadyClock::now();
   facefit::FitOptions opt = fit_options(a);
   facefit::Model full = load_model(a.model, a.fix_basis);
+  if (a.components > 0 && static_cast<std::size_t>(a.components) > full.components)
+    throw usage_error("--components {} is outside 1..{} (the model's components)", a.components, full.components);
   const facefit::Model model = a.components > 0 ? facefit::truncated(full, static_cast<std::size_t>(a.components)) : full;
   const double ms_load = ms_since(t0);
   if (!a.full_shape.empty()) return run_full_shape(a, model);
@@ -243,7 +231,7 @@ int run_fit(const FitArgs& a) {
     if (model.dims != 3 || model.triangles.empty()) throw usage_error("--texture needs a 3-D model with triangles");
     textured = textured_mesh(a.texture, model, r, shape_out, &visible);
   }
-  t0 = Clock::now();
+  t0 = SteadyClock::now();
   if (!a.coeffs.empty()) write_output(a.coeffs, coeffs_tsv(r, model));
   if (!a.uncertainty.empty()) {
     std::string text = "vertex\tsigma\n";

@@ -3,10 +3,12 @@
 // these from flags; everything else in this folder is the fest_facefit_app library.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "facefit/fit.hpp"
+#include "formats/detect.hpp"
 
 namespace fest::facefit_tool {
 
@@ -25,6 +27,16 @@ struct Eta {
 // "2", "auto=gcv", "auto=evidence" -> Eta; a usage error otherwise.
 Eta parse_eta(const std::string& text);
 
+// --to of fit and sample: a mesh format; plya is ASCII PLY. Unset: from -o (binary PLY on
+// standard output).
+struct MeshOutput {
+  formats::OutputFormat format;
+  bool ascii = false;       // plya
+  bool direct_ply = false;  // ply: binary PLY written straight from the float32 arrays
+};
+// The word of --to -> MeshOutput; a usage error for a word that is not a mesh format.
+MeshOutput parse_mesh_output(const std::string& word);
+
 struct FitArgs {
   std::string model, landmarks = "-", map;
   facefit::CameraKind camera = facefit::CameraKind::similarity;
@@ -34,7 +46,8 @@ struct FitArgs {
   Space space = Space::model;
   std::string texture;
   facefit::NuisanceKind nuisance = facefit::NuisanceKind::free;
-  std::string full_shape, coeffs, report, batch, output = "-", to, uncertainty;
+  std::string full_shape, coeffs, report, batch, output = "-", uncertainty;
+  std::optional<MeshOutput> to;
   double scale = 1, yaw = 0, noise_sigma = 0, nuisance_sigma = 100, pts_origin = 1;
   bool noise_sigma_given = false, eta_given = false, skip_unmapped = false, fix_basis = false;
   int components = 0, iterations = 5, threads = 0;
@@ -65,7 +78,8 @@ struct InfoArgs {
 int run_info(const InfoArgs& a);
 
 struct SampleArgs {
-  std::string model, coeffs, output = "-", to;
+  std::string model, coeffs, output = "-";
+  std::optional<MeshOutput> to;
   int random = 0;
   double sigma_scale = 1;
   unsigned long long seed = 1;

@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
   fest::cli::enum_words(f->add_option("--space", fit.space, "Output vertices in model space (mm) or image space (u, v px, depth)"), kSpaces)->default_str("model");
   f->add_option("--batch", fit.batch, "File of 'landmarks output' lines; output .tsv = coefficients only");
   f->add_option("-o,--output", fit.output, "Mesh output (- = stdout, binary PLY)")->default_val("-");
-  f->add_option("--to", fit.to, "Mesh format: ply | plya | obj | off");
+  std::string fit_to, sample_to;
+  f->add_option("--to", fit_to, "Mesh format: ply | plya | obj | off");
   f->add_flag("--skip-unmapped", fit.skip_unmapped, "Ignore landmark ids the map lacks (warn)");
   f->add_option("--pts-origin", fit.pts_origin, "Subtracted from .pts coordinates (iBUG: 1)")->default_val(1);
   f->add_flag("--fix-basis", fit.fix_basis, "Renormalise basis columns that are not unit length");
@@ -102,7 +103,7 @@ int main(int argc, char** argv) {
   s->add_option("--sigma-scale", sample.sigma_scale, "Scale of random coefficients")->default_val(1);
   s->add_option("--seed", sample.seed, "Random seed")->default_val(1);
   s->add_option("-o,--output", sample.output, "Mesh (one face) or folder (several)")->default_val("-");
-  s->add_option("--to", sample.to, "Mesh format: ply | plya | obj | off");
+  s->add_option("--to", sample_to, "Mesh format: ply | plya | obj | off");
 
   ProjectArgs proj;
   auto* p = app.add_subcommand("project", "Landmarks of a face under a scaled orthographic camera");
@@ -153,12 +154,16 @@ int main(int argc, char** argv) {
       fit.eta_given = eta->count() > 0;
       fit.noise_sigma_given = noise->count() > 0;
       fit.eta = parse_eta(eta_text);
+      if (!fit_to.empty()) fit.to = parse_mesh_output(fit_to);
       return run_fit(fit);
     }
     if (*b) return run_build(build);
     if (*c) return run_convert(conv);
     if (*i) return run_info(info);
-    if (*s) return run_sample(sample);
+    if (*s) {
+      if (!sample_to.empty()) sample.to = parse_mesh_output(sample_to);
+      return run_sample(sample);
+    }
     if (*p) return run_project(proj);
     if (*e) return run_eval(ev);
     if (*w) return run_sweep(sw);

@@ -24,7 +24,7 @@ struct LoadedGrid {
   std::string kind;        // gen kind, or empty
 };
 
-// Picks the vector array (spec §4: --vectors NAME, else the active vectors, else the only
+// Picks the vector array (lemtrace(1): --vectors NAME, else the active vectors, else the only
 // 3-component point array) and converts unstructured, image and structured grids.
 // Throws bad_input naming what is missing, ambiguous or non-finite.
 LoadedGrid grid_from_dataset(const Dataset& dataset, const std::string& vectors_name);

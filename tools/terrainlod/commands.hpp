@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/detect.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/reference_surface.hpp"
 #include "terrainlod/simplify.hpp"
@@ -24,6 +25,9 @@ const char* reference_name(terrainlod::Reference r);
 const char* coding_name(Coding c);
 // "L/X/Y" (X east, Y north, from the south-west) -> a tile id; a usage error otherwise.
 terrainlod::TileId parse_tile(const std::string& text);
+// -o and --to -> the mesh format written (usage error for anything but a mesh format):
+// --to, else standard output's PLY, else the file's extension.
+formats::OutputFormat mesh_output(const std::string& path, const std::optional<formats::OutputFormat>& to);
 
 // How a DEM file becomes heights on a grid (docs/terrainlod.md).
 struct DemArgs {
@@ -39,7 +43,7 @@ struct SimplifyArgs {
   DemArgs dem;
   double max_error = -1;
   std::string output = "-";
-  std::string to;
+  std::optional<formats::OutputFormat> to;  // --to; unset = from -o
   std::string report;
   bool quiet = false;
   terrainlod::StartRule start = terrainlod::StartRule::rtin;  // engine start mesh
@@ -67,7 +71,8 @@ struct BuildArgs {
   int threads = 0;
   std::string report;
   bool progress = false;
-  std::string texture;               // image file, "hillshade", or empty: no textures
+  std::string texture;               // image file, or empty: no image texture
+  bool hillshade = false;            // --texture hillshade: textures shaded from the DEM
   std::string texture_mip;           // or a prefiltered pyramid PREFIX_<k>.png (resample mip build)
   TextureFormat texture_format = TextureFormat::png;  // png (lossless) or jpeg
   int texture_quality = 90;          // JPEG quality
@@ -78,7 +83,7 @@ struct DecodeArgs {
   terrainlod::TileId tile;
   int mask = 0;
   std::string output = "-";
-  std::string to;
+  std::optional<formats::OutputFormat> to;  // --to; unset = from -o
   std::string texture;    // also write the tile's stored texture image here
 };
 
@@ -87,7 +92,7 @@ struct ExtractArgs {
   std::string camera;     // JSON object
   std::string path;       // JSON lines, one camera per frame
   std::string output = "-";
-  std::string to;
+  std::optional<formats::OutputFormat> to;  // --to; unset = from -o
   double tau = 0;         // 0 = the camera's tau_px (default 1)
   std::string report;
   std::string png;        // software rendering of the mesh, textured or tiles coloured by level

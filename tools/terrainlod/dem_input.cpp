@@ -101,4 +101,21 @@ LoadedDem load_dem(const DemArgs& args) {
   return d;
 }
 
+nlohmann::json dem_json(const LoadedDem& dem) {
+  const auto& r = dem.raster;
+  nlohmann::json j = {{"format", r.format},
+                      {"width", r.width},
+                      {"height", r.height},
+                      {"integer", r.integer},
+                      {"georeferenced", r.georeferenced},
+                      {"origin", {dem.origin_x, dem.origin_y}},
+                      {"cell_size", {dem.dx, dem.dy}},
+                      {"nodata_samples", dem.condition.nodata},
+                      {"z_min", dem.condition.z_min},
+                      {"z_max", dem.condition.z_max}};
+  j["nodata_value"] = r.nodata && std::isfinite(*r.nodata) ? nlohmann::json(*r.nodata) : nlohmann::json(nullptr);
+  j["crs"] = r.crs.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.crs);
+  return j;
+}
+
 }  // namespace fest::terrainlod_tool

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "commands.hpp"
 #include "formats/dem/dem_io.hpp"
 #include "terrainlod/height_grid.hpp"
@@ -21,5 +23,7 @@ struct LoadedDem {
 
 LoadedDem load_dem(const DemArgs& args);
 terrainlod::DiagonalRule diagonal_rule(const std::string& name);
+// The DEM as the reports describe it: format, size, georeference, nodata, height range.
+nlohmann::json dem_json(const LoadedDem& dem);
 
 }  // namespace fest::terrainlod_tool

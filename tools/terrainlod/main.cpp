@@ -3,6 +3,7 @@
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
+#include <optional>
 #include <utility>
 #include <vector>
 #include <string>
@@ -52,7 +53,8 @@ int main(int argc, char** argv) {
   s->add_option("--max-error", simplify.max_error, "Largest vertical distance from the DEM surface (height units)")
       ->required();
   s->add_option("-o,--output", simplify.output, "Mesh file (.ply .obj .off .stl .drc); - = standard output (PLY)");
-  s->add_option("--to", simplify.to, "Output format: ply, obj, off, stl or drc");
+  std::string simplify_to, decode_to, extract_to;
+  s->add_option("--to", simplify_to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
   fest::cli::enum_words(s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)"), kStarts);
 
@@ -60,7 +62,8 @@ int main(int argc, char** argv) {
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
   add_dem_options(b, build.dem);
   b->add_option("-o,--output", build.output, "PYRAMID.tlp archive, or a directory (pyramid.json + L/X/Y.tlt + L/X/Y.png); written atomically")->required();
-  auto* tex_opt = b->add_option("--texture", build.texture,
+  std::string texture;  // an image file or the word hillshade
+  auto* tex_opt = b->add_option("--texture", texture,
                 "Texture image covering the DEM (its edges on the outer samples, or one pixel per sample), or 'hillshade'");
   b->add_option("--texture-mip", build.texture_mip,
                 "Prefiltered texture pyramid PREFIX_<k>.png (k = 0 full size, as `resample mip build` writes) instead of --texture")
@@ -92,7 +95,7 @@ int main(int argc, char** argv) {
   d->add_option("--tile", decode_tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
   d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer");
   d->add_option("-o,--output", decode.output, "Mesh file; - = standard output (PLY)");
-  d->add_option("--to", decode.to, "Output format: ply, obj, off, stl or drc");
+  d->add_option("--to", decode_to, "Output format: ply, obj, off, stl or drc");
   d->add_option("--texture", decode.texture, "Also write the tile's texture, as stored (PNG or JPEG)");
 
   ExtractArgs extract;
@@ -104,7 +107,7 @@ int main(int argc, char** argv) {
   cam_opt->excludes(path_opt);
   path_opt->excludes(cam_opt);
   x->add_option("-o,--output", extract.output, "Mesh file; - = standard output (PLY); faces coloured by tile level");
-  x->add_option("--to", extract.to, "Output format: ply, obj, off, stl or drc");
+  x->add_option("--to", extract_to, "Output format: ply, obj, off, stl or drc");
   x->add_option("--tau", extract.tau, "Pixels per texel threshold (overrides the camera's tau_px)");
   x->add_option("--report", extract.report, "JSON report: tiles per level, triangles, bytes touched, times");
   x->add_option("--png", extract.png, "Also render the mesh as the camera sees it (textured, or tiles coloured by level)");
@@ -136,13 +139,28 @@ int main(int argc, char** argv) {
   st->add_option("--error-fraction", stats.error_fraction, "Allowed error per tile in texels (f)");
 
   return fest::cli::run(app, argc, argv, [&] {
-    if (s->parsed()) return run_simplify(simplify);
-    if (b->parsed()) return run_build(build);
+    // Format names become formats when the command runs (usage errors naming the word).
+    auto format = [](const std::string& name) {
+      return name.empty() ? std::nullopt : std::optional<fest::formats::OutputFormat>(fest::formats::output_format_from_name(name));
+    };
+    if (s->parsed()) {
+      simplify.to = format(simplify_to);
+      return run_simplify(simplify);
+    }
+    if (b->parsed()) {
+      build.hillshade = texture == "hillshade";
+      if (!build.hillshade) build.texture = texture;
+      return run_build(build);
+    }
     if (d->parsed()) {
       decode.tile = parse_tile(decode_tile);
+      decode.to = format(decode_to);
       return run_decode(decode);
     }
-    if (x->parsed()) return run_extract(extract);
+    if (x->parsed()) {
+      extract.to = format(extract_to);
+      return run_extract(extract);
+    }
     if (v->parsed()) return run_verify(verify);
     if (q->parsed()) return run_export_qm(qm);
     return run_stats(stats);

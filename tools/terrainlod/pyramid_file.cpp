@@ -242,7 +242,7 @@ const terrainlod::Tile& PyramidFile::tile(const terrainlod::TileId& id) {
   auto it = cache_.find(id);
   if (it != cache_.end()) return it->second;
   const std::string_view b = tile_bytes(id);
-  // A progressive tile is coded against its decoded parent (spec 2.8): decode the chain
+  // A progressive tile is coded against its decoded parent (docs/terrainlod.md §4): decode the chain
   // up to the nearest cached or standalone ancestor first (each one cached; std::map
   // nodes stay put while others are inserted).
   const terrainlod::Tile* parent = parent_of(id);

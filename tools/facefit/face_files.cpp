@@ -1,4 +1,4 @@
-#include "common.hpp"
+#include "face_files.hpp"
 
 #include <cstdlib>
 
@@ -23,11 +23,53 @@ std::string model_path(const std::string& option) {
   throw usage_error("no model: give -m MODEL.mmb or set FACEFIT_MODEL");
 }
 
+namespace {
+
+// The library refuses a basis whose columns are not unit length in its own terms; when
+// renormalising would have accepted the model, the message also names the flag that does.
+[[noreturn]] void rethrow_with_fix_basis_hint(const Error& e, bool fix_would_pass) {
+  if (!fix_would_pass) throw e;
+  throw Error(e.status(), std::string(e.what()) + "; --fix-basis renormalises it");
+}
+
+}  // namespace
+
+facefit::CheckResult check_model_naming_flags(facefit::Model& m, bool fix_basis) {
+  try {
+    return facefit::check_model(m, fix_basis);
+  } catch (const Error& e) {
+    if (fix_basis || e.status() != Status::bad_input) throw;
+    facefit::Model copy = m;  // renormalising gives the copy its own basis storage
+    bool fix_would_pass = true;
+    try {
+      facefit::check_model(copy, true);
+    } catch (const Error&) {
+      fix_would_pass = false;
+    }
+    rethrow_with_fix_basis_hint(e, fix_would_pass);
+  }
+}
+
 facefit::Model load_model(const std::string& option, bool fix_basis) {
   std::string warnings;
   formats::MmbReadOptions o;
   o.fix_basis = fix_basis;
-  facefit::Model m = formats::read_mmb(model_path(option), o, &warnings);
+  const std::string path = model_path(option);
+  facefit::Model m;
+  try {
+    m = formats::read_mmb(path, o, &warnings);
+  } catch (const Error& e) {
+    if (fix_basis || e.status() != Status::bad_input) throw;
+    bool fix_would_pass = true;
+    try {
+      formats::MmbReadOptions fix;
+      fix.fix_basis = true;
+      formats::read_mmb(path, fix);
+    } catch (const Error&) {
+      fix_would_pass = false;
+    }
+    rethrow_with_fix_basis_hint(e, fix_would_pass);
+  }
   if (!warnings.empty()) warn(warnings.substr(0, warnings.size() - 2));
   return m;
 }
@@ -63,28 +105,37 @@ Eigen::VectorXd read_shape(const std::string& path, std::vector<std::array<std::
   return v;
 }
 
-void write_mesh_to(const Mesh& mesh, const std::string& path, const std::string& to) {
+MeshOutput parse_mesh_output(const std::string& word) {
+  MeshOutput m;
+  m.format = formats::output_format_from_name(word == "plya" ? "ply" : word);
+  if (formats::kind_of(m.format.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", word);
+  m.ascii = word == "plya";
+  m.direct_ply = word == "ply" || word == ".ply";
+  return m;
+}
+
+void write_mesh_to(const Mesh& mesh, const std::string& path, const std::optional<MeshOutput>& to) {
   formats::OutputFormat out{formats::Format::ply, false};
-  if (!to.empty()) {
-    out = formats::output_format_from_name(to == "plya" ? "ply" : to);
+  if (to) {
+    out = to->format;
   } else if (!is_stdio(path)) {
     out = formats::output_format_from_path(path);
   }
-  if (formats::kind_of(out.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", to);
+  if (formats::kind_of(out.format) != formats::Kind::mesh) throw usage_error("--to {}: not a mesh format", "");
   formats::MeshWriteOptions w;
-  w.ascii = to == "plya";
+  w.ascii = to && to->ascii;
   formats::store_output(path, formats::write_mesh(mesh, out.format, w), out.gzip);
 }
 
-bool writes_binary_ply(const std::string& path, const std::string& to) {
-  if (!to.empty()) return to == "ply" || to == ".ply";
+bool writes_binary_ply(const std::string& path, const std::optional<MeshOutput>& to) {
+  if (to) return to->direct_ply;
   if (is_stdio(path)) return true;
   const formats::OutputFormat out = formats::output_format_from_path(path);
   return out.format == formats::Format::ply && !out.gzip;
 }
 
 void write_shape(const Eigen::VectorXd& shape, int dims, const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                 const std::string& path, const std::string& to) {
+                 const std::string& path, const std::optional<MeshOutput>& to) {
   if (!writes_binary_ply(path, to)) return write_mesh_to(shape_to_mesh(shape, dims, triangles), path, to);
   const std::size_t p = static_cast<std::size_t>(shape.size() / dims);
   std::vector<float> xyz(3 * p, 0.0f);
