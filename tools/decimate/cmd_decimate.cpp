@@ -1,4 +1,4 @@
-#include "decimate_app.hpp"
+#include "commands.hpp"
 
 #include <chrono>
 #include <sstream>
