@@ -8,7 +8,7 @@
 #include "formats/dataset/dataset_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -32,4 +32,4 @@ void compare_datasets(const Input& ia, const Input& ib, const CompareOptions& op
   require_main(m, "max_abs", opt);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -6,7 +6,7 @@
 #include "formats/table/table_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -24,4 +24,4 @@ void compare_tables(const Input& ia, const Input& ib, const CompareOptions& opt,
   require_main(m, "max_abs", opt);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

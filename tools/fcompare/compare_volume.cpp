@@ -8,7 +8,7 @@
 #include "formats/volume/volume_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -34,4 +34,4 @@ void compare_volumes(const Input& ia, const Input& ib, const CompareOptions& opt
   m.require("origin_diff", "<=", 1e-6);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

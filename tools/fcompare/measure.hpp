@@ -7,7 +7,7 @@
 #include "compare/checks.hpp"
 #include "formats/input.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 // Measures a against b (both of one kind) into m, with that kind's checks.
 void measure(const formats::Input& a, const formats::Input& b, const CompareOptions& o, compare::Metrics& m);
@@ -24,4 +24,4 @@ void compare_json(const formats::Input& a, const formats::Input& b, const Compar
 // -t on the family replaces (see compare::Metrics).
 void require_main(compare::Metrics& m, const std::string& metric, const CompareOptions& o);
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -10,7 +10,7 @@
 #include "devices/open_devices.hpp"
 #include "station.hpp"
 
-namespace fest::lights {
+namespace fest::lights_tool {
 
 namespace {
 
@@ -66,4 +66,4 @@ int pulse_command(const StationOptions& s, const PulseOptions& o) { return lit_f
 
 int hold_command(const StationOptions& s, const HoldOptions& o) { return lit_for(s, o.ids, o.seconds > 0 ? o.seconds : -1); }
 
-}  // namespace fest::lights
+}  // namespace fest::lights_tool

@@ -6,7 +6,7 @@
 #include "devices/open_devices.hpp"
 #include "station.hpp"
 
-namespace fest::lights {
+namespace fest::lights_tool {
 
 int on_command(const StationOptions& s, const std::vector<std::string>& ids) {
   const std::vector<devices::LightConfig> lights = station_lights(s);
@@ -31,4 +31,4 @@ int only_command(const StationOptions& s, const std::string& id) {
   return 0;
 }
 
-}  // namespace fest::lights
+}  // namespace fest::lights_tool

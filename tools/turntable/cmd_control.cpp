@@ -3,7 +3,7 @@
 #include "commands.hpp"
 #include "device.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 int stop_command(const DeviceOptions& d, bool now) {
   const OpenTurntable t(d);
@@ -23,4 +23,4 @@ int enable_command(const DeviceOptions& d, bool enable) {
   return 0;
 }
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

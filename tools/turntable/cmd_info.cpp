@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "device.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 int info_command(const DeviceOptions& d) {
   const OpenTurntable t(d);
@@ -32,4 +32,4 @@ int status_command(const DeviceOptions& d) {
   return 0;
 }
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool
