@@ -12,8 +12,7 @@ using namespace fest::formats;
 using fest::compare::Metrics;
 
 void compare_images(const Input& ia, const Input& ib, const CompareOptions& opt, Metrics& m) {
-  const Image a = parse(ia, read_image);
-  const Image b = parse(ib, read_image);
+  const auto [a, b] = parse_both(ia, ib, read_image);
   const auto e = compare::image_error(a.pixels, b.pixels);
   m.set("rmse", e.all.rmse);
   m.set("psnr", e.all.psnr);
