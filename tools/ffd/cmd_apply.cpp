@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -13,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "ffd/joints.hpp"
@@ -27,7 +27,6 @@
 namespace fest::ffd_tool {
 
 int run_apply(const ApplyOptions& o) {
-  using Clock = std::chrono::steady_clock;
   const int threads = resolve_threads(o.threads);
   const ffd::Outside outside = outside_of(o.outside);
   if (o.normals != "recompute" && o.normals != "jacobian") throw usage_error("--normals: unknown '{}' (recompute, jacobian)", o.normals);
@@ -79,7 +78,7 @@ int run_apply(const ApplyOptions& o) {
                         {"rank", js.rank}, {"exact", js.exact}};
   }
   const ffd::Deformer deformer(lattice);
-  const auto t0 = Clock::now();
+  const Stopwatch watch;
   nlohmann::json per_object = nlohmann::json::array();
   std::vector<std::string> bytes(objects.size());
   for (std::size_t oi = 0; oi < objects.size(); ++oi) {
@@ -133,7 +132,7 @@ int run_apply(const ApplyOptions& o) {
     per_object.push_back(r);
   }
   report["objects"] = per_object;
-  report["ms"] = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  report["ms"] = watch.ms();
   for (std::size_t oi = 0; oi < objects.size(); ++oi) {
     const std::string path = object_output(o.output, objects[oi].name, objects.size());
     formats::store_output(path, bytes[oi], output_format(o.to, path, objects[oi].format).gzip);

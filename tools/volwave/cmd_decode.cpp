@@ -1,12 +1,11 @@
 // volwave decode (.vw -> volume, possibly from a truncated file).
 
-#include <chrono>
-
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "input_location.hpp"
@@ -18,9 +17,9 @@ namespace fest::volwave_tool {
 int decode_command(const DecodeOptions& o) {
   if (o.chunks == 0) throw usage_error("--chunks must be at least 1");
   const std::string bytes = read_input(o.input);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const wavelet::DecodeResult d = named(o.input, [&] { return wavelet::decode_vw(bytes, resolve_threads(o.threads), o.chunks); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = watch.seconds();
   write_any_volume(d.volume, o.output, o.to);
   if (d.truncated && !o.quiet)
     warn("volwave", fmt::format("truncated file: decoded {} of {} chunks, a coarser volume with max error {} and RMS error {} "
