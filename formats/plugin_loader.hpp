@@ -20,4 +20,12 @@ struct PluginModule {
 // library it needs cannot be loaded; a later call tries again.
 void* plugin_entry(const PluginModule& module);
 
+// The table the module's entry function returns (every fest plugin exports one function
+// `const Table* entry(void)`), with plugin_entry's loading and errors.
+template <class Table>
+const Table* plugin_table(const PluginModule& module) {
+  using Entry = const Table* (*)();
+  return reinterpret_cast<Entry>(plugin_entry(module))();
+}
+
 }  // namespace fest::formats

@@ -12,8 +12,7 @@ const VtkPlugin& vtk_plugin() {
   // modules): a plugin that does not load almost always means a missing libvtk.
   static constexpr PluginModule kModule{"libfest_vtk_plugin.so", "fest_vtk_plugin_table", "VTK dataset support",
                                         "libvtk9.1"};
-  using Entry = const FestVtkPluginTable* (*)();
-  const FestVtkPluginTable* table = reinterpret_cast<Entry>(plugin_entry(kModule))();
+  const FestVtkPluginTable* table = plugin_table<FestVtkPluginTable>(kModule);
   // The table carries fest::Dataset across: a module built from another version of
   // core/dataset.hpp must not be called.
   if (table->abi != FEST_VTK_PLUGIN_ABI || table->layout != sizeof(Dataset) * 65536 + sizeof(DataArray))

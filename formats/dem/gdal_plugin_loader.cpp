@@ -10,8 +10,7 @@ const GdalPlugin& gdal_plugin() {
   // libgdal (the plugin itself ships with fest).
   static constexpr PluginModule kModule{"libfest_gdal_plugin.so", "fest_gdal_plugin_table", "GDAL raster support",
                                         "libgdal32"};
-  using Entry = const FestGdalPluginTable* (*)();
-  const FestGdalPluginTable* table = reinterpret_cast<Entry>(plugin_entry(kModule))();
+  const FestGdalPluginTable* table = plugin_table<FestGdalPluginTable>(kModule);
   if (table->abi != FEST_GDAL_PLUGIN_ABI)
     throw io_error("GDAL raster support is not available (libfest_gdal_plugin.so is from another fest version)");
   static const GdalPlugin plugin{table->open_raster, table->free_raster};

@@ -17,15 +17,13 @@ const Table& checked(const Table* table, const char* file) {
 
 const TiffCodec& tiff_codec() {
   static constexpr PluginModule kModule{"libfest_tiff_plugin.so", "fest_tiff_codec_table", "TIFF support", "libtiff6"};
-  using Entry = const TiffCodec* (*)();
-  return checked(reinterpret_cast<Entry>(plugin_entry(kModule))(), kModule.file);
+  return checked(plugin_table<TiffCodec>(kModule), kModule.file);
 }
 
 const ExrCodec& exr_codec() {
   static constexpr PluginModule kModule{"libfest_exr_plugin.so", "fest_exr_codec_table", "OpenEXR support",
                                         "libopenexr-3-1-30"};
-  using Entry = const ExrCodec* (*)();
-  return checked(reinterpret_cast<Entry>(plugin_entry(kModule))(), kModule.file);
+  return checked(plugin_table<ExrCodec>(kModule), kModule.file);
 }
 
 }  // namespace fest::formats::image_detail

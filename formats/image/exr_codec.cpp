@@ -71,14 +71,55 @@ std::vector<const char*> channel_names(int n) {
   }
 }
 
+// Opens the EXR file held in `bytes` and hands it to `read`; what OpenEXR throws is bad
+// input ("EXR data: ..."), fest's own errors pass unchanged.
+template <class Read>
+auto read_exr_file(std::string_view bytes, Read&& read) {
+  try {
+    MemoryInput stream(bytes);
+    Imf::InputFile file(stream);
+    return read(file);
+  } catch (const fest::Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw bad_input("EXR data: {}", e.what());
+  }
+}
+
+// Reads the whole data window of `file` with `frame` (float slices into an image of
+// that window's size).
+void read_window(Imf::InputFile& file, const Imath::Box2i& window, const Imf::FrameBuffer& frame) {
+  file.setFrameBuffer(frame);
+  file.readPixels(window.min.y, window.max.y);
+}
+
+// Writes a ZIP-compressed EXR of width x height to memory: `describe(header, frame)`
+// adds the channels and attributes to the header and their slices to the frame buffer.
+// ZIP is lossless and deterministic; it compresses 16 lines at a time. What OpenEXR
+// throws is a runtime failure of the writer.
+template <class Describe>
+std::string write_exr_file(int width, int height, Describe&& describe) {
+  MemoryOutput stream;
+  try {
+    Imf::Header header(width, height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::FrameBuffer frame;
+    describe(header, frame);
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(frame);
+    file.writePixels(height);
+  } catch (const std::exception& e) {
+    throw runtime_failure("EXR writer: {}", e.what());
+  }
+  return stream.take();
+}
+
 }  // namespace
 
 cv::Mat decode_exr(std::string_view bytes) {
   const ExrLayout layout = read_exr_layout(bytes);
   const ImageHeader& h = layout.header;
-  try {
-    MemoryInput stream(bytes);
-    Imf::InputFile file(stream);
+  return read_exr_file(bytes, [&](Imf::InputFile& file) {
     // OpenEXR parsed the header itself; it must agree with ours, which sized the image.
     const Imath::Box2i window = file.header().dataWindow();
     if (window.min.x != layout.data_window[0] || window.min.y != layout.data_window[1] ||
@@ -93,29 +134,20 @@ cv::Mat decode_exr(std::string_view bytes) {
         throw bad_input("EXR header: inconsistent channel list (no '{}')", name);
       frame.insert(name, Imf::Slice::Make(Imf::FLOAT, out.ptr<float>() + c, window, x_stride, x_stride * h.width));
     }
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
+    read_window(file, window, frame);
     return out;
-  } catch (const fest::Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw bad_input("EXR data: {}", e.what());
-  }
+  });
 }
 
 std::string encode_exr(const cv::Mat& pixels, bool half) {
   const std::vector<const char*> names = channel_names(pixels.channels());
   const cv::Mat continuous = pixels.isContinuous() ? pixels : pixels.clone();
-  MemoryOutput stream;
-  try {
-    Imf::Header header(continuous.cols, continuous.rows);
-    // ZIP is lossless and deterministic; it compresses 16 lines at a time.
-    header.compression() = Imf::ZIP_COMPRESSION;
+  std::vector<Imath::half> halves;
+  return write_exr_file(continuous.cols, continuous.rows, [&](Imf::Header& header, Imf::FrameBuffer& frame) {
     for (const char* name : names) header.channels().insert(name, Imf::Channel(half ? Imf::HALF : Imf::FLOAT));
     // OutputFile does not convert float slices to half channels, so halves are made
     // here (Imath rounds to nearest, ties to even).
     const std::size_t samples = continuous.total() * names.size();
-    std::vector<Imath::half> halves;
     if (half) {
       halves.resize(samples);
       const float* from = continuous.ptr<float>();
@@ -124,17 +156,10 @@ std::string encode_exr(const cv::Mat& pixels, bool half) {
     const std::size_t sample_size = half ? sizeof(Imath::half) : sizeof(float);
     char* base = half ? reinterpret_cast<char*>(halves.data()) : const_cast<char*>(continuous.ptr<char>());
     const std::size_t x_stride = sample_size * names.size();
-    Imf::FrameBuffer frame;
     for (std::size_t c = 0; c < names.size(); ++c)
       frame.insert(names[c], Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * sample_size, x_stride,
                                         x_stride * std::size_t(continuous.cols)));
-    Imf::OutputFile file(stream, header);
-    file.setFrameBuffer(frame);
-    file.writePixels(continuous.rows);
-  } catch (const std::exception& e) {
-    throw runtime_failure("EXR writer: {}", e.what());
-  }
-  return stream.take();
+  });
 }
 
 }  // namespace fest::formats::image_detail
@@ -165,18 +190,14 @@ std::string exr_write_with_extras(const cv::Mat& rgb, const ExrExtras& extras, b
       throw bad_input("EXR writer: channel '{}' must be one float plane of the image's size", name);
     planes.emplace_back(name, m.isContinuous() ? m : m.clone());
   }
-  MemoryOutput stream;
-  try {
-    Imf::Header header(rgb.cols, rgb.rows);
-    header.compression() = Imf::ZIP_COMPRESSION;
+  std::vector<std::vector<Imath::half>> halves(planes.size());
+  return write_exr_file(rgb.cols, rgb.rows, [&](Imf::Header& header, Imf::FrameBuffer& frame) {
     if (extras.srgb_chromaticities) Imf::addChromaticities(header, Imf::Chromaticities());
     for (const auto& [k, v] : extras.strings) header.insert(k, Imf::StringAttribute(v));
     for (const auto& [k, v] : extras.doubles) header.insert(k, Imf::DoubleAttribute(v));
     for (const auto& [k, v] : extras.float_vectors) header.insert(k, Imf::FloatVectorAttribute(v));
     const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
     for (const auto& p : planes) header.channels().insert(p.first, Imf::Channel(type));
-    std::vector<std::vector<Imath::half>> halves(planes.size());
-    Imf::FrameBuffer frame;
     for (std::size_t c = 0; c < planes.size(); ++c) {
       const float* from = planes[c].second.ptr<float>();
       if (half) {
@@ -188,43 +209,28 @@ std::string exr_write_with_extras(const cv::Mat& rgb, const ExrExtras& extras, b
                                                  sizeof(float), sizeof(float) * std::size_t(rgb.cols)));
       }
     }
-    Imf::OutputFile file(stream, header);
-    file.setFrameBuffer(frame);
-    file.writePixels(rgb.rows);
-  } catch (const std::exception& e) {
-    throw runtime_failure("EXR writer: {}", e.what());
-  }
-  return stream.take();
+  });
 }
 
 cv::Mat exr_read_channel(std::string_view bytes, const std::string& name) {
   read_exr_layout(bytes);  // the same sanity checks as read_image
-  try {
-    MemoryInput stream(bytes);
-    Imf::InputFile file(stream);
+  return read_exr_file(bytes, [&](Imf::InputFile& file) {
     if (!file.header().channels().findChannel(name)) throw bad_input("EXR data: no channel '{}'", name);
     const Imath::Box2i window = file.header().dataWindow();
     const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
     cv::Mat out(height, width, CV_32FC1, cv::Scalar(0));
     Imf::FrameBuffer frame;
     frame.insert(name, Imf::Slice::Make(Imf::FLOAT, out.ptr<float>(), window, sizeof(float), sizeof(float) * std::size_t(width)));
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
+    read_window(file, window, frame);
     return out;
-  } catch (const fest::Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw bad_input("EXR data: {}", e.what());
-  }
+  });
 }
 
 ExrExtras exr_read_attributes(std::string_view bytes) {
   read_exr_layout(bytes);
-  ExrExtras out;
-  out.srgb_chromaticities = false;
-  try {
-    MemoryInput stream(bytes);
-    Imf::InputFile file(stream);
+  return read_exr_file(bytes, [](Imf::InputFile& file) {
+    ExrExtras out;
+    out.srgb_chromaticities = false;
     for (auto it = file.header().begin(); it != file.header().end(); ++it) {
       if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) out.strings[it.name()] = s->value();
       else if (auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&it.attribute())) out.doubles[it.name()] = d->value();
@@ -232,10 +238,8 @@ ExrExtras exr_read_attributes(std::string_view bytes) {
       else if (auto* v = dynamic_cast<const Imf::FloatVectorAttribute*>(&it.attribute())) out.float_vectors[it.name()] = v->value();
       else if (std::string(it.name()) == "chromaticities") out.srgb_chromaticities = true;
     }
-  } catch (const std::exception& e) {
-    throw bad_input("EXR data: {}", e.what());
-  }
-  return out;
+    return out;
+  });
 }
 
 }  // namespace fest::formats::image_detail

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "formats/concatenated.hpp"
 #include "formats/image/image_headers.hpp"
 
 namespace fest::formats {
@@ -47,19 +48,14 @@ std::vector<std::string_view> split_image_stream(std::string_view bytes) {
   const bool pnm = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6' || bytes[1] == '7' ||
                                                             bytes[1] == '2' || bytes[1] == '3');
   if (!png && !pnm) return {bytes};
-  std::vector<std::string_view> frames;
-  std::string_view rest = bytes;
-  while (!rest.empty()) {
-    const std::size_t frame = frames.size();
-    std::size_t len = 0;
+  return split_concatenated<std::string_view>(bytes, [&](std::string_view rest, std::size_t frame, std::size_t& len)
+                                                  -> std::optional<std::string_view> {
     if (png && rest.size() >= 8 && std::memcmp(rest.data(), k_png_signature, 8) == 0) len = png_length(rest, frame);
     else if (pnm && rest.size() >= 2 && rest[0] == 'P') len = netpbm_length(rest, frame);
-    else if (rest.find_first_not_of(" \t\r\n") == std::string_view::npos) break;  // trailing whitespace
+    else if (rest.find_first_not_of(" \t\r\n") == std::string_view::npos) return std::nullopt;  // trailing whitespace
     else throw bad_input("image stream: {} bytes after frame {} are not an image of the stream's format", rest.size(), frame);
-    frames.push_back(rest.substr(0, len));
-    rest.remove_prefix(len);
-  }
-  return frames;
+    return rest.substr(0, len);
+  });
 }
 
 }  // namespace fest::formats

@@ -76,80 +76,17 @@ std::string write_attributed_ply(const AttributedPly& ply) {
 
 // --- reading -------------------------------------------------------------------------
 
-#include <cmath>
-
+#include "formats/mesh/ply_body.hpp"
 #include "formats/mesh/ply_header.hpp"
 #include "formats/mesh/text_cursor.hpp"
 
 namespace fest::formats {
 namespace {
 
-using mesh_detail::PlyEncoding;
-using mesh_detail::PlyType;
-
-// One value at a time from the body (the same rules as the mesh reader's sources).
-class Source {
- public:
-  Source(std::string_view bytes, const mesh_detail::PlyHeader& h)
-      : bytes_(bytes), pos_(h.body_offset), encoding_(h.encoding), cursor_(bytes, h.body_offset) {}
-
-  bool read(PlyType type, double& out) {
-    if (encoding_ == PlyEncoding::ascii) {
-      const std::string_view token = cursor_.next_token();
-      if (!mesh_detail::parse_double(token, out)) return false;
-      return !mesh_detail::ply_type_is_integer(type) || std::floor(out) == out;
-    }
-    const std::size_t size = mesh_detail::ply_type_size(type);
-    if (bytes_.size() - pos_ < size) return false;
-    unsigned char raw[8];
-    std::memcpy(raw, bytes_.data() + pos_, size);
-    pos_ += size;
-    if (encoding_ == PlyEncoding::binary_big_endian)
-      for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
-    switch (type) {
-      case PlyType::int8: { std::int8_t v; std::memcpy(&v, raw, 1); out = v; break; }
-      case PlyType::uint8: out = raw[0]; break;
-      case PlyType::int16: { std::int16_t v; std::memcpy(&v, raw, 2); out = v; break; }
-      case PlyType::uint16: { std::uint16_t v; std::memcpy(&v, raw, 2); out = v; break; }
-      case PlyType::int32: { std::int32_t v; std::memcpy(&v, raw, 4); out = v; break; }
-      case PlyType::uint32: { std::uint32_t v; std::memcpy(&v, raw, 4); out = v; break; }
-      case PlyType::float32: { float v; std::memcpy(&v, raw, 4); out = static_cast<double>(v); break; }
-      case PlyType::float64: std::memcpy(&out, raw, 8); break;
-    }
-    return true;
-  }
-  bool can_hold(std::uint64_t count, PlyType type) const {
-    if (encoding_ == PlyEncoding::ascii) return count <= cursor_.remaining() / 2 + 1;
-    return count <= (bytes_.size() - pos_) / mesh_detail::ply_type_size(type);
-  }
-  std::size_t trailing() {
-    if (encoding_ == PlyEncoding::ascii) {
-      cursor_.skip_whitespace();
-      return cursor_.remaining();
-    }
-    return bytes_.size() - pos_;
-  }
-
- private:
-  std::string_view bytes_;
-  std::size_t pos_;
-  PlyEncoding encoding_;
-  mesh_detail::TextCursor cursor_;
-};
-
-}  // namespace
-
-AttributedPly read_attributed_ply(std::string_view bytes) {
-  const mesh_detail::PlyHeader header = mesh_detail::parse_ply_header(bytes);
-  AttributedPly out;
-  // Comments: the header lines that start with "comment ".
-  {
-    mesh_detail::TextCursor c(bytes.substr(0, header.body_offset));
-    std::string_view line;
-    while (c.next_line(line))
-      if (line.substr(0, 8) == "comment ") out.comments.emplace_back(line.substr(8));
-  }
-  Source src(bytes, header);
+// Every element of the body into `out` (vertex and face scalars as columns, the face
+// index lists as faces); returns the vertex count the header declares.
+template <class Source>
+std::uint64_t read_elements(Source& src, const mesh_detail::PlyHeader& header, AttributedPly& out) {
   std::uint64_t nv = 0;
   for (const auto& e : header.elements) {
     if (e.name == "vertex") nv = e.count;
@@ -197,6 +134,23 @@ AttributedPly read_attributed_ply(std::string_view bytes) {
   }
   if (std::size_t extra = src.trailing(); extra != 0)
     throw bad_input("PLY: {} bytes of unexpected data after the last element", extra);
+  return nv;
+}
+
+}  // namespace
+
+AttributedPly read_attributed_ply(std::string_view bytes) {
+  const mesh_detail::PlyHeader header = mesh_detail::parse_ply_header(bytes);
+  AttributedPly out;
+  // Comments: the header lines that start with "comment ".
+  {
+    mesh_detail::TextCursor c(bytes.substr(0, header.body_offset));
+    std::string_view line;
+    while (c.next_line(line))
+      if (line.substr(0, 8) == "comment ") out.comments.emplace_back(line.substr(8));
+  }
+  const std::uint64_t nv =
+      mesh_detail::with_ply_source(bytes, header, [&](auto& src) { return read_elements(src, header, out); });
   for (const auto& f : out.faces)
     for (std::uint32_t idx : f)
       if (idx >= nv) throw bad_input("PLY: a face names vertex {} of {}", idx, nv);

@@ -137,8 +137,8 @@ Mesh read_drc(std::string_view bytes) {
 }
 
 std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
-  std::optional<Mesh> storage;
-  const Mesh& mesh = compacted(input, storage);
+  const MeshToWrite written(input);
+  const Mesh& mesh = written.mesh;
   const std::size_t n = mesh.n_vertices();
   const bool lossless = options.draco_position_bits == 0;
   // A mesh without faces is a point cloud to Draco (its mesh coders need triangles).

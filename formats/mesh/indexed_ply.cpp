@@ -7,6 +7,24 @@
 #include "core/error.hpp"
 
 namespace fest::formats {
+namespace {
+
+// The face element: a count byte 3 and three little-endian int32 indices per triangle,
+// written from `p` on; returns the end.
+char* put_triangles(char* p, const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices) {
+  for (const auto& t : triangles) {
+    *p++ = 3;
+    for (std::uint32_t v : t) {
+      if (v >= vertices) throw bad_input("triangle vertex {} out of range ({} vertices)", v, vertices);
+      const auto i = static_cast<std::int32_t>(v);
+      std::memcpy(p, &i, 4);
+      p += 4;
+    }
+  }
+  return p;
+}
+
+}  // namespace
 
 IndexedPlyEncoder::IndexedPlyEncoder(std::size_t vertices, const std::vector<std::array<std::uint32_t, 3>>& triangles)
     : vertices_(vertices) {
@@ -20,16 +38,7 @@ IndexedPlyEncoder::IndexedPlyEncoder(std::size_t vertices, const std::vector<std
       vertices, triangles.size());
   header_ = buffer_.size();
   buffer_.resize(header_ + vertices * 12 + triangles.size() * 13);
-  char* p = buffer_.data() + header_ + vertices * 12;
-  for (const auto& t : triangles) {
-    *p++ = 3;
-    for (std::uint32_t v : t) {
-      if (v >= vertices) throw bad_input("triangle vertex {} out of range ({} vertices)", v, vertices);
-      const auto i = static_cast<std::int32_t>(v);
-      std::memcpy(p, &i, 4);
-      p += 4;
-    }
-  }
+  put_triangles(buffer_.data() + header_ + vertices * 12, triangles, vertices);
 }
 
 std::string_view IndexedPlyEncoder::encode(const float* xyz) {
@@ -67,15 +76,7 @@ std::string write_indexed_ply(const std::vector<float>& xyz, const std::vector<s
       p += 4;
     }
   }
-  for (const auto& t : triangles) {
-    *p++ = 3;
-    for (std::uint32_t v : t) {
-      if (v >= n) throw bad_input("triangle vertex {} out of range ({} vertices)", v, n);
-      const auto i = static_cast<std::int32_t>(v);
-      std::memcpy(p, &i, 4);
-      p += 4;
-    }
-  }
+  put_triangles(p, triangles, n);
   return out;
 }
 

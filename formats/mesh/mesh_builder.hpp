@@ -98,6 +98,11 @@ enum class CoordinateStorage : int {
 };
 void set_point_storage(Mesh& mesh, CoordinateStorage storage);
 void set_normal_storage(Mesh& mesh, CoordinateStorage storage);
+// What the text formats (OBJ, OFF) read: positions and normals written as decimals.
+inline void set_decimal_storage(Mesh& mesh) {
+  set_point_storage(mesh, CoordinateStorage::decimal);
+  set_normal_storage(mesh, CoordinateStorage::decimal);
+}
 // Whether a binary writer stores positions (normals) as float under `precision`.
 bool write_points_as_float(const Mesh& mesh, CoordinatePrecision precision);
 bool write_normals_as_float(const Mesh& mesh, CoordinatePrecision precision);
@@ -116,6 +121,14 @@ void set_skipped_faces_property(Mesh& mesh, std::size_t count);
 // Shortest text that reads back as exactly the same value ("0.1", "-0", "1e-300").
 void append_number(std::string& out, double value);
 void append_number(std::string& out, float value);
+// Coordinates first..n-1 of v, each after a space (" x y z"), as append_number writes them.
+template <class Vector>
+void append_coordinates(std::string& out, const Vector& v, int n, int first = 0) {
+  for (int k = first; k < n; ++k) {
+    out.push_back(' ');
+    append_number(out, v[k]);
+  }
+}
 
 // True when every value converts to float and back unchanged (NaN counts as exact:
 // a float NaN is still NaN), so a binary writer may store floats without rounding.
@@ -134,6 +147,25 @@ std::uint8_t color_from_byte_range(double value);
 // Writers number vertices 0..n-1 by handle index; a mesh with deleted (not yet
 // garbage-collected) elements is copied and compacted first. Returns the mesh to write.
 const Mesh& compacted(const Mesh& mesh, std::optional<Mesh>& storage);
+
+// What every text and binary writer starts from: the mesh compacted, and which
+// per-vertex attributes it has. Not copyable: `mesh` may refer to its own storage.
+class MeshToWrite {
+ private:
+  std::optional<Mesh> storage_;  // before `mesh`, which it may hold
+
+ public:
+  explicit MeshToWrite(const Mesh& input)
+      : mesh(compacted(input, storage_)),
+        normals(mesh.has_vertex_normals()),
+        colors(mesh.has_vertex_colors()),
+        texcoords(mesh.has_vertex_texcoords2D()) {}
+  MeshToWrite(const MeshToWrite&) = delete;
+  MeshToWrite& operator=(const MeshToWrite&) = delete;
+
+  const Mesh& mesh;
+  const bool normals, colors, texcoords;
+};
 
 // Largest vertex/face count a reader accepts: OpenMesh handles are int.
 constexpr std::uint64_t max_element_count = 0x7fffffffu - 1;

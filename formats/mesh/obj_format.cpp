@@ -191,26 +191,20 @@ Mesh read_obj(std::string_view bytes) {
   builder.finish();
   if (!lines.empty()) set_line_elements(mesh, std::move(lines));
   if (!points.empty()) set_point_elements(mesh, std::move(points));
-  set_point_storage(mesh, CoordinateStorage::decimal);
-  set_normal_storage(mesh, CoordinateStorage::decimal);
+  set_decimal_storage(mesh);
   return mesh;
 }
 
 std::string write_obj(const Mesh& input) {
-  std::optional<Mesh> storage;
-  const Mesh& mesh = compacted(input, storage);
-  const bool normals = mesh.has_vertex_normals();
-  const bool colors = mesh.has_vertex_colors();
-  const bool texcoords = mesh.has_vertex_texcoords2D();
+  const MeshToWrite written(input);
+  const Mesh& mesh = written.mesh;
+  const bool normals = written.normals, colors = written.colors, texcoords = written.texcoords;
   std::string out = "# written by fest\n";
   out.reserve(mesh.n_vertices() * 40 + mesh.n_faces() * 24 + 32);
   for (auto v : mesh.vertices()) {
     const Mesh::Point& p = mesh.point(v);
     out += "v";
-    for (int k = 0; k < 3; ++k) {
-      out.push_back(' ');
-      append_number(out, p[k]);
-    }
+    append_coordinates(out, p, 3);
     if (colors)  // colour / 255 in shortest form reads back as the same byte
       for (int k = 0; k < 3; ++k) {
         out.push_back(' ');
@@ -221,19 +215,13 @@ std::string write_obj(const Mesh& input) {
   if (texcoords)
     for (auto v : mesh.vertices()) {
       out += "vt";
-      for (int k = 0; k < 2; ++k) {
-        out.push_back(' ');
-        append_number(out, mesh.texcoord2D(v)[k]);
-      }
+      append_coordinates(out, mesh.texcoord2D(v), 2);
       out.push_back('\n');
     }
   if (normals)
     for (auto v : mesh.vertices()) {
       out += "vn";
-      for (int k = 0; k < 3; ++k) {
-        out.push_back(' ');
-        append_number(out, mesh.normal(v)[k]);
-      }
+      append_coordinates(out, mesh.normal(v), 3);
       out.push_back('\n');
     }
   for_each_written_face(mesh, extra_faces_to_write(mesh), [&](const std::vector<int>& face, const Mesh::Color*,

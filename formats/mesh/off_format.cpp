@@ -167,17 +167,14 @@ Mesh read_off(std::string_view bytes) {
     if (mesh.has_face_colors() && fh.is_valid()) mesh.set_color(fh, color);
   }
   builder.finish();
-  set_point_storage(mesh, CoordinateStorage::decimal);
-  set_normal_storage(mesh, CoordinateStorage::decimal);
+  set_decimal_storage(mesh);
   return mesh;
 }
 
 std::string write_off(const Mesh& input) {
-  std::optional<Mesh> storage;
-  const Mesh& mesh = compacted(input, storage);
-  const bool normals = mesh.has_vertex_normals();
-  const bool colors = mesh.has_vertex_colors();
-  const bool texcoords = mesh.has_vertex_texcoords2D();
+  const MeshToWrite written(input);
+  const Mesh& mesh = written.mesh;
+  const bool normals = written.normals, colors = written.colors, texcoords = written.texcoords;
   const FacesBeside extra = extra_faces_to_write(mesh);
   std::string out;
   out.reserve(mesh.n_vertices() * 40 + mesh.n_faces() * 20 + 32);
@@ -190,21 +187,10 @@ std::string write_off(const Mesh& input) {
   for (auto v : mesh.vertices()) {
     const Mesh::Point& p = mesh.point(v);
     append_number(out, p[0]);
-    for (int k = 1; k < 3; ++k) {
-      out.push_back(' ');
-      append_number(out, p[k]);
-    }
-    if (normals)
-      for (int k = 0; k < 3; ++k) {
-        out.push_back(' ');
-        append_number(out, mesh.normal(v)[k]);
-      }
+    append_coordinates(out, p, 3, 1);
+    if (normals) append_coordinates(out, mesh.normal(v), 3);
     if (colors) put_color(mesh.color(v));
-    if (texcoords)
-      for (int k = 0; k < 2; ++k) {
-        out.push_back(' ');
-        append_number(out, mesh.texcoord2D(v)[k]);
-      }
+    if (texcoords) append_coordinates(out, mesh.texcoord2D(v), 2);
     out.push_back('\n');
   }
   for_each_written_face(mesh, extra, [&](const std::vector<int>& face, const Mesh::Color* color, Mesh::FaceHandle) {

@@ -57,12 +57,9 @@ bool type_from_name(std::string_view name, PlyType& type) {
       {"float", PlyType::float32}, {"float32", PlyType::float32}, {"double", PlyType::float64},
       {"float64", PlyType::float64},
   };
-  for (const Entry& e : entries)
-    if (name == e.name) {
-      type = e.type;
-      return true;
-    }
-  return false;
+  const Entry* e = find_named(entries, name);
+  if (e) type = e->type;
+  return e != nullptr;
 }
 
 // a * b, or false on overflow.

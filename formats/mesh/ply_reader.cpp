@@ -5,84 +5,18 @@
 // blue; edge vertex1 vertex2 (line elements). Everything else (other properties, other
 // elements) is read and skipped.
 
-#include <cmath>
-#include <cstring>
+#include <type_traits>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
+#include "formats/mesh/ply_body.hpp"
 #include "formats/mesh/ply_header.hpp"
-#include "formats/mesh/text_cursor.hpp"
 
 namespace fest::formats::mesh_detail {
 namespace {
-
-class BinarySource {
- public:
-  BinarySource(std::string_view bytes, std::size_t start, bool big_endian)
-      : bytes_(bytes), pos_(start), big_endian_(big_endian) {}
-
-  bool read(PlyType type, double& out) {
-    const std::size_t size = ply_type_size(type);
-    if (bytes_.size() - pos_ < size) return false;
-    unsigned char raw[8];
-    std::memcpy(raw, bytes_.data() + pos_, size);
-    pos_ += size;
-    if (big_endian_ != host_is_big_endian()) {
-      for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
-    }
-    switch (type) {
-      case PlyType::int8: { std::int8_t v; std::memcpy(&v, raw, 1); out = v; break; }
-      case PlyType::uint8: out = raw[0]; break;
-      case PlyType::int16: { std::int16_t v; std::memcpy(&v, raw, 2); out = v; break; }
-      case PlyType::uint16: { std::uint16_t v; std::memcpy(&v, raw, 2); out = v; break; }
-      case PlyType::int32: { std::int32_t v; std::memcpy(&v, raw, 4); out = v; break; }
-      case PlyType::uint32: { std::uint32_t v; std::memcpy(&v, raw, 4); out = v; break; }
-      case PlyType::float32: { float v; std::memcpy(&v, raw, 4); out = static_cast<double>(v); break; }
-      case PlyType::float64: std::memcpy(&out, raw, 8); break;
-    }
-    return true;
-  }
-  // Whether `count` items of `type` can still be there (checked before a list loop).
-  bool can_hold(std::uint64_t count, PlyType type) const {
-    return count <= (bytes_.size() - pos_) / ply_type_size(type);
-  }
-  // Binary files must end exactly after the last element.
-  std::size_t trailing() const { return bytes_.size() - pos_; }
-
- private:
-  static bool host_is_big_endian() {
-    const std::uint16_t probe = 1;
-    unsigned char first;
-    std::memcpy(&first, &probe, 1);
-    return first == 0;
-  }
-  std::string_view bytes_;
-  std::size_t pos_;
-  bool big_endian_;
-};
-
-class AsciiSource {
- public:
-  AsciiSource(std::string_view bytes, std::size_t start) : cursor_(bytes, start) {}
-
-  bool read(PlyType type, double& out) {
-    std::string_view token = cursor_.next_token();
-    if (!parse_double(token, out)) return false;
-    return !ply_type_is_integer(type) || std::floor(out) == out;
-  }
-  bool can_hold(std::uint64_t count, PlyType) const { return count <= cursor_.remaining() / 2 + 1; }
-  // Trailing whitespace is fine in a text file; anything else is not.
-  std::size_t trailing() {
-    cursor_.skip_whitespace();
-    return cursor_.remaining();
-  }
-
- private:
-  TextCursor cursor_;
-};
 
 enum class Role { skip, x, y, z, nx, ny, nz, red, green, blue, u, v, indices };
 
@@ -97,9 +31,8 @@ Role vertex_role(const std::string& name) {
       {"v", Role::v},          {"texture_u", Role::u},  {"texture_v", Role::v},
       {"texture_s", Role::u},  {"texture_t", Role::v},
   };
-  for (const Entry& e : entries)
-    if (name == e.name) return e.role;
-  return Role::skip;
+  const Entry* e = find_named(entries, name);
+  return e ? e->role : Role::skip;
 }
 
 Role face_role(const std::string& name) {
@@ -390,18 +323,11 @@ Mesh read_ply(std::string_view bytes) {
   PlyHeader header = parse_ply_header(bytes);
   Mesh mesh;
   Faces faces;
-  std::vector<std::vector<int>> lines;
-  if (header.encoding == PlyEncoding::ascii) {
-    AsciiSource source(bytes, header.body_offset);
-    BodyReader<AsciiSource> reader(source, header, mesh);
+  std::vector<std::vector<int>> lines = with_ply_source(bytes, header, [&](auto& source) {
+    BodyReader<std::decay_t<decltype(source)>> reader(source, header, mesh);
     reader.read_all(faces);
-    lines = std::move(reader.lines_);
-  } else {
-    BinarySource source(bytes, header.body_offset, header.encoding == PlyEncoding::binary_big_endian);
-    BodyReader<BinarySource> reader(source, header, mesh);
-    reader.read_all(faces);
-    lines = std::move(reader.lines_);
-  }
+    return std::move(reader.lines_);
+  });
   for (std::string& warning : header.warnings) add_read_warning(mesh, std::move(warning));
   if (std::vector<MeshPart> parts = parts_not_kept(header); !parts.empty()) set_unread_parts(mesh, std::move(parts));
   if (!lines.empty()) set_line_elements(mesh, std::move(lines));

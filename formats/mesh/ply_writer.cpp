@@ -42,11 +42,9 @@ void put_real(std::string& out, double value, bool as_float, bool ascii) {
 }  // namespace
 
 std::string write_ply(const Mesh& input, bool ascii, CoordinatePrecision precision) {
-  std::optional<Mesh> storage;
-  const Mesh& mesh = compacted(input, storage);
-  const bool normals = mesh.has_vertex_normals();
-  const bool colors = mesh.has_vertex_colors();
-  const bool texcoords = mesh.has_vertex_texcoords2D();
+  const MeshToWrite written(input);
+  const Mesh& mesh = written.mesh;
+  const bool normals = written.normals, colors = written.colors, texcoords = written.texcoords;
   const bool face_colors = mesh.has_face_colors();
   // Ascii text is exact either way; the declared type then only tells readers what
   // precision to expect.

@@ -33,17 +33,13 @@ std::string_view strip_comment(std::string_view line) {
   return hash == std::string_view::npos ? line : line.substr(0, hash);
 }
 
-bool parse_double(std::string_view token, double& out) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty()) return false;
-  const char* end = token.data() + token.size();
-  auto result = std::from_chars(token.data(), end, out);
-  // out of range (1e999) is malformed data rather than infinity: from_chars leaves
-  // `out` unchanged and reports result_out_of_range.
-  return result.ec == std::errc() && result.ptr == end;
-}
+namespace {
 
-bool parse_int64(std::string_view token, std::int64_t& out) {
+// The whole token (a leading '+' dropped) as a T by std::from_chars, which takes no sign
+// for unsigned types. Out of range (1e999) is malformed data rather than infinity:
+// from_chars leaves `out` unchanged and reports result_out_of_range.
+template <class T>
+bool parse_whole(std::string_view token, T& out) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   if (token.empty()) return false;
   const char* end = token.data() + token.size();
@@ -51,13 +47,11 @@ bool parse_int64(std::string_view token, std::int64_t& out) {
   return result.ec == std::errc() && result.ptr == end;
 }
 
-bool parse_uint64(std::string_view token, std::uint64_t& out) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty() || token.front() == '-') return false;
-  const char* end = token.data() + token.size();
-  auto result = std::from_chars(token.data(), end, out);
-  return result.ec == std::errc() && result.ptr == end;
-}
+}  // namespace
+
+bool parse_double(std::string_view token, double& out) { return parse_whole(token, out); }
+bool parse_int64(std::string_view token, std::int64_t& out) { return parse_whole(token, out); }
+bool parse_uint64(std::string_view token, std::uint64_t& out) { return parse_whole(token, out); }
 
 bool is_integer_literal(std::string_view token) {
   if (!token.empty() && (token.front() == '+' || token.front() == '-')) token.remove_prefix(1);

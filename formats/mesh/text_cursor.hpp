@@ -46,6 +46,15 @@ class LineTokens {
   TextCursor cursor_;
 };
 
+// The entry of a {name, ...} table whose name is `name`, or nullptr (keyword tables of
+// the PLY header and the PLY reader's property roles).
+template <class Entry, std::size_t N>
+const Entry* find_named(const Entry (&entries)[N], std::string_view name) {
+  for (const Entry& e : entries)
+    if (name == e.name) return &e;
+  return nullptr;
+}
+
 // Cuts a line at the first '#' (comments in OFF and OBJ).
 std::string_view strip_comment(std::string_view line);
 

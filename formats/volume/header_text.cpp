@@ -47,6 +47,27 @@ bool next_line(std::string_view text, std::size_t& pos, std::string_view& line) 
   return true;
 }
 
+bool HeaderLines::next(std::string_view& line) {
+  if (!next_line(text_, pos_, line)) return false;
+  ++line_number_;
+  if (pos_ > kMaxHeaderBytes) throw bad_input("{} header is longer than {} bytes", format_, kMaxHeaderBytes);
+  return true;
+}
+
+AxisSizes parse_axis_sizes(const std::vector<std::string_view>& words, std::string_view text, std::uint64_t max_voxels,
+                           const std::string& field, const char* exceed) {
+  AxisSizes out;
+  for (std::size_t i = 0; i < words.size() && i < out.dims.size(); ++i) {
+    std::uint64_t& d = out.dims[i];
+    d = parse_count(words[i], field);
+    if (d == 0) throw bad_input("{}: axis {} has size 0", field, i);
+    if (d > max_voxels || out.count * d > max_voxels)
+      throw bad_input("{} '{}' {} the limit of {} voxels", field, text.substr(0, 60), exceed, max_voxels);
+    out.count *= d;
+  }
+  return out;
+}
+
 double parse_number(std::string_view word, const std::string& field) {
   std::string_view w = trim(word);
   if (!w.empty() && w.front() == '+') w.remove_prefix(1);

@@ -59,37 +59,43 @@ bool parse_bool(const std::string& value, const char* field) {
 
 // Header lines up to and including ElementDataFile, which MetaIO requires to be last;
 // `data_start` is where the bytes after that line begin.
+// Every key MetaIO writes that fest reads (lower case), and the member keeping it.
+constexpr HeaderField<MetaHeader> kMetaFields[] = {
+    {"objecttype", &MetaHeader::object_type},
+    {"ndims", &MetaHeader::ndims},
+    {"dimsize", &MetaHeader::dim_size},
+    {"elementtype", &MetaHeader::element_type},
+    {"elementspacing", &MetaHeader::spacing},
+    {"elementsize", &MetaHeader::element_size},
+    {"offset", &MetaHeader::offset},
+    {"position", &MetaHeader::offset},
+    {"origin", &MetaHeader::offset},
+    {"transformmatrix", &MetaHeader::matrix},
+    {"rotation", &MetaHeader::matrix},
+    {"orientation", &MetaHeader::matrix},
+    {"anatomicalorientation", &MetaHeader::orientation},
+    {"elementbyteordermsb", &MetaHeader::msb},
+    {"binarydatabyteordermsb", &MetaHeader::msb},
+    {"compresseddata", &MetaHeader::compressed},
+    {"compresseddatasize", &MetaHeader::compressed_size},
+    {"binarydata", &MetaHeader::binary},
+    {"elementnumberofchannels", &MetaHeader::channels},
+    {"elementdatafile", &MetaHeader::data_file},
+};
+
 MetaHeader parse_header(std::string_view bytes, std::size_t& data_start) {
   MetaHeader h;
-  std::size_t pos = 0, line_number = 0;
+  HeaderLines lines(bytes, 0, 0, "MetaImage");
   std::string_view line;
   while (!h.data_file) {
-    if (!next_line(bytes, pos, line)) throw bad_input("MetaImage header: no ElementDataFile line ends the header");
-    ++line_number;
-    if (pos > kMaxHeaderBytes) throw bad_input("MetaImage header is longer than {} bytes", kMaxHeaderBytes);
+    if (!lines.next(line)) throw bad_input("MetaImage header: no ElementDataFile line ends the header");
     if (trim(line).empty()) continue;
     const std::size_t eq = line.find('=');
     if (eq == std::string_view::npos)
-      throw bad_input("MetaImage header line {}: '{}' is not 'Key = Value'", line_number, line.substr(0, 40));
-    const std::string key = to_lower(trim(line.substr(0, eq)));
-    const std::string value(trim(line.substr(eq + 1)));
-    if (key == "objecttype") h.object_type = value;
-    else if (key == "ndims") h.ndims = value;
-    else if (key == "dimsize") h.dim_size = value;
-    else if (key == "elementtype") h.element_type = value;
-    else if (key == "elementspacing") h.spacing = value;
-    else if (key == "elementsize") h.element_size = value;
-    else if (key == "offset" || key == "position" || key == "origin") h.offset = value;
-    else if (key == "transformmatrix" || key == "rotation" || key == "orientation") h.matrix = value;
-    else if (key == "anatomicalorientation") h.orientation = value;
-    else if (key == "elementbyteordermsb" || key == "binarydatabyteordermsb") h.msb = value;
-    else if (key == "compresseddata") h.compressed = value;
-    else if (key == "compresseddatasize") h.compressed_size = value;
-    else if (key == "binarydata") h.binary = value;
-    else if (key == "elementnumberofchannels") h.channels = value;
-    else if (key == "elementdatafile") h.data_file = value;
+      throw bad_input("MetaImage header line {}: '{}' is not 'Key = Value'", lines.line_number(), line.substr(0, 40));
+    store_field(h, kMetaFields, to_lower(trim(line.substr(0, eq))), std::string(trim(line.substr(eq + 1))));
   }
-  data_start = pos;
+  data_start = lines.position();
   return h;
 }
 
@@ -226,15 +232,7 @@ Volume read_metaimage(std::string_view bytes) {
 
   const std::vector<std::string_view> words = split_words(*h.dim_size);
   if (words.size() != n) throw bad_input("MetaImage DimSize: {} sizes expected for NDims = {}, found {}", n, n, words.size());
-  std::array<std::uint64_t, 4> dims{1, 1, 1, 1};
-  std::uint64_t count = 1;
-  for (std::size_t i = 0; i < n; ++i) {
-    dims[i] = parse_count(words[i], "MetaImage DimSize");
-    if (dims[i] == 0) throw bad_input("MetaImage DimSize: axis {} has size 0", i);
-    if (dims[i] > kMaxVoxels || count * dims[i] > kMaxVoxels)
-      throw bad_input("MetaImage DimSize '{}' exceeds the limit of {} voxels", h.dim_size->substr(0, 60), kMaxVoxels);
-    count *= dims[i];
-  }
+  const auto [dims, count] = parse_axis_sizes(words, *h.dim_size, kMaxVoxels, "MetaImage DimSize", "exceeds");
   const bool big = h.msb && parse_bool(*h.msb, "ElementByteOrderMSB");
   const bool compressed = h.compressed && parse_bool(*h.compressed, "CompressedData");
   const bool binary = !h.binary || parse_bool(*h.binary, "BinaryData");

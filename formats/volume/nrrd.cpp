@@ -111,6 +111,26 @@ std::vector<std::optional<Vec3>> parse_directions(std::string_view text, std::si
   return out;
 }
 
+// Every field fest reads (lower case), and the member keeping it. Other fields (content,
+// min, max, units, centerings, labels, ...) do not affect voxels.
+constexpr HeaderField<NrrdHeader> kNrrdFields[] = {
+    {"type", &NrrdHeader::type},
+    {"dimension", &NrrdHeader::dimension},
+    {"sizes", &NrrdHeader::sizes},
+    {"encoding", &NrrdHeader::encoding},
+    {"endian", &NrrdHeader::endian},
+    {"space", &NrrdHeader::space},
+    {"space dimension", &NrrdHeader::space_dimension},
+    {"space directions", &NrrdHeader::space_directions},
+    {"space origin", &NrrdHeader::space_origin},
+    {"spacings", &NrrdHeader::spacings},
+    {"kinds", &NrrdHeader::kinds},
+    {"byte skip", &NrrdHeader::byte_skip},
+    {"byteskip", &NrrdHeader::byte_skip},
+    {"line skip", &NrrdHeader::line_skip},
+    {"lineskip", &NrrdHeader::line_skip},
+};
+
 NrrdHeader parse_header(std::string_view bytes, std::size_t& data_start) {
   std::size_t pos = 0;
   std::string_view line;
@@ -118,13 +138,11 @@ NrrdHeader parse_header(std::string_view bytes, std::size_t& data_start) {
   if (line.size() != 8 || line.substr(0, 7) != "NRRD000" || line[7] < '1' || line[7] > '9')
     throw bad_input("NRRD: the first line is not a NRRD magic like \"NRRD0004\"");
   NrrdHeader h;
-  std::size_t line_number = 1;
+  HeaderLines lines(bytes, pos, 1, "NRRD");
   data_start = bytes.size();
-  while (next_line(bytes, pos, line)) {
-    ++line_number;
-    if (pos > kMaxHeaderBytes) throw bad_input("NRRD header is longer than {} bytes", kMaxHeaderBytes);
+  while (lines.next(line)) {
     if (line.empty()) {  // the blank line that separates header and attached data
-      data_start = pos;
+      data_start = lines.position();
       break;
     }
     if (line.front() == '#') continue;
@@ -132,26 +150,13 @@ NrrdHeader parse_header(std::string_view bytes, std::size_t& data_start) {
     const std::size_t kv = line.find(":=");
     if (kv != std::string_view::npos && (field_end == std::string_view::npos || kv < field_end)) continue;  // key/value
     if (field_end == std::string_view::npos)
-      throw bad_input("NRRD header line {}: '{}' is not 'field: value'", line_number, line.substr(0, 40));
+      throw bad_input("NRRD header line {}: '{}' is not 'field: value'", lines.line_number(), line.substr(0, 40));
     const std::string field = to_lower(trim(line.substr(0, field_end)));
-    const std::string value(trim(line.substr(field_end + 2)));
-    if (field == "type") h.type = value;
-    else if (field == "dimension") h.dimension = value;
-    else if (field == "sizes") h.sizes = value;
-    else if (field == "encoding") h.encoding = value;
-    else if (field == "endian") h.endian = value;
-    else if (field == "space") h.space = value;
-    else if (field == "space dimension") h.space_dimension = value;
-    else if (field == "space directions") h.space_directions = value;
-    else if (field == "space origin") h.space_origin = value;
-    else if (field == "spacings") h.spacings = value;
-    else if (field == "kinds") h.kinds = value;
-    else if (field == "byte skip" || field == "byteskip") h.byte_skip = value;
-    else if (field == "line skip" || field == "lineskip") h.line_skip = value;
-    else if (field == "data file" || field == "datafile")
+    std::string value(trim(line.substr(field_end + 2)));
+    if (field == "data file" || field == "datafile")
       throw bad_input("NRRD: detached data (data file: {}) is not supported; save with the data attached (.nrrd)",
                       value.substr(0, 60));
-    // Other fields (content, min, max, units, centerings, labels, ...) do not affect voxels.
+    store_field(h, kNrrdFields, field, std::move(value));
   }
   return h;
 }
@@ -245,15 +250,7 @@ Volume read_nrrd(std::string_view bytes) {
     throw bad_input("NRRD: dimension {} is not supported, only 2-D and 3-D scalar data and 4-D series of them", n);
   const std::vector<std::string_view> size_words = split_words(*h.sizes);
   if (size_words.size() != n) throw bad_input("NRRD sizes: {} numbers expected for dimension {}, found {}", n, n, size_words.size());
-  std::array<std::uint64_t, 4> dims{1, 1, 1, 1};
-  std::uint64_t count = 1;
-  for (std::size_t i = 0; i < n; ++i) {
-    dims[i] = parse_count(size_words[i], "NRRD sizes");
-    if (dims[i] == 0) throw bad_input("NRRD sizes: axis {} has size 0", i);
-    if (dims[i] > kMaxVoxels || count * dims[i] > kMaxVoxels)
-      throw bad_input("NRRD sizes '{}' exceed the limit of {} voxels", h.sizes->substr(0, 60), kMaxVoxels);
-    count *= dims[i];
-  }
+  const auto [dims, count] = parse_axis_sizes(size_words, *h.sizes, kMaxVoxels, "NRRD sizes", "exceed");
   if (h.kinds) check_kinds(*h.kinds, n);
   const Encoding encoding = parse_encoding(*h.encoding);
   bool big = false;

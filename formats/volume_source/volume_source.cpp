@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "formats/concatenated.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/volume/voxel_codec.hpp"
 #include "formats/volume/volume_io.hpp"
@@ -141,11 +142,12 @@ bool is_frame_stream(std::string_view bytes) noexcept {
   return tag != std::string_view::npos && tag < end;
 }
 
-std::vector<StreamFrame> split_frame_stream(std::string_view bytes, const std::string& where) {
-  std::vector<StreamFrame> out;
-  std::size_t pos = 0;
-  while (pos < bytes.size()) {
-    const std::string loc = fmt::format("{}, frame {}", where, out.size());
+std::vector<StreamFrame> split_frame_stream(std::string_view stream, const std::string& where) {
+  // `bytes` is the rest of the stream, from this frame on.
+  return split_concatenated<StreamFrame>(stream, [&](std::string_view bytes, std::size_t index, std::size_t& length)
+                                                     -> std::optional<StreamFrame> {
+    std::size_t pos = 0;
+    const std::string loc = fmt::format("{}, frame {}", where, index);
     if (bytes.substr(pos, 7) != "NRRD000") throw bad_input("not an NRRD frame ({})", loc);
     StreamFrame f;
     std::vector<std::size_t> sizes;
@@ -217,10 +219,9 @@ std::vector<StreamFrame> split_frame_stream(std::string_view bytes, const std::s
     if (bytes.size() - pos < need)
       throw bad_input("truncated NRRD frame: expected {} bytes, got {} ({})", need, bytes.size() - pos, loc);
     f.data = bytes.substr(pos, need);
-    pos += need;
-    out.push_back(std::move(f));
-  }
-  return out;
+    length = pos + need;
+    return f;
+  });
 }
 
 RawLayout parse_raw_layout(std::string_view text) {

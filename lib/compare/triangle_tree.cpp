@@ -3,34 +3,24 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/closest_point.hpp"
+
 namespace fest::compare {
 
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = va + vb + vc;
-  if (!(denom > 0)) return a;  // degenerate (zero-area) triangle: its vertices were sampled anyway
-  // Inside: the projection onto the plane. Taken along the normal rather than from the
-  // barycentric weights vb/denom, vc/denom, whose cancellation on a thin triangle (the
-  // ears of a concave polygon) puts a point lying on it 1e-11 away from itself.
-  const Vec3 normal = ab.cross(ac);
-  const double nn = normal.squaredNorm();
-  if (nn > 0) return p - (normal.dot(ap) / nn) * normal;
-  const double v = vb / denom, w = vc / denom;
-  return a + ab * v + ac * w;
+  return fest::closest_point_on_triangle(p, a, b, c, [&](double va, double vb, double vc) -> Vec3 {
+    const double denom = va + vb + vc;
+    if (!(denom > 0)) return a;  // degenerate (zero-area) triangle: its vertices were sampled anyway
+    // Inside: the projection onto the plane. Taken along the normal rather than from the
+    // barycentric weights vb/denom, vc/denom, whose cancellation on a thin triangle (the
+    // ears of a concave polygon) puts a point lying on it 1e-11 away from itself.
+    const Vec3 ab = b - a, ac = c - a;
+    const Vec3 normal = ab.cross(ac);
+    const double nn = normal.squaredNorm();
+    if (nn > 0) return p - (normal.dot(p - a) / nn) * normal;
+    const double v = vb / denom, w = vc / denom;
+    return a + ab * v + ac * w;
+  });
 }
 
 TriangleTree::TriangleTree(std::vector<Triangle> triangles) : triangles_(std::move(triangles)) {

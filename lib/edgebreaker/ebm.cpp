@@ -11,6 +11,7 @@
 #include <zlib.h>
 
 #include "core/error.hpp"
+#include "core/little_endian.hpp"
 #include "edgebreaker/prepare.hpp"
 #include "edgebreaker/range_coder.hpp"
 #include "edgebreaker/state_machine.hpp"
@@ -23,75 +24,20 @@ constexpr std::size_t max_elements = static_cast<std::size_t>(std::numeric_limit
 
 // ---- little-endian writing and bounded reading -------------------------------------
 
-void put_u8(std::string& out, unsigned v) { out.push_back(static_cast<char>(v & 0xFFu)); }
-void put_u16(std::string& out, unsigned v) {
-  put_u8(out, v);
-  put_u8(out, v >> 8);
-}
-void put_u32(std::string& out, std::uint32_t v) {
-  for (int k = 0; k < 4; ++k) put_u8(out, v >> (8 * k));
-}
-void put_varint(std::string& out, std::uint64_t v) {
-  while (v >= 0x80) {
-    put_u8(out, static_cast<unsigned>(v & 0x7F) | 0x80u);
-    v >>= 7;
-  }
-  put_u8(out, static_cast<unsigned>(v));
-}
-void put_f32(std::string& out, float f) {
-  std::uint32_t bits;
-  std::memcpy(&bits, &f, 4);
-  put_u32(out, bits);
-}
+using little_endian::put_f32;
+using little_endian::put_u16;
+using little_endian::put_u32;
+using little_endian::put_u8;
+using little_endian::put_varint;
 
-class Reader {
- public:
-  Reader(std::string_view bytes, const char* what) : bytes_(bytes), what_(what) {}
-  std::size_t left() const { return bytes_.size() - pos_; }
-  bool done() const { return pos_ == bytes_.size(); }
-  std::uint8_t u8() {
-    need(1);
-    return static_cast<std::uint8_t>(bytes_[pos_++]);
-  }
-  std::uint16_t u16() {
-    const std::uint16_t lo = u8();
-    return static_cast<std::uint16_t>(lo | (u8() << 8));
-  }
-  std::uint32_t u32() {
-    std::uint32_t v = 0;
-    for (int k = 0; k < 4; ++k) v |= static_cast<std::uint32_t>(u8()) << (8 * k);
-    return v;
-  }
-  float f32() {
-    const std::uint32_t bits = u32();
-    float f;
-    std::memcpy(&f, &bits, 4);
-    return f;
-  }
-  std::uint64_t varint() {
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      const std::uint8_t b = u8();
-      v |= static_cast<std::uint64_t>(b & 0x7F) << shift;
-      if (!(b & 0x80)) return v;
-    }
-    throw bad_input("{}: a number is too long", what_);
-  }
-  std::string_view bytes(std::size_t n) {
-    need(n);
-    const std::string_view out = bytes_.substr(pos_, n);
-    pos_ += n;
-    return out;
-  }
-
- private:
-  void need(std::size_t n) const {
-    if (left() < n) throw bad_input("{} is truncated", what_);
-  }
-  std::string_view bytes_;
-  std::size_t pos_ = 0;
-  const char* what_;
+// What running out of a section's bytes means (little_endian::Reader): `what` names it.
+struct SectionErrors {
+  SectionErrors(const char* section) : what(section) {}  // NOLINT: a Reader is made from its section's name
+  [[noreturn]] void truncated(std::size_t, std::size_t) const { throw bad_input("{} is truncated", what); }
+  [[noreturn]] void varint_too_long(std::size_t) const { throw bad_input("{}: a number is too long", what); }
+  const char* what;
 };
+using Reader = little_endian::Reader<SectionErrors>;
 
 std::uint32_t crc32_of(std::string_view bytes) {
   uLong crc = crc32(0L, Z_NULL, 0);

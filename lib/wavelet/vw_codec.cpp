@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "core/little_endian.hpp"
 #include "core/parallel_for.hpp"
 #include "wavelet/band_coder.hpp"
 
@@ -42,71 +43,28 @@ std::uint64_t fnv1a(std::string_view s) noexcept {
 
 int bit_width(std::uint64_t v) noexcept { return v == 0 ? 0 : 64 - __builtin_clzll(v); }
 
-// ---- little-endian bytes ----
+// ---- little-endian bytes (core/little_endian.hpp) ----
 struct Writer {
   std::string out;
-  void u8(std::uint8_t v) { out.push_back(static_cast<char>(v)); }
-  void u32(std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
-  }
-  void u64(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
-  }
-  void f64(double v) {
-    std::uint64_t u;
-    std::memcpy(&u, &v, 8);
-    u64(u);
-  }
-  void varint(std::uint64_t v) {
-    while (v >= 0x80) {
-      u8(static_cast<std::uint8_t>(v | 0x80));
-      v >>= 7;
-    }
-    u8(static_cast<std::uint8_t>(v));
-  }
+  void u8(std::uint8_t v) { little_endian::put_u8(out, v); }
+  void u32(std::uint32_t v) { little_endian::put_u32(out, v); }
+  void u64(std::uint64_t v) { little_endian::put_u64(out, v); }
+  void f64(double v) { little_endian::put_f64(out, v); }
+  void varint(std::uint64_t v) { little_endian::put_varint(out, v); }
 };
 
-struct Reader {
-  std::string_view in;
-  std::size_t pos = 0;
-  const char* what;
-  void need(std::size_t n) {
-    if (in.size() - pos < n) throw bad_input("truncated {}: needs {} more bytes at byte {}", what, n, pos);
+// What running out of a part of the file means (little_endian::Reader): `what` names it.
+struct PartErrors {
+  PartErrors(const char* part) : what(part) {}  // NOLINT: a Reader is made from its part's name
+  [[noreturn]] void truncated(std::size_t n, std::size_t pos) const {
+    throw bad_input("truncated {}: needs {} more bytes at byte {}", what, n, pos);
   }
-  std::uint8_t u8() {
-    need(1);
-    return static_cast<std::uint8_t>(in[pos++]);
-  }
-  std::uint32_t u32() {
-    need(4);
-    std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<std::uint8_t>(in[pos + i])) << (8 * i);
-    pos += 4;
-    return v;
-  }
-  std::uint64_t u64() {
-    need(8);
-    std::uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(static_cast<std::uint8_t>(in[pos + i])) << (8 * i);
-    pos += 8;
-    return v;
-  }
-  double f64() {
-    const std::uint64_t u = u64();
-    double v;
-    std::memcpy(&v, &u, 8);
-    return v;
-  }
-  std::uint64_t varint() {
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      const std::uint8_t b = u8();
-      v |= static_cast<std::uint64_t>(b & 0x7f) << shift;
-      if (!(b & 0x80)) return v;
-    }
+  [[noreturn]] void varint_too_long(std::size_t pos) const {
     throw bad_input("{}: a variable-length number runs past 64 bits at byte {}", what, pos);
   }
+  const char* what;
 };
+using Reader = little_endian::Reader<PartErrors>;
 
 // ---- the region of interest as runs (alternating outside/inside, starting outside) ----
 void write_runs(Writer& w, const std::vector<std::uint8_t>& mask) {
@@ -251,7 +209,7 @@ VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vec
     if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a version-1 .vw file");
     throw bad_input("not a .vw file (no \\x89VW magic)");
   }
-  Reader r{bytes, 8, ".vw header"};
+  Reader r(bytes, ".vw header", 8);
   VwHeader h;
   const int mode = r.u8(), wavelet = r.u8(), levels = r.u8(), type = r.u8(), kind = r.u8();
   h.max_exponent = r.u8();
@@ -311,10 +269,10 @@ VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vec
     throw bad_input(".vw header: {} voxels cannot be coded in {} bytes", voxels, declared);
   std::vector<std::uint8_t> mask;
   if (has_roi) mask = read_runs(r, static_cast<std::size_t>(voxels));
-  const std::size_t end = r.pos;
+  const std::size_t end = r.pos();
   const std::uint64_t hash = r.u64();
   if (check_hash && hash != fnv1a(bytes.substr(0, end))) throw bad_input(".vw header: checksum mismatch (damaged header)");
-  h.header_bytes = r.pos;
+  h.header_bytes = r.pos();
   if (roi) *roi = std::move(mask);
   return h;
 }
@@ -588,7 +546,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
     const std::string_view chunk = bytes.substr(pos, info.bytes);
     if (fnv1a(chunk) != info.hash) throw bad_input(".vw chunk {}: checksum mismatch (damaged data)", k);
     const auto& streams = by_chunk[static_cast<std::size_t>(k)];
-    Reader r{chunk, 0, ".vw chunk"};
+    Reader r(chunk, ".vw chunk");
     std::vector<std::string_view> parts(streams.size());
     std::size_t at = 4 * streams.size();
     if (chunk.size() < at) throw bad_input(".vw chunk {}: {} bytes cannot list {} streams", k, chunk.size(), streams.size());
@@ -624,7 +582,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
     } else {
       const std::string_view chunk = bytes.substr(pos, info.bytes);
       if (fnv1a(chunk) != info.hash) throw bad_input(".vw outlier chunk: checksum mismatch (damaged data)");
-      Reader r{chunk, 0, ".vw outlier chunk"};
+      Reader r(chunk, ".vw outlier chunk");
       const std::uint64_t count = r.varint();
       const std::size_t n = res.volume.voxels.size();
       if (count > n || count > chunk.size()) throw bad_input(".vw outlier chunk: {} outliers", count);
@@ -635,7 +593,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
         index += static_cast<std::size_t>(step);
         res.volume.voxels[index] = r.f64();
       }
-      if (r.pos != chunk.size()) throw bad_input(".vw outlier chunk: {} unused bytes", chunk.size() - r.pos);
+      if (r.pos() != chunk.size()) throw bad_input(".vw outlier chunk: {} unused bytes", chunk.size() - r.pos());
       ++decoded;
     }
   } else if (decoded < limit) {

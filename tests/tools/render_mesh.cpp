@@ -11,28 +11,14 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/error.hpp"
 #include "core/tool_main.hpp"
-#include "formats/input.hpp"
-#include "formats/mesh/mesh_io.hpp"
+#include "mesh_picture.hpp"
 #include "reflectance/rasterizer.hpp"
 
 namespace {
 
 using fest::reflectance::TriangleMesh;
-
-TriangleMesh to_triangles(const fest::Mesh& m, const Eigen::Vector3d& shift) {
-  TriangleMesh t;
-  for (const auto v : m.vertices()) t.vertices.emplace_back(Eigen::Vector3d(m.point(v)[0], m.point(v)[1], m.point(v)[2]) + shift);
-  for (const auto f : m.faces()) {
-    std::vector<std::uint32_t> c;
-    for (const auto v : m.fv_range(f)) c.push_back(static_cast<std::uint32_t>(v.idx()));
-    for (std::size_t i = 1; i + 1 < c.size(); ++i) t.triangles.push_back({c[0], c[i], c[i + 1]});
-  }
-  return t;
-}
 
 Eigen::Vector3d parse3(const std::string& s) {
   Eigen::Vector3d v;
@@ -61,7 +47,7 @@ int main(int argc, char** argv) {
     }
     if (size < 64 || size > 8192) throw fest::usage_error("--size {} is outside 64..8192", size);
     std::vector<fest::Mesh> meshes;
-    for (const auto& p : paths) meshes.push_back(fest::formats::parse(fest::formats::load_input(p), fest::formats::read_mesh));
+    for (const auto& p : paths) meshes.push_back(fest::test_tools::read_mesh_file(p));
     // One scene: side by side along the camera's right vector, or overlaid.
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
     for (const auto& m : meshes)
@@ -77,7 +63,7 @@ int main(int argc, char** argv) {
     std::vector<int> owner;
     for (std::size_t k = 0; k < meshes.size(); ++k) {
       const double offset = side ? (static_cast<double>(k) - 0.5 * (meshes.size() - 1)) * extent : 0.0;
-      TriangleMesh t = to_triangles(meshes[k], offset * right);
+      TriangleMesh t = fest::test_tools::triangles_of(meshes[k], offset * right);
       const auto base = static_cast<std::uint32_t>(scene.vertices.size());
       scene.vertices.insert(scene.vertices.end(), t.vertices.begin(), t.vertices.end());
       for (auto tri : t.triangles) {
@@ -110,23 +96,18 @@ int main(int argc, char** argv) {
     cv::Mat img(cam.height, cam.width, CV_8UC3, cv::Scalar(255, 255, 255));
     const Eigen::Vector3d light = (dir + 0.5 * up.normalized() + 0.3 * right).normalized();
     const cv::Vec3b colours[4] = {{200, 170, 120}, {120, 180, 220}, {140, 210, 140}, {200, 140, 200}};
-    for (int y = 0; y < cam.height; ++y)
-      for (int x = 0; x < cam.width; ++x) {
-        const std::size_t i = frag.index(x, y);
-        if (frag.triangle[i] < 0) continue;
-        Eigen::Vector3d n = fest::reflectance::fragment_normal(scene, frag, i);
-        const Eigen::Vector3d p = fest::reflectance::fragment_point(scene, frag, i);
-        if (n.dot(cam.centre() - p) < 0) n = -n;
-        double shade = 0.25 + 0.75 * std::max(0.0, n.dot(light));
-        if (wire) {
-          const double b1 = frag.b1[i], b2 = frag.b2[i], b0 = 1 - b1 - b2;
-          if (std::min({b0, b1, b2}) < 0.03) shade *= 0.45;
-        }
-        const cv::Vec3b c = colours[owner[static_cast<std::size_t>(frag.triangle[i])] % 4];
-        img.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<unsigned char>(c[0] * shade), static_cast<unsigned char>(c[1] * shade),
-                                            static_cast<unsigned char>(c[2] * shade));
+    fest::test_tools::paint_fragments(img, scene, frag, [&](std::size_t i, const Eigen::Vector3d& p, Eigen::Vector3d n) {
+      if (n.dot(cam.centre() - p) < 0) n = -n;
+      double shade = 0.25 + 0.75 * std::max(0.0, n.dot(light));
+      if (wire) {
+        const double b1 = frag.b1[i], b2 = frag.b2[i], b0 = 1 - b1 - b2;
+        if (std::min({b0, b1, b2}) < 0.03) shade *= 0.45;
       }
-    if (!cv::imwrite(out, img)) throw fest::io_error("cannot write {}", out);
+      const cv::Vec3b c = colours[owner[static_cast<std::size_t>(frag.triangle[i])] % 4];
+      return cv::Vec3b(static_cast<unsigned char>(c[0] * shade), static_cast<unsigned char>(c[1] * shade),
+                       static_cast<unsigned char>(c[2] * shade));
+    });
+    fest::test_tools::write_png(out, img);
     return 0;
   });
 }

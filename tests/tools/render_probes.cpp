@@ -1,7 +1,9 @@
 // Test and example tooling: draws the probe meshes of `lemtrace probes` (.vtp: triangles
 // with per-vertex scalars) as a picture a person can look at -- an orthographic view
 // along -z, each file's triangles coloured by its named scalar (viridis over that
-// file's range, flat per triangle), painted from low to high z, with OpenCV.
+// file's range, flat per triangle), painted from low to high z, with OpenCV: flat 2-D
+// fills in painter's order rather than mesh_picture's z-buffer rasteriser, whose shaded
+// perspective pictures are not what a probe map shows.
 //
 //   render_probes OUT.png SIZE PROBES.vtp:SCALAR [MORE.vtp:SCALAR ...]
 
@@ -12,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -21,11 +22,11 @@
 #include <vtkPolyData.h>
 
 #include "core/error.hpp"
-#include "core/file_io.hpp"
 #include "core/tool_main.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/dataset/vtk_convert.hpp"
 #include "formats/input.hpp"
+#include "mesh_picture.hpp"
 
 int main(int argc, char** argv) {
   return fest::run_tool("render_probes", [&] {
@@ -93,9 +94,7 @@ int main(int argc, char** argv) {
       cv::fillConvexPoly(image, p, 3, cv::Scalar(col[0], col[1], col[2]), cv::LINE_AA, 4);
     }
     cv::rectangle(image, cv::Point(margin - 1, margin - 1), cv::Point(size - margin, size - margin), cv::Scalar(160, 160, 160));
-    std::vector<uchar> png;
-    if (!cv::imencode(".png", image, png)) throw fest::runtime_failure("PNG encoding failed");
-    fest::write_output(argv[1], std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    fest::test_tools::write_png(argv[1], image);
     return 0;
   });
 }

@@ -11,14 +11,11 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
-#include "core/file_io.hpp"
 #include "core/tool_main.hpp"
-#include "formats/input.hpp"
-#include "formats/mesh/mesh_io.hpp"
+#include "mesh_picture.hpp"
 #include "reflectance/rasterizer.hpp"
 
 using fest::reflectance::TriangleMesh;
@@ -35,15 +32,8 @@ int main(int argc, char** argv) {
       const std::string arg = argv[i];
       const auto eq = arg.find('=');
       labels.push_back(eq == std::string::npos ? "" : arg.substr(0, eq));
-      const auto in = fest::formats::load_input(eq == std::string::npos ? arg : arg.substr(eq + 1));
-      const fest::Mesh m = fest::formats::parse(in, fest::formats::read_mesh);
-      TriangleMesh t;
-      for (auto v : m.vertices()) t.vertices.emplace_back(m.point(v)[0], m.point(v)[1], m.point(v)[2]);
-      for (auto f : m.faces()) {
-        std::vector<std::uint32_t> c;
-        for (auto v : m.fv_range(f)) c.push_back(static_cast<std::uint32_t>(v.idx()));
-        for (std::size_t k = 1; k + 1 < c.size(); ++k) t.triangles.push_back({c[0], c[k], c[k + 1]});
-      }
+      TriangleMesh t = fest::test_tools::triangles_of(
+          fest::test_tools::read_mesh_file(eq == std::string::npos ? arg : arg.substr(eq + 1)));
       fest::reflectance::compute_vertex_normals(t);
       meshes.push_back(std::move(t));
     }
@@ -68,22 +58,15 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < meshes.size(); ++i) {
       const auto frags = fest::reflectance::rasterize(meshes[i], cam);
       cv::Mat img = sheet(cv::Rect(static_cast<int>(i % cols) * tile, static_cast<int>(i / cols) * tile, tile, tile));
-      for (int y = 0; y < tile; ++y)
-        for (int x = 0; x < tile; ++x) {
-          const std::size_t k = frags.index(x, y);
-          if (!frags.covered(x, y)) continue;
-          const Eigen::Vector3d p = fest::reflectance::fragment_point(meshes[i], frags, k);
-          const Eigen::Vector3d n = fest::reflectance::fragment_normal(meshes[i], frags, k);
-          const double s = 0.15 + 0.85 * std::abs(n.dot((eye - p).normalized()));
-          img.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uchar>(120 * s), static_cast<uchar>(140 * s),
-                                              static_cast<uchar>(235 * s));  // BGR: a tongue pink
-        }
+      fest::test_tools::paint_fragments(img, meshes[i], frags, [&](std::size_t, const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
+        const double s = 0.15 + 0.85 * std::abs(n.dot((eye - p).normalized()));
+        return cv::Vec3b(static_cast<uchar>(120 * s), static_cast<uchar>(140 * s),
+                         static_cast<uchar>(235 * s));  // BGR: a tongue pink
+      });
       cv::putText(img, labels[i], {8, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
       cv::rectangle(img, {0, 0}, {tile - 1, tile - 1}, cv::Scalar(200, 200, 200));
     }
-    std::vector<uchar> png;
-    cv::imencode(".png", sheet, png);
-    fest::write_output(argv[1], std::string(png.begin(), png.end()));
+    fest::test_tools::write_png(argv[1], sheet);
     return 0;
   });
 }

@@ -35,8 +35,8 @@ class FcompareApp : public ::testing::Test {
     std::ifstream f(p, std::ios::binary);
     return nlohmann::json::parse(std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()));
   }
-  fcompare::CompareOptions options() const {
-    fcompare::CompareOptions o;
+  fcompare_tool::CompareOptions options() const {
+    fcompare_tool::CompareOptions o;
     o.a = path("a.pgm");
     o.b = path("b.pgm");
     o.report = path("r.json");
@@ -49,8 +49,8 @@ class FcompareApp : public ::testing::Test {
 }  // namespace
 
 TEST_F(FcompareApp, OneGreyLevelApartIsMaxAbsOne) {
-  fcompare::CompareOptions o = options();
-  EXPECT_EQ(fcompare::compare_command(o), 1);  // default tolerance 0: not within it
+  fcompare_tool::CompareOptions o = options();
+  EXPECT_EQ(fcompare_tool::compare_command(o), 1);  // default tolerance 0: not within it
   const auto r = read_json(path("r.json"));
   EXPECT_EQ(r.at("kind"), "image");
   EXPECT_DOUBLE_EQ(r.at("metrics").at("max_abs").get<double>(), 1.0);
@@ -58,23 +58,23 @@ TEST_F(FcompareApp, OneGreyLevelApartIsMaxAbsOne) {
 }
 
 TEST_F(FcompareApp, ToleranceOneAccepts) {
-  fcompare::CompareOptions o = options();
+  fcompare_tool::CompareOptions o = options();
   o.tol = 1;
   o.tol_given = true;
-  EXPECT_EQ(fcompare::compare_command(o), 0);
+  EXPECT_EQ(fcompare_tool::compare_command(o), 0);
 }
 
 TEST_F(FcompareApp, ThresholdOnTheFamilyReplacesTheDefault) {
-  fcompare::CompareOptions o = options();
+  fcompare_tool::CompareOptions o = options();
   o.thresholds.push_back(compare::Check{"rmse", true, 0.5});
-  EXPECT_EQ(fcompare::compare_command(o), 0);
+  EXPECT_EQ(fcompare_tool::compare_command(o), 0);
   o.thresholds = {compare::Check{"rmse", true, 0.4}};
-  EXPECT_EQ(fcompare::compare_command(o), 1);
+  EXPECT_EQ(fcompare_tool::compare_command(o), 1);
 }
 
 TEST_F(FcompareApp, SameFileIsWithinZero) {
-  fcompare::CompareOptions o = options();
+  fcompare_tool::CompareOptions o = options();
   o.b = o.a;
-  EXPECT_EQ(fcompare::compare_command(o), 0);
+  EXPECT_EQ(fcompare_tool::compare_command(o), 0);
   EXPECT_DOUBLE_EQ(read_json(path("r.json")).at("metrics").at("max_abs").get<double>(), 0.0);
 }

@@ -47,17 +47,17 @@ const std::string kHeader = "P6\n3 2\n255\n";
 
 TEST_F(FconvApp, PpmToPngToPpmKeepsEveryPixel) {
   write(path("a.ppm"), kHeader + pixels());
-  fconv::ConvertOptions to_png;
+  fconv_tool::ConvertOptions to_png;
   to_png.input = path("a.ppm");
   to_png.output = path("a.png");
-  ASSERT_EQ(fconv::convert_command(to_png), 0);
+  ASSERT_EQ(fconv_tool::convert_command(to_png), 0);
   EXPECT_EQ(formats::load_input(path("a.png")).format, formats::Format::png);
 
-  fconv::ConvertOptions to_ppm;
+  fconv_tool::ConvertOptions to_ppm;
   to_ppm.input = path("a.png");
   to_ppm.output = path("b.out");  // no extension: the format comes from `to`
   to_ppm.to = formats::OutputFormat{formats::Format::ppm, false};
-  ASSERT_EQ(fconv::convert_command(to_ppm), 0);
+  ASSERT_EQ(fconv_tool::convert_command(to_ppm), 0);
   const std::string back = read(path("b.out"));
   ASSERT_GE(back.size(), pixels().size());
   EXPECT_EQ(back.substr(back.size() - pixels().size()), pixels());
@@ -66,8 +66,8 @@ TEST_F(FconvApp, PpmToPngToPpmKeepsEveryPixel) {
 
 TEST_F(FconvApp, InfoDescribesTheImage) {
   write(path("a.ppm"), kHeader + pixels());
-  fconv::InfoOptions o{path("a.ppm"), path("a.json")};
-  ASSERT_EQ(fconv::info_command(o), 0);
+  fconv_tool::InfoOptions o{path("a.ppm"), path("a.json")};
+  ASSERT_EQ(fconv_tool::info_command(o), 0);
   const auto j = nlohmann::json::parse(read(path("a.json")));
   EXPECT_EQ(j.at("kind"), "image");
   EXPECT_EQ(j.at("bytes"), kHeader.size() + 18);
@@ -75,9 +75,9 @@ TEST_F(FconvApp, InfoDescribesTheImage) {
 
 TEST_F(FconvApp, ImageToMeshFormatIsAUsageError) {
   write(path("a.ppm"), kHeader + pixels());
-  fconv::ConvertOptions o;
+  fconv_tool::ConvertOptions o;
   o.input = path("a.ppm");
   o.output = path("a.ply");
-  EXPECT_ANY_THROW(fconv::convert_command(o));
+  EXPECT_ANY_THROW(fconv_tool::convert_command(o));
   EXPECT_FALSE(fs::exists(path("a.ply")));
 }

@@ -14,7 +14,7 @@
 
 namespace {
 
-using namespace fest::lights;
+using namespace fest::lights_tool;
 
 class LightsApp : public testing::Test {
  protected:

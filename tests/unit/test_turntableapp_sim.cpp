@@ -9,7 +9,7 @@
 
 namespace {
 
-using namespace fest::turntable;
+using namespace fest::turntable_tool;
 
 nlohmann::json move_json(const std::string& uri, const MoveOptions& o) {
   DeviceOptions d;

@@ -1,10 +1,10 @@
 // decimate: simplify a triangle mesh by quadric-ordered edge collapses to a face count or
-// an error bound (docs/decimate.md). Flags only; the work is in decimate_app.cpp.
+// an error bound (docs/decimate.md). Flags only; the work is in cmd_decimate.cpp.
 
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include "cli/cli.hpp"
-#include "decimate_app.hpp"
+#include "commands.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Simplify a triangle mesh to a face count or an error bound (Garland-Heckbert quadrics with attributes,\n"

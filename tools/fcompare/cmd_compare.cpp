@@ -12,7 +12,7 @@
 #include "formats/input.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -43,4 +43,4 @@ int compare_command(const CompareOptions& opt) {
   return failures.empty() ? 0 : static_cast<int>(Status::failure);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -8,7 +8,7 @@
 
 #include "compare/checks.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 struct CompareOptions {
   std::string a, b;
@@ -27,4 +27,4 @@ struct CompareOptions {
 // holds, 1 when one fails (named on standard error).
 int compare_command(const CompareOptions& o);
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

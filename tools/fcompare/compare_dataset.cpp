@@ -8,14 +8,13 @@
 #include "formats/dataset/dataset_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
 
 void compare_datasets(const Input& ia, const Input& ib, const CompareOptions& opt, Metrics& m) {
-  const auto a = parse(ia, read_dataset);
-  const auto b = parse(ib, read_dataset);
+  const auto [a, b] = parse_both(ia, ib, read_dataset);
   const auto d = compare::dataset_difference(a, b);
   m.set("point_count_diff", std::abs(static_cast<double>(d.points_a) - static_cast<double>(d.points_b)));
   m.set("cell_count_diff", std::abs(static_cast<double>(d.cells_a) - static_cast<double>(d.cells_b)));
@@ -32,4 +31,4 @@ void compare_datasets(const Input& ia, const Input& ib, const CompareOptions& op
   require_main(m, "max_abs", opt);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -6,14 +6,13 @@
 #include "formats/image/image_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
 
 void compare_images(const Input& ia, const Input& ib, const CompareOptions& opt, Metrics& m) {
-  const Image a = parse(ia, read_image);
-  const Image b = parse(ib, read_image);
+  const auto [a, b] = parse_both(ia, ib, read_image);
   const auto e = compare::image_error(a.pixels, b.pixels);
   m.set("rmse", e.all.rmse);
   m.set("psnr", e.all.psnr);
@@ -34,4 +33,4 @@ void compare_images(const Input& ia, const Input& ib, const CompareOptions& opt,
   require_main(m, "max_abs", opt);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

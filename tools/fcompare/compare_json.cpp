@@ -6,7 +6,7 @@
 #include "formats/table/table_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -21,4 +21,4 @@ void compare_json(const Input& ia, const Input& ib, const CompareOptions& opt, M
   m.require("structural_diffs", "<=", 0);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -13,7 +13,7 @@
 #include "formats/mesh/mesh_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -88,4 +88,4 @@ void compare_meshes(const Input& ia, const Input& ib, const CompareOptions& opt,
   }
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -6,14 +6,11 @@
 #include "formats/table/table_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
-using namespace fest::formats;
-using fest::compare::Metrics;
-
-void compare_tables(const Input& ia, const Input& ib, const CompareOptions& opt, Metrics& m) {
-  const Table a = parse(ia, read_table);
-  const Table b = parse(ib, read_table);
+void compare_tables(const formats::Input& ia, const formats::Input& ib, const CompareOptions& opt,
+                    compare::Metrics& m) {
+  const auto [a, b] = parse_both(ia, ib, formats::read_table);
   const auto e = compare::table_error(a, b);
   m.set("max_abs", e.max_abs);
   m.set("max_rel", e.max_rel);
@@ -24,4 +21,4 @@ void compare_tables(const Input& ia, const Input& ib, const CompareOptions& opt,
   require_main(m, "max_abs", opt);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

@@ -8,14 +8,11 @@
 #include "formats/volume/volume_io.hpp"
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
-using namespace fest::formats;
-using fest::compare::Metrics;
-
-void compare_volumes(const Input& ia, const Input& ib, const CompareOptions& opt, Metrics& m) {
-  const Volume a = parse(ia, read_volume);
-  const Volume b = parse(ib, read_volume);
+void compare_volumes(const formats::Input& ia, const formats::Input& ib, const CompareOptions& opt,
+                     compare::Metrics& m) {
+  const auto [a, b] = parse_both(ia, ib, formats::read_volume);
   const auto e = compare::volume_error(a, b);
   m.set("max_abs", e.max_abs);
   m.set("rmse", e.rmse);
@@ -34,4 +31,4 @@ void compare_volumes(const Input& ia, const Input& ib, const CompareOptions& opt
   m.require("origin_diff", "<=", 1e-6);
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

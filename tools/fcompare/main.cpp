@@ -10,7 +10,7 @@
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
-  using namespace fest::fcompare;
+  using namespace fest::fcompare_tool;
   CLI::App app{"Compare two files of the same kind numerically: meshes (surface distance, counts,\n"
                "topology), images (RMSE, PSNR, max abs), volumes (max abs, Dice per label), tables\n"
                "(max abs per column), VTK datasets (cells, points, arrays), JSON (numbers and structure).\n"

@@ -2,7 +2,7 @@
 
 #include "measure.hpp"
 
-namespace fest::fcompare {
+namespace fest::fcompare_tool {
 
 using namespace fest::formats;
 using fest::compare::Metrics;
@@ -25,4 +25,4 @@ void measure(const Input& a, const Input& b, const CompareOptions& opt, Metrics&
   }
 }
 
-}  // namespace fest::fcompare
+}  // namespace fest::fcompare_tool

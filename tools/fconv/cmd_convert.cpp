@@ -12,7 +12,7 @@
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 using namespace fest::formats;
 
@@ -71,4 +71,4 @@ int convert_command(const ConvertOptions& opt) {
   return 0;
 }
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

@@ -11,7 +11,7 @@
 #include "formats/volume/volume_io.hpp"
 #include "mesh_input.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 using namespace fest::formats;
 
@@ -53,4 +53,4 @@ int info_command(const InfoOptions& o) {
   return 0;
 }
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

@@ -10,7 +10,7 @@
 #include "formats/detect.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 // Convert a file to another format of the same kind.
 struct ConvertOptions {
@@ -41,4 +41,4 @@ struct InfoOptions {
 int convert_command(const ConvertOptions& o);
 int info_command(const InfoOptions& o);
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

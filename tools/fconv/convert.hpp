@@ -7,7 +7,7 @@
 #include "commands.hpp"
 #include "formats/input.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 // Meshes: what fest or the output format cannot hold is refused (exit 3) unless
 // o.drop_unrepresentable, then counted in a warning. Returns the output file's bytes.
@@ -18,4 +18,4 @@ std::string convert_mesh(const formats::Input& in, formats::Format to, const Con
 // .hdr/.img pair is two files.
 void convert_volume(const formats::Input& in, const formats::OutputFormat& out, const ConvertOptions& o);
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

@@ -10,7 +10,7 @@
 #include "core/tool_main.hpp"
 #include "mesh_input.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 using namespace fest::formats;
 
@@ -54,4 +54,4 @@ std::string convert_mesh(const Input& in, Format to, const ConvertOptions& opt) 
   return write_mesh(mesh, to, w);
 }
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

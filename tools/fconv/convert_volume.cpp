@@ -10,7 +10,7 @@
 #include "core/tool_main.hpp"
 #include "formats/volume/volume_io.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 using namespace fest::formats;
 
@@ -56,4 +56,4 @@ void convert_volume(const Input& in, const OutputFormat& out, const ConvertOptio
   store_volume(opt.output, v, out, w);
 }
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
-  using namespace fest::fconv;
+  using namespace fest::fconv_tool;
   CLI::App app{"Convert a file to another format of the same kind, or describe it (--info).\n"
                "Input is recognised by its content; gzip-compressed input is unpacked.",
                "fconv"};

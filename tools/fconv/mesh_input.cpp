@@ -4,7 +4,7 @@
 
 #include "core/tool_main.hpp"
 
-namespace fest::fconv {
+namespace fest::fconv_tool {
 
 using namespace fest::formats;
 
@@ -15,4 +15,4 @@ Mesh read_whole_mesh(const Input& in) {
   return mesh;
 }
 
-}  // namespace fest::fconv
+}  // namespace fest::fconv_tool

@@ -1,11 +1,11 @@
 // ffd: free-form deformation of meshes by a control lattice (Sederberg & Parry), with
 // exact joint preservation, rigid objects and animation (docs/ffd.md). Flags only; the
-// subcommands live in ffd_app.cpp.
+// subcommands live in cmd_<sub>.cpp.
 
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include "cli/cli.hpp"
-#include "ffd_app.hpp"
+#include "commands.hpp"
 
 int main(int argc, char** argv) {
   using namespace fest::ffd_tool;

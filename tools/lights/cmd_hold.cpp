@@ -1,69 +1,10 @@
-// lights pulse / hold: lit while requested, off before release, also after a stop signal
-// (docs/lights.md §2).
-
-#include <signal.h>
-
-#include <cerrno>
-#include <ctime>
+// lights hold: lights on until --time passes or a stop signal, then off (docs/lights.md §2).
 
 #include "commands.hpp"
-#include "devices/open_devices.hpp"
-#include "station.hpp"
+#include "timed_lights.hpp"
 
-namespace fest::lights {
-
-namespace {
-
-sigset_t stop_signals() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGINT);
-  sigaddset(&set, SIGTERM);
-  sigaddset(&set, SIGHUP);
-  return set;
-}
-
-// Waits for `seconds` (forever when negative) or until a stop signal arrives.
-void wait_or_signal(double seconds) {
-  const sigset_t set = stop_signals();
-  if (seconds < 0) {
-    int sig = 0;
-    sigwait(&set, &sig);
-    return;
-  }
-  timespec end{};
-  clock_gettime(CLOCK_MONOTONIC, &end);
-  const double until = double(end.tv_sec) + end.tv_nsec * 1e-9 + seconds;
-  for (;;) {
-    timespec now{};
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    const double left = until - (double(now.tv_sec) + now.tv_nsec * 1e-9);
-    if (left <= 0) return;
-    timespec ts{};
-    ts.tv_sec = time_t(left);
-    ts.tv_nsec = long((left - double(ts.tv_sec)) * 1e9);
-    if (sigtimedwait(&set, nullptr, &ts) >= 0) return;  // a stop signal
-    if (errno != EINTR && errno != EAGAIN) return;
-  }
-}
-
-int lit_for(const StationOptions& s, const std::vector<std::string>& ids, double seconds) {
-  const std::vector<devices::LightConfig> lights = station_lights(s);
-  auto bank = devices::open_lights(select(lights, ids), ids);
-  wait_or_signal(seconds);
-  bank->all_off();
-  return 0;
-}
-
-}  // namespace
-
-void block_stop_signals() {
-  const sigset_t set = stop_signals();
-  sigprocmask(SIG_BLOCK, &set, nullptr);
-}
-
-int pulse_command(const StationOptions& s, const PulseOptions& o) { return lit_for(s, {o.id}, double(o.ms) / 1000.0); }
+namespace fest::lights_tool {
 
 int hold_command(const StationOptions& s, const HoldOptions& o) { return lit_for(s, o.ids, o.seconds > 0 ? o.seconds : -1); }
 
-}  // namespace fest::lights
+}  // namespace fest::lights_tool

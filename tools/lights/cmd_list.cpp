@@ -9,7 +9,7 @@
 #include "devices/usb_aux_lights.hpp"
 #include "station.hpp"
 
-namespace fest::lights {
+namespace fest::lights_tool {
 
 namespace {
 
@@ -45,4 +45,4 @@ int list_command(const StationOptions& s) {
   return 0;
 }
 
-}  // namespace fest::lights
+}  // namespace fest::lights_tool

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace fest::lights {
+namespace fest::lights_tool {
 
 // The station whose "lights" array names the lights (empty: $CAPTURE_STATION).
 struct StationOptions {
@@ -39,4 +39,4 @@ int only_command(const StationOptions& s, const std::string& id);
 int pulse_command(const StationOptions& s, const PulseOptions& o);
 int hold_command(const StationOptions& s, const HoldOptions& o);
 
-}  // namespace fest::lights
+}  // namespace fest::lights_tool

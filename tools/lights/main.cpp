@@ -9,7 +9,7 @@
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
-  using namespace fest::lights;
+  using namespace fest::lights_tool;
   // Blocked before any line is requested: only pulse and hold ever receive them.
   block_stop_signals();
 

@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace fest::lights {
+namespace fest::lights_tool {
 
 using devices::LightConfig;
 
@@ -24,4 +24,4 @@ std::vector<LightConfig> select(const std::vector<LightConfig>& all, const std::
   return out;
 }
 
-}  // namespace fest::lights
+}  // namespace fest::lights_tool

@@ -1,5 +1,4 @@
 // softobj polygonize: skeleton -> closed mesh of f = V* (docs/softobj.md §3).
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 
@@ -8,6 +7,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "marching_cubes.hpp"
@@ -19,7 +19,7 @@
 namespace fest::softobj_tool {
 
 int run_polygonize(const PolygonizeArgs& a) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   if (a.iso != 0 && a.radius != 0) throw usage_error("--iso and --radius exclude each other");
   if (a.iso < 0 || (a.iso == 0 && a.radius < 0)) throw usage_error("--iso/--radius must be positive");
   if (a.method != "shrinkwrap" && a.method != "mc") throw usage_error("--method {} is not shrinkwrap or mc", a.method);
@@ -96,7 +96,7 @@ int run_polygonize(const PolygonizeArgs& a) {
     r["euler_characteristic"] = m.euler_characteristic;
     r["closed"] = m.closed;
     r["skeleton_euler_characteristic"] = compiled.euler_characteristic;
-    r["time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r["time_s"] = watch.seconds();
     write_output(a.report, r.dump(2) + "\n");
   }
   return 0;

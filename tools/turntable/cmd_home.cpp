@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "device.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 int home_command(const DeviceOptions& d, const HomeOptions& o) {
   const OpenTurntable t(d);
@@ -31,4 +31,4 @@ int home_command(const DeviceOptions& d, const HomeOptions& o) {
   }
 }
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

@@ -1,4 +1,4 @@
-// turntable info / status: what the device is, and where it stands.
+// turntable info: what the device is (name, serial, steps per revolution, limits).
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "device.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 int info_command(const DeviceOptions& d) {
   const OpenTurntable t(d);
@@ -21,15 +21,4 @@ int info_command(const DeviceOptions& d) {
   return 0;
 }
 
-int status_command(const DeviceOptions& d) {
-  const OpenTurntable t(d);
-  const std::uint32_t spr = t->info().steps_per_rev;
-  const capture::TurntableStatus s = t->status();
-  print(d, status_json(s, spr),
-        fmt::format("position: {} steps ({:.4f} deg)\ntarget: {} steps\nstate: {}\nhomed: {}\nfault: {} ({})\n", s.position,
-                    capture::angle_for_steps(s.position, spr), s.target, state_name(s.state), s.homed ? "yes" : "no",
-                    s.fault, capture::ttp1::fault_name(s.fault)));
-  return 0;
-}
-
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

@@ -7,7 +7,7 @@
 #include "devices/open_devices.hpp"
 #include "devices/usb_turntable.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 int list_command(const DeviceOptions& d) {
   const std::string uri = device_uri(d);
@@ -28,4 +28,4 @@ int list_command(const DeviceOptions& d) {
   return 0;
 }
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

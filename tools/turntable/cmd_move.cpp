@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "device.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 int move_command(const DeviceOptions& d, const MoveOptions& o) {
   const OpenTurntable t(d);
@@ -48,4 +48,4 @@ int move_command(const DeviceOptions& d, const MoveOptions& o) {
   return 0;
 }
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

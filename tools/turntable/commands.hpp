@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 // Which device to drive and how to print: shared by every subcommand.
 struct DeviceOptions {
@@ -43,4 +43,4 @@ int stop_command(const DeviceOptions& d, bool now);
 int zero_command(const DeviceOptions& d);
 int enable_command(const DeviceOptions& d, bool enable);
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

@@ -11,7 +11,7 @@
 #include "devices/open_devices.hpp"
 #include "devices/station_lights.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 std::string device_uri(const DeviceOptions& d) {
   if (!d.device.empty()) return d.device;
@@ -69,4 +69,4 @@ std::uint32_t speed_steps(double deg_s, std::uint32_t spr) {
   return std::uint32_t(std::lround(deg_s / 360.0 * spr));
 }
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

@@ -12,7 +12,7 @@
 #include "capture/turntable.hpp"
 #include "commands.hpp"
 
-namespace fest::turntable {
+namespace fest::turntable_tool {
 
 // --device, else the station's turntable.uri, else the TTP/1 default.
 std::string device_uri(const DeviceOptions& d);
@@ -43,4 +43,4 @@ nlohmann::json status_json(const capture::TurntableStatus& s, std::uint32_t spr)
 // deg/s -> steps/s; 0 stays 0 (the device's default or maximum).
 std::uint32_t speed_steps(double deg_s, std::uint32_t spr);
 
-}  // namespace fest::turntable
+}  // namespace fest::turntable_tool

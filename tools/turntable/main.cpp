@@ -8,7 +8,7 @@
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
-  using namespace fest::turntable;
+  using namespace fest::turntable_tool;
   CLI::App app{"Rotate a capture station's turntable: a TTP/1 USB controller (usb:) or the simulator (sim:).",
                "turntable"};
   fest::cli::Common common;

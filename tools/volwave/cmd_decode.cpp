@@ -1,41 +1,25 @@
-// volwave decode (.vw -> volume, possibly from a truncated file) and volwave info.
-
-#include <chrono>
+// volwave decode (.vw -> volume, possibly from a truncated file).
 
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
+#include "input_location.hpp"
 #include "volume_input.hpp"
 #include "wavelet/vw_codec.hpp"
 
 namespace fest::volwave_tool {
 
-namespace {
-
-std::string where_of(const std::string& path) { return is_stdio(path) ? "stdin" : path; }
-
-template <typename F>
-auto named(const std::string& path, F&& f) {
-  try {
-    return f();
-  } catch (const Error& e) {
-    if (e.status() != Status::bad_input) throw;
-    throw Error(e.status(), with_location(e.what(), where_of(path)));
-  }
-}
-
-}  // namespace
-
 int decode_command(const DecodeOptions& o) {
   if (o.chunks == 0) throw usage_error("--chunks must be at least 1");
   const std::string bytes = read_input(o.input);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const wavelet::DecodeResult d = named(o.input, [&] { return wavelet::decode_vw(bytes, resolve_threads(o.threads), o.chunks); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = watch.seconds();
   write_any_volume(d.volume, o.output, o.to);
   if (d.truncated && !o.quiet)
     warn("volwave", fmt::format("truncated file: decoded {} of {} chunks, a coarser volume with max error {} and RMS error {} "
@@ -52,49 +36,6 @@ int decode_command(const DecodeOptions& o) {
                         {"decode_seconds", seconds}};
     write_output(o.report, r.dump(2) + "\n");
   }
-  return 0;
-}
-
-int info_command(const InfoOptions& o) {
-  const std::string bytes = read_input(o.input);
-  const wavelet::VwHeader h = named(o.input, [&] { return wavelet::read_vw_header(bytes); });
-  nlohmann::json chunks = nlohmann::json::array();
-  std::uint64_t at = h.header_bytes;
-  int complete = 0;
-  for (std::size_t k = 0; k < h.chunks.size(); ++k) {
-    const auto& c = h.chunks[k];
-    at += c.bytes;
-    const bool present = at <= bytes.size();
-    if (present && complete == static_cast<int>(k)) ++complete;
-    std::string what = k == 0 ? "approximation" : (k + 1 == h.chunks.size() ? "outliers" : fmt::format("details of level {}", h.levels - static_cast<int>(k)));
-    chunks.push_back({{"chunk", k}, {"holds", what}, {"bytes", c.bytes}, {"file_bytes_through", at}, {"max_error", c.max_error},
-                      {"rmse", c.rmse}, {"present", present}});
-  }
-  const std::size_t voxels = h.dims[0] * h.dims[1] * h.dims[2];
-  const double raw = static_cast<double>(voxels * scalar_type_size(h.type));
-  nlohmann::json r = {{"format", "vw"},
-                      {"version", 1},
-                      {"dimensions", h.dims},
-                      {"spacing", h.spacing},
-                      {"origin", h.origin},
-                      {"direction", h.direction},
-                      {"value_type", scalar_type_name(h.type)},
-                      {"mode", wavelet::mode_name(h.mode)},
-                      {"wavelet", wavelet::wavelet_name(h.wavelet)},
-                      {"levels", h.levels},
-                      {"bound", h.bound},
-                      {"step", h.quantiser.step},
-                      {"keys", h.quantiser.kind == wavelet::KeyKind::float32_bits ? "float32-bits" : "scaled"},
-                      {"bytes", h.total_bytes()},
-                      {"file_bytes", bytes.size()},
-                      {"ratio", raw / static_cast<double>(h.total_bytes())},
-                      {"truncated", bytes.size() < h.total_bytes()},
-                      {"chunks_complete", complete},
-                      {"max_error", h.chunks.back().max_error},
-                      {"rmse", h.chunks.back().rmse},
-                      {"chunks", chunks}};
-  if (h.roi_step > 0) r["roi_bound"] = h.roi_bound;
-  write_output("-", r.dump(2) + "\n");
   return 0;
 }
 

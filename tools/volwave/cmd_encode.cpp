@@ -1,6 +1,5 @@
 // volwave encode: volume -> .vw under an L-infinity bound, an RMS target, or lossless.
 
-#include <chrono>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -8,6 +7,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "volume_input.hpp"
 #include "wavelet/vw_codec.hpp"
@@ -80,10 +80,10 @@ int encode_command(const EncodeOptions& o) {
   if (!o.roi_mask.empty()) eo.roi_mask = roi_from_mask(v, o.roi_mask);
   if (has_roi) eo.roi_bound = *o.roi_error;
 
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   wavelet::EncodeStats st;
   const std::string bytes = wavelet::encode_vw(v, eo, &st);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = watch.seconds();
   write_output(o.output, bytes);
   if (!o.report.empty()) {
     const double raw = static_cast<double>(v.size() * scalar_type_size(v.type));

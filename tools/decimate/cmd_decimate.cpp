@@ -1,6 +1,5 @@
-#include "decimate_app.hpp"
+#include "commands.hpp"
 
-#include <chrono>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -8,6 +7,7 @@
 #include "compare/mesh_compare.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "decimate/simplify.hpp"
@@ -60,7 +60,6 @@ decimate::SimplifyOptions simplify_options(const Options& o, const Mesh& mesh) {
 }  // namespace
 
 int run(const Options& o) {
-  using Clock = std::chrono::steady_clock;
   const int threads = resolve_threads(o.threads);
   formats::OutputFormat out_format{formats::Format::ply, false};
   bool out_known = false;
@@ -83,9 +82,9 @@ int run(const Options& o) {
   const decimate::SimplifyOptions s = simplify_options(o, mesh);
 
   decimate::SimplifyStats st;
-  const auto t0 = Clock::now();
+  const Stopwatch watch;
   Mesh out = decimate::simplify(mesh, s, &st);
-  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  const double ms = watch.ms();
   if (st.triangulated_polygons > 0 && !o.quiet)
     warn("decimate", fmt::format("{} polygons were split into triangles", st.triangulated_polygons));
   if (s.target_faces > 0 && !st.reached_target && s.max_error < 0 && !o.quiet)
