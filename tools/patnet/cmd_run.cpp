@@ -50,8 +50,7 @@ int cmd_run(const RunArgs& a) {
   opt.max_steps = a.max_steps;
   opt.strict = a.strict;
   opt.dump_locals = a.dump_locals;
-  const TraceFormat format = a.raw_print ? TraceFormat::raw : a.trace == "tsv" ? TraceFormat::tsv
-                             : a.trace == "none" ? TraceFormat::none : TraceFormat::json;
+  const TraceFormat format = a.raw_print ? TraceFormat::raw : a.trace;
   TraceWriter writer(stdout, format);
   writer.hold(true);
   patnet::Machine m(opt, &writer);

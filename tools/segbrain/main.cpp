@@ -119,6 +119,7 @@ int main(int argc, char** argv) {
         if (opt->get_positional()) stray.insert(stray.end(), opt->results().begin(), opt->results().end());
         else stray.push_back(opt->get_name());
       }
+    std::reverse(stray.begin(), stray.end());  // CLI11 lists them last first
     if (!stray.empty()) throw CLI::ExtrasError(stray);
   });
 
