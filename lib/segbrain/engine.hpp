@@ -64,10 +64,14 @@ class Engine {
   // have been resolved by the caller).
   void consult(const Program& program);
   void add_clause(const Clause& clause, bool front = false);
-  // Removes every clause of name/arity (for --set overrides).
+  // Removes every clause of name/arity (to override a fact).
   void remove_predicate(const std::string& name, int arity);
   bool defines(const std::string& name, int arity) const;
   void register_foreign(const std::string& name, int arity, ForeignInfo info);
+  // The same from its parts: the modes and documentation are what `segbrain ops` lists.
+  void register_foreign(const std::string& name, int arity, const char* modes, const char* doc, Foreign fn) {
+    register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
+  }
   const std::map<std::string, ForeignInfo>& foreigns() const { return foreign_; }
   // Every name/arity called from a clause body that is neither defined, built in nor
   // foreign: (indicator, "file:line").
