@@ -7,7 +7,8 @@ seconds="${1:-600}"
 shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_mgh fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json
-  fuzz_image_stream fuzz_patnet fuzz_vw fuzz_radiosity_scene fuzz_volume_source fuzz_softobj fuzz_lbm_case fuzz_ffd_lattice fuzz_v4l2_frame fuzz_feshape_xyz)
+  fuzz_image_stream fuzz_patnet fuzz_vw fuzz_radiosity_scene fuzz_volume_source fuzz_softobj fuzz_lbm_case fuzz_ffd_lattice fuzz_v4l2_frame fuzz_feshape_xyz
+  fuzz_segbrain_kb)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -33,6 +34,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_ffd_lattice) echo tests/data/ffd ;;
     fuzz_v4l2_frame) echo tests/data/v4l2 ;;
     fuzz_feshape_xyz) echo tests/data/feshape ;;
+    fuzz_segbrain_kb) echo share/segbrain tests/data/regress/segbrain ;;
   esac
 }
 
