@@ -2,11 +2,11 @@
 // 6-DoF pose relative to the camera (the MagicBook's registration, Kato & Billinghurst
 // 1999; docs/markerpose.md). Wiring only: this file maps flags onto commands.hpp.
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "cli/cli.hpp"
+#include "cli/implied_subcommand.hpp"
 #include "commands.hpp"
 
 using namespace fest::markerpose_tool;
@@ -47,13 +47,12 @@ int main(int argc, char** argv) {
   // `markerpose IMAGE ...` means `markerpose detect IMAGE ...`: the main command takes
   // detect's flags too, and detects when no subcommand is named.
   DetectOptions det;
-  const std::vector<CLI::Option*> implied_detect = add_detect_flags(app, det);
-  for (CLI::Option* o : implied_detect) o->group("Options of detect (also without the word detect)");
+  fest::cli::imply_subcommand(app, add_detect_flags(app, det), "Options of detect (also without the word detect)",
+                              {"--camera", "--size"}, false);
   CLI::App* d = app.add_subcommand("detect", "Find markers and their poses (the default subcommand)");
   add_detect_flags(*d, det);
   d->get_option("--camera")->required();
   d->get_option("--size")->required();
-  app.require_subcommand(0, 1);
 
   GenOptions gen;
   CLI::App* g = app.add_subcommand("gen", "Synthetic marker image(s) at a known pose, with the ground truth");
@@ -96,22 +95,6 @@ int main(int argc, char** argv) {
   w->add_option("--cell", draw.cell_px, "Pixels per cell")->check(CLI::Range(1, 1000));
   w->add_option("--quiet-zone", draw.quiet_cells, "White cells around the border")->check(CLI::Range(0, 100));
   w->add_option("-o,--output", draw.output, "Output image (- = PNG on standard output)");
-
-  app.final_callback([&] {
-    if (app.get_subcommands().empty()) {  // detect: its required flags
-      for (const char* flag : {"--camera", "--size"})
-        if (app.get_option(flag)->count() == 0) throw CLI::RequiredError(flag);
-      return;
-    }
-    std::vector<std::string> stray;  // detect's flags before another subcommand, or images before detect
-    for (CLI::Option* opt : implied_detect)
-      if (opt->count() > 0) {
-        if (opt->get_positional()) stray.insert(stray.end(), opt->results().begin(), opt->results().end());
-        else stray.push_back(opt->get_name());
-      }
-    std::reverse(stray.begin(), stray.end());  // CLI11 lists them last first
-    if (!stray.empty()) throw CLI::ExtrasError(stray);
-  });
 
   return fest::cli::run(app, argc, argv, [&] {
     if (*g) {

@@ -4,18 +4,14 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "knowledge_base.hpp"
-#include "segbrain/workspace.hpp"
 
 namespace fest::segbrain_tool {
 
 using namespace fest::segbrain;
 
 int run_kb_check(const KbCheckArgs& a) {
-  Engine engine;
-  Grid g;
-  g.n = {3, 3, 3};
-  Workspace ws(g);
-  ws.register_operators(engine);
+  OperatorEngine ops;
+  Engine& engine = ops.engine;
   std::vector<Program> progs = load_kb(a.files);
   std::size_t problems = 0;
   for (const auto& p : progs) {

@@ -4,8 +4,8 @@
 
 #include "commands.hpp"
 #include "core/file_io.hpp"
+#include "knowledge_base.hpp"
 #include "segbrain/engine.hpp"
-#include "segbrain/workspace.hpp"
 
 namespace fest::segbrain_tool {
 
@@ -13,11 +13,8 @@ using namespace fest::segbrain;
 using nlohmann::json;
 
 int run_ops(const OpsArgs& a) {
-  Engine engine;
-  Grid g;
-  g.n = {3, 3, 3};
-  Workspace ws(g);
-  ws.register_operators(engine);
+  OperatorEngine ops;
+  Engine& engine = ops.engine;
   json j = json::array();
   std::string text;
   for (const auto& [name, info] : engine.foreigns()) {

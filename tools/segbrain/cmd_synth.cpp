@@ -22,14 +22,8 @@ Volume grid_volume(const Grid& g) {
 }  // namespace
 
 int run_synth(const SynthArgs& a) {
-  if (a.noise < 0 || a.bias < 0) throw usage_error("--noise and --bias must be >= 0");
-  PhantomOptions o;
-  o.size = a.size;
-  o.spacing = a.spacing;
-  o.noise = a.noise;
-  o.bias = a.bias;
-  o.seed = a.seed;
-  Phantom p = make_phantom(o);
+  if (a.phantom.noise < 0 || a.phantom.bias < 0) throw usage_error("--noise and --bias must be >= 0");
+  Phantom p = make_phantom(a.phantom);
   Volume img = grid_volume(p.grid);
   img.type = ScalarType::f32;
   img.voxels.assign(p.t1.begin(), p.t1.end());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "formats/detect.hpp"
+#include "segbrain/phantom.hpp"
 
 namespace fest::segbrain_tool {
 
@@ -59,11 +60,7 @@ struct OpsArgs {
 struct SynthArgs {
   std::string output;
   std::string truth;
-  std::array<std::size_t, 3> size{160, 192, 160};  // voxels
-  std::array<double, 3> spacing{1, 1, 1};          // mm
-  double noise = 0.03;
-  double bias = 0.2;
-  unsigned long long seed = 1;
+  segbrain::PhantomOptions phantom;  // size, spacing, noise, bias, seed
 };
 
 // Objects of a label volume for eval: a name and the label values (closed ranges lo..hi)

@@ -8,6 +8,7 @@
 
 #include "segbrain/engine.hpp"
 #include "segbrain/kb_parser.hpp"
+#include "segbrain/workspace.hpp"
 
 namespace fest::segbrain_tool {
 
@@ -29,5 +30,20 @@ struct LabelEntry {
 std::vector<LabelEntry> label_entries(segbrain::Engine& engine);
 // The label/4 facts of the given rule files (none: the built-in knowledge base).
 std::vector<LabelEntry> kb_labels(const std::vector<std::string>& kb);
+
+// An engine that knows the workspace's operator predicates (on a 3x3x3 grid, none of them
+// called): what kb-check checks rule files against and ops lists.
+struct OperatorEngine {
+  segbrain::Engine engine;
+  segbrain::Workspace workspace{tiny_grid()};
+  OperatorEngine() { workspace.register_operators(engine); }
+
+ private:
+  static segbrain::Grid tiny_grid() {
+    segbrain::Grid g;
+    g.n = {3, 3, 3};
+    return g;
+  }
+};
 
 }  // namespace fest::segbrain_tool

@@ -2,12 +2,12 @@
 // (Ehricke, seed 000 chapter 2; docs/segbrain.md). This file only declares the flags
 // and turns them into the typed options of commands.hpp.
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "cli/cli.hpp"
 #include "cli/enum_option.hpp"
+#include "cli/implied_subcommand.hpp"
 #include "commands.hpp"
 
 using namespace fest::segbrain_tool;
@@ -64,12 +64,10 @@ int main(int argc, char** argv) {
   // run's flags too, and runs when no subcommand is named.
   RunArgs run;
   RunFlagText run_text;
-  const std::vector<CLI::Option*> implied_run = add_run_flags(app, run, run_text);
-  for (CLI::Option* o : implied_run) o->group("Options of run (also without the word run)");
+  fest::cli::imply_subcommand(app, add_run_flags(app, run, run_text), "Options of run (also without the word run)", {}, true);
   auto* r = app.add_subcommand("run", "Segment a volume (the default subcommand); the label volume to standard output or -o");
   r->fallthrough();  // -q/-v of the main command also after "run"
   add_run_flags(*r, run, run_text);
-  app.require_subcommand(0, 1);
 
   KbCheckArgs kbc;
   auto* k = app.add_subcommand("kb-check", "Lint knowledge-base files: syntax, undefined predicates, singletons");
@@ -86,9 +84,9 @@ int main(int argc, char** argv) {
   s->add_option("--truth", syn.truth, "Truth label volume")->required();
   s->add_option("--size", syn_size, "Voxels NX,NY,NZ")->default_val("160,192,160");
   s->add_option("--spacing", syn_spacing, "Voxel size in mm SX,SY,SZ")->default_val("1,1,1");
-  s->add_option("--noise", syn.noise, "Rician noise sd / white-matter intensity")->default_val(0.03);
-  s->add_option("--bias", syn.bias, "Bias field peak-to-peak")->default_val(0.2);
-  s->add_option("--seed", syn.seed, "Random seed")->default_val(1);
+  s->add_option("--noise", syn.phantom.noise, "Rician noise sd / white-matter intensity")->default_val(0.03);
+  s->add_option("--bias", syn.phantom.bias, "Bias field peak-to-peak")->default_val(0.2);
+  s->add_option("--seed", syn.phantom.seed, "Random seed")->default_val(1);
 
   SlicesArgs sl;
   auto* sv = app.add_subcommand("slices", "PNG of three orthogonal slices (axial, coronal, sagittal) with the labels overlaid");
@@ -106,29 +104,12 @@ int main(int argc, char** argv) {
   e->add_option("--map", ev_map, "Objects of the segmentation: \"name=v1,v2,a-b;...\" (default: nonzero)");
   e->add_option("--ref-map", ev_ref_map, "Objects of the reference, same syntax (default: --map)");
 
-  app.final_callback([&] {
-    if (app.get_subcommands().empty()) {
-      const auto options = app.get_options();
-      if (std::none_of(options.begin(), options.end(), [](const CLI::Option* opt) { return opt->count() > 0; }))
-        throw CLI::RequiredError::Subcommand(1);  // a bare `segbrain`
-      return;
-    }
-    std::vector<std::string> stray;  // run's flags before another subcommand, or a second input
-    for (CLI::Option* opt : implied_run)
-      if (opt->count() > 0) {
-        if (opt->get_positional()) stray.insert(stray.end(), opt->results().begin(), opt->results().end());
-        else stray.push_back(opt->get_name());
-      }
-    std::reverse(stray.begin(), stray.end());  // CLI11 lists them last first
-    if (!stray.empty()) throw CLI::ExtrasError(stray);
-  });
-
   return fest::cli::run(app, argc, argv, [&]() -> int {
     if (*k) return run_kb_check(kbc);
     if (*o) return run_ops(ops);
     if (*s) {
-      syn.size = positive_counts(syn_size, "--size");
-      syn.spacing = positive_lengths(syn_spacing, "--spacing");
+      syn.phantom.size = positive_counts(syn_size, "--size");
+      syn.phantom.spacing = positive_lengths(syn_spacing, "--spacing");
       return run_synth(syn);
     }
     if (*e) {
