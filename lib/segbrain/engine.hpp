@@ -7,7 +7,6 @@
 // solution and undoes its bindings when k fails. A cut returns a signal that unwinds to
 // the predicate call that owns it, so a cut inside a nested call never cuts the caller.
 
-#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -15,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/stopwatch.hpp"
 #include "segbrain/kb_parser.hpp"
 #include "segbrain/term.hpp"
 
@@ -148,7 +148,7 @@ class Engine {
   std::uint64_t next_barrier_ = 1;
   Limits limits_;
   Counters counters_;
-  std::chrono::steady_clock::time_point start_;
+  SteadyClock::time_point start_;
   std::function<void(const TraceEvent&)> trace_;
   std::function<void(const std::string&)> log_;
   std::vector<std::pair<std::string, double>> measure_;
