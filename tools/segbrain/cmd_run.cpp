@@ -185,19 +185,9 @@ json objects_json(const Workspace& ws, const Grid& grid, const Volume& in, const
   return objs;
 }
 
-}  // namespace
-
-int run_segment(const RunArgs& a) {
-  const Stopwatch clock;
-  set_worker_threads(resolve_threads(a.threads));
-#ifdef __GLIBC__
-  // The operators allocate and free volume-sized arrays (7-60 MB) a hundred times per
-  // run. glibc would map each afresh and the kernel fault in and zero every page again
-  // (a third of the CPU time on Colin27); kept in the heap, freed blocks are reused.
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
-  Engine engine;
+// The knowledge base with the run's settings (--set, --modality, --tissue) in the engine,
+// and the goal to prove (--goal, or segment_objects of --objects).
+Term prepare_engine(Engine& engine, const RunArgs& a) {
   for (const auto& p : load_kb(a.kb)) engine.consult(p);
   for (const auto& s : a.sets) apply_set(engine, s);
   apply_modality(engine, a.modality);
@@ -217,6 +207,23 @@ int run_segment(const RunArgs& a) {
     throw usage_error("{}", e.what());
   }
   if (!a.objects.empty()) goal = objects_goal(engine, a.objects);
+  return goal;
+}
+
+}  // namespace
+
+int run_segment(const RunArgs& a) {
+  const Stopwatch clock;
+  set_worker_threads(resolve_threads(a.threads));
+#ifdef __GLIBC__
+  // The operators allocate and free volume-sized arrays (7-60 MB) a hundred times per
+  // run. glibc would map each afresh and the kernel fault in and zero every page again
+  // (a third of the CPU time on Colin27); kept in the heap, freed blocks are reused.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
+  Engine engine;
+  const Term goal = prepare_engine(engine, a);
   const std::vector<LabelEntry> table = label_entries(engine);
 
   Volume in = read_volume_input(a.input, "segbrain");
