@@ -7,6 +7,7 @@
 #include "compare/mesh_compare.hpp"
 #include "compare/triangle_tree.hpp"
 #include "core/polygon_triangulation.hpp"
+#include "core/rng.hpp"
 
 namespace fest::compare {
 
@@ -43,19 +44,6 @@ std::vector<Triangle> triangles_of(const Mesh& mesh, const FaceList& beside) {
   return out;
 }
 
-// SplitMix64: a fixed, portable generator, so the samples (and the reported figures)
-// are the same on every platform and library version.
-struct SplitMix64 {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-};
-
 // Every vertex used by a face, then `extra` points distributed by area.
 std::vector<Vec3> sample_surface(const Mesh& mesh, const FaceList& beside, const std::vector<Triangle>& tris,
                                  std::size_t extra, std::uint64_t seed) {
@@ -75,7 +63,7 @@ std::vector<Vec3> sample_surface(const Mesh& mesh, const FaceList& beside, const
     cumulative[i] = total;
   }
   if (!(total > 0)) return samples;
-  SplitMix64 rng{seed};
+  SplitMix64 rng{seed};  // lib/core/rng.hpp: the same samples (and figures) everywhere
   for (std::size_t s = 0; s < extra; ++s) {
     const double pick = rng.uniform() * total;
     std::size_t i = static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) -

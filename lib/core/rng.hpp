@@ -1,13 +1,39 @@
 #pragma once
-// A seeded random source whose output is the same on every standard library (header
+// Seeded random sources whose output is the same on every standard library (header
 // only): xoshiro256** seeded through splitmix64 and an own Box-Muller transform, because
 // std::normal_distribution differs between libraries and would break golden files.
-// The project's one generator: facefit's Rng is this class.
+// The project's one generator module: facefit's Rng is Rng; segbrain's phantom and
+// compare's surface samples draw from SplitMix64 (their golden files were made with it).
 
 #include <cmath>
 #include <cstdint>
 
 namespace fest {
+
+// SplitMix64 (Steele, Lea & Flood 2014): the state advances by the golden-ratio
+// increment and is mixed into the output. Seeds Rng; on its own a small, fast stream.
+inline std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+class SplitMix64 {
+ public:
+  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() { return splitmix64(state_); }  // 64 uniform bits
+  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }                // [0, 1)
+  double uniform_open() { return (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53; }  // (0, 1): the log stays finite
+  double normal() {  // N(0, 1): Box-Muller's cosine half, two draws a number
+    const double u1 = uniform_open();
+    const double u2 = uniform_open();
+    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * 3.14159265358979323846 * u2);
+  }
+
+ private:
+  std::uint64_t state_;
+};
 
 class Rng {
  public:
@@ -49,12 +75,6 @@ class Rng {
   }
 
  private:
-  static std::uint64_t splitmix64(std::uint64_t& x) {
-    std::uint64_t z = (x += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
   double spare_ = 0.0;

@@ -6,6 +6,8 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include "markers/line2d.hpp"
+
 namespace fest::markers {
 
 namespace {
@@ -21,10 +23,6 @@ inline float sample(const cv::Mat& g, double x, double y) {
   const float b = r1[x0] + fx * (r1[x1] - r1[x0]);
   return a + fy * (b - a);
 }
-
-struct Line {
-  cv::Point2d point, dir;  // a point on the line and its unit direction
-};
 
 struct EdgePoint {
   cv::Point2d p;
@@ -43,15 +41,6 @@ Line fit_line(const std::vector<EdgePoint>& pts) {
   }
   const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
   return {cv::Point2d(mx, my), cv::Point2d(std::cos(angle), std::sin(angle))};
-}
-
-bool intersect(const Line& a, const Line& b, cv::Point2d& out) {
-  const double det = a.dir.x * (-b.dir.y) - a.dir.y * (-b.dir.x);
-  if (std::abs(det) < 1e-9) return false;
-  const cv::Point2d d = b.point - a.point;
-  const double s = (d.x * (-b.dir.y) - d.y * (-b.dir.x)) / det;
-  out = a.point + s * a.dir;
-  return true;
 }
 
 // Distorted pixels -> ideal pixels (the same K, no distortion).

@@ -7,6 +7,8 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include "markers/line2d.hpp"
+
 namespace fest::markers {
 
 namespace {
@@ -14,10 +16,6 @@ namespace {
 struct Pixel {
   cv::Point2d p;  // ideal pixel coordinates of the pixel centre
   double v;       // grey level
-};
-
-struct Line {
-  cv::Point2d point, dir;  // a point on the line and its unit direction
 };
 
 std::vector<cv::Point2d> to_ideal(const std::vector<cv::Point2d>& in, const CameraModel* cam) {
@@ -154,15 +152,6 @@ bool fit_side(const std::vector<Pixel>& pixels, cv::Point2d a, cv::Point2d b, do
   }
   if (!(B0 - A0 > 4) || rms > 3 * noise_sigma + 3) return false;
   out = {mid, dir};
-  return true;
-}
-
-bool intersect(const Line& a, const Line& b, cv::Point2d& out) {
-  const double det = a.dir.x * (-b.dir.y) - a.dir.y * (-b.dir.x);
-  if (std::abs(det) < 1e-9) return false;
-  const cv::Point2d d = b.point - a.point;
-  const double s = (d.x * (-b.dir.y) - d.y * (-b.dir.x)) / det;
-  out = a.point + s * a.dir;
   return true;
 }
 

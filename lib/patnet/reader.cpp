@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/text_position.hpp"
+
 namespace fest::patnet {
 
 std::string upcase(std::string_view s) {
@@ -37,19 +39,14 @@ class Reader {
   int file_;
   int max_depth_;
   std::size_t p_ = 0;
-  int line_ = 1, col_ = 1;
+  TextPosition pos_;
 
   bool at_end() const { return p_ >= s_.size(); }
   char peek() const { return s_[p_]; }
-  SrcPos here() const { return SrcPos{file_, line_, col_}; }
+  SrcPos here() const { return SrcPos{file_, pos_.line, pos_.col}; }
   char next() {
     const char c = s_[p_++];
-    if (c == '\n') {
-      ++line_;
-      col_ = 1;
-    } else {
-      ++col_;
-    }
+    pos_.advance(c);
     return c;
   }
   [[noreturn]] static void fail(std::string msg, SrcPos pos) { throw ReadError{std::move(msg), pos}; }

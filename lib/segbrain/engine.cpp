@@ -45,7 +45,7 @@ const std::set<std::string>& builtin_keys() {
 
 }  // namespace
 
-Engine::Engine() : start_(std::chrono::steady_clock::now()) { add_prelude(); }
+Engine::Engine() : start_(SteadyClock::now()) { add_prelude(); }
 
 void Engine::add_prelude() { consult(parse_program(kPrelude, "<prelude>")); }
 
@@ -135,7 +135,7 @@ void Engine::type_error(const Clause* ctx, const std::string& what) const {
 }
 
 double Engine::now_ms() const {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+  return ms_since(start_);
 }
 
 void Engine::bind(const Term& var, const Term& value) {

@@ -7,7 +7,6 @@
 // solution and undoes its bindings when k fails. A cut returns a signal that unwinds to
 // the predicate call that owns it, so a cut inside a nested call never cuts the caller.
 
-#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -15,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/stopwatch.hpp"
 #include "segbrain/kb_parser.hpp"
 #include "segbrain/term.hpp"
 
@@ -64,10 +64,14 @@ class Engine {
   // have been resolved by the caller).
   void consult(const Program& program);
   void add_clause(const Clause& clause, bool front = false);
-  // Removes every clause of name/arity (for --set overrides).
+  // Removes every clause of name/arity (to override a fact).
   void remove_predicate(const std::string& name, int arity);
   bool defines(const std::string& name, int arity) const;
   void register_foreign(const std::string& name, int arity, ForeignInfo info);
+  // The same from its parts: the modes and documentation are what `segbrain ops` lists.
+  void register_foreign(const std::string& name, int arity, const char* modes, const char* doc, Foreign fn) {
+    register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
+  }
   const std::map<std::string, ForeignInfo>& foreigns() const { return foreign_; }
   // Every name/arity called from a clause body that is neither defined, built in nor
   // foreign: (indicator, "file:line").
@@ -144,7 +148,7 @@ class Engine {
   std::uint64_t next_barrier_ = 1;
   Limits limits_;
   Counters counters_;
-  std::chrono::steady_clock::time_point start_;
+  SteadyClock::time_point start_;
   std::function<void(const TraceEvent&)> trace_;
   std::function<void(const std::string&)> log_;
   std::vector<std::pair<std::string, double>> measure_;

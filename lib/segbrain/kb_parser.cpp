@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/text_position.hpp"
 #include "segbrain/operators_table.hpp"
 
 namespace fest::segbrain {
@@ -36,8 +37,8 @@ class Lexer {
   Token next() {
     Token t;
     t.layout_before = skip_layout();
-    t.line = line_;
-    t.col = col_;
+    t.line = pos_.line;
+    t.col = pos_.col;
     if (i_ >= s_.size()) {
       t.kind = Tok::eof;
       return t;
@@ -92,12 +93,7 @@ class Lexer {
  private:
   char take() {
     char c = s_[i_++];
-    if (c == '\n') {
-      ++line_;
-      col_ = 1;
-    } else {
-      ++col_;
-    }
+    pos_.advance(c);
     return c;
   }
 
@@ -112,7 +108,7 @@ class Lexer {
         while (i_ < s_.size() && s_[i_] != '\n') take();
         any = true;
       } else if (c == '/' && i_ + 1 < s_.size() && s_[i_ + 1] == '*') {
-        int l = line_, cc = col_;
+        int l = pos_.line, cc = pos_.col;
         take();
         take();
         while (i_ + 1 < s_.size() && !(s_[i_] == '*' && s_[i_ + 1] == '/')) take();
@@ -148,7 +144,11 @@ class Lexer {
     t.text = d;
     if (real) {
       t.kind = Tok::real;
-      t.fval = std::stod(d);
+      try {
+        t.fval = std::stod(d);
+      } catch (const std::exception&) {  // beyond double's range, or below it
+        error(t.line, t.col, "number out of range");
+      }
     } else {
       t.kind = Tok::integer;
       try {
@@ -185,7 +185,7 @@ class Lexer {
   const std::string& s_;
   std::string file_;
   std::size_t i_ = 0;
-  int line_ = 1, col_ = 1;
+  TextPosition pos_;
 };
 
 class Parser {

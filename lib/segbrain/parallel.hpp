@@ -10,10 +10,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <exception>
-#include <system_error>
-#include <thread>
-#include <vector>
+
+#include "core/parallel_for.hpp"
 
 namespace fest::segbrain {
 
@@ -23,7 +21,8 @@ void set_worker_threads(int n);
 
 // Calls body(worker, begin, end) on contiguous bands of [0, count), one per worker
 // (worker in [0, workers)); at most worker_threads() workers and none with fewer than
-// min_per_worker items. The first exception of a worker is rethrown here after all joined.
+// min_per_worker items. The bands are fest::parallel_for's jobs (each runs once, on the
+// calling thread or another); the first failure is rethrown here after all joined.
 template <typename Body>
 void parallel_bands(std::size_t count, std::size_t min_per_worker, Body&& body) {
   const std::size_t by_size = std::max<std::size_t>(1, count / std::max<std::size_t>(1, min_per_worker));
@@ -33,27 +32,8 @@ void parallel_bands(std::size_t count, std::size_t min_per_worker, Body&& body) 
     body(std::size_t{0}, std::size_t{0}, count);
     return;
   }
-  std::vector<std::exception_ptr> errors(workers);
-  std::vector<std::thread> pool;
-  pool.reserve(workers - 1);
-  auto band = [&](std::size_t w) {
-    try {
-      body(w, count * w / workers, count * (w + 1) / workers);
-    } catch (...) {
-      errors[w] = std::current_exception();
-    }
-  };
-  std::size_t started = 1;
-  try {
-    for (; started < workers; ++started) pool.emplace_back(band, started);
-  } catch (const std::system_error&) {
-    // No more threads to be had: the calling thread takes the remaining bands.
-  }
-  for (std::size_t w = started; w < workers; ++w) band(w);
-  band(0);
-  for (auto& t : pool) t.join();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  parallel_for(workers, static_cast<int>(workers),
+               [&](std::size_t w) { body(w, count * w / workers, count * (w + 1) / workers); });
 }
 
 }  // namespace fest::segbrain

@@ -5,22 +5,10 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/rng.hpp"
 
 namespace fest::segbrain {
 namespace {
-
-// SplitMix64 and Box-Muller: a deterministic generator of our own, identical everywhere.
-struct Rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return (static_cast<double>(next() >> 11) + 0.5) / 9007199254740992.0; }
-  double gauss() { return std::sqrt(-2 * std::log(uniform())) * std::cos(2 * M_PI * uniform()); }
-};
 
 // Normalised ellipsoid radius: < 1 inside.
 double ell(double x, double y, double z, double a, double b, double c) {
@@ -68,7 +56,7 @@ Phantom make_phantom(const PhantomOptions& o) {
   p.t1.assign(g.size(), 0);
   p.truth.assign(g.size(), 0);
   const double WM = 110, GM = 80, CSF = 30, FAT = 180, BONE = 20, MUSCLE = 60, NERVE = 100;
-  Rng rng{o.seed * 7919 + 17};
+  SplitMix64 rng{o.seed * 7919 + 17};  // SplitMix64 and Box-Muller: the same noise everywhere
   const auto nerves = phantom_nerves();
   for (std::size_t k = 0; k < g.n[2]; ++k)
     for (std::size_t j = 0; j < g.n[1]; ++j)
@@ -133,7 +121,7 @@ Phantom make_phantom(const PhantomOptions& o) {
         double b = 1 + 0.5 * o.bias * (0.6 * x / 80 + 0.3 * y / 96 - 0.4 * (z / 80) * (z / 80) + 0.2);
         v *= b;
         const double sd = o.noise * WM;
-        double n1 = rng.gauss() * sd, n2 = rng.gauss() * sd;
+        double n1 = rng.normal() * sd, n2 = rng.normal() * sd;
         std::size_t idx = g.index(i, j, k);
         p.t1[idx] = static_cast<float>(std::sqrt((v + n1) * (v + n1) + n2 * n2));  // Rician magnitude
         p.truth[idx] = static_cast<std::uint8_t>(lab);

@@ -33,40 +33,42 @@ const OpDef* prefix_op(const std::string& name) {
   return it == ops.end() ? nullptr : &it->second;
 }
 
-Term make_var(const std::string& name) {
+namespace {
+Term make_node(Kind kind) {
   auto n = std::make_shared<Node>();
-  n->kind = Kind::var;
+  n->kind = kind;
+  return n;
+}
+}  // namespace
+
+Term make_var(const std::string& name) {
+  Term n = make_node(Kind::var);
   n->name = name;
   return n;
 }
 Term make_atom(const std::string& name) {
-  auto n = std::make_shared<Node>();
-  n->kind = Kind::atom;
+  Term n = make_node(Kind::atom);
   n->name = name;
   return n;
 }
 Term make_int(std::int64_t v) {
-  auto n = std::make_shared<Node>();
-  n->kind = Kind::integer;
+  Term n = make_node(Kind::integer);
   n->ival = v;
   return n;
 }
 Term make_real(double v) {
-  auto n = std::make_shared<Node>();
-  n->kind = Kind::real;
+  Term n = make_node(Kind::real);
   n->fval = v;
   return n;
 }
 Term make_string(const std::string& s) {
-  auto n = std::make_shared<Node>();
-  n->kind = Kind::string;
+  Term n = make_node(Kind::string);
   n->name = s;
   return n;
 }
 Term make_compound(const std::string& functor, std::vector<Term> args) {
   if (args.empty()) return make_atom(functor);
-  auto n = std::make_shared<Node>();
-  n->kind = Kind::compound;
+  Term n = make_node(Kind::compound);
   n->name = functor;
   n->args = std::move(args);
   return n;

@@ -110,14 +110,11 @@ bool slice_scope(const Term& t) {
 }  // namespace
 
 void Workspace::register_operators(Engine& engine) {
-  auto reg = [&](const char* name, int arity, const char* modes, const char* doc, Foreign fn) {
-    engine.register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
-  };
   const Grid& g = grid_;
   auto ml = [&g](const Mask& m) { return static_cast<double>(count(m)) * g.voxel_ml(); };
 
   // --- segmentation / feature operators ---
-  reg("robust_range", 4, "+Img, +Mask|all, -P2, -P98", "2nd and 98th intensity percentiles",
+  engine.register_foreign("robust_range", 4, "+Img, +Mask|all, -P2, -P98", "2nd and 98th intensity percentiles",
       [this](Engine& e, const std::vector<Term>& a) {
         const Image& img = image(name_of(a[0]));
         Mask empty;
@@ -126,21 +123,21 @@ void Workspace::register_operators(Engine& engine) {
         if (std::isnan(p2)) return false;
         return e.unify(a[2], make_real(p2)) && e.unify(a[3], make_real(p98));
       });
-  reg("smooth", 3, "+Img, +SigmaMM, -Out", "separable Gaussian, radius ceil(3 sigma / spacing)",
+  engine.register_foreign("smooth", 3, "+Img, +SigmaMM, -Out", "separable Gaussian, radius ceil(3 sigma / spacing)",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[2], image_object(gaussian_smooth(grid_, image(name_of(a[0])), num(e, a[1]))));
       });
-  reg("threshold", 4, "+Img, +Lo, +Hi, -Mask", "Lo <= I <= Hi (inf allowed)",
+  engine.register_foreign("threshold", 4, "+Img, +Lo, +Hi, -Mask", "Lo <= I <= Hi (inf allowed)",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[3], mask_object(threshold(image(name_of(a[0])), num(e, a[1]), num(e, a[2]))));
       });
-  reg("otsu", 3, "+Img, +Mask|all, -T", "Otsu threshold on a 256-bin histogram",
+  engine.register_foreign("otsu", 3, "+Img, +Mask|all, -T", "Otsu threshold on a 256-bin histogram",
       [this](Engine& e, const std::vector<Term>& a) {
         Mask empty;
         const Mask& m = is_atom(a[1], "all") ? empty : mask(name_of(a[1]));
         return e.unify(a[2], make_real(otsu_threshold(image(name_of(a[0])), m)));
       });
-  reg("deep_intensity", 4, "+Img, +Mask, +Frac, -Ref",
+  engine.register_foreign("deep_intensity", 4, "+Img, +Mask, +Frac, -Ref",
       "median of the upper half of intensities among the deepest Frac of the mask",
       [this](Engine& e, const std::vector<Term>& a) {
         std::string in = name_of(a[0]), mn = name_of(a[1]);
@@ -165,18 +162,18 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"deep_intensity", w}};
         return e.unify(a[3], make_real(w));
       });
-  reg("region_grow", 7, "+Img, +Seeds, +Lo, +Hi, +Conn, +Within|all, -Mask", "flood fill over Lo <= I <= Hi",
+  engine.register_foreign("region_grow", 7, "+Img, +Seeds, +Lo, +Hi, +Conn, +Within|all, -Mask", "flood fill over Lo <= I <= Hi",
       [this](Engine& e, const std::vector<Term>& a) {
         Mask empty;
         const Mask& within = is_atom(a[5], "all") ? empty : mask(name_of(a[5]));
         return create(e, a[6], mask_object(region_grow(grid_, image(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]),
                                                        num(e, a[3]), conn_of(e, a[4]), within)));
       });
-  reg("largest_component", 3, "+Mask, +Conn, -Out", "largest connected component",
+  engine.register_foreign("largest_component", 3, "+Mask, +Conn, -Out", "largest connected component",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[2], mask_object(largest_component(grid_, mask(name_of(a[0])), conn_of(e, a[1]))));
       });
-  reg("largest_fraction", 2, "+Mask, -Q", "fraction of the mask in its largest 26-connected component",
+  engine.register_foreign("largest_fraction", 2, "+Mask, -Q", "fraction of the mask in its largest 26-connected component",
       [this](Engine& e, const std::vector<Term>& a) {
         const Mask& m = mask(name_of(a[0]));
         std::size_t n = count(m);
@@ -184,13 +181,13 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"largest_fraction", q}};
         return e.unify(a[1], make_real(q));
       });
-  reg("fill_holes", 3, "+Mask, +Scope, -Out", "fill background not connected to the grid border",
+  engine.register_foreign("fill_holes", 3, "+Mask, +Scope, -Out", "fill background not connected to the grid border",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[2], mask_object(fill_holes(grid_, mask(name_of(a[0])), slice_scope(a[1]))));
       });
   // --- post-processing: morphology on the exact distance transform ---
   auto morph = [&](const char* name, Mask (*op)(const Grid&, const Mask&, double)) {
-    reg(name, 3, "+Mask, +RadiusMM, -Out", "ball morphology via the exact distance transform",
+    engine.register_foreign(name, 3, "+Mask, +RadiusMM, -Out", "ball morphology via the exact distance transform",
         [this, op](Engine& e, const std::vector<Term>& a) {
           return create(e, a[2], mask_object(op(grid_, mask(name_of(a[0])), num(e, a[1]))));
         });
@@ -200,7 +197,7 @@ void Workspace::register_operators(Engine& engine) {
   morph("open", &open);
   morph("close", &close);
   auto logic = [&](const char* name, int which) {
-    reg(name, 3, "+A, +B, -Out", "voxel-wise logic", [this, which](Engine& e, const std::vector<Term>& a) {
+    engine.register_foreign(name, 3, "+A, +B, -Out", "voxel-wise logic", [this, which](Engine& e, const std::vector<Term>& a) {
       const Mask& x = mask(name_of(a[0]));
       const Mask& y = mask(name_of(a[1]));
       Mask m = combine(x, y, which == 0 ? MaskLogic::both : which == 1 ? MaskLogic::either : MaskLogic::first_only);
@@ -210,14 +207,14 @@ void Workspace::register_operators(Engine& engine) {
   logic("and", 0);
   logic("or", 1);
   logic("and_not", 2);
-  reg("copy", 2, "+Obj, -Out", "duplicate an object under a new name", [this](Engine& e, const std::vector<Term>& a) {
+  engine.register_foreign("copy", 2, "+Obj, -Out", "duplicate an object under a new name", [this](Engine& e, const std::vector<Term>& a) {
     return create(e, a[1], get(name_of(a[0])));
   });
-  reg("exists", 1, "+Name", "the workspace holds the object", [this](Engine&, const std::vector<Term>& a) {
+  engine.register_foreign("exists", 1, "+Name", "the workspace holds the object", [this](Engine&, const std::vector<Term>& a) {
     Term d = deref(a[0]);
     return d->kind == Kind::atom && has(d->name);
   });
-  reg("emit", 2, "+Obj, +Label", "mark a mask as an output label (later emits overwrite earlier ones)",
+  engine.register_foreign("emit", 2, "+Obj, +Label", "mark a mask as an output label (later emits overwrite earlier ones)",
       [this](Engine& e, const std::vector<Term>& a) {
         std::string n = name_of(a[0]);
         mask(n);
@@ -228,29 +225,29 @@ void Workspace::register_operators(Engine& engine) {
         return true;
       });
   // --- location and shape (canonical-grid mm: index x spacing along R, A, S) ---
-  reg("halfspace", 4, "+Axis(r|a|s), +below|above, +ValueMM, -Mask", "voxels below/above a position along one axis",
+  engine.register_foreign("halfspace", 4, "+Axis(r|a|s), +below|above, +ValueMM, -Mask", "voxels below/above a position along one axis",
       [this](Engine& e, const std::vector<Term>& a) {
         bool below = is_atom(a[1], "below");
         if (!below && !is_atom(a[1], "above")) throw bad_input("halfspace: side must be below or above");
         return create(e, a[3], mask_object(halfspace(grid_, axis_of(a[0]), below, num(e, a[2]))));
       });
-  reg("components_near", 6, "+Mask, +Conn, +MinMl, +[R,A,S], +MaxDistMM, -Out",
+  engine.register_foreign("components_near", 6, "+Mask, +Conn, +MinMl, +[R,A,S], +MaxDistMM, -Out",
       "components of at least MinMl whose centroid lies within MaxDistMM of the point",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[5], mask_object(components_near(grid_, mask(name_of(a[0])), conn_of(e, a[1]), num(e, a[2]),
                                                            point_of(e, a[3]), num(e, a[4]))));
       });
-  reg("components_sized", 5, "+Mask, +Conn, +MinMl, +MaxMl, -Out", "components whose volume lies in [MinMl, MaxMl]",
+  engine.register_foreign("components_sized", 5, "+Mask, +Conn, +MinMl, +MaxMl, -Out", "components whose volume lies in [MinMl, MaxMl]",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[4], mask_object(components_sized(grid_, mask(name_of(a[0])), conn_of(e, a[1]), num(e, a[2]), num(e, a[3]))));
       });
-  reg("components", 3, "+Mask, +Conn, -N", "number of connected components",
+  engine.register_foreign("components", 3, "+Mask, +Conn, -N", "number of connected components",
       [this](Engine& e, const std::vector<Term>& a) {
         const double n = double(connected_components(grid_, mask(name_of(a[0])), conn_of(e, a[1])).size.size() - 1);
         e.measure() = {{"components", n}};
         return e.unify(a[2], make_int(static_cast<std::int64_t>(n)));
       });
-  reg("symmetric_pair", 7, "+Mask, +Conn, +PlaneRMM, +MinDistMM, +MaxDistMM, -Out, -ScoreMM",
+  engine.register_foreign("symmetric_pair", 7, "+Mask, +Conn, +PlaneRMM, +MinDistMM, +MaxDistMM, -Out, -ScoreMM",
       "the two components mirroring each other best about the plane (fails when no pair fits)",
       [this](Engine& e, const std::vector<Term>& a) {
         double score = 0;
@@ -259,23 +256,23 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"pair_asymmetry_mm", score}};
         return create(e, a[5], mask_object(std::move(m))) && e.unify(a[6], make_real(score));
       });
-  reg("geodesic_dilate", 4, "+Mask, +Within, +RadiusMM, -Out", "growth by at most RadiusMM along paths inside Within",
+  engine.register_foreign("geodesic_dilate", 4, "+Mask, +Within, +RadiusMM, -Out", "growth by at most RadiusMM along paths inside Within",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[3], mask_object(geodesic_dilate(grid_, mask(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]))));
       });
-  reg("centroid_mm", 2, "+Mask, -[R,A,S]", "mean voxel position (fails for an empty mask)",
+  engine.register_foreign("centroid_mm", 2, "+Mask, -[R,A,S]", "mean voxel position (fails for an empty mask)",
       [this](Engine& e, const std::vector<Term>& a) {
         Point c = centroid_mm(grid_, mask(name_of(a[0])));
         if (std::isnan(c[0])) return false;
         return e.unify(a[1], number_list(c.data(), 3));
       });
-  reg("bbox_mm", 2, "+Mask, -[R0,R1,A0,A1,S0,S1]", "extreme voxel positions per axis (fails for an empty mask)",
+  engine.register_foreign("bbox_mm", 2, "+Mask, -[R0,R1,A0,A1,S0,S1]", "extreme voxel positions per axis (fails for an empty mask)",
       [this](Engine& e, const std::vector<Term>& a) {
         auto b = bbox_mm(grid_, mask(name_of(a[0])));
         if (std::isnan(b[0])) return false;
         return e.unify(a[1], number_list(b.data(), 6));
       });
-  reg("midsagittal_plane", 3, "+Img, +Mask, -PlaneRMM",
+  engine.register_foreign("midsagittal_plane", 3, "+Img, +Mask, -PlaneRMM",
       "sagittal plane R = c (mm, within 15 mm of the mask's centroid) of greatest mirror correlation",
       [this](Engine& e, const std::vector<Term>& a) {
         double c = midsagittal_r_mm(grid_, image(name_of(a[0])), mask(name_of(a[1])), 15.0);
@@ -283,7 +280,7 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"midsagittal_r_mm", c}};
         return e.unify(a[2], make_real(c));
       });
-  reg("mirror_dice", 3, "+Mask, +PlaneRMM, -D", "Dice of the mask and its mirror image about the sagittal plane R = PlaneRMM",
+  engine.register_foreign("mirror_dice", 3, "+Mask, +PlaneRMM, -D", "Dice of the mask and its mirror image about the sagittal plane R = PlaneRMM",
       [this](Engine& e, const std::vector<Term>& a) {
         double d = mirror_dice(grid_, mask(name_of(a[0])), num(e, a[1]));
         e.measure() = {{"mirror_dice", d}};
@@ -291,18 +288,18 @@ void Workspace::register_operators(Engine& engine) {
       });
 
   // --- measurements (verification operators read these) ---
-  reg("volume_ml", 2, "+Mask, -V", "volume in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
+  engine.register_foreign("volume_ml", 2, "+Mask, -V", "volume in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
     double v = ml(mask(name_of(a[0])));
     e.measure() = {{"volume_ml", v}};
     return e.unify(a[1], make_real(v));
   });
-  reg("ratio_ml", 3, "+A, +B, -Q", "volume of A over volume of B", [this, ml](Engine& e, const std::vector<Term>& a) {
+  engine.register_foreign("ratio_ml", 3, "+A, +B, -Q", "volume of A over volume of B", [this, ml](Engine& e, const std::vector<Term>& a) {
     double vb = ml(mask(name_of(a[1])));
     double q = vb > 0 ? ml(mask(name_of(a[0]))) / vb : 0.0;
     e.measure() = {{"volume_ratio", q}};
     return e.unify(a[2], make_real(q));
   });
-  reg("overlap_ml", 3, "+A, +B, -V", "volume of A and B in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
+  engine.register_foreign("overlap_ml", 3, "+A, +B, -V", "volume of A and B in ml", [this, ml](Engine& e, const std::vector<Term>& a) {
     const Mask& x = mask(name_of(a[0]));
     const Mask& y = mask(name_of(a[1]));
     Mask m(x.size());
@@ -311,14 +308,14 @@ void Workspace::register_operators(Engine& engine) {
     e.measure() = {{"overlap_ml", v}};
     return e.unify(a[2], make_real(v));
   });
-  reg("skin_contact_fraction", 4, "+Mask, +Head, +DistMM, -F",
+  engine.register_foreign("skin_contact_fraction", 4, "+Mask, +Head, +DistMM, -F",
       "fraction of the mask within DistMM of the head outline (inside the field of view)",
       [this](Engine& e, const std::vector<Term>& a) {
         double f = skin_contact_fraction(mask(name_of(a[0])), depth_of(name_of(a[1])), num(e, a[2]));
         e.measure() = {{"skin_contact_fraction", f}};
         return e.unify(a[3], make_real(f));
       });
-  reg("contour_length_ratio", 4, "+Mask, +Head, +axial, -R",
+  engine.register_foreign("contour_length_ratio", 4, "+Mask, +Head, +axial, -R",
       "median per-slice ratio of the compactness (perimeter / sqrt(area)) of Mask to that of Head",
       [this](Engine& e, const std::vector<Term>& a) {
         if (!is_atom(a[2], "axial")) throw bad_input("contour_length_ratio: only axial slices are supported");
@@ -326,7 +323,7 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"contour_length_ratio", r}};
         return e.unify(a[3], make_real(r));
       });
-  reg("slice_consistency", 4, "+Mask, +axial, -MaxChange, -MinDice",
+  engine.register_foreign("slice_consistency", 4, "+Mask, +axial, -MaxChange, -MinDice",
       "largest relative area change and smallest Dice between adjacent axial slices (>= 10 cm2)",
       [this](Engine& e, const std::vector<Term>& a) {
         if (!is_atom(a[1], "axial")) throw bad_input("slice_consistency: only axial slices are supported");
@@ -334,7 +331,7 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"slice_change", c}, {"slice_dice", d}};
         return e.unify(a[2], make_real(c)) && e.unify(a[3], make_real(d));
       });
-  reg("depth_shell", 4, "+Mask, +D0, +D1, -Out", "mask voxels whose depth lies in [D0, D1] mm",
+  engine.register_foreign("depth_shell", 4, "+Mask, +D0, +D1, -Out", "mask voxels whose depth lies in [D0, D1] mm",
       [this](Engine& e, const std::vector<Term>& a) {
         const Mask& m = mask(name_of(a[0]));
         double d0 = num(e, a[1]), d1 = num(e, a[2]);
@@ -343,13 +340,13 @@ void Workspace::register_operators(Engine& engine) {
         for (std::size_t i = 0; i < m.size(); ++i) out[i] = m[i] && d[i] >= d0 && d[i] <= d1;
         return create(e, a[3], mask_object(std::move(out)));
       });
-  reg("fraction_within", 5, "+Img, +Mask, +Lo, +Hi, -F", "fraction of mask voxels with Lo <= I <= Hi",
+  engine.register_foreign("fraction_within", 5, "+Img, +Mask, +Lo, +Hi, -F", "fraction of mask voxels with Lo <= I <= Hi",
       [this](Engine& e, const std::vector<Term>& a) {
         double f = fraction_within(image(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]), num(e, a[3]));
         e.measure() = {{"fraction_within", f}};
         return e.unify(a[4], make_real(f));
       });
-  reg("fraction_above", 4, "+Img, +Mask, +T, -F", "fraction of mask voxels with I > T",
+  engine.register_foreign("fraction_above", 4, "+Img, +Mask, +T, -F", "fraction of mask voxels with I > T",
       [this](Engine& e, const std::vector<Term>& a) {
         double f = 1.0 - fraction_within(image(name_of(a[0])), mask(name_of(a[1])), -INFINITY, num(e, a[2]));
         if (count(mask(name_of(a[1]))) == 0) f = 0;

@@ -10,17 +10,14 @@ namespace fest::segbrain {
 
 void Workspace::register_edge_operators(Engine& engine) {
   using namespace args;
-  auto reg = [&](const char* name, int arity, const char* modes, const char* doc, Foreign fn) {
-    engine.register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
-  };
-  reg("laplacian_of_gaussian", 4, "+Img, +SigmaMM, +Scope, -Out",
+  engine.register_foreign("laplacian_of_gaussian", 4, "+Img, +SigmaMM, +Scope, -Out",
       "sum of second Gaussian derivatives (per mm2), in-plane for slice(axial)",
       [this](Engine& e, const std::vector<Term>& a) {
         const double sigma = e.eval(a[1]);
         if (!(sigma > 0)) throw bad_input("laplacian_of_gaussian: sigma must be > 0, got {}", sigma);
         return create(e, a[3], image_object(laplacian_of_gaussian(grid_, image(name_of(a[0])), sigma, in_plane_scope(a[2]))));
       });
-  reg("marr_hildreth", 5, "+Img, +SigmaMM, +Slope, +Scope, -Edges",
+  engine.register_foreign("marr_hildreth", 5, "+Img, +SigmaMM, +Slope, +Scope, -Edges",
       "zero crossings of the LoG whose jump is >= Slope x max|LoG|; 4-neighbours in slice(axial), 6 in volume",
       [this](Engine& e, const std::vector<Term>& a) {
         const double sigma = e.eval(a[1]), slope = e.eval(a[2]);

@@ -10,10 +10,7 @@ namespace fest::segbrain {
 
 void Workspace::register_region_operators(Engine& engine) {
   using namespace args;
-  auto reg = [&](const char* name, int arity, const char* modes, const char* doc, Foreign fn) {
-    engine.register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
-  };
-  reg("regions", 6, "+Img, +Edges, +Head, +SkinMM, +Scope, -Regions",
+  engine.register_foreign("regions", 6, "+Img, +Edges, +Head, +SkinMM, +Scope, -Regions",
       "components of Head minus Edges (4-conn per axial slice, 6 in the volume) with mean intensity, "
       "skin contact (a voxel within SkinMM of the head outline) and adjacency across edge voxels",
       [this](Engine& e, const std::vector<Term>& a) {
@@ -36,7 +33,7 @@ void Workspace::register_region_operators(Engine& engine) {
     if (!o.regions) throw bad_input("'{}' is not a region division (from regions/6)", name);
     return *o.regions;
   };
-  reg("brain_starting_region", 6, "+Regions, +Head, +RefFraction, +Lo, +Hi, -Start",
+  engine.register_foreign("brain_starting_region", 6, "+Regions, +Head, +RefFraction, +Lo, +Hi, -Start",
       "in the axial slice at RefFraction of the head's S-extent, the largest region with mean in [Lo, Hi], "
       "no skin contact and centroid in the central half of the head; fails if none",
       [this, regions_of](Engine& e, const std::vector<Term>& a) {
@@ -50,7 +47,7 @@ void Workspace::register_region_operators(Engine& engine) {
                        {"start_mean", r.table[id].mean}};
         return create(e, a[5], mask_object(std::move(m)));
       });
-  reg("aggregate_brain_regions", 7, "+Regions, +Start, +Lo, +Hi, +MinOverlap, +MinAreaMM2, -Mask",
+  engine.register_foreign("aggregate_brain_regions", 7, "+Regions, +Start, +Lo, +Hi, +MinOverlap, +MinAreaMM2, -Mask",
       "breadth first over adjacent regions with mean in [Lo, Hi] and no skin contact, then slice by slice up "
       "and down (seeds overlap the previous slice by >= MinOverlap of their area) until the area < MinAreaMM2",
       [this, regions_of](Engine& e, const std::vector<Term>& a) {

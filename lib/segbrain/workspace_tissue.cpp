@@ -12,10 +12,7 @@ namespace fest::segbrain {
 
 void Workspace::register_tissue_operators(Engine& engine) {
   using namespace args;
-  auto reg = [&](const char* name, int arity, const char* modes, const char* doc, Foreign fn) {
-    engine.register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
-  };
-  reg("tissue_classes", 4, "+Img, +Mask, +K, -Means",
+  engine.register_foreign("tissue_classes", 4, "+Img, +Mask, +K, -Means",
       "1-D k-means of the intensities inside Mask (K = 2..8, started at percentiles 10..90), means increasing",
       [this](Engine& e, const std::vector<Term>& a) {
         const double kk = e.eval(a[2]);
@@ -25,7 +22,7 @@ void Workspace::register_tissue_operators(Engine& engine) {
         for (std::size_t c = 0; c < means.size(); ++c) e.measure().push_back({fmt::format("mean{}", c), means[c]});
         return e.unify(a[3], number_list(means));
       });
-  reg("classify", 5, "+Img, +Mask, +Means, +Index, -Out", "voxels of Mask whose nearest class mean is the Index-th (0-based)",
+  engine.register_foreign("classify", 5, "+Img, +Mask, +Means, +Index, -Out", "voxels of Mask whose nearest class mean is the Index-th (0-based)",
       [this](Engine& e, const std::vector<Term>& a) {
         std::vector<Term> items;
         if (!list_items(deref(a[2]), items) || items.empty()) throw bad_input("classify: Means must be a list of numbers");

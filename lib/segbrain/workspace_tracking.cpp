@@ -42,10 +42,7 @@ Mask ball_mask(const Grid& g, const std::vector<double>& c, double r_mm) {
 
 void Workspace::register_tracking_operators(Engine& engine) {
   using namespace args;
-  auto reg = [&](const char* name, int arity, const char* modes, const char* doc, Foreign fn) {
-    engine.register_foreign(name, arity, ForeignInfo{"", modes, doc, std::move(fn)});
-  };
-  reg("vesselness", 5, "+Img, +SigmaMM, +bright|dark|any, +Within|all, -Out",
+  engine.register_foreign("vesselness", 5, "+Img, +SigmaMM, +bright|dark|any, +Within|all, -Out",
       "Frangi-type Hessian tubularity in [0, 1), computed in the bounding box of Within",
       [this](Engine& e, const std::vector<Term>& a) {
         const double sigma = e.eval(a[1]);
@@ -54,7 +51,7 @@ void Workspace::register_tracking_operators(Engine& engine) {
         const Mask& within = is_atom(a[3], "all") ? empty : mask(name_of(a[3]));
         return create(e, a[4], image_object(vesselness(grid_, image(name_of(a[0])), sigma, polarity_of(a[2]), within)));
       });
-  reg("tracking_cost", 6, "+Vesselness, +Img, +Lo, +Hi, +Penalty, -Cost",
+  engine.register_foreign("tracking_cost", 6, "+Vesselness, +Img, +Lo, +Hi, +Penalty, -Cost",
       "1 / (0.05 + vesselness), times 1 + Penalty where the intensity lies outside [Lo, Hi]",
       [this](Engine& e, const std::vector<Term>& a) {
         const Image& v = image(name_of(a[0]));
@@ -66,7 +63,7 @@ void Workspace::register_tracking_operators(Engine& engine) {
           c[i] = static_cast<float>(1.0 / (0.05 + std::max(0.0f, v[i])) * (img[i] >= lo && img[i] <= hi ? 1.0 : 1.0 + pen));
         return create(e, a[5], image_object(std::move(c)));
       });
-  reg("line_track", 4, "+Cost, +From, +To, -Path",
+  engine.register_foreign("line_track", 4, "+Cost, +From, +To, -Path",
       "minimum-cost 26-connected path (Dijkstra) from a mask to a mask, in their bounding box grown by 10 mm; "
       "fails when To cannot be reached",
       [this](Engine& e, const std::vector<Term>& a) {
@@ -79,7 +76,7 @@ void Workspace::register_tracking_operators(Engine& engine) {
         o.path = std::move(p);
         return create(e, a[3], std::move(o));
       });
-  reg("path_length_mm", 2, "+Path, -L", "length of a tracked path (polyline through every 4th voxel)",
+  engine.register_foreign("path_length_mm", 2, "+Path, -L", "length of a tracked path (polyline through every 4th voxel)",
       [this](Engine& e, const std::vector<Term>& a) {
         const Object& o = get(name_of(a[0]));
         if (o.path.empty()) throw bad_input("path_length_mm: '{}' is not a tracked path", name_of(a[0]));
@@ -87,7 +84,7 @@ void Workspace::register_tracking_operators(Engine& engine) {
         e.measure() = {{"path_length_mm", len}};
         return e.unify(a[1], make_real(len));
       });
-  reg("path_point", 3, "+Path, +first|last, -[R,A,S]", "position (mm) of the first or last voxel of a tracked path",
+  engine.register_foreign("path_point", 3, "+Path, +first|last, -[R,A,S]", "position (mm) of the first or last voxel of a tracked path",
       [this](Engine& e, const std::vector<Term>& a) {
         const Object& o = get(name_of(a[0]));
         if (o.path.empty()) throw bad_input("path_point: '{}' is not a tracked path", name_of(a[0]));
@@ -95,11 +92,11 @@ void Workspace::register_tracking_operators(Engine& engine) {
         if (!first && !is_atom(a[1], "last")) throw bad_input("path_point: which end, first or last?");
         return e.unify(a[2], number_list(position_mm(grid_, first ? o.path.front() : o.path.back())));
       });
-  reg("ball", 3, "+[R,A,S], +RadiusMM, -Mask", "voxels within RadiusMM of the point (at least the nearest voxel)",
+  engine.register_foreign("ball", 3, "+[R,A,S], +RadiusMM, -Mask", "voxels within RadiusMM of the point (at least the nearest voxel)",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[2], mask_object(ball_mask(grid_, numbers(e, a[0], 3, "a point [R, A, S]"), e.eval(a[1]))));
       });
-  reg("box", 2, "+[R0,R1,A0,A1,S0,S1], -Mask", "voxels whose position (mm) lies in the box",
+  engine.register_foreign("box", 2, "+[R0,R1,A0,A1,S0,S1], -Mask", "voxels whose position (mm) lies in the box",
       [this](Engine& e, const std::vector<Term>& a) {
         auto b = numbers(e, a[0], 6, "a box [R0, R1, A0, A1, S0, S1]");
         const Grid& g = grid_;
@@ -114,7 +111,7 @@ void Workspace::register_tracking_operators(Engine& engine) {
             }
         return create(e, a[1], mask_object(std::move(m)));
       });
-  reg("component_centroids", 3, "+Mask, +Conn, -[[R,A,S], ...]", "centroids (mm) of the connected components, by increasing R",
+  engine.register_foreign("component_centroids", 3, "+Mask, +Conn, -[[R,A,S], ...]", "centroids (mm) of the connected components, by increasing R",
       [this](Engine& e, const std::vector<Term>& a) {
         const int conn = static_cast<int>(e.eval(a[1]));
         if (conn != 6 && conn != 18 && conn != 26) throw bad_input("component_centroids: connectivity 6, 18 or 26, got {}", conn);

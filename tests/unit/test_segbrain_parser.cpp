@@ -4,7 +4,9 @@
 
 #include "core/error.hpp"
 #include "segbrain/kb_parser.hpp"
+#include "testdata.hpp"
 
+#include <filesystem>
 #include <map>
 #include <regex>
 
@@ -81,4 +83,34 @@ TEST(SegbrainParser, DirectivesAndSingletons) {
   ASSERT_EQ(p.clauses.size(), 1u);
   ASSERT_EQ(p.clauses[0].singletons.size(), 1u);
   EXPECT_EQ(p.clauses[0].singletons[0], "Y");
+}
+
+// A real number beyond double's range (found by fuzz_segbrain_kb) is a syntax error at
+// its position, not an escaping std::out_of_range.
+TEST(SegbrainParser, RealOutOfRangeIsASyntaxError) {
+  for (const char* text : {"x(1.5e999).", "x(2E6666666666660.", "x(1e-999)."}) {
+    SCOPED_TRACE(text);
+    try {
+      parse_program(text, "big.pl");
+      ADD_FAILURE() << "no error";
+    } catch (const fest::Error& e) {
+      EXPECT_EQ(e.status(), fest::Status::bad_input);
+      EXPECT_NE(std::string(e.what()).find("big.pl:1:3: syntax error: number out of range"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(parse_term("1.5e999", "goal"), fest::Error);
+}
+
+// Inputs that once crashed the reader (fuzz_segbrain_kb; tests/data/regress/segbrain/):
+// each must now end in a clean fest::Error, as a rule file and as a single term.
+TEST(SegbrainParser, RegressionInputs) {
+  int replayed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(fest::test::fixture("regress/segbrain"))) {
+    SCOPED_TRACE(entry.path().filename().string());
+    const std::string text = fest::test::slurp(entry.path().string());
+    EXPECT_THROW(parse_program(text, "regress.pl"), fest::Error);
+    EXPECT_THROW(parse_term(text, "regress"), fest::Error);
+    ++replayed;
+  }
+  EXPECT_GE(replayed, 1);
 }

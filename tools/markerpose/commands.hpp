@@ -4,10 +4,13 @@
 // fest_markerpose_app.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace fest::markerpose {
+#include "formats/detect.hpp"
+
+namespace fest::markerpose_tool {
 
 // markerpose [detect] IMAGE... : markers and poses per frame.
 struct DetectOptions {
@@ -49,7 +52,7 @@ struct GenOptions {
   std::string background;  // a photograph (the camera's size) instead of the synthetic background
   std::uint64_t seed = 1;
   std::string output = "-";  // image; several frames: a pattern with %d, or one stream (PNG/PGM)
-  std::string to;            // png or pgm (standard output / stream)
+  std::optional<formats::Format> to;  // --to png|pgm (standard output / stream); none: from -o, else PGM
   std::string truth;         // ground-truth JSON (lines for several frames)
 };
 int gen_command(const GenOptions& o);
@@ -64,4 +67,4 @@ struct DrawOptions {
 };
 int draw_command(const DrawOptions& o);
 
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool

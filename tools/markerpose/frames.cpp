@@ -10,7 +10,7 @@
 #include "formats/image/image_io.hpp"
 #include "formats/image/image_stream.hpp"
 
-namespace fest::markerpose {
+namespace fest::markerpose_tool {
 
 namespace {
 
@@ -122,4 +122,4 @@ cv::Mat decode_rgb(const FrameSource& f) {
   return rgb;
 }
 
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool

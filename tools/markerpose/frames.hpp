@@ -8,7 +8,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace fest::markerpose {
+namespace fest::markerpose_tool {
 
 struct FrameSource {
   std::string name;       // file name, or "-#k" for frame k of standard input
@@ -27,4 +27,4 @@ cv::Mat decode_grey(const FrameSource& f);
 // Decodes one frame to 8-bit RGB (for the overlay).
 cv::Mat decode_rgb(const FrameSource& f);
 
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool

@@ -6,45 +6,53 @@
 #include <vector>
 
 #include "cli/cli.hpp"
+#include "cli/implied_subcommand.hpp"
 #include "commands.hpp"
 
-int main(int argc, char** argv) {
-  using namespace fest::markerpose;
-  // `markerpose IMAGE ...` means `markerpose detect IMAGE ...`.
-  std::vector<char*> args(argv, argv + argc);
-  static char detect_name[] = "detect";
-  if (argc == 1) args.push_back(detect_name);
-  else {
-    const std::string first = argv[1];
-    const bool known = first == "detect" || first == "gen" || first == "draw" || first == "--help" || first == "-h" ||
-                       first == "--version";
-    if (!known) args.insert(args.begin() + 1, detect_name);
-  }
+using namespace fest::markerpose_tool;
 
+namespace {
+
+// Adds the flags of `detect` to `cmd`; returns them so that main can tell whether any was given.
+std::vector<CLI::Option*> add_detect_flags(CLI::App& cmd, DetectOptions& det) {
+  std::vector<CLI::Option*> o;
+  o.push_back(cmd.add_option("images", det.inputs, "Images; - or nothing: standard input (one image or a PNG/PGM stream)"));
+  o.push_back(cmd.add_option("--list", det.list, "A file naming one image per line"));
+  o.push_back(cmd.add_option("--camera", det.camera, "Intrinsics and distortion: the camera.json of capture calib-camera"));
+  o.push_back(cmd.add_option("--size", det.size, "Marker side (outer edge of the black border); tvec comes in its unit"));
+  o.push_back(cmd.add_option("--dict", det.dict, "Dictionary: 4x4_50 ... 7x7_1000, aruco_original, apriltag_16h5/25h9/36h10/36h11"));
+  o.push_back(cmd.add_option("--pattern", det.patterns, "ARToolKit pattern picture (repeatable; id = position); replaces --dict"));
+  o.push_back(cmd.add_option("--min-ncc", det.min_ncc, "Pattern markers: correlation needed")->check(CLI::Range(0.0, 1.0)));
+  o.push_back(cmd.add_option("--min-side", det.min_side_px, "Smallest marker side searched, pixels")->check(CLI::Range(4.0, 1e5)));
+  o.push_back(cmd.add_option("--overlay", det.overlay, "Mesh (PLY, OBJ, OFF, STL) drawn at every marker pose, in the marker frame"));
+  o.push_back(cmd.add_option("--overlay-out", det.overlay_out, "The overlay image (PNG); with %d for several frames"));
+  o.push_back(cmd.add_option("--overlay-scale", det.overlay_scale, "Mesh units -> marker units")->check(CLI::PositiveNumber));
+  o.push_back(cmd.add_option("-o,--output", det.output, "JSON output (- = standard output)"));
+  o.push_back(cmd.add_flag("--lines", det.lines, "JSON lines even for a single image"));
+  o.push_back(cmd.add_option("--report", det.report, "Counts and detection time as JSON"));
+  fest::cli::add_threads(cmd, det.threads);
+  o.push_back(cmd.get_option("--threads"));
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
   CLI::App app{"Square fiducial markers (ArUco/AprilTag codes or ARToolKit patterns) in camera images:\n"
                "IDs, sub-pixel corners and the marker's pose relative to the camera.",
                "markerpose"};
   fest::cli::Common common;
   fest::cli::add_common(app, common);
-  app.require_subcommand(1);
 
+  // `markerpose IMAGE ...` means `markerpose detect IMAGE ...`: the main command takes
+  // detect's flags too, and detects when no subcommand is named.
   DetectOptions det;
+  fest::cli::imply_subcommand(app, add_detect_flags(app, det), "Options of detect (also without the word detect)",
+                              {"--camera", "--size"}, false);
   CLI::App* d = app.add_subcommand("detect", "Find markers and their poses (the default subcommand)");
-  d->add_option("images", det.inputs, "Images; - or nothing: standard input (one image or a PNG/PGM stream)");
-  d->add_option("--list", det.list, "A file naming one image per line");
-  d->add_option("--camera", det.camera, "Intrinsics and distortion: the camera.json of capture calib-camera")->required();
-  d->add_option("--size", det.size, "Marker side (outer edge of the black border); tvec comes in its unit")->required();
-  d->add_option("--dict", det.dict, "Dictionary: 4x4_50 ... 7x7_1000, aruco_original, apriltag_16h5/25h9/36h10/36h11");
-  d->add_option("--pattern", det.patterns, "ARToolKit pattern picture (repeatable; id = position); replaces --dict");
-  d->add_option("--min-ncc", det.min_ncc, "Pattern markers: correlation needed")->check(CLI::Range(0.0, 1.0));
-  d->add_option("--min-side", det.min_side_px, "Smallest marker side searched, pixels")->check(CLI::Range(4.0, 1e5));
-  d->add_option("--overlay", det.overlay, "Mesh (PLY, OBJ, OFF, STL) drawn at every marker pose, in the marker frame");
-  d->add_option("--overlay-out", det.overlay_out, "The overlay image (PNG); with %d for several frames");
-  d->add_option("--overlay-scale", det.overlay_scale, "Mesh units -> marker units")->check(CLI::PositiveNumber);
-  d->add_option("-o,--output", det.output, "JSON output (- = standard output)");
-  d->add_flag("--lines", det.lines, "JSON lines even for a single image");
-  d->add_option("--report", det.report, "Counts and detection time as JSON");
-  fest::cli::add_threads(*d, det.threads);
+  add_detect_flags(*d, det);
+  d->get_option("--camera")->required();
+  d->get_option("--size")->required();
 
   GenOptions gen;
   CLI::App* g = app.add_subcommand("gen", "Synthetic marker image(s) at a known pose, with the ground truth");
@@ -76,7 +84,8 @@ int main(int argc, char** argv) {
   g->add_option("--background", gen.background, "A photograph of the camera's size as the background");
   g->add_option("--seed", gen.seed, "Random seed (background, noise, occluder)");
   g->add_option("-o,--output", gen.output, "Image; several frames: a name with %d, or one PNG/PGM stream");
-  g->add_option("--to", gen.to, "png or pgm")->check(CLI::IsMember({"png", "pgm"}));
+  std::string gen_to;
+  g->add_option("--to", gen_to, "png or pgm")->check(CLI::IsMember({"png", "pgm"}));
   g->add_option("--truth", gen.truth, "Ground truth JSON (corners, rvec, tvec, R, side_px)");
 
   DrawOptions draw;
@@ -87,12 +96,13 @@ int main(int argc, char** argv) {
   w->add_option("--quiet-zone", draw.quiet_cells, "White cells around the border")->check(CLI::Range(0, 100));
   w->add_option("-o,--output", draw.output, "Output image (- = PNG on standard output)");
 
-  return fest::cli::run(app, static_cast<int>(args.size()), args.data(), [&] {
-    if (*d) {
-      det.quiet = common.quiet;
-      return detect_command(det);
+  return fest::cli::run(app, argc, argv, [&] {
+    if (*g) {
+      if (!gen_to.empty()) gen.to = fest::formats::output_format_from_name(gen_to).format;
+      return gen_command(gen);
     }
-    if (*g) return gen_command(gen);
-    return draw_command(draw);
+    if (*w) return draw_command(draw);
+    det.quiet = common.quiet;  // detect, named or implied
+    return detect_command(det);
   });
 }

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace fest::markerpose {
+namespace fest::markerpose_tool {
 
 namespace {
 
@@ -41,4 +41,4 @@ nlohmann::ordered_json marker_json(const MarkerResult& m, bool pattern, double s
   return j;
 }
 
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool

@@ -7,7 +7,7 @@
 #include "markers/detector.hpp"
 #include "markers/pose.hpp"
 
-namespace fest::markerpose {
+namespace fest::markerpose_tool {
 
 struct MarkerResult {
   markers::Detection detection;
@@ -18,4 +18,4 @@ struct MarkerResult {
 
 nlohmann::ordered_json marker_json(const MarkerResult& m, bool pattern, double size);
 
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool

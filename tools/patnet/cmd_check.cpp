@@ -1,11 +1,10 @@
-// patnet check and patnet dot: load without running; report diagnostics or draw.
+// patnet check: load without running; report the diagnostics.
 
 #include <cstdio>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
-#include "patnet/dot.hpp"
 #include "patnet/machine.hpp"
 
 namespace fest::patnet_tool {
@@ -21,16 +20,6 @@ int cmd_check(const CheckArgs& a) {
     if (d.error || !a.quiet) std::fprintf(stderr, "patnet: %s: %s\n", d.error ? "error" : "warning", d.text().c_str());
   }
   return errors > 0 ? static_cast<int>(Status::bad_input) : 0;
-}
-
-int cmd_dot(const DotArgs& a) {
-  patnet::Machine m;
-  for (const std::string& f : a.files) m.load(read_input(f), f, false);
-  m.finish_checks();
-  for (const auto& d : m.diagnostics())
-    if (d.error) throw bad_input("{}", d.text());
-  write_output(a.output, patnet::to_dot(m, a.class_name));
-  return 0;
 }
 
 }  // namespace fest::patnet_tool

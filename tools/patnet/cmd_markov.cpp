@@ -1,7 +1,6 @@
 // patnet markov: a transcript's state sequence -> transition matrix (CSV) or a net of
 // def-probnodes (seed §23, docs/patnet.md "markov").
 
-#include <sstream>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -26,10 +25,7 @@ int cmd_markov(const MarkovArgs& a) {
   } catch (const Error& e) {
     throw Error(e.status(), fmt::format("{} ({})", e.what(), name));
   }
-  std::vector<std::string> cols;
-  std::stringstream ss(a.cols);
-  for (std::string c; std::getline(ss, c, ',');) cols.push_back(c);
-  if (cols.size() != 3 && cols.size() != 1) throw usage_error("--cols takes three columns (turn state, gaze1, gaze2) or one state column");
+  const std::vector<std::string>& cols = a.cols;
   std::vector<std::size_t> idx;
   for (const auto& c : cols) {
     const std::size_t k = t.find(c);

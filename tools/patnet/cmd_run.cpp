@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/tool_main.hpp"
 #include "inputs.hpp"
 #include "patnet/machine.hpp"
@@ -34,7 +35,7 @@ void check_first(const std::vector<std::pair<std::string, std::string>>& sources
 }  // namespace
 
 int cmd_run(const RunArgs& a) {
-  const auto t_start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   std::vector<std::pair<std::string, std::string>> sources;
   for (const std::string& f : a.files) sources.emplace_back(f, read_input(f));
   check_first(sources, a.verbose);
@@ -50,8 +51,7 @@ int cmd_run(const RunArgs& a) {
   opt.max_steps = a.max_steps;
   opt.strict = a.strict;
   opt.dump_locals = a.dump_locals;
-  const TraceFormat format = a.raw_print ? TraceFormat::raw : a.trace == "tsv" ? TraceFormat::tsv
-                             : a.trace == "none" ? TraceFormat::none : TraceFormat::json;
+  const TraceFormat format = a.raw_print ? TraceFormat::raw : a.trace;
   TraceWriter writer(stdout, format);
   writer.hold(true);
   patnet::Machine m(opt, &writer);
@@ -92,7 +92,7 @@ int cmd_run(const RunArgs& a) {
   }
   writer.flush();
   if (std::fflush(stdout) != 0) throw io_error("cannot write the trace to standard output");
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  const double seconds = clock.seconds();
   if (!a.report.empty()) {
     nlohmann::json r = {{"cycles", sum.cycles},     {"instances", sum.instances}, {"finished", sum.finished},
                         {"failed", sum.failed},     {"errors", sum.errors},       {"deadlock", sum.deadlock},

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "trace_writer.hpp"
+
 namespace fest::patnet_tool {
 
 struct RunArgs {
@@ -17,7 +19,7 @@ struct RunArgs {
   std::string events;
   std::string table;
   std::string table_var;
-  std::string trace = "json";
+  TraceFormat trace = TraceFormat::json;  // json, tsv or none; --raw-print makes it raw
   bool raw_print = false;
   bool dump_locals = false;
   std::vector<std::string> evals;
@@ -43,7 +45,7 @@ struct DotArgs {
 
 struct MarkovArgs {
   std::string input = "-";
-  std::string cols = "turn_state,gaze1,gaze2";
+  std::vector<std::string> cols{"turn_state", "gaze1", "gaze2"};  // three (turn state, gaze1, gaze2) or one state column
   int states = 24;
   bool no_self = false;
   std::string net;

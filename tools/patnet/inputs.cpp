@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/text_lines.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace fest::patnet_tool {
@@ -32,16 +33,8 @@ Value to_value(const nlohmann::json& j, patnet::Machine& m, const std::string& w
 
 std::vector<InputEvent> parse_events(const std::string& bytes, const std::string& name, patnet::Machine& m) {
   std::vector<InputEvent> out;
-  std::size_t start = 0;
-  int line = 0;
   double last_t = -std::numeric_limits<double>::infinity();
-  while (start < bytes.size()) {
-    std::size_t end = bytes.find('\n', start);
-    if (end == std::string::npos) end = bytes.size();
-    const std::string text = bytes.substr(start, end - start);
-    start = end + 1;
-    ++line;
-    if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+  for_each_nonblank_line(bytes, [&](int line, const std::string& text) {
     const std::string where = fmt::format("{}:{}", name, line);
     nlohmann::json j;
     try {
@@ -100,7 +93,7 @@ std::vector<InputEvent> parse_events(const std::string& bytes, const std::string
     if (kinds != 1)
       throw bad_input("an event has exactly one of set, motion, motion-done, spawn, eval ({})", where);
     out.push_back(std::move(ev));
-  }
+  });
   return out;
 }
 

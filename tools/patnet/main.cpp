@@ -4,7 +4,11 @@
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
+#include <sstream>
+#include <string>
+
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 using namespace fest::patnet_tool;
@@ -28,7 +32,8 @@ int main(int argc, char** argv) {
   r->add_option("--events", run.events, "JSON Lines input events (set, motion, motion-done, spawn, eval); - = standard input");
   auto* tab = r->add_option("--table", run.table, "TSV with a t column; the current row is bound to --table-var");
   r->add_option("--table-var", run.table_var, "Global variable that holds the table row as an association list")->needs(tab);
-  r->add_option("--trace", run.trace, "Trace format: json (JSON Lines), tsv, or none")->check(CLI::IsMember({"json", "tsv", "none"}));
+  fest::cli::enum_words<TraceFormat>(r->add_option("--trace", run.trace, "Trace format: json (JSON Lines), tsv, or none"),
+                                     {{"json", TraceFormat::json}, {"tsv", TraceFormat::tsv}, {"none", TraceFormat::none}});
   r->add_flag("--raw-print", run.raw_print, "Write only the text of (format t ...) to standard output");
   r->add_flag("--dump-locals", run.dump_locals, "Add each instance's locals to its exit event");
   r->add_option("--eval", run.evals, "An expression to evaluate after loading (repeatable)")->allow_extra_args(false);
@@ -53,7 +58,8 @@ int main(int argc, char** argv) {
   MarkovArgs markov;
   auto* m = app.add_subcommand("markov", "Transition probabilities of a transcript's states, as a matrix or a net");
   m->add_option("input", markov.input, "Transcript (TSV or CSV with a header); - = standard input");
-  m->add_option("--cols", markov.cols, "turn-state,gaze1,gaze2 columns (24 states), or one state column");
+  std::string markov_cols = "turn_state,gaze1,gaze2";
+  m->add_option("--cols", markov_cols, "turn-state,gaze1,gaze2 columns (24 states), or one state column");
   m->add_option("--states", markov.states, "Number of states with one state column")->check(CLI::Range(1, 100000));
   m->add_flag("--no-self", markov.no_self, "Count only changes of state (no i -> i transitions)");
   m->add_option("--net", markov.net, "Write a .pat net of def-probnodes with this class name instead of the CSV matrix");
@@ -69,6 +75,11 @@ int main(int argc, char** argv) {
       return cmd_check(check);
     }
     if (*d) return cmd_dot(dot);
+    std::stringstream cols(markov_cols);  // names may be empty: the transcript then lacks that column
+    markov.cols.clear();
+    for (std::string col; std::getline(cols, col, ',');) markov.cols.push_back(col);
+    if (markov.cols.size() != 3 && markov.cols.size() != 1)
+      throw fest::usage_error("--cols takes three columns (turn state, gaze1, gaze2) or one state column");
     markov.quiet = common.quiet;
     return cmd_markov(markov);
   });

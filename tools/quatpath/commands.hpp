@@ -1,18 +1,29 @@
 #pragma once
 // quatpath: key poses in, per-frame poses out (docs/quatpath.md).
 
+#include <optional>
 #include <string>
 
+#include "motionpath/path.hpp"
+
 namespace fest::quatpath_tool {
+
+// What the poses are written as (--to).
+enum class PoseFormat {
+  csv,
+  jsonl,
+  camera,       // terrainlod --path JSON Lines
+  camera_args,  // volrender look-at flags, one line per frame
+};
 
 struct PathArgs {
   std::string input = "-";
   std::string output = "-";
-  std::string to;                    // csv, jsonl, camera (default: by extension, else csv)
+  std::optional<PoseFormat> to;      // none: by -o's extension (.jsonl, .json), else csv
   double fps = 30.0;
-  std::string orientation = "slerp";
-  std::string position = "catmull-rom";
-  std::string way = "short";         // default for segments whose key gives none
+  motionpath::OrientationMode orientation = motionpath::OrientationMode::slerp;
+  motionpath::PositionMode position = motionpath::PositionMode::catmull_rom;
+  motionpath::Way way = motionpath::Way::shortest;  // default for segments whose key gives none
   bool constant_speed = false;
   bool no_end = false;
   double camera_distance = 100.0;

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/text_lines.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace fest::quatpath_tool {
@@ -55,15 +56,7 @@ std::vector<Key> read_table_keys(const std::string& bytes, const std::string& na
 
 std::vector<Key> read_jsonl_keys(const std::string& bytes, const std::string& name, Way default_way) {
   std::vector<Key> keys;
-  std::size_t start = 0;
-  int line = 0;
-  while (start < bytes.size()) {
-    std::size_t end = bytes.find('\n', start);
-    if (end == std::string::npos) end = bytes.size();
-    const std::string text = bytes.substr(start, end - start);
-    start = end + 1;
-    ++line;
-    if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+  for_each_nonblank_line(bytes, [&](int line, const std::string& text) {
     const std::string where = fmt::format("{}:{}", name, line);
     try {
       const auto j = nlohmann::json::parse(text);
@@ -89,7 +82,7 @@ std::vector<Key> read_jsonl_keys(const std::string& bytes, const std::string& na
     } catch (const nlohmann::json::exception& e) {
       throw bad_input("malformed key: {} ({})", e.what(), where);
     }
-  }
+  });
   return keys;
 }
 

@@ -5,6 +5,7 @@
 // Wiring only: this file maps flags onto commands.hpp.
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 using namespace fest::quatpath_tool;
@@ -18,15 +19,21 @@ int main(int argc, char** argv) {
   PathArgs a;
   app.add_option("input", a.input, "Keys: CSV/TSV t,x,y,z,qw,qx,qy,qz[,way][,tension,continuity,bias] or JSON Lines; - = standard input");
   app.add_option("-o,--output", a.output, "Poses (.csv, .jsonl) or cameras; - = standard output");
-  app.add_option("--to", a.to, "Output: csv, jsonl, camera (terrainlod --path JSON Lines), or camera-args (volrender look-at flags, one line per frame)")
-      ->check(CLI::IsMember({"csv", "jsonl", "camera", "camera-args"}));
+  PoseFormat to = PoseFormat::csv;
+  CLI::Option* to_flag = fest::cli::enum_words<PoseFormat>(
+      app.add_option("--to", to, "Output: csv, jsonl, camera (terrainlod --path JSON Lines), or camera-args (volrender look-at flags, one line per frame)"),
+      {{"csv", PoseFormat::csv}, {"jsonl", PoseFormat::jsonl}, {"camera", PoseFormat::camera}, {"camera-args", PoseFormat::camera_args}});
   app.add_option("--fps", a.fps, "Output frames per second")->check(CLI::PositiveNumber);
-  app.add_option("--orientation", a.orientation, "slerp (piecewise great arcs) or squad (C1 at the keys)")
-      ->check(CLI::IsMember({"slerp", "squad"}));
-  app.add_option("--position", a.position, "linear, catmull-rom, or kb (Kochanek-Bartels; tension/continuity/bias columns)")
-      ->check(CLI::IsMember({"linear", "catmull-rom", "kb"}));
-  app.add_option("--way", a.way, "Default turn of a segment: short, or long (the other way round); a key's way column wins")
-      ->check(CLI::IsMember({"short", "long"}));
+  using fest::motionpath::OrientationMode;
+  using fest::motionpath::PositionMode;
+  using fest::motionpath::Way;
+  fest::cli::enum_words<OrientationMode>(app.add_option("--orientation", a.orientation, "slerp (piecewise great arcs) or squad (C1 at the keys)"),
+                                         {{"slerp", OrientationMode::slerp}, {"squad", OrientationMode::squad}});
+  fest::cli::enum_words<PositionMode>(
+      app.add_option("--position", a.position, "linear, catmull-rom, or kb (Kochanek-Bartels; tension/continuity/bias columns)"),
+      {{"linear", PositionMode::linear}, {"catmull-rom", PositionMode::catmull_rom}, {"kb", PositionMode::kb}});
+  fest::cli::enum_words<Way>(app.add_option("--way", a.way, "Default turn of a segment: short, or long (the other way round); a key's way column wins"),
+                             {{"short", Way::shortest}, {"long", Way::longest}});
   app.add_flag("--constant-speed", a.constant_speed, "Reparametrise by arc length: constant speed from the first key's time to the last");
   app.add_flag("--no-end", a.no_end, "Do not add a last frame at the last key's time when it falls between frames");
   app.add_option("--camera-distance", a.camera_distance, "Camera output: target = eye + distance x view direction")
@@ -37,6 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--tau", a.tau_px, "Camera output: terrainlod's screen-space error tau_px")->check(CLI::PositiveNumber);
   app.add_option("--report", a.report, "JSON report: keys, frames, length, unit-norm error, frame step range");
   return fest::cli::run(app, argc, argv, [&] {
+    if (to_flag->count() > 0) a.to = to;
     a.quiet = common.quiet;
     return cmd_path(a);
   });

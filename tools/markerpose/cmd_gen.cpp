@@ -1,6 +1,7 @@
 // markerpose gen: synthetic marker images at known poses with their ground truth
-// (docs/markerpose.md §5.1), and markerpose draw: a printable marker.
+// (docs/markerpose.md §5.1).
 #include <cmath>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -11,10 +12,11 @@
 #include "formats/detect.hpp"
 #include "formats/image/image_io.hpp"
 #include "frames.hpp"
+#include "marker_art.hpp"
 #include "markers/camera_codec.hpp"
 #include "markers/synth.hpp"
 
-namespace fest::markerpose {
+namespace fest::markerpose_tool {
 
 namespace {
 
@@ -37,8 +39,8 @@ markers::CameraModel gen_camera(const GenOptions& o) {
   return c;
 }
 
-formats::Format image_format(const std::string& path, const std::string& to, bool stream) {
-  if (!to.empty()) return formats::output_format_from_name(to).format;
+formats::Format image_format(const std::string& path, const std::optional<formats::Format>& to, bool stream) {
+  if (to) return *to;
   if (is_stdio(path) || stream) return formats::output_format_from_name("pgm").format;
   return formats::output_format_from_path(path).format;
 }
@@ -58,15 +60,6 @@ json truth_json(const markers::CameraModel& cam, const markers::PlacedMarker& m,
   return {{"frame", frame}, {"id", id},           {"size", m.side},
           {"corners", corners}, {"rvec", {r[0], r[1], r[2]}}, {"tvec", {m.pose.t[0], m.pose.t[1], m.pose.t[2]}},
           {"R", R},           {"side_px", side_px}};
-}
-
-// A dictionary name or marker id from a flag: a usage error when wrong.
-markers::MarkerArt art_from_flags(const std::string& dict, int id) {
-  try {
-    return markers::binary_art(markers::dictionary(dict), id);
-  } catch (const Error& e) {
-    throw Error(Status::usage, fmt::format("--dict {} --id {}: {}", dict, id, e.what()));
-  }
 }
 
 }  // namespace
@@ -135,13 +128,4 @@ int gen_command(const GenOptions& o) {
   return 0;
 }
 
-int draw_command(const DrawOptions& o) {
-  art_from_flags(o.dict, o.id);  // checks both flags
-  const cv::Mat img = markers::draw_marker(markers::dictionary(o.dict), o.id, o.cell_px, o.quiet_cells);
-  const formats::Format f =
-      is_stdio(o.output) ? formats::output_format_from_name("png").format : formats::output_format_from_path(o.output).format;
-  write_output(o.output, formats::write_image({img, ColorSpace::srgb}, f));
-  return 0;
-}
-
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool

@@ -21,14 +21,12 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }  // namespace
 
 int cmd_path(const PathArgs& a) {
-  std::string to = a.to;
-  if (to.empty()) {
-    if (ends_with(a.output, ".jsonl") || ends_with(a.output, ".json")) to = "jsonl";
-    else to = "csv";
-  }
+  PoseFormat to = PoseFormat::csv;
+  if (a.to) to = *a.to;
+  else if (ends_with(a.output, ".jsonl") || ends_with(a.output, ".json")) to = PoseFormat::jsonl;
   const std::string name = a.input == "-" ? "<stdin>" : a.input;
   int dropped = 0;
-  const auto default_way = a.way == "long" ? motionpath::Way::longest : motionpath::Way::shortest;
+  const motionpath::Way default_way = a.way;
   std::vector<motionpath::Key> keys;
   keys = read_keys(read_input(a.input), name, default_way, dropped);
   if (dropped > 0) throw bad_input("the key table has {} column(s) quatpath does not use (known: t,x,y,z,qw,qx,qy,qz,way,tension,continuity,bias) ({})", dropped, name);
@@ -36,10 +34,8 @@ int cmd_path(const PathArgs& a) {
   for (const auto& k : keys) worst_input_norm = std::max(worst_input_norm, std::fabs(motionpath::norm(k.q) - 1.0));
 
   motionpath::PathOptions opt;
-  opt.orientation = a.orientation == "squad" ? motionpath::OrientationMode::squad : motionpath::OrientationMode::slerp;
-  opt.position = a.position == "linear" ? motionpath::PositionMode::linear
-                 : a.position == "kb"   ? motionpath::PositionMode::kb
-                                        : motionpath::PositionMode::catmull_rom;
+  opt.orientation = a.orientation;
+  opt.position = a.position;
   opt.constant_speed = a.constant_speed;
   try {
     const motionpath::Path path(keys, opt);
@@ -47,9 +43,9 @@ int cmd_path(const PathArgs& a) {
       warn("quatpath", fmt::format("key quaternions were not unit (largest | |q| - 1 | = {:.3g}); normalised", worst_input_norm));
     const auto poses = path.sample(a.fps, !a.no_end);
     std::string bytes;
-    if (to == "csv") bytes = write_csv(poses);
-    else if (to == "jsonl") bytes = write_jsonl(poses);
-    else if (to == "camera-args") bytes = write_camera_args(poses, CameraOptions{a.camera_distance, a.fovy_deg, a.width, a.height, a.tau_px});
+    if (to == PoseFormat::csv) bytes = write_csv(poses);
+    else if (to == PoseFormat::jsonl) bytes = write_jsonl(poses);
+    else if (to == PoseFormat::camera_args) bytes = write_camera_args(poses, CameraOptions{a.camera_distance, a.fovy_deg, a.width, a.height, a.tau_px});
     else bytes = write_cameras(poses, CameraOptions{a.camera_distance, a.fovy_deg, a.width, a.height, a.tau_px});
     write_output(a.output, bytes);
     if (!a.report.empty()) {

@@ -1,5 +1,5 @@
 // segbrain slices: three orthogonal slices of a volume with its labels overlaid, as one
-// PNG, so a person can look at a segmentation (spec §3 P4/P5: pictures for review).
+// PNG, so a person can look at a segmentation (pictures for review, segbrain(1)).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -11,24 +11,15 @@
 #include "core/file_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
-#include "formats/volume/volume_io.hpp"
+#include "knowledge_base.hpp"
 #include "segbrain/canonical.hpp"
+#include "volume_files.hpp"
 
-namespace segbrain_tool {
+namespace fest::segbrain_tool {
 
-using namespace fest;
 using namespace fest::segbrain;
 
 namespace {
-
-Volume read_any_volume(const std::string& path) {
-  formats::Input in = formats::load_input(path);
-  if (formats::kind_of(in.format) != formats::Kind::volume)
-    throw bad_input("expected a volume (NIfTI, NRRD, MHA), got {} ({})", formats::format_name(in.format), in.name);
-  Volume v = formats::parse(in, formats::read_volume);
-  v.require_3d(fmt::format("segbrain slices ({})", in.name).c_str());
-  return v;
-}
 
 // One panel: canonical axes (u, v) of the slice `fixed` = `at`, u to the right, v up,
 // square pixels of `pixel` mm (nearest voxel).
@@ -62,8 +53,8 @@ cv::Mat panel(const Grid& g, const segbrain::Image& grey, const std::vector<floa
 }  // namespace
 
 int run_slices(const SlicesArgs& a) {
-  Volume img = read_any_volume(a.input);
-  Volume lab = read_any_volume(a.labels);
+  Volume img = read_volume_input(a.input, "segbrain slices");
+  Volume lab = read_volume_input(a.labels, "segbrain slices");
   if (img.dims != lab.dims)
     throw bad_input("volume {}x{}x{} and labels {}x{}x{} differ in size", img.dims[0], img.dims[1], img.dims[2], lab.dims[0],
                     lab.dims[1], lab.dims[2]);
@@ -117,4 +108,4 @@ int run_slices(const SlicesArgs& a) {
   return 0;
 }
 
-}  // namespace segbrain_tool
+}  // namespace fest::segbrain_tool

@@ -1,6 +1,5 @@
 // markerpose detect: frames -> markers, IDs, corners and poses (docs/markerpose.md §2-4),
 // optionally the AR overlay (§5.2).
-#include <chrono>
 #include <cstdio>
 #include <optional>
 
@@ -11,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/parallel_for.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "formats/detect.hpp"
@@ -23,7 +23,7 @@
 #include "markers/tracker.hpp"
 #include "pose_json.hpp"
 
-namespace fest::markerpose {
+namespace fest::markerpose_tool {
 
 namespace {
 
@@ -116,10 +116,10 @@ int detect_command(const DetectOptions& o) {
   if (mesh) frame_path(o.overlay_out, 0, n);  // a usage error before any work
 
   // Detection per frame in parallel; poses in frame order (the tracker is sequential).
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch detect_clock;
   std::vector<std::vector<markers::Detection>> found(n);
   parallel_for(n, threads, [&](std::size_t i) { found[i] = markers::detect_markers(decode_grey(frames[i]), det); });
-  const auto t1 = std::chrono::steady_clock::now();
+  const double detect_ms = detect_clock.ms();
 
   markers::PoseTracker tracker;
   std::vector<std::vector<MarkerResult>> results(n);
@@ -167,7 +167,7 @@ int detect_command(const DetectOptions& o) {
   write_output(o.output, out);
 
   if (!o.report.empty()) {
-    const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    const double ms = detect_ms;
     json rep = {{"frames", n},
                 {"markers", total},
                 {"frames_with_markers", with_markers},
@@ -182,4 +182,4 @@ int detect_command(const DetectOptions& o) {
   return 0;
 }
 
-}  // namespace fest::markerpose
+}  // namespace fest::markerpose_tool
