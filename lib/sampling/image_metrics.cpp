@@ -52,7 +52,7 @@ ErrorMeasures compare_images(const FloatImage& test, const FloatImage& ref, cons
 }
 
 std::vector<double> row_power_spectrum(const FloatImage& img) {
-  if (img.width < 2) throw bad_input("metrics --spectrum: the image must be at least 2 pixels wide");
+  if (img.width < 2) throw bad_input("power spectrum: the image must be at least 2 pixels wide");
   cv::Mat rows(img.height, img.width, CV_64F);
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
@@ -72,7 +72,7 @@ std::vector<double> row_power_spectrum(const FloatImage& img) {
 }
 
 ZonePlateMeasures zoneplate_measures(const FloatImage& img, double numax, Band alias, Band pass) {
-  if (!(numax > 0) || !std::isfinite(numax)) throw usage_error("metrics --zoneplate: numax must be positive");
+  if (!(numax > 0) || !std::isfinite(numax)) throw usage_error("zone plate: numax must be positive");
   if (!(alias.lo < alias.hi) || !(pass.lo < pass.hi)) throw usage_error("metrics: a band needs lo < hi");
   ZonePlateMeasures z;
   double alias_sum = 0, pass_sum = 0, ideal_sum = 0;
@@ -92,7 +92,7 @@ ZonePlateMeasures zoneplate_measures(const FloatImage& img, double numax, Band a
       }
     }
   if (z.n_alias == 0 || z.n_pass == 0 || ideal_sum <= 0)
-    throw bad_input("metrics --zoneplate: the {}x{} image has no pixel in the alias or pass band", img.width, img.height);
+    throw bad_input("zone plate: the {}x{} image has no pixel in the alias or pass band", img.width, img.height);
   z.ae = alias_sum / static_cast<double>(z.n_alias) / 0.125;
   z.pr = pass_sum / ideal_sum;
   return z;

@@ -7,13 +7,14 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
 #include "core/file_io.hpp"
 #include "sampling/chain1d.hpp"
 #include "sampling/frequency_response.hpp"
 #include "sampling/kernel_analysis.hpp"
 #include "sampling/mip_kernel.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -85,7 +86,9 @@ int run_kernel(const KernelArgs& a) {
 int run_chain1d(const ChainArgs& a) {
   if (!a.edge.empty()) {
     if (a.edge.size() > 2) throw usage_error("--edge takes x0 or x0,x1");
-    const auto crossings = edge_experiment(a.edge[0], a.edge.size() == 2 ? std::optional<double>(a.edge[1]) : std::nullopt);
+    const auto crossings = with_rewording({{"edge experiment:", "chain1d --edge:"}}, [&] {
+      return edge_experiment(a.edge[0], a.edge.size() == 2 ? std::optional<double>(a.edge[1]) : std::nullopt);
+    });
     nlohmann::json j{{"experiment", "fig10.2"}, {"prefilter", "box:width=2"}, {"recon", "tent:width=2"},
                      {"threshold", 0.5}, {"edges", a.edge}, {"recovered", crossings}};
     print(j.dump() + "\n");
@@ -140,4 +143,4 @@ int run_mipkernel(const MipKernelArgs& a) {
   return 0;
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

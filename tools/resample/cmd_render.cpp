@@ -12,7 +12,7 @@
 #include "sampling/resize.hpp"
 #include "sizes.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -72,7 +72,7 @@ int run_render(const RenderArgs& a) {
     o.filter_scale = scale;
   }
   check_sample_count(o.pattern, o.samples);
-  const Depth depth = parse_depth(a.out.depth.empty() ? "f32" : a.out.depth);
+  const Depth depth = depth_of(a.out.depth.value_or(OutputDepth::f32));
   const auto f = output_format(a.out.to, a.out.output, depth.cv_depth);
 
   const Scene scene = make_scene(a.scene, scene_params, w, h, point_filter);
@@ -89,4 +89,4 @@ int run_render(const RenderArgs& a) {
   return 0;
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool
