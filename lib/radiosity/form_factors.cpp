@@ -9,6 +9,16 @@
 #include "radiosity/scene.hpp"
 
 namespace fest::radiosity {
+
+const char* engine_name(Engine e) {
+  switch (e) {
+    case Engine::hemicube: return "hemicube";
+    case Engine::raycast: return "raycast";
+    case Engine::analytic: return "analytic";
+    default: return "hybrid";
+  }
+}
+
 namespace {
 
 std::uint64_t splitmix(std::uint64_t x) {
