@@ -9,10 +9,23 @@
 
 namespace fest {
 
+// splitmix64's output for the state x (Steele, Lea & Flood 2014): a stateless 64-bit mix
+// whose consecutive inputs give independent-looking outputs, for counter-based streams
+// (a pixel's samples, a polygon's jittered points) and for seeding Rng.
+inline std::uint64_t splitmix64(std::uint64_t x) {
+  std::uint64_t z = x + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
 class Rng {
  public:
   explicit Rng(std::uint64_t seed) {
-    for (auto& s : s_) s = splitmix64(seed);
+    for (auto& s : s_) {
+      s = splitmix64(seed);
+      seed += 0x9e3779b97f4a7c15ull;
+    }
   }
   std::uint64_t next() {  // 64 uniform bits
     const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
@@ -49,12 +62,6 @@ class Rng {
   }
 
  private:
-  static std::uint64_t splitmix64(std::uint64_t& x) {
-    std::uint64_t z = (x += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
   double spare_ = 0.0;
