@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/error.hpp"
+#include "core/error_stats.hpp"
 #include "sampling/scenes.hpp"
 
 namespace fest::sampling {
@@ -32,22 +33,17 @@ ErrorMeasures compare_images(const FloatImage& test, const FloatImage& ref, cons
   if (!mask.empty() && mask.size() != pixels)
     throw bad_input("metrics: the mask has {} pixels, the image {}", mask.size(), pixels);
   ErrorMeasures m;
-  double sum = 0;
-  std::int64_t values = 0;
+  ErrorAccumulator errors;
   const auto c = static_cast<std::size_t>(test.channels);
   for (std::size_t p = 0; p < pixels; ++p) {
     if (!mask.empty() && mask[p] == 0) continue;
     ++m.n_pixels;
-    for (std::size_t ch = 0; ch < c; ++ch) {
-      const double d = static_cast<double>(test.data[p * c + ch]) - ref.data[p * c + ch];
-      sum += d * d;
-      m.maxabs = std::max(m.maxabs, std::fabs(d));
-      ++values;
-    }
+    for (std::size_t ch = 0; ch < c; ++ch) errors.add(std::fabs(static_cast<double>(test.data[p * c + ch]) - ref.data[p * c + ch]));
   }
-  if (values == 0) throw bad_input("metrics: the mask selects no pixel");
-  m.rmse = std::sqrt(sum / static_cast<double>(values));
-  m.psnr = m.rmse > 0 ? 20 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
+  if (errors.n == 0) throw bad_input("metrics: the mask selects no pixel");
+  m.maxabs = errors.max_abs;
+  m.rmse = errors.rmse();
+  m.psnr = errors.psnr(1.0);
   return m;
 }
 
