@@ -1,17 +1,13 @@
-// resample resize / display / mip: images through the separable resize of lib/sampling.
+// resample resize: an image through the separable resize of lib/sampling.
 #include <cmath>
 #include <cstdint>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/reworded_error.hpp"
 #include "image_files.hpp"
-#include "sampling/display_model.hpp"
 #include "sampling/resize.hpp"
-#include "sampling/texture.hpp"
 #include "sizes.hpp"
 #include "streamed_input.hpp"
 
@@ -84,47 +80,6 @@ int run_resize(const ResizeArgs& a) {
   in.image.color_space = pick_colour(in.image.color_space);
   const cv::Mat& m = in.image.pixels;
   return finish(m.cols, m.rows, m.depth(), [&](int w, int h) { return resize(in.image, w, h, o); });
-}
-
-int run_display(const DisplayArgs& a) {
-  const DisplayModel& model = a.model;
-  const Depth depth = depth_of(a.out.depth);
-  LoadedImage in = load_image(a.input);
-  const cv::Mat& m = in.image.pixels;
-  if (static_cast<long long>(m.cols) * a.factor * m.rows * a.factor > (1LL << 31))
-    throw usage_error("display: {}x{} magnified {} times exceeds 2^31 pixels", m.cols, m.rows, a.factor);
-  ResizeOptions o;
-  o.kernel = model.x;
-  o.kernel_y = model.y;
-  o.threads = a.threads;
-  o.clamp = ClampMode::none;  // the viewer sees the display's overshoot too
-  const int image_depth = depth.cv_depth >= 0 ? depth.cv_depth : m.depth();
-  const auto f = output_format(a.out.to, a.out.output, image_depth);
-  o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, m.depth());
-  const Image out = resize(in.image, m.cols * a.factor, m.rows * a.factor, o);
-  store_image(out, a.out.output, f, depth.half);
-  return 0;
-}
-
-int run_mip(const MipArgs& a) {
-  if (a.levels < 0 || a.levels > 40) throw usage_error("--levels {} is out of range", a.levels);
-  ResizeOptions o;
-  o.kernel = make_kernel(pyramid_kernel(a.filter));
-  o.threads = a.threads;
-  const LoadedImage in = load_image(a.input);
-  const bool is_float = in.image.pixels.depth() == CV_32F;
-  const auto f = output_format(a.to, is_float ? "x.exr" : "x.png", in.image.pixels.depth());
-  // Every level is made from the previous one (the pyramid of §2.7) and written only
-  // once all of them exist: a failure leaves no partial pyramid behind.
-  std::vector<Image> levels{in.image};
-  while (levels.back().pixels.cols > 1 || levels.back().pixels.rows > 1) {
-    if (a.levels > 0 && static_cast<int>(levels.size()) >= a.levels) break;
-    const cv::Mat& m = levels.back().pixels;
-    levels.push_back(resize(levels.back(), std::max(1, m.cols / 2), std::max(1, m.rows / 2), o));
-  }
-  for (std::size_t k = 0; k < levels.size(); ++k)
-    store_image(levels[k], fmt::format("{}_{}{}", a.prefix, k, formats::format_extension(f)), f, false);
-  return 0;
 }
 
 }  // namespace fest::resample_tool
