@@ -17,7 +17,7 @@
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 #include "hdr/merge.hpp"
-#include "hdr/robertson.hpp"
+#include "response_recovery.hpp"
 #include "stack_files.hpp"
 
 namespace fest::hdrmerge_tool {
@@ -176,14 +176,7 @@ int run_session(const SessionOptions& a) {
   if (!a.response_in.empty()) {
     response = response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
   } else {
-    const hdr::ExposureStack first = stack_of(sets.front());
-    if (a.method == Method::robertson) response = hdr::recover_response_robertson(first);
-    else {
-      hdr::DebevecOptions o;
-      o.samples = a.samples;
-      o.lambda = a.lambda;
-      response = hdr::recover_response_debevec(first, o);
-    }
+    response = recover_response(stack_of(sets.front()), a.method, a.samples, a.lambda);
   }
   const std::string response_csv = formats::write_table(response_table(response), formats::Format::csv);
   const std::string response_sha = sha256_hex(response_csv);
