@@ -81,7 +81,13 @@ struct RenderArgs {
   int width = 256, height = 256;
   int spp = 16;
   sampling::Pattern pattern = sampling::Pattern::jitter;  // not used with ground_truth
-  std::string pixel_filter = "box";
+  // --pixel-filter for every scene but point: the kernel, stretched by filter_scale to the
+  // radius asked for.
+  sampling::Kernel pixel_filter = sampling::make_kernel("box");
+  double filter_scale = 1;
+  // --pixel-filter for --scene point: lowpass, bandpass (its lo is in params) or a kernel
+  // name, as sampling::make_scene takes it.
+  std::string point_filter = "lowpass";
   unsigned long long seed = 1;
   bool ground_truth = false;
   int gt_spp = 4096;

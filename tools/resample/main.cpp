@@ -74,6 +74,46 @@ ZonePlate zone_plate(const std::string& text) {
   return z;
 }
 
+// --pixel-filter NAME[:params][,radius=R] -> the kernel and the stretch that gives it radius R.
+std::pair<fest::sampling::Kernel, double> stretched_kernel(const std::string& spec) {
+  std::string rest = spec;
+  double radius = 0;
+  const auto pos = rest.find("radius=");
+  if (pos != std::string::npos && pos > 0 && (rest[pos - 1] == ':' || rest[pos - 1] == ',')) {
+    const auto end = rest.find(',', pos);
+    const std::string value = rest.substr(pos + 7, end == std::string::npos ? std::string::npos : end - pos - 7);
+    char* stop = nullptr;
+    radius = std::strtod(value.c_str(), &stop);
+    if (value.empty() || *stop != '\0' || !(radius > 0 && radius <= 64))
+      throw fest::usage_error("--pixel-filter: radius '{}' must be a number in (0, 64]", value);
+    rest.erase(pos - 1, (end == std::string::npos ? rest.size() : end) - pos + 1);
+  }
+  const fest::sampling::Kernel k = fest::sampling::make_kernel(rest);
+  if (!k.reconstruction.empty()) throw fest::usage_error("--pixel-filter cannot be a dual prefilter");
+  const double scale = radius > 0 && k.radius > 0 && std::isfinite(k.radius) ? radius / k.radius : 1.0;
+  return {k, scale};
+}
+
+// --pixel-filter for rd.scene (after rd.params): the point scene takes the radial
+// lowpass/bandpass filters the others do not.
+void set_pixel_filter(RenderArgs& rd, const std::string& spec) {
+  const bool radial = spec.rfind("lowpass", 0) == 0 || spec.rfind("bandpass", 0) == 0;
+  if (radial && rd.scene != "point") throw fest::usage_error("--pixel-filter {} is for --scene point only", spec);
+  if (rd.scene != "point") {
+    std::tie(rd.pixel_filter, rd.filter_scale) = stretched_kernel(spec);
+    return;
+  }
+  const fest::sampling::KernelSpelling s = fest::sampling::split_kernel_spelling(spec);
+  if (s.name == "bandpass") {
+    for (const auto& [k, v] : fest::sampling::parse_kernel_params("bandpass", s.rest, {{"lo", 0.2}})) rd.params[k] = v;
+    rd.point_filter = "bandpass";
+  } else if (s.name == "lowpass") {
+    if (!s.rest.empty()) throw fest::usage_error("--pixel-filter lowpass takes no parameters");
+  } else {
+    rd.point_filter = spec;
+  }
+}
+
 // --map plane:h=..,pitch=..,fov=..,period=..
 PlaneView plane_view(const std::string& text) {
   const fest::sampling::KernelSpelling s = fest::sampling::split_kernel_spelling(text);
@@ -140,7 +180,7 @@ int main(int argc, char** argv) {
 
   RenderArgs rd;
   std::vector<std::string> rd_params;
-  std::string rd_size = "256x256", rd_pattern = "jitter";
+  std::string rd_size = "256x256", rd_pattern = "jitter", rd_pixel_filter = "box";
   auto* render = app.add_subcommand("render", "Render an analytic scene with supersampling");
   add_output(render, rd.out);
   render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
@@ -148,7 +188,7 @@ int main(int argc, char** argv) {
   render->add_option("--size", rd_size, "Image size WxH")->default_val("256x256");
   render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
   render->add_option("--pattern", rd_pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
-  render->add_option("--pixel-filter", rd.pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
+  render->add_option("--pixel-filter", rd_pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
   fest::cli::enum_words<RenderColor>(render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)"),
@@ -243,6 +283,7 @@ int main(int argc, char** argv) {
       std::tie(rd.width, rd.height) = parse_size(rd_size, "--size");
       rd.params = scene_params(rd_params);
       if (!rd.ground_truth) rd.pattern = fest::sampling::parse_pattern(rd_pattern);  // unused with --ground-truth
+      set_pixel_filter(rd, rd_pixel_filter);
       return run_render(rd);
     }
     if (*normalmip) return run_normalmip(nm);
