@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "core/tool_main.hpp"
 
 #ifndef FEST_VERSION
@@ -38,23 +39,38 @@ inline void add_common(CLI::App& app, Common& common, bool with_progress = false
   app.get_formatter()->column_width(28);
 }
 
+// --threads N, checked as it is parsed: a negative or implausible count is a usage error
+// worded the same by every tool (lib/core/threads' resolve_threads words it in its terms).
 inline void add_threads(CLI::App& app, int& threads) {
-  app.add_option("--threads", threads, "Worker threads (0 = all cores)")->default_val(0);
+  app.add_option("--threads", threads, "Worker threads (0 = all cores)")
+      ->default_val(0)
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            int n = 0;
+            if (!CLI::detail::lexical_cast(text, n)) return {};  // CLI11's own conversion error follows
+            if (n < 0) throw usage_error("--threads must be 0 (all cores) or positive, not {}", n);
+            if (n > max_plausible_threads) throw usage_error("--threads {} is not a plausible thread count", n);
+            return {};
+          },
+          ""));
 }
 
 // Parses argv; help and --version go to standard output with status 0; a usage error is
 // one line on standard error and status 2 (README "Conventions"), not CLI11's own codes.
+// A check that throws fest::Error itself (add_threads) is reported like the body's errors.
 template <typename Body>
 int run(CLI::App& app, int argc, char** argv, Body&& body) {
   const std::string tool = app.get_name();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-    std::fprintf(stderr, "%s: error: %s (see %s --help)\n", tool.c_str(), e.what(), tool.c_str());
-    return static_cast<int>(Status::usage);
-  }
-  return run_tool(tool, std::forward<Body>(body));
+  return run_tool(tool, [&]() -> int {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+      std::fprintf(stderr, "%s: error: %s (see %s --help)\n", tool.c_str(), e.what(), tool.c_str());
+      return static_cast<int>(Status::usage);
+    }
+    return body();
+  });
 }
 
 }  // namespace fest::cli

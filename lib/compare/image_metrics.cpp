@@ -5,35 +5,26 @@
 
 #include "compare/image_compare.hpp"
 #include "core/error.hpp"
+#include "core/error_stats.hpp"
 
 namespace fest::compare {
 
 namespace {
 
-double psnr(double rmse, double peak) {
-  if (rmse == 0) return std::numeric_limits<double>::infinity();
-  return 20.0 * std::log10(peak / rmse);
-}
-
+// lib/core's accumulator, with NaN = NaN a match and NaN against a number an infinite difference.
 struct Accumulator {
-  double sum_sq = 0;
-  double max_abs = 0;
-  std::size_t n = 0;
+  ErrorAccumulator errors;
   void add(double x, double y) {
-    double diff;
     if (std::isnan(x) || std::isnan(y))
-      diff = (std::isnan(x) && std::isnan(y)) ? 0.0 : std::numeric_limits<double>::infinity();
+      errors.add((std::isnan(x) && std::isnan(y)) ? 0.0 : std::numeric_limits<double>::infinity());
     else
-      diff = std::abs(x - y);
-    max_abs = std::max(max_abs, diff);
-    sum_sq += diff * diff;
-    ++n;
+      errors.add(std::abs(x - y));
   }
   ChannelError result(double peak) const {
     ChannelError e;
-    e.max_abs = max_abs;
-    e.rmse = n ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0;
-    e.psnr = psnr(e.rmse, peak);
+    e.max_abs = errors.max_abs;
+    e.rmse = errors.rmse();
+    e.psnr = psnr_db(e.rmse, peak);
     return e;
   }
 };

@@ -10,13 +10,22 @@
 
 namespace fest {
 
-// SplitMix64 (Steele, Lea & Flood 2014): the state advances by the golden-ratio
-// increment and is mixed into the output. Seeds Rng; on its own a small, fast stream.
-inline std::uint64_t splitmix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+// splitmix64's output for the state x (Steele, Lea & Flood 2014): a stateless 64-bit mix
+// whose consecutive inputs give independent-looking outputs, for counter-based streams
+// (a pixel's samples, a polygon's jittered points).
+inline std::uint64_t splitmix64_mix(std::uint64_t x) {
+  std::uint64_t z = x + 0x9e3779b97f4a7c15ull;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   return z ^ (z >> 31);
+}
+
+// SplitMix64 as a stream: the state advances by the golden-ratio increment and is mixed
+// into the output. Seeds Rng; on its own a small, fast stream.
+inline std::uint64_t splitmix64(std::uint64_t& state) {
+  const std::uint64_t x = state;
+  state += 0x9e3779b97f4a7c15ull;
+  return splitmix64_mix(x);
 }
 
 class SplitMix64 {

@@ -20,8 +20,8 @@ int available_cores() {
 }
 
 int resolve_threads(int requested) {
-  if (requested < 0) throw usage_error("--threads must be 0 (all cores) or positive, not {}", requested);
-  if (requested > 4096) throw usage_error("--threads {} is not a plausible thread count", requested);
+  if (requested < 0) throw usage_error("a negative number of threads ({}); 0 means all cores", requested);
+  if (requested > max_plausible_threads) throw usage_error("{} threads is not a plausible count", requested);
   return requested == 0 ? available_cores() : requested;
 }
 

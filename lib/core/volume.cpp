@@ -91,7 +91,7 @@ Volume Volume::frame(std::size_t t) const {
 void Volume::require_3d(const char* who) const {
   if (frames > 1)
     throw bad_input("{} works on one 3-D volume, and the input is a 4-D series of {} frames of {}x{}x{}; "
-                    "take one frame with `fconv --frame K`",
+                    "take one frame of it with fconv first",
                     who, frames, dims[0], dims[1], dims[2]);
 }
 

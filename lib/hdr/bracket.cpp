@@ -10,8 +10,8 @@ namespace fest::hdr {
 cv::Mat expose(const cv::Mat& radiance, double time, const CameraModel& camera, std::uint64_t seed) {
   if (radiance.depth() != CV_32F || (radiance.channels() != 1 && radiance.channels() != 3))
     throw bad_input("bracketing needs a float radiance image with 1 or 3 channels");
-  if (!(camera.gamma > 0 && std::isfinite(camera.gamma))) throw usage_error("--gamma must be positive");
-  if (!(camera.noise_dn >= 0 && std::isfinite(camera.noise_dn))) throw usage_error("--noise must not be negative");
+  if (!(camera.gamma > 0 && std::isfinite(camera.gamma))) throw usage_error("camera gamma must be positive");
+  if (!(camera.noise_dn >= 0 && std::isfinite(camera.noise_dn))) throw usage_error("camera read noise must not be negative");
   if (!(time > 0 && std::isfinite(time))) throw usage_error("exposure time {} must be positive", time);
   const cv::Mat e = radiance.isContinuous() ? radiance : radiance.clone();
   cv::Mat z(e.size(), CV_8UC(e.channels()));

@@ -6,17 +6,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "core/srgb.hpp"
 
 namespace fest::hdr {
-
-namespace {
-
-double srgb_encode(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
-
-}  // namespace
 
 cv::Mat contact_sheet(const std::vector<cv::Mat>& images, int columns, int tile_width) {
   if (images.empty()) throw bad_input("contact sheet: no images");
@@ -58,7 +50,7 @@ cv::Mat contact_sheet(const std::vector<cv::Mat>& images, int columns, int tile_
         const cv::Vec3f v = t.at<cv::Vec3f>(y, x);
         cv::Vec3b& out = sheet.at<cv::Vec3b>(oy + y, ox + x);
         for (int c = 0; c < 3; ++c)
-          out[c] = std::uint8_t(std::lround(255 * srgb_encode(std::isfinite(v[c]) ? v[c] * scale : 0.0)));
+          out[c] = std::uint8_t(std::lround(255 * linear_to_srgb(std::isfinite(v[c]) ? v[c] * scale : 0.0)));
       }
   }
   return sheet;

@@ -45,9 +45,9 @@ std::vector<int> pick_samples(const ExposureStack& stack, int channel, int sampl
 
 Response recover_response_debevec(const ExposureStack& stack, const DebevecOptions& options) {
   validate_stack(stack);
-  if (options.samples < 1) throw usage_error("--samples must be positive, got {}", options.samples);
+  if (options.samples < 1) throw usage_error("the number of sample pixels must be positive, got {}", options.samples);
   if (!(options.lambda >= 0 && std::isfinite(options.lambda)))
-    throw usage_error("--lambda must be finite and not negative, got {}", options.lambda);
+    throw usage_error("the smoothness weight lambda must be finite and not negative, got {}", options.lambda);
   const int p = int(stack.images.size());
   const double smooth = options.lambda;
   Response response;

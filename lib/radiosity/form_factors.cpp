@@ -5,19 +5,24 @@
 #include <cstdint>
 
 #include "core/parallel_for.hpp"
+#include "core/rng.hpp"
 #include "radiosity/polygon_ff.hpp"
 #include "radiosity/scene.hpp"
 
 namespace fest::radiosity {
+
+const char* engine_name(Engine e) {
+  switch (e) {
+    case Engine::hemicube: return "hemicube";
+    case Engine::raycast: return "raycast";
+    case Engine::analytic: return "analytic";
+    default: return "hybrid";
+  }
+}
+
 namespace {
 
-std::uint64_t splitmix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-double unit(std::uint64_t x) { return static_cast<double>(splitmix(x) >> 11) * (1.0 / 9007199254740992.0); }
+double unit(std::uint64_t x) { return static_cast<double>(splitmix64_mix(x) >> 11) * (1.0 / 9007199254740992.0); }
 
 // S stratified points on a polygon (a ceil(sqrt S)^2 grid, jittered by a hash of the
 // polygon's id so that every run draws the same points).

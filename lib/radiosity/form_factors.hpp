@@ -29,6 +29,7 @@
 namespace fest::radiosity {
 
 enum class Engine { hemicube, raycast, analytic, hybrid };
+const char* engine_name(Engine e);
 
 struct FormFactorOptions {
   Engine engine = Engine::hybrid;

@@ -72,6 +72,15 @@ struct Model {
   void update_patch_radiosity(int p);
 };
 
+// A patch's or an element's polygon with the quantities every shot reads from it.
+template <class Piece>
+void set_polygon(Piece& piece, const Polygon& p) {
+  piece.poly = p;
+  piece.area = p.area();
+  piece.centroid = p.centroid();
+  piece.normal = p.normal();
+}
+
 inline double luminance(const Rgb& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
 
 }  // namespace fest::radiosity

@@ -195,10 +195,7 @@ Model build_model(const Scene& scene, const MeshingOptions& options) {
         const std::vector<Polygon> patches = options.no_mesh ? std::vector<Polygon>{face} : split_polygon(face, patch);
         for (const Polygon& pp : patches) {
           Patch pt;
-          pt.poly = pp;
-          pt.area = pp.area();
-          pt.centroid = pp.centroid();
-          pt.normal = pp.normal();
+          set_polygon(pt, pp);
           pt.object = static_cast<int>(oi);
           pt.face = static_cast<int>(f);
           pt.rho = o.reflectance;
@@ -207,10 +204,7 @@ Model build_model(const Scene& scene, const MeshingOptions& options) {
           const std::vector<Polygon> elems = options.no_mesh ? std::vector<Polygon>{pp} : split_polygon(pp, element);
           for (const Polygon& ep : elems) {
             Element e;
-            e.poly = ep;
-            e.area = ep.area();
-            e.centroid = ep.centroid();
-            e.normal = ep.normal();
+            set_polygon(e, ep);
             e.patch = pid;
             pt.elements.push_back(static_cast<int>(m.elements.size()));
             m.elements.push_back(e);

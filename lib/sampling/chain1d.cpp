@@ -43,9 +43,9 @@ double box2_of_interval(double x, double a, double b) {
 
 std::vector<double> edge_experiment(double x0, std::optional<double> x1) {
   if (!std::isfinite(x0) || (x1 && (!std::isfinite(*x1) || *x1 <= x0)))
-    throw usage_error("chain1d --edge: need finite x0 < x1");
+    throw usage_error("edge experiment: need finite x0 < x1");
   if (std::fabs(x0) > 1e6 || (x1 && std::fabs(*x1) > 1e6))
-    throw usage_error("chain1d --edge: positions beyond ±1e6 are not plausible");
+    throw usage_error("edge experiment: positions beyond ±1e6 are not plausible");
   // A step is a bar whose far end lies beyond every sample that the box can reach.
   const double last = x1 ? *x1 : x0 + 4;
   const double a = x0, b = x1 ? *x1 : last + 8;

@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/error.hpp"
+#include "core/error_stats.hpp"
 #include "sampling/scenes.hpp"
 
 namespace fest::sampling {
@@ -32,27 +33,22 @@ ErrorMeasures compare_images(const FloatImage& test, const FloatImage& ref, cons
   if (!mask.empty() && mask.size() != pixels)
     throw bad_input("metrics: the mask has {} pixels, the image {}", mask.size(), pixels);
   ErrorMeasures m;
-  double sum = 0;
-  std::int64_t values = 0;
+  ErrorAccumulator errors;
   const auto c = static_cast<std::size_t>(test.channels);
   for (std::size_t p = 0; p < pixels; ++p) {
     if (!mask.empty() && mask[p] == 0) continue;
     ++m.n_pixels;
-    for (std::size_t ch = 0; ch < c; ++ch) {
-      const double d = static_cast<double>(test.data[p * c + ch]) - ref.data[p * c + ch];
-      sum += d * d;
-      m.maxabs = std::max(m.maxabs, std::fabs(d));
-      ++values;
-    }
+    for (std::size_t ch = 0; ch < c; ++ch) errors.add(std::fabs(static_cast<double>(test.data[p * c + ch]) - ref.data[p * c + ch]));
   }
-  if (values == 0) throw bad_input("metrics: the mask selects no pixel");
-  m.rmse = std::sqrt(sum / static_cast<double>(values));
-  m.psnr = m.rmse > 0 ? 20 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
+  if (errors.n == 0) throw bad_input("metrics: the mask selects no pixel");
+  m.maxabs = errors.max_abs;
+  m.rmse = errors.rmse();
+  m.psnr = errors.psnr(1.0);
   return m;
 }
 
 std::vector<double> row_power_spectrum(const FloatImage& img) {
-  if (img.width < 2) throw bad_input("metrics --spectrum: the image must be at least 2 pixels wide");
+  if (img.width < 2) throw bad_input("power spectrum: the image must be at least 2 pixels wide");
   cv::Mat rows(img.height, img.width, CV_64F);
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
@@ -72,7 +68,7 @@ std::vector<double> row_power_spectrum(const FloatImage& img) {
 }
 
 ZonePlateMeasures zoneplate_measures(const FloatImage& img, double numax, Band alias, Band pass) {
-  if (!(numax > 0) || !std::isfinite(numax)) throw usage_error("metrics --zoneplate: numax must be positive");
+  if (!(numax > 0) || !std::isfinite(numax)) throw usage_error("zone plate: numax must be positive");
   if (!(alias.lo < alias.hi) || !(pass.lo < pass.hi)) throw usage_error("metrics: a band needs lo < hi");
   ZonePlateMeasures z;
   double alias_sum = 0, pass_sum = 0, ideal_sum = 0;
@@ -92,7 +88,7 @@ ZonePlateMeasures zoneplate_measures(const FloatImage& img, double numax, Band a
       }
     }
   if (z.n_alias == 0 || z.n_pass == 0 || ideal_sum <= 0)
-    throw bad_input("metrics --zoneplate: the {}x{} image has no pixel in the alias or pass band", img.width, img.height);
+    throw bad_input("zone plate: the {}x{} image has no pixel in the alias or pass band", img.width, img.height);
   z.ae = alias_sum / static_cast<double>(z.n_alias) / 0.125;
   z.pr = pass_sum / ideal_sum;
   return z;

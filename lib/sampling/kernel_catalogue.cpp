@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -40,75 +42,63 @@ void require_no_params(const KernelSpelling& s) {
   if (!s.rest.empty()) throw usage_error("kernel '{}' takes no parameters (got '{}')", s.name, s.rest);
 }
 
-Kernel box() {
+// A kernel of the catalogue from its parts; an empty response: frequency_response()
+// integrates the spatial form.
+Kernel kernel_of(std::string name, double radius, bool interpolating, std::function<double(double)> spatial,
+                 std::function<double(double)> response = {}) {
   Kernel k;
-  k.name = "box";
-  k.radius = 0.5;
-  k.interpolating = true;
+  k.name = std::move(name);
+  k.radius = radius;
+  k.interpolating = interpolating;
+  k.spatial = std::move(spatial);
+  k.response = std::move(response);
+  return k;
+}
+
+Kernel box() {
   // Half-open [-0.5, 0.5): at a tie exactly one of two neighbouring samples counts,
   // so an integer box reduction averages whole blocks and nothing else.
-  k.spatial = [](double x) { return (x >= -0.5 && x < 0.5) ? 1.0 : 0.0; };
-  k.response = [](double f) { return sinc(f); };
-  return k;
+  return kernel_of("box", 0.5, true, [](double x) { return (x >= -0.5 && x < 0.5) ? 1.0 : 0.0; },
+                   [](double f) { return sinc(f); });
 }
 
 Kernel triangle() {
-  Kernel k;
-  k.name = "triangle";
-  k.radius = 1;
-  k.interpolating = true;
-  k.spatial = [](double x) { return std::max(0.0, 1 - std::fabs(x)); };
-  k.response = [](double f) { return std::pow(sinc(f), 2); };  // box ⊗ box
-  return k;
+  return kernel_of("triangle", 1, true, [](double x) { return std::max(0.0, 1 - std::fabs(x)); },
+                   [](double f) { return std::pow(sinc(f), 2); });  // box ⊗ box
 }
 
 Kernel cubic(std::string name, double b, double c) {
-  Kernel k;
-  k.name = std::move(name);
-  k.radius = 2;
-  k.interpolating = b == 0;  // k(0) = (6 - 2B)/6 and k(1) = B/6
-  k.spatial = [b, c](double x) { return mitchell_netravali(b, c, x); };
-  // B = 1, C = 0 is the cubic B-spline β³ = box ⊗ box ⊗ box ⊗ box.
-  if (b == 1 && c == 0) k.response = [](double f) { return std::pow(sinc(f), 4); };
-  return k;
+  // k(0) = (6 - 2B)/6 and k(1) = B/6: interpolating for B = 0. B = 1, C = 0 is the cubic
+  // B-spline β³ = box ⊗ box ⊗ box ⊗ box.
+  std::function<double(double)> response;
+  if (b == 1 && c == 0) response = [](double f) { return std::pow(sinc(f), 4); };
+  return kernel_of(std::move(name), 2, b == 0, [b, c](double x) { return mitchell_netravali(b, c, x); }, response);
 }
 
 Kernel gaussian(const KernelSpelling& s) {
   const auto p = parse_kernel_params(s.name, s.rest, {{"sigma", 0.5}});
   const double sigma = p.at("sigma");
   require_range(s.name, "sigma", sigma, 0, max_width / 3);
-  Kernel k;
-  k.name = fmt::format("gaussian:sigma={}", sigma);
-  k.radius = 3 * sigma;
-  k.spatial = [sigma](double x) { return truncated_gaussian(sigma, x); };
   // The closed form is the untruncated spot (a CRT display model, docs/resample.md "Display reconstruction"): chain1d treats
   // the display as that ideal Gaussian. The resize kernel is cut at 3σ; its own transform
   // (numerical_response) differs by < 0.005.
-  k.response = [sigma](double f) { return std::exp(-2 * pi * pi * sigma * sigma * f * f); };
-  return k;
+  return kernel_of(fmt::format("gaussian:sigma={}", sigma), 3 * sigma, false,
+                   [sigma](double x) { return truncated_gaussian(sigma, x); },
+                   [sigma](double f) { return std::exp(-2 * pi * pi * sigma * sigma * f * f); });
 }
 
 Kernel lanczos_kernel(const KernelSpelling& s, double default_a) {
   const auto p = parse_kernel_params(s.name, s.rest, {{"a", default_a}});
   const double a = p.at("a");
   require_range(s.name, "a", a, 0, max_width / 2);
-  Kernel k;
-  k.name = fmt::format("lanczos:a={}", a);
-  k.radius = a;
-  k.interpolating = true;
-  k.spatial = [a](double x) { return lanczos(a, x); };
-  return k;
+  return kernel_of(fmt::format("lanczos:a={}", a), a, true, [a](double x) { return lanczos(a, x); });
 }
 
 Kernel blackman_harris_kernel(const KernelSpelling& s) {
   const auto p = parse_kernel_params(s.name, s.rest, {{"width", 3}});
   const double w = p.at("width");
   require_range(s.name, "width", w, 0, max_width);
-  Kernel k;
-  k.name = fmt::format("blackman-harris:width={}", w);
-  k.radius = w / 2;
-  k.spatial = [w](double x) { return blackman_harris(w, x); };
-  return k;
+  return kernel_of(fmt::format("blackman-harris:width={}", w), w / 2, false, [w](double x) { return blackman_harris(w, x); });
 }
 
 Kernel kaiser_kernel(const KernelSpelling& s) {
@@ -117,22 +107,13 @@ Kernel kaiser_kernel(const KernelSpelling& s) {
   require_range(s.name, "a", a, 0, max_width / 2);
   if (!(beta >= 0 && beta <= 700))  // I0(beta) overflows a double beyond ~713
     throw usage_error("kernel '{}': beta = {} is out of range [0, 700]", s.name, beta);
-  Kernel k;
-  k.name = fmt::format("kaiser:a={},beta={}", a, beta);
-  k.radius = a;
-  k.interpolating = true;  // a windowed sinc keeps sinc's zeros
-  k.spatial = [a, beta](double x) { return kaiser(a, beta, x); };
-  return k;
+  // A windowed sinc keeps sinc's zeros: interpolating.
+  return kernel_of(fmt::format("kaiser:a={},beta={}", a, beta), a, true, [a, beta](double x) { return kaiser(a, beta, x); });
 }
 
 Kernel ideal() {
-  Kernel k;
-  k.name = "sinc";
-  k.radius = infinity;
-  k.interpolating = true;
-  k.spatial = [](double x) { return sinc(x); };
-  k.response = [](double f) { return std::fabs(f) < 0.5 ? 1.0 : 0.0; };
-  return k;
+  return kernel_of("sinc", infinity, true, [](double x) { return sinc(x); },
+                   [](double f) { return std::fabs(f) < 0.5 ? 1.0 : 0.0; });
 }
 
 Kernel point() {

@@ -79,9 +79,9 @@ FloatImage resample_axis(const FloatImage& in, Axis axis, int n_out, const Kerne
                          int threads) {
   const int n_in = axis == Axis::x ? in.width : in.height;
   if (k.name == "sinc") {
-    if (shift != 0) throw usage_error("kernel 'sinc' does not take --shift");
+    if (shift != 0) throw usage_error("kernel 'sinc' does not take a sub-pixel shift");
     if (o.edge != EdgeMode::reflect && o.edge != EdgeMode::clamp)
-      throw usage_error("kernel 'sinc' extends the image by mirroring only (--edge clamp or reflect)");
+      throw usage_error("kernel 'sinc' extends the image by mirroring only (edge mode clamp or reflect)");
     return spectral_resample(in, axis, n_out, threads);
   }
   const bool dual = !k.reconstruction.empty();

@@ -5,24 +5,18 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "core/rng.hpp"
 
 namespace fest::sampling {
 
 namespace {
 
-std::uint64_t mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
 // A small counter-based generator: uniform doubles in [0, 1) from a pixel's stream.
 class Stream {
  public:
   explicit Stream(std::uint64_t key) : key_(key) {}
-  double uniform() { return static_cast<double>(mix(key_ ^ mix(counter_++)) >> 11) * 0x1.0p-53; }
-  std::uint64_t bits() { return mix(key_ ^ mix(counter_++)); }
+  double uniform() { return static_cast<double>(splitmix64_mix(key_ ^ splitmix64_mix(counter_++)) >> 11) * 0x1.0p-53; }
+  std::uint64_t bits() { return splitmix64_mix(key_ ^ splitmix64_mix(counter_++)); }
 
  private:
   std::uint64_t key_;
@@ -78,7 +72,7 @@ int grid_side(int n) { return static_cast<int>(std::lround(std::sqrt(static_cast
 }  // namespace
 
 std::uint64_t hash64(std::uint64_t a, std::uint64_t b, std::uint64_t c, std::uint64_t d) {
-  return mix(mix(mix(mix(a) ^ b) ^ c) ^ d);
+  return splitmix64_mix(splitmix64_mix(splitmix64_mix(splitmix64_mix(a) ^ b) ^ c) ^ d);
 }
 
 Pattern parse_pattern(const std::string& name) {

@@ -30,7 +30,7 @@ FloatImage half(const FloatImage& img, int threads) {
 
 FloatImage slopes_from_height(const FloatImage& h, double scale) {
   if (h.width < 1 || h.height < 1) throw bad_input("height map is empty");
-  if (!std::isfinite(scale)) throw usage_error("--height-scale {} is not finite", scale);
+  if (!std::isfinite(scale)) throw usage_error("height scale {} is not finite", scale);
   FloatImage s(h.width, h.height, 2);
   auto at = [&](int x, int y) {
     x = (x % h.width + h.width) % h.width;

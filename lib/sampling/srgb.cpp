@@ -5,17 +5,13 @@
 #include <cstring>
 #include <vector>
 
+#include "core/srgb.hpp"
+
 namespace fest::sampling {
 
-float srgb_to_linear(float c) {
-  const double x = c;
-  return static_cast<float>(x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4));
-}
+float srgb_to_linear(float c) { return static_cast<float>(fest::srgb_to_linear_unclamped(c)); }
 
-float linear_to_srgb(float l) {
-  const double x = l;
-  return static_cast<float>(x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055);
-}
+float linear_to_srgb(float l) { return static_cast<float>(fest::linear_to_srgb_unclamped(l)); }
 
 const float* srgb8_table() {
   static const auto table = [] {

@@ -6,6 +6,7 @@
 
 namespace fest::sampling {
 
+// lib/core/srgb.hpp's curve, unclamped (values beyond [0, 1] pass through filtering), in float.
 float srgb_to_linear(float c);
 float linear_to_srgb(float l);
 

@@ -173,11 +173,18 @@ double lookup(const MipPyramid& p, const TexCoord& c, const Jacobian& j, const T
 
 }  // namespace
 
-MipPyramid build_pyramid(const FloatImage& texture, const std::string& filter, int threads) {
-  if (filter != "box" && filter != "gaussian" && filter != "lanczos3")
-    throw usage_error("--mip: '{}' is not one of box, gaussian, lanczos3", filter);
+const char* pyramid_kernel(PyramidFilter filter) {
+  switch (filter) {
+    case PyramidFilter::gaussian: return "gaussian:sigma=0.5";
+    case PyramidFilter::lanczos3: return "lanczos3";
+    case PyramidFilter::box: break;
+  }
+  return "box";
+}
+
+MipPyramid build_pyramid(const FloatImage& texture, PyramidFilter filter, int threads) {
   ResizeOptions o;
-  o.kernel = make_kernel(filter == "gaussian" ? "gaussian:sigma=0.5" : filter);
+  o.kernel = make_kernel(pyramid_kernel(filter));
   o.edge = EdgeMode::wrap;
   o.clamp = ClampMode::none;
   o.threads = threads;
@@ -192,7 +199,7 @@ MipPyramid build_pyramid(const FloatImage& texture, const std::string& filter, i
 
 TextureMap plane_map(double h, double pitch, double fov, double period, int width, int height, int tw, int th) {
   if (!(h > 0) || !(fov > 0 && fov < 180) || !(period > 0) || !std::isfinite(pitch) || std::fabs(pitch) >= 90)
-    throw usage_error("--map plane: need h > 0, |pitch| < 90, 0 < fov < 180, period > 0");
+    throw usage_error("plane view: need h > 0, |pitch| < 90, 0 < fov < 180, period > 0");
   const double tan_half = std::tan(fov * pi / 360), aspect = static_cast<double>(width) / height;
   const double cp = std::cos(pitch * pi / 180), sp = std::sin(pitch * pi / 180);
   return [=](double x, double y) {
@@ -210,7 +217,7 @@ TextureMap plane_map(double h, double pitch, double fov, double period, int widt
 }
 
 TextureMap table_map(const FloatImage& uv, int tw, int th) {
-  if (uv.channels != 2) throw bad_input("--uv needs 2 channels (u, v), got {}", uv.channels);
+  if (uv.channels != 2) throw bad_input("texture coordinates need 2 channels (u, v), got {}", uv.channels);
   return [&uv, tw, th](double x, double y) {
     const double px = std::clamp(x - 0.5, 0.0, uv.width - 1.0), py = std::clamp(y - 0.5, 0.0, uv.height - 1.0);
     const int x0 = std::min(static_cast<int>(px), uv.width - 1), y0 = std::min(static_cast<int>(py), uv.height - 1);
@@ -232,7 +239,7 @@ TextureOptions parse_texture_method(const std::string& spec) {
   TextureOptions o;
   const KernelSpelling s = split_kernel_spelling(spec);
   if (s.name == "nearest" || s.name == "bilinear" || s.name == "trilinear") {
-    if (!s.rest.empty()) throw usage_error("--method {} takes no parameters", s.name);
+    if (!s.rest.empty()) throw usage_error("texture method: {} takes no parameters", s.name);
     o.method = s.name == "nearest" ? TexMethod::nearest : s.name == "bilinear" ? TexMethod::bilinear : TexMethod::trilinear;
     return o;
   }
@@ -241,13 +248,13 @@ TextureOptions parse_texture_method(const std::string& spec) {
     std::string n = s.rest;
     const auto colon = n.find(':');
     if (colon != std::string::npos) {
-      if (n.substr(colon + 1) != "gauss") throw usage_error("--method aniso:N[:gauss], got '{}'", spec);
+      if (n.substr(colon + 1) != "gauss") throw usage_error("texture method: aniso:N[:gauss], got '{}'", spec);
       o.aniso_gauss = true;
       n = n.substr(0, colon);
     }
     char* end = nullptr;
     const long v = std::strtol(n.c_str(), &end, 10);
-    if (n.empty() || *end != '\0' || v < 1 || v > 64) throw usage_error("--method aniso:N needs N in [1, 64], got '{}'", spec);
+    if (n.empty() || *end != '\0' || v < 1 || v > 64) throw usage_error("texture method: aniso:N needs N in [1, 64], got '{}'", spec);
     o.max_aniso = static_cast<int>(v);
     return o;
   }

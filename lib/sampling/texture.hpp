@@ -16,9 +16,14 @@ struct MipPyramid {
   std::vector<FloatImage> levels;  // level 0 = the texture (linear values)
 };
 
-// Levels down to 1×1, each a 2× reduction of the previous one with `filter` (box,
-// gaussian, lanczos3). The texture tiles: edges wrap.
-MipPyramid build_pyramid(const FloatImage& texture, const std::string& filter, int threads = 0);
+// The kernel that halves each level of a pyramid.
+enum class PyramidFilter { box, gaussian, lanczos3 };
+// Its kernel spelling (make_kernel): box, gaussian:sigma=0.5, lanczos3.
+const char* pyramid_kernel(PyramidFilter filter);
+
+// Levels down to 1×1, each a 2× reduction of the previous one with `filter`. The texture
+// tiles: edges wrap.
+MipPyramid build_pyramid(const FloatImage& texture, PyramidFilter filter, int threads = 0);
 
 // Texture coordinates of a screen point in level-0 texel units; `visible` false where
 // nothing is hit (e.g. above the horizon).

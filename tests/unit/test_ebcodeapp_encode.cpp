@@ -57,28 +57,28 @@ fest::TriangleSoup tetrahedron() {
 }  // namespace
 
 TEST(EbcodeApp, TetrahedronRoundTripsThroughEbm) {
-  fest::ebcode::EncodeOptions o;
+  fest::ebcode_tool::EncodeOptions o;
   o.input = write_tetrahedron().string();
   o.output = (dir / "tet.ebm").string();
   o.conn = fest::edgebreaker::ConnChoice::static_model;
   o.qp = 0;  // float32 exactly: the unit coordinates come back as they went in
-  ASSERT_EQ(fest::ebcode::encode_command(o), 0);
+  ASSERT_EQ(fest::ebcode_tool::encode_command(o), 0);
   const fest::TriangleSoup back = fest::edgebreaker::decode_ebm(slurp(o.output));
   EXPECT_EQ(back.positions.size(), 4u);
   EXPECT_EQ(faces_of(back), faces_of(tetrahedron()));
 }
 
 TEST(EbcodeApp, SymbolsOfTheTetrahedronAreCRE) {
-  fest::ebcode::EncodeOptions o;
+  fest::ebcode_tool::EncodeOptions o;
   o.input = write_tetrahedron().string();
   o.output = (dir / "tet.clers").string();
   o.symbols = true;
-  ASSERT_EQ(fest::ebcode::encode_command(o), 0);
+  ASSERT_EQ(fest::ebcode_tool::encode_command(o), 0);
   EXPECT_EQ(slurp(o.output), "CRE\n");
 }
 
 TEST(EbcodeApp, FlagValuesBecomeTypedOptions) {
-  using namespace fest::ebcode;
+  using namespace fest::ebcode_tool;
   EXPECT_EQ(parse_conn("adaptive"), fest::edgebreaker::ConnChoice::adaptive);
   EXPECT_EQ(parse_predictor("multi"), fest::edgebreaker::Predictor::multi);
   EXPECT_EQ(parse_box("1,2,3,4"), (std::array<float, 4>{1, 2, 3, 4}));
@@ -98,12 +98,12 @@ TEST(EbcodeApp, StrictRefusalNamesTheFlag) {
   std::filesystem::create_directories(dir);
   const auto path = dir / "fin.off";
   std::ofstream(path) << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n";
-  fest::ebcode::EncodeOptions o;
+  fest::ebcode_tool::EncodeOptions o;
   o.input = path.string();
   o.output = (dir / "fin.ebm").string();
   o.strict = true;
   try {
-    fest::ebcode::encode_command(o);
+    fest::ebcode_tool::encode_command(o);
     FAIL() << "no error";
   } catch (const fest::Error& e) {
     EXPECT_EQ(e.status(), fest::Status::bad_input);
@@ -116,12 +116,12 @@ TEST(EbcodeApp, LosslessRefusalNamesTheFlag) {
   std::filesystem::create_directories(dir);
   const auto path = dir / "double.off";
   std::ofstream(path) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1.1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n";
-  fest::ebcode::EncodeOptions o;
+  fest::ebcode_tool::EncodeOptions o;
   o.input = path.string();
   o.output = (dir / "double.ebm").string();
   o.qp = 0;
   try {
-    fest::ebcode::encode_command(o);
+    fest::ebcode_tool::encode_command(o);
     FAIL() << "no error";
   } catch (const fest::Error& e) {
     EXPECT_EQ(e.status(), fest::Status::bad_input);
@@ -130,7 +130,7 @@ TEST(EbcodeApp, LosslessRefusalNamesTheFlag) {
 }
 
 TEST(EbcodeApp, DomainPhrasesBecomeFlags) {
-  const fest::Error e = fest::ebcode::in_flag_terms(
+  const fest::Error e = fest::ebcode_tool::in_flag_terms(
       fest::bad_input("the static model cannot code this mesh: use the adaptive coder, or let the encoder choose"));
   EXPECT_EQ(e.status(), fest::Status::bad_input);
   EXPECT_EQ(std::string(e.what()), "the static model cannot code this mesh: use --conn adaptive or auto");

@@ -70,10 +70,10 @@ TEST(EbdecodeApp, TetrahedronDecodesToTheSameFaces) {
   e.qp = 0;  // float32 exactly
   std::ofstream(dir / "tet.ebm", std::ios::binary) << fest::edgebreaker::encode_ebm(tetrahedron(), e);
 
-  fest::ebdecode::DecodeOptions o;
+  fest::ebdecode_tool::DecodeOptions o;
   o.input = (dir / "tet.ebm").string();
   o.output = (dir / "tet.out").string();
-  fest::ebdecode::parse_output_format("off", o);
-  ASSERT_EQ(fest::ebdecode::decode_command(o), 0);
+  fest::ebdecode_tool::parse_output_format("off", o);
+  ASSERT_EQ(fest::ebdecode_tool::decode_command(o), 0);
   EXPECT_EQ(faces_of_off(dir / "tet.out"), faces_of(tetrahedron()));
 }

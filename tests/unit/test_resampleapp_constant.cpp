@@ -29,13 +29,13 @@ TEST(ResampleApp, ConstantImageStaysConstant) {
     f << "P5\n" << w << " " << h << "\n255\n" << std::string(static_cast<std::size_t>(w * h), static_cast<char>(value));
   }
   for (const char* filter : {"mitchell", "lanczos3", "box", "gaussian"}) {
-    fest::resample::ResizeArgs a;
+    fest::resample_tool::ResizeArgs a;
     a.input = (dir / "in.pgm").string();
     a.out.output = (dir / "out.pgm").string();
     a.width = 5;  // height keeps the aspect ratio: round(9 * 5 / 12) = 4
     a.filter = fest::sampling::make_kernel(filter);
     a.threads = 1;
-    ASSERT_EQ(fest::resample::run_resize(a), 0) << filter;
+    ASSERT_EQ(fest::resample_tool::run_resize(a), 0) << filter;
     const std::string out = slurp(dir / "out.pgm");
     const std::size_t n = 5 * 4;
     ASSERT_GE(out.size(), n) << filter;

@@ -2,8 +2,6 @@
 // conditional-unity coder, quantised parallelogram-predicted positions), Draco for
 // comparison, or the CLERS string. formats/ reads the mesh, lib/edgebreaker codes it.
 
-#include <chrono>
-
 #include <nlohmann/json.hpp>
 #include <OpenMesh/Core/System/omstream.hh>
 
@@ -11,19 +9,17 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/resources.hpp"
+#include "core/stopwatch.hpp"
 #include "core/tool_main.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "formats/mesh/triangle_soup.hpp"
 
-namespace fest::ebcode {
+namespace fest::ebcode_tool {
 
 namespace {
 
 using namespace fest::edgebreaker;
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 nlohmann::json report_json(const EncodeOptions& opt, const std::string& input, const EncodeStats& stats,
                            double read_ms, double encode_ms, double write_ms) {
@@ -67,7 +63,7 @@ nlohmann::json report_json(const EncodeOptions& opt, const std::string& input, c
 
 int encode_command(const EncodeOptions& opt) {
   ::omerr().disable();  // add_face reports rejected (non-manifold) faces there; they are kept aside
-  const Clock::time_point t0 = Clock::now();
+  const SteadyClock::time_point t0 = SteadyClock::now();
   const formats::Input in = formats::load_input(opt.input);
   if (formats::kind_of(in.format) != formats::Kind::mesh)
     throw bad_input("{} input is not a mesh ({})", formats::format_name(in.format), in.name);
@@ -111,7 +107,7 @@ int encode_command(const EncodeOptions& opt) {
   e.verify = opt.verify;
   e.version = opt.ebm_version;
   EncodeStats stats;
-  const Clock::time_point t1 = Clock::now();
+  const SteadyClock::time_point t1 = SteadyClock::now();
   std::string bytes;
   try {
     bytes = encode_ebm(soup, e, &stats);
@@ -119,7 +115,7 @@ int encode_command(const EncodeOptions& opt) {
     throw in_flag_terms(err);
   }
   const double encode_ms = ms_since(t1);
-  const Clock::time_point t2 = Clock::now();
+  const SteadyClock::time_point t2 = SteadyClock::now();
   write_output(opt.output, bytes);
   const double write_ms = ms_since(t2);
   if (!opt.report.empty())
@@ -127,4 +123,4 @@ int encode_command(const EncodeOptions& opt) {
   return 0;
 }
 
-}  // namespace fest::ebcode
+}  // namespace fest::ebcode_tool

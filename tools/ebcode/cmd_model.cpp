@@ -1,7 +1,6 @@
 // ebcode model: the chapter's state machines -- alpha, rate, unities, frequencies -- as
 // TSV or JSON, or the committed tables of all named models (static_tables.cpp).
 
-#include <chrono>
 #include <vector>
 
 #include <fmt/format.h>
@@ -9,15 +8,13 @@
 
 #include "commands.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 
-namespace fest::ebcode {
+namespace fest::ebcode_tool {
 
 namespace {
 
 using namespace fest::edgebreaker;
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 std::string committed_tables() {
   std::string out =
@@ -85,11 +82,11 @@ int model_command(const ModelOptions& opt) {
   const NamedModel m = opt.model ? *opt.model
                                  : NamedModel{"custom", 0,
                                               {opt.lmax, opt.pmax, opt.smax, opt.cmax, opt.all_patterns, opt.literal}};
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   const StateMachine sm = build_state_machine(m.params);
   const double ms = ms_since(t0);
   write_output("-", opt.format == ModelFormat::json ? machine_json(m, sm, ms) : machine_tsv(m, sm));
   return 0;
 }
 
-}  // namespace fest::ebcode
+}  // namespace fest::ebcode_tool

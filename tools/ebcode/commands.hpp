@@ -11,7 +11,7 @@
 #include "edgebreaker/geometry_coder.hpp"
 #include "edgebreaker/state_machine.hpp"
 
-namespace fest::ebcode {
+namespace fest::ebcode_tool {
 
 enum class EncodeFormat { ebm, drc };
 
@@ -66,4 +66,4 @@ Error in_flag_terms(const Error& e);
 // A tracked loop length 3..64, or "-" (-1: not tracked).
 int parse_length_limit(const std::string& text, const char* flag);
 
-}  // namespace fest::ebcode
+}  // namespace fest::ebcode_tool

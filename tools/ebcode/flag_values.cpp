@@ -6,10 +6,12 @@
 #include <stdexcept>
 #include <utility>
 
+#include "cli/word_choice.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
 
-namespace fest::ebcode {
+namespace fest::ebcode_tool {
 
 using edgebreaker::ConnChoice;
 using edgebreaker::Predictor;
@@ -36,51 +38,38 @@ std::array<float, 4> parse_box(const std::string& text) {
 }
 
 Predictor parse_predictor(const std::string& name) {
-  if (name == "para") return Predictor::parallelogram;
-  if (name == "delta") return Predictor::delta;
-  if (name == "none") return Predictor::none;
-  if (name == "multi") return Predictor::multi;
-  throw usage_error("--predict: unknown predictor '{}' (para, multi, delta, none)", name);
+  return cli::word_choice<Predictor>(
+      name, {{"para", Predictor::parallelogram}, {"multi", Predictor::multi}, {"delta", Predictor::delta}, {"none", Predictor::none}},
+      "--predict", "predictor");
 }
 
 ConnChoice parse_conn(const std::string& name) {
-  if (name == "auto") return ConnChoice::automatic;
-  if (name == "static") return ConnChoice::static_model;
-  if (name == "adaptive") return ConnChoice::adaptive;
-  if (name == "raw") return ConnChoice::raw;
-  throw usage_error("--conn: unknown coder '{}' (auto, static, adaptive, raw)", name);
+  return cli::word_choice<ConnChoice>(name,
+                                      {{"auto", ConnChoice::automatic},
+                                       {"static", ConnChoice::static_model},
+                                       {"adaptive", ConnChoice::adaptive},
+                                       {"raw", ConnChoice::raw}},
+                                      "--conn", "coder");
 }
 
 EncodeFormat parse_encode_format(const std::string& name) {
-  if (name == "ebm") return EncodeFormat::ebm;
-  if (name == "drc") return EncodeFormat::drc;
-  throw usage_error("--to: unknown output '{}' (ebm, drc)", name);
+  return cli::word_choice<EncodeFormat>(name, {{"ebm", EncodeFormat::ebm}, {"drc", EncodeFormat::drc}}, "--to", "output");
 }
 
 ModelFormat parse_model_format(const std::string& name) {
-  if (name == "tsv") return ModelFormat::tsv;
-  if (name == "json") return ModelFormat::json;
-  if (name == "inc") return ModelFormat::inc;
-  throw usage_error("--to: unknown output '{}' (tsv, json, inc)", name);
+  return cli::word_choice<ModelFormat>(name, {{"tsv", ModelFormat::tsv}, {"json", ModelFormat::json}, {"inc", ModelFormat::inc}},
+                                       "--to", "output");
 }
 
 Error in_flag_terms(const Error& e) {
   // lib/edgebreaker's phrase -> the flag the user sets it with (messages as ebcode(1) shows them).
-  static const std::pair<const char*, const char*> phrases[] = {
-      {"lossless positions (0 quantisation bits) store", "--qp 0 stores"},
-      {"(strict coding)", "(--strict)"},
-      {"use the adaptive coder, or let the encoder choose", "use --conn adaptive or auto"},
-      {"position quantisation bits", "--qp"},
-      {"normal quantisation bits", "--qn"},
-      {"texture-coordinate quantisation bits", "--qt"},
-      {"quantisation box:", "--box:"},
-  };
-  std::string what = e.what();
-  for (const auto& [domain, flag] : phrases) {
-    const std::size_t at = what.find(domain);
-    if (at != std::string::npos) what.replace(at, std::string(domain).size(), flag);
-  }
-  return Error(e.status(), what);
+  return reworded(e, {{"lossless positions (0 quantisation bits) store", "--qp 0 stores"},
+                      {"(strict coding)", "(--strict)"},
+                      {"use the adaptive coder, or let the encoder choose", "use --conn adaptive or auto"},
+                      {"position quantisation bits", "--qp"},
+                      {"normal quantisation bits", "--qn"},
+                      {"texture-coordinate quantisation bits", "--qt"},
+                      {"quantisation box:", "--box:"}});
 }
 
 int parse_length_limit(const std::string& text, const char* flag) {
@@ -94,4 +83,4 @@ int parse_length_limit(const std::string& text, const char* flag) {
   throw usage_error("{}: '{}' is not a length 3..64 or -", flag, text);
 }
 
-}  // namespace fest::ebcode
+}  // namespace fest::ebcode_tool

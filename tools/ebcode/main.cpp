@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   fest::cli::Common common;
   fest::cli::add_common(app, common);
   app.require_subcommand(0, 1);
-  using namespace fest::ebcode;
+  using namespace fest::ebcode_tool;
   EncodeOptions opt;
   std::string conn = "auto", model = "m236", box, predict = "para", to = "ebm";
   bool no_stitch = false, no_geometry = false, no_verify = false;

@@ -2,28 +2,25 @@
 // (magic, version, CRC, counts, every index) before a byte is written. lib/edgebreaker
 // decodes .ebm, formats/ reads Draco and writes the mesh.
 
-#include <chrono>
-
 #include <nlohmann/json.hpp>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include "cli/word_choice.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/resources.hpp"
+#include "core/stopwatch.hpp"
 #include "edgebreaker/ebm.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "formats/mesh/triangle_soup.hpp"
 
-namespace fest::ebdecode {
+namespace fest::ebdecode_tool {
 
 namespace {
 
 using namespace fest::edgebreaker;
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 nlohmann::json header_json(const EbmHeader& h) {
   static const char* modes[] = {"raw", "static", "adaptive"};
@@ -65,17 +62,16 @@ formats::Format output_format(const DecodeOptions& opt) {
 }  // namespace
 
 void parse_output_format(const std::string& name, DecodeOptions& o) {
+  o.format = cli::word_choice<formats::Format>(
+      name, {{"ply", formats::Format::ply}, {"plya", formats::Format::ply}, {"obj", formats::Format::obj}, {"off", formats::Format::off}},
+      "--to", "output");
   o.ascii = name == "plya";
-  if (name == "ply" || name == "plya") o.format = formats::Format::ply;
-  else if (name == "obj") o.format = formats::Format::obj;
-  else if (name == "off") o.format = formats::Format::off;
-  else throw usage_error("--to: unknown output '{}' (ply, plya, obj, off)", name);
 }
 
 int decode_command(const DecodeOptions& opt) {
   ::omerr().disable();  // add_face reports rejected (non-manifold) faces there; they are kept aside
   const formats::Format out_format = output_format(opt);
-  const Clock::time_point t0 = Clock::now();
+  const SteadyClock::time_point t0 = SteadyClock::now();
   // .ebm is recognised here by its magic; anything else goes through formats/ (Draco).
   std::string bytes_in = read_input(opt.input);
   formats::Input in;
@@ -128,4 +124,4 @@ int decode_command(const DecodeOptions& opt) {
   return 0;
 }
 
-}  // namespace fest::ebdecode
+}  // namespace fest::ebdecode_tool

@@ -7,7 +7,7 @@
 
 #include "formats/detect.hpp"
 
-namespace fest::ebdecode {
+namespace fest::ebdecode_tool {
 
 struct DecodeOptions {
   std::string input = "-";
@@ -26,4 +26,4 @@ int decode_command(const DecodeOptions& o);
 // --to's value (ply, plya, obj, off) into o.format and o.ascii; usage error otherwise.
 void parse_output_format(const std::string& name, DecodeOptions& o);
 
-}  // namespace fest::ebdecode
+}  // namespace fest::ebdecode_tool

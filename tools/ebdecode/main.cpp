@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
                "ebdecode"};
   fest::cli::Common common;
   fest::cli::add_common(app, common);
-  using namespace fest::ebdecode;
+  using namespace fest::ebdecode_tool;
   DecodeOptions opt;
   std::string to;
   bool no_stitch = false, no_verify = false;

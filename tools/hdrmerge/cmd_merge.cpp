@@ -1,6 +1,5 @@
-// hdrmerge merge and calibrate: the response of the camera recovered from an exposure
-// series (Debevec & Malik 1997, or Robertson et al.), and the series merged into one
-// radiance image with it (docs/hdrmerge.md).
+// hdrmerge merge: an exposure series merged into one radiance image with the camera's
+// response, given or recovered from the series (docs/hdrmerge.md).
 
 #include <string>
 
@@ -12,24 +11,12 @@
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 #include "hdr/merge.hpp"
-#include "hdr/robertson.hpp"
+#include "response_recovery.hpp"
 #include "stack_files.hpp"
 
 namespace fest::hdrmerge_tool {
 
 namespace {
-
-hdr::DebevecOptions options_of(const SeriesOptions& s) {
-  hdr::DebevecOptions o;
-  o.samples = s.samples;
-  o.lambda = s.lambda;
-  return o;
-}
-
-hdr::Response recover(const hdr::ExposureStack& stack, const SeriesOptions& s) {
-  if (s.method == Method::robertson) return hdr::recover_response_robertson(stack);
-  return hdr::recover_response_debevec(stack, options_of(s));
-}
 
 formats::Format radiance_format(const MergeOptions& a) {
   formats::OutputFormat f{formats::Format::exr, false};
@@ -50,7 +37,7 @@ int run_merge(const MergeOptions& a) {
   const hdr::ExposureStack stack = read_stack(a.series.images, a.series.times);
   const hdr::Response response =
       a.response_in.empty()
-          ? recover(stack, a.series)
+          ? recover_response(stack, a.series.method, a.series.samples, a.series.lambda)
           : response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
   const hdr::MergeResult merged = hdr::merge_debevec(stack, response, threads);
   formats::ImageWriteOptions w;
@@ -63,13 +50,6 @@ int run_merge(const MergeOptions& a) {
   if (!a.valid_out.empty()) write_output(a.valid_out, valid);
   if (!a.response_out.empty()) write_output(a.response_out, curve);
   write_output(a.output, radiance);
-  return 0;
-}
-
-int run_calibrate(const CalibrateOptions& o) {
-  const hdr::ExposureStack stack = read_stack(o.series.images, o.series.times);
-  const hdr::Response response = recover(stack, o.series);
-  write_output(o.output, formats::write_table(response_table(response), formats::Format::csv));
   return 0;
 }
 

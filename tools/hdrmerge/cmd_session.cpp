@@ -1,11 +1,7 @@
 #include "commands.hpp"
 
-#include <atomic>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
-#include <mutex>
-#include <thread>
 
 #include <opencv2/imgproc.hpp>
 
@@ -13,6 +9,7 @@
 #include "capture/silhouette.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/parallel_for.hpp"
 #include "core/sha256.hpp"
 #include "core/threads.hpp"
 #include "formats/image/exr_extras.hpp"
@@ -20,7 +17,7 @@
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
 #include "hdr/merge.hpp"
-#include "hdr/robertson.hpp"
+#include "response_recovery.hpp"
 #include "stack_files.hpp"
 
 namespace fest::hdrmerge_tool {
@@ -179,14 +176,7 @@ int run_session(const SessionOptions& a) {
   if (!a.response_in.empty()) {
     response = response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
   } else {
-    const hdr::ExposureStack first = stack_of(sets.front());
-    if (a.method == Method::robertson) response = hdr::recover_response_robertson(first);
-    else {
-      hdr::DebevecOptions o;
-      o.samples = a.samples;
-      o.lambda = a.lambda;
-      response = hdr::recover_response_debevec(first, o);
-    }
+    response = recover_response(stack_of(sets.front()), a.method, a.samples, a.lambda);
   }
   const std::string response_csv = formats::write_table(response_table(response), formats::Format::csv);
   const std::string response_sha = sha256_hex(response_csv);
@@ -200,54 +190,37 @@ int run_session(const SessionOptions& a) {
   std::vector<int> mask_angles;
   for (const auto& [angle, shot] : silhouettes) mask_angles.push_back(angle);
   const std::size_t jobs = sets.size() + mask_angles.size();
-  std::atomic<std::size_t> next{0};
-  std::mutex error_mutex;
-  std::exception_ptr error;
-  auto work = [&] {
-    for (std::size_t j = next++; j < jobs; j = next++) {
+  parallel_for(jobs, resolve_threads(a.threads), [&](std::size_t j) {
+    if (j < sets.size()) {
+      const Set& s = sets[j];
+      const hdr::MergeResult merged = hdr::merge_debevec(stack_of(s), response, 1);
+      cv::Mat rgb = merged.radiance;
+      if (rgb.channels() == 1) cv::cvtColor(rgb, rgb, cv::COLOR_GRAY2RGB);
+      formats::ExrExtras extras;
+      extras.channels = {{"valid", merged.valid}};
+      std::vector<float> exposures;
+      for (const std::vector<Shot>& takes : s.exposures) exposures.push_back(float(takes.front().exposure_s));
+      extras.float_vectors["exposures"] = exposures;
+      extras.strings["responseSha256"] = response_sha;
+      extras.strings["lightId"] = s.light;
+      extras.doubles["turntableAngleDeg"] = s.angle_deg;
+      const std::string name = fmt::format("a{:03}_{}.exr", s.angle_index, s.light);
+      const std::string path = (fs::path(out_dir) / name).string();
+      write_output(path, formats::write_exr_with_extras(rgb, extras, !a.full_float));
+      rig[j] = {relative_to(path, session), "", s.angle_index, s.angle_deg, s.light};
+    } else {
+      const int angle = mask_angles[j - sets.size()];
+      const std::string path = (fs::path(out_dir) / fmt::format("a{:03}_mask.png", angle)).string();
+      const cv::Mat shot = read_shot(session, silhouettes.at(angle));
+      cv::Mat mask;
       try {
-        if (j < sets.size()) {
-          const Set& s = sets[j];
-          const hdr::MergeResult merged = hdr::merge_debevec(stack_of(s), response, 1);
-          cv::Mat rgb = merged.radiance;
-          if (rgb.channels() == 1) cv::cvtColor(rgb, rgb, cv::COLOR_GRAY2RGB);
-          formats::ExrExtras extras;
-          extras.channels = {{"valid", merged.valid}};
-          std::vector<float> exposures;
-          for (const std::vector<Shot>& takes : s.exposures) exposures.push_back(float(takes.front().exposure_s));
-          extras.float_vectors["exposures"] = exposures;
-          extras.strings["responseSha256"] = response_sha;
-          extras.strings["lightId"] = s.light;
-          extras.doubles["turntableAngleDeg"] = s.angle_deg;
-          const std::string name = fmt::format("a{:03}_{}.exr", s.angle_index, s.light);
-          const std::string path = (fs::path(out_dir) / name).string();
-          write_output(path, formats::write_exr_with_extras(rgb, extras, !a.full_float));
-          rig[j] = {relative_to(path, session), "", s.angle_index, s.angle_deg, s.light};
-        } else {
-          const int angle = mask_angles[j - sets.size()];
-          const std::string path = (fs::path(out_dir) / fmt::format("a{:03}_mask.png", angle)).string();
-          const cv::Mat shot = read_shot(session, silhouettes.at(angle));
-          cv::Mat mask;
-          try {
-            mask = capture::silhouette_mask(shot);
-          } catch (const Error& e) {
-            throw Error(e.status(), with_location(e.what(), silhouettes.at(angle).file));
-          }
-          write_output(path, formats::write_image(Image{mask, ColorSpace::srgb}, formats::Format::png));
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-        next = jobs;
+        mask = capture::silhouette_mask(shot);
+      } catch (const Error& e) {
+        throw Error(e.status(), with_location(e.what(), silhouettes.at(angle).file));
       }
+      write_output(path, formats::write_image(Image{mask, ColorSpace::srgb}, formats::Format::png));
     }
-  };
-  const int threads = std::max(1, std::min<int>(resolve_threads(a.threads), int(jobs)));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  });
 
   for (capture::RigImage& r : rig)
     if (silhouettes.count(r.angle_index))

@@ -5,15 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "radiosity/form_factors.hpp"
+#include "radiosity/solver.hpp"
+
 namespace fest::radiosity_tool {
 
 struct SolveArgs {
   std::string scene = "-";   // JSON scene (or - for standard input)
   std::string output = "-";  // lit PLY
-  std::string ff = "hybrid";
+  radiosity::Engine ff = radiosity::Engine::hybrid;
   int hemicube_res = 256;
   int samples = 16;
-  std::string solver = "orpr";
+  radiosity::Solver solver = radiosity::Solver::orpr;
   double omega = -1;  // < 0: the solver's default
   double tol = 1e-3;
   long max_shots = 0;
@@ -23,7 +26,7 @@ struct SolveArgs {
   double patch_size = 0, element_size = 0;
   bool no_mesh = false;
   double crease = 20;
-  std::string emission = "radiance";
+  bool emission_is_radiance = true;  // --emission radiance (x pi) or exitance
   double exposure = 0;
   std::string split_objects;  // directory: one PLY per object
   std::string log;            // per-shot CSV
@@ -43,7 +46,7 @@ struct CornellArgs {
 
 struct FormFactorArgs {
   std::string a, b;  // two meshes of one planar polygon each
-  std::string ff = "analytic";
+  radiosity::Engine ff = radiosity::Engine::analytic;
   int hemicube_res = 256;
   int samples = 16;
   int cells = 16;

@@ -2,8 +2,21 @@
 // form factors, adaptive elements; lit meshes per object (docs/radiosity.md).
 // Flags only: the subcommands live in fest_radiosity_app (commands.hpp).
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
+
+namespace {
+
+using fest::radiosity::Engine;
+const std::vector<std::pair<std::string, Engine>> kEngines{
+    {"hemicube", Engine::hemicube}, {"hybrid", Engine::hybrid}, {"raycast", Engine::raycast}, {"analytic", Engine::analytic}};
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace fest::radiosity_tool;
@@ -20,12 +33,16 @@ int main(int argc, char** argv) {
   CLI::App* sv = app.add_subcommand("solve", "Light a scene (JSON) and write the lit PLY");
   sv->add_option("scene", s.scene, "Scene JSON (- or nothing: standard input)");
   sv->add_option("-o,--output", s.output, "Lit PLY (- : standard output)");
-  sv->add_option("--ff", s.ff, "Form factors: hybrid (default: hemicube visibility, exact values), hemicube, raycast or analytic")
-      ->check(CLI::IsMember({"hemicube", "hybrid", "raycast", "analytic"}));
+  fest::cli::enum_words(
+      sv->add_option("--ff", s.ff, "Form factors: hybrid (default: hemicube visibility, exact values), hemicube, raycast or analytic"),
+      kEngines);
   sv->add_option("--hemicube-res", s.hemicube_res, "Hemicube top face resolution H (even)")->check(CLI::Range(2, 8192));
   sv->add_option("--samples", s.samples, "Points per shooter for the ray engines")->check(CLI::Range(1, 4096));
-  sv->add_option("--solver", s.solver, "orpr, pr, sor or overshoot")
-      ->check(CLI::IsMember({"orpr", "pr", "sor", "overshoot"}));
+  fest::cli::enum_words<fest::radiosity::Solver>(sv->add_option("--solver", s.solver, "orpr, pr, sor or overshoot"),
+                                                 {{"orpr", fest::radiosity::Solver::orpr},
+                                                  {"pr", fest::radiosity::Solver::pr},
+                                                  {"sor", fest::radiosity::Solver::sor},
+                                                  {"overshoot", fest::radiosity::Solver::overshoot}});
   sv->add_option("--omega", s.omega, "Over-relaxation factor (orpr 1.0, sor 1.5)")->check(CLI::Range(0.0, 2.0));
   sv->add_option("--tol", s.tol, "Stop when the unshot energy is this fraction of the emitted")
       ->check(CLI::Range(1e-12, 1.0));
@@ -42,8 +59,8 @@ int main(int argc, char** argv) {
   sv->add_flag("--no-mesh", s.no_mesh, "Every face is one patch and one element");
   sv->add_option("--crease", s.crease, "Vertices are shared across faces within this angle (degrees)")
       ->check(CLI::Range(0.0, 180.0));
-  sv->add_option("--emission", s.emission, "Scene emission is radiance (x pi) or exitance")
-      ->check(CLI::IsMember({"radiance", "exitance"}));
+  fest::cli::enum_words<bool>(sv->add_option("--emission", s.emission_is_radiance, "Scene emission is radiance (x pi) or exitance"),
+                              {{"radiance", true}, {"exitance", false}});
   sv->add_option("--exposure", s.exposure, "Display colour scale k on L = B/pi (default: 1/99th percentile)")
       ->check(CLI::PositiveNumber);
   sv->add_option("--split-objects", s.split_objects, "Also write one PLY per object into this folder");
@@ -69,8 +86,8 @@ int main(int argc, char** argv) {
   CLI::App* fc = app.add_subcommand("formfactor", "Print F_AB and F_BA of two polygons (one-face meshes)");
   fc->add_option("a", f.a, "Polygon A (mesh file with one face)")->required();
   fc->add_option("b", f.b, "Polygon B")->required();
-  fc->add_option("--ff", f.ff, "analytic, hemicube or raycast (hybrid = analytic without occluders)")
-      ->check(CLI::IsMember({"hemicube", "hybrid", "raycast", "analytic"}));
+  fest::cli::enum_words(fc->add_option("--ff", f.ff, "analytic, hemicube or raycast (hybrid = analytic without occluders)"),
+                        kEngines);
   fc->add_option("--hemicube-res", f.hemicube_res, "Hemicube resolution")->check(CLI::Range(2, 8192));
   fc->add_option("--samples", f.samples, "Points on B for raycast")->check(CLI::Range(1, 4096));
   fc->add_option("--cells", f.cells, "A (and for the hemicube B) cut into cells x cells")->check(CLI::Range(1, 256));

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
 #include "core/file_io.hpp"
 #include "image_files.hpp"
 #include "sampling/float_image.hpp"
@@ -14,7 +15,7 @@
 #include "sampling/kernel_params.hpp"
 #include "sampling/srgb.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -71,15 +72,17 @@ int run_metrics(const MetricsArgs& a) {
     const int w = a.zoneplate->width, h = a.zoneplate->height;
     if ((w > 0 && w != t.width) || (h > 0 && h != t.height))
       throw bad_input("metrics --zoneplate: the image is {}x{}, the scene {}x{}", t.width, t.height, w, h);
-    const ZonePlateMeasures z =
-        zoneplate_measures(t, a.zoneplate->numax, {a.alias_band[0], a.alias_band[1]}, {a.pass_band[0], a.pass_band[1]});
+    const ZonePlateMeasures z = with_rewording({{"zone plate:", "metrics --zoneplate:"}}, [&] {
+      return zoneplate_measures(t, a.zoneplate->numax, {a.alias_band[0], a.alias_band[1]}, {a.pass_band[0], a.pass_band[1]});
+    });
     j["ae"] = z.ae;
     j["pr"] = z.pr;
     j["n_alias"] = z.n_alias;
     j["n_pass"] = z.n_pass;
   }
   if (a.spectrum || !a.beat.empty()) {
-    const std::vector<double> power = row_power_spectrum(t);
+    const std::vector<double> power =
+        with_rewording({{"power spectrum:", "metrics --spectrum:"}}, [&] { return row_power_spectrum(t); });
     if (a.spectrum) {
       std::vector<double> f(power.size());
       for (std::size_t k = 0; k < f.size(); ++k) f[k] = static_cast<double>(k) / t.width;
@@ -97,4 +100,4 @@ int run_metrics(const MetricsArgs& a) {
   return 0;
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

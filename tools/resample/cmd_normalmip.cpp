@@ -5,11 +5,12 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
 #include "image_files.hpp"
 #include "sampling/float_image.hpp"
 #include "sampling/slope_pyramid.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -38,7 +39,7 @@ int run_normalmip(const NormalMipArgs& a) {
       for (auto& v : values.data) v = 2 * v - 1;
     slopes = slopes_from_normals(values);
   } else {
-    slopes = slopes_from_height(values, a.height_scale);
+    slopes = with_rewording({{"height scale", "--height-scale"}}, [&] { return slopes_from_height(values, a.height_scale); });
   }
   const auto levels = slope_pyramid(slopes, a.naive, a.threads);
   // Every level is built before the first file is written.
@@ -49,4 +50,4 @@ int run_normalmip(const NormalMipArgs& a) {
   return 0;
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

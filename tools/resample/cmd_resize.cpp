@@ -1,19 +1,17 @@
-// resample resize / display / mip: images through the separable resize of lib/sampling.
+// resample resize: an image through the separable resize of lib/sampling.
 #include <cmath>
 #include <cstdint>
 #include <string>
 
-#include <fmt/format.h>
-
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
 #include "image_files.hpp"
-#include "sampling/display_model.hpp"
 #include "sampling/resize.hpp"
 #include "sizes.hpp"
 #include "streamed_input.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -22,9 +20,9 @@ namespace {
 
 // The target size from --size / --width / --height / --scale.
 std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
-  const int given = (!a.size.empty()) + (a.width > 0 || a.height > 0) + (!a.scale.empty());
+  const int given = a.size.has_value() + (a.width > 0 || a.height > 0) + (!a.scale.empty());
   if (given != 1) throw usage_error("give exactly one of --size, --width/--height, --scale");
-  if (!a.size.empty()) return parse_size(a.size, "--size");
+  if (a.size) return *a.size;
   if (!a.scale.empty()) {
     if (a.scale.size() > 2) throw usage_error("--scale takes S or Sx,Sy");
     const double sx = a.scale[0], sy = a.scale.size() == 2 ? a.scale[1] : a.scale[0];
@@ -56,8 +54,7 @@ int run_resize(const ResizeArgs& a) {
     o.shift_x = a.shift[0];
     o.shift_y = a.shift[1];
   }
-  const Depth depth = parse_depth(a.out.depth);
-  if (!a.size.empty()) parse_size(a.size, "--size");  // a bad --size is a usage error even before input
+  const Depth depth = depth_of(a.out.depth);
 
   auto pick_colour = [&](ColorSpace stored) {
     if (a.colorspace == ResizeColor::srgb) return ColorSpace::srgb;
@@ -68,7 +65,11 @@ int run_resize(const ResizeArgs& a) {
     const auto [w, h] = target_size(a, in_w, in_h);
     const auto f = output_format(a.out.to, a.out.output, depth.cv_depth >= 0 ? depth.cv_depth : in_depth);
     o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, in_depth);
-    store_image(run(w, h), a.out.output, f, depth.half);
+    // lib/sampling names the sinc kernel's limits in its terms; these are the flags that set them.
+    const Image out = with_rewording(
+        {{"does not take a sub-pixel shift", "does not take --shift"}, {"(edge mode clamp or reflect)", "(--edge clamp or reflect)"}},
+        [&] { return run(w, h); });
+    store_image(out, a.out.output, f, depth.half);
     return 0;
   };
   // Raw Netpbm and PFM files stream through the passes a band of rows at a time.
@@ -81,47 +82,4 @@ int run_resize(const ResizeArgs& a) {
   return finish(m.cols, m.rows, m.depth(), [&](int w, int h) { return resize(in.image, w, h, o); });
 }
 
-int run_display(const DisplayArgs& a) {
-  const DisplayModel& model = a.model;
-  const Depth depth = parse_depth(a.out.depth);
-  LoadedImage in = load_image(a.input);
-  const cv::Mat& m = in.image.pixels;
-  if (static_cast<long long>(m.cols) * a.factor * m.rows * a.factor > (1LL << 31))
-    throw usage_error("display: {}x{} magnified {} times exceeds 2^31 pixels", m.cols, m.rows, a.factor);
-  ResizeOptions o;
-  o.kernel = model.x;
-  o.kernel_y = model.y;
-  o.threads = a.threads;
-  o.clamp = ClampMode::none;  // the viewer sees the display's overshoot too
-  const int image_depth = depth.cv_depth >= 0 ? depth.cv_depth : m.depth();
-  const auto f = output_format(a.out.to, a.out.output, image_depth);
-  o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, m.depth());
-  const Image out = resize(in.image, m.cols * a.factor, m.rows * a.factor, o);
-  store_image(out, a.out.output, f, depth.half);
-  return 0;
-}
-
-int run_mip(const MipArgs& a) {
-  if (a.levels < 0 || a.levels > 40) throw usage_error("--levels {} is out of range", a.levels);
-  ResizeOptions o;
-  o.kernel = make_kernel(a.filter == MipFilter::gaussian ? "gaussian:sigma=0.5"
-                         : a.filter == MipFilter::lanczos3 ? "lanczos3"
-                                                           : "box");
-  o.threads = a.threads;
-  const LoadedImage in = load_image(a.input);
-  const bool is_float = in.image.pixels.depth() == CV_32F;
-  const auto f = output_format(a.to, is_float ? "x.exr" : "x.png", in.image.pixels.depth());
-  // Every level is made from the previous one (the pyramid of §2.7) and written only
-  // once all of them exist: a failure leaves no partial pyramid behind.
-  std::vector<Image> levels{in.image};
-  while (levels.back().pixels.cols > 1 || levels.back().pixels.rows > 1) {
-    if (a.levels > 0 && static_cast<int>(levels.size()) >= a.levels) break;
-    const cv::Mat& m = levels.back().pixels;
-    levels.push_back(resize(levels.back(), std::max(1, m.cols / 2), std::max(1, m.rows / 2), o));
-  }
-  for (std::size_t k = 0; k < levels.size(); ++k)
-    store_image(levels[k], fmt::format("{}_{}{}", a.prefix, k, formats::format_extension(f)), f, false);
-  return 0;
-}
-
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

@@ -4,13 +4,13 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
 #include "image_files.hpp"
 #include "sampling/float_image.hpp"
-#include "sampling/kernel_params.hpp"
 #include "sampling/texture.hpp"
 #include "sizes.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::sampling;
@@ -43,13 +43,7 @@ int run_texture(const TextureArgs& a) {
   o.lod_bias = a.lod_bias;
   o.threads = a.threads;
   if (!std::isfinite(a.lod_bias)) throw usage_error("--lod-bias must be finite");
-  std::map<std::string, double> plane;
-  if (!a.map.empty()) {
-    const KernelSpelling s = split_kernel_spelling(a.map);
-    if (s.name != "plane") throw usage_error("--map: unknown mapping '{}' (plane:h=..,pitch=..,fov=..,period=..)", s.name);
-    plane = parse_kernel_params("plane", s.rest, {{"h", 1}, {"pitch", 10}, {"fov", 60}, {"period", 1}});
-  }
-  const Depth depth = parse_depth(a.out.depth.empty() ? "" : a.out.depth);
+  const Depth depth = depth_of(a.out.depth);
 
   const LoadedImage tex = load_image(a.tex);
   const FloatImage texture = grey_linear(tex.image);
@@ -61,9 +55,10 @@ int run_texture(const TextureArgs& a) {
     uv = to_working(u.image, Encoding{});
     if (uv.width != w || uv.height != h) throw bad_input("--uv is {}x{}, --size {}x{}", uv.width, uv.height, w, h);
   }
-  const TextureMap map = a.uv.empty() ? plane_map(plane.at("h"), plane.at("pitch"), plane.at("fov"), plane.at("period"), w, h,
-                                                  texture.width, texture.height)
-                                      : table_map(uv, texture.width, texture.height);
+  const TextureMap map = with_rewording({{"plane view:", "--map plane:"}, {"texture coordinates need", "--uv needs"}}, [&] {
+    return a.map ? plane_map(a.map->h, a.map->pitch, a.map->fov, a.map->period, w, h, texture.width, texture.height)
+                 : table_map(uv, texture.width, texture.height);
+  });
   FloatImage screen;
   if (a.aniso_mask > 0) {
     const FloatImage aniso = footprint_anisotropy(map, w, h);
@@ -85,4 +80,4 @@ int run_texture(const TextureArgs& a) {
   return 0;
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

@@ -5,7 +5,10 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "formats/detect.hpp"
 
 #include "sampling/display_model.hpp"
 #include "sampling/kernel.hpp"
@@ -14,12 +17,15 @@
 #include "sampling/sample_patterns.hpp"
 #include "sampling/texture.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
+
+// --depth: the output's samples (f16: EXR half floats).
+enum class OutputDepth { u8, u16, f16, f32 };
 
 struct ImageOutput {
   std::string output = "-";
-  std::string to;      // --to / --format
-  std::string depth;   // 8 | 16 | f16 | f32
+  std::optional<formats::OutputFormat> to;  // --to / --format; none: -o's extension, else PNG/PFM
+  std::optional<OutputDepth> depth;         // none: what the format and the image hold
 };
 
 // --colorspace of resize: what the stored numbers are (automatic: as the file says), or
@@ -29,15 +35,15 @@ enum class ResizeColor { automatic, srgb, linear, codes };
 enum class AlphaMode { premul, straight, none };
 // --colorspace of render's integer output: sRGB codes, or the plain linear values.
 enum class RenderColor { srgb, linear };
-// --filter of mip: the kernel that halves each level.
-enum class MipFilter { box, gaussian, lanczos3 };
+// --filter of mip and --mip of texture: the kernel that halves each level.
+using MipFilter = sampling::PyramidFilter;
 // --domain of metrics: compare linear-light values or the encoded numbers.
 enum class MetricsDomain { linear, encoded };
 
 struct ResizeArgs {
   std::string input = "-";
   ImageOutput out;
-  std::string size;                 // WxH
+  std::optional<std::pair<int, int>> size;  // --size WxH
   int width = 0, height = 0;        // --width / --height (the other keeps the aspect)
   std::vector<double> scale;        // S or Sx,Sy
   sampling::Kernel filter = sampling::make_kernel("mitchell");
@@ -64,7 +70,7 @@ struct MipArgs {
   std::string prefix;  // not empty (main.cpp checks it first)
   MipFilter filter = MipFilter::box;
   int levels = 0;  // 0: down to 1x1
-  std::string to;
+  std::optional<formats::OutputFormat> to;  // none: EXR for float images, else PNG
   int threads = 0;
 };
 
@@ -75,7 +81,13 @@ struct RenderArgs {
   int width = 256, height = 256;
   int spp = 16;
   sampling::Pattern pattern = sampling::Pattern::jitter;  // not used with ground_truth
-  std::string pixel_filter = "box";
+  // --pixel-filter for every scene but point: the kernel, stretched by filter_scale to the
+  // radius asked for.
+  sampling::Kernel pixel_filter = sampling::make_kernel("box");
+  double filter_scale = 1;
+  // --pixel-filter for --scene point: lowpass, bandpass (its lo is in params) or a kernel
+  // name, as sampling::make_scene takes it.
+  std::string point_filter = "lowpass";
   unsigned long long seed = 1;
   bool ground_truth = false;
   int gt_spp = 4096;
@@ -110,8 +122,6 @@ struct ZonePlate {
   double numax = 1;
   int width = 0, height = 0;
 };
-// --zoneplate's text (empty: every default) -> the zone plate; usage error when malformed.
-ZonePlate parse_zoneplate(const std::string& text);
 
 struct MetricsArgs {
   std::string input = "-";
@@ -124,12 +134,21 @@ struct MetricsArgs {
   std::vector<double> beat;  // f1,f2: report the power at |f1 − f2|
 };
 
+// texture --map plane:h=1,pitch=10,fov=60,period=1: the ground plane z = 0 seen by a
+// pinhole camera at height h, pitched down by `pitch` degrees, vertical field of view
+// `fov` degrees; the texture repeats every `period` world units (sampling::plane_map).
+struct PlaneView {
+  double h = 1, pitch = 10, fov = 60, period = 1;
+};
+
 struct TextureArgs {
   ImageOutput out;
-  std::string tex, map, uv;  // exactly one of map and uv
+  std::string tex;
+  std::optional<PlaneView> map;  // exactly one of map and uv
+  std::string uv;                // a 2-channel image of texture coordinates
   int width = 512, height = 384;
   sampling::TextureOptions method;  // its lod_bias and threads come from the fields below
-  std::string mip = "box";
+  MipFilter mip = MipFilter::box;
   double lod_bias = 0;
   bool ground_truth = false;
   double aniso_mask = 0;  // > 0: write the mask of pixels whose anisotropy exceeds it
@@ -150,17 +169,6 @@ struct NormalMipArgs {
 
 int run_normalmip(const NormalMipArgs& a);
 
-// The spellings of the enumerated flags (main.cpp turns flags into the types above with
-// these); each throws a usage error naming the flag and the choices.
-sampling::EdgeMode parse_edge(const std::string& s);
-sampling::ClampMode parse_clamp(const std::string& s);
-ResizeColor parse_resize_color(const std::string& s);
-AlphaMode parse_alpha(const std::string& s);
-MetricsDomain parse_metrics_domain(const std::string& s);
-RenderColor parse_render_color(const std::string& s);
-MipFilter parse_mip_filter(const std::string& s);
-// --param k=v (repeatable; each may also hold k=v,k2=v2) -> the scene's parameters.
-std::map<std::string, double> parse_params(const std::vector<std::string>& given);
 int run_resize(const ResizeArgs& a);
 int run_display(const DisplayArgs& a);
 int run_mip(const MipArgs& a);
@@ -173,4 +181,4 @@ int run_mipkernel(const MipKernelArgs& a);
 void check_metrics_args(const MetricsArgs& a, bool zoneplate);
 int run_metrics(const MetricsArgs& a);
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

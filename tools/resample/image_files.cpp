@@ -5,7 +5,7 @@
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 using namespace fest;
 using namespace fest::formats;
@@ -20,19 +20,21 @@ LoadedImage load_image(const std::string& path) {
   return out;
 }
 
-Depth parse_depth(const std::string& text) {
-  if (text.empty()) return {};
-  if (text == "8") return {CV_8U, false};
-  if (text == "16") return {CV_16U, false};
-  if (text == "f16") return {CV_32F, true};
-  if (text == "f32") return {CV_32F, false};
-  throw usage_error("--depth: '{}' is not one of 8, 16, f16, f32", text);
+Depth depth_of(std::optional<OutputDepth> depth) {
+  if (!depth) return {};
+  switch (*depth) {
+    case OutputDepth::u8: return {CV_8U, false};
+    case OutputDepth::u16: return {CV_16U, false};
+    case OutputDepth::f16: return {CV_32F, true};
+    case OutputDepth::f32: break;
+  }
+  return {CV_32F, false};
 }
 
-Format output_format(const std::string& to, const std::string& path, int cv_depth) {
+Format output_format(const std::optional<OutputFormat>& to, const std::string& path, int cv_depth) {
   OutputFormat f{cv_depth == CV_32F ? Format::pfm : Format::png, false};
-  if (!to.empty())
-    f = output_format_from_name(to);
+  if (to)
+    f = *to;
   else if (!is_stdio(path))
     f = output_format_from_path(path);
   if (kind_of(f.format) != Kind::image) throw usage_error("'{}' is not an image format", format_name(f.format));
@@ -63,4 +65,4 @@ void store_image(const Image& image, const std::string& path, Format f, bool hal
   store_output(path, bytes, false);
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

@@ -6,10 +6,11 @@
 #include <optional>
 #include <string>
 
+#include "commands.hpp"
 #include "core/image.hpp"
 #include "formats/detect.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 struct LoadedImage {
   fest::Image image;
@@ -18,16 +19,17 @@ struct LoadedImage {
 
 LoadedImage load_image(const std::string& path);
 
-// The --depth spellings: "8", "16", "f16", "f32" -> OpenCV depth; f16 sets `half`.
+// --depth as OpenCV depth; f16 sets `half`.
 struct Depth {
   int cv_depth = -1;  // -1: not given
   bool half = false;
 };
-Depth parse_depth(const std::string& text);
+Depth depth_of(std::optional<OutputDepth> depth);
 
-// Picks the output format: --to (or --format) name, else the -o path's extension, else
-// PNG for integer images and PFM for float ones.
-fest::formats::Format output_format(const std::string& to, const std::string& path, int cv_depth);
+// Picks the output format: --to (or --format), else the -o path's extension, else PNG
+// for integer images and PFM for float ones.
+fest::formats::Format output_format(const std::optional<fest::formats::OutputFormat>& to, const std::string& path,
+                                    int cv_depth);
 
 // The depth a format can hold when --depth was not given: float formats get f32, TIFF
 // keeps the image's depth, integer formats keep an integer depth (8 when it is float).
@@ -35,4 +37,4 @@ int default_depth(fest::formats::Format f, int image_depth);
 
 void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half);
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

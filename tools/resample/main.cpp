@@ -4,23 +4,122 @@
 // Wiring only: this file declares the subcommands and their flags; cmd_*.cpp connect
 // formats/image to lib/sampling.
 
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/reworded_error.hpp"
+#include "sampling/kernel_params.hpp"
 #include "sizes.hpp"
 
 namespace {
 
-using namespace fest::resample;
+using namespace fest::resample_tool;
+using fest::sampling::ClampMode;
+using fest::sampling::EdgeMode;
+
+// --to NAME: the output format, read as the flag is parsed (an unknown name is a usage error).
+CLI::Option* add_format(CLI::App* sub, std::optional<fest::formats::OutputFormat>& to, const std::string& help) {
+  return sub->add_option_function<std::string>(
+      "--to,--format", [&to](const std::string& name) { to = fest::formats::output_format_from_name(name); }, help);
+}
 
 void add_output(CLI::App* sub, ImageOutput& o) {
   sub->add_option("-o,--output", o.output, "Output file, or - for standard output")->default_val("-");
-  sub->add_option("--to,--format", o.to, "Output format: png pgm ppm pam pfm exr tiff (default: -o extension, else PNG/PFM)");
-  sub->add_option("--depth", o.depth, "Output depth: 8, 16, f16 (EXR half), f32");
+  add_format(sub, o.to, "Output format: png pgm ppm pam pfm exr tiff (default: -o extension, else PNG/PFM)");
+  fest::cli::enum_words<OutputDepth>(sub->add_option("--depth", o.depth, "Output depth: 8, 16, f16 (EXR half), f32"),
+                        {{"8", OutputDepth::u8}, {"16", OutputDepth::u16}, {"f16", OutputDepth::f16}, {"f32", OutputDepth::f32}});
+}
+
+const std::vector<std::pair<std::string, MipFilter>> kMipFilters{
+    {"box", MipFilter::box}, {"gaussian", MipFilter::gaussian}, {"lanczos3", MipFilter::lanczos3}};
+
+// --param k=v (repeatable; each may also hold k=v,k2=v2) -> the scene's parameters.
+std::map<std::string, double> scene_params(const std::vector<std::string>& given) {
+  std::map<std::string, double> out;
+  for (const auto& g : given) {
+    std::size_t start = 0;
+    while (start <= g.size()) {
+      const std::size_t comma = g.find(',', start);
+      const std::string item = g.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      const auto eq = item.find('=');
+      if (eq == std::string::npos || eq == 0) throw fest::usage_error("--param: '{}' is not key=value", item);
+      char* end = nullptr;
+      const std::string value = item.substr(eq + 1);
+      const double v = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0' || !std::isfinite(v)) throw fest::usage_error("--param: '{}' is not a number", item);
+      out[item.substr(0, eq)] = v;
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
+  return out;
+}
+
+// --zoneplate numax=1[,width=W,height=H] (empty: every default).
+ZonePlate zone_plate(const std::string& text) {
+  const auto zp = fest::sampling::parse_kernel_params("zoneplate", text, {{"numax", 1}, {"width", 0}, {"height", 0}});
+  ZonePlate z;
+  z.numax = zp.at("numax");
+  z.width = static_cast<int>(zp.at("width"));
+  z.height = static_cast<int>(zp.at("height"));
+  return z;
+}
+
+// --pixel-filter NAME[:params][,radius=R] -> the kernel and the stretch that gives it radius R.
+std::pair<fest::sampling::Kernel, double> stretched_kernel(const std::string& spec) {
+  std::string rest = spec;
+  double radius = 0;
+  const auto pos = rest.find("radius=");
+  if (pos != std::string::npos && pos > 0 && (rest[pos - 1] == ':' || rest[pos - 1] == ',')) {
+    const auto end = rest.find(',', pos);
+    const std::string value = rest.substr(pos + 7, end == std::string::npos ? std::string::npos : end - pos - 7);
+    char* stop = nullptr;
+    radius = std::strtod(value.c_str(), &stop);
+    if (value.empty() || *stop != '\0' || !(radius > 0 && radius <= 64))
+      throw fest::usage_error("--pixel-filter: radius '{}' must be a number in (0, 64]", value);
+    rest.erase(pos - 1, (end == std::string::npos ? rest.size() : end) - pos + 1);
+  }
+  const fest::sampling::Kernel k = fest::sampling::make_kernel(rest);
+  if (!k.reconstruction.empty()) throw fest::usage_error("--pixel-filter cannot be a dual prefilter");
+  const double scale = radius > 0 && k.radius > 0 && std::isfinite(k.radius) ? radius / k.radius : 1.0;
+  return {k, scale};
+}
+
+// --pixel-filter for rd.scene (after rd.params): the point scene takes the radial
+// lowpass/bandpass filters the others do not.
+void set_pixel_filter(RenderArgs& rd, const std::string& spec) {
+  const bool radial = spec.rfind("lowpass", 0) == 0 || spec.rfind("bandpass", 0) == 0;
+  if (radial && rd.scene != "point") throw fest::usage_error("--pixel-filter {} is for --scene point only", spec);
+  if (rd.scene != "point") {
+    std::tie(rd.pixel_filter, rd.filter_scale) = stretched_kernel(spec);
+    return;
+  }
+  const fest::sampling::KernelSpelling s = fest::sampling::split_kernel_spelling(spec);
+  if (s.name == "bandpass") {
+    for (const auto& [k, v] : fest::sampling::parse_kernel_params("bandpass", s.rest, {{"lo", 0.2}})) rd.params[k] = v;
+    rd.point_filter = "bandpass";
+  } else if (s.name == "lowpass") {
+    if (!s.rest.empty()) throw fest::usage_error("--pixel-filter lowpass takes no parameters");
+  } else {
+    rd.point_filter = spec;
+  }
+}
+
+// --map plane:h=..,pitch=..,fov=..,period=..
+PlaneView plane_view(const std::string& text) {
+  const fest::sampling::KernelSpelling s = fest::sampling::split_kernel_spelling(text);
+  if (s.name != "plane") throw fest::usage_error("--map: unknown mapping '{}' (plane:h=..,pitch=..,fov=..,period=..)", s.name);
+  const auto p = fest::sampling::parse_kernel_params("plane", s.rest, {{"h", 1}, {"pitch", 10}, {"fov", 60}, {"period", 1}});
+  return PlaneView{p.at("h"), p.at("pitch"), p.at("fov"), p.at("period")};
 }
 
 }  // namespace
@@ -34,20 +133,26 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   ResizeArgs rz;
-  std::string rz_filter = "mitchell", rz_edge = "clamp", rz_colorspace = "auto", rz_alpha = "premul", rz_clamp = "auto";
+  std::string rz_filter = "mitchell", rz_size;
   auto* resize = app.add_subcommand("resize", "Resize an image (separable, linear light, premultiplied alpha)");
   resize->add_option("input", rz.input, "Input image, or - for standard input")->default_val("-");
   add_output(resize, rz.out);
-  resize->add_option("--size", rz.size, "Target size WxH");
+  resize->add_option("--size", rz_size, "Target size WxH");
   resize->add_option("--width", rz.width, "Target width (height keeps the aspect ratio)");
   resize->add_option("--height", rz.height, "Target height (width keeps the aspect ratio)");
   resize->add_option("--scale", rz.scale, "Scale factor S or Sx,Sy")->delimiter(',')->allow_extra_args(false);
   resize->add_option("--filter", rz_filter, "Kernel NAME[:k=v,...] (see `resample kernel`)")->default_val("mitchell");
   resize->add_option("--shift", rz.shift, "Sub-pixel shift dx,dy in input pixels")->delimiter(',')->allow_extra_args(false);
-  resize->add_option("--edge", rz_edge, "Edges: clamp, reflect, wrap, zero")->default_val("clamp");
-  resize->add_option("--colorspace", rz_colorspace, "auto, srgb, linear, codes (filter the stored numbers)")->default_val("auto");
-  resize->add_option("--alpha", rz_alpha, "premul, straight, none")->default_val("premul");
-  resize->add_option("--clamp", rz_clamp, "Anti-ringing: none, range, local (default: range for integer output)")->default_val("auto");
+  fest::cli::enum_words<EdgeMode>(resize->add_option("--edge", rz.edge, "Edges: clamp, reflect, wrap, zero"),
+                        {{"clamp", EdgeMode::clamp}, {"reflect", EdgeMode::reflect}, {"wrap", EdgeMode::wrap}, {"zero", EdgeMode::zero}})->default_str("clamp");
+  fest::cli::enum_words<ResizeColor>(resize->add_option("--colorspace", rz.colorspace, "auto, srgb, linear, codes (filter the stored numbers)"),
+                        {{"auto", ResizeColor::automatic}, {"srgb", ResizeColor::srgb}, {"linear", ResizeColor::linear},
+                         {"codes", ResizeColor::codes}})->default_str("auto");
+  fest::cli::enum_words<AlphaMode>(resize->add_option("--alpha", rz.alpha, "premul, straight, none"),
+                        {{"premul", AlphaMode::premul}, {"straight", AlphaMode::straight}, {"none", AlphaMode::none}})->default_str("premul");
+  fest::cli::enum_words<ClampMode>(resize->add_option("--clamp", rz.clamp, "Anti-ringing: none, range, local (default: range for integer output)"),
+                        {{"auto", ClampMode::automatic}, {"none", ClampMode::none}, {"range", ClampMode::range},
+                         {"local", ClampMode::local}})->default_str("auto");
   resize->add_flag("--hicomp", rz.hicomp, "Highlight compression for HDR input (x > 1 filtered as 1 + ln x)");
   resize->add_flag("--dither", rz.dither, "Triangular ±½ LSB dither before rounding");
   resize->add_option("--seed", rz.seed, "Dither seed")->default_val(1);
@@ -64,18 +169,18 @@ int main(int argc, char** argv) {
 
   MipArgs mp;
   auto* mip = app.add_subcommand("mip", "Build a mip-map pyramid: PREFIX_<k>.png (or .exr for float), k = 0 full size");
-  std::string mip_action, mp_filter = "box";
+  std::string mip_action;
   mip->add_option("action", mip_action, "build")->required();
   mip->add_option("input", mp.input, "Input image, or - for standard input")->default_val("-");
   mip->add_option("-o,--output", mp.prefix, "Prefix of the level files")->required();
-  mip->add_option("--filter", mp_filter, "box, gaussian, lanczos3")->default_val("box");
+  fest::cli::enum_words(mip->add_option("--filter", mp.filter, "box, gaussian, lanczos3"), kMipFilters)->default_str("box");
   mip->add_option("--levels", mp.levels, "Number of levels (0: down to 1x1)")->default_val(0);
-  mip->add_option("--to,--format", mp.to, "Level file format");
+  add_format(mip, mp.to, "Level file format");
   fest::cli::add_threads(*mip, mp.threads);
 
   RenderArgs rd;
   std::vector<std::string> rd_params;
-  std::string rd_size = "256x256", rd_pattern = "jitter", rd_colorspace = "srgb";
+  std::string rd_size = "256x256", rd_pattern = "jitter", rd_pixel_filter = "box";
   auto* render = app.add_subcommand("render", "Render an analytic scene with supersampling");
   add_output(render, rd.out);
   render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
@@ -83,23 +188,24 @@ int main(int argc, char** argv) {
   render->add_option("--size", rd_size, "Image size WxH")->default_val("256x256");
   render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
   render->add_option("--pattern", rd_pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
-  render->add_option("--pixel-filter", rd.pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
+  render->add_option("--pixel-filter", rd_pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
-  render->add_option("--colorspace", rd_colorspace, "Integer output: srgb (encoded codes) or linear (plain values)")->default_val("srgb");
+  fest::cli::enum_words<RenderColor>(render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)"),
+                        {{"srgb", RenderColor::srgb}, {"linear", RenderColor::linear}})->default_str("srgb");
   render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(4096);
   fest::cli::add_threads(*render, rd.threads);
 
   TextureArgs tx;
-  std::string tx_size = "512x384", tx_method = "trilinear";
+  std::string tx_size = "512x384", tx_method = "trilinear", tx_map;
   auto* texture = app.add_subcommand("texture", "Texture minification through mip-map lookups, EWA or dense ground truth");
   add_output(texture, tx.out);
   texture->add_option("--tex", tx.tex, "Texture image (filtered in linear light, one channel)")->required();
-  texture->add_option("--map", tx.map, "plane:h=1,pitch=10,fov=60,period=1 (ground plane seen by a pinhole camera)");
+  texture->add_option("--map", tx_map, "plane:h=1,pitch=10,fov=60,period=1 (ground plane seen by a pinhole camera)");
   texture->add_option("--uv", tx.uv, "Per-pixel texture coordinates in [0,1]: a 2-channel image of --size");
   texture->add_option("--size", tx_size, "Screen size WxH")->default_val("512x384");
   texture->add_option("--method", tx_method, "nearest, bilinear, trilinear, aniso:N[:gauss], ewa[:maxaniso=16]")->default_val("trilinear");
-  texture->add_option("--mip", tx.mip, "Pyramid filter: box, gaussian, lanczos3")->default_val("box");
+  fest::cli::enum_words(texture->add_option("--mip", tx.mip, "Pyramid filter: box, gaussian, lanczos3"), kMipFilters)->default_str("box");
   texture->add_option("--lod-bias", tx.lod_bias, "Added to the mip level")->default_val(0);
   texture->add_flag("--ground-truth", tx.ground_truth, "Dense supersampled reference instead of a lookup");
   texture->add_option("--aniso-mask", tx.aniso_mask, "Write the mask (0/255) of pixels whose footprint anisotropy exceeds this");
@@ -142,7 +248,7 @@ int main(int argc, char** argv) {
   mipkernel->add_option("--dims", mk.dims, "1 or 2")->default_val(1);
 
   MetricsArgs mt;
-  std::string mt_domain = "linear", mt_zoneplate;
+  std::string mt_zoneplate;
   auto* metrics = app.add_subcommand("metrics", "RMSE/PSNR against a reference and zone-plate aliasing, as JSON");
   metrics->add_option("input", mt.input, "Test image, or - for standard input")->default_val("-");
   metrics->add_option("--ref", mt.ref, "Reference image");
@@ -150,7 +256,8 @@ int main(int argc, char** argv) {
   metrics->add_option("--alias-band", mt.alias_band, "Alias band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--pass-band", mt.pass_band, "Pass band lo,hi (cycles/pixel)")->delimiter(',')->allow_extra_args(false);
   metrics->add_option("--mask", mt.mask, "One-channel image: compare where non-zero");
-  metrics->add_option("--domain", mt_domain, "linear or encoded")->default_val("linear");
+  fest::cli::enum_words<MetricsDomain>(metrics->add_option("--domain", mt.domain, "linear or encoded"),
+                        {{"linear", MetricsDomain::linear}, {"encoded", MetricsDomain::encoded}})->default_str("linear");
   metrics->add_flag("--spectrum", mt.spectrum, "Add the horizontal power spectrum (f, power)");
   metrics->add_option("--beat", mt.beat, "f1,f2 in cycles per pixel: add the power at |f1 - f2| (the beat of §10.4.4)")
       ->delimiter(',')->allow_extra_args(false);
@@ -159,10 +266,7 @@ int main(int argc, char** argv) {
     if (*resize) {
       // In this order, all before the input is read: the first bad flag is the one named.
       rz.filter = fest::sampling::make_kernel(rz_filter);
-      rz.edge = parse_edge(rz_edge);
-      rz.clamp = parse_clamp(rz_clamp);
-      rz.colorspace = parse_resize_color(rz_colorspace);
-      rz.alpha = parse_alpha(rz_alpha);
+      if (!rz_size.empty()) rz.size = parse_size(rz_size, "--size");  // a bad --size is a usage error even before input
       return run_resize(rz);
     }
     if (*display) {
@@ -173,22 +277,23 @@ int main(int argc, char** argv) {
     if (*mip) {
       if (mip_action != "build") throw fest::usage_error("mip: unknown action '{}' (build)", mip_action);
       if (mp.prefix.empty()) throw fest::usage_error("mip build needs -o PREFIX");
-      mp.filter = parse_mip_filter(mp_filter);
       return run_mip(mp);
     }
     if (*render) {
       std::tie(rd.width, rd.height) = parse_size(rd_size, "--size");
-      rd.colorspace = parse_render_color(rd_colorspace);
-      rd.params = parse_params(rd_params);
+      rd.params = scene_params(rd_params);
       if (!rd.ground_truth) rd.pattern = fest::sampling::parse_pattern(rd_pattern);  // unused with --ground-truth
+      set_pixel_filter(rd, rd_pixel_filter);
       return run_render(rd);
     }
     if (*normalmip) return run_normalmip(nm);
     if (*texture) {
       if (tx.tex.empty()) throw fest::usage_error("texture needs --tex");
-      if (tx.map.empty() == tx.uv.empty()) throw fest::usage_error("texture needs exactly one of --map and --uv");
+      if (tx_map.empty() == tx.uv.empty()) throw fest::usage_error("texture needs exactly one of --map and --uv");
       std::tie(tx.width, tx.height) = parse_size(tx_size, "--size");
-      tx.method = fest::sampling::parse_texture_method(tx_method);
+      tx.method = fest::with_rewording({{"texture method: ", "--method "}},
+                                       [&] { return fest::sampling::parse_texture_method(tx_method); });
+      if (!tx_map.empty()) tx.map = plane_view(tx_map);
       return run_texture(tx);
     }
     if (*kernel) {
@@ -209,10 +314,9 @@ int main(int argc, char** argv) {
       return run_mipkernel(mk);
     }
     if (*metrics) {
-      mt.domain = parse_metrics_domain(mt_domain);
       const bool zoneplate = metrics->count("--zoneplate") > 0 || !mt_zoneplate.empty();
       check_metrics_args(mt, zoneplate);  // before the zone plate's text is read
-      if (zoneplate) mt.zoneplate = parse_zoneplate(mt_zoneplate == "-" ? "" : mt_zoneplate);
+      if (zoneplate) mt.zoneplate = zone_plate(mt_zoneplate == "-" ? "" : mt_zoneplate);
       return run_metrics(mt);
     }
     throw fest::usage_error("no subcommand");

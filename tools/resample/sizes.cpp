@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 int checked_dimension(long long v, const char* what) {
   if (v <= 0 || v > (1LL << 31) - 1) throw fest::usage_error("{}: dimension {} is out of range [1, 2^31)", what, v);
@@ -28,4 +28,4 @@ std::pair<int, int> parse_size(const std::string& text, const char* what) {
   return {static_cast<int>(w), static_cast<int>(h)};
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

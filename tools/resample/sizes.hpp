@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 // A dimension in [1, 2^31]: usage error naming `what` otherwise.
 int checked_dimension(long long v, const char* what);
@@ -12,4 +12,4 @@ int checked_dimension(long long v, const char* what);
 // "WxH" -> (W, H); both positive and W·H ≤ 2^31, else a usage error naming `what`.
 std::pair<int, int> parse_size(const std::string& text, const char* what);
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

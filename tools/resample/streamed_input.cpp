@@ -1,6 +1,6 @@
 #include "streamed_input.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 std::unique_ptr<StreamedInput> StreamedInput::open(const std::string& path) {
   auto f = fest::formats::NetpbmRowFile::open(path);
@@ -13,4 +13,4 @@ cv::Mat StreamedInput::rows(int first, int last, void* buffer) const {
   return cv::Mat(last - first, width(), type(), buffer);
 }
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

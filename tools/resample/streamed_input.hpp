@@ -9,7 +9,7 @@
 #include "formats/image/netpbm_rows.hpp"
 #include "sampling/stored_rows.hpp"
 
-namespace fest::resample {
+namespace fest::resample_tool {
 
 class StreamedInput final : public fest::sampling::StoredRows {
  public:
@@ -28,4 +28,4 @@ class StreamedInput final : public fest::sampling::StoredRows {
   std::unique_ptr<fest::formats::NetpbmRowFile> file_;
 };
 
-}  // namespace fest::resample
+}  // namespace fest::resample_tool

@@ -1,7 +1,6 @@
 // radiosity solve: read a scene, mesh it, shoot to the tolerance (with adaptive rounds),
 // and write the lit meshes, the shot log, the report and a picture.
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 
@@ -11,6 +10,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "formats/detect.hpp"
@@ -26,24 +26,6 @@
 namespace fest::radiosity_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-radiosity::Engine engine_of(const std::string& s) {
-  if (s == "hemicube") return radiosity::Engine::hemicube;
-  if (s == "raycast") return radiosity::Engine::raycast;
-  if (s == "analytic") return radiosity::Engine::analytic;
-  if (s == "hybrid") return radiosity::Engine::hybrid;
-  throw usage_error("--ff must be hemicube, hybrid, raycast or analytic, not '{}'", s);
-}
-
-radiosity::Solver solver_of(const std::string& s) {
-  if (s == "pr") return radiosity::Solver::pr;
-  if (s == "sor") return radiosity::Solver::sor;
-  if (s == "overshoot") return radiosity::Solver::overshoot;
-  if (s == "orpr") return radiosity::Solver::orpr;
-  throw usage_error("--solver must be orpr, pr, sor or overshoot, not '{}'", s);
-}
 
 nlohmann::json rgb(const radiosity::Rgb& c) { return {c[0], c[1], c[2]}; }
 
@@ -56,27 +38,25 @@ std::string safe_name(const std::string& name) {
 }  // namespace
 
 int run_solve(const SolveArgs& args, const CameraArgs& camera) {
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   const int threads = resolve_threads(args.threads);
-  const radiosity::Engine engine = engine_of(args.ff);
-  const radiosity::Solver solver = solver_of(args.solver);
-  if (args.emission != "radiance" && args.emission != "exitance")
-    throw usage_error("--emission must be radiance or exitance, not '{}'", args.emission);
+  const radiosity::Engine engine = args.ff;
+  const radiosity::Solver solver = args.solver;
   if ((engine == radiosity::Engine::hemicube || engine == radiosity::Engine::hybrid) && (args.hemicube_res < 2 || args.hemicube_res % 2 != 0))
     throw usage_error("--hemicube-res must be even and at least 2");
   if (args.omega >= 0 && solver == radiosity::Solver::sor && !(args.omega >= 1 && args.omega < 2))
     throw usage_error("--omega for sor must lie in [1, 2)");
 
-  const auto t_read = Clock::now();
+  const auto t_read = SteadyClock::now();
   const radiosity::Scene scene = read_scene(args.scene);
   const radiosity::SceneCheck check = radiosity::check_scene(scene);
   radiosity::MeshingOptions mo;
   mo.patch_size = args.patch_size;
   mo.element_size = args.element_size;
   mo.no_mesh = args.no_mesh;
-  mo.emission_is_radiance = args.emission == "radiance";
+  mo.emission_is_radiance = args.emission_is_radiance;
   radiosity::Model model = radiosity::build_model(scene, mo);
-  const double read_s = since(t_read);
+  const double read_s = seconds_since(t_read);
   if (check.open_edges > 0 && !args.quiet)
     warn("radiosity", fmt::format("the scene is open: {} edge(s) belong to one face only; light escapes through the gaps",
                                   check.open_edges));
@@ -129,7 +109,7 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
                                     stats.shots, stats.unshot_fraction, args.tol));
   }
 
-  const auto t_out = Clock::now();
+  const auto t_out = SteadyClock::now();
   const radiosity::VertexValues vv = radiosity::vertex_values(model, args.crease);
   double exposure = 0;
   const auto colours =
@@ -165,7 +145,7 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
     log.add_column("level", c_level);
     csv = formats::write_table(log, formats::Format::csv);
   }
-  const double output_s = since(t_out);
+  const double output_s = seconds_since(t_out);
 
   nlohmann::json report;
   if (!args.report.empty()) {
@@ -179,13 +159,13 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
     }
     nlohmann::json objects = nlohmann::json::array();
     for (const auto& o : model.objects) objects.push_back(o.name);
-    const double total = since(start);
+    const double total = seconds_since(start);
     report = {
         {"tool", "radiosity"},
         {"scene", {{"objects", objects}, {"faces", check.faces}, {"open_edges", check.open_edges},
                    {"closed", check.open_edges == 0}, {"units", scene.units}, {"diagonal", check.diagonal}}},
-        {"ff", args.ff},
-        {"solver", args.solver},
+        {"ff", radiosity::engine_name(args.ff)},
+        {"solver", radiosity::solver_name(args.solver)},
         {"omega", args.omega >= 0 ? args.omega : (solver == radiosity::Solver::sor ? 1.5 : 1.0)},
         {"tol", args.tol},
         {"threads", threads},
