@@ -46,22 +46,6 @@ KNOWN_VIOLATIONS=(
   # A test compiling a tool's source instead of linking fest_<tool>_app.
   # Tools whose command files are not yet the library fest_<tool>_app.
   # Messages in lib/ that name the tools' flags instead of the domain's terms.
-  "lib/core/threads.cpp: flag-in-lib: --threads"
-  "lib/core/volume.cpp: flag-in-lib: --frame"
-  "lib/hdr/bracket.cpp: flag-in-lib: --gamma"
-  "lib/hdr/bracket.cpp: flag-in-lib: --noise"
-  "lib/hdr/debevec.cpp: flag-in-lib: --lambda"
-  "lib/hdr/debevec.cpp: flag-in-lib: --samples"
-  "lib/sampling/chain1d.cpp: flag-in-lib: --edge"
-  "lib/sampling/image_metrics.cpp: flag-in-lib: --spectrum"
-  "lib/sampling/image_metrics.cpp: flag-in-lib: --zoneplate"
-  "lib/sampling/resize.cpp: flag-in-lib: --edge"
-  "lib/sampling/resize.cpp: flag-in-lib: --shift"
-  "lib/sampling/slope_pyramid.cpp: flag-in-lib: --height-scale"
-  "lib/sampling/texture.cpp: flag-in-lib: --map"
-  "lib/sampling/texture.cpp: flag-in-lib: --method"
-  "lib/sampling/texture.cpp: flag-in-lib: --mip"
-  "lib/sampling/texture.cpp: flag-in-lib: --uv"
 )
 
 found="$WORK/found"
