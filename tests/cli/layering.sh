@@ -26,8 +26,8 @@
 #
 # LAYERING_TRACE=1 prints how every include line resolved.
 #
-# KNOWN_VIOLATIONS lists what is wrong today, one line per violation ("file: rule: what"),
-# so that the suite passes while the refactor of issue 20 proceeds: a violation not listed
+# KNOWN_VIOLATIONS lists what is knowingly wrong, one line per violation ("file: rule:
+# what"); it is empty since issue 20 was finished and should stay so. A violation not listed
 # fails, and a listed one that has gone fails too, so that the list only ever shrinks.
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 export FEST_BIN="${FEST_BIN:-$source_dir}"  # lib.sh wants it; this test runs no executable
@@ -41,11 +41,6 @@ FLAG_EXCEPTIONS=(
 )
 
 KNOWN_VIOLATIONS=(
-  # formats/facemodel still includes the face model type from lib/facefit (issue 20 moves it).
-  # A tool including another tool's files.
-  # A test compiling a tool's source instead of linking fest_<tool>_app.
-  # Tools whose command files are not yet the library fest_<tool>_app.
-  # Messages in lib/ that name the tools' flags instead of the domain's terms.
 )
 
 found="$WORK/found"
