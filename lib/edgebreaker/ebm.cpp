@@ -223,6 +223,18 @@ Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>
   return num;
 }
 
+// What the position coder needs of the connectivity, the same on both sides of the stream:
+// the parallelogram of each G vertex, the dummies (no position) and the stitched copies.
+GeometryPlan geometry_plan(const DecodedConnectivity& dec, const std::vector<char>& dummy, const Numbering& num) {
+  GeometryPlan plan;
+  plan.parallelogram = dec.parallelogram;
+  plan.unusable = dummy;
+  plan.same_as = num.same_as;
+  plan.triangles = &dec.triangles;
+  plan.opposite = &dec.opposite;
+  return plan;
+}
+
 const char* conn_mode_name(int mode) {
   switch (mode) {
     case 0: return "raw";
@@ -449,12 +461,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     std::vector<QPoint> q(static_cast<std::size_t>(g_count), QPoint{0, 0, 0});
     for (int g = 0; g < g_count; ++g)
       if (!dummy[static_cast<std::size_t>(g)]) q[static_cast<std::size_t>(g)] = qv[static_cast<std::size_t>(input_of[static_cast<std::size_t>(g)])];
-    GeometryPlan plan;
-    plan.parallelogram = dec.parallelogram;
-    plan.unusable = dummy;
-    plan.same_as = num.same_as;
-    plan.triangles = &dec.triangles;
-    plan.opposite = &dec.opposite;
+    const GeometryPlan plan = geometry_plan(dec, dummy, num);
     geom = encode_positions(q, plan, options.qp, options.predictor, coding);
     std::vector<QPoint> iq;
     for (int v : isolated) iq.push_back(qv[static_cast<std::size_t>(v)]);
@@ -905,12 +912,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     Quantiser quant;
     quant.bits = h.qp;
     quant.box = h.box;
-    GeometryPlan plan;
-    plan.parallelogram = dec.parallelogram;
-    plan.unusable = dummy;
-    plan.same_as = num.same_as;
-    plan.triangles = &dec.triangles;
-    plan.opposite = &dec.opposite;
+    const GeometryPlan plan = geometry_plan(dec, dummy, num);
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor), coding);
     for (int g = 0; g < g_count; ++g)
