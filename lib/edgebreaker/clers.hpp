@@ -12,7 +12,7 @@
 
 namespace fest::edgebreaker {
 
-// One symbol per triangle except the start triangle (spec 2.1, "Alphabet").
+// One symbol per triangle except the start triangle (docs/ebcode.md §1, "The symbol string").
 enum class Symbol : unsigned char { C, L, E, R, S };
 
 using Triangle = std::array<int, 3>;
@@ -29,12 +29,12 @@ struct Encoded {
   std::vector<int> vertex_order;
 };
 
-// Forward traversal (spec 2.2). Throws fest::Error(bad_input) unless the triangles form one
+// Forward traversal (docs/ebcode.md §1). Throws fest::Error(bad_input) unless the triangles form one
 // closed, edge- and vertex-manifold, consistently oriented surface of genus 0 that uses
 // every vertex 0..vertex_count-1.
 Encoded encode(const std::vector<Triangle>& triangles, int vertex_count);
 
-// Spirale Reversi (spec 2.3). Returns the start triangle first, then one triangle per
+// Spirale Reversi (docs/ebcode.md §2). Returns the start triangle first, then one triangle per
 // symbol in forward order, with the input's orientation; vertices are numbered in the
 // encoder's visit order, so the vertex count is #C + 3. Throws fest::Error(bad_input) for
 // every string that is not exactly the encoding of the mesh it decodes to (it re-encodes

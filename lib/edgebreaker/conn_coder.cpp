@@ -1,4 +1,4 @@
-// The three connectivity coders of spec 2.7 over one range coder.
+// The three connectivity coders of docs/ebcode.md §4 over one range coder.
 #include "edgebreaker/conn_coder.hpp"
 
 #include <array>

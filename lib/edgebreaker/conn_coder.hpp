@@ -1,5 +1,5 @@
 #pragma once
-// Entropy coding of the CLERS string (spec 2.7): the raw 1/3-bit code, the chapter's
+// Entropy coding of the CLERS string (docs/ebcode.md §4): the raw 1/3-bit code, the chapter's
 // static state-machine coder (state_machine.hpp) and the adaptive valence-context coder.
 // Symbols are coded in decoding order; the encoder runs the same ReverseDecoder as the
 // decoder to know each symbol's context, so the two cannot drift apart.

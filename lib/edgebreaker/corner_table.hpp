@@ -1,5 +1,5 @@
 #pragma once
-// Rossignac's corner table (spec 2.1) and the checks that make a triangle list one the
+// Rossignac's corner table (docs/ebcode.md §1) and the checks that make a triangle list one the
 // chapter's coder can take: closed, manifold, oriented, connected, genus 0.
 
 #include <vector>

@@ -1,5 +1,5 @@
-// Tutte's formula and the exhaustive enumeration of CLERS strings (spec 5, "Exhaustive
-// bijection"): the enumeration never trusts its pruning for the answer, only decode().
+// Tutte's formula and the exhaustive enumeration of CLERS strings (docs/ebcode.md §6, the
+// bijection check): the enumeration never trusts its pruning for the answer, only decode().
 #include "edgebreaker/counting.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// The numbers behind the chapter's bounds (spec 3.1): Tutte's count of rooted planar
+// The numbers behind the chapter's bounds (docs/ebcode.md §6): Tutte's count of rooted planar
 // triangulations, and the same count obtained by enumerating CLERS strings, which is the
 // exhaustive check that encode and decode form a bijection.
 

@@ -1,4 +1,4 @@
-// The .ebm container and the pipeline around the connectivity coder (spec 2.8-2.11):
+// The .ebm container and the pipeline around the connectivity coder (docs/ebcode.md §5):
 // prepare -> traverse -> code connectivity (running the decoder alongside) -> side
 // sections -> quantised geometry in G order; and the exact inverse.
 #include "edgebreaker/ebm.hpp"
@@ -245,7 +245,7 @@ const char* conn_mode_name(int mode) {
 }
 
 
-// ---- per-vertex attributes (spec 2.10) ---------------------------------------------------
+// ---- per-vertex attributes (docs/ebcode.md §5) -------------------------------------------
 
 // kind 1 normal (3 components over [-1, 1]), 2 colour (3 bytes, exact), 3 texcoord (2
 // components over their own box). One section each: NRML, COLR, TEXC.

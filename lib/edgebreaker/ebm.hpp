@@ -1,5 +1,5 @@
 #pragma once
-// The .ebm bitstream (spec 2.11, documented in man/man5/ebm.5): a whole mesh -- general
+// The .ebm bitstream (docs/ebcode.md §5, documented in man/man5/ebm.5): a whole mesh -- general
 // connectivity, quantised positions, the side information that restores non-manifold
 // input exactly -- in one CRC-protected container. The format is this algorithm's own
 // output, so it lives here with it (a domain's own byte format belongs to its library), in memory only: bytes in, bytes out.
@@ -21,7 +21,7 @@
 namespace fest::edgebreaker {
 
 // A triangle soup with positions: what goes in and comes out. Vertex ids index positions.
-// Per-vertex attributes (spec 2.10): normals are quantised over [-1, 1] (clamped), colours
+// Per-vertex attributes (docs/ebcode.md §5): normals are quantised over [-1, 1] (clamped), colours
 // kept exactly, texture coordinates quantised over their own box.
 using MeshSoup = TriangleSoup;
 static_assert(std::is_same_v<decltype(MeshSoup::triangles)::value_type, Triangle>);

@@ -1,4 +1,4 @@
-// Position coding (spec 2.9).
+// Position coding (docs/ebcode.md §5).
 #include "edgebreaker/geometry_coder.hpp"
 
 #include <algorithm>

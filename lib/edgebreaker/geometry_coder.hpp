@@ -1,5 +1,5 @@
 #pragma once
-// Quantised positions with parallelogram prediction (spec 2.9; project engineering, after
+// Quantised positions with parallelogram prediction (docs/ebcode.md §5; project engineering, after
 // Touma & Gotsman and Draco): per axis residual r = q - prediction, wrapped into the
 // quantisation range, zigzagged, its bit length coded with adaptive binary contexts and
 // the bits below the leading one as two adaptive and the rest bypass bits.

@@ -1,4 +1,4 @@
-// spec 2.8 steps 2-5 and 8. Orientation is never changed: an edge is paired only between a
+// General meshes (docs/ebcode.md §5). Orientation is never changed: an edge is paired only between a
 // face using it u->v and one using it v->u, in input face order, so edges with three or
 // more faces and flipped faces become boundary instead of being "repaired".
 #include "edgebreaker/prepare.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// Making any triangle list something the traversal takes (spec 2.8, steps 2-5, 8; project
-// engineering, the chapter covers planar triangulations only): degenerate faces dropped,
+// Making any triangle list something the traversal takes (docs/ebcode.md §5;
+// project engineering, the chapter covers planar triangulations only): degenerate faces dropped,
 // edges paired without flipping any face (non-manifold edges and inconsistent orientation
 // become boundary), vertices split into manifold fans (stitch pairs remember the copies),
 // every boundary loop closed by a dummy vertex (Rossignac), unreferenced vertices set aside.

@@ -1,5 +1,5 @@
-// Spirale Reversi (Isenburg & Snoeyink; spec 2.3), generalised to several components and
-// to handles (spec 2.8). Robustness against hostile strings: every inverse operation
+// Spirale Reversi (Isenburg & Snoeyink; docs/ebcode.md §2), generalised to several components and
+// to handles (§5). Robustness against hostile strings: every inverse operation
 // checks what it needs (a loop to work on, C only on a loop longer than 3 while lengths
 // are known, links only between open corners), every swing is bounded, and finish()
 // re-encodes the result, so only exact encodings are accepted.
@@ -96,7 +96,7 @@ int ReverseDecoder::incoming_open_edge(int a) {
   fail("a vertex fan does not end");
 }
 
-// Valence context (spec 2.7): decoded triangles at the new triangle's left vertex.
+// Valence context (docs/ebcode.md §4): decoded triangles at the new triangle's left vertex.
 // c is a triangle's first corner (new_triangle), so next(c) = c + 1: its root is found once.
 void ReverseDecoder::count_triangle(int c) {
   ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c)]))];

@@ -1,5 +1,5 @@
 #pragma once
-// Spirale Reversi for general closed meshes (spec 2.3 with 2.8's handle events and
+// Spirale Reversi for general closed meshes (docs/ebcode.md §2, with §5's handle events and
 // several components), one symbol at a time, so that an entropy decoder can ask for the
 // context of the next symbol (valence, previous symbol, whether C is possible) before it
 // decodes it. The encoder runs the same class over its own symbols to get the same
@@ -76,7 +76,7 @@ class ReverseDecoder {
   ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> events, bool simple = false);
 
   // Context of the next symbol: valence class 0..5 of the last triangle's left vertex
-  // (spec 2.7), the previous decoded symbol (0 none, else 1 + Symbol), and whether C is
+  // (docs/ebcode.md §4), the previous decoded symbol (0 none, else 1 + Symbol), and whether C is
   // possible (the current loop is longer than 3 and the previous symbol is not L).
   int valence_class() const noexcept { return valence_class_; }
   int previous() const noexcept { return previous_; }

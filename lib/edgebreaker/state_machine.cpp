@@ -1,4 +1,4 @@
-// Construction, solution and minimisation of the chapter's state machines (spec 2.6).
+// Construction, solution and minimisation of the chapter's state machines (docs/ebcode.md §3).
 #include "edgebreaker/state_machine.hpp"
 
 #include <algorithm>

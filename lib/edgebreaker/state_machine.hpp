@@ -1,5 +1,5 @@
 #pragma once
-// The chapter's conditional-unity state machines (seed sections 5.4-5.6, spec 2.5-2.6):
+// The chapter's conditional-unity state machines (seed sections 5.4-5.6, docs/ebcode.md §3):
 // states (H; l, p, s) of reversed-history suffix and loop lengths, the exclusion patterns
 // that say where C is impossible, the unity equations u = M(alpha) u solved by bisection
 // on alpha with power iteration, and minimisation by partition refinement.
@@ -19,7 +19,7 @@ namespace fest::edgebreaker {
 
 // Limits of the state (-1: the length is never tracked) and how many of the 19 patterns
 // are used (the first cmax of the chapter's list). Without all_patterns the two patterns
-// that start with EE are left out, as the chapter's tables require (spec 2.4).
+// that start with EE are left out, as the chapter's tables require (docs/ebcode.md §3).
 struct ModelParams {
   int lmax = -1;
   int pmax = -1;
@@ -27,7 +27,7 @@ struct ModelParams {
   int cmax = 19;
   bool all_patterns = false;
   // The literal reading of the seed's isConstraint(H) (H itself is a pattern) instead of
-  // "some suffix of H is a pattern"; a negative test only (spec 2.6).
+  // "some suffix of H is a pattern"; a negative test only (docs/ebcode.md §3).
   bool literal_rule = false;
 };
 

@@ -1,4 +1,4 @@
-// The forward traversal for any closed manifold (spec 2.2 with 2.8's handle events).
+// The forward traversal for any closed manifold (docs/ebcode.md §1, with §5's handle events).
 // Components are taken in order of their lowest triangle; each is the chapter's traversal
 // from its own start triangle. On a handle, the S's pushed right corner is found marked
 // when popped and skipped; the triangle that reached it first records the event.

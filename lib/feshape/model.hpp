@@ -1,5 +1,5 @@
 #pragma once
-// The deformable model of seed App. C §3 (docs/feshape.md §2.1, §2.11): rigid pose
+// The deformable model of seed App. C §3 (docs/feshape.md §1.1-1.3): rigid pose
 // (centre c, unit quaternion), the 11 global parameters, and the finite-element mesh in
 // material coordinates with one local displacement d_i (model frame) per node.
 // x(u) = c + R (s(u) + d(u))  (eq. 1).

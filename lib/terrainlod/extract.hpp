@@ -22,8 +22,8 @@ struct Camera {
   double tau_px = 1;
 };
 
-// Throws bad_input with the spec's messages (zero-length view direction, looks along its
-// up vector, fovy outside (0, 180), empty image, near/far order, tau <= 0).
+// Throws bad_input saying which camera parameter is wrong (zero-length view direction, looks
+// along its up vector, fovy outside (0, 180), empty image, near/far order, tau <= 0).
 void check_camera(const Camera& camera);
 
 // What the selection needs to know about the pyramid, in world units.

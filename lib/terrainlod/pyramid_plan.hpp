@@ -26,7 +26,7 @@ struct PyramidPlan {
   std::vector<LevelPlan> level;
 };
 
-// Checks the parameters (usage_error with the spec's messages) and lays out the levels
+// Checks the parameters (usage_error naming the bad parameter) and lays out the levels
 // for a W x H-sample DEM with cell sizes dx, dy. eps_l uses the smaller tile side, so the
 // budget holds along both axes when dx != dy.
 PyramidPlan plan_pyramid(int width, int height, double dx, double dy, const PyramidParams& params);

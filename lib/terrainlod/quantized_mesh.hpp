@@ -1,6 +1,6 @@
 #pragma once
-// Cesium quantized-mesh-1.0 coding of one tile triangulation (the anchor format of spec
-// terrainlod section 6): an 88-byte header, u/v/height as 15-bit values (0..32767) zig-zag
+// Cesium quantized-mesh-1.0 coding of one tile triangulation (the format the tile sizes
+// are compared against, docs/terrainlod.md §6): an 88-byte header, u/v/height as 15-bit values (0..32767) zig-zag
 // delta coded, triangle indices high-water-mark coded (16 bit, 32 bit above 65,536
 // vertices), and the west/south/east/north edge vertex lists. No extensions. The header's
 // centre and bounding sphere are in the DEM's own world coordinates (fest pyramids are

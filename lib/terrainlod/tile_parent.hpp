@@ -6,8 +6,8 @@
 // parent's (the lattice refinement of pyramid_build.cpp), and the child covers half the
 // parent's side, so one parent lattice step is r = 2 n_child / n_parent >= 1 child steps
 // (both powers of two). A parent vertex (Xp, Yp) in quadrant (qx, qy) is therefore the
-// child lattice point (Xp r - qx n, Yp r - qy n) exactly: it needs no xy bits (the spec's
-// two xy bits per inherited vertex come from its rounding scheme, which we do not have).
+// child lattice point (Xp r - qx n, Yp r - qy n) exactly: it needs no xy bits (a coder that
+// rounds positions onto non-nesting lattices would spend two xy bits per inherited vertex).
 //
 // Heights: every level derives its codes from the same finest-lattice height G of a DEM
 // sample, so an inherited interior vertex has H_child = (H_parent << (k_p - k_c)) + low

@@ -36,7 +36,7 @@ stage synth null "photographs: acquisition ~2.5 h" "25 views x 1 light, 3040x200
   "$bin/brdffit" synth --sphere 5 --materials 5 --views 25 --lights 1 --width 3040 --height 2008 --fill 0.4 \
   "${env_args[@]}" --threads "$threads" -o "$work/bird"
 
-stage lumitexels 180 "HDR + registration + resampling ~5 h" "spec §7: <= 3 min, <= 4 GB" -- \
+stage lumitexels 180 "HDR + registration + resampling ~5 h" "target (docs/brdffit.md §7): <= 3 min, <= 4 GB" -- \
   "$bin/brdffit" lumitexels --mesh "$work/bird/mesh.ply" --rig "$work/bird/rig.json" --threads "$threads" \
   --report "$work/lumitexels.json" -o "$work/bird.ltx"
 jq -c '{stage: "lumitexels_counts", lumitexels, samples, mean_samples, dropped, stage_seconds, peak_rss_kb, bytes,

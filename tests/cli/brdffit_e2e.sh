@@ -65,8 +65,8 @@ done
 read -r median worst rendered < <(python3 "$check_py" rerender "$WORK/rerender.txt")
 echo "re-rendering of the $rendered input views from the fitted materials: relative L2 median $median, max $worst"
 check "every input view re-rendered" test "$rendered" -eq "$views"
-check "median relative L2 within the spec's noise-free 3 %" le "$median" 0.03
-check "every view's relative L2 within the spec's 6 %" le "$worst" 0.06
+check "median relative L2 within the noise-free 3 % of docs/brdffit.md §7" le "$median" 0.03
+check "every view's relative L2 within the 6 % of docs/brdffit.md §7" le "$worst" 0.06
 "$bin" synth --sphere 2 --materials 1 --views 1 --width 32 --height 24 -o "$WORK/other" 2>/dev/null
 run brdffit render --mesh "$WORK/other/mesh.ply" --svbrdf "$WORK/syn.ltw" --ltx "$WORK/syn.ltx" \
   --rig "$WORK/syn/rig.json" --image 0 -o "$WORK/never.exr"

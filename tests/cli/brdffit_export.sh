@@ -76,7 +76,7 @@ pycheck check "$WORK/out/fit.glb"
 expect_status 0
 expect_json '.textures' '["baseColor","metallicRoughness","normal"]'
 
-case_ "lumitexels --atlas: the home images' pixels packed (spec §2.9), smaller than the images"
+case_ "lumitexels --atlas: the home images' pixels packed (docs/brdffit.md §4), smaller than the images"
 run brdffit lumitexels --mesh "$WORK/syn/mesh.ply" --rig "$WORK/syn/rig.json" --atlas "$WORK/out/atlas.exr" \
   --report "$WORK/atlas_report.json" -o "$WORK/o_atlas.ltx"
 expect_status 0
@@ -103,7 +103,7 @@ expect_status 0
 expect_json '.materials | length' 3
 expect_json '[.materials[].pbrMetallicRoughness.baseColorTexture] | map(select(. != null)) | length' 0
 
-case_ "factor: a Lambertian BRDF is exactly rank 1 (spec §5 test 11)"
+case_ "factor: a Lambertian BRDF is exactly rank 1 (docs/brdffit.md §6, factor)"
 echo '{"model":"lafortune","lobes":0,"rho_d":[0.5,0.3,0.1],"Cxy":[],"Cz":[],"N":[]}' > "$WORK/lambert.json"
 run brdffit factor --brdf "$WORK/lambert.json" -o "$WORK/lam_" --theta-bins 16 --phi-bins 32
 expect_status 0

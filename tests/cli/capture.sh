@@ -2,7 +2,7 @@
 # capture plan/run/selftest and hdrmerge --manifest on the simulated station
 # (docs/capture.md §2-3, docs/hdrmerge.md §5, docs/capture.md §6): a whole session, its files against their recorded
 # SHA-256 (checked with sha256sum, an independent program), the rig JSON's light
-# positions against the frame change of §2.1 worked by hand, the silhouette mask's area
+# positions against the frame change of docs/capture.md §1 worked by hand, the silhouette mask's area
 # against the sphere's projection, faults mid-session (unplug -> 5, stuck move -> 7) and
 # --resume ending identical to an uninterrupted run except timestamps, bad input.
 source "$(dirname "$0")/lib.sh"
@@ -156,7 +156,7 @@ run capture run --station "$S" --plan "$P" -o sess --resume
 expect_status 0
 check "same manifest after the re-take" cmp <(jq -S "$norm" "$out") <(jq -S "$norm" "$WORK/a.json")
 
-case_ "the pipeline of the spec: capture run | hdrmerge --manifest -"
+case_ "the pipeline of capture(1): capture run | hdrmerge --manifest -"
 rm -rf "$WORK/b/sess/hdr"
 run_stdin "$WORK/a.json" hdrmerge --manifest - -o "$WORK/b/sess/hdr"
 expect_status 0

@@ -29,7 +29,7 @@ off() {  # off NAME NV "x y z ..." "a b c ..." -- writes $WORK/NAME.off
 
 off tet 4 "0 0 0 1 0 0 0 1 0 0 0 1" "0 1 2 0 3 1 0 2 3 1 3 2"
 
-case_ "golden string of the spec's tetrahedron"
+case_ "golden string of the corner tetrahedron (0, e1, e2, e3)"
 run ebcode --symbols "$WORK/tet.off"
 expect_status 0
 check "CRE" test "$(cat "$out")" = "CRE"

@@ -37,7 +37,7 @@ if [ -n "${FACEFIT_SFM:-}" ]; then
 fi
 
 if [ -n "${FACEFIT_BFM2009_NPZ:-}" ]; then
-  case_ "Basel 2009 via .npz (µm -> mm): protocol (b) of the spec, a small version"
+  case_ "Basel 2009 via .npz (µm -> mm): the η sweep of figs. 1.3-1.4 on faces sampled from it, small"
   run facefit convert --from npz "$FACEFIT_BFM2009_NPZ" --scale 0.001 -o "$WORK/bfm.mmb"
   expect_status 0
   run facefit info -m "$WORK/bfm.mmb"

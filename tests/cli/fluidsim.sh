@@ -18,7 +18,7 @@ cat >"$SCENE3D" <<'JSON'
   "forces": [ { "type": "buoyancy", "scalar": "density", "beta": 1.0 } ] }
 JSON
 
-case_ "check all: every analytic criterion of the spec holds"
+case_ "check all: every analytic criterion of docs/fluidsim.md §7 holds"
 run fluidsim check all --threads 1
 expect_status 0
 expect_json '.pass' 'true'

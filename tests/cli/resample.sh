@@ -18,7 +18,7 @@ near() {
 }
 
 # --- C1/C2: Fig. 10.10, box prefilter and box display at f = 1.375 f_S -------------------
-case_ "chain1d Fig. 10.10 (spec C1)"
+case_ "chain1d Fig. 10.10: box prefilter, box display, f = 1.375"
 run resample chain1d --prefilter box --recon box --freq 1.375
 expect_status 0
 near '.results[0].P' -0.21388 1e-5                 # sinc(1.375)
@@ -28,12 +28,12 @@ near '.results[0].A0' 0.045743 1e-5                # sinc(1.375)²
 near '.results[0].alias_rms' 0.208918 1e-5
 near '.results[0].mse' 0.954253 1e-5
 
-case_ "chain1d ideal low-pass removes the signal (spec C2)"
+case_ "chain1d ideal low-pass removes the signal (fig. 10.10's f)"
 run resample chain1d --prefilter ideal --recon box --freq 1.375
 near '.results[0].A0' 0 1e-12
 near '.results[0].mse' 1 1e-12
 
-case_ "chain1d: the dual prefilter beats box, ideal and p = r for a tent display (spec §3 table)"
+case_ "chain1d: the dual prefilter beats box, ideal and p = r for a tent display (§10.5)"
 run resample chain1d --prefilter dual:tent --recon tent --freq 0.25
 near '.results[0].mse' 0.0145 1e-4
 run resample chain1d --prefilter box --recon tent --freq 0.25
@@ -41,7 +41,7 @@ near '.results[0].mse' 0.0808 1e-4
 run resample chain1d --prefilter dual:bspline --recon bspline --freq 0.25
 near '.results[0].mse' 0.0002 1e-4
 
-case_ "chain1d --edge: Fig. 10.2 non-linear reconstruction (spec C3)"
+case_ "chain1d --edge: Fig. 10.2 non-linear reconstruction"
 run resample chain1d --edge 0.37
 near '.recovered[0]' 0.37 1e-12
 run resample chain1d --edge 0.2,1.7
@@ -64,7 +64,7 @@ run resample kernel --filter bspline
 near '."K_0.5"' 0.164256 1e-4    # (2/π)⁴
 near '."K_0.25"' 0.657040 1e-4   # sinc(¼)⁴
 
-case_ "kernel lanczos3 (spec Z1 table)"
+case_ "kernel lanczos3: passband, stopband and overshoot"
 run resample kernel --filter lanczos3
 near '."K_0.25"' 1.0114 1e-4
 near '."K_0.5"' 0.5017 1e-4
@@ -82,7 +82,7 @@ awk 'BEGIN { print "P2\n512 512\n255"; for (y = 0; y < 512; y++) { s = ""; for (
 "$F" "$WORK/cb.pgm" -o "$WORK/cb.png"
 histogram() { "$F" --to pgm --ascii <"$1" | awk 'NR > 3 { for (i = 1; i <= NF; i++) c[$i]++ } END { for (k in c) print k ":" c[k] }'; }
 
-case_ "checkerboard halved in linear light is 188 everywhere (spec G1)"
+case_ "checkerboard halved in linear light is 188 everywhere (§10.4.4)"
 run resample resize "$WORK/cb.png" --size 256x256 --filter box
 expect_status 0
 cp "$out" "$WORK/half.png"
@@ -93,10 +93,10 @@ run resample resize "$WORK/cb.png" --size 256x256 --filter box --colorspace code
 cp "$out" "$WORK/half_codes.png"
 check "every pixel 128" test "$(histogram "$WORK/half_codes.png")" = "128:65536"
 
-# --- Z1: zone plate 2048² -> 256², targets ±10 % (AE) and ±0.01 (PR) -----------------------
+# --- zone plate 2048² -> 256² (docs/resample.md, Figures reproduced), targets ±10 % (AE) and ±0.01 (PR) -----------------------
 "$R" render --scene zoneplate --param numax=0.125 --size 2048x2048 --spp 4 --pattern regular -o "$WORK/zp.pfm"
 zone() {
-  case_ "zone plate with $1 (spec Z1: AE $2, PR $3)"
+  case_ "zone plate 2048² -> 256² with $1 (AE $2, PR $3)"
   "$R" resize --size 256x256 --filter "$1" <"$WORK/zp.pfm" >"$WORK/zp_$1.pfm"
   run_stdin "$WORK/zp_$1.pfm" resample metrics --zoneplate numax=1,width=256,height=256
   expect_status 0
@@ -210,7 +210,7 @@ check "lanczos3 rings negative without it" jq -e '.min[0] < -1' "$out"
 run fconv --info "$WORK/noring.pfm"
 check "non-negative with --hicomp" jq -e '.min[0] >= 0' "$out"
 
-case_ "mipkernel: Σw = 1, periodic with 2^L, not shift-invariant (spec C4)"
+case_ "mipkernel: Σw = 1, periodic with 2^L, not shift-invariant (fig. 10.12)"
 run resample mipkernel --level 3 --pos 12.0,20.0,14.4
 expect_status 0
 check "weights sum to 1" awk -F, 'NR > 1 { a += $2; b += $3; c += $4 } END { exit !(a > 0.999999 && a < 1.000001 && c > 0.999999 && c < 1.000001) }' "$out"
@@ -223,7 +223,7 @@ run resample mip build "$WORK/half.png" -o "$WORK/lvl"
 expect_status 0
 check "level 8 is 1x1" test "$("$F" --info "$WORK/lvl_8.png" | jq -c '[.width, .height]')" = "[1,1]"
 
-case_ "normalmip keeps the slope variance of a sine height field (spec N1)"
+case_ "normalmip keeps the slope variance of a sine height field (§10.7)"
 "$R" render --scene sine --param f=0.0625 --size 1024x1024 --spp 1 --pattern regular -o "$WORK/h.pfm"
 run resample normalmip --height-map --height-scale 2 "$WORK/h.pfm" -o "$WORK/nm"
 expect_status 0
@@ -235,7 +235,7 @@ run resample normalmip --height-map --height-scale 2 --naive "$WORK/h.pfm" -o "$
 run fconv --info "$WORK/naive_4_cov.exr"
 near '.max[0]' 0 1e-12
 
-case_ "texture: EWA and trilinear beat the aliasing lookups on an oblique checker plane (spec T1, small)"
+case_ "texture: EWA and trilinear beat the aliasing lookups on an oblique checker plane (§10.6, small)"
 awk 'BEGIN { print "P2\n256 256\n255"; for (y = 0; y < 256; y++) { s = ""; for (x = 0; x < 256; x++) s = s ((int(x / 8) + int(y / 8)) % 2 ? "255 " : "0 "); print s } }' >"$WORK/chk.pgm"
 MAP=plane:h=1,pitch=30,fov=60,period=16
 "$R" texture --tex "$WORK/chk.pgm" --map $MAP --size 64x48 --aniso-mask 4 -o "$WORK/mask.pgm"

@@ -97,7 +97,7 @@ for m in head brain_filled ventricles; do check "mask $m written" test -s "$WORK
 "$S" eval --ref "$WORK/hbv.nii.gz" --seg "$WORK/masks/ventricles.nii.gz" --map "v=1" --ref-map "v=6" >"$WORK/mask.tsv"
 check "the ventricles mask is the label-6 region" test "$(dice_of v "$WORK/mask.tsv")" = 1.0000
 check "label table row of the ventricles (index name R G B A)" grep -qx '6 ventricles 30 60 255 255' "$WORK/labels.txt"
-check "label table has the 11 labels of spec 2.6" test "$(grep -vc '^#' "$WORK/labels.txt")" = 11
+check "label table has the built-in knowledge base's 11 labels" test "$(grep -vc '^#' "$WORK/labels.txt")" = 11
 run segbrain run "$P" --objects head,hippocampus
 expect_clean_failure 2 segbrain
 expect_stderr_has "no rules for 'hippocampus'"

@@ -283,7 +283,7 @@ TEST(BrdffitBake, NormalMapDecodesToTheRefinedNormalInTheGltfFrame) {
   EXPECT_GT(checked, 100);
 }
 
-TEST(BrdffitPbr, RoughnessAndBlendFollowTheSpecMapping) {
+TEST(BrdffitPbr, RoughnessAndBlendFollowTheDocumentedMapping) {
   EXPECT_NEAR(pbr_roughness(lobe_brdf(0.5, 40)), std::sqrt(2.0 / 42.0), 1e-12);
   EXPECT_EQ(pbr_roughness(LafortuneBrdf{}), 1.0);
   const LafortuneBrdf a = lobe_brdf(0.4, 10), b = lobe_brdf(0.2, 200);

@@ -71,7 +71,7 @@ TEST(CalibLights, ExactOutlineAndHighlightGiveExactRay) {
   }
 }
 
-TEST(CalibLights, RenderedSpheresWithinSpec) {
+TEST(CalibLights, RenderedSpheresWithinTolerance) {
   const test::SphereScene scene;
   const Intrinsics cam = test::camera(1600, 1280, 960, -0.05, 0.0);
   const cv::Mat image = render_spheres(cam, scene.spheres, scene.light, 2.0, 3);

@@ -39,7 +39,7 @@ TEST(CalibTurntable, ExactPosesGiveTheTruth) {
   for (double r : cal.circle_rms_mm) EXPECT_LT(r, 1e-6);
 }
 
-TEST(CalibTurntable, RenderedViewsWithinSpec) {
+TEST(CalibTurntable, RenderedViewsWithinTolerance) {
   const test::TurntableScene scene;
   const Intrinsics cam = test::camera(900, 800, 600);
   std::vector<Pose> poses;

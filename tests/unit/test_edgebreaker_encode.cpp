@@ -36,7 +36,7 @@ void expect_counting_identities(const eb::Faces& m) {
 
 }  // namespace
 
-TEST(EdgebreakerEncode, GoldenStringsOfTheSpec) {
+TEST(EdgebreakerEncode, GoldenStringsOfSmallPolyhedra) {
   const eb::Faces tetra = eb::tetrahedron();
   EXPECT_EQ(to_string(encode(tetra.triangles, tetra.vertex_count).clers), "CRE");
   const eb::Faces octa = eb::cgal_octahedron(), ico = eb::cgal_icosahedron(), cube = eb::cgal_cube();

@@ -9,7 +9,7 @@ using namespace fest::fluidsim;
 using fest::test::expect_bad_input;
 using nlohmann::json;
 
-TEST(FluidsimScene, DefaultsFollowTheSpec) {
+TEST(FluidsimScene, DefaultsAreThoseOfTheManPage) {
   const Scene s = parse_scene(json::parse(R"({"dims": [31, 15, 15]})"), "s.json");
   EXPECT_EQ(s.dim, 3);
   EXPECT_DOUBLE_EQ(s.frame_dt, 0.04);

@@ -46,7 +46,7 @@ Response true_response(int channels) {
   return r;
 }
 
-TEST(HdrMerge, RecoveredResponseGivesRadianceWithinSpec) {
+TEST(HdrMerge, RecoveredResponseGivesRadianceWithinTolerance) {
   const cv::Mat truth = synthetic_radiance(160, 120, 3);
   const ExposureStack stack = bracket(truth);
   const MergeResult m = merge_debevec(stack, recover_response_debevec(stack), 2);

@@ -29,7 +29,7 @@ TEST(HdrRobertson, RecoversGammaResponseWithinTwoPercent) {
   }
 }
 
-TEST(HdrRobertson, MergedRadianceWithinSpec) {
+TEST(HdrRobertson, MergedRadianceWithinTolerance) {
   const cv::Mat truth = synthetic_radiance(160, 120, 1);
   const ExposureStack stack = bracket(truth);
   const MergeResult m = merge_debevec(stack, recover_response_robertson(stack));

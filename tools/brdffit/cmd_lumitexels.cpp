@@ -70,7 +70,7 @@ int run_lumitexels(const LumitexelArgs& a) {
   header["dropped_lumitexels"] = rep.dropped;
   header["min_samples"] = o.min_samples;
   const std::vector<std::uint8_t> bytes = brdffit::encode_ltx(set, header);
-  // --atlas (spec §2.9): the photographs' pixels of every triangle's home image, packed.
+  // --atlas (docs/brdffit.md §4): the photographs' pixels of every triangle's home image, packed.
   std::string atlas_exr, atlas_ply;
   nlohmann::json atlas_report;
   if (!a.atlas.empty()) {

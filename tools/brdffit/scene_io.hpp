@@ -1,6 +1,6 @@
 #pragma once
 // brdffit's files <-> lib types: meshes (through formats/), cam.json, light.json, the rig
-// JSON of capture.md §2.8, brdf.json and the materials file, HDR images and masks.
+// JSON of fest-capture(5) (RIG), brdf.json and the materials file, HDR images and masks.
 
 #include <cstdint>
 #include <string>

@@ -25,7 +25,7 @@ extern "C" void on_signal(int) { interrupted.store(true); }
 
 // Assumed table speed for --dry-run, which opens no device.
 constexpr double kDryRunDegPerS = 30;
-constexpr double kPerShotOverheadS = 0.05;  // spec §7: <= 50 ms per shot
+constexpr double kPerShotOverheadS = 0.05;  // docs/capture.md §2: <= 50 ms per shot
 
 std::string extension_for(const std::string& format, bool allow_jpeg) {
   if (format == "jpeg") {

@@ -1,4 +1,4 @@
-// feshape fit: points -> model hierarchy (docs/feshape.md §2.9), the final level on the
+// feshape fit: points -> model hierarchy (docs/feshape.md §2.3, §4), the final level on the
 // output, every level with --levels-out, the per-level table with --report.
 #include <algorithm>
 #include <cmath>

@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
   s->add_option("mesh", st.input, "Mesh: PLY, OBJ, OFF, STL, Draco (- = stdin)");
   s->add_option("--report", st.report, "Also write the JSON to this file");
 
-  // `isosurf IN --iso V` means `isosurf exact IN --iso V` (spec §4).
+  // `isosurf IN --iso V` means `isosurf exact IN --iso V` (isosurf(1), SYNOPSIS: `exact` may be left out).
   std::vector<char*> args(argv, argv + argc);
   bool named = false, meta = false;
   for (int i = 1; i < argc; ++i) {

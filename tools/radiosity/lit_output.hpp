@@ -1,5 +1,5 @@
 #pragma once
-// The lit scene as PLY (docs/radiosity.md §2.6): vertex x y z nx ny nz, float rad_r rad_g
+// The lit scene as PLY (docs/radiosity.md §6): vertex x y z nx ny nz, float rad_r rad_g
 // rad_b (B), float irr_r irr_g irr_b (H), uchar red green blue; face object_id (int) and
 // level (uchar); header comments name the objects in id order.
 

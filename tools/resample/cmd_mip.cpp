@@ -24,7 +24,7 @@ int run_mip(const MipArgs& a) {
   const LoadedImage in = load_image(a.input);
   const bool is_float = in.image.pixels.depth() == CV_32F;
   const auto f = output_format(a.to, is_float ? "x.exr" : "x.png", in.image.pixels.depth());
-  // Every level is made from the previous one (the pyramid of §2.7) and written only
+  // Every level is made from the previous one (docs/resample.md, "Mip-mapping") and written only
   // once all of them exist: a failure leaves no partial pyramid behind.
   std::vector<Image> levels{in.image};
   while (levels.back().pixels.cols > 1 || levels.back().pixels.rows > 1) {

@@ -1,4 +1,4 @@
-// softobj field: f and grad f at given points (docs/softobj.md §7.1), for tests.
+// softobj field: f and grad f at given points (the field of docs/softobj.md §1), for tests.
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/table.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The baseline polygoniser (docs/softobj.md §3.6): f sampled on a regular grid over the
+// The baseline polygoniser (`--method mc`, docs/softobj.md §3): f sampled on a regular grid over the
 // skeleton's bounding box grown by rho + 2h, extracted with fest's exact marching cubes
 // (lib/isosurface), every vertex then Newton-projected onto f = V*. Any topology; uniform
 // resolution.

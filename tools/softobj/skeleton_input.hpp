@@ -1,6 +1,6 @@
 #pragma once
 // Reading a skeleton: the scene JSON, or a mesh (OBJ/OFF/PLY...) whose triangles become
-// charges (docs/softobj.md §7.2).
+// charges (docs/softobj.md §1).
 
 #include <string>
 
