@@ -59,6 +59,7 @@ TEST_TOOL_PKGS=(
   assimp-utils assimp-testmodels  # `assimp info`: independent mesh reader (tests/interop, fconv_assimp) and its test models
   libmeshoptimizer-dev libcgal-dev   # anchors of tests/bench/bench_decimate (meshopt_simplify, CGAL edge_collapse); built only when found
   netpbm openctm-tools hyperfine   # tests/bench/batch.sh and startup.sh only: netpbm and ctmconv anchors, hyperfine timings
+  zzuf                       # tests/fuzz/mutate.sh: seeded bit-flip mutations of every input kind (run by hand)
 )
 
 # --- arguments ----------------------------------------------------------------
