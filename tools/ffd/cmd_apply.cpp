@@ -28,8 +28,7 @@ namespace fest::ffd_tool {
 
 int run_apply(const ApplyOptions& o) {
   const int threads = resolve_threads(o.threads);
-  const ffd::Outside outside = outside_of(o.outside);
-  if (o.normals != "recompute" && o.normals != "jacobian") throw usage_error("--normals: unknown '{}' (recompute, jacobian)", o.normals);
+  const ffd::Outside outside = o.outside;
   Lattice lattice = load_lattice(o.lattice);
   check_size(lattice, o.allow_large);
 

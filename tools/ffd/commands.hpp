@@ -5,12 +5,19 @@
 #include <string>
 #include <vector>
 
+#include "ffd/lattice.hpp"
+
 namespace fest::ffd_tool {
+
+// --normals: vertex normals recomputed from the faces, or carried by J^-T (docs/ffd.md).
+enum class NormalsMode { recompute, jacobian };
+// --to of convert: the lattice file written.
+enum class LatticeFormat { json, pygem };
 
 struct InitOptions {
   std::string input = "-", output = "-";
   std::vector<int> dims{4, 4, 4};
-  std::string basis = "bernstein";
+  ffd::Basis basis = ffd::Basis::bernstein;
   double pad = 0.05;
 };
 
@@ -20,8 +27,8 @@ struct ApplyOptions {
   std::vector<std::string> inputs;     // NAME=FILE, each an object
   std::vector<std::string> objects;    // NAME=deform|rigid|ignore
   std::string joints, fixed_cp;
-  std::string outside = "none";        // none | clamp
-  std::string normals = "recompute";   // recompute | jacobian
+  ffd::Outside outside = ffd::Outside::none;
+  NormalsMode normals = NormalsMode::recompute;
   std::string to;
   std::string report;
   bool strict = false, allow_large = false, ascii = false;
@@ -30,7 +37,7 @@ struct ApplyOptions {
 
 struct JacobianOptions {
   std::string lattice, input = "-", output = "-";
-  std::string outside = "none";
+  ffd::Outside outside = ffd::Outside::none;
   int threads = 0;
 };
 
@@ -40,7 +47,7 @@ struct LatticeMeshOptions {
 
 struct ConvertOptions {
   std::string input = "-", output = "-";
-  std::string to = "json";  // json | pygem
+  LatticeFormat to = LatticeFormat::json;
 };
 
 struct AnimateOptions {
@@ -49,7 +56,7 @@ struct AnimateOptions {
   std::string output;                  // pattern with %d (frame number)
   double fps = 30;
   std::string manifest = "-";
-  std::string outside = "none";
+  ffd::Outside outside = ffd::Outside::none;
   int threads = 0;
 };
 
