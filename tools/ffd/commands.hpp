@@ -11,6 +11,17 @@ namespace fest::ffd_tool {
 
 // --normals: vertex normals recomputed from the faces, or carried by J^-T (docs/ffd.md).
 enum class NormalsMode { recompute, jacobian };
+// --object NAME=MODE: deformed by the lattice, moved rigidly (docs/ffd.md), or left as is.
+enum class ObjectMode { deform, rigid, ignore };
+const char* object_mode_name(ObjectMode m);
+struct NamedInput {   // --in NAME=FILE
+  std::string name, path;
+};
+struct ObjectRole {   // --object NAME=MODE
+  std::string name;
+  ObjectMode mode = ObjectMode::deform;
+};
+
 // --to of convert: the lattice file written.
 enum class LatticeFormat { json, pygem };
 
@@ -24,8 +35,8 @@ struct InitOptions {
 struct ApplyOptions {
   std::string lattice;                 // JSON or PyGeM .prm (recognised by content)
   std::string input = "-", output = "-";
-  std::vector<std::string> inputs;     // NAME=FILE, each an object
-  std::vector<std::string> objects;    // NAME=deform|rigid|ignore
+  std::vector<NamedInput> inputs;      // --in: each an object
+  std::vector<ObjectRole> objects;     // --object
   std::string joints, fixed_cp;
   ffd::Outside outside = ffd::Outside::none;
   NormalsMode normals = NormalsMode::recompute;

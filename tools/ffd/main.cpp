@@ -5,6 +5,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <string>
+#include <vector>
 
 #include "cli/cli.hpp"
 #include "commands.hpp"
@@ -50,8 +51,30 @@ int main(int argc, char** argv) {
   sa->add_option("input", ap.input, "Mesh (- : standard input), when no --in is given");
   sa->add_option("-o,--output", ap.output, "Output mesh; with several objects a pattern with %s (the name)");
   sa->add_option("--lattice", ap.lattice, "Lattice file: JSON or PyGeM .prm")->required();
-  sa->add_option("--in", ap.inputs, "NAME=FILE: an object of its own (repeatable)");
-  sa->add_option("--object", ap.objects, "NAME=deform|rigid|ignore (repeatable)");
+  sa->add_option_function<std::vector<std::string>>(
+      "--in",
+      [&ap](const std::vector<std::string>& specs) {
+        for (const std::string& spec : specs) {
+          const std::size_t eq = spec.find('=');
+          if (eq == std::string::npos || eq == 0) throw fest::usage_error("--in takes NAME=FILE ('{}')", spec);
+          ap.inputs.push_back({spec.substr(0, eq), spec.substr(eq + 1)});
+        }
+      },
+      "NAME=FILE: an object of its own (repeatable)");
+  sa->add_option_function<std::vector<std::string>>(
+      "--object",
+      [&ap](const std::vector<std::string>& specs) {
+        for (const std::string& spec : specs) {
+          const std::size_t eq = spec.find('=');
+          if (eq == std::string::npos) throw fest::usage_error("--object takes NAME=deform|rigid|ignore ('{}')", spec);
+          const std::string name = spec.substr(0, eq), mode = spec.substr(eq + 1);
+          if (mode == "deform") ap.objects.push_back({name, ObjectMode::deform});
+          else if (mode == "rigid") ap.objects.push_back({name, ObjectMode::rigid});
+          else if (mode == "ignore") ap.objects.push_back({name, ObjectMode::ignore});
+          else throw fest::usage_error("--object {}: unknown mode '{}'", name, mode);
+        }
+      },
+      "NAME=deform|rigid|ignore (repeatable)");
   sa->add_option("--joints", ap.joints, "Joints 'name x y z tx ty tz' kept exactly on their targets");
   sa->add_option("--fixed-cp", ap.fixed_cp, "Control points 'i j k' the joint correction must not move");
   add_outside(sa, ap.outside, "Points outside the box: none (unchanged) or clamp");
