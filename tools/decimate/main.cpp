@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
@@ -40,25 +41,13 @@ int main(int argc, char** argv) {
   app.add_flag("--no-attributes", o.no_attributes, "Quadrics over positions only (ignore normals, colours, texcoords)");
   app.add_option("--attribute-weight", o.attribute_weight, "Weight of attribute differences (in bbox diagonals)")
       ->default_val(1.0);
-  app.add_option_function<std::string>(
-         "--placement",
-         [&o](const std::string& word) {
-           if (word == "optimal") o.optimal_placement = true;
-           else if (word == "vertex") o.optimal_placement = false;
-           else throw fest::usage_error("--placement: unknown '{}' (optimal, vertex)", word);
-         },
-         "optimal (quadric minimiser) or vertex (half-edge collapse)")
+  fest::cli::word_option(app, "--placement", o.optimal_placement, {{"optimal", true}, {"vertex", false}},
+                         "optimal (quadric minimiser) or vertex (half-edge collapse)")
       ->default_str("optimal");
-  app.add_option_function<std::string>(
-         "--weighting",
-         [&o](const std::string& word) {
-           using fest::decimate::Weighting;
-           if (word == "sqrt-area") o.weighting = Weighting::sqrt_area;
-           else if (word == "area") o.weighting = Weighting::area;
-           else if (word == "uniform") o.weighting = Weighting::uniform;
-           else throw fest::usage_error("--weighting: unknown '{}' (sqrt-area, area, uniform)", word);
-         },
-         "Plane weights of the quadrics: sqrt-area (default), area (GH97), uniform")
+  using fest::decimate::Weighting;
+  fest::cli::word_option(app, "--weighting", o.weighting,
+                         {{"sqrt-area", Weighting::sqrt_area}, {"area", Weighting::area}, {"uniform", Weighting::uniform}},
+                         "Plane weights of the quadrics: sqrt-area (default), area (GH97), uniform")
       ->default_str("sqrt-area");
   app.add_flag("--drop-nonmanifold", o.drop_nonmanifold, "Drop faces the reader could not attach instead of refusing");
   app.add_flag("--ascii", o.ascii, "ASCII PLY/STL output");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -16,14 +17,8 @@ using namespace fest::ffd_tool;
 
 // --outside of apply, jacobian and animate: none (points outside the box stay) or clamp.
 void add_outside(CLI::App* cmd, fest::ffd::Outside& outside, const char* help) {
-  cmd->add_option_function<std::string>(
-      "--outside",
-      [&outside](const std::string& word) {
-        if (word == "none") outside = fest::ffd::Outside::none;
-        else if (word == "clamp") outside = fest::ffd::Outside::clamp;
-        else throw fest::usage_error("--outside: unknown '{}' (none, clamp)", word);
-      },
-      help);
+  fest::cli::word_option(*cmd, "--outside", outside,
+                         {{"none", fest::ffd::Outside::none}, {"clamp", fest::ffd::Outside::clamp}}, help);
 }
 
 }  // namespace
@@ -78,14 +73,9 @@ int main(int argc, char** argv) {
   sa->add_option("--joints", ap.joints, "Joints 'name x y z tx ty tz' kept exactly on their targets");
   sa->add_option("--fixed-cp", ap.fixed_cp, "Control points 'i j k' the joint correction must not move");
   add_outside(sa, ap.outside, "Points outside the box: none (unchanged) or clamp");
-  sa->add_option_function<std::string>(
-      "--normals",
-      [&ap](const std::string& word) {
-        if (word == "recompute") ap.normals = NormalsMode::recompute;
-        else if (word == "jacobian") ap.normals = NormalsMode::jacobian;
-        else throw fest::usage_error("--normals: unknown '{}' (recompute, jacobian)", word);
-      },
-      "Vertex normals: recompute, or jacobian (J^-T n)");
+  fest::cli::word_option(*sa, "--normals", ap.normals,
+                         {{"recompute", NormalsMode::recompute}, {"jacobian", NormalsMode::jacobian}},
+                         "Vertex normals: recompute, or jacobian (J^-T n)");
   sa->add_option("--to", ap.to, "Output format (ply, off, obj, stl); default from -o, else the input's");
   sa->add_option("--report", ap.report, "JSON: joint errors, det J range, rigid-fit RMS, straddling faces, time");
   sa->add_flag("--strict", ap.strict, "More joints than the lattice can satisfy is an error");
@@ -109,14 +99,8 @@ int main(int argc, char** argv) {
   CLI::App* sc = app.add_subcommand("convert", "Lattice JSON <-> PyGeM .prm (input recognised by content)");
   sc->add_option("input", cv.input, "Lattice file (- : standard input)");
   sc->add_option("-o,--output", cv.output, "Output (- : standard output)");
-  sc->add_option_function<std::string>(
-      "--to",
-      [&cv](const std::string& word) {
-        if (word == "json") cv.to = LatticeFormat::json;
-        else if (word == "pygem") cv.to = LatticeFormat::pygem;
-        else throw fest::usage_error("--to: unknown '{}' (json, pygem)", word);
-      },
-      "json or pygem");
+  fest::cli::word_option(*sc, "--to", cv.to, {{"json", LatticeFormat::json}, {"pygem", LatticeFormat::pygem}},
+                         "json or pygem");
 
   AnimateOptions an;
   CLI::App* sn = app.add_subcommand("animate", "Frames from key lattices, each deformed from the rest mesh");
