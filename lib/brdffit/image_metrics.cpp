@@ -6,13 +6,10 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/error_stats.hpp"
+#include "core/srgb.hpp"
 
 namespace fest::brdffit {
-
-double srgb_encode(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
 
 RenderError compare_renderings(const cv::Mat& photo, const cv::Mat& rendering, const cv::Mat& mask) {
   if (photo.size() != rendering.size())
@@ -41,7 +38,9 @@ RenderError compare_renderings(const cv::Mat& photo, const cv::Mat& rendering, c
   const std::size_t q = std::min(luminance.size() - 1, static_cast<std::size_t>(0.99 * luminance.size()));
   std::nth_element(luminance.begin(), luminance.begin() + static_cast<long>(q), luminance.end());
   e.exposure = luminance[q] > 0 ? 1.0 / luminance[q] : 1.0;
-  double se = 0, sp = 0, st = 0;
+  // Linear radiance differences, photo energy, tone-mapped differences.
+  ErrorAccumulator linear, tone_mapped;
+  double sp = 0;
   for (int y = 0; y < photo.rows; ++y)
     for (int x = 0; x < photo.cols; ++x) {
       if (!inside(x, y)) continue;
@@ -49,18 +48,16 @@ RenderError compare_renderings(const cv::Mat& photo, const cv::Mat& rendering, c
       const cv::Vec3f &p = photo.at<cv::Vec3f>(y, x), &r = rendering.at<cv::Vec3f>(y, x);
       cv::Vec3f& err = e.error.at<cv::Vec3f>(y, x);
       for (int c = 0; c < 3; ++c) {
-        const double d = static_cast<double>(p[c]) - r[c];
-        se += d * d;
+        const double d = std::abs(static_cast<double>(p[c]) - r[c]);
+        linear.add(d);
         sp += static_cast<double>(p[c]) * p[c];
-        const double td = srgb_encode(e.exposure * p[c]) - srgb_encode(e.exposure * r[c]);
-        st += td * td;
-        err[c] = static_cast<float>(std::abs(d));
+        tone_mapped.add(std::abs(linear_to_srgb(e.exposure * p[c]) - linear_to_srgb(e.exposure * r[c])));
+        err[c] = static_cast<float>(d);
       }
     }
-  const double m = 3.0 * static_cast<double>(e.pixels);
-  e.rmse = std::sqrt(se / m);
-  e.relative_l2 = sp > 0 ? std::sqrt(se / sp) : std::sqrt(se);
-  e.psnr_db = st > 0 ? 10 * std::log10(m / st) : std::numeric_limits<double>::infinity();
+  e.rmse = linear.rmse();
+  e.relative_l2 = sp > 0 ? std::sqrt(linear.sum_sq / sp) : std::sqrt(linear.sum_sq);
+  e.psnr_db = tone_mapped.psnr(1.0);
   return e;
 }
 

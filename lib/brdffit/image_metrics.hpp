@@ -20,7 +20,4 @@ struct RenderError {
 // an empty mask.
 RenderError compare_renderings(const cv::Mat& photo, const cv::Mat& rendering, const cv::Mat& mask);
 
-// sRGB encoding of linear values in [0, 1] (IEC 61966-2-1).
-double srgb_encode(double linear);
-
 }  // namespace fest::brdffit

@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
-#include "reflectance/parallel_rows.hpp"
+#include "core/parallel_for.hpp"
 #include "reflectance/rasterizer.hpp"
 
 namespace fest::brdffit {
@@ -179,11 +179,11 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
     const reflectance::ShadowMap shadow =
         reflectance::make_shadow_map(mesh, view.light.position, shadow_res, eps, o.threads);
     const Eigen::Vector3d eye = view.camera.centre();
-    const int bands = reflectance::band_count(static_cast<int>(points.size()), o.threads);
+    const int bands = band_count(static_cast<int>(points.size()), o.threads);
     std::vector<std::vector<PendingSample>> band_out(static_cast<std::size_t>(bands));
     std::vector<LumitexelReport> band_rep(static_cast<std::size_t>(bands));
     // Bands are contiguous and concatenated in order: the result is thread-count independent.
-    reflectance::parallel_bands_indexed(static_cast<int>(points.size()), bands, [&](int band, int begin, int end) {
+    parallel_bands_indexed(static_cast<int>(points.size()), bands, [&](int band, int begin, int end) {
       auto& out = band_out[static_cast<std::size_t>(band)];
       auto& r = band_rep[static_cast<std::size_t>(band)];
       for (int i = begin; i < end; ++i) {

@@ -13,6 +13,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/word_choice.hpp"
+
 namespace fest::cli {
 
 template <class E>
@@ -31,6 +33,18 @@ CLI::Option* enum_words(CLI::Option* option, std::vector<std::pair<std::string, 
       "value in {" + names + "}"));
   option->type_name("TEXT");
   return option;
+}
+
+// A flag whose word is checked as it is parsed, worded "FLAG: unknown 'word' (w1, w2, ...)"
+// (exit 2) where a tool's tests assert that text; the value it names goes to `target`.
+//
+//   fest::cli::word_option(*cmd, "--outside", opts.outside, {{"none", Outside::none}, {"clamp", Outside::clamp}}, "...");
+template <class T>
+CLI::Option* word_option(CLI::App& app, const std::string& flag, T& target, std::vector<std::pair<std::string, T>> words,
+                         const std::string& help) {
+  return app.add_option_function<std::string>(
+      flag, [&target, words, flag](const std::string& word) { target = word_choice(word, words, flag.c_str(), ""); },
+      help);
 }
 
 }  // namespace fest::cli

@@ -12,8 +12,8 @@
 namespace fest::cli {
 
 // The value a word names, for a flag read by hand (after CLI11): a usage error
-// "FLAG: unknown NOUN 'word' (w1, w2, ...)" when it names none. The words are listed in
-// the order given.
+// "FLAG: unknown NOUN 'word' (w1, w2, ...)" when it names none ("FLAG: unknown 'word'
+// (...)" when the noun is empty). The words are listed in the order given.
 template <class T>
 T word_choice(const std::string& word, const std::vector<std::pair<std::string, T>>& words, const char* flag,
               const char* noun) {
@@ -22,6 +22,7 @@ T word_choice(const std::string& word, const std::vector<std::pair<std::string, 
     if (w.first == word) return w.second;
     names += (names.empty() ? "" : ", ") + w.first;
   }
+  if (!*noun) throw usage_error("{}: unknown '{}' ({})", flag, word, names);
   throw usage_error("{}: unknown {} '{}' ({})", flag, noun, word, names);
 }
 

@@ -27,6 +27,13 @@ struct ErrorAccumulator {
     sum_sq += abs_difference * abs_difference;
     ++n;
   }
+  // Another accumulator's differences after these (partial sums combined in a fixed
+  // order keep results independent of how the work was split).
+  void merge(const ErrorAccumulator& other) {
+    max_abs = std::max(max_abs, other.max_abs);
+    sum_sq += other.sum_sq;
+    n += other.n;
+  }
   double rmse() const { return n ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0; }
   double psnr(double peak) const { return psnr_db(rmse(), peak); }
 };

@@ -40,4 +40,28 @@ void parallel_for(std::size_t count, int threads, const Job& job) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// Contiguous bands of [0, count), one per thread (at most `threads`, at least one):
+// body(band, begin, end) with band in [0, band_count(count, threads)), each band processed
+// in order by one thread. For work whose setup per band is costly (a rasteriser scans
+// every triangle once per band of rows); results that depend only on the item (a pixel
+// row) are the same for every thread count.
+inline int band_count(int count, int threads) { return std::max(1, std::min(threads, count)); }
+
+template <typename Body>
+void parallel_bands_indexed(int count, int threads, const Body& body) {
+  if (count <= 0) return;
+  const int bands = band_count(count, threads);
+  parallel_for(static_cast<std::size_t>(bands), bands, [&](std::size_t k) {
+    const int band = static_cast<int>(k);
+    const int begin = static_cast<int>(static_cast<long long>(count) * band / bands);
+    const int end = static_cast<int>(static_cast<long long>(count) * (band + 1) / bands);
+    body(band, begin, end);
+  });
+}
+
+template <typename Body>  // body(begin, end)
+void parallel_bands(int count, int threads, const Body& body) {
+  parallel_bands_indexed(count, threads, [&body](int, int begin, int end) { body(begin, end); });
+}
+
 }  // namespace fest

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/error.hpp"
-#include "reflectance/parallel_rows.hpp"
+#include "core/parallel_for.hpp"
 
 namespace fest::reflectance {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "reflectance/parallel_rows.hpp"
+#include "core/parallel_for.hpp"
 
 namespace fest::reflectance {
 

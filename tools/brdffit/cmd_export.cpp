@@ -15,6 +15,7 @@
 #include "brdffit/texture_atlas.hpp"
 #include "brdffit/texture_bake.hpp"
 #include "commands.hpp"
+#include "core/srgb.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
@@ -38,7 +39,7 @@ PngTextures encode_maps(const brdffit::PbrMaps& m, bool normal_map) {
     return out;
   };
   PngTextures t;
-  t.base_color = encode_png(to8(m.base_color, [](float v) { return brdffit::srgb_encode(v); }));
+  t.base_color = encode_png(to8(m.base_color, [](float v) { return linear_to_srgb(v); }));
   t.metallic_roughness = encode_png(to8(m.metallic_roughness, [](float v) { return static_cast<double>(v); }));
   if (normal_map) t.normal = encode_png(to8(m.normal, [](float v) { return 0.5 * v + 0.5; }));
   return t;

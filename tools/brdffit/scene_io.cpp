@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "brdffit/image_metrics.hpp"
+#include "core/srgb.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/sha256.hpp"
@@ -358,7 +359,7 @@ cv::Mat tonemap(const cv::Mat& rgb, double exposure) {
       const cv::Vec3f& p = rgb.at<cv::Vec3f>(y, x);
       cv::Vec3b& o = out.at<cv::Vec3b>(y, x);
       for (int c = 0; c < 3; ++c)
-        o[c] = static_cast<std::uint8_t>(std::lround(255 * brdffit::srgb_encode(std::isfinite(p[c]) ? exposure * p[c] : 0)));
+        o[c] = static_cast<std::uint8_t>(std::lround(255 * linear_to_srgb(std::isfinite(p[c]) ? exposure * p[c] : 0)));
     }
   return out;
 }

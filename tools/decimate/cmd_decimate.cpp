@@ -1,7 +1,5 @@
 #include "commands.hpp"
 
-#include <sstream>
-
 #include <nlohmann/json.hpp>
 
 #include "compare/mesh_compare.hpp"
@@ -34,26 +32,16 @@ decimate::SimplifyOptions simplify_options(const Options& o, const Mesh& mesh) {
     s.max_error = o.error_rel * (mesh.n_vertices() ? (hi - lo).norm() : 0.0);
   }
   if (s.target_faces == 0 && s.max_error < 0) throw usage_error("nothing to stop at: give --faces, --ratio, --error or --error-rel");
-  std::stringstream list(o.lock);
-  std::string item;
-  while (std::getline(list, item, ',')) {
-    if (item == "boundary") s.lock_boundary = true;
-    else if (item == "features") s.lock_features = true;
-    else if (!item.empty()) throw usage_error("--lock: unknown '{}' (boundary, features)", item);
-  }
+  s.lock_boundary = o.lock_boundary;
+  s.lock_features = o.lock_features;
   if (!(o.feature_angle > 0 && o.feature_angle <= 180)) throw usage_error("--feature-angle {} is outside (0, 180]", o.feature_angle);
   s.feature_angle_deg = o.feature_angle;
   if (s.lock_features && o.feature_angle >= 180) throw usage_error("--lock features needs --feature-angle below 180");
   s.use_normals = s.use_colors = s.use_texcoords = !o.no_attributes;
   if (!(o.attribute_weight >= 0)) throw usage_error("--attribute-weight must be >= 0");
   s.attribute_weight = o.attribute_weight;
-  if (o.placement == "optimal") s.optimal_placement = true;
-  else if (o.placement == "vertex") s.optimal_placement = false;
-  else throw usage_error("--placement: unknown '{}' (optimal, vertex)", o.placement);
-  if (o.weighting == "sqrt-area") s.weighting = decimate::Weighting::sqrt_area;
-  else if (o.weighting == "area") s.weighting = decimate::Weighting::area;
-  else if (o.weighting == "uniform") s.weighting = decimate::Weighting::uniform;
-  else throw usage_error("--weighting: unknown '{}' (sqrt-area, area, uniform)", o.weighting);
+  s.optimal_placement = o.optimal_placement;
+  s.weighting = o.weighting;
   return s;
 }
 

@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <string>
 
+#include "decimate/simplify.hpp"
+
 namespace fest::decimate_tool {
 
 struct Options {
@@ -16,12 +18,13 @@ struct Options {
   double ratio = 0;               // target as a fraction of the input faces (0 < r <= 1)
   double error = -1;              // error bound, absolute length
   double error_rel = -1;          // error bound as a fraction of the bbox diagonal
-  std::string lock;               // comma list of boundary, features
+  bool lock_boundary = false;     // --lock boundary
+  bool lock_features = false;     // --lock features
   double feature_angle = 180;     // degrees
   bool no_attributes = false;
   double attribute_weight = 1.0;
-  std::string placement = "optimal";  // optimal | vertex
-  std::string weighting = "sqrt-area";  // sqrt-area | area | uniform
+  bool optimal_placement = true;  // --placement optimal (quadric minimiser), else vertex
+  decimate::Weighting weighting = decimate::Weighting::sqrt_area;
   bool drop_nonmanifold = false;
   bool ascii = false;
   std::string report;             // JSON with counts, time, Hausdorff and RMS

@@ -3,7 +3,11 @@
 
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <sstream>
+#include <string>
+
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
@@ -20,16 +24,31 @@ int main(int argc, char** argv) {
   app.add_option("--ratio", o.ratio, "Target face count as a fraction of the input's (0 < r <= 1)");
   app.add_option("--error", o.error, "Stop before a collapse whose error estimate exceeds this length");
   app.add_option("--error-rel", o.error_rel, "The same, as a fraction of the bounding-box diagonal");
-  app.add_option("--lock", o.lock, "Vertices that never move: boundary, features (comma-separated)");
+  app.add_option_function<std::string>(
+      "--lock",
+      [&o](const std::string& list) {
+        std::stringstream items(list);
+        std::string item;
+        while (std::getline(items, item, ',')) {
+          if (item == "boundary") o.lock_boundary = true;
+          else if (item == "features") o.lock_features = true;
+          else if (!item.empty()) throw fest::usage_error("--lock: unknown '{}' (boundary, features)", item);
+        }
+      },
+      "Vertices that never move: boundary, features (comma-separated)");
   app.add_option("--feature-angle", o.feature_angle, "Dihedral angle (degrees) above which an edge is a feature")
       ->default_val(180);
   app.add_flag("--no-attributes", o.no_attributes, "Quadrics over positions only (ignore normals, colours, texcoords)");
   app.add_option("--attribute-weight", o.attribute_weight, "Weight of attribute differences (in bbox diagonals)")
       ->default_val(1.0);
-  app.add_option("--placement", o.placement, "optimal (quadric minimiser) or vertex (half-edge collapse)")
-      ->default_val("optimal");
-  app.add_option("--weighting", o.weighting, "Plane weights of the quadrics: sqrt-area (default), area (GH97), uniform")
-      ->default_val("sqrt-area");
+  fest::cli::word_option(app, "--placement", o.optimal_placement, {{"optimal", true}, {"vertex", false}},
+                         "optimal (quadric minimiser) or vertex (half-edge collapse)")
+      ->default_str("optimal");
+  using fest::decimate::Weighting;
+  fest::cli::word_option(app, "--weighting", o.weighting,
+                         {{"sqrt-area", Weighting::sqrt_area}, {"area", Weighting::area}, {"uniform", Weighting::uniform}},
+                         "Plane weights of the quadrics: sqrt-area (default), area (GH97), uniform")
+      ->default_str("sqrt-area");
   app.add_flag("--drop-nonmanifold", o.drop_nonmanifold, "Drop faces the reader could not attach instead of refusing");
   app.add_flag("--ascii", o.ascii, "ASCII PLY/STL output");
   app.add_option("--report", o.report, "Write counts, time, Hausdorff and RMS error (input vs output) as JSON");

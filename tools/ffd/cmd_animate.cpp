@@ -30,7 +30,7 @@ int run_animate(const AnimateOptions& o) {
   if (!(o.fps > 0 && o.fps <= 1000)) throw usage_error("--fps {} is outside (0, 1000]", o.fps);
   frame_name(o.output, 0);  // validates the pattern
   const int threads = resolve_threads(o.threads);
-  const ffd::Outside outside = outside_of(o.outside);
+  const ffd::Outside outside = o.outside;
   // Keys: "time lattice_file" rows, times strictly increasing; all lattices share the box.
   std::vector<std::pair<double, Lattice>> keys;
   {
@@ -84,7 +84,7 @@ int run_animate(const AnimateOptions& o) {
     std::vector<Eigen::Vector3d> p = rest;  // every frame from the rest mesh
     ffd::apply_all(d, p, outside, threads);
     set_points(mesh, p);
-    update_normals(mesh, "recompute", nullptr, rest, outside);
+    update_normals(mesh, NormalsMode::recompute, nullptr, rest, outside);
     const std::string name = frame_name(o.output, f);
     const formats::OutputFormat of = output_format("", name, format);
     formats::store_output(name, formats::write_mesh(mesh, of.format), of.gzip);

@@ -26,34 +26,35 @@
 
 namespace fest::ffd_tool {
 
+const char* object_mode_name(ObjectMode m) {
+  switch (m) {
+    case ObjectMode::rigid: return "rigid";
+    case ObjectMode::ignore: return "ignore";
+    case ObjectMode::deform: break;
+  }
+  return "deform";
+}
+
 int run_apply(const ApplyOptions& o) {
   const int threads = resolve_threads(o.threads);
-  const ffd::Outside outside = outside_of(o.outside);
-  if (o.normals != "recompute" && o.normals != "jacobian") throw usage_error("--normals: unknown '{}' (recompute, jacobian)", o.normals);
+  const ffd::Outside outside = o.outside;
   Lattice lattice = load_lattice(o.lattice);
   check_size(lattice, o.allow_large);
 
   // Objects: --in NAME=FILE, else the one mesh on -/input.
   struct Object {
-    std::string name, path, mode = "deform";
+    std::string name, path;
+    ObjectMode mode = ObjectMode::deform;
     Mesh mesh;
     formats::Format format = formats::Format::ply;
   };
   std::vector<Object> objects;
-  for (const std::string& spec : o.inputs) {
-    const std::size_t eq = spec.find('=');
-    if (eq == std::string::npos || eq == 0) throw usage_error("--in takes NAME=FILE ('{}')", spec);
-    objects.push_back({spec.substr(0, eq), spec.substr(eq + 1), "deform", {}, formats::Format::ply});
-  }
-  if (objects.empty()) objects.push_back({"mesh", o.input, "deform", {}, formats::Format::ply});
-  for (const std::string& spec : o.objects) {
-    const std::size_t eq = spec.find('=');
-    if (eq == std::string::npos) throw usage_error("--object takes NAME=deform|rigid|ignore ('{}')", spec);
-    const std::string name = spec.substr(0, eq), mode = spec.substr(eq + 1);
-    if (mode != "deform" && mode != "rigid" && mode != "ignore") throw usage_error("--object {}: unknown mode '{}'", name, mode);
-    auto it = std::find_if(objects.begin(), objects.end(), [&](const Object& x) { return x.name == name; });
-    if (it == objects.end()) throw usage_error("--object: no object named '{}'", name);
-    it->mode = mode;
+  for (const NamedInput& in : o.inputs) objects.push_back({in.name, in.path, ObjectMode::deform, {}, formats::Format::ply});
+  if (objects.empty()) objects.push_back({"mesh", o.input, ObjectMode::deform, {}, formats::Format::ply});
+  for (const ObjectRole& role : o.objects) {
+    auto it = std::find_if(objects.begin(), objects.end(), [&](const Object& x) { return x.name == role.name; });
+    if (it == objects.end()) throw usage_error("--object: no object named '{}'", role.name);
+    it->mode = role.mode;
   }
   for (Object& ob : objects) ob.mesh = load_mesh(ob.path, &ob.format);
 
@@ -86,14 +87,14 @@ int run_apply(const ApplyOptions& o) {
     const std::vector<Eigen::Vector3d> rest = points_of(ob.mesh);
     for (const Eigen::Vector3d& p : rest)
       if (!p.allFinite()) throw bad_input("object '{}' has a non-finite coordinate ({})", ob.name, ob.path);
-    nlohmann::json r = {{"name", ob.name}, {"mode", ob.mode}, {"vertices", rest.size()}};
-    if (ob.mode != "ignore") {
+    nlohmann::json r = {{"name", ob.name}, {"mode", object_mode_name(ob.mode)}, {"vertices", rest.size()}};
+    if (ob.mode != ObjectMode::ignore) {
       std::vector<Eigen::Vector3d> moved = rest;
       ffd::apply_all(deformer, moved, outside, threads);
       std::size_t changed = 0;
       for (std::size_t i = 0; i < rest.size(); ++i) changed += moved[i] != rest[i];
       r["vertices_moved"] = changed;
-      if (ob.mode == "rigid") {
+      if (ob.mode == ObjectMode::rigid) {
         // Area weights (docs/ffd.md 2.4); a point set without faces weighs its points equally.
         std::vector<double> area = vertex_areas(ob.mesh);
         double total = 0;
@@ -123,7 +124,7 @@ int run_apply(const ApplyOptions& o) {
         r["straddling_faces"] = straddling;
       }
       set_points(ob.mesh, moved);
-      update_normals(ob.mesh, o.normals, ob.mode == "deform" ? &deformer : nullptr, rest, outside);
+      update_normals(ob.mesh, o.normals, ob.mode == ObjectMode::deform ? &deformer : nullptr, rest, outside);
     }
     const formats::OutputFormat f = output_format(o.to, object_output(o.output, ob.name, objects.size()), ob.format);
     formats::MeshWriteOptions w;

@@ -28,9 +28,8 @@ namespace fest::ffd_tool {
 
 int run_convert(const ConvertOptions& o) {
   const Lattice l = load_lattice(o.input);
-  if (o.to == "json") write_output(o.output, ffd::encode_lattice_json(l));
-  else if (o.to == "pygem") write_output(o.output, ffd::encode_pygem_prm(l));
-  else throw usage_error("--to: unknown '{}' (json, pygem)", o.to);
+  if (o.to == LatticeFormat::json) write_output(o.output, ffd::encode_lattice_json(l));
+  else write_output(o.output, ffd::encode_pygem_prm(l));
   return 0;
 }
 

@@ -31,7 +31,7 @@ int run_init(const InitOptions& o) {
   for (const int d : o.dims)
     if (d < 2 || d > ffd::max_axis_points) throw usage_error("--dims: {} is outside 2..{}", d, ffd::max_axis_points);
   if (!(o.pad >= 0) || o.pad > 10) throw usage_error("--pad {} is outside 0..10", o.pad);
-  const ffd::Basis basis = ffd::basis_from_name(o.basis.c_str());
+  const ffd::Basis basis = o.basis;
   const Mesh m = load_mesh(o.input);
   if (m.n_vertices() == 0) throw bad_input("the mesh has no vertices ({})", o.input);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;

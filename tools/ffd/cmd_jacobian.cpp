@@ -28,7 +28,7 @@ namespace fest::ffd_tool {
 
 int run_jacobian(const JacobianOptions& o) {
   const Lattice lattice = load_lattice(o.lattice);
-  const ffd::Outside outside = outside_of(o.outside);
+  const ffd::Outside outside = o.outside;
   const ffd::Deformer d(lattice);
   const Mesh m = load_mesh(o.input);
   std::string out = "vertex\tdetJ\n";

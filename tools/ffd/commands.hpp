@@ -5,23 +5,41 @@
 #include <string>
 #include <vector>
 
+#include "ffd/lattice.hpp"
+
 namespace fest::ffd_tool {
+
+// --normals: vertex normals recomputed from the faces, or carried by J^-T (docs/ffd.md).
+enum class NormalsMode { recompute, jacobian };
+// --object NAME=MODE: deformed by the lattice, moved rigidly (docs/ffd.md), or left as is.
+enum class ObjectMode { deform, rigid, ignore };
+const char* object_mode_name(ObjectMode m);
+struct NamedInput {   // --in NAME=FILE
+  std::string name, path;
+};
+struct ObjectRole {   // --object NAME=MODE
+  std::string name;
+  ObjectMode mode = ObjectMode::deform;
+};
+
+// --to of convert: the lattice file written.
+enum class LatticeFormat { json, pygem };
 
 struct InitOptions {
   std::string input = "-", output = "-";
   std::vector<int> dims{4, 4, 4};
-  std::string basis = "bernstein";
+  ffd::Basis basis = ffd::Basis::bernstein;
   double pad = 0.05;
 };
 
 struct ApplyOptions {
   std::string lattice;                 // JSON or PyGeM .prm (recognised by content)
   std::string input = "-", output = "-";
-  std::vector<std::string> inputs;     // NAME=FILE, each an object
-  std::vector<std::string> objects;    // NAME=deform|rigid|ignore
+  std::vector<NamedInput> inputs;      // --in: each an object
+  std::vector<ObjectRole> objects;     // --object
   std::string joints, fixed_cp;
-  std::string outside = "none";        // none | clamp
-  std::string normals = "recompute";   // recompute | jacobian
+  ffd::Outside outside = ffd::Outside::none;
+  NormalsMode normals = NormalsMode::recompute;
   std::string to;
   std::string report;
   bool strict = false, allow_large = false, ascii = false;
@@ -30,7 +48,7 @@ struct ApplyOptions {
 
 struct JacobianOptions {
   std::string lattice, input = "-", output = "-";
-  std::string outside = "none";
+  ffd::Outside outside = ffd::Outside::none;
   int threads = 0;
 };
 
@@ -40,7 +58,7 @@ struct LatticeMeshOptions {
 
 struct ConvertOptions {
   std::string input = "-", output = "-";
-  std::string to = "json";  // json | pygem
+  LatticeFormat to = LatticeFormat::json;
 };
 
 struct AnimateOptions {
@@ -49,7 +67,7 @@ struct AnimateOptions {
   std::string output;                  // pattern with %d (frame number)
   double fps = 30;
   std::string manifest = "-";
-  std::string outside = "none";
+  ffd::Outside outside = ffd::Outside::none;
   int threads = 0;
 };
 

@@ -52,12 +52,6 @@ formats::OutputFormat output_format(const std::string& to, const std::string& pa
   return f;
 }
 
-ffd::Outside outside_of(const std::string& s) {
-  if (s == "none") return ffd::Outside::none;
-  if (s == "clamp") return ffd::Outside::clamp;
-  throw usage_error("--outside: unknown '{}' (none, clamp)", s);
-}
-
 void check_size(const Lattice& l, bool allow_large) {
   if (l.size() > 64u * 64u * 64u && !allow_large)
     throw runtime_failure("lattice of {} control points exceeds 64^3; --allow-large permits it", l.size());
@@ -91,10 +85,10 @@ std::vector<double> vertex_areas(const Mesh& m) {
   return a;
 }
 
-void update_normals(Mesh& m, const std::string& mode, const ffd::Deformer* d, const std::vector<Eigen::Vector3d>& rest,
+void update_normals(Mesh& m, NormalsMode mode, const ffd::Deformer* d, const std::vector<Eigen::Vector3d>& rest,
                     ffd::Outside outside) {
   if (!m.has_vertex_normals()) return;
-  if (mode == "jacobian" && d) {
+  if (mode == NormalsMode::jacobian && d) {
     for (const auto v : m.vertices()) {
       const Eigen::Matrix3d J = d->jacobian(rest[static_cast<std::size_t>(v.idx())], outside);
       const auto& n0 = m.normal(v);

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "core/mesh.hpp"
+#include "commands.hpp"
 #include "ffd/lattice.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -24,8 +25,6 @@ Lattice load_lattice(const std::string& path);
 Mesh load_mesh(const std::string& path, formats::Format* format = nullptr);
 // The mesh format to write: --to, else the output's extension, else the input's.
 formats::OutputFormat output_format(const std::string& to, const std::string& path, formats::Format input);
-// "none" or "clamp" (what happens to points outside the lattice box).
-ffd::Outside outside_of(const std::string& s);
 // Lattices beyond 64^3 control points only when allowed.
 void check_size(const Lattice& l, bool allow_large);
 // The mesh's vertex positions, and back.
@@ -34,8 +33,8 @@ void set_points(Mesh& m, const std::vector<Eigen::Vector3d>& p);
 // A third of the incident face areas per vertex (the weights a_v of docs/ffd.md 2.4).
 std::vector<double> vertex_areas(const Mesh& m);
 // Vertex normals after a deformation: recomputed from the faces, or carried by the
-// inverse transpose of the Jacobian ("jacobian").
-void update_normals(Mesh& m, const std::string& mode, const ffd::Deformer* d, const std::vector<Eigen::Vector3d>& rest,
+// inverse transpose of the Jacobian (NormalsMode::jacobian).
+void update_normals(Mesh& m, NormalsMode mode, const ffd::Deformer* d, const std::vector<Eigen::Vector3d>& rest,
                     ffd::Outside outside);
 // Control points to keep in place: lines "i j k" (# comments), as lattice indices.
 std::vector<std::size_t> read_fixed(const std::string& path, const Lattice& l);

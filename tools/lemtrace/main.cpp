@@ -53,7 +53,7 @@ void add_grid_options(CLI::App* cmd, GridArgs& g, bool with_precompute) {
   fest::cli::enum_words(cmd->add_option("--eps-mode", g.eps_mode, "abs: |lambda| < eps (the paper's); rel: |lambda| tau_T < eps"), kEpsModes);
   if (with_precompute)
     fest::cli::enum_words(cmd->add_option("--precompute", g.precompute, "Per-cell records: all, lazy (first visit) or none (every visit)"), kPrecompute);
-  cmd->add_option("--threads", g.threads, "Worker threads (0 = all cores)")->default_val(0);
+  fest::cli::add_threads(*cmd, g.threads);
 }
 
 void add_trace_options(CLI::App* cmd, TraceArgs& t, NumberTexts& numbers, bool seeds_required) {
