@@ -295,42 +295,30 @@ int main(int argc, char** argv) {
   // ---- geometry stages
   SynthArgs synth;
   auto* s = add_synth(app, synth);
-
   LumitexelArgs ltx;
   auto* l = add_lumitexels(app, ltx);
-
   RegisterArgs reg;
   auto* r = add_register(app, reg);
-
   RenderArgs ren;
   auto* d = add_render(app, ren);
-
   EvalArgs ev;
   auto* e = add_eval(app, ev);
-
   ExportArgs ex;
   auto* x = add_export(app, ex);
-
   InfoArgs info;
   auto* i = add_info(app, info);
-
   // ---- materials stages
   FitArgs fit;
   auto* f = add_fit(app, fit);
-
   ClusterArgs cluster;
   auto* c = add_cluster(app, cluster);
-
   ProjectArgs project;
   auto* p = add_project(app, project);
-
   NormalsArgs normals;
   auto* n = add_normals(app, normals);
-
   // ---- factor
   FactorArgs factor;
   add_factor(app, factor);
-
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error.\n"
              "See brdffit(1), ltx(5), ltw(5).");
   // The outer frame reports errors thrown while flags are parsed (--robust, --clusters).
