@@ -56,22 +56,11 @@ void add_fit_flags(CLI::App* s, FitFlags& f) {
   s->add_option("--fit-subsample", f.subsample, "Fit on at most this many samples (0 = all)")->default_val(200000);
   s->add_option("--seed", f.seed, "Seed of every random choice")->default_val(1);
   s->add_option("--report", f.report, "Write timings, counts and errors as JSON");
-  s->add_option("--threads", f.threads, "Worker threads (0 = all cores)")->default_val(0);
+  fest::cli::add_threads(*s, f.threads);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+CLI::App* add_synth(CLI::App& app, SynthArgs& synth) {
   namespace cli = fest::cli;
-  CLI::App app{"Spatially varying BRDFs from registered HDR photographs of a scanned object\n"
-               "(Lensch et al.: lumitexels, Lafortune fits, material clustering, projection).",
-               "brdffit"};
-  cli::Common common;
-  cli::add_common(app, common);
-  app.require_subcommand(1);
-
-  // ---- geometry stages
-  SynthArgs synth;
   auto* s = app.add_subcommand("synth", "Synthetic ground truth: a mesh with known materials on a turntable, HDR images, "
                                         "masks, rig.json, truth.json");
   s->add_option("--mesh", synth.mesh, "Mesh (PLY/OBJ/OFF/STL); default: an icosphere");
@@ -103,8 +92,11 @@ int main(int argc, char** argv) {
   s->add_flag("--previews", synth.previews, "Also write tone-mapped PNGs into DIR/preview/");
   s->add_option("-o,--output", synth.out, "Dataset folder (created)")->required();
   cli::add_threads(*s, synth.threads);
+  return s;
+}
 
-  LumitexelArgs ltx;
+CLI::App* add_lumitexels(CLI::App& app, LumitexelArgs& ltx) {
+  namespace cli = fest::cli;
   auto* l = app.add_subcommand("lumitexels", "Resample the rig's HDR images onto the mesh: .ltx lumitexels");
   l->add_option("--mesh", ltx.mesh, "The mesh the rig is registered to")->required();
   l->add_option("--rig", ltx.rig, "Rig JSON (frame mesh or turntable)")->required();
@@ -121,8 +113,11 @@ int main(int argc, char** argv) {
                                                 "--atlas path with .ply)");
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
   cli::add_threads(*l, ltx.threads);
+  return l;
+}
 
-  RegisterArgs reg;
+CLI::App* add_register(CLI::App& app, RegisterArgs& reg) {
+  namespace cli = fest::cli;
   auto* r = app.add_subcommand("register", "Silhouette registration of a photograph (or a turntable rig) to the mesh");
   r->add_option("--mesh", reg.mesh, "The mesh")->required();
   r->add_option("--mask", reg.mask, "Silhouette of the photograph (nonzero = object)");
@@ -141,8 +136,11 @@ int main(int argc, char** argv) {
   r->add_option("-o,--output", reg.out, "Fitted cam.json (or rig), - = standard output");
   r->add_option("--report", reg.report, "XOR, evaluations, time as JSON");
   cli::add_threads(*r, reg.threads);
+  return r;
+}
 
-  RenderArgs ren;
+CLI::App* add_render(CLI::App& app, RenderArgs& ren) {
+  namespace cli = fest::cli;
   auto* d = app.add_subcommand("render", "Render the mesh with Lafortune materials under a point light (linear EXR)");
   d->add_option("--mesh", ren.mesh, "The mesh")->required();
   d->add_option("--materials", ren.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)");
@@ -163,16 +161,22 @@ int main(int argc, char** argv) {
   d->add_option("--shadow-res", ren.shadow_res, "Shadow map size")->check(CLI::Range(16, 16384));
   d->add_flag("--no-shadows", ren.no_shadows, "Skip the shadow test");
   cli::add_threads(*d, ren.threads);
+  return d;
+}
 
-  EvalArgs ev;
+CLI::App* add_eval(CLI::App& app, EvalArgs& ev) {
+  namespace cli = fest::cli;
   auto* e = app.add_subcommand("eval", "Compare a rendering with a photograph: RMSE, relative L2, PSNR as JSON");
   e->add_option("--photo", ev.photo, "Photograph (EXR/PFM radiance)")->required();
   e->add_option("--render", ev.render, "Rendering from the same camera and light")->required();
   e->add_option("--mask", ev.mask, "Compare inside this mask only");
   e->add_option("--error", ev.error, "Also write |photo - render| (EXR)");
   e->add_option("-o,--output", ev.out, "Metrics JSON, - = standard output");
+  return e;
+}
 
-  ExportArgs ex;
+CLI::App* add_export(CLI::App& app, ExportArgs& ex) {
+  namespace cli = fest::cli;
   auto* x = app.add_subcommand("export", "glTF 2.0 (or .glb) with the materials as metallic-roughness textures in a "
                                          "texture atlas (spec §2.9, §2.10)");
   x->add_option("--mesh", ex.mesh, "The mesh")->required();
@@ -188,22 +192,30 @@ int main(int argc, char** argv) {
   x->add_option("--gutter", ex.gutter, "Texels around each atlas chart")->check(CLI::Range(0, 64));
   x->add_flag("--flat", ex.flat, "No textures: one constant material per BRDF, triangles by majority material");
   cli::add_threads(*x, ex.threads);
+  return x;
+}
 
-  InfoArgs info;
+CLI::App* add_info(CLI::App& app, InfoArgs& info) {
+  namespace cli = fest::cli;
   auto* i = app.add_subcommand("info", "Describe a .ltx file as JSON; with --mesh, check that it belongs to that mesh");
   i->add_option("input", info.in, "Lumitexel file, - = standard input");
   i->add_option("--mesh", info.mesh, "Fail (exit 3) unless the file's mesh SHA-256 is this mesh's");
+  return i;
+}
 
-  // ---- materials stages
-  FitArgs fit;
+CLI::App* add_fit(CLI::App& app, FitArgs& fit) {
+  namespace cli = fest::cli;
   auto* f = app.add_subcommand("fit", "Fit one Lafortune BRDF to samples (CSV) or a MERL .binary; brdf.json to stdout");
   f->add_option("input", fit.input, "samples.csv: ux,uy,uz,vx,vy,vz,r,g,b (local frame; r = f u_z), - = stdin")->default_val("-");
   f->add_option("--merl", fit.merl, "Fit a MERL .binary BRDF table instead");
   f->add_flag("--angles", fit.angles, "Columns theta_i,phi_i,theta_o,phi_o,r,g,b (radians)");
   f->add_option("-o,--output", fit.output, "brdf.json (- = stdout)")->default_val("-");
   add_fit_flags(f, fit.fit);
+  return f;
+}
 
-  ClusterArgs cluster;
+CLI::App* add_cluster(CLI::App& app, ClusterArgs& cluster) {
+  namespace cli = fest::cli;
   auto* c = app.add_subcommand("cluster", "Cluster lumitexels into materials by split and refit; clusters.json to stdout");
   c->add_option("input", cluster.input, "Lumitexel file (.ltx), - = stdin")->default_val("-");
   c->add_option("-o,--output", cluster.output, "clusters.json (- = stdout)")->default_val("-");
@@ -219,8 +231,11 @@ int main(int argc, char** argv) {
   c->add_option("--min-gain", cluster.c.min_gain, "auto: stop when a split gains less (fraction of the 1-cluster error)")->default_val(0.02);
   c->add_option("--min-samples", cluster.min_samples, "Ignore lumitexels with fewer samples")->default_val(2);
   add_fit_flags(c, cluster.fit);
+  return c;
+}
 
-  ProjectArgs project;
+CLI::App* add_project(CLI::App& app, ProjectArgs& project) {
+  namespace cli = fest::cli;
   auto* p = app.add_subcommand("project", "Per-lumitexel weights over per-cluster basis BRDFs; .ltw to stdout");
   p->add_option("input", project.input, "Lumitexel file (.ltx), - = stdin")->default_val("-");
   p->add_option("--clusters", project.clusters_file, "clusters.json from brdffit cluster")->required();
@@ -234,9 +249,12 @@ int main(int argc, char** argv) {
   p->add_option("--split-iters", project.split_iters, "Refits of the trial split at most")->default_val(10);
   p->add_option("--min-samples", project.min_samples, "Lumitexels with fewer samples get the pure cluster BRDF")->default_val(2);
   p->add_option("--report", project.report, "Write timings and errors as JSON");
-  p->add_option("--threads", project.threads, "Worker threads (0 = all cores)")->default_val(0);
+  cli::add_threads(*p, project.threads);
+  return p;
+}
 
-  NormalsArgs normals;
+CLI::App* add_normals(CLI::App& app, NormalsArgs& normals) {
+  namespace cli = fest::cli;
   auto* n = app.add_subcommand("normals", "Refine normals against the projected BRDFs; normals.ply to stdout");
   n->add_option("input", normals.input, "Lumitexel file (.ltx), - = stdin")->default_val("-");
   n->add_option("--svbrdf", normals.svbrdf, ".ltw from brdffit project")->required();
@@ -246,10 +264,12 @@ int main(int argc, char** argv) {
   n->add_option("--alternate", normals.n.alternate, "Rounds of (re-projection, normals)")->default_val(1);
   n->add_flag("--ascii", normals.ascii, "ASCII PLY instead of binary");
   n->add_option("--report", normals.report, "Write timings and residuals as JSON");
-  n->add_option("--threads", normals.threads, "Worker threads (0 = all cores)")->default_val(0);
+  cli::add_threads(*n, normals.threads);
+  return n;
+}
 
-  // ---- factor
-  FactorArgs factor;
+CLI::App* add_factor(CLI::App& app, FactorArgs& factor) {
+  namespace cli = fest::cli;
   auto* fa = app.add_subcommand("factor", "Separable approximation of one BRDF for display (Kautz & McCool): rank-1 "
                                           "factors g(half) h(difference) as EXR, errors as JSON");
   fa->add_option("--brdf", factor.brdf, "brdf.json (brdffit fit)")->required();
@@ -258,7 +278,47 @@ int main(int argc, char** argv) {
   fa->add_option("--phi-bins", factor.phi_bins, "Cells in phi over [0, 360) degrees")->check(CLI::Range(1, 1024));
   fa->add_flag("--no-compare", factor.no_compare, "Skip the (omega_o, omega_i) factorisation the report compares with");
   cli::add_threads(*fa, factor.threads);
+  return fa;
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace cli = fest::cli;
+  CLI::App app{"Spatially varying BRDFs from registered HDR photographs of a scanned object\n"
+               "(Lensch et al.: lumitexels, Lafortune fits, material clustering, projection).",
+               "brdffit"};
+  cli::Common common;
+  cli::add_common(app, common);
+  app.require_subcommand(1);
+
+  // ---- geometry stages
+  SynthArgs synth;
+  auto* s = add_synth(app, synth);
+  LumitexelArgs ltx;
+  auto* l = add_lumitexels(app, ltx);
+  RegisterArgs reg;
+  auto* r = add_register(app, reg);
+  RenderArgs ren;
+  auto* d = add_render(app, ren);
+  EvalArgs ev;
+  auto* e = add_eval(app, ev);
+  ExportArgs ex;
+  auto* x = add_export(app, ex);
+  InfoArgs info;
+  auto* i = add_info(app, info);
+  // ---- materials stages
+  FitArgs fit;
+  auto* f = add_fit(app, fit);
+  ClusterArgs cluster;
+  auto* c = add_cluster(app, cluster);
+  ProjectArgs project;
+  auto* p = add_project(app, project);
+  NormalsArgs normals;
+  auto* n = add_normals(app, normals);
+  // ---- factor
+  FactorArgs factor;
+  add_factor(app, factor);
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error.\n"
              "See brdffit(1), ltx(5), ltw(5).");
   // The outer frame reports errors thrown while flags are parsed (--robust, --clusters).

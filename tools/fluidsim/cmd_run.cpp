@@ -186,34 +186,34 @@ void write_frame(const Output& out, const Frame& f, const std::string& main_fiel
   }
 }
 
-}  // namespace
-
-int run_command(const RunOptions& o) {
-  set_threads(o.threads);
-  // The flags were checked in main.cpp (usage errors); now the scene (bad input).
-  Output out;
-  out.pattern = o.output;
-  out.format = o.format;
-  const std::optional<PoissonSolver>& solver = o.poisson;
-
+// The scene with the run's flags applied, and the checks that need it (usage errors for
+// flags the scene cannot take), in the order a user meets them.
+Scene read_run_scene(const RunOptions& o) {
   Scene scene = load_scene(o.scene);
   if (o.frames > 0) scene.frames = o.frames;
   if (o.interp > 0) scene.interp = o.interp;
   for (const std::string& w : scene.warnings) warn("fluidsim", w);
   if (scene.interp > 8) warn("fluidsim", fmt::format("--interp {} > 8 interpolates over long steps (quality)", scene.interp));
-  if (out.format != FrameFormat::stream && scene.frames > 1 && !has_index_conversion(out.pattern))
-    throw usage_error("-o \"{}\" needs a %d for {} frames", out.pattern, scene.frames);
-  if ((out.format == FrameFormat::pfm || out.format == FrameFormat::exr) && scene.dim != 2)
-    throw usage_error("{} output is for 2-D scenes; use vti or nrrd", out.format == FrameFormat::pfm ? "pfm" : "exr");
-  const Layout layout = scene.layout();
+  if (o.format != FrameFormat::stream && scene.frames > 1 && !has_index_conversion(o.output))
+    throw usage_error("-o \"{}\" needs a %d for {} frames", o.output, scene.frames);
+  if ((o.format == FrameFormat::pfm || o.format == FrameFormat::exr) && scene.dim != 2)
+    throw usage_error("{} output is for 2-D scenes; use vti or nrrd", o.format == FrameFormat::pfm ? "pfm" : "exr");
+  return scene;
+}
+
+void warn_odd_periodic_axes(const Scene& scene) {
   for (int a = 0; a < scene.dim; ++a)
     if (scene.bc[a] == Boundary::periodic && scene.dims[a] % 2 == 1)
       warn("fluidsim", fmt::format("periodic axis {} has odd size {}: its parity classes join (no split)", a, scene.dims[a]));
+}
 
+// The solver options: the flags' Poisson solver (by default FDM up to 64 nodes an axis,
+// FFT above), with a warning where FFT sizes are slow.
+SimOptions sim_options(const RunOptions& o, const Scene& scene) {
   int nmax = 0;
   for (int a = 0; a < scene.dim; ++a) nmax = std::max(nmax, scene.dims[a]);
   SimOptions so;
-  so.projection.solver = solver ? *solver : (nmax <= 64 ? PoissonSolver::fdm : PoissonSolver::fft);
+  so.projection.solver = o.poisson ? *o.poisson : (nmax <= 64 ? PoissonSolver::fdm : PoissonSolver::fft);
   so.projection.iters = o.iters;
   so.projection.tol = o.tol;
   so.stam03 = o.order == StepOrder::stam03;
@@ -228,135 +228,186 @@ int run_command(const RunOptions& o) {
     if (!slow.empty())
       warn("fluidsim", "fft: n + 1 has a prime factor above 7 for dims " + slow + ": slower transforms");
   }
-  std::vector<std::string> scalar_names;
-  for (const auto& s : scene.scalars) scalar_names.push_back(s.name);
-  std::vector<std::string> fields;
+  return so;
+}
+
+// The fields frames carry: the scene's scalars by name, the --fields subset of velocity
+// and them, and the one field that 1-field outputs (pfm, exr, png) show.
+struct FrameFields {
+  std::vector<std::string> scalar_names, fields;
+  std::string main_field;
+};
+
+FrameFields frame_fields(const RunOptions& o, const Scene& scene) {
+  FrameFields ff;
+  for (const auto& s : scene.scalars) ff.scalar_names.push_back(s.name);
   if (o.fields.empty()) {
-    fields.push_back("velocity");
-    for (const auto& n : scalar_names) fields.push_back(n);
+    ff.fields.push_back("velocity");
+    for (const auto& n : ff.scalar_names) ff.fields.push_back(n);
   } else {
     for (const std::string& item : o.fields) {
-      if (item != "velocity" && std::find(scalar_names.begin(), scalar_names.end(), item) == scalar_names.end())
+      if (item != "velocity" && std::find(ff.scalar_names.begin(), ff.scalar_names.end(), item) == ff.scalar_names.end())
         throw usage_error("--fields names \"{}\", which the scene does not have", item);
-      fields.push_back(item);
+      ff.fields.push_back(item);
     }
   }
-  // The field that 1-field outputs (pfm, exr, png) show.
-  std::string main_field = fields.front();
-  for (const auto& f : fields)
+  ff.main_field = ff.fields.front();
+  for (const auto& f : ff.fields)
     if (f != "velocity") {
-      main_field = f;
+      ff.main_field = f;
       break;
     }
+  return ff;
+}
 
-  const Simulator sim(scene, so);
-  // An init file: a frame written by fluidsim (VTI or NRRD frame) on the same grid;
-  // relative names are relative to the scene file's folder.
-  std::optional<State> given;
-  if (scene.init.kind == "file") {
-    std::string path = scene.init.file;
-    const auto slash = o.scene.find_last_of('/');
-    if (path.front() != '/' && o.scene != "-" && slash != std::string::npos) path = o.scene.substr(0, slash + 1) + path;
-    given = read_init_file(path, layout, scalar_names, scene);
+// An init file: a frame written by fluidsim (VTI or NRRD frame) on the same grid;
+// relative names are relative to the scene file's folder.
+std::optional<State> init_file_state(const RunOptions& o, const Scene& scene, const Layout& layout,
+                                     const std::vector<std::string>& scalar_names) {
+  if (scene.init.kind != "file") return std::nullopt;
+  std::string path = scene.init.file;
+  const auto slash = o.scene.find_last_of('/');
+  if (path.front() != '/' && o.scene != "-" && slash != std::string::npos) path = o.scene.substr(0, slash + 1) + path;
+  return read_init_file(path, layout, scalar_names, scene);
+}
+
+// The simulation levels 0..last_level: from the solver through the 3-slot ring (the
+// solver thread runs ahead while this thread interpolates and writes), or, with
+// --pipeline off, computed here on demand. Both give the same bytes.
+class LevelSource {
+ public:
+  LevelSource(const Simulator& sim, const std::optional<State>& given, double dt, long last_level, bool pipeline)
+      : sim_(sim), given_(given), dt_(dt), last_level_(last_level), pipeline_(pipeline) {
+    const int nthreads = omp_threads();
+    if (pipeline_) thread_ = std::thread([this, nthreads] { produce(nthreads); });
   }
-  const int K = scene.interp;
-  const double dt = K * scene.frame_dt;
-  // The last simulation level a frame needs (the next one when the last frame lies
-  // between two states).
-  const long last_frame = scene.frames - 1;
-  const long last_level = last_frame / K + (last_frame % K ? 1 : 0);
+  ~LevelSource() {
+    ring_.cancel();
+    if (thread_.joinable()) thread_.join();
+  }
+  LevelSource(const LevelSource&) = delete;
+  LevelSource& operator=(const LevelSource&) = delete;
 
-  // States come from the solver through the 3-slot ring (the solver thread runs ahead
-  // while this thread interpolates and writes), or, with --pipeline off, are computed
-  // here on demand. Both give the same bytes.
-  const bool pipeline = o.pipeline;
-  StateRing ring(3);
-  const int nthreads = omp_threads();
-  auto produce = [&] {
-    try {
-      omp_set_num_threads(nthreads);  // a new thread starts from the default
-      State s = sim.initial_state(given ? &*given : nullptr);
-      ring.push({0, s, {}});
-      for (long l = 1; l <= last_level && !ring.cancelled(); ++l) {
-        const StepStats st = sim.step(s, dt);
-        ring.push({l, s, st});
-      }
-      ring.finish();
-    } catch (...) {
-      ring.finish(std::current_exception());
-    }
-  };
-  std::thread solver_thread;
-  struct Joiner {
-    StateRing& ring;
-    std::thread& t;
-    ~Joiner() {
-      ring.cancel();
-      if (t.joinable()) t.join();
-    }
-  } joiner{ring, solver_thread};
-  std::deque<RingEntry> inline_states;  // --pipeline off
-  auto get_level = [&](long level) -> const RingEntry& {
-    if (pipeline) return ring.get(level);
-    while (inline_states.empty() || inline_states.back().level < level) {
-      if (inline_states.empty()) {
-        inline_states.push_back({0, sim.initial_state(given ? &*given : nullptr), {}});
+  const RingEntry& get(long level) {
+    if (pipeline_) return ring_.get(level);
+    while (inline_.empty() || inline_.back().level < level) {
+      if (inline_.empty()) {
+        inline_.push_back({0, sim_.initial_state(given_ ? &*given_ : nullptr), {}});
       } else {
-        RingEntry next{inline_states.back().level + 1, inline_states.back().state, {}};
-        next.stats = sim.step(next.state, dt);
-        inline_states.push_back(std::move(next));
+        RingEntry next{inline_.back().level + 1, inline_.back().state, {}};
+        next.stats = sim_.step(next.state, dt_);
+        inline_.push_back(std::move(next));
       }
     }
-    for (const RingEntry& e : inline_states)
+    for (const RingEntry& e : inline_)
       if (e.level == level) return e;
     throw runtime_failure("internal: level {} was released", level);
-  };
-  auto release_below = [&](long level) {
-    if (pipeline) {
-      ring.release_below(level);
+  }
+
+  void release_below(long level) {
+    if (pipeline_) {
+      ring_.release_below(level);
       return;
     }
-    while (!inline_states.empty() && inline_states.front().level < level) inline_states.pop_front();
-  };
-  if (pipeline) solver_thread = std::thread(produce);
+    while (!inline_.empty() && inline_.front().level < level) inline_.pop_front();
+  }
 
+ private:
+  void produce(int nthreads) {
+    try {
+      omp_set_num_threads(nthreads);  // a new thread starts from the default
+      State s = sim_.initial_state(given_ ? &*given_ : nullptr);
+      ring_.push({0, s, {}});
+      for (long l = 1; l <= last_level_ && !ring_.cancelled(); ++l) {
+        const StepStats st = sim_.step(s, dt_);
+        ring_.push({l, s, st});
+      }
+      ring_.finish();
+    } catch (...) {
+      ring_.finish(std::current_exception());
+    }
+  }
+
+  const Simulator& sim_;
+  const std::optional<State>& given_;
+  const double dt_;
+  const long last_level_;
+  const bool pipeline_;
+  StateRing ring_{3};
+  std::deque<RingEntry> inline_;  // --pipeline off
+  std::thread thread_;
+};
+
+// The figures of a run as frames are written: per-frame stats lines, divergence and
+// speed maxima, and the summed step times.
+struct RunTotals {
   json stats_lines = json::array();
   std::string stats_text;
   double max_div = 0.0, max_div_rel = 0.0, peak_speed = 0.0;
   double total_ms[7] = {0, 0, 0, 0, 0, 0, 0};  // force advect diffuse project scalars interp write
   long sim_steps = 0, counted = 0;
-  const auto t_start = Clock::now();
+};
+
+// Adds a level's step figures to the totals once; returns them when new.
+bool account(RunTotals& t, const RingEntry& e, StepStats& last) {
+  if (e.level <= t.counted) return false;
+  t.counted = e.level;
+  const StepStats& st = e.stats;
+  ++t.sim_steps;
+  t.total_ms[0] += st.ms_force;
+  t.total_ms[1] += st.ms_advect;
+  t.total_ms[2] += st.ms_diffuse;
+  t.total_ms[3] += st.ms_project;
+  t.total_ms[4] += st.ms_scalars;
+  t.max_div = std::max(t.max_div, st.projection.max_div_after);
+  if (st.projection.max_div_before > 0)
+    t.max_div_rel = std::max(t.max_div_rel, st.projection.max_div_after / st.projection.max_div_before);
+  last = st;
+  return true;
+}
+
+// One frame's line of --stats: its time, speed, energy, divergence, scalar masses and the
+// times of the step that made it (zero for frames of a level already counted).
+json frame_stats_line(const Layout& layout, const State& state, const FrameFields& ff, long f, const Scene& scene, long level,
+                      int phase, double speed, const StepStats* step, double ms_interp, double ms_write) {
+  Field div;
+  divergence(layout, state.u, div);
+  json line = {{"frame", f},
+               {"time", f * scene.frame_dt},
+               {"sim_step", level},
+               {"interpolated", phase != 0},
+               {"max_speed", speed},
+               {"kinetic_energy", kinetic_energy(layout, state.u)},
+               {"max_div", max_abs(div)}};
+  for (std::size_t i = 0; i < ff.scalar_names.size(); ++i)
+    line["mass." + ff.scalar_names[i]] = weighted_sum(layout, state.s[i]);
+  line["ms"] = {{"force", step ? step->ms_force : 0.0},   {"advect", step ? step->ms_advect : 0.0},
+                {"diffuse", step ? step->ms_diffuse : 0.0}, {"project", step ? step->ms_project : 0.0},
+                {"scalars", step ? step->ms_scalars : 0.0}, {"interp", ms_interp},
+                {"write", ms_write}};
+  return line;
+}
+
+// Frame by frame: the level(s) it lies on, the state at its time (interpolated between
+// levels), the frame written, its figures added to the totals.
+void write_frames(const RunOptions& o, const Scene& scene, const Layout& layout, const FrameFields& ff, LevelSource& levels,
+                  RunTotals& t) {
+  Output out;
+  out.pattern = o.output;
+  out.format = o.format;
+  const int K = scene.interp;
   Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress) && !o.quiet);
-
-  // Adds a level's step figures to the totals once; returns them when new.
-  auto account = [&](const RingEntry& e, StepStats& last) {
-    if (e.level <= counted) return false;
-    counted = e.level;
-    const StepStats& st = e.stats;
-    ++sim_steps;
-    total_ms[0] += st.ms_force;
-    total_ms[1] += st.ms_advect;
-    total_ms[2] += st.ms_diffuse;
-    total_ms[3] += st.ms_project;
-    total_ms[4] += st.ms_scalars;
-    max_div = std::max(max_div, st.projection.max_div_after);
-    if (st.projection.max_div_before > 0)
-      max_div_rel = std::max(max_div_rel, st.projection.max_div_after / st.projection.max_div_before);
-    last = st;
-    return true;
-  };
-
   for (long f = 0; f < scene.frames; ++f) {
     const long level = f / K;
     const int phase = static_cast<int>(f % K);
     StepStats last{};
     bool stepped = false;
-    const RingEntry& a = get_level(level);
-    stepped = account(a, last) || stepped;
+    const RingEntry& a = levels.get(level);
+    stepped = account(t, a, last) || stepped;
     const RingEntry* b = nullptr;
     if (phase != 0) {
-      b = &get_level(level + 1);
-      stepped = account(*b, last) || stepped;
+      b = &levels.get(level + 1);
+      stepped = account(t, *b, last) || stepped;
     }
     auto t0 = Clock::now();
     // Frame time f * frame_dt: the state itself, or (1 - a) X^n + a X^(n+1).
@@ -364,68 +415,85 @@ int run_command(const RunOptions& o) {
     if (phase != 0) blended = blend(a.state, b->state, static_cast<double>(phase) / K);
     const State& frame_state = phase == 0 ? a.state : blended;
     const double ms_interp = phase == 0 ? 0.0 : ms_since(t0);
-    total_ms[5] += ms_interp;
-    Frame frame = make_frame(layout, frame_state, scalar_names, fields, f, f * scene.frame_dt);
+    t.total_ms[5] += ms_interp;
+    Frame frame = make_frame(layout, frame_state, ff.scalar_names, ff.fields, f, f * scene.frame_dt);
     frame.float64 = o.float64;
     t0 = Clock::now();
-    write_frame(out, frame, main_field, frame.float64);
+    write_frame(out, frame, ff.main_field, frame.float64);
     const double ms_write = ms_since(t0);
-    total_ms[6] += ms_write;
+    t.total_ms[6] += ms_write;
 
     const double speed = max_speed(layout, frame_state.u);
-    peak_speed = std::max(peak_speed, speed);
+    t.peak_speed = std::max(t.peak_speed, speed);
     if (!o.stats.empty() || !o.report.empty()) {
-      Field div;
-      divergence(layout, frame_state.u, div);
-      json line = {{"frame", f},
-                   {"time", f * scene.frame_dt},
-                   {"sim_step", level},
-                   {"interpolated", phase != 0},
-                   {"max_speed", speed},
-                   {"kinetic_energy", kinetic_energy(layout, frame_state.u)},
-                   {"max_div", max_abs(div)}};
-      for (std::size_t i = 0; i < scalar_names.size(); ++i)
-        line["mass." + scalar_names[i]] = weighted_sum(layout, frame_state.s[i]);
-      line["ms"] = {{"force", stepped ? last.ms_force : 0.0},   {"advect", stepped ? last.ms_advect : 0.0},
-                    {"diffuse", stepped ? last.ms_diffuse : 0.0}, {"project", stepped ? last.ms_project : 0.0},
-                    {"scalars", stepped ? last.ms_scalars : 0.0}, {"interp", ms_interp},
-                    {"write", ms_write}};
-      stats_text += line.dump() + "\n";
-      stats_lines.push_back(std::move(line));
+      json line = frame_stats_line(layout, frame_state, ff, f, scene, level, phase, speed, stepped ? &last : nullptr,
+                                   ms_interp, ms_write);
+      t.stats_text += line.dump() + "\n";
+      t.stats_lines.push_back(std::move(line));
     }
-    release_below(level);
+    levels.release_below(level);
     progress.advance();
   }
   progress.finish();
-  if (!o.stats.empty()) write_output(o.stats, stats_text);
-  if (!o.report.empty()) {
-    const double steps = std::max<long>(1, sim_steps);
-    json rep = {{"frames", scene.frames},
-                {"simulation_steps", sim_steps},
-                {"interp", K},
-                {"dt", dt},
-                {"wall_ms", ms_since(t_start)},
-                {"max_div", max_div},
-                {"max_div_rel", max_div_rel},
-                {"max_speed", peak_speed},
-                {"solver", poisson_name(so.projection.solver)},
-                {"order", o.order == StepOrder::stam03 ? "stam03" : "paper"},
-                {"threads", omp_threads()},
-                {"pipeline", pipeline},
-                {"dims", std::vector<int>(scene.dims.begin(), scene.dims.begin() + scene.dim)},
-                {"mean_ms",
-                 {{"force", total_ms[0] / steps},
-                  {"advect", total_ms[1] / steps},
-                  {"diffuse", total_ms[2] / steps},
-                  {"project", total_ms[3] / steps},
-                  {"scalars", total_ms[4] / steps},
-                  {"step", (total_ms[0] + total_ms[1] + total_ms[2] + total_ms[3] + total_ms[4]) / steps},
-                  {"interp_frame", total_ms[5] / std::max<double>(1.0, scene.frames - std::ceil(scene.frames / double(K)))},
-                  {"write_frame", total_ms[6] / scene.frames}}},
-                {"peak_rss_mb", peak_rss_kb() / 1024.0}};
-    for (const auto& n : scalar_names) rep["mass." + n] = stats_lines.back()["mass." + n];
-    write_output(o.report, rep.dump(2) + "\n");
-  }
+}
+
+void write_run_report(const RunOptions& o, const Scene& scene, const SimOptions& so, const FrameFields& ff,
+                      const RunTotals& t, double wall_ms) {
+  const int K = scene.interp;
+  const double steps = std::max<long>(1, t.sim_steps);
+  const double* ms = t.total_ms;
+  json rep = {{"frames", scene.frames},
+              {"simulation_steps", t.sim_steps},
+              {"interp", K},
+              {"dt", K * scene.frame_dt},
+              {"wall_ms", wall_ms},
+              {"max_div", t.max_div},
+              {"max_div_rel", t.max_div_rel},
+              {"max_speed", t.peak_speed},
+              {"solver", poisson_name(so.projection.solver)},
+              {"order", o.order == StepOrder::stam03 ? "stam03" : "paper"},
+              {"threads", omp_threads()},
+              {"pipeline", o.pipeline},
+              {"dims", std::vector<int>(scene.dims.begin(), scene.dims.begin() + scene.dim)},
+              {"mean_ms",
+               {{"force", ms[0] / steps},
+                {"advect", ms[1] / steps},
+                {"diffuse", ms[2] / steps},
+                {"project", ms[3] / steps},
+                {"scalars", ms[4] / steps},
+                {"step", (ms[0] + ms[1] + ms[2] + ms[3] + ms[4]) / steps},
+                {"interp_frame", ms[5] / std::max<double>(1.0, scene.frames - std::ceil(scene.frames / double(K)))},
+                {"write_frame", ms[6] / scene.frames}}},
+              {"peak_rss_mb", peak_rss_kb() / 1024.0}};
+  for (const auto& n : ff.scalar_names) rep["mass." + n] = t.stats_lines.back()["mass." + n];
+  write_output(o.report, rep.dump(2) + "\n");
+}
+
+}  // namespace
+
+int run_command(const RunOptions& o) {
+  set_threads(o.threads);
+  // The flags were checked in main.cpp (usage errors); now the scene (bad input).
+  const Scene scene = read_run_scene(o);
+  const Layout layout = scene.layout();
+  warn_odd_periodic_axes(scene);
+  const SimOptions so = sim_options(o, scene);
+  const FrameFields ff = frame_fields(o, scene);
+  const Simulator sim(scene, so);
+  const std::optional<State> given = init_file_state(o, scene, layout, ff.scalar_names);
+
+  const int K = scene.interp;
+  // The last simulation level a frame needs (the next one when the last frame lies
+  // between two states).
+  const long last_frame = scene.frames - 1;
+  const long last_level = last_frame / K + (last_frame % K ? 1 : 0);
+  LevelSource levels(sim, given, K * scene.frame_dt, last_level, o.pipeline);
+
+  RunTotals totals;
+  const auto t_start = Clock::now();
+  write_frames(o, scene, layout, ff, levels, totals);
+  if (!o.stats.empty()) write_output(o.stats, totals.stats_text);
+  if (!o.report.empty()) write_run_report(o, scene, so, ff, totals, ms_since(t_start));
   return 0;
 }
 

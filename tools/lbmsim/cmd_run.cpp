@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include <omp.h>
 
@@ -122,19 +123,14 @@ void read_init_file(const lbm::Case& c, const std::string& where, std::vector<do
   }
 }
 
-}  // namespace
-
-int run_command(const RunOptions& o) {
-  // The flags were checked in main.cpp (usage errors); now the case (bad input).
-  Output out;
-  out.pattern = o.output;
-  out.format = o.format;
-  Comm& comm = Comm::world();
+// Reads the case and applies the run's flags to it: the usage and bad-input checks of a
+// run, in the order a user meets them. Returns an exit status where this rank stops
+// quietly (rank 0 reports the error), nothing where the run goes on.
+std::optional<int> read_run_case(const RunOptions& o, Comm& comm, LoadedCase& L) {
   if (comm.size() > 1 && (o.case_file.empty() || o.case_file == "-")) {
     if (!comm.root()) return static_cast<int>(Status::usage);
     throw usage_error("mpirun gives standard input to rank 0 only: name the case file for {} ranks", comm.size());
   }
-  LoadedCase L;
   try {
     L = load_case(o.case_file, o.set);
   } catch (const Error& e) {
@@ -146,15 +142,23 @@ int run_command(const RunOptions& o) {
   if (o.every >= 0) c.output.every = o.every;
   if (o.fields) c.output.fields = *o.fields;
   if (o.compress) c.output.compress = *o.compress;
-  out.float64 = c.output.float64;
-  out.zlib = c.output.compress;
   lbm::check_field_names(c.output.fields, o.fields ? "--fields" : L.where);
   const long frames = c.output.every > 0 ? c.steps / c.output.every + 1 : 1;
-  if (out.format != FieldFormat::stream && frames > 1 && !has_index_conversion(out.pattern))
-    throw usage_error("-o \"{}\" needs a %d for {} output steps", out.pattern, frames);
+  if (o.format != FieldFormat::stream && frames > 1 && !has_index_conversion(o.output))
+    throw usage_error("-o \"{}\" needs a %d for {} output steps", o.output, frames);
   if (comm.root() && !o.quiet)
     for (const std::string& w : c.warnings) warn("lbmsim", w);
+  return std::nullopt;
+}
 
+// The initial state of an init.file, kept while the solver is made from it.
+struct InitFields {
+  std::vector<double> rho, u;
+};
+
+// This rank's slab of the lattice, the precision and the initial state.
+lbm::SolverSetup solver_setup(const RunOptions& o, Comm& comm, const LoadedCase& L, InitFields& init) {
+  const lbm::Case& c = L.c;
   const int S = c.dim - 1;
   if (comm.size() > c.size[S])
     throw usage_error("{} ranks for {} layers along {}: a slab needs at least one layer; use at most {} ranks",
@@ -175,123 +179,204 @@ int run_command(const RunOptions& o) {
       u = {-U * std::cos(kx * x) * std::sin(ky * y), U * std::sin(kx * x) * std::cos(ky * y), 0.0};
     };
   }
-  std::vector<double> init_rho, init_u;
   if (c.init.kind == lbm::Init::Kind::file) {
-    read_init_file(c, L.where, init_rho, init_u);
+    read_init_file(c, L.where, init.rho, init.u);
     const int nx = c.size[0], ny = c.size[1];
-    setup.init = [&, nx, ny](int x, int y, int z, double& rho, std::array<double, 3>& u) {
+    setup.init = [&init, nx, ny](int x, int y, int z, double& rho, std::array<double, 3>& u) {
       const std::size_t k = static_cast<std::size_t>(x) + static_cast<std::size_t>(nx) * (y + static_cast<std::size_t>(ny) * z);
-      rho = init_rho[k];
-      u = {init_u[3 * k], init_u[3 * k + 1], init_u[3 * k + 2]};
+      rho = init.rho[k];
+      u = {init.u[3 * k], init.u[3 * k + 1], init.u[3 * k + 2]};
     };
   }
-  auto solver = lbm::make_solver(setup);
-  const lbm::UnitTable units = lbm::unit_table(c, setup.precision == lbm::Precision::f32);
-  lbm::SlabExchange& ex = comm.exchange();
+  return setup;
+}
 
-  auto gathered_moments = [&](std::vector<double>& rho, std::vector<double>& u) {
-    std::vector<double> r, v;
-    solver->moments(r, v);
-    rho = ex.allgather(r);
-    u = ex.allgather(v);
-  };
-  auto mass = [&] { return global_layer_sum(ex, solver->layer_mass(), 1)[0]; };
+// What one run works with: the case, this rank's solver, the units and the outputs.
+struct RunContext {
+  Comm& comm;
+  const lbm::Case& c;
+  const LoadedCase& L;
+  lbm::Solver& solver;
+  const lbm::UnitTable& units;
+  Output& out;
+};
 
+// The forces and probes CSV as they grow, and each force flag's drag coefficient
+// statistics (sum, min, max, last).
+struct RunRecords {
   std::string forces_csv, probes_csv;
-  if (!o.forces.empty()) forces_csv = "step,t,flag,Fx,Fy,Fz,CD,CL\n";
-  if (!o.probes.empty()) probes_csv = "step,t,probe,x,y,z,rho,ux,uy,uz\n";
-  const double dt = units.dt;
-  const double ref_len = c.lref(), ref_u = c.u_ref;
-  json force_stats = json::object();
-  std::map<int, std::array<double, 4>> cd_stats;  // sum, min, max, last
+  std::map<int, std::array<double, 4>> cd_stats;
+};
 
-  auto record_forces = [&](long step) {
-    for (int id : c.forces) {
-      const auto F = global_layer_sum(ex, solver->layer_force(static_cast<std::uint8_t>(id)), 3);
-      const double norm = 0.5 * ref_u * ref_u * (c.dim == 3 ? ref_len * ref_len : ref_len);
-      const double cd = F[0] / norm, cl = F[1] / norm;
-      auto& st = cd_stats[id];
-      if (step == 1) st = {0, cd, cd, cd};
-      st[0] += cd, st[1] = std::min(st[1], cd), st[2] = std::max(st[2], cd), st[3] = cd;
-      if (!forces_csv.empty())
-        forces_csv += fmt::format("{},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", step, step * dt, id,
-                                  F[0] * units.force_scale, F[1] * units.force_scale, F[2] * units.force_scale, cd, cl);
-    }
-  };
-  auto record_probes = [&](long step, const std::vector<double>& rho, const std::vector<double>& u) {
-    for (std::size_t p = 0; p < c.probes.size(); ++p) {
-      int ix[3];
-      for (int a = 0; a < 3; ++a)
-        ix[a] = a < c.dim ? std::clamp(static_cast<int>(std::floor(c.probes[p][a])), 0, c.size[a] - 1) : 0;
-      const std::size_t k = L.flags.index(ix[0], ix[1], ix[2]);
-      probes_csv += fmt::format("{},{:.17g},{},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", step, step * dt, p,
-                                c.probes[p][0], c.probes[p][1], c.probes[p][2], rho[k], u[3 * k] * units.dx / dt,
-                                u[3 * k + 1] * units.dx / dt, u[3 * k + 2] * units.dx / dt);
-    }
-  };
-  auto emit = [&](long step, const std::vector<double>& rho, const std::vector<double>& u) {
-    if (!comm.root()) return;
-    FieldFrame f;
-    f.index = step;
-    f.time = step * dt;
-    f.dim = c.dim;
-    f.size = c.size;
-    f.spacing = units.dx;
-    std::vector<double> uphys = u;
-    if (c.units.physical)
-      for (double& v : uphys) v *= units.dx / dt;
-    f.fields = lbm::derived_fields(c.output.fields, c, L.flags, rho, uphys, units.pressure_scale, units.dx);
-    write_frame(out, f);
-  };
-
-  const double m0 = mass();
-  std::vector<double> rho, u, prev_u;
-  const auto t0 = SteadyClock::now();
+// How the time loop ended, and the last gathered state.
+struct RunTotals {
   long steps_done = 0;
   double residual = -1;
   bool converged = false;
-  try {
-    if (c.output.every > 0) {
-      gathered_moments(rho, u);
-      emit(0, rho, u);
+  std::vector<double> rho, u;
+};
+
+void gathered_moments(RunContext& x, std::vector<double>& rho, std::vector<double>& u) {
+  std::vector<double> r, v;
+  x.solver.moments(r, v);
+  rho = x.comm.exchange().allgather(r);
+  u = x.comm.exchange().allgather(v);
+}
+
+double total_mass(RunContext& x) { return global_layer_sum(x.comm.exchange(), x.solver.layer_mass(), 1)[0]; }
+
+void record_forces(RunContext& x, RunRecords& rec, long step) {
+  const lbm::Case& c = x.c;
+  const double dt = x.units.dt;
+  const double ref_len = c.lref(), ref_u = c.u_ref;
+  for (int id : c.forces) {
+    const auto F = global_layer_sum(x.comm.exchange(), x.solver.layer_force(static_cast<std::uint8_t>(id)), 3);
+    const double norm = 0.5 * ref_u * ref_u * (c.dim == 3 ? ref_len * ref_len : ref_len);
+    const double cd = F[0] / norm, cl = F[1] / norm;
+    auto& st = rec.cd_stats[id];
+    if (step == 1) st = {0, cd, cd, cd};
+    st[0] += cd, st[1] = std::min(st[1], cd), st[2] = std::max(st[2], cd), st[3] = cd;
+    if (!rec.forces_csv.empty())
+      rec.forces_csv += fmt::format("{},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", step, step * dt, id,
+                                    F[0] * x.units.force_scale, F[1] * x.units.force_scale, F[2] * x.units.force_scale, cd, cl);
+  }
+}
+
+void record_probes(RunContext& x, RunRecords& rec, long step, const std::vector<double>& rho, const std::vector<double>& u) {
+  const lbm::Case& c = x.c;
+  const double dt = x.units.dt;
+  for (std::size_t p = 0; p < c.probes.size(); ++p) {
+    int ix[3];
+    for (int a = 0; a < 3; ++a)
+      ix[a] = a < c.dim ? std::clamp(static_cast<int>(std::floor(c.probes[p][a])), 0, c.size[a] - 1) : 0;
+    const std::size_t k = x.L.flags.index(ix[0], ix[1], ix[2]);
+    rec.probes_csv += fmt::format("{},{:.17g},{},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", step, step * dt, p,
+                                  c.probes[p][0], c.probes[p][1], c.probes[p][2], rho[k], u[3 * k] * x.units.dx / dt,
+                                  u[3 * k + 1] * x.units.dx / dt, u[3 * k + 2] * x.units.dx / dt);
+  }
+}
+
+// Writes the fields of one output step (rank 0 only).
+void emit_fields(RunContext& x, long step, const std::vector<double>& rho, const std::vector<double>& u) {
+  if (!x.comm.root()) return;
+  const lbm::Case& c = x.c;
+  const double dt = x.units.dt;
+  FieldFrame f;
+  f.index = step;
+  f.time = step * dt;
+  f.dim = c.dim;
+  f.size = c.size;
+  f.spacing = x.units.dx;
+  std::vector<double> uphys = u;
+  if (c.units.physical)
+    for (double& v : uphys) v *= x.units.dx / dt;
+  f.fields = lbm::derived_fields(c.output.fields, c, x.L.flags, rho, uphys, x.units.pressure_scale, x.units.dx);
+  write_frame(x.out, f);
+}
+
+// The time loop: steps, forces every step, and at the check, output and steady-state
+// steps the gathered state (guarded against divergence), probes and frames; the last
+// state is written unless it just was.
+void time_steps(RunContext& x, RunRecords& rec, RunTotals& t) {
+  const lbm::Case& c = x.c;
+  std::vector<double>& rho = t.rho;
+  std::vector<double>& u = t.u;
+  std::vector<double> prev_u;
+  if (c.output.every > 0) {
+    gathered_moments(x, rho, u);
+    emit_fields(x, 0, rho, u);
+  }
+  for (long step = 1; step <= c.steps; ++step) {
+    x.solver.step();
+    t.steps_done = step;
+    if (!c.forces.empty()) record_forces(x, rec, step);
+    const bool guard = step % c.check_every == 0;
+    const bool write = c.output.every > 0 && step % c.output.every == 0;
+    const bool steady_check = c.steady && step % 1000 == 0;
+    if (!(guard || write || steady_check || (!rec.probes_csv.empty() && guard))) continue;
+    gathered_moments(x, rho, u);
+    double umax = 0;
+    bool finite = true;
+    for (double v : u) {
+      finite = finite && std::isfinite(v);
+      umax = std::max(umax, std::abs(v));
     }
-    for (long t = 1; t <= c.steps; ++t) {
-      solver->step();
-      steps_done = t;
-      if (!c.forces.empty()) record_forces(t);
-      const bool guard = t % c.check_every == 0;
-      const bool write = c.output.every > 0 && t % c.output.every == 0;
-      const bool steady_check = c.steady && t % 1000 == 0;
-      if (!(guard || write || steady_check || (!probes_csv.empty() && guard))) continue;
-      gathered_moments(rho, u);
-      double umax = 0;
-      bool finite = true;
-      for (double v : u) {
-        finite = finite && std::isfinite(v);
-        umax = std::max(umax, std::abs(v));
-      }
-      for (double v : rho) finite = finite && std::isfinite(v);
-      if (!finite) throw runtime_failure("state became non-finite at step {} (velocity)", t);
-      if (umax > 0.5) throw runtime_failure("lattice speed {:.3g} > 0.5 at step {}: the run diverges", umax, t);
-      if (!probes_csv.empty() && guard) record_probes(t, rho, u);
-      if (write) emit(t, rho, u);
-      if (steady_check) {
-        if (!prev_u.empty()) {
-          double d = 0;
-          for (std::size_t k = 0; k < u.size(); ++k) d = std::max(d, std::abs(u[k] - prev_u[k]));
-          residual = d / c.u_ref;
-          if (residual < c.tol) {
-            converged = true;
-            break;
-          }
+    for (double v : rho) finite = finite && std::isfinite(v);
+    if (!finite) throw runtime_failure("state became non-finite at step {} (velocity)", step);
+    if (umax > 0.5) throw runtime_failure("lattice speed {:.3g} > 0.5 at step {}: the run diverges", umax, step);
+    if (!rec.probes_csv.empty() && guard) record_probes(x, rec, step, rho, u);
+    if (write) emit_fields(x, step, rho, u);
+    if (steady_check) {
+      if (!prev_u.empty()) {
+        double d = 0;
+        for (std::size_t k = 0; k < u.size(); ++k) d = std::max(d, std::abs(u[k] - prev_u[k]));
+        t.residual = d / c.u_ref;
+        if (t.residual < c.tol) {
+          t.converged = true;
+          break;
         }
-        prev_u = u;
       }
+      prev_u = u;
     }
-    if (c.output.every == 0 || steps_done % c.output.every != 0) {
-      gathered_moments(rho, u);
-      emit(steps_done, rho, u);
-    }
+  }
+  if (c.output.every == 0 || t.steps_done % c.output.every != 0) {
+    gathered_moments(x, rho, u);
+    emit_fields(x, t.steps_done, rho, u);
+  }
+}
+
+void write_run_report(const RunOptions& o, RunContext& x, const RunRecords& rec, const RunTotals& t, double seconds,
+                      std::size_t fluid, double m0, double m1) {
+  const lbm::Case& c = x.c;
+  json r;
+  r["case"] = lbm::case_to_json(c);
+  r["units"] = lbm::unit_table_json(x.units, c);
+  r["steps"] = t.steps_done;
+  r["converged"] = t.converged;
+  if (t.residual >= 0) r["final_residual"] = t.residual;
+  r["wall_seconds"] = seconds;
+  r["mlups"] = seconds > 0 ? static_cast<double>(fluid) * t.steps_done / seconds / 1e6 : 0.0;
+  r["threads"] = omp_get_max_threads();
+  r["ranks"] = x.comm.size();
+  r["precision"] = precision_name(o.precision);
+  double umax = 0;
+  for (double v : t.u) umax = std::max(umax, std::abs(v));
+  r["max_speed"] = umax;
+  r["mass_drift"] = std::abs(m1 - m0) / m0;
+  json fs = json::object();
+  for (const auto& [id, st] : rec.cd_stats)
+    fs[std::to_string(id)] = {{"cd_mean", st[0] / std::max<long>(1, t.steps_done)}, {"cd_min", st[1]}, {"cd_max", st[2]}, {"cd_last", st[3]}};
+  r["forces"] = fs;
+  write_output(o.report, r.dump(2) + "\n");
+}
+
+}  // namespace
+
+int run_command(const RunOptions& o) {
+  // The flags were checked in main.cpp (usage errors); now the case (bad input).
+  Comm& comm = Comm::world();
+  LoadedCase L;
+  if (const std::optional<int> status = read_run_case(o, comm, L)) return *status;
+  const lbm::Case& c = L.c;
+  Output out;
+  out.pattern = o.output;
+  out.format = o.format;
+  out.float64 = c.output.float64;
+  out.zlib = c.output.compress;
+
+  InitFields init;
+  auto solver = lbm::make_solver(solver_setup(o, comm, L, init));
+  const lbm::UnitTable units = lbm::unit_table(c, o.precision == lbm::Precision::f32);
+  RunContext x{comm, c, L, *solver, units, out};
+  RunRecords rec;
+  if (!o.forces.empty()) rec.forces_csv = "step,t,flag,Fx,Fy,Fz,CD,CL\n";
+  if (!o.probes.empty()) rec.probes_csv = "step,t,probe,x,y,z,rho,ux,uy,uz\n";
+
+  const double m0 = total_mass(x);
+  const auto t0 = SteadyClock::now();
+  RunTotals totals;
+  try {
+    time_steps(x, rec, totals);
   } catch (const Error& e) {
     if (comm.size() > 1 && e.status() == Status::io) {
       std::fprintf(stderr, "lbmsim: error: %s\n", e.what());
@@ -301,34 +386,13 @@ int run_command(const RunOptions& o) {
     throw;
   }
   const double seconds = seconds_since(t0);
-  const double m1 = mass();
+  const double m1 = total_mass(x);
   std::size_t fluid = solver->fluid_nodes();
-  fluid = static_cast<std::size_t>(global_layer_sum(ex, {static_cast<double>(fluid)}, 1)[0]);
+  fluid = static_cast<std::size_t>(global_layer_sum(comm.exchange(), {static_cast<double>(fluid)}, 1)[0]);
   if (!comm.root()) return 0;
-  if (!o.forces.empty()) write_output(o.forces, forces_csv);
-  if (!o.probes.empty()) write_output(o.probes, probes_csv);
-  if (!o.report.empty()) {
-    json r;
-    r["case"] = lbm::case_to_json(c);
-    r["units"] = lbm::unit_table_json(units, c);
-    r["steps"] = steps_done;
-    r["converged"] = converged;
-    if (residual >= 0) r["final_residual"] = residual;
-    r["wall_seconds"] = seconds;
-    r["mlups"] = seconds > 0 ? static_cast<double>(fluid) * steps_done / seconds / 1e6 : 0.0;
-    r["threads"] = omp_get_max_threads();
-    r["ranks"] = comm.size();
-    r["precision"] = precision_name(o.precision);
-    double umax = 0;
-    for (double v : u) umax = std::max(umax, std::abs(v));
-    r["max_speed"] = umax;
-    r["mass_drift"] = std::abs(m1 - m0) / m0;
-    json fs = json::object();
-    for (const auto& [id, st] : cd_stats)
-      fs[std::to_string(id)] = {{"cd_mean", st[0] / std::max<long>(1, steps_done)}, {"cd_min", st[1]}, {"cd_max", st[2]}, {"cd_last", st[3]}};
-    r["forces"] = fs;
-    write_output(o.report, r.dump(2) + "\n");
-  }
+  if (!o.forces.empty()) write_output(o.forces, rec.forces_csv);
+  if (!o.probes.empty()) write_output(o.probes, rec.probes_csv);
+  if (!o.report.empty()) write_run_report(o, x, rec, totals, seconds, fluid, m0, m1);
   return 0;
 }
 
