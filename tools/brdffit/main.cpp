@@ -108,7 +108,7 @@ CLI::App* add_lumitexels(CLI::App& app, LumitexelArgs& ltx) {
       ->check(CLI::Range(0.0, 1.0));
   l->add_option("--shadow-res", ltx.o.shadow_resolution, "Shadow map size (0: the largest image side, 512..8192)")
       ->check(CLI::Range(0, 16384));
-  l->add_option("--atlas", ltx.atlas, "Also write the texture atlas of the home images' pixels (EXR; spec §2.9)");
+  l->add_option("--atlas", ltx.atlas, "Also write the texture atlas of the home images' pixels (EXR; docs/brdffit.md §4)");
   l->add_option("--atlas-mesh", ltx.atlas_mesh, "The mesh with the atlas' texture coordinates (PLY; default: the "
                                                 "--atlas path with .ply)");
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
@@ -178,7 +178,7 @@ CLI::App* add_eval(CLI::App& app, EvalArgs& ev) {
 CLI::App* add_export(CLI::App& app, ExportArgs& ex) {
   namespace cli = fest::cli;
   auto* x = app.add_subcommand("export", "glTF 2.0 (or .glb) with the materials as metallic-roughness textures in a "
-                                         "texture atlas (spec §2.9, §2.10)");
+                                         "texture atlas (docs/brdffit.md §4, §6)");
   x->add_option("--mesh", ex.mesh, "The mesh")->required();
   x->add_option("--materials", ex.materials, "Materials JSON (truth.json of synth, or brdffit(1) MATERIALS)");
   x->add_option("--svbrdf", ex.svbrdf, "Fitted materials instead: .ltw of brdffit project (with --ltx); each texel "
