@@ -326,8 +326,11 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
         if (block.length % size != 0)
           checker.fail(a, begin, fmt::format("{} bytes is not a whole number of {} values", block.length, a.type));
       } else if (block.length / size != a.values || block.length % size != 0) {
-        checker.fail(a, begin, fmt::format("its block holds {} bytes, but the markup asks for {}", block.length,
-                                                    type_words(a.values, a.type, size)));
+        checker.fail(a, begin, a.values_from_offsets
+                                   ? fmt::format("the cell offsets end at {}, but its block holds {} bytes ({} values)",
+                                                 a.values, block.length, block.length / size)
+                                   : fmt::format("its block holds {} bytes, but the markup asks for {}", block.length,
+                                                 type_words(a.values, a.type, size)));
       }
       if (a.is_offsets && block.have_payload) {
         int64_t last = 0;
@@ -353,8 +356,11 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
         if (block.length % size != 0)
           checker.fail(a, begin, fmt::format("{} bytes is not a whole number of {} values", block.length, a.type));
       } else if (block.length / size != a.values || block.length % size != 0) {
-        checker.fail(a, begin, fmt::format("its data hold {} bytes, but the markup asks for {}", block.length,
-                                                    type_words(a.values, a.type, size)));
+        checker.fail(a, begin, a.values_from_offsets
+                                   ? fmt::format("the cell offsets end at {}, but its data hold {} bytes ({} values)",
+                                                 a.values, block.length, block.length / size)
+                                   : fmt::format("its data hold {} bytes, but the markup asks for {}", block.length,
+                                                 type_words(a.values, a.type, size)));
       }
       if (a.is_offsets && block.have_payload) {
         int64_t last = 0;
@@ -398,7 +404,9 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
           checker.fail(a, a.text_begin, fmt::format("its text holds {} strings, not {}", zeros, a.values));
       } else if (values_known && words != a.values) {
         checker.fail(a, a.text_begin,
-                     fmt::format("its text holds {} values, but the markup asks for {}", words, a.values));
+                     a.values_from_offsets
+                         ? fmt::format("the cell offsets end at {}, but its text holds {} values", a.values, words)
+                         : fmt::format("its text holds {} values, but the markup asks for {}", words, a.values));
       }
       if (a.is_offsets) {
         if (words == 0) {
