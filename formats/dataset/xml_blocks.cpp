@@ -345,6 +345,14 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
       size_t begin = a.text_begin;
       while (begin < a.text_end && is_space(s[begin])) ++begin;
       Block block = checker.binary(a, begin, a.text_end, true, want_payload);
+      // The data end where the element's text does (InformationKey children may follow).
+      size_t after = block.end;
+      while (after < a.text_end && is_space(s[after])) ++after;
+      if (after < a.text_end && s[after] != '<')
+        checker.fail(a, block.end,
+                     fmt::format("{} characters after its data, from byte {}, belong to nothing (does header_type "
+                                 "match the data?)",
+                                 a.text_end - block.end, block.end));
       if (is_string) {
         if (block.have_payload) {
           uint64_t strings = static_cast<uint64_t>(std::count(block.payload.begin(), block.payload.end(), '\0'));
