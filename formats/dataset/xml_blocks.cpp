@@ -245,7 +245,7 @@ std::string type_words(uint64_t values, std::string_view type, uint64_t size) {
 }  // namespace
 
 bool xml_type_size(std::string_view type, uint64_t* size) {
-  if (type == "Int8" || type == "UInt8" || type == "Char") {
+  if (type == "Int8" || type == "UInt8" || type == "Bit") {  // Bit: packed, 8 values a byte
     *size = 1;
   } else if (type == "Int16" || type == "UInt16") {
     *size = 2;
@@ -283,10 +283,10 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
     if (!xml_type_size(a.type, &size))
       checker.fail(a, a.tag_offset,
                    fmt::format("type {} is not a VTK type (Int8..Int64, UInt8..UInt64, Float32, Float64, "
-                                        "String)",
+                                        "String, Bit)",
                                         quoted(a.type)));
     const bool is_string = size == 0;
-    bool values_known = true;
+    bool values_known = a.type != "Bit";
     if (a.values_from_offsets) {
       if (a.offsets_of < 0 || last_offset[static_cast<size_t>(a.offsets_of)] < 0) {
         values_known = false;
