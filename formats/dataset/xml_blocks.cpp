@@ -20,12 +20,14 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; 
 
 }  // namespace
 
-std::string quoted_bytes(std::string_view s, size_t max) {
+std::string quoted_bytes(std::string_view s, size_t max) { return "\"" + printable_bytes(s, max, true) + "\""; }
+
+std::string printable_bytes(std::string_view s, size_t max, bool escape_quotes) {
   static const char* hex = "0123456789abcdef";
-  std::string out = "\"";
+  std::string out;
   for (size_t i = 0; i < s.size() && i < max; ++i) {
     unsigned char c = static_cast<unsigned char>(s[i]);
-    if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\') {
+    if (c >= 0x20 && c < 0x7f && !(escape_quotes && c == '"') && c != '\\') {
       out += static_cast<char>(c);
     } else {
       out += "\\x";
@@ -34,7 +36,7 @@ std::string quoted_bytes(std::string_view s, size_t max) {
     }
   }
   if (s.size() > max) out += "...";
-  return out + "\"";
+  return out;
 }
 
 namespace {

@@ -51,5 +51,7 @@ bool xml_type_size(std::string_view type, uint64_t* size);
 
 // `s` in double quotes for a message: at most `max` bytes, anything unprintable escaped.
 std::string quoted_bytes(std::string_view s, size_t max = 12);
+// The same without the quotes, for text that is not input (VTK's messages quote it).
+std::string printable_bytes(std::string_view s, size_t max, bool escape_quotes = false);
 
 }  // namespace fest::formats::detail
