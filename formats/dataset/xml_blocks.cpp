@@ -321,8 +321,9 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
         if (block.have_payload) {
           uint64_t strings = static_cast<uint64_t>(std::count(block.payload.begin(), block.payload.end(), '\0'));
           if (strings != a.values || (!block.payload.empty() && block.payload.back() != '\0'))
-            checker.fail(a, begin, fmt::format("its {} bytes hold {} strings, not {}", block.length, strings,
-                                                        a.values));
+            checker.fail(a, begin, fmt::format("its {} bytes hold {} strings, not {} (do header_type and "
+                                                        "byte_order match the data?)",
+                                                        block.length, strings, a.values));
         }
       } else if (!values_known) {
         if (block.length % size != 0)
@@ -359,8 +360,9 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
         if (block.have_payload) {
           uint64_t strings = static_cast<uint64_t>(std::count(block.payload.begin(), block.payload.end(), '\0'));
           if (strings != a.values || (!block.payload.empty() && block.payload.back() != '\0'))
-            checker.fail(a, begin, fmt::format("its {} bytes hold {} strings, not {}", block.length, strings,
-                                                        a.values));
+            checker.fail(a, begin, fmt::format("its {} bytes hold {} strings, not {} (do header_type and "
+                                                        "byte_order match the data?)",
+                                                        block.length, strings, a.values));
         }
       } else if (!values_known) {
         if (block.length % size != 0)
