@@ -282,6 +282,7 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
   for (size_t i : order) {
     XmlArray& a = arrays[i];
     uint64_t size = 0;
+    if (a.type.empty()) checker.fail(a, a.tag_offset, "has no type attribute");
     if (!xml_type_size(a.type, &size))
       checker.fail(a, a.tag_offset,
                    fmt::format("type {} is not a VTK type (Int8..Int64, UInt8..UInt64, Float32, Float64, "
