@@ -41,8 +41,6 @@ std::string printable_bytes(std::string_view s, size_t max, bool escape_quotes) 
 
 namespace {
 
-std::string quoted(std::string_view s, size_t max = 12) { return quoted_bytes(s, max); }
-
 int base64_value(char c) {
   if (c >= 'A' && c <= 'Z') return c - 'A';
   if (c >= 'a' && c <= 'z') return c - 'a' + 26;
@@ -65,7 +63,7 @@ class BlockChecker {
   BlockChecker(std::string_view s, const XmlEncoding& e, const char* format) : s_(s), e_(e), format_(format) {}
 
   [[noreturn]] void fail(const XmlArray& a, size_t at, const std::string& problem) const {
-    throw bad_input("{}: DataArray {} at byte {}: {}", format_, quoted(a.name, 40), at, problem);
+    throw bad_input("{}: DataArray {} at byte {}: {}", format_, quoted_bytes(a.name, 40), at, problem);
   }
 
   // Reads `n` bytes of a stream that starts at `begin` (raw) or is base64 text from
@@ -80,7 +78,8 @@ class BlockChecker {
     void read(uint64_t n, std::string* out, const char* what) {
       if (!base64_) {
         if (n > limit_ - pos_)
-          c_.fail(a_, pos_, fmt::format("{} of {} bytes runs past the end of the data ({} bytes left)", what, n, limit_ - pos_));
+          c_.fail(a_, pos_,
+                  fmt::format("{} of {} bytes runs past the end of the data ({} bytes left)", what, n, limit_ - pos_));
         if (out) out->append(c_.s_.data() + pos_, n);
         pos_ += n;
         return;
@@ -94,7 +93,8 @@ class BlockChecker {
       uint64_t quads = (n + 2) / 3;
       if (quads > (limit_ - pos_) / 4)
         c_.fail(a_, pos_,
-                fmt::format("{} of {} bytes runs past the end of the base64 data ({} characters left)", what, n, limit_ - pos_));
+                fmt::format("{} of {} bytes runs past the end of the base64 data ({} characters left)", what, n,
+                            limit_ - pos_));
       if (out) out->reserve(out->size() + n);
       while (n > 0) {
         unsigned v[4];
@@ -106,7 +106,7 @@ class BlockChecker {
             real = std::min(real, k);
             d = 0;
           } else if (d < 0 || real < 4) {
-            c_.fail(a_, pos_ + k, fmt::format("{} is not base64 data", quoted(c_.s_.substr(pos_ + k, 4))));
+            c_.fail(a_, pos_ + k, fmt::format("{} is not base64 data", quoted_bytes(c_.s_.substr(pos_ + k, 4))));
           }
           v[k] = static_cast<unsigned>(d);
         }
@@ -164,7 +164,7 @@ class BlockChecker {
       block.length = word(header, 0);
       if (block.length > limit - begin)
         fail(a, begin, fmt::format("its block header {} declares {} bytes, more than the {} bytes left in the file",
-                           quoted(header), block.length, limit - begin));
+                           quoted_bytes(header), block.length, limit - begin));
       block.have_payload = want_payload;
       in.read(block.length, want_payload ? &block.payload : nullptr, "the data");
       in.end_stream();
@@ -174,9 +174,15 @@ class BlockChecker {
     in.read(3 * uint64_t{hb}, &header, "the compression header");
     const uint64_t blocks = word(header, 0), block_size = word(header, 1), last_size = word(header, 2);
     if (blocks > (limit - begin) / hb)
-      fail(a, begin, fmt::format("its compression header {} declares {} blocks, more than the file holds", quoted(header), blocks));
+      fail(a, begin,
+           fmt::format("its compression header {} declares {} blocks, more than the file holds", quoted_bytes(header),
+                       blocks));
+    // The reader holds one whole block in memory while it inflates it.
+    if (block_size > kMaxInflate)
+      fail(a, begin, fmt::format("its compression header declares blocks of {} bytes, more than 2^28", block_size));
     if (blocks > 0 && (block_size == 0 || last_size > block_size))
-      fail(a, begin, fmt::format("its compression header declares blocks of {} bytes with a last block of {}", block_size,
+      fail(a, begin,
+           fmt::format("its compression header declares blocks of {} bytes with a last block of {}", block_size,
                          last_size));
     in.read(blocks * hb, &header, "the compressed block sizes");
     in.end_stream();
@@ -209,7 +215,8 @@ class BlockChecker {
       int status = uncompress(reinterpret_cast<Bytef*>(&block.payload[to]), &got,
                               reinterpret_cast<const Bytef*>(compressed.data() + from), static_cast<uLong>(size));
       if (status != Z_OK || got != want)
-        fail(a, begin, fmt::format("compressed block {} does not inflate to the {} bytes its header declares", b, want));
+        fail(a, begin,
+             fmt::format("compressed block {} does not inflate to the {} bytes its header declares", b, want));
       from += size;
       to += want;
     }
@@ -279,6 +286,41 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
     if (arrays[i].values_from_offsets) order.push_back(i);
   std::vector<int64_t> last_offset(arrays.size(), -1);
 
+  // The data of a binary block against the markup: as many strings or values as it
+  // asks for; an offsets array's last value is kept for its connectivity.
+  auto check_contents = [&](const XmlArray& a, size_t i, size_t begin, const Block& block, const char* holds) {
+    uint64_t size = 0;
+    xml_type_size(a.type, &size);
+    if (size == 0) {
+      if (!block.have_payload) return;
+      uint64_t strings = static_cast<uint64_t>(std::count(block.payload.begin(), block.payload.end(), '\0'));
+      if (strings != a.values || (!block.payload.empty() && block.payload.back() != '\0'))
+        checker.fail(a, begin,
+                     fmt::format("its {} bytes hold {} strings, not {} (do header_type and byte_order match the data?)",
+                                 block.length, strings, a.values));
+      return;
+    }
+    if (!a.values_known) {
+      if (block.length % size != 0)
+        checker.fail(a, begin, fmt::format("{} bytes is not a whole number of {} values", block.length, a.type));
+    } else if (block.length / size != a.values || block.length % size != 0) {
+      checker.fail(a, begin,
+                   a.values_from_offsets
+                       ? fmt::format("the cell offsets end at {}, but {} {} bytes ({} values)", a.values, holds,
+                                     block.length, block.length / size)
+                       : fmt::format("{} {} bytes, but the markup asks for {}", holds, block.length,
+                                     type_words(a.values, a.type, size)));
+    }
+    if (!a.is_offsets || !block.have_payload) return;
+    int64_t last = 0;
+    if (last_integer(block.payload, size, a.type, encoding.big_endian, &last)) {
+      if (last < 0) checker.fail(a, begin, fmt::format("the last cell offset is {}", last));
+      last_offset[i] = last;
+    } else if (block.length == 0) {
+      last_offset[i] = 0;
+    }
+  };
+
   for (size_t i : order) {
     XmlArray& a = arrays[i];
     uint64_t size = 0;
@@ -287,19 +329,20 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
       checker.fail(a, a.tag_offset,
                    fmt::format("type {} is not a VTK type (Int8..Int64, UInt8..UInt64, Float32, Float64, "
                                         "String, Bit)",
-                                        quoted(a.type)));
+                                        quoted_bytes(a.type)));
     const bool is_string = size == 0;
-    bool values_known = a.type != "Bit";
+    a.values_known = a.type != "Bit";
     if (a.values_from_offsets) {
       if (a.offsets_of < 0 || last_offset[static_cast<size_t>(a.offsets_of)] < 0) {
-        values_known = false;
+        a.values_known = false;
       } else {
         a.values = static_cast<uint64_t>(last_offset[static_cast<size_t>(a.offsets_of)]);
       }
     }
     const bool want_payload = is_string || a.is_offsets;
     if (a.format == "appended") {
-      if (appended_begin == npos) checker.fail(a, a.tag_offset, "format=\"appended\" but the file has no <AppendedData>");
+      if (appended_begin == npos)
+        checker.fail(a, a.tag_offset, "format=\"appended\" but the file has no <AppendedData>");
       std::string_view o = a.offset;
       while (!o.empty() && is_space(o.front())) o.remove_prefix(1);
       while (!o.empty() && is_space(o.back())) o.remove_suffix(1);
@@ -309,7 +352,7 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
         if (c < '0' || c > '9') ok = false;
         if (ok) offset = offset * 10 + static_cast<uint64_t>(c - '0');
       }
-      if (!ok) checker.fail(a, a.tag_offset, fmt::format("offset {} is not a byte offset", quoted(o)));
+      if (!ok) checker.fail(a, a.tag_offset, fmt::format("offset {} is not a byte offset", quoted_bytes(o)));
       if (offset >= appended_end - appended_begin)
         checker.fail(a, a.tag_offset,
                      fmt::format("offset {} lies past the end of the appended data ({} bytes)", offset,
@@ -318,33 +361,7 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
       Block block = checker.binary(a, begin, appended_end, base64_appended, want_payload);
       extents.push_back({begin, block.end, i});
       a.text_begin = begin;
-      if (is_string) {
-        if (block.have_payload) {
-          uint64_t strings = static_cast<uint64_t>(std::count(block.payload.begin(), block.payload.end(), '\0'));
-          if (strings != a.values || (!block.payload.empty() && block.payload.back() != '\0'))
-            checker.fail(a, begin, fmt::format("its {} bytes hold {} strings, not {} (do header_type and "
-                                                        "byte_order match the data?)",
-                                                        block.length, strings, a.values));
-        }
-      } else if (!values_known) {
-        if (block.length % size != 0)
-          checker.fail(a, begin, fmt::format("{} bytes is not a whole number of {} values", block.length, a.type));
-      } else if (block.length / size != a.values || block.length % size != 0) {
-        checker.fail(a, begin, a.values_from_offsets
-                                   ? fmt::format("the cell offsets end at {}, but its block holds {} bytes ({} values)",
-                                                 a.values, block.length, block.length / size)
-                                   : fmt::format("its block holds {} bytes, but the markup asks for {}", block.length,
-                                                 type_words(a.values, a.type, size)));
-      }
-      if (a.is_offsets && block.have_payload) {
-        int64_t last = 0;
-        if (last_integer(block.payload, size, a.type, encoding.big_endian, &last)) {
-          if (last < 0) checker.fail(a, begin, fmt::format("the last cell offset is {}", last));
-          last_offset[i] = last;
-        } else if (block.length == 0) {
-          last_offset[i] = 0;
-        }
-      }
+      check_contents(a, i, begin, block, "its block holds");
     } else if (a.format == "binary") {
       size_t begin = a.text_begin;
       while (begin < a.text_end && is_space(s[begin])) ++begin;
@@ -357,33 +374,7 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
                      fmt::format("{} characters after its data, from byte {}, belong to nothing (does header_type "
                                  "match the data?)",
                                  a.text_end - block.end, block.end));
-      if (is_string) {
-        if (block.have_payload) {
-          uint64_t strings = static_cast<uint64_t>(std::count(block.payload.begin(), block.payload.end(), '\0'));
-          if (strings != a.values || (!block.payload.empty() && block.payload.back() != '\0'))
-            checker.fail(a, begin, fmt::format("its {} bytes hold {} strings, not {} (do header_type and "
-                                                        "byte_order match the data?)",
-                                                        block.length, strings, a.values));
-        }
-      } else if (!values_known) {
-        if (block.length % size != 0)
-          checker.fail(a, begin, fmt::format("{} bytes is not a whole number of {} values", block.length, a.type));
-      } else if (block.length / size != a.values || block.length % size != 0) {
-        checker.fail(a, begin, a.values_from_offsets
-                                   ? fmt::format("the cell offsets end at {}, but its data hold {} bytes ({} values)",
-                                                 a.values, block.length, block.length / size)
-                                   : fmt::format("its data hold {} bytes, but the markup asks for {}", block.length,
-                                                 type_words(a.values, a.type, size)));
-      }
-      if (a.is_offsets && block.have_payload) {
-        int64_t last = 0;
-        if (last_integer(block.payload, size, a.type, encoding.big_endian, &last)) {
-          if (last < 0) checker.fail(a, begin, fmt::format("the last cell offset is {}", last));
-          last_offset[i] = last;
-        } else if (block.length == 0) {
-          last_offset[i] = 0;
-        }
-      }
+      check_contents(a, i, begin, block, "its data hold");
     } else if (a.format == "ascii") {
       // Words of the element's text, child elements (InformationKey) left out.
       uint64_t words = 0, zeros = 0;
@@ -415,7 +406,7 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
       if (is_string) {
         if (zeros != a.values || (words > 0 && last_word != "0"))
           checker.fail(a, a.text_begin, fmt::format("its text holds {} strings, not {}", zeros, a.values));
-      } else if (values_known && words != a.values) {
+      } else if (a.values_known && words != a.values) {
         checker.fail(a, a.text_begin,
                      a.values_from_offsets
                          ? fmt::format("the cell offsets end at {}, but its text holds {} values", a.values, words)
@@ -429,13 +420,13 @@ void check_xml_blocks(std::string_view s, const XmlEncoding& encoding, std::vect
           char* end = nullptr;
           long long v = std::strtoll(text.c_str(), &end, 10);
           if (end != text.c_str() + text.size() || v < 0)
-            checker.fail(a, a.text_begin, fmt::format("the last cell offset {} is not a count", quoted(text)));
+            checker.fail(a, a.text_begin, fmt::format("the last cell offset {} is not a count", quoted_bytes(text)));
           last_offset[i] = v;
         }
       }
     } else {
       checker.fail(a, a.tag_offset,
-                   fmt::format("format {} is not ascii, binary or appended", quoted(a.format)));
+                   fmt::format("format {} is not ascii, binary or appended", quoted_bytes(a.format)));
     }
   }
 

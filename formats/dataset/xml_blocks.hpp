@@ -34,6 +34,7 @@ struct XmlArray {
   size_t text_begin = 0, text_end = 0;  // inline content (ascii, binary), child tags included
   uint64_t values = 0;           // values (tuples x components) the markup asks for
   bool values_from_offsets = false;  // connectivity: as many as the last cell offset says
+  bool values_known = true;      // set by the check: false where only the data say how many
   int offsets_of = -1;           // for connectivity: index of its offsets array, or -1
   bool is_offsets = false;       // a cell offsets array (its last value sizes connectivity)
 };

@@ -213,7 +213,8 @@ class XmlScanner {
       if (hi < lo) return 0;
       points = saturating_mul(points, static_cast<uint64_t>(hi - lo + 1));
     }
-    if (points > kMaxCount) throw bad_input("{}: {} {} describes more than 2^40 points", format_, key, quoted_bytes(text, 40));
+    if (points > kMaxCount)
+      throw bad_input("{}: {} {} describes more than 2^40 points", format_, key, quoted_bytes(text, 40));
     return points;
   }
 
