@@ -9,7 +9,7 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_mgh fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json
   fuzz_image_stream fuzz_patnet fuzz_vw fuzz_radiosity_scene fuzz_volume_source fuzz_softobj fuzz_lbm_case fuzz_ffd_lattice fuzz_v4l2_frame fuzz_feshape_xyz
   fuzz_ltx fuzz_ltw fuzz_merl fuzz_tlp_archive fuzz_mmb fuzz_eos_model fuzz_npz_model
-  fuzz_segbrain_kb)
+  fuzz_segbrain_kb fuzz_vtk_precheck)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -43,6 +43,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_eos_model) echo tests/data/facefit/seeds ;;
     fuzz_npz_model) echo tests/data/facefit ;;
     fuzz_segbrain_kb) echo share/segbrain tests/data/regress/segbrain ;;
+    fuzz_vtk_precheck) echo tests/data/dataset tests/data/vtk_bad tests/data/regress/dataset ;;
   esac
 }
 

@@ -37,6 +37,7 @@
 #include "formats/dataset/guarded_xml_reader.hpp"
 #include "formats/dataset/legacy_scan.hpp"
 #include "formats/dataset/vtk_messages.hpp"
+#include "formats/dataset/xml_blocks.hpp"
 #include "formats/dataset/xml_scan.hpp"
 #include "lib/core/error.hpp"
 
@@ -64,19 +65,26 @@ const char* error_code_text(unsigned long code) {
   }
 }
 
+// What VTK said, as the detail of fest's message: it may quote input bytes, so
+// those are escaped (xml_blocks.hpp) and the text is cut short.
+std::string vtk_says(const std::string& text) { return "VTK: " + printable_bytes(text, 160); }
+
 // The XML readers warn about files VTK itself writes (an empty grid has "No Points
 // element"), and say what is wrong through errors, so only the legacy readers'
 // warnings count: there "No points read!" is how a file that stops early shows.
-void fail_on_messages(const MessageCollector& messages, const char* format, bool warnings_count) {
+// `what` says in fest's words what went wrong ("the file does not read as its markup
+// declares"); VTK's text follows it as the detail.
+void fail_on_messages(const MessageCollector& messages, const char* format, bool warnings_count, const char* what) {
   for (const std::string& error : messages.errors()) {
     // vtkXMLUnstructuredDataReader says this as an error about the files its own
     // writer makes for a grid without points; validate_dataset checks what matters.
     if (error.rfind("No Points element available in first piece", 0) == 0) continue;
-    throw bad_input("{}: {}", format, error);
+    throw bad_input("{}: {} ({})", format, what, vtk_says(error));
   }
   if (!warnings_count) return;
   for (const std::string& warning : messages.warnings())
-    if (!harmless_warning(warning)) throw bad_input("{}: {}", format, warning);
+    if (!harmless_warning(warning))
+      throw bad_input("{}: {} ({})", format, what, vtk_says(warning));
 }
 
 // VTK code is not written for exceptions, but allocations inside it can still throw.
@@ -119,7 +127,7 @@ vtkSmartPointer<vtkDataSet> read_xml(std::string_view bytes, std::string_view ty
   reader->ReadFromInputStringOn();
   reader->SetInputString(std::string(bytes));
   run_vtk(format, [&] { reader->Update(); });
-  fail_on_messages(*messages, format, false);
+  fail_on_messages(*messages, format, false, "the data do not read as the markup declares them");
   if (reader->GetErrorCode() != vtkErrorCode::NoError)
     throw bad_input("{}: {}", format, error_code_text(reader->GetErrorCode()));
   vtkSmartPointer<vtkDataSet> dataset = detach(reader->GetOutputDataObject(0), expected_class, format);
@@ -201,7 +209,7 @@ vtkSmartPointer<vtkDataSet> read_legacy(std::string_view bytes) {
   reader->ReadAllTCoordsOn();
   reader->ReadAllFieldsOn();
   run_vtk(format, [&] { reader->Update(); });
-  fail_on_messages(*messages, format, true);
+  fail_on_messages(*messages, format, true, "the data do not read as the header declares them");
   if (reader->GetErrorCode() != vtkErrorCode::NoError)
     throw bad_input("vtk: {}", error_code_text(reader->GetErrorCode()));
   vtkSmartPointer<vtkDataSet> dataset = detach(reader->GetOutputDataObject(0), expected_class, format);
@@ -232,7 +240,7 @@ std::string write_xml(vtkDataSet* dataset, bool ascii, const char* format, bool 
   }
   int ok = 0;
   run_vtk(format, [&] { ok = writer->Write(); });
-  fail_on_messages(*messages, format, true);
+  fail_on_messages(*messages, format, true, "VTK could not write the dataset");
   if (!ok) throw bad_input("{}: VTK could not write this {}", format, dataset->GetClassName());
   return writer->GetOutputString();
 }
@@ -251,7 +259,7 @@ std::string write_legacy(vtkDataSet* dataset, bool ascii) {
   }
   int ok = 0;
   run_vtk("vtk", [&] { ok = writer->Write(); });
-  fail_on_messages(*messages, "vtk", true);
+  fail_on_messages(*messages, "vtk", true, "VTK could not write the dataset");
   if (!ok) throw bad_input("vtk: VTK could not write this {}", dataset->GetClassName());
   return writer->GetOutputStdString();
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/dataset/xml_blocks.hpp"
 #include "lib/core/error.hpp"
 
 namespace fest::formats::detail {
@@ -26,6 +27,7 @@ struct Attribute {
 
 struct Tag {
   std::string_view name;
+  size_t begin = 0, end = 0;  // where its '<' is, and just past its '>'
   std::vector<Attribute> attributes;
   bool closing = false;
   bool self_closing = false;
@@ -59,22 +61,48 @@ class XmlScanner {
   XmlLimits run() {
     if (s_.empty()) throw bad_input("{}: empty input", format_);
     Tag tag;
+    size_t appended_begin = std::string_view::npos, appended_end = s_.size();
+    bool base64_appended = false;
     while (next_tag(tag)) {
       if (tag.closing) {
-        if (!open_.empty()) open_.pop_back();
+        if (!open_.empty()) {
+          if (open_array_.back() >= 0) arrays_[static_cast<size_t>(open_array_.back())].text_end = tag.begin;
+          open_.pop_back();
+          open_array_.pop_back();
+        }
         continue;
       }
       // Raw appended data follows; the markup that matters is all before it.
-      if (tag.name == "AppendedData") break;
-      element(tag);
-      if (!tag.self_closing) open_.push_back(tag.name);
+      if (tag.name == "AppendedData") {
+        std::string_view encoding = tag.get("encoding");
+        if (encoding != "raw" && encoding != "base64")
+          throw bad_input("{}: <AppendedData encoding={}> at byte {} is neither raw nor base64", format_,
+                          quoted_bytes(encoding), tag.begin);
+        base64_appended = encoding == "base64";
+        size_t underscore = s_.find('_', tag.end);
+        if (underscore == std::string_view::npos)
+          throw bad_input("{}: <AppendedData> at byte {} has no '_' before its data", format_, tag.begin);
+        appended_begin = underscore + 1;
+        size_t close = s_.rfind("</AppendedData>");
+        if (close != std::string_view::npos && close >= appended_begin) appended_end = close;
+        break;
+      }
+      int array = element(tag);
+      if (!tag.self_closing) {
+        open_.push_back(tag.name);
+        open_array_.push_back(array);
+      }
     }
     if (!seen_root_) throw bad_input("{}: not a VTK XML file (no <VTKFile> element)", format_);
+    for (XmlArray& a : arrays_)
+      if (a.text_end < a.text_begin) a.text_end = a.text_begin;  // never closed: no inline text
+    link_connectivity();
     uint64_t budget = saturating_add(
         saturating_mul(s_.size(), compressed_ ? kCompressedExpansion : kPlainExpansion), kSlack);
     if (declared_bytes_ > budget)
       throw bad_input("{}: the arrays declared need {} bytes, more than a {}-byte file can hold", format_,
                       declared_bytes_, s_.size());
+    check_xml_blocks(s_, encoding_, arrays_, appended_begin, appended_end, base64_appended, format_);
     // A stored value takes at least one byte unless compressed.
     XmlLimits limits;
     limits.max_data_driven_values =
@@ -107,6 +135,7 @@ class XmlScanner {
 
   bool parse_tag(Tag& tag) {
     tag = Tag{};
+    tag.begin = pos_;
     ++pos_;  // '<'
     if (pos_ < s_.size() && s_[pos_] == '/') {
       tag.closing = true;
@@ -120,13 +149,14 @@ class XmlScanner {
       while (pos_ < s_.size() && is_space(s_[pos_])) ++pos_;
       if (pos_ >= s_.size()) return false;
       if (s_[pos_] == '>') {
-        ++pos_;
+        tag.end = ++pos_;
         return true;
       }
       if (s_[pos_] == '/') {
         if (pos_ + 1 >= s_.size() || s_[pos_ + 1] != '>') return false;
         tag.self_closing = true;
         pos_ += 2;
+        tag.end = pos_;
         return true;
       }
       size_t name_start = pos_;
@@ -161,7 +191,7 @@ class XmlScanner {
   }
 
   [[noreturn]] void bad_number(const Tag& tag, std::string_view key) const {
-    throw bad_input("{}: <{} {}=\"{}\"> is not a count", format_, tag.name, key, tag.get(key).substr(0, 40));
+    throw bad_input("{}: <{} {}={}> is not a count", format_, quoted_bytes(tag.name), key, quoted_bytes(tag.get(key)));
   }
 
   // Points of an "x0 x1 y0 y1 z0 z1" extent.
@@ -172,18 +202,40 @@ class XmlScanner {
     for (long long& v : e) {
       char* end = nullptr;
       v = std::strtoll(p, &end, 10);
-      if (end == p) throw bad_input("{}: <{} {}=\"{}\"> is not an extent", format_, tag.name, key, text.substr(0, 60));
+      if (end == p) throw bad_input("{}: <{} {}={}> is not an extent", format_, tag.name, key, quoted_bytes(text, 40));
       p = end;
     }
     uint64_t points = 1;
     for (int axis = 0; axis < 3; ++axis) {
       long long lo = e[2 * axis], hi = e[2 * axis + 1];
-      if (lo < -(1LL << 31) || hi > (1LL << 31)) throw bad_input("{}: {} {} is out of range", format_, key, text);
+      if (lo < -(1LL << 31) || hi > (1LL << 31))
+        throw bad_input("{}: {} {} is out of range", format_, key, quoted_bytes(text, 40));
       if (hi < lo) return 0;
       points = saturating_mul(points, static_cast<uint64_t>(hi - lo + 1));
     }
-    if (points > kMaxCount) throw bad_input("{}: {} \"{}\" describes more than 2^40 points", format_, key, text);
+    if (points > kMaxCount)
+      throw bad_input("{}: {} {} describes more than 2^40 points", format_, key, quoted_bytes(text, 40));
     return points;
+  }
+
+  // Cells of a grid of `points` points over an extent: vtkImageData counts one cell
+  // per interval along each axis that has more than one point.
+  uint64_t extent_cells(const Tag& tag, std::string_view key) const {
+    std::string text(tag.get(key));
+    long long e[6] = {0, 0, 0, 0, 0, 0};
+    const char* p = text.c_str();
+    for (long long& v : e) {
+      char* end = nullptr;
+      v = std::strtoll(p, &end, 10);
+      p = end;
+    }
+    uint64_t cells = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+      long long lo = e[2 * axis], hi = e[2 * axis + 1];
+      if (hi < lo) return 0;
+      if (hi > lo) cells = saturating_mul(cells, static_cast<uint64_t>(hi - lo));
+    }
+    return cells;
   }
 
   static uint64_t type_size(std::string_view type) {
@@ -194,28 +246,57 @@ class XmlScanner {
     return 8;
   }
 
-  void element(const Tag& tag) {
+  // The array index of a DataArray tag, -1 for other tags.
+  int element(const Tag& tag) {
     const std::string_view parent = open_.empty() ? std::string_view() : open_.back();
     if (tag.name == "VTKFile") {
       seen_root_ = true;
       std::string_view type = tag.get("type");
       if (type != expected_)
-        throw bad_input("{}: this is a VTK XML {} file, not {}", format_, type.empty() ? "untyped" : type,
-                        expected_);
-      compressed_ = tag.has("compressor") && !tag.get("compressor").empty();
+        throw bad_input("{}: this is a VTK XML {} file, not {}", format_,
+                        type.empty() ? std::string("untyped") : quoted_bytes(type, 24), expected_);
+      vtk_file(tag);
     } else if ((tag.name == "ImageData" || tag.name == "StructuredGrid") && tag.has("WholeExtent")) {
       extent_points(tag, "WholeExtent");
     } else if (tag.name == "Piece") {
       piece(tag);
     } else if (tag.name == "DataArray" || tag.name == "Array") {
-      data_array(tag, parent);
+      return data_array(tag, parent);
+    } else if (tag.name == "Cells" || tag.name == "Verts" || tag.name == "Lines" || tag.name == "Strips" ||
+               tag.name == "Polys") {
+      ++cell_group_;
     }
+    return -1;
+  }
+
+  // How the blocks are encoded: VTK's defaults are UInt32 headers, no compression.
+  void vtk_file(const Tag& tag) {
+    std::string_view header = tag.has("header_type") ? tag.get("header_type") : "UInt32";
+    if (header != "UInt32" && header != "UInt64")
+      throw bad_input("{}: <VTKFile header_type={}> at byte {} is neither UInt32 nor UInt64", format_,
+                      quoted_bytes(header), tag.begin);
+    encoding_.header_bytes = header == "UInt32" ? 4 : 8;
+    // Without byte_order VTK reads the machine's order: little endian where fest runs.
+    std::string_view order = tag.has("byte_order") ? tag.get("byte_order") : "LittleEndian";
+    if (order != "LittleEndian" && order != "BigEndian")
+      throw bad_input("{}: <VTKFile byte_order={}> at byte {} is neither LittleEndian nor BigEndian", format_,
+                      quoted_bytes(order), tag.begin);
+    encoding_.big_endian = order == "BigEndian";
+    std::string_view compressor = tag.get("compressor");
+    if (!compressor.empty() && compressor != "vtkZLibDataCompressor" && compressor != "vtkLZ4DataCompressor" &&
+        compressor != "vtkLZMADataCompressor")
+      throw bad_input("{}: <VTKFile compressor={}> at byte {} is not one VTK has (vtkZLibDataCompressor, "
+                      "vtkLZ4DataCompressor, vtkLZMADataCompressor)",
+                      format_, quoted_bytes(compressor, 24), tag.begin);
+    compressed_ = !compressor.empty();
+    encoding_.compressed = compressed_;
+    encoding_.zlib = compressor == "vtkZLibDataCompressor";
   }
 
   void piece(const Tag& tag) {
     if (expected_ == "ImageData" || expected_ == "StructuredGrid") {
       points_ = extent_points(tag, "Extent");
-      cells_ = points_;  // never more cells than points in a grid
+      cells_ = extent_cells(tag, "Extent");
       return;
     }
     points_ = number(tag, "NumberOfPoints", 0, kMaxCount);
@@ -226,10 +307,18 @@ class XmlScanner {
     cells_ = number(tag, "NumberOfCells", 0, kMaxCount) + verts_ + lines_ + strips_ + polys_;
   }
 
-  void data_array(const Tag& tag, std::string_view parent) {
+  int data_array(const Tag& tag, std::string_view parent) {
     uint64_t comps = number(tag, "NumberOfComponents", 1, kMaxComponents);
     std::string_view name = tag.get("Name");
+    XmlArray array;
+    array.name = name;
+    array.type = tag.get("type");
+    array.format = tag.get("format");
+    array.offset = tag.get("offset");
+    array.tag_offset = tag.begin;
+    array.text_begin = array.text_end = tag.end;
     uint64_t tuples = 0;
+    bool known = true;
     if (parent == "PointData" || parent == "Points" || parent == "Coordinates") {
       tuples = points_;
     } else if (parent == "CellData") {
@@ -238,14 +327,36 @@ class XmlScanner {
       if (name == "faces" || name == "faceoffsets")
         throw bad_input("{}: polyhedron cells (faces arrays) are not supported", format_);
       if (name == "offsets" || name == "types") tuples = cells_;
+      array.is_offsets = name == "offsets";
+      known = name == "offsets" || name == "types";
     } else if (parent == "Verts" || parent == "Lines" || parent == "Strips" || parent == "Polys") {
       if (name == "offsets")
         tuples = parent == "Verts" ? verts_ : parent == "Lines" ? lines_ : parent == "Strips" ? strips_ : polys_;
+      array.is_offsets = name == "offsets";
+      known = array.is_offsets;
     } else if (parent == "FieldData") {
       tuples = number(tag, "NumberOfTuples", 0, kMaxCount);
+    } else {
+      known = false;  // an array VTK does not read by its place: sized by its data only
     }
-    uint64_t bytes = saturating_mul(saturating_mul(tuples, comps), type_size(tag.get("type")));
+    array.values = saturating_mul(tuples, comps);
+    array.values_from_offsets = !known;
+    uint64_t bytes = saturating_mul(array.values, type_size(array.type));
     declared_bytes_ = saturating_add(declared_bytes_, bytes);
+    arrays_.push_back(array);
+    const bool connectivity = (parent == "Cells" || parent == "Verts" || parent == "Lines" || parent == "Strips" ||
+                               parent == "Polys") && name == "connectivity";
+    groups_.push_back(connectivity || array.is_offsets ? cell_group_ : -1);
+    return static_cast<int>(arrays_.size() - 1);
+  }
+
+  // Each connectivity array is as long as the last value of the offsets array beside it.
+  void link_connectivity() {
+    for (size_t i = 0; i < arrays_.size(); ++i) {
+      if (groups_[i] < 0 || arrays_[i].is_offsets) continue;
+      for (size_t j = 0; j < arrays_.size(); ++j)
+        if (groups_[j] == groups_[i] && arrays_[j].is_offsets) arrays_[i].offsets_of = static_cast<int>(j);
+    }
   }
 
   std::string_view s_;
@@ -253,6 +364,11 @@ class XmlScanner {
   const char* format_;
   size_t pos_ = 0;
   std::vector<std::string_view> open_;
+  std::vector<int> open_array_;  // for each open element, its index in arrays_ or -1
+  std::vector<XmlArray> arrays_;
+  std::vector<int> groups_;      // cell group (Cells, Polys, ...) of each array, or -1
+  int cell_group_ = 0;
+  XmlEncoding encoding_;
   bool seen_root_ = false;
   bool compressed_ = false;
   uint64_t points_ = 0, cells_ = 0, verts_ = 0, lines_ = 0, strips_ = 0, polys_ = 0;

@@ -4,8 +4,9 @@
 // vtkXMLReader allocates every array for the sizes the markup declares
 // (NumberOfPoints, Extent, NumberOfComponents) before it reads the data, so a
 // 200-byte file can ask for terabytes. This scan adds up what the declared arrays
-// need and refuses what the input cannot hold (allowing for compression), and checks
-// that the file is of the expected type, for a clear message.
+// need and refuses what the input cannot hold (allowing for compression), checks
+// that the file is of the expected type, for a clear message, and then checks every
+// DataArray's data against its markup (xml_blocks.hpp).
 
 #include <cstdint>
 #include <string_view>

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# VTK datasets checked by fest before VTK parses them (issue 31): legal re-encodings of a
+# `lemtrace gen` grid (UInt32 block headers, big-endian data, encoded independently by
+# vtk_robustness.py) read as the original does; broken copies (attributes changed without
+# re-encoding the bytes, a mistyped type, an appended length past the end of the file, a
+# negative offset, ...) give one line and exit 3 in fconv --info, fconv --to vtk and
+# lemtrace, never a signal and never VTK's text alone.
+. "$(dirname "$0")/lib.sh"
+HERE="$(dirname "$0")"
+
+run lemtrace gen helix --n 3 --jitter 0.2 --seed 3 -o "$WORK/good.vtu"
+python3 "$HERE/vtk_robustness.py" "$WORK/good.vtu" "$WORK/v" || { echo "vtk_robustness.py failed" >&2; exit 1; }
+"$FEST_BIN/fconv" "$WORK/good.vtu" -o "$WORK/good_again.vtu"
+"$FEST_BIN/fconv" --info "$WORK/good.vtu" | jq -S 'del(.file, .bytes)' >"$WORK/good.json"
+
+for variant in ok_uint32 ok_bigendian ok_uint32_bigendian; do
+  case_ "$variant.vtu: legal encoding, read as the original"
+  run fconv --info "$WORK/v/$variant.vtu"
+  expect_status 0
+  check "same description as the original" cmp -s <(jq -S 'del(.file, .bytes)' "$out") "$WORK/good.json"
+  run fconv "$WORK/v/$variant.vtu" -o "$WORK/again.vtu"
+  expect_status 0
+  check "rewritten byte for byte as the original is" cmp -s "$WORK/again.vtu" "$WORK/good_again.vtu"
+  run lemtrace "$WORK/v/$variant.vtu" --seed-point 0.4,0,-0.9
+  expect_status 0
+done
+
+# variant|what the one line must say
+while IFS='|' read -r variant message; do
+  f="$WORK/v/$variant.vtu"
+  case_ "$variant.vtu: fconv --info"
+  run fconv --info "$f"
+  expect_clean_failure 3 fconv
+  expect_stderr_has "$message"
+  case_ "$variant.vtu: fconv --to vtk writes nothing"
+  run fconv --to vtk "$f" -o "$WORK/out.vtk"
+  expect_clean_failure 3 fconv
+  check "no output file" test ! -e "$WORK/out.vtk"
+  case_ "$variant.vtu: lemtrace"
+  run lemtrace "$f" --seed-point 0.4,0,-0.9
+  expect_clean_failure 3 lemtrace
+  expect_stderr_has "$message"
+done <<'CASES'
+bad_uint32|DataArray "LemtraceKind" at byte [0-9]+: its 6 bytes hold 4 strings, not 1
+bad_no_header_type|DataArray "LemtraceKind" at byte [0-9]+: its 6 bytes hold 4 strings, not 1
+bad_bigendian|DataArray "LemtraceKind" at byte [0-9]+: its block header "\\x06\\x00.*declares [0-9]+ bytes, more than
+bad_type_typo|DataArray "velocity" at byte [0-9]+: type "Flaot64" is not a VTK type
+bad_type_int8|DataArray "velocity" at byte [0-9]+: its block holds 1536 bytes, but the markup asks for 192 values of Int8
+bad_long_block|DataArray "velocity" at byte [0-9]+: its block header .* declares 1000000000 bytes
+bad_negative_offset|DataArray "velocity" at byte [0-9]+: offset "-[0-9]+" is not a byte offset
+bad_truncated|vtu: DataArray ".*" at byte [0-9]+: .*past the end
+bad_unreferenced|bytes before its block, from byte [0-9]+, belong to no array
+CASES
+
+case_ "legacy .vtk cut short or with a count past its data: one line, exit 3"
+run lemtrace gen helix --n 2 --to vtk -o "$WORK/good.vtk"
+head -c 3000 "$WORK/good.vtk" >"$WORK/short.vtk"
+run fconv --info "$WORK/short.vtk"
+expect_clean_failure 3 fconv
+sed '0,/^POINTS [0-9]*/s//POINTS 999999999/' "$WORK/good.vtk" >"$WORK/count.vtk"
+run lemtrace "$WORK/count.vtk" --seed-point 0.4,0,-0.9
+expect_clean_failure 3 lemtrace
+finish
