@@ -26,14 +26,9 @@ feshape::FitOptions fit_options(const FitArgs& a) {
   o.weights = {a.w[0], a.w[1], a.w[2], a.w[3], a.w[4], a.w[5]};
   if (!(a.beta > 0) || !std::isfinite(a.beta)) throw usage_error("--beta must be > 0");
   o.beta = a.beta;
-  if (a.solver == "equilibrium")
-    o.solver = feshape::Solver::equilibrium;
-  else if (a.solver == "explicit")
-    o.solver = feshape::Solver::explicit_euler;
-  else if (a.solver == "semi-implicit")
-    o.solver = feshape::Solver::semi_implicit;
-  else
-    throw usage_error("--solver {}: expected equilibrium, explicit or semi-implicit", a.solver);
+  o.solver = a.solver == FitSolver::explicit_euler ? feshape::Solver::explicit_euler
+             : a.solver == FitSolver::semi_implicit ? feshape::Solver::semi_implicit
+                                                    : feshape::Solver::equilibrium;
   if (!(a.dt > 0) || !std::isfinite(a.dt)) throw usage_error("--dt must be > 0");
   o.dt = a.dt;
   if (a.damping.size() != 4) throw usage_error("--damping needs 4 values dc,dtheta,ds,dd");
@@ -80,9 +75,8 @@ int run_fit(const FitArgs& a) {
   const MeshTarget target = mesh_target(a.output, a.to);
   if (!a.levels_out.empty()) (void)level_path(a.levels_out, "G");
   if (!a.partial.empty()) (void)mesh_target(a.partial, a.to);
-  if (a.init != "auto" && a.init != "given") throw usage_error("--init {}: expected auto or given", a.init);
   const bool given = !a.model.qs.empty();
-  if (a.init == "given" && !given) throw usage_error("--init given needs --qs");
+  if (a.init == InitRule::given && !given) throw usage_error("--init given needs --qs");
   feshape::Model model = model_from_args(a.model);  // usage errors before reading anything
   const std::vector<Eigen::Vector3d> points = read_points(a.input, a.in_format);
   if (!given) {

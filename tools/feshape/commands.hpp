@@ -7,9 +7,13 @@
 
 namespace fest::feshape_tool {
 
+enum class PointsFormat { automatic, xyz, mesh };  // --in-format: auto recognises by content
+enum class InitRule { automatic, given };          // --init: auto unless --qs gives the shape
+enum class FitSolver { equilibrium, explicit_euler, semi_implicit };
+
 // The model's start: grid, global parameters (or auto) and pose.
 struct ModelArgs {
-  std::string grid = "8x8";         // rings x meridians
+  int rings = 8, meridians = 8;     // --grid MxN, each in 3..1000
   std::vector<double> qs;           // 11 values; empty = --init auto (fit) / unit sphere
   std::vector<double> center;       // 3 values
   std::vector<double> quat;         // w,x,y,z
@@ -19,12 +23,12 @@ struct FitArgs {
   std::string input = "-";          // points (.xyz rows or a mesh's vertices)
   std::string output = "-";
   std::string to;                   // ply, plya, obj, off
-  std::string in_format = "auto";   // auto, xyz, mesh
+  PointsFormat in_format = PointsFormat::automatic;
   ModelArgs model;
-  std::string init = "auto";        // auto, or given by --qs
+  InitRule init = InitRule::automatic;
   std::vector<double> w{0.5, 0.5, 0.5, 0, 0, 0};  // w00,w01,w10,w02,w11,w20
   double beta = 20;
-  std::string solver = "equilibrium";  // equilibrium, explicit, semi-implicit
+  FitSolver solver = FitSolver::equilibrium;
   double dt = 1e-5;
   std::vector<double> damping{1, 1, 1, 1};
   double move_tol = 0;              // 0 = 5e-5 x half the data's bounding-box diagonal
@@ -52,7 +56,7 @@ struct SampleArgs {
 struct EvalArgs {
   std::string input = "-";          // mesh
   std::string points;               // points file
-  std::string in_format = "auto";
+  PointsFormat in_format = PointsFormat::automatic;
   std::string output = "-";         // JSON
   int threads = 0;
 };

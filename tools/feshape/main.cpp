@@ -5,14 +5,32 @@
 
 #include "cli/cli.hpp"
 #include "commands.hpp"
+#include "model_args.hpp"
 
 namespace {
 
+using fest::feshape_tool::PointsFormat;
+
 void add_model_flags(CLI::App& app, fest::feshape_tool::ModelArgs& m) {
-  app.add_option("--grid", m.grid, "Initial lat-long mesh MxN (rings x meridians): V = MN + 2");
+  app.add_option_function<std::string>(
+         "--grid", [&m](const std::string& g) { fest::feshape_tool::parse_grid(g, m.rings, m.meridians); },
+         "Initial lat-long mesh MxN (rings x meridians): V = MN + 2")
+      ->default_str("8x8");
   app.add_option("--qs", m.qs, "Global parameters a,a1,a2,a3,e1,e2,t1,t2,b1,b2,b3")->delimiter(',')->expected(11);
   app.add_option("--center", m.center, "Model centre x,y,z")->delimiter(',')->expected(3);
   app.add_option("--quat", m.quat, "Model rotation as a quaternion w,x,y,z")->delimiter(',')->expected(4);
+}
+
+void add_points_format(CLI::App& app, PointsFormat& format) {
+  app.add_option_function<std::string>(
+      "--in-format",
+      [&format](const std::string& w) {
+        if (w == "auto") format = PointsFormat::automatic;
+        else if (w == "xyz") format = PointsFormat::xyz;
+        else if (w == "mesh") format = PointsFormat::mesh;
+        else throw fest::usage_error("--in-format {}: expected auto, xyz or mesh", w);
+      },
+      "Points format: auto, xyz, mesh");
 }
 
 }  // namespace
@@ -31,12 +49,27 @@ int main(int argc, char** argv) {
   fit->add_option("input", fa.input, "Points file, - = standard input");
   fit->add_option("-o,--output", fa.output, "Mesh of the final level (.ply .obj .off), - = standard output (binary PLY)");
   fit->add_option("--to", fa.to, "Output format: ply, plya (ascii PLY), obj, off");
-  fit->add_option("--in-format", fa.in_format, "Points format: auto, xyz, mesh");
+  add_points_format(*fit, fa.in_format);
   add_model_flags(*fit, fa.model);
-  fit->add_option("--init", fa.init, "auto (centroid, principal axes, extents) unless --qs is given");
+  fit->add_option_function<std::string>(
+      "--init",
+      [&fa](const std::string& w) {
+        if (w == "auto") fa.init = InitRule::automatic;
+        else if (w == "given") fa.init = InitRule::given;
+        else throw fest::usage_error("--init {}: expected auto or given", w);
+      },
+      "auto (centroid, principal axes, extents) unless --qs is given");
   fit->add_option("--w", fa.w, "Stiffness w00,w01,w10,w02,w11,w20 (eq. 7)")->delimiter(',')->expected(6);
   fit->add_option("--beta", fa.beta, "Force strength beta (eq. 10)");
-  fit->add_option("--solver,--integrator", fa.solver, "equilibrium (LM + sparse solve), explicit (seed's Euler), semi-implicit");
+  fit->add_option_function<std::string>(
+      "--solver,--integrator",
+      [&fa](const std::string& w) {
+        if (w == "equilibrium") fa.solver = FitSolver::equilibrium;
+        else if (w == "explicit") fa.solver = FitSolver::explicit_euler;
+        else if (w == "semi-implicit") fa.solver = FitSolver::semi_implicit;
+        else throw fest::usage_error("--solver {}: expected equilibrium, explicit or semi-implicit", w);
+      },
+      "equilibrium (LM + sparse solve), explicit (seed's Euler), semi-implicit");
   fit->add_option("--dt", fa.dt, "Euler time step (explicit solvers)");
   fit->add_option("--damping", fa.damping, "D per block dc,dtheta,ds,dd (explicit solvers)")->delimiter(',')->expected(4);
   fit->add_option("--move-tol", fa.move_tol, "Converged when no node moves farther per iteration (default 5e-5 x half diagonal)");
@@ -64,7 +97,7 @@ int main(int argc, char** argv) {
   auto* eval = app.add_subcommand("eval", "Distances of points to a mesh: mean, max, std, var (JSON)");
   eval->add_option("input", ea.input, "Mesh, - = standard input");
   eval->add_option("--points", ea.points, "Points file (.xyz rows or a mesh's vertices)")->required();
-  eval->add_option("--in-format", ea.in_format, "Points format: auto, xyz, mesh");
+  add_points_format(*eval, ea.in_format);
   eval->add_option("-o,--output", ea.output, "JSON, - = standard output");
   fest::cli::add_threads(*eval, ea.threads);
 

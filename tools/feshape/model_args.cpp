@@ -16,8 +16,6 @@ void parse_grid(const std::string& grid, int& rings, int& meridians) {
 }
 
 feshape::Model model_from_args(const ModelArgs& a) {
-  int rings = 0, meridians = 0;
-  parse_grid(a.grid, rings, meridians);
   feshape::GlobalParams qs{1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0};
   if (!a.qs.empty()) {
     if (a.qs.size() != feshape::n_global) throw usage_error("--qs needs 11 values a,a1,a2,a3,e1,e2,t1,t2,b1,b2,b3, got {}", a.qs.size());
@@ -36,7 +34,7 @@ feshape::Model model_from_args(const ModelArgs& a) {
     q = Eigen::Quaterniond(a.quat[0], a.quat[1], a.quat[2], a.quat[3]);
     if (!q.coeffs().allFinite() || !(q.norm() > 1e-12)) throw usage_error("--quat must be a finite non-zero quaternion");
   }
-  return feshape::make_model(rings, meridians, qs, c, q);
+  return feshape::make_model(a.rings, a.meridians, qs, c, q);
 }
 
 }  // namespace fest::feshape_tool

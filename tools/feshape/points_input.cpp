@@ -9,9 +9,7 @@
 
 namespace fest::feshape_tool {
 
-std::vector<Eigen::Vector3d> read_points(const std::string& path, const std::string& format) {
-  if (format != "auto" && format != "xyz" && format != "mesh")
-    throw usage_error("--in-format {}: expected auto, xyz or mesh", format);
+std::vector<Eigen::Vector3d> read_points(const std::string& path, PointsFormat format) {
   const std::string name = is_stdio(path) ? "-" : path;
   std::string bytes = read_input(path);
   if (formats::is_gzip(bytes)) {
@@ -29,7 +27,7 @@ std::vector<Eigen::Vector3d> read_points(const std::string& path, const std::str
       throw Error(e.status(), with_location(e.what(), name));
     }
   };
-  if (format == "xyz") {
+  if (format == PointsFormat::xyz) {
     points = rows(bytes);
   } else {
     bool is_mesh = false;
@@ -38,9 +36,9 @@ std::vector<Eigen::Vector3d> read_points(const std::string& path, const std::str
       in = formats::recognise(bytes, name);
       is_mesh = formats::kind_of(in.format) == formats::Kind::mesh;
     } catch (const Error&) {
-      if (format == "mesh") throw;
+      if (format == PointsFormat::mesh) throw;
     }
-    if (format == "mesh" && !is_mesh) throw bad_input("{}", with_location("not a mesh (PLY, OFF, OBJ, STL)", name));
+    if (format == PointsFormat::mesh && !is_mesh) throw bad_input("{}", with_location("not a mesh (PLY, OFF, OBJ, STL)", name));
     if (is_mesh) {
       const Mesh m = formats::parse(in, formats::read_mesh);
       for (const auto v : m.vertices()) points.emplace_back(m.point(v)[0], m.point(v)[1], m.point(v)[2]);

@@ -7,9 +7,11 @@
 
 #include <Eigen/Core>
 
+#include "commands.hpp"
+
 namespace fest::feshape_tool {
 
-// format: "auto", "xyz" or "mesh". Fails (bad_input) for fewer than 10 points.
-std::vector<Eigen::Vector3d> read_points(const std::string& path, const std::string& format);
+// Rows, a mesh's vertices, or whichever the content is (automatic). Fails (bad_input) for fewer than 10 points.
+std::vector<Eigen::Vector3d> read_points(const std::string& path, PointsFormat format);
 
 }  // namespace fest::feshape_tool
