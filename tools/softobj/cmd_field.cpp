@@ -12,7 +12,7 @@ namespace fest::softobj_tool {
 int run_field(const FieldArgs& a) {
   if (a.at.empty()) throw usage_error("--at POINTS is required");
   if (a.at == "-" && a.input == "-") throw usage_error("the skeleton and --at cannot both be standard input");
-  const softobj::Field field(softobj::compile_terms(read_skeleton(a.input, "json")));
+  const softobj::Field field(softobj::compile_terms(read_skeleton(a.input, SkeletonFormat::json)));
   const formats::Input in = formats::load_input(a.at);
   if (in.format != formats::Format::csv && in.format != formats::Format::tsv)
     throw bad_input("points are {}, not CSV/TSV ({})", formats::format_name(in.format), in.name);

@@ -22,18 +22,12 @@ int run_polygonize(const PolygonizeArgs& a) {
   const Stopwatch watch;
   if (a.iso != 0 && a.radius != 0) throw usage_error("--iso and --radius exclude each other");
   if (a.iso < 0 || (a.iso == 0 && a.radius < 0)) throw usage_error("--iso/--radius must be positive");
-  if (a.method != "shrinkwrap" && a.method != "mc") throw usage_error("--method {} is not shrinkwrap or mc", a.method);
   softobj::Kernel kernel;
-  if (a.kernel.rfind("wyvill:", 0) == 0) {
-    char* end = nullptr;
+  if (a.kernel.wyvill) {
     kernel.kind = softobj::Kernel::wyvill;
-    kernel.radius = std::strtod(a.kernel.c_str() + 7, &end);
-    if (*end != '\0' || !(kernel.radius > 0) || !std::isfinite(kernel.radius))
-      throw usage_error("--kernel {}: R must be a positive number", a.kernel);
-    if (a.method != "mc") throw usage_error("--kernel wyvill has no far field for shrink-wrap: use --method mc");
+    kernel.radius = a.kernel.radius;
+    if (a.method != PolygonizeMethod::mc) throw usage_error("--kernel wyvill has no far field for shrink-wrap: use --method mc");
     if (a.iso == 0) throw usage_error("--kernel wyvill needs --iso (0 < iso < charge)");
-  } else if (a.kernel != "coulomb") {
-    throw usage_error("--kernel {} is not coulomb or wyvill:R", a.kernel);
   }
   const MeshTarget target = mesh_target(a.output, a.to);  // usage errors before any work
   const softobj::Skeleton s = read_skeleton(a.input, a.skeleton_format);
@@ -46,7 +40,7 @@ int run_polygonize(const PolygonizeArgs& a) {
   softobj::ShrinkwrapStats stats;
   TriMesh mesh;
   std::size_t dropped = 0;
-  if (a.method == "mc") {
+  if (a.method == PolygonizeMethod::mc) {
     mesh = marching_cubes(field, iso, rho, a.grid > 0 ? a.grid : lmax / 2, static_cast<std::size_t>(a.max_verts),
                           &dropped);
     if (dropped)
@@ -74,7 +68,7 @@ int run_polygonize(const PolygonizeArgs& a) {
   write_trimesh(mesh, target);
   if (!a.report.empty()) {
     nlohmann::json r;
-    r["method"] = a.method;
+    r["method"] = a.method == PolygonizeMethod::mc ? "mc" : "shrinkwrap";
     r["vertices"] = m.vertices;
     r["triangles"] = m.triangles;
     r["iso"] = iso;

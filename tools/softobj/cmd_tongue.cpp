@@ -67,7 +67,6 @@ softobj::Palate read_palate(const std::string& path) {
 
 int run_tongue(const TongueArgs& a) {
   if (!(a.radius > 0)) throw usage_error("--radius must be positive");
-  if (a.layout != "default" && a.layout != "paper9") throw usage_error("--layout {} is not default or paper9", a.layout);
   if (a.polygonize) (void)frame_name(a.output, 0);  // usage errors before any work
   softobj::TongueParams neutral = softobj::neutral_tongue();
   for (const auto& s : a.set) apply_set(neutral, s);  // usage errors before reading
@@ -106,7 +105,7 @@ int run_tongue(const TongueArgs& a) {
                         frames[r].params[l], r);
   std::optional<softobj::Palate> palate;
   if (!a.palate.empty()) palate = read_palate(a.palate);
-  const auto layout = a.layout == "paper9" ? softobj::TongueLayout::paper9 : softobj::TongueLayout::default10;
+  const auto layout = a.layout == TongueLayoutChoice::paper9 ? softobj::TongueLayout::paper9 : softobj::TongueLayout::default10;
   if (!a.polygonize) {
     softobj::TongueParams p = frames.front().params;
     if (palate) softobj::palate_pass1(p, *palate, a.radius);

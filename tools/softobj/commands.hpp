@@ -6,6 +6,14 @@
 
 namespace fest::softobj_tool {
 
+enum class PolygonizeMethod { shrinkwrap, mc };
+enum class SkeletonFormat { json, mesh };          // mesh: its triangles are the skeleton
+enum class TongueLayoutChoice { default10, paper9 };
+struct KernelChoice {                              // --kernel coulomb | wyvill:R
+  bool wyvill = false;
+  double radius = 0;
+};
+
 struct PolygonizeArgs {
   std::string input = "-";
   std::string output = "-";
@@ -19,10 +27,10 @@ struct PolygonizeArgs {
   double relax = 0.5;
   bool no_coarsen = false;
   long long max_verts = 500000;
-  std::string method = "shrinkwrap";
+  PolygonizeMethod method = PolygonizeMethod::shrinkwrap;
   double grid = 0;             // mc spacing; 0 = lmax / 2
-  std::string skeleton_format = "json";
-  std::string kernel = "coulomb";  // or wyvill:R
+  SkeletonFormat skeleton_format = SkeletonFormat::json;
+  KernelChoice kernel;
   std::string report;
 };
 
@@ -31,7 +39,7 @@ struct TongueArgs {
   std::string output = "-";
   bool neutral = false;              // start from the neutral shape, read no input
   int frame = 0;
-  std::string layout = "default";
+  TongueLayoutChoice layout = TongueLayoutChoice::default10;
   std::vector<std::string> set;      // name=value
   double radius = 6;
   std::string palate;                // pass 1 of the penetration avoidance

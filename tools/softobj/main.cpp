@@ -3,8 +3,26 @@
 //
 // Wiring only: this file maps flags onto commands.hpp.
 
+#include <cmath>
+#include <cstdlib>
+
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
 #include "commands.hpp"
+
+namespace {
+
+// --kernel coulomb | wyvill:R (R a positive number).
+fest::softobj_tool::KernelChoice parse_kernel(const std::string& k) {
+  if (k == "coulomb") return {};
+  if (k.rfind("wyvill:", 0) != 0) throw fest::usage_error("--kernel {} is not coulomb or wyvill:R", k);
+  char* end = nullptr;
+  const double r = std::strtod(k.c_str() + 7, &end);
+  if (*end != '\0' || !(r > 0) || !std::isfinite(r)) throw fest::usage_error("--kernel {}: R must be a positive number", k);
+  return {true, r};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace fest::softobj_tool;
@@ -34,12 +52,16 @@ int main(int argc, char** argv) {
   poly->add_option("--relax", pa.relax, "Tangential relaxation lambda (0 = off)")->check(CLI::Range(0.0, 1.0));
   poly->add_flag("--no-coarsen", pa.no_coarsen, "Do not collapse short flat chords");
   poly->add_option("--max-verts", pa.max_verts, "Vertex limit")->check(CLI::Range(4LL, 100000000LL));
-  poly->add_option("--method", pa.method, "shrinkwrap (adaptive, genus 0) or mc (marching cubes, any topology)")
-      ->check(CLI::IsMember({"shrinkwrap", "mc"}));
+  fest::cli::enum_words<PolygonizeMethod>(
+      poly->add_option("--method", pa.method, "shrinkwrap (adaptive, genus 0) or mc (marching cubes, any topology)"),
+      {{"shrinkwrap", PolygonizeMethod::shrinkwrap}, {"mc", PolygonizeMethod::mc}});
   poly->add_option("--grid", pa.grid, "Marching-cubes grid spacing (default lmax/2)")->check(CLI::PositiveNumber);
-  poly->add_option("--kernel", pa.kernel, "coulomb (p/d), or wyvill:R (compact; needs --method mc)");
-  poly->add_option("--skeleton-format", pa.skeleton_format, "json, or mesh: a mesh's triangles are the skeleton")
-      ->check(CLI::IsMember({"json", "mesh"}));
+  poly->add_option_function<std::string>(
+      "--kernel", [&pa](const std::string& k) { pa.kernel = parse_kernel(k); },
+      "coulomb (p/d), or wyvill:R (compact; needs --method mc)");
+  fest::cli::enum_words<SkeletonFormat>(
+      poly->add_option("--skeleton-format", pa.skeleton_format, "json, or mesh: a mesh's triangles are the skeleton"),
+      {{"json", SkeletonFormat::json}, {"mesh", SkeletonFormat::mesh}});
   poly->add_option("--report", pa.report, "JSON statistics: counts, errors, volume, area");
 
   TongueArgs ta;
@@ -48,8 +70,8 @@ int main(int argc, char** argv) {
   tongue->add_option("-o,--output", ta.output, "Skeleton JSON, - = standard output");
   tongue->add_flag("--neutral", ta.neutral, "Start from the neutral shape and read no input");
   tongue->add_option("--frame", ta.frame, "Row of the TSV (0 = first)")->check(CLI::NonNegativeNumber);
-  tongue->add_option("--layout", ta.layout, "Triangles: default (10, symmetric disk) or paper9 (9)")
-      ->check(CLI::IsMember({"default", "paper9"}));
+  fest::cli::enum_words<TongueLayoutChoice>(tongue->add_option("--layout", ta.layout, "Triangles: default (10, symmetric disk) or paper9 (9)"),
+                        {{"default", TongueLayoutChoice::default10}, {"paper9", TongueLayoutChoice::paper9}});
   tongue->add_option("--set", ta.set, "Override parameters: name=value[,name=value...]")->delimiter(',');
   tongue->add_option("--radius", ta.radius, "Offset radius rho in mm (iso = 1/rho)")->check(CLI::PositiveNumber);
 

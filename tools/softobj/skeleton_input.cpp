@@ -7,9 +7,9 @@
 
 namespace fest::softobj_tool {
 
-softobj::Skeleton read_skeleton(const std::string& path, const std::string& format) {
+softobj::Skeleton read_skeleton(const std::string& path, SkeletonFormat format) {
   const formats::Input in = formats::load_input(path);
-  if (format == "json") {
+  if (format == SkeletonFormat::json) {
     if (in.format != formats::Format::json)
       throw bad_input("the skeleton is {}, not JSON ({}); a mesh skeleton needs --skeleton-format mesh",
                       formats::format_name(in.format), in.name);

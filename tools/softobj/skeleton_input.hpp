@@ -4,10 +4,11 @@
 
 #include <string>
 
+#include "commands.hpp"
 #include "softobj/skeleton.hpp"
 
 namespace fest::softobj_tool {
 
-softobj::Skeleton read_skeleton(const std::string& path, const std::string& format);
+softobj::Skeleton read_skeleton(const std::string& path, SkeletonFormat format);
 
 }  // namespace fest::softobj_tool
