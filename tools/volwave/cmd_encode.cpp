@@ -50,8 +50,7 @@ int encode_command(const EncodeOptions& o) {
   const int modes = (o.max_error ? 1 : 0) + (o.rmse ? 1 : 0) + (o.lossless ? 1 : 0);
   if (modes != 1) throw usage_error("give exactly one of --max-error, --rmse, --lossless");
   wavelet::EncodeOptions eo;
-  if (!wavelet::parse_wavelet(o.wavelet.c_str(), eo.wavelet))
-    throw usage_error("--wavelet: unknown wavelet {} (haar, cdf53, cdf97)", o.wavelet);
+  eo.wavelet = o.wavelet;
   if (o.max_error) {
     if (!(*o.max_error > 0) || !std::isfinite(*o.max_error)) throw usage_error("--max-error must be positive, not {}", *o.max_error);
     eo.mode = wavelet::Mode::max_error;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "wavelet/lifting.hpp"
+
 namespace fest::volwave_tool {
 
 // Which scalar to take from inputs that hold several (VTI arrays, frame-stream fields,
@@ -23,7 +25,7 @@ struct EncodeOptions {
   std::optional<double> max_error;
   std::optional<double> rmse;
   bool lossless = false;
-  std::string wavelet = "cdf53";
+  wavelet::Wavelet wavelet = wavelet::Wavelet::cdf53;  // --wavelet haar|cdf53|cdf97
   int levels = -1;
   std::vector<long> roi_box;  // x0,y0,z0,x1,y1,z1 voxel indices, inclusive
   std::string roi_mask;       // a volume; non-zero voxels are the region

@@ -29,7 +29,13 @@ int main(int argc, char** argv) {
   e->add_option("--max-error", enc.max_error, "L-infinity bound: every voxel within E of the input (checked on decode)");
   e->add_option("--rmse", enc.rmse, "RMS error target (the largest step that stays under it)");
   e->add_flag("--lossless", enc.lossless, "Bit-exact coding (integer wavelets)");
-  e->add_option("--wavelet", enc.wavelet, "haar, cdf53 (default) or cdf97 (--rmse only)");
+  e->add_option_function<std::string>(
+      "--wavelet",
+      [&enc](const std::string& w) {
+        if (!fest::wavelet::parse_wavelet(w.c_str(), enc.wavelet))
+          throw fest::usage_error("--wavelet: unknown wavelet {} (haar, cdf53, cdf97)", w);
+      },
+      "haar, cdf53 (default) or cdf97 (--rmse only)");
   e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(CLI::Range(0, 16));
   e->add_option("--roi-box", enc.roi_box, "Region x0,y0,z0,x1,y1,z1 (voxel indices, inclusive) coded with --roi-error")
       ->delimiter(',')->expected(6)->allow_extra_args(false);
