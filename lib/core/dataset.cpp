@@ -98,12 +98,22 @@ const char* DataArray::type_name() const noexcept {
   }
 }
 
-DataArray DataArray::from_doubles(std::string name, int components, const std::vector<double>& values, int type) {
+namespace {
+
+// An array's description without its bytes: what every from_* sets first.
+DataArray described(std::string name, int components, int type, std::size_t value_count) {
   DataArray a;
   a.name = std::move(name);
   a.components = components;
   a.type = type;
-  a.value_count = values.size();
+  a.value_count = value_count;
+  return a;
+}
+
+}  // namespace
+
+DataArray DataArray::from_doubles(std::string name, int components, const std::vector<double>& values, int type) {
+  DataArray a = described(std::move(name), components, type, values.size());
   switch (type) {
     case vtk_type::float_: store_all<float>(a, values); break;
     case vtk_type::double_: store_all<double>(a, values); break;
@@ -125,22 +135,14 @@ DataArray DataArray::from_doubles(std::string name, int components, const std::v
 }
 
 DataArray DataArray::from_floats(std::string name, int components, const std::vector<float>& values) {
-  DataArray a;
-  a.name = std::move(name);
-  a.components = components;
-  a.type = vtk_type::float_;
-  a.value_count = values.size();
+  DataArray a = described(std::move(name), components, vtk_type::float_, values.size());
   a.bytes.resize(values.size() * sizeof(float));
   if (!values.empty()) std::memcpy(a.bytes.data(), values.data(), a.bytes.size());
   return a;
 }
 
 DataArray DataArray::from_ints(std::string name, int components, const std::vector<int64_t>& values, int type) {
-  DataArray a;
-  a.name = std::move(name);
-  a.components = components;
-  a.type = type;
-  a.value_count = values.size();
+  DataArray a = described(std::move(name), components, type, values.size());
   const std::size_t size = vtk_type_size(type);
   a.bytes.resize(values.size() * size);
   for (std::size_t i = 0; i < values.size(); ++i) {
