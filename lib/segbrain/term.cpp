@@ -1,6 +1,7 @@
 // Term construction, printing, copying and ordering.
 #include "segbrain/term.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -41,9 +42,14 @@ Term make_node(Kind kind) {
 }
 }  // namespace
 
+// Variables are numbered in the order they are made, so that printed terms (_G<n>) and
+// the standard order of unbound variables are the same on every run; an address would not be.
+std::atomic<std::int64_t> next_variable{0};
+
 Term make_var(const std::string& name) {
   Term n = make_node(Kind::var);
   n->name = name;
+  n->ival = next_variable.fetch_add(1, std::memory_order_relaxed);
   return n;
 }
 Term make_atom(const std::string& name) {
@@ -149,7 +155,7 @@ std::string number_text(double v) {
 void print(const Term& t0, int max_prec, std::string& out) {
   Term t = deref(t0);
   switch (t->kind) {
-    case Kind::var: out += fmt::format("_G{}", reinterpret_cast<std::uintptr_t>(t.get()) % 100000); return;
+    case Kind::var: out += fmt::format("_G{}", t->ival); return;
     case Kind::atom: {
       bool op = infix_op(t->name) || prefix_op(t->name);
       if (op && max_prec < 1200) out += "(" + atom_text(t->name) + ")";
@@ -285,7 +291,7 @@ int compare_terms(const Term& a0, const Term& b0) {
   int ra = rank(a->kind), rb = rank(b->kind);
   if (ra != rb) return ra < rb ? -1 : 1;
   switch (a->kind) {
-    case Kind::var: return a.get() < b.get() ? -1 : (a.get() == b.get() ? 0 : 1);
+    case Kind::var: return a->ival < b->ival ? -1 : (a->ival == b->ival ? 0 : 1);
     case Kind::integer:
     case Kind::real: {
       double x = number_value(a), y = number_value(b);

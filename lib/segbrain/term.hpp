@@ -18,7 +18,7 @@ enum class Kind { var, atom, integer, real, string, compound };
 struct Node {
   Kind kind = Kind::atom;
   std::string name;            // atom text, functor, string contents, variable name
-  std::int64_t ival = 0;       // integer value
+  std::int64_t ival = 0;       // integer value; a variable's serial number
   double fval = 0;             // real value
   std::vector<Term> args;      // compound arguments
   Term ref;                    // binding of a variable (null while free)

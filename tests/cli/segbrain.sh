@@ -49,6 +49,12 @@ check "every trace line is JSON with a port" sh -c "jq -e '.port and .goal and .
 check "trace has verify_brain_result exit" has_port exit verify_brain_result "$WORK/trace.jsonl"
 check "trace carries the skin-contact measure" grep -q '"skin_contact_fraction":' "$WORK/trace.jsonl"
 
+case_ "the trace is the same on a second run but for its timings (variables numbered, not addresses)"
+run segbrain run "$P" -o "$WORK/labels2.nii.gz" --trace "$WORK/trace2.jsonl"
+untimed() { jq -c 'del(.t_ms, .dur_ms)' "$1"; }
+check "same trace lines" cmp <(untimed "$WORK/trace.jsonl") <(untimed "$WORK/trace2.jsonl")
+check "variables appear as _G<n>" grep -q '_G[0-9]' "$WORK/trace.jsonl"
+
 case_ "labels to standard output (run implied); the same from NRRD input and through stdin"
 run segbrain "$P"
 expect_status 0
