@@ -7,6 +7,7 @@
 // solution and undoes its bindings when k fails. A cut returns a signal that unwinds to
 // the predicate call that owns it, so a cut inside a nested call never cuts the caller.
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -156,6 +157,10 @@ class Engine {
   std::vector<std::string> skipped_;
   std::map<std::string, std::string> accepted_by_;
   int cxx_depth_ = 0;
+  // The outermost solve()'s frame and how far below it the proof may recurse: solve()
+  // nests C++ frames per goal, so the stack, not only max_depth, bounds a proof.
+  const char* stack_base_ = nullptr;
+  std::ptrdiff_t stack_budget_ = 0;
 };
 
 }  // namespace fest::segbrain

@@ -111,6 +111,19 @@ TEST(SegbrainEngine, LimitsStopRunawayProofs) {
   EXPECT_TRUE(d.prove(parse_term("deep(10)", "g")));
 }
 
+// Under the default limits a one-clause loop recursed until SIGSEGV (8 MiB stack, Release
+// and ASan alike) before max_depth or max_inferences was reached: now a limit error.
+TEST(SegbrainEngine, DeepRecursionStopsBeforeTheStackEnds) {
+  Engine e = with("loop(X) :- Y is X + 1, loop(Y).");
+  e.set_limits(Limits{});
+  try {
+    e.prove(parse_term("loop(0)", "g"));
+    FAIL() << "expected a limit";
+  } catch (const fest::Error& err) {
+    EXPECT_EQ(err.status(), fest::Status::failure);
+  }
+}
+
 TEST(SegbrainEngine, DynamicFactsPersistAcrossBacktracking) {
   Engine e = with(":- dynamic(seen/1).\nrecord :- member(X, [a, b]), assertz(seen(X)), fail.\nrecord.\n");
   EXPECT_TRUE(e.prove(make_atom("record")));
