@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/number_range.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -58,12 +59,15 @@ inline void add_threads(CLI::App& app, int& threads) {
 // Parses argv; help and --version go to standard output with status 0; a usage error is
 // one line on standard error and status 2 (README "Conventions"), not CLI11's own codes.
 // A check that throws fest::Error itself (add_threads) is reported like the body's errors.
+// Every floating-point flag then obeys check_numbers (number_range.hpp): no NaN, no
+// infinity unless the flag says it takes one.
 template <typename Body>
 int run(CLI::App& app, int argc, char** argv, Body&& body) {
   const std::string tool = app.get_name();
   return run_tool(tool, [&]() -> int {
     try {
       app.parse(argc, argv);
+      check_numbers(app);
     } catch (const CLI::ParseError& e) {
       if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
       std::fprintf(stderr, "%s: error: %s (see %s --help)\n", tool.c_str(), e.what(), tool.c_str());

@@ -65,30 +65,30 @@ CLI::App* add_synth(CLI::App& app, SynthArgs& synth) {
                                         "masks, rig.json, truth.json");
   s->add_option("--mesh", synth.mesh, "Mesh (PLY/OBJ/OFF/STL); default: an icosphere");
   s->add_option("--sphere", synth.sphere_level, "Icosphere subdivision level when no --mesh (20*4^L triangles)")
-      ->check(CLI::Range(0, 9));
-  s->add_option("--radius", synth.sphere_radius, "Icosphere radius")->check(CLI::PositiveNumber);
+      ->check(fest::cli::range(0, 9));
+  s->add_option("--radius", synth.sphere_radius, "Icosphere radius")->check(fest::cli::positive);
   s->add_option_function<std::string>(
       "--materials", [&synth](const std::string& text) { set_materials(synth, text); },
       "Number of built-in materials on surface patches, or a materials JSON");
-  s->add_option("--views", synth.setup.views, "Turntable angles")->check(CLI::Range(1, 4096));
-  s->add_option("--lights", synth.setup.lights, "Point lights (one image per view and light)")->check(CLI::Range(1, 64));
-  s->add_option("--width", synth.setup.width, "Image width")->check(CLI::Range(8, 65536));
-  s->add_option("--height", synth.setup.height, "Image height")->check(CLI::Range(8, 65536));
+  s->add_option("--views", synth.setup.views, "Turntable angles")->check(fest::cli::range(1, 4096));
+  s->add_option("--lights", synth.setup.lights, "Point lights (one image per view and light)")->check(fest::cli::range(1, 64));
+  s->add_option("--width", synth.setup.width, "Image width")->check(fest::cli::range(8, 65536));
+  s->add_option("--height", synth.setup.height, "Image height")->check(fest::cli::range(8, 65536));
   s->add_option("--elevation", synth.setup.elevation_deg, "Camera elevation above the table, degrees")
-      ->check(CLI::Range(-89.0, 89.0));
+      ->check(fest::cli::range(-89.0, 89.0));
   s->add_option("--distance", synth.setup.distance, "Camera distance in bounding-sphere radii")
-      ->check(CLI::Range(1.1, 1000.0));
+      ->check(fest::cli::range(1.1, 1000.0));
   s->add_option("--fill", synth.setup.fill, "Fraction of the shorter image side the bounding sphere spans")
-      ->check(CLI::Range(0.01, 1.0));
+      ->check(fest::cli::range(0.01, 1.0));
   s->add_option("--noise", synth.noise, "Multiplicative Gaussian noise, relative standard deviation")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(fest::cli::range(0.0, 1.0));
   s->add_option("--seed", synth.seed, "Seed of every random choice (patches, noise, normal perturbation)");
   s->add_option("--env", synth.env, "Lat-long HDR environment map (EXR) seen as the background");
   s->add_option("--env-light", synth.env_light, "Also light the object diffusely by the environment, scaled")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fest::cli::non_negative);
   s->add_option("--perturb-normals", synth.perturb_deg, "Tilt the written mesh's normals by up to DEG (truth kept)")
-      ->check(CLI::Range(0.0, 60.0));
-  s->add_option("--shadow-res", synth.shadow_res, "Shadow map size")->check(CLI::Range(16, 16384));
+      ->check(fest::cli::range(0.0, 60.0));
+  s->add_option("--shadow-res", synth.shadow_res, "Shadow map size")->check(fest::cli::range(16, 16384));
   s->add_flag("--previews", synth.previews, "Also write tone-mapped PNGs into DIR/preview/");
   s->add_option("-o,--output", synth.out, "Dataset folder (created)")->required();
   cli::add_threads(*s, synth.threads);
@@ -102,12 +102,12 @@ CLI::App* add_lumitexels(CLI::App& app, LumitexelArgs& ltx) {
   l->add_option("--rig", ltx.rig, "Rig JSON (frame mesh or turntable)")->required();
   l->add_option("--root", ltx.root, "Folder the rig's image paths are relative to (default: the rig's session folder)");
   l->add_option("-o,--output", ltx.out, "Lumitexel file, - = standard output");
-  l->add_option("--min-samples", ltx.o.min_samples, "Drop lumitexels with fewer samples")->check(CLI::Range(1, 65535));
-  l->add_option("--min-cos", ltx.o.min_cos, "Smallest cosine of light and view to the normal")->check(CLI::Range(0.0, 1.0));
+  l->add_option("--min-samples", ltx.o.min_samples, "Drop lumitexels with fewer samples")->check(fest::cli::range(1, 65535));
+  l->add_option("--min-cos", ltx.o.min_cos, "Smallest cosine of light and view to the normal")->check(fest::cli::range(0.0, 1.0));
   l->add_option("--depth-eps", ltx.depth_eps_rel, "Depth and shadow tolerance, fraction of the bbox diagonal")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(fest::cli::range(0.0, 1.0));
   l->add_option("--shadow-res", ltx.o.shadow_resolution, "Shadow map size (0: the largest image side, 512..8192)")
-      ->check(CLI::Range(0, 16384));
+      ->check(fest::cli::range(0, 16384));
   l->add_option("--atlas", ltx.atlas, "Also write the texture atlas of the home images' pixels (EXR; docs/brdffit.md §4)");
   l->add_option("--atlas-mesh", ltx.atlas_mesh, "The mesh with the atlas' texture coordinates (PLY; default: the "
                                                 "--atlas path with .ply)");
@@ -126,12 +126,12 @@ CLI::App* add_register(CLI::App& app, RegisterArgs& reg) {
   r->add_option("--root", reg.root, "Folder the rig's paths are relative to (default: the rig's session folder)");
   r->add_flag("--auto", reg.o.automatic, "Ignore the initial pose: search orientations on SO(3)");
   r->add_flag("--fix-focal", reg.o.fix_focal, "Keep the camera's focal length (calibrated): fit the pose only");
-  r->add_option("--orient-samples", reg.o.orient_samples, "Orientations tried by --auto")->check(CLI::Range(1, 100000));
+  r->add_option("--orient-samples", reg.o.orient_samples, "Orientations tried by --auto")->check(fest::cli::range(1, 100000));
   r->add_option("--coarse-iters", reg.o.coarse_iters, "Simplex steps per orientation at 1/8 resolution")
-      ->check(CLI::Range(1, 10000));
-  r->add_option("--keep", reg.o.keep, "Best orientations of --auto refined at every level")->check(CLI::Range(1, 1000));
-  r->add_option("--iters", reg.o.iters_per_level, "Simplex steps per pyramid level")->check(CLI::Range(1, 100000));
-  r->add_option("--max-xor", reg.max_xor, "Fail (exit 1) above this XOR fraction")->check(CLI::Range(0.0, 10.0));
+      ->check(fest::cli::range(1, 10000));
+  r->add_option("--keep", reg.o.keep, "Best orientations of --auto refined at every level")->check(fest::cli::range(1, 1000));
+  r->add_option("--iters", reg.o.iters_per_level, "Simplex steps per pyramid level")->check(fest::cli::range(1, 100000));
+  r->add_option("--max-xor", reg.max_xor, "Fail (exit 1) above this XOR fraction")->check(fest::cli::range(0.0, 10.0));
   r->add_option("--seed", reg.o.seed, "Seed of the orientation samples");
   r->add_option("-o,--output", reg.out, "Fitted cam.json (or rig), - = standard output");
   r->add_option("--report", reg.report, "XOR, evaluations, time as JSON");
@@ -151,14 +151,14 @@ CLI::App* add_render(CLI::App& app, RenderArgs& ren) {
   d->add_option("--light", ren.light, "light.json");
   d->add_option("--rig", ren.rig, "Take camera and light from a rig image (with --image)");
   d->add_option("--root", ren.root, "Folder the rig's paths are relative to");
-  d->add_option("--image", ren.rig_image, "Index of the rig image")->check(CLI::NonNegativeNumber);
+  d->add_option("--image", ren.rig_image, "Index of the rig image")->check(fest::cli::non_negative);
   d->add_option("-o,--output", ren.out, "Radiance EXR, - = standard output")->required();
   d->add_option("--png", ren.png, "Also write a tone-mapped PNG");
-  d->add_option("--exposure", ren.exposure, "Scale before tone mapping for --png")->check(CLI::PositiveNumber);
+  d->add_option("--exposure", ren.exposure, "Scale before tone mapping for --png")->check(fest::cli::positive);
   d->add_option("--mask-out", ren.mask_out, "Also write the object mask (PNG)");
   d->add_option("--env", ren.env, "Lat-long HDR environment map as background");
-  d->add_option("--env-light", ren.env_light, "Diffuse environment light scale")->check(CLI::NonNegativeNumber);
-  d->add_option("--shadow-res", ren.shadow_res, "Shadow map size")->check(CLI::Range(16, 16384));
+  d->add_option("--env-light", ren.env_light, "Diffuse environment light scale")->check(fest::cli::non_negative);
+  d->add_option("--shadow-res", ren.shadow_res, "Shadow map size")->check(fest::cli::range(16, 16384));
   d->add_flag("--no-shadows", ren.no_shadows, "Skip the shadow test");
   cli::add_threads(*d, ren.threads);
   return d;
@@ -187,9 +187,9 @@ CLI::App* add_export(CLI::App& app, ExportArgs& ex) {
   x->add_option("--normals", ex.normals, "Refined normals (normals.ply of brdffit normals): also a normal map");
   x->add_option("--gltf", ex.out, "Output .gltf (PNG textures beside it), .glb (all in one), - = standard output "
                                   "(textures as data URIs)")->required();
-  x->add_option("--texture-size", ex.texture_size, "About the atlas' longer side in texels")->check(CLI::Range(16, 16384));
-  x->add_option("--texel", ex.texel, "World units per texel instead of --texture-size")->check(CLI::PositiveNumber);
-  x->add_option("--gutter", ex.gutter, "Texels around each atlas chart")->check(CLI::Range(0, 64));
+  x->add_option("--texture-size", ex.texture_size, "About the atlas' longer side in texels")->check(fest::cli::range(16, 16384));
+  x->add_option("--texel", ex.texel, "World units per texel instead of --texture-size")->check(fest::cli::positive);
+  x->add_option("--gutter", ex.gutter, "Texels around each atlas chart")->check(fest::cli::range(0, 64));
   x->add_flag("--flat", ex.flat, "No textures: one constant material per BRDF, triangles by majority material");
   cli::add_threads(*x, ex.threads);
   return x;
@@ -274,8 +274,8 @@ CLI::App* add_factor(CLI::App& app, FactorArgs& factor) {
                                           "factors g(half) h(difference) as EXR, errors as JSON");
   fa->add_option("--brdf", factor.brdf, "brdf.json (brdffit fit)")->required();
   fa->add_option("-o,--output", factor.prefix, "Prefix of PREFIXg.exr and PREFIXh.exr")->required();
-  fa->add_option("--theta-bins", factor.theta_bins, "Cells in theta over [0, 90) degrees")->check(CLI::Range(1, 1024));
-  fa->add_option("--phi-bins", factor.phi_bins, "Cells in phi over [0, 360) degrees")->check(CLI::Range(1, 1024));
+  fa->add_option("--theta-bins", factor.theta_bins, "Cells in theta over [0, 90) degrees")->check(fest::cli::range(1, 1024));
+  fa->add_option("--phi-bins", factor.phi_bins, "Cells in phi over [0, 360) degrees")->check(fest::cli::range(1, 1024));
   fa->add_flag("--no-compare", factor.no_compare, "Skip the (omega_o, omega_i) factorisation the report compares with");
   cli::add_threads(*fa, factor.threads);
   return fa;

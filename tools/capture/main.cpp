@@ -110,11 +110,11 @@ int main(int argc, char** argv) {
       [&plan](const std::string& text) { plan.silhouette_lights = text.empty() ? std::vector<std::string>{} : ids(text); },
       "Backlight id(s) for one silhouette shot per view");
   p->add_option("--silhouette-exposure", plan.silhouette_exposure_s, "Exposure of the silhouette shot, s")
-      ->check(CLI::PositiveNumber);
-  p->add_option("--lightcal", plan.lightcal, "Light-calibration (mirror ball) shots per view")->check(CLI::Range(0, 100));
-  p->add_option("--dark", plan.dark, "Dark frames (all lights off) per view")->check(CLI::Range(0, 100));
+      ->check(fest::cli::positive);
+  p->add_option("--lightcal", plan.lightcal, "Light-calibration (mirror ball) shots per view")->check(fest::cli::range(0, 100));
+  p->add_option("--dark", plan.dark, "Dark frames (all lights off) per view")->check(fest::cli::range(0, 100));
   p->add_option("--repeat", plan.repeat, "Takes of every exposure (hdrmerge averages them: less noise)")
-      ->check(CLI::Range(1, 100));
+      ->check(fest::cli::range(1, 100));
 
   RunOptions run;
   CLI::App* r = app.add_subcommand("run", "Run a plan on the station; the manifest on standard output");

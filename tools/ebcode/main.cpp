@@ -22,9 +22,9 @@ int main(int argc, char** argv) {
   app.add_option("--conn", conn, "Connectivity coder: auto (smaller of static and adaptive), static, adaptive, raw")
       ->default_val("auto");
   app.add_option("--model", model, "Static state machine: m2, m26, m68, m236, m240x")->default_val("m236");
-  app.add_option("--qp", opt.qp, "Position bits 1..30; 0 = lossless float32")->default_val(14)->check(CLI::Range(0, 30));
-  app.add_option("--qn", opt.qn, "Vertex normal bits per component (over [-1, 1])")->default_val(10)->check(CLI::Range(1, 30));
-  app.add_option("--qt", opt.qt, "Texture coordinate bits (over their own box)")->default_val(12)->check(CLI::Range(1, 30));
+  app.add_option("--qp", opt.qp, "Position bits 1..30; 0 = lossless float32")->default_val(14)->check(fest::cli::range(0, 30));
+  app.add_option("--qn", opt.qn, "Vertex normal bits per component (over [-1, 1])")->default_val(10)->check(fest::cli::range(1, 30));
+  app.add_option("--qt", opt.qt, "Texture coordinate bits (over their own box)")->default_val(12)->check(fest::cli::range(1, 30));
   app.add_option("--box", box, "Quantisation box X,Y,Z,EXT instead of the bounding box");
   app.add_option("--predict", predict, "Position predictor: para, multi (mean of all parallelograms), delta, none")->default_val("para");
   app.add_flag("--no-stitch", no_stitch, "Keep the copies of non-manifold vertices as separate vertices");
@@ -33,12 +33,12 @@ int main(int argc, char** argv) {
   app.add_flag("--strict", opt.strict, "Degenerate faces, non-manifold input and boundaries are errors");
   app.add_option("--to", to, "Output: ebm, or drc (Draco through libdraco, for comparison)")->default_val("ebm");
   app.add_option("--draco-cl", opt.draco_cl, "Draco compression level 0..10 for --to drc")
-      ->default_val(7)->check(CLI::Range(0, 10));
+      ->default_val(7)->check(fest::cli::range(0, 10));
   app.add_option("--report", opt.report, "Write counts, bits per section, errors and times as JSON to this file");
   app.add_flag("--symbols", opt.symbols, "Write the forward CLERS string instead of the stream");
   app.add_flag("--no-verify", no_verify, "Skip re-encoding the decoded connectivity (the cheap check stays)");
   app.add_option("--ebm-version", opt.ebm_version, "Container version: 2 (compact, the default) or 1 (for readers before fest 0.2)")
-      ->default_val(2)->check(CLI::Range(1, 2));
+      ->default_val(2)->check(fest::cli::range(1, 2));
 
   ModelOptions mopt;
   std::string mmodel, mto = "tsv", lmax = "-", pmax = "-", smax = "-";
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   sub->add_option("--lmax", lmax, "Longest tracked current-loop length, or -")->default_val("-");
   sub->add_option("--pmax", pmax, "Longest tracked top-loop length, or -")->default_val("-");
   sub->add_option("--smax", smax, "Longest tracked second-loop length, or -")->default_val("-");
-  sub->add_option("--cmax", mopt.cmax, "Number of exclusion patterns used (0..19)")->default_val(19)->check(CLI::Range(0, 19));
+  sub->add_option("--cmax", mopt.cmax, "Number of exclusion patterns used (0..19)")->default_val(19)->check(fest::cli::range(0, 19));
   sub->add_flag("--all-patterns", mopt.all_patterns, "Also the two patterns starting with EE (m240x)");
   sub->add_flag("--literal-rule", mopt.literal, "C excluded only when the history itself is a pattern (diagnostic)");
   sub->add_option("--to", mto, "tsv, json, or inc (the committed tables of all named models)")->default_val("tsv");

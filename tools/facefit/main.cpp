@@ -24,6 +24,10 @@ const std::vector<std::pair<std::string, Space>> kSpaces{{"model", Space::model}
 const std::vector<std::pair<std::string, ModelSource>> kSources{
     {"eos", ModelSource::eos}, {"npz", ModelSource::npz}, {"mmb", ModelSource::mmb}, {"ply-set", ModelSource::ply_set}};
 
+// Landmark noise in pixels: beyond a million pixels no photograph is meant, and η = S²
+// (px²) stays far from overflowing.
+constexpr double kMaxNoisePx = 1e6;
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,8 +52,10 @@ int main(int argc, char** argv) {
   std::string eta_text = "2";
   auto* eta = f->add_option("--eta", eta_text, "η (>= 0), auto=gcv or auto=evidence")->default_val("2");
   fest::cli::enum_words(f->add_option("--eta-units", fit.eta_units, "Units of a numeric --eta: mm2 (scaled by s²) or px2"), kEtaUnits)->default_str("mm2");
-  auto* noise = f->add_option("--noise-sigma", fit.noise_sigma, "Landmark noise (px): η = S² px² unless --eta is given");
-  f->add_option("--components", fit.components, "Use the first K components (0 = all)")->default_val(0);
+  auto* noise = f->add_option("--noise-sigma", fit.noise_sigma, "Landmark noise (px): η = S² px² unless --eta is given")
+      ->check(fest::cli::range(0.0, kMaxNoisePx));
+  f->add_option("--components", fit.components, "Use the first K components (0 = all)")->default_val(0)
+      ->check(fest::cli::non_negative);
   fest::cli::enum_words(f->add_option("--nuisance", fit.nuisance, "Similarity camera: free | penalized | none"), kNuisances)->default_str("free");
   f->add_option("--nuisance-sigma", fit.nuisance_sigma, "Prior std of penalized nuisance columns")->default_val(100);
   f->add_option("--iterations", fit.iterations, "Affine camera: camera/shape alternations")->default_val(5);
@@ -71,8 +77,10 @@ int main(int argc, char** argv) {
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build a PCA model from meshes in correspondence");
   b->add_option("-o,--output", build.output, "Model file to write (.mmb)")->required();
-  b->add_option("--components", build.components, "Keep at most K components (0 = all, m-1)")->default_val(0);
-  b->add_option("--variance", build.variance, "Keep the fewest components explaining this fraction")->default_val(0);
+  b->add_option("--components", build.components, "Keep at most K components (0 = all, m-1)")->default_val(0)
+      ->check(fest::cli::non_negative);
+  b->add_option("--variance", build.variance, "Keep the fewest components explaining this fraction")->default_val(0)
+      ->check(fest::cli::range(0.0, 1.0));
   b->add_option("--landmarks", build.landmarks, "Landmark-to-vertex map stored in the model");
   b->add_option("--mask", build.mask, "Evaluation mask (vertex set) stored in the model");
   b->add_option("--units", build.units, "Length unit of the meshes")->default_val("mm");
@@ -99,7 +107,8 @@ int main(int argc, char** argv) {
   auto* s = app.add_subcommand("sample", "Faces from coefficients, at random, or the mean");
   s->add_option("-m,--model", sample.model, "Model file; default $FACEFIT_MODEL");
   s->add_option("--coeffs", sample.coeffs, "Coefficient TSV (index c)");
-  s->add_option("--random", sample.random, "Draw N faces c ~ N(0, sigma-scale² I)")->default_val(0);
+  s->add_option("--random", sample.random, "Draw N faces c ~ N(0, sigma-scale² I)")->default_val(0)
+      ->check(fest::cli::non_negative);
   s->add_option("--sigma-scale", sample.sigma_scale, "Scale of random coefficients")->default_val(1);
   s->add_option("--seed", sample.seed, "Random seed")->default_val(1);
   s->add_option("-o,--output", sample.output, "Mesh (one face) or folder (several)")->default_val("-");
@@ -114,7 +123,8 @@ int main(int argc, char** argv) {
   p->add_option("--center", proj.center, "Image position of the model origin U,V")->delimiter(',')->default_str("150,150");
   p->add_option("--yaw", proj.yaw, "Head rotation about the vertical axis (degrees)")->default_val(0);
   p->add_option("--pitch", proj.pitch, "Head rotation about the horizontal axis (degrees)")->default_val(0);
-  p->add_option("--noise-sigma", proj.noise_sigma, "Gaussian noise per coordinate (px)")->default_val(0);
+  p->add_option("--noise-sigma", proj.noise_sigma, "Gaussian noise per coordinate (px)")->default_val(0)
+      ->check(fest::cli::range(0.0, kMaxNoisePx));
   p->add_option("--seed", proj.seed, "Random seed of the noise")->default_val(1);
   p->add_flag("--by-vertex", proj.by_vertex, "Write 'vertex u v' instead of 'id u v'");
 
@@ -134,7 +144,8 @@ int main(int argc, char** argv) {
   w->add_option("--vertices", sw.vertices, "Feature vertex set")->required();
   w->add_option("--etas", sw.etas, "Comma-separated η values (px²)")->delimiter(',')->allow_extra_args(false)->default_str("0,1e-4,1e-3,1e-2,0.1,0.3,1,2,3,10,100,1000");
   w->add_option("--components", sw.components, "Comma-separated component counts (default all)")->delimiter(',')->allow_extra_args(false);
-  w->add_option("--noise-sigma", sw.noise, "Comma-separated landmark noise levels (px)")->delimiter(',')->allow_extra_args(false)->default_str("0");
+  w->add_option("--noise-sigma", sw.noise, "Comma-separated landmark noise levels (px)")->delimiter(',')->allow_extra_args(false)->default_str("0")
+      ->check(fest::cli::range(0.0, kMaxNoisePx));
   w->add_option("--yaw", sw.yaw, "Comma-separated rotations of the solver's L (degrees; fig. 1.6)")->delimiter(',')->allow_extra_args(false)->default_str("0");
   w->add_option("--mask", sw.mask, "Evaluation vertex set (default: the model's eval mask)");
   w->add_option("--seed", sw.seed, "Noise seed")->default_val(1);

@@ -25,13 +25,14 @@ int main(int argc, char** argv) {
   CLI::Option* tol = app.add_option("--tol", opt.tol,
                  "Tolerance of the main metric: mesh Hausdorff distance, else max absolute difference")
       ->default_val(0.0)
-      ->check(CLI::NonNegativeNumber);
+      ->check(fest::cli::non_negative);
   app.add_option("-t,--threshold", thresholds,
                  "Extra check METRIC<=VALUE or METRIC>=VALUE, e.g. 'psnr>=40', 'rms<=1e-4', 'dice>=0.9'; "
                  "replaces the default check of that metric and of the metrics that measure the same error "
                  "(image max_abs/rmse/psnr; mesh hausdorff/rms/mean; volume max_abs/rmse/dice; table max_abs/max_rel)")
       ->allow_extra_args(false);
   app.add_option("--samples", opt.samples, "Meshes: random surface samples per mesh besides the vertices")
+      ->check(fest::cli::range(0LL, 100000000LL))
       ->default_val(100000);
   fest::cli::add_threads(app, opt.threads);
   app.add_flag("--ignore-counts", opt.ignore_counts, "Meshes: allow different vertex, face, line and point counts");

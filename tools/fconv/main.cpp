@@ -34,15 +34,15 @@ int main(int argc, char** argv) {
   app.add_flag("--rescale", opt.rescale,
                "With an integer --type: map the input's value range linearly onto the type's full range");
   app.add_option("--frame", frame, "Volume: write only frame K (0-based) of a 4-D series, as a 3-D volume")
-      ->check(CLI::Range(0L, 1L << 31));
+      ->check(fest::cli::range(0L, 1L << 31));
   app.add_flag("--half", opt.half, "EXR: 16-bit half channels instead of 32-bit float");
   app.add_option("--quality", opt.quality, "JPEG output quality, 1 (smallest) to 100 (best)")
-      ->check(CLI::Range(1, 100))
+      ->check(fest::cli::range(1, 100))
       ->default_val(95);
   app.add_option("--draco-bits", opt.draco_bits, "Draco position quantization bits (0 = lossless)")
-      ->check(CLI::Range(0, 30));
+      ->check(fest::cli::range(0, 30));
   app.add_option("--draco-speed", opt.draco_speed, "Draco encoder speed, 0 (smallest) to 10 (fastest)")
-      ->check(CLI::Range(0, 10));
+      ->check(fest::cli::range(0, 10));
   app.add_option("--precision", precision,
                  "PLY positions and normals: float or double (default: float unless float would lose "
                  "precision the input had)")

@@ -114,12 +114,12 @@ int main(int argc, char** argv) {
                 "Frame pattern with %d (f%05d.vti, .nrrd, 2-D: .pfm .exr .png), or - for the frame stream");
   r->add_option("--to", run_to, "Format when the pattern has no extension: nrrd, vti, pfm, exr, png");
   r->add_option("--fields", run_fields, "Fields to write, comma-separated (default: velocity and every scalar)");
-  r->add_option("--frames", run.frames, "Number of output frames (overrides the scene)")->check(CLI::Range(1, 10000000));
+  r->add_option("--frames", run.frames, "Number of output frames (overrides the scene)")->check(fest::cli::range(1, 10000000));
   r->add_option("--interp", run.interp, "Simulation step = K frame intervals; frames between are interpolated")
-      ->check(CLI::Range(1, 1000));
+      ->check(fest::cli::range(1, 1000));
   r->add_option("--poisson", run_poisson, "Pressure solver: fdm, fft, mg, gs, jacobi (default fdm up to 64, else fft)");
-  r->add_option("--iters", run.iters, "Sweeps of gs/jacobi")->check(CLI::Range(1, 100000));
-  r->add_option("--tol", run.tol, "Relative residual of mg")->check(CLI::Range(1e-15, 1.0));
+  r->add_option("--iters", run.iters, "Sweeps of gs/jacobi")->check(fest::cli::range(1, 100000));
+  r->add_option("--tol", run.tol, "Relative residual of mg")->check(fest::cli::range(1e-15, 1.0));
   r->add_option("--order", run_order, "Step order: paper or stam03");
   r->add_option("--grid", run_grid, "Grid: collocated (the paper's)");
   r->add_option("--precision", run_precision, "Output values: float or double");
@@ -143,14 +143,14 @@ int main(int argc, char** argv) {
   d->add_option("--field", ren.field, "Field to show (velocity: its magnitude)");
   d->add_option("--range", ren.range, "lo,hi mapped to the colour map ends")->delimiter(',')->expected(2)->allow_extra_args(false);
   d->add_option("--colormap", ren_colormap, "gray, inferno or velocity");
-  d->add_option("--sigma", ren.sigma, "Absorb: extinction per unit field per unit length")->check(CLI::Range(0.0, 1e9));
+  d->add_option("--sigma", ren.sigma, "Absorb: extinction per unit field per unit length")->check(fest::cli::range(0.0, 1e9));
   d->add_option("--depth", ren.depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
 
   InterpOptions ip;
   CLI::App* i = app.add_subcommand("interp", "Linear blend (1-a) A + a B of two frames of identical shape");
   i->add_option("a", ip.a, "First frame (NRRD frame file)")->required();
   i->add_option("b", ip.b, "Second frame")->required();
-  i->add_option("--alpha", ip.alpha, "Blend weight a of B")->required()->check(CLI::Range(0.0, 1.0));
+  i->add_option("--alpha", ip.alpha, "Blend weight a of B")->required()->check(fest::cli::range(0.0, 1.0));
   i->add_option("-o,--output", ip.output, "Output frame (- : standard output)");
 
   CheckOptions ck;
@@ -164,19 +164,19 @@ int main(int argc, char** argv) {
                                     {"stability", CheckCase::stability},
                                     {"all", CheckCase::all}});
   c->add_option("--n", ck.n, "Resolution of the large-step run (taylor-green, abc) or the grid (stability)")
-      ->check(CLI::Range(8, 512));
-  c->add_option("--dt", ck.dt, "Step of the large-step run")->check(CLI::Range(1e-6, 10.0));
-  c->add_option("--nu", ck.nu, "Viscosity of the decay cases")->check(CLI::Range(0.0, 10.0));
+      ->check(fest::cli::range(8, 512));
+  c->add_option("--dt", ck.dt, "Step of the large-step run")->check(fest::cli::range(1e-6, 10.0));
+  c->add_option("--nu", ck.nu, "Viscosity of the decay cases")->check(fest::cli::range(0.0, 10.0));
   c->add_option("--report", ck.report, "Also write the report to this file");
   fest::cli::add_threads(*c, ck.threads);
 
   BenchOptions bo;
   std::vector<std::string> bench_poisson;
   CLI::App* b = app.add_subcommand("bench", "Time the stages per (size, threads, solver); one JSON line each");
-  b->add_option("--sizes", bo.sizes, "Cubic grid sizes")->delimiter(',')->allow_extra_args(false)->check(CLI::Range(3, 1024));
-  b->add_option("--threads", bo.threads, "Thread counts")->delimiter(',')->allow_extra_args(false)->check(CLI::Range(1, 1024));
-  b->add_option("--steps", bo.steps, "Steps per measurement")->check(CLI::Range(1, 100000));
-  b->add_option("--nu", bo.nu, "Viscosity of the bench scene (0: no diffusion stage)")->check(CLI::Range(0.0, 1.0));
+  b->add_option("--sizes", bo.sizes, "Cubic grid sizes")->delimiter(',')->allow_extra_args(false)->check(fest::cli::range(3, 1024));
+  b->add_option("--threads", bo.threads, "Thread counts")->delimiter(',')->allow_extra_args(false)->check(fest::cli::range(1, 1024));
+  b->add_option("--steps", bo.steps, "Steps per measurement")->check(fest::cli::range(1, 100000));
+  b->add_option("--nu", bo.nu, "Viscosity of the bench scene (0: no diffusion stage)")->check(fest::cli::range(0.0, 1.0));
   b->add_option("--poisson", bench_poisson, "Solvers to compare")->delimiter(',')->allow_extra_args(false);
 
   return fest::cli::run(app, argc, argv, [&] {

@@ -33,9 +33,9 @@ void add_series(CLI::App* cmd, SeriesOptions& s, std::vector<std::string>& times
       ->required()
       ->delimiter(',')
       ->allow_extra_args(false);
-  cmd->add_option("--samples", s.samples, "Sample pixels per channel for response recovery")->check(CLI::Range(1, 100000));
+  cmd->add_option("--samples", s.samples, "Sample pixels per channel for response recovery")->check(fest::cli::range(1, 100000));
   cmd->add_option("--lambda", s.lambda, "Smoothness weight of the response (as in Debevec-Malik's gsolve)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(fest::cli::non_negative);
   fest::cli::enum_words(cmd->add_option("--method", s.method, "Response recovery: debevec (Debevec-Malik) or robertson (Robertson et al.)"), kMethods);
 }
 
@@ -90,10 +90,10 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->allow_extra_args(false);
   bracket_cmd->add_option("-o,--output", bracket.directory, "Existing folder for e00.png, e01.png, ...")->required();
-  bracket_cmd->add_option("--gamma", bracket.camera.gamma, "Response Z = 255 (E t)^(1/gamma)")->check(CLI::PositiveNumber);
+  bracket_cmd->add_option("--gamma", bracket.camera.gamma, "Response Z = 255 (E t)^(1/gamma)")->check(fest::cli::positive);
   bracket_cmd->add_option("--noise", bracket.camera.noise_dn, "Read noise, standard deviation in DN")
-      ->check(CLI::NonNegativeNumber);
-  bracket_cmd->add_option("--scale", bracket.scale, "Multiply the radiance first")->check(CLI::PositiveNumber);
+      ->check(fest::cli::non_negative);
+  bracket_cmd->add_option("--scale", bracket.scale, "Multiply the radiance first")->check(fest::cli::positive);
   bracket_cmd->add_option("--seed", bracket.seed, "Noise seed (exposure k uses seed + k)");
   bracket_cmd->add_option("--response-out", bracket.response_out, "Also write the true response curve (CSV, g(128) = 0)");
 
@@ -106,8 +106,8 @@ int main(int argc, char** argv) {
   session_cmd->add_option("--response", session.response_in, "Use this response curve (CSV) instead of recovering one");
   fest::cli::enum_words(session_cmd->add_option("--method", session.method, "Response recovery: debevec or robertson"), kMethods);
   session_cmd->add_option("--samples", session.samples, "Sample pixels per channel for response recovery")
-      ->check(CLI::Range(1, 100000));
-  session_cmd->add_option("--lambda", session.lambda, "Smoothness weight of the response")->check(CLI::NonNegativeNumber);
+      ->check(fest::cli::range(1, 100000));
+  session_cmd->add_option("--lambda", session.lambda, "Smoothness weight of the response")->check(fest::cli::non_negative);
   session_cmd->add_flag("--float", session.full_float, "EXR with 32-bit float channels instead of half");
   cli::add_threads(*session_cmd, session.threads);
 
@@ -115,8 +115,8 @@ int main(int argc, char** argv) {
   auto* sheet_cmd = app.add_subcommand("sheet", "A contact sheet of radiance images: one exposure for all, sRGB, PNG");
   sheet_cmd->add_option("images", sheet.images, "Radiance images (EXR, PFM)")->required();
   sheet_cmd->add_option("-o,--output", sheet.output, "PNG file, - = standard output")->required();
-  sheet_cmd->add_option("--columns", sheet.columns, "Tiles per row")->check(CLI::Range(1, 1000));
-  sheet_cmd->add_option("--width", sheet.width, "Tile width in pixels")->check(CLI::Range(8, 10000));
+  sheet_cmd->add_option("--columns", sheet.columns, "Tiles per row")->check(fest::cli::range(1, 1000));
+  sheet_cmd->add_option("--width", sheet.width, "Tile width in pixels")->check(fest::cli::range(8, 10000));
 
   app.footer("Exit status: 0 success, 1 run-time failure, 2 usage error, 3 bad input, 4 I/O error.\n"
              "See hdrmerge(1).");

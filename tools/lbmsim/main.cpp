@@ -78,8 +78,8 @@ int main(int argc, char** argv) {
   r->add_option("-o,--output", run.output, "Pattern with %d (out/f%05d.vti, .nrrd), or - for the frame stream");
   r->add_option("--to", run_to, "vti, nrrd or stream (default: from the extension)");
   r->add_option("--fields", run_fields, "Fields, comma-separated: density,velocity,pressure,speed,vorticity,vorticity_mag,qcriterion,flags");
-  r->add_option("--every", run.every, "Write every K steps (0: last step only)")->check(CLI::Range(0L, 2000000000L));
-  r->add_option("--steps", run.steps, "Number of steps (overrides the case)")->check(CLI::Range(0L, 2000000000L));
+  r->add_option("--every", run.every, "Write every K steps (0: last step only)")->check(fest::cli::range(0L, 2000000000L));
+  r->add_option("--steps", run.steps, "Number of steps (overrides the case)")->check(fest::cli::range(0L, 2000000000L));
   fest::cli::enum_words(r->add_option("--precision", run.precision, "Arithmetic: double or float"), kPrecisions);
   r->add_option("--forces", run.forces, "CSV of forces on the case's monitored flags per step (- : standard output)");
   r->add_option("--probes", run.probes, "CSV of the probes per step");
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
                 "all-fast or all")
       ->check(CLI::IsMember({"poiseuille", "taylor-green", "cavity", "cavity400", "cavity1000", "cylinder20", "mass",
                              "symmetry", "determinism", "all-fast", "all"}));
-  c->add_option("--n", ck.n, "Resolution (cavity N, cylinder D in cells)")->check(CLI::Range(8, 1024));
+  c->add_option("--n", ck.n, "Resolution (cavity N, cylinder D in cells)")->check(fest::cli::range(8, 1024));
   c->add_option("--report", ck.report, "Also write the report to this file");
   fest::cli::add_threads(*c, threads);
 
@@ -103,20 +103,20 @@ int main(int argc, char** argv) {
   CLI::App* b = app.add_subcommand("bench", "Measure MLUPS of a periodic box next to the copy bandwidth; JSON lines");
   fest::cli::enum_words<lbm::LatticeKind>(b->add_option("--lattice", bo.lattice, "d2q9 or d3q19"),
                                           {{"d2q9", lbm::LatticeKind::d2q9}, {"d3q19", lbm::LatticeKind::d3q19}});
-  b->add_option("--size", bo.size, "Cells per axis (default 128 for d3q19, 1024 for d2q9)")->check(CLI::Range(8, 4096));
-  b->add_option("--steps", bo.steps, "Timed steps (after 10 warm-up steps)")->check(CLI::Range(1, 1000000));
+  b->add_option("--size", bo.size, "Cells per axis (default 128 for d3q19, 1024 for d2q9)")->check(fest::cli::range(8, 4096));
+  b->add_option("--steps", bo.steps, "Timed steps (after 10 warm-up steps)")->check(fest::cli::range(1, 1000000));
   fest::cli::enum_words(b->add_option("--precision", bo.precision, "double,float")->delimiter(','), kPrecisions);
-  b->add_option("--threads", bo.threads, "Thread counts, e.g. 1,2")->delimiter(',')->check(CLI::Range(1, 1024));
+  b->add_option("--threads", bo.threads, "Thread counts, e.g. 1,2")->delimiter(',')->check(fest::cli::range(1, 1024));
   fest::cli::enum_words<lbm::CollisionModel>(b->add_option("--collision", bo.collision, "bgk or trt"),
                                              {{"bgk", lbm::CollisionModel::bgk}, {"trt", lbm::CollisionModel::trt}});
 
   VoxelizeOptions vo;
   CLI::App* v = app.add_subcommand("voxelize", "Voxelize a closed triangle mesh into a uint8 flag volume (NRRD)");
   v->add_option("mesh", vo.mesh, "Mesh (PLY, OBJ, OFF, STL, DRC; - : standard input)")->required();
-  v->add_option("--size", vo.size, "nx,ny,nz")->delimiter(',')->expected(3)->check(CLI::Range(1, 4096));
+  v->add_option("--size", vo.size, "nx,ny,nz")->delimiter(',')->expected(3)->check(fest::cli::range(1, 4096));
   fest::cli::enum_words<bool>(v->add_option("--fit", vo.fit_box, "box (scale into the lattice) or none (mesh coordinates are cells)"),
                               {{"box", true}, {"none", false}});
-  v->add_option("--margin", vo.margin, "Free cells around the fitted mesh")->check(CLI::Range(0.0, 1e6));
+  v->add_option("--margin", vo.margin, "Free cells around the fitted mesh")->check(fest::cli::range(0.0, 1e6));
   v->add_option("-o,--output", vo.output, "Flag volume (.nrrd, .mha, .nii; - : NRRD on standard output)");
 
   InfoOptions io;

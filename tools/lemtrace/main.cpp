@@ -49,7 +49,7 @@ void add_grid_options(CLI::App* cmd, GridArgs& g, bool with_precompute) {
   cmd->add_option("--vectors", g.vectors, "Point vector array (default: active vectors, else the only 3-component one)");
   fest::cli::enum_words(cmd->add_option("--split", g.split, "Non-tetrahedral cells: conforming split, or none to reject them"), kSplits);
   cmd->add_option("--eps-parallel", g.eps_parallel, "epsilon_P: eigenvalue threshold for parallel cells")
-      ->check(CLI::PositiveNumber);
+      ->check(fest::cli::positive);
   fest::cli::enum_words(cmd->add_option("--eps-mode", g.eps_mode, "abs: |lambda| < eps (the paper's); rel: |lambda| tau_T < eps"), kEpsModes);
   if (with_precompute)
     fest::cli::enum_words(cmd->add_option("--precompute", g.precompute, "Per-cell records: all, lazy (first visit) or none (every visit)"), kPrecompute);
@@ -66,19 +66,19 @@ void add_trace_options(CLI::App* cmd, TraceArgs& t, NumberTexts& numbers, bool s
       ->allow_extra_args(false);
   fest::cli::enum_words(cmd->add_option("--root", t.root, "Exit-time solver: bracket (safe) or newton (the paper's, validated)"), kRoots);
   cmd->add_option("--eps-newton", t.eps_newton, "Root tolerance relative to the cell's transit time")
-      ->check(CLI::PositiveNumber);
+      ->check(fest::cli::positive);
   fest::cli::enum_words(cmd->add_option("--extraordinary", t.extraordinary, "Extraordinary cells: expm (generic closed form)"), kExtraordinary);
   fest::cli::enum_words(cmd->add_option("--direction", t.direction, "forward, backward or both"), kDirections);
-  cmd->add_option("--max-steps", t.max_steps, "Cells (LEM) or steps (RK) per line")->check(CLI::PositiveNumber);
-  cmd->add_option("--max-length", t.max_length, "Stop after this arc length")->check(CLI::PositiveNumber);
-  cmd->add_option("--max-time", t.max_time, "Stop after this integration time")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-steps", t.max_steps, "Cells (LEM) or steps (RK) per line")->check(fest::cli::positive);
+  cmd->add_option("--max-length", t.max_length, "Stop after this arc length")->check(fest::cli::positive);
+  cmd->add_option("--max-time", t.max_time, "Stop after this integration time")->check(fest::cli::positive);
   cmd->add_option("--terminal-speed", t.terminal_speed, "Stop below this speed (default 1e-12 x max vertex speed)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--step", t.step, "Step of the RK methods")->check(CLI::PositiveNumber);
+      ->check(fest::cli::non_negative);
+  cmd->add_option("--step", t.step, "Step of the RK methods")->check(fest::cli::positive);
   fest::cli::enum_words(cmd->add_option("--step-unit", t.step_unit, "time, length or cell (fraction of h_T/|v|)"), kStepUnits);
-  cmd->add_option("--tol", t.tolerance, "RK45 error tolerance per step")->check(CLI::PositiveNumber);
+  cmd->add_option("--tol", t.tolerance, "RK45 error tolerance per step")->check(fest::cli::positive);
   cmd->add_option("--samples-per-cell", t.samples_per_cell, "Closed-form points per cell (LEM; 0 = exits only)")
-      ->check(CLI::Range(0, 1000));
+      ->check(fest::cli::range(0, 1000));
   cmd->add_option("-o,--output", t.output, "Output file (.csv .vtp .vtk .json), - = standard output");
   fest::cli::enum_words(cmd->add_option("--to", t.to, "Output format: csv, vtp, vtk or json"), kLineFormats);
   cmd->add_option("--report", t.report, "JSON summary: cell types, reasons, timings, memory");
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
   add_trace_options(probes_cmd, probes.trace, probes_numbers, false);
   probes_cmd->add_option("--ribbon", probes.ribbon_width, "Ribbon width: a second line this far off, paired by time");
   probes_cmd->add_option("--tube", probes.tube_radius, "Tube radius around each line");
-  probes_cmd->add_option("--sides", probes.sides, "Sides of tubes and arrows")->check(CLI::Range(3, 64));
+  probes_cmd->add_option("--sides", probes.sides, "Sides of tubes and arrows")->check(fest::cli::range(3, 64));
   probes_cmd->add_flag("--glyphs", probes.glyphs, "An arrow at every seed along the velocity");
   probes_cmd->add_option("--glyph-scale", probes.glyph_scale, "Arrow length per unit speed (default: 1/10 of the grid per max speed)");
   probes_cmd->add_option("--color", probes.color, "Scalar on tubes and glyphs: speed or a point array of the grid");
@@ -139,17 +139,17 @@ int main(int argc, char** argv) {
   NumberTexts bench_numbers;
   add_trace_options(bench_cmd, bench.trace, bench_numbers, false);
   bench_cmd->add_option("--repeat", bench.repeat, "Run each method this many times, report the fastest")
-      ->check(CLI::Range(1, 100));
+      ->check(fest::cli::range(1, 100));
 
   GenArgs gen;
   auto* gen_cmd = app.add_subcommand("gen", "Synthetic grid with an analytic field");
   gen_cmd->add_option("kind", gen.kind,
                       "rotation helix saddle node spiral shear uniform jordan sphere-rotation sphere-potential abc")
       ->required();
-  gen_cmd->add_option("--n", gen.n, "Cubes per side")->check(CLI::Range(1, 400));
+  gen_cmd->add_option("--n", gen.n, "Cubes per side")->check(fest::cli::range(1, 400));
   gen_cmd->add_option("--tets", gen.tets, "Tetrahedra per cube (6: Kuhn split)")->check(CLI::IsMember({6}));
   gen_cmd->add_option("--jitter", gen.jitter, "Random interior vertex displacement, fraction of the cell size")
-      ->check(CLI::Range(0.0, 0.49));
+      ->check(fest::cli::range(0.0, 0.49));
   gen_cmd->add_option("--seed", gen.seed, "Random seed of the jitter");
   gen_cmd->add_flag("--hex", gen.hex, "Write hexahedra instead of tetrahedra");
   gen_cmd->add_option("-o,--output", gen.output, "Output grid (.vtu or .vtk), - = standard output");

@@ -37,10 +37,10 @@ int main(int argc, char** argv) {
   only->add_option("id", ids, "Light id")->required()->expected(1);
   auto* pulse = app.add_subcommand("pulse", "Switch a light on for --ms milliseconds, then off");
   pulse->add_option("id", ids, "Light id")->required()->expected(1);
-  pulse->add_option("--ms", pu.ms, "Duration in milliseconds")->required()->check(CLI::Range(1L, 86400000L));
+  pulse->add_option("--ms", pu.ms, "Duration in milliseconds")->required()->check(fest::cli::range(1L, 86400000L));
   auto* hold = app.add_subcommand("hold", "Keep lights on until --time passes or SIGINT/SIGTERM/SIGHUP, then off");
   hold->add_option("ids", ids, "Light ids")->required();
-  hold->add_option("--time", ho.seconds, "Seconds (default: until a signal)")->check(CLI::PositiveNumber);
+  hold->add_option("--time", ho.seconds, "Seconds (default: until a signal)")->check(fest::cli::positive);
 
   return fest::cli::run(app, argc, argv, [&] {
     if (*list) return list_command(st);

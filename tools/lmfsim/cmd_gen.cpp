@@ -1,6 +1,9 @@
 // lmfsim gen: the scenes of the golden and analytic tests (docs/lmfsim.md §4 `gen`).
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "cli/memory_limit.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -206,6 +209,8 @@ json gen_ring(const GenOptions& o) {
 }  // namespace
 
 int cmd_gen(const GenOptions& o) {
+  if (o.kind == GenScene::chain || o.kind == GenScene::ring)
+    fest::cli::check_fits_in_memory(static_cast<double>(o.n) * kGenBytesPerLink, fmt::format("a scene of --n {} links", o.n));
   json doc;
   switch (o.kind) {
     case GenScene::chain: doc = gen_chain(o); break;

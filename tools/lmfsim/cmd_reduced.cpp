@@ -44,7 +44,7 @@ Framing framing(const Scene& sc, const SimOverrides& over) {
   f.every = std::max(1L, std::lround(period / f.dt));
   if (std::abs(f.every * f.dt - period) > 1e-9 * period)
     throw fest::usage_error("reduced: --dt {} does not divide the scene's frame period {}", f.dt, period);
-  f.steps = std::lround(t_end / f.dt);
+  f.steps = step_count(t_end, f.dt, over.dt || over.t_end);
   return f;
 }
 

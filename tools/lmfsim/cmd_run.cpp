@@ -1,9 +1,11 @@
 // lmfsim run: scene in, trajectory CSV (and diagnostics, forces, a report) out.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
 
+#include "cli/memory_limit.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -66,6 +68,15 @@ int cmd_run(const RunOptions& opt) {
   const SimSettings& sim = sys.settings();
   const auto& bodies = sys.scene().bodies;
   const int nb = static_cast<int>(bodies.size());
+  if (!opt.stream) {
+    // Nothing is written unless everything worked, so the rows wait in memory: about
+    // 256 bytes a body a frame (13 numbers of 9 digits, the frame, time and name).
+    const double frames = std::floor(sim.t_end / sim.dt / sim.every) + 1;
+    fest::cli::check_fits_in_memory(
+        frames * std::max(nb, 1) * 256.0,
+        fmt::format("a trajectory of {:.0f} frames of {} bodies held until the run ends (--stream writes it as it comes)",
+                    frames, nb));
+  }
 
   if (sim.formulation == Formulation::penalty) {
     // Stiffness warning of docs/lmfsim.md §5: h w0 sqrt(kappa max diag(J M^-1 J^T)) > 0.5.

@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
   std::string gen_kind, gen_joint, gen_abcd = "0.3,1,0.8,1";
   auto* gen_cmd = app.add_subcommand("gen", "Write a test scene: chain, fourbar, activation, sleigh, bead, motorarm, ring");
   gen_cmd->add_option("kind", gen_kind, "chain, fourbar, activation, sleigh, bead, motorarm or ring")->required();
-  gen_cmd->add_option("--n", gen.n, "Links (chain)");
+  gen_cmd->add_option("--n", gen.n, "Links (chain, ring)")->check(fest::cli::range(1, kMaxLinks));
   fest::cli::enum_words<LinkType>(gen_cmd->add_option("--type", gen.type, "Link type: box, rod or particle"),
                         {{"box", LinkType::box}, {"rod", LinkType::rod}, {"particle", LinkType::particle}});
   gen_cmd->add_option("--joint", gen_joint, "ball, hinge or distance (default: ball; hinge with --planar; distance for particles)");

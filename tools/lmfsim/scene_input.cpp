@@ -1,6 +1,9 @@
 // The scene on standard input: JSON -> Scene (meshes read from files relative to the
 // working folder), and the command-line overrides of its `sim` block.
 #include <cmath>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -33,6 +36,21 @@ void SimOverrides::apply(SimSettings& sim) const {
   if (!(sim.dt > 0) || !std::isfinite(sim.dt)) throw fest::usage_error("--dt must be positive (got {})", sim.dt);
   if (!(sim.t_end >= 0)) throw fest::usage_error("--t-end must be >= 0 (got {})", sim.t_end);
   if (sim.every < 1) throw fest::usage_error("--every must be >= 1 (got {})", sim.every);
+  step_count(sim.t_end, sim.dt, dt || t_end);
+}
+
+long step_count(double t_end, double dt, bool from_flags) {
+  // In double: t_end / dt of an absurd --t-end is no long (lround would wrap, and the
+  // run would write frame 0 only).
+  const double steps = t_end / dt;
+  if (!(steps <= kMaxSteps)) {
+    const std::string count = std::isfinite(steps) ? fmt::format("{:.3g}", steps) : "more than 1e308";
+    if (from_flags)
+      throw fest::usage_error("--t-end {} / --dt {} is {} steps; a run takes at most {:.0f}", t_end, dt, count, kMaxSteps);
+    throw fest::bad_input("the scene's sim.t_end {} / sim.dt {} is {} steps; a run takes at most {:.0f}", t_end, dt, count,
+                          kMaxSteps);
+  }
+  return std::lround(steps);
 }
 
 Scene load_scene(const std::string& bytes) {

@@ -24,9 +24,9 @@ int main(int argc, char** argv) {
   RunArgs run;
   auto* r = app.add_subcommand("run", "Load the net files in order, run every instance, trace on standard output");
   r->add_option("files", run.files, "PaT-Lisp files (.pat), loaded in order; - = standard input")->required();
-  auto* cyc = r->add_option("--cycles", run.cycles, "Stop after N cycles")->check(CLI::NonNegativeNumber);
-  r->add_option("--until", run.until, "Stop once the motion time reaches T seconds")->check(CLI::NonNegativeNumber)->excludes(cyc);
-  r->add_option("--dt", run.dt, "Seconds per cycle (default 1/30, Jack's 30 fps)")->check(CLI::PositiveNumber);
+  auto* cyc = r->add_option("--cycles", run.cycles, "Stop after N cycles")->check(fest::cli::non_negative);
+  r->add_option("--until", run.until, "Stop once the motion time reaches T seconds")->check(fest::cli::non_negative)->excludes(cyc);
+  r->add_option("--dt", run.dt, "Seconds per cycle (default 1/30, Jack's 30 fps)")->check(fest::cli::positive);
   r->add_option("--t0", run.t0, "Motion time at cycle 0");
   r->add_option("--seed", run.seed, "Seed of the random stream (probabilistic nodes, RANDOM)");
   r->add_option("--events", run.events, "JSON Lines input events (set, motion, motion-done, spawn, eval); - = standard input");
@@ -37,10 +37,10 @@ int main(int argc, char** argv) {
   r->add_flag("--raw-print", run.raw_print, "Write only the text of (format t ...) to standard output");
   r->add_flag("--dump-locals", run.dump_locals, "Add each instance's locals to its exit event");
   r->add_option("--eval", run.evals, "An expression to evaluate after loading (repeatable)")->allow_extra_args(false);
-  r->add_option("--max-cycles", run.max_cycles, "Fail (exit 1) when the run needs more cycles")->check(CLI::PositiveNumber);
-  r->add_option("--max-nets", run.max_nets, "Fail (exit 1) when more instances are created")->check(CLI::PositiveNumber);
+  r->add_option("--max-cycles", run.max_cycles, "Fail (exit 1) when the run needs more cycles")->check(fest::cli::positive);
+  r->add_option("--max-nets", run.max_nets, "Fail (exit 1) when more instances are created")->check(fest::cli::positive);
   r->add_option("--max-steps", run.max_steps, "Fail (exit 1) when one action, condition or monitor evaluates more steps")
-      ->check(CLI::PositiveNumber);
+      ->check(fest::cli::positive);
   r->add_flag("--realtime", run.realtime, "Pace cycles with the wall clock (motion time = seconds since the start)");
   r->add_flag("--strict", run.strict, "Run-time errors and deadlock end the run with exit 1");
   r->add_option("--report", run.report, "JSON report: cycles, instances, statuses, events, seconds");
@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   m->add_option("input", markov.input, "Transcript (TSV or CSV with a header); - = standard input");
   std::string markov_cols = "turn_state,gaze1,gaze2";
   m->add_option("--cols", markov_cols, "turn-state,gaze1,gaze2 columns (24 states), or one state column");
-  m->add_option("--states", markov.states, "Number of states with one state column")->check(CLI::Range(1, 100000));
+  m->add_option("--states", markov.states, "Number of states with one state column")->check(fest::cli::range(1, 100000));
   m->add_flag("--no-self", markov.no_self, "Count only changes of state (no i -> i transitions)");
   m->add_option("--net", markov.net, "Write a .pat net of def-probnodes with this class name instead of the CSV matrix");
   m->add_option("-o,--output", markov.output, "Output file; - = standard output");

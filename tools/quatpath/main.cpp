@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   CLI::Option* to_flag = fest::cli::enum_words<PoseFormat>(
       app.add_option("--to", to, "Output: csv, jsonl, camera (terrainlod --path JSON Lines), or camera-args (volrender look-at flags, one line per frame)"),
       {{"csv", PoseFormat::csv}, {"jsonl", PoseFormat::jsonl}, {"camera", PoseFormat::camera}, {"camera-args", PoseFormat::camera_args}});
-  app.add_option("--fps", a.fps, "Output frames per second")->check(CLI::PositiveNumber);
+  app.add_option("--fps", a.fps, "Output frames per second")->check(fest::cli::positive);
   using fest::motionpath::OrientationMode;
   using fest::motionpath::PositionMode;
   using fest::motionpath::Way;
@@ -37,11 +37,11 @@ int main(int argc, char** argv) {
   app.add_flag("--constant-speed", a.constant_speed, "Reparametrise by arc length: constant speed from the first key's time to the last");
   app.add_flag("--no-end", a.no_end, "Do not add a last frame at the last key's time when it falls between frames");
   app.add_option("--camera-distance", a.camera_distance, "Camera output: target = eye + distance x view direction")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--fovy", a.fovy_deg, "Camera output: vertical field of view in degrees")->check(CLI::Range(1.0, 179.0));
-  app.add_option("--width", a.width, "Camera output: image width")->check(CLI::Range(1, 65536));
-  app.add_option("--height", a.height, "Camera output: image height")->check(CLI::Range(1, 65536));
-  app.add_option("--tau", a.tau_px, "Camera output: terrainlod's screen-space error tau_px")->check(CLI::PositiveNumber);
+      ->check(fest::cli::positive);
+  app.add_option("--fovy", a.fovy_deg, "Camera output: vertical field of view in degrees")->check(fest::cli::range(1.0, 179.0));
+  app.add_option("--width", a.width, "Camera output: image width")->check(fest::cli::range(1, 65536));
+  app.add_option("--height", a.height, "Camera output: image height")->check(fest::cli::range(1, 65536));
+  app.add_option("--tau", a.tau_px, "Camera output: terrainlod's screen-space error tau_px")->check(fest::cli::positive);
   app.add_option("--report", a.report, "JSON report: keys, frames, length, unit-norm error, frame step range");
   return fest::cli::run(app, argc, argv, [&] {
     if (to_flag->count() > 0) a.to = to;

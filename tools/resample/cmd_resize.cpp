@@ -18,7 +18,8 @@ using namespace fest::sampling;
 
 namespace {
 
-// The target size from --size / --width / --height / --scale.
+// The target size from --size / --width / --height / --scale, derived in double and
+// checked (sizes.hpp) before anything is allocated.
 std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
   const int given = a.size.has_value() + (a.width > 0 || a.height > 0) + (!a.scale.empty());
   if (given != 1) throw usage_error("give exactly one of --size, --width/--height, --scale");
@@ -28,12 +29,12 @@ std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
     const double sx = a.scale[0], sy = a.scale.size() == 2 ? a.scale[1] : a.scale[0];
     if (!(sx > 0 && sy > 0) || !std::isfinite(sx) || !std::isfinite(sy))
       throw usage_error("--scale {},{} must be positive", sx, sy);
-    return {checked_dimension(std::llround(w_in * sx), "--scale"), checked_dimension(std::llround(h_in * sy), "--scale")};
+    return checked_size(w_in * sx, h_in * sy, "--scale");
   }
   if (a.width < 0 || a.height < 0) throw usage_error("--width/--height must be positive");
-  if (a.width > 0 && a.height > 0) return {a.width, a.height};
-  if (a.width > 0) return {a.width, checked_dimension(std::llround(static_cast<double>(h_in) * a.width / w_in), "--width")};
-  return {checked_dimension(std::llround(static_cast<double>(w_in) * a.height / h_in), "--height"), a.height};
+  if (a.width > 0 && a.height > 0) return checked_size(a.width, a.height, "--width/--height");
+  if (a.width > 0) return checked_size(a.width, static_cast<double>(h_in) * a.width / w_in, "--width");
+  return checked_size(static_cast<double>(w_in) * a.height / h_in, a.height, "--height");
 }
 
 }  // namespace

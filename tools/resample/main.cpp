@@ -136,9 +136,12 @@ CLI::App* add_resize(CLI::App& app, ResizeFlags& f) {
   resize->add_option("input", rz.input, "Input image, or - for standard input")->default_val("-");
   add_output(resize, rz.out);
   resize->add_option("--size", f.size, "Target size WxH");
-  resize->add_option("--width", rz.width, "Target width (height keeps the aspect ratio)");
-  resize->add_option("--height", rz.height, "Target height (width keeps the aspect ratio)");
-  resize->add_option("--scale", rz.scale, "Scale factor S or Sx,Sy")->delimiter(',')->allow_extra_args(false);
+  resize->add_option("--width", rz.width, "Target width (height keeps the aspect ratio)")
+      ->check(fest::cli::positive);
+  resize->add_option("--height", rz.height, "Target height (width keeps the aspect ratio)")
+      ->check(fest::cli::positive);
+  resize->add_option("--scale", rz.scale, "Scale factor S or Sx,Sy")->delimiter(',')->allow_extra_args(false)
+      ->check(fest::cli::positive);
   resize->add_option("--filter", f.filter, "Kernel NAME[:k=v,...] (see `resample kernel`)")->default_val("mitchell");
   resize->add_option("--shift", rz.shift, "Sub-pixel shift dx,dy in input pixels")->delimiter(',')->allow_extra_args(false);
   fest::cli::enum_words<EdgeMode>(resize->add_option("--edge", rz.edge, "Edges: clamp, reflect, wrap, zero"),

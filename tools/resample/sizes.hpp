@@ -1,13 +1,16 @@
 #pragma once
-// "WxH" sizes and dimensions from the command line, checked against the 2^31-pixel limit.
+// "WxH" sizes and target sizes derived from flags, checked against the 2^31-pixel limit
+// (and the machine's memory) before any image is allocated.
 
 #include <string>
 #include <utility>
 
 namespace fest::resample_tool {
 
-// A dimension in [1, 2^31]: usage error naming `what` otherwise.
-int checked_dimension(long long v, const char* what);
+// A target size computed from flags (in double, so that --scale 1e308 does not wrap):
+// each side rounded, at least 1, W·H ≤ 2^31 pixels and within this machine's memory, else
+// a usage error naming `what` and the limit.
+std::pair<int, int> checked_size(double w, double h, const char* what);
 
 // "WxH" -> (W, H); both positive and W·H ≤ 2^31, else a usage error naming `what`.
 std::pair<int, int> parse_size(const std::string& text, const char* what);

@@ -97,7 +97,8 @@ formats::OutputFormat volume_output_format(const std::string& name);
 FactSetting fact_setting(const std::string& text);
 // "head,brain,ventricles" (--objects): the names, none empty; "" is no list.
 std::vector<std::string> object_names(const std::string& list);
-// "NX,NY,NZ" (--size) and "SX,SY,SZ" (--spacing): three positive numbers.
+// "NX,NY,NZ" (--size): three whole numbers in [1, 2^31 - 1]; "SX,SY,SZ" (--spacing): three
+// lengths in (0, 1e6] mm.
 std::array<std::size_t, 3> positive_counts(const std::string& text, const char* flag);
 std::array<double, 3> positive_lengths(const std::string& text, const char* flag);
 // "brain=3,4,6-8;csf=2" (--map, --ref-map); "" is one object "object" of every nonzero value.

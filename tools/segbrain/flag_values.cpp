@@ -11,6 +11,11 @@ namespace fest::segbrain_tool {
 
 namespace {
 
+// Largest count along one axis: 2^31 - 1, so that every index fits the int of the
+// readers and writers.
+constexpr double kMaxCount = 2147483647;
+constexpr double kMaxLengthMm = 1e6;
+
 // Three positive numbers "A,B,C".
 std::array<double, 3> positive_triple(const std::string& text, const char* flag) {
   const auto not_positive = [&] { return usage_error("{} expects 3 positive numbers separated by commas, got '{}'", flag, text); };
@@ -54,10 +59,21 @@ std::vector<std::string> object_names(const std::string& list) {
 
 std::array<std::size_t, 3> positive_counts(const std::string& text, const char* flag) {
   const std::array<double, 3> v = positive_triple(text, flag);
+  // Whole counts, each small enough to convert exactly; what their product needs is
+  // checked where it is allocated (cmd_synth.cpp).
+  for (const double x : v)
+    if (x != std::floor(x) || x > kMaxCount)
+      throw usage_error("{} expects 3 whole numbers in [1, {}], got '{}'", flag, kMaxCount, text);
   return {static_cast<std::size_t>(v[0]), static_cast<std::size_t>(v[1]), static_cast<std::size_t>(v[2])};
 }
 
-std::array<double, 3> positive_lengths(const std::string& text, const char* flag) { return positive_triple(text, flag); }
+std::array<double, 3> positive_lengths(const std::string& text, const char* flag) {
+  const std::array<double, 3> v = positive_triple(text, flag);
+  // A voxel of a kilometre is no head; the bound keeps the world extent (size x spacing) finite.
+  for (const double x : v)
+    if (x > kMaxLengthMm) throw usage_error("{} expects 3 lengths in (0, {}] mm, got '{}'", flag, kMaxLengthMm, text);
+  return v;
+}
 
 ObjectMap object_map(const std::string& text, const char* option) {
   ObjectMap out;

@@ -84,8 +84,10 @@ int main(int argc, char** argv) {
   s->add_option("--truth", syn.truth, "Truth label volume")->required();
   s->add_option("--size", syn_size, "Voxels NX,NY,NZ")->default_val("160,192,160");
   s->add_option("--spacing", syn_spacing, "Voxel size in mm SX,SY,SZ")->default_val("1,1,1");
-  s->add_option("--noise", syn.phantom.noise, "Rician noise sd / white-matter intensity")->default_val(0.03);
-  s->add_option("--bias", syn.phantom.bias, "Bias field peak-to-peak")->default_val(0.2);
+  s->add_option("--noise", syn.phantom.noise, "Rician noise sd / white-matter intensity")->default_val(0.03)
+      ->check(fest::cli::range(0.0, 10.0));
+  s->add_option("--bias", syn.phantom.bias, "Bias field peak-to-peak")->default_val(0.2)
+      ->check(fest::cli::range(0.0, 2.0));
   s->add_option("--seed", syn.phantom.seed, "Random seed")->default_val(1);
 
   SlicesArgs sl;
@@ -94,7 +96,7 @@ int main(int argc, char** argv) {
   sv->add_option("--labels", sl.labels, "Its label volume (from segbrain run)")->required();
   sv->add_option("-o,--output", sl.output, "PNG output (- = stdout)")->default_val("-");
   sv->add_option("--kb", sl.kb, "Knowledge base whose label/4 facts give the colours")->allow_extra_args(false);
-  sv->add_option("--scale", sl.scale, "Pixels per smallest voxel size")->default_val(2)->check(CLI::Range(0.25, 8.0));
+  sv->add_option("--scale", sl.scale, "Pixels per smallest voxel size")->default_val(2)->check(fest::cli::range(0.25, 8.0));
 
   EvalArgs ev;
   std::string ev_map, ev_ref_map;

@@ -38,24 +38,24 @@ int main(int argc, char** argv) {
   poly->add_option("input", pa.input, "Skeleton file, - = standard input");
   poly->add_option("-o,--output", pa.output, "Mesh file (.ply .obj .off .stl), - = standard output (binary PLY)");
   poly->add_option("--to", pa.to, "Output format: ply, plya (ascii PLY), obj, off, stl");
-  auto* iso = poly->add_option("--iso", pa.iso, "Iso value V* (> 0)")->check(CLI::PositiveNumber);
-  poly->add_option("--radius", pa.radius, "Offset radius rho: V* = p / rho")->check(CLI::PositiveNumber)->excludes(iso);
+  auto* iso = poly->add_option("--iso", pa.iso, "Iso value V* (> 0)")->check(fest::cli::positive);
+  poly->add_option("--radius", pa.radius, "Offset radius rho: V* = p / rho")->check(fest::cli::positive)->excludes(iso);
   poly->add_option("--alpha", pa.alpha_deg, "Largest angle between a chord's end normals, degrees")
-      ->check(CLI::Range(0.5, 90.0));
-  poly->add_option("--lmax", pa.lmax, "Longest chord (default rho)")->check(CLI::PositiveNumber);
+      ->check(fest::cli::range(0.5, 90.0));
+  poly->add_option("--lmax", pa.lmax, "Longest chord (default rho)")->check(fest::cli::positive);
   poly->add_option("--max-deviation", pa.max_deviation,
                    "Also split chords/triangles whose midpoint/centroid is farther than this from the surface")
-      ->check(CLI::PositiveNumber);
-  poly->add_option("--steps", pa.steps, "Iso steps K from V_0 to V*")->check(CLI::Range(1, 1000));
+      ->check(fest::cli::positive);
+  poly->add_option("--steps", pa.steps, "Iso steps K from V_0 to V*")->check(fest::cli::range(1, 1000));
   poly->add_option("--start-level", pa.start_level, "Icosphere subdivision level of the start mesh")
-      ->check(CLI::Range(0, 5));
-  poly->add_option("--relax", pa.relax, "Tangential relaxation lambda (0 = off)")->check(CLI::Range(0.0, 1.0));
+      ->check(fest::cli::range(0, 5));
+  poly->add_option("--relax", pa.relax, "Tangential relaxation lambda (0 = off)")->check(fest::cli::range(0.0, 1.0));
   poly->add_flag("--no-coarsen", pa.no_coarsen, "Do not collapse short flat chords");
-  poly->add_option("--max-verts", pa.max_verts, "Vertex limit")->check(CLI::Range(4LL, 100000000LL));
+  poly->add_option("--max-verts", pa.max_verts, "Vertex limit")->check(fest::cli::range(4LL, 100000000LL));
   fest::cli::enum_words<PolygonizeMethod>(
       poly->add_option("--method", pa.method, "shrinkwrap (adaptive, genus 0) or mc (marching cubes, any topology)"),
       {{"shrinkwrap", PolygonizeMethod::shrinkwrap}, {"mc", PolygonizeMethod::mc}});
-  poly->add_option("--grid", pa.grid, "Marching-cubes grid spacing (default lmax/2)")->check(CLI::PositiveNumber);
+  poly->add_option("--grid", pa.grid, "Marching-cubes grid spacing (default lmax/2)")->check(fest::cli::positive);
   poly->add_option_function<std::string>(
       "--kernel", [&pa](const std::string& k) { pa.kernel = parse_kernel(k); },
       "coulomb (p/d), or wyvill:R (compact; needs --method mc)");
@@ -69,21 +69,21 @@ int main(int argc, char** argv) {
   tongue->add_option("input", ta.input, "Parameter TSV (time x0 y0 z0 l1..l9 a1..a3 c1..c6), - = standard input");
   tongue->add_option("-o,--output", ta.output, "Skeleton JSON, - = standard output");
   tongue->add_flag("--neutral", ta.neutral, "Start from the neutral shape and read no input");
-  tongue->add_option("--frame", ta.frame, "Row of the TSV (0 = first)")->check(CLI::NonNegativeNumber);
+  tongue->add_option("--frame", ta.frame, "Row of the TSV (0 = first)")->check(fest::cli::non_negative);
   fest::cli::enum_words<TongueLayoutChoice>(tongue->add_option("--layout", ta.layout, "Triangles: default (10, symmetric disk) or paper9 (9)"),
                         {{"default", TongueLayoutChoice::default10}, {"paper9", TongueLayoutChoice::paper9}});
   tongue->add_option("--set", ta.set, "Override parameters: name=value[,name=value...]")->delimiter(',');
-  tongue->add_option("--radius", ta.radius, "Offset radius rho in mm (iso = 1/rho)")->check(CLI::PositiveNumber);
+  tongue->add_option("--radius", ta.radius, "Offset radius rho in mm (iso = 1/rho)")->check(fest::cli::positive);
 
   tongue->add_flag("--polygonize", ta.polygonize,
                    "Every row: palate pass 1, shrink-wrap, pass 2; -o is a pattern (frames/t%04d.ply); "
                    "a TSV manifest on standard output");
   tongue->add_option("--alpha", ta.alpha_deg, "With --polygonize: largest chord normal angle, degrees")
-      ->check(CLI::Range(0.5, 90.0));
-  tongue->add_option("--lmax", ta.lmax, "With --polygonize: longest chord (default rho)")->check(CLI::PositiveNumber);
+      ->check(fest::cli::range(0.5, 90.0));
+  tongue->add_option("--lmax", ta.lmax, "With --polygonize: longest chord (default rho)")->check(fest::cli::positive);
   tongue->add_option("--max-deviation", ta.max_deviation, "With --polygonize: deviation tolerance of the refinement")
-      ->check(CLI::PositiveNumber);
-  tongue->add_option("--steps", ta.steps, "With --polygonize: iso steps")->check(CLI::Range(1, 1000));
+      ->check(fest::cli::positive);
+  tongue->add_option("--steps", ta.steps, "With --polygonize: iso steps")->check(fest::cli::range(1, 1000));
   fest::cli::add_threads(*tongue, ta.threads);
   tongue->add_option("--palate", ta.palate, "Palate JSON: keep the skeleton inside the virtual palate (pass 1)");
 
@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   auto* animate = app.add_subcommand("animate", "Phoneme timeline -> tongue parameters per frame (coarticulation)");
   animate->add_option("input", aa.input, "Timeline: phoneme start_s end_s per line, - = standard input");
   animate->add_option("--table", aa.table, "Phoneme table JSON (targets, classes, speeds, lags)")->required();
-  animate->add_option("--fps", aa.fps, "Frames per second")->check(CLI::Range(0.1, 10000.0));
+  animate->add_option("--fps", aa.fps, "Frames per second")->check(fest::cli::range(0.1, 10000.0));
   animate->add_option("-o,--output", aa.output, "Parameter TSV, - = standard output");
 
   return fest::cli::run(app, argc, argv, [&] {

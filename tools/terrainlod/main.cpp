@@ -33,7 +33,8 @@ void add_dem_options(CLI::App* cmd, DemArgs& d) {
   cmd->add_option("--origin", d.origin, "x0,y0: world position of the south-west sample (overrides the file)")->delimiter(',')->allow_extra_args(false);
   cmd->add_option("--z-scale", d.z_scale, "Height = value x scale + offset");
   cmd->add_option("--z-offset", d.z_offset, "Height = value x scale + offset");
-  cmd->add_option("--nodata", d.nodata, "Nodata value (overrides the file's); nan accepts NaN heights as nodata");
+  cmd->add_option("--nodata", d.nodata, "Nodata value (overrides the file's); nan accepts NaN heights as nodata")
+      ->check(fest::cli::accepts_nan);
   fest::cli::enum_words(cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne"), kDiagonals);
 }
 
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
       ->excludes(tex_opt);
   fest::cli::enum_words(b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg"), kTextureFormats);
   b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")
-      ->check(CLI::Range(1, 100));
+      ->check(fest::cli::range(1, 100));
   b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
   b->add_option("--texels", build.texels, "Texels per tile side T (power of two >= B; default B)");
   b->add_option("--error-fraction", build.error_fraction, "Allowed error per tile in texels (f)");
@@ -122,7 +123,7 @@ int main(int argc, char** argv) {
   v->add_option("--origin", verify.dem.origin, "As for build")->delimiter(',')->allow_extra_args(false);
   v->add_option("--z-scale", verify.dem.z_scale, "As for build");
   v->add_option("--z-offset", verify.dem.z_offset, "As for build");
-  v->add_option("--nodata", verify.dem.nodata, "As for build");
+  v->add_option("--nodata", verify.dem.nodata, "As for build")->check(fest::cli::accepts_nan);
   v->add_option("--cameras", verify.cameras, "Random cameras for the crack check");
   v->add_option("--seed", verify.seed, "Seed of the random cameras");
 

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"ccw", "cw", "shortest"}))
       ->default_val("ccw");
   move->add_option("--backlash-deg", mv.backlash_deg, "Overshoot before coming back from the other side")
-      ->check(CLI::NonNegativeNumber)
+      ->check(fest::cli::non_negative)
       ->default_val(2.0);
   move->add_option("--settle-ms", mv.settle_ms, "Wait after arrival (vibrations)")->default_val(500);
   move->add_flag("--no-wait", mv.no_wait, "Send the move and return at once (no approach policy)");

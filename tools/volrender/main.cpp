@@ -29,7 +29,7 @@ void add_camera(CLI::App* s, CameraArgs& c, CameraText& t) {
   s->add_option("--size", t.size, "Image size WxH")->default_val("512x512");
   s->add_option("--view", t.view, "Orbit camera: AZ,EL[,ROLL] degrees around the volume centre (0,0 looks along +y, z up)");
   s->add_option("--zoom", c.zoom, "Orbit camera magnification");
-  s->add_option("--fov", c.fov, "Vertical field of view, degrees (orbit default 30; 0 = orthographic)")->check(CLI::Range(0.0, 179.0));
+  s->add_option("--fov", c.fov, "Vertical field of view, degrees (orbit default 30; 0 = orthographic)")->check(fest::cli::range(0.0, 179.0));
   s->add_option("--eye", t.eye, "Eye position X,Y,Z (look-at and off-axis cameras)");
   s->add_option("--look-at", t.look_at, "Look-at point X,Y,Z");
   s->add_option("--up", t.up, "Up vector of the look-at camera");
@@ -231,13 +231,13 @@ int main(int argc, char** argv) {
         {{"otf", Gradients::otf}, {"cache", Gradients::cache}, {"auto", Gradients::automatic}});
     s->add_flag("--no-skip", ra.no_skip, "Disable empty-space skipping (same image; for comparisons)");
     s->add_option("--slice-axis", rt.slice_axis, "slices: plane normal x, y, z (index axes) or nx,ny,nz (world)");
-    s->add_option("--slices", ra.slice_count, "slices: number of planes, equally spaced over the volume")->check(CLI::Range(1, 4096));
+    s->add_option("--slices", ra.slice_count, "slices: number of planes, equally spaced over the volume")->check(fest::cli::range(1, 4096));
     s->add_option("--slice-at", rt.slice_at, "slices: plane offsets along the normal (world units), instead of --slices");
     s->add_option("--contours", rt.contours, "slices: contour levels c0:dc:n");
     s->add_option("--contour-width", ra.contour_width, "slices: contour band width, data units");
     s->add_option("--contour-width-world", ra.contour_width_world, "slices: contour band width in world units (W |grad f| in data units)");
     s->add_flag("--slice-frame", ra.slice_frame, "slices: draw each plane's outline on the volume box (white, one voxel wide)");
-    s->add_option("--contour-alpha", ra.contour_alpha, "slices: contour opacity")->check(CLI::Range(0.0, 1.0));
+    s->add_option("--contour-alpha", ra.contour_alpha, "slices: contour opacity")->check(fest::cli::range(0.0, 1.0));
     s->add_option("--mesh", ra.mesh, "Opaque triangle mesh (PLY, OBJ, OFF, STL, Draco; world units) composited with depth");
     s->add_option("--mesh-color", rt.mesh_color, "Mesh colour r,g,b (linear)");
     s->add_option("--screen-mask", ra.screen_mask,

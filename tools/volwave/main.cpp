@@ -10,7 +10,7 @@ using namespace fest::volwave_tool;
 
 void add_select(CLI::App* c, InputSelect& s) {
   c->add_option("--field", s.field, "VTI array or frame-stream field to code (a component as name.x)");
-  c->add_option("--frame", s.frame, "Frame of a frame stream (from 0)")->check(CLI::NonNegativeNumber);
+  c->add_option("--frame", s.frame, "Frame of a frame stream (from 0)")->check(fest::cli::non_negative);
 }
 
 }  // namespace
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
           throw fest::usage_error("--wavelet: unknown wavelet {} (haar, cdf53, cdf97)", w);
       },
       "haar, cdf53 (default) or cdf97 (--rmse only)");
-  e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(CLI::Range(0, 16));
+  e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(fest::cli::range(0, 16));
   e->add_option("--roi-box", enc.roi_box, "Region x0,y0,z0,x1,y1,z1 (voxel indices, inclusive) coded with --roi-error")
       ->delimiter(',')->expected(6)->allow_extra_args(false);
   e->add_option("--roi-mask", enc.roi_mask, "Region as a volume: its non-zero voxels are coded with --roi-error");
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   d->add_option("input", dec.input, ".vw file (- or nothing: standard input)");
   d->add_option("-o,--output", dec.output, "Volume (.nii, .nii.gz, .nrrd, .mha; - : NRRD on standard output)");
   d->add_option("--to", dec.to, "Output format when the name has no extension: nii, nrrd, mha");
-  d->add_option("--chunks", dec.chunks, "Decode only the first K chunks (a coarser volume)")->check(CLI::Range(1, 100));
+  d->add_option("--chunks", dec.chunks, "Decode only the first K chunks (a coarser volume)")->check(fest::cli::range(1, 100));
   d->add_option("--report", dec.report, "Write chunks used and the stated errors as JSON");
   fest::cli::add_threads(*d, dec.threads);
 
@@ -63,9 +63,9 @@ int main(int argc, char** argv) {
   g->add_option("-o,--output", edg.output, "Edge volume: modulus at edge voxels, 0 elsewhere");
   g->add_option("--to", edg.to, "Output format when the name has no extension: nii, nrrd, mha");
   add_select(g, edg.select);
-  g->add_option("--scales", edg.scales, "Dyadic scales 2^1..2^J")->check(CLI::Range(1, 6));
+  g->add_option("--scales", edg.scales, "Dyadic scales 2^1..2^J")->check(fest::cli::range(1, 6));
   g->add_option("--threshold", edg.threshold, "Smallest modulus that counts (default: automatic, from the noise level)");
-  g->add_option("--min-scales", edg.min_scales, "Scales a maximum must persist through (default: all)")->check(CLI::Range(1, 6));
+  g->add_option("--min-scales", edg.min_scales, "Scales a maximum must persist through (default: all)")->check(fest::cli::range(1, 6));
   g->add_option("--points", edg.points, "Also write the sub-voxel edge points as CSV (x,y,z world, modulus, alpha)");
   g->add_option("--report", edg.report, "Write counts and thresholds as JSON");
   fest::cli::add_threads(*g, edg.threads);
