@@ -81,7 +81,7 @@ void check_sizes(const PlyHeader& header, std::size_t body_size) {
     std::uint64_t per_instance = binary ? e.min_binary_size() : 2 * e.properties.size();
     std::uint64_t total = 0;
     if (!checked_mul(e.count, per_instance, total) || total > body_size + 1 || needed + total > body_size + 1) {
-      throw bad_input("PLY header: element {} count {} exceeds what the {} bytes after the header can hold", e.name,
+      throw bad_input("PLY header: element {} count {} exceeds what the {} bytes after the header can hold", fest::quoted_bytes(e.name),
                       e.count, body_size);
     }
     needed += total;
