@@ -123,4 +123,12 @@ expect_clean_failure 3 brdffit
 expect_stderr_has 'field "lumitexels": expected a number, got a string'
 expect_no_library_text
 
+case_ "lights: a station file that is not JSON"
+printf '{"lights": [tru\x01' >"$WORK/station.json"
+run lights --station "$WORK/station.json" list
+expect_clean_failure 3 lights
+expect_stderr_has 'station: not JSON: .* at line 1, column 16 .byte 16.'
+expect_no_library_text
+expect_readable_stderr
+
 finish
