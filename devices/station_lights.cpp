@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/quote.hpp"
 
 namespace fest::devices {
 
@@ -20,7 +21,7 @@ nlohmann::json read_station(const std::string& path) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw bad_input("station is not valid JSON: {} ({})", e.what(), path);
+    throw bad_input("station: {}", with_location(json_failure_words(e.what(), e.byte, text), path));
   }
 }
 

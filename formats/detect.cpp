@@ -1,4 +1,5 @@
 #include "formats/detect.hpp"
+#include "core/quote.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -78,18 +79,6 @@ bool name_matches(const FormatRow& r, const std::string& name) {
     aliases.remove_prefix(sp + 1);
   }
   return false;
-}
-
-// The first bytes as a short printable excerpt for error messages.
-std::string excerpt(std::string_view bytes) {
-  std::string out;
-  for (unsigned char c : bytes.substr(0, 16)) {
-    if (c >= 0x20 && c < 0x7f && c != '\\')
-      out += static_cast<char>(c);
-    else
-      out += fmt::format("\\x{:02x}", c);
-  }
-  return out;
 }
 
 // Skips whitespace and lines starting with '#'.
@@ -314,7 +303,7 @@ Format detect_format(std::string_view b, const std::string& where) {
   if (is_obj(b)) return Format::obj;
   Format table;
   if (looks_like_table(b, table)) return table;
-  throw bad_input("{}", with_location("unrecognised input format (starts with \"" + excerpt(b) + "\")", where));
+  throw bad_input("{}", with_location("unrecognised input format (starts with \"" + fest::quoted_bytes(b, 16) + "\")", where));
 }
 
 OutputFormat output_format_from_name(std::string_view name_in) {

@@ -1,4 +1,5 @@
 #include "formats/dataset/legacy_scan.hpp"
+#include "core/quote.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -142,10 +143,10 @@ class LegacyWalker {
     if (t.empty()) fail("file ends where the {} was expected", what);
     std::string_view digits = t;
     if (digits.front() == '+') digits.remove_prefix(1);
-    if (digits.empty() || digits.size() > 18) fail("{} '{}' is not a count", what, t);
+    if (digits.empty() || digits.size() > 18) fail("{} '{}' is not a count", what, fest::quoted_bytes(t));
     uint64_t value = 0;
     for (char c : digits) {
-      if (c < '0' || c > '9') fail("{} '{}' is not a count", what, t);
+      if (c < '0' || c > '9') fail("{} '{}' is not a count", what, fest::quoted_bytes(t));
       value = value * 10 + static_cast<uint64_t>(c - '0');
     }
     return value;
@@ -157,10 +158,10 @@ class LegacyWalker {
     bool negative = t.front() == '-';
     std::string_view digits = t;
     if (negative || t.front() == '+') digits.remove_prefix(1);
-    if (digits.empty() || digits.size() > 10) fail("{} value '{}' is not an integer", what, t);
+    if (digits.empty() || digits.size() > 10) fail("{} value '{}' is not an integer", what, fest::quoted_bytes(t));
     int64_t value = 0;
     for (char c : digits) {
-      if (c < '0' || c > '9') fail("{} value '{}' is not an integer", what, t);
+      if (c < '0' || c > '9') fail("{} value '{}' is not an integer", what, fest::quoted_bytes(t));
       value = value * 10 + (c - '0');
     }
     return negative ? -value : value;
@@ -173,7 +174,7 @@ class LegacyWalker {
     if (t.empty()) fail("file ends where the {} name was expected", what);
     for (size_t i = 0; i < t.size(); ++i)
       if (t[i] == '%' && (i + 2 >= t.size() || !is_hex(t[i + 1]) || !is_hex(t[i + 2])))
-        fail("{} name '{}' has a '%' without two hex digits", what, t);
+        fail("{} name '{}' has a '%' without two hex digits", what, fest::quoted_bytes(t));
   }
 
   uint64_t components(const char* what) { return parse_components(token(), what); }
@@ -226,7 +227,7 @@ class LegacyWalker {
       if (t.empty()) fail("{} ends after {} of {} values", what, i, n);
       if (!is_number(t, real)) {
         pos_ -= t.size();
-        fail("{} value {} of {} is '{}', not a number", what, i, n, t.substr(0, 40));
+        fail("{} value {} of {} is '{}', not a number", what, i, n, fest::quoted_bytes(t, 40));
       }
     }
   }
@@ -243,7 +244,7 @@ class LegacyWalker {
                                               : values(tuples, comps, what);
     switch (vt.kind) {
       case ValueType::unsupported:
-        fail("{} has unsupported data type '{}'", what, type);
+        fail("{} has unsupported data type '{}'", what, fest::quoted_bytes(type));
       case ValueType::bit:
       case ValueType::fixed:
         if (header_.binary) {
@@ -301,7 +302,7 @@ class LegacyWalker {
     if (first.substr(0, magic.size()) != magic) fail("first line is not '{} x.y'", magic);
     std::string version(first.substr(magic.size(), 32));
     if (std::sscanf(version.c_str(), "%d.%d", &header_.major_version, &header_.minor_version) != 2)
-      fail("cannot read the file version in '{}'", first.substr(0, 64));
+      fail("cannot read the file version in '{}'", fest::quoted_bytes(first, 64));
     if (pos_ >= s_.size()) fail("file ends before the title line");
     line();  // title
     std::string type = keyword("ASCII or BINARY");
@@ -310,10 +311,10 @@ class LegacyWalker {
     } else if (has_prefix(type, "binary")) {
       header_.binary = true;
     } else {
-      fail("third line says '{}', not ASCII or BINARY", type);
+      fail("third line says '{}', not ASCII or BINARY", fest::quoted_bytes(type));
     }
     std::string dataset = keyword("DATASET");
-    if (!has_prefix(dataset, "dataset")) fail("expected DATASET, found '{}'", dataset);
+    if (!has_prefix(dataset, "dataset")) fail("expected DATASET, found '{}'", fest::quoted_bytes(dataset));
     header_.dataset_type = keyword("dataset type");
     for (const char* known : {"polydata", "structured_points", "structured_grid", "rectilinear_grid",
                               "unstructured_grid"})
@@ -321,7 +322,7 @@ class LegacyWalker {
         header_.dataset_type = known;
         return;
       }
-    fail("unknown dataset type '{}'", header_.dataset_type);
+    fail("unknown dataset type '{}'", fest::quoted_bytes(header_.dataset_type));
   }
 
   // The grid readers first run a metadata pass that scans tokens for DIMENSIONS and
@@ -344,7 +345,7 @@ class LegacyWalker {
       }
       const std::string& k = *next;
       if (grid && !seen_dimensions && !allowed_before_dimensions(k))
-        fail("{}: DIMENSIONS must come before '{}'", header_.dataset_type, k);
+        fail("{}: DIMENSIONS must come before '{}'", fest::quoted_bytes(header_.dataset_type), fest::quoted_bytes(k));
       if (has_prefix(k, "dimensions")) seen_dimensions = true;
       token();
       if (has_prefix(k, "field")) {
@@ -475,7 +476,7 @@ class LegacyWalker {
           comps = parse_components(raw, "SCALARS component count");
           key = keyword("LOOKUP_TABLE");
         }
-        if (key != "lookup_table") fail("SCALARS must name a LOOKUP_TABLE, found '{}'", key);
+        if (key != "lookup_table") fail("SCALARS must name a LOOKUP_TABLE, found '{}'", fest::quoted_bytes(key));
         name("lookup table");
         array(type, n, comps, "SCALARS");
       } else if (has_prefix(k, "vectors") || has_prefix(k, "normals")) {

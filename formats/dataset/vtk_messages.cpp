@@ -1,4 +1,5 @@
 #include "formats/dataset/vtk_messages.hpp"
+#include "core/quote.hpp"
 
 #include <cstring>
 #include <mutex>
@@ -113,7 +114,8 @@ std::string clean_vtk_message(const char* raw_text) {
       if (at != std::string_view::npos) line = line.substr(0, at);
     }
     line = trim(line);
-    if (!line.empty()) return std::string(line);
+    // Escaped and cut: VTK quotes the bytes it could not read (a mutated keyword).
+    if (!line.empty()) return fest::quoted_bytes(line, 160);
   }
   return {};
 }

@@ -1,4 +1,6 @@
 #include "formats/facemodel/mmb.hpp"
+#include "core/quote.hpp"
+#include "core/quote.hpp"
 
 #include <cstdint>
 #include <cstring>
@@ -53,19 +55,19 @@ std::map<std::string, ArrayRef> array_table(const nlohmann::json& header, const 
     const std::string name = a["name"].get<std::string>();
     ref.dtype = a["dtype"].get<std::string>();
     const std::size_t es = dtype_size(ref.dtype);
-    if (es == 0) throw bad_input("mmb array '{}': unknown dtype '{}'", name, ref.dtype);
+    if (es == 0) throw bad_input("mmb array '{}': unknown dtype '{}'", fest::quoted_bytes(name), fest::quoted_bytes(ref.dtype));
     ref.count = 1;
     for (const auto& d : a["shape"]) {
-      if (!d.is_number_unsigned()) throw bad_input("mmb array '{}': shape must hold non-negative integers", name);
+      if (!d.is_number_unsigned()) throw bad_input("mmb array '{}': shape must hold non-negative integers", fest::quoted_bytes(name));
       const std::uint64_t v = d.get<std::uint64_t>();
-      if (v != 0 && ref.count > (std::uint64_t{1} << 40) / v) throw bad_input("mmb array '{}': shape too large", name);
+      if (v != 0 && ref.count > (std::uint64_t{1} << 40) / v) throw bad_input("mmb array '{}': shape too large", fest::quoted_bytes(name));
       ref.count *= v;
       ref.shape.push_back(v);
     }
     const std::uint64_t offset = a["offset"].get<std::uint64_t>();
-    if (offset % es != 0) throw bad_input("mmb array '{}': offset {} not aligned to its element size", name, offset);
+    if (offset % es != 0) throw bad_input("mmb array '{}': offset {} not aligned to its element size", fest::quoted_bytes(name), offset);
     if (offset > size || ref.count * es > size - offset)
-      throw bad_input("mmb array '{}': bytes {}..{} lie beyond the end of the file ({} bytes): truncated", name, offset,
+      throw bad_input("mmb array '{}': bytes {}..{} lie beyond the end of the file ({} bytes): truncated", fest::quoted_bytes(name), offset,
                       offset + ref.count * es, size);
     ref.data = base + offset;
     arrays[name] = ref;
@@ -97,7 +99,7 @@ std::vector<std::uint32_t> to_u32(const ArrayRef& a, const char* what) {
 
 const ArrayRef& need(const std::map<std::string, ArrayRef>& arrays, const char* name) {
   auto it = arrays.find(name);
-  if (it == arrays.end()) throw bad_input("mmb: array '{}' missing", name);
+  if (it == arrays.end()) throw bad_input("mmb: array '{}' missing", fest::quoted_bytes(name));
   return it->second;
 }
 
@@ -114,7 +116,7 @@ face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_pt
   try {
     header = read_json(std::string_view(reinterpret_cast<const char*>(base + 16), H));
   } catch (const Error& e) {
-    throw bad_input("mmb header is not valid JSON: {}", e.what());
+    throw bad_input("mmb header (file offset 16): {}", e.what());
   }
   if (!header.is_object()) throw bad_input("mmb header is not a JSON object");
   auto number = [&](const char* key) -> std::uint64_t {
@@ -140,7 +142,7 @@ face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_pt
   if (header.contains("landmarks")) {
     if (!header["landmarks"].is_object()) throw bad_input("mmb header: landmarks must be an object");
     for (const auto& [name, v] : header["landmarks"].items()) {
-      if (!v.is_number_unsigned()) throw bad_input("mmb header: landmark '{}' is not a vertex index", name);
+      if (!v.is_number_unsigned()) throw bad_input("mmb header: landmark '{}' is not a vertex index", fest::quoted_bytes(name));
       m.landmarks[name] = v.get<std::uint32_t>();
     }
   }
@@ -172,7 +174,7 @@ face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_pt
   if (header.contains("eval_mask") && header["eval_mask"].is_string()) {
     const std::string name = header["eval_mask"].get<std::string>();
     auto it = arrays.find(name);
-    if (it == arrays.end()) throw bad_input("mmb: eval_mask names array '{}', which is missing", name);
+    if (it == arrays.end()) throw bad_input("mmb: eval_mask names array '{}', which is missing", fest::quoted_bytes(name));
     m.eval_mask = to_u32(it->second, "eval_mask");
   }
   const auto fixed = face::check_model(m, options.fix_basis);

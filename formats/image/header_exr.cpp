@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "formats/image/byte_reader.hpp"
 #include "formats/image/exr_channels.hpp"
 #include "formats/image/image_headers.hpp"
@@ -43,11 +44,11 @@ class ExrHeaderReader {
       const std::string name = text("attribute name");
       if (name.empty()) break;
       const std::string type = text("attribute type");
-      if (!fits(bytes_, pos_, 4)) throw bad_input("EXR header: truncated attribute '{}'", name);
+      if (!fits(bytes_, pos_, 4)) throw bad_input("EXR header: truncated attribute '{}'", fest::quoted_bytes(name));
       const std::int32_t size = static_cast<std::int32_t>(load_u32_le(bytes_, pos_));
       pos_ += 4;
       if (size < 0 || !fits(bytes_, pos_, std::uint64_t(size)))
-        throw bad_input("EXR header: attribute '{}' of {} bytes runs past the end of the file", name, size);
+        throw bad_input("EXR header: attribute '{}' of {} bytes runs past the end of the file", fest::quoted_bytes(name), size);
       const std::string_view value = bytes_.substr(pos_, std::size_t(size));
       check_attribute_size(name, type, value);
       if (name == "channels" && type == "chlist") {
@@ -104,18 +105,18 @@ class ExrHeaderReader {
     for (const auto& [known, size] : fixed)
       if (type == known) {
         if (value.size() != size)
-          throw bad_input("EXR header: attribute '{}' of type {} has {} bytes, not {}", name, type, value.size(), size);
+          throw bad_input("EXR header: attribute '{}' of type {} has {} bytes, not {}", fest::quoted_bytes(name), fest::quoted_bytes(type), value.size(), size);
         return;
       }
     if (type == "floatvector" && value.size() % 4 != 0)
-      throw bad_input("EXR header: attribute '{}' ({} bytes) is not a whole number of floats", name, value.size());
+      throw bad_input("EXR header: attribute '{}' ({} bytes) is not a whole number of floats", fest::quoted_bytes(name), value.size());
     if (type == "stringvector") {
       // { int32 length, characters } repeated, filling the value exactly.
       std::size_t at = 0;
       while (at < value.size()) {
-        if (!fits(value, at, 4)) throw bad_input("EXR header: attribute '{}' is a malformed string vector", name);
+        if (!fits(value, at, 4)) throw bad_input("EXR header: attribute '{}' is a malformed string vector", fest::quoted_bytes(name));
         const std::uint32_t length = load_u32_le(value, at);
-        if (!fits(value, at + 4, length)) throw bad_input("EXR header: attribute '{}' is a malformed string vector", name);
+        if (!fits(value, at + 4, length)) throw bad_input("EXR header: attribute '{}' is a malformed string vector", fest::quoted_bytes(name));
         at += 4 + std::size_t(length);
       }
     }
@@ -125,7 +126,7 @@ class ExrHeaderReader {
         throw bad_input("EXR header: preview image size does not match its {} bytes", value.size());
     }
     if (type == "chlist" && (value.empty() || value.back() != '\0'))
-      throw bad_input("EXR header: channel list '{}' is not terminated", name);
+      throw bad_input("EXR header: channel list '{}' is not terminated", fest::quoted_bytes(name));
   }
 
   // A NUL-terminated name of at most max_name_ characters.
@@ -163,8 +164,8 @@ class ExrHeaderReader {
       const std::int32_t xs = static_cast<std::int32_t>(load_u32_le(v, end + 9));
       const std::int32_t ys = static_cast<std::int32_t>(load_u32_le(v, end + 13));
       if (c.pixel_type < 0 || c.pixel_type > 2)
-        throw bad_input("EXR header: channel '{}' has unknown pixel type {}", c.name, c.pixel_type);
-      if (xs != 1 || ys != 1) throw bad_input("EXR header: subsampled channel '{}' is not supported", c.name);
+        throw bad_input("EXR header: channel '{}' has unknown pixel type {}", fest::quoted_bytes(c.name), c.pixel_type);
+      if (xs != 1 || ys != 1) throw bad_input("EXR header: subsampled channel '{}' is not supported", fest::quoted_bytes(c.name));
       found.push_back(c);
       if (found.size() > 64) throw bad_input("EXR header: more than 64 channels");
       at = end + 17;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "formats/image/image_headers.hpp"
 #include "formats/image/image_limits.hpp"
 
@@ -43,13 +44,13 @@ class HeaderCursor {
     const std::size_t at = pos_;
     std::string_view t = token();
     std::size_t i = (t[0] == '-' || t[0] == '+') ? 1 : 0;
-    if (i == t.size()) throw bad_input("{} header: {} '{}' is not a number (byte {})", what_, name, t, at);
+    if (i == t.size()) throw bad_input("{} header: {} '{}' is not a number (byte {})", what_, name, fest::quoted_bytes(t), at);
     std::int64_t value = 0;
     for (; i < t.size(); ++i) {
       if (t[i] < '0' || t[i] > '9')
-        throw bad_input("{} header: {} '{}' is not a number (byte {})", what_, name, t, at);
+        throw bad_input("{} header: {} '{}' is not a number (byte {})", what_, name, fest::quoted_bytes(t), at);
       if (value > (std::int64_t{1} << 40))
-        throw bad_input("{} header: {} '{}' is too large", what_, name, t);
+        throw bad_input("{} header: {} '{}' is too large", what_, name, fest::quoted_bytes(t));
       value = value * 10 + (t[i] - '0');
     }
     return t[0] == '-' ? -value : value;
@@ -104,7 +105,7 @@ void read_pam_fields(HeaderCursor& cursor, NetpbmLayout& layout) {
     else if (key == "DEPTH") depth = cursor.integer("DEPTH");
     else if (key == "MAXVAL") maxval = cursor.integer("MAXVAL");
     else if (key == "TUPLTYPE") tuple_type = std::string(cursor.token());
-    else throw bad_input("PAM header: unknown field '{}' at byte {}", key.substr(0, 32), at);
+    else throw bad_input("PAM header: unknown field '{}' at byte {}", fest::quoted_bytes(key, 32), at);
   }
   // ENDHDR is followed by one newline, then the raster.
   cursor.single_whitespace();
@@ -117,7 +118,7 @@ void read_pam_fields(HeaderCursor& cursor, NetpbmLayout& layout) {
   layout.maxval = checked_maxval(maxval, what);
   if (!tuple_type.empty()) {
     const int expected = channels_of_tuple_type(tuple_type);
-    if (expected == 0) throw bad_input("PAM header: unknown TUPLTYPE '{}'", tuple_type.substr(0, 32));
+    if (expected == 0) throw bad_input("PAM header: unknown TUPLTYPE '{}'", fest::quoted_bytes(tuple_type, 32));
     if (expected != depth)
       throw bad_input("PAM header: TUPLTYPE {} needs DEPTH {}, not {}", tuple_type, expected, depth);
   }
@@ -132,7 +133,7 @@ void read_pfm_fields(HeaderCursor& cursor, NetpbmLayout& layout) {
   char* end = nullptr;
   const double scale = std::strtod(scale_text.c_str(), &end);
   if (end != scale_text.c_str() + scale_text.size() || !std::isfinite(scale) || scale == 0.0)
-    throw bad_input("PFM header: scale '{}' at byte {} is not a finite non-zero number", scale_text, at);
+    throw bad_input("PFM header: scale '{}' at byte {} is not a finite non-zero number", fest::quoted_bytes(scale_text), at);
   // The sign of the scale is the byte order: negative means little-endian.
   layout.big_endian = scale > 0;
   cursor.single_whitespace();

@@ -1,4 +1,5 @@
 #include "formats/mesh/attributed_ply.hpp"
+#include "core/quote.hpp"
 
 #include <cstring>
 
@@ -97,12 +98,12 @@ std::uint64_t read_elements(Source& src, const mesh_detail::PlyHeader& header, A
     for (std::size_t k = 0; k < e.properties.size(); ++k) {
       const auto& p = e.properties[k];
       if (face && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) {
-        if (!mesh_detail::ply_type_is_integer(p.type)) throw bad_input("PLY header: face {} must hold integers", p.name);
+        if (!mesh_detail::ply_type_is_integer(p.type)) throw bad_input("PLY header: face {} must hold integers", fest::quoted_bytes(p.name));
         indices = static_cast<int>(k);
         continue;
       }
       if (!cols) continue;
-      if (p.is_list) throw bad_input("PLY: {} list property {} is not supported", e.name, p.name);
+      if (p.is_list) throw bad_input("PLY: {} list property {} is not supported", fest::quoted_bytes(e.name), fest::quoted_bytes(p.name));
       column_of[k] = static_cast<int>(cols->size());
       cols->push_back({p.name, mesh_detail::ply_type_name(p.type), {}});
       cols->back().values.reserve(static_cast<std::size_t>(e.count));
@@ -113,11 +114,11 @@ std::uint64_t read_elements(Source& src, const mesh_detail::PlyHeader& header, A
         double v;
         if (p.is_list) {
           if (!src.read(p.count_type, v) || !(v >= 0) || !src.can_hold(static_cast<std::uint64_t>(v), p.type))
-            throw bad_input("PLY body: {} {} has a bad {} list", e.name, i + 1, p.name);
+            throw bad_input("PLY body: {} {} has a bad {} list", fest::quoted_bytes(e.name), i + 1, fest::quoted_bytes(p.name));
           const auto n = static_cast<std::uint64_t>(v);
           std::vector<std::uint32_t> list;
           for (std::uint64_t j = 0; j < n; ++j) {
-            if (!src.read(p.type, v)) throw bad_input("PLY body: {} {} is truncated", e.name, i + 1);
+            if (!src.read(p.type, v)) throw bad_input("PLY body: {} {} is truncated", fest::quoted_bytes(e.name), i + 1);
             if (static_cast<int>(k) == indices) {
               if (!(v >= 0 && v <= 4294967295.0)) throw bad_input("PLY body: face {} has index {}", i + 1, v);
               list.push_back(static_cast<std::uint32_t>(v));
@@ -126,7 +127,7 @@ std::uint64_t read_elements(Source& src, const mesh_detail::PlyHeader& header, A
           if (static_cast<int>(k) == indices) out.faces.push_back(std::move(list));
           continue;
         }
-        if (!src.read(p.type, v)) throw bad_input("PLY body: {} {} of {} is truncated or not a number", e.name, i + 1, e.count);
+        if (!src.read(p.type, v)) throw bad_input("PLY body: {} {} of {} is truncated or not a number", fest::quoted_bytes(e.name), i + 1, e.count);
         if (column_of[k] >= 0) (*cols)[static_cast<std::size_t>(column_of[k])].values.push_back(v);
       }
     }

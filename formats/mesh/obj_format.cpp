@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
 #include "formats/mesh/text_cursor.hpp"
@@ -32,11 +33,11 @@ struct Corner {
 std::int32_t resolve(std::string_view token, std::size_t count, std::size_t line) {
   std::int64_t index = 0;
   if (!parse_int64(token, index) || index == 0)
-    throw bad_input("OBJ line {}: \"{}\" is not a valid index (indices start at 1)", line, token.substr(0, 32));
+    throw bad_input("OBJ line {}: \"{}\" is not a valid index (indices start at 1)", line, fest::quoted_bytes(token, 32));
   if (index < 0) index += static_cast<std::int64_t>(count);
   else index -= 1;
   if (index < 0 || index >= static_cast<std::int64_t>(max_element_count))
-    throw bad_input("OBJ line {}: index \"{}\" is out of range", line, token.substr(0, 32));
+    throw bad_input("OBJ line {}: index \"{}\" is out of range", line, fest::quoted_bytes(token, 32));
   return static_cast<std::int32_t>(index);
 }
 
@@ -78,7 +79,7 @@ Mesh read_obj(std::string_view bytes) {
       if (tokens.size() < count + 1) throw bad_input("OBJ line {}: {} needs {} numbers", line_number, keyword, count);
       for (std::size_t k = 0; k < count; ++k)
         if (!parse_double(tokens[k + 1], out[k]))
-          throw bad_input("OBJ line {}: \"{}\" is not a number", line_number, tokens[k + 1].substr(0, 32));
+          throw bad_input("OBJ line {}: \"{}\" is not a number", line_number, fest::quoted_bytes(tokens[k + 1], 32));
     };
     if (keyword == "v") {
       double v[6];

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
 #include "formats/mesh/text_cursor.hpp"
@@ -49,7 +50,7 @@ struct OffKind {
 OffKind parse_keyword(std::string_view keyword) {
   constexpr std::string_view off = "OFF";
   if (keyword.size() < off.size() || keyword.substr(keyword.size() - off.size()) != off)
-    throw bad_input("OFF: first keyword \"{}\" is not [ST][C][N]OFF", keyword.substr(0, 32));
+    throw bad_input("OFF: first keyword \"{}\" is not [ST][C][N]OFF", fest::quoted_bytes(keyword, 32));
   std::string_view prefix = keyword.substr(0, keyword.size() - off.size());
   OffKind kind;
   auto take = [&](std::string_view p) {
@@ -61,7 +62,7 @@ OffKind parse_keyword(std::string_view keyword) {
   kind.colors = take("C");
   kind.normals = take("N");
   if (take("4") || take("n")) throw bad_input("OFF: {} (4D or n-dimensional OFF) is not supported", keyword);
-  if (!prefix.empty()) throw bad_input("OFF: first keyword \"{}\" is not [ST][C][N]OFF", keyword.substr(0, 32));
+  if (!prefix.empty()) throw bad_input("OFF: first keyword \"{}\" is not [ST][C][N]OFF", fest::quoted_bytes(keyword, 32));
   return kind;
 }
 
@@ -113,7 +114,7 @@ Mesh read_off(std::string_view bytes) {
     std::size_t t = 0;
     auto number = [&](double& out) {
       if (!parse_double(tokens[t], out))
-        throw bad_input("OFF line {}: \"{}\" is not a number", lines.line_number(), tokens[t].substr(0, 32));
+        throw bad_input("OFF line {}: \"{}\" is not a number", lines.line_number(), fest::quoted_bytes(tokens[t], 32));
       ++t;
     };
     for (int k = 0; k < 3; ++k) number(values[k]);
@@ -149,7 +150,7 @@ Mesh read_off(std::string_view bytes) {
       std::int64_t index = 0;
       if (!parse_int64(tokens[k], index) || index < 0 || static_cast<std::uint64_t>(index) >= n_vertices)
         throw bad_input("OFF line {}: face {} has vertex index \"{}\", outside 0..{}", lines.line_number(), f + 1,
-                        tokens[k].substr(0, 32), n_vertices == 0 ? 0 : n_vertices - 1);
+                        fest::quoted_bytes(tokens[k], 32), n_vertices == 0 ? 0 : n_vertices - 1);
       indices.push_back(static_cast<std::uint32_t>(index));
     }
     const std::size_t extra = tokens.size() - 1 - n;

@@ -1,4 +1,5 @@
 #include "formats/mesh/ply_header.hpp"
+#include "core/quote.hpp"
 
 #include <fmt/format.h>
 
@@ -80,7 +81,7 @@ void check_sizes(const PlyHeader& header, std::size_t body_size) {
     std::uint64_t per_instance = binary ? e.min_binary_size() : 2 * e.properties.size();
     std::uint64_t total = 0;
     if (!checked_mul(e.count, per_instance, total) || total > body_size + 1 || needed + total > body_size + 1) {
-      throw bad_input("PLY header: element {} count {} exceeds what the {} bytes after the header can hold", e.name,
+      throw bad_input("PLY header: element {} count {} exceeds what the {} bytes after the header can hold", fest::quoted_bytes(e.name),
                       e.count, body_size);
     }
     needed += total;
@@ -117,14 +118,14 @@ PlyHeader parse_ply_header(std::string_view bytes) {
       if (encoding == "ascii") header.encoding = PlyEncoding::ascii;
       else if (encoding == "binary_little_endian") header.encoding = PlyEncoding::binary_little_endian;
       else if (encoding == "binary_big_endian") header.encoding = PlyEncoding::binary_big_endian;
-      else throw bad_input("PLY header line {}: unknown format \"{}\"", line_no, encoding);
+      else throw bad_input("PLY header line {}: unknown format \"{}\"", line_no, fest::quoted_bytes(encoding));
       have_format = true;
     } else if (keyword == "element") {
       PlyElement element;
       element.name = std::string(tokens.next());
       std::string_view count = tokens.next();
       if (element.name.empty() || !parse_uint64(count, element.count))
-        throw bad_input("PLY header line {}: element count \"{}\" is not a non-negative integer", line_no, count);
+        throw bad_input("PLY header line {}: element count \"{}\" is not a non-negative integer", line_no, fest::quoted_bytes(count));
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (header.elements.empty()) throw bad_input("PLY header line {}: property before any element", line_no);
@@ -134,11 +135,11 @@ PlyHeader parse_ply_header(std::string_view bytes) {
         property.is_list = true;
         std::string_view count_type = tokens.next();
         if (!type_from_name(count_type, property.count_type) || !ply_type_is_integer(property.count_type))
-          throw bad_input("PLY header line {}: list length type \"{}\" is not an integer type", line_no, count_type);
+          throw bad_input("PLY header line {}: list length type \"{}\" is not an integer type", line_no, fest::quoted_bytes(count_type));
         type = tokens.next();
       }
       if (!type_from_name(type, property.type))
-        throw bad_input("PLY header line {}: unknown property type \"{}\"", line_no, type);
+        throw bad_input("PLY header line {}: unknown property type \"{}\"", line_no, fest::quoted_bytes(type));
       property.name = std::string(tokens.next());
       if (property.name.empty()) throw bad_input("PLY header line {}: property without a name", line_no);
       header.elements.back().properties.push_back(std::move(property));
@@ -148,7 +149,7 @@ PlyHeader parse_ply_header(std::string_view bytes) {
       std::string text(line.substr(0, 60));
       if (line.size() > 60) text += "...";
       header.warnings.push_back(
-          fmt::format("PLY header line {}: \"{}\" has no PLY keyword; read as a comment", line_no, text));
+          fmt::format("PLY header line {}: \"{}\" has no PLY keyword; read as a comment", line_no, fest::quoted_bytes(text)));
     }
   }
   if (!ended) throw bad_input("PLY header: no end_header line (truncated header?)");

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
 #include "formats/mesh/ply_body.hpp"
@@ -57,7 +58,7 @@ Layout vertex_layout(const PlyElement& e) {
   for (const PlyProperty& p : e.properties) {
     Role role = vertex_role(p.name);
     if (role != Role::skip && p.is_list)
-      throw bad_input("PLY header: vertex property {} is a list, expected a scalar", p.name);
+      throw bad_input("PLY header: vertex property {} is a list, expected a scalar", fest::quoted_bytes(p.name));
     layout.roles.push_back(role);
   }
   if (e.count > 0 && !(layout.has(Role::x) && layout.has(Role::y) && layout.has(Role::z)))
@@ -70,9 +71,9 @@ Layout face_layout(const PlyElement& e) {
   for (const PlyProperty& p : e.properties) {
     Role role = face_role(p.name);
     if (role == Role::indices && (!p.is_list || !ply_type_is_integer(p.type)))
-      throw bad_input("PLY header: face property {} must be a list of integers", p.name);
+      throw bad_input("PLY header: face property {} must be a list of integers", fest::quoted_bytes(p.name));
     if (role != Role::skip && role != Role::indices && p.is_list)
-      throw bad_input("PLY header: face property {} is a list, expected a scalar", p.name);
+      throw bad_input("PLY header: face property {} is a list, expected a scalar", fest::quoted_bytes(p.name));
     layout.roles.push_back(role);
   }
   if (e.count > 0 && !layout.has(Role::indices)) throw bad_input("PLY header: face element has no vertex_indices list");
@@ -129,7 +130,7 @@ class BodyReader {
 
  private:
   [[noreturn]] void truncated(const PlyElement& e, std::uint64_t i) {
-    throw bad_input("PLY body: {} {} of {} is truncated or not a valid number", e.name, i + 1, e.count);
+    throw bad_input("PLY body: {} {} of {} is truncated or not a valid number", fest::quoted_bytes(e.name), i + 1, e.count);
   }
 
   double value(const PlyElement& e, std::uint64_t i, PlyType type) {
@@ -142,7 +143,7 @@ class BodyReader {
     double n = value(e, i, p.count_type);
     // `n` is an integer (checked by the source); bound it before converting.
     if (!(n >= 0) || n > 4294967295.0 || !source_.can_hold(static_cast<std::uint64_t>(n), p.type))
-      throw bad_input("PLY body: {} {} has a {} list of length {}, more than the file holds", e.name, i + 1, p.name, n);
+      throw bad_input("PLY body: {} {} has a {} list of length {}, more than the file holds", fest::quoted_bytes(e.name), i + 1, fest::quoted_bytes(p.name), n);
     return static_cast<std::uint64_t>(n);
   }
 
@@ -301,7 +302,7 @@ std::vector<MeshPart> parts_not_kept(const PlyHeader& header) {
     if (e.count == 0 || e.properties.empty()) continue;
     const bool lines = e.name == "edge" && edge_ends(e, nullptr);
     if (e.name != "vertex" && e.name != "face" && !lines) {
-      parts.push_back({fmt::format("PLY '{}' elements", e.name), e.count});
+      parts.push_back({fmt::format("PLY '{}' elements", fest::quoted_bytes(e.name, 64)), e.count});
       continue;
     }
     std::string names;
@@ -309,7 +310,7 @@ std::vector<MeshPart> parts_not_kept(const PlyHeader& header) {
       const bool kept = (e.name == "vertex" && vertex_role(p.name) != Role::skip) ||
                         (e.name == "face" && face_role(p.name) != Role::skip) ||
                         (lines && (p.name == "vertex1" || p.name == "vertex2"));
-      if (!kept) names += (names.empty() ? "" : ", ") + p.name;
+      if (!kept) names += (names.empty() ? "" : ", ") + fest::quoted_bytes(p.name, 64);  // may not be UTF-8
     }
     const char* plural = e.name == "vertex" ? "vertices" : e.name == "face" ? "faces" : "edges";
     if (!names.empty()) parts.push_back({fmt::format("{}' {} (PLY properties)", plural, names), e.count});

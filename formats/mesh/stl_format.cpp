@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/polygon_triangulation.hpp"
 #include "formats/mesh/mesh_builder.hpp"
 #include "formats/mesh/mesh_formats.hpp"
@@ -142,7 +143,7 @@ class AsciiStlParser {
       } else if (word.empty()) {
         throw bad_input("ascii STL: file ends without \"endsolid\" (truncated?)");
       } else {
-        fail(fmt::format("expected \"facet\" or \"endsolid\", found \"{}\"", word.substr(0, 32)));
+        fail(fmt::format("expected \"facet\" or \"endsolid\", found \"{}\"", fest::quoted_bytes(word, 32)));
       }
     }
     return assembler_.build();
@@ -154,12 +155,12 @@ class AsciiStlParser {
   }
   void expect(std::string_view word) {
     std::string_view got = cursor_.next_token();
-    if (got != word) fail(fmt::format("expected \"{}\", found \"{}\"", word, got.substr(0, 32)));
+    if (got != word) fail(fmt::format("expected \"{}\", found \"{}\"", word, fest::quoted_bytes(got, 32)));
   }
   double number() {
     std::string_view token = cursor_.next_token();
     double v;
-    if (!parse_double(token, v)) fail(fmt::format("\"{}\" is not a number", token.substr(0, 32)));
+    if (!parse_double(token, v)) fail(fmt::format("\"{}\" is not a number", fest::quoted_bytes(token, 32)));
     return v;
   }
   void skip_line() {

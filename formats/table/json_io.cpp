@@ -2,6 +2,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "formats/table/table_io.hpp"
 
 namespace fest::formats {
@@ -31,16 +32,6 @@ void check_depth(std::string_view bytes) {
   }
 }
 
-// nlohmann's messages start with "[json.exception.parse_error.101] "; drop that tag.
-std::string without_tag(const char* what) {
-  std::string s = what;
-  if (!s.empty() && s.front() == '[') {
-    const std::size_t close = s.find("] ");
-    if (close != std::string::npos) s.erase(0, close + 2);
-  }
-  return s;
-}
-
 }  // namespace
 
 nlohmann::json read_json(std::string_view bytes) {
@@ -48,9 +39,9 @@ nlohmann::json read_json(std::string_view bytes) {
   try {
     return nlohmann::json::parse(bytes.begin(), bytes.end());
   } catch (const nlohmann::json::parse_error& e) {
-    throw bad_input("JSON: malformed at byte {}: {}", e.byte, without_tag(e.what()));
+    throw bad_input("{}", json_failure_words(e.what(), e.byte, bytes));
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input("JSON: {}", without_tag(e.what()));
+    throw bad_input("JSON: {}", json_failure_words(e.what(), 0, bytes));
   }
 }
 
@@ -59,7 +50,7 @@ std::string write_json(const nlohmann::json& doc) {
     return doc.dump(2) + "\n";
   } catch (const nlohmann::json::exception& e) {
     // Only invalid UTF-8 in a string can fail here (type_error 316).
-    throw bad_input("JSON: cannot write: {}", without_tag(e.what()));
+    throw bad_input("JSON: cannot write a text that is not UTF-8 ({})", json_failure_words(e.what(), 0, {}));
   }
 }
 

@@ -1,4 +1,5 @@
 #include "formats/table/table_io.hpp"
+#include "core/quote.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -25,7 +26,7 @@ Dialect dialect_of(Format format) {
 }
 
 // Cut long cell text in messages: a fuzzed line can be megabytes.
-std::string_view excerpt(std::string_view s) noexcept { return s.substr(0, 40); }
+std::string excerpt(std::string_view s) { return fest::quoted_bytes(s, 40); }
 
 std::string_view trim_blanks(std::string_view s, char delimiter) noexcept {
   auto blank = [delimiter](char c) { return (c == ' ' || c == '\t') && c != delimiter; };

@@ -1,4 +1,5 @@
 #include "formats/volume/header_text.hpp"
+#include "core/quote.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -10,7 +11,7 @@ namespace fest::formats::volume_detail {
 
 namespace {
 // Values quoted in messages are cut short: a fuzzed header can have megabyte lines.
-std::string_view excerpt(std::string_view s) noexcept { return s.substr(0, 40); }
+std::string excerpt(std::string_view s) { return fest::quoted_bytes(s, 40); }
 }  // namespace
 
 std::string_view trim(std::string_view s) noexcept {
@@ -62,7 +63,7 @@ AxisSizes parse_axis_sizes(const std::vector<std::string_view>& words, std::stri
     d = parse_count(words[i], field);
     if (d == 0) throw bad_input("{}: axis {} has size 0", field, i);
     if (d > max_voxels || out.count * d > max_voxels)
-      throw bad_input("{} '{}' {} the limit of {} voxels", field, text.substr(0, 60), exceed, max_voxels);
+      throw bad_input("{} '{}' {} the limit of {} voxels", field, fest::quoted_bytes(text, 60), exceed, max_voxels);
     out.count *= d;
   }
   return out;

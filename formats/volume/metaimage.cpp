@@ -1,4 +1,5 @@
 #include "formats/volume/metaimage.hpp"
+#include "core/quote.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +55,7 @@ bool parse_bool(const std::string& value, const char* field) {
   const std::string v = to_lower(value);
   if (v == "true" || v == "1") return true;
   if (v == "false" || v == "0") return false;
-  throw bad_input("MetaImage {}: '{}' is neither True nor False", field, value.substr(0, 20));
+  throw bad_input("MetaImage {}: '{}' is neither True nor False", field, fest::quoted_bytes(value, 20));
 }
 
 // Header lines up to and including ElementDataFile, which MetaIO requires to be last;
@@ -92,7 +93,7 @@ MetaHeader parse_header(std::string_view bytes, std::size_t& data_start) {
     if (trim(line).empty()) continue;
     const std::size_t eq = line.find('=');
     if (eq == std::string_view::npos)
-      throw bad_input("MetaImage header line {}: '{}' is not 'Key = Value'", lines.line_number(), line.substr(0, 40));
+      throw bad_input("MetaImage header line {}: '{}' is not 'Key = Value'", lines.line_number(), fest::quoted_bytes(line, 40));
     store_field(h, kMetaFields, to_lower(trim(line.substr(0, eq))), std::string(trim(line.substr(eq + 1))));
   }
   data_start = lines.position();
@@ -213,7 +214,7 @@ Volume read_metaimage(std::string_view bytes) {
   std::size_t data_start = 0;
   const MetaHeader h = parse_header(bytes, data_start);
   if (h.object_type && to_lower(*h.object_type) != "image")
-    throw bad_input("MetaImage: ObjectType '{}' is not Image", h.object_type->substr(0, 40));
+    throw bad_input("MetaImage: ObjectType '{}' is not Image", fest::quoted_bytes(*h.object_type, 40));
   if (to_lower(*h.data_file) != "local")
     throw bad_input("MetaImage: data in a separate file (ElementDataFile = {}) is not supported; use a .mha with "
                     "ElementDataFile = LOCAL",
@@ -228,7 +229,7 @@ Volume read_metaimage(std::string_view bytes) {
   std::optional<ScalarType> type;
   for (const ElementType& e : kElementTypes)
     if (*h.element_type == e.name) type = e.type;
-  if (!type) throw bad_input("MetaImage: ElementType '{}' is not supported", h.element_type->substr(0, 40));
+  if (!type) throw bad_input("MetaImage: ElementType '{}' is not supported", fest::quoted_bytes(*h.element_type, 40));
 
   const std::vector<std::string_view> words = split_words(*h.dim_size);
   if (words.size() != n) throw bad_input("MetaImage DimSize: {} sizes expected for NDims = {}, found {}", n, n, words.size());

@@ -40,7 +40,7 @@ enum Offset : std::size_t {
 };
 // NIfTI-2 offsets (nifti2.h).
 enum Offset2 : std::size_t {
-  k2Magic = 4, k2Datatype = 12, k2Dim = 16, k2VoxOffset = 168,
+  k2Magic = 4, k2Datatype = 12, k2Dim = 16, k2Pixdim = 104, k2VoxOffset = 168,
 };
 
 // NIfTI datatype codes (nifti1.h DT_*); Analyze uses the same codes for its types.
@@ -337,7 +337,23 @@ Volume read_nifti(std::string_view bytes, const std::string_view* image) {
     for (int c = 0; c < 4; ++c)
       if (nim->sform_code > 0 && !std::isfinite(nim->sto_xyz.m[r][c]))
         throw bad_input("{}: srow_{}[{}] is not finite", what, "xyz"[r], c);
-  if (nim->sform_code > 0 && columns_nonzero(nim->sto_xyz)) {
+  const bool sform_places = nim->sform_code > 0 && columns_nonzero(nim->sto_xyz);
+  // Zero or negative sizes mean "not stated" (usable_spacing), but NaN or infinite ones
+  // are damage: refuse them by name rather than write a spacing of 1 without a word.
+  // nifti_clib has already put 1 in their place, so the header's own bytes are read.
+  for (int c = 0; c < 3 && c < ndim && !sform_places; ++c) {
+    double pixdim = 0;
+    if (f.kind == NiftiKind::nifti2) {
+      const std::uint64_t bits = h.uint(k2Pixdim + 8 * (c + 1), 8);
+      std::memcpy(&pixdim, &bits, 8);
+    } else {
+      pixdim = h.f32(kPixdim + 4 * (c + 1));
+    }
+    if (!std::isfinite(pixdim))
+      throw bad_input("{}: pixdim[{}] (voxel size along axis {}) is {}, not a finite number", what, c + 1, "xyz"[c],
+                      pixdim);
+  }
+  if (sform_places) {
     set_from_matrix(v, nim->sto_xyz, mm, "NIfTI sform");
   } else if (nim->qform_code > 0) {
     for (double x : {nim->quatern_b, nim->quatern_c, nim->quatern_d, nim->qoffset_x, nim->qoffset_y, nim->qoffset_z})

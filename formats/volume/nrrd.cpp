@@ -1,4 +1,5 @@
 #include "formats/volume/nrrd.hpp"
+#include "core/quote.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -66,14 +67,14 @@ Vec3 space_to_ras(const std::string& space) {
   if (s == "ras" || s == "right-anterior-superior" || s == "3d-right-handed") return {1, 1, 1};
   if (s == "lps" || s == "left-posterior-superior") return {-1, -1, 1};
   if (s == "las" || s == "left-anterior-superior") return {-1, 1, 1};
-  throw bad_input("NRRD header: space '{}' is not supported (RAS, LPS, LAS or 3D-right-handed)", space.substr(0, 40));
+  throw bad_input("NRRD header: space '{}' is not supported (RAS, LPS, LAS or 3D-right-handed)", fest::quoted_bytes(space, 40));
 }
 
 // "(x,y,z)" -> three numbers.
 Vec3 parse_vector(std::string_view text, const std::string& field) {
   text = trim(text);
   if (text.size() < 2 || text.front() != '(' || text.back() != ')')
-    throw bad_input("{}: '{}' is not a vector like (1,0,0)", field, text.substr(0, 40));
+    throw bad_input("{}: '{}' is not a vector like (1,0,0)", field, fest::quoted_bytes(text, 40));
   text = text.substr(1, text.size() - 2);
   Vec3 v{};
   std::size_t i = 0;
@@ -150,7 +151,7 @@ NrrdHeader parse_header(std::string_view bytes, std::size_t& data_start) {
     const std::size_t kv = line.find(":=");
     if (kv != std::string_view::npos && (field_end == std::string_view::npos || kv < field_end)) continue;  // key/value
     if (field_end == std::string_view::npos)
-      throw bad_input("NRRD header line {}: '{}' is not 'field: value'", lines.line_number(), line.substr(0, 40));
+      throw bad_input("NRRD header line {}: '{}' is not 'field: value'", lines.line_number(), fest::quoted_bytes(line, 40));
     const std::string field = to_lower(trim(line.substr(0, field_end)));
     std::string value(trim(line.substr(field_end + 2)));
     if (field == "data file" || field == "datafile")
@@ -166,7 +167,7 @@ Encoding parse_encoding(const std::string& text) {
   if (e == "raw") return Encoding::raw;
   if (e == "gzip" || e == "gz") return Encoding::gzip;
   if (e == "ascii" || e == "text" || e == "txt") return Encoding::ascii;
-  throw bad_input("NRRD: encoding '{}' is not supported (raw, gzip or ascii)", text.substr(0, 40));
+  throw bad_input("NRRD: encoding '{}' is not supported (raw, gzip or ascii)", fest::quoted_bytes(text, 40));
 }
 
 void check_kinds(const std::string& kinds, std::size_t n) {
@@ -244,7 +245,7 @@ Volume read_nrrd(std::string_view bytes) {
   if (!h.sizes) throw bad_input("NRRD header: no 'sizes' field");
   if (!h.encoding) throw bad_input("NRRD header: no 'encoding' field");
   const std::optional<ScalarType> type = parse_type(*h.type);
-  if (!type) throw bad_input("NRRD: type '{}' is not supported (scalar integers, float or double)", h.type->substr(0, 40));
+  if (!type) throw bad_input("NRRD: type '{}' is not supported (scalar integers, float or double)", fest::quoted_bytes(*h.type, 40));
   const std::uint64_t n = parse_count(*h.dimension, "NRRD dimension");
   if (n < 2 || n > 4)
     throw bad_input("NRRD: dimension {} is not supported, only 2-D and 3-D scalar data and 4-D series of them", n);
@@ -256,7 +257,7 @@ Volume read_nrrd(std::string_view bytes) {
   bool big = false;
   if (h.endian) {
     const std::string e = to_lower(*h.endian);
-    if (e != "little" && e != "big") throw bad_input("NRRD: endian '{}' is neither little nor big", h.endian->substr(0, 20));
+    if (e != "little" && e != "big") throw bad_input("NRRD: endian '{}' is neither little nor big", fest::quoted_bytes(*h.endian, 20));
     big = e == "big";
   }
   const std::int64_t byte_skip = h.byte_skip ? parse_integer(*h.byte_skip, "NRRD byte skip") : 0;

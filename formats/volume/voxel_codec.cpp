@@ -1,4 +1,5 @@
 #include "formats/volume/voxel_codec.hpp"
+#include "core/quote.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -157,9 +158,9 @@ void parse_text_voxels(std::string_view text, std::vector<double>& values, const
     const auto res = std::from_chars(word.data(), word.data() + word.size(), v);
     if (word.empty() || res.ec == std::errc::invalid_argument || res.ptr != word.data() + word.size())
       throw bad_input("{}: text value {} ('{}') at data byte {} is not a number", what, i + 1,
-                      text.substr(pos, std::min<std::size_t>(end - pos, 32)), pos);
+                      fest::quoted_bytes(text.substr(pos, end - pos), 32), pos);
     if (res.ec == std::errc::result_out_of_range)
-      throw bad_input("{}: text value {} ('{}') is out of range", what, i + 1, text.substr(pos, std::min<std::size_t>(end - pos, 32)));
+      throw bad_input("{}: text value {} ('{}') is out of range", what, i + 1, fest::quoted_bytes(text.substr(pos, end - pos), 32));
     values[i] = v;
     pos = end;
   }

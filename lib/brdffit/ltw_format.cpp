@@ -1,4 +1,5 @@
 #include "brdffit/ltw_format.hpp"
+#include "core/quote.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -118,7 +119,7 @@ Projection decode_ltw(std::string_view bytes, nlohmann::json* header_out) {
       }
     }
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input(".ltw header: {}", e.what());
+    throw bad_input(".ltw header: {}", json_failure_words(e.what(), 0, {}));
   }
   if (header_out) *header_out = std::move(h);
   return p;

@@ -1,4 +1,5 @@
 #include "brdffit/ltx_format.hpp"
+#include "core/quote.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -151,21 +152,30 @@ LumitexelSet decode_ltx(const std::vector<std::uint8_t>& bytes, nlohmann::json* 
   nlohmann::json h;
   try {
     h = nlohmann::json::parse(bytes.begin() + 12, bytes.begin() + 12 + hlen);
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte counts from the header's first byte, which is file offset 12.
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()) + 12, hlen);
+    throw bad_input("header: {} (offset {})", json_failure_words(e.what(), e.byte, text), 12 + (e.byte > 0 ? e.byte - 1 : 0));
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input("malformed JSON header: {} (offset 12)", e.what());
+    throw bad_input("header: {} (offset 12)", json_failure_words(e.what(), 0, {}));
   }
   LumitexelSet set;
   std::uint64_t n = 0, m = 0;
+  const char* field = "";  // the header field being read, for the message
   try {
     if (!h.is_object()) throw bad_input("the header is not a JSON object (offset 12)");
     if (h.value("format", "") != "ltx") throw bad_input("the header's \"format\" is not \"ltx\" (offset 12)");
     if (h.value("version", 0) != 1) throw bad_input("unsupported .ltx version {} (offset 12)", h.value("version", 0));
-    set.mesh_sha256 = h.at("mesh_sha256").get<std::string>();
-    set.images = h.at("images").get<std::vector<std::string>>();
-    n = h.at("lumitexels").get<std::uint64_t>();
-    m = h.at("samples").get<std::uint64_t>();
+    field = "mesh_sha256";
+    set.mesh_sha256 = h.at(field).get<std::string>();
+    field = "images";
+    set.images = h.at(field).get<std::vector<std::string>>();
+    field = "lumitexels";
+    n = h.at(field).get<std::uint64_t>();
+    field = "samples";
+    m = h.at(field).get<std::uint64_t>();
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input("header: {} (offset 12)", e.what());
+    throw bad_input("header field \"{}\": {} (offset 12)", field, json_failure_words(e.what(), 0, {}));
   }
   const std::size_t start = 12 + hlen;
   const std::size_t avail = bytes.size() - start;

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "ffd/lattice_codec.hpp"
 
 namespace fest::ffd {
@@ -36,8 +37,10 @@ Lattice decode_lattice_json(std::string_view text) {
   json j;
   try {
     j = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    throw bad_input("lattice JSON: {}", json_failure_words(e.what(), e.byte, text));
   } catch (const json::exception& e) {
-    throw bad_input("lattice JSON: {}", e.what());
+    throw bad_input("lattice JSON: {}", json_failure_words(e.what(), 0, text));
   }
   if (!j.is_object()) throw bad_input("lattice JSON: not an object");
   Lattice l;

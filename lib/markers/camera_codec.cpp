@@ -1,4 +1,5 @@
 #include "markers/camera_codec.hpp"
+#include "core/quote.hpp"
 
 #include <cmath>
 
@@ -25,8 +26,11 @@ CameraModel decode_camera_json(std::string_view text) {
   json doc;
   try {
     doc = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    // json_failure_words says "not JSON: <what> at line L, column C (byte B)".
+    throw bad_input("camera: not valid JSON: {}", json_failure_words(e.what(), e.byte, text).substr(10));
   } catch (const json::exception& e) {
-    throw bad_input("camera: not valid JSON: {}", e.what());
+    throw bad_input("camera: not valid JSON: {}", json_failure_words(e.what(), 0, text));
   }
   if (!doc.is_object()) throw bad_input("camera: not a JSON object");
   CameraModel c;

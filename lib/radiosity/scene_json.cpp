@@ -1,4 +1,5 @@
 #include "radiosity/scene_json.hpp"
+#include "core/quote.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,8 +37,10 @@ SceneFile decode_scene_json(std::string_view text) {
   json root;
   try {
     root = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    throw bad_input("scene: {}", json_failure_words(e.what(), e.byte, text));
   } catch (const json::exception& e) {
-    throw bad_input("scene: not JSON: {}", e.what());
+    throw bad_input("scene: {}", json_failure_words(e.what(), 0, text));
   }
   if (!root.is_object()) throw bad_input("scene: the top level must be an object");
   only_keys(root, {"units", "objects", "meshing"}, "/");

@@ -1,4 +1,5 @@
 #include "softobj/coarticulation.hpp"
+#include "core/quote.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +33,7 @@ PhonemeTable decode_phoneme_table(std::string_view text) {
   try {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
-    throw bad_input("phoneme table: {}", e.what());
+    throw bad_input("phoneme table: {}", json_failure_words(e.what(), e.byte, text));
   }
   if (!doc.is_object() || !doc.contains("phonemes") || !doc["phonemes"].is_object())
     throw bad_input("phoneme table: no \"phonemes\" object");

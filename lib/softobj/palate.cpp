@@ -1,4 +1,5 @@
 #include "softobj/palate.hpp"
+#include "core/quote.hpp"
 
 #include <cmath>
 #include <optional>
@@ -90,7 +91,7 @@ Palate decode_palate(std::string_view text) {
   try {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
-    throw bad_input("palate: {}", e.what());
+    throw bad_input("palate: {}", json_failure_words(e.what(), e.byte, text));
   }
   if (!doc.is_object() || !doc.contains("sphere") || !doc.contains("strip"))
     throw bad_input("palate: needs \"sphere\" and \"strip\" objects");

@@ -1,4 +1,5 @@
 #include "softobj/skeleton_json.hpp"
+#include "core/quote.hpp"
 
 #include <cmath>
 
@@ -45,7 +46,7 @@ Skeleton decode_skeleton(std::string_view text) {
   try {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
-    throw bad_input("skeleton JSON: {}", e.what());
+    throw bad_input("skeleton JSON: {}", json_failure_words(e.what(), e.byte, text));
   }
   if (!doc.is_object()) throw bad_input("skeleton JSON: the document is not an object");
   Skeleton s;

@@ -54,6 +54,18 @@ int convert_command(const ConvertOptions& opt) {
     out = *opt.to;
   else if (!is_stdio(opt.output))
     out = output_format_from_path(opt.output);
+  // Tables and JSON have no signature: they are what text is taken for when it matches no
+  // other format, so a file asked to become a mesh (or image, ...) that reads only as a
+  // table is a damaged or unknown file of the wanted kind -- bad input, not a bad request.
+  const Kind in_kind = kind_of(in.format);
+  if (kind_of(out.format) != in_kind && (in_kind == Kind::table || in_kind == Kind::json) &&
+      kind_of(out.format) != Kind::table && kind_of(out.format) != Kind::json)
+    throw bad_input("{}", with_location(fmt::format("not {} {} file fest reads: no {} format's signature, and the text "
+                                                    "reads only as {} ({})",
+                                                    article(kind_of(out.format)), kind_name(kind_of(out.format)),
+                                                    kind_name(kind_of(out.format)),
+                                                    in_kind == Kind::table ? "a table" : "JSON", format_name(in.format)),
+                                        in.name));
   if (kind_of(out.format) != kind_of(in.format))
     throw usage_error("cannot convert {} {} ({}) to {}, which is {} {} format", article(kind_of(in.format)),
                       kind_name(kind_of(in.format)), format_name(in.format), format_name(out.format),

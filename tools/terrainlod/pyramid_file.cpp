@@ -1,4 +1,5 @@
 #include "pyramid_file.hpp"
+#include "core/quote.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -107,12 +108,14 @@ void PyramidFile::parse_manifest(std::string_view text) {
     const auto tex = manifest_.find("texture");
     if (tex != manifest_.end() && !tex->is_null()) {
       const std::string format = tex->at("format").get<std::string>();
-      if (format != "png" && format != "jpeg") throw bad_input("pyramid textures are '{}', not png or jpeg ({})", format, name_);
+      if (format != "png" && format != "jpeg") throw bad_input("pyramid textures are '{}', not png or jpeg ({})", quoted_bytes(format), name_);
       textured_ = true;
       texture_extension_ = format == "png" ? "png" : "jpg";
     }
+  } catch (const nlohmann::json::parse_error& e) {
+    throw bad_input("pyramid manifest is malformed: {} ({})", json_failure_words(e.what(), e.byte, text), name_);
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input("pyramid manifest is malformed: {} ({})", e.what(), name_);
+    throw bad_input("pyramid manifest is malformed: {} ({})", json_failure_words(e.what(), 0, text), name_);
   }
   if (layout_.levels < 0 || layout_.levels > 30 || static_cast<int>(layout_.cells.size()) != layout_.levels + 1 ||
       layout_.texels <= 0)
