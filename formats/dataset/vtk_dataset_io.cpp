@@ -6,6 +6,7 @@
 #include "formats/dataset/vtk_dataset_io.hpp"
 
 #include <climits>
+#include <cstdio>
 #include <new>
 #include <stdexcept>
 
@@ -33,6 +34,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "core/quote.hpp"
 #include "formats/dataset/dataset_validate.hpp"
 #include "formats/dataset/guarded_xml_reader.hpp"
 #include "formats/dataset/legacy_scan.hpp"
@@ -79,6 +81,14 @@ void fail_on_messages(const MessageCollector& messages, const char* format, bool
     // vtkXMLUnstructuredDataReader says this as an error about the files its own
     // writer makes for a grid without points; validate_dataset checks what matters.
     if (error.rfind("No Points element available in first piece", 0) == 0) continue;
+    // expat's complaint, relayed by VTK, said in fest's words: where and why.
+    unsigned long line = 0, column = 0, byte = 0;
+    int reason_at = 0;
+    if (std::sscanf(error.c_str(), "Error parsing XML in stream at line %lu, column %lu, byte index %lu: %n", &line,
+                    &column, &byte, &reason_at) == 3 &&
+        reason_at > 0)
+      throw bad_input("{}: not well-formed XML at line {}, column {} (byte {}): {}", format, line, column + 1, byte,
+                      quoted_bytes(std::string_view(error).substr(static_cast<std::size_t>(reason_at)), 60));
     throw bad_input("{}: {} ({})", format, what, vtk_says(error));
   }
   if (!warnings_count) return;

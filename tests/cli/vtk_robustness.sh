@@ -52,6 +52,14 @@ bad_truncated|vtu: DataArray ".*" at byte [0-9]+: .*past the end
 bad_unreferenced|bytes before its block, from byte [0-9]+, belong to no array
 CASES
 
+case_ "markup that is not well-formed XML: where and why in fest's words, not VTK's"
+# A bare '&' in an attribute value: fest's scan of the blocks passes, expat refuses it.
+sed 's/Name="velocity"/Name="vel\&ocity"/' "$WORK/good.vtu" > "$WORK/not_xml.vtu"
+run fconv --info "$WORK/not_xml.vtu"
+expect_clean_failure 3 fconv
+expect_stderr_has 'vtu: not well-formed XML at line [0-9]+, column [0-9]+ \(byte [0-9]+\): "not well-formed'
+check "no VTK sentence" sh -c "! grep -q 'Error parsing XML' '$err'"
+
 case_ "legacy .vtk cut short or with a count past its data: one line, exit 3"
 run lemtrace gen helix --n 2 --to vtk -o "$WORK/good.vtk"
 head -c 3000 "$WORK/good.vtk" >"$WORK/short.vtk"
