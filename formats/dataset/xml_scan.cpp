@@ -194,17 +194,26 @@ class XmlScanner {
     throw bad_input("{}: <{} {}={}> is not a count", format_, quoted_bytes(tag.name), key, quoted_bytes(tag.get(key)));
   }
 
-  // Points of an "x0 x1 y0 y1 z0 z1" extent.
-  uint64_t extent_points(const Tag& tag, std::string_view key) const {
-    std::string text(tag.get(key));
-    long long e[6] = {0, 0, 0, 0, 0, 0};
+  // The six whole numbers of an "x0 x1 y0 y1 z0 z1" extent; false (the rest 0) at the
+  // first one that does not parse.
+  static bool parse_extent(const std::string& text, long long (&e)[6]) {
+    for (long long& v : e) v = 0;
     const char* p = text.c_str();
     for (long long& v : e) {
       char* end = nullptr;
       v = std::strtoll(p, &end, 10);
-      if (end == p) throw bad_input("{}: <{} {}={}> is not an extent", format_, tag.name, key, quoted_bytes(text, 40));
+      if (end == p) return false;
       p = end;
     }
+    return true;
+  }
+
+  // Points of an "x0 x1 y0 y1 z0 z1" extent.
+  uint64_t extent_points(const Tag& tag, std::string_view key) const {
+    const std::string text(tag.get(key));
+    long long e[6];
+    if (!parse_extent(text, e))
+      throw bad_input("{}: <{} {}={}> is not an extent", format_, tag.name, key, quoted_bytes(text, 40));
     uint64_t points = 1;
     for (int axis = 0; axis < 3; ++axis) {
       long long lo = e[2 * axis], hi = e[2 * axis + 1];
@@ -221,14 +230,8 @@ class XmlScanner {
   // Cells of a grid of `points` points over an extent: vtkImageData counts one cell
   // per interval along each axis that has more than one point.
   uint64_t extent_cells(const Tag& tag, std::string_view key) const {
-    std::string text(tag.get(key));
-    long long e[6] = {0, 0, 0, 0, 0, 0};
-    const char* p = text.c_str();
-    for (long long& v : e) {
-      char* end = nullptr;
-      v = std::strtoll(p, &end, 10);
-      p = end;
-    }
+    long long e[6];
+    parse_extent(std::string(tag.get(key)), e);  // extent_points has refused what does not parse
     uint64_t cells = 1;
     for (int axis = 0; axis < 3; ++axis) {
       long long lo = e[2 * axis], hi = e[2 * axis + 1];
