@@ -38,9 +38,15 @@ std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "ebcodeapp";
+// One folder per test: ctest runs the tests of this file as parallel processes, and a
+// shared tet.off was rewritten by one while another read it.
+std::filesystem::path test_dir() {
+  return std::filesystem::path(::testing::TempDir()) / "ebcodeapp" /
+         ::testing::UnitTest::GetInstance()->current_test_info()->name();
+}
 
 std::filesystem::path write_tetrahedron() {
+  const std::filesystem::path dir = test_dir();
   std::filesystem::create_directories(dir);
   const auto path = dir / "tet.off";
   std::ofstream(path) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n";
@@ -59,7 +65,7 @@ fest::TriangleSoup tetrahedron() {
 TEST(EbcodeApp, TetrahedronRoundTripsThroughEbm) {
   fest::ebcode_tool::EncodeOptions o;
   o.input = write_tetrahedron().string();
-  o.output = (dir / "tet.ebm").string();
+  o.output = (test_dir() / "tet.ebm").string();
   o.conn = fest::edgebreaker::ConnChoice::static_model;
   o.qp = 0;  // float32 exactly: the unit coordinates come back as they went in
   ASSERT_EQ(fest::ebcode_tool::encode_command(o), 0);
@@ -71,7 +77,7 @@ TEST(EbcodeApp, TetrahedronRoundTripsThroughEbm) {
 TEST(EbcodeApp, SymbolsOfTheTetrahedronAreCRE) {
   fest::ebcode_tool::EncodeOptions o;
   o.input = write_tetrahedron().string();
-  o.output = (dir / "tet.clers").string();
+  o.output = (test_dir() / "tet.clers").string();
   o.symbols = true;
   ASSERT_EQ(fest::ebcode_tool::encode_command(o), 0);
   EXPECT_EQ(slurp(o.output), "CRE\n");
@@ -95,12 +101,12 @@ TEST(EbcodeApp, FlagValuesBecomeTypedOptions) {
 
 // lib/edgebreaker says "strict coding"; the command names the flag the user typed.
 TEST(EbcodeApp, StrictRefusalNamesTheFlag) {
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "fin.off";
+  std::filesystem::create_directories(test_dir());
+  const auto path = test_dir() / "fin.off";
   std::ofstream(path) << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n";
   fest::ebcode_tool::EncodeOptions o;
   o.input = path.string();
-  o.output = (dir / "fin.ebm").string();
+  o.output = (test_dir() / "fin.ebm").string();
   o.strict = true;
   try {
     fest::ebcode_tool::encode_command(o);
@@ -113,12 +119,12 @@ TEST(EbcodeApp, StrictRefusalNamesTheFlag) {
 }
 
 TEST(EbcodeApp, LosslessRefusalNamesTheFlag) {
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "double.off";
+  std::filesystem::create_directories(test_dir());
+  const auto path = test_dir() / "double.off";
   std::ofstream(path) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1.1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n";
   fest::ebcode_tool::EncodeOptions o;
   o.input = path.string();
-  o.output = (dir / "double.ebm").string();
+  o.output = (test_dir() / "double.ebm").string();
   o.qp = 0;
   try {
     fest::ebcode_tool::encode_command(o);
