@@ -82,6 +82,12 @@ class XmlScanner {
         size_t underscore = s_.find('_', tag.end);
         if (underscore == std::string_view::npos)
           throw bad_input("{}: <AppendedData> at byte {} has no '_' before its data", format_, tag.begin);
+        // Only white space may stand between the tag and the '_': VTK takes the data to
+        // start there, and anything else put its block offsets astray (a SIGSEGV in VTK).
+        const size_t stray = s_.substr(tag.end, underscore - tag.end).find_first_not_of(" \t\r\n");
+        if (stray != std::string_view::npos)
+          throw bad_input("{}: <AppendedData> at byte {}: {} at byte {} before the '_' that starts its data", format_,
+                          tag.begin, quoted_bytes(s_.substr(tag.end + stray, 1)), tag.end + stray);
         appended_begin = underscore + 1;
         size_t close = s_.rfind("</AppendedData>");
         if (close != std::string_view::npos && close >= appended_begin) appended_end = close;

@@ -60,6 +60,18 @@ expect_clean_failure 3 fconv
 expect_stderr_has 'vtu: not well-formed XML at line [0-9]+, column [0-9]+ \(byte [0-9]+\): "not well-formed'
 check "no VTK sentence" sh -c "! grep -q 'Error parsing XML' '$err'"
 
+case_ "a stray byte between <AppendedData> and its '_': refused, not handed to VTK (was SIGSEGV)"
+python3 - "$WORK/good.vtu" "$WORK/stray.vtu" <<'PY2'
+import sys
+b = open(sys.argv[1], 'rb').read()
+tag = b.index(b'<AppendedData')
+under = b.index(b'_', b.index(b'>', tag))
+open(sys.argv[2], 'wb').write(b[:under - 1] + b'$' + b[under:])
+PY2
+run fconv --info "$WORK/stray.vtu"
+expect_clean_failure 3 fconv
+expect_stderr_has "<AppendedData> at byte [0-9]+: \"[$]\" at byte [0-9]+ before the '_' that starts its data"
+
 case_ "legacy .vtk cut short or with a count past its data: one line, exit 3"
 run lemtrace gen helix --n 2 --to vtk -o "$WORK/good.vtk"
 head -c 3000 "$WORK/good.vtk" >"$WORK/short.vtk"
