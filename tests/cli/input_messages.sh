@@ -131,4 +131,17 @@ expect_stderr_has 'station: not JSON: .* at line 1, column 16 .byte 16.'
 expect_no_library_text
 expect_readable_stderr
 
+
+case_ "quatpath keys and patnet events: JSON failures in fest's words, with file:line"
+printf '{"t": 0, "pos": [0,0,0], "quat": [1,0,0,0]}\n{"t": 1, "pos": [1,0, "quat": [1,0,0,0]}\n' > "$WORK/keys.jsonl"
+run quatpath "$WORK/keys.jsonl" -o "$WORK/path.csv"
+expect_clean_failure 3 quatpath
+expect_stderr_has 'malformed key: not JSON: .* at line 1, column 29 .byte 29. .*keys.jsonl:2'
+expect_no_library_text
+printf '{"t": "x", "pos": [0,0,0], "quat": [1,0,0,0]}\n' > "$WORK/keys2.jsonl"
+run quatpath "$WORK/keys2.jsonl" -o "$WORK/path.csv"
+expect_clean_failure 3 quatpath
+expect_stderr_has 'malformed key: expected a number, got a string .*keys2.jsonl:1'
+expect_no_library_text
+
 finish

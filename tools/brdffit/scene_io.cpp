@@ -10,6 +10,7 @@
 #include "brdffit/image_metrics.hpp"
 #include "core/srgb.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/file_io.hpp"
 #include "core/sha256.hpp"
 #include "formats/image/image_io.hpp"
@@ -269,7 +270,7 @@ reflectance::SurfaceMaterials materials_from_json(const nlohmann::json& j, const
       throw bad_input("several materials need \"triangle_material\" or \"vertex_weights\" ({})", where);
     }
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input("materials: {} ({})", e.what(), where);
+    throw bad_input("materials: {} ({})", json_failure_words(e.what(), 0, {}), where);
   }
   return m;
 }

@@ -8,6 +8,7 @@
 #include "capture/rig.hpp"
 #include "capture/silhouette.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/file_io.hpp"
 #include "core/parallel_for.hpp"
 #include "core/sha256.hpp"
@@ -101,7 +102,7 @@ Shot shot_at(const json& shots, const json& index, const std::string& where) {
     s.angle_index = j.at("angle_index").get<int>();
     s.angle_deg = j.at("angle_deg").get<double>();
   } catch (const json::exception& e) {
-    throw bad_input("shots[{}]: {} ({})", index.get<std::size_t>(), e.what(), where);
+    throw bad_input("shots[{}]: {} ({})", index.get<std::size_t>(), json_failure_words(e.what(), 0, {}), where);
   }
   if (s.file.empty() || s.file.front() == '/' || s.file.find("..") != std::string::npos)
     throw bad_input("shots[{}].file must be a path inside the session ({})", index.get<std::size_t>(), where);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/text_lines.hpp"
 #include "formats/table/table_io.hpp"
 
@@ -39,8 +40,8 @@ std::vector<InputEvent> parse_events(const std::string& bytes, const std::string
     nlohmann::json j;
     try {
       j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-      throw bad_input("malformed JSON: {} ({})", e.what(), where);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw bad_input("malformed JSON: {} ({})", json_failure_words(e.what(), e.byte, text), where);
     }
     if (!j.is_object() || !j.contains("t") || !j["t"].is_number())
       throw bad_input("an event is an object with a numeric \"t\" ({})", where);
@@ -88,7 +89,7 @@ std::vector<InputEvent> parse_events(const std::string& bytes, const std::string
         ev.name = j["eval"].get<std::string>();
       }
     } catch (const nlohmann::json::exception& e) {
-      throw bad_input("malformed event: {} ({})", e.what(), where);
+      throw bad_input("malformed event: {} ({})", json_failure_words(e.what(), 0, {}), where);
     }
     if (kinds != 1)
       throw bad_input("an event has exactly one of set, motion, motion-done, spawn, eval ({})", where);

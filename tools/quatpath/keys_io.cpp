@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/text_lines.hpp"
 #include "formats/table/table_io.hpp"
 
@@ -79,8 +80,10 @@ std::vector<Key> read_jsonl_keys(const std::string& bytes, const std::string& na
       k.continuity = j.value("continuity", 0.0);
       k.bias = j.value("bias", 0.0);
       keys.push_back(k);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw bad_input("malformed key: {} ({})", json_failure_words(e.what(), e.byte, text), where);
     } catch (const nlohmann::json::exception& e) {
-      throw bad_input("malformed key: {} ({})", e.what(), where);
+      throw bad_input("malformed key: {} ({})", json_failure_words(e.what(), 0, {}), where);
     }
   });
   return keys;
