@@ -58,8 +58,6 @@ bool parse_bool(const std::string& value, const char* field) {
   throw bad_input("MetaImage {}: '{}' is neither True nor False", field, fest::quoted_bytes(value, 20));
 }
 
-// Header lines up to and including ElementDataFile, which MetaIO requires to be last;
-// `data_start` is where the bytes after that line begin.
 // Every key MetaIO writes that fest reads (lower case), and the member keeping it.
 constexpr HeaderField<MetaHeader> kMetaFields[] = {
     {"objecttype", &MetaHeader::object_type},
@@ -84,6 +82,8 @@ constexpr HeaderField<MetaHeader> kMetaFields[] = {
     {"elementdatafile", &MetaHeader::data_file},
 };
 
+// Header lines up to and including ElementDataFile, which MetaIO requires to be last;
+// `data_start` is where the bytes after that line begin.
 MetaHeader parse_header(std::string_view bytes, std::size_t& data_start) {
   MetaHeader h;
   HeaderLines lines(bytes, 0, 0, "MetaImage");
