@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "brdffit/image_metrics.hpp"
+#include "brdffit/rig_json.hpp"
 #include "core/srgb.hpp"
 #include "core/error.hpp"
 #include "core/quote.hpp"
@@ -135,18 +136,6 @@ nlohmann::json load_json(const std::string& path) {
 
 namespace {
 
-std::vector<double> numbers(const nlohmann::json& j, const char* key, std::size_t n, const std::string& where) {
-  if (!j.contains(key) || !j[key].is_array() || j[key].size() != n)
-    throw bad_input("\"{}\" must be an array of {} numbers ({})", key, n, where);
-  std::vector<double> v;
-  for (const auto& x : j[key]) {
-    if (!x.is_number()) throw bad_input("\"{}\" must be an array of {} numbers ({})", key, n, where);
-    v.push_back(x.get<double>());
-    if (!std::isfinite(v.back())) throw bad_input("\"{}\" holds a non-finite number ({})", key, where);
-  }
-  return v;
-}
-
 Rgb rgb_of(const nlohmann::json& j, const std::string& where, const char* key) {
   if (!j.is_array() || j.size() != 3) throw bad_input("\"{}\" must hold RGB triples ({})", key, where);
   Rgb c;
@@ -158,69 +147,6 @@ Rgb rgb_of(const nlohmann::json& j, const std::string& where, const char* key) {
 }
 
 }  // namespace
-
-PinholeCamera camera_from_json(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_object()) throw bad_input("a camera must be a JSON object ({})", where);
-  PinholeCamera c;
-  const auto K = numbers(j, "K", 9, where);
-  c.fx = K[0];
-  c.cx = K[2];
-  c.fy = K[4];
-  c.cy = K[5];
-  if (!(c.fx > 0 && c.fy > 0)) throw bad_input("camera focal lengths must be positive ({})", where);
-  if (j.contains("dist")) {
-    const auto d = numbers(j, "dist", 5, where);
-    for (int k = 0; k < 5; ++k) c.dist[static_cast<std::size_t>(k)] = d[static_cast<std::size_t>(k)];
-  }
-  const auto R = numbers(j, "R", 9, where);
-  for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) c.R(r, k) = R[static_cast<std::size_t>(3 * r + k)];
-  if ((c.R * c.R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-5 || c.R.determinant() < 0)
-    throw bad_input("camera \"R\" is not a rotation ({})", where);
-  const auto t = numbers(j, "t", 3, where);
-  c.t = Eigen::Vector3d(t[0], t[1], t[2]);
-  if (!j.contains("width") || !j.contains("height") || !j["width"].is_number_integer() ||
-      !j["height"].is_number_integer())
-    throw bad_input("camera needs integer \"width\" and \"height\" ({})", where);
-  c.width = j["width"].get<int>();
-  c.height = j["height"].get<int>();
-  if (c.width < 1 || c.height < 1 || c.width > 65536 || c.height > 65536)
-    throw bad_input("camera size {}x{} is not plausible ({})", c.width, c.height, where);
-  return c;
-}
-
-nlohmann::json camera_to_json(const PinholeCamera& c) {
-  nlohmann::json j;
-  j["K"] = {c.fx, 0.0, c.cx, 0.0, c.fy, c.cy, 0.0, 0.0, 1.0};
-  j["dist"] = c.dist;
-  std::vector<double> R;
-  for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) R.push_back(c.R(r, k));
-  j["R"] = R;
-  j["t"] = {c.t.x(), c.t.y(), c.t.z()};
-  j["width"] = c.width;
-  j["height"] = c.height;
-  return j;
-}
-
-reflectance::PointLight light_from_json(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_object()) throw bad_input("a light must be a JSON object ({})", where);
-  reflectance::PointLight l;
-  const auto p = numbers(j, "position", 3, where);
-  l.position = Eigen::Vector3d(p[0], p[1], p[2]);
-  const auto i = numbers(j, "intensity", 3, where);
-  l.intensity = Rgb(i[0], i[1], i[2]);
-  if (!(l.intensity.minCoeff() > 0)) throw bad_input("light intensity must be positive ({})", where);
-  return l;
-}
-
-nlohmann::json light_to_json(const reflectance::PointLight& l, const std::string& id) {
-  nlohmann::json j;
-  if (!id.empty()) j["id"] = id;
-  j["position"] = {l.position.x(), l.position.y(), l.position.z()};
-  j["intensity"] = {l.intensity.x(), l.intensity.y(), l.intensity.z()};
-  return j;
-}
 
 LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where) {
   if (!j.is_object() || j.value("model", "") != "lafortune")
@@ -278,41 +204,29 @@ reflectance::SurfaceMaterials materials_from_json(const nlohmann::json& j, const
 Rig load_rig(const std::string& path, const std::string& root_arg) {
   Rig rig;
   rig.doc = load_json(path);
-  const nlohmann::json& j = rig.doc;
-  if (!j.is_object() || !j.contains("images") || !j["images"].is_array())
-    throw bad_input("a rig needs an \"images\" array ({})", path);
-  if (j.value("version", 1) != 1) throw bad_input("rig version {} is not supported ({})", j.value("version", 0), path);
-  rig.frame = j.value("frame", "mesh");
+  const brdffit::RigDocument d = brdffit::decode_rig(rig.doc, path);
+  rig.frame = d.frame;
   std::filesystem::path root = root_arg;
   if (root_arg.empty()) {
-    // capture.md 2.8: file and mask are relative to "session", itself relative to the
-    // rig's folder (hdrmerge writes "sess", synth ".").
+    // fest-capture(5) RIG: file and mask are relative to "session", itself relative to
+    // the rig's folder (hdrmerge writes "sess", synth ".").
     root = is_stdio(path) ? std::filesystem::path(".") : std::filesystem::path(path).parent_path();
-    if (j.contains("session") && j["session"].is_string()) root /= j["session"].get<std::string>();
+    if (!d.session.empty()) root /= d.session;
   }
-  for (std::size_t k = 0; k < j["images"].size(); ++k) {
-    const auto& e = j["images"][k];
-    const std::string where = fmt::format("{}, image {}", path, k);
-    if (!e.is_object() || !e.contains("file") || !e["file"].is_string())
-      throw bad_input("rig image needs a \"file\" ({})", where);
+  for (const brdffit::RigEntry& e : d.images) {
     RigImage img;
-    img.file = e["file"].get<std::string>();
-    img.file_path = (root / img.file).string();
-    if (e.contains("mask") && e["mask"].is_string()) {
-      img.mask = e["mask"].get<std::string>();
-      img.mask_path = (root / img.mask).string();
+    img.file = e.file;
+    img.file_path = (root / e.file).string();
+    if (e.has_mask) {
+      img.mask = e.mask;
+      img.mask_path = (root / e.mask).string();
     }
-    img.angle_index = e.value("angle_index", 0);
-    img.angle_deg = e.value("angle_deg", 0.0);
-    if (!e.contains("camera")) throw bad_input("rig image has no \"camera\" ({})", where);
-    img.view.camera = camera_from_json(e["camera"], where);
-    if (e.contains("light")) {
-      img.view.light = light_from_json(e["light"], where);
-      img.light_id = e["light"].value("id", "");
-    }
+    img.angle_index = e.angle_index;
+    img.angle_deg = e.angle_deg;
+    img.view = e.view;
+    img.light_id = e.light_id;
     rig.images.push_back(img);
   }
-  if (rig.images.empty()) throw bad_input("the rig lists no images ({})", path);
   return rig;
 }
 

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 
 #include "brdffit/lumitexel_builder.hpp"
+#include "reflectance/view_json.hpp"
 #include "brdffit/texture_atlas.hpp"
 #include "reflectance/camera.hpp"
 #include "reflectance/environment.hpp"
@@ -46,10 +47,11 @@ std::string encode_mesh_ply(const reflectance::TriangleMesh& mesh);
 
 nlohmann::json load_json(const std::string& path);
 
-reflectance::PinholeCamera camera_from_json(const nlohmann::json& j, const std::string& where);
-nlohmann::json camera_to_json(const reflectance::PinholeCamera& c);
-reflectance::PointLight light_from_json(const nlohmann::json& j, const std::string& where);
-nlohmann::json light_to_json(const reflectance::PointLight& l, const std::string& id = "");
+// cam.json and light.json: lib/reflectance/view_json's codec.
+using reflectance::camera_from_json;
+using reflectance::camera_to_json;
+using reflectance::light_from_json;
+using reflectance::light_to_json;
 
 reflectance::LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where);
 
