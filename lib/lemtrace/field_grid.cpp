@@ -19,7 +19,7 @@ FieldGrid::FieldGrid(TetMesh mesh, const ClassifyParams& params, Precompute mode
   if (mode_ != Precompute::all) return;
   // Every record depends on its cell alone; chunks of cells keep the job count small.
   const std::size_t chunk = 4096, chunks = (n + chunk - 1) / chunk;
-  parallel_for(chunks, threads, [this, n, chunk](std::size_t k) {
+  parallel_for(chunks, threads, [&](std::size_t k) {
     for (std::size_t c = k * chunk; c < std::min(n, (k + 1) * chunk); ++c) {
       const TetGeometry g = tet_geometry(mesh_, static_cast<int32_t>(c));
       table_[c] = to_barycentric_frame(g, classify(g, params_));
