@@ -202,7 +202,7 @@ namespace {
 constexpr std::size_t kBlock = 16;
 
 template <typename T, typename LineOp>
-void transform_axis(std::vector<T>& data, const Dims& dims, const Dims& c, int axis, int threads, const LineOp& op) {
+void transform_axis(T* data, const Dims& dims, const Dims& c, int axis, int threads, const LineOp& op) {
   const std::size_t n = c[axis];
   if (n < 2) return;
   const std::size_t sx = 1, sy = dims[0], sz = dims[0] * dims[1];
@@ -280,7 +280,7 @@ void inverse_rows(const std::int64_t* src, std::size_t w, std::size_t n, Wavelet
 // cache lines, one memcpy per sample) and transformed from there straight back.
 constexpr std::size_t kRowBlock = 256;
 
-void inverse_axis_rows(std::vector<std::int64_t>& data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
+void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
                        int threads) {
   const std::size_t n = c[axis];
   if (n < 2) return;
@@ -307,11 +307,15 @@ void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
   auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { forward_line(line, n, w, scratch); };
   for (int l = 0; l < levels; ++l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 0; a < 3; ++a) transform_axis(data, dims, c, a, threads, op);
+    for (int a = 0; a < 3; ++a) transform_axis(data.data(), dims, c, a, threads, op);
   }
 }
 
 void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads) {
+  inverse_3d(data.data(), dims, levels, w, threads);
+}
+
+void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads) {
   auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { inverse_line(line, n, w, scratch); };
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
@@ -325,7 +329,7 @@ void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int thr
   auto op = [](double* line, std::size_t n, double* scratch) { forward_line_97(line, n, scratch); };
   for (int l = 0; l < levels; ++l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 0; a < 3; ++a) transform_axis(data, dims, c, a, threads, op);
+    for (int a = 0; a < 3; ++a) transform_axis(data.data(), dims, c, a, threads, op);
   }
 }
 
@@ -333,7 +337,7 @@ void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int thr
   auto op = [](double* line, std::size_t n, double* scratch) { inverse_line_97(line, n, scratch); };
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 2; a >= 0; --a) transform_axis(data, dims, c, a, threads, op);
+    for (int a = 2; a >= 0; --a) transform_axis(data.data(), dims, c, a, threads, op);
   }
 }
 

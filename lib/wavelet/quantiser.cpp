@@ -162,9 +162,48 @@ std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int
 
 namespace {
 
+// Keys are read through memcpy: `keys` may be the very storage the values are written to
+// (dequantise_in_place), the key of voxel i read before its value is written.
+inline std::int64_t key_at(const unsigned char* keys, std::size_t i) noexcept {
+  std::int64_t k;
+  std::memcpy(&k, keys + 8 * i, 8);
+  return k;
+}
+
 template <typename T>
-void dequantise_as(const std::int64_t* k, double* v, std::size_t count, const Quantiser& q) noexcept {
-  for (std::size_t i = 0; i < count; ++i) v[i] = clamp_round<T>(key_value(q, k[i]));
+void dequantise_as(const unsigned char* k, double* v, std::size_t count, const Quantiser& q) noexcept {
+  // An integer step and offset (integer data, docs/volwave.md §3) give integral values
+  // below 2^53, so the rounding is the identity there and only the clamp is left: a
+  // branch-free loop. Beyond 2^53 every double is integral too, and the clamp settles it.
+  const double lo = static_cast<double>(std::numeric_limits<T>::lowest());
+  const double hi = static_cast<double>(std::numeric_limits<T>::max());
+  if (q.step == std::floor(q.step) && q.offset == std::floor(q.offset)) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const double x = q.offset + q.step * static_cast<double>(key_at(k, i));
+      v[i] = std::min(hi, std::max(lo, x));
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < count; ++i) v[i] = clamp_round<T>(key_value(q, key_at(k, i)));
+}
+
+void dequantise_block(const unsigned char* k, double* v, std::size_t count, const Quantiser& q, ScalarType type) {
+  if (q.kind == KeyKind::float32_bits) {
+    for (std::size_t i = 0; i < count; ++i) v[i] = static_cast<double>(key_float(key_at(k, i)));
+    return;
+  }
+  // One loop per stored type, so the per-voxel work is a multiply, a rounding and a
+  // clamp (the same arithmetic as stored_as(key_value(...)), hence the same values).
+  switch (type) {
+    case ScalarType::u8: return dequantise_as<std::uint8_t>(k, v, count, q);
+    case ScalarType::i8: return dequantise_as<std::int8_t>(k, v, count, q);
+    case ScalarType::u16: return dequantise_as<std::uint16_t>(k, v, count, q);
+    case ScalarType::i16: return dequantise_as<std::int16_t>(k, v, count, q);
+    case ScalarType::u32: return dequantise_as<std::uint32_t>(k, v, count, q);
+    case ScalarType::i32: return dequantise_as<std::int32_t>(k, v, count, q);
+    default:
+      for (std::size_t i = 0; i < count; ++i) v[i] = stored_as(key_value(q, key_at(k, i)), type);
+  }
 }
 
 }  // namespace
@@ -174,27 +213,18 @@ void dequantise(const std::vector<std::int64_t>& keys, const Quantiser& q, Scala
   values.resize(keys.size());
   const std::size_t block = 1 << 16;
   const std::size_t n = keys.size();
+  const auto* k = reinterpret_cast<const unsigned char*>(keys.data());
   parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
     const std::size_t begin = b * block, end = std::min(n, (b + 1) * block);
-    const std::int64_t* k = keys.data() + begin;
-    double* v = values.data() + begin;
-    const std::size_t count = end - begin;
-    if (q.kind == KeyKind::float32_bits) {
-      for (std::size_t i = 0; i < count; ++i) v[i] = static_cast<double>(key_float(k[i]));
-      return;
-    }
-    // One loop per stored type, so the per-voxel work is a multiply, a rounding and a
-    // clamp (the same arithmetic as stored_as(key_value(...)), hence the same values).
-    switch (type) {
-      case ScalarType::u8: return dequantise_as<std::uint8_t>(k, v, count, q);
-      case ScalarType::i8: return dequantise_as<std::int8_t>(k, v, count, q);
-      case ScalarType::u16: return dequantise_as<std::uint16_t>(k, v, count, q);
-      case ScalarType::i16: return dequantise_as<std::int16_t>(k, v, count, q);
-      case ScalarType::u32: return dequantise_as<std::uint32_t>(k, v, count, q);
-      case ScalarType::i32: return dequantise_as<std::int32_t>(k, v, count, q);
-      default:
-        for (std::size_t i = 0; i < count; ++i) v[i] = stored_as(key_value(q, k[i]), type);
-    }
+    dequantise_block(k + 8 * begin, values.data() + begin, end - begin, q, type);
+  });
+}
+
+void dequantise_in_place(double* buffer, std::size_t n, const Quantiser& q, ScalarType type, int threads) {
+  const std::size_t block = 1 << 16;
+  parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
+    const std::size_t begin = b * block, end = std::min(n, (b + 1) * block);
+    dequantise_block(reinterpret_cast<const unsigned char*>(buffer + begin), buffer + begin, end - begin, q, type);
   });
 }
 
