@@ -251,14 +251,14 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
           std::uint64_t m = 1;
           if (e >= 1) {
             m = (m << 1) | static_cast<std::uint64_t>(dec.side.decode(models.second_bit[static_cast<std::size_t>(e)]));
-            if (e >= 2) {
-              int count = e - 1;
-              if (count > 32) {
-                m = (m << (count - 32)) | dec.raw.get(count - 32);
-                count = 32;
-              }
-              m = (m << count) | dec.raw.get(count);
+            // The raw bits, none for e = 1: no branch on that (it would be mispredicted
+            // as often as e is).
+            int count = e - 1;
+            if (count > 32) {
+              m = (m << (count - 32)) | dec.raw.get(count - 32);
+              count = 32;
             }
+            m = (m << count) | dec.raw.get(count);
           }
           const int sc = 3 * sign_of(a) + sign_of(b);
           v = dec.side.decode(models.sign[static_cast<std::size_t>(sc)]) ? -static_cast<std::int64_t>(m)

@@ -5,6 +5,10 @@
 #include <cstring>
 #include <limits>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
 #include "core/error_stats.hpp"
@@ -113,6 +117,19 @@ double step_at(const VwHeader& h, const std::vector<std::uint8_t>& roi, std::siz
 // buffer already stands for the missing detail bands), then, transformed back and
 // dequantised in place, the voxel values. One buffer instead of two halves what a
 // decode allocates and touches.
+// Reserves room for n doubles and, on Linux, asks for transparent huge pages for it
+// before anything touches it: a decode writes every voxel once, and 4 KiB pages would
+// cost a page fault per 512 voxels (an eighth of the decode time on the CT head).
+void reserve_large(std::vector<double>& buffer, std::size_t n) {
+  buffer.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge = std::uintptr_t{1} << 21;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(buffer.data()) + huge - 1) & ~(huge - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(buffer.data() + n)) & ~(huge - 1);
+  if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+}
+
 std::int64_t* coefficients_in(std::vector<double>& buffer) noexcept {
   return reinterpret_cast<std::int64_t*>(buffer.data());
 }
@@ -559,7 +576,9 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
   const int limit = max_chunks < 0 ? res.chunks_total : std::min(max_chunks, res.chunks_total);
   const auto bands = subbands(h.dims, h.levels);
   const auto by_chunk = streams_by_chunk(bands, h.levels);
-  std::vector<double> buffer(h.dims[0] * h.dims[1] * h.dims[2]);  // zero: bands not decoded
+  std::vector<double> buffer;
+  reserve_large(buffer, h.dims[0] * h.dims[1] * h.dims[2]);
+  buffer.resize(h.dims[0] * h.dims[1] * h.dims[2]);  // zero: the bands not decoded
   std::int64_t* coef = coefficients_in(buffer);
   std::size_t pos = h.header_bytes;
   int decoded = 0;
