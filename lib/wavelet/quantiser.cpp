@@ -56,6 +56,12 @@ Range range_of(const Volume& v) {
   return r;
 }
 
+// The value of key 0 for float data: 0 itself when the range holds it, so that empty
+// space (a plume's surroundings) has keys, and wavelet coefficients, of zero -- rows
+// the coder skips with one decision and blocks the inverse transform skips -- and
+// decodes to exact zeros; else the middle of the range.
+double float_offset(const Range& r) noexcept { return (r.lo <= 0 && 0 <= r.hi) ? 0.0 : 0.5 * (r.lo + r.hi); }
+
 void refuse_nonfinite(const Range& r) {
   if (r.nonfinite > 0)
     throw bad_input("{} voxels are NaN or infinite: no error bound can hold for them (only lossless coding keeps them)",
@@ -111,7 +117,7 @@ Quantiser plan_max_error(const Volume& volume, double bound) {
     q.offset = std::round(r.lo);
   } else {
     q.step = 2.0 * bound;
-    q.offset = 0.5 * (r.lo + r.hi);
+    q.offset = float_offset(r);
   }
   if ((r.hi - r.lo) / q.step > kMaxKey)
     throw bad_input("error bound {} is too small for the value range [{}, {}] (more than 2^50 steps)", bound, r.lo, r.hi);
@@ -124,7 +130,7 @@ Quantiser plan_step(const Volume& volume, double step) {
   refuse_nonfinite(r);
   Quantiser q;
   q.step = step;
-  q.offset = scalar_type_is_integer(volume.type) ? std::round(r.lo) : 0.5 * (r.lo + r.hi);
+  q.offset = scalar_type_is_integer(volume.type) ? std::round(r.lo) : float_offset(r);
   if ((r.hi - r.lo) / q.step > kMaxKey)
     throw bad_input("quantiser step {} is too small for the value range [{}, {}]", step, r.lo, r.hi);
   return q;
@@ -201,6 +207,18 @@ void dequantise_block(const unsigned char* k, double* v, std::size_t count, cons
     case ScalarType::i16: return dequantise_as<std::int16_t>(k, v, count, q);
     case ScalarType::u32: return dequantise_as<std::uint32_t>(k, v, count, q);
     case ScalarType::i32: return dequantise_as<std::int32_t>(k, v, count, q);
+    case ScalarType::f32:
+      // stored_as's float32 rule, inlined: finite values only come from keys.
+      for (std::size_t i = 0; i < count; ++i) {
+        const double x = key_value(q, key_at(k, i));
+        constexpr double m = static_cast<double>(std::numeric_limits<float>::max());
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        v[i] = x > m * (1 + 1e-7) ? inf : x < -m * (1 + 1e-7) ? -inf : static_cast<double>(static_cast<float>(std::clamp(x, -m, m)));
+      }
+      return;
+    case ScalarType::f64:
+      for (std::size_t i = 0; i < count; ++i) v[i] = key_value(q, key_at(k, i));
+      return;
     default:
       for (std::size_t i = 0; i < count; ++i) v[i] = stored_as(key_value(q, key_at(k, i)), type);
   }
