@@ -32,10 +32,15 @@ constexpr int kMaxExponent = 62;
 
 int bit_width(std::uint64_t v) noexcept { return v == 0 ? 0 : 64 - __builtin_clzll(v); }
 
+// The context helpers below are written without branches: their inputs are the data,
+// so a branch in them would be mispredicted about as often as the data surprises
+// (callgrind's branch simulation counted 4.6 M such mispredictions in decoding the CT
+// head at E = 1, a quarter of the decoder's).
+
 // Neighbourhood activity -> one of kMagClasses classes (0, 1, 2 exactly; then by octave).
-int magnitude_class(std::uint64_t s) noexcept {
-  if (s < 3) return static_cast<int>(s);
-  return std::min(kMagClasses - 1, 1 + bit_width(s));
+inline int magnitude_class(std::uint64_t s) noexcept {
+  const int octave_class = std::min(kMagClasses - 1, 1 + 64 - __builtin_clzll(s | 1));
+  return s < 3 ? static_cast<int>(s) : octave_class;
 }
 
 inline std::uint64_t mag(std::int64_t v) noexcept {
@@ -43,7 +48,7 @@ inline std::uint64_t mag(std::int64_t v) noexcept {
   return (static_cast<std::uint64_t>(v) ^ m) - m;
 }
 
-int parent_class(std::uint64_t p) noexcept { return p == 0 ? 0 : (p < 3 ? 1 : 2); }
+inline int parent_class(std::uint64_t p) noexcept { return static_cast<int>(p != 0) + static_cast<int>(p >= 3); }
 
 struct Models {
   std::array<BitModel, kMagClasses * kParentClasses> zero;
@@ -53,7 +58,7 @@ struct Models {
   std::array<BitModel, 4> zero_row;
 };
 
-int sign_of(std::int64_t v) noexcept { return v > 0 ? 1 : (v < 0 ? 2 : 0); }
+inline int sign_of(std::int64_t v) noexcept { return static_cast<int>(v > 0) + 2 * static_cast<int>(v < 0); }
 
 // Walks the slab in coding order, handing the coder each position with its contexts.
 // Before each row, `skip_row(row0, width, context)` may code the row as all zero (detail
