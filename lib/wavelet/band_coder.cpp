@@ -61,9 +61,9 @@ struct Models {
 inline int sign_of(std::int64_t v) noexcept { return static_cast<int>(v > 0) + 2 * static_cast<int>(v < 0); }
 
 // Walks the slab in coding order, handing the coder each position with its contexts.
-// Before each row, `skip_row(row0, width, context)` may code the row as all zero (detail
-// bands: one decision for a row of zeros instead of one per coefficient) and return
-// true; the context says whether the rows at y-1 and z-1 were all zero.
+// Before each row, `skip_row(row0, width, context)` may code the row as all zero (one
+// decision for a row of zeros instead of one per coefficient) and return true; the
+// context says whether the rows at y-1 and z-1 were all zero.
 template <typename SkipRow, typename Visit>
 void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent, const Slab& slab,
           const SkipRow& skip_row, const Visit& visit) {
@@ -189,23 +189,22 @@ namespace {
                   band.orientation, slab.z0, slab.z1 - 1);
 }
 
-// The decoder's walk: the same order and the same contexts as walk() + encode_slab,
-// specialised for the band kind so the per-coefficient loop has no tests for it. The
-// left neighbours a = x-1 and d = (x-1, y-1) are carried in registers from the previous
-// coefficient; a corrupt exponent throws at once (the encoder never writes one).
+// The streams of a slab (join_streams) and their decoders.
+struct SlabStreams {
+  std::string_view main, side, raw;
+};
 struct Decoders {
   RangeDecoder main, side;
   BitReader raw;
 };
 
-// The streams of a slab (join_streams).
-struct SlabStreams {
-  std::string_view main, side, raw;
-};
-
-// Returns false when a stream was read past its end. The decoders are local objects
-// whose address never escapes, so their state lives in registers, not in memory that
-// every store of a coefficient might alias.
+// The decoder's walk: the same order and the same contexts as walk() + encode_slab,
+// specialised for the band kind so the per-coefficient loop has no tests for it. The
+// left neighbours a = x-1 and d = (x-1, y-1) are carried in registers from the previous
+// coefficient; a corrupt exponent throws at once (the encoder never writes one).
+// Returns false when a stream was read past its end. The decoders are local to the
+// function (their address never escapes), so the compiler may keep their state in
+// registers rather than reload it after every store of a coefficient.
 template <bool Approx, bool HasParent>
 bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* data, const Dims& dims, const Subband& band,
                       const Subband* parent, const Slab& slab, int limit) {
