@@ -116,9 +116,10 @@ double step_at(const VwHeader& h, const std::vector<std::uint8_t>& roi, std::siz
 // (their bytes; a zero double and a zero int64 are the same bytes, so the zeroed
 // buffer already stands for the missing detail bands), then, transformed back and
 // dequantised in place, the voxel values. One buffer instead of two halves what a
-// decode allocates and touches. The int64 stores happen in decode_slab and inverse_3d
-// (other translation units, no LTO), the keys are read back through memcpy and every
-// element is rewritten as a double before any double is read.
+// decode allocates and touches. The library is compiled with -fno-strict-aliasing
+// (lib/wavelet/CMakeLists.txt), which makes the int64 view of the double storage defined
+// for GCC and Clang; the keys are read back through memcpy and every element is
+// rewritten as a double before any double is read.
 // Reserves room for n doubles and, on Linux, asks for transparent huge pages for it
 // before anything touches it: a decode writes every voxel once, and 4 KiB pages would
 // cost a page fault per 512 voxels (an eighth of the decode time on the CT head).
