@@ -5,14 +5,16 @@
 //              (x-1, y-1) of the same band, and the parent (same orientation, next
 //              coarser level, at half the position), which the decoder already has;
 //   exponent e = floor(log2 |v|) in unary, each bit with its own adaptive model;
-//   the bit below the leading one adaptively, the remaining bits directly;
+//   the bit below the leading one adaptively, the remaining e - 1 bits as they are;
 //   the sign, modelled on the signs of the x-1 and y-1 neighbours.
 // The approximation band codes v minus a prediction instead: the median edge detector
 // of JPEG-LS (LOCO-I) from x-1, y-1 and (x-1, y-1), else the first available neighbour.
-// Detail bands first say per row (x line) whether it is all zero, with a context from
-// the rows at y-1 and z-1, and code nothing more for such rows.
-// A band is cut into slabs of kSlabPlanes z-planes, each an independent stream, so
-// slabs decode in parallel and a damaged stream spoils one slab only.
+// Every band first says per row (x line) whether it is all zero, with a context from
+// the rows at y-1 and z-1, and codes nothing more for such rows.
+// A band is cut into slabs of kSlabPlanes z-planes, each coded independently, so
+// slabs decode in parallel and a damaged stream spoils one slab only. A slab's bytes are
+// three streams (format version 2): range-coded A (row flags, zero flags, exponents),
+// range-coded B (second bits, signs) and the raw bits R.
 
 #include <cstdint>
 #include <string>

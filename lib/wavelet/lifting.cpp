@@ -202,7 +202,7 @@ namespace {
 constexpr std::size_t kBlock = 16;
 
 template <typename T, typename LineOp>
-void transform_axis(std::vector<T>& data, const Dims& dims, const Dims& c, int axis, int threads, const LineOp& op) {
+void transform_axis(T* data, const Dims& dims, const Dims& c, int axis, int threads, const LineOp& op) {
   const std::size_t n = c[axis];
   if (n < 2) return;
   const std::size_t sx = 1, sy = dims[0], sz = dims[0] * dims[1];
@@ -228,6 +228,20 @@ void transform_axis(std::vector<T>& data, const Dims& dims, const Dims& c, int a
         for (std::size_t j = 0; j < w; ++j) base[k * stride + j] = lines[j * n + k];
     }
   });
+}
+
+// Whether count values are all zero: eight at a time, so the loop vectorises, and a
+// return at the first block holding a non-zero.
+bool all_zero(const std::int64_t* p, std::size_t count) noexcept {
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8) {
+    std::int64_t any = 0;
+    for (std::size_t j = 0; j < 8; ++j) any |= p[i + j];
+    if (any != 0) return false;
+  }
+  std::int64_t any = 0;
+  for (; i < count; ++i) any |= p[i];
+  return any == 0;
 }
 
 // The inverse integer lifting of many lines at once, stored sample-major: row k of `src`
@@ -280,7 +294,7 @@ void inverse_rows(const std::int64_t* src, std::size_t w, std::size_t n, Wavelet
 // cache lines, one memcpy per sample) and transformed from there straight back.
 constexpr std::size_t kRowBlock = 256;
 
-void inverse_axis_rows(std::vector<std::int64_t>& data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
+void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
                        int threads) {
   const std::size_t n = c[axis];
   if (n < 2) return;
@@ -295,6 +309,11 @@ void inverse_axis_rows(std::vector<std::int64_t>& data, const Dims& dims, const 
     for (std::size_t x0 = 0; x0 < c[0]; x0 += kRowBlock) {
       const std::size_t w = std::min(kRowBlock, c[0] - x0);
       std::int64_t* base = &data[o * outer_stride + x0];
+      // All zero in, all zero out, in place: sparse volumes (a plume in empty space)
+      // skip most of their blocks. Dense data stops looking at its first non-zero.
+      bool zero = true;
+      for (std::size_t k = 0; k < n && zero; ++k) zero = all_zero(base + k * stride, w);
+      if (zero) continue;
       for (std::size_t k = 0; k < n; ++k) std::memcpy(&rows[k * w], base + k * stride, w * sizeof(std::int64_t));
       inverse_rows(rows.get(), w, n, wav, base, stride);
     }
@@ -307,12 +326,18 @@ void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
   auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { forward_line(line, n, w, scratch); };
   for (int l = 0; l < levels; ++l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 0; a < 3; ++a) transform_axis(data, dims, c, a, threads, op);
+    for (int a = 0; a < 3; ++a) transform_axis(data.data(), dims, c, a, threads, op);
   }
 }
 
 void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads) {
-  auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) { inverse_line(line, n, w, scratch); };
+  inverse_3d(data.data(), dims, levels, w, threads);
+}
+
+void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads) {
+  auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) {
+    if (!all_zero(line, n)) inverse_line(line, n, w, scratch);
+  };
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
     inverse_axis_rows(data, dims, c, 2, w, threads);
@@ -325,7 +350,7 @@ void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int thr
   auto op = [](double* line, std::size_t n, double* scratch) { forward_line_97(line, n, scratch); };
   for (int l = 0; l < levels; ++l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 0; a < 3; ++a) transform_axis(data, dims, c, a, threads, op);
+    for (int a = 0; a < 3; ++a) transform_axis(data.data(), dims, c, a, threads, op);
   }
 }
 
@@ -333,7 +358,7 @@ void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int thr
   auto op = [](double* line, std::size_t n, double* scratch) { inverse_line_97(line, n, scratch); };
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
-    for (int a = 2; a >= 0; --a) transform_axis(data, dims, c, a, threads, op);
+    for (int a = 2; a >= 0; --a) transform_axis(data.data(), dims, c, a, threads, op);
   }
 }
 

@@ -57,6 +57,8 @@ void inverse_line_97(double* line, std::size_t n, double* scratch);
 // cdf97 only for the double ones. `threads` >= 1.
 void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads);
 void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads);
+// The same on a buffer of dims[0] * dims[1] * dims[2] values.
+void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads);
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 

@@ -56,6 +56,12 @@ Range range_of(const Volume& v) {
   return r;
 }
 
+// The value of key 0 for float data: 0 itself when the range holds it, so that empty
+// space (a plume's surroundings) has keys, and wavelet coefficients, of zero -- rows
+// the coder skips with one decision and blocks the inverse transform skips -- and
+// decodes to exact zeros; else the middle of the range.
+double float_offset(const Range& r) noexcept { return (r.lo <= 0 && 0 <= r.hi) ? 0.0 : 0.5 * (r.lo + r.hi); }
+
 void refuse_nonfinite(const Range& r) {
   if (r.nonfinite > 0)
     throw bad_input("{} voxels are NaN or infinite: no error bound can hold for them (only lossless coding keeps them)",
@@ -111,7 +117,7 @@ Quantiser plan_max_error(const Volume& volume, double bound) {
     q.offset = std::round(r.lo);
   } else {
     q.step = 2.0 * bound;
-    q.offset = 0.5 * (r.lo + r.hi);
+    q.offset = float_offset(r);
   }
   if ((r.hi - r.lo) / q.step > kMaxKey)
     throw bad_input("error bound {} is too small for the value range [{}, {}] (more than 2^50 steps)", bound, r.lo, r.hi);
@@ -124,7 +130,7 @@ Quantiser plan_step(const Volume& volume, double step) {
   refuse_nonfinite(r);
   Quantiser q;
   q.step = step;
-  q.offset = scalar_type_is_integer(volume.type) ? std::round(r.lo) : 0.5 * (r.lo + r.hi);
+  q.offset = scalar_type_is_integer(volume.type) ? std::round(r.lo) : float_offset(r);
   if ((r.hi - r.lo) / q.step > kMaxKey)
     throw bad_input("quantiser step {} is too small for the value range [{}, {}]", step, r.lo, r.hi);
   return q;
@@ -162,9 +168,60 @@ std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int
 
 namespace {
 
+// Keys are read through memcpy: `keys` may be the very storage the values are written to
+// (dequantise_in_place), the key of voxel i read before its value is written.
+inline std::int64_t key_at(const unsigned char* keys, std::size_t i) noexcept {
+  std::int64_t k;
+  std::memcpy(&k, keys + 8 * i, 8);
+  return k;
+}
+
 template <typename T>
-void dequantise_as(const std::int64_t* k, double* v, std::size_t count, const Quantiser& q) noexcept {
-  for (std::size_t i = 0; i < count; ++i) v[i] = clamp_round<T>(key_value(q, k[i]));
+void dequantise_as(const unsigned char* k, double* v, std::size_t count, const Quantiser& q) noexcept {
+  // An integer step and offset (integer data, docs/volwave.md §3) give integral values
+  // below 2^53, so the rounding is the identity there and only the clamp is left: a
+  // branch-free loop. Beyond 2^53 every double is integral too, and the clamp settles it.
+  const double lo = static_cast<double>(std::numeric_limits<T>::lowest());
+  const double hi = static_cast<double>(std::numeric_limits<T>::max());
+  if (q.step == std::floor(q.step) && q.offset == std::floor(q.offset)) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const double x = q.offset + q.step * static_cast<double>(key_at(k, i));
+      v[i] = std::min(hi, std::max(lo, x));
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < count; ++i) v[i] = clamp_round<T>(key_value(q, key_at(k, i)));
+}
+
+void dequantise_block(const unsigned char* k, double* v, std::size_t count, const Quantiser& q, ScalarType type) {
+  if (q.kind == KeyKind::float32_bits) {
+    for (std::size_t i = 0; i < count; ++i) v[i] = static_cast<double>(key_float(key_at(k, i)));
+    return;
+  }
+  // One loop per stored type, so the per-voxel work is a multiply, a rounding and a
+  // clamp (the same arithmetic as stored_as(key_value(...)), hence the same values).
+  switch (type) {
+    case ScalarType::u8: return dequantise_as<std::uint8_t>(k, v, count, q);
+    case ScalarType::i8: return dequantise_as<std::int8_t>(k, v, count, q);
+    case ScalarType::u16: return dequantise_as<std::uint16_t>(k, v, count, q);
+    case ScalarType::i16: return dequantise_as<std::int16_t>(k, v, count, q);
+    case ScalarType::u32: return dequantise_as<std::uint32_t>(k, v, count, q);
+    case ScalarType::i32: return dequantise_as<std::int32_t>(k, v, count, q);
+    case ScalarType::f32:
+      // stored_as's float32 rule, inlined: finite values only come from keys.
+      for (std::size_t i = 0; i < count; ++i) {
+        const double x = key_value(q, key_at(k, i));
+        constexpr double m = static_cast<double>(std::numeric_limits<float>::max());
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        v[i] = x > m * (1 + 1e-7) ? inf : x < -m * (1 + 1e-7) ? -inf : static_cast<double>(static_cast<float>(std::clamp(x, -m, m)));
+      }
+      return;
+    case ScalarType::f64:
+      for (std::size_t i = 0; i < count; ++i) v[i] = key_value(q, key_at(k, i));
+      return;
+    default:
+      for (std::size_t i = 0; i < count; ++i) v[i] = stored_as(key_value(q, key_at(k, i)), type);
+  }
 }
 
 }  // namespace
@@ -174,27 +231,18 @@ void dequantise(const std::vector<std::int64_t>& keys, const Quantiser& q, Scala
   values.resize(keys.size());
   const std::size_t block = 1 << 16;
   const std::size_t n = keys.size();
+  const auto* k = reinterpret_cast<const unsigned char*>(keys.data());
   parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
     const std::size_t begin = b * block, end = std::min(n, (b + 1) * block);
-    const std::int64_t* k = keys.data() + begin;
-    double* v = values.data() + begin;
-    const std::size_t count = end - begin;
-    if (q.kind == KeyKind::float32_bits) {
-      for (std::size_t i = 0; i < count; ++i) v[i] = static_cast<double>(key_float(k[i]));
-      return;
-    }
-    // One loop per stored type, so the per-voxel work is a multiply, a rounding and a
-    // clamp (the same arithmetic as stored_as(key_value(...)), hence the same values).
-    switch (type) {
-      case ScalarType::u8: return dequantise_as<std::uint8_t>(k, v, count, q);
-      case ScalarType::i8: return dequantise_as<std::int8_t>(k, v, count, q);
-      case ScalarType::u16: return dequantise_as<std::uint16_t>(k, v, count, q);
-      case ScalarType::i16: return dequantise_as<std::int16_t>(k, v, count, q);
-      case ScalarType::u32: return dequantise_as<std::uint32_t>(k, v, count, q);
-      case ScalarType::i32: return dequantise_as<std::int32_t>(k, v, count, q);
-      default:
-        for (std::size_t i = 0; i < count; ++i) v[i] = stored_as(key_value(q, k[i]), type);
-    }
+    dequantise_block(k + 8 * begin, values.data() + begin, end - begin, q, type);
+  });
+}
+
+void dequantise_in_place(double* buffer, std::size_t n, const Quantiser& q, ScalarType type, int threads) {
+  const std::size_t block = 1 << 16;
+  parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
+    const std::size_t begin = b * block, end = std::min(n, (b + 1) * block);
+    dequantise_block(reinterpret_cast<const unsigned char*>(buffer + begin), buffer + begin, end - begin, q, type);
   });
 }
 

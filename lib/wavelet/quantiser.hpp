@@ -57,5 +57,8 @@ std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int
 // Values from keys, already converted to `type`.
 void dequantise(const std::vector<std::int64_t>& keys, const Quantiser& q, ScalarType type,
                 std::vector<double>& values, int threads);
+// The same in place: `buffer` holds n int64 keys (their bytes) and is overwritten with
+// their values (the decoder's one buffer for coefficients and voxels).
+void dequantise_in_place(double* buffer, std::size_t n, const Quantiser& q, ScalarType type, int threads);
 
 }  // namespace fest::wavelet

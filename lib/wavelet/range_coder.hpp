@@ -1,8 +1,9 @@
 #pragma once
-// The adaptive binary range coder that turns the context models of band_coder.hpp into
-// bytes (docs/volwave.md §4): lib/core's coder (core/range_coder.hpp) in the .vw stream's
-// form, a BitModel per context and LZMA's five flush bytes at the end. It has no model of
-// its own.
+// The entropy coders of a .vw subband slab (docs/volwave.md §4): lib/core's adaptive
+// binary range coder (core/range_coder.hpp) with a BitModel per context, ended with as
+// few bytes as identify the final interval, and a plain bit stream for the bits that no
+// model predicts (the low bits of large magnitudes). A slab has two range-coded streams
+// and one bit stream: their decoding chains are independent, so a CPU overlaps them.
 
 #include <cstdint>
 #include <string>
@@ -20,27 +21,83 @@ struct BitModel {
 class RangeEncoder {
  public:
   __attribute__((always_inline)) void encode(BitModel& m, int bit) { coder_.bit(m.p, bit); }
-  // A bit of probability 1/2 with no model (low bits of large magnitudes).
-  void encode_direct(int bit) { coder_.bypass(bit); }
-  // Flushes and returns the coded bytes.
-  std::string finish() { return coder_.finish_flushed(); }
+  // Ends the stream (range_coding::RangeEncoder::finish: the shortest tail) and returns it.
+  std::string finish() { return coder_.finish(); }
 
  private:
   range_coding::RangeEncoder coder_;
 };
 
-// Reads what RangeEncoder wrote. Reading past the end yields zero bytes and sets
-// overrun(), so a truncated or corrupt stream can never read outside `bytes`; the
-// caller turns overrun() into an error.
+// Reads what RangeEncoder wrote. Reading past the end yields zero bytes, so a truncated
+// or corrupt stream can never read outside `bytes`; truncated() says that more zeros
+// were needed than the shortest tail leaves out, which the caller turns into an error.
 class RangeDecoder {
  public:
-  explicit RangeDecoder(std::string_view bytes) : coder_(bytes, range_coding::RangeDecoder::FirstByte::stored) {}
+  explicit RangeDecoder(std::string_view bytes) : coder_(bytes, range_coding::RangeDecoder::FirstByte::implied) {}
   __attribute__((always_inline)) int decode(BitModel& m) { return coder_.bit(m.p); }
-  __attribute__((always_inline)) int decode_direct() { return coder_.bypass(); }
-  bool overrun() const noexcept { return coder_.overrun() != 0; }
+  bool truncated() const noexcept { return coder_.truncated(); }
 
  private:
   range_coding::RangeDecoder coder_;
+};
+
+// Bits written low first into bytes (the first bit is bit 0 of byte 0).
+class BitWriter {
+ public:
+  // The `count` (0..32) low bits of `value`.
+  void put(std::uint64_t value, int count) {
+    acc_ |= (value & ((std::uint64_t{1} << count) - 1)) << filled_;
+    filled_ += count;
+    while (filled_ >= 8) {
+      out_.push_back(static_cast<char>(acc_ & 0xFF));
+      acc_ >>= 8;
+      filled_ -= 8;
+    }
+  }
+  std::string finish() {
+    if (filled_ > 0) out_.push_back(static_cast<char>(acc_ & 0xFF));
+    acc_ = 0;
+    filled_ = 0;
+    return std::move(out_);
+  }
+
+ private:
+  std::string out_;
+  std::uint64_t acc_ = 0;
+  int filled_ = 0;
+};
+
+// Reads what BitWriter wrote; past the end it reads zeros and overrun() turns true.
+class BitReader {
+ public:
+  explicit BitReader(std::string_view bytes)
+      : p_(reinterpret_cast<const std::uint8_t*>(bytes.data())), end_(p_ + bytes.size()),
+        available_(8 * static_cast<std::uint64_t>(bytes.size())) {}
+  // `count` (0..32) bits, the first read in bit 0.
+  __attribute__((always_inline)) std::uint64_t get(int count) {
+    if (filled_ < count) refill();
+    const std::uint64_t v = acc_ & ((std::uint64_t{1} << count) - 1);
+    acc_ >>= count;
+    filled_ -= count;
+    consumed_ += static_cast<std::uint64_t>(count);
+    return v;
+  }
+  // More bits were read than the stream holds.
+  bool overrun() const noexcept { return consumed_ > available_; }
+
+ private:
+  void refill() {
+    while (filled_ <= 56) {
+      const std::uint64_t byte = p_ < end_ ? *p_++ : 0;
+      acc_ |= byte << filled_;
+      filled_ += 8;
+    }
+  }
+  const std::uint8_t* p_;
+  const std::uint8_t* end_;
+  std::uint64_t acc_ = 0;
+  int filled_ = 0;
+  std::uint64_t available_, consumed_ = 0;
 };
 
 }  // namespace fest::wavelet

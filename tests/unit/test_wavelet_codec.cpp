@@ -48,24 +48,37 @@ double max_abs(const Volume& a, const Volume& b) {
 
 }  // namespace
 
-TEST(WaveletCodec, RangeCoderRoundTrips) {
+TEST(WaveletCodec, RangeCoderAndBitStreamRoundTrip) {
+  // A slab's streams: modelled decisions in the range coder, the raw low bits of
+  // magnitudes (0 to 32 of them at a time) in the bit stream beside it.
   std::mt19937_64 rng(1);
   std::vector<int> bits(5000);
   for (auto& b : bits) b = (rng() % 10) < 2;
+  std::vector<std::pair<std::uint64_t, int>> raw(3000);
+  for (auto& r : raw) {
+    r.second = static_cast<int>(rng() % 33);
+    r.first = rng() & ((std::uint64_t{1} << r.second) - 1);
+  }
   RangeEncoder enc;
+  BitWriter bw;
   BitModel m;
-  for (std::size_t i = 0; i < bits.size(); ++i) {
-    if (i % 3 == 0) enc.encode_direct(bits[i]);
-    else enc.encode(m, bits[i]);
-  }
-  const std::string bytes = enc.finish();
+  for (int b : bits) enc.encode(m, b);
+  for (const auto& r : raw) bw.put(r.first, r.second);
+  const std::string bytes = enc.finish(), rbytes = bw.finish();
   RangeDecoder dec(bytes);
+  BitReader br(rbytes);
   BitModel m2;
-  for (std::size_t i = 0; i < bits.size(); ++i) {
-    const int b = (i % 3 == 0) ? dec.decode_direct() : dec.decode(m2);
-    ASSERT_EQ(b, bits[i]) << i;
-  }
-  EXPECT_FALSE(dec.overrun());
+  for (std::size_t i = 0; i < bits.size(); ++i) ASSERT_EQ(dec.decode(m2), bits[i]) << i;
+  for (std::size_t i = 0; i < raw.size(); ++i) ASSERT_EQ(br.get(raw[i].second), raw[i].first) << i;
+  EXPECT_FALSE(dec.truncated());
+  EXPECT_FALSE(br.overrun());
+  // Reading past the end is seen, and yields zeros.
+  EXPECT_EQ(br.get(9), 0u);  // the last byte has at most 7 bits of padding
+  EXPECT_TRUE(br.overrun());
+  RangeDecoder cut(std::string_view(bytes).substr(0, bytes.size() / 2));
+  BitModel m3;
+  for (std::size_t i = 0; i < bits.size(); ++i) (void)cut.decode(m3);
+  EXPECT_TRUE(cut.truncated());
 }
 
 TEST(WaveletCodec, MaxErrorHoldsOnEveryVoxel) {
