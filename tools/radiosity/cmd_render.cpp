@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/threads.hpp"
 #include "formats/detect.hpp"
 #include "formats/image/image_io.hpp"
@@ -16,7 +17,7 @@ namespace fest::radiosity_tool {
 
 int run_render(const RenderArgs& args) {
   const std::string bytes = read_input(args.input);
-  const std::string where = is_stdio(args.input) ? "standard input" : args.input;
+  const std::string where = input_name(args.input);
   Mesh mesh;
   try {
     const formats::Format f = formats::detect_format(bytes, where);
