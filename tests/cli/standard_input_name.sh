@@ -17,6 +17,7 @@ named() {
   expect_clean_failure "$status" "$tool"
   expect_stderr_has '[(]standard input[):,]'
   check "no other spelling of standard input" bash -c "! grep -Eq '\\bstdin\\b|<stdin>|\\(-\\)' '$err'"
+  check "named once" test "$(grep -o 'standard input' "$err" | wc -l)" -eq 1
   check "no library text" bash -c "! grep -Eq 'last read|json\\.exception|syntax error while parsing' '$err'"
 }
 
@@ -29,6 +30,7 @@ case_ "volrender mip: no volume";                       named 3 volrender mip - 
 case_ "isosurf exact: no volume";                       named 3 isosurf exact - --iso 0.5 -o "$WORK/s.ply"
 case_ "volwave decode: no .vw stream";                  named 3 volwave decode - -o "$WORK/w.nii"
 case_ "lmfsim export: no trajectory";                   named 3 lmfsim export --scene "$WORK/c2.json" --ply "$WORK/ply"
+case_ "radiosity render: no mesh (was named twice)";    named 3 radiosity render - -o "$WORK/m.png"
 stdin_file="$WORK/wrong.csv"
 case_ "quatpath: a key table without its columns";       named 3 quatpath -
 case_ "patnet markov: a transcript without its columns"; named 3 patnet markov -
