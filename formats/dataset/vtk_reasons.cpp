@@ -61,18 +61,18 @@ std::string cell_array_words(std::string_view text) {
 
 std::string fest_words_for_vtk_reason(const std::string& vtk_text) {
   const std::string_view text = vtk_text;
-  if (starts_with(text, "Cannot read cell ") || starts_with(text, "Cannot read face") ||
-      starts_with(text, "Cannot read faces"))
+  // Before the cell arrays: "Cannot read cell data array" also starts "Cannot read cell ".
+  for (const char* kind : {"point", "cell", "row"}) {
+    if (starts_with(text, fmt::format("Cannot read {} data array \"", kind)))
+      return fmt::format("{} data array \"{}\" of {} holds fewer values than the piece has {}s", kind,
+                         quoted_after(text), piece_words(piece_of(text)), kind);
+  }
+  if (starts_with(text, "Cannot read cell ") || starts_with(text, "Cannot read face"))
     return cell_array_words(text);
   if (starts_with(text, "Error reading cell offsets"))
     return "the cell offsets are not of an integer type";
   if (starts_with(text, "Cannot read points array"))
     return fmt::format("the points of {} hold fewer values than its NumberOfPoints needs", piece_words(piece_of(text)));
-  for (const char* kind : {"point", "cell", "row"}) {
-    if (starts_with(text, fmt::format("Cannot read {} data array \"", kind)))
-      return fmt::format("{} data array \"{}\" of {} holds fewer values than the piece has {}s", kind,
-                         quoted_after(text), piece_words(piece_of(text)), kind == std::string_view("row") ? "row" : kind);
-  }
   if (starts_with(text, "Error reading uncompressed binary data header") ||
       starts_with(text, "Error reading compression header") ||
       starts_with(text, "Error reading beginning of compression header")) {
