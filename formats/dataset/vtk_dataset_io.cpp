@@ -34,11 +34,13 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "core/error_detail.hpp"
 #include "core/quote.hpp"
 #include "formats/dataset/dataset_validate.hpp"
 #include "formats/dataset/guarded_xml_reader.hpp"
 #include "formats/dataset/legacy_scan.hpp"
 #include "formats/dataset/vtk_messages.hpp"
+#include "formats/dataset/vtk_reasons.hpp"
 #include "formats/dataset/xml_blocks.hpp"
 #include "formats/dataset/xml_scan.hpp"
 #include "lib/core/error.hpp"
@@ -67,15 +69,24 @@ const char* error_code_text(unsigned long code) {
   }
 }
 
-// What VTK said, as the detail of fest's message: it may quote input bytes, so
-// those are escaped (xml_blocks.hpp) and the text is cut short.
+// What VTK said, kept as the detail of fest's message (shown with -v only): it may
+// quote input bytes, so those are escaped (xml_blocks.hpp) and the text is cut short.
 std::string vtk_says(const std::string& text) { return "VTK: " + printable_bytes(text, 160); }
+
+// fest's sentence for what VTK said -- a reason it recognises in its own words, else
+// `what` -- with VTK's text behind it as the detail.
+Error refused_by_vtk(const char* format, const char* what, const std::string& vtk_text) {
+  std::string words = fest_words_for_vtk_reason(vtk_text);
+  if (words.empty()) words = what;
+  return Error(Status::bad_input, with_error_detail(fmt::format("{}: {}", format, words), vtk_says(vtk_text)));
+}
 
 // The XML readers warn about files VTK itself writes (an empty grid has "No Points
 // element"), and say what is wrong through errors, so only the legacy readers'
 // warnings count: there "No points read!" is how a file that stops early shows.
-// `what` says in fest's words what went wrong ("the file does not read as its markup
-// declares"); VTK's text follows it as the detail.
+// `what` says in fest's words what went wrong when VTK's reason is not one fest
+// recognises ("the data do not read as the markup declares them"); VTK's text is the
+// error's detail, never the message.
 void fail_on_messages(const MessageCollector& messages, const char* format, bool warnings_count, const char* what) {
   for (const std::string& error : messages.errors()) {
     // vtkXMLUnstructuredDataReader says this as an error about the files its own
@@ -87,14 +98,16 @@ void fail_on_messages(const MessageCollector& messages, const char* format, bool
     if (std::sscanf(error.c_str(), "Error parsing XML in stream at line %lu, column %lu, byte index %lu: %n", &line,
                     &column, &byte, &reason_at) == 3 &&
         reason_at > 0)
-      throw bad_input("{}: not well-formed XML at line {}, column {} (byte {}): {}", format, line, column + 1, byte,
-                      quoted_bytes(std::string_view(error).substr(static_cast<std::size_t>(reason_at)), 60));
-    throw bad_input("{}: {} ({})", format, what, vtk_says(error));
+      throw Error(Status::bad_input,
+                  with_error_detail(fmt::format("{}: the markup is not well-formed XML at line {}, column {} (byte {})",
+                                                format, line, column + 1, byte),
+                                    "expat: " + quoted_bytes(std::string_view(error).substr(static_cast<std::size_t>(reason_at)), 60)));
+    throw refused_by_vtk(format, what, error);
   }
   if (!warnings_count) return;
   for (const std::string& warning : messages.warnings())
     if (!harmless_warning(warning))
-      throw bad_input("{}: {} ({})", format, what, vtk_says(warning));
+      throw refused_by_vtk(format, what, warning);
 }
 
 // VTK code is not written for exceptions, but allocations inside it can still throw.
@@ -107,7 +120,8 @@ void run_vtk(const char* format, Work work) {
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    throw bad_input("{}: {}", format, e.what());
+    throw Error(Status::bad_input, with_error_detail(fmt::format("{}: the data do not read as the file declares them", format),
+                                                     vtk_says(e.what())));
   }
 }
 

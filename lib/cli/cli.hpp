@@ -17,6 +17,7 @@
 
 #include "cli/number_range.hpp"
 #include "core/error.hpp"
+#include "core/error_detail.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 
@@ -67,6 +68,8 @@ int run(CLI::App& app, int argc, char** argv, Body&& body) {
   return run_tool(tool, [&]() -> int {
     try {
       app.parse(argc, argv);
+      if (const CLI::Option* verbose = app.get_option_no_throw("--verbose"); verbose != nullptr && verbose->count() > 0)
+        show_error_details(true);
       check_numbers(app);
     } catch (const CLI::ParseError& e) {
       if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);

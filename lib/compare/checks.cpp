@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::compare {
 
@@ -40,11 +41,18 @@ Check parse_threshold(const std::string& text) {
   c.metric = trim(text.substr(0, pos));
   c.at_most = at_most;
   const std::string value = trim(text.substr(pos + 2));
+  const std::string quoted = quoted_bytes(text, 40);
   char* end = nullptr;
   errno = 0;
   c.limit = std::strtod(value.c_str(), &end);
-  if (c.metric.empty() || value.empty() || *end != '\0' || errno == ERANGE || std::isnan(c.limit))
-    throw usage_error("threshold '{}' is not METRIC<=VALUE or METRIC>=VALUE", text);
+  if (c.metric.empty() || value.empty() || *end != '\0')
+    throw usage_error("threshold '{}' is not METRIC<=VALUE or METRIC>=VALUE", quoted);
+  // A limit compares with a measured number: NaN compares false with everything and an
+  // infinity (or a value strtod overflows to one, 1e999) passes or fails every finite
+  // measurement; say so instead of a check that means nothing.
+  if (std::isnan(c.limit) || std::isinf(c.limit) || (errno == ERANGE && std::abs(c.limit) > 1))
+    throw usage_error("threshold '{}': the value must be a finite number (at most about 1.8e308 in size), not {}",
+                      quoted, quoted_bytes(value, 24));
   return c;
 }
 

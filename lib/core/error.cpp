@@ -1,10 +1,15 @@
 #include "core/error.hpp"
 
+#include "core/error_detail.hpp"
+#include "core/input_name.hpp"
+
 namespace fest {
 
 std::string with_location(const std::string& what, const std::string& where) {
-  if (where.empty() || where == "-") return what + " (standard input)";
-  return what + " (" + where + ")";
+  // The place belongs to the message a person reads, before any library's detail.
+  const auto [message, detail] = split_error_detail(what);
+  const std::string place = where.empty() || where == "-" ? std::string(standard_input_name) : where;
+  return with_error_detail(std::string(message) + " (" + place + ")", detail);
 }
 
 const char* status_name(Status s) noexcept {

@@ -1,4 +1,5 @@
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -17,9 +18,6 @@ namespace {
 
 std::string errno_text() { return std::strerror(errno); }
 
-std::string display_name(const std::string& path) {
-  return is_stdio(path) ? std::string("standard input") : path;
-}
 
 void write_all(int fd, std::string_view bytes, const std::string& where) {
   const char* p = bytes.data();
@@ -38,6 +36,8 @@ void write_all(int fd, std::string_view bytes, const std::string& where) {
 }  // namespace
 
 bool is_stdio(std::string_view path) noexcept { return path.empty() || path == "-"; }
+
+std::string input_name(const std::string& path) { return is_stdio(path) ? std::string(standard_input_name) : path; }
 
 std::uint64_t max_input_bytes() {
   // 8 GiB: a third of the project's reference machine; anything larger is almost
@@ -59,7 +59,7 @@ std::string read_input(const std::string& path) {
   struct stat st {};
   if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
     if (!from_stdin) ::close(fd);
-    throw io_error("is a directory ({})", display_name(path));
+    throw io_error("is a directory ({})", input_name(path));
   }
   const std::uint64_t limit = max_input_bytes();
   std::string data;
@@ -67,7 +67,7 @@ std::string read_input(const std::string& path) {
     if (static_cast<std::uint64_t>(st.st_size) > limit) {
       if (!from_stdin) ::close(fd);
       throw bad_input("input of {} bytes exceeds the limit of {} bytes; raise FEST_MAX_INPUT_BYTES ({})",
-                      st.st_size, limit, display_name(path));
+                      st.st_size, limit, input_name(path));
     }
     data.reserve(static_cast<std::size_t>(st.st_size));
   }
@@ -80,12 +80,12 @@ std::string read_input(const std::string& path) {
       int saved = errno;
       if (!from_stdin) ::close(fd);
       errno = saved;
-      throw io_error("cannot read: {} ({})", errno_text(), display_name(path));
+      throw io_error("cannot read: {} ({})", errno_text(), input_name(path));
     }
     if (data.size() + static_cast<std::size_t>(n) > limit) {
       if (!from_stdin) ::close(fd);
       throw bad_input("input exceeds the limit of {} bytes; raise FEST_MAX_INPUT_BYTES ({})", limit,
-                      display_name(path));
+                      input_name(path));
     }
     data.append(chunk.data(), static_cast<std::size_t>(n));
   }

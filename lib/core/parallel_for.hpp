@@ -8,14 +8,38 @@
 #include <cstddef>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
 namespace fest {
 
+namespace detail {
+
+// Test hook: when 0 or more, parallel_for starts at most this many threads besides the
+// calling one and the next start fails the way std::thread fails when the system refuses a
+// thread (std::system_error, EAGAIN: too many threads or processes). -1 (always, outside
+// tests/unit/test_core_parallel_for.cpp): no such limit.
+inline std::atomic<int> thread_start_limit_for_tests{-1};
+
+template <typename Worker>
+std::thread start_thread(std::size_t already_started, Worker& worker) {
+  const int limit = thread_start_limit_for_tests.load(std::memory_order_relaxed);
+  if (limit >= 0 && already_started >= static_cast<std::size_t>(limit))
+    throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again), "thread refused (test hook)");
+  return std::thread(worker);
+}
+
+}  // namespace detail
+
 // Runs job(i) for every i in [0, count) on up to `threads` threads, the calling one
 // included. After a failure no new jobs start; the first failure is rethrown here once
 // all threads have joined.
+//
+// When the system refuses a thread (std::thread throws std::system_error), the jobs run on
+// the threads already started and the calling one: they take jobs from the same counter,
+// so every job still runs once and the results are those of any thread count -- slower,
+// not wrong. (Letting the exception leave with threads unjoined would std::terminate.)
 template <typename Job>
 void parallel_for(std::size_t count, int threads, const Job& job) {
   std::atomic<std::size_t> next{0};
@@ -34,7 +58,14 @@ void parallel_for(std::size_t count, int threads, const Job& job) {
   };
   std::vector<std::thread> pool;
   const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), count);
-  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(worker);
+  try {
+    if (workers > 1) pool.reserve(workers - 1);
+    for (std::size_t t = 1; t < workers; ++t) pool.push_back(detail::start_thread(pool.size(), worker));
+  } catch (const std::system_error&) {
+    // Fewer threads than asked for: the ones in `pool` and this one do all the jobs.
+  } catch (const std::bad_alloc&) {
+    // No room for the pool's vector: as above, with what was started.
+  }
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);

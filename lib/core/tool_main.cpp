@@ -4,16 +4,29 @@
 #include <exception>
 #include <new>
 
+#include <string>
+
 #include "core/error.hpp"
+#include "core/error_detail.hpp"
+#include "core/quote.hpp"
 
 namespace fest {
 
 namespace {
+
+bool details_shown = false;
+
 void print_error(const std::string& tool, const char* what) {
   std::fflush(stdout);
-  std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), what);
+  const auto [message, detail] = split_error_detail(what);
+  std::fprintf(stderr, "%s: error: %.*s\n", tool.c_str(), static_cast<int>(message.size()), message.data());
+  if (details_shown && !detail.empty())
+    std::fprintf(stderr, "%s: detail: %s\n", tool.c_str(), quoted_bytes(detail, 400).c_str());
 }
+
 }  // namespace
+
+void show_error_details(bool on) { details_shown = on; }
 
 int run_tool(const std::string& tool, const std::function<int()>& body) {
   try {

@@ -82,4 +82,68 @@ expect_clean_failure 2 fcompare
 expect_stderr_has '--tol: must be 0 or more, not -1{36}\.\.\. '
 check "not all 400" bash -c "! grep -Eq '1{60}' '$err'"
 
+# Integer flags (issue 31): every count, size and iteration limit states its range; a
+# negative value, a zero where none is meant, 1e308 and a 19-digit number are all refused
+# by that range, before any file is read.
+# int_flag RANGE TOOL ARGS... -- FLAG: FLAG with -1, 0 (when below the range), 1e308 and a
+# 19-digit whole number appended to ARGS; each a usage error naming FLAG and RANGE.
+int_flag() {
+  local range="$1"; shift
+  local args=() flag lo
+  while [ "$1" != "--" ]; do args+=("$1"); shift; done
+  flag="$2"
+  lo="${range%%,*}"; lo="${lo#\[}"
+  local values=(-1 1e308 9999999999999999999)
+  [ "$lo" -gt 0 ] && values+=(0)
+  local re_range
+  re_range=$(printf '%s' "$range" | sed 's/\[/\\[/; s/\]/\\]/')
+  for v in "${values[@]}"; do
+    case_ "${args[*]} $flag $v: refused with its range $range"
+    refuse 2 "^${args[0]}: error: $flag: must be in $re_range, not ${v:0:20}" "${args[@]}" "$flag" "$v"
+  done
+}
+int_flag '[1, 3]' brdffit fit x.ltx -- --lobes
+int_flag '[1, 4]' brdffit fit x.ltx -- --starts
+int_flag '[1, 10000]' brdffit cluster x.ltx -- --split-iters
+int_flag '[0, 10000]' brdffit cluster x.ltx -- --global-iters
+int_flag '[1, 64]' brdffit project x.ltx -- --basis
+int_flag '[3, 65535]' brdffit normals x.ltx -- --normal-min-samples
+int_flag '[1, 1000]' brdffit normals x.ltx -- --alternate
+int_flag '[1, 2147483647]' decimate x.ply -- --faces
+int_flag '[0, 100000000]' decimate x.ply -- --samples
+int_flag '[1, 1000]' facefit fit -- --iterations
+int_flag '[2, 100000]' facefit synth -o "$WORK/faces" -- --faces
+int_flag '[16, 2048]' facefit synth -o "$WORK/faces" -- --resolution
+int_flag '[1, 1000000000]' feshape fit x.xyz -- --max-iter
+int_flag '[0, 20]' feshape fit x.xyz -- --levels
+int_flag '[6, 100000000]' feshape fit x.xyz -- --max-nodes
+int_flag '[1, 10000000]' feshape sample -- --n
+int_flag '[0, 2147483647]' fluidsim render x.nrrd -- --index
+int_flag '[1, 1000000000]' lmfsim run -- --every
+int_flag '[1, 64]' resample display x.pgm -- --factor
+int_flag '[0, 40]' resample mip x.pgm -o "$WORK/m.pgm" -- --levels
+int_flag '[1, 65536]' resample render -- --spp
+int_flag '[1, 1000000]' resample chain1d -- --terms
+int_flag '[1, 2]' resample mipkernel -- --dims
+int_flag '[1, 100000000]' segbrain run -- --max-depth
+int_flag '[4, 4096]' terrainlod build x.tif -o "$WORK/t.tlp" -- --tile
+int_flag '[0, 15]' terrainlod decode x.tlp --tile 0/0/0 -- --mask
+int_flag '[0, 1000000]' terrainlod verify x.tlp -- --cameras
+int_flag '[0, 86400000]' turntable move 90 -- --settle-ms
+case_ "ffd init --dims 2,100000,2: every count in [2, 64]"
+refuse 2 '^ffd: error: --dims: must be in \[2, 64\], not 100000' ffd init x.ply --dims 2,100000,2
+case_ "volwave encode --roi-box with a negative index"
+refuse 2 '^volwave: error: --roi-box: must be in \[0, 2147483647\], not -1' volwave encode x.nii --lossless --roi-box=-1,0,0,5,5,5
+
+# fcompare's thresholds (-t): NaN and infinities would make the check mean nothing.
+for t in 'psnr>=nan' 'psnr>=inf' 'rmse<=-inf' 'psnr>=1e999'; do
+  case_ "fcompare -t '$t': a usage error naming the threshold"
+  refuse 2 "^fcompare: error: threshold '$(printf '%s' "$t" | sed 's/[]\[().*^$+?{}|]/\\&/g')': the value must be a finite number" \
+    fcompare -t "$t" "$WORK/a.json" "$WORK/a.json"
+done
+case_ "fcompare -t 'psnr>=abc': not a number at all"
+refuse 2 "^fcompare: error: threshold 'psnr>=abc' is not METRIC<=VALUE or METRIC>=VALUE" fcompare -t 'psnr>=abc' "$WORK/a.json" "$WORK/a.json"
+case_ "fcompare --samples -1"
+refuse 2 '^fcompare: error: --samples: must be in \[0, 100000000\], not -1' fcompare --samples -1 "$WORK/a.json" "$WORK/a.json"
+
 finish

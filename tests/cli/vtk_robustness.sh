@@ -57,8 +57,62 @@ case_ "markup that is not well-formed XML: where and why in fest's words, not VT
 sed 's/Name="velocity"/Name="vel\&ocity"/' "$WORK/good.vtu" > "$WORK/not_xml.vtu"
 run fconv --info "$WORK/not_xml.vtu"
 expect_clean_failure 3 fconv
-expect_stderr_has 'vtu: not well-formed XML at line [0-9]+, column [0-9]+ \(byte [0-9]+\): "not well-formed'
-check "no VTK sentence" sh -c "! grep -q 'Error parsing XML' '$err'"
+expect_stderr_has '^fconv: error: vtu: the markup is not well-formed XML at line [0-9]+, column [0-9]+ \(byte [0-9]+\) \(.*not_xml.vtu\)$'
+check "no VTK or expat sentence" sh -c "! grep -q 'Error parsing XML\\|not well-formed (' '$err'"
+case_ "the same with -v: expat's reason as a second line, the detail"
+run fconv -v --info "$WORK/not_xml.vtu"
+expect_status 3
+expect_stderr_has '^fconv: detail: expat: "not well-formed \(invalid token\)"'
+
+# VTK's own reasons (what fest's pre-check leaves to VTK's readers), said in fest's words:
+# the piece and the array, never VTK's sentence; VTK's text only with -v. A small ASCII
+# grid of two tetrahedra, edited to break one rule at a time.
+cat >"$WORK/tets.vtu" <<'VTU'
+<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64">
+  <UnstructuredGrid>
+    <Piece NumberOfPoints="5" NumberOfCells="2">
+      <Points>
+        <DataArray type="Float64" NumberOfComponents="3" format="ascii">
+          0 0 0 1 0 0 0 1 0 0 0 1 1 1 1
+        </DataArray>
+      </Points>
+      <Cells>
+        <DataArray type="Int64" Name="connectivity" format="ascii">
+          0 1 2 3 1 2 3 4
+        </DataArray>
+        <DataArray type="Int64" Name="offsets" format="ascii">
+          4 8
+        </DataArray>
+        <DataArray type="UInt8" Name="types" format="ascii">
+          10 10
+        </DataArray>
+      </Cells>
+    </Piece>
+  </UnstructuredGrid>
+</VTKFile>
+VTU
+run fconv --info "$WORK/tets.vtu"
+expect_status 0
+# variant|sed edit|what the one line must say
+while IFS='|' read -r variant edit message; do
+  sed "$edit" "$WORK/tets.vtu" >"$WORK/$variant.vtu"
+  case_ "$variant.vtu: VTK's reason in fest's words"
+  run fconv --info "$WORK/$variant.vtu"
+  expect_clean_failure 3 fconv
+  expect_stderr_has "^fconv: error: vtu: $message \\(.*$variant.vtu\\)\$"
+  check "no VTK sentence" sh -c "! grep -q 'VTK\\|Cannot read\\|because the' '$err'"
+  run lemtrace classify "$WORK/$variant.vtu"
+  expect_clean_failure 3 lemtrace
+  expect_stderr_has "vtu: $message"
+  case_ "$variant.vtu with -v: VTK's sentence as the detail"
+  run fconv -v --info "$WORK/$variant.vtu"
+  expect_status 3
+  expect_stderr_has '^fconv: detail: VTK: Cannot read cell'
+done <<'CASES'
+offsets_not_increasing|s/^          4 8$/          9 8/|the "offsets" of the cells of piece 0 do not start at 0 and increase from cell to cell
+no_types_array|s/Name="types"/Name="typez"/|the cells of piece 0 have no "types" array
+CASES
 
 case_ "a stray byte between <AppendedData> and its '_': refused, not handed to VTK (was SIGSEGV)"
 python3 - "$WORK/good.vtu" "$WORK/stray.vtu" <<'PY2'

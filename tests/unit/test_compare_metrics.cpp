@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "compare/checks.hpp"
 #include "compare/image_compare.hpp"
@@ -91,6 +92,16 @@ TEST(Checks, ParseAndEvaluate) {
   EXPECT_THROW(parse_threshold("psnr=40"), fest::Error);
   EXPECT_THROW(parse_threshold("<=1"), fest::Error);
   EXPECT_THROW(parse_threshold("rmse<=abc"), fest::Error);
+  // NaN and infinities mean no check at all: refused as usage errors, in words.
+  for (const char* t : {"psnr>=nan", "psnr>=NaN", "psnr>=inf", "rmse<=-inf", "psnr>=1e999"}) {
+    try {
+      parse_threshold(t);
+      ADD_FAILURE() << t << " was accepted";
+    } catch (const fest::Error& e) {
+      EXPECT_EQ(e.status(), fest::Status::usage) << t;
+      EXPECT_NE(std::string(e.what()).find("must be a finite number"), std::string::npos) << e.what();
+    }
+  }
 
   Metrics m;
   m.set("max_abs", 0.5);

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/stopwatch.hpp"
 #include "fitted_inputs.hpp"
 #include "formats/brdf/merl_io.hpp"
@@ -67,7 +68,7 @@ int run_fit(const FitArgs& a) {
       return brdffit::merl_samples(brdffit::MerlTable{formats::read_merl(read_input(a.merl)).values});
     });
   } else {
-    source = is_stdio(a.input) ? "standard input" : a.input;
+    source = input_name(a.input);
     const std::string bytes = read_input(a.input);
     const Table t = decoded_from(source, [&] {
       return formats::read_table(bytes, bytes.find('\t') != std::string::npos && bytes.find(',') == std::string::npos

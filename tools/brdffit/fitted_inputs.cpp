@@ -7,12 +7,13 @@
 #include "brdffit/ltw_format.hpp"
 #include "brdffit/ltx_format.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 
 namespace fest::brdffit_tool {
 
 brdffit::LumitexelSet load_lumitexels(const std::string& path, nlohmann::json* header) {
   const std::string bytes = read_input(path);
-  return decoded_from(is_stdio(path) ? "standard input" : path, [&] {
+  return decoded_from(input_name(path), [&] {
     return brdffit::decode_ltx(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), header);
   });
 }

@@ -44,12 +44,12 @@ int cluster_count(const std::string& text) {
 }
 
 void add_fit_flags(CLI::App* s, FitFlags& f) {
-  s->add_option("--lobes", f.lobes, "Lafortune lobes K (1..3)")->default_val(1);
+  s->add_option("--lobes", f.lobes, "Lafortune lobes K (1..3)")->default_val(1)->check(fest::cli::range(1, 3));
   s->add_flag("--shared-lobe", f.shared, "Share Cxy and N across channels (Cz = 1, per-channel scale)");
   s->add_option("--max-lobe-albedo", f.max_lobe_albedo,
                 "Bound of every lobe's directional albedo (1 = energy conserving; 0 = none)")
       ->default_val(1.0);
-  s->add_option("--starts", f.starts, "Multi-start: N in {5, 20, 80, 300}, the first STARTS")->default_val(4);
+  s->add_option("--starts", f.starts, "Multi-start: N in {5, 20, 80, 300}, the first STARTS")->default_val(4)->check(fest::cli::range(1, 4));
   s->add_option_function<std::string>(
        "--robust", [&f](const std::string& text) { f.huber_delta = huber_delta(text); }, "Loss: none or huber:DELTA")
       ->default_str("none");
@@ -224,12 +224,12 @@ CLI::App* add_cluster(CLI::App& app, ClusterArgs& cluster) {
        "Number of materials, or auto (split until --min-gain)")
       ->default_str("5");
   c->add_option("--split-scale", cluster.c.split_scale, "kappa: split step in standard deviations")->default_val(1.0);
-  c->add_option("--split-iters", cluster.c.split_iters, "Refits per split at most")->default_val(10);
+  c->add_option("--split-iters", cluster.c.split_iters, "Refits per split at most")->default_val(10)->check(fest::cli::range(1, 10000));
   c->add_option("--stable", cluster.c.stable, "A split ends when fewer members change side")->default_val(0.005);
-  c->add_option("--global-iters", cluster.c.global_iters, "Global reassignment rounds per split")->default_val(3);
+  c->add_option("--global-iters", cluster.c.global_iters, "Global reassignment rounds per split")->default_val(3)->check(fest::cli::range(0, 10000));
   c->add_option("--min-cluster", cluster.c.min_cluster, "Dissolve clusters below this fraction of lumitexels")->default_val(0.001);
   c->add_option("--min-gain", cluster.c.min_gain, "auto: stop when a split gains less (fraction of the 1-cluster error)")->default_val(0.02);
-  c->add_option("--min-samples", cluster.min_samples, "Ignore lumitexels with fewer samples")->default_val(2);
+  c->add_option("--min-samples", cluster.min_samples, "Ignore lumitexels with fewer samples")->default_val(2)->check(fest::cli::range(1, 65535));
   add_fit_flags(c, cluster.fit);
   return c;
 }
@@ -240,14 +240,14 @@ CLI::App* add_project(CLI::App& app, ProjectArgs& project) {
   p->add_option("input", project.input, "Lumitexel file (.ltx), - = stdin")->default_val("-");
   p->add_option("--clusters", project.clusters_file, "clusters.json from brdffit cluster")->required();
   p->add_option("-o,--output", project.output, ".ltw output (- = stdout)")->default_val("-");
-  p->add_option("--basis", project.basis, "Basis BRDFs per cluster")->default_val(4);
+  p->add_option("--basis", project.basis, "Basis BRDFs per cluster")->default_val(4)->check(fest::cli::range(1, 64));
   cli::enum_words<fest::brdffit::WeightMode>(p->add_option("--weights", project.weights, "scalar (one per basis BRDF) or rgb (per channel)"),
                   {{"scalar", fest::brdffit::WeightMode::scalar}, {"rgb", fest::brdffit::WeightMode::rgb}})
       ->default_str("scalar");
   p->add_flag("--nonneg", project.nonneg, "Non-negative weights (NNLS) instead of the SVD solution");
   p->add_option("--split-scale", project.split_scale, "kappa of the trial split")->default_val(1.0);
-  p->add_option("--split-iters", project.split_iters, "Refits of the trial split at most")->default_val(10);
-  p->add_option("--min-samples", project.min_samples, "Lumitexels with fewer samples get the pure cluster BRDF")->default_val(2);
+  p->add_option("--split-iters", project.split_iters, "Refits of the trial split at most")->default_val(10)->check(fest::cli::range(1, 10000));
+  p->add_option("--min-samples", project.min_samples, "Lumitexels with fewer samples get the pure cluster BRDF")->default_val(2)->check(fest::cli::range(1, 65535));
   p->add_option("--report", project.report, "Write timings and errors as JSON");
   cli::add_threads(*p, project.threads);
   return p;
@@ -259,9 +259,9 @@ CLI::App* add_normals(CLI::App& app, NormalsArgs& normals) {
   n->add_option("input", normals.input, "Lumitexel file (.ltx), - = stdin")->default_val("-");
   n->add_option("--svbrdf", normals.svbrdf, ".ltw from brdffit project")->required();
   n->add_option("-o,--output", normals.output, "normals.ply (- = stdout)")->default_val("-");
-  n->add_option("--normal-min-samples", normals.n.min_samples, "Refine lumitexels with at least this many samples")->default_val(5);
+  n->add_option("--normal-min-samples", normals.n.min_samples, "Refine lumitexels with at least this many samples")->default_val(5)->check(fest::cli::range(3, 65535));
   n->add_option("--max-tilt", normals.n.max_tilt_deg, "Largest tilt from the mesh normal (degrees)")->default_val(30);
-  n->add_option("--alternate", normals.n.alternate, "Rounds of (re-projection, normals)")->default_val(1);
+  n->add_option("--alternate", normals.n.alternate, "Rounds of (re-projection, normals)")->default_val(1)->check(fest::cli::range(1, 1000));
   n->add_flag("--ascii", normals.ascii, "ASCII PLY instead of binary");
   n->add_option("--report", normals.report, "Write timings and residuals as JSON");
   cli::add_threads(*n, normals.threads);

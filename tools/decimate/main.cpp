@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   app.add_option("input", o.input, "Input mesh (PLY, OFF, OBJ, STL, Draco), or - for standard input")->default_val("-");
   app.add_option("-o,--output", o.output, "Output mesh, or - for standard output")->default_val("-");
   app.add_option("--to", o.to, "Output format (ply, off, obj, stl, drc); default: from -o, else the input's");
-  app.add_option("--faces", o.faces, "Target face count");
+  app.add_option("--faces", o.faces, "Target face count")->check(fest::cli::range(1, 2147483647));
   app.add_option("--ratio", o.ratio, "Target face count as a fraction of the input's (0 < r <= 1)");
   app.add_option("--error", o.error, "Stop before a collapse whose error estimate exceeds this length");
   app.add_option("--error-rel", o.error_rel, "The same, as a fraction of the bounding-box diagonal");
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   app.add_flag("--drop-nonmanifold", o.drop_nonmanifold, "Drop faces the reader could not attach instead of refusing");
   app.add_flag("--ascii", o.ascii, "ASCII PLY/STL output");
   app.add_option("--report", o.report, "Write counts, time, Hausdorff and RMS error (input vs output) as JSON");
-  app.add_option("--samples", o.samples, "Extra area-weighted samples of the error measurement")->default_val(100000);
+  app.add_option("--samples", o.samples, "Extra area-weighted samples of the error measurement")->default_val(100000)->check(fest::cli::range(0, 100000000));
   fest::cli::add_threads(app, o.threads);
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See decimate(1).");
   return fest::cli::run(app, argc, argv, [&] {

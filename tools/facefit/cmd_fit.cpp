@@ -14,6 +14,7 @@
 #include "core/field_lines.hpp"
 #include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/threads.hpp"
 #include "facefit/fit.hpp"
 #include "facefit/render.hpp"
@@ -57,7 +58,7 @@ facefit::FitOptions fit_options(const FitArgs& a) {
 }
 
 facefit::Landmarks load_landmarks(const FitArgs& a, const std::string& path, const facefit::Model& model) {
-  const std::string source = path == "-" ? "<stdin>" : path;
+  const std::string source = input_name(path);
   const auto entries = formats::read_landmarks(read_text(path), source, a.pts_origin);
   facefit::LandmarkMap map = model.landmarks;
   if (!a.map.empty()) map = read_map(a.map);

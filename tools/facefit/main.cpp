@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
       ->check(fest::cli::non_negative);
   fest::cli::enum_words(f->add_option("--nuisance", fit.nuisance, "Similarity camera: free | penalized | none"), kNuisances)->default_str("free");
   f->add_option("--nuisance-sigma", fit.nuisance_sigma, "Prior std of penalized nuisance columns")->default_val(100);
-  f->add_option("--iterations", fit.iterations, "Affine camera: camera/shape alternations")->default_val(5);
+  f->add_option("--iterations", fit.iterations, "Affine camera: camera/shape alternations")->default_val(5)->check(fest::cli::range(1, 1000));
   f->add_option("--full-shape", fit.full_shape, "Project a complete mesh into the model (L = id) instead of landmarks");
   f->add_option("--uncertainty", fit.uncertainty, "Write per-vertex posterior std (model units) as TSV");
   f->add_option("--coeffs", fit.coeffs, "Write the coefficients as TSV (index c sigma)");
@@ -154,9 +154,9 @@ int main(int argc, char** argv) {
   SynthArgs sy;
   auto* y = app.add_subcommand("synth", "Write the synthetic face population, landmark sets and mask");
   y->add_option("-o,--out", sy.output, "Output folder")->required();
-  y->add_option("--faces", sy.faces, "Number of faces")->default_val(200);
-  y->add_option("--train", sy.train, "How many of them are training faces")->default_val(100);
-  y->add_option("--resolution", sy.resolution, "Grid resolution R (R² vertices)")->default_val(128);
+  y->add_option("--faces", sy.faces, "Number of faces")->default_val(200)->check(fest::cli::range(2, 100000));
+  y->add_option("--train", sy.train, "How many of them are training faces")->default_val(100)->check(fest::cli::range(2, 100000));
+  y->add_option("--resolution", sy.resolution, "Grid resolution R (R² vertices)")->default_val(128)->check(fest::cli::range(16, 2048));
   y->add_option("--detail-mm", sy.detail, "Amplitude of the individual detail (mm)")->default_val(1);
   y->add_option("--seed", sy.seed, "Random seed")->default_val(1);
 

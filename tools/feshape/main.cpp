@@ -73,11 +73,11 @@ int main(int argc, char** argv) {
   fit->add_option("--dt", fa.dt, "Euler time step (explicit solvers)");
   fit->add_option("--damping", fa.damping, "D per block dc,dtheta,ds,dd (explicit solvers)")->delimiter(',')->expected(4);
   fit->add_option("--move-tol", fa.move_tol, "Converged when no node moves farther per iteration (default 5e-5 x half diagonal)");
-  fit->add_option("--max-iter", fa.max_iter, "Iterations per level (default 200 equilibrium, 200000 Euler)");
-  fit->add_option("--levels", fa.levels, "Subdivision levels after level 0");
+  fit->add_option("--max-iter", fa.max_iter, "Iterations per level (default 200 equilibrium, 200000 Euler)")->check(fest::cli::range(1, 1000000000));
+  fit->add_option("--levels", fa.levels, "Subdivision levels after level 0")->check(fest::cli::range(0, 20));
   fit->add_option("--tau", fa.tau, "Points farther than this select elements for bisection");
-  fit->add_option("--max-nodes", fa.max_nodes, "Node limit: reaching it is a failure");
-  fit->add_option("--reassign-every", fa.reassign_every, "Force assignment every K iterations");
+  fit->add_option("--max-nodes", fa.max_nodes, "Node limit: reaching it is a failure")->check(fest::cli::range(6, 100000000));
+  fit->add_option("--reassign-every", fa.reassign_every, "Force assignment every K iterations")->check(fest::cli::range(1, 1000000000));
   fit->add_flag("--no-global-phase", fa.no_global_phase, "Start with global + local at once (no level G)");
   fit->add_option("--levels-out", fa.levels_out, "Write every level: a path with %s (G, 0, 1, ...)");
   fit->add_option("--partial", fa.partial, "On a failure after some levels (node limit): write the last finished one here");
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   auto* sample = app.add_subcommand("sample", "Points on a deformable superquadric (x y z rows)");
   add_model_flags(*sample, sa.model);
   sample->add_option("-o,--output", sa.output, "Points file, - = standard output");
-  sample->add_option("--n", sa.n, "Number of points");
+  sample->add_option("--n", sa.n, "Number of points")->check(fest::cli::range(1, 10000000));
   sample->add_option("--noise", sa.noise, "Gaussian noise sigma (absolute)");
   sample->add_option("--bumps", sa.bumps, "K,AMP: K radial Gaussian bumps of height AMP*a")->delimiter(',')->expected(2);
   sample->add_option("--seed", sa.seed, "Random seed");

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   CLI::App* si = app.add_subcommand("init", "Fit an undeformed lattice box around a mesh; lattice JSON out");
   si->add_option("input", init.input, "Mesh (- : standard input)");
   si->add_option("-o,--output", init.output, "Lattice JSON (- : standard output)");
-  si->add_option("--dims", init.dims, "Control points per axis L,M,N")->delimiter(',')->expected(3);
+  si->add_option("--dims", init.dims, "Control points per axis L,M,N")->delimiter(',')->expected(3)->allow_extra_args(false)->check(fest::cli::range(2, 64));
   si->add_option_function<std::string>(
       "--basis", [&init](const std::string& name) { init.basis = fest::ffd::basis_from_name(name.c_str()); },
       "bernstein, bspline, linear or catmull-rom");

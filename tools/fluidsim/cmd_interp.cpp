@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "fluidsim/frame.hpp"
 
 namespace fest::fluidsim_tool {
@@ -10,7 +11,7 @@ using namespace fest::fluidsim;
 
 int interp_command(const InterpOptions& o) {
   auto one = [](const std::string& path) {
-    const std::string where = path == "-" ? "stdin" : path;
+    const std::string where = input_name(path);
     const std::string bytes = read_input(path);
     if (bytes.empty()) throw bad_input("empty input ({})", where);
     Frame f;

@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "fluidsim/frame.hpp"
 #include "image_data_frame.hpp"
 #include "output_names.hpp"
@@ -23,7 +24,7 @@ namespace {
 // Every frame of the input: a frame stream (NRRD files with "# fest-frame:" headers) or
 // one scalar volume (NRRD, NIfTI, MHA) read by formats/.
 std::vector<Frame> load_frames(const std::string& path) {
-  const std::string where = path == "-" ? "stdin" : path;
+  const std::string where = input_name(path);
   std::string bytes = read_input(path);
   if (bytes.empty()) throw bad_input("empty input ({})", where);
   std::vector<Frame> frames;

@@ -13,6 +13,8 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
+#include "core/quote.hpp"
 #include "core/progress.hpp"
 #include "core/resources.hpp"
 #include "core/stopwatch.hpp"
@@ -39,16 +41,14 @@ using Clock = SteadyClock;
 namespace {
 
 Scene load_scene(const std::string& path) {
-  const std::string where = path == "-" ? "stdin" : path;
+  const std::string where = input_name(path);
   const std::string text = read_input(path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw bad_input("empty scene ({})", where);
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    const auto colon = what.find("parse error");
-    throw bad_input("invalid scene JSON: {} ({})", colon == std::string::npos ? what : what.substr(colon), where);
+    throw bad_input("scene: {} ({})", json_failure_words(e.what(), e.byte, text), where);
   }
   return parse_scene(doc, where);
 }

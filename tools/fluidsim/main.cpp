@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
   d->add_option("--to", ren_to, "png or pfm");
   d->add_option("--mode", ren_mode, "slice, mip or absorb");
   d->add_option("--axis", ren_axis, "Viewing axis: x, y or z");
-  d->add_option("--index", ren.index, "Slice index (default: the middle)");
+  d->add_option("--index", ren.index, "Slice index (default: the middle)")->check(fest::cli::range(0, 2147483647));
   d->add_option("--field", ren.field, "Field to show (velocity: its magnitude)");
   d->add_option("--range", ren.range, "lo,hi mapped to the colour map ends")->delimiter(',')->expected(2)->allow_extra_args(false);
   d->add_option("--colormap", ren_colormap, "gray, inferno or velocity");

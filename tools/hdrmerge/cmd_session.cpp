@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/quote.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/parallel_for.hpp"
 #include "core/sha256.hpp"
 #include "core/threads.hpp"
@@ -121,7 +122,7 @@ std::string relative_to(const std::string& path, const std::string& session) {
 }  // namespace
 
 int run_session(const SessionOptions& a) {
-  const std::string where = is_stdio(a.manifest) ? "<stdin>" : a.manifest;
+  const std::string where = input_name(a.manifest);
   const json manifest = formats::parse(formats::load_input(a.manifest), formats::read_json_document);
   if (!manifest.is_object() || manifest.value("version", 0) != 1) throw bad_input("not a capture manifest, version 1 ({})", where);
   const std::string status = manifest.value("status", "");

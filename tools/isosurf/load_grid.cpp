@@ -6,6 +6,8 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "formats/input.hpp"
 #include "formats/volume_source/volume_source.hpp"
 
@@ -45,7 +47,7 @@ LoadedGrid load_grid(const ExactOptions& o) {
   if (o.iso && !o.labels.empty()) throw usage_error("--iso and --label exclude each other");
   if (o.iso && !std::isfinite(*o.iso)) throw usage_error("--iso must be a finite number");
   LoadedGrid out;
-  out.source = o.input == "-" ? "stdin" : o.input;
+  out.source = input_name(o.input);
   formats::VolumeSourceOptions vo;
   vo.field = o.field;
   vo.component = o.component;

@@ -1,6 +1,8 @@
 #include "surface_io.hpp"
 
 #include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/indexed_ply.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -52,7 +54,7 @@ std::string encode_surface(const isosurface::Surface& s, const std::string& form
 
 isosurface::Surface decode_surface(const std::string& path, std::size_t& fanned) {
   formats::Input in = formats::load_input(path);
-  if (in.bytes.empty()) throw bad_input("empty input ({})", path == "-" ? "stdin" : path);
+  if (in.bytes.empty()) throw bad_input("empty input ({})", input_name(path));
   if (formats::kind_of(in.format) != formats::Kind::mesh)
     throw bad_input("expected a mesh, got {} ({})", formats::format_name(in.format), in.name);
   const Mesh mesh = formats::parse(in, formats::read_mesh);

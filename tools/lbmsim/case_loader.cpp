@@ -7,6 +7,8 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
+#include "core/quote.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -59,16 +61,14 @@ std::string override_text(const lbm::CaseOverride& o) {
 
 LoadedCase load_case(const std::string& path, const std::vector<lbm::CaseOverride>& sets) {
   LoadedCase L;
-  L.where = path == "-" || path.empty() ? "stdin" : path;
+  L.where = input_name(path);
   const std::string text = read_input(path.empty() ? "-" : path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw bad_input("empty case ({})", L.where);
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    const auto at = what.find("parse error");
-    throw bad_input("invalid case JSON: {} ({})", at == std::string::npos ? what : what.substr(at), L.where);
+    throw bad_input("case: {} ({})", json_failure_words(e.what(), e.byte, text), L.where);
   }
   for (const lbm::CaseOverride& s : sets) {
     if (!doc.is_object()) throw usage_error("--set needs a case object");

@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -89,7 +90,7 @@ void write_frame(Output& out, const FieldFrame& f) {
 // 3-component "velocity" and optionally "density"; physical velocities are converted.
 void read_init_file(const lbm::Case& c, const std::string& where, std::vector<double>& rho, std::vector<double>& u) {
   std::string path = c.init.file;
-  if (!path.empty() && path[0] != '/' && where != "stdin") {
+  if (!path.empty() && path[0] != '/' && where != standard_input_name) {
     const std::filesystem::path dir = std::filesystem::path(where).parent_path();
     if (!dir.empty()) path = (dir / path).string();
   }

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/mesh.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -106,7 +107,7 @@ int cmd_export(const ExportOptions& opt) {
   if (outputs != 1) throw fest::usage_error("export: give exactly one of --vtk, --obj, --ply");
   if (opt.scene.empty()) throw fest::usage_error("export: --scene is required");
   const Scene sc = load_scene(fest::read_input(opt.scene));
-  const auto rows = parse_trajectory(fest::read_input(opt.trajectory), opt.trajectory == "-" ? "stdin" : opt.trajectory);
+  const auto rows = parse_trajectory(fest::read_input(opt.trajectory), fest::input_name(opt.trajectory));
   std::map<std::string, int> index;
   std::vector<Tess> shapes;
   for (std::size_t i = 0; i < sc.bodies.size(); ++i) {

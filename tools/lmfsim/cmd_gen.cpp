@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/memory_limit.hpp"
+#include "core/resources.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -210,7 +210,7 @@ json gen_ring(const GenOptions& o) {
 
 int cmd_gen(const GenOptions& o) {
   if (o.kind == GenScene::chain || o.kind == GenScene::ring)
-    fest::cli::check_fits_in_memory(static_cast<double>(o.n) * kGenBytesPerLink, fmt::format("a scene of --n {} links", o.n));
+    fest::check_fits_in_memory(static_cast<double>(o.n) * kGenBytesPerLink, fmt::format("a scene of --n {} links", o.n));
   json doc;
   switch (o.kind) {
     case GenScene::chain: doc = gen_chain(o); break;

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/memory_limit.hpp"
+#include "core/resources.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -72,7 +72,7 @@ int cmd_run(const RunOptions& opt) {
     // Nothing is written unless everything worked, so the rows wait in memory: about
     // 256 bytes a body a frame (13 numbers of 9 digits, the frame, time and name).
     const double frames = std::floor(sim.t_end / sim.dt / sim.every) + 1;
-    fest::cli::check_fits_in_memory(
+    fest::check_fits_in_memory(
         frames * std::max(nb, 1) * 256.0,
         fmt::format("a trajectory of {:.0f} frames of {} bodies held until the run ends (--stream writes it as it comes)",
                     frames, nb));

@@ -49,15 +49,15 @@ void resolve_gen(GenOptions& gen, const std::string& kind, const std::string& jo
 
 // Binds an optional<double> to a flag.
 template <typename T>
-void opt_value(CLI::App* app, const std::string& name, std::optional<T>& target, const std::string& help) {
-  app->add_option_function<T>(name, [&target](const T& v) { target = v; }, help);
+CLI::Option* opt_value(CLI::App* app, const std::string& name, std::optional<T>& target, const std::string& help) {
+  return app->add_option_function<T>(name, [&target](const T& v) { target = v; }, help);
 }
 
 void add_sim_flags(CLI::App* app, SimOverrides& s, bool full) {
   opt_value(app, "--dt", s.dt, "Time step in seconds (default: scene, else 1e-3)");
   opt_value(app, "--t-end", s.t_end, "End time in seconds (default: scene)");
   if (!full) return;
-  opt_value(app, "--every", s.every, "Write a frame every N steps (default 10)");
+  opt_value(app, "--every", s.every, "Write a frame every N steps (default 10)")->check(fest::cli::range(1, 1000000000));
   opt_words<lm::Integrator>(app, "--integrator", s.integrator, "rk4 (default), rk45, symplectic or euler",
                             {{"rk4", lm::Integrator::rk4},
                              {"rk45", lm::Integrator::rk45},

@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/tool_main.hpp"
 #include "formats/detect.hpp"
 #include "formats/table/table_io.hpp"
@@ -13,7 +14,7 @@
 namespace fest::patnet_tool {
 
 int cmd_markov(const MarkovArgs& a) {
-  const std::string name = a.input == "-" ? "<stdin>" : a.input;
+  const std::string name = input_name(a.input);
   const std::string bytes = read_input(a.input);
   if (bytes.empty()) throw bad_input("empty transcript ({})", name);
   // A transcript is TSV (the seed's tables) or CSV: recognised by the header line.

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/stopwatch.hpp"
 #include "core/tool_main.hpp"
 #include "inputs.hpp"
@@ -64,7 +65,7 @@ int cmd_run(const RunArgs& a) {
         throw bad_input("{} (--eval #{}: {})", e.message, i + 1, a.evals[i]);
       }
     }
-    if (!a.events.empty()) m.set_inputs(parse_events(read_input(a.events), a.events == "-" ? "<stdin>" : a.events, m));
+    if (!a.events.empty()) m.set_inputs(parse_events(read_input(a.events), input_name(a.events), m));
     if (!a.table.empty()) m.set_table(parse_table(read_input(a.table), a.table, a.table_var));
   } catch (const patnet::LimitError& e) {
     throw runtime_failure("{} (while loading)", e.message);

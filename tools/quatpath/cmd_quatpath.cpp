@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/tool_main.hpp"
 #include "keys_io.hpp"
 #include "motionpath/path.hpp"
@@ -24,7 +25,7 @@ int cmd_path(const PathArgs& a) {
   PoseFormat to = PoseFormat::csv;
   if (a.to) to = *a.to;
   else if (ends_with(a.output, ".jsonl") || ends_with(a.output, ".json")) to = PoseFormat::jsonl;
-  const std::string name = a.input == "-" ? "<stdin>" : a.input;
+  const std::string name = input_name(a.input);
   int dropped = 0;
   const motionpath::Way default_way = a.way;
   std::vector<motionpath::Key> keys;

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/threads.hpp"
 #include "formats/detect.hpp"
 #include "formats/image/image_io.hpp"
@@ -16,12 +17,13 @@ namespace fest::radiosity_tool {
 
 int run_render(const RenderArgs& args) {
   const std::string bytes = read_input(args.input);
-  const std::string where = is_stdio(args.input) ? "standard input" : args.input;
+  const std::string where = input_name(args.input);
+  // detect_format names the input in its own message; the reader's messages get it here.
+  const formats::Format format = formats::detect_format(bytes, where);
   Mesh mesh;
   try {
-    const formats::Format f = formats::detect_format(bytes, where);
-    if (formats::kind_of(f) != formats::Kind::mesh) throw bad_input("not a mesh");
-    mesh = formats::read_mesh(bytes, f);
+    if (formats::kind_of(format) != formats::Kind::mesh) throw bad_input("not a mesh");
+    mesh = formats::read_mesh(bytes, format);
   } catch (const Error& e) {
     throw Error(e.status(), with_location(e.what(), where));
   }

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "formats/detect.hpp"
 #include "formats/mesh/attributed_ply.hpp"
 #include "formats/mesh/mesh_io.hpp"
@@ -82,7 +83,7 @@ radiosity::Scene scene_from_ply(std::string_view bytes) {
 
 radiosity::Scene read_scene(const std::string& path) {
   const std::string bytes = read_input(path);
-  const std::string where = is_stdio(path) ? "standard input" : path;
+  const std::string where = input_name(path);
   std::size_t first = bytes.find_first_not_of(" \t\r\n");
   if (first == std::string::npos) throw bad_input("empty scene ({})", where);
   if (bytes.compare(0, 4, "ply\n") == 0 || bytes.compare(0, 5, "ply\r\n") == 0) {
@@ -97,7 +98,7 @@ radiosity::Scene read_scene(const std::string& path) {
   try {
     file = radiosity::decode_scene_json(bytes);
   } catch (const Error& e) {
-    throw Error(e.status(), with_location(e.what(), is_stdio(path) ? "standard input" : path));
+    throw Error(e.status(), with_location(e.what(), input_name(path)));
   }
   const std::filesystem::path base =
       is_stdio(path) ? std::filesystem::current_path() : std::filesystem::path(path).parent_path();

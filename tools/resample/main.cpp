@@ -178,7 +178,7 @@ CLI::App* add_display(CLI::App& app, DisplayFlags& f) {
   display->add_option("input", f.a.input, "Input image, or - for standard input")->default_val("-");
   add_output(display, f.a.out);
   display->add_option("--model", f.model, "lcd, tent, bspline, gaussian:sigma=S, crt[:sx=0.45,sy=0.35]")->default_val("lcd");
-  display->add_option("--factor", f.a.factor, "Magnification (integer)")->default_val(8);
+  display->add_option("--factor", f.a.factor, "Magnification (integer)")->default_val(8)->check(fest::cli::range(1, 64));
   fest::cli::add_threads(*display, f.a.threads);
   return display;
 }
@@ -201,7 +201,7 @@ CLI::App* add_mip(CLI::App& app, MipFlags& f) {
   mip->add_option("input", mp.input, "Input image, or - for standard input")->default_val("-");
   mip->add_option("-o,--output", mp.prefix, "Prefix of the level files")->required();
   fest::cli::enum_words(mip->add_option("--filter", mp.filter, "box, gaussian, lanczos3"), kMipFilters)->default_str("box");
-  mip->add_option("--levels", mp.levels, "Number of levels (0: down to 1x1)")->default_val(0);
+  mip->add_option("--levels", mp.levels, "Number of levels (0: down to 1x1)")->default_val(0)->check(fest::cli::range(0, 40));
   add_format(mip, mp.to, "Level file format");
   fest::cli::add_threads(*mip, mp.threads);
   return mip;
@@ -226,14 +226,14 @@ CLI::App* add_render(CLI::App& app, RenderFlags& f) {
   render->add_option("--scene", rd.scene, "zoneplate, sine, siemens, edges, point, checker-plane")->default_val("zoneplate");
   render->add_option("--param", f.params, "Scene parameter key=value (repeatable)")->allow_extra_args(false);
   render->add_option("--size", f.size, "Image size WxH")->default_val("256x256");
-  render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16);
+  render->add_option("--spp", rd.spp, "Samples per pixel")->default_val(16)->check(fest::cli::range(1, 65536));
   render->add_option("--pattern", f.pattern, "regular, jitter, random, rooks, rgss, poisson, halton, sobol")->default_val("jitter");
   render->add_option("--pixel-filter", f.pixel_filter, "Pixel filter NAME[:radius=R]; lowpass|bandpass[:lo=..] for --scene point")->default_val("box");
   render->add_option("--seed", rd.seed, "Seed of the sample patterns")->default_val(1);
   render->add_flag("--ground-truth", rd.ground_truth, "Dense jittered ground truth (--gt-spp samples)");
   fest::cli::enum_words<RenderColor>(render->add_option("--colorspace", rd.colorspace, "Integer output: srgb (encoded codes) or linear (plain values)"),
                         {{"srgb", RenderColor::srgb}, {"linear", RenderColor::linear}})->default_str("srgb");
-  render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(4096);
+  render->add_option("--gt-spp", rd.gt_spp, "Samples per pixel of the ground truth")->default_val(4096)->check(fest::cli::range(1, 65536));
   fest::cli::add_threads(*render, rd.threads);
   return render;
 }
@@ -324,7 +324,7 @@ CLI::App* add_chain1d(CLI::App& app, ChainFlags& f) {
   chain->add_option("--recon", f.recon, "Display reconstruction kernel");
   chain->add_option("--freq", ch.freq, "Signal frequencies in cycles per sample, comma-separated")->delimiter(',')->allow_extra_args(false);
   chain->add_option("--edge", ch.edge, "Fig. 10.2: step at x0, or bar x0,x1")->delimiter(',')->allow_extra_args(false);
-  chain->add_option("--terms", ch.terms, "Alias terms K (k = -K..K)")->default_val(2000);
+  chain->add_option("--terms", ch.terms, "Alias terms K (k = -K..K)")->default_val(2000)->check(fest::cli::range(1, 1000000));
   return chain;
 }
 
@@ -350,7 +350,7 @@ CLI::App* add_mipkernel(CLI::App& app, MipKernelFlags& f) {
   mipkernel->add_option("--level", mk.level, "Level L (fractional: trilinear blend)")->required();
   mipkernel->add_option("--pos", mk.pos, "Positions x in level-0 texels (--dims 2: x,y)")->delimiter(',')->allow_extra_args(false)->required();
   mipkernel->add_option("--build", f.build, "Pyramid build: box, gaussian")->default_val("box");
-  mipkernel->add_option("--dims", mk.dims, "1 or 2")->default_val(1);
+  mipkernel->add_option("--dims", mk.dims, "1 or 2")->default_val(1)->check(fest::cli::range(1, 2));
   return mipkernel;
 }
 

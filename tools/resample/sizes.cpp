@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/memory_limit.hpp"
+#include "core/resources.hpp"
 #include "core/error.hpp"
 
 namespace fest::resample_tool {
@@ -33,7 +33,7 @@ std::pair<int, int> checked_size(double w, double h, const char* what) {
   if (!(w * h <= kMaxPixels))
     throw fest::usage_error("{} gives an image of {}: more than the 2147483648 (2^31) pixels an image may have", what,
                             size_text(w, h));
-  cli::check_fits_in_memory(w * h * kBytesPerPixel,
+  check_fits_in_memory(w * h * kBytesPerPixel,
                             fmt::format("{} gives a {:.0f}x{:.0f} image, which at 16 bytes a pixel", what, w, h));
   return {static_cast<int>(w), static_cast<int>(h)};
 }

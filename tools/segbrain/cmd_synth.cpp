@@ -1,7 +1,7 @@
 // segbrain synth: the synthetic T1 head phantom and its truth labels (segbrain(1)).
 #include <fmt/format.h>
 
-#include "cli/memory_limit.hpp"
+#include "core/resources.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "segbrain/phantom.hpp"
@@ -32,7 +32,7 @@ constexpr double kSynthBytesPerVoxel = 32;
 int run_synth(const SynthArgs& a) {
   if (a.phantom.noise < 0 || a.phantom.bias < 0) throw usage_error("--noise and --bias must be >= 0");
   const auto& n = a.phantom.size;
-  cli::check_fits_in_memory(static_cast<double>(n[0]) * static_cast<double>(n[1]) * static_cast<double>(n[2]) *
+  check_fits_in_memory(static_cast<double>(n[0]) * static_cast<double>(n[1]) * static_cast<double>(n[2]) *
                                 kSynthBytesPerVoxel,
                             fmt::format("a phantom of --size {},{},{} voxels", n[0], n[1], n[2]));
   Phantom p = make_phantom(a.phantom);

@@ -41,7 +41,7 @@ std::vector<CLI::Option*> add_run_flags(CLI::App& cmd, RunArgs& run, RunFlagText
                                     {{"t1", Modality::t1}, {"t2", Modality::t2}, {"pd", Modality::pd}})
                   ->default_str("t1"));
   o.push_back(cmd.add_flag("--tissue", run.tissue, "Also label grey (4) and white matter (5) inside the brain"));
-  o.push_back(cmd.add_option("--max-depth", run.max_depth, "Deepest proof")->default_val(10000));
+  o.push_back(cmd.add_option("--max-depth", run.max_depth, "Deepest proof")->default_val(10000)->check(fest::cli::range(1, 100000000)));
   o.push_back(cmd.add_option("--max-inferences", run.max_inferences, "Most inferences")->default_val(1e7));
   o.push_back(cmd.add_option("--time-limit", run.time_limit, "Seconds (0 = none)")->default_val(0));
   fest::cli::add_threads(cmd, run.threads);

@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
   fest::cli::enum_words(b->add_option("--texture-format", build.texture_format, "Texture tiles: png (lossless) or jpeg"), kTextureFormats);
   b->add_option("--texture-quality", build.texture_quality, "JPEG quality of the texture tiles (1-100)")
       ->check(fest::cli::range(1, 100));
-  b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
-  b->add_option("--texels", build.texels, "Texels per tile side T (power of two >= B; default B)");
+  b->add_option("--tile", build.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)")->check(fest::cli::range(4, 4096));
+  b->add_option("--texels", build.texels, "Texels per tile side T (power of two >= B; default B)")->check(fest::cli::range(4, 65536));
   b->add_option("--error-fraction", build.error_fraction, "Allowed error per tile in texels (f)");
   b->add_option("--height-quantum", build.height_quantum, "Interior height quantum as a fraction of eps_l (q)");
   b->add_option("--z-quantum", build.z_quantum, "Finest height quantum (default 1 for integer DEMs, else 0.01)");
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
   d->add_option("pyramid", decode.pyramid, "Pyramid archive (.tlp) or directory")->required();
   std::string decode_tile;
   d->add_option("--tile", decode_tile, "Tile L/X/Y (X east, Y north, from the south-west)")->required();
-  d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer");
+  d->add_option("--mask", decode.mask, "Neighbour mask 0..15: bit 1 west, 2 south, 4 east, 8 north is one level finer")->check(fest::cli::range(0, 15));
   d->add_option("-o,--output", decode.output, "Mesh file; - = standard output (PLY)");
   d->add_option("--to", decode_to, "Output format: ply, obj, off, stl or drc");
   d->add_option("--texture", decode.texture, "Also write the tile's texture, as stored (PNG or JPEG)");
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
   v->add_option("--z-scale", verify.dem.z_scale, "As for build");
   v->add_option("--z-offset", verify.dem.z_offset, "As for build");
   v->add_option("--nodata", verify.dem.nodata, "As for build")->check(fest::cli::accepts_nan);
-  v->add_option("--cameras", verify.cameras, "Random cameras for the crack check");
+  v->add_option("--cameras", verify.cameras, "Random cameras for the crack check")->check(fest::cli::range(0, 1000000));
   v->add_option("--seed", verify.seed, "Seed of the random cameras");
 
   ExportQmArgs qm;
@@ -135,8 +135,8 @@ int main(int argc, char** argv) {
   StatsArgs stats;
   auto* st = app.add_subcommand("stats", "JSON statistics of a pyramid (.tlp), or of a DEM and its pyramid plan");
   add_dem_options(st, stats.dem);
-  st->add_option("--tile", stats.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)");
-  st->add_option("--texels", stats.texels, "Texels per tile side T (power of two >= B; default B)");
+  st->add_option("--tile", stats.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)")->check(fest::cli::range(4, 4096));
+  st->add_option("--texels", stats.texels, "Texels per tile side T (power of two >= B; default B)")->check(fest::cli::range(4, 65536));
   st->add_option("--error-fraction", stats.error_fraction, "Allowed error per tile in texels (f)");
 
   return fest::cli::run(app, argc, argv, [&] {

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   move->add_option("--backlash-deg", mv.backlash_deg, "Overshoot before coming back from the other side")
       ->check(fest::cli::non_negative)
       ->default_val(2.0);
-  move->add_option("--settle-ms", mv.settle_ms, "Wait after arrival (vibrations)")->default_val(500);
+  move->add_option("--settle-ms", mv.settle_ms, "Wait after arrival (vibrations)")->default_val(500)->check(fest::cli::range(0, 86400000));
   move->add_flag("--no-wait", mv.no_wait, "Send the move and return at once (no approach policy)");
   bool stop_now = false;
   auto* stop = app.add_subcommand("stop", "Stop (decelerating; --now: at once)");

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "core/srgb.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
@@ -366,7 +367,7 @@ int run_render(const RenderArgs& a) {
     // Every frame, one image (or pair) each. A first pass checks every frame and finds the
     // value range over all of them, so that nothing is written for a bad frame and a preset
     // or %-valued transfer function maps a value to the same colour in every frame.
-    const std::string name = a.input == "-" ? "stdin" : a.input;
+    const std::string name = input_name(a.input);
     const formats::Input in = formats::load_volume_input(a.input, vo);
     if (in.bytes.empty()) throw bad_input("empty input ({})", name);
     vo.frame = -1;

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/input_name.hpp"
 
 namespace fest::volrender_tool {
 namespace {
@@ -24,7 +26,7 @@ LoadedVolume checked(const Volume& v, const std::string& name) {
 }  // namespace
 
 LoadedVolume load_volume(const std::string& path, const formats::VolumeSourceOptions& options) {
-  const std::string name = path == "-" ? "stdin" : path;
+  const std::string name = input_name(path);
   formats::Input in = formats::load_volume_input(path, options);
   if (in.bytes.empty()) throw bad_input("empty input ({})", name);
   return checked(formats::read_volume_source(in, options), name);

@@ -1,14 +1,15 @@
 #pragma once
-// Bad input of a .vw file reported with where it came from (the path, or stdin).
+// Bad input of a .vw file reported with where it came from (the path, or standard input).
 
 #include <string>
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 
 namespace fest::volwave_tool {
 
-inline std::string where_of(const std::string& path) { return is_stdio(path) ? "stdin" : path; }
+inline std::string where_of(const std::string& path) { return input_name(path); }
 
 // f(), with a bad-input error's message given the input's location.
 template <typename F>

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       "haar, cdf53 (default) or cdf97 (--rmse only)");
   e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(fest::cli::range(0, 16));
   e->add_option("--roi-box", enc.roi_box, "Region x0,y0,z0,x1,y1,z1 (voxel indices, inclusive) coded with --roi-error")
-      ->delimiter(',')->expected(6)->allow_extra_args(false);
+      ->delimiter(',')->expected(6)->allow_extra_args(false)->check(fest::cli::range(0, 2147483647));
   e->add_option("--roi-mask", enc.roi_mask, "Region as a volume: its non-zero voxels are coded with --roi-error");
   e->add_option("--roi-error", enc.roi_error, "L-infinity bound inside the region (at most --max-error)");
   e->add_option("--report", enc.report, "Write sizes, ratio and measured errors as JSON");

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/input_name.hpp"
 #include "fluidsim/frame.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/input.hpp"
@@ -124,7 +125,7 @@ Volume from_image_data(const Dataset& img, const InputSelect& sel, const std::st
 }  // namespace
 
 Volume read_any_volume(const std::string& path, const InputSelect& select) {
-  const std::string where = is_stdio(path) ? "stdin" : path;
+  const std::string where = input_name(path);
   formats::Input in = formats::load_input(path);
   if (in.bytes.empty()) throw bad_input("empty input ({})", where);
   const std::string_view b(in.bytes);
