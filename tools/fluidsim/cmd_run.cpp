@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/file_io.hpp"
 #include "core/progress.hpp"
 #include "core/resources.hpp"
@@ -46,9 +47,9 @@ Scene load_scene(const std::string& path) {
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    const auto colon = what.find("parse error");
-    throw bad_input("invalid scene JSON: {} ({})", colon == std::string::npos ? what : what.substr(colon), where);
+    throw bad_input("invalid scene JSON: {} ({})", json_failure_words(e.what(), e.byte, text), where);
+  } catch (const json::exception& e) {  // out_of_range: a number beyond double's range
+    throw bad_input("invalid scene JSON: {} ({})", json_failure_words(e.what(), 0, text), where);
   }
   return parse_scene(doc, where);
 }

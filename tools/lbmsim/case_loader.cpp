@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/file_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -66,9 +67,9 @@ LoadedCase load_case(const std::string& path, const std::vector<lbm::CaseOverrid
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    const auto at = what.find("parse error");
-    throw bad_input("invalid case JSON: {} ({})", at == std::string::npos ? what : what.substr(at), L.where);
+    throw bad_input("invalid case JSON: {} ({})", json_failure_words(e.what(), e.byte, text), L.where);
+  } catch (const json::exception& e) {  // out_of_range: a number beyond double's range
+    throw bad_input("invalid case JSON: {} ({})", json_failure_words(e.what(), 0, text), L.where);
   }
   for (const lbm::CaseOverride& s : sets) {
     if (!doc.is_object()) throw usage_error("--set needs a case object");
