@@ -42,7 +42,13 @@ function(fest_plugin name)
   add_library(${name} MODULE ${ARG_SOURCES})
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
   target_compile_options(${name} PRIVATE ${FEST_WARNINGS})
-  target_link_options(${name} PRIVATE LINKER:--no-undefined LINKER:-Bsymbolic)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang" AND (FEST_FUZZ OR FEST_SANITIZE))
+    # clang links the sanitizer runtimes into executables only; a module's __asan_* and
+    # __sancov_* references resolve against the host when it is opened.
+    target_link_options(${name} PRIVATE LINKER:-Bsymbolic)
+  else()
+    target_link_options(${name} PRIVATE LINKER:--no-undefined LINKER:-Bsymbolic)
+  endif()
   set_target_properties(${name} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/bin
                         CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
   install(TARGETS ${name} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/fest)

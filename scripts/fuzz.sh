@@ -9,7 +9,9 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh fuzz_image_header fuzz_volume fuzz_mgh fuzz_json fuzz_clers fuzz_ebm fuzz_camera_json
   fuzz_image_stream fuzz_patnet fuzz_vw fuzz_radiosity_scene fuzz_volume_source fuzz_softobj fuzz_lbm_case fuzz_ffd_lattice fuzz_v4l2_frame fuzz_feshape_xyz
   fuzz_ltx fuzz_ltw fuzz_merl fuzz_tlp_archive fuzz_mmb fuzz_eos_model fuzz_npz_model
-  fuzz_segbrain_kb fuzz_vtk_precheck)
+  fuzz_segbrain_kb fuzz_vtk_precheck
+  fuzz_fluidsim fuzz_lmfsim_scene fuzz_capture fuzz_brdffit_json fuzz_quatpath_keys fuzz_patnet_inputs fuzz_tlp_pyramid
+  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -30,7 +32,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_vw) echo tests/data/volwave ;;
     fuzz_radiosity_scene) echo tests/data/radiosity examples/radiosity ;;
     fuzz_volume_source) echo tests/data/volume ;;
-    fuzz_softobj) echo examples/tongue ;;
+    fuzz_softobj) echo examples/tongue tests/data/regress/softobj ;;
     fuzz_lbm_case) echo examples/lbmsim ;;
     fuzz_ffd_lattice) echo tests/data/ffd ;;
     fuzz_v4l2_frame) echo tests/data/v4l2 ;;
@@ -44,6 +46,16 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_npz_model) echo tests/data/facefit ;;
     fuzz_segbrain_kb) echo share/segbrain tests/data/regress/segbrain ;;
     fuzz_vtk_precheck) echo tests/data/dataset tests/data/vtk_bad tests/data/regress/dataset ;;
+    fuzz_fluidsim) echo tests/data/fluidsim examples/fluidsim tests/data/regress/fluidsim ;;
+    fuzz_lmfsim_scene) echo tests/data/lmfsim tests/data/regress/lmfsim ;;
+    fuzz_capture) echo tests/data/capture examples/station tests/data/regress/capture ;;
+    fuzz_brdffit_json) echo tests/data/brdffit/json tests/data/regress/brdffit ;;
+    fuzz_quatpath_keys) echo tests/data/quatpath examples/quatpath tests/data/regress/quatpath ;;
+    fuzz_patnet_inputs) echo tests/data/patnet/inputs tests/data/regress/patnet_inputs ;;
+    fuzz_tlp_pyramid) echo tests/data/terrainlod tests/data/regress/terrainlod ;;
+    fuzz_landmarks) echo tests/data/facefit/landmarks tests/data/regress/landmarks ;;
+    fuzz_transfer_function) echo tests/data/volrender/tf tests/data/regress/transfer_function ;;
+    fuzz_dem_npy) echo tests/data/terrainlod/npy tests/data/regress/dem ;;
   esac
 }
 

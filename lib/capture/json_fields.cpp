@@ -5,6 +5,7 @@
 
 #include "core/closest_word.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::capture {
 
@@ -22,8 +23,8 @@ void JsonFields::keys(const nlohmann::json& object, const std::string& path, con
     const std::string& key = item.key();
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     const std::string hint = closest_word(key, allowed);
-    fail(hint.empty() ? fmt::format("unknown key \"{}\"", key)
-                      : fmt::format("unknown key \"{}\" (did you mean \"{}\"?)", key, hint),
+    fail(hint.empty() ? fmt::format("unknown key \"{}\"", quoted_bytes(key))
+                      : fmt::format("unknown key \"{}\" (did you mean \"{}\"?)", quoted_bytes(key), hint),
          path);
   }
 }

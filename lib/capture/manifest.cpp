@@ -2,6 +2,7 @@
 
 #include "capture/json_fields.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::capture {
 
@@ -101,7 +102,7 @@ Journal replay_journal(std::string_view text, const std::string& where) {
       journal.shots[file] = std::move(r);
       ++journal.records;
     } else if (!entry.contains("resume") && !entry.contains("abort")) {
-      throw bad_input("unknown journal entry \"{}\" ({})", entry.begin().key(), here);
+      throw bad_input("unknown journal entry \"{}\" ({})", quoted_bytes(entry.begin().key()), here);
     }
   }
   if (line_no == 0) throw bad_input("empty journal ({})", where);

@@ -8,6 +8,7 @@
 
 #include "capture/json_fields.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::capture {
 
@@ -209,19 +210,19 @@ std::vector<PlannedShot> expand_plan(const Plan& plan, const Station& station, c
   if (lights.empty()) f.fail("the station has no light with role \"light\"", "lights");
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const LightConfig* l = station.light(lights[i]);
-    if (!l) f.fail(fmt::format("light \"{}\" is not in the station", lights[i]), fmt::format("lights[{}]", i));
+    if (!l) f.fail(fmt::format("light \"{}\" is not in the station", quoted_bytes(lights[i])), fmt::format("lights[{}]", i));
     for (std::size_t j = 0; j < i; ++j)
-      if (lights[j] == lights[i]) f.fail(fmt::format("names light \"{}\" twice", lights[i]), fmt::format("lights[{}]", i));
+      if (lights[j] == lights[i]) f.fail(fmt::format("names light \"{}\" twice", quoted_bytes(lights[i])), fmt::format("lights[{}]", i));
     // The thermal limit: a light stays on for its warm-up and its whole series.
     double on_s = l->warmup_ms / 1000.0;
     for (double t : plan.exposures_s) on_s += t * plan.repeat;
     if (l->max_on_s > 0 && on_s > l->max_on_s)
-      f.fail(fmt::format("light \"{}\" would stay on {:.3g} s per series, over its max_on_s {} s", l->id, on_s, l->max_on_s),
+      f.fail(fmt::format("light \"{}\" would stay on {:.3g} s per series, over its max_on_s {} s", quoted_bytes(l->id), on_s, l->max_on_s),
              fmt::format("lights[{}]", i));
   }
   for (std::size_t i = 0; i < plan.silhouette_lights.size(); ++i)
     if (!station.light(plan.silhouette_lights[i]))
-      f.fail(fmt::format("light \"{}\" is not in the station", plan.silhouette_lights[i]),
+      f.fail(fmt::format("light \"{}\" is not in the station", quoted_bytes(plan.silhouette_lights[i])),
              fmt::format("per_view.silhouette.lights_on[{}]", i));
   const double shortest = plan.exposures_s.front();
 

@@ -8,6 +8,7 @@
 #include "capture/json_fields.hpp"
 #include "capture/station.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::capture {
 
@@ -40,9 +41,9 @@ json build_rig(const json& manifest, const std::vector<RigImage>& images, const 
   json out = {{"version", 1}, {"frame", "turntable"}, {"session", session}, {"images", json::array()}};
   for (const RigImage& im : images) {
     const LightConfig* l = station.light(im.light);
-    if (!l) f.fail(fmt::format("light \"{}\" is not in the station", im.light), "station.lights");
+    if (!l) f.fail(fmt::format("light \"{}\" is not in the station", quoted_bytes(im.light)), "station.lights");
     if (!l->position_mm)
-      f.fail(fmt::format("light \"{}\" has no position_mm (run capture calib-lights)", im.light), "station.lights");
+      f.fail(fmt::format("light \"{}\" has no position_mm (run capture calib-lights)", quoted_bytes(im.light)), "station.lights");
     const Eigen::Vector3d q((*l->position_mm)[0], (*l->position_mm)[1], (*l->position_mm)[2]);
     const Eigen::Matrix3d R = r0 * rotation_about_axis(im.angle_deg);
     const Eigen::Vector3d q_t = rotation_about_axis(-im.angle_deg) * r0.transpose() * (q - t0);

@@ -4,6 +4,7 @@
 
 #include "capture/json_fields.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::capture {
 
@@ -102,7 +103,7 @@ Station parse_station(const json& doc, const std::string& where) {
     l.id = f.string(ls[i]["id"], p + ".id");
     if (l.id.find_first_of("/\\ ,:") != std::string::npos || l.id == "." || l.id == "..")
       f.fail("must be a name without '/', spaces, commas or colons (it names folders)", p + ".id");
-    if (s.light(l.id)) f.fail(fmt::format("names light \"{}\" twice", l.id), p + ".id");
+    if (s.light(l.id)) f.fail(fmt::format("names light \"{}\" twice", quoted_bytes(l.id)), p + ".id");
     l.uri = f.string(ls[i]["uri"], p + ".uri");
     if (ls[i].contains("active_low")) l.active_low = f.boolean(ls[i]["active_low"], p + ".active_low");
     if (ls[i].contains("position_mm")) l.position_mm = f.vec3(ls[i]["position_mm"], p + ".position_mm");

@@ -2,11 +2,14 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "fluidsim/simulator.hpp"
 
 namespace fest::fluidsim {
@@ -114,7 +117,7 @@ std::size_t decode_frame(std::string_view bytes, std::size_t offset, Frame& f, c
           if (key == "index") f.index = std::stol(val);
           if (key == "time") f.time = std::stod(val);
         } catch (const std::exception&) {
-          throw bad_input("bad fest-frame {} \"{}\" ({})", key, val, loc);
+          throw bad_input("bad fest-frame {} \"{}\" ({})", quoted_bytes(key), quoted_bytes(val), loc);
         }
         if (key == "fields") {
           have_fields = true;
@@ -127,10 +130,10 @@ std::size_t decode_frame(std::string_view bytes, std::size_t offset, Frame& f, c
             try {
               ff.components = colon == std::string::npos ? 1 : std::stoi(item.substr(colon + 1));
             } catch (const std::exception&) {
-              throw bad_input("bad field \"{}\" in the fest-frame header ({})", item, loc);
+              throw bad_input("bad field \"{}\" in the fest-frame header ({})", quoted_bytes(item), loc);
             }
             if (ff.components < 1 || ff.components > 16 || ff.name.empty())
-              throw bad_input("bad field \"{}\" in the fest-frame header ({})", item, loc);
+              throw bad_input("bad field \"{}\" in the fest-frame header ({})", quoted_bytes(item), loc);
             f.fields.push_back(ff);
           }
         }
@@ -139,7 +142,7 @@ std::size_t decode_frame(std::string_view bytes, std::size_t offset, Frame& f, c
     }
     if (line[0] == '#') continue;
     const auto colon = line.find(':');
-    if (colon == std::string::npos) throw bad_input("malformed NRRD header line \"{}\" ({})", line, loc);
+    if (colon == std::string::npos) throw bad_input("malformed NRRD header line \"{}\" ({})", quoted_bytes(line), loc);
     const std::string key = line.substr(0, colon);
     std::string val = line.substr(colon + 1);
     while (!val.empty() && val.front() == ' ') val.erase(0, 1);
@@ -147,7 +150,7 @@ std::size_t decode_frame(std::string_view bytes, std::size_t offset, Frame& f, c
       have_type = true;
       if (val == "float") f.float64 = false;
       else if (val == "double") f.float64 = true;
-      else throw bad_input("frame type must be float or double, not \"{}\" ({})", val, loc);
+      else throw bad_input("frame type must be float or double, not \"{}\" ({})", quoted_bytes(val), loc);
     } else if (key == "sizes") {
       std::istringstream in(val);
       long s;
@@ -162,11 +165,14 @@ std::size_t decode_frame(std::string_view bytes, std::size_t offset, Frame& f, c
       std::vector<std::string> toks;
       while (in >> tok) toks.push_back(tok);
       if (toks.size() >= 2) {
+        double h = 0;
         try {
-          f.spacing = std::stod(toks[1]);
+          h = std::stod(toks[1]);
         } catch (const std::exception&) {
-          f.spacing = 1.0;
         }
+        if (!(h > 0) || !std::isfinite(h))
+          throw bad_input("frame spacing \"{}\" is not a positive finite number ({})", quoted_bytes(toks[1]), loc);
+        f.spacing = h;
       }
     }
   }
@@ -174,16 +180,21 @@ std::size_t decode_frame(std::string_view bytes, std::size_t offset, Frame& f, c
   if (!raw || !little) throw bad_input("frames must be raw little-endian NRRD ({})", loc);
   if (sizes.size() != 3 && sizes.size() != 4) throw bad_input("a frame has a channel axis and 2 or 3 space axes ({})", loc);
   f.dim = static_cast<int>(sizes.size()) - 1;
+  // Checked axis by axis: four axes of 65536 would wrap the product to 0 and pass the
+  // length check below with no data (fuzz_fluidsim, regress/fluidsim/).
+  const std::size_t sample = f.float64 ? 8 : 4;
   std::size_t count = 1;
   for (long s : sizes) {
     if (s < 1 || s > 1 << 16) throw bad_input("frame size {} out of range ({})", s, loc);
+    if (count > std::numeric_limits<std::size_t>::max() / sample / static_cast<std::size_t>(s))
+      throw bad_input("frame sizes {} are too large ({})", fmt::join(sizes, " "), loc);
     count *= static_cast<std::size_t>(s);
   }
   for (int a = 0; a < f.dim; ++a) f.size[a] = static_cast<int>(sizes[a + 1]);
   if (!have_fields) f.fields.push_back({"value", static_cast<int>(sizes[0])});
   if (f.channels() != sizes[0])
     throw bad_input("fest-frame fields name {} channels, the array has {} ({})", f.channels(), sizes[0], loc);
-  const std::size_t need = count * (f.float64 ? 8 : 4);
+  const std::size_t need = count * sample;
   const std::size_t have = bytes.size() - pos;
   if (have < need) throw bad_input("truncated NRRD frame: expected {} bytes, got {} ({})", need, have, loc);
   f.data.resize(count);

@@ -8,6 +8,7 @@
 
 #include "core/closest_word.hpp"
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::fluidsim {
 
@@ -29,8 +30,8 @@ struct Parser {
       const std::string hint = closest_word(key, allowed);
       const std::string full = path.empty() ? key : path + "." + key;
       if (hint.empty())
-        throw bad_input("scene key \"{}\" is unknown ({})", full, where);
-      throw bad_input("scene key \"{}\" is unknown (did you mean \"{}\"?) ({})", full, hint, where);
+        throw bad_input("scene key \"{}\" is unknown ({})", quoted_bytes(full, 40), where);
+      throw bad_input("scene key \"{}\" is unknown (did you mean \"{}\"?) ({})", quoted_bytes(full, 40), hint, where);
     }
   }
 
@@ -213,7 +214,7 @@ Scene parse_scene(const json& doc, const std::string& where) {
         f.scalar = j.value("scalar", s.scalars.front().name);
         bool known = false;
         for (const auto& sc : s.scalars) known = known || sc.name == f.scalar;
-        if (!known) p.fail(fmt::format("names no scalar \"{}\"", f.scalar), path + ".scalar");
+        if (!known) p.fail(fmt::format("names no scalar \"{}\"", quoted_bytes(f.scalar)), path + ".scalar");
         if (j.contains("beta")) f.beta = p.number(j["beta"], path + ".beta", -1e9, 1e9);
         if (j.contains("ambient")) f.ambient = p.number(j["ambient"], path + ".ambient", -1e12, 1e12);
       } else if (type == "gravity" || type == "constant") {

@@ -418,7 +418,7 @@ void apply_override(json& doc, const CaseOverride& o) {
   json value;
   try {
     value = json::parse(o.value);
-  } catch (const json::parse_error&) {
+  } catch (const json::exception&) {  // also out_of_range: a number beyond double's range
     value = o.value;
   }
   if (!doc.is_object()) throw usage_error("the case is not a JSON object");

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::lmfsim {
 
@@ -18,7 +19,7 @@ void allow(const json& j, const std::string& where, std::initializer_list<const 
   if (!j.is_object()) throw bad_input("{}: expected an object", where);
   std::set<std::string> ok(keys.begin(), keys.end());
   for (auto it = j.begin(); it != j.end(); ++it)
-    if (!ok.count(it.key())) throw bad_input("{}: unknown field '{}'", where, it.key());
+    if (!ok.count(it.key())) throw bad_input("{}: unknown field '{}'", where, quoted_bytes(it.key()));
 }
 
 double num(const json& j, const std::string& where) {
@@ -59,7 +60,8 @@ Signal signal(const json& j, const std::string& where) {
     return s;
   }
   allow(j, where, {"keys"});
-  const json& keys = j.at("keys");
+  if (!j.contains("keys")) throw bad_input("{}: expected a number or {{\"keys\": [[t, value], ...]}}", where);
+  const json& keys = j["keys"];
   if (!keys.is_array() || keys.empty()) throw bad_input("{}.keys: expected [[t, value], ...]", where);
   std::vector<double> t, y;
   for (const json& k : keys) {
@@ -79,8 +81,8 @@ Signal3 signal3(const json& j, const std::string& where) {
     for (int k = 0; k < 3; ++k) s.c[static_cast<std::size_t>(k)].value = v[k];
     return s;
   }
-  allow(j, where, {"keys"});
-  return s;
+  // {"keys": ...} is the caller's (keyed3); any other object would silently be zero.
+  throw bad_input("{}: expected [x, y, z] or {{\"keys\": [[t, x, y, z], ...]}}", where);
 }
 
 Signal3 keyed3(const json& keys, const std::string& where) {
@@ -125,7 +127,7 @@ int body_ref(const json& j, const std::string& where, const std::vector<Body>& b
   if (name == "world") return kWorld;
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == name) return static_cast<int>(i);
-  throw bad_input("{}: unknown body '{}'", where, name);
+  throw bad_input("{}: unknown body '{}'", where, quoted_bytes(name));
 }
 
 ConstraintType constraint_type(const std::string& s, const std::string& where) {
@@ -138,7 +140,7 @@ ConstraintType constraint_type(const std::string& s, const std::string& where) {
       {"motor", ConstraintType::motor}, {"knife_edge", ConstraintType::knife_edge}};
   for (const auto& [name, t] : table)
     if (s == name) return t;
-  throw bad_input("{}: unknown constraint type '{}'", where, s);
+  throw bad_input("{}: unknown constraint type '{}'", where, quoted_bytes(s));
 }
 
 void read_sim(const json& j, SimSettings& sim) {
@@ -157,7 +159,7 @@ void read_sim(const json& j, SimSettings& sim) {
     else if (s == "symplectic") sim.integrator = Integrator::symplectic;
     else if (s == "rk4") sim.integrator = Integrator::rk4;
     else if (s == "rk45") sim.integrator = Integrator::rk45;
-    else throw bad_input("sim.integrator: unknown integrator '{}'", s);
+    else throw bad_input("sim.integrator: unknown integrator '{}'", quoted_bytes(s));
   }
   if (j.contains("stab")) {
     const json& st = j["stab"];
@@ -168,7 +170,7 @@ void read_sim(const json& j, SimSettings& sim) {
       else if (s == "baumgarte") sim.stab = Stabilization::baumgarte;
       else if (s == "force") sim.stab = Stabilization::force;
       else if (s == "project") sim.stab = Stabilization::project;
-      else throw bad_input("sim.stab.mode: unknown mode '{}'", s);
+      else throw bad_input("sim.stab.mode: unknown mode '{}'", quoted_bytes(s));
     }
     sim.alpha = num_or(st, "alpha", sim.alpha, "sim.stab");
     sim.beta = num_or(st, "beta", sim.beta, "sim.stab");
@@ -177,13 +179,13 @@ void read_sim(const json& j, SimSettings& sim) {
     const std::string s = str(j["solver"], "sim.solver");
     if (s == "baraff") sim.solver = SolverKind::baraff;
     else if (s == "dense") sim.solver = SolverKind::dense;
-    else throw bad_input("sim.solver: unknown solver '{}'", s);
+    else throw bad_input("sim.solver: unknown solver '{}'", quoted_bytes(s));
   }
   if (j.contains("formulation")) {
     const std::string s = str(j["formulation"], "sim.formulation");
     if (s == "lmf") sim.formulation = Formulation::lmf;
     else if (s == "penalty") sim.formulation = Formulation::penalty;
-    else throw bad_input("sim.formulation: unknown formulation '{}'", s);
+    else throw bad_input("sim.formulation: unknown formulation '{}'", quoted_bytes(s));
   }
   sim.kappa = num_or(j, "kappa", sim.kappa, "sim");
   sim.omega0 = num_or(j, "omega0", sim.omega0, "sim");
@@ -213,7 +215,7 @@ Scene scene_from_json(const json& doc, const MeshLoader& mesh_loader) {
     const std::string type = jb.contains("type") ? str(jb["type"], where + ".type") : "rigid";
     if (type == "particle") b.kind = BodyKind::particle;
     else if (type == "rigid") b.kind = BodyKind::rigid;
-    else throw bad_input("{}.type: expected particle or rigid, got '{}'", where, type);
+    else throw bad_input("{}.type: expected particle or rigid, got '{}'", where, quoted_bytes(type));
     b.fixed = jb.contains("fixed") && boolean(jb["fixed"], where + ".fixed");
     b.pos = vec3_or(jb, "pos", b.pos, where);
     b.vel = vec3_or(jb, "vel", b.vel, where);
@@ -354,7 +356,7 @@ Scene scene_from_json(const json& doc, const MeshLoader& mesh_loader) {
           f.ki = vec3_or(jf, "ki", f.ki, where);
         }
       } else {
-        throw bad_input("{}.type: unknown force type '{}' (spring, drag, constant, pid)", where, type);
+        throw bad_input("{}.type: unknown force type '{}' (spring, drag, constant, pid)", where, quoted_bytes(type));
       }
       sc.forces.push_back(std::move(f));
     }
@@ -372,7 +374,7 @@ Scene scene_from_json(const json& doc, const MeshLoader& mesh_loader) {
       else if (a == "deactivate") e.action = EventAction::deactivate;
       else if (a == "set") e.action = EventAction::set;
       else if (a == "set_param") e.action = EventAction::set_param;
-      else throw bad_input("{}.action: unknown action '{}'", where, a);
+      else throw bad_input("{}.action: unknown action '{}'", where, quoted_bytes(a));
       if (!je.contains("target")) throw bad_input("{}: missing 'target'", where);
       e.target = str(je["target"], where + ".target");
       if (je.contains("value")) {

@@ -45,10 +45,12 @@ PinholeCamera camera_from_json(const nlohmann::json& j, const std::string& where
   if (!j.contains("width") || !j.contains("height") || !j["width"].is_number_integer() ||
       !j["height"].is_number_integer())
     throw bad_input("camera needs integer \"width\" and \"height\" ({})", where);
-  c.width = j["width"].get<int>();
-  c.height = j["height"].get<int>();
-  if (c.width < 1 || c.height < 1 || c.width > 65536 || c.height > 65536)
-    throw bad_input("camera size {}x{} is not plausible ({})", c.width, c.height, where);
+  // Read wide and checked before narrowing: 4294967297 must not become a width of 1.
+  const long long w = j["width"].get<long long>(), h = j["height"].get<long long>();
+  if (w < 1 || h < 1 || w > 65536 || h > 65536)
+    throw bad_input("camera size {}x{} is not plausible ({})", j["width"].dump(), j["height"].dump(), where);
+  c.width = static_cast<int>(w);
+  c.height = static_cast<int>(h);
   return c;
 }
 

@@ -34,6 +34,8 @@ PhonemeTable decode_phoneme_table(std::string_view text) {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     throw bad_input("phoneme table: {}", json_failure_words(e.what(), e.byte, text));
+  } catch (const json::exception& e) {  // a number beyond double's range: out_of_range, not parse_error
+    throw bad_input("phoneme table: {}", json_failure_words(e.what(), 0, text));
   }
   if (!doc.is_object() || !doc.contains("phonemes") || !doc["phonemes"].is_object())
     throw bad_input("phoneme table: no \"phonemes\" object");

@@ -92,6 +92,8 @@ Palate decode_palate(std::string_view text) {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     throw bad_input("palate: {}", json_failure_words(e.what(), e.byte, text));
+  } catch (const json::exception& e) {  // a number beyond double's range: out_of_range, not parse_error
+    throw bad_input("palate: {}", json_failure_words(e.what(), 0, text));
   }
   if (!doc.is_object() || !doc.contains("sphere") || !doc.contains("strip"))
     throw bad_input("palate: needs \"sphere\" and \"strip\" objects");

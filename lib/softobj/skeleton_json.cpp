@@ -47,6 +47,8 @@ Skeleton decode_skeleton(std::string_view text) {
     doc = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     throw bad_input("skeleton JSON: {}", json_failure_words(e.what(), e.byte, text));
+  } catch (const json::exception& e) {  // a number beyond double's range: out_of_range, not parse_error
+    throw bad_input("skeleton JSON: {}", json_failure_words(e.what(), 0, text));
   }
   if (!doc.is_object()) throw bad_input("skeleton JSON: the document is not an object");
   Skeleton s;

@@ -144,4 +144,31 @@ expect_clean_failure 3 quatpath
 expect_stderr_has 'malformed key: expected a number, got a string .*keys2.jsonl:1'
 expect_no_library_text
 
+case_ "lmfsim trajectories: a frame number beyond long's range and a binary header are refused in plain words"
+printf '{"bodies": [{"name": "p", "type": "particle", "mass": 1}], "sim": {"t_end": 0.002, "dt": 0.001}}\n' > "$WORK/p.json"
+"$FEST_BIN/lmfsim" run < "$WORK/p.json" > "$WORK/p.csv"
+{ head -1 "$WORK/p.csv"; echo "1e300,0,p,0,0,0,1,0,0,0,0,0,0,0,0,0"; } > "$WORK/p_bad.csv"
+run lmfsim diff "$WORK/p.csv" "$WORK/p_bad.csv"
+expect_clean_failure 3 lmfsim
+expect_stderr_has 'frame 1e300 is not a whole number in \[0, 1e15\] .*p_bad.csv:2'
+printf 'fr\001ame\n' > "$WORK/p_bin.csv"
+run lmfsim diff "$WORK/p.csv" "$WORK/p_bin.csv"
+expect_clean_failure 3 lmfsim
+expect_readable_stderr
+
+case_ "hdrmerge session: manifest fields of another type, an angle index beyond int and a light naming a path"
+echo '{"version": 1, "status": 5}' > "$WORK/m_status.json"
+run hdrmerge --manifest "$WORK/m_status.json"
+expect_clean_failure 3 hdrmerge
+expect_stderr_has 'the session is not complete'
+expect_no_library_text
+echo '{"version": 1, "status": "complete", "shots": [{"file": "a.png", "sha256": "x", "exposure_s": 0.1, "angle_index": 1e300, "angle_deg": 0}], "sets": [{"light": "L0", "shots": [0]}]}' > "$WORK/m_angle.json"
+run hdrmerge --manifest "$WORK/m_angle.json"
+expect_clean_failure 3 hdrmerge
+expect_stderr_has 'shots\[0\].angle_index must be an integer in \[0, 1000000\]'
+echo '{"version": 1, "status": "complete", "shots": [], "sets": [{"light": "../x", "shots": []}]}' > "$WORK/m_light.json"
+run hdrmerge --manifest "$WORK/m_light.json"
+expect_clean_failure 3 hdrmerge
+expect_stderr_has 'sets\[0\].light "../x" is not a light id'
+
 finish

@@ -1,10 +1,12 @@
-// softobj's decoders: the skeleton scene JSON, the phoneme table and the timeline.
+// softobj's decoders: the skeleton scene JSON, the phoneme table, the timeline and the
+// palate (decode_palate).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
 #include "core/error.hpp"
 #include "softobj/coarticulation.hpp"
+#include "softobj/palate.hpp"
 #include "softobj/skeleton_json.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -22,6 +24,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     t.phonemes["a"] = {};
     t.phonemes["b"] = {};
     (void)fest::softobj::decode_timeline(text, t);
+  } catch (const fest::Error&) {
+  }
+  try {
+    (void)fest::softobj::decode_palate(text);
   } catch (const fest::Error&) {
   }
   return 0;

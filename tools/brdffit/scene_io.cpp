@@ -142,6 +142,7 @@ Rgb rgb_of(const nlohmann::json& j, const std::string& where, const char* key) {
   for (int k = 0; k < 3; ++k) {
     if (!j[static_cast<std::size_t>(k)].is_number()) throw bad_input("\"{}\" must hold numbers ({})", key, where);
     c[k] = j[static_cast<std::size_t>(k)].get<double>();
+    if (!std::isfinite(c[k])) throw bad_input("\"{}\" holds a non-finite number ({})", key, where);
   }
   return c;
 }
@@ -149,7 +150,7 @@ Rgb rgb_of(const nlohmann::json& j, const std::string& where, const char* key) {
 }  // namespace
 
 LafortuneBrdf brdf_from_json(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_object() || j.value("model", "") != "lafortune")
+  if (!j.is_object() || !j.contains("model") || j["model"] != "lafortune")
     throw bad_input("a BRDF must be an object with \"model\": \"lafortune\" ({})", where);
   LafortuneBrdf b;
   b.rho_d = rgb_of(j.value("rho_d", nlohmann::json()), where, "rho_d");
@@ -178,10 +179,16 @@ reflectance::SurfaceMaterials materials_from_json(const nlohmann::json& j, const
       for (const auto& row : w) {
         if (!row.is_array() || row.size() != m.brdfs.size())
           throw bad_input("every \"vertex_weights\" row needs {} weights ({})", m.brdfs.size(), where);
-        for (const auto& x : row) m.vertex_weights.push_back(x.get<float>());
+        for (const auto& x : row) {
+          // Checked before narrowing to float (1e300 does not fit; fuzz_brdffit_json).
+          if (!x.is_number() || !(x.get<double>() >= 0) || x.get<double>() > 1e30)
+            throw bad_input("vertex weights must be numbers in [0, 1e30], not {} ({})", quoted_bytes(x.dump()), where);
+          m.vertex_weights.push_back(x.get<float>());
+        }
       }
     } else if (j.contains("triangle_material")) {
       for (const auto& x : j["triangle_material"]) {
+        if (!x.is_number_integer()) throw bad_input("material ids must be integers, not {} ({})", quoted_bytes(x.dump()), where);
         const auto id = x.get<long long>();
         if (id < 0 || id >= static_cast<long long>(m.brdfs.size()))
           throw bad_input("material id {} outside 0..{} ({})", id, m.brdfs.size() - 1, where);

@@ -49,6 +49,8 @@ Scene load_scene(const std::string& path) {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     throw bad_input("scene: {} ({})", json_failure_words(e.what(), e.byte, text), where);
+  } catch (const json::exception& e) {  // out_of_range: a number beyond double's range
+    throw bad_input("scene: {} ({})", json_failure_words(e.what(), 0, text), where);
   }
   return parse_scene(doc, where);
 }

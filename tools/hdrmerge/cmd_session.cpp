@@ -93,14 +93,18 @@ cv::Mat read_takes(const std::string& session, const std::vector<Shot>& takes) {
 
 Shot shot_at(const json& shots, const json& index, const std::string& where) {
   if (!index.is_number_unsigned() || index.get<std::size_t>() >= shots.size())
-    throw bad_input("sets: shot index {} out of range ({})", index.dump(), where);
+    throw bad_input("sets: shot index {} out of range ({})", quoted_bytes(index.dump()), where);
   const json& j = shots[index.get<std::size_t>()];
   Shot s;
   try {
     s.file = j.at("file").get<std::string>();
     s.sha256 = j.at("sha256").get<std::string>();
     s.exposure_s = j.at("exposure_s").get<double>();
-    s.angle_index = j.at("angle_index").get<int>();
+    // get<int> of a double too large for an int is undefined behaviour: check first.
+    const json& ai = j.at("angle_index");
+    if (!ai.is_number_integer() || ai.get<long long>() < 0 || ai.get<long long>() > 1000000)
+      throw bad_input("shots[{}].angle_index must be an integer in [0, 1000000] ({})", index.get<std::size_t>(), where);
+    s.angle_index = static_cast<int>(ai.get<long long>());
     s.angle_deg = j.at("angle_deg").get<double>();
   } catch (const json::exception& e) {
     throw bad_input("shots[{}]: {} ({})", index.get<std::size_t>(), json_failure_words(e.what(), 0, {}), where);
@@ -124,12 +128,18 @@ std::string relative_to(const std::string& path, const std::string& session) {
 int run_session(const SessionOptions& a) {
   const std::string where = input_name(a.manifest);
   const json manifest = formats::parse(formats::load_input(a.manifest), formats::read_json_document);
-  if (!manifest.is_object() || manifest.value("version", 0) != 1) throw bad_input("not a capture manifest, version 1 ({})", where);
-  const std::string status = manifest.value("status", "");
+  // Fields are type-checked before they are read: json::value() throws the JSON library's
+  // own exception for a field of another type.
+  if (!manifest.is_object() || !manifest.contains("version") || manifest["version"] != 1)
+    throw bad_input("not a capture manifest, version 1 ({})", where);
+  const auto text_field = [&](const char* key) {
+    return manifest.contains(key) && manifest[key].is_string() ? manifest[key].get<std::string>() : std::string();
+  };
+  const std::string status = text_field("status");
   if (status != "complete")
-    throw bad_input("the session is not complete (status \"{}\"): finish it with capture run --resume ({})", status, where);
+    throw bad_input("the session is not complete (status \"{}\"): finish it with capture run --resume ({})", quoted_bytes(status), where);
   std::string session;
-  if (is_stdio(a.manifest)) session = manifest.value("session", "");
+  if (is_stdio(a.manifest)) session = text_field("session");
   else session = fs::path(a.manifest).parent_path().string();
   if (session.empty()) session = ".";
   const std::string out_dir = a.output_dir.empty() ? (fs::path(session) / "hdr").string() : a.output_dir;
@@ -140,9 +150,12 @@ int run_session(const SessionOptions& a) {
   std::vector<Set> sets;
   for (const json& js : manifest["sets"]) {
     Set s;
-    if (!js.is_object() || !js.contains("shots") || !js["shots"].is_array() || !js.contains("light"))
+    if (!js.is_object() || !js.contains("shots") || !js["shots"].is_array() || !js.contains("light") || !js["light"].is_string())
       throw bad_input("sets[{}] needs \"light\" and \"shots\" ({})", sets.size(), where);
     s.light = js["light"].get<std::string>();
+    // It names an output file (a000_<light>.exr): a plain name, never a path out of DIR.
+    if (s.light.empty() || s.light.find_first_of("/\\") != std::string::npos || s.light == "." || s.light == "..")
+      throw bad_input("sets[{}].light \"{}\" is not a light id ({})", sets.size(), quoted_bytes(s.light), where);
     for (const json& i : js["shots"]) {
       Shot shot = shot_at(shots, i, where);
       if (s.exposures.empty() || shot.exposure_s != s.exposures.back().front().exposure_s) s.exposures.emplace_back();
@@ -158,7 +171,7 @@ int run_session(const SessionOptions& a) {
   // Silhouette shots, one per angle (the first one at that angle).
   std::map<int, Shot> silhouettes;
   for (std::size_t i = 0; i < shots.size(); ++i)
-    if (shots[i].value("kind", "") == "silhouette") {
+    if (shots[i].is_object() && shots[i].contains("kind") && shots[i]["kind"] == "silhouette") {
       const Shot s = shot_at(shots, json(i), where);
       silhouettes.emplace(s.angle_index, s);
     }

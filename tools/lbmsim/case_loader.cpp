@@ -69,6 +69,8 @@ LoadedCase load_case(const std::string& path, const std::vector<lbm::CaseOverrid
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     throw bad_input("case: {} ({})", json_failure_words(e.what(), e.byte, text), L.where);
+  } catch (const json::exception& e) {  // out_of_range: a number beyond double's range
+    throw bad_input("case: {} ({})", json_failure_words(e.what(), 0, text), L.where);
   }
   for (const lbm::CaseOverride& s : sets) {
     if (!doc.is_object()) throw usage_error("--set needs a case object");

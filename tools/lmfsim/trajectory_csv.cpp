@@ -1,11 +1,13 @@
 #include "trajectory_csv.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 
 namespace fest::lmfsim_tool {
 
@@ -26,7 +28,7 @@ std::vector<TrajectoryRow> parse_trajectory(const std::string& bytes, const std:
     if (line.empty() || line[0] == '#') continue;
     if (!header) {
       if (line + "\n" != trajectory_header())
-        throw fest::bad_input("not an lmfsim trajectory CSV: header '{}' ({}:{})", line.substr(0, 60), name, lineno);
+        throw fest::bad_input("not an lmfsim trajectory CSV: header '{}' ({}:{})", fest::quoted_bytes(line, 60), name, lineno);
       header = true;
       continue;
     }
@@ -47,6 +49,9 @@ std::vector<TrajectoryRow> parse_trajectory(const std::string& bytes, const std:
       if (end == f[static_cast<std::size_t>(i)].c_str() || *end != '\0')
         throw fest::bad_input("field {} is not a number ({}:{})", i + 1, name, lineno);
     }
+    // A frame number outside long's range (or NaN) would make the cast undefined.
+    if (!(v[0] >= 0 && v[0] <= 1e15) || v[0] != std::floor(v[0]))
+      throw fest::bad_input("frame {} is not a whole number in [0, 1e15] ({}:{})", fest::quoted_bytes(f[0]), name, lineno);
     TrajectoryRow r;
     r.frame = static_cast<long>(v[0]);
     r.t = v[1];

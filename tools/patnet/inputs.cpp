@@ -42,6 +42,8 @@ std::vector<InputEvent> parse_events(const std::string& bytes, const std::string
       j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
       throw bad_input("malformed JSON: {} ({})", json_failure_words(e.what(), e.byte, text), where);
+    } catch (const nlohmann::json::exception& e) {  // out_of_range: a number beyond double's range (fuzz_patnet_inputs)
+      throw bad_input("malformed JSON: {} ({})", json_failure_words(e.what(), 0, text), where);
     }
     if (!j.is_object() || !j.contains("t") || !j["t"].is_number())
       throw bad_input("an event is an object with a numeric \"t\" ({})", where);

@@ -74,7 +74,7 @@ std::vector<Key> read_jsonl_keys(const std::string& bytes, const std::string& na
         const std::string w = j["way"].get<std::string>();
         if (w == "long") k.way = Way::longest;
         else if (w == "short") k.way = Way::shortest;
-        else throw bad_input("\"way\" is \"short\" or \"long\", not \"{}\" ({})", w, where);
+        else throw bad_input("\"way\" is \"short\" or \"long\", not \"{}\" ({})", quoted_bytes(w), where);
       }
       k.tension = j.value("tension", 0.0);
       k.continuity = j.value("continuity", 0.0);

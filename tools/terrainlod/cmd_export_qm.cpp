@@ -30,7 +30,6 @@ int run_export_qm(const ExportQmArgs& args) {
   const fs::path tmp = target.string() + ".part-" + std::to_string(::getpid());
   fs::remove_all(tmp, ec);
   try {
-    std::size_t bytes = 0;
     for (const auto& e : pyr.index()) {
       const auto g = pyr.geometry(e.id.level);
       terrainlod::QmFrame f;
@@ -44,7 +43,6 @@ int run_export_qm(const ExportQmArgs& args) {
       std::ofstream out(file, std::ios::binary);
       out.write(qm.data(), static_cast<std::streamsize>(qm.size()));
       if (!out) throw io_error("cannot write {}", file.string());
-      bytes += qm.size();
     }
     nlohmann::json available = nlohmann::json::array();
     for (int l = 0; l <= L.levels; ++l)

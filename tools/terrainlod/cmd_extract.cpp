@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/quote.hpp"
 #include "core/file_io.hpp"
 #include "core/stopwatch.hpp"
 #include "formats/image/image_io.hpp"
@@ -176,8 +177,10 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
       nlohmann::json j;
       try {
         j = nlohmann::json::parse(line);
+      } catch (const nlohmann::json::parse_error& e) {
+        throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), e.byte, line), at);
       } catch (const nlohmann::json::exception& e) {
-        throw bad_input("camera is not JSON: {} ({})", e.what(), at);
+        throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), 0, line), at);
       }
       cams.push_back(parse_camera(j, at));
       if (args.tau > 0) cams.back().tau_px = args.tau;
@@ -241,11 +244,14 @@ int run_extract(const ExtractArgs& args) {
   if (args.camera.empty()) throw usage_error("extract needs --camera CAM.json or --path CAMS.jsonl");
   if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
   const std::string cam_name = is_stdio(args.camera) ? "-" : args.camera;
+  const std::string camera_text = read_input(args.camera);
   nlohmann::json cj;
   try {
-    cj = nlohmann::json::parse(read_input(args.camera));
+    cj = nlohmann::json::parse(camera_text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), e.byte, camera_text), cam_name);
   } catch (const nlohmann::json::exception& e) {
-    throw bad_input("camera is not JSON: {} ({})", e.what(), cam_name);
+    throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), 0, camera_text), cam_name);
   }
   terrainlod::Camera cam = parse_camera(cj, cam_name);
   if (args.tau > 0) cam.tau_px = args.tau;

@@ -51,7 +51,10 @@ Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent
   // A hash map: a tree map's lookups were a quarter of a large view's extraction time.
   std::unordered_map<terrainlod::TileTriangulation::Vertex, Mesh::VertexHandle, VertexKeyHash> ids;
   std::vector<Mesh::VertexHandle> handles;
-  for (const auto& [id, tri] : parts) {
+  for (const auto& part : parts) {
+    // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
+    const auto& id = part.first;
+    const auto& tri = part.second;
     handles.assign(tri.vertices.size(), Mesh::VertexHandle());
     const std::int64_t cells = L.cells[static_cast<std::size_t>(id.level)];
     const std::int64_t x0 = id.x * cells, y0 = id.y * cells;
