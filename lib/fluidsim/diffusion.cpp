@@ -39,14 +39,10 @@ Diffuser::Diffuser(const Layout& layout, double coefficient, Transform kind, boo
 
 Diffuser::~Diffuser() = default;
 
-void Diffuser::velocity(int component, Field& f) const {
-  const Field b = f;
-  velocity_[component]->solve(layout_, b, f);
-}
+// In place: the solve gathers its whole box before it writes, and the nodes outside the
+// box (the walls of an odd field) keep their values.
+void Diffuser::velocity(int component, Field& f) const { velocity_[component]->solve(layout_, f, f); }
 
-void Diffuser::scalar(Field& f) const {
-  const Field b = f;
-  scalar_->solve(layout_, b, f);
-}
+void Diffuser::scalar(Field& f) const { scalar_->solve(layout_, f, f); }
 
 }  // namespace fest::fluidsim

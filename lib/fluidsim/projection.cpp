@@ -172,8 +172,10 @@ int Projector::solve(const Field& rhs, Field& q) const {
     if (failure) std::rethrow_exception(failure);
     return cycles;
   }
-#pragma omp parallel for schedule(dynamic, 1) if (layout_.count() >= kParallelNodes)
-  for (int c = 0; c < static_cast<int>(classes_.size()); ++c) classes_[c]->solve(layout_, rhs, q);
+  // The classes one after another, each solved by the whole team inside its transforms
+  // and eliminations: 8 class tasks would leave threads beyond 8 idle and balance badly
+  // at any count that does not divide 8.
+  for (const auto& c : classes_) c->solve(layout_, rhs, q);
   return 0;
 }
 

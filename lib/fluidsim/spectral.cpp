@@ -1,5 +1,6 @@
 #include "fluidsim/spectral.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <mutex>
@@ -8,6 +9,7 @@
 #include <fftw3.h>
 
 #include "core/error.hpp"
+#include "fluidsim/dense_product.hpp"
 
 namespace fest::fluidsim {
 
@@ -19,8 +21,6 @@ std::mutex& planner_mutex() {
   static std::mutex m;
   return m;
 }
-
-using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 }  // namespace
 
@@ -243,7 +243,21 @@ BoxSolver::BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, doubl
     }
 }
 
-void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
+namespace {
+
+// Boxes with fewer nodes are solved on one thread (a parity class of a 32^3 grid has
+// 4,913): below that a parallel region costs more than the work.
+constexpr std::size_t kParallelBox = 4096;
+// The parallel units are fixed pieces of the box, the same for every thread count: rows
+// or columns of a dense product, lines of a transform, x/y modes of the elimination.
+// Every node's arithmetic is the same in any piece, so results do not depend on how the
+// pieces are shared out (docs/fluidsim.md §6).
+constexpr int kPiece = 64;
+int pieces(std::size_t n, int piece = kPiece) { return static_cast<int>((n + piece - 1) / piece); }
+
+}  // namespace
+
+void BoxSolver::solve_z_tridiagonal(double* X, double* cp, bool parallel) const {
   const int m2 = axes_[2]->size();
   const std::size_t P = shift_.size();  // lines, one per x/y mode; plane k holds X[k P + p]
   // Singular lines first, in eigen space (their elimination would divide by ~0).
@@ -265,31 +279,39 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
     }
     singular.push_back(line);
   }
-  // Elimination (Thomas), every line at once: plane by plane, the inner loop runs over
-  // the contiguous x/y modes. cp holds the eliminated super-diagonal.
+  // Elimination (Thomas) of many lines at once, plane by plane, the inner loop over a
+  // piece of contiguous x/y modes (vectorised, and a piece's planes stay in cache); the
+  // lines are independent, so pieces run in parallel. cp holds the eliminated
+  // super-diagonal.
   const double* sh = shift_.data();
-  for (std::size_t p = 0; p < P; ++p) {
-    const double inv = 1.0 / (diag_[0] + sh[p]);
-    cp[p] = super_[0] * inv;
-    X[p] *= inv;
-  }
-  for (int k = 1; k < m2; ++k) {
-    const double a = sub_[k], d = diag_[k], c = super_[k];
-    const double* cprev = cp + (k - 1) * P;
-    const double* xprev = X + (k - 1) * P;
-    double* ck = cp + k * P;
-    double* xk = X + k * P;
-    for (std::size_t p = 0; p < P; ++p) {
-      const double inv = 1.0 / (d + sh[p] - a * cprev[p]);
-      ck[p] = c * inv;
-      xk[p] = (xk[p] - a * xprev[p]) * inv;
+  constexpr int kModes = 4 * kPiece;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int piece = 0; piece < pieces(P, kModes); ++piece) {
+    const std::size_t p0 = static_cast<std::size_t>(piece) * kModes;
+    const std::size_t p1 = std::min(P, p0 + kModes);
+    for (std::size_t p = p0; p < p1; ++p) {
+      const double inv = 1.0 / (diag_[0] + sh[p]);
+      cp[p] = super_[0] * inv;
+      X[p] *= inv;
     }
-  }
-  for (int k = m2 - 2; k >= 0; --k) {
-    const double* ck = cp + k * P;
-    const double* xnext = X + (k + 1) * P;
-    double* xk = X + k * P;
-    for (std::size_t p = 0; p < P; ++p) xk[p] -= ck[p] * xnext[p];
+    for (int k = 1; k < m2; ++k) {
+      const double a = sub_[k], d = diag_[k], c = super_[k];
+      const double* cprev = cp + (k - 1) * P;
+      const double* xprev = X + (k - 1) * P;
+      double* ck = cp + k * P;
+      double* xk = X + k * P;
+      for (std::size_t p = p0; p < p1; ++p) {
+        const double inv = 1.0 / (d + sh[p] - a * cprev[p]);
+        ck[p] = c * inv;
+        xk[p] = (xk[p] - a * xprev[p]) * inv;
+      }
+    }
+    for (int k = m2 - 2; k >= 0; --k) {
+      const double* ck = cp + k * P;
+      const double* xnext = X + (k + 1) * P;
+      double* xk = X + k * P;
+      for (std::size_t p = p0; p < p1; ++p) xk[p] -= ck[p] * xnext[p];
+    }
   }
   for (std::size_t l = 0; l < null_lines_.size(); ++l)
     for (int k = 0; k < m2; ++k) X[k * P + null_lines_[l]] = singular[l][k];
@@ -297,45 +319,93 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
 
 namespace {
 
-// Applies a dense m x m matrix (row-major) along one axis of a box array (x fastest),
-// from X into Y (the product is written in place of Y, no temporary), then swaps them.
-void dense_along(const std::vector<double>& M, int axis, const int dims[3], std::vector<double>& X,
-                 std::vector<double>& Y) {
+// Applies a dense m x m matrix M (row-major) along one axis of a box array (x fastest),
+// from X into Y, then swaps them. Pieces: columns (x lines) for x, (plane, x rows) for y,
+// x/y rows for z.
+void dense_along(const std::vector<double>& M, int axis, const int dims[3], double*& X, double*& Y, bool parallel) {
   const int m = dims[axis];
-  Eigen::Map<const RowMatrix> A(M.data(), m, m);
+  const std::ptrdiff_t plane = static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
   if (axis == 0) {
-    Eigen::Map<const Eigen::MatrixXd> B(X.data(), dims[0], dims[1] * dims[2]);
-    Eigen::Map<Eigen::MatrixXd> C(Y.data(), dims[0], dims[1] * dims[2]);
-    C.noalias() = A * B;
-  } else if (axis == 2) {
-    Eigen::Map<const Eigen::MatrixXd> B(X.data(), dims[0] * dims[1], dims[2]);
-    Eigen::Map<Eigen::MatrixXd> C(Y.data(), dims[0] * dims[1], dims[2]);
-    C.noalias() = B * A.transpose();
+    // Y(i, c) = sum_j M(i, j) X(j, c) over the columns c (x lines) of the box.
+    const std::size_t columns = static_cast<std::size_t>(dims[1]) * dims[2];
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int piece = 0; piece < pieces(columns); ++piece) {
+      const std::size_t c0 = static_cast<std::size_t>(piece) * kPiece;
+      const int n = static_cast<int>(std::min<std::size_t>(kPiece, columns - c0));
+      dense_product(M.data(), m, 1, X + c0 * m, m, 1, Y + c0 * m, m, m, n, m);
+    }
+  } else if (axis == 1) {
+    // Per plane k: Y_k(i, r) = sum_j X_k(i, j) M(r, j), in pieces of x rows.
+    const int per_plane = pieces(static_cast<std::size_t>(dims[0]));
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int piece = 0; piece < dims[2] * per_plane; ++piece) {
+      const int k = piece / per_plane, i0 = (piece % per_plane) * kPiece;
+      const std::ptrdiff_t at = k * plane + i0;
+      dense_product(X + at, 1, dims[0], M.data(), m, 1, Y + at, dims[0], std::min(kPiece, dims[0] - i0), m, m);
+    }
   } else {
-    for (int k = 0; k < dims[2]; ++k) {
-      const std::size_t slab = static_cast<std::size_t>(k) * dims[0] * dims[1];
-      Eigen::Map<const Eigen::MatrixXd> B(X.data() + slab, dims[0], dims[1]);
-      Eigen::Map<Eigen::MatrixXd> C(Y.data() + slab, dims[0], dims[1]);
-      C.noalias() = B * A.transpose();
+    // Y(p, r) = sum_j X(p, j) M(r, j) over the x/y rows p.
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int piece = 0; piece < pieces(static_cast<std::size_t>(plane)); ++piece) {
+      const std::ptrdiff_t p0 = static_cast<std::ptrdiff_t>(piece) * kPiece;
+      const int n = static_cast<int>(std::min<std::ptrdiff_t>(kPiece, plane - p0));
+      dense_product(X + p0, 1, plane, M.data(), m, 1, Y + p0, plane, n, m, m);
     }
   }
-  X.swap(Y);
+  std::swap(X, Y);
 }
 
-void fft_along(const AxisBasis& basis, bool forward, int axis, const int dims[3], std::vector<double>& X,
-               std::vector<double>& work) {
-  const std::ptrdiff_t stride = axis == 0 ? 1 : axis == 1 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
-  const int o1 = axis == 0 ? 1 : 0, o2 = axis == 2 ? 1 : 2;
-  const std::ptrdiff_t s1 = o1 == 0 ? 1 : dims[0];
-  const std::ptrdiff_t s2 = o2 == 1 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
-  for (int b = 0; b < dims[o2]; ++b)
-    for (int a = 0; a < dims[o1]; ++a) {
-      double* line = X.data() + a * s1 + b * s2;
-      if (forward)
-        basis.forward(line, stride, work.data());
-      else
-        basis.inverse(line, stride, work.data());
+// FFTW along one axis, line by line (each line its own 1-D transform). Lines along y
+// and z are strided; 8 neighbours along x are gathered together (8 contiguous values,
+// one cache line, per step) into a contiguous block, transformed there and scattered
+// back. Pieces: runs of lines along x (within a plane or row of lines).
+void fft_along(const AxisBasis& basis, bool forward, int axis, const int dims[3], double* X, bool parallel) {
+  const int m = dims[axis];
+  const std::ptrdiff_t stride =
+      axis == 0 ? 1 : axis == 1 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
+  // Lines: `across` of them next to each other (x for y and z lines, y for x lines),
+  // repeated `outer` times (z planes, or y for z lines).
+  const int across = axis == 0 ? dims[1] : dims[0];
+  const int outer = axis == 2 ? dims[1] : dims[2];
+  const std::ptrdiff_t across_step = axis == 0 ? dims[0] : 1;
+  const std::ptrdiff_t outer_step = axis == 2 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
+  const int per_outer = pieces(static_cast<std::size_t>(across));
+  constexpr int kBatch = 8;
+#pragma omp parallel if (parallel)
+  {
+    std::vector<double> work(2 * (2 * m + 2) + 4), block(static_cast<std::size_t>(kBatch) * m);
+#pragma omp for schedule(static)
+    for (int piece = 0; piece < outer * per_outer; ++piece) {
+      const int o = piece / per_outer, a0 = (piece % per_outer) * kPiece;
+      const int a1 = std::min(across, a0 + kPiece);
+      double* row = X + o * outer_step;
+      if (axis == 0) {
+        for (int a = a0; a < a1; ++a) {
+          double* line = row + a * across_step;
+          if (forward)
+            basis.forward(line, 1, work.data());
+          else
+            basis.inverse(line, 1, work.data());
+        }
+        continue;
+      }
+      for (int b0 = a0; b0 < a1; b0 += kBatch) {
+        const int nb = std::min(kBatch, a1 - b0);
+        double* first = row + b0;
+        for (int j = 0; j < m; ++j)
+          for (int l = 0; l < nb; ++l) block[static_cast<std::size_t>(l) * m + j] = first[j * stride + l];
+        for (int l = 0; l < nb; ++l) {
+          double* line = block.data() + static_cast<std::size_t>(l) * m;
+          if (forward)
+            basis.forward(line, 1, work.data());
+          else
+            basis.inverse(line, 1, work.data());
+        }
+        for (int j = 0; j < m; ++j)
+          for (int l = 0; l < nb; ++l) first[j * stride + l] = block[static_cast<std::size_t>(l) * m + j];
+      }
     }
+  }
 }
 
 }  // namespace
@@ -345,41 +415,54 @@ void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
   const auto& n0 = axes_[0]->nodes();
   const auto& n1 = axes_[1]->nodes();
   const auto& n2 = axes_[2]->nodes();
-  std::vector<double> X(count_), Y(count_);  // Y: the other half of a ping-pong pair
-  std::size_t n = 0;
-  for (int k = 0; k < dims[2]; ++k)
-    for (int j = 0; j < dims[1]; ++j)
-      for (int i = 0; i < dims[0]; ++i) X[n++] = rhs[L.index(n0[i], n1[j], n2[k])];
+  const bool parallel = count_ >= kParallelBox;
+  // X and Y: a ping-pong pair, every value written before it is read (no zero fill; the
+  // first touch happens in the parallel gather).
+  std::unique_ptr<double[]> x_store(new double[count_]), y_store(new double[count_]);
+  double* X = x_store.get();
+  double* Y = y_store.get();
+  const int rows = dims[1] * dims[2];
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int r = 0; r < rows; ++r) {
+    const int j = r % dims[1], k = r / dims[1];
+    double* o = X + static_cast<std::size_t>(r) * dims[0];
+    for (int i = 0; i < dims[0]; ++i) o[i] = rhs[L.index(n0[i], n1[j], n2[k])];
+  }
 
-  int longest = 1;
-  for (int a = 0; a < 3; ++a) longest = std::max(longest, 2 * dims[a] + 2);
-  std::vector<double> work(2 * longest + 4);
   const int transformed = tridiagonal_z_ ? 2 : 3;  // axes in eigen space
   for (int a = 0; a < transformed; ++a) {
     if (dims[a] == 1) {
       continue;  // a 1-node axis: its transform is the identity (eigenvalue 0 or its own)
     }
     if (axes_[a]->uses_fftw())
-      fft_along(*axes_[a], true, a, dims, X, work);
+      fft_along(*axes_[a], true, a, dims, X, parallel);
     else
-      dense_along(axes_[a]->forward_matrix(), a, dims, X, Y);
+      dense_along(axes_[a]->forward_matrix(), a, dims, X, Y, parallel);
   }
   if (tridiagonal_z_) {
-    solve_z_tridiagonal(X.data(), Y.data());
+    solve_z_tridiagonal(X, Y, parallel);
   } else {
-    for (std::size_t i = 0; i < count_; ++i) X[i] *= inv_factor_[i];
+    const double* f = inv_factor_.data();
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int piece = 0; piece < pieces(count_, 16 * kPiece); ++piece) {
+      const std::size_t i0 = static_cast<std::size_t>(piece) * 16 * kPiece;
+      const std::size_t i1 = std::min(count_, i0 + 16 * kPiece);
+      for (std::size_t i = i0; i < i1; ++i) X[i] *= f[i];
+    }
   }
   for (int a = transformed - 1; a >= 0; --a) {
     if (dims[a] == 1) continue;
     if (axes_[a]->uses_fftw())
-      fft_along(*axes_[a], false, a, dims, X, work);
+      fft_along(*axes_[a], false, a, dims, X, parallel);
     else
-      dense_along(axes_[a]->inverse_matrix(), a, dims, X, Y);
+      dense_along(axes_[a]->inverse_matrix(), a, dims, X, Y, parallel);
   }
-  n = 0;
-  for (int k = 0; k < dims[2]; ++k)
-    for (int j = 0; j < dims[1]; ++j)
-      for (int i = 0; i < dims[0]; ++i) x[L.index(n0[i], n1[j], n2[k])] = X[n++];
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int r = 0; r < rows; ++r) {
+    const int j = r % dims[1], k = r / dims[1];
+    const double* o = X + static_cast<std::size_t>(r) * dims[0];
+    for (int i = 0; i < dims[0]; ++i) x[L.index(n0[i], n1[j], n2[k])] = o[i];
+  }
 }
 
 }  // namespace fest::fluidsim

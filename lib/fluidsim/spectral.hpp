@@ -61,8 +61,8 @@ class BoxSolver {
  public:
   BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, double a, double b);
   // Gathers the box from `rhs`, solves, and scatters the solution into `x` (other nodes
-  // untouched). Not thread-safe per instance only for its scratch: call solve from one
-  // thread per BoxSolver, or use separate instances.
+  // untouched). rhs and x may be the same field. Runs its pieces on the OpenMP team
+  // (docs/fluidsim.md §6); the result does not depend on the team's size.
   void solve(const Layout& layout, const Field& rhs, Field& x) const;
   std::size_t count() const noexcept { return count_; }
   const std::array<std::shared_ptr<const AxisBasis>, 3>& axes() const noexcept { return axes_; }
@@ -71,7 +71,7 @@ class BoxSolver {
   std::array<std::shared_ptr<const AxisBasis>, 3> axes_;
   // The z solve without transforms (see solve()): line (i,j) in x/y eigen space obeys
   // (b T_z + shift_[i + m0 j]) q = r, a tridiagonal system when T_z is (a closed axis).
-  void solve_z_tridiagonal(double* X, double* scratch) const;
+  void solve_z_tridiagonal(double* X, double* scratch, bool parallel) const;
 
   std::vector<double> inv_factor_;  // 1 / (a + b * lambda sum), 0 for null modes
   std::size_t count_ = 0;
