@@ -284,7 +284,7 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp, bool parallel) const 
   // lines are independent, so pieces run in parallel. cp holds the eliminated
   // super-diagonal.
   const double* sh = shift_.data();
-  constexpr int kModes = 4 * kPiece;
+  constexpr int kModes = kPiece;
 #pragma omp parallel for schedule(static) if (parallel)
   for (int piece = 0; piece < pieces(P, kModes); ++piece) {
     const std::size_t p0 = static_cast<std::size_t>(piece) * kModes;
