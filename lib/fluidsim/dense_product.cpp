@@ -60,8 +60,8 @@ void block(const double* pack, int n, const double* Q, std::ptrdiff_t q_r, std::
 }
 
 // Copies rows [i0, i0 + n) of P into pack (W values per depth step), zero rows after n.
-void pack_rows(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, int i0, int n, int W, int depth,
-               double* pack) {
+void pack_block(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, int i0, int n, int W, int depth,
+                double* pack) {
   for (int j = 0; j < depth; ++j) {
     const double* src = P + i0 * p_i + j * p_j;
     double* dst = pack + static_cast<std::size_t>(j) * W;
@@ -72,24 +72,35 @@ void pack_rows(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, int i0, 
 
 }  // namespace
 
+// Rows go in blocks of 8 (one cache line of a P column), packed contiguously: a column of
+// P a whole plane apart (the z transform) would otherwise map every depth step onto the
+// same few cache sets. The last rows go in blocks of 2, the last odd row padded with a
+// zero row whose lane is dropped. Lanes never mix, so a row's sum is the same in every
+// block and piece.
+std::vector<double> pack_rows(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, int rows, int depth) {
+  const int full = rows / 8 * 8;
+  std::vector<double> packed(static_cast<std::size_t>(full + (rows - full + 1) / 2 * 2) * depth);
+  double* out = packed.data();
+  int i0 = 0;
+  for (; i0 < full; i0 += 8, out += static_cast<std::size_t>(8) * depth) pack_block(P, p_i, p_j, i0, 8, 8, depth, out);
+  for (; i0 < rows; i0 += 2, out += static_cast<std::size_t>(2) * depth)
+    pack_block(P, p_i, p_j, i0, rows - i0 < 2 ? rows - i0 : 2, 2, depth, out);
+  return packed;
+}
+
+void dense_product_packed(const double* packed, int rows, const double* Q, std::ptrdiff_t q_r, std::ptrdiff_t q_j,
+                          double* Y, std::ptrdiff_t ldy, int cols, int depth) {
+  int i0 = 0;
+  for (; i0 + 8 <= rows; i0 += 8, packed += static_cast<std::size_t>(8) * depth)
+    block<8>(packed, 8, Q, q_r, q_j, Y + i0, ldy, cols, depth);
+  for (; i0 < rows; i0 += 2, packed += static_cast<std::size_t>(2) * depth)
+    block<2>(packed, rows - i0 < 2 ? rows - i0 : 2, Q, q_r, q_j, Y + i0, ldy, cols, depth);
+}
+
 void dense_product(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, const double* Q, std::ptrdiff_t q_r,
                    std::ptrdiff_t q_j, double* Y, std::ptrdiff_t ldy, int rows, int cols, int depth) {
-  // Rows go in blocks of 8 (one cache line of a P column), packed contiguously first: a
-  // column of P a whole plane apart (the z transform) would otherwise map every depth
-  // step onto the same few cache sets. The last rows go in blocks of 2, the last odd row
-  // padded with a zero row whose lane is dropped. Lanes never mix, so a row's sum is the
-  // same in every block and piece.
-  std::vector<double> pack(static_cast<std::size_t>(8) * depth);
-  int i0 = 0;
-  for (; i0 + 8 <= rows; i0 += 8) {
-    pack_rows(P, p_i, p_j, i0, 8, 8, depth, pack.data());
-    block<8>(pack.data(), 8, Q, q_r, q_j, Y + i0, ldy, cols, depth);
-  }
-  for (; i0 < rows; i0 += 2) {
-    const int n = rows - i0 < 2 ? rows - i0 : 2;
-    pack_rows(P, p_i, p_j, i0, n, 2, depth, pack.data());
-    block<2>(pack.data(), n, Q, q_r, q_j, Y + i0, ldy, cols, depth);
-  }
+  const std::vector<double> packed = pack_rows(P, p_i, p_j, rows, depth);
+  dense_product_packed(packed.data(), rows, Q, q_r, q_j, Y, ldy, cols, depth);
 }
 
 }  // namespace fest::fluidsim

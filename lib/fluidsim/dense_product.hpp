@@ -7,6 +7,7 @@
 // with a fixed order every partition of the rows and columns gives the same bytes.
 
 #include <cstddef>
+#include <vector>
 
 namespace fest::fluidsim {
 
@@ -15,5 +16,11 @@ namespace fest::fluidsim {
 // [0, cols), depth [0, depth). Single-threaded: callers split rows or columns.
 void dense_product(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, const double* Q, std::ptrdiff_t q_r, std::ptrdiff_t q_j,
                    double* Y, std::ptrdiff_t ldy, int rows, int cols, int depth);
+
+// The same in two steps, for a P shared by many calls (a transform matrix applied to every
+// piece of a box): the rows of P packed once, then products with any Q.
+std::vector<double> pack_rows(const double* P, std::ptrdiff_t p_i, std::ptrdiff_t p_j, int rows, int depth);
+void dense_product_packed(const double* packed, int rows, const double* Q, std::ptrdiff_t q_r, std::ptrdiff_t q_j,
+                          double* Y, std::ptrdiff_t ldy, int cols, int depth);
 
 }  // namespace fest::fluidsim

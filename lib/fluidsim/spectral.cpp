@@ -248,12 +248,17 @@ namespace {
 // Boxes with fewer nodes are solved on one thread (a parity class of a 32^3 grid has
 // 4,913): below that a parallel region costs more than the work.
 constexpr std::size_t kParallelBox = 4096;
-// The parallel units are fixed pieces of the box, the same for every thread count: rows
-// or columns of a dense product, lines of a transform, x/y modes of the elimination.
-// Every node's arithmetic is the same in any piece, so results do not depend on how the
-// pieces are shared out (docs/fluidsim.md §6).
-constexpr int kPiece = 64;
-int pieces(std::size_t n, int piece = kPiece) { return static_cast<int>((n + piece - 1) / piece); }
+// The parallel units are pieces of the box: rows or columns of a dense product, lines of
+// a transform, x/y modes of the elimination. Every node's arithmetic is the same in any
+// piece, so results do not depend on how the pieces are cut or shared out
+// (docs/fluidsim.md §6). The size follows from the work alone (not from the thread count):
+// 8 to 64 units, a multiple of 8 (a register block of the product), about 256 pieces where
+// there is enough work, so that 16 threads get 16 or more pieces each and balance.
+int piece_size(std::size_t units) {
+  const std::size_t s = units / 256 / 8 * 8;
+  return static_cast<int>(std::min<std::size_t>(64, std::max<std::size_t>(8, s)));
+}
+int pieces(std::size_t n, int piece) { return static_cast<int>((n + piece - 1) / piece); }
 
 }  // namespace
 
@@ -284,7 +289,7 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp, bool parallel) const 
   // lines are independent, so pieces run in parallel. cp holds the eliminated
   // super-diagonal.
   const double* sh = shift_.data();
-  constexpr int kModes = kPiece;
+  const int kModes = piece_size(P);
 #pragma omp parallel for schedule(static) if (parallel)
   for (int piece = 0; piece < pieces(P, kModes); ++piece) {
     const std::size_t p0 = static_cast<std::size_t>(piece) * kModes;
@@ -328,27 +333,32 @@ void dense_along(const std::vector<double>& M, int axis, const int dims[3], doub
   if (axis == 0) {
     // Y(i, c) = sum_j M(i, j) X(j, c) over the columns c (x lines) of the box.
     const std::size_t columns = static_cast<std::size_t>(dims[1]) * dims[2];
+    // M's rows are packed once for all the pieces.
+    const int size = piece_size(columns);
+    const std::vector<double> packed = pack_rows(M.data(), m, 1, m, m);
 #pragma omp parallel for schedule(static) if (parallel)
-    for (int piece = 0; piece < pieces(columns); ++piece) {
-      const std::size_t c0 = static_cast<std::size_t>(piece) * kPiece;
-      const int n = static_cast<int>(std::min<std::size_t>(kPiece, columns - c0));
-      dense_product(M.data(), m, 1, X + c0 * m, m, 1, Y + c0 * m, m, m, n, m);
+    for (int piece = 0; piece < pieces(columns, size); ++piece) {
+      const std::size_t c0 = static_cast<std::size_t>(piece) * size;
+      const int n = static_cast<int>(std::min<std::size_t>(size, columns - c0));
+      dense_product_packed(packed.data(), m, X + c0 * m, m, 1, Y + c0 * m, m, n, m);
     }
   } else if (axis == 1) {
     // Per plane k: Y_k(i, r) = sum_j X_k(i, j) M(r, j), in pieces of x rows.
-    const int per_plane = pieces(static_cast<std::size_t>(dims[0]));
+    const int size = piece_size(static_cast<std::size_t>(dims[0]) * dims[2]);
+    const int per_plane = pieces(static_cast<std::size_t>(dims[0]), size);
 #pragma omp parallel for schedule(static) if (parallel)
     for (int piece = 0; piece < dims[2] * per_plane; ++piece) {
-      const int k = piece / per_plane, i0 = (piece % per_plane) * kPiece;
+      const int k = piece / per_plane, i0 = (piece % per_plane) * size;
       const std::ptrdiff_t at = k * plane + i0;
-      dense_product(X + at, 1, dims[0], M.data(), m, 1, Y + at, dims[0], std::min(kPiece, dims[0] - i0), m, m);
+      dense_product(X + at, 1, dims[0], M.data(), m, 1, Y + at, dims[0], std::min(size, dims[0] - i0), m, m);
     }
   } else {
     // Y(p, r) = sum_j X(p, j) M(r, j) over the x/y rows p.
+    const int size = piece_size(static_cast<std::size_t>(plane));
 #pragma omp parallel for schedule(static) if (parallel)
-    for (int piece = 0; piece < pieces(static_cast<std::size_t>(plane)); ++piece) {
-      const std::ptrdiff_t p0 = static_cast<std::ptrdiff_t>(piece) * kPiece;
-      const int n = static_cast<int>(std::min<std::ptrdiff_t>(kPiece, plane - p0));
+    for (int piece = 0; piece < pieces(static_cast<std::size_t>(plane), size); ++piece) {
+      const std::ptrdiff_t p0 = static_cast<std::ptrdiff_t>(piece) * size;
+      const int n = static_cast<int>(std::min<std::ptrdiff_t>(size, plane - p0));
       dense_product(X + p0, 1, plane, M.data(), m, 1, Y + p0, plane, n, m, m);
     }
   }
@@ -369,15 +379,16 @@ void fft_along(const AxisBasis& basis, bool forward, int axis, const int dims[3]
   const int outer = axis == 2 ? dims[1] : dims[2];
   const std::ptrdiff_t across_step = axis == 0 ? dims[0] : 1;
   const std::ptrdiff_t outer_step = axis == 2 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
-  const int per_outer = pieces(static_cast<std::size_t>(across));
+  const int size = piece_size(static_cast<std::size_t>(across) * outer);
+  const int per_outer = pieces(static_cast<std::size_t>(across), size);
   constexpr int kBatch = 8;
 #pragma omp parallel if (parallel)
   {
     std::vector<double> work(2 * (2 * m + 2) + 4), block(static_cast<std::size_t>(kBatch) * m);
 #pragma omp for schedule(static)
     for (int piece = 0; piece < outer * per_outer; ++piece) {
-      const int o = piece / per_outer, a0 = (piece % per_outer) * kPiece;
-      const int a1 = std::min(across, a0 + kPiece);
+      const int o = piece / per_outer, a0 = (piece % per_outer) * size;
+      const int a1 = std::min(across, a0 + size);
       double* row = X + o * outer_step;
       if (axis == 0) {
         for (int a = a0; a < a1; ++a) {
@@ -443,10 +454,11 @@ void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
     solve_z_tridiagonal(X, Y, parallel);
   } else {
     const double* f = inv_factor_.data();
+    constexpr int kValues = 1024;
 #pragma omp parallel for schedule(static) if (parallel)
-    for (int piece = 0; piece < pieces(count_, 16 * kPiece); ++piece) {
-      const std::size_t i0 = static_cast<std::size_t>(piece) * 16 * kPiece;
-      const std::size_t i1 = std::min(count_, i0 + 16 * kPiece);
+    for (int piece = 0; piece < pieces(count_, kValues); ++piece) {
+      const std::size_t i0 = static_cast<std::size_t>(piece) * kValues;
+      const std::size_t i1 = std::min(count_, i0 + kValues);
       for (std::size_t i = i0; i < i1; ++i) X[i] *= f[i];
     }
   }
