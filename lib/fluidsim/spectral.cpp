@@ -245,8 +245,9 @@ BoxSolver::BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, doubl
 
 namespace {
 
-// Boxes with fewer nodes are solved on one thread (a parity class of a 32^3 grid has
-// 4,913): below that a parallel region costs more than the work.
+// Boxes with fewer nodes, or of grids below kParallelNodes, are solved on one thread (a
+// parity class of a 32^3 grid has 4,913): below that a parallel region costs more than
+// the work.
 constexpr std::size_t kParallelBox = 4096;
 // The parallel units are pieces of the box: rows or columns of a dense product, lines of
 // a transform, x/y modes of the elimination. Every node's arithmetic is the same in any
@@ -426,7 +427,7 @@ void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
   const auto& n0 = axes_[0]->nodes();
   const auto& n1 = axes_[1]->nodes();
   const auto& n2 = axes_[2]->nodes();
-  const bool parallel = count_ >= kParallelBox;
+  const bool parallel = L.count() >= kParallelNodes && count_ >= kParallelBox;
   // X and Y: a ping-pong pair, every value written before it is read (no zero fill; the
   // first touch happens in the parallel gather).
   std::unique_ptr<double[]> x_store(new double[count_]), y_store(new double[count_]);

@@ -67,7 +67,7 @@ TEST(FluidsimDenseProduct, SolvesGiveTheSameBytesForAnyTeamSize) {
   // periodic (dense z) axes; the projection's classes and a diffusion solve.
   const int saved = omp_get_max_threads();
   for (Boundary bc : {Boundary::closed, Boundary::periodic}) {
-    const Layout L = Layout::make(3, {33, 30, 31}, {bc, bc, bc}, 0.05);
+    const Layout L = Layout::make(3, {33, 34, 31}, {bc, bc, bc}, 0.05);
     for (PoissonSolver solver : {PoissonSolver::fdm, PoissonSolver::fft}) {
       ProjectionOptions po;
       po.solver = solver;
