@@ -43,6 +43,12 @@ Diffuser::~Diffuser() = default;
 // box (the walls of an odd field) keep their values.
 void Diffuser::velocity(int component, Field& f) const { velocity_[component]->solve(layout_, f, f); }
 
+void Diffuser::velocity(Velocity& u) const {
+  std::vector<BoxJob> jobs;
+  for (int c = 0; c < layout_.dim; ++c) jobs.push_back({velocity_[c].get(), &u[c], &u[c]});
+  BoxSolver::solve_all(layout_, jobs);
+}
+
 void Diffuser::scalar(Field& f) const { scalar_->solve(layout_, f, f); }
 
 }  // namespace fest::fluidsim

@@ -248,9 +248,9 @@ StepStats Simulator::step(State& st, double dt) const {
     const auto t = Clock::now();
     if (scene_.viscosity > 0.0) {
       const Diffuser* d = diffuser(scene_.viscosity * dt);
-      // One component after another, each solved by the whole team along its lines
-      // (3 component tasks would use at most 3 threads).
-      for (int c = 0; c < L.dim; ++c) d->velocity(c, v[c]);
+      // The components' solves stage by stage, each stage's pieces (lines, rows, modes)
+      // shared by the whole team (3 component tasks would use at most 3 threads).
+      d->velocity(v);
       enforce_walls(L, v, scene_.no_slip);
     }
     stats.ms_diffuse += ms_since(t);
