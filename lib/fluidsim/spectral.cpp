@@ -524,7 +524,9 @@ void BoxSolver::solve_all(const Layout& L, const std::vector<BoxJob>& jobs) {
     for (int st = 0; st < kStages; ++st) {
       const std::vector<int>& f = first[st];
       if (f[nb] == 0) continue;  // the same on every thread
-#pragma omp for schedule(static)
+      // Round robin: the boxes' pieces differ in cost (a DST of 64 nodes next to a DCT of
+      // 66), and contiguous shares would give one thread the costly ones.
+#pragma omp for schedule(static, 1)
       for (int t = 0; t < f[nb]; ++t) {
         const std::size_t b = static_cast<std::size_t>(std::upper_bound(f.begin(), f.end(), t) - f.begin()) - 1;
         jobs[b].solver->stage_piece(st, t - f[b], L, *jobs[b].rhs, *jobs[b].x, X[b], Y[b], scratch);
