@@ -80,6 +80,10 @@ TEST(FluidsimDenseProduct, SolvesGiveTheSameBytesForAnyTeamSize) {
         proj.solve(rhs, q[t - 1]);
         d[t - 1] = rhs;
         diff.velocity(1, d[t - 1]);
+        // All components at once (one stage loop over the three boxes): the same bytes.
+        Velocity u{rhs, rhs, rhs};
+        diff.velocity(u);
+        EXPECT_TRUE(same_bytes(u[1], d[t - 1])) << poisson_name(solver) << " components together, team of " << t;
       }
       for (int t = 2; t <= 3; ++t) {
         EXPECT_TRUE(same_bytes(q[0], q[t - 1])) << poisson_name(solver) << " projection, team of " << t;
