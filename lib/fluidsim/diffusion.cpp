@@ -39,14 +39,16 @@ Diffuser::Diffuser(const Layout& layout, double coefficient, Transform kind, boo
 
 Diffuser::~Diffuser() = default;
 
-void Diffuser::velocity(int component, Field& f) const {
-  const Field b = f;
-  velocity_[component]->solve(layout_, b, f);
+// In place: the solve gathers its whole box before it writes, and the nodes outside the
+// box (the walls of an odd field) keep their values.
+void Diffuser::velocity(int component, Field& f) const { velocity_[component]->solve(layout_, f, f); }
+
+void Diffuser::velocity(Velocity& u) const {
+  std::vector<BoxJob> jobs;
+  for (int c = 0; c < layout_.dim; ++c) jobs.push_back({velocity_[c].get(), &u[c], &u[c]});
+  BoxSolver::solve_all(layout_, jobs);
 }
 
-void Diffuser::scalar(Field& f) const {
-  const Field b = f;
-  scalar_->solve(layout_, b, f);
-}
+void Diffuser::scalar(Field& f) const { scalar_->solve(layout_, f, f); }
 
 }  // namespace fest::fluidsim

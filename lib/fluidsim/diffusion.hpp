@@ -19,6 +19,8 @@ class Diffuser {
   ~Diffuser();
   // One velocity component c (its parity per axis follows the wall rules).
   void velocity(int component, Field& f) const;
+  // Every component of u at once (the same bytes as one at a time, fewer waits).
+  void velocity(Velocity& u) const;
   // A scalar (even everywhere).
   void scalar(Field& f) const;
   double coefficient() const noexcept { return coefficient_; }

@@ -137,14 +137,15 @@ void enforce_walls(const Layout& layout, Velocity& u, bool no_slip) {
     for (int c = 0; c < layout.dim; ++c) {
       if (velocity_parity(c, axis, no_slip) != Parity::odd) continue;
       for (int w : walls) {
-        // Every node of the plane index[axis] == w.
-        const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-        for (int j = 0; j < layout.size[a1]; ++j)
-          for (int k = 0; k < layout.size[a2]; ++k) {
+        // Every node of the plane index[axis] == w, in memory order (inner loop along the
+        // lower of the two other axes).
+        const int lo = axis == 0 ? 1 : 0, hi = axis == 2 ? 1 : 2;
+        for (int k = 0; k < layout.size[hi]; ++k)
+          for (int j = 0; j < layout.size[lo]; ++j) {
             std::array<int, 3> ijk{};
             ijk[axis] = w;
-            ijk[a1] = j;
-            ijk[a2] = k;
+            ijk[lo] = j;
+            ijk[hi] = k;
             u[c][layout.index(ijk[0], ijk[1], ijk[2])] = 0.0;
           }
       }

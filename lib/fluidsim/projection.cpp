@@ -172,8 +172,12 @@ int Projector::solve(const Field& rhs, Field& q) const {
     if (failure) std::rethrow_exception(failure);
     return cycles;
   }
-#pragma omp parallel for schedule(dynamic, 1) if (layout_.count() >= kParallelNodes)
-  for (int c = 0; c < static_cast<int>(classes_.size()); ++c) classes_[c]->solve(layout_, rhs, q);
+  // All classes stage by stage, the pieces of every class's transforms and eliminations
+  // shared by the whole team: 8 class tasks would leave threads beyond 8 idle and balance
+  // badly at any count that does not divide 8.
+  std::vector<BoxJob> jobs;
+  for (const auto& c : classes_) jobs.push_back({c.get(), &rhs, &q});
+  BoxSolver::solve_all(layout_, jobs);
   return 0;
 }
 

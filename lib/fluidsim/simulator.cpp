@@ -50,13 +50,20 @@ void for_region(const Layout& L, const Source& src, F&& f) {
 
 bool active_at(const Source& src, double t) { return t >= src.start && t < src.end; }
 
+// Whether every value is finite (a logical AND: the same answer for any split).
+bool all_finite(const Field& f) {
+  bool ok = true;
+  const double* v = f.data();
+#pragma omp parallel for schedule(static) reduction(&& : ok) if (f.size() >= kParallelNodes)
+  for (std::size_t n = 0; n < f.size(); ++n) ok = ok && std::isfinite(v[n]);
+  return ok;
+}
+
 void check_finite(const Layout& L, const State& s) {
   for (int c = 0; c < L.dim; ++c)
-    for (double v : s.u[c])
-      if (!std::isfinite(v)) throw runtime_failure("state became non-finite at step {} (velocity)", s.step);
+    if (!all_finite(s.u[c])) throw runtime_failure("state became non-finite at step {} (velocity)", s.step);
   for (const Field& f : s.s)
-    for (double v : f)
-      if (!std::isfinite(v)) throw runtime_failure("state became non-finite at step {} (scalar)", s.step);
+    if (!all_finite(f)) throw runtime_failure("state became non-finite at step {} (scalar)", s.step);
 }
 
 }  // namespace
@@ -153,11 +160,16 @@ void Simulator::add_forces(const State& st, double dt, Velocity& u) const {
       }
       case Force::Type::gravity:
       case Force::Type::constant:
-        for (int c = 0; c < L.dim; ++c)
-          for (double& v : u[c]) v += dt * f.value[c];
+        for (int c = 0; c < L.dim; ++c) {
+          double* v = u[c].data();
+          const double add = dt * f.value[c];
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
+          for (std::size_t n = 0; n < L.count(); ++n) v[n] += add;
+        }
         break;
       case Force::Type::vortex: {
         // Swirl about the axis `up` through `centre`: f = strength (up x r) exp(-|r|^2/R^2).
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
         for (int k = 0; k < L.size[2]; ++k)
           for (int j = 0; j < L.size[1]; ++j)
             for (int i = 0; i < L.size[0]; ++i) {
@@ -203,7 +215,9 @@ void Simulator::finish_scalars(const std::vector<Field>& before, std::vector<Fie
     if (sc.kappa > 0.0) diffuser(sc.kappa * dt)->scalar(s[i]);
     if (sc.alpha > 0.0) {
       const double f = 1.0 / (1.0 + sc.alpha * dt);
-      for (double& v : s[i]) v *= f;
+      double* v = s[i].data();
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
+      for (std::size_t n = 0; n < L.count(); ++n) v[n] *= f;
     }
   }
 }
@@ -234,9 +248,9 @@ StepStats Simulator::step(State& st, double dt) const {
     const auto t = Clock::now();
     if (scene_.viscosity > 0.0) {
       const Diffuser* d = diffuser(scene_.viscosity * dt);
-      // The d components are independent solves.
-#pragma omp parallel for schedule(static, 1) if (L.count() >= kParallelNodes)
-      for (int c = 0; c < L.dim; ++c) d->velocity(c, v[c]);
+      // The components' solves stage by stage, each stage's pieces (lines, rows, modes)
+      // shared by the whole team (3 component tasks would use at most 3 threads).
+      d->velocity(v);
       enforce_walls(L, v, scene_.no_slip);
     }
     stats.ms_diffuse += ms_since(t);
@@ -306,6 +320,7 @@ State blend(const State& x, const State& y, double a) {
   State out;
   auto mix = [a](const Field& p, const Field& q) {
     Field r(p.size());
+#pragma omp parallel for schedule(static) if (r.size() >= kParallelNodes)
     for (std::size_t n = 0; n < r.size(); ++n) r[n] = (1.0 - a) * p[n] + a * q[n];
     return r;
   };
@@ -317,7 +332,8 @@ State blend(const State& x, const State& y, double a) {
 }
 
 double max_speed(const Layout& L, const Velocity& u) {
-  double m = 0.0;
+  double m = 0.0;  // a maximum: the same for any split of the nodes
+#pragma omp parallel for schedule(static) reduction(max : m) if (L.count() >= kParallelNodes)
   for (std::size_t n = 0; n < L.count(); ++n) {
     double s = 0.0;
     for (int c = 0; c < L.dim; ++c) s += u[c][n] * u[c][n];

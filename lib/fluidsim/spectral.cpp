@@ -1,5 +1,6 @@
 #include "fluidsim/spectral.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <mutex>
@@ -8,6 +9,7 @@
 #include <fftw3.h>
 
 #include "core/error.hpp"
+#include "fluidsim/dense_product.hpp"
 
 namespace fest::fluidsim {
 
@@ -19,8 +21,6 @@ std::mutex& planner_mutex() {
   static std::mutex m;
   return m;
 }
-
-using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 }  // namespace
 
@@ -216,6 +216,11 @@ BoxSolver::BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, doubl
   // sign of b, every x/y eigenvalue lambda <= 0), so elimination without pivoting is
   // stable. Lines whose shift is 0 (the null mode of a pure Poisson problem) are singular
   // and keep the eigen-space solve, which zeroes the null mode.
+  if (!axes_[0]->uses_fftw()) {
+    x_forward_ = pack_rows(axes_[0]->forward_matrix().data(), m0, 1, m0, m0);
+    x_inverse_ = pack_rows(axes_[0]->inverse_matrix().data(), m0, 1, m0, m0);
+  }
+
   const AxisBasis& z = *axes_[2];
   bool banded = m2 >= 2 && !z.uses_fftw();
   const std::vector<double>& T = z.matrix();
@@ -243,15 +248,202 @@ BoxSolver::BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, doubl
     }
 }
 
-void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
-  const int m2 = axes_[2]->size();
+namespace {
+
+// Boxes with fewer nodes in all, or of grids below kParallelNodes, are solved on one thread
+// (the 8 classes of a 32^3 grid hold 39,304): below that a parallel region costs more than
+// the work.
+constexpr std::size_t kParallelBox = 4096;
+// The parallel units are pieces of a box: rows or columns of a dense product, lines of a
+// transform, x/y modes of the elimination, rows of the gather and scatter. Every node's
+// arithmetic is the same in any piece, so results do not depend on how the pieces are
+// cut or shared out (docs/fluidsim.md §6). The size follows from the work alone (not from
+// the thread count): 8 to 64 units, a multiple of 8 (a register block of the product),
+// about 256 pieces where there is enough work, so that 16 threads balance.
+int piece_size(std::size_t units) {
+  const std::size_t s = units / 256 / 8 * 8;
+  return static_cast<int>(std::min<std::size_t>(64, std::max<std::size_t>(8, s)));
+}
+int pieces(std::size_t n, int piece) { return static_cast<int>((n + piece - 1) / piece); }
+constexpr int kValues = 1024;  // values per piece of the eigen-space division
+
+// Lines of an FFTW transform along `axis`: `across` of them side by side (x for y and z
+// lines, y for x lines) at `across_step`, repeated `outer` times at `outer_step`.
+struct Lines {
+  int across, outer;
+  std::ptrdiff_t stride, across_step, outer_step;
+  Lines(int axis, const int dims[3]) {
+    stride = axis == 0 ? 1 : axis == 1 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
+    across = axis == 0 ? dims[1] : dims[0];
+    outer = axis == 2 ? dims[1] : dims[2];
+    across_step = axis == 0 ? dims[0] : 1;
+    outer_step = axis == 2 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
+  }
+  int size() const { return piece_size(static_cast<std::size_t>(across) * outer); }
+  int per_outer() const { return pieces(static_cast<std::size_t>(across), size()); }
+  int count() const { return outer * per_outer(); }
+};
+
+int dense_pieces(int axis, const int dims[3]) {
+  if (axis == 0) {
+    const std::size_t columns = static_cast<std::size_t>(dims[1]) * dims[2];
+    return pieces(columns, piece_size(columns));
+  }
+  if (axis == 1) return dims[2] * pieces(dims[0], piece_size(static_cast<std::size_t>(dims[0]) * dims[2]));
+  const std::size_t plane = static_cast<std::size_t>(dims[0]) * dims[1];
+  return pieces(plane, piece_size(plane));
+}
+
+// One piece of a dense m x m matrix M (row-major; `packed`: its rows packed, for x) applied
+// along one axis of a box array (x fastest) from X into Y. Pieces: columns (x lines) for
+// x, (plane, x rows) for y, x/y rows for z.
+void dense_piece(const std::vector<double>& M, const std::vector<double>& packed, int axis, const int dims[3],
+                 const double* X, double* Y, int piece) {
+  const int m = dims[axis];
+  const std::ptrdiff_t plane = static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
+  if (axis == 0) {
+    // Y(i, c) = sum_j M(i, j) X(j, c) over the columns c (x lines) of the box.
+    const std::size_t columns = static_cast<std::size_t>(dims[1]) * dims[2];
+    const int size = piece_size(columns);
+    const std::size_t c0 = static_cast<std::size_t>(piece) * size;
+    const int n = static_cast<int>(std::min<std::size_t>(size, columns - c0));
+    dense_product_packed(packed.data(), m, X + c0 * m, m, 1, Y + c0 * m, m, n, m);
+  } else if (axis == 1) {
+    // Per plane k: Y_k(i, r) = sum_j X_k(i, j) M(r, j), in pieces of x rows.
+    const int size = piece_size(static_cast<std::size_t>(dims[0]) * dims[2]);
+    const int per_plane = pieces(dims[0], size);
+    const int k = piece / per_plane, i0 = (piece % per_plane) * size;
+    const std::ptrdiff_t at = k * plane + i0;
+    dense_product(X + at, 1, dims[0], M.data(), m, 1, Y + at, dims[0], std::min(size, dims[0] - i0), m, m);
+  } else {
+    // Y(p, r) = sum_j X(p, j) M(r, j) over the x/y rows p.
+    const int size = piece_size(static_cast<std::size_t>(plane));
+    const std::ptrdiff_t p0 = static_cast<std::ptrdiff_t>(piece) * size;
+    const int n = static_cast<int>(std::min<std::ptrdiff_t>(size, plane - p0));
+    dense_product(X + p0, 1, plane, M.data(), m, 1, Y + p0, plane, n, m, m);
+  }
+}
+
+}  // namespace
+
+// Per-thread buffers of the FFTW lines: the transform's work line and a block of 8
+// gathered lines.
+struct BoxSolver::Scratch {
+  std::vector<double> work, block;
+  explicit Scratch(int longest) : work(2 * (2 * longest + 2) + 4), block(static_cast<std::size_t>(8) * longest) {}
+};
+
+namespace {
+
+// One piece of FFTW transforms along one axis, line by line (each line its own 1-D
+// transform). Lines along y and z are strided; 8 neighbours along x are gathered together
+// (8 contiguous values, one cache line, per step) into a contiguous block, transformed
+// there and scattered back. Pieces: runs of lines along x (within a plane or row of lines).
+void fft_piece(const AxisBasis& basis, bool forward, int axis, const int dims[3], double* X, int piece,
+               BoxSolver::Scratch& scratch) {
+  const int m = dims[axis];
+  const Lines lines(axis, dims);
+  const int size = lines.size(), per_outer = lines.per_outer();
+  const int o = piece / per_outer, a0 = (piece % per_outer) * size;
+  const int a1 = std::min(lines.across, a0 + size);
+  double* row = X + o * lines.outer_step;
+  double* work = scratch.work.data();
+  auto transform = [&](double* line) {
+    if (forward)
+      basis.forward(line, 1, work);
+    else
+      basis.inverse(line, 1, work);
+  };
+  if (axis == 0) {
+    for (int a = a0; a < a1; ++a) transform(row + a * lines.across_step);
+    return;
+  }
+  constexpr int kBatch = 8;
+  double* block = scratch.block.data();
+  for (int b0 = a0; b0 < a1; b0 += kBatch) {
+    const int nb = std::min(kBatch, a1 - b0);
+    double* first = row + b0;
+    for (int j = 0; j < m; ++j)
+      for (int l = 0; l < nb; ++l) block[static_cast<std::size_t>(l) * m + j] = first[j * lines.stride + l];
+    for (int l = 0; l < nb; ++l) transform(block + static_cast<std::size_t>(l) * m);
+    for (int j = 0; j < m; ++j)
+      for (int l = 0; l < nb; ++l) first[j * lines.stride + l] = block[static_cast<std::size_t>(l) * m + j];
+  }
+}
+
+}  // namespace
+
+bool BoxSolver::transformed(int axis) const noexcept {
+  return dim(axis) > 1 && (axis < 2 || !tridiagonal_z_);  // a 1-node axis's transform is the identity
+}
+
+// Stages: 0 gather, 1-3 forward x y z, 4 divide (or eliminate along z), 5-7 inverse z y x,
+// 8 scatter.
+int BoxSolver::stage_pieces(int stage) const {
+  const int dims[3] = {dim(0), dim(1), dim(2)};
+  if (stage == 0 || stage == 8) return dims[1] * dims[2];  // rows
+  if (stage == 4)
+    return tridiagonal_z_ ? pieces(shift_.size(), piece_size(shift_.size())) : pieces(count_, kValues);
+  const int axis = stage < 4 ? stage - 1 : 7 - stage;
+  if (!transformed(axis)) return 0;
+  return axes_[axis]->uses_fftw() ? Lines(axis, dims).count() : dense_pieces(axis, dims);
+}
+
+bool BoxSolver::stage_swaps(int stage) const {
+  if (stage == 0 || stage == 4 || stage == 8) return false;
+  const int axis = stage < 4 ? stage - 1 : 7 - stage;
+  return transformed(axis) && !axes_[axis]->uses_fftw();
+}
+
+void BoxSolver::stage_piece(int stage, int piece, const Layout& L, const Field& rhs, Field& x, double* X, double* Y,
+                            Scratch& scratch) const {
+  const int dims[3] = {dim(0), dim(1), dim(2)};
+  if (stage == 0 || stage == 8) {
+    const auto& n0 = axes_[0]->nodes();
+    const int j = piece % dims[1], k = piece / dims[1];
+    const int nj = axes_[1]->nodes()[j], nk = axes_[2]->nodes()[k];
+    double* o = X + static_cast<std::size_t>(piece) * dims[0];
+    if (stage == 0)
+      for (int i = 0; i < dims[0]; ++i) o[i] = rhs[L.index(n0[i], nj, nk)];
+    else
+      for (int i = 0; i < dims[0]; ++i) x[L.index(n0[i], nj, nk)] = o[i];
+    return;
+  }
+  if (stage == 4) {
+    if (tridiagonal_z_) {
+      const std::size_t P = shift_.size();
+      const std::size_t size = piece_size(P);
+      const std::size_t p0 = piece * size;
+      eliminate_z(X, Y, p0, std::min(P, p0 + size));
+    } else {
+      const std::size_t i0 = static_cast<std::size_t>(piece) * kValues;
+      const std::size_t i1 = std::min(count_, i0 + kValues);
+      const double* f = inv_factor_.data();
+      for (std::size_t i = i0; i < i1; ++i) X[i] *= f[i];
+    }
+    return;
+  }
+  const bool forward = stage < 4;
+  const int axis = forward ? stage - 1 : 7 - stage;
+  const AxisBasis& basis = *axes_[axis];
+  if (basis.uses_fftw())
+    fft_piece(basis, forward, axis, dims, X, piece, scratch);
+  else
+    dense_piece(forward ? basis.forward_matrix() : basis.inverse_matrix(), forward ? x_forward_ : x_inverse_, axis,
+                dims, X, Y, piece);
+}
+
+void BoxSolver::eliminate_z(double* X, double* cp, std::size_t p0, std::size_t p1) const {
+  const int m2 = dim(2);
   const std::size_t P = shift_.size();  // lines, one per x/y mode; plane k holds X[k P + p]
-  // Singular lines first, in eigen space (their elimination would divide by ~0).
-  std::vector<double> line(m2), coef(m2);
+  // Singular lines of this piece first, in eigen space (their elimination would divide by
+  // ~0); their solution replaces the eliminated one at the end.
+  std::vector<std::pair<int, std::vector<double>>> singular;
   const std::vector<double>& F = axes_[2]->forward_matrix();
   const std::vector<double>& B = axes_[2]->inverse_matrix();
-  std::vector<std::vector<double>> singular;
   for (int p : null_lines_) {
+    if (static_cast<std::size_t>(p) < p0 || static_cast<std::size_t>(p) >= p1) continue;
+    std::vector<double> line(m2), coef(m2);
     for (int k = 0; k < m2; ++k) line[k] = X[k * P + p];
     for (int k = 0; k < m2; ++k) {
       double s = 0.0;
@@ -263,12 +455,13 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
       for (int k = 0; k < m2; ++k) s += B[static_cast<std::size_t>(j) * m2 + k] * coef[k];
       line[j] = s;
     }
-    singular.push_back(line);
+    singular.emplace_back(p, std::move(line));
   }
-  // Elimination (Thomas), every line at once: plane by plane, the inner loop runs over
-  // the contiguous x/y modes. cp holds the eliminated super-diagonal.
+  // Elimination (Thomas) of the piece's lines at once, plane by plane, the inner loop over
+  // contiguous x/y modes (vectorised; a piece's planes stay in cache). cp holds the
+  // eliminated super-diagonal.
   const double* sh = shift_.data();
-  for (std::size_t p = 0; p < P; ++p) {
+  for (std::size_t p = p0; p < p1; ++p) {
     const double inv = 1.0 / (diag_[0] + sh[p]);
     cp[p] = super_[0] * inv;
     X[p] *= inv;
@@ -279,7 +472,7 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
     const double* xprev = X + (k - 1) * P;
     double* ck = cp + k * P;
     double* xk = X + k * P;
-    for (std::size_t p = 0; p < P; ++p) {
+    for (std::size_t p = p0; p < p1; ++p) {
       const double inv = 1.0 / (d + sh[p] - a * cprev[p]);
       ck[p] = c * inv;
       xk[p] = (xk[p] - a * xprev[p]) * inv;
@@ -289,97 +482,59 @@ void BoxSolver::solve_z_tridiagonal(double* X, double* cp) const {
     const double* ck = cp + k * P;
     const double* xnext = X + (k + 1) * P;
     double* xk = X + k * P;
-    for (std::size_t p = 0; p < P; ++p) xk[p] -= ck[p] * xnext[p];
+    for (std::size_t p = p0; p < p1; ++p) xk[p] -= ck[p] * xnext[p];
   }
-  for (std::size_t l = 0; l < null_lines_.size(); ++l)
-    for (int k = 0; k < m2; ++k) X[k * P + null_lines_[l]] = singular[l][k];
+  for (const auto& [p, line] : singular)
+    for (int k = 0; k < m2; ++k) X[k * P + p] = line[k];
 }
 
-namespace {
+void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const { solve_all(L, {BoxJob{this, &rhs, &x}}); }
 
-// Applies a dense m x m matrix (row-major) along one axis of a box array (x fastest),
-// from X into Y (the product is written in place of Y, no temporary), then swaps them.
-void dense_along(const std::vector<double>& M, int axis, const int dims[3], std::vector<double>& X,
-                 std::vector<double>& Y) {
-  const int m = dims[axis];
-  Eigen::Map<const RowMatrix> A(M.data(), m, m);
-  if (axis == 0) {
-    Eigen::Map<const Eigen::MatrixXd> B(X.data(), dims[0], dims[1] * dims[2]);
-    Eigen::Map<Eigen::MatrixXd> C(Y.data(), dims[0], dims[1] * dims[2]);
-    C.noalias() = A * B;
-  } else if (axis == 2) {
-    Eigen::Map<const Eigen::MatrixXd> B(X.data(), dims[0] * dims[1], dims[2]);
-    Eigen::Map<Eigen::MatrixXd> C(Y.data(), dims[0] * dims[1], dims[2]);
-    C.noalias() = B * A.transpose();
-  } else {
-    for (int k = 0; k < dims[2]; ++k) {
-      const std::size_t slab = static_cast<std::size_t>(k) * dims[0] * dims[1];
-      Eigen::Map<const Eigen::MatrixXd> B(X.data() + slab, dims[0], dims[1]);
-      Eigen::Map<Eigen::MatrixXd> C(Y.data() + slab, dims[0], dims[1]);
-      C.noalias() = B * A.transpose();
-    }
-  }
-  X.swap(Y);
-}
-
-void fft_along(const AxisBasis& basis, bool forward, int axis, const int dims[3], std::vector<double>& X,
-               std::vector<double>& work) {
-  const std::ptrdiff_t stride = axis == 0 ? 1 : axis == 1 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
-  const int o1 = axis == 0 ? 1 : 0, o2 = axis == 2 ? 1 : 2;
-  const std::ptrdiff_t s1 = o1 == 0 ? 1 : dims[0];
-  const std::ptrdiff_t s2 = o2 == 1 ? dims[0] : static_cast<std::ptrdiff_t>(dims[0]) * dims[1];
-  for (int b = 0; b < dims[o2]; ++b)
-    for (int a = 0; a < dims[o1]; ++a) {
-      double* line = X.data() + a * s1 + b * s2;
-      if (forward)
-        basis.forward(line, stride, work.data());
-      else
-        basis.inverse(line, stride, work.data());
-    }
-}
-
-}  // namespace
-
-void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const {
-  const int dims[3] = {axes_[0]->size(), axes_[1]->size(), axes_[2]->size()};
-  const auto& n0 = axes_[0]->nodes();
-  const auto& n1 = axes_[1]->nodes();
-  const auto& n2 = axes_[2]->nodes();
-  std::vector<double> X(count_), Y(count_);  // Y: the other half of a ping-pong pair
-  std::size_t n = 0;
-  for (int k = 0; k < dims[2]; ++k)
-    for (int j = 0; j < dims[1]; ++j)
-      for (int i = 0; i < dims[0]; ++i) X[n++] = rhs[L.index(n0[i], n1[j], n2[k])];
-
+void BoxSolver::solve_all(const Layout& L, const std::vector<BoxJob>& jobs) {
+  const std::size_t nb = jobs.size();
+  if (nb == 0) return;
+  // Each box's ping-pong pair; every value is written before it is read (no zero fill;
+  // the first touch happens in the parallel gather).
+  std::vector<std::unique_ptr<double[]>> store(2 * nb);
+  std::size_t total = 0;
   int longest = 1;
-  for (int a = 0; a < 3; ++a) longest = std::max(longest, 2 * dims[a] + 2);
-  std::vector<double> work(2 * longest + 4);
-  const int transformed = tridiagonal_z_ ? 2 : 3;  // axes in eigen space
-  for (int a = 0; a < transformed; ++a) {
-    if (dims[a] == 1) {
-      continue;  // a 1-node axis: its transform is the identity (eigenvalue 0 or its own)
+  for (std::size_t b = 0; b < nb; ++b) {
+    const BoxSolver& s = *jobs[b].solver;
+    store[2 * b].reset(new double[s.count_]);
+    store[2 * b + 1].reset(new double[s.count_]);
+    total += s.count_;
+    for (int a = 0; a < 3; ++a) longest = std::max(longest, s.dim(a));
+  }
+  // Where each box's pieces start in each stage's loop.
+  std::array<std::vector<int>, kStages> first;
+  for (int st = 0; st < kStages; ++st) {
+    first[st].assign(nb + 1, 0);
+    for (std::size_t b = 0; b < nb; ++b) first[st][b + 1] = first[st][b] + jobs[b].solver->stage_pieces(st);
+  }
+  const bool parallel = L.count() >= kParallelNodes && total >= kParallelBox;
+#pragma omp parallel if (parallel)
+  {
+    Scratch scratch(longest);
+    // Every thread keeps its own view of the pairs and swaps it the same way.
+    std::vector<double*> X(nb), Y(nb);
+    for (std::size_t b = 0; b < nb; ++b) {
+      X[b] = store[2 * b].get();
+      Y[b] = store[2 * b + 1].get();
     }
-    if (axes_[a]->uses_fftw())
-      fft_along(*axes_[a], true, a, dims, X, work);
-    else
-      dense_along(axes_[a]->forward_matrix(), a, dims, X, Y);
+    for (int st = 0; st < kStages; ++st) {
+      const std::vector<int>& f = first[st];
+      if (f[nb] == 0) continue;  // the same on every thread
+      // Round robin: the boxes' pieces differ in cost (a DST of 64 nodes next to a DCT of
+      // 66), and contiguous shares would give one thread the costly ones.
+#pragma omp for schedule(static, 1)
+      for (int t = 0; t < f[nb]; ++t) {
+        const std::size_t b = static_cast<std::size_t>(std::upper_bound(f.begin(), f.end(), t) - f.begin()) - 1;
+        jobs[b].solver->stage_piece(st, t - f[b], L, *jobs[b].rhs, *jobs[b].x, X[b], Y[b], scratch);
+      }
+      for (std::size_t b = 0; b < nb; ++b)
+        if (jobs[b].solver->stage_swaps(st)) std::swap(X[b], Y[b]);
+    }
   }
-  if (tridiagonal_z_) {
-    solve_z_tridiagonal(X.data(), Y.data());
-  } else {
-    for (std::size_t i = 0; i < count_; ++i) X[i] *= inv_factor_[i];
-  }
-  for (int a = transformed - 1; a >= 0; --a) {
-    if (dims[a] == 1) continue;
-    if (axes_[a]->uses_fftw())
-      fft_along(*axes_[a], false, a, dims, X, work);
-    else
-      dense_along(axes_[a]->inverse_matrix(), a, dims, X, Y);
-  }
-  n = 0;
-  for (int k = 0; k < dims[2]; ++k)
-    for (int j = 0; j < dims[1]; ++j)
-      for (int i = 0; i < dims[0]; ++i) x[L.index(n0[i], n1[j], n2[k])] = X[n++];
 }
 
 }  // namespace fest::fluidsim

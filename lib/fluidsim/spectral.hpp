@@ -54,6 +54,15 @@ class AxisBasis {
   std::unique_ptr<Fft> fft_;
 };
 
+class BoxSolver;
+
+// One box of a multi-box solve: the solver, the right-hand side and the solution field.
+struct BoxJob {
+  const BoxSolver* solver;
+  const Field* rhs;
+  Field* x;
+};
+
 // The solve of (a + b * (lambda_x + lambda_y + lambda_z)) x = rhs on the box of nodes
 // nodes_x * nodes_y * nodes_z of a field; modes whose factor is 0 (the Neumann/periodic
 // null space of a Poisson problem) are set to 0.
@@ -61,24 +70,42 @@ class BoxSolver {
  public:
   BoxSolver(std::array<std::shared_ptr<const AxisBasis>, 3> axes, double a, double b);
   // Gathers the box from `rhs`, solves, and scatters the solution into `x` (other nodes
-  // untouched). Not thread-safe per instance only for its scratch: call solve from one
-  // thread per BoxSolver, or use separate instances.
+  // untouched). rhs and x may be the same field. Runs its pieces on the OpenMP team
+  // (docs/fluidsim.md §6); the result does not depend on the team's size.
   void solve(const Layout& layout, const Field& rhs, Field& x) const;
+  // Several boxes (the parity classes of the projection, the velocity components of a
+  // diffusion step) stage by stage: each stage's pieces of all the boxes are one parallel
+  // loop, so the team waits once per stage rather than once per stage and box. Jobs must
+  // not write a node another job reads; each job gives the bytes solve() gives.
+  static void solve_all(const Layout& layout, const std::vector<BoxJob>& jobs);
   std::size_t count() const noexcept { return count_; }
   const std::array<std::shared_ptr<const AxisBasis>, 3>& axes() const noexcept { return axes_; }
 
- private:
-  std::array<std::shared_ptr<const AxisBasis>, 3> axes_;
-  // The z solve without transforms (see solve()): line (i,j) in x/y eigen space obeys
-  // (b T_z + shift_[i + m0 j]) q = r, a tridiagonal system when T_z is (a closed axis).
-  void solve_z_tridiagonal(double* X, double* scratch) const;
+  struct Scratch;
 
+ private:
+  // The stages of a solve (gather, forward x y z, divide or eliminate, inverse z y x,
+  // scatter), each cut into pieces of independent work; see solve_all().
+  static constexpr int kStages = 9;
+  int dim(int axis) const noexcept { return axes_[axis]->size(); }
+  bool transformed(int axis) const noexcept;   // the axis goes through eigen space
+  int stage_pieces(int stage) const;
+  bool stage_swaps(int stage) const;          // a dense transform wrote the other buffer
+  void stage_piece(int stage, int piece, const Layout& layout, const Field& rhs, Field& x, double* X, double* Y,
+                   Scratch& scratch) const;
+  // The z solve without transforms: line (i,j) in x/y eigen space obeys
+  // (b T_z + shift_[i + m0 j]) q = r, a tridiagonal system when T_z is (a closed axis);
+  // lines [p0, p1).
+  void eliminate_z(double* X, double* cp, std::size_t p0, std::size_t p1) const;
+
+  std::array<std::shared_ptr<const AxisBasis>, 3> axes_;
   std::vector<double> inv_factor_;  // 1 / (a + b * lambda sum), 0 for null modes
   std::size_t count_ = 0;
   bool tridiagonal_z_ = false;
   std::vector<double> sub_, diag_, super_;  // b T_z, by row
   std::vector<double> shift_;               // a + b (lambda_x + lambda_y) per x/y mode
   std::vector<int> null_lines_;             // x/y modes with shift 0: singular lines, solved in eigen space
+  std::vector<double> x_forward_, x_inverse_;  // a dense x axis's matrices, rows packed for dense_product
 };
 
 }  // namespace fest::fluidsim

@@ -7,6 +7,8 @@
 #
 #   tests/bench/fluidsim.sh [build/bin] [sizes] [threads] [steps]
 #   tests/bench/fluidsim.sh build/bin 31,64,128 1,2,4,8,16 10     # a machine with 16 cores
+#   tests/bench/fluidsim.sh build/bin 64 1,2 3 | tests/bench/fluidsim_amdahl.py
+#       per-stage speed-up at the second thread count, parallel fraction p, Amdahl 4 / 16
 set -euo pipefail
 BIN=${1:-build/bin}
 SIZES=${2:-16,31,50,64}
