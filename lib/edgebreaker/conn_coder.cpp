@@ -1,6 +1,7 @@
 // The three connectivity coders of docs/ebcode.md §4 over one range coder.
 #include "edgebreaker/conn_coder.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "core/error.hpp"
@@ -54,6 +55,20 @@ class AdaptiveModel {
       f[0] = 0;
     }
     return total;
+  }
+  // Decoder side: the symbol whose interval holds the range decoder's target, read from
+  // the context's counts in place (table() copies them for the encoder). With C
+  // excluded its frequency is 0, so the search starts at L; otherwise the same search.
+  Symbol decode(int ctx, RangeDecoder& dec) const {
+    const auto& c = counts_[static_cast<std::size_t>(ctx)];
+    const bool excluded = (ctx & 1) != 0;
+    const std::uint32_t total = totals_[static_cast<std::size_t>(ctx)] - (excluded ? c[0] : 0u);
+    const std::uint32_t v = dec.target(total);
+    std::uint32_t cum = 0;
+    int k = excluded ? 1 : 0;
+    while (k < symbol_count - 1 && cum + c[static_cast<std::size_t>(k)] <= v) cum += c[static_cast<std::size_t>(k++)];
+    dec.consume(cum, c[static_cast<std::size_t>(k)]);
+    return static_cast<Symbol>(k);
   }
   void update(int ctx, Symbol s) {
     auto& c = counts_[static_cast<std::size_t>(ctx)];
@@ -129,9 +144,13 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
                                         ConnMode mode, int model, bool exclusion, bool verify, bool opposite) {
   RangeDecoder dec(bytes);
   ReverseDecoder decoder(symbols, std::move(events));
+  decoder.keep_symbols(verify);
+  // Storage at once for up to 32 symbols per byte (real meshes spend more than a quarter
+  // bit per symbol); a count beyond that grows the arrays as decoding goes, so a lying
+  // header costs memory in proportion to its bytes only.
+  decoder.reserve(std::min<std::size_t>(symbols, (std::size_t{1} << 16) + 32 * bytes.size()));
   AdaptiveModel adaptive;
   StaticCoderState machine(mode == ConnMode::static_model ? model : 0);
-  std::array<std::uint32_t, symbol_count> f{};
   for (std::size_t i = symbols; i-- > 0;) {
     Symbol s = Symbol::E;
     if (i + 1 == symbols) {
@@ -140,13 +159,7 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
       s = get_raw(dec);
     } else if (mode == ConnMode::adaptive) {
       const int ctx = AdaptiveModel::context(decoder, exclusion);
-      const std::uint32_t total = adaptive.table(ctx, f);
-      const std::uint32_t v = dec.target(total);
-      std::uint32_t cum = 0;
-      int k = 0;
-      while (k < symbol_count - 1 && cum + f[static_cast<std::size_t>(k)] <= v) cum += f[static_cast<std::size_t>(k++)];
-      s = static_cast<Symbol>(k);
-      dec.consume(cum, f[static_cast<std::size_t>(k)]);
+      s = adaptive.decode(ctx, dec);
       adaptive.update(ctx, s);
     } else {
       const StaticFrequencies& sf = machine.frequencies();

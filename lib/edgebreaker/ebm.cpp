@@ -202,9 +202,19 @@ struct Numbering {
   int count = 0;
 };
 
-Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>& original_of, bool stitch) {
+// `plain`: no dummies and no stitch pairs, so every G vertex is its own output vertex
+// (what the loops below give then, without them).
+Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>& original_of, bool stitch,
+                          bool plain = false) {
   const std::size_t n = dummy.size();
   Numbering num;
+  if (plain) {
+    num.output.resize(n);
+    for (std::size_t g = 0; g < n; ++g) num.output[g] = static_cast<int>(g);
+    num.same_as.assign(n, -1);
+    num.count = static_cast<int>(n);
+    return num;
+  }
   num.output.assign(n, -1);
   num.same_as.assign(n, -1);
   for (std::size_t g = 0; g < n; ++g)
@@ -898,21 +908,29 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
       if (o >= 0 && original_of[static_cast<std::size_t>(o)] >= 0) throw bad_input("STCH section: a copy of a copy");
     }
   }
-  const Numbering num = number_vertices(dummy, original_of, stitch);
+  const bool plain = h.dummies == 0 && h.stitch == 0;  // output vertex g is G vertex g
+  Numbering num = number_vertices(dummy, original_of, stitch, plain);
   const std::uint64_t expected_vertices = h.vertices;
   const std::uint64_t stitched_count =
-      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true).count);
+      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true, plain).count);
   if (v1 && stitched_count + h.isolated != expected_vertices)
     throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
 
   MeshSoup out;
   out.positions.assign(static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated), {0.0, 0.0, 0.0});
+  // One plan for the positions and every attribute (geometry_plan's fields, moved here
+  // rather than copied: the decoder needs them for nothing else).
+  GeometryPlan plan;
+  plan.parallelogram = std::move(dec.parallelogram);
+  plan.unusable = dummy;
+  plan.same_as = std::move(num.same_as);
+  plan.triangles = &dec.triangles;
+  plan.opposite = &dec.opposite;
   if (h.flags & ebm_flags::geometry) {
     if (!p.sections.count("GEOM")) throw bad_input(".ebm stream has no GEOM section");
     Quantiser quant;
     quant.bits = h.qp;
     quant.box = h.box;
-    const GeometryPlan plan = geometry_plan(dec, dummy, num);
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor), coding);
     for (int g = 0; g < g_count; ++g)
@@ -930,10 +948,6 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     if (main_len > r.left()) throw bad_input("{} section is truncated", a.tag());
     const std::string_view main = r.bytes(static_cast<std::size_t>(main_len));
     const std::string_view rest = r.bytes(r.left());
-    GeometryPlan plan;
-    plan.parallelogram = dec.parallelogram;
-    plan.unusable = dummy;
-    plan.same_as = num.same_as;
     const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram, coding);
     const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits, coding)
                                                    : std::vector<QPoint>{};
@@ -955,11 +969,15 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
         store(static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)]), q[static_cast<std::size_t>(g)]);
     for (std::size_t k = 0; k < iq.size(); ++k) store(static_cast<std::size_t>(num.count) + k, iq[k]);
   }
-  out.triangles.reserve(dec.triangles.size());
-  for (const Triangle& t : dec.triangles) {
-    if (dummy[static_cast<std::size_t>(t[0])] || dummy[static_cast<std::size_t>(t[1])] || dummy[static_cast<std::size_t>(t[2])]) continue;
-    out.triangles.push_back({num.output[static_cast<std::size_t>(t[0])], num.output[static_cast<std::size_t>(t[1])],
-                             num.output[static_cast<std::size_t>(t[2])]});
+  if (plain) {
+    out.triangles = std::move(dec.triangles);  // nothing to drop or renumber
+  } else {
+    out.triangles.reserve(dec.triangles.size());
+    for (const Triangle& t : dec.triangles) {
+      if (dummy[static_cast<std::size_t>(t[0])] || dummy[static_cast<std::size_t>(t[1])] || dummy[static_cast<std::size_t>(t[2])]) continue;
+      out.triangles.push_back({num.output[static_cast<std::size_t>(t[0])], num.output[static_cast<std::size_t>(t[1])],
+                               num.output[static_cast<std::size_t>(t[2])]});
+    }
   }
   if (v1 && out.triangles.size() != h.faces)
     throw bad_input("connectivity gives {} faces, the header says {}", out.triangles.size(), h.faces);

@@ -107,9 +107,12 @@ inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
   enc.bit_at_rate(c.p, b, counted_shift[c.n]);
   c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
 }
-inline int get_counted(RangeDecoder& dec, CountedBit& c) {
+// A context that has settled (15 uses, on a large mesh almost every decision) adapts at
+// the fixed rate without looking at the table or counting further.
+[[gnu::always_inline]] inline int get_counted(RangeDecoder& dec, CountedBit& c) {
+  if (c.n == 15) return dec.bit_at_rate(c.p, adapt_shift);
   const int b = dec.bit_at_rate(c.p, counted_shift[c.n]);
-  c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
+  ++c.n;
   return b;
 }
 
@@ -170,7 +173,7 @@ struct DistanceCoder {
     }
   }
 
-  std::int64_t get(RangeDecoder& dec, int axis) {
+  [[gnu::always_inline]] std::int64_t get(RangeDecoder& dec, int axis) {
     AxisContexts& a = axes[static_cast<std::size_t>(axis)];
     const int m = previous[static_cast<std::size_t>(axis)];
     const auto mi = static_cast<std::size_t>(m);
@@ -352,8 +355,10 @@ std::string encode_with(const std::vector<QPoint>& q, const GeometryPlan& plan, 
   return enc.finish();
 }
 
-template <class Coder>
-std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+// Quantised coordinates (wrap) come out of the mask in [0, 2^bits - 1] already; only
+// lossless ones are range-checked.
+template <class Coder, bool wrap>
+std::vector<QPoint> decode_loop(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
   const Domain domain(bits);
   const Prediction predict(plan, domain, predictor);
   const bool fast = predictor == Predictor::parallelogram;
@@ -370,8 +375,14 @@ std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan
     } else {
       const QPoint p = predict_at(predict, plan, domain, fast, q, g, previous);
       for (int k = 0; k < 3; ++k) {
-        const std::int64_t v = domain.unwrap(p[static_cast<std::size_t>(k)], coder.get(dec, k));
-        if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
+        const std::int64_t r = coder.get(dec, k);
+        std::int64_t v;
+        if constexpr (wrap) {
+          v = (p[static_cast<std::size_t>(k)] + r) & domain.hi;
+        } else {
+          v = p[static_cast<std::size_t>(k)] + r;
+          if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
+        }
         q[g][static_cast<std::size_t>(k)] = v;
       }
       if (dec.overrun() > 12) throw bad_input("geometry section is truncated");
@@ -380,6 +391,11 @@ std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan
   }
   if (dec.truncated()) throw bad_input("geometry section is truncated");
   return q;
+}
+
+template <class Coder>
+std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+  return bits != 0 ? decode_loop<Coder, true>(bytes, plan, bits, predictor) : decode_loop<Coder, false>(bytes, plan, bits, predictor);
 }
 
 }  // namespace

@@ -35,6 +35,15 @@ ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> eve
   next_event_source_ = events_.empty() ? std::numeric_limits<std::size_t>::max() : events_.back().source;
 }
 
+void ReverseDecoder::reserve(std::size_t symbols) {
+  symbols = std::min(symbols, symbols_);
+  if (keep_symbols_) decoded_.reserve(symbols);
+  V_.reserve(3 * (symbols + 2));
+  O_.reserve(3 * (symbols + 2));
+  vertices_.reserve(symbols + 3);
+  closed_at_.reserve(symbols / 2 + 1);
+}
+
 void ReverseDecoder::fail(const char* why) const {
   if (position_ >= symbols_) throw bad_input("invalid connectivity: {} (when closing the start triangles)", why);
   throw bad_input("invalid connectivity: {} (symbol {} of {})", why, position_, symbols_);

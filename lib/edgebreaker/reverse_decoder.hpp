@@ -90,6 +90,11 @@ class ReverseDecoder {
   // decoder that will not verify is told so, and saves storing them.
   void keep_symbols(bool keep) noexcept { keep_symbols_ = keep; }
 
+  // Storage for `symbols` symbols at once (the constructor reserves for at most 2^16, so
+  // that a lying count costs nothing): for a caller that has bounded the count by the
+  // bytes it holds. Growing by doubling copied each array about once.
+  void reserve(std::size_t symbols);
+
   // Decodes the next symbol (forward index symbols-1, symbols-2, ... 0). Throws bad_input
   // when the symbol is impossible here; never loops or reads out of bounds.
   void step(Symbol s);
