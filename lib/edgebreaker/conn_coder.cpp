@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "edgebreaker/range_coder.hpp"
+#include "edgebreaker/reverse_decoder_steps.hpp"
 #include "edgebreaker/state_machine.hpp"
 
 namespace fest::edgebreaker {

@@ -173,6 +173,8 @@ struct DistanceCoder {
     }
   }
 
+  // The inverse of put(). The unary steps walk a pointer over the step contexts (the
+  // last one repeats), the same decisions as put() makes in the same contexts.
   [[gnu::always_inline]] std::int64_t get(RangeDecoder& dec, int axis) {
     AxisContexts& a = axes[static_cast<std::size_t>(axis)];
     const int m = previous[static_cast<std::size_t>(axis)];
@@ -181,15 +183,25 @@ struct DistanceCoder {
     if (get_counted(dec, a.same[mi])) {
       const bool up = m == 0 || (m < kmax && get_counted(dec, a.above[mi]));
       if (up) {
+        CountedBit* step = a.up[mi].data();
+        CountedBit* const last = step + (steps - 1);
         k = m + 1;
-        while (k < kmax && get_counted(dec, a.up[mi][static_cast<std::size_t>(std::min(k - m - 1, steps - 1))])) ++k;
+        while (k < kmax && get_counted(dec, *step)) {
+          ++k;
+          step += step != last;
+        }
       } else {
+        CountedBit* step = a.down[mi].data();
+        CountedBit* const last = step + (steps - 1);
         k = m - 1;
-        while (k > 0 && get_counted(dec, a.down[mi][static_cast<std::size_t>(std::min(m - 1 - k, steps - 1))])) --k;
+        while (k > 0 && get_counted(dec, *step)) {
+          --k;
+          step += step != last;
+        }
       }
     }
     previous[static_cast<std::size_t>(axis)] = k;
-    if (k <= 1) return k == 0 ? 0 : unzigzag(1);
+    if (k <= 1) return -k;  // zigzag 0 -> 0, 1 -> -1
     auto& h = a.high[static_cast<std::size_t>(k)];
     int below = k - 2;
     const int b0 = get_counted(dec, h[0]);
@@ -197,11 +209,11 @@ struct DistanceCoder {
     if (below > 0) {
       --below;
       z = (z << 1) | static_cast<std::uint64_t>(get_counted(dec, h[static_cast<std::size_t>(1 + b0)]));
-    }
-    while (below > 0) {
-      const int chunk = std::min(below, 16);
-      below -= chunk;
-      z = (z << chunk) | dec.bypass_bits(chunk);
+      while (below > 0) {
+        const int chunk = std::min(below, 16);
+        below -= chunk;
+        z = (z << chunk) | dec.bypass_bits(chunk);
+      }
     }
     return unzigzag(z);
   }

@@ -4,6 +4,7 @@
 // are known, links only between open corners), every swing is bounded, and finish()
 // re-encodes the result, so only exact encodings are accepted.
 #include "edgebreaker/reverse_decoder.hpp"
+#include "edgebreaker/reverse_decoder_steps.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -49,77 +50,6 @@ void ReverseDecoder::fail(const char* why) const {
   throw bad_input("invalid connectivity: {} (symbol {} of {})", why, position_, symbols_);
 }
 
-// A new triangle's first corner c is a multiple of 3, so its next and previous corners are
-// written c + 1 and c + 2 below (the remainder in next() and prev() was a tenth of the
-// decoder's instructions). Its three V entries are written by the caller.
-int ReverseDecoder::new_triangle() {
-  const std::size_t c = V_.extend(3);
-  O_.extend(3);
-  int* o = O_.data() + c;
-  o[0] = o[1] = o[2] = -1;
-  return static_cast<int>(c);
-}
-
-// A new vertex already counts the triangle that makes it (degree 1).
-int ReverseDecoder::new_vertex(int degree) {
-  const std::size_t v = vertices_.extend(1);
-  vertices_[v] = {static_cast<int>(v), degree, 0};
-  return static_cast<int>(v);
-}
-
-int ReverseDecoder::find(int v) {
-  while (vertices_[static_cast<std::size_t>(v)].parent != v) {
-    const int up = vertices_[static_cast<std::size_t>(vertices_[static_cast<std::size_t>(v)].parent)].parent;
-    vertices_[static_cast<std::size_t>(v)].parent = up;  // path halving
-    v = up;
-  }
-  return v;
-}
-
-// The root of a corner's vertex, written back into V: every reader of V goes through
-// find(), so a root there changes no result and shortens later searches.
-int ReverseDecoder::root_at(int corner) {
-  const int r = find(V_[static_cast<std::size_t>(corner)]);
-  V_[static_cast<std::size_t>(corner)] = r;
-  return r;
-}
-
-void ReverseDecoder::link(int a, int b) {
-  if (O_[static_cast<std::size_t>(a)] != -1 || O_[static_cast<std::size_t>(b)] != -1)
-    fail("an edge would get a third triangle");
-  O_[static_cast<std::size_t>(a)] = b;
-  O_[static_cast<std::size_t>(b)] = a;
-  ++links_;
-}
-
-ReverseDecoder::Loop& ReverseDecoder::top(const char* op) {
-  if (loops_.empty()) fail(op);
-  return loops_.back();
-}
-
-// The open edge y -> x that ends at x = V[next(a)], other than a's gate; returns the
-// corner opposite it. A manifold vertex is swung around at most twice in all.
-int ReverseDecoder::incoming_open_edge(int a) {
-  // Corners j = next(next(a)) = prev(a), then next(next(O[j])) = prev(O[j]): one step of
-  // the swing is one remainder, not two.
-  int j = prev(a);
-  const int limit = static_cast<int>(V_.size());
-  for (int step = 0; step <= limit; ++step) {
-    const int o = O_[static_cast<std::size_t>(j)];
-    if (o == -1) {
-      if (j == a) fail("a loop closed on itself");
-      return j;
-    }
-    j = prev(o);
-  }
-  fail("a vertex fan does not end");
-}
-
-// Valence context (docs/ebcode.md §4): decoded triangles at the new triangle's left vertex
-// (next(c)), counted with the new triangle. Each inverse operation below counts its new
-// triangle at its three vertices' roots; a vertex it creates starts at degree 1.
-void ReverseDecoder::set_valence(int left_degree) { valence_class_ = std::clamp(left_degree + 1, 2, 7) - 2; }
-
 // Handle events whose source is the symbol just decoded: the corner across the edge
 // towards the S waits for that S.
 void ReverseDecoder::remember_events(int c) {
@@ -129,69 +59,6 @@ void ReverseDecoder::remember_events(int c) {
     if (!pending_.emplace(e.split, corner).second) fail("two handle events for one S");
   }
   next_event_source_ = next_event_ > 0 ? events_[next_event_ - 1].source : std::numeric_limits<std::size_t>::max();
-}
-
-void ReverseDecoder::inverse_E() {
-  const int c = new_triangle();
-  for (int k = 0; k < 3; ++k) V_[static_cast<std::size_t>(c + k)] = new_vertex(1);
-  loops_.push_back({c, 3});
-  set_valence(1);
-  if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::inverse_L() {
-  Loop& loop = top("L with no open loop");
-  const int a = loop.gate, c = new_triangle();
-  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(a))];
-  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(a))];
-  V_[static_cast<std::size_t>(c + 1)] = new_vertex(1);  // the left vertex
-  link(c + 1, a);
-  loop = {c, loop.length < 0 ? -1 : loop.length + 1};
-  ++vertices_[static_cast<std::size_t>(root_at(c))].degree;
-  ++vertices_[static_cast<std::size_t>(root_at(c + 2))].degree;
-  set_valence(1);
-  if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::inverse_R() {
-  Loop& loop = top("R with no open loop");
-  const int a = loop.gate, c = new_triangle();
-  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(a))];
-  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(prev(a))];
-  V_[static_cast<std::size_t>(c + 2)] = new_vertex(1);
-  link(c + 2, a);
-  loop = {c, loop.length < 0 ? -1 : loop.length + 1};
-  ++vertices_[static_cast<std::size_t>(root_at(c))].degree;
-  const int left = root_at(c + 1);
-  set_valence(++vertices_[static_cast<std::size_t>(left)].degree);
-  if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::inverse_C() {
-  Loop& loop = top("C with no open loop");
-  // C on a 3-loop leaves a 2-loop: only meshes with multi-edges do that (the chapter's
-  // constraint 1a, which the context models exploit); C on a 2-loop would repeat a vertex.
-  if (loop.length >= 0 && loop.length <= (simple_ ? 3 : 2))
-    fail(simple_ ? "C on a loop of 3 edges" : "C on a loop of 2 edges");
-  const int a = loop.gate;
-  const int x = find(V_[static_cast<std::size_t>(next(a))]);
-  if (vertices_[static_cast<std::size_t>(x)].closed) fail("a vertex is closed twice");
-  vertices_[static_cast<std::size_t>(x)].closed = 1;
-  const int e = incoming_open_edge(a);  // the open edge y -> x
-  const int c = new_triangle();
-  V_[static_cast<std::size_t>(c)] = x;
-  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(e))];
-  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(a))];
-  link(c + 1, a);
-  link(c + 2, e);
-  closed_at_.push_back(c);
-  loop = {c, loop.length < 0 ? -1 : loop.length - 1};
-  ++vertices_[static_cast<std::size_t>(x)].degree;
-  const int left = root_at(c + 1);
-  ++vertices_[static_cast<std::size_t>(left)].degree;
-  ++vertices_[static_cast<std::size_t>(root_at(c + 2))].degree;
-  set_valence(vertices_[static_cast<std::size_t>(left)].degree);
-  if (event_here()) remember_events(c);
 }
 
 void ReverseDecoder::inverse_S() {
@@ -235,22 +102,6 @@ void ReverseDecoder::inverse_S() {
   ++vertices_[static_cast<std::size_t>(root_at(c + 2))].degree;
   set_valence(vertices_[static_cast<std::size_t>(left)].degree);
   if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::step(Symbol s) {
-  if (position_ == 0) throw bad_input("invalid connectivity: more symbols than announced");
-  --position_;
-  switch (s) {
-    case Symbol::E: inverse_E(); break;
-    case Symbol::L: inverse_L(); break;
-    case Symbol::R: inverse_R(); break;
-    case Symbol::C: inverse_C(); break;
-    case Symbol::S: inverse_S(); break;
-    default: fail("not a CLERS symbol");
-  }
-  if (keep_symbols_) decoded_.push_back(s);
-  previous_ = 1 + static_cast<int>(s);
-  last_was_L_ = s == Symbol::L;
 }
 
 DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {

@@ -96,8 +96,9 @@ class ReverseDecoder {
   void reserve(std::size_t symbols);
 
   // Decodes the next symbol (forward index symbols-1, symbols-2, ... 0). Throws bad_input
-  // when the symbol is impossible here; never loops or reads out of bounds.
-  void step(Symbol s);
+  // when the symbol is impossible here; never loops or reads out of bounds. Defined in
+  // reverse_decoder_steps.hpp, which a caller includes.
+  [[gnu::always_inline]] inline void step(Symbol s);
 
   // Closes the start triangles and numbers vertices in G order. With `verify`, the result
   // is re-encoded and must give exactly the same symbols, events and orders, which makes
@@ -108,6 +109,8 @@ class ReverseDecoder {
 
  private:
   struct Loop {
+    // On the stack, always the first corner of the triangle that made or last extended
+    // the loop, a multiple of 3: its next and previous corners are gate + 1 and gate + 2.
     int gate;
     int length;  // -1 once a handle event made it unknown
   };
@@ -125,6 +128,7 @@ class ReverseDecoder {
   [[gnu::always_inline]] inline int find(int v);
   [[gnu::always_inline]] inline int root_at(int corner);
   [[gnu::always_inline]] inline void link(int a, int b);
+  [[gnu::always_inline]] inline void link_fresh(int fresh, int old);
   [[gnu::always_inline]] inline Loop& top(const char* op);
   [[gnu::always_inline]] inline int incoming_open_edge(int a);
   [[gnu::always_inline]] inline void set_valence(int left_degree);
