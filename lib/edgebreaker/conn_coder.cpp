@@ -151,6 +151,20 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
   // header costs memory in proportion to its bytes only.
   decoder.reserve(std::min<std::size_t>(symbols, (std::size_t{1} << 16) + 32 * bytes.size()));
   AdaptiveModel adaptive;
+  if (mode == ConnMode::adaptive && symbols > 0) {
+    // The loop below for the adaptive coder alone (the mode is not asked per symbol).
+    decoder.step(Symbol::E);  // the first decoded symbol is E, not stored
+    if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
+    for (std::size_t i = symbols - 1; i-- > 0;) {
+      const int ctx = AdaptiveModel::context(decoder, exclusion);
+      const Symbol s = adaptive.decode(ctx, dec);
+      adaptive.update(ctx, s);
+      decoder.step(s);
+      if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
+    }
+    if (dec.truncated()) throw bad_input("connectivity section is truncated");
+    return decoder.finish(verify, opposite);
+  }
   StaticCoderState machine(mode == ConnMode::static_model ? model : 0);
   for (std::size_t i = symbols; i-- > 0;) {
     Symbol s = Symbol::E;

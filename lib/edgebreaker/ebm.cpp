@@ -204,8 +204,9 @@ struct Numbering {
 
 // `plain`: no dummies and no stitch pairs, so every G vertex is its own output vertex
 // (what the loops below give then, without them).
+// `no_copies`: no stitch pairs (original_of all -1), so only the dummies are left out.
 Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>& original_of, bool stitch,
-                          bool plain = false) {
+                          bool plain = false, bool no_copies = false) {
   const std::size_t n = dummy.size();
   Numbering num;
   if (plain) {
@@ -213,6 +214,12 @@ Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>
     for (std::size_t g = 0; g < n; ++g) num.output[g] = static_cast<int>(g);
     num.same_as.assign(n, -1);
     num.count = static_cast<int>(n);
+    return num;
+  }
+  if (no_copies) {
+    num.output.resize(n);
+    for (std::size_t g = 0; g < n; ++g) num.output[g] = dummy[g] ? -1 : num.count++;
+    num.same_as.assign(n, -1);
     return num;
   }
   num.output.assign(n, -1);
@@ -903,16 +910,16 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
         throw bad_input("STCH section: pair {} names a dummy vertex", k);
       original_of[static_cast<std::size_t>(copy)] = static_cast<int>(orig);
     }
-    for (int g = 0; g < g_count; ++g) {
+    for (int g = 0; g < g_count && h.stitch > 0; ++g) {  // (without pairs there are no copies)
       const int o = original_of[static_cast<std::size_t>(g)];
       if (o >= 0 && original_of[static_cast<std::size_t>(o)] >= 0) throw bad_input("STCH section: a copy of a copy");
     }
   }
   const bool plain = h.dummies == 0 && h.stitch == 0;  // output vertex g is G vertex g
-  Numbering num = number_vertices(dummy, original_of, stitch, plain);
+  Numbering num = number_vertices(dummy, original_of, stitch, plain, h.stitch == 0);
   const std::uint64_t expected_vertices = h.vertices;
   const std::uint64_t stitched_count =
-      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true, plain).count);
+      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true, plain, h.stitch == 0).count);
   if (v1 && stitched_count + h.isolated != expected_vertices)
     throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
 
@@ -972,12 +979,15 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   if (plain) {
     out.triangles = std::move(dec.triangles);  // nothing to drop or renumber
   } else {
-    out.triangles.reserve(dec.triangles.size());
+    // Written through a pointer (push_back's capacity test per face was a tenth of this).
+    out.triangles.resize(dec.triangles.size());
+    Triangle* face = out.triangles.data();
+    const int* output = num.output.data();
     for (const Triangle& t : dec.triangles) {
       if (dummy[static_cast<std::size_t>(t[0])] || dummy[static_cast<std::size_t>(t[1])] || dummy[static_cast<std::size_t>(t[2])]) continue;
-      out.triangles.push_back({num.output[static_cast<std::size_t>(t[0])], num.output[static_cast<std::size_t>(t[1])],
-                               num.output[static_cast<std::size_t>(t[2])]});
+      *face++ = {output[t[0]], output[t[1]], output[t[2]]};
     }
+    out.triangles.resize(static_cast<std::size_t>(face - out.triangles.data()));
   }
   if (v1 && out.triangles.size() != h.faces)
     throw bad_input("connectivity gives {} faces, the header says {}", out.triangles.size(), h.faces);

@@ -377,7 +377,8 @@ std::vector<QPoint> decode_loop(std::string_view bytes, const GeometryPlan& plan
   RangeDecoder dec(bytes);
   Coder coder(bits);
   std::vector<QPoint> q(plan.unusable.size(), QPoint{0, 0, 0});
-  QPoint previous{domain.centre(), domain.centre(), domain.centre()};
+  const QPoint centre{domain.centre(), domain.centre(), domain.centre()};
+  const QPoint* previous = &centre;  // the last decoded vertex (q does not move)
   for (std::size_t g = 0; g < q.size(); ++g) {
     if (plan.unusable[g]) continue;
     const int same = plan.same_as[g];
@@ -385,21 +386,24 @@ std::vector<QPoint> decode_loop(std::string_view bytes, const GeometryPlan& plan
       if (static_cast<std::size_t>(same) >= g) throw bad_input("geometry: a stitch partner comes later");
       q[g] = q[static_cast<std::size_t>(same)];
     } else {
-      const QPoint p = predict_at(predict, plan, domain, fast, q, g, previous);
-      for (int k = 0; k < 3; ++k) {
-        const std::int64_t r = coder.get(dec, k);
+      const QPoint p = predict_at(predict, plan, domain, fast, q, g, *previous);
+      // The three axes written out, so that each one's contexts sit at a fixed place.
+      const auto coordinate = [&](std::size_t k, std::int64_t r) {
         std::int64_t v;
         if constexpr (wrap) {
-          v = (p[static_cast<std::size_t>(k)] + r) & domain.hi;
+          v = (p[k] + r) & domain.hi;
         } else {
-          v = p[static_cast<std::size_t>(k)] + r;
+          v = p[k] + r;
           if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
         }
-        q[g][static_cast<std::size_t>(k)] = v;
-      }
+        q[g][k] = v;
+      };
+      coordinate(0, coder.get(dec, 0));
+      coordinate(1, coder.get(dec, 1));
+      coordinate(2, coder.get(dec, 2));
       if (dec.overrun() > 12) throw bad_input("geometry section is truncated");
     }
-    previous = q[g];
+    previous = &q[g];
   }
   if (dec.truncated()) throw bad_input("geometry section is truncated");
   return q;

@@ -66,7 +66,7 @@ void ReverseDecoder::inverse_S() {
   const Loop left_branch = loops_.back();  // continued first by the encoder, so decoded last
   loops_.pop_back();
   Loop right_branch{-1, -1};
-  const auto event = pending_.find(static_cast<std::uint32_t>(position_));
+  const auto event = pending_.empty() ? pending_.end() : pending_.find(static_cast<std::uint32_t>(position_));
   if (event != pending_.end()) {  // the right branch was reached through a handle
     right_branch.gate = event->second;
     pending_.erase(event);
@@ -177,7 +177,7 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
   std::size_t next_c = closed_at_.size();  // walk closed_at_ backwards = forward order
   out.parallelogram.reserve(provisional);
   std::vector<int> g_corner;  // per G vertex: the C tip corner, or -1
-  g_corner.reserve(closed_at_.size() + 3 * start_corner.size());
+  if (!one_component) g_corner.reserve(closed_at_.size() + 3 * start_corner.size());
   for (int j = 0; j < out.components; ++j) {
     const int s = start_corner[static_cast<std::size_t>(j)];
     for (int k = 0; k < 3; ++k) {
@@ -185,14 +185,14 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
       if (final_id[static_cast<std::size_t>(r)] != -1 || vertices_[static_cast<std::size_t>(r)].closed)
         fail("a start triangle's vertex is used twice");
       final_id[static_cast<std::size_t>(r)] = next_id++;
-      g_corner.push_back(-1);
+      if (!one_component) g_corner.push_back(-1);
     }
     while (next_c > 0 && in_component(closed_at_[next_c - 1] / 3, j)) {
       const int c = closed_at_[--next_c];
       const int r = find(V_[static_cast<std::size_t>(c)]);
       if (final_id[static_cast<std::size_t>(r)] != -1) fail("a vertex is closed twice");
       final_id[static_cast<std::size_t>(r)] = next_id++;
-      g_corner.push_back(c);
+      if (!one_component) g_corner.push_back(c);
     }
   }
   if (next_c != 0) fail("the C symbols of the components are interleaved");
@@ -205,9 +205,15 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
   }
   const int* const V = V_.data();
   const auto id = [&](int corner) { return g_of[static_cast<std::size_t>(V[corner])]; };
-  for (int c : g_corner)
-    out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1}
-                                      : std::array<int, 3>{id(c + 1), id(c + 2), id(O_[static_cast<std::size_t>(c)])});
+  const auto parallelogram = [&](int c) {
+    return std::array<int, 3>{id(c + 1), id(c + 2), id(O_[static_cast<std::size_t>(c)])};
+  };
+  if (one_component) {  // G order: the start triangle's vertices, then closed_at_ backwards
+    out.parallelogram.assign(3, {-1, -1, -1});
+    for (std::size_t k = closed_at_.size(); k-- > 0;) out.parallelogram.push_back(parallelogram(closed_at_[k]));
+  } else {
+    for (int c : g_corner) out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1} : parallelogram(c));
+  }
 
   // Output faces: per component the start triangle, then its symbols in forward order
   // (symbol i was triangle symbol_triangles - 1 - i). new_index maps this decoder's

@@ -43,7 +43,7 @@ class Growing {
   // Makes room for `count` more values and returns the index of the first; the caller
   // writes them (through data()).
   std::size_t extend(std::size_t count) {
-    if (n_ + count > cap_) grow(std::max<std::size_t>(2 * cap_, std::max<std::size_t>(n_ + count, 64)));
+    if (n_ + count > cap_) grow_for(count);
     const std::size_t first = n_;
     n_ += count;
     return first;
@@ -57,6 +57,9 @@ class Growing {
   const T* end() const noexcept { return data_.get() + n_; }
 
  private:
+  [[gnu::noinline, gnu::cold]] void grow_for(std::size_t count) {
+    grow(std::max<std::size_t>(2 * cap_, std::max<std::size_t>(n_ + count, 64)));
+  }
   void grow(std::size_t cap) {
     std::unique_ptr<T[]> bigger(new T[cap]);
     std::copy(data_.get(), data_.get() + n_, bigger.get());
@@ -131,6 +134,7 @@ class ReverseDecoder {
   [[gnu::always_inline]] inline void link_fresh(int fresh, int old);
   [[gnu::always_inline]] inline Loop& top(const char* op);
   [[gnu::always_inline]] inline int incoming_open_edge(int a);
+  [[gnu::always_inline]] inline int swing_to_open(int a, int j);
   [[gnu::always_inline]] inline void set_valence(int left_degree);
   void remember_events(int c);
   // Most symbols are no handle event's source: checked inline before the call.

@@ -72,10 +72,12 @@ inline ReverseDecoder::Loop& ReverseDecoder::top(const char* op) {
 
 // The open edge y -> x that ends at x = V[next(a)], other than a's gate; returns the
 // corner opposite it. A manifold vertex is swung around at most twice in all.
-inline int ReverseDecoder::incoming_open_edge(int a) {
+inline int ReverseDecoder::incoming_open_edge(int a) { return swing_to_open(a, prev(a)); }
+
+// The swing of incoming_open_edge from j = prev(a), which is a + 2 for a loop's gate.
+inline int ReverseDecoder::swing_to_open(int a, int j) {
   // Corners j = next(next(a)) = prev(a), then next(next(O[j])) = prev(O[j]): one step of
   // the swing is one remainder, not two.
-  int j = prev(a);
   const int limit = static_cast<int>(V_.size());
   for (int step = 0; step <= limit; ++step) {
     const int o = O_[static_cast<std::size_t>(j)];
@@ -91,7 +93,8 @@ inline int ReverseDecoder::incoming_open_edge(int a) {
 // Valence context (docs/ebcode.md §4): decoded triangles at the new triangle's left vertex
 // (next(c)), counted with the new triangle. Each inverse operation below counts its new
 // triangle at its three vertices' roots; a vertex it creates starts at degree 1.
-inline void ReverseDecoder::set_valence(int left_degree) { valence_class_ = std::clamp(left_degree + 1, 2, 7) - 2; }
+// clamp(d + 1, 2, 7) - 2 of docs/ebcode.md §4, for d >= 1 (the new triangle is counted).
+inline void ReverseDecoder::set_valence(int left_degree) { valence_class_ = std::min(left_degree - 1, 5); }
 
 inline void ReverseDecoder::inverse_E() {
   const int c = new_triangle();
@@ -139,7 +142,7 @@ inline void ReverseDecoder::inverse_C() {
   const int x = find(V_[static_cast<std::size_t>(a + 1)]);
   if (vertices_[static_cast<std::size_t>(x)].closed) fail("a vertex is closed twice");
   vertices_[static_cast<std::size_t>(x)].closed = 1;
-  const int e = incoming_open_edge(a);  // the open edge y -> x
+  const int e = swing_to_open(a, a + 2);  // the open edge y -> x
   const int c = new_triangle();
   V_[static_cast<std::size_t>(c)] = x;
   V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(e))];
