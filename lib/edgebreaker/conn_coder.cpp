@@ -142,7 +142,8 @@ ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int mod
 }
 
 DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
-                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite) {
+                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite,
+                                        bool valence) {
   RangeDecoder dec(bytes);
   ReverseDecoder decoder(symbols, std::move(events));
   decoder.keep_symbols(verify);
@@ -163,7 +164,7 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
       if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
     }
     if (dec.truncated()) throw bad_input("connectivity section is truncated");
-    return decoder.finish(verify, opposite);
+    return decoder.finish(verify, opposite, valence);
   }
   StaticCoderState machine(mode == ConnMode::static_model ? model : 0);
   for (std::size_t i = symbols; i-- > 0;) {
@@ -189,7 +190,7 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
     if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
   }
   if (dec.truncated()) throw bad_input("connectivity section is truncated");
-  return decoder.finish(verify, opposite);
+  return decoder.finish(verify, opposite, valence);
 }
 
 }  // namespace fest::edgebreaker

@@ -879,7 +879,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   } else {
     dec = decode_connectivity(section("CONN"), static_cast<std::size_t>(h.symbols), std::move(events),
                               static_cast<ConnMode>(h.conn_mode), h.model_id, (h.flags & ebm_flags::exclusion) != 0,
-                              verify, static_cast<Predictor>(h.predictor) == Predictor::multi);
+                              verify, static_cast<Predictor>(h.predictor) == Predictor::multi, h.dummies > 0);
   }
   if (static_cast<std::uint64_t>(dec.components) != h.components)
     throw bad_input("connectivity has {} components, the header says {}", dec.components, h.components);
@@ -887,7 +887,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
 
   std::vector<char> dummy(static_cast<std::size_t>(g_count), 0);
   if (h.dummies > 0) {
-    dummy = decode_hole_flags(section("HOLE"), valences(dec.triangles, g_count));
+    // The decoder's counts: valences(dec.triangles, g_count) without a pass over the faces.
+    dummy = decode_hole_flags(section("HOLE"), dec.valence);
     const auto n = static_cast<std::uint64_t>(std::count(dummy.begin(), dummy.end(), 1));
     if (n != h.dummies) throw bad_input("HOLE section marks {} dummy vertices, the header says {}", n, h.dummies);
     // A dummy's triangles form one fan around it: no two dummies share a triangle.

@@ -104,7 +104,7 @@ void ReverseDecoder::inverse_S() {
   if (event_here()) remember_events(c);
 }
 
-DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
+DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite, bool valence) {
   if (verify && !keep_symbols_) throw runtime_failure("internal: verification without the decoded symbols");
   if (position_ != 0) throw bad_input("invalid connectivity: {} symbols missing", position_);
   position_ = symbols_;
@@ -205,6 +205,15 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
   }
   const int* const V = V_.data();
   const auto id = [&](int corner) { return g_of[static_cast<std::size_t>(V[corner])]; };
+  if (valence) {
+    // A root's degree counts every corner of its set made by a symbol (the valence
+    // context's count); the start triangles, closed here, add theirs.
+    out.valence.assign(static_cast<std::size_t>(next_id), 0);
+    for (std::size_t v = 0; v < provisional; ++v)
+      if (vertices_[v].parent == static_cast<int>(v)) out.valence[static_cast<std::size_t>(g_of[v])] = vertices_[v].degree;
+    for (int s : start_corner)
+      for (int k = 0; k < 3; ++k) ++out.valence[static_cast<std::size_t>(id(s + k))];
+  }
   const auto parallelogram = [&](int c) {
     return std::array<int, 3>{id(c + 1), id(c + 2), id(O_[static_cast<std::size_t>(c)])};
   };

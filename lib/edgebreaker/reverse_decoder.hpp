@@ -29,6 +29,9 @@ struct DecodedConnectivity {
   // Per corner of `triangles` (3k + j): the opposite corner, for the multi-way predictor;
   // empty when finish() was told it is not needed.
   std::vector<int> opposite;
+  // Per G vertex: its corners (triangles around it), from the decoder's counts; empty
+  // unless finish() was asked (the hole flags' contexts need it).
+  std::vector<int> valence;
 };
 
 // Plain values that grow without push_back's per-element capacity test: storage grows in
@@ -108,7 +111,8 @@ class ReverseDecoder {
   // decoding the exact inverse of traverse() on every input it accepts (O(t log t)).
   // Without `opposite` (only the multi-way predictor reads it) and without `verify`, the
   // opposite table is not built: a tenth of the decoder's work.
-  DecodedConnectivity finish(bool verify = true, bool opposite = true);
+  // With `valence`, DecodedConnectivity::valence is filled in.
+  DecodedConnectivity finish(bool verify = true, bool opposite = true, bool valence = false);
 
  private:
   struct Loop {
