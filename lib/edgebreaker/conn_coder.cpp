@@ -1,10 +1,12 @@
 // The three connectivity coders of docs/ebcode.md §4 over one range coder.
 #include "edgebreaker/conn_coder.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "core/error.hpp"
 #include "edgebreaker/range_coder.hpp"
+#include "edgebreaker/reverse_decoder_steps.hpp"
 #include "edgebreaker/state_machine.hpp"
 
 namespace fest::edgebreaker {
@@ -54,6 +56,20 @@ class AdaptiveModel {
       f[0] = 0;
     }
     return total;
+  }
+  // Decoder side: the symbol whose interval holds the range decoder's target, read from
+  // the context's counts in place (table() copies them for the encoder). With C
+  // excluded its frequency is 0, so the search starts at L; otherwise the same search.
+  Symbol decode(int ctx, RangeDecoder& dec) const {
+    const auto& c = counts_[static_cast<std::size_t>(ctx)];
+    const bool excluded = (ctx & 1) != 0;
+    const std::uint32_t total = totals_[static_cast<std::size_t>(ctx)] - (excluded ? c[0] : 0u);
+    const std::uint32_t v = dec.target(total);
+    std::uint32_t cum = 0;
+    int k = excluded ? 1 : 0;
+    while (k < symbol_count - 1 && cum + c[static_cast<std::size_t>(k)] <= v) cum += c[static_cast<std::size_t>(k++)];
+    dec.consume(cum, c[static_cast<std::size_t>(k)]);
+    return static_cast<Symbol>(k);
   }
   void update(int ctx, Symbol s) {
     auto& c = counts_[static_cast<std::size_t>(ctx)];
@@ -126,12 +142,31 @@ ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int mod
 }
 
 DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
-                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite) {
+                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite,
+                                        bool valence) {
   RangeDecoder dec(bytes);
   ReverseDecoder decoder(symbols, std::move(events));
+  decoder.keep_symbols(verify);
+  // Storage at once for up to 32 symbols per byte (real meshes spend more than a quarter
+  // bit per symbol); a count beyond that grows the arrays as decoding goes, so a lying
+  // header costs memory in proportion to its bytes only.
+  decoder.reserve(std::min<std::size_t>(symbols, (std::size_t{1} << 16) + 32 * bytes.size()));
   AdaptiveModel adaptive;
+  if (mode == ConnMode::adaptive && symbols > 0) {
+    // The loop below for the adaptive coder alone (the mode is not asked per symbol).
+    decoder.step(Symbol::E);  // the first decoded symbol is E, not stored
+    if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
+    for (std::size_t i = symbols - 1; i-- > 0;) {
+      const int ctx = AdaptiveModel::context(decoder, exclusion);
+      const Symbol s = adaptive.decode(ctx, dec);
+      adaptive.update(ctx, s);
+      decoder.step(s);
+      if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
+    }
+    if (dec.truncated()) throw bad_input("connectivity section is truncated");
+    return decoder.finish(verify, opposite, valence);
+  }
   StaticCoderState machine(mode == ConnMode::static_model ? model : 0);
-  std::array<std::uint32_t, symbol_count> f{};
   for (std::size_t i = symbols; i-- > 0;) {
     Symbol s = Symbol::E;
     if (i + 1 == symbols) {
@@ -140,13 +175,7 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
       s = get_raw(dec);
     } else if (mode == ConnMode::adaptive) {
       const int ctx = AdaptiveModel::context(decoder, exclusion);
-      const std::uint32_t total = adaptive.table(ctx, f);
-      const std::uint32_t v = dec.target(total);
-      std::uint32_t cum = 0;
-      int k = 0;
-      while (k < symbol_count - 1 && cum + f[static_cast<std::size_t>(k)] <= v) cum += f[static_cast<std::size_t>(k++)];
-      s = static_cast<Symbol>(k);
-      dec.consume(cum, f[static_cast<std::size_t>(k)]);
+      s = adaptive.decode(ctx, dec);
       adaptive.update(ctx, s);
     } else {
       const StaticFrequencies& sf = machine.frequencies();
@@ -161,7 +190,7 @@ DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symb
     if (dec.overrun() > 12) throw bad_input("connectivity section is truncated");
   }
   if (dec.truncated()) throw bad_input("connectivity section is truncated");
-  return decoder.finish(verify, opposite);
+  return decoder.finish(verify, opposite, valence);
 }
 
 }  // namespace fest::edgebreaker

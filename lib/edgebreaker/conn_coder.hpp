@@ -35,7 +35,9 @@ ConnEncoded encode_connectivity(const Connectivity& code, ConnMode mode, int mod
                                 bool opposite = true);
 
 // Inverse; throws bad_input for any stream that is not one encode_connectivity wrote.
+// `valence` asks for DecodedConnectivity::valence.
 DecodedConnectivity decode_connectivity(std::string_view bytes, std::size_t symbols, std::vector<HandleEvent> events,
-                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite = true);
+                                        ConnMode mode, int model, bool exclusion, bool verify, bool opposite = true,
+                                        bool valence = false);
 
 }  // namespace fest::edgebreaker

@@ -6,6 +6,7 @@
 #include "edgebreaker/clers.hpp"
 #include "edgebreaker/corner_table.hpp"
 #include "edgebreaker/reverse_decoder.hpp"
+#include "edgebreaker/reverse_decoder_steps.hpp"
 
 namespace fest::edgebreaker {
 

@@ -202,9 +202,26 @@ struct Numbering {
   int count = 0;
 };
 
-Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>& original_of, bool stitch) {
+// `plain`: no dummies and no stitch pairs, so every G vertex is its own output vertex
+// (what the loops below give then, without them).
+// `no_copies`: no stitch pairs (original_of all -1), so only the dummies are left out.
+Numbering number_vertices(const std::vector<char>& dummy, const std::vector<int>& original_of, bool stitch,
+                          bool plain = false, bool no_copies = false) {
   const std::size_t n = dummy.size();
   Numbering num;
+  if (plain) {
+    num.output.resize(n);
+    for (std::size_t g = 0; g < n; ++g) num.output[g] = static_cast<int>(g);
+    num.same_as.assign(n, -1);
+    num.count = static_cast<int>(n);
+    return num;
+  }
+  if (no_copies) {
+    num.output.resize(n);
+    for (std::size_t g = 0; g < n; ++g) num.output[g] = dummy[g] ? -1 : num.count++;
+    num.same_as.assign(n, -1);
+    return num;
+  }
   num.output.assign(n, -1);
   num.same_as.assign(n, -1);
   for (std::size_t g = 0; g < n; ++g)
@@ -862,7 +879,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   } else {
     dec = decode_connectivity(section("CONN"), static_cast<std::size_t>(h.symbols), std::move(events),
                               static_cast<ConnMode>(h.conn_mode), h.model_id, (h.flags & ebm_flags::exclusion) != 0,
-                              verify, static_cast<Predictor>(h.predictor) == Predictor::multi);
+                              verify, static_cast<Predictor>(h.predictor) == Predictor::multi, h.dummies > 0);
   }
   if (static_cast<std::uint64_t>(dec.components) != h.components)
     throw bad_input("connectivity has {} components, the header says {}", dec.components, h.components);
@@ -870,7 +887,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
 
   std::vector<char> dummy(static_cast<std::size_t>(g_count), 0);
   if (h.dummies > 0) {
-    dummy = decode_hole_flags(section("HOLE"), valences(dec.triangles, g_count));
+    // The decoder's counts: valences(dec.triangles, g_count) without a pass over the faces.
+    dummy = decode_hole_flags(section("HOLE"), dec.valence);
     const auto n = static_cast<std::uint64_t>(std::count(dummy.begin(), dummy.end(), 1));
     if (n != h.dummies) throw bad_input("HOLE section marks {} dummy vertices, the header says {}", n, h.dummies);
     // A dummy's triangles form one fan around it: no two dummies share a triangle.
@@ -893,26 +911,34 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
         throw bad_input("STCH section: pair {} names a dummy vertex", k);
       original_of[static_cast<std::size_t>(copy)] = static_cast<int>(orig);
     }
-    for (int g = 0; g < g_count; ++g) {
+    for (int g = 0; g < g_count && h.stitch > 0; ++g) {  // (without pairs there are no copies)
       const int o = original_of[static_cast<std::size_t>(g)];
       if (o >= 0 && original_of[static_cast<std::size_t>(o)] >= 0) throw bad_input("STCH section: a copy of a copy");
     }
   }
-  const Numbering num = number_vertices(dummy, original_of, stitch);
+  const bool plain = h.dummies == 0 && h.stitch == 0;  // output vertex g is G vertex g
+  Numbering num = number_vertices(dummy, original_of, stitch, plain, h.stitch == 0);
   const std::uint64_t expected_vertices = h.vertices;
   const std::uint64_t stitched_count =
-      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true).count);
+      static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true, plain, h.stitch == 0).count);
   if (v1 && stitched_count + h.isolated != expected_vertices)
     throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
 
   MeshSoup out;
   out.positions.assign(static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated), {0.0, 0.0, 0.0});
+  // One plan for the positions and every attribute (geometry_plan's fields, moved here
+  // rather than copied: the decoder needs them for nothing else).
+  GeometryPlan plan;
+  plan.parallelogram = std::move(dec.parallelogram);
+  plan.unusable = dummy;
+  plan.same_as = std::move(num.same_as);
+  plan.triangles = &dec.triangles;
+  plan.opposite = &dec.opposite;
   if (h.flags & ebm_flags::geometry) {
     if (!p.sections.count("GEOM")) throw bad_input(".ebm stream has no GEOM section");
     Quantiser quant;
     quant.bits = h.qp;
     quant.box = h.box;
-    const GeometryPlan plan = geometry_plan(dec, dummy, num);
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor), coding);
     for (int g = 0; g < g_count; ++g)
@@ -930,10 +956,6 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     if (main_len > r.left()) throw bad_input("{} section is truncated", a.tag());
     const std::string_view main = r.bytes(static_cast<std::size_t>(main_len));
     const std::string_view rest = r.bytes(r.left());
-    GeometryPlan plan;
-    plan.parallelogram = dec.parallelogram;
-    plan.unusable = dummy;
-    plan.same_as = num.same_as;
     const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram, coding);
     const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits, coding)
                                                    : std::vector<QPoint>{};
@@ -955,11 +977,18 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
         store(static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)]), q[static_cast<std::size_t>(g)]);
     for (std::size_t k = 0; k < iq.size(); ++k) store(static_cast<std::size_t>(num.count) + k, iq[k]);
   }
-  out.triangles.reserve(dec.triangles.size());
-  for (const Triangle& t : dec.triangles) {
-    if (dummy[static_cast<std::size_t>(t[0])] || dummy[static_cast<std::size_t>(t[1])] || dummy[static_cast<std::size_t>(t[2])]) continue;
-    out.triangles.push_back({num.output[static_cast<std::size_t>(t[0])], num.output[static_cast<std::size_t>(t[1])],
-                             num.output[static_cast<std::size_t>(t[2])]});
+  if (plain) {
+    out.triangles = std::move(dec.triangles);  // nothing to drop or renumber
+  } else {
+    // Written through a pointer (push_back's capacity test per face was a tenth of this).
+    out.triangles.resize(dec.triangles.size());
+    Triangle* face = out.triangles.data();
+    const int* output = num.output.data();
+    for (const Triangle& t : dec.triangles) {
+      if (dummy[static_cast<std::size_t>(t[0])] || dummy[static_cast<std::size_t>(t[1])] || dummy[static_cast<std::size_t>(t[2])]) continue;
+      *face++ = {output[t[0]], output[t[1]], output[t[2]]};
+    }
+    out.triangles.resize(static_cast<std::size_t>(face - out.triangles.data()));
   }
   if (v1 && out.triangles.size() != h.faces)
     throw bad_input("connectivity gives {} faces, the header says {}", out.triangles.size(), h.faces);

@@ -107,9 +107,12 @@ inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
   enc.bit_at_rate(c.p, b, counted_shift[c.n]);
   c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
 }
-inline int get_counted(RangeDecoder& dec, CountedBit& c) {
+// A context that has settled (15 uses, on a large mesh almost every decision) adapts at
+// the fixed rate without looking at the table or counting further.
+[[gnu::always_inline]] inline int get_counted(RangeDecoder& dec, CountedBit& c) {
+  if (c.n == 15) return dec.bit_at_rate(c.p, adapt_shift);
   const int b = dec.bit_at_rate(c.p, counted_shift[c.n]);
-  c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
+  ++c.n;
   return b;
 }
 
@@ -170,7 +173,9 @@ struct DistanceCoder {
     }
   }
 
-  std::int64_t get(RangeDecoder& dec, int axis) {
+  // The inverse of put(). The unary steps walk a pointer over the step contexts (the
+  // last one repeats), the same decisions as put() makes in the same contexts.
+  [[gnu::always_inline]] std::int64_t get(RangeDecoder& dec, int axis) {
     AxisContexts& a = axes[static_cast<std::size_t>(axis)];
     const int m = previous[static_cast<std::size_t>(axis)];
     const auto mi = static_cast<std::size_t>(m);
@@ -178,15 +183,25 @@ struct DistanceCoder {
     if (get_counted(dec, a.same[mi])) {
       const bool up = m == 0 || (m < kmax && get_counted(dec, a.above[mi]));
       if (up) {
+        CountedBit* step = a.up[mi].data();
+        CountedBit* const last = step + (steps - 1);
         k = m + 1;
-        while (k < kmax && get_counted(dec, a.up[mi][static_cast<std::size_t>(std::min(k - m - 1, steps - 1))])) ++k;
+        while (k < kmax && get_counted(dec, *step)) {
+          ++k;
+          step += step != last;
+        }
       } else {
+        CountedBit* step = a.down[mi].data();
+        CountedBit* const last = step + (steps - 1);
         k = m - 1;
-        while (k > 0 && get_counted(dec, a.down[mi][static_cast<std::size_t>(std::min(m - 1 - k, steps - 1))])) --k;
+        while (k > 0 && get_counted(dec, *step)) {
+          --k;
+          step += step != last;
+        }
       }
     }
     previous[static_cast<std::size_t>(axis)] = k;
-    if (k <= 1) return k == 0 ? 0 : unzigzag(1);
+    if (k <= 1) return -k;  // zigzag 0 -> 0, 1 -> -1
     auto& h = a.high[static_cast<std::size_t>(k)];
     int below = k - 2;
     const int b0 = get_counted(dec, h[0]);
@@ -194,11 +209,11 @@ struct DistanceCoder {
     if (below > 0) {
       --below;
       z = (z << 1) | static_cast<std::uint64_t>(get_counted(dec, h[static_cast<std::size_t>(1 + b0)]));
-    }
-    while (below > 0) {
-      const int chunk = std::min(below, 16);
-      below -= chunk;
-      z = (z << chunk) | dec.bypass_bits(chunk);
+      while (below > 0) {
+        const int chunk = std::min(below, 16);
+        below -= chunk;
+        z = (z << chunk) | dec.bypass_bits(chunk);
+      }
     }
     return unzigzag(z);
   }
@@ -352,15 +367,18 @@ std::string encode_with(const std::vector<QPoint>& q, const GeometryPlan& plan, 
   return enc.finish();
 }
 
-template <class Coder>
-std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+// Quantised coordinates (wrap) come out of the mask in [0, 2^bits - 1] already; only
+// lossless ones are range-checked.
+template <class Coder, bool wrap>
+std::vector<QPoint> decode_loop(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
   const Domain domain(bits);
   const Prediction predict(plan, domain, predictor);
   const bool fast = predictor == Predictor::parallelogram;
   RangeDecoder dec(bytes);
   Coder coder(bits);
   std::vector<QPoint> q(plan.unusable.size(), QPoint{0, 0, 0});
-  QPoint previous{domain.centre(), domain.centre(), domain.centre()};
+  const QPoint centre{domain.centre(), domain.centre(), domain.centre()};
+  const QPoint* previous = &centre;  // the last decoded vertex (q does not move)
   for (std::size_t g = 0; g < q.size(); ++g) {
     if (plan.unusable[g]) continue;
     const int same = plan.same_as[g];
@@ -368,18 +386,32 @@ std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan
       if (static_cast<std::size_t>(same) >= g) throw bad_input("geometry: a stitch partner comes later");
       q[g] = q[static_cast<std::size_t>(same)];
     } else {
-      const QPoint p = predict_at(predict, plan, domain, fast, q, g, previous);
-      for (int k = 0; k < 3; ++k) {
-        const std::int64_t v = domain.unwrap(p[static_cast<std::size_t>(k)], coder.get(dec, k));
-        if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
-        q[g][static_cast<std::size_t>(k)] = v;
-      }
+      const QPoint p = predict_at(predict, plan, domain, fast, q, g, *previous);
+      // The three axes written out, so that each one's contexts sit at a fixed place.
+      const auto coordinate = [&](std::size_t k, std::int64_t r) {
+        std::int64_t v;
+        if constexpr (wrap) {
+          v = (p[k] + r) & domain.hi;
+        } else {
+          v = p[k] + r;
+          if (v < domain.lo || v > domain.hi) throw bad_input("geometry: a coordinate outside the quantisation range");
+        }
+        q[g][k] = v;
+      };
+      coordinate(0, coder.get(dec, 0));
+      coordinate(1, coder.get(dec, 1));
+      coordinate(2, coder.get(dec, 2));
       if (dec.overrun() > 12) throw bad_input("geometry section is truncated");
     }
-    previous = q[g];
+    previous = &q[g];
   }
   if (dec.truncated()) throw bad_input("geometry section is truncated");
   return q;
+}
+
+template <class Coder>
+std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+  return bits != 0 ? decode_loop<Coder, true>(bytes, plan, bits, predictor) : decode_loop<Coder, false>(bytes, plan, bits, predictor);
 }
 
 }  // namespace

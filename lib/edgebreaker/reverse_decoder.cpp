@@ -4,6 +4,7 @@
 // are known, links only between open corners), every swing is bounded, and finish()
 // re-encodes the result, so only exact encodings are accepted.
 #include "edgebreaker/reverse_decoder.hpp"
+#include "edgebreaker/reverse_decoder_steps.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -23,9 +24,7 @@ ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> eve
   decoded_.reserve(expected);
   V_.reserve(3 * (expected + 2));
   O_.reserve(3 * (expected + 2));
-  parent_.reserve(expected + 3);
-  degree_.reserve(expected + 3);
-  closed_.reserve(expected + 3);
+  vertices_.reserve(expected + 3);
   for (std::size_t k = 0; k < events_.size(); ++k) {
     const HandleEvent& e = events_[k];
     if (e.source >= symbols || e.split >= e.source)
@@ -34,77 +33,21 @@ ReverseDecoder::ReverseDecoder(std::size_t symbols, std::vector<HandleEvent> eve
                   (events_[k - 1].source == e.source && events_[k - 1].right_edge >= e.right_edge)))
       throw bad_input("invalid handle event {}: events are not in order", k);
   }
+  next_event_source_ = events_.empty() ? std::numeric_limits<std::size_t>::max() : events_.back().source;
+}
+
+void ReverseDecoder::reserve(std::size_t symbols) {
+  symbols = std::min(symbols, symbols_);
+  if (keep_symbols_) decoded_.reserve(symbols);
+  V_.reserve(3 * (symbols + 2));
+  O_.reserve(3 * (symbols + 2));
+  vertices_.reserve(symbols + 3);
+  closed_at_.reserve(symbols / 2 + 1);
 }
 
 void ReverseDecoder::fail(const char* why) const {
   if (position_ >= symbols_) throw bad_input("invalid connectivity: {} (when closing the start triangles)", why);
   throw bad_input("invalid connectivity: {} (symbol {} of {})", why, position_, symbols_);
-}
-
-// A new triangle's first corner c is a multiple of 3, so its next and previous corners are
-// written c + 1 and c + 2 below (the remainder in next() and prev() was a tenth of the
-// decoder's instructions).
-int ReverseDecoder::new_triangle() {
-  O_.append(-1, 3);
-  return V_.append(-1, 3);
-}
-
-int ReverseDecoder::new_vertex() {
-  const int v = static_cast<int>(parent_.size());
-  parent_.push_back(v);
-  degree_.push_back(0);
-  closed_.push_back(0);
-  return v;
-}
-
-int ReverseDecoder::find(int v) {
-  while (parent_[static_cast<std::size_t>(v)] != v) {
-    const int up = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(v)])];
-    parent_[static_cast<std::size_t>(v)] = up;  // path halving
-    v = up;
-  }
-  return v;
-}
-
-void ReverseDecoder::link(int a, int b) {
-  if (O_[static_cast<std::size_t>(a)] != -1 || O_[static_cast<std::size_t>(b)] != -1)
-    fail("an edge would get a third triangle");
-  O_[static_cast<std::size_t>(a)] = b;
-  O_[static_cast<std::size_t>(b)] = a;
-}
-
-ReverseDecoder::Loop& ReverseDecoder::top(const char* op) {
-  if (loops_.empty()) fail(op);
-  return loops_.back();
-}
-
-// The open edge y -> x that ends at x = V[next(a)], other than a's gate; returns the
-// corner opposite it. A manifold vertex is swung around at most twice in all.
-int ReverseDecoder::incoming_open_edge(int a) {
-  // Corners j = next(next(a)) = prev(a), then next(next(O[j])) = prev(O[j]): one step of
-  // the swing is one remainder, not two.
-  int j = prev(a);
-  const int limit = static_cast<int>(V_.size());
-  for (int step = 0; step <= limit; ++step) {
-    const int o = O_[static_cast<std::size_t>(j)];
-    if (o == -1) {
-      if (j == a) fail("a loop closed on itself");
-      return j;
-    }
-    j = prev(o);
-  }
-  fail("a vertex fan does not end");
-}
-
-// Valence context (docs/ebcode.md §4): decoded triangles at the new triangle's left vertex.
-// c is a triangle's first corner (new_triangle), so next(c) = c + 1: its root is found once.
-void ReverseDecoder::count_triangle(int c) {
-  ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c)]))];
-  const int left = find(V_[static_cast<std::size_t>(c + 1)]);
-  ++degree_[static_cast<std::size_t>(left)];
-  ++degree_[static_cast<std::size_t>(find(V_[static_cast<std::size_t>(c + 2)]))];
-  const int d = degree_[static_cast<std::size_t>(left)];
-  valence_class_ = std::clamp(d + 1, 2, 7) - 2;
 }
 
 // Handle events whose source is the symbol just decoded: the corner across the edge
@@ -115,67 +58,7 @@ void ReverseDecoder::remember_events(int c) {
     const int corner = e.right_edge ? c + 1 : c + 2;
     if (!pending_.emplace(e.split, corner).second) fail("two handle events for one S");
   }
-}
-
-bool ReverseDecoder::c_possible() const noexcept {
-  if (loops_.empty() || last_was_L_) return false;
-  const int length = loops_.back().length;
-  return length == -1 || length > 3;
-}
-
-void ReverseDecoder::inverse_E() {
-  const int c = new_triangle();
-  for (int k = 0; k < 3; ++k) V_[static_cast<std::size_t>(c + k)] = new_vertex();
-  loops_.push_back({c, 3});
-  count_triangle(c);
-  if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::inverse_L() {
-  Loop& loop = top("L with no open loop");
-  const int a = loop.gate, c = new_triangle();
-  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(a))];
-  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(a))];
-  V_[static_cast<std::size_t>(c + 1)] = new_vertex();
-  link(c + 1, a);
-  loop = {c, loop.length < 0 ? -1 : loop.length + 1};
-  count_triangle(c);
-  if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::inverse_R() {
-  Loop& loop = top("R with no open loop");
-  const int a = loop.gate, c = new_triangle();
-  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(a))];
-  V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(prev(a))];
-  V_[static_cast<std::size_t>(c + 2)] = new_vertex();
-  link(c + 2, a);
-  loop = {c, loop.length < 0 ? -1 : loop.length + 1};
-  count_triangle(c);
-  if (event_here()) remember_events(c);
-}
-
-void ReverseDecoder::inverse_C() {
-  Loop& loop = top("C with no open loop");
-  // C on a 3-loop leaves a 2-loop: only meshes with multi-edges do that (the chapter's
-  // constraint 1a, which the context models exploit); C on a 2-loop would repeat a vertex.
-  if (loop.length >= 0 && loop.length <= (simple_ ? 3 : 2))
-    fail(simple_ ? "C on a loop of 3 edges" : "C on a loop of 2 edges");
-  const int a = loop.gate;
-  const int x = find(V_[static_cast<std::size_t>(next(a))]);
-  if (closed_[static_cast<std::size_t>(x)]) fail("a vertex is closed twice");
-  closed_[static_cast<std::size_t>(x)] = 1;
-  const int e = incoming_open_edge(a);  // the open edge y -> x
-  const int c = new_triangle();
-  V_[static_cast<std::size_t>(c)] = x;
-  V_[static_cast<std::size_t>(c + 1)] = V_[static_cast<std::size_t>(next(e))];
-  V_[static_cast<std::size_t>(c + 2)] = V_[static_cast<std::size_t>(prev(a))];
-  link(c + 1, a);
-  link(c + 2, e);
-  closed_at_.push_back(c);
-  loop = {c, loop.length < 0 ? -1 : loop.length - 1};
-  count_triangle(c);
-  if (event_here()) remember_events(c);
+  next_event_source_ = next_event_ > 0 ? events_[next_event_ - 1].source : std::numeric_limits<std::size_t>::max();
 }
 
 void ReverseDecoder::inverse_S() {
@@ -183,7 +66,7 @@ void ReverseDecoder::inverse_S() {
   const Loop left_branch = loops_.back();  // continued first by the encoder, so decoded last
   loops_.pop_back();
   Loop right_branch{-1, -1};
-  const auto event = pending_.find(static_cast<std::uint32_t>(position_));
+  const auto event = pending_.empty() ? pending_.end() : pending_.find(static_cast<std::uint32_t>(position_));
   if (event != pending_.end()) {  // the right branch was reached through a handle
     right_branch.gate = event->second;
     pending_.erase(event);
@@ -199,11 +82,11 @@ void ReverseDecoder::inverse_S() {
   const int at = left_branch.gate, ab = right_branch.gate;
   // The chapter's "unifies two vertices from the two loops": the split vertex.
   const int u = find(V_[static_cast<std::size_t>(prev(at))]), w = find(V_[static_cast<std::size_t>(next(ab))]);
-  if (closed_[static_cast<std::size_t>(u)] || closed_[static_cast<std::size_t>(w)])
+  if (vertices_[static_cast<std::size_t>(u)].closed || vertices_[static_cast<std::size_t>(w)].closed)
     fail("S joins at a vertex that is already closed");
   if (u != w) {
-    parent_[static_cast<std::size_t>(u)] = w;
-    degree_[static_cast<std::size_t>(w)] += degree_[static_cast<std::size_t>(u)];
+    vertices_[static_cast<std::size_t>(u)].parent = w;
+    vertices_[static_cast<std::size_t>(w)].degree += vertices_[static_cast<std::size_t>(u)].degree;
   }
   const int c = new_triangle();
   V_[static_cast<std::size_t>(c)] = V_[static_cast<std::size_t>(next(ab))];
@@ -213,27 +96,16 @@ void ReverseDecoder::inverse_S() {
   link(c + 1, ab);
   const bool known = left_branch.length >= 0 && right_branch.length >= 0;
   loops_.push_back({c, known ? left_branch.length + right_branch.length - 1 : -1});
-  count_triangle(c);
+  ++vertices_[static_cast<std::size_t>(root_at(c))].degree;
+  const int left = root_at(c + 1);
+  ++vertices_[static_cast<std::size_t>(left)].degree;
+  ++vertices_[static_cast<std::size_t>(root_at(c + 2))].degree;
+  set_valence(vertices_[static_cast<std::size_t>(left)].degree);
   if (event_here()) remember_events(c);
 }
 
-void ReverseDecoder::step(Symbol s) {
-  if (position_ == 0) throw bad_input("invalid connectivity: more symbols than announced");
-  --position_;
-  switch (s) {
-    case Symbol::E: inverse_E(); break;
-    case Symbol::L: inverse_L(); break;
-    case Symbol::R: inverse_R(); break;
-    case Symbol::C: inverse_C(); break;
-    case Symbol::S: inverse_S(); break;
-    default: fail("not a CLERS symbol");
-  }
-  decoded_.push_back(s);
-  previous_ = 1 + static_cast<int>(s);
-  last_was_L_ = s == Symbol::L;
-}
-
-DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
+DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite, bool valence) {
+  if (verify && !keep_symbols_) throw runtime_failure("internal: verification without the decoded symbols");
   if (position_ != 0) throw bad_input("invalid connectivity: {} symbols missing", position_);
   position_ = symbols_;
   if (!pending_.empty() || next_event_ != 0) fail("a handle event has no S");
@@ -261,89 +133,122 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite) {
     link(s + 2, f);
     start_corner.push_back(s);
   }
-  for (int o : O_)
-    if (o == -1) fail("an edge is left open");
+  // Every link() joined two open corners (it refuses any other), so the edges are all
+  // closed exactly when the links account for every corner.
+  if (2 * links_ != V_.size()) fail("an edge is left open");
 
-  // Components: label triangles from each start triangle.
+  // Components: label triangles from each start triangle. With one start triangle the
+  // labels are all 0 without a search: every triangle was linked to the loop it was made
+  // on (E makes a loop, S links the triangles of the two loops it joins), so the pieces
+  // linked so far always number at most the open loops, and one loop is left at the end.
   const int t = static_cast<int>(V_.size() / 3);
-  std::vector<int> component(static_cast<std::size_t>(t), -1);
-  std::vector<int> todo;
-  for (int j = 0; j < out.components; ++j) {
-    const int s0 = start_corner[static_cast<std::size_t>(j)] / 3;
-    if (component[static_cast<std::size_t>(s0)] != -1) fail("two start triangles in one component");
-    component[static_cast<std::size_t>(s0)] = j;
-    todo.push_back(s0);
-    while (!todo.empty()) {
-      const int f = todo.back();
-      todo.pop_back();
-      for (int k = 0; k < 3; ++k) {
-        const int g = O_[static_cast<std::size_t>(3 * f + k)] / 3;
-        if (component[static_cast<std::size_t>(g)] == -1) {
-          component[static_cast<std::size_t>(g)] = j;
-          todo.push_back(g);
+  const bool one_component = out.components == 1;
+  std::vector<int> component;
+  if (!one_component) {
+    component.assign(static_cast<std::size_t>(t), -1);
+    std::vector<int> todo;
+    for (int j = 0; j < out.components; ++j) {
+      const int s0 = start_corner[static_cast<std::size_t>(j)] / 3;
+      if (component[static_cast<std::size_t>(s0)] != -1) fail("two start triangles in one component");
+      component[static_cast<std::size_t>(s0)] = j;
+      todo.push_back(s0);
+      while (!todo.empty()) {
+        const int f = todo.back();
+        todo.pop_back();
+        for (int k = 0; k < 3; ++k) {
+          const int g = O_[static_cast<std::size_t>(3 * f + k)] / 3;
+          if (component[static_cast<std::size_t>(g)] == -1) {
+            component[static_cast<std::size_t>(g)] = j;
+            todo.push_back(g);
+          }
         }
       }
     }
   }
+  const auto in_component = [&](int triangle, int j) {
+    return one_component || component[static_cast<std::size_t>(triangle)] == j;
+  };
 
   // G numbering: per component its three start vertices, then its C vertices in forward
   // order (the reverse of the closing order), which must come grouped by component.
-  std::vector<int> final_id(parent_.size(), -1);
+  const std::size_t provisional = vertices_.size();
+  std::vector<int> final_id(provisional, -1);
   int next_id = 0;
   std::size_t next_c = closed_at_.size();  // walk closed_at_ backwards = forward order
-  out.parallelogram.reserve(parent_.size());
+  out.parallelogram.reserve(provisional);
   std::vector<int> g_corner;  // per G vertex: the C tip corner, or -1
+  if (!one_component) g_corner.reserve(closed_at_.size() + 3 * start_corner.size());
   for (int j = 0; j < out.components; ++j) {
     const int s = start_corner[static_cast<std::size_t>(j)];
     for (int k = 0; k < 3; ++k) {
       const int r = find(V_[static_cast<std::size_t>(s + k)]);
-      if (final_id[static_cast<std::size_t>(r)] != -1 || closed_[static_cast<std::size_t>(r)])
+      if (final_id[static_cast<std::size_t>(r)] != -1 || vertices_[static_cast<std::size_t>(r)].closed)
         fail("a start triangle's vertex is used twice");
       final_id[static_cast<std::size_t>(r)] = next_id++;
-      g_corner.push_back(-1);
+      if (!one_component) g_corner.push_back(-1);
     }
-    while (next_c > 0 && component[static_cast<std::size_t>(closed_at_[next_c - 1] / 3)] == j) {
+    while (next_c > 0 && in_component(closed_at_[next_c - 1] / 3, j)) {
       const int c = closed_at_[--next_c];
       const int r = find(V_[static_cast<std::size_t>(c)]);
       if (final_id[static_cast<std::size_t>(r)] != -1) fail("a vertex is closed twice");
       final_id[static_cast<std::size_t>(r)] = next_id++;
-      g_corner.push_back(c);
+      if (!one_component) g_corner.push_back(c);
     }
   }
   if (next_c != 0) fail("the C symbols of the components are interleaved");
-  for (std::size_t v = 0; v < parent_.size(); ++v)
-    if (final_id[static_cast<std::size_t>(find(static_cast<int>(v)))] == -1) fail("a vertex is never closed by a C");
   out.vertex_count = next_id;
   // Every provisional vertex's G id, its root looked up once (not once per corner).
-  std::vector<int> g_of(parent_.size());
-  for (std::size_t v = 0; v < parent_.size(); ++v) g_of[v] = final_id[static_cast<std::size_t>(find(static_cast<int>(v)))];
-  const auto id = [&](int corner) { return g_of[static_cast<std::size_t>(V_[static_cast<std::size_t>(corner)])]; };
-  for (int c : g_corner)
-    out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1}
-                                      : std::array<int, 3>{id(c + 1), id(c + 2), id(O_[static_cast<std::size_t>(c)])});
+  std::vector<int> g_of(provisional);
+  for (std::size_t v = 0; v < provisional; ++v) {
+    g_of[v] = final_id[static_cast<std::size_t>(find(static_cast<int>(v)))];
+    if (g_of[v] == -1) fail("a vertex is never closed by a C");
+  }
+  const int* const V = V_.data();
+  const auto id = [&](int corner) { return g_of[static_cast<std::size_t>(V[corner])]; };
+  if (valence) {
+    // A root's degree counts every corner of its set made by a symbol (the valence
+    // context's count); the start triangles, closed here, add theirs.
+    out.valence.assign(static_cast<std::size_t>(next_id), 0);
+    for (std::size_t v = 0; v < provisional; ++v)
+      if (vertices_[v].parent == static_cast<int>(v)) out.valence[static_cast<std::size_t>(g_of[v])] = vertices_[v].degree;
+    for (int s : start_corner)
+      for (int k = 0; k < 3; ++k) ++out.valence[static_cast<std::size_t>(id(s + k))];
+  }
+  const auto parallelogram = [&](int c) {
+    return std::array<int, 3>{id(c + 1), id(c + 2), id(O_[static_cast<std::size_t>(c)])};
+  };
+  if (one_component) {  // G order: the start triangle's vertices, then closed_at_ backwards
+    out.parallelogram.assign(3, {-1, -1, -1});
+    for (std::size_t k = closed_at_.size(); k-- > 0;) out.parallelogram.push_back(parallelogram(closed_at_[k]));
+  } else {
+    for (int c : g_corner) out.parallelogram.push_back(c < 0 ? std::array<int, 3>{-1, -1, -1} : parallelogram(c));
+  }
 
   // Output faces: per component the start triangle, then its symbols in forward order
   // (symbol i was triangle symbol_triangles - 1 - i). new_index maps this decoder's
-  // triangles to output positions, for the verification's corner table.
-  out.triangles.reserve(static_cast<std::size_t>(t));
-  std::vector<int> new_index(static_cast<std::size_t>(t), -1);
+  // triangles to output positions, for the opposite table and the verification.
+  const bool need_index = verify || opposite;
+  out.triangles.resize(static_cast<std::size_t>(t));
+  Triangle* faces = out.triangles.data();
+  std::size_t made = 0;
+  std::vector<int> new_index(need_index ? static_cast<std::size_t>(t) : 0, -1);
   std::size_t symbol = 0;
   for (int j = 0; j < out.components; ++j) {
     const int s = start_corner[static_cast<std::size_t>(j)];
-    new_index[static_cast<std::size_t>(s / 3)] = static_cast<int>(out.triangles.size());
-    out.triangles.push_back({id(s), id(s + 1), id(s + 2)});
+    if (need_index) new_index[static_cast<std::size_t>(s / 3)] = static_cast<int>(made);
+    faces[made++] = {id(s), id(s + 1), id(s + 2)};
     for (; symbol < symbols_; ++symbol) {
       const int tri = symbol_triangles - 1 - static_cast<int>(symbol);
-      if (component[static_cast<std::size_t>(tri)] != j) break;
-      new_index[static_cast<std::size_t>(tri)] = static_cast<int>(out.triangles.size());
-      out.triangles.push_back({id(3 * tri), id(3 * tri + 1), id(3 * tri + 2)});
+      if (!in_component(tri, j)) break;
+      if (need_index) new_index[static_cast<std::size_t>(tri)] = static_cast<int>(made);
+      faces[made++] = {id(3 * tri), id(3 * tri + 1), id(3 * tri + 2)};
     }
   }
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
   const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
-  if (verify || opposite) out.opposite.resize(static_cast<std::size_t>(3 * t));
-  for (int f = 0; f < t && (verify || opposite); ++f) {  // per triangle: one new_index lookup for its own corners
+  if (need_index) out.opposite.resize(static_cast<std::size_t>(3 * t));
+  for (int f = 0; f < t && need_index; ++f) {  // per triangle: one new_index lookup for its own corners
     const int base = 3 * new_index[static_cast<std::size_t>(f)];
     for (int k = 0; k < 3; ++k) out.opposite[static_cast<std::size_t>(base + k)] = moved(O_[static_cast<std::size_t>(3 * f + k)]);
   }

@@ -29,41 +29,47 @@ struct DecodedConnectivity {
   // Per corner of `triangles` (3k + j): the opposite corner, for the multi-way predictor;
   // empty when finish() was told it is not needed.
   std::vector<int> opposite;
+  // Per G vertex: its corners (triangles around it), from the decoder's counts; empty
+  // unless finish() was asked (the hole flags' contexts need it).
+  std::vector<int> valence;
 };
 
-// Per-corner ints that grow without push_back's per-element capacity test: storage grows
-// in doublings, and a triangle's three corners are written in one step (six push_backs
-// per decoded triangle cost 2 % of the decoder's instructions).
-class GrowingInts {
+// Plain values that grow without push_back's per-element capacity test: storage grows in
+// doublings, and a triangle's three corners are made in one step (six push_backs per
+// decoded triangle cost 2 % of the decoder's instructions).
+template <class T>
+class Growing {
  public:
   void reserve(std::size_t n) {
     if (n > cap_) grow(n);
   }
-  // Appends `count` (1..3) copies of `value`; returns the index of the first.
-  int append(int value, std::size_t count) {
-    if (n_ + count > cap_) grow(std::max<std::size_t>(2 * cap_, 64));
-    int* p = data_.get() + n_;
-    p[0] = value;
-    if (count > 1) p[1] = value;
-    if (count > 2) p[2] = value;
-    const int first = static_cast<int>(n_);
+  // Makes room for `count` more values and returns the index of the first; the caller
+  // writes them (through data()).
+  std::size_t extend(std::size_t count) {
+    if (n_ + count > cap_) grow_for(count);
+    const std::size_t first = n_;
     n_ += count;
     return first;
   }
   std::size_t size() const noexcept { return n_; }
-  int& operator[](std::size_t i) noexcept { return data_[i]; }
-  int operator[](std::size_t i) const noexcept { return data_[i]; }
-  const int* begin() const noexcept { return data_.get(); }
-  const int* end() const noexcept { return data_.get() + n_; }
+  T* data() noexcept { return data_.get(); }
+  const T* data() const noexcept { return data_.get(); }
+  T& operator[](std::size_t i) noexcept { return data_[i]; }
+  const T& operator[](std::size_t i) const noexcept { return data_[i]; }
+  const T* begin() const noexcept { return data_.get(); }
+  const T* end() const noexcept { return data_.get() + n_; }
 
  private:
+  [[gnu::noinline, gnu::cold]] void grow_for(std::size_t count) {
+    grow(std::max<std::size_t>(2 * cap_, std::max<std::size_t>(n_ + count, 64)));
+  }
   void grow(std::size_t cap) {
-    std::unique_ptr<int[]> bigger(new int[cap]);
+    std::unique_ptr<T[]> bigger(new T[cap]);
     std::copy(data_.get(), data_.get() + n_, bigger.get());
     data_ = std::move(bigger);
     cap_ = cap;
   }
-  std::unique_ptr<int[]> data_;
+  std::unique_ptr<T[]> data_;
   std::size_t n_ = 0, cap_ = 0;
 };
 
@@ -80,40 +86,68 @@ class ReverseDecoder {
   // possible (the current loop is longer than 3 and the previous symbol is not L).
   int valence_class() const noexcept { return valence_class_; }
   int previous() const noexcept { return previous_; }
-  bool c_possible() const noexcept;
+  bool c_possible() const noexcept {
+    if (loops_.empty() || last_was_L_) return false;
+    const int length = loops_.back().length;
+    return length == -1 || length > 3;
+  }
+
+  // Whether step() keeps the decoded symbols for finish(verify = true) (the default). A
+  // decoder that will not verify is told so, and saves storing them.
+  void keep_symbols(bool keep) noexcept { keep_symbols_ = keep; }
+
+  // Storage for `symbols` symbols at once (the constructor reserves for at most 2^16, so
+  // that a lying count costs nothing): for a caller that has bounded the count by the
+  // bytes it holds. Growing by doubling copied each array about once.
+  void reserve(std::size_t symbols);
 
   // Decodes the next symbol (forward index symbols-1, symbols-2, ... 0). Throws bad_input
-  // when the symbol is impossible here; never loops or reads out of bounds.
-  void step(Symbol s);
+  // when the symbol is impossible here; never loops or reads out of bounds. Defined in
+  // reverse_decoder_steps.hpp, which a caller includes.
+  [[gnu::always_inline]] inline void step(Symbol s);
 
   // Closes the start triangles and numbers vertices in G order. With `verify`, the result
   // is re-encoded and must give exactly the same symbols, events and orders, which makes
   // decoding the exact inverse of traverse() on every input it accepts (O(t log t)).
   // Without `opposite` (only the multi-way predictor reads it) and without `verify`, the
   // opposite table is not built: a tenth of the decoder's work.
-  DecodedConnectivity finish(bool verify = true, bool opposite = true);
+  // With `valence`, DecodedConnectivity::valence is filled in.
+  DecodedConnectivity finish(bool verify = true, bool opposite = true, bool valence = false);
 
  private:
   struct Loop {
+    // On the stack, always the first corner of the triangle that made or last extended
+    // the loop, a multiple of 3: its next and previous corners are gate + 1 and gate + 2.
     int gate;
     int length;  // -1 once a handle event made it unknown
   };
-  [[noreturn]] void fail(const char* why) const;
-  int new_triangle();
-  int new_vertex();
-  int find(int v);
-  void link(int a, int b);
-  Loop& top(const char* op);
-  int incoming_open_edge(int a);
-  void count_triangle(int c);
+  // A provisional vertex: union-find parent, and at a root the decoded triangles around
+  // the set (the valence context) and whether a C has closed it.
+  struct Vertex {
+    int parent;
+    int degree;
+    int closed;
+  };
+  [[noreturn, gnu::cold]] void fail(const char* why) const;
+  // The inner operations, inlined into step() (each was a call of its own).
+  [[gnu::always_inline]] inline int new_triangle();
+  [[gnu::always_inline]] inline int new_vertex(int degree);
+  [[gnu::always_inline]] inline int find(int v);
+  [[gnu::always_inline]] inline int root_at(int corner);
+  [[gnu::always_inline]] inline void link(int a, int b);
+  [[gnu::always_inline]] inline void link_fresh(int fresh, int old);
+  [[gnu::always_inline]] inline Loop& top(const char* op);
+  [[gnu::always_inline]] inline int incoming_open_edge(int a);
+  [[gnu::always_inline]] inline int swing_to_open(int a, int j);
+  [[gnu::always_inline]] inline void set_valence(int left_degree);
   void remember_events(int c);
   // Most symbols are no handle event's source: checked inline before the call.
-  bool event_here() const noexcept { return next_event_ > 0 && events_[next_event_ - 1].source == position_; }
+  bool event_here() const noexcept { return position_ == next_event_source_; }
 
-  void inverse_E();
-  void inverse_L();
-  void inverse_R();
-  void inverse_C();
+  [[gnu::always_inline]] inline void inverse_E();
+  [[gnu::always_inline]] inline void inverse_L();
+  [[gnu::always_inline]] inline void inverse_R();
+  [[gnu::always_inline]] inline void inverse_C();
   void inverse_S();
 
   bool simple_;
@@ -121,14 +155,16 @@ class ReverseDecoder {
   std::size_t position_;  // forward index of the symbol being decoded
   std::vector<HandleEvent> events_;
   std::size_t next_event_;  // events_[0 .. next_event_) not yet reached (walked backwards)
+  std::size_t next_event_source_;  // events_[next_event_ - 1].source, or -1 when none is left
   std::unordered_map<std::uint32_t, int> pending_;  // split symbol -> corner from its event
 
-  GrowingInts V_, O_;
-  std::vector<int> parent_, degree_;  // union-find over provisional vertex ids
-  std::vector<int> closed_at_;        // per C, in decode order: the tip corner that closed it
-  std::vector<char> closed_;          // per root: closed by a C
+  Growing<int> V_, O_;          // corners, three per triangle; O_ is -1 while open
+  std::size_t links_ = 0;       // link() calls: each closes two open corners
+  Growing<Vertex> vertices_;    // provisional vertex ids
+  std::vector<int> closed_at_;  // per C, in decode order: the tip corner that closed it
   std::vector<Loop> loops_;
   Clers decoded_;  // in decode order, for the verification
+  bool keep_symbols_ = true;
   int valence_class_ = 0;
   int previous_ = 0;
   bool last_was_L_ = false;
