@@ -285,7 +285,7 @@ Volume read_volume_source(const Input& in, const VolumeSourceOptions& o) {
   throw bad_input("expected a volume (NIfTI, NRRD, MHA, VTI or a fest frame stream), got {} ({})", format_name(in.format), in.name);
 }
 
-VolumeFrames::VolumeFrames(const Input& in, const VolumeSourceOptions& o) : in_(&in), options_(o) {
+VolumeFrames::VolumeFrames(const Input& in, const VolumeSourceOptions& o) : options_(o) {
   if (!o.raw && is_frame_stream(in.bytes)) {
     stream_ = split_frame_stream(in.bytes, in.name);
     if (stream_.empty()) throw bad_input("empty frame stream ({})", in.name);

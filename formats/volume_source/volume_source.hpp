@@ -81,7 +81,6 @@ class VolumeFrames {
   Volume frame(std::size_t t) const;
 
  private:
-  const Input* in_;
   VolumeSourceOptions options_;
   std::size_t count_ = 1;
   std::vector<StreamFrame> stream_;  // a frame stream's frames (views into the input)
