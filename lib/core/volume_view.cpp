@@ -280,11 +280,25 @@ VolumeView render_volume_view(const Volume& v, const VolumeViewOptions& o) {
       s.title = known ? fmt::format("{} {}", names[fixed], slice_title(fixed, s.at)) : slice_title(fixed, s.at);
       specs.push_back(s);
     } else if (fixed == 2) {
+      // The slices spread over the axial range with content (empty slices above the head
+      // or below the neck waste cells): those where at least 0.5 % of the voxels exceed
+      // a tenth of the window; all slices when none does.
       const std::size_t nz = ax.n[2];
-      const std::size_t count = std::min<std::size_t>(nz, static_cast<std::size_t>(std::max(1, o.montage_slices)));
+      const double level = view.window[0] + 0.1 * (view.window[1] - view.window[0]);
+      std::size_t first = nz, last = 0;
+      for (std::size_t z = 0; z < nz; ++z) {
+        std::size_t above = 0;
+        std::array<std::size_t, 3> c{0, 0, z};
+        for (c[1] = 0; c[1] < ax.n[1]; ++c[1])
+          for (c[0] = 0; c[0] < ax.n[0]; ++c[0]) above += v.voxels[voxel_index(v, ax, c)] > level;
+        if (double(above) >= 0.005 * double(ax.n[0] * ax.n[1])) first = std::min(first, z), last = z;
+      }
+      if (first > last) first = 0, last = nz - 1;
+      const std::size_t range = last - first + 1;
+      const std::size_t count = std::min<std::size_t>(range, static_cast<std::size_t>(std::max(1, o.montage_slices)));
       for (std::size_t t = 0; t < count; ++t) {
         PanelSpec m = s;
-        m.at = std::min(nz - 1, static_cast<std::size_t>((double(t) + 0.5) * double(nz) / double(count)));
+        m.at = first + std::min(range - 1, static_cast<std::size_t>((double(t) + 0.5) * double(range) / double(count)));
         m.title = slice_title(2, m.at);
         specs.push_back(m);
       }

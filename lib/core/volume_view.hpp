@@ -40,7 +40,7 @@ struct VolumeViewOptions {
   // panels are named by voxel axes and the sheet says "orientation unknown".
   bool orientation_known = true;
   double pixel_mm = 0;      // display pixel size; 0 = automatic (the finest voxel spacing, enlarged for small volumes)
-  int montage_slices = 12;  // montage: this many axial slices, evenly spaced
+  int montage_slices = 12;  // montage: this many axial slices, evenly spaced over those with content
   // Slices (not projections): may change the grey colour (0..255 each, R G B) of a pixel
   // showing voxel `index` (index into Volume::voxels) -- label overlays.
   std::function<void(std::size_t index, std::array<double, 3>& rgb)> tint;

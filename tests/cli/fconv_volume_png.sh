@@ -140,14 +140,18 @@ expect_stderr_has "orientation unknown"
 check "no letters" grep -q "left '' right '' top '' bottom ''" "$err"
 check "PNG written" test -s "$WORK/plain.png"
 
-case_ "montage: 12 axial slices; a 4-slice volume gives 4"
+case_ "montage: 12 axial slices over the slices with content; fewer slices, fewer panels"
 make_nrrd "$WORK/thin.nrrd" 30,30,4 "(1,0,0) (0,1,0) (0,0,1)" >/dev/null
-run fconv "$WORK/thin.nrrd" --to png --view montage -v -o "$WORK/thin.png"
+run fconv "$WORK/thin.nrrd" --to png --view montage --window 0,500 -v -o "$WORK/thin.png"
 expect_status 0
 check "4 panels" grep -q ": 4 panels" "$err"
+# 40 x 30 x 20 voxels, background 100 (the window's low end by default): only the block
+# (k > 0.7 * 19, the six top slices 14..19) rises above a tenth of the window.
 make_nrrd "$WORK/block.nrrd" 40,30,20 "(1,0,0) (0,1,0) (0,0,1)" >/dev/null
 run fconv "$WORK/block.nrrd" --to png --view montage -v -o "$WORK/mont.png"
-check "12 panels" grep -q ": 12 panels" "$err"
+check "6 panels, K=14 to K=19" test "$(grep -o "panel 'K=[0-9]*'" "$err" | tr -dc '0-9\n' | paste -sd,)" = "14,15,16,17,18,19"
+run fconv "$WORK/block.nrrd" --to png --view montage --window 0,500 -v -o "$WORK/mont.png"
+check "background above a tenth of 0..500: 12 panels over all 20 slices" grep -q ": 12 panels" "$err"
 
 case_ "scale bar: a round length (1, 2, 5 x 10^n mm) at most 0.3 of the narrowest panel"
 check "scale bar of the montage" python3 - "$err" <<'PY'
