@@ -96,9 +96,9 @@ for conv in neurological radiological; do
   done
 done
 
-case_ "the same volume through NIfTI and MHA keeps the letters"
+case_ "the same volume through NIfTI, MHA and MGH keeps the letters"
 make_nrrd "$WORK/block.nrrd" 24,36,30 "(0,0,-1.5) (-1,0,0) (0,2,0)" >/dev/null
-for to in nii mha; do
+for to in nii mha mgh; do
   "$FEST_BIN/fconv" "$WORK/block.nrrd" -o "$WORK/block.$to"
   run fconv "$WORK/block.$to" --to png --window 0,1000 --view mip -v -o "$WORK/block.png"
   expect_status 0
@@ -139,6 +139,45 @@ expect_status 0
 expect_stderr_has "orientation unknown"
 check "no letters" grep -q "left '' right '' top '' bottom ''" "$err"
 check "PNG written" test -s "$WORK/plain.png"
+
+case_ "VTK image data (no anatomical orientation): drawn in voxel order, aspect from its spacing"
+python3 - "$WORK/grid.vti" <<'PY'
+import sys
+n = (10, 8, 6)
+vals = ' '.join(str(float(i % 7)) for i in range(n[0] * n[1] * n[2]))
+ext = '0 9 0 7 0 5'
+open(sys.argv[1], 'w').write('<?xml version="1.0"?>\n<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">\n'
+    '<ImageData WholeExtent="%s" Origin="0 0 0" Spacing="1 1 2"><Piece Extent="%s"><PointData Scalars="s">'
+    '<DataArray type="Float32" Name="s" format="ascii">%s</DataArray></PointData></Piece></ImageData></VTKFile>\n' % (ext, ext, vals))
+PY
+run fconv "$WORK/grid.vti" --to png -v -o "$WORK/grid.png"
+expect_status 0
+expect_stderr_has "orientation unknown"
+# The I-K panel: 10 voxels of 1 across, 6 of 2 up -> 10 x 12 mm.
+check "J slice 10 x 12 mm" python3 - "$err" <<'PY'
+import re, sys
+log = open(sys.argv[1]).read()
+mm = float(re.search(r"panels, ([0-9.e+-]+) mm per pixel", log).group(1))
+w, h = map(int, re.search(r"panel 'J=\d+' at \d+,\d+ size (\d+)x(\d+)", log).groups())
+sys.exit(not (abs(w * mm - 10) <= mm and abs(h * mm - 12) <= mm))
+PY
+
+case_ "a 4-D series: frame 0 with a warning naming the count, --frame K picks another"
+python3 - "$WORK/series.nrrd" <<'PY'
+import sys
+data = bytes(range(1, 4)) * 0 + b''.join(bytes([10 * (t + 1)]) * 1000 for t in range(3))
+open(sys.argv[1], 'wb').write(b'NRRD0004\ntype: uint8\ndimension: 4\nsizes: 10 10 10 3\nkinds: domain domain domain list\n'
+                             b'space: RAS\nspace directions: (1,0,0) (0,1,0) (0,0,1) none\nencoding: raw\n\n' + data)
+PY
+run fconv "$WORK/series.nrrd" --to png -v -o "$WORK/series.png"
+expect_status 0
+expect_stderr_has "warning: .*3 frames: drawing frame 0"
+expect_stderr_has "window 0 to 10,"
+run fconv "$WORK/series.nrrd" --to png --frame 2 -v -o "$WORK/series2.png"
+expect_status 0
+expect_stderr_has "window 0 to 30,"
+run fconv "$WORK/series.nrrd" --to png --frame 3 -o "$WORK/series3.png"
+check "--frame beyond the last: refused" test "$rc" -ne 0
 
 case_ "montage: 12 axial slices over the slices with content; fewer slices, fewer panels"
 make_nrrd "$WORK/thin.nrrd" 30,30,4 "(1,0,0) (0,1,0) (0,0,1)" >/dev/null
