@@ -115,9 +115,10 @@ run segbrain slices "$P" --labels "$WORK/labels.nii.gz" -o "$WORK/slices.png"
 expect_status 0
 expect_stdout_empty
 # Panels at 1 mm pixels (2 per 2 mm voxel): axial 160x192, coronal 160x160, sagittal
-# 192x160 side by side -> 512 x 192.
-size=$(python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]))' "$WORK/slices.png")
-check "PNG of 512x192 pixels ($size)" test "$size" = 512x192
+# 192x160 side by side -> 512 x 192, plus the margins of the orientation letters and the
+# footer with the scale bar (less than 300 x 150 pixels more).
+size=$(python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%d %d" % struct.unpack(">II", d[16:24]))' "$WORK/slices.png")
+check "PNG of 512x192 pixels plus margins ($size)" python3 -c "import sys; w, h = $(echo "$size" | tr ' ' ,); sys.exit(not (512 < w < 812 and 192 < h < 342))"
 run segbrain slices "$P" --labels "$WORK/aniso_labels.nii.gz" -o "$WORK/bad.png"
 expect_clean_failure 3 segbrain
 check "no PNG written on failure" test ! -e "$WORK/bad.png"

@@ -58,6 +58,16 @@ int convert_command(const ConvertOptions& opt) {
   // other format, so a file asked to become a mesh (or image, ...) that reads only as a
   // table is a damaged or unknown file of the wanted kind -- bad input, not a bad request.
   const Kind in_kind = kind_of(in.format);
+  // A volume (or VTK image data, a frame stream) asked for as an image: a quick look.
+  const bool volume_like = in_kind == Kind::volume || in.format == Format::vti;
+  if (kind_of(out.format) == Kind::image && volume_like) {
+    volume_quick_look(in, out, opt);
+    return 0;
+  }
+  if (opt.view || opt.slice || opt.window)
+    throw usage_error("--view, --slice and --window draw a volume as a picture (--to png); the input is {} {} ({}){}",
+                      article(in_kind), kind_name(in_kind), format_name(in.format),
+                      volume_like ? fmt::format(" and the output {}", format_name(out.format)) : "");
   if (kind_of(out.format) != in_kind && (in_kind == Kind::table || in_kind == Kind::json) &&
       kind_of(out.format) != Kind::table && kind_of(out.format) != Kind::json)
     throw bad_input("{}", with_location(fmt::format("not {} {} file fest reads: no {} format's signature, and the text "

@@ -2,11 +2,13 @@
 // fconv's jobs (docs/fconv.md), each taking its typed options. main.cpp fills these from
 // flags; everything else in this folder is the fest_fconv_app library.
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
 
 #include "core/volume.hpp"
+#include "core/volume_view.hpp"
 #include "formats/detect.hpp"
 #include "formats/mesh/mesh_io.hpp"
 
@@ -30,6 +32,13 @@ struct ConvertOptions {
   int draco_speed = 5;
   formats::CoordinatePrecision precision = formats::CoordinatePrecision::automatic;
   bool drop_unrepresentable = false;
+  // A volume (or VTK image data, frame stream) to an image format: a quick look
+  // (docs/fconv.md "Volume quick look"). view is set only when --view was given.
+  std::optional<VolumeViewKind> view;
+  std::optional<std::array<std::size_t, 3>> slice;
+  std::optional<std::array<double, 2>> window;
+  DisplayConvention convention = DisplayConvention::neurological;
+  bool verbose = false;  // describe the picture's panels on standard error
 };
 
 // Describe a file as JSON (--info).

@@ -18,4 +18,8 @@ std::string convert_mesh(const formats::Input& in, formats::Format to, const Con
 // .hdr/.img pair is two files.
 void convert_volume(const formats::Input& in, const formats::OutputFormat& out, const ConvertOptions& o);
 
+// A volume, VTK image data or frame stream drawn as a picture (o.view, o.slice, o.window,
+// o.convention) and written in the image format `out`.
+void volume_quick_look(const formats::Input& in, const formats::OutputFormat& out, const ConvertOptions& o);
+
 }  // namespace fest::fconv_tool

@@ -3,22 +3,30 @@
 //
 // Flags only: the jobs live in the fest_fconv_app library (cmd_*.cpp).
 
+#include <array>
+#include <cmath>
 #include <cstddef>
+#include <vector>
 #include <string>
 
 #include "cli/cli.hpp"
+#include "cli/enum_option.hpp"
+#include "cli/number_list.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
   using namespace fest::fconv_tool;
   CLI::App app{"Convert a file to another format of the same kind, or describe it (--info).\n"
+               "A volume (NIfTI, NRRD, MHA, MGH, VTI, frame stream) to an image format (--to png) is a quick\n"
+               "look: orthogonal slices, a montage or MIPs with orientation letters and a scale bar.\n"
                "Input is recognised by its content; gzip-compressed input is unpacked.",
                "fconv"};
   fest::cli::Common common;
   fest::cli::add_common(app, common);
   ConvertOptions opt;
-  std::string to, volume_type, precision;
+  std::string to, volume_type, precision, slice_text, window_text;
+  fest::VolumeViewKind view = fest::VolumeViewKind::ortho;
   long frame = -1;
   bool info = false;
   app.add_option("input", opt.input, "Input file, or - for standard input")->default_val("-");
@@ -51,6 +59,21 @@ int main(int argc, char** argv) {
                "Meshes: convert without what fest or the output format cannot hold (other PLY properties "
                "and elements, OBJ per-corner normals/texture coordinates; line or point elements, faces of "
                "fewer than 3 vertices) and count it in a warning, instead of failing");
+  fest::cli::enum_words<fest::VolumeViewKind>(app.add_option("--view", view,
+                                       "Volume to image: ortho (three orthogonal slices), montage (12 axial slices) or mip "
+                                       "(maximum intensity projections along the three axes)")
+                            ->default_str("ortho"),
+                        {{"ortho", fest::VolumeViewKind::ortho},
+                         {"montage", fest::VolumeViewKind::montage},
+                         {"mip", fest::VolumeViewKind::mip}});
+  app.add_option("--slice", slice_text, "Volume to image, ortho: the voxel I,J,K (from 0, the file's voxel order) the slices pass through (default: the centre)");
+  app.add_option("--window", window_text, "Volume to image: grey window LO,HI in voxel values (default: 1st to 99th percentile of the non-zero voxels)");
+  fest::cli::enum_words<fest::DisplayConvention>(app.add_option("--convention", opt.convention,
+                                       "Volume to image: neurological (patient's left on the image's left) or radiological "
+                                       "(patient's right on the left)")
+                            ->default_str("neurological"),
+                        {{"neurological", fest::DisplayConvention::neurological},
+                         {"radiological", fest::DisplayConvention::radiological}});
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See fconv(1), fest-formats(5).");
   return fest::cli::run(app, argc, argv, [&] {
     if (info) return info_command(InfoOptions{opt.input, opt.output});
@@ -62,6 +85,23 @@ int main(int argc, char** argv) {
                                 "uint64, int64, float32, float64)",
                                 volume_type);
       opt.volume_type = t;
+    }
+    opt.verbose = common.verbose;
+    if (app.count("--view") > 0) opt.view = view;
+    if (!slice_text.empty()) {
+      const std::vector<double> ijk = fest::cli::number_list(slice_text, 3, 3, "--slice");
+      std::array<std::size_t, 3> at{};
+      for (int a = 0; a < 3; ++a) {
+        if (ijk[a] < 0 || ijk[a] != std::floor(ijk[a]) || ijk[a] > 1e12)
+          throw fest::usage_error("--slice takes voxel indices I,J,K (whole numbers from 0), not '{}'", slice_text);
+        at[a] = static_cast<std::size_t>(ijk[a]);
+      }
+      opt.slice = at;
+    }
+    if (!window_text.empty()) {
+      const std::vector<double> w = fest::cli::number_list(window_text, 2, 2, "--window");
+      if (!(w[0] < w[1])) throw fest::usage_error("--window LO,HI needs LO < HI, not '{}'", window_text);
+      opt.window = std::array<double, 2>{w[0], w[1]};
     }
     if (frame >= 0) opt.frame = static_cast<std::size_t>(frame);
     if (precision == "float") opt.precision = fest::formats::CoordinatePrecision::float32;

@@ -91,9 +91,10 @@ int main(int argc, char** argv) {
   s->add_option("--seed", syn.phantom.seed, "Random seed")->default_val(1);
 
   SlicesArgs sl;
-  auto* sv = app.add_subcommand("slices", "PNG of three orthogonal slices (axial, coronal, sagittal) with the labels overlaid");
+  auto* sv = app.add_subcommand("slices", "PNG of three orthogonal slices (axial, coronal, sagittal; neurological: the patient's left on the left), "
+                                          "with orientation letters, a scale bar and the labels overlaid when --labels is given");
   sv->add_option("input", sl.input, "The volume that was segmented")->required();
-  sv->add_option("--labels", sl.labels, "Its label volume (from segbrain run)")->required();
+  sv->add_option("--labels", sl.labels, "Its label volume (from segbrain run), overlaid in colour (default: none, plain grey slices)");
   sv->add_option("-o,--output", sl.output, "PNG output (- = stdout)")->default_val("-");
   sv->add_option("--kb", sl.kb, "Knowledge base whose label/4 facts give the colours")->allow_extra_args(false);
   sv->add_option("--scale", sl.scale, "Pixels per smallest voxel size")->default_val(2)->check(fest::cli::range(0.25, 8.0));
