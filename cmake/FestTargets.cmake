@@ -13,12 +13,6 @@ if(FEST_WERROR)
     # code, and every other warning is still an error here.
     list(APPEND FEST_WARNINGS -Wno-error=maybe-uninitialized)
   endif()
-  if((FEST_SANITIZE OR FEST_FUZZ) AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    # Instrumented loops under `#pragma omp simd` (lib/lbm's streaming kernels) cannot be
-    # vectorised, and clang reports the unmet request as -Wpass-failed. It says nothing
-    # about the code; the Release build still vectorises them.
-    list(APPEND FEST_WARNINGS -Wno-pass-failed)
-  endif()
 endif()
 
 if(FEST_FUZZ)
