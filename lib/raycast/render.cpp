@@ -4,12 +4,19 @@
 #include <emmintrin.h>
 #endif
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 #include <limits>
 #include <stdexcept>
 
 #include "core/parallel_for.hpp"
+#include "raycast/exp_neg.hpp"
 
 namespace fest::raycast {
 namespace {
@@ -18,6 +25,7 @@ using volume_pyramid::MinMaxPyramid;
 using volume_pyramid::ScalarGrid;
 
 constexpr int kTile = 16;
+constexpr int kBatch = 8;  // samples scheduled, then computed together (dvr_batched)
 constexpr int kSkipLevels = 4;  // skipping tables: the pyramid's finest level and up to 3 coarser
 
 struct Mat3 {
@@ -36,6 +44,9 @@ Mat3 inverse(const std::array<double, 9>& a) {
            (a[5] * a[6] - a[3] * a[8]) * s, (a[0] * a[8] - a[2] * a[6]) * s, (a[2] * a[3] - a[0] * a[5]) * s,
            (a[3] * a[7] - a[4] * a[6]) * s, (a[1] * a[6] - a[0] * a[7]) * s, (a[0] * a[4] - a[1] * a[3]) * s}};
 }
+
+// Slab-method clipping of the index-space ray o + t d to the sample box [0, dims - 1].
+bool clip_index(const ScalarGrid& g, const Vec3& o, const Vec3& d, double& t0, double& t1);
 
 // Fixed integer hash of a pixel -> [0, 1) (deterministic jitter).
 double pixel_hash(int i, int j, int s) {
@@ -110,16 +121,19 @@ class Caster {
     SurfaceHit hit;
     if (surf_) hit = surf_(ctx_, wr);
     double t0, t1;
-    const bool in_box = clip_to_grid(g_, wr, t0, t1);
+    const Vec3 o = inv_ * (wr.origin - g_.origin), d = inv_ * wr.dir;
+    const bool in_box = clip_index(g_, o, d, t0, t1);  // = clip_to_grid, the inverse computed once
     t0 = std::max(t0, wr.t_min);
     if (in_box) t1 = std::min(t1, hit.t);
     const double dlen = norm(wr.dir);  // world length per unit t
     if (in_box && t1 > t0) {
-      const Vec3 o = inv_ * (wr.origin - g_.origin), d = inv_ * wr.dir;
       const double vox_per_t = dlen / hmin_;
       const double dt = o_.step / vox_per_t;
       switch (o_.mode) {
-        case Mode::dvr: dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st); break;
+        case Mode::dvr:
+          if (!o_.preint && !o_.nearest && (f4_ || !o_.shade)) dvr_batched(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
+          else dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
+          break;
         case Mode::iso: iso(o, d, wr.dir, t0, t1, dt, dlen, out, depth, st); break;
         case Mode::slices: slices(wr, o, d, t0, t1, dlen, out, depth, st); break;
         default: projection(o, d, t0, t1, dt, dlen, out, depth, st); break;
@@ -165,6 +179,55 @@ class Caster {
     const double c11 = b[sz + sy] + e.w[0] * (double(b[sz + sy + sx]) - b[sz + sy]);
     const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
     return c0 + e.w[2] * (c1 - c0);
+  }
+  // Value and index-space gradient of a sample from the shading volume in one pass: the 8
+  // corners {f, fi, fj, fk} are each read once and the four channels interpolated together
+  // by the lerps of trilinear() (two channels per SSE2 register, double precision), so the
+  // value is bit-identical to trilinear()'s and the gradient equal to the corner-weight sum
+  // of gradient() up to rounding (docs/volrender.md "Acceleration").
+  struct Fetched {
+    double f;
+    Vec3 gi;
+  };
+  Fetched fetch(const Cell& e) const {
+    const float* q = f4_ + 4 * e.base;
+    const std::size_t sy = sy4_, sz = sz4_;
+#if defined(__SSE2__)
+    const __m128d wx = _mm_set1_pd(e.w[0]), wy = _mm_set1_pd(e.w[1]), wz = _mm_set1_pd(e.w[2]);
+    const auto lerp = [](__m128d a, __m128d b, __m128d w) { return _mm_add_pd(a, _mm_mul_pd(w, _mm_sub_pd(b, a))); };
+    // one x-edge of the cell: lo = {f, fi}, hi = {fj, fk}, interpolated along x
+    const auto edge = [&](const float* c, __m128d& lo, __m128d& hi) {
+      const __m128 a = _mm_loadu_ps(c), b = _mm_loadu_ps(c + 4);
+      const __m128d alo = _mm_cvtps_pd(a), blo = _mm_cvtps_pd(b);
+      const __m128d ahi = _mm_cvtps_pd(_mm_movehl_ps(a, a)), bhi = _mm_cvtps_pd(_mm_movehl_ps(b, b));
+      lo = lerp(alo, blo, wx), hi = lerp(ahi, bhi, wx);
+    };
+    __m128d l00, h00, l10, h10, l01, h01, l11, h11;
+    edge(q, l00, h00);
+    edge(q + sy, l10, h10);
+    edge(q + sz, l01, h01);
+    edge(q + sz + sy, l11, h11);
+    const __m128d l0 = lerp(l00, l10, wy), h0 = lerp(h00, h10, wy), l1 = lerp(l01, l11, wy), h1 = lerp(h01, h11, wy);
+    const __m128d lo = lerp(l0, l1, wz), hi = lerp(h0, h1, wz);
+    Fetched r;
+    double v[4];
+    _mm_storeu_pd(v, lo);
+    _mm_storeu_pd(v + 2, hi);
+    r.f = v[0], r.gi = {v[1], v[2], v[3]};
+    return r;
+#else
+    double v[4];
+    for (int ch = 0; ch < 4; ++ch) {
+      const float* b = q + ch;
+      const double c00 = b[0] + e.w[0] * (double(b[4]) - b[0]);
+      const double c10 = b[sy] + e.w[0] * (double(b[sy + 4]) - b[sy]);
+      const double c01 = b[sz] + e.w[0] * (double(b[sz + 4]) - b[sz]);
+      const double c11 = b[sz + sy] + e.w[0] * (double(b[sz + sy + 4]) - b[sz + sy]);
+      const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
+      v[ch] = c0 + e.w[2] * (c1 - c0);
+    }
+    return {v[0], {v[1], v[2], v[3]}};
+#endif
   }
   double value(const Vec3& p) const {
     if (o_.nearest) {
@@ -228,7 +291,10 @@ class Caster {
   // l: unit vector towards the head light, -dir/|dir| (one per ray).
   static Vec3 head_light(const Vec3& wdir) { return (-1.0 / norm(wdir)) * wdir; }
   std::array<double, 3> shade(const std::array<double, 3>& c, const Cell& cell, const Vec3& l) const {
-    const Vec3 g = gradient(cell);
+    return shade_with(c, gradient(cell), l);
+  }
+  // Blinn-Phong with the head light for a world-space gradient g.
+  std::array<double, 3> shade_with(const std::array<double, 3>& c, const Vec3& g, const Vec3& l) const {
     const double gl = norm(g);
     if (gl <= gmin_) return c;  // no reliable normal: unshaded
     const Vec3 n = (-1.0 / gl) * g;
@@ -286,6 +352,96 @@ class Caster {
     return static_cast<std::size_t>(std::abs(n - r) < 1e-9 ? r : std::ceil(n));
   }
 
+  // dvr() for trilinear samples without pre-integration, unshaded or shaded from the
+  // shading volume: the same samples and the same arithmetic, in a different order. The
+  // march first schedules up to kBatch samples (the skipping decisions depend on the pyramid
+  // only), then fetches, classifies and shades them in separate loops whose iterations are
+  // independent, then composites them front to back until early termination. A shaded
+  // sample is a chain of ~150 cycles (loads, lerps, exponential, square root, division) but
+  // ~400 instructions, more than the processor's reorder window: one sample at a time, the
+  // chains ran one after the other; in short loops the processor overlaps them. At most
+  // kBatch - 1 samples past a ray's termination are computed and dropped (their stats too).
+  void dvr_batched(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double vox_per_t,
+                   double dlen, double jit, std::array<double, 4>& out, double& depth, RenderStats& st) const {
+    const std::size_t n = segments(t0, t1, dt);
+    double C[3] = {0, 0, 0}, A = 0;
+    const Vec3 light = head_light(wdir);
+    double opaque_until = -std::numeric_limits<double>::infinity();
+    const bool jitter = o_.jitter, shaded = o_.shade;
+    double tm_[kBatch], len_[kBatch], f_[kBatch], alpha_[kBatch];
+    Vec3 p_[kBatch], gi_[kBatch];
+    std::array<double, 3> c_[kBatch];
+    std::size_t skipped_[kBatch];  // samples skipped just before each scheduled one
+    std::size_t k = 0, skipped = 0;
+    double kd = 0;  // double(k), kept exactly (integers) without a conversion per sample
+    for (;;) {
+      int m = 0;
+      for (; m < kBatch && k < n; ++k, kd += 1) {
+        const double ta = t0 + kd * dt, tb = k + 1 == n ? t1 : std::min(t0 + (kd + 1) * dt, t1);
+        if (tb <= ta) continue;
+        const double tm = jitter && (k + 1 < n || tb - ta >= dt) ? ta + jit * dt : 0.5 * (ta + tb);
+        const Vec3 p = o + tm * d;
+        if (!transparent_.empty() && !(tm < opaque_until)) {  // as in dvr()
+          std::size_t b[3];
+          const int L = skippable(p, b);
+          if (L >= 0) {
+            const double te = block_exit(o, d, b, L) - 1e-9 * dt;
+            std::size_t next = k + 1;
+            if (te > tm) {
+              const double kk = std::floor((te - t0) / dt - 0.5);
+              if (kk >= double(k + 1)) next = std::min(n, static_cast<std::size_t>(kk));
+            }
+            skipped += next - k;
+            k = next - 1;
+            kd = static_cast<double>(k);
+            continue;
+          }
+          std::size_t c[3];
+          for (int a = 0; a < 3; ++a) c[a] = std::min(index_of(std::clamp(p[a], 0.0, hi_[a])) >> lf_, bn_[0][a] - 1);
+          opaque_until = block_exit(o, d, c, 0);
+        }
+        tm_[m] = tm, len_[m] = (tb - ta) * vox_per_t, p_[m] = p, skipped_[m] = skipped;
+        skipped = 0;
+        ++m;
+      }
+      if (m == 0) break;
+      if (f4_) {
+        for (int j = 0; j < m; ++j) {
+          const Fetched fv = fetch(locate(p_[j]));
+          f_[j] = fv.f, gi_[j] = fv.gi;
+        }
+      } else {
+        for (int j = 0; j < m; ++j) f_[j] = trilinear(locate(p_[j]));
+      }
+      for (int j = 0; j < m; ++j) {
+        const auto s = tf_.at(f_[j]);
+        // tau = 0 (or NaN): alpha = 1 - exp(-0) = 0 exactly, the sample adds nothing
+        alpha_[j] = 1 - exp_neg(s.tau > 0 ? s.tau * len_[j] : 0.0);
+        c_[j] = s.rgb;
+      }
+      if (shaded)
+        for (int j = 0; j < m; ++j) c_[j] = shade_with(c_[j], inv_t_ * gi_[j], light);
+      for (int j = 0; j < m; ++j) {
+        st.skipped += skipped_[j];
+        ++st.samples;
+        const double alpha = alpha_[j];
+        if (!(alpha > 0)) continue;
+        const double w = (1 - A) * alpha;
+        for (int ch = 0; ch < 3; ++ch) C[ch] += w * c_[j][ch];
+        const double before = A;
+        A += w;
+        if (before < 0.5 && A >= 0.5) depth = tm_[j] * dlen;
+        if (A >= o_.ert) {
+          ++st.terminated;
+          out = {C[0], C[1], C[2], A};
+          return;
+        }
+      }
+    }
+    st.skipped += skipped;
+    out = {C[0], C[1], C[2], A};
+  }
+
   void dvr(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double vox_per_t, double dlen,
            double jit, std::array<double, 4>& out, double& depth, RenderStats& st) const {
     const std::size_t n = segments(t0, t1, dt);
@@ -335,11 +491,11 @@ class Caster {
         prev_v = vb, have_prev = true;
         if (std::abs(vb - vf) < 1e-6 * range_) {
           const auto s = tf_.at(0.5 * (vf + vb));
-          alpha = 1 - std::exp(-s.tau * len);
+          alpha = 1 - exp_neg(s.tau * len);
           c = s.rgb;
         } else {
           const double dT = tf_.integral_tau(vb) - tf_.integral_tau(vf);
-          alpha = 1 - std::exp(-len / (vb - vf) * dT);
+          alpha = 1 - exp_neg(len / (vb - vf) * dT);
           const auto Kb = tf_.integral_tau_color(vb), Kf = tf_.integral_tau_color(vf);
           if (std::abs(dT) > 0)
             for (int ch = 0; ch < 3; ++ch) c[ch] = (Kb[ch] - Kf[ch]) / dT;
@@ -351,7 +507,7 @@ class Caster {
       } else if (o_.nearest) {
         const auto s = tf_.at(value(p));
         if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
-        alpha = 1 - std::exp(-s.tau * len);
+        alpha = 1 - exp_neg(s.tau * len);
         c = s.rgb;
         if (alpha <= 0) continue;
         if (o_.shade) c = shade(c, locate(p), light);
@@ -359,7 +515,7 @@ class Caster {
         const Cell e = locate(p);
         const auto s = tf_.at(trilinear(e));
         if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
-        alpha = 1 - std::exp(-s.tau * len);
+        alpha = 1 - exp_neg(s.tau * len);
         c = s.rgb;
         if (alpha <= 0) continue;
         if (o_.shade) c = shade(c, e, light);
@@ -572,11 +728,28 @@ class Caster {
 
 }  // namespace
 
+void ShadingVolume::Free::operator()(float* p) const noexcept { std::free(p); }
+
+namespace {
+// n floats on 2 MiB boundaries with MADV_HUGEPAGE (where the kernel offers transparent huge
+// pages on request); plain pages elsewhere. Throws std::bad_alloc.
+float* huge_page_floats(std::size_t n) {
+  constexpr std::size_t kHuge = std::size_t{1} << 21;
+  const std::size_t bytes = (n * sizeof(float) + kHuge - 1) / kHuge * kHuge;
+  void* p = std::aligned_alloc(kHuge, bytes);
+  if (!p) throw std::bad_alloc();
+#if defined(MADV_HUGEPAGE)
+  madvise(p, bytes, MADV_HUGEPAGE);  // advice only: failure leaves ordinary pages
+#endif
+  return static_cast<float*>(p);
+}
+}  // namespace
+
 ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
   ShadingVolume sv;
   const auto& d = g.dims;
   sv.samples = g.size();
-  sv.data.reset(new float[4 * sv.samples]);
+  sv.data.reset(huge_page_floats(4 * sv.samples));
   float* data = sv.data.get();
   const std::size_t sy = d[0], sz = d[0] * d[1];
   parallel_for(d[2], threads, [&](std::size_t k) {
@@ -620,7 +793,11 @@ double sample_trilinear(const ScalarGrid& g, double x, double y, double z) {
 
 bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
   const Mat3 inv = inverse(g.axes);
-  const Vec3 o = inv * (wr.origin - g.origin), d = inv * wr.dir;
+  return clip_index(g, inv * (wr.origin - g.origin), inv * wr.dir, t0, t1);
+}
+
+namespace {
+bool clip_index(const ScalarGrid& g, const Vec3& o, const Vec3& d, double& t0, double& t1) {
   t0 = -std::numeric_limits<double>::infinity();
   t1 = std::numeric_limits<double>::infinity();
   for (int a = 0; a < 3; ++a) {
@@ -636,6 +813,7 @@ bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
   }
   return t0 <= t1;
 }
+}  // namespace
 
 RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const TransferFunction& tf, const Camera& cam,
                      const RenderOptions& o, SurfaceTracer surface, const void* ctx, const ShadingVolume* shading) {
