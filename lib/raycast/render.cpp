@@ -14,6 +14,7 @@
 #include <new>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/parallel_for.hpp"
 #include "raycast/exp_neg.hpp"
@@ -108,6 +109,7 @@ class Caster {
     if (o.shade && o.gradient_cache) {
       if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
       f4_ = sv->data.get();
+      i16_ = sv->data16.get();
       sy4_ = 4 * g.dims[0], sz4_ = sy4_ * g.dims[1];
     }
   }
@@ -131,7 +133,7 @@ class Caster {
       const double dt = o_.step / vox_per_t;
       switch (o_.mode) {
         case Mode::dvr:
-          if (!o_.preint && !o_.nearest && (f4_ || !o_.shade)) dvr_batched(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
+          if (!o_.preint && !o_.nearest && (f4_ || i16_ || !o_.shade)) dvr_batched(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
           else dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
           break;
         case Mode::iso: iso(o, d, wr.dir, t0, t1, dt, dlen, out, depth, st); break;
@@ -190,16 +192,30 @@ class Caster {
     Vec3 gi;
   };
   Fetched fetch(const Cell& e) const {
-    const float* q = f4_ + 4 * e.base;
+    return i16_ ? fetch_from(i16_ + 4 * e.base, e) : fetch_from(f4_ + 4 * e.base, e);
+  }
+  // T = float: {f, fi, fj, fk}; T = int16: {f, 2 fi, 2 fj, 2 fk}, halved at the end (exact:
+  // the lerps commute with a factor 2).
+  template <typename T>
+  Fetched fetch_from(const T* q, const Cell& e) const {
     const std::size_t sy = sy4_, sz = sz4_;
 #if defined(__SSE2__)
     const __m128d wx = _mm_set1_pd(e.w[0]), wy = _mm_set1_pd(e.w[1]), wz = _mm_set1_pd(e.w[2]);
     const auto lerp = [](__m128d a, __m128d b, __m128d w) { return _mm_add_pd(a, _mm_mul_pd(w, _mm_sub_pd(b, a))); };
     // one x-edge of the cell: lo = {f, fi}, hi = {fj, fk}, interpolated along x
-    const auto edge = [&](const float* c, __m128d& lo, __m128d& hi) {
-      const __m128 a = _mm_loadu_ps(c), b = _mm_loadu_ps(c + 4);
-      const __m128d alo = _mm_cvtps_pd(a), blo = _mm_cvtps_pd(b);
-      const __m128d ahi = _mm_cvtps_pd(_mm_movehl_ps(a, a)), bhi = _mm_cvtps_pd(_mm_movehl_ps(b, b));
+    const auto edge = [&](const T* c, __m128d& lo, __m128d& hi) {
+      __m128d alo, ahi, blo, bhi;
+      if constexpr (std::is_same_v<T, float>) {
+        const __m128 a = _mm_loadu_ps(c), b = _mm_loadu_ps(c + 4);
+        alo = _mm_cvtps_pd(a), blo = _mm_cvtps_pd(b);
+        ahi = _mm_cvtps_pd(_mm_movehl_ps(a, a)), bhi = _mm_cvtps_pd(_mm_movehl_ps(b, b));
+      } else {
+        const __m128i ab = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c));  // both corners
+        const __m128i a = _mm_srai_epi32(_mm_unpacklo_epi16(ab, ab), 16), b = _mm_srai_epi32(_mm_unpackhi_epi16(ab, ab), 16);
+        alo = _mm_cvtepi32_pd(a), blo = _mm_cvtepi32_pd(b);
+        ahi = _mm_cvtepi32_pd(_mm_shuffle_epi32(a, _MM_SHUFFLE(1, 0, 3, 2)));
+        bhi = _mm_cvtepi32_pd(_mm_shuffle_epi32(b, _MM_SHUFFLE(1, 0, 3, 2)));
+      }
       lo = lerp(alo, blo, wx), hi = lerp(ahi, bhi, wx);
     };
     __m128d l00, h00, l10, h10, l01, h01, l11, h11;
@@ -209,16 +225,13 @@ class Caster {
     edge(q + sz + sy, l11, h11);
     const __m128d l0 = lerp(l00, l10, wy), h0 = lerp(h00, h10, wy), l1 = lerp(l01, l11, wy), h1 = lerp(h01, h11, wy);
     const __m128d lo = lerp(l0, l1, wz), hi = lerp(h0, h1, wz);
-    Fetched r;
     double v[4];
     _mm_storeu_pd(v, lo);
     _mm_storeu_pd(v + 2, hi);
-    r.f = v[0], r.gi = {v[1], v[2], v[3]};
-    return r;
 #else
     double v[4];
     for (int ch = 0; ch < 4; ++ch) {
-      const float* b = q + ch;
+      const T* b = q + ch;
       const double c00 = b[0] + e.w[0] * (double(b[4]) - b[0]);
       const double c10 = b[sy] + e.w[0] * (double(b[sy + 4]) - b[sy]);
       const double c01 = b[sz] + e.w[0] * (double(b[sz + 4]) - b[sz]);
@@ -226,8 +239,9 @@ class Caster {
       const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
       v[ch] = c0 + e.w[2] * (c1 - c0);
     }
-    return {v[0], {v[1], v[2], v[3]}};
 #endif
+    if constexpr (std::is_same_v<T, float>) return {v[0], {v[1], v[2], v[3]}};
+    else return {v[0], {0.5 * v[1], 0.5 * v[2], 0.5 * v[3]}};
   }
   double value(const Vec3& p) const {
     if (o_.nearest) {
@@ -244,6 +258,18 @@ class Caster {
   Vec3 gradient(const Cell& e) const {
     const double* w = e.w;
     Vec3 gi{0, 0, 0};
+    if (i16_) {  // the corner-weight sum below, of the doubled differences, halved (exact)
+      const std::size_t sy = sy4_, sz = sz4_;
+      const std::size_t offset[8] = {0, 4, sy, sy + 4, sz, sz + 4, sz + sy, sz + sy + 4};
+      const double x0 = 1 - w[0], y0 = 1 - w[1], z0 = 1 - w[2];
+      const double xy[4] = {x0 * y0, w[0] * y0, x0 * w[1], w[0] * w[1]};
+      const std::int16_t* q = i16_ + 4 * e.base;
+      for (int corner = 0; corner < 8; ++corner) {
+        const double wt = xy[corner & 3] * (corner & 4 ? w[2] : z0);
+        for (int a = 0; a < 3; ++a) gi[a] += wt * q[offset[corner] + 1 + a];
+      }
+      return inv_t_ * (0.5 * gi);
+    }
     if (f4_) {
       const std::size_t sy = sy4_, sz = sz4_;
       const std::size_t offset[8] = {0, 4, sy, sy + 4, sz, sz + 4, sz + sy, sz + sy + 4};
@@ -305,8 +331,7 @@ class Caster {
     if (spec_int_ >= 0) {  // integer exponent: by squaring (std::pow dominated the shaded sample)
       spec = 1;
       double b = diff;
-      for (int x = spec_int_; x; x >>= 1, b *= b)
-        if (x & 1) spec *= b;
+      for (int x = spec_int_; x; x >>= 1, b *= b) spec *= x & 1 ? b : 1.0;  // x 1.0 is exact: no branch
     } else {
       spec = std::pow(diff, o_.phong[3]);
     }
@@ -346,6 +371,21 @@ class Caster {
     return t;
   }
 
+  // block_exit() with the reciprocal direction (0 where d = 0) computed once per ray: a
+  // product instead of a division per axis and node. The exit may differ from
+  // block_exit()'s in the last bit; the callers' 1e-9 step margin covers that, and a sample
+  // computed that could have been skipped changes nothing.
+  double block_exit_inv(const Vec3& o, const double inv_d[3], const std::size_t b[3], int L) const {
+    const std::size_t size = std::size_t{1} << (lf_ + L);
+    double t = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      if (inv_d[a] == 0) continue;
+      const double lo = double(b[a] * size), hi = double(std::min((b[a] + 1) * size, g_.dims[a] - 1));
+      t = std::min(t, ((inv_d[a] > 0 ? hi : lo) - o[a]) * inv_d[a]);
+    }
+    return t;
+  }
+
   std::size_t segments(double t0, double t1, double dt) const {
     const double n = (t1 - t0) / dt;
     const double r = std::round(n);
@@ -368,12 +408,14 @@ class Caster {
     const Vec3 light = head_light(wdir);
     double opaque_until = -std::numeric_limits<double>::infinity();
     const bool jitter = o_.jitter, shaded = o_.shade;
-    double tm_[kBatch], len_[kBatch], f_[kBatch], alpha_[kBatch];
+    double tm_[kBatch], len_[kBatch], f_[kBatch], tau_[kBatch], alpha_[kBatch];
     Vec3 p_[kBatch], gi_[kBatch];
     std::array<double, 3> c_[kBatch];
     std::size_t skipped_[kBatch];  // samples skipped just before each scheduled one
     std::size_t k = 0, skipped = 0;
     double kd = 0;  // double(k), kept exactly (integers) without a conversion per sample
+    const double inv_d[3] = {d[0] != 0 ? 1 / d[0] : 0.0, d[1] != 0 ? 1 / d[1] : 0.0, d[2] != 0 ? 1 / d[2] : 0.0};
+    const double inv_dt = 1 / dt;
     for (;;) {
       int m = 0;
       for (; m < kBatch && k < n; ++k, kd += 1) {
@@ -381,14 +423,14 @@ class Caster {
         if (tb <= ta) continue;
         const double tm = jitter && (k + 1 < n || tb - ta >= dt) ? ta + jit * dt : 0.5 * (ta + tb);
         const Vec3 p = o + tm * d;
-        if (!transparent_.empty() && !(tm < opaque_until)) {  // as in dvr()
+        if (!transparent_.empty() && !(tm < opaque_until)) {  // as in dvr(), products for quotients
           std::size_t b[3];
           const int L = skippable(p, b);
           if (L >= 0) {
-            const double te = block_exit(o, d, b, L) - 1e-9 * dt;
+            const double te = block_exit_inv(o, inv_d, b, L) - 1e-9 * dt;
             std::size_t next = k + 1;
             if (te > tm) {
-              const double kk = std::floor((te - t0) / dt - 0.5);
+              const double kk = std::floor((te - t0) * inv_dt - 0.5);
               if (kk >= double(k + 1)) next = std::min(n, static_cast<std::size_t>(kk));
             }
             skipped += next - k;
@@ -398,14 +440,14 @@ class Caster {
           }
           std::size_t c[3];
           for (int a = 0; a < 3; ++a) c[a] = std::min(index_of(std::clamp(p[a], 0.0, hi_[a])) >> lf_, bn_[0][a] - 1);
-          opaque_until = block_exit(o, d, c, 0);
+          opaque_until = block_exit_inv(o, inv_d, c, 0);
         }
         tm_[m] = tm, len_[m] = (tb - ta) * vox_per_t, p_[m] = p, skipped_[m] = skipped;
         skipped = 0;
         ++m;
       }
       if (m == 0) break;
-      if (f4_) {
+      if (f4_ || i16_) {
         for (int j = 0; j < m; ++j) {
           const Fetched fv = fetch(locate(p_[j]));
           f_[j] = fv.f, gi_[j] = fv.gi;
@@ -413,14 +455,23 @@ class Caster {
       } else {
         for (int j = 0; j < m; ++j) f_[j] = trilinear(locate(p_[j]));
       }
+      // classification; the samples with tau > 0 (not NaN) listed, the others add nothing
+      int visible[kBatch], nv = 0;
       for (int j = 0; j < m; ++j) {
         const auto s = tf_.at(f_[j]);
-        // tau = 0 (or NaN): alpha = 1 - exp(-0) = 0 exactly, the sample adds nothing
-        alpha_[j] = 1 - exp_neg(s.tau > 0 ? s.tau * len_[j] : 0.0);
-        c_[j] = s.rgb;
+        tau_[j] = s.tau, c_[j] = s.rgb, alpha_[j] = 0;
+        visible[nv] = j;
+        nv += s.tau > 0;
+      }
+      for (int q = 0; q < nv; ++q) {
+        const int j = visible[q];
+        alpha_[j] = 1 - exp_neg(tau_[j] * len_[j]);
       }
       if (shaded)
-        for (int j = 0; j < m; ++j) c_[j] = shade_with(c_[j], inv_t_ * gi_[j], light);
+        for (int q = 0; q < nv; ++q) {
+          const int j = visible[q];
+          c_[j] = shade_with(c_[j], inv_t_ * gi_[j], light);
+        }
       for (int j = 0; j < m; ++j) {
         st.skipped += skipped_[j];
         ++st.samples;
@@ -721,52 +772,86 @@ class Caster {
   int skip_levels_ = 0;
   std::vector<std::array<std::size_t, 3>> bn_;      // their nodes per axis
   ShadingVolume own_;                               // built here when the caller gave none
-  const float* f4_ = nullptr;                       // {f, grad f} per sample (bricked), or null
+  const std::int16_t* i16_ = nullptr;               // {f, 2 grad f} per sample as int16, or null
+  const float* f4_ = nullptr;                       // {f, grad f} per sample as floats, or null
   std::size_t sy4_ = 0, sz4_ = 0;                  // its strides in floats along y and z
   int spec_int_ = -1;
 };
 
 }  // namespace
 
-void ShadingVolume::Free::operator()(float* p) const noexcept { std::free(p); }
-
 namespace {
-// n floats on 2 MiB boundaries with MADV_HUGEPAGE (where the kernel offers transparent huge
-// pages on request); plain pages elsewhere. Throws std::bad_alloc.
-float* huge_page_floats(std::size_t n) {
+// n elements of T on 2 MiB boundaries with MADV_HUGEPAGE (where the kernel offers
+// transparent huge pages on request); plain pages elsewhere. Throws std::bad_alloc.
+template <typename T>
+T* huge_page_array(std::size_t n) {
   constexpr std::size_t kHuge = std::size_t{1} << 21;
-  const std::size_t bytes = (n * sizeof(float) + kHuge - 1) / kHuge * kHuge;
+  const std::size_t bytes = (n * sizeof(T) + kHuge - 1) / kHuge * kHuge;
   void* p = std::aligned_alloc(kHuge, bytes);
   if (!p) throw std::bad_alloc();
 #if defined(MADV_HUGEPAGE)
   madvise(p, bytes, MADV_HUGEPAGE);  // advice only: failure leaves ordinary pages
 #endif
-  return static_cast<float*>(p);
+  return static_cast<T*>(p);
 }
+
+// Central differences, one-sided at the border: (f[up] - f[down]) / (up - down), for every
+// sample of one x row: out(i, f, 2 fi, 2 fj, 2 fk) with the doubled differences as doubles
+// (exact: they are differences of floats, times 1 or 2).
+template <typename Out>
+void difference_row(const ScalarGrid& g, std::size_t j, std::size_t k, const Out& out) {
+  const auto& d = g.dims;
+  const std::size_t sy = d[0], sz = d[0] * d[1];
+  const float* f = &g.values[g.index(0, j, k)];
+  const std::ptrdiff_t dy0 = j > 0 ? -std::ptrdiff_t(sy) : 0, dy1 = j + 1 < d[1] ? std::ptrdiff_t(sy) : 0;
+  const std::ptrdiff_t dz0 = k > 0 ? -std::ptrdiff_t(sz) : 0, dz1 = k + 1 < d[2] ? std::ptrdiff_t(sz) : 0;
+  const double hy = double((dy1 - dy0) / std::ptrdiff_t(sy)), hz = double((dz1 - dz0) / std::ptrdiff_t(sz));
+  for (std::size_t i = 0; i < d[0]; ++i) {
+    const std::ptrdiff_t x = std::ptrdiff_t(i), dx0 = i > 0 ? -1 : 0, dx1 = i + 1 < d[0] ? 1 : 0;
+    out(i, f[i], (double(f[x + dx1]) - f[x + dx0]) / double(dx1 - dx0), (double(f[x + dy1]) - f[x + dy0]) / hy,
+        (double(f[x + dz1]) - f[x + dz0]) / hz);
+  }
+}
+
+bool fits_int16(double v) { return v == std::floor(v) && v >= -32768.0 && v <= 32767.0; }
 }  // namespace
 
 ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
   ShadingVolume sv;
   const auto& d = g.dims;
   sv.samples = g.size();
-  sv.data.reset(huge_page_floats(4 * sv.samples));
+  // exact as int16: integer samples whose doubled differences are integers in range too
+  std::vector<char> exact(d[2], 1);
+  parallel_for(d[2], threads, [&](std::size_t k) {
+    for (std::size_t j = 0; j < d[1] && exact[k]; ++j)
+      difference_row(g, j, k, [&](std::size_t, float f, double gi, double gj, double gk) {
+        if (!(fits_int16(f) && fits_int16(2 * gi) && fits_int16(2 * gj) && fits_int16(2 * gk))) exact[k] = 0;
+      });
+  });
+  if (std::all_of(exact.begin(), exact.end(), [](char e) { return e != 0; })) {
+    sv.data16.reset(huge_page_array<std::int16_t>(4 * sv.samples));
+    std::int16_t* data = sv.data16.get();
+    parallel_for(d[2], threads, [&](std::size_t k) {
+      for (std::size_t j = 0; j < d[1]; ++j) {
+        std::int16_t* out = data + 4 * g.index(0, j, k);
+        difference_row(g, j, k, [&](std::size_t i, float f, double gi, double gj, double gk) {
+          std::int16_t* o = out + 4 * i;
+          o[0] = static_cast<std::int16_t>(f), o[1] = static_cast<std::int16_t>(2 * gi);
+          o[2] = static_cast<std::int16_t>(2 * gj), o[3] = static_cast<std::int16_t>(2 * gk);
+        });
+      }
+    });
+    return sv;
+  }
+  sv.data.reset(huge_page_array<float>(4 * sv.samples));
   float* data = sv.data.get();
-  const std::size_t sy = d[0], sz = d[0] * d[1];
   parallel_for(d[2], threads, [&](std::size_t k) {
     for (std::size_t j = 0; j < d[1]; ++j) {
-      const float* f = &g.values[g.index(0, j, k)];
       float* out = data + 4 * g.index(0, j, k);
-      // central differences, one-sided at the border: (f[up] - f[down]) / (up - down)
-      const std::ptrdiff_t dy0 = j > 0 ? -std::ptrdiff_t(sy) : 0, dy1 = j + 1 < d[1] ? std::ptrdiff_t(sy) : 0;
-      const std::ptrdiff_t dz0 = k > 0 ? -std::ptrdiff_t(sz) : 0, dz1 = k + 1 < d[2] ? std::ptrdiff_t(sz) : 0;
-      const double hy = double((dy1 - dy0) / std::ptrdiff_t(sy)), hz = double((dz1 - dz0) / std::ptrdiff_t(sz));
-      for (std::size_t i = 0; i < d[0]; ++i, out += 4) {
-        const std::ptrdiff_t dx0 = i > 0 ? -1 : 0, dx1 = i + 1 < d[0] ? 1 : 0;
-        out[0] = f[i];
-        out[1] = static_cast<float>((double(f[std::ptrdiff_t(i) + dx1]) - f[std::ptrdiff_t(i) + dx0]) / double(dx1 - dx0));
-        out[2] = static_cast<float>((double(f[std::ptrdiff_t(i) + dy1]) - f[std::ptrdiff_t(i) + dy0]) / hy);
-        out[3] = static_cast<float>((double(f[std::ptrdiff_t(i) + dz1]) - f[std::ptrdiff_t(i) + dz0]) / hz);
-      }
+      difference_row(g, j, k, [&](std::size_t i, float f, double gi, double gj, double gk) {
+        float* o = out + 4 * i;
+        o[0] = f, o[1] = static_cast<float>(gi), o[2] = static_cast<float>(gj), o[3] = static_cast<float>(gk);
+      });
     }
   });
   return sv;
