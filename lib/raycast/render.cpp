@@ -103,8 +103,34 @@ class Caster {
         bn_.push_back(n);
       }
       skip_levels_ = static_cast<int>(transparent_.size());
+      // Dense nodes: every finest node inside is not skippable, so the march may compute
+      // every sample inside without looking again (dvr_batched: one node exit per dense
+      // region instead of one per finest node; the same samples are computed).
+      for (int L = 0; L < skip_levels_; ++L) {
+        const auto& n = bn_[L];
+        std::vector<char> t(n[0] * n[1] * n[2]);
+        if (L == 0) {
+          for (std::size_t q = 0; q < t.size(); ++q) t[q] = !transparent_[0][q];
+        } else {
+          const auto& c = bn_[L - 1];
+          const auto& child = dense_[L - 1];
+          for (std::size_t k = 0; k < n[2]; ++k)
+            for (std::size_t j = 0; j < n[1]; ++j)
+              for (std::size_t i = 0; i < n[0]; ++i) {
+                bool all = true;
+                for (std::size_t dk = 0; dk < 2; ++dk)
+                  for (std::size_t dj = 0; dj < 2; ++dj)
+                    for (std::size_t di = 0; di < 2; ++di) {
+                      const std::size_t ci = 2 * i + di, cj = 2 * j + dj, ck = 2 * k + dk;
+                      if (ci < c[0] && cj < c[1] && ck < c[2]) all = all && child[ci + c[0] * (cj + c[1] * ck)];
+                    }
+                t[i + n[0] * (j + n[1] * k)] = all;
+              }
+        }
+        dense_.push_back(std::move(t));
+      }
       for (int L = 0; L < skip_levels_; ++L)
-        skip_[L] = {transparent_[L].data(), bn_[L][0], bn_[L][1], {bn_[L][0] - 1, bn_[L][1] - 1, bn_[L][2] - 1}, lf_ + L};
+        skip_[L] = {transparent_[L].data(), dense_[L].data(), bn_[L][0], bn_[L][1], {bn_[L][0] - 1, bn_[L][1] - 1, bn_[L][2] - 1}, lf_ + L};
     }
     if (o.shade && o.gradient_cache) {
       if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
@@ -359,6 +385,27 @@ class Caster {
     return found;
   }
 
+  // skippable() that also classifies the other case: returns true and the coarsest
+  // skippable node (level L, node b) when the finest node of p is skippable; else false and
+  // the coarsest dense node around p (level 0 at least: the finest node itself).
+  bool classify(const Vec3& p, int& L, std::size_t b[3]) const {
+    std::size_t c[3];
+    for (int a = 0; a < 3; ++a) c[a] = index_of(std::clamp(p[a], 0.0, hi_[a]));
+    const auto node = [&](int l, std::size_t q[3]) {
+      for (int a = 0; a < 3; ++a) q[a] = std::min(c[a] >> skip_[l].shift, skip_[l].last[a]);
+      return q[0] + skip_[l].n0 * (q[1] + skip_[l].n1 * q[2]);
+    };
+    const bool skip = skip_[0].table[node(0, b)];
+    const char* SkipLevel::*table = skip ? &SkipLevel::table : &SkipLevel::dense;
+    L = 0;
+    for (int l = 1; l < skip_levels_; ++l) {
+      std::size_t q[3];
+      if (!(skip_[l].*table)[node(l, q)]) break;
+      L = l, b[0] = q[0], b[1] = q[1], b[2] = q[2];
+    }
+    return skip;
+  }
+
   // Ray parameter where the ray leaves the closed box of node b of skipping level L.
   double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3], int L) const {
     const std::size_t size = std::size_t{1} << (lf_ + L);
@@ -425,8 +472,8 @@ class Caster {
         const Vec3 p = o + tm * d;
         if (!transparent_.empty() && !(tm < opaque_until)) {  // as in dvr(), products for quotients
           std::size_t b[3];
-          const int L = skippable(p, b);
-          if (L >= 0) {
+          int L;
+          if (classify(p, L, b)) {
             const double te = block_exit_inv(o, inv_d, b, L) - 1e-9 * dt;
             std::size_t next = k + 1;
             if (te > tm) {
@@ -438,9 +485,7 @@ class Caster {
             kd = static_cast<double>(k);
             continue;
           }
-          std::size_t c[3];
-          for (int a = 0; a < 3; ++a) c[a] = std::min(index_of(std::clamp(p[a], 0.0, hi_[a])) >> lf_, bn_[0][a] - 1);
-          opaque_until = block_exit_inv(o, inv_d, c, 0);
+          opaque_until = block_exit_inv(o, inv_d, b, L);  // the dense node's exit
         }
         tm_[m] = tm, len_[m] = (tb - ta) * vox_per_t, p_[m] = p, skipped_[m] = skipped;
         skipped = 0;
@@ -763,8 +808,10 @@ class Caster {
   double hi_[3] = {0, 0, 0};                        // dims - 1 (the sample box)
   std::size_t cmax_[3] = {0, 0, 0};                 // dims - 2 (the last cell)
   std::vector<std::vector<char>> transparent_;      // skipping tables, finest level first
+  std::vector<std::vector<char>> dense_;            // nodes with no skippable finest node, likewise
   struct SkipLevel {
     const char* table;
+    const char* dense;
     std::size_t n0, n1, last[3];
     int shift;
   };
