@@ -27,7 +27,7 @@ using volume_pyramid::ScalarGrid;
 
 constexpr int kTile = 16;
 constexpr int kBatch = 8;  // samples scheduled, then computed together (dvr_batched)
-constexpr int kSkipLevels = 4;  // skipping tables: the pyramid's finest level and up to 3 coarser
+constexpr int kSkipLevels = 6;  // skipping tables: the pyramid's finest level and up to 5 coarser
 
 struct Mat3 {
   double m[9];
@@ -65,6 +65,8 @@ class Caster {
     double hmin = std::numeric_limits<double>::infinity();
     for (int c = 0; c < 3; ++c) hmin = std::min(hmin, std::sqrt(g.axes[c] * g.axes[c] + g.axes[3 + c] * g.axes[3 + c] + g.axes[6 + c] * g.axes[6 + c]));
     hmin_ = hmin;
+    const double* m = inv_t_.m;
+    diagonal_ = m[1] == 0 && m[2] == 0 && m[3] == 0 && m[5] == 0 && m[6] == 0 && m[7] == 0;
     if (o.phong[3] >= 0 && o.phong[3] <= 1024 && o.phong[3] == std::floor(o.phong[3])) spec_int_ = static_cast<int>(o.phong[3]);
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
     if (p && p->root_level() >= p->finest_level()) {  // the root node holds every sample
@@ -340,6 +342,13 @@ class Caster {
     return inv_t_ * gi;  // grad_world = A^-T grad_index
   }
 
+  // grad_world = A^-T grad_index; for axis-aligned grids the diagonal alone (the products
+  // with the zero entries add only zeros: the same numbers)
+  Vec3 to_world(const Vec3& gi) const {
+    if (diagonal_) return {inv_t_.m[0] * gi[0], inv_t_.m[4] * gi[1], inv_t_.m[8] * gi[2]};
+    return inv_t_ * gi;
+  }
+
   // l: unit vector towards the head light, -dir/|dir| (one per ray).
   static Vec3 head_light(const Vec3& wdir) { return (-1.0 / norm(wdir)) * wdir; }
   std::array<double, 3> shade(const std::array<double, 3>& c, const Cell& cell, const Vec3& l) const {
@@ -515,7 +524,7 @@ class Caster {
       if (shaded)
         for (int q = 0; q < nv; ++q) {
           const int j = visible[q];
-          c_[j] = shade_with(c_[j], inv_t_ * gi_[j], light);
+          c_[j] = shade_with(c_[j], to_world(gi_[j]), light);
         }
       for (int j = 0; j < m; ++j) {
         st.skipped += skipped_[j];
@@ -803,6 +812,7 @@ class Caster {
   SurfaceTracer surf_;
   const void* ctx_;
   Mat3 inv_, inv_t_;
+  bool diagonal_ = false;                           // inv_t_ has zeros off the diagonal
   double hmin_ = 1, range_ = 1, gmin_ = 0, ka_ = 0, kd_ = 0, ks_ = 0;
   int lf_ = 3;                                      // the pyramid's finest level
   double hi_[3] = {0, 0, 0};                        // dims - 1 (the sample box)
