@@ -881,21 +881,29 @@ void difference_row(const ScalarGrid& g, std::size_t j, std::size_t k, const Out
   }
 }
 
-bool fits_int16(double v) { return v == std::floor(v) && v >= -32768.0 && v <= 32767.0; }
+bool fits_int16(double v) { return v >= -32768.0 && v <= 32767.0 && v == double(static_cast<int>(v)); }
 }  // namespace
 
 ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
   ShadingVolume sv;
   const auto& d = g.dims;
   sv.samples = g.size();
-  // exact as int16: integer samples whose doubled differences are integers in range too
+  // exact as int16: integer samples in [lo, hi] with 2 (hi - lo) <= 32767, so that every
+  // doubled difference (|f+ - f-| or 2 |f+ - f| at the border) fits too
   std::vector<char> exact(d[2], 1);
+  std::vector<float> lo(d[2], 0), hi(d[2], 0);
   parallel_for(d[2], threads, [&](std::size_t k) {
-    for (std::size_t j = 0; j < d[1] && exact[k]; ++j)
-      difference_row(g, j, k, [&](std::size_t, float f, double gi, double gj, double gk) {
-        if (!(fits_int16(f) && fits_int16(2 * gi) && fits_int16(2 * gj) && fits_int16(2 * gk))) exact[k] = 0;
-      });
+    const float* f = &g.values[g.index(0, 0, k)];
+    float l = f[0], h = f[0];
+    bool ok = true;
+    for (std::size_t q = 0; q < d[0] * d[1]; ++q) {
+      ok = ok && fits_int16(f[q]);
+      l = std::min(l, f[q]), h = std::max(h, f[q]);
+    }
+    exact[k] = ok, lo[k] = l, hi[k] = h;
   });
+  const float all_lo = *std::min_element(lo.begin(), lo.end()), all_hi = *std::max_element(hi.begin(), hi.end());
+  if (2 * (double(all_hi) - all_lo) > 32767) std::fill(exact.begin(), exact.end(), 0);
   if (std::all_of(exact.begin(), exact.end(), [](char e) { return e != 0; })) {
     sv.data16.reset(huge_page_array<std::int16_t>(4 * sv.samples));
     std::int16_t* data = sv.data16.get();

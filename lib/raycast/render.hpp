@@ -90,6 +90,7 @@ struct ShadingVolume {
   std::unique_ptr<float[], Free> data;            // 4 floats per sample, x fastest
   std::unique_ptr<std::int16_t[], Free> data16;   // 4 int16 per sample, x fastest
   std::size_t samples = 0;
+  bool built() const noexcept { return data || data16; }
 };
 ShadingVolume shading_volume(const volume_pyramid::ScalarGrid& grid, int threads);
 
