@@ -5,7 +5,8 @@
 // integral covers [t_entry, t_exit] whatever the step. Front-to-back emission-absorption
 // with opacity correction, optional Blinn-Phong shading and pre-integration; MIP, MinIP,
 // average; shaded semi-transparent isosurfaces. Empty-space skipping over the min-max
-// pyramid's 8^3 blocks and early ray termination never change a pixel's bytes.
+// pyramid's nodes (its finest level and up to 5 coarser) and early ray termination never
+// change a pixel's bytes.
 
 #include <array>
 #include <cmath>
