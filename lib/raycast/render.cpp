@@ -4,12 +4,20 @@
 #include <emmintrin.h>
 #endif
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/parallel_for.hpp"
+#include "raycast/exp_neg.hpp"
 
 namespace fest::raycast {
 namespace {
@@ -18,7 +26,8 @@ using volume_pyramid::MinMaxPyramid;
 using volume_pyramid::ScalarGrid;
 
 constexpr int kTile = 16;
-constexpr int kSkipLevels = 4;  // skipping tables: the pyramid's finest level and up to 3 coarser
+constexpr int kBatch = 8;  // samples scheduled, then computed together (dvr_batched)
+constexpr int kSkipLevels = 6;  // skipping tables: the pyramid's finest level and up to 5 coarser
 
 struct Mat3 {
   double m[9];
@@ -37,6 +46,17 @@ Mat3 inverse(const std::array<double, 9>& a) {
            (a[3] * a[7] - a[4] * a[6]) * s, (a[1] * a[6] - a[0] * a[7]) * s, (a[0] * a[4] - a[1] * a[3]) * s}};
 }
 
+// Slab-method clipping of the index-space ray o + t d to the sample box [0, dims - 1].
+bool clip_index(const ScalarGrid& g, const Vec3& o, const Vec3& d, double& t0, double& t1);
+
+// std::floor without a library call where SSE4.1's rounding is not available (exact: a
+// truncation corrected by one below zero, |x| < 2^52).
+inline double floor_of(double x) {
+  if (!(std::abs(x) < 4503599627370496.0)) return std::floor(x);
+  const double t = static_cast<double>(static_cast<std::int64_t>(x));
+  return t > x ? t - 1 : t;
+}
+
 // Fixed integer hash of a pixel -> [0, 1) (deterministic jitter).
 double pixel_hash(int i, int j, int s) {
   std::uint32_t h = static_cast<std::uint32_t>(i) * 73856093u ^ static_cast<std::uint32_t>(j) * 19349663u ^
@@ -53,6 +73,8 @@ class Caster {
     double hmin = std::numeric_limits<double>::infinity();
     for (int c = 0; c < 3; ++c) hmin = std::min(hmin, std::sqrt(g.axes[c] * g.axes[c] + g.axes[3 + c] * g.axes[3 + c] + g.axes[6 + c] * g.axes[6 + c]));
     hmin_ = hmin;
+    const double* m = inv_t_.m;
+    diagonal_ = m[1] == 0 && m[2] == 0 && m[3] == 0 && m[5] == 0 && m[6] == 0 && m[7] == 0;
     if (o.phong[3] >= 0 && o.phong[3] <= 1024 && o.phong[3] == std::floor(o.phong[3])) spec_int_ = static_cast<int>(o.phong[3]);
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
     if (p && p->root_level() >= p->finest_level()) {  // the root node holds every sample
@@ -91,12 +113,39 @@ class Caster {
         bn_.push_back(n);
       }
       skip_levels_ = static_cast<int>(transparent_.size());
+      // Dense nodes: every finest node inside is not skippable, so the march may compute
+      // every sample inside without looking again (dvr_batched: one node exit per dense
+      // region instead of one per finest node; the same samples are computed).
+      for (int L = 0; L < skip_levels_; ++L) {
+        const auto& n = bn_[L];
+        std::vector<char> t(n[0] * n[1] * n[2]);
+        if (L == 0) {
+          for (std::size_t q = 0; q < t.size(); ++q) t[q] = !transparent_[0][q];
+        } else {
+          const auto& c = bn_[L - 1];
+          const auto& child = dense_[L - 1];
+          for (std::size_t k = 0; k < n[2]; ++k)
+            for (std::size_t j = 0; j < n[1]; ++j)
+              for (std::size_t i = 0; i < n[0]; ++i) {
+                bool all = true;
+                for (std::size_t dk = 0; dk < 2; ++dk)
+                  for (std::size_t dj = 0; dj < 2; ++dj)
+                    for (std::size_t di = 0; di < 2; ++di) {
+                      const std::size_t ci = 2 * i + di, cj = 2 * j + dj, ck = 2 * k + dk;
+                      if (ci < c[0] && cj < c[1] && ck < c[2]) all = all && child[ci + c[0] * (cj + c[1] * ck)];
+                    }
+                t[i + n[0] * (j + n[1] * k)] = all;
+              }
+        }
+        dense_.push_back(std::move(t));
+      }
       for (int L = 0; L < skip_levels_; ++L)
-        skip_[L] = {transparent_[L].data(), bn_[L][0], bn_[L][1], {bn_[L][0] - 1, bn_[L][1] - 1, bn_[L][2] - 1}, lf_ + L};
+        skip_[L] = {transparent_[L].data(), dense_[L].data(), bn_[L][0], bn_[L][1], {bn_[L][0] - 1, bn_[L][1] - 1, bn_[L][2] - 1}, lf_ + L};
     }
     if (o.shade && o.gradient_cache) {
       if (!sv) own_ = shading_volume(g, o.threads), sv = &own_;
       f4_ = sv->data.get();
+      i16_ = sv->data16.get();
       sy4_ = 4 * g.dims[0], sz4_ = sy4_ * g.dims[1];
     }
   }
@@ -110,16 +159,19 @@ class Caster {
     SurfaceHit hit;
     if (surf_) hit = surf_(ctx_, wr);
     double t0, t1;
-    const bool in_box = clip_to_grid(g_, wr, t0, t1);
+    const Vec3 o = inv_ * (wr.origin - g_.origin), d = inv_ * wr.dir;
+    const bool in_box = clip_index(g_, o, d, t0, t1);  // = clip_to_grid, the inverse computed once
     t0 = std::max(t0, wr.t_min);
     if (in_box) t1 = std::min(t1, hit.t);
     const double dlen = norm(wr.dir);  // world length per unit t
     if (in_box && t1 > t0) {
-      const Vec3 o = inv_ * (wr.origin - g_.origin), d = inv_ * wr.dir;
       const double vox_per_t = dlen / hmin_;
       const double dt = o_.step / vox_per_t;
       switch (o_.mode) {
-        case Mode::dvr: dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st); break;
+        case Mode::dvr:
+          if (!o_.preint && !o_.nearest && (f4_ || i16_ || !o_.shade)) dvr_batched(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
+          else dvr(o, d, wr.dir, t0, t1, dt, vox_per_t, dlen, jit, out, depth, st);
+          break;
         case Mode::iso: iso(o, d, wr.dir, t0, t1, dt, dlen, out, depth, st); break;
         case Mode::slices: slices(wr, o, d, t0, t1, dlen, out, depth, st); break;
         default: projection(o, d, t0, t1, dt, dlen, out, depth, st); break;
@@ -166,6 +218,67 @@ class Caster {
     const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
     return c0 + e.w[2] * (c1 - c0);
   }
+  // Value and index-space gradient of a sample from the shading volume in one pass: the 8
+  // corners {f, fi, fj, fk} are each read once and the four channels interpolated together
+  // by the lerps of trilinear() (two channels per SSE2 register, double precision), so the
+  // value is bit-identical to trilinear()'s and the gradient equal to the corner-weight sum
+  // of gradient() up to rounding (docs/volrender.md "Acceleration").
+  struct Fetched {
+    double f;
+    Vec3 gi;
+  };
+  Fetched fetch(const Cell& e) const {
+    return i16_ ? fetch_from(i16_ + 4 * e.base, e) : fetch_from(f4_ + 4 * e.base, e);
+  }
+  // T = float: {f, fi, fj, fk}; T = int16: {f, 2 fi, 2 fj, 2 fk}, halved at the end (exact:
+  // the lerps commute with a factor 2).
+  template <typename T>
+  Fetched fetch_from(const T* q, const Cell& e) const {
+    const std::size_t sy = sy4_, sz = sz4_;
+#if defined(__SSE2__)
+    const __m128d wx = _mm_set1_pd(e.w[0]), wy = _mm_set1_pd(e.w[1]), wz = _mm_set1_pd(e.w[2]);
+    const auto lerp = [](__m128d a, __m128d b, __m128d w) { return _mm_add_pd(a, _mm_mul_pd(w, _mm_sub_pd(b, a))); };
+    // one x-edge of the cell: lo = {f, fi}, hi = {fj, fk}, interpolated along x
+    const auto edge = [&](const T* c, __m128d& lo, __m128d& hi) {
+      __m128d alo, ahi, blo, bhi;
+      if constexpr (std::is_same_v<T, float>) {
+        const __m128 a = _mm_loadu_ps(c), b = _mm_loadu_ps(c + 4);
+        alo = _mm_cvtps_pd(a), blo = _mm_cvtps_pd(b);
+        ahi = _mm_cvtps_pd(_mm_movehl_ps(a, a)), bhi = _mm_cvtps_pd(_mm_movehl_ps(b, b));
+      } else {
+        const __m128i ab = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c));  // both corners
+        const __m128i a = _mm_srai_epi32(_mm_unpacklo_epi16(ab, ab), 16), b = _mm_srai_epi32(_mm_unpackhi_epi16(ab, ab), 16);
+        alo = _mm_cvtepi32_pd(a), blo = _mm_cvtepi32_pd(b);
+        ahi = _mm_cvtepi32_pd(_mm_shuffle_epi32(a, _MM_SHUFFLE(1, 0, 3, 2)));
+        bhi = _mm_cvtepi32_pd(_mm_shuffle_epi32(b, _MM_SHUFFLE(1, 0, 3, 2)));
+      }
+      lo = lerp(alo, blo, wx), hi = lerp(ahi, bhi, wx);
+    };
+    __m128d l00, h00, l10, h10, l01, h01, l11, h11;
+    edge(q, l00, h00);
+    edge(q + sy, l10, h10);
+    edge(q + sz, l01, h01);
+    edge(q + sz + sy, l11, h11);
+    const __m128d l0 = lerp(l00, l10, wy), h0 = lerp(h00, h10, wy), l1 = lerp(l01, l11, wy), h1 = lerp(h01, h11, wy);
+    const __m128d lo = lerp(l0, l1, wz), hi = lerp(h0, h1, wz);
+    double v[4];
+    _mm_storeu_pd(v, lo);
+    _mm_storeu_pd(v + 2, hi);
+#else
+    double v[4];
+    for (int ch = 0; ch < 4; ++ch) {
+      const T* b = q + ch;
+      const double c00 = b[0] + e.w[0] * (double(b[4]) - b[0]);
+      const double c10 = b[sy] + e.w[0] * (double(b[sy + 4]) - b[sy]);
+      const double c01 = b[sz] + e.w[0] * (double(b[sz + 4]) - b[sz]);
+      const double c11 = b[sz + sy] + e.w[0] * (double(b[sz + sy + 4]) - b[sz + sy]);
+      const double c0 = c00 + e.w[1] * (c10 - c00), c1 = c01 + e.w[1] * (c11 - c01);
+      v[ch] = c0 + e.w[2] * (c1 - c0);
+    }
+#endif
+    if constexpr (std::is_same_v<T, float>) return {v[0], {v[1], v[2], v[3]}};
+    else return {v[0], {0.5 * v[1], 0.5 * v[2], 0.5 * v[3]}};
+  }
   double value(const Vec3& p) const {
     if (o_.nearest) {
       auto idx = [&](double x, int a) {
@@ -181,6 +294,18 @@ class Caster {
   Vec3 gradient(const Cell& e) const {
     const double* w = e.w;
     Vec3 gi{0, 0, 0};
+    if (i16_) {  // the corner-weight sum below, of the doubled differences, halved (exact)
+      const std::size_t sy = sy4_, sz = sz4_;
+      const std::size_t offset[8] = {0, 4, sy, sy + 4, sz, sz + 4, sz + sy, sz + sy + 4};
+      const double x0 = 1 - w[0], y0 = 1 - w[1], z0 = 1 - w[2];
+      const double xy[4] = {x0 * y0, w[0] * y0, x0 * w[1], w[0] * w[1]};
+      const std::int16_t* q = i16_ + 4 * e.base;
+      for (int corner = 0; corner < 8; ++corner) {
+        const double wt = xy[corner & 3] * (corner & 4 ? w[2] : z0);
+        for (int a = 0; a < 3; ++a) gi[a] += wt * q[offset[corner] + 1 + a];
+      }
+      return inv_t_ * (0.5 * gi);
+    }
     if (f4_) {
       const std::size_t sy = sy4_, sz = sz4_;
       const std::size_t offset[8] = {0, 4, sy, sy + 4, sz, sz + 4, sz + sy, sz + sy + 4};
@@ -225,10 +350,20 @@ class Caster {
     return inv_t_ * gi;  // grad_world = A^-T grad_index
   }
 
+  // grad_world = A^-T grad_index; for axis-aligned grids the diagonal alone (the products
+  // with the zero entries add only zeros: the same numbers)
+  Vec3 to_world(const Vec3& gi) const {
+    if (diagonal_) return {inv_t_.m[0] * gi[0], inv_t_.m[4] * gi[1], inv_t_.m[8] * gi[2]};
+    return inv_t_ * gi;
+  }
+
   // l: unit vector towards the head light, -dir/|dir| (one per ray).
   static Vec3 head_light(const Vec3& wdir) { return (-1.0 / norm(wdir)) * wdir; }
   std::array<double, 3> shade(const std::array<double, 3>& c, const Cell& cell, const Vec3& l) const {
-    const Vec3 g = gradient(cell);
+    return shade_with(c, gradient(cell), l);
+  }
+  // Blinn-Phong with the head light for a world-space gradient g.
+  std::array<double, 3> shade_with(const std::array<double, 3>& c, const Vec3& g, const Vec3& l) const {
     const double gl = norm(g);
     if (gl <= gmin_) return c;  // no reliable normal: unshaded
     const Vec3 n = (-1.0 / gl) * g;
@@ -236,11 +371,13 @@ class Caster {
     if (o_.two_sided) nl = std::abs(nl);
     const double diff = std::max(0.0, nl);
     double spec;
-    if (spec_int_ >= 0) {  // integer exponent: by squaring (std::pow dominated the shaded sample)
+    if (spec_int_ == 20) {  // the default exponent: the loop below unrolled, the same products
+      const double b2 = diff * diff, b4 = b2 * b2, b8 = b4 * b4;
+      spec = b4 * (b8 * b8);
+    } else if (spec_int_ >= 0) {  // integer exponent: by squaring (std::pow dominated the shaded sample)
       spec = 1;
       double b = diff;
-      for (int x = spec_int_; x; x >>= 1, b *= b)
-        if (x & 1) spec *= b;
+      for (int x = spec_int_; x; x >>= 1, b *= b) spec *= x & 1 ? b : 1.0;  // x 1.0 is exact: no branch
     } else {
       spec = std::pow(diff, o_.phong[3]);
     }
@@ -268,6 +405,27 @@ class Caster {
     return found;
   }
 
+  // skippable() that also classifies the other case: returns true and the coarsest
+  // skippable node (level L, node b) when the finest node of p is skippable; else false and
+  // the coarsest dense node around p (level 0 at least: the finest node itself).
+  bool classify(const Vec3& p, int& L, std::size_t b[3]) const {
+    std::size_t c[3];
+    for (int a = 0; a < 3; ++a) c[a] = index_of(std::clamp(p[a], 0.0, hi_[a]));
+    const auto node = [&](int l, std::size_t q[3]) {
+      for (int a = 0; a < 3; ++a) q[a] = std::min(c[a] >> skip_[l].shift, skip_[l].last[a]);
+      return q[0] + skip_[l].n0 * (q[1] + skip_[l].n1 * q[2]);
+    };
+    const bool skip = skip_[0].table[node(0, b)];
+    const char* SkipLevel::*table = skip ? &SkipLevel::table : &SkipLevel::dense;
+    L = 0;
+    for (int l = 1; l < skip_levels_; ++l) {
+      std::size_t q[3];
+      if (!(skip_[l].*table)[node(l, q)]) break;
+      L = l, b[0] = q[0], b[1] = q[1], b[2] = q[2];
+    }
+    return skip;
+  }
+
   // Ray parameter where the ray leaves the closed box of node b of skipping level L.
   double block_exit(const Vec3& o, const Vec3& d, const std::size_t b[3], int L) const {
     const std::size_t size = std::size_t{1} << (lf_ + L);
@@ -280,10 +438,124 @@ class Caster {
     return t;
   }
 
+  // block_exit() with the reciprocal direction (0 where d = 0) computed once per ray: a
+  // product instead of a division per axis and node. The exit may differ from
+  // block_exit()'s in the last bit; the callers' 1e-9 step margin covers that, and a sample
+  // computed that could have been skipped changes nothing.
+  double block_exit_inv(const Vec3& o, const double inv_d[3], const std::size_t b[3], int L) const {
+    const std::size_t size = std::size_t{1} << (lf_ + L);
+    double t = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      if (inv_d[a] == 0) continue;
+      const double lo = double(b[a] * size), hi = double(std::min((b[a] + 1) * size, g_.dims[a] - 1));
+      t = std::min(t, ((inv_d[a] > 0 ? hi : lo) - o[a]) * inv_d[a]);
+    }
+    return t;
+  }
+
   std::size_t segments(double t0, double t1, double dt) const {
     const double n = (t1 - t0) / dt;
     const double r = std::round(n);
     return static_cast<std::size_t>(std::abs(n - r) < 1e-9 ? r : std::ceil(n));
+  }
+
+  // dvr() for trilinear samples without pre-integration, unshaded or shaded from the
+  // shading volume: the same samples and the same arithmetic, in a different order. The
+  // march first schedules up to kBatch samples (the skipping decisions depend on the pyramid
+  // only), then fetches, classifies and shades them in separate loops whose iterations are
+  // independent, then composites them front to back until early termination. A shaded
+  // sample is a chain of ~150 cycles (loads, lerps, exponential, square root, division) but
+  // ~400 instructions, more than the processor's reorder window: one sample at a time, the
+  // chains ran one after the other; in short loops the processor overlaps them. At most
+  // kBatch - 1 samples past a ray's termination are computed and dropped (their stats too).
+  void dvr_batched(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double vox_per_t,
+                   double dlen, double jit, std::array<double, 4>& out, double& depth, RenderStats& st) const {
+    const std::size_t n = segments(t0, t1, dt);
+    double C[3] = {0, 0, 0}, A = 0;
+    const Vec3 light = head_light(wdir);
+    double opaque_until = -std::numeric_limits<double>::infinity();
+    const bool jitter = o_.jitter, shaded = o_.shade;
+    double tm_[kBatch], len_[kBatch], f_[kBatch], tau_[kBatch], alpha_[kBatch];
+    Vec3 p_[kBatch], gi_[kBatch];
+    std::array<double, 3> c_[kBatch];
+    std::size_t skipped_[kBatch];  // samples skipped just before each scheduled one
+    std::size_t k = 0, skipped = 0;
+    double kd = 0;  // double(k), kept exactly (integers) without a conversion per sample
+    const double inv_d[3] = {d[0] != 0 ? 1 / d[0] : 0.0, d[1] != 0 ? 1 / d[1] : 0.0, d[2] != 0 ? 1 / d[2] : 0.0};
+    const double inv_dt = 1 / dt;
+    for (;;) {
+      int m = 0;
+      for (; m < kBatch && k < n; ++k, kd += 1) {
+        const double ta = t0 + kd * dt, tb = k + 1 == n ? t1 : std::min(t0 + (kd + 1) * dt, t1);
+        if (tb <= ta) continue;
+        const double tm = jitter && (k + 1 < n || tb - ta >= dt) ? ta + jit * dt : 0.5 * (ta + tb);
+        const Vec3 p = o + tm * d;
+        if (!transparent_.empty() && !(tm < opaque_until)) {  // as in dvr(), products for quotients
+          std::size_t b[3];
+          int L;
+          if (classify(p, L, b)) {
+            const double te = block_exit_inv(o, inv_d, b, L) - 1e-9 * dt;
+            std::size_t next = k + 1;
+            if (te > tm) {
+              const double kk = floor_of((te - t0) * inv_dt - 0.5);
+              if (kk >= double(k + 1)) next = std::min(n, static_cast<std::size_t>(kk));
+            }
+            skipped += next - k;
+            k = next - 1;
+            kd = static_cast<double>(k);
+            continue;
+          }
+          opaque_until = block_exit_inv(o, inv_d, b, L);  // the dense node's exit
+        }
+        tm_[m] = tm, len_[m] = (tb - ta) * vox_per_t, p_[m] = p, skipped_[m] = skipped;
+        skipped = 0;
+        ++m;
+      }
+      if (m == 0) break;
+      if (f4_ || i16_) {
+        for (int j = 0; j < m; ++j) {
+          const Fetched fv = fetch(locate(p_[j]));
+          f_[j] = fv.f, gi_[j] = fv.gi;
+        }
+      } else {
+        for (int j = 0; j < m; ++j) f_[j] = trilinear(locate(p_[j]));
+      }
+      // classification; the samples with tau > 0 (not NaN) listed, the others add nothing
+      int visible[kBatch], nv = 0;
+      for (int j = 0; j < m; ++j) {
+        const auto s = tf_.at(f_[j]);
+        tau_[j] = s.tau, c_[j] = s.rgb, alpha_[j] = 0;
+        visible[nv] = j;
+        nv += s.tau > 0;
+      }
+      for (int q = 0; q < nv; ++q) {
+        const int j = visible[q];
+        alpha_[j] = 1 - exp_neg(tau_[j] * len_[j]);
+      }
+      if (shaded)
+        for (int q = 0; q < nv; ++q) {
+          const int j = visible[q];
+          c_[j] = shade_with(c_[j], to_world(gi_[j]), light);
+        }
+      for (int j = 0; j < m; ++j) {
+        st.skipped += skipped_[j];
+        ++st.samples;
+        const double alpha = alpha_[j];
+        if (!(alpha > 0)) continue;
+        const double w = (1 - A) * alpha;
+        for (int ch = 0; ch < 3; ++ch) C[ch] += w * c_[j][ch];
+        const double before = A;
+        A += w;
+        if (before < 0.5 && A >= 0.5) depth = tm_[j] * dlen;
+        if (A >= o_.ert) {
+          ++st.terminated;
+          out = {C[0], C[1], C[2], A};
+          return;
+        }
+      }
+    }
+    st.skipped += skipped;
+    out = {C[0], C[1], C[2], A};
   }
 
   void dvr(const Vec3& o, const Vec3& d, const Vec3& wdir, double t0, double t1, double dt, double vox_per_t, double dlen,
@@ -335,11 +607,11 @@ class Caster {
         prev_v = vb, have_prev = true;
         if (std::abs(vb - vf) < 1e-6 * range_) {
           const auto s = tf_.at(0.5 * (vf + vb));
-          alpha = 1 - std::exp(-s.tau * len);
+          alpha = 1 - exp_neg(s.tau * len);
           c = s.rgb;
         } else {
           const double dT = tf_.integral_tau(vb) - tf_.integral_tau(vf);
-          alpha = 1 - std::exp(-len / (vb - vf) * dT);
+          alpha = 1 - exp_neg(len / (vb - vf) * dT);
           const auto Kb = tf_.integral_tau_color(vb), Kf = tf_.integral_tau_color(vf);
           if (std::abs(dT) > 0)
             for (int ch = 0; ch < 3; ++ch) c[ch] = (Kb[ch] - Kf[ch]) / dT;
@@ -351,7 +623,7 @@ class Caster {
       } else if (o_.nearest) {
         const auto s = tf_.at(value(p));
         if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
-        alpha = 1 - std::exp(-s.tau * len);
+        alpha = 1 - exp_neg(s.tau * len);
         c = s.rgb;
         if (alpha <= 0) continue;
         if (o_.shade) c = shade(c, locate(p), light);
@@ -359,7 +631,7 @@ class Caster {
         const Cell e = locate(p);
         const auto s = tf_.at(trilinear(e));
         if (!(s.tau > 0)) continue;  // alpha = 1 - exp(-0) = 0
-        alpha = 1 - std::exp(-s.tau * len);
+        alpha = 1 - exp_neg(s.tau * len);
         c = s.rgb;
         if (alpha <= 0) continue;
         if (o_.shade) c = shade(c, e, light);
@@ -551,13 +823,16 @@ class Caster {
   SurfaceTracer surf_;
   const void* ctx_;
   Mat3 inv_, inv_t_;
+  bool diagonal_ = false;                           // inv_t_ has zeros off the diagonal
   double hmin_ = 1, range_ = 1, gmin_ = 0, ka_ = 0, kd_ = 0, ks_ = 0;
   int lf_ = 3;                                      // the pyramid's finest level
   double hi_[3] = {0, 0, 0};                        // dims - 1 (the sample box)
   std::size_t cmax_[3] = {0, 0, 0};                 // dims - 2 (the last cell)
   std::vector<std::vector<char>> transparent_;      // skipping tables, finest level first
+  std::vector<std::vector<char>> dense_;            // nodes with no skippable finest node, likewise
   struct SkipLevel {
     const char* table;
+    const char* dense;
     std::size_t n0, n1, last[3];
     int shift;
   };
@@ -565,35 +840,94 @@ class Caster {
   int skip_levels_ = 0;
   std::vector<std::array<std::size_t, 3>> bn_;      // their nodes per axis
   ShadingVolume own_;                               // built here when the caller gave none
-  const float* f4_ = nullptr;                       // {f, grad f} per sample (bricked), or null
+  const std::int16_t* i16_ = nullptr;               // {f, 2 grad f} per sample as int16, or null
+  const float* f4_ = nullptr;                       // {f, grad f} per sample as floats, or null
   std::size_t sy4_ = 0, sz4_ = 0;                  // its strides in floats along y and z
   int spec_int_ = -1;
 };
 
 }  // namespace
 
+namespace {
+// n elements of T on 2 MiB boundaries with MADV_HUGEPAGE (where the kernel offers
+// transparent huge pages on request); plain pages elsewhere. Throws std::bad_alloc.
+template <typename T>
+T* huge_page_array(std::size_t n) {
+  constexpr std::size_t kHuge = std::size_t{1} << 21;
+  const std::size_t bytes = (n * sizeof(T) + kHuge - 1) / kHuge * kHuge;
+  void* p = std::aligned_alloc(kHuge, bytes);
+  if (!p) throw std::bad_alloc();
+#if defined(MADV_HUGEPAGE)
+  madvise(p, bytes, MADV_HUGEPAGE);  // advice only: failure leaves ordinary pages
+#endif
+  return static_cast<T*>(p);
+}
+
+// Central differences, one-sided at the border: (f[up] - f[down]) / (up - down), for every
+// sample of one x row: out(i, f, 2 fi, 2 fj, 2 fk) with the doubled differences as doubles
+// (exact: they are differences of floats, times 1 or 2).
+template <typename Out>
+void difference_row(const ScalarGrid& g, std::size_t j, std::size_t k, const Out& out) {
+  const auto& d = g.dims;
+  const std::size_t sy = d[0], sz = d[0] * d[1];
+  const float* f = &g.values[g.index(0, j, k)];
+  const std::ptrdiff_t dy0 = j > 0 ? -std::ptrdiff_t(sy) : 0, dy1 = j + 1 < d[1] ? std::ptrdiff_t(sy) : 0;
+  const std::ptrdiff_t dz0 = k > 0 ? -std::ptrdiff_t(sz) : 0, dz1 = k + 1 < d[2] ? std::ptrdiff_t(sz) : 0;
+  const double hy = double((dy1 - dy0) / std::ptrdiff_t(sy)), hz = double((dz1 - dz0) / std::ptrdiff_t(sz));
+  for (std::size_t i = 0; i < d[0]; ++i) {
+    const std::ptrdiff_t x = std::ptrdiff_t(i), dx0 = i > 0 ? -1 : 0, dx1 = i + 1 < d[0] ? 1 : 0;
+    out(i, f[i], (double(f[x + dx1]) - f[x + dx0]) / double(dx1 - dx0), (double(f[x + dy1]) - f[x + dy0]) / hy,
+        (double(f[x + dz1]) - f[x + dz0]) / hz);
+  }
+}
+
+bool fits_int16(double v) { return v >= -32768.0 && v <= 32767.0 && v == double(static_cast<int>(v)); }
+}  // namespace
+
 ShadingVolume shading_volume(const ScalarGrid& g, int threads) {
   ShadingVolume sv;
   const auto& d = g.dims;
   sv.samples = g.size();
-  sv.data.reset(new float[4 * sv.samples]);
+  // exact as int16: integer samples in [lo, hi] with 2 (hi - lo) <= 32767, so that every
+  // doubled difference (|f+ - f-| or 2 |f+ - f| at the border) fits too
+  std::vector<char> exact(d[2], 1);
+  std::vector<float> lo(d[2], 0), hi(d[2], 0);
+  parallel_for(d[2], threads, [&](std::size_t k) {
+    const float* f = &g.values[g.index(0, 0, k)];
+    float l = f[0], h = f[0];
+    bool ok = true;
+    for (std::size_t q = 0; q < d[0] * d[1]; ++q) {
+      ok = ok && fits_int16(f[q]);
+      l = std::min(l, f[q]), h = std::max(h, f[q]);
+    }
+    exact[k] = ok, lo[k] = l, hi[k] = h;
+  });
+  const float all_lo = *std::min_element(lo.begin(), lo.end()), all_hi = *std::max_element(hi.begin(), hi.end());
+  if (2 * (double(all_hi) - all_lo) > 32767) std::fill(exact.begin(), exact.end(), 0);
+  if (std::all_of(exact.begin(), exact.end(), [](char e) { return e != 0; })) {
+    sv.data16.reset(huge_page_array<std::int16_t>(4 * sv.samples));
+    std::int16_t* data = sv.data16.get();
+    parallel_for(d[2], threads, [&](std::size_t k) {
+      for (std::size_t j = 0; j < d[1]; ++j) {
+        std::int16_t* out = data + 4 * g.index(0, j, k);
+        difference_row(g, j, k, [&](std::size_t i, float f, double gi, double gj, double gk) {
+          std::int16_t* o = out + 4 * i;
+          o[0] = static_cast<std::int16_t>(f), o[1] = static_cast<std::int16_t>(2 * gi);
+          o[2] = static_cast<std::int16_t>(2 * gj), o[3] = static_cast<std::int16_t>(2 * gk);
+        });
+      }
+    });
+    return sv;
+  }
+  sv.data.reset(huge_page_array<float>(4 * sv.samples));
   float* data = sv.data.get();
-  const std::size_t sy = d[0], sz = d[0] * d[1];
   parallel_for(d[2], threads, [&](std::size_t k) {
     for (std::size_t j = 0; j < d[1]; ++j) {
-      const float* f = &g.values[g.index(0, j, k)];
       float* out = data + 4 * g.index(0, j, k);
-      // central differences, one-sided at the border: (f[up] - f[down]) / (up - down)
-      const std::ptrdiff_t dy0 = j > 0 ? -std::ptrdiff_t(sy) : 0, dy1 = j + 1 < d[1] ? std::ptrdiff_t(sy) : 0;
-      const std::ptrdiff_t dz0 = k > 0 ? -std::ptrdiff_t(sz) : 0, dz1 = k + 1 < d[2] ? std::ptrdiff_t(sz) : 0;
-      const double hy = double((dy1 - dy0) / std::ptrdiff_t(sy)), hz = double((dz1 - dz0) / std::ptrdiff_t(sz));
-      for (std::size_t i = 0; i < d[0]; ++i, out += 4) {
-        const std::ptrdiff_t dx0 = i > 0 ? -1 : 0, dx1 = i + 1 < d[0] ? 1 : 0;
-        out[0] = f[i];
-        out[1] = static_cast<float>((double(f[std::ptrdiff_t(i) + dx1]) - f[std::ptrdiff_t(i) + dx0]) / double(dx1 - dx0));
-        out[2] = static_cast<float>((double(f[std::ptrdiff_t(i) + dy1]) - f[std::ptrdiff_t(i) + dy0]) / hy);
-        out[3] = static_cast<float>((double(f[std::ptrdiff_t(i) + dz1]) - f[std::ptrdiff_t(i) + dz0]) / hz);
-      }
+      difference_row(g, j, k, [&](std::size_t i, float f, double gi, double gj, double gk) {
+        float* o = out + 4 * i;
+        o[0] = f, o[1] = static_cast<float>(gi), o[2] = static_cast<float>(gj), o[3] = static_cast<float>(gk);
+      });
     }
   });
   return sv;
@@ -620,7 +954,11 @@ double sample_trilinear(const ScalarGrid& g, double x, double y, double z) {
 
 bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
   const Mat3 inv = inverse(g.axes);
-  const Vec3 o = inv * (wr.origin - g.origin), d = inv * wr.dir;
+  return clip_index(g, inv * (wr.origin - g.origin), inv * wr.dir, t0, t1);
+}
+
+namespace {
+bool clip_index(const ScalarGrid& g, const Vec3& o, const Vec3& d, double& t0, double& t1) {
   t0 = -std::numeric_limits<double>::infinity();
   t1 = std::numeric_limits<double>::infinity();
   for (int a = 0; a < 3; ++a) {
@@ -636,6 +974,7 @@ bool clip_to_grid(const ScalarGrid& g, const Ray& wr, double& t0, double& t1) {
   }
   return t0 <= t1;
 }
+}  // namespace
 
 RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const TransferFunction& tf, const Camera& cam,
                      const RenderOptions& o, SurfaceTracer surface, const void* ctx, const ShadingVolume* shading) {

@@ -143,6 +143,7 @@ std::vector<ControlPoint> preset_transfer_function(const std::string& name, doub
 TransferFunction::TransferFunction(std::vector<ControlPoint> p, double lo, double hi, OpacityMode mode, double tf_unit)
     : lo_(lo), hi_(hi > lo ? hi : lo + 1) {
   width_ = (hi_ - lo_) / (kBins - 1);
+  inv_width_ = (kBins - 1) / (hi_ - lo_);
   tau_.resize(kBins), r_.resize(kBins), g_.resize(kBins), b_.resize(kBins);
   for (int k = 0; k < kBins; ++k) {
     const double v = lo_ + k * width_;

@@ -312,7 +312,7 @@ FrameResult render_volume(const RenderArgs& a, RenderSetup& S, const LoadedVolum
   const auto* mesh = S.mesh ? &*S.mesh : nullptr;
   for (const auto& c : F.cameras)
     F.images.push_back(raycast::render(L.grid, &pyramid, tf, c, o, mesh ? &raycast::MeshTracer::callback : nullptr, mesh,
-                                       shading.data ? &shading : nullptr));
+                                       shading.built() ? &shading : nullptr));
   F.t_render = seconds_since(t0);
   return F;
 }
