@@ -20,6 +20,7 @@
 #include "formats/mesh/mesh_io.hpp"
 #include "pyramid_view.hpp"
 #include "render.hpp"
+#include "terrainlod/dem_clip.hpp"
 
 namespace fest::terrainlod_tool {
 namespace {
@@ -55,24 +56,51 @@ TexturedMesh textured_mesh(const PyramidFile& pyr, const terrainlod::Selection& 
     const double cells = L.cells[static_cast<std::size_t>(id.level)], parts_per_side = std::ldexp(1.0, d);
     const double ox = id.x - static_cast<double>(src.x) * parts_per_side, oy = id.y - static_cast<double>(src.y) * parts_per_side;
     std::vector<Mesh::VertexHandle> handles(tri.vertices.size());
-    for (const auto& t : tri.triangles) {
-      if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
-                          tri.vertices[static_cast<std::size_t>(t[2])]}))
-        continue;
-      for (int c = 0; c < 3; ++c) {
-        auto& h = handles[static_cast<std::size_t>(t[c])];
-        if (h.is_valid()) continue;
-        const auto& v = tri.vertices[static_cast<std::size_t>(t[c])];
-        h = out.mesh.add_vertex(Mesh::Point(L.origin_x + static_cast<double>(v.gx) * L.dx, L.origin_y + static_cast<double>(v.gy) * L.dy, v.z));
-        const double u = (ox + (static_cast<double>(v.gx) - id.x * cells) / cells) / parts_per_side;
-        const double w = (oy + (static_cast<double>(v.gy) - id.y * cells) / cells) / parts_per_side;
-        out.mesh.set_texcoord2D(h, Mesh::TexCoord2D(static_cast<float>(u), static_cast<float>(w)));
+    std::map<std::array<double, 3>, Mesh::VertexHandle> cut_points;  // --clip: points on the DEM's edges
+    // A vertex at grid point (gx, gy), texture coordinates from its place in the tile.
+    auto add = [&](double gx, double gy, double z) {
+      const auto h = out.mesh.add_vertex(Mesh::Point(L.origin_x + gx * L.dx, L.origin_y + gy * L.dy, z));
+      const double u = (ox + (gx - id.x * cells) / cells) / parts_per_side;
+      const double w = (oy + (gy - id.y * cells) / cells) / parts_per_side;
+      out.mesh.set_texcoord2D(h, Mesh::TexCoord2D(static_cast<float>(u), static_cast<float>(w)));
+      return h;
+    };
+    auto corner = [&](int i) {
+      auto& h = handles[static_cast<std::size_t>(i)];
+      if (!h.is_valid()) {
+        const auto& v = tri.vertices[static_cast<std::size_t>(i)];
+        h = add(static_cast<double>(v.gx), static_cast<double>(v.gy), v.z);
       }
-      const auto f = out.mesh.add_face(handles[static_cast<std::size_t>(t[0])], handles[static_cast<std::size_t>(t[1])],
-                                       handles[static_cast<std::size_t>(t[2])]);
-      if (!f.is_valid()) continue;
+      return h;
+    };
+    auto face = [&](Mesh::VertexHandle a, Mesh::VertexHandle b, Mesh::VertexHandle c) {
+      const auto f = out.mesh.add_face(a, b, c);
+      if (!f.is_valid()) return;
       out.mesh.set_color(f, level_colour(id.level, L.levels));
       out.face_source.push_back(k);
+    };
+    for (const auto& t : tri.triangles) {
+      const std::array<terrainlod::TileTriangulation::Vertex, 3> v{
+          tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+          tri.vertices[static_cast<std::size_t>(t[2])]};
+      if (!extent.crosses(v)) {
+        face(corner(t[0]), corner(t[1]), corner(t[2]));
+        continue;
+      }
+      for (const auto& piece : terrainlod::clip_to_dem(v, extent.last_x, extent.last_y)) {
+        Mesh::VertexHandle h[3];
+        for (int c = 0; c < 3; ++c) {
+          const auto& p = piece[static_cast<std::size_t>(c)];
+          for (int q = 0; q < 3 && !h[c].is_valid(); ++q)
+            if (p.x == static_cast<double>(v[static_cast<std::size_t>(q)].gx) && p.y == static_cast<double>(v[static_cast<std::size_t>(q)].gy))
+              h[c] = corner(t[q]);
+          if (h[c].is_valid()) continue;
+          auto [it, added] = cut_points.try_emplace(std::array<double, 3>{p.x, p.y, p.z});
+          if (added) it->second = add(p.x, p.y, p.z);
+          h[c] = it->second;
+        }
+        face(h[0], h[1], h[2]);
+      }
     }
   }
   return out;

@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
   x->add_option("--tau", extract.tau, "Pixels per texel threshold (overrides the camera's tau_px)");
   x->add_option("--report", extract.report, "JSON report: tiles per level, triangles, bytes touched, times");
   x->add_option("--png", extract.png, "Also render the mesh as the camera sees it (textured, or tiles coloured by level)");
-  x->add_flag("--clip", extract.clip, "Drop triangles entirely outside the DEM (in the pyramid's padding)");
+  x->add_flag("--clip", extract.clip, "Cut the triangles at the DEM's edges: exactly the DEM rectangle, none of the pyramid's padding");
   x->add_option("--atlas", extract.atlas, "Pack the drawn tiles' textures into one PNG; texture coordinates point into it");
 
   VerifyArgs verify;

@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <unordered_map>
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/stopwatch.hpp"
+#include "terrainlod/dem_clip.hpp"
 #include "formats/image/image_io.hpp"
 
 namespace fest::terrainlod_tool {
@@ -51,6 +53,7 @@ Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent
   // A hash map: a tree map's lookups were a quarter of a large view's extraction time.
   std::unordered_map<terrainlod::TileTriangulation::Vertex, Mesh::VertexHandle, VertexKeyHash> ids;
   std::vector<Mesh::VertexHandle> handles;
+  std::map<std::array<double, 3>, Mesh::VertexHandle> cut_points;  // --clip: points on the DEM's edges
   for (const auto& [id, tri] : parts) {
     handles.assign(tri.vertices.size(), Mesh::VertexHandle());
     const std::int64_t cells = L.cells[static_cast<std::size_t>(id.level)];
@@ -74,11 +77,31 @@ Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent
       for (std::size_t k = 0; k < tri.vertices.size(); ++k) handle(static_cast<int>(k));
     const auto colour = level_colour(id.level, L.levels);
     for (const auto& t : tri.triangles) {
-      if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
-                          tri.vertices[static_cast<std::size_t>(t[2])]}))
+      const std::array<terrainlod::TileTriangulation::Vertex, 3> v{
+          tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+          tri.vertices[static_cast<std::size_t>(t[2])]};
+      if (!extent.crosses(v)) {
+        const auto f = mesh.add_face(handle(t[0]), handle(t[1]), handle(t[2]));
+        if (f.is_valid()) mesh.set_color(f, colour);
         continue;
-      const auto f = mesh.add_face(handle(t[0]), handle(t[1]), handle(t[2]));
-      if (f.is_valid()) mesh.set_color(f, colour);
+      }
+      // Cut at the DEM's edges: corners that stay are the tile's own vertices; cut points
+      // are shared by exact position (the same edge gives the same point in every tile).
+      for (const auto& piece : terrainlod::clip_to_dem(v, extent.last_x, extent.last_y)) {
+        Mesh::VertexHandle h[3];
+        for (int c = 0; c < 3; ++c) {
+          const auto& p = piece[static_cast<std::size_t>(c)];
+          for (int k = 0; k < 3 && !h[c].is_valid(); ++k)
+            if (p.x == static_cast<double>(v[static_cast<std::size_t>(k)].gx) && p.y == static_cast<double>(v[static_cast<std::size_t>(k)].gy))
+              h[c] = handle(t[k]);
+          if (h[c].is_valid()) continue;
+          auto [it, added] = cut_points.try_emplace(std::array<double, 3>{p.x, p.y, p.z});
+          if (added) it->second = mesh.add_vertex(Mesh::Point(L.origin_x + p.x * L.dx, L.origin_y + p.y * L.dy, p.z));
+          h[c] = it->second;
+        }
+        const auto f = mesh.add_face(h[0], h[1], h[2]);
+        if (f.is_valid()) mesh.set_color(f, colour);
+      }
     }
   }
   return mesh;

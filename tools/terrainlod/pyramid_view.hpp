@@ -25,14 +25,15 @@ inline PyramidFile open_pyramid(const std::string& path) { return PyramidFile::o
 // Level colours for the meshes and renderings (coarse = blue ... fine = red).
 OpenMesh::Vec3uc level_colour(int level, int levels);
 
-// --clip: a triangle entirely in the padding east or north of the DEM (every vertex on or
-// beyond the last sample column, or row) covers nothing of the DEM.
+// --clip: triangles cut at the DEM's east and north edges (lib/terrainlod/dem_clip.hpp),
+// so exactly the DEM rectangle is drawn and none of the pyramid's padding.
 struct Extent {
   std::int64_t last_x = 0, last_y = 0;  // grid index of the last sample column and row
   bool clip = false;
-  bool outside(const std::array<terrainlod::TileTriangulation::Vertex, 3>& v) const {
-    return clip && ((v[0].gx >= last_x && v[1].gx >= last_x && v[2].gx >= last_x) ||
-                    (v[0].gy >= last_y && v[1].gy >= last_y && v[2].gy >= last_y));
+  // Whether the triangle needs cutting (some vertex beyond the last column or row).
+  bool crosses(const std::array<terrainlod::TileTriangulation::Vertex, 3>& v) const {
+    return clip && (v[0].gx > last_x || v[1].gx > last_x || v[2].gx > last_x || v[0].gy > last_y || v[1].gy > last_y ||
+                    v[2].gy > last_y);
   }
 };
 // The extent of the pyramid's DEM, clipping or not.
