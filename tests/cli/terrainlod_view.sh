@@ -59,6 +59,73 @@ run terrainlod extract "$WORK/odd.tlp" --camera "$WORK/obl.json" --clip -o "$WOR
 expect_status 0
 check "oblique: --clip only loses pixels" $PNGCMP "$WORK/of.png" "$WORK/oc.png"
 
+case_ "automatic camera (no --camera): every vertex of the clipped terrain projects inside the image"
+run terrainlod extract "$WORK/odd.tlp" --clip -o "$WORK/auto.obj" --png "$WORK/auto.png" --report "$WORK/auto.json"
+expect_status 0
+cp "$WORK/auto.json" "$out"
+expect_json '[.camera.automatic, .camera.width, .camera.height]' '[true,1280,800]'
+# Pinhole projection of every OBJ vertex with the reported camera (docs/terrainlod.md §5).
+project() {  # report obj -> "inside_all fill_x fill_y"
+  python3 - "$1" "$2" <<'PY'
+import json, math, sys
+c = json.load(open(sys.argv[1]))["camera"]
+sub = lambda a, b: [a[i] - b[i] for i in range(3)]
+dot = lambda a, b: sum(a[i] * b[i] for i in range(3))
+cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+norm = lambda a: [x / math.sqrt(dot(a, a)) for x in a]
+f = norm(sub(c["target"], c["eye"])); r = norm(cross(f, c["up"])); u = cross(r, f)
+W, H = c["width"], c["height"]; fpx = (H / 2) / math.tan(math.radians(c["fovy_deg"]) / 2)
+xs, ys, ok = [], [], True
+for line in open(sys.argv[2]):
+    if line.startswith("v "):
+        d = sub([float(v) for v in line.split()[1:4]], c["eye"])
+        z = dot(d, f)
+        x, y = W / 2 + fpx * dot(d, r) / z, H / 2 - fpx * dot(d, u) / z
+        ok = ok and z > c["near"] and 0 <= x <= W and 0 <= y <= H
+        xs.append(x); ys.append(y)
+print(int(ok), (max(xs) - min(xs)) / W, (max(ys) - min(ys)) / H)
+PY
+}
+for preset in overview oblique north south east west top; do
+  run terrainlod extract "$WORK/odd.tlp" --clip --camera-preset $preset -o "$WORK/p.obj" --report "$WORK/p.json"
+  expect_status 0
+  read -r ok fx fy < <(project "$WORK/p.json" "$WORK/p.obj")
+  check "$preset: every vertex inside the image" test "$ok" = 1
+  # The terrain's box touches the 4 % margin in one direction; the surface inside it spans
+  # most of that (less where the box's top corners stand above the terrain).
+  check "$preset: the terrain fills the view ($fx x $fy)" awk -v a="$fx" -v b="$fy" 'BEGIN { exit !(a > 0.6 || b > 0.6) }'
+done
+run terrainlod extract "$WORK/odd.tlp" --camera-preset north -o "$WORK/pn.obj" --report "$WORK/pn.json"
+expect_status 0
+read -r ok fx fy < <(project "$WORK/pn.json" "$WORK/pn.obj")
+check "without --clip the padding is framed too" test "$ok" = 1
+
+case_ "--z-exaggeration K: every vertex height multiplied by K, x and y unchanged"
+# --tau 0.001: every leaf is drawn for both, whatever the scaled culling boxes.
+run terrainlod extract "$WORK/odd.tlp" --camera "$WORK/top.json" --tau 0.001 -o "$WORK/z1.obj"
+expect_status 0
+run terrainlod extract "$WORK/odd.tlp" --camera "$WORK/top.json" --tau 0.001 --z-exaggeration 2.5 -o "$WORK/z25.obj"
+expect_status 0
+check "z x 2.5, same x, y" python3 - "$WORK/z1.obj" "$WORK/z25.obj" <<'PY'
+import sys
+v = [[list(map(float, l.split()[1:4])) for l in open(p) if l.startswith("v ")] for p in sys.argv[1:3]]
+assert len(v[0]) == len(v[1]) > 0
+for a, b in zip(*v):
+    assert a[0] == b[0] and a[1] == b[1] and abs(b[2] - 2.5 * a[2]) <= 1e-4 * (1 + abs(a[2])), (a, b)
+assert max(abs(a[2]) for a in v[0]) > 0
+PY
+
+case_ "bad automatic-camera and exaggeration flags"
+run terrainlod extract "$WORK/odd.tlp" --z-exaggeration 0 -o "$WORK/x.ply"
+expect_status 2
+expect_stderr_has 'z-exaggeration'
+run terrainlod extract "$WORK/odd.tlp" --camera-preset sideways -o "$WORK/x.ply"
+expect_status 2
+expect_stderr_has 'sideways'
+run terrainlod extract "$WORK/odd.tlp" --camera "$WORK/top.json" --camera-preset top -o "$WORK/x.ply"
+expect_status 2
+check "nothing written" test ! -e "$WORK/x.ply"
+
 if olinda=$(need_testdata dem/olinda_dem_utm25s.tif); then
   case_ "Olinda (110 x 110 cells, padded to 128): --clip keeps the DEM whole, from above and at the far corner"
   run terrainlod build "$olinda" -o "$WORK/olinda.tlp"

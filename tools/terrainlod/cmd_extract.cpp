@@ -219,7 +219,7 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
   nlohmann::json frames = nlohmann::json::array();
   for (std::size_t k = 0; k < cams.size(); ++k) {
     const std::size_t decoded0 = pyr.tiles_decoded(), bytes0 = pyr.bytes_touched();
-    const Extraction x = extract_view(pyr, cams[k]);
+    const Extraction x = extract_view(pyr, cams[k], args.z_exaggeration);
     std::set<terrainlod::TileId> keep = x.examined;
     for (const auto& s : x.selection.tiles) {
       for (int dy = -1; dy <= 1; ++dy)
@@ -242,7 +242,8 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
       }
       textures.face_image = tm->face_source;
     }
-    const Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+    Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+    scale_heights(mesh, args.z_exaggeration);
     formats::store_output(frame_name(args.output, k, "-o"), formats::write_mesh(mesh, out.format), out.gzip);
     if (!args.png.empty()) write_output(frame_name(args.png, k, "--png"), render_png(mesh, cams[k], tm ? &textures : nullptr));
     for (auto it = texture_cache.begin(); it != texture_cache.end();) it = keep.count(it->first) ? std::next(it) : texture_cache.erase(it);
@@ -266,20 +267,28 @@ int run_extract(const ExtractArgs& args) {
   const auto out = mesh_output(args.output, args.to);
   if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
   if (!args.path.empty()) return run_extract_path(args, out);
-  if (args.camera.empty()) throw usage_error("extract needs --camera CAM.json or --path CAMS.jsonl");
-  if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
-  const std::string cam_name = is_stdio(args.camera) ? "-" : args.camera;
-  nlohmann::json cj;
-  try {
-    cj = nlohmann::json::parse(read_input(args.camera));
-  } catch (const nlohmann::json::exception& e) {
-    throw bad_input("camera is not JSON: {} ({})", e.what(), cam_name);
+  if (!(args.z_exaggeration > 0) || !std::isfinite(args.z_exaggeration))
+    throw usage_error("--z-exaggeration must be a positive number (got {})", args.z_exaggeration);
+  terrainlod::Camera cam;
+  const bool automatic = args.camera.empty();
+  if (!automatic) {
+    const std::string cam_name = is_stdio(args.camera) ? "-" : args.camera;
+    nlohmann::json cj;
+    try {
+      cj = nlohmann::json::parse(read_input(args.camera));
+    } catch (const nlohmann::json::exception& e) {
+      throw bad_input("camera is not JSON: {} ({})", e.what(), cam_name);
+    }
+    cam = parse_camera(cj, cam_name);
   }
-  terrainlod::Camera cam = parse_camera(cj, cam_name);
-  if (args.tau > 0) cam.tau_px = args.tau;
+  const terrainlod::ViewDirection direction = terrainlod::camera_preset(args.camera_preset.empty() ? "overview" : args.camera_preset);
   PyramidFile pyr = open_pyramid(args.pyramid);
   if (!args.atlas.empty() && !pyr.textured()) throw usage_error("--atlas needs a pyramid with textures (build --texture)");
-  const Extraction x = extract_view(pyr, cam);
+  // No --camera: the whole terrain (what this view draws: the DEM with --clip, else the
+  // padded squares too) framed from the preset's side (docs/terrainlod.md §5).
+  if (automatic) cam = terrainlod::frame_box(drawn_box(pyr, args.clip, args.z_exaggeration), direction, 1280, 800, 45, 0.04);
+  if (args.tau > 0) cam.tau_px = args.tau;
+  const Extraction x = extract_view(pyr, cam, args.z_exaggeration);
   const auto t2 = SteadyClock::now();
   const Extent extent = extent_of(pyr, args.clip);
   const bool obj_file = out.format == formats::Format::obj && !is_stdio(args.output);
@@ -332,7 +341,9 @@ int run_extract(const ExtractArgs& args) {
       tm->mtllib = stem + ".mtl";
     }
   }
-  const Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+  if (tm) scale_heights(tm->mesh, args.z_exaggeration);
+  Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+  if (!tm) scale_heights(mesh, args.z_exaggeration);
   std::string png;
   if (!args.png.empty()) png = render_png(mesh, cam, tm ? &textures : nullptr);
   Mesh written = mesh;
@@ -358,6 +369,17 @@ int run_extract(const ExtractArgs& args) {
                         {"textures", texture_count},
                         {"bytes_touched", pyr.bytes_touched()},
                         {"max_screen_error_px", pyr.manifest().at("error_fraction").get<double>() * cam.tau_px},
+                        {"z_exaggeration", args.z_exaggeration},
+                        {"camera", {{"automatic", automatic},
+                                    {"eye", cam.eye},
+                                    {"target", cam.target},
+                                    {"up", cam.up},
+                                    {"fovy_deg", cam.fovy_deg},
+                                    {"width", cam.width},
+                                    {"height", cam.height},
+                                    {"near", cam.near},
+                                    {"far", cam.far},
+                                    {"tau_px", cam.tau_px}}},
                         {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}, {"write", ms_since(t2)}}}};
     write_output(args.report, r.dump(2) + "\n");
   }

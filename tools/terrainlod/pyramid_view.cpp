@@ -152,7 +152,7 @@ terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& wher
   return c;
 }
 
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale) {
   Extraction x;
   const auto t0 = SteadyClock::now();
   x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
@@ -160,7 +160,7 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
     const auto [z_min, z_max] = pyr.z_range(id);
     // Widen the float range by a relative hair so the box holds the double heights.
     const double pad = 1e-6 * (std::abs(z_min) + std::abs(z_max) + 1);
-    return std::array<double, 2>{z_min - pad, z_max + pad};
+    return std::array<double, 2>{(z_min - pad) * z_scale, (z_max + pad) * z_scale};
   });
   x.select_ms = ms_since(t0);
   const auto t1 = SteadyClock::now();
@@ -170,6 +170,37 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
   }
   x.decode_ms = ms_since(t1);
   return x;
+}
+
+void scale_heights(Mesh& mesh, double k) {
+  if (k == 1) return;
+  for (auto vh : mesh.vertices()) {
+    auto p = mesh.point(vh);
+    p[2] *= k;
+    mesh.set_point(vh, p);
+  }
+}
+
+terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale) {
+  const auto& L = pyr.layout();
+  const double cx = clip ? pyr.manifest().at("width").get<double>() - 1 : static_cast<double>(L.tiles_x[0]) * L.cells[0];
+  const double cy = clip ? pyr.manifest().at("height").get<double>() - 1 : static_cast<double>(L.tiles_y[0]) * L.cells[0];
+  // Every drawn height is a tile vertex's, a finer neighbour's border point (a vertex of
+  // that tile) or, with --clip, interpolated between them: the union of all tiles' height
+  // ranges (their headers) holds them all.
+  double z0 = 0, z1 = 0;
+  bool first = true;
+  for (const auto& f : pyr.index()) {
+    const auto z = pyr.z_range(f.id);
+    if (first || z[0] < z0) z0 = z[0];
+    if (first || z[1] > z1) z1 = z[1];
+    first = false;
+  }
+  // The headers hold floats: widen by a relative hair, as extract_view does.
+  const double pad = 1e-6 * (std::abs(z0) + std::abs(z1) + 1);
+  z0 -= pad, z1 += pad;
+  return {L.origin_x, L.origin_y, std::min(z0, z1) * z_scale, L.origin_x + cx * L.dx, L.origin_y + cy * L.dy,
+          std::max(z0, z1) * z_scale};
 }
 
 nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selection& sel) {

@@ -16,6 +16,7 @@
 #include "core/mesh.hpp"
 #include "formats/detect.hpp"
 #include "pyramid_file.hpp"
+#include "terrainlod/auto_camera.hpp"
 #include "terrainlod/extract.hpp"
 
 namespace fest::terrainlod_tool {
@@ -61,8 +62,17 @@ struct Extraction {
   double select_ms = 0, decode_ms = 0;
 };
 
-// The tiles a camera selects, closed, and their triangulations decoded.
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam);
+// The tiles a camera selects, closed, and their triangulations decoded. Heights drawn
+// multiplied by z_scale (extract --z-exaggeration) cull with the boxes scaled alike.
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale = 1);
+
+// extract --z-exaggeration: every vertex height multiplied by k.
+void scale_heights(Mesh& mesh, double k);
+
+// The world box a view of the pyramid can draw: the DEM rectangle (clip) or the root
+// tiles' squares (the padding included), heights over every tile (from the tile headers),
+// times z_scale.
+terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale);
 
 // The count of selected tiles per level, as a JSON array.
 nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selection& sel);
