@@ -229,6 +229,6 @@ bad 3 'not a terrainlod pyramid \(bad magic\)' decode "$WORK/magic.tlp" --tile 0
 case_ "camera looking along its up vector; mask out of range"
 printf '{"eye": [1300, 1600, 300], "target": [1300, 1600, 0]}\n' >"$WORK/down.json"
 bad 3 'camera looks along its up vector \(.*down.json\)' extract "$WORK/bumps.tlp" --camera "$WORK/down.json" -o "$WORK/out.ply"
-bad 2 '--mask must be 0..15 \(got 16\)' decode "$WORK/bumps.tlp" --tile 1/0/0 --mask 16 -o "$WORK/out.ply"
+bad 2 '--mask: must be in \[0, 15\], not 16' decode "$WORK/bumps.tlp" --tile 1/0/0 --mask 16 -o "$WORK/out.ply"
 
 finish

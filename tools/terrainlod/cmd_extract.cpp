@@ -21,6 +21,7 @@
 #include "formats/mesh/mesh_io.hpp"
 #include "pyramid_view.hpp"
 #include "render.hpp"
+#include "terrainlod/dem_clip.hpp"
 
 namespace fest::terrainlod_tool {
 namespace {
@@ -56,24 +57,51 @@ TexturedMesh textured_mesh(const PyramidFile& pyr, const terrainlod::Selection& 
     const double cells = L.cells[static_cast<std::size_t>(id.level)], parts_per_side = std::ldexp(1.0, d);
     const double ox = id.x - static_cast<double>(src.x) * parts_per_side, oy = id.y - static_cast<double>(src.y) * parts_per_side;
     std::vector<Mesh::VertexHandle> handles(tri.vertices.size());
-    for (const auto& t : tri.triangles) {
-      if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
-                          tri.vertices[static_cast<std::size_t>(t[2])]}))
-        continue;
-      for (int c = 0; c < 3; ++c) {
-        auto& h = handles[static_cast<std::size_t>(t[c])];
-        if (h.is_valid()) continue;
-        const auto& v = tri.vertices[static_cast<std::size_t>(t[c])];
-        h = out.mesh.add_vertex(Mesh::Point(L.origin_x + static_cast<double>(v.gx) * L.dx, L.origin_y + static_cast<double>(v.gy) * L.dy, v.z));
-        const double u = (ox + (static_cast<double>(v.gx) - id.x * cells) / cells) / parts_per_side;
-        const double w = (oy + (static_cast<double>(v.gy) - id.y * cells) / cells) / parts_per_side;
-        out.mesh.set_texcoord2D(h, Mesh::TexCoord2D(static_cast<float>(u), static_cast<float>(w)));
+    std::map<std::array<double, 3>, Mesh::VertexHandle> cut_points;  // --clip: points on the DEM's edges
+    // A vertex at grid point (gx, gy), texture coordinates from its place in the tile.
+    auto add = [&](double gx, double gy, double z) {
+      const auto h = out.mesh.add_vertex(Mesh::Point(L.origin_x + gx * L.dx, L.origin_y + gy * L.dy, z));
+      const double u = (ox + (gx - id.x * cells) / cells) / parts_per_side;
+      const double w = (oy + (gy - id.y * cells) / cells) / parts_per_side;
+      out.mesh.set_texcoord2D(h, Mesh::TexCoord2D(static_cast<float>(u), static_cast<float>(w)));
+      return h;
+    };
+    auto corner = [&](int i) {
+      auto& h = handles[static_cast<std::size_t>(i)];
+      if (!h.is_valid()) {
+        const auto& v = tri.vertices[static_cast<std::size_t>(i)];
+        h = add(static_cast<double>(v.gx), static_cast<double>(v.gy), v.z);
       }
-      const auto f = out.mesh.add_face(handles[static_cast<std::size_t>(t[0])], handles[static_cast<std::size_t>(t[1])],
-                                       handles[static_cast<std::size_t>(t[2])]);
-      if (!f.is_valid()) continue;
+      return h;
+    };
+    auto face = [&](Mesh::VertexHandle a, Mesh::VertexHandle b, Mesh::VertexHandle c) {
+      const auto f = out.mesh.add_face(a, b, c);
+      if (!f.is_valid()) return;
       out.mesh.set_color(f, level_colour(id.level, L.levels));
       out.face_source.push_back(k);
+    };
+    for (const auto& t : tri.triangles) {
+      const std::array<terrainlod::TileTriangulation::Vertex, 3> v{
+          tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+          tri.vertices[static_cast<std::size_t>(t[2])]};
+      if (!extent.crosses(v)) {
+        face(corner(t[0]), corner(t[1]), corner(t[2]));
+        continue;
+      }
+      for (const auto& piece : terrainlod::clip_to_dem(v, extent.last_x, extent.last_y)) {
+        Mesh::VertexHandle h[3];
+        for (int c = 0; c < 3; ++c) {
+          const auto& p = piece[static_cast<std::size_t>(c)];
+          for (int q = 0; q < 3 && !h[c].is_valid(); ++q)
+            if (p.x == static_cast<double>(v[static_cast<std::size_t>(q)].gx) && p.y == static_cast<double>(v[static_cast<std::size_t>(q)].gy))
+              h[c] = corner(t[q]);
+          if (h[c].is_valid()) continue;
+          auto [it, added] = cut_points.try_emplace(std::array<double, 3>{p.x, p.y, p.z});
+          if (added) it->second = add(p.x, p.y, p.z);
+          h[c] = it->second;
+        }
+        face(h[0], h[1], h[2]);
+      }
     }
   }
   return out;
@@ -194,7 +222,7 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
   nlohmann::json frames = nlohmann::json::array();
   for (std::size_t k = 0; k < cams.size(); ++k) {
     const std::size_t decoded0 = pyr.tiles_decoded(), bytes0 = pyr.bytes_touched();
-    const Extraction x = extract_view(pyr, cams[k]);
+    const Extraction x = extract_view(pyr, cams[k], args.z_exaggeration);
     std::set<terrainlod::TileId> keep = x.examined;
     for (const auto& s : x.selection.tiles) {
       for (int dy = -1; dy <= 1; ++dy)
@@ -217,7 +245,8 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
       }
       textures.face_image = tm->face_source;
     }
-    const Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+    Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+    scale_heights(mesh, args.z_exaggeration);
     formats::store_output(frame_name(args.output, k, "-o"), formats::write_mesh(mesh, out.format), out.gzip);
     if (!args.png.empty()) write_output(frame_name(args.png, k, "--png"), render_png(mesh, cams[k], tm ? &textures : nullptr));
     for (auto it = texture_cache.begin(); it != texture_cache.end();) it = keep.count(it->first) ? std::next(it) : texture_cache.erase(it);
@@ -241,23 +270,31 @@ int run_extract(const ExtractArgs& args) {
   const auto out = mesh_output(args.output, args.to);
   if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
   if (!args.path.empty()) return run_extract_path(args, out);
-  if (args.camera.empty()) throw usage_error("extract needs --camera CAM.json or --path CAMS.jsonl");
-  if (args.tau < 0 || !std::isfinite(args.tau)) throw usage_error("--tau must be positive (got {})", args.tau);
-  const std::string cam_name = is_stdio(args.camera) ? "-" : args.camera;
-  const std::string camera_text = read_input(args.camera);
-  nlohmann::json cj;
-  try {
-    cj = nlohmann::json::parse(camera_text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), e.byte, camera_text), cam_name);
-  } catch (const nlohmann::json::exception& e) {
-    throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), 0, camera_text), cam_name);
+  if (!(args.z_exaggeration > 0) || !std::isfinite(args.z_exaggeration))
+    throw usage_error("--z-exaggeration must be a positive number (got {})", args.z_exaggeration);
+  terrainlod::Camera cam;
+  const bool automatic = args.camera.empty();
+  if (!automatic) {
+    const std::string cam_name = is_stdio(args.camera) ? "-" : args.camera;
+    const std::string camera_text = read_input(args.camera);
+    nlohmann::json cj;
+    try {
+      cj = nlohmann::json::parse(camera_text);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), e.byte, camera_text), cam_name);
+    } catch (const nlohmann::json::exception& e) {
+      throw bad_input("camera is not JSON: {} ({})", json_failure_words(e.what(), 0, camera_text), cam_name);
+    }
+    cam = parse_camera(cj, cam_name);
   }
-  terrainlod::Camera cam = parse_camera(cj, cam_name);
-  if (args.tau > 0) cam.tau_px = args.tau;
+  const terrainlod::ViewDirection direction = terrainlod::camera_preset(args.camera_preset.empty() ? "overview" : args.camera_preset);
   PyramidFile pyr = open_pyramid(args.pyramid);
   if (!args.atlas.empty() && !pyr.textured()) throw usage_error("--atlas needs a pyramid with textures (build --texture)");
-  const Extraction x = extract_view(pyr, cam);
+  // No --camera: the whole terrain (what this view draws: the DEM with --clip, else the
+  // padded squares too) framed from the preset's side (docs/terrainlod.md §5).
+  if (automatic) cam = terrainlod::frame_box(drawn_box(pyr, args.clip, args.z_exaggeration), direction, 1280, 800, 45, 0.04);
+  if (args.tau > 0) cam.tau_px = args.tau;
+  const Extraction x = extract_view(pyr, cam, args.z_exaggeration);
   const auto t2 = SteadyClock::now();
   const Extent extent = extent_of(pyr, args.clip);
   const bool obj_file = out.format == formats::Format::obj && !is_stdio(args.output);
@@ -310,7 +347,9 @@ int run_extract(const ExtractArgs& args) {
       tm->mtllib = stem + ".mtl";
     }
   }
-  const Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+  if (tm) scale_heights(tm->mesh, args.z_exaggeration);
+  Mesh mesh = tm ? tm->mesh : world_mesh(pyr, x.parts, extent);
+  if (!tm) scale_heights(mesh, args.z_exaggeration);
   std::string png;
   if (!args.png.empty()) png = render_png(mesh, cam, tm ? &textures : nullptr);
   Mesh written = mesh;
@@ -336,6 +375,17 @@ int run_extract(const ExtractArgs& args) {
                         {"textures", texture_count},
                         {"bytes_touched", pyr.bytes_touched()},
                         {"max_screen_error_px", pyr.manifest().at("error_fraction").get<double>() * cam.tau_px},
+                        {"z_exaggeration", args.z_exaggeration},
+                        {"camera", {{"automatic", automatic},
+                                    {"eye", cam.eye},
+                                    {"target", cam.target},
+                                    {"up", cam.up},
+                                    {"fovy_deg", cam.fovy_deg},
+                                    {"width", cam.width},
+                                    {"height", cam.height},
+                                    {"near", cam.near},
+                                    {"far", cam.far},
+                                    {"tau_px", cam.tau_px}}},
                         {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}, {"write", ms_since(t2)}}}};
     write_output(args.report, r.dump(2) + "\n");
   }

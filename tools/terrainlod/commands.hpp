@@ -96,8 +96,10 @@ struct ExtractArgs {
   double tau = 0;         // 0 = the camera's tau_px (default 1)
   std::string report;
   std::string png;        // software rendering of the mesh, textured or tiles coloured by level
-  bool clip = false;      // drop triangles entirely outside the DEM (in the padding)
+  bool clip = false;      // cut the triangles at the DEM's edges (none of the padding)
   std::string atlas;      // one texture atlas for all drawn tiles (texture coordinates into it)
+  std::string camera_preset;  // no --camera: frame the terrain from this side (empty = overview)
+  double z_exaggeration = 1;  // heights of the output mesh and rendering multiplied by this
 };
 
 struct VerifyArgs {

@@ -11,6 +11,7 @@
 #include "cli/cli.hpp"
 #include "cli/enum_option.hpp"
 #include "commands.hpp"
+#include "terrainlod/auto_camera.hpp"
 
 namespace {
 
@@ -102,17 +103,28 @@ int main(int argc, char** argv) {
   ExtractArgs extract;
   auto* x = app.add_subcommand("extract", "The crack-free mesh a camera needs (view-dependent level of detail)");
   x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp) or directory")->required();
-  auto* cam_opt = x->add_option("--camera", extract.camera, "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px");
+  auto* cam_opt = x->add_option("--camera", extract.camera,
+                                "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px "
+                                "(default: a 1280 x 800 view framing the whole terrain, --camera-preset)");
+  auto* preset_opt = x->add_option("--camera-preset", extract.camera_preset,
+                                   "Without --camera, frame the whole terrain from: overview (south-west, 35 deg; the default), "
+                                   "oblique (south-west, 20 deg), north, south, east, west (30 deg) or top")
+                         ->check(CLI::IsMember(fest::terrainlod::camera_preset_names()));
+  preset_opt->excludes(cam_opt);
   auto* path_opt = x->add_option("--path", extract.path,
                                  "Camera path: JSON lines, one camera per frame (-o and --png then take a %d / %04d pattern)");
   cam_opt->excludes(path_opt);
+  preset_opt->excludes(path_opt);
+  x->add_option("--z-exaggeration", extract.z_exaggeration,
+                "Multiply heights of the written mesh and the rendering by K (no rebuild; default 1)")
+      ->check(fest::cli::positive);
   path_opt->excludes(cam_opt);
   x->add_option("-o,--output", extract.output, "Mesh file; - = standard output (PLY); faces coloured by tile level");
   x->add_option("--to", extract_to, "Output format: ply, obj, off, stl or drc");
   x->add_option("--tau", extract.tau, "Pixels per texel threshold (overrides the camera's tau_px)");
   x->add_option("--report", extract.report, "JSON report: tiles per level, triangles, bytes touched, times");
   x->add_option("--png", extract.png, "Also render the mesh as the camera sees it (textured, or tiles coloured by level)");
-  x->add_flag("--clip", extract.clip, "Drop triangles entirely outside the DEM (in the pyramid's padding)");
+  x->add_flag("--clip", extract.clip, "Cut the triangles at the DEM's edges: exactly the DEM rectangle, none of the pyramid's padding");
   x->add_option("--atlas", extract.atlas, "Pack the drawn tiles' textures into one PNG; texture coordinates point into it");
 
   VerifyArgs verify;

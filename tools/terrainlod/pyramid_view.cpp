@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <unordered_map>
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/stopwatch.hpp"
+#include "terrainlod/dem_clip.hpp"
 #include "formats/image/image_io.hpp"
 
 namespace fest::terrainlod_tool {
@@ -51,6 +53,7 @@ Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent
   // A hash map: a tree map's lookups were a quarter of a large view's extraction time.
   std::unordered_map<terrainlod::TileTriangulation::Vertex, Mesh::VertexHandle, VertexKeyHash> ids;
   std::vector<Mesh::VertexHandle> handles;
+  std::map<std::array<double, 3>, Mesh::VertexHandle> cut_points;  // --clip: points on the DEM's edges
   for (const auto& part : parts) {
     // Named references, not a structured binding: C++17 lambdas cannot capture those (clang).
     const auto& id = part.first;
@@ -77,11 +80,31 @@ Mesh world_mesh(const PyramidFile& pyr, const Parts& parts, const Extent& extent
       for (std::size_t k = 0; k < tri.vertices.size(); ++k) handle(static_cast<int>(k));
     const auto colour = level_colour(id.level, L.levels);
     for (const auto& t : tri.triangles) {
-      if (extent.outside({tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
-                          tri.vertices[static_cast<std::size_t>(t[2])]}))
+      const std::array<terrainlod::TileTriangulation::Vertex, 3> v{
+          tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+          tri.vertices[static_cast<std::size_t>(t[2])]};
+      if (!extent.crosses(v)) {
+        const auto f = mesh.add_face(handle(t[0]), handle(t[1]), handle(t[2]));
+        if (f.is_valid()) mesh.set_color(f, colour);
         continue;
-      const auto f = mesh.add_face(handle(t[0]), handle(t[1]), handle(t[2]));
-      if (f.is_valid()) mesh.set_color(f, colour);
+      }
+      // Cut at the DEM's edges: corners that stay are the tile's own vertices; cut points
+      // are shared by exact position (the same edge gives the same point in every tile).
+      for (const auto& piece : terrainlod::clip_to_dem(v, extent.last_x, extent.last_y)) {
+        Mesh::VertexHandle h[3];
+        for (int c = 0; c < 3; ++c) {
+          const auto& p = piece[static_cast<std::size_t>(c)];
+          for (int k = 0; k < 3 && !h[c].is_valid(); ++k)
+            if (p.x == static_cast<double>(v[static_cast<std::size_t>(k)].gx) && p.y == static_cast<double>(v[static_cast<std::size_t>(k)].gy))
+              h[c] = handle(t[k]);
+          if (h[c].is_valid()) continue;
+          auto [it, added] = cut_points.try_emplace(std::array<double, 3>{p.x, p.y, p.z});
+          if (added) it->second = mesh.add_vertex(Mesh::Point(L.origin_x + p.x * L.dx, L.origin_y + p.y * L.dy, p.z));
+          h[c] = it->second;
+        }
+        const auto f = mesh.add_face(h[0], h[1], h[2]);
+        if (f.is_valid()) mesh.set_color(f, colour);
+      }
     }
   }
   return mesh;
@@ -132,7 +155,7 @@ terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& wher
   return c;
 }
 
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale) {
   Extraction x;
   const auto t0 = SteadyClock::now();
   x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
@@ -140,7 +163,7 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
     const auto [z_min, z_max] = pyr.z_range(id);
     // Widen the float range by a relative hair so the box holds the double heights.
     const double pad = 1e-6 * (std::abs(z_min) + std::abs(z_max) + 1);
-    return std::array<double, 2>{z_min - pad, z_max + pad};
+    return std::array<double, 2>{(z_min - pad) * z_scale, (z_max + pad) * z_scale};
   });
   x.select_ms = ms_since(t0);
   const auto t1 = SteadyClock::now();
@@ -150,6 +173,37 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam) {
   }
   x.decode_ms = ms_since(t1);
   return x;
+}
+
+void scale_heights(Mesh& mesh, double k) {
+  if (k == 1) return;
+  for (auto vh : mesh.vertices()) {
+    auto p = mesh.point(vh);
+    p[2] *= k;
+    mesh.set_point(vh, p);
+  }
+}
+
+terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale) {
+  const auto& L = pyr.layout();
+  const double cx = clip ? pyr.manifest().at("width").get<double>() - 1 : static_cast<double>(L.tiles_x[0]) * L.cells[0];
+  const double cy = clip ? pyr.manifest().at("height").get<double>() - 1 : static_cast<double>(L.tiles_y[0]) * L.cells[0];
+  // Every drawn height is a tile vertex's, a finer neighbour's border point (a vertex of
+  // that tile) or, with --clip, interpolated between them: the union of all tiles' height
+  // ranges (their headers) holds them all.
+  double z0 = 0, z1 = 0;
+  bool first = true;
+  for (const auto& f : pyr.index()) {
+    const auto z = pyr.z_range(f.id);
+    if (first || z[0] < z0) z0 = z[0];
+    if (first || z[1] > z1) z1 = z[1];
+    first = false;
+  }
+  // The headers hold floats: widen by a relative hair, as extract_view does.
+  const double pad = 1e-6 * (std::abs(z0) + std::abs(z1) + 1);
+  z0 -= pad, z1 += pad;
+  return {L.origin_x, L.origin_y, std::min(z0, z1) * z_scale, L.origin_x + cx * L.dx, L.origin_y + cy * L.dy,
+          std::max(z0, z1) * z_scale};
 }
 
 nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selection& sel) {

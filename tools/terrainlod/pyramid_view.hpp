@@ -16,6 +16,7 @@
 #include "core/mesh.hpp"
 #include "formats/detect.hpp"
 #include "pyramid_file.hpp"
+#include "terrainlod/auto_camera.hpp"
 #include "terrainlod/extract.hpp"
 
 namespace fest::terrainlod_tool {
@@ -25,14 +26,15 @@ inline PyramidFile open_pyramid(const std::string& path) { return PyramidFile::o
 // Level colours for the meshes and renderings (coarse = blue ... fine = red).
 OpenMesh::Vec3uc level_colour(int level, int levels);
 
-// --clip: a triangle entirely in the padding east or north of the DEM (every vertex on or
-// beyond the last sample column, or row) covers nothing of the DEM.
+// --clip: triangles cut at the DEM's east and north edges (lib/terrainlod/dem_clip.hpp),
+// so exactly the DEM rectangle is drawn and none of the pyramid's padding.
 struct Extent {
   std::int64_t last_x = 0, last_y = 0;  // grid index of the last sample column and row
   bool clip = false;
-  bool outside(const std::array<terrainlod::TileTriangulation::Vertex, 3>& v) const {
-    return clip && ((v[0].gx >= last_x && v[1].gx >= last_x && v[2].gx >= last_x) ||
-                    (v[0].gy >= last_y && v[1].gy >= last_y && v[2].gy >= last_y));
+  // Whether the triangle needs cutting (some vertex beyond the last column or row).
+  bool crosses(const std::array<terrainlod::TileTriangulation::Vertex, 3>& v) const {
+    return clip && (v[0].gx > last_x || v[1].gx > last_x || v[2].gx > last_x || v[0].gy > last_y || v[1].gy > last_y ||
+                    v[2].gy > last_y);
   }
 };
 // The extent of the pyramid's DEM, clipping or not.
@@ -60,8 +62,17 @@ struct Extraction {
   double select_ms = 0, decode_ms = 0;
 };
 
-// The tiles a camera selects, closed, and their triangulations decoded.
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam);
+// The tiles a camera selects, closed, and their triangulations decoded. Heights drawn
+// multiplied by z_scale (extract --z-exaggeration) cull with the boxes scaled alike.
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale = 1);
+
+// extract --z-exaggeration: every vertex height multiplied by k.
+void scale_heights(Mesh& mesh, double k);
+
+// The world box a view of the pyramid can draw: the DEM rectangle (clip) or the root
+// tiles' squares (the padding included), heights over every tile (from the tile headers),
+// times z_scale.
+terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale);
 
 // The count of selected tiles per level, as a JSON array.
 nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selection& sel);
