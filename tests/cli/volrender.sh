@@ -306,6 +306,44 @@ run volrender dvr "$W/v.nrrd" --size 40x30 --screen-mask "$W/v.nrrd" -o "$W/x.pn
 expect_clean_failure 3 volrender
 check "nothing written" test ! -e "$W/x.png"
 
+case_ "--screen-mask polygon: exactly the pixels whose centres lie inside (count from geometry), bit for bit"
+# right triangle (0,0), (20,0), (0,20), legs on pixel boundaries: centres (i+1/2, j+1/2)
+# strictly inside iff i + j <= 18 -> 19 * 20 / 2 = 190 pixels; the 20 centres on the
+# hypotenuse (i + j = 19) are outside by the tie rule (a centre on an edge moves to +x)
+run volrender dvr "$W/v.nrrd" "${mcam[@]}" --screen-mask '0,0;20,0;0,20' -o "$W/tri.pfm" --report "$W/tri.json"
+expect_status 0
+check "pixels inside the triangle = full, others background" test "$($FX trianglecheck "$W/full.pfm" "$W/tri.pfm" 40 30 0.25,0.5,0.75 20)" = 190
+check "rays cast = 4 x 190" test "$(jq .rays "$W/tri.json")" = 760
+run volrender dvr "$W/v.nrrd" "${mcam[@]}" --screen-mask '0,20;20,0;0,0' -o "$W/tri_cw.pfm"
+check "the other orientation: the same pixels" cmp "$W/tri.pfm" "$W/tri_cw.pfm"
+# non-convex L: [0,10]x[0,5] and [0,5]x[5,10], vertices on pixel corners -> 50 + 25 pixels
+run volrender mip "$W/v.nrrd" --size 40x30 --screen-mask '0,0;10,0;10,5;5,5;5,10;0,10' -o "$W/l.png" --report "$W/l.json"
+expect_status 0
+check "L-shape: 75 rays" test "$(jq .rays "$W/l.json")" = 75
+for bad in '0,0;20,0' '0,0;20,0;nan,20' '0,0;20,x;0,20' '0,0;20,0,1;0,20' '0,0;10,10;20,20'; do
+  run volrender dvr "$W/v.nrrd" --size 40x30 --screen-mask "$bad" -o "$W/x.png"
+  expect_clean_failure 2 volrender
+  expect_stderr_has "screen-mask polygon"
+done
+check "nothing written" test ! -e "$W/x.png"
+
+case_ "four-mirror pyramid: the composite equals each viewer's part inside its triangle (disjoint masks)"
+# the four triangles of a 40 x 30 screen's diagonals (no pixel centre lies on a diagonal),
+# each rendered from its own side with --bg none, joined by composite
+tris=('0,0;40,0;20,15' '40,0;40,30;20,15' '0,30;40,30;20,15' '0,0;0,30;20,15')
+views=(90,20 0,20 270,20 180,20)
+rays=0
+for k in 0 1 2 3; do
+  run volrender dvr "$W/v.nrrd" --tf rainbow --shade on --bg none --size 40x30 --view "${views[$k]}" \
+      --screen-mask "${tris[$k]}" -o "$W/part$k.png" --report "$W/part$k.json"
+  expect_status 0
+  rays=$((rays + $(jq .rays "$W/part$k.json")))
+done
+check "the four masks cover the 1200 pixels once: $rays rays" test "$rays" = 1200
+run volrender composite "$W/part0.png" "$W/part1.png" "$W/part2.png" "$W/part3.png" -o "$W/screen.png"
+expect_status 0
+check "composite = part inside its triangle" $FX pyramidcheck "$W/screen.png" "$W/part0.png" "$W/part1.png" "$W/part2.png" "$W/part3.png" 40 30
+
 case_ "--frame all: one image per frame (%d pattern); the blob moves 3 voxels = 6 pixels per frame"
 $FX stream "$W/stream.nrrd" 4
 $FX series "$W/series.nrrd" 4

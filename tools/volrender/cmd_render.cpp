@@ -339,6 +339,7 @@ void write_images(const RenderArgs& a, const RenderSetup& S, const FrameResult& 
 int run_render(const RenderArgs& a) {
   RenderSetup S = setup(a);
   if (!a.screen_mask.empty()) S.options.pixel_mask = screen_mask(a.screen_mask, a.camera.width, a.camera.height);
+  if (!a.screen_polygon.empty()) S.options.pixel_mask = raycast::polygon_pixel_mask(a.screen_polygon, a.camera.width, a.camera.height);
   formats::VolumeSourceOptions vo;
   vo.field = a.field, vo.component = a.component, vo.frame = a.frame, vo.raw = a.raw;
 

@@ -9,6 +9,7 @@
 
 #include "formats/volume_source/volume_source.hpp"
 #include "raycast/render.hpp"
+#include "raycast/screen_polygon.hpp"
 #include "raycast/transfer_function.hpp"
 #include "raycast/vec3.hpp"
 
@@ -86,6 +87,7 @@ struct RenderArgs {
   std::string mesh;                // opaque triangle mesh composited with depth
   std::array<double, 3> mesh_color{0.9, 0.85, 0.75};
   std::string screen_mask;         // PNG: cast only the pixels it marks
+  std::vector<raycast::ScreenPoint> screen_polygon;  // or: cast only the pixels whose centres it holds
   std::string camera_json, report;
   CameraArgs camera;
 };

@@ -2,6 +2,7 @@
 // look-at, off-axis, stereo and beam-splitter-mirror cameras (docs/volrender.md). Flags
 // only, parsed into the typed options of commands.hpp; the work is in cmd_*.cpp.
 
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
@@ -22,7 +23,7 @@ struct CameraText {
 };
 struct RenderText {
   std::string frame, raw, raw_spacing, bg = "0,0,0", phong = "0.3,0.7,0.2,20", window, iso, iso_color;
-  std::string slice_axis = "z", slice_at, contours, mesh_color = "0.9,0.85,0.75";
+  std::string slice_axis = "z", slice_at, contours, mesh_color = "0.9,0.85,0.75", screen_mask;
 };
 
 void add_camera(CLI::App* s, CameraArgs& c, CameraText& t) {
@@ -131,6 +132,36 @@ std::vector<fest::raycast::IsoLayer> iso_layers(const std::string& isos, const s
   return out;
 }
 
+// --screen-mask: a PNG file, or a polygon 'x,y;x,y;...' in pixel coordinates -- a text
+// with a comma that names no existing file and does not end in .png (docs/volrender.md).
+void screen_mask(RenderArgs& r, const std::string& text) {
+  if (text.empty()) return;
+  const bool png = text.size() >= 4 && (text.compare(text.size() - 4, 4, ".png") == 0 || text.compare(text.size() - 4, 4, ".PNG") == 0);
+  std::error_code ec;
+  if (png || text.find(',') == std::string::npos || std::filesystem::exists(text, ec)) {
+    r.screen_mask = text;
+    return;
+  }
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = text.find(';', begin);
+    const auto v = number_list(text.substr(begin, end == std::string::npos ? std::string::npos : end - begin), 2, 2,
+                               "--screen-mask polygon vertex");
+    r.screen_polygon.push_back({v[0], v[1]});
+    if (end == std::string::npos) break;
+    begin = end + 1;
+  }
+  if (r.screen_polygon.size() < 3)
+    throw fest::usage_error("--screen-mask polygon needs at least 3 vertices x,y;x,y;x,y, got {} ('{}')", r.screen_polygon.size(), text);
+  double twice_area = 0;
+  for (std::size_t k = 0; k < r.screen_polygon.size(); ++k) {
+    const auto& a = r.screen_polygon[k];
+    const auto& b = r.screen_polygon[(k + 1) % r.screen_polygon.size()];
+    twice_area += a.x * b.y - b.x * a.y;
+  }
+  if (twice_area == 0) throw fest::usage_error("--screen-mask polygon has zero area ('{}')", text);
+}
+
 void fill(RenderArgs& r, const RenderText& t) {
   if (t.frame == "all") {
     r.all_frames = true;
@@ -160,6 +191,7 @@ void fill(RenderArgs& r, const RenderText& t) {
   }
   const auto mc = number_list(t.mesh_color, 3, 3, "--mesh-color");
   r.mesh_color = {mc[0], mc[1], mc[2]};
+  screen_mask(r, t.screen_mask);
 }
 
 // --component mag|x|y|z
@@ -240,8 +272,9 @@ int main(int argc, char** argv) {
     s->add_option("--contour-alpha", ra.contour_alpha, "slices: contour opacity")->check(fest::cli::range(0.0, 1.0));
     s->add_option("--mesh", ra.mesh, "Opaque triangle mesh (PLY, OBJ, OFF, STL, Draco; world units) composited with depth");
     s->add_option("--mesh-color", rt.mesh_color, "Mesh colour r,g,b (linear)");
-    s->add_option("--screen-mask", ra.screen_mask,
-                  "PNG of the image's size: cast only the pixels that are neither black nor transparent; the others stay background");
+    s->add_option("--screen-mask", rt.screen_mask,
+                  "M.png of the image's size (cast the pixels neither black nor transparent) or a polygon 'x,y;x,y;...' in pixel "
+                  "coordinates, y down (cast the pixels whose centres are inside, even-odd); the others stay background");
     s->add_option("--camera-json", ra.camera_json, "Write the camera(s) as JSON");
     s->add_option("--report", ra.report, "Write rays, samples, skipped samples and timings as JSON");
     add_camera(s, ra.camera, ct);

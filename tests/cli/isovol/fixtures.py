@@ -24,6 +24,13 @@ their outputs (pure Python: no fest code).
   fixtures.py maskcheck FULL MASKED W H R,G,B
                                         PFMs: marked pixels of MASKED equal FULL bit for bit, the
                                         others are exactly the background R,G,B
+  fixtures.py trianglecheck FULL MASKED W H R,G,B LEG
+                                        PFMs: pixels with centres inside the triangle (0,0),
+                                        (LEG,0), (0,LEG) equal FULL bit for bit, the others are the
+                                        background; prints how many are inside
+  fixtures.py pyramidcheck COMP.png TOP.png RIGHT.png BOTTOM.png LEFT.png W H
+                                        COMP equals, byte for byte, the part whose triangle of the
+                                        image diagonals holds each pixel centre (alpha 0: any colour)
   fixtures.py crop IN.ply OUT.ply X,Y,Z R0 R1
                                         binary PLY of the triangles whose three vertices lie at a
                                         distance in [R0, R1) from (X, Y, Z) (for region-wise
@@ -259,7 +266,8 @@ def png_write(path, w, h, px):
     open(path, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
 
 
-def png_pixel(path, x, y):
+def png_rows(path):
+    """(w, h, channels, rows of bytes) of an 8-bit PNG."""
     import zlib
     data = open(path, "rb").read()
     pos, idat, w = 8, b"", 0
@@ -288,7 +296,63 @@ def png_pixel(path, x, y):
                 line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
         rows.append(line)
         prev = line
+    return w, h, ch, rows
+
+
+def png_pixel(path, x, y):
+    _, _, ch, rows = png_rows(path)
     print(" ".join(str(v) for v in rows[y][x * ch:(x + 1) * ch]))
+
+
+def trianglecheck(full, masked, w, h, bg, leg):
+    """The right triangle (0,0), (leg,0), (0,leg) in pixel coordinates (y down): pixel (i, j)
+    has its centre (i + 1/2, j + 1/2) strictly inside iff i + j + 1 < leg; the centres with
+    i + j + 1 = leg lie on the hypotenuse, which the tie rule (move to +x) leaves outside.
+    So the marked pixels are i + j <= leg - 2, (leg - 1) leg / 2 of them."""
+    wf, hf, ch, a = read_pfm(full)
+    wm, hm, _, b = read_pfm(masked)
+    if (wf, hf, wm, hm) != (w, h, w, h):
+        sys.exit("size")
+    bg = [struct.unpack("<f", struct.pack("<f", float(x)))[0] for x in bg.split(",")]
+    count = 0
+    for y in range(h):
+        row = h - 1 - y
+        for x in range(w):
+            p = (row * w + x) * ch
+            inside = x + y <= leg - 2
+            count += inside
+            want = a[p:p + 3] if inside else tuple(bg)
+            if struct.pack("<3f", *b[p:p + 3]) != struct.pack("<3f", *want):
+                sys.exit("pixel %d %d: %r, expected %r" % (x, y, b[p:p + 3], want))
+    print(count)
+
+
+def pyramidcheck(composite, parts, w, h):
+    """The four triangles of the diagonals of a w x h image (top, right, bottom, left; w, h
+    chosen so that no pixel centre lies on a diagonal): every pixel of the composite equals,
+    byte for byte, the part whose triangle holds its centre. Exact rational arithmetic."""
+    from fractions import Fraction as F
+    cw, chh, cc, crow = png_rows(composite)
+    if (cw, chh) != (w, h):
+        sys.exit("size")
+    rows = [png_rows(p) for p in parts]
+    partial = clear = 0
+    for y in range(h):
+        for x in range(w):
+            u, v = F(2 * x + 1, 2 * w), F(2 * y + 1, 2 * h)   # centre in [0,1]^2, v down
+            if u == v or u + v == 1:
+                sys.exit("centre on a diagonal: choose another size")
+            k = (0 if u > v else 3) if u + v < 1 else (1 if u > v else 2)
+            pw, ph, pc, prow = rows[k]
+            got = bytes(crow[y][x * cc:(x + 1) * cc])
+            want = bytes(prow[y][x * pc:(x + 1) * pc])
+            # a fully transparent pixel (alpha 0) has no colour: composite writes 0, a
+            # --bg none rendering may keep the colour of a trace of opacity
+            if pc != cc or (got != want and not (cc == 4 and got[3] == 0 and want[3] == 0)):
+                sys.exit("pixel %d %d: %r, part %d has %r" % (x, y, got, k, want))
+            partial += cc == 4 and 0 < got[3] < 255
+            clear += cc == 4 and got[3] == 0
+    print("%d pixels, %d partly transparent, %d transparent" % (w * h, partial, clear))
 
 
 def radial(path, centre):
@@ -387,6 +451,10 @@ if __name__ == "__main__":
         mask(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
     elif cmd == "maskcheck":
         maskcheck(sys.argv[2], sys.argv[3], int(sys.argv[4]), int(sys.argv[5]), sys.argv[6])
+    elif cmd == "trianglecheck":
+        trianglecheck(sys.argv[2], sys.argv[3], int(sys.argv[4]), int(sys.argv[5]), sys.argv[6], int(sys.argv[7]))
+    elif cmd == "pyramidcheck":
+        pyramidcheck(sys.argv[2], sys.argv[3:7], int(sys.argv[7]), int(sys.argv[8]))
     elif cmd == "crop":
         crop(sys.argv[2], sys.argv[3], sys.argv[4], float(sys.argv[5]), float(sys.argv[6]))
     else:
