@@ -32,6 +32,29 @@ const char* depth_label(int depth) {
                   format_name_of(f), why);
 }
 
+// The largest sample value of an opaque pixel at this depth.
+double opaque_value(int depth) { return depth == CV_8U ? 255.0 : depth == CV_16U ? 65535.0 : 1.0; }
+
+// For a format without alpha: an alpha channel (the last of 2 or 4) that is opaque at every
+// pixel carries nothing and is dropped; otherwise the image is refused with the count of
+// pixels it would change (nothing is lost silently).
+cv::Mat without_opaque_alpha(const cv::Mat& m, Format f) {
+  const int channels = m.channels();
+  if (channels != 2 && channels != 4) return m;
+  cv::Mat alpha;
+  cv::extractChannel(m, alpha, channels - 1);
+  const double opaque = opaque_value(m.depth());
+  const std::size_t see_through = m.total() - std::size_t(cv::countNonZero(alpha >= opaque));
+  if (see_through > 0)
+    throw bad_input("cannot write a {}-channel {} image as {}: it has an alpha channel, which {} cannot hold, and {} of "
+                    "{} pixels are not opaque; flatten it first or write PNG or TIFF",
+                    channels, depth_label(m.depth()), format_name_of(f), format_name_of(f), see_through, m.total());
+  cv::Mat colour(m.rows, m.cols, CV_MAKETYPE(m.depth(), channels - 1));
+  static constexpr int from_to[] = {0, 0, 1, 1, 2, 2};
+  cv::mixChannels(&m, 1, &colour, 1, from_to, std::size_t(channels - 1));
+  return colour;
+}
+
 }  // namespace
 
 namespace image_detail {
@@ -122,8 +145,9 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::ppm: {
       const int wanted = format == Format::pgm ? 1 : 3;
       if (!integer) refuse(m, format, "PGM/PPM hold 8 or 16-bit integers; use PFM for float");
-      if (channels != wanted) refuse(m, format, format == Format::pgm ? "PGM holds one channel" : "PPM holds RGB");
-      return encode_pnm(m, options.ascii);
+      const cv::Mat colour = without_opaque_alpha(m, format);
+      if (colour.channels() != wanted) refuse(m, format, format == Format::pgm ? "PGM holds one channel" : "PPM holds RGB");
+      return encode_pnm(colour, options.ascii);
     }
     case Format::pam:
       if (!integer) refuse(m, format, "PAM holds 8 or 16-bit integers; use PFM or EXR for float");
@@ -138,12 +162,14 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::tiff:
       if (channels == 2) refuse(m, format, "fest's TIFF writer takes 1, 3 or 4 channels");
       return tiff_codec().encode(m);
-    case Format::jpeg:
-      // Lossy compression has no place in a measurement pipeline (docs/capture.md §3; seed 000 §8.3.1);
-      // only a caller that asks for a quality gets it (texture tiles for display).
-      if (options.jpeg_quality <= 0) refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
-      if (depth != CV_8U || (channels != 1 && channels != 3)) refuse(m, format, "JPEG holds 8-bit grey or RGB");
-      return encode_jpeg(m, std::clamp(options.jpeg_quality, 1, 100));
+    case Format::jpeg: {
+      // Lossy compression has no place in a measurement pipeline (docs/capture.md §3): a
+      // caller that must not be lossy sets jpeg_quality 0 (capture refuses JPEG itself).
+      if (options.jpeg_quality <= 0) refuse(m, format, "this output must not be lossy; use PNG or TIFF");
+      if (depth != CV_8U)
+        refuse(m, format, "JPEG holds 8-bit samples; convert explicitly (resample's --depth 8) or write PNG or TIFF");
+      return encode_jpeg(without_opaque_alpha(m, format), std::clamp(options.jpeg_quality, 1, 100));
+    }
     default:
       throw bad_input("cannot write an image as {}", format_name_of(format));
   }

@@ -26,6 +26,7 @@ struct ImageOutput {
   std::string output = "-";
   std::optional<formats::OutputFormat> to;  // --to / --format; none: -o's extension, else PNG/PFM
   std::optional<OutputDepth> depth;         // none: what the format and the image hold
+  int quality = 95;                         // --quality: JPEG output, 1-100 (formats::default_jpeg_quality)
 };
 
 // --colorspace of resize: what the stored numbers are (automatic: as the file says), or

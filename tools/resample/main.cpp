@@ -34,9 +34,12 @@ CLI::Option* add_format(CLI::App* sub, std::optional<fest::formats::OutputFormat
 
 void add_output(CLI::App* sub, ImageOutput& o) {
   sub->add_option("-o,--output", o.output, "Output file, or - for standard output")->default_val("-");
-  add_format(sub, o.to, "Output format: png pgm ppm pam pfm exr tiff (default: -o extension, else PNG/PFM)");
+  add_format(sub, o.to, "Output format: png jpg pgm ppm pam pfm exr tiff (default: -o extension, else PNG/PFM)");
   fest::cli::enum_words<OutputDepth>(sub->add_option("--depth", o.depth, "Output depth: 8, 16, f16 (EXR half), f32"),
                         {{"8", OutputDepth::u8}, {"16", OutputDepth::u16}, {"f16", OutputDepth::f16}, {"f32", OutputDepth::f32}});
+  sub->add_option("--quality", o.quality, "JPEG output quality, 1 (smallest) to 100 (best)")
+      ->check(fest::cli::range(1, 100))
+      ->default_val(95);
 }
 
 const std::vector<std::pair<std::string, MipFilter>> kMipFilters{
