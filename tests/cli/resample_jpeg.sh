@@ -137,6 +137,24 @@ check "10x5 --width 3 -> 3x2 (1.5 rounds up)" test "$(size "$WORK/r.jpg")" = "3 
 run resample resize "$WORK/ten.pgm" --width 3 --height 3 -o "$WORK/r.png"
 check "both given: exactly 3x3" test "$(size "$WORK/r.png")" = "3 3"
 
+# --- real photographs (scripts/fetch-test-data.sh: matplotlib's grace_hopper.jpg, opencv-doc's
+# aloeL.jpg); skipped when not fetched -------------------------------------------------
+case_ "real JPEG photographs: the issue's command, and fest's decode equals djpeg's"
+for rel in faces/grace_hopper.jpg images/aloeL.jpg; do
+  photo=$(need_testdata "$rel") || { echo "$rel not fetched: skipped"; continue; }
+  read -r pw ph < <(size "$photo")
+  want_h=$(awk -v w="$pw" -v h="$ph" 'BEGIN { printf "%d", int(h * 256 / w + 0.5) }')
+  run resample resize "$photo" --width 256 -o "$WORK/photo_small.jpg"
+  expect_status 0
+  check "$rel ${pw}x$ph --width 256 -> 256x$want_h" test "$(size "$WORK/photo_small.jpg")" = "256 $want_h"
+  if [ $have_djpeg = 1 ]; then
+    check "$rel: djpeg reads fest's output" sh -c "djpeg -pnm '$WORK/photo_small.jpg' | head -c 2 | grep -q P6"
+    djpeg -pnm "$photo" >"$WORK/photo.dj.ppm"
+    "$F" "$photo" --to ppm -o "$WORK/photo.fest.ppm"
+    check "$rel: fest == djpeg" cmp -s <(pixels "$WORK/photo.fest.ppm" "$pw" "$ph") <(pixels "$WORK/photo.dj.ppm" "$pw" "$ph")
+  fi
+done
+
 # --- refusals ---------------------------------------------------------------------------
 case_ "a bad --quality is a usage error"
 for q in 0 101 -5 high; do
