@@ -83,6 +83,9 @@ run resample resize "$WORK/q90.jpg" --width 128 -o "$WORK/small.jpg"
 expect_status 0
 check "128x96 (192 * 128 / 256)" test "$(size "$WORK/small.jpg")" = "128 96"
 check "written as JPEG" test "$(head -c 3 "$WORK/small.jpg" | od -An -tx1 | tr -d ' ')" = ffd8ff
+run resample resize "$WORK/q90.jpg" --height 48 -o "$WORK/small.jpeg"
+expect_status 0
+check ".jpeg is JPEG too, 64x48" test "$(head -c 3 "$WORK/small.jpeg" | od -An -tx1 | tr -d ' ') $(size "$WORK/small.jpeg")" = "ffd8ff 64 48"
 run resample resize "$WORK/q90.jpg" --width 128 -o "$WORK/small.png"
 if [ $have_djpeg = 1 ]; then
   # The JPEG of the resized image against the same resize written losslessly: the PSNR
