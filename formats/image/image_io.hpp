@@ -2,6 +2,7 @@
 // Images: PNG, PGM/PPM/PAM (8/16-bit), PFM, EXR, TIFF; JPEG (8-bit grey or RGB, baseline,
 // EXIF orientation not applied: the pixels come back in stored order).
 
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,10 @@ struct ImageWriteOptions {
   int png_compression = 6; // PNG: zlib level 0-9 (1: several times faster, e.g. capture's raw shots)
   bool png_huffman_only = false;  // PNG: unfiltered rows, zlib Huffman coding only (noisy raw data: faster and smaller)
   int jpeg_quality = default_jpeg_quality;  // JPEG: 1 (smallest) to 100; 0 refuses JPEG (a caller that must not be lossy)
+  // PGM/PPM/JPEG of an image with alpha: composite it over `background` (display values
+  // 0-1, R G B; grey images take its luminance) in linear light instead of refusing it.
+  bool flatten = false;
+  std::array<double, 3> background{1, 1, 1};
 };
 
 // Reads only the header (dimensions, channels, depth) and checks it is plausible:
@@ -45,7 +50,7 @@ Image read_image(std::string_view bytes, Format format);
 // 4 channels as PGM, 16-bit as JPEG) -- convert explicitly instead of silently losing data.
 // An alpha channel that is opaque at every pixel holds nothing and is dropped for the
 // formats without alpha (PGM, PPM, JPEG); any other alpha is refused, with the count of
-// pixels that are not opaque.
+// pixels that are not opaque, unless ImageWriteOptions::flatten asks for compositing.
 std::string write_image(const Image& image, Format format, const ImageWriteOptions& options = {});
 
 nlohmann::json describe_image(const Image& image);

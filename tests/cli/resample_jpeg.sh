@@ -195,6 +195,32 @@ run fconv "$WORK/opaque.pam" -o "$WORK/opaque.ppm"
 expect_status 0
 check "opaque RGBA -> PPM keeps the colours" test "$(tail -c 12 "$WORK/opaque.ppm" | od -An -v -tu1 | tr -s ' ')" = " 255 0 0 0 255 0 0 0 255 255 255 255"
 
+# --flatten: C' = a C + (1 - a) B in linear light, sRGB-encoded and rounded. The half
+# transparent blue pixel (a = 128/255) over white: R = G = srgb(1 - a), B = 255; over
+# black (--background 0,0,0): R = G = 0, B = srgb(a).
+case_ "--flatten and --background composite alpha in linear light"
+srgb() { awk -v l="$1" 'BEGIN { v = l <= 0.0031308 ? 12.92 * l : 1.055 * exp(log(l) / 2.4) - 0.055; printf "%d", int(v * 255 + 0.5) }'; }
+a=$(awk 'BEGIN { print 128 / 255 }')
+half_white=$(srgb "$(awk -v a="$a" 'BEGIN { print 1 - a }')") half_black=$(srgb "$a")
+echo "flatten: over white ($half_white $half_white 255), over black (0 0 $half_black)"
+run fconv "$WORK/rgba.png" --flatten -o "$WORK/flat_w.ppm"
+expect_status 0
+check "over white" test "$(tail -c 12 "$WORK/flat_w.ppm" | od -An -v -tu1 | tr -s ' ')" = " 255 0 0 0 255 0 $half_white $half_white 255 255 255 255"
+run fconv "$WORK/rgba.png" --background 0,0,0 -o "$WORK/flat_b.ppm"
+expect_status 0
+check "over black" test "$(tail -c 12 "$WORK/flat_b.ppm" | od -An -v -tu1 | tr -s ' ')" = " 255 0 0 0 255 0 0 0 $half_black 255 255 255"
+run fconv "$WORK/rgba.png" --flatten -o "$WORK/flat.jpg"
+expect_status 0
+check "JPEG of 3 channels" test "$("$F" --info "$WORK/flat.jpg" | jq .channels)" = 3
+run resample resize "$WORK/rgba.png" --width 4 --flatten -o "$WORK/flat4.jpg"
+expect_status 0
+check "resample --flatten: 4x4 JPEG" test "$(size "$WORK/flat4.jpg")" = "4 4"
+for bad in 0,0 1,2,256 a,b,c; do
+  run fconv "$WORK/rgba.png" --background "$bad" -o "$WORK/bad.jpg"
+  expect_clean_failure 2 fconv
+  expect_stderr_has "--background"
+done
+
 case_ "CMYK and truncated JPEG: one line, exit 3, no output"
 # cjpeg writes no CMYK: a hand-made frame header of 4 components (SOF0, 16x16).
 printf '\377\330\377\300\000\024\010\000\020\000\020\004\001\021\000\002\021\000\003\021\000\004\021\000\377\331' >"$WORK/cmyk.jpg"

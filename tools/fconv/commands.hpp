@@ -2,6 +2,7 @@
 // fconv's jobs (docs/fconv.md), each taking its typed options. main.cpp fills these from
 // flags; everything else in this folder is the fest_fconv_app library.
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -23,6 +24,8 @@ struct ConvertOptions {
   bool compress = false;  // NRRD (gzip) and MHA (zlib) data
   bool half = false;      // EXR half channels
   int quality = 95;       // JPEG output (formats::default_jpeg_quality)
+  bool flatten = false;   // --flatten / --background: alpha composited for PGM/PPM/JPEG output
+  std::array<double, 3> background{1, 1, 1};  // display values 0-1
   std::optional<ScalarType> volume_type;  // volumes: store values as this type
   bool rescale = false;                   // map the value range onto volume_type's
   std::optional<std::size_t> frame;       // volumes: only this frame of a 4-D series

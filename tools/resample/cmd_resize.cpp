@@ -74,7 +74,7 @@ int run_resize(const ResizeArgs& a) {
     const Image out = with_rewording(
         {{"does not take a sub-pixel shift", "does not take --shift"}, {"(edge mode clamp or reflect)", "(--edge clamp or reflect)"}},
         [&] { return run(w, h); });
-    store_image(out, a.out.output, f, depth.half, a.out.quality);
+    store_image(out, a.out.output, f, depth.half, a.out);
     return 0;
   };
   // Raw Netpbm and PFM files stream through the passes a band of rows at a time.

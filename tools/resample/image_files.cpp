@@ -51,7 +51,7 @@ int default_depth(Format f, int image_depth) {
   return image_depth;
 }
 
-void store_image(const Image& image, const std::string& path, Format f, bool half, int quality) {
+void store_image(const Image& image, const std::string& path, Format f, bool half, const ImageOutput& out) {
   if (half && f != Format::exr) throw usage_error("--depth f16 needs EXR output (--to exr)");
   const int d = image.pixels.depth();
   if (f == Format::jpeg && d != CV_8U)
@@ -64,7 +64,9 @@ void store_image(const Image& image, const std::string& path, Format f, bool hal
     throw usage_error("{} holds float samples: use --depth f32 (or leave --depth out)", format_name(f));
   ImageWriteOptions w;
   w.exr_half = half;
-  w.jpeg_quality = quality;
+  w.jpeg_quality = out.quality;
+  w.flatten = out.flatten;
+  w.background = out.background;
   // Encoded completely before anything is written: no partial output on failure.
   const std::string bytes = write_image(image, f, w);
   store_output(path, bytes, false);

@@ -36,8 +36,8 @@ fest::formats::Format output_format(const std::optional<fest::formats::OutputFor
 // (8 when it is float).
 int default_depth(fest::formats::Format f, int image_depth);
 
-// `quality`: JPEG only, 1-100.
+// `out` gives the JPEG quality and the alpha flattening (its path and format are not used).
 void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half,
-                 int quality = 95);
+                 const ImageOutput& out = ImageOutput{});
 
 }  // namespace fest::resample_tool
