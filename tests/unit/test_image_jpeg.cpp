@@ -115,4 +115,23 @@ TEST(ImageJpeg, ReadsOpenCvSampleChessboard) {
   EXPECT_EQ(image.pixels.rows, 480);
 }
 
+// flatten: alpha 0 gives the background itself, alpha 1 the colour itself (the linear-light
+// round trip of an 8-bit code returns the code); a grey image takes the background's
+// Rec. 709 luminance.
+TEST(ImageJpeg, FlattenCompositesOverTheBackground) {
+  cv::Mat rgba(1, 2, CV_8UC4);
+  rgba.at<cv::Vec4b>(0, 0) = {10, 20, 30, 0};
+  rgba.at<cv::Vec4b>(0, 1) = {10, 20, 30, 255};
+  ImageWriteOptions o;
+  o.flatten = true;
+  o.background = {51 / 255.0, 102 / 255.0, 153 / 255.0};
+  const cv::Mat flat = read_image(write_image(Image{rgba}, Format::ppm, o), Format::ppm).pixels;
+  EXPECT_EQ(flat.at<cv::Vec3b>(0, 0), cv::Vec3b(51, 102, 153));
+  EXPECT_EQ(flat.at<cv::Vec3b>(0, 1), cv::Vec3b(10, 20, 30));
+  const cv::Mat ga(1, 1, CV_8UC2, cv::Scalar(0, 0));
+  o.background = {1, 1, 1};
+  EXPECT_EQ(read_image(write_image(Image{ga}, Format::pgm, o), Format::pgm).pixels.at<uchar>(0, 0), 255);
+  EXPECT_NO_THROW(write_image(Image{rgba}, Format::jpeg, o));
+}
+
 }  // namespace
