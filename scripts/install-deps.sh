@@ -60,6 +60,7 @@ TEST_TOOL_PKGS=(
   libmeshoptimizer-dev libcgal-dev   # anchors of tests/bench/bench_decimate (meshopt_simplify, CGAL edge_collapse); built only when found
   netpbm openctm-tools hyperfine   # tests/bench/batch.sh and startup.sh only: netpbm and ctmconv anchors, hyperfine timings
   zzuf                       # tests/fuzz/mutate.sh: seeded bit-flip mutations of every input kind (run by hand)
+  libjpeg-turbo-progs        # cjpeg/djpeg: independent JPEG encoder and decoder of tests/cli/resample_jpeg.sh
 )
 
 # --- arguments ----------------------------------------------------------------

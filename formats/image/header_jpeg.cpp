@@ -1,6 +1,6 @@
 // JPEG (JFIF/Exif) header: a walk over the marker segments up to the frame header
-// (SOFn), which gives the size and the number of components. JPEG is written only when a
-// caller asks for a quality (measurements must not pass through lossy compression).
+// (SOFn), which gives the size and the number of components. The EXIF orientation tag is
+// not applied (pixels come back in stored order, as djpeg writes them).
 #include <cstdint>
 
 #include "core/error.hpp"
@@ -49,6 +49,8 @@ ImageHeader read_jpeg_header(std::string_view bytes) {
       throw bad_input("JPEG header: {}-bit samples (only 8-bit JPEG is supported)", precision);
     if (marker == 0xC3 || marker == 0xC7 || marker == 0xCB || marker == 0xCF)
       throw bad_input("JPEG header: lossless JPEG is not supported");
+    if (h.channels == 4)
+      throw bad_input("JPEG header: 4 components (CMYK or YCCK, which fest does not read; convert to RGB first)");
     if (h.channels != 1 && h.channels != 3)
       throw bad_input("JPEG header: {} components (grey or YCbCr colour supported)", h.channels);
     if (length < 8 + 3 * h.channels) throw bad_input("JPEG header: frame header too short for {} components", h.channels);

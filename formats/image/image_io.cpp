@@ -3,10 +3,14 @@
 #include "formats/image/image_io.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 
 #include <zlib.h>
 
 #include "core/error.hpp"
+#include "core/srgb.hpp"
 #include "formats/image/codec_plugins.hpp"
 #include "formats/image/image_codecs.hpp"
 #include "formats/image/image_headers.hpp"
@@ -30,6 +34,60 @@ const char* depth_label(int depth) {
 [[noreturn]] void refuse(const cv::Mat& m, Format f, const char* why) {
   throw bad_input("cannot write a {}-channel {} image as {}: {}", m.channels(), depth_label(m.depth()),
                   format_name_of(f), why);
+}
+
+// The largest sample value of an opaque pixel at this depth.
+double opaque_value(int depth) { return depth == CV_8U ? 255.0 : depth == CV_16U ? 65535.0 : 1.0; }
+
+// Straight (not premultiplied) colour C with alpha a over the background B, in linear
+// light for sRGB-encoded data: C' = a C + (1 - a) B, then encoded and rounded. Integer
+// samples only (the callers refuse float first).
+template <typename T>
+cv::Mat composite_over(const cv::Mat& m, bool srgb, const std::array<double, 3>& background) {
+  const int colours = m.channels() - 1;
+  const double top = opaque_value(m.depth());
+  const auto to_linear = [srgb](double v) { return srgb ? srgb_to_linear(v) : std::clamp(v, 0.0, 1.0); };
+  const auto to_stored = [srgb](double v) { return srgb ? linear_to_srgb(v) : std::clamp(v, 0.0, 1.0); };
+  double bg[3] = {to_linear(background[0]), to_linear(background[1]), to_linear(background[2])};
+  if (colours == 1) bg[0] = 0.2126 * bg[0] + 0.7152 * bg[1] + 0.0722 * bg[2];  // Rec. 709 luminance
+  cv::Mat out(m.rows, m.cols, CV_MAKETYPE(m.depth(), colours));
+  for (int y = 0; y < m.rows; ++y) {
+    const T* in = m.ptr<T>(y);
+    T* o = out.ptr<T>(y);
+    for (int x = 0; x < m.cols; ++x, in += colours + 1, o += colours) {
+      const double a = in[colours] / top;
+      for (int c = 0; c < colours; ++c)
+        o[c] = T(std::lround(to_stored(a * to_linear(in[c] / top) + (1 - a) * bg[c]) * top));
+    }
+  }
+  return out;
+}
+
+// For a format without alpha: an alpha channel (the last of 2 or 4) that is opaque at every
+// pixel carries nothing and is dropped; otherwise the image is composited over the
+// background when the caller asked (flatten), else refused with the count of pixels it
+// would change (nothing is lost silently).
+cv::Mat without_opaque_alpha(const Image& image, Format f, const ImageWriteOptions& options) {
+  const cv::Mat& m = image.pixels;
+  const int channels = m.channels();
+  if (channels != 2 && channels != 4) return m;
+  cv::Mat alpha;
+  cv::extractChannel(m, alpha, channels - 1);
+  const double opaque = opaque_value(m.depth());
+  const std::size_t see_through = m.total() - std::size_t(cv::countNonZero(alpha >= opaque));
+  if (see_through > 0 && options.flatten) {
+    const bool srgb = image.color_space == ColorSpace::srgb;
+    return m.depth() == CV_8U ? composite_over<std::uint8_t>(m, srgb, options.background)
+                              : composite_over<std::uint16_t>(m, srgb, options.background);
+  }
+  if (see_through > 0)
+    throw bad_input("cannot write a {}-channel {} image as {}: it has an alpha channel, which {} cannot hold, and {} of "
+                    "{} pixels are not opaque; flatten it (--flatten, --background) or write PNG or TIFF",
+                    channels, depth_label(m.depth()), format_name_of(f), format_name_of(f), see_through, m.total());
+  cv::Mat colour(m.rows, m.cols, CV_MAKETYPE(m.depth(), channels - 1));
+  static constexpr int from_to[] = {0, 0, 1, 1, 2, 2};
+  cv::mixChannels(&m, 1, &colour, 1, from_to, std::size_t(channels - 1));
+  return colour;
 }
 
 }  // namespace
@@ -122,8 +180,9 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::ppm: {
       const int wanted = format == Format::pgm ? 1 : 3;
       if (!integer) refuse(m, format, "PGM/PPM hold 8 or 16-bit integers; use PFM for float");
-      if (channels != wanted) refuse(m, format, format == Format::pgm ? "PGM holds one channel" : "PPM holds RGB");
-      return encode_pnm(m, options.ascii);
+      const cv::Mat colour = without_opaque_alpha(image, format, options);
+      if (colour.channels() != wanted) refuse(m, format, format == Format::pgm ? "PGM holds one channel" : "PPM holds RGB");
+      return encode_pnm(colour, options.ascii);
     }
     case Format::pam:
       if (!integer) refuse(m, format, "PAM holds 8 or 16-bit integers; use PFM or EXR for float");
@@ -138,12 +197,14 @@ std::string write_image(const Image& image, Format format, const ImageWriteOptio
     case Format::tiff:
       if (channels == 2) refuse(m, format, "fest's TIFF writer takes 1, 3 or 4 channels");
       return tiff_codec().encode(m);
-    case Format::jpeg:
-      // Lossy compression has no place in a measurement pipeline (docs/capture.md §3; seed 000 §8.3.1);
-      // only a caller that asks for a quality gets it (texture tiles for display).
-      if (options.jpeg_quality <= 0) refuse(m, format, "fest reads JPEG but writes no lossy images; use PNG or TIFF");
-      if (depth != CV_8U || (channels != 1 && channels != 3)) refuse(m, format, "JPEG holds 8-bit grey or RGB");
-      return encode_jpeg(m, std::clamp(options.jpeg_quality, 1, 100));
+    case Format::jpeg: {
+      // Lossy compression has no place in a measurement pipeline (docs/capture.md §3): a
+      // caller that must not be lossy sets jpeg_quality 0 (capture refuses JPEG itself).
+      if (options.jpeg_quality <= 0) refuse(m, format, "this output must not be lossy; use PNG or TIFF");
+      if (depth != CV_8U)
+        refuse(m, format, "JPEG holds 8-bit samples; convert explicitly (resample's --depth 8) or write PNG or TIFF");
+      return encode_jpeg(without_opaque_alpha(image, format, options), std::clamp(options.jpeg_quality, 1, 100));
+    }
     default:
       throw bad_input("cannot write an image as {}", format_name_of(format));
   }

@@ -68,4 +68,18 @@ rc=$?
 expect_status 0
 check "Wuson.ply untouched" test "$(sha256sum <"$scans/Wuson.ply")" = "$(sha256sum <"$FEST_FIXTURES/mesh/tetra_colors_normals.ply")"
 
+# The default RESIZE_FLAGS (--width 256): the 4x2 ramp becomes 256 x round(2 * 256 / 4)
+# = 256x128; RESAMPLE_FLAGS reaches the command (a lower --quality, a smaller file).
+case_ "the resize rule: --width 256 keeps the aspect ratio, JPEG output, RESAMPLE_FLAGS"
+(cd "$WORK" && make fest-out/resized/scans/ramp.jpg >"$out" 2>"$err")
+rc=$?
+expect_status 0
+check "256x128 JPEG" test "$("$FEST_BIN/fconv" --info "$WORK/fest-out/resized/scans/ramp.jpg" | jq -c '[.width,.height,.format]')" = '[256,128,"jpeg"]'
+big=$(wc -c <"$WORK/fest-out/resized/scans/ramp.jpg")
+rm "$WORK/fest-out/resized/scans/ramp.jpg"
+(cd "$WORK" && make fest-out/resized/scans/ramp.jpg RESAMPLE_FLAGS='--quality 20' >"$out" 2>"$err")
+rc=$?
+expect_status 0
+check "--quality 20 from RESAMPLE_FLAGS gives a smaller file" test "$(wc -c <"$WORK/fest-out/resized/scans/ramp.jpg")" -lt "$big"
+
 finish

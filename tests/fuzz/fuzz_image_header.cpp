@@ -37,7 +37,8 @@ void exercise(std::string_view bytes, Format format) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  for (Format f : {Format::png, Format::pgm, Format::ppm, Format::pam, Format::pfm, Format::exr, Format::tiff})
+  for (Format f : {Format::png, Format::pgm, Format::ppm, Format::pam, Format::pfm, Format::exr, Format::tiff,
+                   Format::jpeg})
     exercise(bytes, f);
   return 0;
 }

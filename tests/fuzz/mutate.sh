@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # mutate.sh -- the zzuf sweep of issue 31, run by hand (not part of the suite).
 #
-# For every input kind fest reads (VTU, legacy VTK, PLY, OBJ, OFF, STL, Draco, PNG, PFM,
+# For every input kind fest reads (VTU, legacy VTK, PLY, OBJ, OFF, STL, Draco, PNG, JPEG, PFM,
 # EXR, TIFF, NIfTI, NRRD, MetaImage, .ebm, .tlp, .ltx, .mmb, scene JSON) it takes seed
 # files (from tests/data/ and small ones the tools write themselves), makes N variants of
 # them -- zzuf bit flips at ratios 1e-5 .. 0.05 with a fixed seed per variant, and every
@@ -37,7 +37,7 @@
 # the tool instead of taking the machine; the run never touches FEST_BIN.
 set -u
 
-ALL_KINDS="vtu vtuedit vtk ply obj off stl drc png pfm exr tiff nifti nrrd mha ebm tlp ltx mmb json"
+ALL_KINDS="vtu vtuedit vtk ply obj off stl drc png jpeg pfm exr tiff nifti nrrd mha ebm tlp ltx mmb json"
 RATIOS=(1e-5 3e-5 1e-4 3e-4 1e-3 3e-3 0.01 0.02 0.05)
 TRUNC_PERCENT=(0 1 3 10 25 50 75 90 97 99)
 
@@ -67,6 +67,8 @@ commands_for() { # kind -> lines "name<TAB>command" with {in} and {out} placehol
             ebdecode "$B/ebdecode {in} -o {out}.ply" ;;
     png|exr|tiff|pfm)   # TIFF holds every sample type fest reads (8/16-bit, float)
           printf '%s\t%s\n' info "$B/fconv --info {in}" totiff "$B/fconv {in} --to tiff -o {out}.tiff" ;;
+    jpeg) printf '%s\t%s\n' info "$B/fconv --info {in}" topng "$B/fconv {in} --to png -o {out}.png" \
+            resize "$B/resample resize {in} --width 7 -o {out}.jpg" ;;
     nifti|mha)
           printf '%s\t%s\n' info "$B/fconv --info {in}" tonrrd "$B/fconv {in} --to nrrd -o {out}.nrrd" ;;
     nrrd) printf '%s\t%s\n' info "$B/fconv --info {in}" tonii "$B/fconv {in} --to nii -o {out}.nii" ;;
@@ -247,6 +249,9 @@ add drc "$G/cube.drc" "$G/tetra.drc"
 q "$B/fconv" "$D/image/comments_ascii.pgm" --to png -o "$G/grey.png"
 q "$B/fconv" "$D/image/pattern_raw.ppm" --to png -o "$G/colour.png"
 add png "$G/grey.png" "$G/colour.png"
+q "$B/fconv" "$D/image/comments_ascii.pgm" --to jpg -o "$G/grey.jpg"
+q "$B/fconv" "$D/image/pattern_raw.ppm" --to jpg --quality 80 -o "$G/colour.jpg"
+add jpeg "$G/grey.jpg" "$G/colour.jpg"
 add pfm "$D/image/colour_little_endian.pfm" "$D/image/grey_big_endian.pfm"
 q "$B/fconv" "$D/image/colour_little_endian.pfm" --to exr -o "$G/colour.exr"
 q "$B/fconv" "$D/image/grey_little_endian.pfm" --to exr --half -o "$G/grey_half.exr"

@@ -1,6 +1,7 @@
 // JPEG reading: the header walk gives size and components before anything is decoded,
-// malformed headers are bad input, and writing JPEG is refused unless a quality is given
-// (test_image_codecs.cpp checks the writer).
+// malformed headers are bad input; what the writer refuses (16 bits, alpha that is not
+// opaque, quality 0) and the alpha it drops (opaque everywhere). test_image_codecs.cpp
+// checks the writer's bytes.
 
 #include <string>
 #include <vector>
@@ -74,8 +75,35 @@ TEST(ImageJpeg, MalformedHeadersAreBadInput) {
   test::expect_bad_input([&] { read_image(corrupt + std::string(64, '\0'), Format::jpeg); }, "JPEG");
 }
 
-TEST(ImageJpeg, WritingIsRefused) {
-  test::expect_bad_input([] { write_image(Image{cv::Mat(4, 4, CV_8U, cv::Scalar(1))}, Format::jpeg); }, "lossy");
+TEST(ImageJpeg, CmykIsRefusedByName) {
+  const std::string soi("\xff\xd8", 2);
+  const std::string sof4("\xff\xc0\x00\x14\x08\x00\x10\x00\x10\x04\x01\x11\x00\x02\x11\x00\x03\x11\x00\x04\x11\x00", 22);
+  test::expect_bad_input([&] { read_image_header(soi + sof4, Format::jpeg); }, "CMYK");
+}
+
+TEST(ImageJpeg, WriterRefusesWhatItWouldLose) {
+  const cv::Mat grey(4, 4, CV_8U, cv::Scalar(1));
+  ImageWriteOptions lossless;
+  lossless.jpeg_quality = 0;
+  test::expect_bad_input([&] { write_image(Image{grey}, Format::jpeg, lossless); }, "lossy");
+  test::expect_bad_input([] { write_image(Image{cv::Mat(4, 4, CV_16U, cv::Scalar(1))}, Format::jpeg); }, "8-bit");
+  test::expect_bad_input([] { write_image(Image{cv::Mat(4, 4, CV_32F, cv::Scalar(1))}, Format::jpeg); }, "8-bit");
+  // One pixel of 16 half transparent: refused with the count, for JPEG and PPM alike.
+  cv::Mat rgba(4, 4, CV_8UC4, cv::Scalar(10, 20, 30, 255));
+  rgba.at<cv::Vec4b>(2, 1)[3] = 128;
+  test::expect_bad_input([&] { write_image(Image{rgba}, Format::jpeg); }, "1 of 16 pixels are not opaque");
+  test::expect_bad_input([&] { write_image(Image{rgba}, Format::ppm); }, "alpha channel");
+  cv::Mat grey_alpha(4, 4, CV_8UC2, cv::Scalar(10, 0));
+  test::expect_bad_input([&] { write_image(Image{grey_alpha}, Format::jpeg); }, "16 of 16 pixels");
+}
+
+TEST(ImageJpeg, OpaqueAlphaIsDroppedAsItHoldsNothing) {
+  const cv::Mat rgba(4, 4, CV_8UC4, cv::Scalar(10, 20, 30, 255));
+  const cv::Mat rgb(4, 4, CV_8UC3, cv::Scalar(10, 20, 30));
+  EXPECT_EQ(write_image(Image{rgba}, Format::jpeg), write_image(Image{rgb}, Format::jpeg));
+  EXPECT_EQ(write_image(Image{rgba}, Format::ppm), write_image(Image{rgb}, Format::ppm));
+  const cv::Mat ga(4, 4, CV_16UC2, cv::Scalar(1000, 65535));
+  EXPECT_EQ(write_image(Image{ga}, Format::pgm), write_image(Image{cv::Mat(4, 4, CV_16U, cv::Scalar(1000))}, Format::pgm));
 }
 
 TEST(ImageJpeg, ReadsOpenCvSampleChessboard) {
@@ -85,6 +113,25 @@ TEST(ImageJpeg, ReadsOpenCvSampleChessboard) {
   const Image image = read_image(bytes, Format::jpeg);
   EXPECT_EQ(image.pixels.cols, 640);
   EXPECT_EQ(image.pixels.rows, 480);
+}
+
+// flatten: alpha 0 gives the background itself, alpha 1 the colour itself (the linear-light
+// round trip of an 8-bit code returns the code); a grey image takes the background's
+// Rec. 709 luminance.
+TEST(ImageJpeg, FlattenCompositesOverTheBackground) {
+  cv::Mat rgba(1, 2, CV_8UC4);
+  rgba.at<cv::Vec4b>(0, 0) = {10, 20, 30, 0};
+  rgba.at<cv::Vec4b>(0, 1) = {10, 20, 30, 255};
+  ImageWriteOptions o;
+  o.flatten = true;
+  o.background = {51 / 255.0, 102 / 255.0, 153 / 255.0};
+  const cv::Mat flat = read_image(write_image(Image{rgba}, Format::ppm, o), Format::ppm).pixels;
+  EXPECT_EQ(flat.at<cv::Vec3b>(0, 0), cv::Vec3b(51, 102, 153));
+  EXPECT_EQ(flat.at<cv::Vec3b>(0, 1), cv::Vec3b(10, 20, 30));
+  const cv::Mat ga(1, 1, CV_8UC2, cv::Scalar(0, 0));
+  o.background = {1, 1, 1};
+  EXPECT_EQ(read_image(write_image(Image{ga}, Format::pgm, o), Format::pgm).pixels.at<uchar>(0, 0), 255);
+  EXPECT_NO_THROW(write_image(Image{rgba}, Format::jpeg, o));
 }
 
 }  // namespace

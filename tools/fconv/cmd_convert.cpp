@@ -29,6 +29,8 @@ std::string convert(const Input& in, Format to, const ConvertOptions& opt) {
       w.ascii = opt.ascii;
       w.exr_half = opt.half;
       w.jpeg_quality = opt.quality;
+      w.flatten = opt.flatten;
+      w.background = opt.background;
       return write_image(parse(in, read_image), to, w);
     }
     case Kind::volume: throw usage_error("internal: volumes are converted by convert_volume");

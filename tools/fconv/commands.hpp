@@ -24,7 +24,9 @@ struct ConvertOptions {
   bool ascii = false;     // text variant where the format has one
   bool compress = false;  // NRRD (gzip) and MHA (zlib) data
   bool half = false;      // EXR half channels
-  int quality = 95;       // JPEG output
+  int quality = 95;       // JPEG output (formats::default_jpeg_quality)
+  bool flatten = false;   // --flatten / --background: alpha composited for PGM/PPM/JPEG output
+  std::array<double, 3> background{1, 1, 1};  // display values 0-1
   std::optional<ScalarType> volume_type;  // volumes: store values as this type
   bool rescale = false;                   // map the value range onto volume_type's
   std::optional<std::size_t> frame;       // volumes: only this frame of a 4-D series

@@ -47,6 +47,15 @@ int main(int argc, char** argv) {
   app.add_option("--quality", opt.quality, "JPEG output quality, 1 (smallest) to 100 (best)")
       ->check(fest::cli::range(1, 100))
       ->default_val(95);
+  app.add_flag("--flatten", opt.flatten, "PGM/PPM/JPEG output: composite alpha over --background (default white)");
+  app.add_option_function<std::string>(
+      "--background",
+      [&opt](const std::string& text) {
+        const auto rgb = fest::cli::integer_list(text, 3, 3, "--background", 0, 255);
+        for (int c = 0; c < 3; ++c) opt.background[std::size_t(c)] = double(rgb[std::size_t(c)]) / 255.0;
+        opt.flatten = true;
+      },
+      "Background R,G,B (sRGB codes 0-255) that --flatten composites over; implies --flatten");
   app.add_option("--draco-bits", opt.draco_bits, "Draco position quantization bits (0 = lossless)")
       ->check(fest::cli::range(0, 30));
   app.add_option("--draco-speed", opt.draco_speed, "Draco encoder speed, 0 (smallest) to 10 (fastest)")

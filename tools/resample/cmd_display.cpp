@@ -26,7 +26,7 @@ int run_display(const DisplayArgs& a) {
   const auto f = output_format(a.out.to, a.out.output, image_depth);
   o.output_depth = depth.cv_depth >= 0 ? depth.cv_depth : default_depth(f, m.depth());
   const Image out = resize(in.image, m.cols * a.factor, m.rows * a.factor, o);
-  store_image(out, a.out.output, f, depth.half);
+  store_image(out, a.out.output, f, depth.half, a.out);
   return 0;
 }
 

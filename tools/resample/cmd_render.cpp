@@ -40,7 +40,7 @@ int run_render(const RenderArgs& a) {
   enc.decode_srgb = depth.cv_depth != CV_32F && a.colorspace == RenderColor::srgb;
   out.pixels = from_working(img, depth.cv_depth, enc);
   if (enc.decode_srgb) out.color_space = ColorSpace::srgb;
-  store_image(out, a.out.output, f, depth.half);
+  store_image(out, a.out.output, f, depth.half, a.out);
   return 0;
 }
 

@@ -1,4 +1,5 @@
 // resample resize: an image through the separable resize of lib/sampling.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -33,8 +34,11 @@ std::pair<int, int> target_size(const ResizeArgs& a, int w_in, int h_in) {
   }
   if (a.width < 0 || a.height < 0) throw usage_error("--width/--height must be positive");
   if (a.width > 0 && a.height > 0) return checked_size(a.width, a.height, "--width/--height");
-  if (a.width > 0) return checked_size(a.width, static_cast<double>(h_in) * a.width / w_in, "--width");
-  return checked_size(static_cast<double>(w_in) * a.height / h_in, a.height, "--height");
+  // The side left out keeps the aspect ratio, rounded (halves away from zero) and at
+  // least 1: --width 1 of a 101x37 image is 1x1, not an error about a side of 0.37.
+  const auto kept = [](double side) { return std::max(1.0, std::round(side)); };
+  if (a.width > 0) return checked_size(a.width, kept(static_cast<double>(h_in) * a.width / w_in), "--width");
+  return checked_size(kept(static_cast<double>(w_in) * a.height / h_in), a.height, "--height");
 }
 
 }  // namespace
@@ -70,7 +74,7 @@ int run_resize(const ResizeArgs& a) {
     const Image out = with_rewording(
         {{"does not take a sub-pixel shift", "does not take --shift"}, {"(edge mode clamp or reflect)", "(--edge clamp or reflect)"}},
         [&] { return run(w, h); });
-    store_image(out, a.out.output, f, depth.half);
+    store_image(out, a.out.output, f, depth.half, a.out);
     return 0;
   };
   // Raw Netpbm and PFM files stream through the passes a band of rows at a time.

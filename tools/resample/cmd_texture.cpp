@@ -76,7 +76,7 @@ int run_texture(const TextureArgs& a) {
   enc.decode_srgb = out_depth != CV_32F && a.aniso_mask <= 0;  // integer images hold sRGB codes
   out.pixels = from_working(screen, out_depth, enc);
   out.color_space = enc.decode_srgb ? ColorSpace::srgb : ColorSpace::linear;
-  store_image(out, a.out.output, f, depth.half);
+  store_image(out, a.out.output, f, depth.half, a.out);
   return 0;
 }
 

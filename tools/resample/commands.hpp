@@ -2,6 +2,7 @@
 // The subcommands of resample (docs/resample.md): option structs filled by main.cpp's CLI11
 // parser, and one function per subcommand that wires formats -> lib/sampling -> output.
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -26,6 +27,9 @@ struct ImageOutput {
   std::string output = "-";
   std::optional<formats::OutputFormat> to;  // --to / --format; none: -o's extension, else PNG/PFM
   std::optional<OutputDepth> depth;         // none: what the format and the image hold
+  int quality = 95;                         // --quality: JPEG output, 1-100 (formats::default_jpeg_quality)
+  bool flatten = false;                     // --flatten / --background: alpha composited for PGM/PPM/JPEG
+  std::array<double, 3> background{1, 1, 1};  // display values 0-1 (--background codes / 255)
 };
 
 // --colorspace of resize: what the stored numbers are (automatic: as the file says), or

@@ -46,13 +46,17 @@ int default_depth(Format f, int image_depth) {
   const bool float_format = f == Format::pfm || f == Format::exr;
   if (float_format) return CV_32F;
   if (f == Format::tiff) return image_depth;  // TIFF holds 8, 16 bits and float alike
+  if (f == Format::jpeg) return CV_8U;        // baseline JPEG holds 8 bits only
   if (image_depth == CV_32F) return CV_8U;
   return image_depth;
 }
 
-void store_image(const Image& image, const std::string& path, Format f, bool half) {
+void store_image(const Image& image, const std::string& path, Format f, bool half, const ImageOutput& out) {
   if (half && f != Format::exr) throw usage_error("--depth f16 needs EXR output (--to exr)");
   const int d = image.pixels.depth();
+  if (f == Format::jpeg && d != CV_8U)
+    throw usage_error("JPEG holds 8-bit samples: use --depth 8 (or leave --depth out), or PNG or TIFF for {}",
+                      d == CV_16U ? "16 bits" : "float");
   if (d == CV_32F && (f == Format::png || f == Format::pgm || f == Format::ppm || f == Format::pam))
     throw usage_error("{} cannot hold float samples: use --depth 8 or 16, or a float format (pfm, exr, tiff)",
                       format_name(f));
@@ -60,6 +64,9 @@ void store_image(const Image& image, const std::string& path, Format f, bool hal
     throw usage_error("{} holds float samples: use --depth f32 (or leave --depth out)", format_name(f));
   ImageWriteOptions w;
   w.exr_half = half;
+  w.jpeg_quality = out.quality;
+  w.flatten = out.flatten;
+  w.background = out.background;
   // Encoded completely before anything is written: no partial output on failure.
   const std::string bytes = write_image(image, f, w);
   store_output(path, bytes, false);

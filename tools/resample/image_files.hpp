@@ -32,9 +32,12 @@ fest::formats::Format output_format(const std::optional<fest::formats::OutputFor
                                     int cv_depth);
 
 // The depth a format can hold when --depth was not given: float formats get f32, TIFF
-// keeps the image's depth, integer formats keep an integer depth (8 when it is float).
+// keeps the image's depth, JPEG gets 8 bits, other integer formats keep an integer depth
+// (8 when it is float).
 int default_depth(fest::formats::Format f, int image_depth);
 
-void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half);
+// `out` gives the JPEG quality and the alpha flattening (its path and format are not used).
+void store_image(const fest::Image& image, const std::string& path, fest::formats::Format f, bool half,
+                 const ImageOutput& out = ImageOutput{});
 
 }  // namespace fest::resample_tool

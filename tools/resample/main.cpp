@@ -14,6 +14,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/enum_option.hpp"
+#include "cli/number_list.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/reworded_error.hpp"
@@ -34,9 +35,21 @@ CLI::Option* add_format(CLI::App* sub, std::optional<fest::formats::OutputFormat
 
 void add_output(CLI::App* sub, ImageOutput& o) {
   sub->add_option("-o,--output", o.output, "Output file, or - for standard output")->default_val("-");
-  add_format(sub, o.to, "Output format: png pgm ppm pam pfm exr tiff (default: -o extension, else PNG/PFM)");
+  add_format(sub, o.to, "Output format: png jpg pgm ppm pam pfm exr tiff (default: -o extension, else PNG/PFM)");
   fest::cli::enum_words<OutputDepth>(sub->add_option("--depth", o.depth, "Output depth: 8, 16, f16 (EXR half), f32"),
                         {{"8", OutputDepth::u8}, {"16", OutputDepth::u16}, {"f16", OutputDepth::f16}, {"f32", OutputDepth::f32}});
+  sub->add_option("--quality", o.quality, "JPEG output quality, 1 (smallest) to 100 (best)")
+      ->check(fest::cli::range(1, 100))
+      ->default_val(95);
+  sub->add_flag("--flatten", o.flatten, "PGM/PPM/JPEG output: composite alpha over --background (default white)");
+  sub->add_option_function<std::string>(
+      "--background",
+      [&o](const std::string& text) {
+        const auto rgb = fest::cli::integer_list(text, 3, 3, "--background", 0, 255);
+        for (int c = 0; c < 3; ++c) o.background[std::size_t(c)] = double(rgb[std::size_t(c)]) / 255.0;
+        o.flatten = true;
+      },
+      "Background R,G,B (sRGB codes 0-255) that --flatten composites over; implies --flatten");
 }
 
 const std::vector<std::pair<std::string, MipFilter>> kMipFilters{
