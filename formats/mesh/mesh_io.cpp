@@ -27,6 +27,7 @@ Mesh read_mesh(std::string_view bytes, Format format) {
     case Format::drc: return read_drc(bytes);
     default: break;
   }
+  if (read_only_scene_format(format)) return read_assimp(bytes, format);
   throw bad_input("{} is not a mesh format", format_name(format));
 }
 
