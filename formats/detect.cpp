@@ -51,6 +51,13 @@ constexpr FormatRow kFormats[] = {
     {Format::csv, Kind::table, "csv", ".csv", ""},
     {Format::tsv, Kind::table, "tsv", ".tsv", "tab"},
     {Format::json, Kind::json, "json", ".json", ""},
+    {Format::gltf, Kind::mesh, "gltf", ".gltf", ""},
+    {Format::glb, Kind::mesh, "glb", ".glb", ""},
+    {Format::dae, Kind::mesh, "dae", ".dae", "collada"},
+    {Format::fbx, Kind::mesh, "fbx", ".fbx", ""},
+    {Format::threeds, Kind::mesh, "3ds", ".3ds", ""},
+    {Format::xfile, Kind::mesh, "x", ".x", ""},
+    {Format::lwo, Kind::mesh, "lwo", ".lwo", "lightwave"},
 };
 
 const FormatRow& row(Format f) {
@@ -252,6 +259,36 @@ const char* kind_name(Kind k) noexcept {
 }
 
 const char* format_name(Format f) noexcept { return row(f).name; }
+
+bool read_only_scene_format(Format f) noexcept { return f >= Format::gltf && f <= Format::lwo; }
+
+namespace {
+
+// The scene formats assimp reads, by their signatures: GLB "glTF" version 2; FBX's
+// binary magic or its ascii header comment; DirectX "xof 03"; LightWave's IFF FORM;
+// 3DS's main chunk 0x4D4D whose length is the file's, followed by a version (0x0002) or
+// editor (0x3D3D) chunk. Text glTF and COLLADA are recognised among JSON and XML.
+std::optional<Format> scene_signature(std::string_view b) {
+  if (b.size() >= 12 && starts_with(b, "glTF") && le32(b, 4) == 2) return Format::glb;
+  if (starts_with(b, std::string_view("Kaydara FBX Binary  \0", 21)) || starts_with(b, "; FBX ")) return Format::fbx;
+  if (starts_with(b, "xof 03")) return Format::xfile;
+  if (b.size() >= 12 && starts_with(b, "FORM") &&
+      (b.substr(8, 4) == "LWO2" || b.substr(8, 4) == "LWOB" || b.substr(8, 4) == "LWLO"))
+    return Format::lwo;
+  if (b.size() >= 16 && static_cast<unsigned char>(b[0]) == 0x4D && static_cast<unsigned char>(b[1]) == 0x4D &&
+      le32(b, 2) == b.size()) {
+    const unsigned next = static_cast<unsigned char>(b[6]) | (static_cast<unsigned char>(b[7]) << 8);
+    if (next == 0x0002 || next == 0x3D3D) return Format::threeds;
+  }
+  return std::nullopt;
+}
+
+// A JSON document with glTF's required "asset" object and geometry ("meshes").
+bool is_gltf_json(std::string_view text) {
+  return text.find("\"asset\"") != std::string_view::npos && text.find("\"meshes\"") != std::string_view::npos;
+}
+
+}  // namespace
 const char* format_extension(Format f) noexcept { return row(f).extension; }
 
 Format detect_format(std::string_view b, const std::string& where) {
@@ -264,6 +301,7 @@ Format detect_format(std::string_view b, const std::string& where) {
     return Format::tiff;
   if (starts_with(b, "\xff\xd8\xff")) return Format::jpeg;
   if (starts_with(b, "DRACO")) return Format::drc;
+  if (const std::optional<Format> scene = scene_signature(b)) return *scene;
   if (starts_with(b, "NRRD000")) return Format::nrrd;
   if (const std::optional<Format> nifti = nifti_family(b); nifti && *nifti != Format::analyze) return *nifti;
   if (starts_with(b, "CDF\x01") || starts_with(b, "CDF\x02"))
@@ -296,8 +334,12 @@ Format detect_format(std::string_view b, const std::string& where) {
   if (starts_with(b, "solid") && b.substr(0, 1024).find("facet") != std::string_view::npos) return Format::stl;
   if (starts_with(b, "solid") && b.size() < 1024 && b.find("endsolid") != std::string_view::npos)
     return Format::stl;  // an empty ascii STL: still an STL (the reader reports it)
+  if ((starts_with(text, "<?xml") || starts_with(text, "<COLLADA")) &&
+      text.substr(0, 4096).find("<COLLADA") != std::string_view::npos)
+    return Format::dae;
   if (starts_with(text, "<?xml") || starts_with(text, "<VTKFile")) return detect_xml(text, where);
   if (is_metaimage(b)) return Format::mha;
+  if (!text.empty() && text.front() == '{' && is_gltf_json(text)) return Format::gltf;
   if (!text.empty() && (text.front() == '{' || text.front() == '[')) return Format::json;
   if (is_off(b)) return Format::off;
   if (is_obj(b)) return Format::obj;
@@ -319,6 +361,8 @@ OutputFormat output_format_from_name(std::string_view name_in) {
   if (name == "mgz") return OutputFormat{Format::mgh, true};  // FreeSurfer's gzip-compressed MGH
   for (const FormatRow& r : kFormats) {
     if (name_matches(r, name)) {
+      if (read_only_scene_format(r.format))
+        throw usage_error("fest reads {} (through assimp) but does not write it", r.name);
       out.format = r.format;
       return out;
     }
@@ -340,7 +384,11 @@ OutputFormat output_format_from_path(std::string_view path) {
   std::string ext = lowered.substr(dot + 1);
   if (ext == "mgz" && !gz) return OutputFormat{Format::mgh, true};
   for (const FormatRow& r : kFormats) {
-    if (name_matches(r, ext)) return OutputFormat{r.format, gz};
+    if (name_matches(r, ext)) {
+      if (read_only_scene_format(r.format))
+        throw usage_error("fest reads {} (through assimp) but does not write it ({})", r.name, std::string(path));
+      return OutputFormat{r.format, gz};
+    }
   }
   throw usage_error("unknown output extension '.{}' ({}); use --to to name the format", ext, std::string(path));
 }

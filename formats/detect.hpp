@@ -20,7 +20,14 @@ enum class Format {
   vtu, vti, vtp, vtk, vts,
   // tables and documents
   csv, tsv, json,
+  // meshes read (not written) through the assimp plugin, loaded only for them
+  // (formats/mesh/assimp_format.cpp): glTF 2 (text and binary), COLLADA, FBX, 3DS,
+  // DirectX .x, LightWave
+  gltf, glb, dae, fbx, threeds, xfile, lwo,
 };
+
+// True for the formats fest reads through assimp and does not write.
+bool read_only_scene_format(Format f) noexcept;
 
 Kind kind_of(Format f) noexcept;
 const char* kind_name(Kind k) noexcept;     // "mesh", "image", ...

@@ -85,6 +85,12 @@ assimp-testmodels usr/share/assimp/models/OBJ/testline.obj meshes/assimp/testlin
 assimp-testmodels usr/share/assimp/models/OBJ/testpoints.obj meshes/assimp/testpoints.obj
 assimp-testmodels usr/share/assimp/models/OBJ/testmixed.obj meshes/assimp/testmixed.obj
 assimp-testmodels usr/share/assimp/models/PLY/Wuson.ply meshes/assimp/Wuson.ply
+assimp-testmodels usr/share/assimp/models/3DS/test1.3ds meshes/assimp/test1.3ds
+assimp-testmodels usr/share/assimp/models/Collada/duck.dae meshes/assimp/duck.dae
+assimp-testmodels usr/share/assimp/models/FBX/box.fbx meshes/assimp/box.fbx
+assimp-testmodels usr/share/assimp/models/X/test.x meshes/assimp/test.x
+assimp-testmodels usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb meshes/assimp/BoxTextured.glb
+assimp-testmodels usr/share/assimp/models/glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf meshes/assimp/BoxTextured.gltf
 invesalius-examples usr/share/doc/invesalius-examples/examples/Cranium.inv3 volumes/Cranium.inv3
 EOF
 )

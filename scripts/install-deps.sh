@@ -18,6 +18,7 @@ BUILD_PKGS=(
   libeigen3-dev         # Eigen 3.4.0  find_package(Eigen3)  -> Eigen3::Eigen
   libopenmesh-dev       # OpenMesh 9.0 find_package(OpenMesh) -> OpenMeshCore OpenMeshTools
   libdraco-dev          # Draco 1.5.5  find_package(draco)   -> draco::draco
+  libassimp-dev         # assimp 5.2.5 find_package(assimp)  -> assimp::assimp (glTF/DAE/FBX/3DS input, plugin module)
   libopencv-dev         # OpenCV 4.6.0 find_package(OpenCV)  -> opencv_core ...
   libopenexr-dev        # OpenEXR 3.1.5 find_package(OpenEXR) -> OpenEXR::OpenEXR
   libvtk9-dev           # VTK 9.1.0    find_package(VTK)     -> VTK::<Module>

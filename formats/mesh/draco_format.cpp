@@ -3,13 +3,17 @@
 // Encoding: lossless (position bits 0) uses sequential coding with no quantization,
 // which keeps vertex and face order and stores positions as float32 unless float32 would
 // lose precision the input had (then float64, as PLY does; see CoordinatePrecision);
-// quantized output lets Draco choose its method from the speed.
+// quantized output lets Draco choose its method from the speed (Edgebreaker below 10),
+// and quantizes normals and texture coordinates as draco_encoder does (draco_normal_bits,
+// draco_texcoord_bits; 0 = that attribute unquantized), so that equal settings give
+// draco_encoder's file sizes.
 // Polygons are written as fans (Draco holds triangles); face colours are not kept.
 
 #include <cstring>
 #include <memory>
 
 #include <draco/compression/decode.h>
+#include <draco/draco_features.h>
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
 #include <draco/point_cloud/point_cloud.h>
@@ -169,8 +173,10 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
       attribute->SetAttributeValue(draco::AttributeValueIndex(v.idx()), value);
     }
   }
+  // Quantized normals are float32 to Draco's octahedral coder whatever their precision.
+  const bool quantize_normals = !lossless && options.draco_normal_bits > 0;
   if (mesh.has_vertex_normals()) {
-    if (write_normals_as_float(mesh, options.precision)) {
+    if (quantize_normals || write_normals_as_float(mesh, options.precision)) {
       int id = add_attribute<float>(*cloud, draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32, n);
       set_values<float>(*cloud, id, mesh, 3, [&](Mesh::VertexHandle v) { return mesh.normal(v); });
     } else {
@@ -200,10 +206,26 @@ std::string write_drc(const Mesh& input, const MeshWriteOptions& options) {
                             draco::PointIndex(static_cast<uint32_t>(face[t[2]]))});
     });
 
+#if defined(DRACO_ATTRIBUTE_VALUES_DEDUPLICATION_SUPPORTED) && defined(DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED)
+  // Quantized output shares equal attribute values and merges points equal in every
+  // attribute, as draco_encoder's readers do: a mesh stored one vertex per corner (3DS,
+  // STL-like PLY files) then codes its connectivity across the shared positions, and its
+  // file is draco_encoder's size rather than several times it. Lossless output keeps
+  // every vertex (its promise is the same vertex list back).
+  if (!lossless) {
+    cloud->DeduplicateAttributeValues();
+    cloud->DeduplicatePointIds();
+  }
+#endif
   draco::Encoder encoder;
   encoder.SetSpeedOptions(options.draco_speed, options.draco_speed);
   if (lossless) encoder.SetEncodingMethod(draco::MESH_SEQUENTIAL_ENCODING);
-  else encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, options.draco_position_bits);
+  else {
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, options.draco_position_bits);
+    if (quantize_normals) encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, options.draco_normal_bits);
+    if (options.draco_texcoord_bits > 0)
+      encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, options.draco_texcoord_bits);
+  }
   draco::EncoderBuffer buffer;
   draco::Status status = triangles ? encoder.EncodeMeshToBuffer(*triangles, &buffer)
                                    : encoder.EncodePointCloudToBuffer(*cloud, &buffer);

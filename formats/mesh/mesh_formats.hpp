@@ -33,6 +33,9 @@ Mesh read_stl(std::string_view bytes);
 std::string write_stl(const Mesh& mesh, bool ascii);
 
 Mesh read_drc(std::string_view bytes);
+
+// glTF/GLB, COLLADA, FBX, 3DS, .x, LightWave through the assimp plugin (read only).
+Mesh read_assimp(std::string_view bytes, Format format);
 std::string write_drc(const Mesh& mesh, const MeshWriteOptions& options);
 
 }  // namespace fest::formats::mesh_detail

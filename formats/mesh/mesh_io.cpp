@@ -27,6 +27,7 @@ Mesh read_mesh(std::string_view bytes, Format format) {
     case Format::drc: return read_drc(bytes);
     default: break;
   }
+  if (read_only_scene_format(format)) return read_assimp(bytes, format);
   throw bad_input("{} is not a mesh format", format_name(format));
 }
 
@@ -35,6 +36,11 @@ std::string write_mesh(const Mesh& mesh, Format format, const MeshWriteOptions& 
   silence_openmesh();
   if (options.draco_position_bits < 0 || options.draco_position_bits > 30)
     throw usage_error("Draco position bits must be 0 (lossless) to 30, not {}", options.draco_position_bits);
+  if (options.draco_normal_bits < 0 || options.draco_normal_bits > 30)
+    throw usage_error("Draco normal bits must be 0 (unquantized) to 30, not {}", options.draco_normal_bits);
+  if (options.draco_texcoord_bits < 0 || options.draco_texcoord_bits > 30)
+    throw usage_error("Draco texture coordinate bits must be 0 (unquantized) to 30, not {}",
+                      options.draco_texcoord_bits);
   if (options.draco_speed < 0 || options.draco_speed > 10)
     throw usage_error("Draco speed must be 0 to 10, not {}", options.draco_speed);
   if (!options.drop_unrepresentable) {

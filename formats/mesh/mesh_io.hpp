@@ -76,8 +76,14 @@ enum class CoordinatePrecision { automatic, float32, float64 };
 
 struct MeshWriteOptions {
   bool ascii = false;         // PLY and STL: ascii instead of binary (OBJ/OFF are always text)
-  int draco_position_bits = 0;  // Draco quantization of positions; 0 = lossless
-  int draco_speed = 5;          // Draco encoder speed 0 (best) .. 10 (fastest)
+  int draco_position_bits = 0;  // Draco quantization of positions; 0 = lossless (everything)
+  // With positions quantized, normals and texture coordinates are quantized too, as
+  // draco_encoder does (its -qn 8 and -qt 10 by default); 0 leaves that attribute unquantized.
+  int draco_normal_bits = 8;
+  int draco_texcoord_bits = 10;
+  // Draco encoder speed 0 (best) .. 10 (fastest); draco_encoder's compression level -cl
+  // is 10 - speed, and its default -cl 7 is speed 3.
+  int draco_speed = 3;
   CoordinatePrecision precision = CoordinatePrecision::automatic;  // PLY positions and normals
   // Write without what the format cannot hold (see unwritable_parts) instead of failing.
   bool drop_unrepresentable = false;

@@ -28,7 +28,7 @@ case_ "training face, known camera, eta 0: recovered exactly (T4)"
 run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5.tsv" --camera fixed --eta 0 -o "$WORK/fit5.ply" --report "$WORK/fit5.json"
 expect_status 0
 expect_stdout_empty
-run fcompare "$S/face005.ply" "$WORK/fit5.ply" --tol 0.01 -t 'vertex_max_abs<=0.01'
+run fcompare "$S/face005.ply" "$WORK/fit5.ply" --tol 0.01 --ordered -t 'vertex_max_abs<=0.01'
 expect_status 0
 check "E_r below 1e-3 px" jq -e '.E_r < 1e-3' "$WORK/fit5.json"
 check "report names l and k" jq -e '.l == 100 and .k == 99 and .eta_source == "given"' "$WORK/fit5.json"
@@ -63,7 +63,7 @@ expect_status 0
 awk 'NR==1 {print; next} {printf "%s\t%.12g\t%.12g\n", $1, 2*($2-150)+300.5, 2*($3-150)+240}' "$WORK/lm5.tsv" >"$WORK/lm5x2.tsv"
 run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm5x2.tsv" -o "$WORK/sim2.ply" --report "$WORK/sim2.json"
 expect_status 0
-run fcompare "$WORK/sim1.ply" "$WORK/sim2.ply" --tol 1e-4 -t 'vertex_max_abs<=1e-4'
+run fcompare "$WORK/sim1.ply" "$WORK/sim2.ply" --tol 1e-4 --ordered -t 'vertex_max_abs<=1e-4'
 expect_status 0
 check "E_r doubles" jq -e --slurpfile a "$WORK/sim1.json" '(.E_r / $a[0].E_r - 2) | fabs < 1e-4' "$WORK/sim2.json"
 check "camera scale 2" jq -e '(.camera.s / 2 - 1) | fabs < 0.05' "$WORK/sim2.json"
@@ -87,7 +87,7 @@ expect_status 0
 case_ "full shape at eta 0 leaves a model face unchanged (orthogonal projection)"
 run facefit fit -m "$S/model.mmb" --full-shape "$S/face005.ply" --eta 0 -o "$WORK/proj.ply"
 expect_status 0
-run fcompare "$S/face005.ply" "$WORK/proj.ply" --tol 1e-3 -t 'vertex_max_abs<=1e-3'
+run fcompare "$S/face005.ply" "$WORK/proj.ply" --tol 1e-3 --ordered -t 'vertex_max_abs<=1e-3'
 expect_status 0
 
 case_ "sample: zero coefficients give the mean; uncertainty and coefficients files"
@@ -131,7 +131,7 @@ case_ "golden: synth seed 1, 32×32, set17, eta 2 (mesh within 1e-5 mm)"
 "$F" project --mesh "$S/face105.ply" --vertices "$S/set17.tsv" >"$WORK/lm17.tsv"
 run facefit fit -m "$S/model.mmb" --landmarks "$WORK/lm17.tsv" --eta 2 -o "$WORK/golden.ply"
 expect_status 0
-run fcompare "$FEST_FIXTURES/facefit/golden_fit_set17.ply" "$WORK/golden.ply" --tol 1e-5 -t 'vertex_max_abs<=1e-5'
+run fcompare "$FEST_FIXTURES/facefit/golden_fit_set17.ply" "$WORK/golden.ply" --tol 1e-5 --ordered -t 'vertex_max_abs<=1e-5'
 expect_status 0
 
 case_ "conventions: --help, --version, unknown flag, unknown subcommand"

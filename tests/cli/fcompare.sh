@@ -44,6 +44,43 @@ expect_status 0
 # PSNR = 20 log10(255/1.5) = 20 log10(170) = 44.60898, max abs 3.
 printf 'P2\n2 2\n255\n10 20\n30 40\n' >"$WORK/a.pgm"
 printf 'P2\n2 2\n255\n10 20\n30 43\n' >"$WORK/b.pgm"
+# The octahedron (+-1 on each axis), and a copy with its vertex list reversed (faces
+# renumbered to match): the same surface, so the order-independent measures are 0; vertex
+# i against vertex i, the reversal pairs (1,0,0) with (0,0,-1) (difference 1) and
+# (0,1,0) with (0,-1,0): largest coordinate difference 2.
+octahedron() {
+  printf 'OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n'
+  printf '3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n'
+}
+octahedron >"$WORK/oct.off"
+awk 'NR==1 || NR==2 {print; next} NR<=8 {v[NR-3]=$0; if (NR==8) for (i=5;i>=0;--i) print v[i]; next}
+     {printf "3 %d %d %d\n", 5-$2, 5-$3, 5-$4}' "$WORK/oct.off" >"$WORK/oct_reversed.off"
+
+case_ "Edgebreaker round trip (ebcode | ebdecode, lossless): clean by default, no order-dependent metric"
+"$FEST_BIN/ebcode" --qp 0 <"$WORK/oct.off" | "$FEST_BIN/ebdecode" --to off >"$WORK/oct_eb.off"
+check "round trip written" test -s "$WORK/oct_eb.off"
+run fcompare "$WORK/oct.off" "$WORK/oct_eb.off"
+expect_status 0
+check "hausdorff 0" grep -qx "hausdorff 0" "$out"
+check "no vertex_max_abs without --ordered" sh -c "! grep -q '^vertex_max_abs' '$out'"
+
+case_ "a permuted copy: order-independent measures 0; --ordered reports the permutation's 2"
+run fcompare "$WORK/oct.off" "$WORK/oct_reversed.off"
+expect_status 0
+check "hausdorff 0" grep -qx "hausdorff 0" "$out"
+check "no vertex_max_abs" sh -c "! grep -q '^vertex_max_abs' '$out'"
+run fcompare --ordered "$WORK/oct.off" "$WORK/oct_reversed.off"
+expect_status 0
+check "vertex_max_abs 2" grep -qx "vertex_max_abs 2" "$out"
+run fcompare --ordered -t 'vertex_max_abs<=0' "$WORK/oct.off" "$WORK/oct_reversed.off"
+expect_status 1
+expect_stderr_has "vertex_max_abs = 2 exceeds 0"
+
+case_ "a check on vertex_max_abs without --ordered is a usage error naming the measured metrics"
+run fcompare -t 'vertex_max_abs<=0' "$WORK/oct.off" "$WORK/oct_reversed.off"
+expect_status 2
+expect_stderr_has "vertex_max_abs"
+
 case_ "images: RMSE, PSNR, max abs"
 run fcompare "$WORK/a.pgm" "$WORK/b.pgm" -t 'max_abs<=3' -t 'psnr>=44.6' --report "$WORK/img.json"
 expect_status 0

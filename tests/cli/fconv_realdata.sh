@@ -15,7 +15,7 @@ run fconv --info "$WORK/bunny.obj"
 expect_status 0
 expect_json '.vertices' '37706'
 expect_json '.faces' '75408'
-run fcompare "$WORK/bunny.ply" "$WORK/bunny.obj" --report "$WORK/report.json"
+run fcompare --ordered "$WORK/bunny.ply" "$WORK/bunny.obj" --report "$WORK/report.json"
 expect_status 0
 check "zero surface distance" grep -qx "hausdorff 0" "$out"
 check "bit-identical vertices" grep -qx "vertex_max_abs 0" "$out"

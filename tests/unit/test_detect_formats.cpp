@@ -44,6 +44,24 @@ TEST(Detect, BinarySignatures) {
   EXPECT_EQ(detect(nifti_header(true)), Format::nifti);
 }
 
+// Scene formats read through assimp: the signatures each format's specification fixes.
+TEST(Detect, SceneFormats) {
+  using namespace fest::formats;
+  EXPECT_EQ(detect(std::string("glTF\x02\0\0\0\x14\0\0\0", 12)), Format::glb);
+  EXPECT_EQ(detect(R"({"asset":{"version":"2.0"},"meshes":[]})"), Format::gltf);
+  EXPECT_EQ(detect(R"({"asset":{"version":"2.0"}})"), Format::json);  // no geometry: plain JSON
+  EXPECT_EQ(detect("<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"x\" version=\"1.4.1\">"), Format::dae);
+  EXPECT_EQ(detect(std::string("Kaydara FBX Binary  \0\x1a\0", 23)), Format::fbx);
+  EXPECT_EQ(detect("; FBX 7.4.0 project file\n"), Format::fbx);
+  EXPECT_EQ(detect("xof 0303txt 0032\n"), Format::xfile);
+  EXPECT_EQ(detect(std::string("FORM\0\0\0\x04LWO2", 12)), Format::lwo);
+  // 3DS: main chunk 0x4D4D of the file's length (16), then the version chunk 0x0002.
+  EXPECT_EQ(detect(std::string("\x4d\x4d\x10\0\0\0\x02\0\x0a\0\0\0\x03\0\0\0", 16)), Format::threeds);
+  EXPECT_EQ(kind_of(Format::glb), Kind::mesh);
+  EXPECT_TRUE(read_only_scene_format(Format::fbx));
+  EXPECT_FALSE(read_only_scene_format(Format::drc));
+}
+
 TEST(Detect, NetpbmFamily) {
   EXPECT_EQ(detect("P5\n2 2\n255\n...."), Format::pgm);
   EXPECT_EQ(detect("P2 2 2 255 0 0 0 0"), Format::pgm);

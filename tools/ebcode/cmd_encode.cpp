@@ -88,6 +88,8 @@ int encode_command(const EncodeOptions& opt) {
     formats::MeshWriteOptions w;
     w.draco_position_bits = opt.qp;
     w.draco_speed = 10 - opt.draco_cl;
+    w.draco_normal_bits = opt.qn;  // the same bits as ebm's, for a like-for-like comparison
+    w.draco_texcoord_bits = opt.qt;
     formats::store_output(opt.output, formats::write_mesh(mesh, formats::Format::drc, w), false);
     return 0;
   }

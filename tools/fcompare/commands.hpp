@@ -19,6 +19,9 @@ struct CompareOptions {
   int threads = 0;
   bool ignore_counts = false;
   bool ignore_topology = false;
+  // Meshes: also compare vertex i with vertex i (vertex_max_abs). Off by default: a
+  // correct conversion may reorder vertices (Draco's and fest's Edgebreaker coders do).
+  bool ordered = false;
   std::string report;  // JSON of every metric and check; "" : none
   bool quiet = false;
 };

@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
   fest::cli::add_threads(app, opt.threads);
   app.add_flag("--ignore-counts", opt.ignore_counts, "Meshes: allow different vertex, face, line and point counts");
   app.add_flag("--ignore-topology", opt.ignore_topology, "Meshes: allow different genus, boundaries, components");
+  app.add_flag("--ordered", opt.ordered,
+               "Meshes: also compare vertices by index (vertex_max_abs), for conversions that keep vertex "
+               "order; by default only order-independent distances are measured");
   app.add_option("--report", opt.report, "Write every metric and check as JSON to this file");
   app.footer("Exit status: 0 within tolerance, 1 not (failing checks on standard error), 2 usage error,\n"
              "3 bad input, 4 I/O error. See fcompare(1).");

@@ -30,8 +30,10 @@ struct ConvertOptions {
   std::optional<ScalarType> volume_type;  // volumes: store values as this type
   bool rescale = false;                   // map the value range onto volume_type's
   std::optional<std::size_t> frame;       // volumes: only this frame of a 4-D series
-  int draco_bits = 0;
-  int draco_speed = 5;
+  int draco_bits = 11;          // draco_encoder's -qp default
+  int draco_normal_bits = 8;    // -qn
+  int draco_texcoord_bits = 10; // -qt
+  int draco_speed = 3;          // 10 - draco_encoder's -cl (default 7)
   formats::CoordinatePrecision precision = formats::CoordinatePrecision::automatic;
   bool drop_unrepresentable = false;
   // A volume (or VTK image data, frame stream) to an image format: a quick look

@@ -47,6 +47,8 @@ std::string convert_mesh(const Input& in, Format to, const ConvertOptions& opt) 
   w.ascii = opt.ascii;
   w.draco_position_bits = opt.draco_bits;
   w.draco_speed = opt.draco_speed;
+  w.draco_normal_bits = opt.draco_normal_bits;
+  w.draco_texcoord_bits = opt.draco_texcoord_bits;
   w.drop_unrepresentable = opt.drop_unrepresentable;
   w.precision = opt.precision;
   const Mesh mesh = read_whole_mesh(in);

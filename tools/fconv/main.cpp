@@ -56,10 +56,24 @@ int main(int argc, char** argv) {
         opt.flatten = true;
       },
       "Background R,G,B (sRGB codes 0-255) that --flatten composites over; implies --flatten");
-  app.add_option("--draco-bits", opt.draco_bits, "Draco position quantization bits (0 = lossless)")
-      ->check(fest::cli::range(0, 30));
-  app.add_option("--draco-speed", opt.draco_speed, "Draco encoder speed, 0 (smallest) to 10 (fastest)")
-      ->check(fest::cli::range(0, 10));
+  app.add_option("--draco-bits", opt.draco_bits,
+                 "Draco position quantization bits, draco_encoder's -qp (0 = lossless: every attribute exact, "
+                 "vertex and face order kept)")
+      ->check(fest::cli::range(0, 30))
+      ->default_val(11);
+  app.add_option("--draco-normal-bits", opt.draco_normal_bits,
+                 "Draco normal quantization bits, draco_encoder's -qn (0 = unquantized)")
+      ->check(fest::cli::range(0, 30))
+      ->default_val(8);
+  app.add_option("--draco-texcoord-bits", opt.draco_texcoord_bits,
+                 "Draco texture coordinate quantization bits, draco_encoder's -qt (0 = unquantized)")
+      ->check(fest::cli::range(0, 30))
+      ->default_val(10);
+  app.add_option("--draco-speed", opt.draco_speed,
+                 "Draco encoder speed, 0 (smallest) to 10 (fastest; sequential coding): 10 minus "
+                 "draco_encoder's compression level -cl")
+      ->check(fest::cli::range(0, 10))
+      ->default_val(3);
   app.add_option("--precision", precision,
                  "PLY positions and normals: float or double (default: float unless float would lose "
                  "precision the input had)")

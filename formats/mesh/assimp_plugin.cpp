@@ -1,0 +1,163 @@
+// The assimp plugin module (assimp_plugin_api.h): a scene in any format assimp imports,
+// flattened into an AssimpScene -- every mesh of every node, the node's transform and its
+// parents' applied, polygons triangulated (docs/fconv.md, "Scene formats through
+// assimp"). Only this file sees assimp's headers; only this module maps libassimp.
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "formats/mesh/assimp_plugin_api.h"
+#include "formats/mesh/assimp_scene.hpp"
+
+namespace {
+
+using fest::formats::AssimpScene;
+
+void add_count(std::vector<std::pair<std::string, std::size_t>>& list, const std::string& what, std::size_t n) {
+  if (n == 0) return;
+  for (auto& item : list)
+    if (item.first == what) {
+      item.second += n;
+      return;
+    }
+  list.emplace_back(what, n);
+}
+
+bool is_triangle_mesh(const aiMesh& m) { return (m.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0; }
+
+// Which per-vertex attributes every triangle mesh of the scene has: an attribute only some
+// meshes have cannot be one per vertex of the flattened mesh, and is counted as lost.
+struct Attributes {
+  bool normals = true, colors = true, texcoords = true;
+};
+
+Attributes common_attributes(const aiScene& s, AssimpScene& out) {
+  Attributes a;
+  std::size_t meshes = 0, with_normals = 0, with_colors = 0, with_uv = 0;
+  for (unsigned i = 0; i < s.mNumMeshes; ++i) {
+    const aiMesh& m = *s.mMeshes[i];
+    if (!is_triangle_mesh(m)) continue;
+    ++meshes;
+    with_normals += m.HasNormals();
+    with_colors += m.HasVertexColors(0);
+    with_uv += m.HasTextureCoords(0) && m.mNumUVComponents[0] == 2;
+  }
+  a.normals = meshes > 0 && with_normals == meshes;
+  a.colors = meshes > 0 && with_colors == meshes;
+  a.texcoords = meshes > 0 && with_uv == meshes;
+  if (!a.normals) add_count(out.lost, "vertex normals of meshes beside meshes without them", with_normals);
+  if (!a.colors) add_count(out.lost, "vertex colours of meshes beside meshes without them", with_colors);
+  if (!a.texcoords) add_count(out.lost, "texture coordinates of meshes beside meshes without them", with_uv);
+  return a;
+}
+
+// One instance of mesh `m` under the accumulated transform `t`.
+void append_mesh(const aiMesh& m, const aiMatrix4x4& t, const Attributes& keep, AssimpScene& out) {
+  const std::size_t first = out.positions.size() / 3;
+  aiMatrix3x3 normal_matrix(t);
+  normal_matrix.Inverse().Transpose();
+  // A mirroring transform turns faces inside out: their corner order is reversed back.
+  const bool mirrored = aiMatrix3x3(t).Determinant() < 0;
+  for (unsigned v = 0; v < m.mNumVertices; ++v) {
+    const aiVector3D p = t * m.mVertices[v];
+    out.positions.insert(out.positions.end(), {double(p.x), double(p.y), double(p.z)});
+    if (keep.normals) {
+      aiVector3D n = normal_matrix * m.mNormals[v];
+      if (n.Length() > 0) n.Normalize();
+      out.normals.insert(out.normals.end(), {double(n.x), double(n.y), double(n.z)});
+    }
+    if (keep.colors) {
+      const aiColor4D& c = m.mColors[0][v];
+      out.colors.insert(out.colors.end(), {c.r, c.g, c.b, c.a});
+    }
+    if (keep.texcoords) out.texcoords.insert(out.texcoords.end(), {m.mTextureCoords[0][v].x, m.mTextureCoords[0][v].y});
+  }
+  for (unsigned f = 0; f < m.mNumFaces; ++f) {
+    const aiFace& face = m.mFaces[f];
+    if (face.mNumIndices != 3) continue;  // sorted out before: points and lines are counted
+    const std::uint32_t a = first + face.mIndices[0], b = first + face.mIndices[1], c = first + face.mIndices[2];
+    if (mirrored) out.triangles.insert(out.triangles.end(), {a, c, b});
+    else out.triangles.insert(out.triangles.end(), {a, b, c});
+  }
+}
+
+void walk(const aiScene& s, const aiNode& node, const aiMatrix4x4& parent, const Attributes& keep, AssimpScene& out) {
+  const aiMatrix4x4 t = parent * node.mTransformation;
+  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+    const aiMesh& m = *s.mMeshes[node.mMeshes[i]];
+    if (is_triangle_mesh(m)) {
+      append_mesh(m, t, keep, out);
+    } else {
+      // Points and lines (SortByPType put them in meshes of their own).
+      if (m.mPrimitiveTypes & aiPrimitiveType_POINT) add_count(out.lost, "point primitives", m.mNumFaces);
+      if (m.mPrimitiveTypes & aiPrimitiveType_LINE) add_count(out.lost, "line primitives", m.mNumFaces);
+    }
+  }
+  for (unsigned i = 0; i < node.mNumChildren; ++i) walk(s, *node.mChildren[i], t, keep, out);
+}
+
+void count_losses(const aiScene& s, AssimpScene& out) {
+  std::size_t bones = 0, morphs = 0, extra_uv = 0, extra_colors = 0, wide_uv = 0;
+  for (unsigned i = 0; i < s.mNumMeshes; ++i) {
+    const aiMesh& m = *s.mMeshes[i];
+    bones += m.mNumBones;
+    morphs += m.mNumAnimMeshes;
+    extra_uv += m.GetNumUVChannels() > 1 ? m.GetNumUVChannels() - 1 : 0;
+    extra_colors += m.GetNumColorChannels() > 1 ? m.GetNumColorChannels() - 1 : 0;
+    wide_uv += m.HasTextureCoords(0) && m.mNumUVComponents[0] != 2;
+  }
+  add_count(out.lost, "bones", bones);
+  add_count(out.lost, "morph targets", morphs);
+  add_count(out.lost, "animations", s.mNumAnimations);
+  add_count(out.lost, "texture coordinate sets beyond the first", extra_uv);
+  add_count(out.lost, "colour sets beyond the first", extra_colors);
+  add_count(out.lost, "texture coordinate sets of 1 or 3 components", wide_uv);
+  // assimp adds a default material to scenes that have none: not the file's.
+  std::size_t materials = 0;
+  for (unsigned i = 0; i < s.mNumMaterials; ++i)
+    if (s.mMaterials[i]->GetName() != aiString(AI_DEFAULT_MATERIAL_NAME)) ++materials;
+  add_count(out.not_geometry, "materials", materials);
+  add_count(out.not_geometry, "embedded textures", s.mNumTextures);
+  add_count(out.not_geometry, "cameras", s.mNumCameras);
+  add_count(out.not_geometry, "lights", s.mNumLights);
+}
+
+int read_scene(const char* bytes, size_t size, const char* hint, void* scene, char* message, size_t message_size) {
+  auto fail = [&](const std::string& what) {
+    std::snprintf(message, message_size, "%s", what.c_str());
+    return 3;
+  };
+  try {
+    AssimpScene& out = *static_cast<AssimpScene*>(scene);
+    Assimp::Importer importer;
+    // Triangulate polygons, put points and lines into meshes of their own, and share
+    // vertices that agree in every attribute (formats that store one vertex per corner,
+    // 3DS and FBX, would otherwise arrive as a triangle soup).
+    const aiScene* s = importer.ReadFileFromMemory(
+        bytes, size, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices, hint);
+    if (s == nullptr) return fail(importer.GetErrorString());
+    if (s->mRootNode == nullptr || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+      return fail("the scene is incomplete (no node hierarchy or no meshes)");
+    const Attributes keep = common_attributes(*s, out);
+    walk(*s, *s->mRootNode, aiMatrix4x4(), keep, out);
+    count_losses(*s, out);
+    out.format = hint;
+    return 0;
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+}
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const FestAssimpPluginTable* fest_assimp_plugin_table(void) {
+  static const FestAssimpPluginTable table{FEST_ASSIMP_PLUGIN_ABI, sizeof(AssimpScene), read_scene};
+  return &table;
+}

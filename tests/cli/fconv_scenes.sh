@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Scene formats read through the assimp plugin (libfest_assimp_plugin.so, opened only
+# when such a file arrives): glTF/GLB, COLLADA, FBX, 3DS, DirectX .x. Counts come from
+# mathematics (a hand-made glTF) or from assimp's own `assimp info` (assimp-utils), an
+# independent program; the models are Debian's assimp-testmodels (fetched).
+. "$(dirname "$0")/lib.sh"
+if [ ! -e "$FEST_BIN/libfest_assimp_plugin.so" ]; then
+  echo "skipped: libfest_assimp_plugin.so was not built (libassimp-dev missing at configure time)" >&2
+  exit 77
+fi
+
+case_ "hand-made glTF: one unit square instanced by two nodes, flattened with the node transforms"
+# Node 'plain' holds the square as is; node 'doubled' (scale 2) is the child of 'lifted'
+# (translation z = 5), so glTF's parent * child gives (2x, 2y, 5): 2 x 4 vertices,
+# 2 x 2 triangles, bounding box (0,0,0)-(2,2,5).
+sq="$FEST_FIXTURES/mesh/square_two_instances.gltf"
+run fconv --info "$sq"
+expect_status 0
+expect_json '.format' '"gltf"'
+expect_json '.vertices' '8'
+expect_json '.faces' '4'
+expect_json '.bbox.min' '[0,0,0]'
+expect_json '.bbox.max' '[2,2,5]'
+run fconv "$sq" -o "$WORK/sq.off"
+expect_status 0
+check "OFF has 8 vertices and 4 faces" test "$(sed -n 2p "$WORK/sq.off")" = "8 4 0"
+# Its area, 1 + 4 = 5, is the two squares' (fcompare against an OFF written by hand).
+printf 'OFF\n8 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 5\n2 0 5\n2 2 5\n0 2 5\n3 0 1 2\n3 0 2 3\n3 4 5 6\n3 4 6 7\n' \
+  >"$WORK/sq_expected.off"
+run fcompare --samples 2000 "$sq" "$WORK/sq_expected.off"
+expect_status 0
+check "hausdorff 0" grep -qx "hausdorff 0" "$out"
+
+case_ "--version and a PLY conversion do not load libassimp; a glTF does"
+LD_DEBUG=files "$FEST_BIN/fconv" --version >/dev/null 2>"$WORK/ld1"
+check "no libassimp for --version" bash -c "! grep -q 'libassimp' '$WORK/ld1'"
+"$FEST_BIN/fconv" "$WORK/sq.off" -o "$WORK/sq.ply"
+LD_DEBUG=files "$FEST_BIN/fconv" "$WORK/sq.ply" -o "$WORK/sq2.off" 2>"$WORK/ld2"
+check "no libassimp for PLY -> OFF" bash -c "! grep -q 'libassimp' '$WORK/ld2'"
+LD_DEBUG=files "$FEST_BIN/fconv" "$sq" -o "$WORK/sq3.off" 2>"$WORK/ld3"
+check "libassimp for a glTF" grep -q 'libassimp' "$WORK/ld3"
+
+case_ "no plugin in FEST_PLUGIN_DIR: exit 4, one line naming libassimp5, nothing written"
+mkdir -p "$WORK/empty"
+FEST_PLUGIN_DIR="$WORK/empty" "$FEST_BIN/fconv" "$sq" -o "$WORK/never.ply" >"$out" 2>"$err"
+rc=$?
+expect_clean_failure 4 fconv
+expect_stderr_has "install the Debian package libassimp5"
+check "one line" test "$(wc -l <"$err")" = 1
+check "nothing written" test ! -e "$WORK/never.ply"
+
+case_ "scene formats are read, not written: a usage error"
+run fconv "$WORK/sq.off" -o "$WORK/sq.gltf"
+expect_status 2
+expect_stderr_has "reads gltf .* but does not write it"
+run fconv "$WORK/sq.off" --to fbx
+expect_status 2
+
+case_ "a broken glTF: exit 3 with assimp's reason, nothing written"
+printf '{"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":7}}]}]}' >"$WORK/bad.gltf"
+run fconv "$WORK/bad.gltf" -o "$WORK/bad.ply"
+expect_clean_failure 3 fconv
+expect_stderr_has "gltf \\(through assimp\\)"
+check "nothing written" test ! -e "$WORK/bad.ply"
+
+# Debian's assimp test models, counted by assimp itself (default post-processing, which
+# triangulates): fest's triangles must be assimp's faces. Each mesh of these models is
+# used by one node, so flattening does not multiply them.
+dir=$(dirname "$(need_testdata meshes/assimp/test1.3ds 2>/dev/null)" 2>/dev/null)
+if [ -n "$dir" ] && [ -e "$dir/test1.3ds" ] && command -v assimp >/dev/null; then
+  # (test1.3ds is left out: its 5 meshes are used by 10 nodes, which fest flattens into
+  # 108 triangles while assimp info counts each mesh once, 60.)
+  for name in duck.dae box.fbx test.x BoxTextured.glb BoxTextured.gltf; do
+    f="$dir/$name"
+    [ -e "$f" ] || continue
+    expected=$(assimp info "$f" 2>/dev/null | awk '/^Faces:/{print $2}')
+    case_ "$name: the $expected triangles assimp reads"
+    run fconv --info "$f"
+    expect_status 0
+    check "fest $(jq .faces "$out") = assimp $expected" test "$(jq .faces "$out")" = "$expected"
+    run fconv --drop-unrepresentable "$f" -o "$WORK/$name.ply"
+    expect_status 0
+    run fcompare --samples 2000 "$f" "$WORK/$name.ply" --tol 1e-6
+    expect_status 0
+  done
+
+  case_ "duck.dae: its material is named in a warning, not silently dropped"
+  run fconv "$dir/duck.dae" -o "$WORK/duck.ply"
+  expect_status 0
+  expect_stderr_has "not read: 1 materials"
+fi
+
+finish
