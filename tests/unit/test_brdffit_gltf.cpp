@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <cstdint>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -28,10 +29,13 @@ std::string decode_base64(const std::string& s) {
     return c == '+' ? 62 : 63;
   };
   std::string out;
-  int bits = 0, acc = 0;
+  // Only the low `bits` bits of acc matter; unsigned, so the shift may drop high bits
+  // (a signed int overflowed after a few hundred characters: UBSan).
+  int bits = 0;
+  std::uint32_t acc = 0;
   for (char c : s) {
     if (c == '=') break;
-    acc = (acc << 6) | value(c);
+    acc = (acc << 6) | static_cast<std::uint32_t>(value(c));
     bits += 6;
     if (bits >= 8) {
       bits -= 8;
