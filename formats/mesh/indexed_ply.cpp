@@ -42,7 +42,7 @@ IndexedPlyEncoder::IndexedPlyEncoder(std::size_t vertices, const std::vector<std
 }
 
 std::string_view IndexedPlyEncoder::encode(const float* xyz) {
-  std::memcpy(buffer_.data() + header_, xyz, vertices_ * 12);
+  if (vertices_ > 0) std::memcpy(buffer_.data() + header_, xyz, vertices_ * 12);  // an empty mesh may pass nullptr
   return buffer_;
 }
 
