@@ -11,42 +11,20 @@ Checks, printing one line per failure (exit 1 on any):
     above): CLIPPED draws every pixel inside it (no bite out of the DEM) and nothing
     outside it (none of the padding), each up to a margin of 1.5 pixels.
 Prints "lost N" (pixels FULL covers and CLIPPED not) on success."""
-import struct
+import os
 import sys
-import zlib
 
 SKY = (235, 240, 245)  # the renderer's background (RGB)
 
 
+# One PNG decoder for the CLI tests: the volrender fixtures' (standard library only).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "isovol"))
+from fixtures import png_rows  # noqa: E402
+
+
 def read_png(path):
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    pos, idat, w = 8, b"", 0
-    while pos < len(data):
-        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
-            assert depth == 8 and ctype == 2, "8-bit RGB expected"
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    raw, bpp, stride = zlib.decompress(idat), 3, 3 * w
-    rows, prev = [], bytearray(stride)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        prev = line
+    w, h, ch, rows = png_rows(path)
+    assert ch == 3, "8-bit RGB expected (%s)" % path
     return w, h, rows
 
 
