@@ -5,14 +5,6 @@
 set(FEST_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor)
 if(FEST_WERROR)
   list(APPEND FEST_WARNINGS -Werror)
-  if(FEST_SANITIZE AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    # GCC 12+ with -fsanitize=address reports -Wmaybe-uninitialized inside libstdc++'s own
-    # <regex>/<functional> (std::function's move in regex_automaton.h's _State, GCC bug
-    # 105616), although every frame of it lies in system headers. The warning stays on but
-    # is no error in the sanitizer build only; the Release build still fails on it in fest's
-    # code, and every other warning is still an error here.
-    list(APPEND FEST_WARNINGS -Wno-error=maybe-uninitialized)
-  endif()
 endif()
 
 if(FEST_FUZZ)

@@ -222,9 +222,19 @@ Value Machine::call_function(const Function* fn, Instance* self, const std::shar
   if (n < ll.required.size() || (ll.key.empty() && ll.rest < 0 && n > ll.required.size() + ll.optional.size()))
     error(pos, fmt::format("{} takes {}{} arguments, got {}", fname, ll.required.size(),
                            ll.optional.empty() && ll.key.empty() && ll.rest < 0 ? "" : " or more", n));
+  // The depth limit alone does not keep the recursion on the stack: eval() nests several
+  // C++ frames per call, and a sanitizer build or a small thread stack runs out first.
+  const char* frame = stack_position();
+  if (depth_ == 0) stack_.arm(frame);
   if (++depth_ > opt_.max_depth) {
     depth_ = 0;
     throw LimitError{fmt::format("calls nested deeper than {} ({})", opt_.max_depth, where(pos))};
+  }
+  if (stack_.exhausted(frame)) {
+    const int depth = depth_;
+    depth_ = 0;
+    throw LimitError{fmt::format("calls nested deeper than the stack allows ({} KiB at depth {}) ({})",
+                                 stack_.budget_bytes() >> 10, depth, where(pos))};
   }
   std::shared_ptr<Frame> f = env;
   if (!ll.required.empty() || !ll.optional.empty() || !ll.key.empty() || ll.rest >= 0) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/rng.hpp"
+#include "core/stack_budget.hpp"
 #include "patnet/net.hpp"
 #include "patnet/reader.hpp"
 #include "patnet/value.hpp"
@@ -170,6 +171,7 @@ class Machine {
   std::uint64_t sem_seq_ = 0;
   std::int64_t steps_ = 0;
   int depth_ = 0;
+  StackBudget stack_;  // armed at the outermost call (depth_ == 0)
   std::int64_t errors_ = 0;
   Instance* current_ = nullptr;  // instance whose code runs (for :exit of self)
 

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <pthread.h>
 
 #include <fmt/format.h>
 
@@ -212,27 +211,6 @@ void Engine::tick(int depth, const Clause* ctx, const Term& goal) {
     throw runtime_failure("time limit {} s reached at {} ({})", limits_.time_limit_s, to_string(goal), where(ctx));
 }
 
-namespace {
-
-// The calling thread's stack less a reserve for foreign operators called from inside the
-// proof (an eighth, at least 1 MiB; half of a stack under 2 MiB); 4 MiB where the size
-// cannot be read. A goal level takes about 2.4 KiB in Release, so an 8 MiB stack allows
-// a depth near 3000.
-std::ptrdiff_t proof_stack_budget() {
-  std::size_t size = 0;
-  pthread_attr_t attr;
-  if (pthread_getattr_np(pthread_self(), &attr) == 0) {
-    pthread_attr_getstacksize(&attr, &size);
-    pthread_attr_destroy(&attr);
-  }
-  if (size == 0) return std::ptrdiff_t(4) << 20;
-  constexpr std::size_t MiB = std::size_t(1) << 20;
-  const std::size_t usable = size < 2 * MiB ? size / 2 : size - std::max(size / 8, MiB);
-  return static_cast<std::ptrdiff_t>(std::min<std::size_t>(usable, std::size_t(1) << 30));
-}
-
-}  // namespace
-
 bool Engine::prove(const Term& goal) {
   last_check_.clear();
   Res r = solve(goal, next_barrier_++, 0, nullptr, [] { return Res{Sig::stop, 0}; });
@@ -382,13 +360,12 @@ Engine::Res Engine::solve(const Term& goal0, std::uint64_t cut_barrier, int dept
   if (!is_callable(goal)) type_error(ctx, "type error: goal " + to_string(goal) + " is not callable");
   // A deep recursion within max_depth can still exhaust the stack (default limits, an
   // 8 MiB stack and a one-clause loop did): stop it with a message, not SIGSEGV.
-  const char* frame = static_cast<const char*>(__builtin_frame_address(0));
+  const char* frame = stack_position();
   if (cxx_depth_ == 0) {
-    stack_base_ = frame;
-    stack_budget_ = proof_stack_budget();
-  } else if (stack_base_ - frame > stack_budget_) {
+    stack_.arm(frame);
+  } else if (stack_.exhausted(frame)) {
     throw runtime_failure("proof nested too deeply for the stack ({} KiB, depth {}) at {} ({})",
-                          stack_budget_ >> 10, depth, to_string(goal), where(ctx));
+                          stack_.budget_bytes() >> 10, depth, to_string(goal), where(ctx));
   }
   struct DepthGuard {
     int& d;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/stack_budget.hpp"
 #include "core/stopwatch.hpp"
 #include "segbrain/kb_parser.hpp"
 #include "segbrain/term.hpp"
@@ -159,8 +160,7 @@ class Engine {
   int cxx_depth_ = 0;
   // The outermost solve()'s frame and how far below it the proof may recurse: solve()
   // nests C++ frames per goal, so the stack, not only max_depth, bounds a proof.
-  const char* stack_base_ = nullptr;
-  std::ptrdiff_t stack_budget_ = 0;
+  StackBudget stack_;
 };
 
 }  // namespace fest::segbrain

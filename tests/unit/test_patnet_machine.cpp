@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <pthread.h>
+
 #include <cmath>
 #include <map>
 
@@ -326,6 +328,41 @@ TEST(PatnetMachine, RunawayCodeHitsTheStepLimit) {
   Machine m(o, nullptr);
   m.load("(defnet x (defaction :spin (dotimes (i 1000000) i)) (defnode a :spin (:default exit))) (send x :new)", "x.pat", true);
   EXPECT_THROW(m.run(), fest::Error);
+}
+
+// Unbounded recursion stops with a message whatever the stack: the depth limit (2000
+// calls) on the main thread, the stack budget on a 256 KiB thread, where 2000 calls do
+// not fit (a sanitizer build overflowed 8 MiB the same way).
+TEST(PatnetMachine, RecursionStopsBeforeTheStackEnds) {
+  const char* rec = "(defun f (n) (f n)) (defnet x (defaction :go (f 1)) (defnode a :go (:default exit))) (send x :new)";
+  auto run_once = [rec] {
+    Machine m({}, nullptr);
+    m.load(rec, "rec.pat", true);
+    try {
+      m.run();
+    } catch (const fest::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(run_once().find("nested deeper"), std::string::npos);
+
+  struct Job {
+    decltype(run_once)* fn;
+    std::string message;
+  } job{&run_once, {}};
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstacksize(&attr, 256 * 1024);
+  pthread_t t;
+  ASSERT_EQ(pthread_create(&t, &attr, [](void* p) -> void* {
+    auto* j = static_cast<Job*>(p);
+    j->message = (*j->fn)();
+    return nullptr;
+  }, &job), 0);
+  pthread_join(t, nullptr);
+  pthread_attr_destroy(&attr);
+  EXPECT_NE(job.message.find("than the stack allows"), std::string::npos) << job.message;
 }
 
 TEST(PatnetMachine, DeadlockIsReported) {
