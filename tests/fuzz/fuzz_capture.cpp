@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "capture/calib_board.hpp"
 #include "capture/device_uri.hpp"
 #include "capture/manifest.hpp"
 #include "capture/plan.hpp"
@@ -73,6 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string uri(bytes);
     clean([&] { parse_device_uri(uri); });
     clean([&] { parse_sim_turntable_uri(uri); });
+    clean([&] { parse_board_spec(uri); });  // --board COLSxROWSxSIZE[unit]
   }
   const nlohmann::json doc = nlohmann::json::parse(bytes, nullptr, false);
   if (doc.is_discarded()) return 0;

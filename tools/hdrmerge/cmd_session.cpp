@@ -20,6 +20,7 @@
 #include "formats/table/table_io.hpp"
 #include "hdr/merge.hpp"
 #include "response_recovery.hpp"
+#include "session_manifest.hpp"
 #include "stack_files.hpp"
 
 namespace fest::hdrmerge_tool {
@@ -29,26 +30,10 @@ using nlohmann::json;
 
 namespace {
 
-struct Shot {
-  std::string file, sha256;
-  double exposure_s = 0;
-  int angle_index = 0;
-  double angle_deg = 0;
-};
-
-struct Set {
-  int angle_index = 0;
-  double angle_deg = 0;
-  std::string light;
-  // The shots of each exposure time, in order: one, or a plan's "repeat" takes (the
-  // manifest lists the takes of one exposure next to each other).
-  std::vector<std::vector<Shot>> exposures;
-};
-
 // A shot's picture, checked against its recorded hash, as 8-bit codes for the response
 // (16-bit values keep their top byte: round(Z / 257)).
 // A shot's pixels as stored (8 or 16-bit), its SHA-256 checked.
-cv::Mat read_stored_shot(const std::string& session, const Shot& s) {
+cv::Mat read_stored_shot(const std::string& session, const SessionShot& s) {
   const std::string path = (fs::path(session) / s.file).string();
   const std::string bytes = read_input(path);
   if (sha256_hex(bytes) != s.sha256) throw bad_input("file differs from the manifest's sha256 ({})", path);
@@ -71,11 +56,11 @@ cv::Mat to_8bit(const cv::Mat& m) {
   return out;
 }
 
-cv::Mat read_shot(const std::string& session, const Shot& s) { return to_8bit(read_stored_shot(session, s)); }
+cv::Mat read_shot(const std::string& session, const SessionShot& s) { return to_8bit(read_stored_shot(session, s)); }
 
 // The takes of one exposure averaged at the stored depth, before the 8-bit conversion:
 // N takes lower the noise by sqrt(N) (the mean of noisy samples, rounded once).
-cv::Mat read_takes(const std::string& session, const std::vector<Shot>& takes) {
+cv::Mat read_takes(const std::string& session, const std::vector<SessionShot>& takes) {
   if (takes.size() == 1) return read_shot(session, takes.front());
   cv::Mat first = read_stored_shot(session, takes.front());
   cv::Mat sum;
@@ -89,29 +74,6 @@ cv::Mat read_takes(const std::string& session, const std::vector<Shot>& takes) {
   cv::Mat mean;
   sum.convertTo(mean, first.depth(), 1.0 / double(takes.size()));
   return to_8bit(mean);
-}
-
-Shot shot_at(const json& shots, const json& index, const std::string& where) {
-  if (!index.is_number_unsigned() || index.get<std::size_t>() >= shots.size())
-    throw bad_input("sets: shot index {} out of range ({})", quoted_bytes(index.dump()), where);
-  const json& j = shots[index.get<std::size_t>()];
-  Shot s;
-  try {
-    s.file = j.at("file").get<std::string>();
-    s.sha256 = j.at("sha256").get<std::string>();
-    s.exposure_s = j.at("exposure_s").get<double>();
-    // get<int> of a double too large for an int is undefined behaviour: check first.
-    const json& ai = j.at("angle_index");
-    if (!ai.is_number_integer() || ai.get<long long>() < 0 || ai.get<long long>() > 1000000)
-      throw bad_input("shots[{}].angle_index must be an integer in [0, 1000000] ({})", index.get<std::size_t>(), where);
-    s.angle_index = static_cast<int>(ai.get<long long>());
-    s.angle_deg = j.at("angle_deg").get<double>();
-  } catch (const json::exception& e) {
-    throw bad_input("shots[{}]: {} ({})", index.get<std::size_t>(), json_failure_words(e.what(), 0, {}), where);
-  }
-  if (s.file.empty() || s.file.front() == '/' || s.file.find("..") != std::string::npos)
-    throw bad_input("shots[{}].file must be a path inside the session ({})", index.get<std::size_t>(), where);
-  return s;
 }
 
 std::string relative_to(const std::string& path, const std::string& session) {
@@ -128,57 +90,16 @@ std::string relative_to(const std::string& path, const std::string& session) {
 int run_session(const SessionOptions& a) {
   const std::string where = input_name(a.manifest);
   const json manifest = formats::parse(formats::load_input(a.manifest), formats::read_json_document);
-  // Fields are type-checked before they are read: json::value() throws the JSON library's
-  // own exception for a field of another type.
-  if (!manifest.is_object() || !manifest.contains("version") || manifest["version"] != 1)
-    throw bad_input("not a capture manifest, version 1 ({})", where);
-  const auto text_field = [&](const char* key) {
-    return manifest.contains(key) && manifest[key].is_string() ? manifest[key].get<std::string>() : std::string();
-  };
-  const std::string status = text_field("status");
-  if (status != "complete")
-    throw bad_input("the session is not complete (status \"{}\"): finish it with capture run --resume ({})", quoted_bytes(status), where);
-  std::string session;
-  if (is_stdio(a.manifest)) session = text_field("session");
-  else session = fs::path(a.manifest).parent_path().string();
+  const SessionManifest parsed = parse_session_manifest(manifest, where);
+  std::string session = is_stdio(a.manifest) ? parsed.session : fs::path(a.manifest).parent_path().string();
   if (session.empty()) session = ".";
   const std::string out_dir = a.output_dir.empty() ? (fs::path(session) / "hdr").string() : a.output_dir;
+  const std::vector<ExposureSet>& sets = parsed.sets;
+  const std::map<int, SessionShot>& silhouettes = parsed.silhouettes;
 
-  const json& shots = manifest.contains("shots") ? manifest["shots"] : json::array();
-  if (!shots.is_array() || !manifest.contains("sets") || !manifest["sets"].is_array())
-    throw bad_input("manifest needs arrays \"shots\" and \"sets\" ({})", where);
-  std::vector<Set> sets;
-  for (const json& js : manifest["sets"]) {
-    Set s;
-    if (!js.is_object() || !js.contains("shots") || !js["shots"].is_array() || !js.contains("light") || !js["light"].is_string())
-      throw bad_input("sets[{}] needs \"light\" and \"shots\" ({})", sets.size(), where);
-    s.light = js["light"].get<std::string>();
-    // It names an output file (a000_<light>.exr): a plain name, never a path out of DIR.
-    if (s.light.empty() || s.light.find_first_of("/\\") != std::string::npos || s.light == "." || s.light == "..")
-      throw bad_input("sets[{}].light \"{}\" is not a light id ({})", sets.size(), quoted_bytes(s.light), where);
-    for (const json& i : js["shots"]) {
-      Shot shot = shot_at(shots, i, where);
-      if (s.exposures.empty() || shot.exposure_s != s.exposures.back().front().exposure_s) s.exposures.emplace_back();
-      s.exposures.back().push_back(std::move(shot));
-    }
-    if (s.exposures.size() < 2)
-      throw bad_input("sets[{}] has {} exposure(s), at least 2 are needed ({})", sets.size(), s.exposures.size(), where);
-    s.angle_index = s.exposures.front().front().angle_index;
-    s.angle_deg = s.exposures.front().front().angle_deg;
-    sets.push_back(std::move(s));
-  }
-  if (sets.empty()) throw bad_input("the manifest has no exposure set ({})", where);
-  // Silhouette shots, one per angle (the first one at that angle).
-  std::map<int, Shot> silhouettes;
-  for (std::size_t i = 0; i < shots.size(); ++i)
-    if (shots[i].is_object() && shots[i].contains("kind") && shots[i]["kind"] == "silhouette") {
-      const Shot s = shot_at(shots, json(i), where);
-      silhouettes.emplace(s.angle_index, s);
-    }
-
-  auto stack_of = [&](const Set& s) {
+  auto stack_of = [&](const ExposureSet& s) {
     hdr::ExposureStack stack;
-    for (const std::vector<Shot>& takes : s.exposures) {
+    for (const std::vector<SessionShot>& takes : s.exposures) {
       stack.images.push_back(read_takes(session, takes));
       stack.times.push_back(takes.front().exposure_s);
     }
@@ -207,14 +128,14 @@ int run_session(const SessionOptions& a) {
   const std::size_t jobs = sets.size() + mask_angles.size();
   parallel_for(jobs, resolve_threads(a.threads), [&](std::size_t j) {
     if (j < sets.size()) {
-      const Set& s = sets[j];
+      const ExposureSet& s = sets[j];
       const hdr::MergeResult merged = hdr::merge_debevec(stack_of(s), response, 1);
       cv::Mat rgb = merged.radiance;
       if (rgb.channels() == 1) cv::cvtColor(rgb, rgb, cv::COLOR_GRAY2RGB);
       formats::ExrExtras extras;
       extras.channels = {{"valid", merged.valid}};
       std::vector<float> exposures;
-      for (const std::vector<Shot>& takes : s.exposures) exposures.push_back(float(takes.front().exposure_s));
+      for (const std::vector<SessionShot>& takes : s.exposures) exposures.push_back(float(takes.front().exposure_s));
       extras.float_vectors["exposures"] = exposures;
       extras.strings["responseSha256"] = response_sha;
       extras.strings["lightId"] = s.light;

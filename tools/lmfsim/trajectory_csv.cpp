@@ -45,8 +45,10 @@ std::vector<TrajectoryRow> parse_trajectory(const std::string& bytes, const std:
     for (int i = 0; i < 16; ++i) {
       if (i == 2) continue;
       char* end = nullptr;
-      v[i] = std::strtod(f[static_cast<std::size_t>(i)].c_str(), &end);
-      if (end == f[static_cast<std::size_t>(i)].c_str() || *end != '\0')
+      const std::string& text = f[static_cast<std::size_t>(i)];
+      v[i] = std::strtod(text.c_str(), &end);
+      // The whole field, not up to an embedded NUL byte.
+      if (end == text.c_str() || end != text.c_str() + text.size())
         throw fest::bad_input("field {} is not a number ({}:{})", i + 1, name, lineno);
     }
     // A frame number outside long's range (or NaN) would make the cast undefined.
