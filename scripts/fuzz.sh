@@ -11,7 +11,7 @@ targets=("$@")
   fuzz_ltx fuzz_ltw fuzz_merl fuzz_tlp_archive fuzz_mmb fuzz_eos_model fuzz_npz_model
   fuzz_segbrain_kb fuzz_vtk_precheck
   fuzz_fluidsim fuzz_lmfsim_scene fuzz_capture fuzz_brdffit_json fuzz_quatpath_keys fuzz_patnet_inputs fuzz_tlp_pyramid
-  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy)
+  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy fuzz_hdrmerge_manifest fuzz_lmfsim_trajectory)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -49,6 +49,8 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_fluidsim) echo tests/data/fluidsim examples/fluidsim tests/data/regress/fluidsim ;;
     fuzz_lmfsim_scene) echo tests/data/lmfsim tests/data/regress/lmfsim ;;
     fuzz_capture) echo tests/data/capture examples/station tests/data/regress/capture ;;
+    fuzz_hdrmerge_manifest) echo tests/data/capture ;;
+    fuzz_lmfsim_trajectory) echo tests/data/lmfsim ;;
     fuzz_brdffit_json) echo tests/data/brdffit/json tests/data/regress/brdffit ;;
     fuzz_quatpath_keys) echo tests/data/quatpath examples/quatpath tests/data/regress/quatpath ;;
     fuzz_patnet_inputs) echo tests/data/patnet/inputs tests/data/regress/patnet_inputs ;;
