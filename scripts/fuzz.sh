@@ -11,7 +11,7 @@ targets=("$@")
   fuzz_ltx fuzz_ltw fuzz_merl fuzz_tlp_archive fuzz_mmb fuzz_eos_model fuzz_npz_model
   fuzz_segbrain_kb fuzz_vtk_precheck
   fuzz_fluidsim fuzz_lmfsim_scene fuzz_capture fuzz_brdffit_json fuzz_quatpath_keys fuzz_patnet_inputs fuzz_tlp_pyramid
-  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy)
+  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy fuzz_scene_detect)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -56,6 +56,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_landmarks) echo tests/data/facefit/landmarks tests/data/regress/landmarks ;;
     fuzz_transfer_function) echo tests/data/volrender/tf tests/data/regress/transfer_function ;;
     fuzz_dem_npy) echo tests/data/terrainlod/npy tests/data/regress/dem ;;
+    fuzz_scene_detect) echo tests/data/mesh tests/data/scene_signatures ;;
   esac
 }
 

@@ -31,6 +31,45 @@ run fcompare --samples 2000 "$sq" "$WORK/sq_expected.off"
 expect_status 0
 check "hausdorff 0" grep -qx "hausdorff 0" "$out"
 
+# A glTF whose geometry is in a separate quad.bin (and whose texture is a separate
+# quad_texture.png, not shipped: images are material data, never opened). The buffer
+# holds the quad (0,0,0) (3,0,0) (3,2,0) (0,2,0) as triangles 0 1 2, 0 2 3; its node moves
+# it by (10, 20, 30): 4 vertices, 2 triangles, bbox (10,20,30)-(13,22,30).
+ext="$FEST_FIXTURES/mesh/external_buffer"
+case_ "glTF with an external .bin, given by path from another folder: read beside the .gltf"
+mkdir -p "$WORK/elsewhere" "$WORK/copy of scene"
+(cd "$WORK/elsewhere" && "$FEST_BIN/fconv" --info "$ext/quad.gltf") >"$out" 2>"$err"
+rc=$?
+expect_status 0
+expect_json '.vertices' '4'
+expect_json '.faces' '2'
+expect_json '.bbox.min' '[10,20,30]'
+expect_json '.bbox.max' '[13,22,30]'
+expect_stderr_has "not read: 1 materials"
+cp "$ext/quad.gltf" "$ext/quad.bin" "$WORK/copy of scene/"
+(cd "$WORK" && "$FEST_BIN/fconv" "copy of scene/quad.gltf" -o quad.ply) >"$out" 2>"$err"
+rc=$?
+expect_status 0
+check "a relative path in a folder with a space: PLY of 4 vertices" \
+  grep -q "^element vertex 4" "$WORK/quad.ply"
+
+case_ "glTF with an external .bin on standard input: exit 3 naming the buffer, nothing written"
+# Run where quad.bin lies: the working directory must not stand in for the scene's folder.
+(cd "$ext" && "$FEST_BIN/fconv" - -o "$WORK/stdin_quad.ply" <quad.gltf) >"$out" 2>"$err"
+rc=$?
+expect_clean_failure 3 fconv
+expect_stderr_has '"quad.bin"'
+expect_stderr_has "standard input"
+check "nothing written" test ! -e "$WORK/stdin_quad.ply"
+
+case_ "glTF whose external .bin is missing beside it: exit 4 naming the file"
+mkdir -p "$WORK/lonely"
+cp "$ext/quad.gltf" "$WORK/lonely/"
+run fconv "$WORK/lonely/quad.gltf" -o "$WORK/lonely.ply"
+expect_clean_failure 4 fconv
+expect_stderr_has "lonely/quad.bin"
+check "nothing written" test ! -e "$WORK/lonely.ply"
+
 case_ "--version and a PLY conversion do not load libassimp; a glTF does"
 LD_DEBUG=files "$FEST_BIN/fconv" --version >/dev/null 2>"$WORK/ld1"
 check "no libassimp for --version" bash -c "! grep -q 'libassimp' '$WORK/ld1'"
