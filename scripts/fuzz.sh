@@ -65,7 +65,8 @@ run_one() {
   local t="$1" corpus="build-fuzz/corpus/$1"
   mkdir -p "$corpus"
   for d in $(seed_dirs "$t"); do
-    [ -d "$d" ] && find "$d" -type f -size -1M -exec cp -n {} "$corpus/" \; 2>/dev/null
+    # -size -1024k: find rounds sizes up to the unit, so -1M would match empty files only.
+    [ -d "$d" ] && find "$d" -type f -size -1024k -exec cp -n {} "$corpus/" \; 2>/dev/null
   done
   echo "fuzz.sh: $t for ${seconds}s"
   "build-fuzz/bin/$t" "$corpus" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
