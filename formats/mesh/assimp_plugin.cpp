@@ -139,6 +139,26 @@ void count_losses(const aiScene& s, AssimpScene& out) {
   add_count(out.not_geometry, "lights", s.mNumLights);
 }
 
+// "%XX" sequences replaced by their bytes (RFC 3986); anything else kept as it is.
+std::string percent_decoded(const std::string& text) {
+  auto hex = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 2 < text.size() && hex(text[i + 1]) >= 0 && hex(text[i + 2]) >= 0) {
+      out += static_cast<char>(hex(text[i + 1]) * 16 + hex(text[i + 2]));
+      i += 2;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
 // The files a scene refers to (a glTF's external buffers). assimp reads the scene itself
 // from memory (ReadFileFromMemory) and asks this IO system for every other file, by the
 // name the scene writes (relative to the scene: glTF URIs are), so it is looked for in
@@ -154,8 +174,13 @@ class FilesBesideScene : public Assimp::DefaultIOSystem {
   }
   Assimp::IOStream* Open(const char* name, const char* mode) override {
     Assimp::IOStream* stream = nullptr;
-    if (folder_ && std::strchr(mode, 'w') == nullptr && std::strchr(mode, 'a') == nullptr)
+    if (folder_ && std::strchr(mode, 'w') == nullptr && std::strchr(mode, 'a') == nullptr) {
       stream = DefaultIOSystem::Open(resolve(name).c_str(), mode);
+      // glTF URIs are percent-encoded ("my%20mesh.bin" names "my mesh.bin"); assimp
+      // 5.2 passes them on undecoded.
+      const std::string decoded = percent_decoded(name);
+      if (stream == nullptr && decoded != name) stream = DefaultIOSystem::Open(resolve(decoded.c_str()).c_str(), mode);
+    }
     if (stream == nullptr) not_opened_.push_back(name);
     return stream;
   }

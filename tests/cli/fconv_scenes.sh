@@ -52,6 +52,12 @@ rc=$?
 expect_status 0
 check "a relative path in a folder with a space: PLY of 4 vertices" \
   grep -q "^element vertex 4" "$WORK/quad.ply"
+# glTF URIs are percent-encoded: "quad%20buffer.bin" names the file "quad buffer.bin".
+cp "$ext/quad.bin" "$WORK/copy of scene/quad buffer.bin"
+sed 's/"quad.bin"/"quad%20buffer.bin"/' "$ext/quad.gltf" >"$WORK/copy of scene/encoded.gltf"
+run fconv --info "$WORK/copy of scene/encoded.gltf"
+expect_status 0
+expect_json '.vertices' '4'
 
 case_ "glTF with an external .bin on standard input: exit 3 naming the buffer, nothing written"
 # Run where quad.bin lies: the working directory must not stand in for the scene's folder.
