@@ -294,14 +294,17 @@ const char* format_extension(Format f) noexcept { return row(f).extension; }
 Format detect_format(std::string_view b, const std::string& where) {
   if (b.empty()) throw bad_input("{}", with_location("empty input", where));
 
-  // Binary signatures first: they are unambiguous.
+  // Binary signatures first: they are unambiguous. The scene signatures lead: a 3DS file
+  // whose length has 0x2A00 as its low 16 bits starts "MM\0*", TIFF's big-endian magic,
+  // and its chunk-length and version checks are the stronger evidence (a TIFF would need
+  // its size in its IFD offset's high bytes and 0x0200 or 0x3D3D in the low ones).
+  if (const std::optional<Format> scene = scene_signature(b)) return *scene;
   if (starts_with(b, "\x89PNG\r\n\x1a\n")) return Format::png;
   if (starts_with(b, std::string_view("\x76\x2f\x31\x01", 4))) return Format::exr;
   if (starts_with(b, std::string_view("II*\0", 4)) || starts_with(b, std::string_view("MM\0*", 4)))
     return Format::tiff;
   if (starts_with(b, "\xff\xd8\xff")) return Format::jpeg;
   if (starts_with(b, "DRACO")) return Format::drc;
-  if (const std::optional<Format> scene = scene_signature(b)) return *scene;
   if (starts_with(b, "NRRD000")) return Format::nrrd;
   if (const std::optional<Format> nifti = nifti_family(b); nifti && *nifti != Format::analyze) return *nifti;
   if (starts_with(b, "CDF\x01") || starts_with(b, "CDF\x02"))

@@ -11,7 +11,7 @@ targets=("$@")
   fuzz_ltx fuzz_ltw fuzz_merl fuzz_tlp_archive fuzz_mmb fuzz_eos_model fuzz_npz_model
   fuzz_segbrain_kb fuzz_vtk_precheck
   fuzz_fluidsim fuzz_lmfsim_scene fuzz_capture fuzz_brdffit_json fuzz_quatpath_keys fuzz_patnet_inputs fuzz_tlp_pyramid
-  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy fuzz_hdrmerge_manifest fuzz_lmfsim_trajectory)
+  fuzz_landmarks fuzz_transfer_function fuzz_dem_npy fuzz_hdrmerge_manifest fuzz_lmfsim_trajectory fuzz_scene_detect)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DFEST_FUZZ=ON -DFEST_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -58,6 +58,7 @@ seed_dirs() {  # the fixture folders whose files seed each target
     fuzz_landmarks) echo tests/data/facefit/landmarks tests/data/regress/landmarks ;;
     fuzz_transfer_function) echo tests/data/volrender/tf tests/data/regress/transfer_function ;;
     fuzz_dem_npy) echo tests/data/terrainlod/npy tests/data/regress/dem ;;
+    fuzz_scene_detect) echo tests/data/mesh tests/data/scene_signatures ;;
   esac
 }
 
@@ -66,7 +67,8 @@ run_one() {
   local t="$1" corpus="build-fuzz/corpus/$1"
   mkdir -p "$corpus"
   for d in $(seed_dirs "$t"); do
-    [ -d "$d" ] && find "$d" -type f -size -1M -exec cp -n {} "$corpus/" \; 2>/dev/null
+    # -size -1024k: find rounds sizes up to the unit, so -1M would match empty files only.
+    [ -d "$d" ] && find "$d" -type f -size -1024k -exec cp -n {} "$corpus/" \; 2>/dev/null
   done
   echo "fuzz.sh: $t for ${seconds}s"
   "build-fuzz/bin/$t" "$corpus" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \

@@ -39,12 +39,13 @@ std::string list(const std::vector<std::pair<std::string, std::size_t>>& parts) 
 
 }  // namespace
 
-Mesh read_assimp(std::string_view bytes, Format format) {
+Mesh read_assimp(std::string_view bytes, Format format, const std::optional<std::string>& folder) {
   const FestAssimpPluginTable& plugin = assimp_plugin();
   AssimpScene scene;
   char message[512] = "";
   const std::string hint = format == Format::threeds ? "3ds" : format == Format::xfile ? "x" : format_name(format);
-  if (int status = plugin.read_scene(bytes.data(), bytes.size(), hint.c_str(), &scene, message, sizeof message))
+  if (int status = plugin.read_scene(bytes.data(), bytes.size(), hint.c_str(), folder ? folder->c_str() : nullptr,
+                                     &scene, message, sizeof message))
     throw Error(static_cast<Status>(status), fmt::format("{} (through assimp): {}", format_name(format), message));
   const std::size_t n = scene.positions.size() / 3;
   if (n > max_element_count || scene.triangles.size() / 3 > max_element_count)

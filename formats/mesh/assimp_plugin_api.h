@@ -17,15 +17,18 @@
 extern "C" {
 #endif
 
-#define FEST_ASSIMP_PLUGIN_ABI 1
+#define FEST_ASSIMP_PLUGIN_ABI 2
 
 typedef struct FestAssimpPluginTable {
   int abi;       /* FEST_ASSIMP_PLUGIN_ABI */
   size_t layout; /* sizeof(fest::formats::AssimpScene) as the plugin was built */
   /* bytes (extension hint "gltf", "3ds", ...) -> *(fest::formats::AssimpScene*)scene.
-   * Returns 0, or 3 (bad input) with a one-line message in `message`. */
-  int (*read_scene)(const char* bytes, size_t size, const char* hint, void* scene, char* message,
-                    size_t message_size);
+   * `folder`: where the files the scene refers to lie (a glTF's .bin buffers), the scene
+   * file's folder; NULL when the scene has no file (standard input), and then such a
+   * scene fails naming the file. Returns 0, or 3 (bad input) or 4 (a file the scene
+   * refers to cannot be read) with a one-line message in `message`. */
+  int (*read_scene)(const char* bytes, size_t size, const char* hint, const char* folder, void* scene,
+                    char* message, size_t message_size);
 } FestAssimpPluginTable;
 const FestAssimpPluginTable* fest_assimp_plugin_table(void);
 

@@ -13,6 +13,7 @@
 // Draco goes through the Draco library (draco_format.cpp).
 
 #include <string>
+#include <optional>
 #include <string_view>
 
 #include "core/mesh.hpp"
@@ -35,7 +36,9 @@ std::string write_stl(const Mesh& mesh, bool ascii);
 Mesh read_drc(std::string_view bytes);
 
 // glTF/GLB, COLLADA, FBX, 3DS, .x, LightWave through the assimp plugin (read only).
-Mesh read_assimp(std::string_view bytes, Format format);
+// `folder`: where the files the scene refers to lie (the scene file's folder); none
+// for bytes without a file (standard input).
+Mesh read_assimp(std::string_view bytes, Format format, const std::optional<std::string>& folder);
 std::string write_drc(const Mesh& mesh, const MeshWriteOptions& options);
 
 }  // namespace fest::formats::mesh_detail

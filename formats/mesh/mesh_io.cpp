@@ -3,7 +3,9 @@
 #include "formats/mesh/mesh_io.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -14,7 +16,16 @@
 
 namespace fest::formats {
 
-Mesh read_mesh(std::string_view bytes, Format format) {
+namespace {
+
+// Where the files a scene refers to are looked for: beside the scene file, or nowhere.
+std::optional<std::string> folder_of(const Input& in) {
+  if (in.name.empty() || in.name == "-") return std::nullopt;
+  const std::filesystem::path parent = std::filesystem::path(in.name).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+Mesh read_mesh_from(std::string_view bytes, Format format, const std::optional<std::string>& folder) {
   using namespace mesh_detail;
   silence_openmesh();
   if (kind_of(format) != Kind::mesh) throw bad_input("{} is not a mesh format", format_name(format));
@@ -27,9 +38,17 @@ Mesh read_mesh(std::string_view bytes, Format format) {
     case Format::drc: return read_drc(bytes);
     default: break;
   }
-  if (read_only_scene_format(format)) return read_assimp(bytes, format);
+  if (read_only_scene_format(format)) return read_assimp(bytes, format, folder);
   throw bad_input("{} is not a mesh format", format_name(format));
 }
+
+}  // namespace
+
+Mesh MeshReader::operator()(std::string_view bytes, Format format) const {
+  return read_mesh_from(bytes, format, std::nullopt);
+}
+
+Mesh MeshReader::operator()(const Input& in) const { return read_mesh_from(in.bytes, in.format, folder_of(in)); }
 
 std::string write_mesh(const Mesh& mesh, Format format, const MeshWriteOptions& options) {
   using namespace mesh_detail;

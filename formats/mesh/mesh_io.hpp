@@ -60,6 +60,7 @@
 
 #include "core/mesh.hpp"
 #include "formats/detect.hpp"
+#include "formats/input.hpp"
 
 namespace fest::formats {
 
@@ -101,7 +102,16 @@ std::vector<MeshPart> unwritable_parts(const Mesh& mesh, Format format);
 // Parses bytes already recognised as `format` (one of the mesh formats). Throws
 // fest::Error(Status::bad_input) for anything malformed, without crashing or
 // allocating more than the input can justify.
-Mesh read_mesh(std::string_view bytes, Format format);
+//
+// read_mesh(bytes, format) reads the bytes alone; read_mesh(input) also finds the files
+// a scene refers to (a glTF's external .bin buffers) beside the input's path -- none for
+// standard input, where such a scene fails with bad_input naming the file. It is one
+// callable object so that `parse(in, read_mesh)` picks the Input form (as read_volume).
+struct MeshReader {
+  Mesh operator()(std::string_view bytes, Format format) const;
+  Mesh operator()(const Input& in) const;
+};
+inline constexpr MeshReader read_mesh{};
 
 // Serialises a mesh. Coordinates written as text round-trip exactly. Throws
 // Status::usage for options out of range (draco_position_bits 0..30, draco_speed

@@ -57,6 +57,12 @@ TEST(Detect, SceneFormats) {
   EXPECT_EQ(detect(std::string("FORM\0\0\0\x04LWO2", 12)), Format::lwo);
   // 3DS: main chunk 0x4D4D of the file's length (16), then the version chunk 0x0002.
   EXPECT_EQ(detect(std::string("\x4d\x4d\x10\0\0\0\x02\0\x0a\0\0\0\x03\0\0\0", 16)), Format::threeds);
+  // A 3DS file of 10752 = 0x2A00 bytes starts "MM\0*", TIFF's big-endian magic: its
+  // chunk length and version chunk decide (found by writing tests/fuzz/fuzz_scene_detect).
+  std::string tiff_like(10752, '\0');
+  tiff_like.replace(0, 8, std::string("\x4d\x4d\x00\x2a\0\0\x02\0", 8));
+  EXPECT_EQ(detect(tiff_like), Format::threeds);
+  EXPECT_EQ(detect(std::string("MM\0*\0\0\0\x08", 8)), Format::tiff);  // a TIFF stays a TIFF
   EXPECT_EQ(kind_of(Format::glb), Kind::mesh);
   EXPECT_TRUE(read_only_scene_format(Format::fbx));
   EXPECT_FALSE(read_only_scene_format(Format::drc));
