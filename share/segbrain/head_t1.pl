@@ -253,13 +253,14 @@ refine_brain_result(M, Out) :-
     largest_component(r3, 6, Out).
 
 
-% The tissue of a skull-stripped volume: above the background, one piece, closed by
-% stripped_close_mm (narrow exits of the ventricles) and filled in 3-D.
-limit(stripped_close_mm, 1.5).
+% The tissue of a skull-stripped volume: above the background, one piece; a cavity is
+% inside the brain (a ventricle) when brain encloses it in its axial, coronal and sagittal
+% sections alike, then what 3-D still encloses is filled.
 brain_only_mask(B) :-
     robust_range(t1, all, P2, P98), T is P2 + 0.10 * (P98 - P2),
     threshold(t1, T, inf, st0), largest_component(st0, 26, st1),
-    limit(stripped_close_mm, C), close(st1, C, st2), fill_holes(st2, volume, B).
+    fill_holes(st1, slice(axial), sa), fill_holes(st1, slice(coronal), sc), fill_holes(st1, slice(sagittal), ss),
+    and(sa, sc, sac), and(sac, ss, st2), fill_holes(st2, volume, B).
 
 no_scalp_in_view :- wm_reference(W), T is 1.2 * W, fraction_above(t1, head, T, B), B =< 0.02.
 
