@@ -193,6 +193,7 @@ find_brain :-
 % corpus callosum closes it front and back: streaks of "CSF" across a sagittal slice.)
 find_brain :-
     scene(whole_head_candidate), already_skull_stripped, brain_only_mask(brain_filled),
+    limit(stripped_envelope_close_mm, R), close(brain_filled, R, brain_envelope),
     retract(scene(whole_head_candidate)), assertz(scene(brain_only)),
     assertz(scene_note(info, 'the volume is already skull-stripped (brain only): skull stripping skipped')), !.
 
@@ -261,6 +262,13 @@ brain_only_mask(B) :-
     threshold(t1, T, inf, st0), largest_component(st0, 26, st1),
     fill_holes(st1, slice(axial), sa), fill_holes(st1, slice(coronal), sc), fill_holes(st1, slice(sagittal), ss),
     and(sa, sc, sac), and(sac, ss, st2), fill_holes(st2, volume, B).
+
+% The ventricles lie deep in the brain's envelope. In a skull-stripped volume the
+% interhemispheric fissure is outside the brain mask yet no farther from the ventricles
+% than the corpus callosum is thick (5-10 mm), so their depth is measured in the mask
+% closed over the fissure (a 5 mm ball bridges a fissure up to 10 mm wide).
+limit(stripped_envelope_close_mm, 5).
+ventricle_envelope(E) :- exists(brain_envelope) -> E = brain_envelope ; E = brain_filled.
 
 no_scalp_in_view :- wm_reference(W), T is 1.2 * W, fraction_above(t1, head, T, B), B =< 0.02.
 
@@ -339,7 +347,7 @@ find_ventricles :-
     candidates(ventricle_depth_mm, Ds), member(D, Ds),
     candidates(ventricle_seed_max, Cs), member(C, Cs),
     Hs is C * W, threshold(t1, -inf, Hs, vdark), and(vdark, brain_filled, vcsf),
-    depth_shell(brain_filled, D, 1000, deep), and(vcsf, deep, vseed),
+    ventricle_envelope(Env), depth_shell(Env, D, 1000, deep), and(vcsf, deep, vseed),
     centroid_mm(brain_filled, Bc), limit(ventricles_seed_dist_mm, Dm),
     components_near(vseed, 26, 0.1, Bc, Dm, vcore),
     window(t1, csf, _, Gw), Hg is Gw * W, threshold(t1, -inf, Hg, gdark), and(gdark, brain_filled, gcsf),
