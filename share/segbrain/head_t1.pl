@@ -165,7 +165,8 @@ find_head :-
 find_head :-
     \+ whole_brain_fits,
     field_of_view_mm([Er, Ea, Es]), Ri is round(Er), Ai is round(Ea), Si is round(Es),
-    robust_range(t1, all, P2, P98), T is P2 + 0.10 * (P98 - P2),
+    robust_range(t1, all, P2, P98), P98 > P2,   % some contrast: not a constant volume
+    T is P2 + 0.10 * (P98 - P2),
     threshold(t1, T, inf, fg), largest_component(fg, 26, h0),
     fill_holes(h0, slice(axial), h1), fill_holes(h1, volume, head),
     format_atom('field of view ~wx~wx~w mm covers part of the brain', [Ri, Ai, Si], Fov),
