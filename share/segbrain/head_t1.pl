@@ -194,7 +194,6 @@ find_brain :-
 % corpus callosum closes it front and back: streaks of "CSF" across a sagittal slice.)
 find_brain :-
     scene(whole_head_candidate), already_skull_stripped, brain_only_mask(brain_filled),
-    limit(stripped_envelope_close_mm, R), close(brain_filled, R, brain_envelope),
     retract(scene(whole_head_candidate)), assertz(scene(brain_only)),
     assertz(scene_note(info, 'the volume is already skull-stripped (brain only): skull stripping skipped')), !.
 
@@ -269,7 +268,10 @@ brain_only_mask(B) :-
 % than the corpus callosum is thick (5-10 mm), so their depth is measured in the mask
 % closed over the fissure (a 5 mm ball bridges a fissure up to 10 mm wide).
 limit(stripped_envelope_close_mm, 5).
-ventricle_envelope(E) :- exists(brain_envelope) -> E = brain_envelope ; E = brain_filled.
+ventricle_envelope(brain_envelope) :- exists(brain_envelope), !.
+ventricle_envelope(brain_envelope) :-
+    scene(brain_only), !, limit(stripped_envelope_close_mm, R), close(brain_filled, R, brain_envelope).
+ventricle_envelope(brain_filled).
 
 no_scalp_in_view :- wm_reference(W), T is 1.2 * W, fraction_above(t1, head, T, B), B =< 0.02.
 
@@ -344,11 +346,11 @@ emit_tissue :-
 % the brain's centre as cores, grown geodesically by a few mm inside the CSF window
 % (partial volume of the narrow horns); verified by volume and symmetry.
 find_ventricles :-
-    wm_reference(W),
+    wm_reference(W), ventricle_envelope(Env),
     candidates(ventricle_depth_mm, Ds), member(D, Ds),
     candidates(ventricle_seed_max, Cs), member(C, Cs),
     Hs is C * W, threshold(t1, -inf, Hs, vdark), and(vdark, brain_filled, vcsf),
-    ventricle_envelope(Env), depth_shell(Env, D, 1000, deep), and(vcsf, deep, vseed),
+    depth_shell(Env, D, 1000, deep), and(vcsf, deep, vseed),
     centroid_mm(brain_filled, Bc), limit(ventricles_seed_dist_mm, Dm),
     components_near(vseed, 26, 0.1, Bc, Dm, vcore),
     window(t1, csf, _, Gw), Hg is Gw * W, threshold(t1, -inf, Hg, gdark), and(gdark, brain_filled, gcsf),
