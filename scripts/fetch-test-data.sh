@@ -57,6 +57,7 @@ mricron-data usr/share/mricron/templates/ch2bet.nii.gz mri/ch2bet.nii.gz
 mricron-data usr/share/mricron/templates/aal.nii.gz mri/aal.nii.gz
 mricron-data usr/share/mricron/templates/aal.nii.txt mri/aal.nii.txt
 mricron-data usr/share/mricron/templates/jhu189.nii.gz mri/jhu189.nii.gz
+mricron-data usr/share/mricron/templates/ch2better.nii.gz mri/ch2better.nii.gz
 opencv-doc usr/share/doc/opencv-doc/examples/data/aloeL.jpg images/aloeL.jpg
 opencv-doc usr/share/doc/opencv-doc/examples/data/aloeR.jpg images/aloeR.jpg
 dolfin-doc usr/share/dolfin/demo/undocumented/advection-diffusion/dolfin_fine.xml.gz cfd/dolfin_fine_mesh.xml.gz
@@ -119,7 +120,15 @@ else
 fi
 
 manifest_new="$(data_manifest)"
-if [ -f "$test_data_dir/MANIFEST" ] && [ "$(cat "$test_data_dir/MANIFEST")" = "$manifest_new" ]; then
+# A listed file missing from the cache (a path added to DATA_FILES for a package already
+# fetched, e.g. mri/ch2better.nii.gz) is fetched again; Cranium.inv3 is unpacked and removed.
+all_files_present() {
+  while read -r _ _ dest; do
+    [ -n "$dest" ] && [ "$dest" != volumes/Cranium.inv3 ] && [ ! -f "$test_data_dir/$dest" ] && return 1
+  done <<< "$DATA_FILES"
+  return 0
+}
+if [ -f "$test_data_dir/MANIFEST" ] && [ "$(cat "$test_data_dir/MANIFEST")" = "$manifest_new" ] && all_files_present; then
   echo "fetch-test-data.sh: test data in $test_data_dir is up to date"
   exit 0
 fi

@@ -8,6 +8,7 @@
 // Runs are found and labels written slice by slice in parallel; the unions, a small
 // fraction of the work, run in one fixed order, so the result never depends on threads.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -239,6 +240,31 @@ Mask fill_holes(const Grid& g, const Mask& m, bool per_slice) {
     }
   Mask out(g.size(), 1);
   paint_runs(g, L, out, [&](std::uint32_t id) { return static_cast<std::uint8_t>(!outside[id]); });
+  return out;
+}
+
+Mask fill_holes_sections(const Grid& g, const Mask& m, int axis) {
+  if (axis == 2) return fill_holes(g, m, true);
+  // Relabel the axes so that `axis` becomes the third (the section index) and fill the
+  // axial sections of the permuted grid; x stays first when it is not the section axis.
+  const std::array<int, 3> order = axis == 1 ? std::array<int, 3>{0, 2, 1} : std::array<int, 3>{1, 2, 0};
+  Grid t;
+  for (int k = 0; k < 3; ++k) t.n[k] = g.n[order[k]], t.spacing[k] = g.spacing[order[k]];
+  Mask tm(m.size());
+  std::array<std::size_t, 3> p{};
+  auto src_index = [&](const std::array<std::size_t, 3>& q) {
+    std::array<std::size_t, 3> o{};
+    for (int k = 0; k < 3; ++k) o[order[k]] = q[k];
+    return g.index(o[0], o[1], o[2]);
+  };
+  for (p[2] = 0; p[2] < t.n[2]; ++p[2])
+    for (p[1] = 0; p[1] < t.n[1]; ++p[1])
+      for (p[0] = 0; p[0] < t.n[0]; ++p[0]) tm[t.index(p[0], p[1], p[2])] = m[src_index(p)];
+  const Mask filled = fill_holes(t, tm, true);
+  Mask out(m.size());
+  for (p[2] = 0; p[2] < t.n[2]; ++p[2])
+    for (p[1] = 0; p[1] < t.n[1]; ++p[1])
+      for (p[0] = 0; p[0] < t.n[0]; ++p[0]) out[src_index(p)] = filled[t.index(p[0], p[1], p[2])];
   return out;
 }
 

@@ -38,7 +38,7 @@ const std::set<std::string>& builtin_keys() {
       "true/0", ",/2", ";/2", "->/2", "\\+/1", "!/0", "call/1", "call/2", "call/3", "call/4", "call/5",
       "call/6", "findall/3", "optional/1", "between/3", "fail/0", "false/0", "=/2", "\\=/2", "==/2",
       "\\==/2", "is/2", "</2", ">/2", "=</2", ">=/2", "=:=/2", "=\\=/2", "atom/1", "number/1",
-      "integer/1", "var/1", "nonvar/1", "assertz/1", "retract/1", "format/1", "format/2", "param/2",
+      "integer/1", "var/1", "nonvar/1", "assertz/1", "retract/1", "format/1", "format/2", "format_atom/3", "param/2",
       "msort/2", "sum_list/2", "min_list/2", "max_list/2", "length/2"};
   return keys;
 }
@@ -633,10 +633,11 @@ Engine::Res Engine::call_builtin(const std::string& key, const Term& goal, std::
     }
     return Res{Sig::fail, 0};
   }
-  if (key == "format/1" || key == "format/2") {
+  if (key == "format/1" || key == "format/2" || key == "format_atom/3") {
     Term f = deref(a[0]);
+    if (f->kind != Kind::atom && f->kind != Kind::string) type_error(ctx, goal->name + ": the format must be an atom or a string, got " + to_string(f));
     std::vector<Term> args;
-    if (a.size() == 2 && !list_items(a[1], args)) args = {a[1]};
+    if (a.size() >= 2 && !list_items(a[1], args)) args = {a[1]};
     std::string out;
     std::size_t ai = 0;
     for (std::size_t i = 0; i < f->name.size(); ++i) {
@@ -653,6 +654,9 @@ Engine::Res Engine::call_builtin(const std::string& key, const Term& goal, std::
         out += c;
       }
     }
+    // format_atom(+Format, +Args, -Atom): the same text as an atom (the knowledge base's
+    // notes on what it skipped and why, docs/segbrain.md §1).
+    if (key == "format_atom/3") return det_unify(a[2], make_atom(out));
     if (log_) log_(out);
     return k();
   }

@@ -38,6 +38,11 @@ Mask close(const Grid& g, const Mask& m, double r);
 // Background components (6-connected; 4-connected per axial slice when per_slice) that do
 // not touch the grid border are added to the mask.
 Mask fill_holes(const Grid& g, const Mask& m, bool per_slice);
+// The same per section across `axis` (0: sagittal sections, constant R; 1: coronal,
+// constant A; 2: axial, as fill_holes per slice). A brain whose CSF was stripped has the
+// interhemispheric fissure open to the vertex in every coronal section but closed by the
+// corpus callosum in some axial ones (docs/segbrain.md §1).
+Mask fill_holes_sections(const Grid& g, const Mask& m, int axis);
 
 // Flood fill from the seed voxels over lo <= I <= hi inside `within` (empty = all).
 Mask region_grow(const Grid& g, const std::vector<float>& img, const Mask& seeds, double lo, double hi, int conn,

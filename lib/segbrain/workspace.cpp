@@ -100,11 +100,16 @@ Point point_of(Engine& e, const Term& t) {
   return {e.eval(items[0]), e.eval(items[1]), e.eval(items[2])};
 }
 
-bool slice_scope(const Term& t) {
+// volume -> -1; slice(axial | coronal | sagittal) -> the axis across which the sections lie.
+int slice_scope(const Term& t) {
   Term d = deref(t);
-  if (d->kind == Kind::atom && d->name == "volume") return false;
-  if (d->kind == Kind::compound && d->name == "slice" && d->args.size() == 1 && is_atom(d->args[0], "axial")) return true;
-  throw bad_input("scope must be volume or slice(axial), got {}", to_string(d));
+  if (d->kind == Kind::atom && d->name == "volume") return -1;
+  if (d->kind == Kind::compound && d->name == "slice" && d->args.size() == 1) {
+    if (is_atom(d->args[0], "axial")) return 2;
+    if (is_atom(d->args[0], "coronal")) return 1;
+    if (is_atom(d->args[0], "sagittal")) return 0;
+  }
+  throw bad_input("scope must be volume or slice(axial | coronal | sagittal), got {}", to_string(d));
 }
 
 }  // namespace
@@ -181,9 +186,12 @@ void Workspace::register_operators(Engine& engine) {
         e.measure() = {{"largest_fraction", q}};
         return e.unify(a[1], make_real(q));
       });
-  engine.register_foreign("fill_holes", 3, "+Mask, +Scope, -Out", "fill background not connected to the grid border",
+  engine.register_foreign("fill_holes", 3, "+Mask, +volume|slice(axial|coronal|sagittal), -Out",
+      "fill background not connected to the grid border (in 3-D or section by section)",
       [this](Engine& e, const std::vector<Term>& a) {
-        return create(e, a[2], mask_object(fill_holes(grid_, mask(name_of(a[0])), slice_scope(a[1]))));
+        const int axis = slice_scope(a[1]);
+        const Mask& m = mask(name_of(a[0]));
+        return create(e, a[2], mask_object(axis < 0 ? fill_holes(grid_, m, false) : fill_holes_sections(grid_, m, axis)));
       });
   // --- post-processing: morphology on the exact distance transform ---
   auto morph = [&](const char* name, Mask (*op)(const Grid&, const Mask&, double)) {
@@ -271,6 +279,14 @@ void Workspace::register_operators(Engine& engine) {
         auto b = bbox_mm(grid_, mask(name_of(a[0])));
         if (std::isnan(b[0])) return false;
         return e.unify(a[1], number_list(b.data(), 6));
+      });
+  // The scene's first question (docs/segbrain.md §1, field of view): can the volume hold a
+  // whole brain at all? Extents in mm, voxel count times spacing along R, A, S.
+  engine.register_foreign("field_of_view_mm", 1, "-[ER,EA,ES]", "extent of the volume along R, A, S in mm",
+      [this](Engine& e, const std::vector<Term>& a) {
+        const double ext[3] = {double(grid_.n[0]) * grid_.spacing[0], double(grid_.n[1]) * grid_.spacing[1], double(grid_.n[2]) * grid_.spacing[2]};
+        e.measure() = {{"fov_r_mm", ext[0]}, {"fov_a_mm", ext[1]}, {"fov_s_mm", ext[2]}};
+        return e.unify(a[0], number_list(ext, 3));
       });
   engine.register_foreign("midsagittal_plane", 3, "+Img, +Mask, -PlaneRMM",
       "sagittal plane R = c (mm, within 15 mm of the mask's centroid) of greatest mirror correlation",

@@ -78,8 +78,15 @@ limit(brain_min_ml, 900).          limit(brain_max_ml, 2100).
 limit(brain_head_ratio_min, 0.30). limit(brain_head_ratio_max, 0.60).
 
 % --- goals ---
-segment_head :- find_head, find_brain, find_midsagittal, optional(find_eyes), find_ventricles,
-    optional(find_cerebellum), optional(find_brainstem), optional(find_optic_nerves), emit_objects.
+% The scene decides what can be sought (docs/segbrain.md §1, "What the volume holds"):
+% a whole head, a brain already stripped of skull and scalp, or a field of view that cuts
+% through the brain. What the scene rules out is noted (skipped_object/2), not failed.
+segment_head :-
+    find_head, find_brain,
+    ( scene(partial) -> optional(find_midsagittal_and_ventricles) ; find_midsagittal, find_ventricles ),
+    seek(eyes, find_eyes), seek(cerebellum, find_cerebellum), seek(brainstem, find_brainstem),
+    seek(optic_nerve, find_optic_nerves), emit_objects.
+find_midsagittal_and_ventricles :- find_midsagittal, find_ventricles.
 
 % --objects: only the goals the requested objects need; an object asked for by name must
 % be found (no optional/1 here).
@@ -87,11 +94,53 @@ segment_objects(Os) :-
     find_head,
     ( member(O, Os), O \== head -> find_brain, find_midsagittal ; true ),
     ( member(O2, [ventricles, cerebellum, brainstem]), memberchk(O2, Os) -> find_ventricles ; true ),
-    ( memberchk(cerebellum, Os) -> find_cerebellum ; true ),
-    ( memberchk(brainstem, Os) -> find_brainstem ; true ),
-    ( member(O3, [eyes, optic_nerve]), memberchk(O3, Os) -> find_eyes ; true ),
+    ( memberchk(cerebellum, Os) -> must_seek(cerebellum), find_cerebellum ; true ),
+    ( memberchk(brainstem, Os) -> must_seek(brainstem), find_brainstem ; true ),
+    ( member(O3, [eyes, optic_nerve]), memberchk(O3, Os) -> must_seek(eyes), find_eyes ; true ),
     ( memberchk(optic_nerve, Os) -> find_optic_nerves ; true ),
     emit_objects.
+
+% --- the scene (docs/segbrain.md §1) ---
+% scene(whole_head | brain_only | partial); scene_note(Level, Text): info is shown on
+% standard error with -v, skip always; skipped_object(Object, Reason): what the scene
+% rules out, one line per reason on standard error and in the report.
+:- dynamic(scene/1).
+:- dynamic(scene_note/2).
+:- dynamic(skipped_object/2).
+:- dynamic(fov_text/1).
+% An adult brain spans at least about 120 x 150 x 95 mm (R, A, S; Colin27: 145 x 181 x
+% 160); a volume smaller than that along any axis cannot hold a whole one.
+limit(brain_min_extent_mm, [120, 150, 95]).
+% The cerebellum and the brainstem lie 10-60 mm below the centre of the ventricles
+% (Colin27: cerebellum 42 mm, brainstem 36 mm below it, bottom edges 60-70 mm); they are
+% sought only where the field of view reaches that far down.
+limit(posterior_fossa_below_ventricles_mm, 50).
+
+whole_brain_fits :-
+    field_of_view_mm([Er, Ea, Es]), limit(brain_min_extent_mm, [Mr, Ma, Ms]),
+    Er >= Mr, Ea >= Ma, Es >= Ms.
+
+% seek(Object, Goal): prove Goal (optional) when the scene allows Object, else note why not.
+seek(O, _) :- out_of_view(O, Why), !, note_skipped(O, Why).
+seek(_, G) :- optional(G).
+% For --objects: an object asked for by name that the scene rules out is an error.
+must_seek(O) :- out_of_view(O, Why), !, format('segbrain: ~w not sought: ~w~n', [O, Why]), fail.
+must_seek(_).
+note_skipped(O, Why) :- skipped_object(O, Why), !.
+note_skipped(O, Why) :- assertz(skipped_object(O, Why)).
+
+out_of_view(O, 'outside the brain, and the volume is skull-stripped') :-
+    memberchk(O, [eyes, optic_nerve]), scene(brain_only).
+out_of_view(O, 'outside a field of view that covers part of the brain') :-
+    memberchk(O, [eyes, optic_nerve]), scene(partial).
+out_of_view(optic_nerve, 'no eyes to start from') :- \+ exists(eyes).
+out_of_view(O, Why) :-
+    memberchk(O, [cerebellum, brainstem]), \+ exists(ventricles),
+    Why = 'no ventricles to place them by'.
+out_of_view(O, Why) :-
+    memberchk(O, [cerebellum, brainstem]), centroid_mm(ventricles, [_, _, Sv]),
+    limit(posterior_fossa_below_ventricles_mm, D), Sv < D, Sr is round(Sv),
+    format_atom('the field of view ends ~w mm below the ventricles, they lie 10-60 mm below them', [Sr], Why).
 
 % The plane R = c of greatest left-right symmetry of the brain, kept as a fact for the
 % symmetry checks of the objects inside it.
@@ -101,6 +150,7 @@ find_midsagittal :- midsagittal_plane(t1, brain_filled, R), assertz(midsagittal_
 % Foreground above a fraction of the robust intensity range; the largest 26-connected
 % part with its holes filled (slice-wise first: the neck cut leaves the volume open).
 find_head :-
+    whole_brain_fits,
     robust_range(t1, all, P2, P98),
     candidates(bg_fraction, Fs), member(F, Fs),
     T is P2 + F * (P98 - P2),
@@ -108,7 +158,19 @@ find_head :-
     largest_component(fg, 26, h0),
     fill_holes(h0, slice(axial), h1),
     fill_holes(h1, volume, head),
-    verify_head(head), !.
+    verify_head(head), assertz(scene(whole_head_candidate)), !.
+
+% A field of view smaller than a brain (docs/segbrain.md §1): the foreground is brain cut
+% by the volume's faces (or part of a head); no size prior applies.
+find_head :-
+    \+ whole_brain_fits,
+    field_of_view_mm([Er, Ea, Es]), Ri is round(Er), Ai is round(Ea), Si is round(Es),
+    robust_range(t1, all, P2, P98), P98 > P2,   % some contrast: not a constant volume
+    T is P2 + 0.10 * (P98 - P2),
+    threshold(t1, T, inf, fg), largest_component(fg, 26, h0),
+    fill_holes(h0, slice(axial), h1), fill_holes(h1, volume, head),
+    format_atom('field of view ~wx~wx~w mm covers part of the brain', [Ri, Ai, Si], Fov),
+    assertz(scene(partial)), assertz(fov_text(Fov)), !.
 
 verify_head(H) :-
     volume_ml(H, V), limit(head_min_ml, Lo), limit(head_max_ml, Hi), V >= Lo, V =< Hi,
@@ -117,9 +179,23 @@ verify_head(H) :-
 % The deep centre of the head is white matter (and ventricles) on T1.
 wm_reference(W) :- deep_intensity(t1, head, 0.10, W).
 
+% A partial field of view with no scalp fat in it (T1: fat brighter than white matter)
+% holds brain only: the tissue in view is the brain.
+find_brain :-
+    scene(partial), no_scalp_in_view,
+    copy(head, brain_filled), fov_text(Fov),
+    format_atom('~w: no skull in the volume, skull stripping skipped', [Fov], Note),
+    assertz(scene_note(skip, Note)), !.
 % Input that is already brain-only: 2-10 mm below its outline lies cortex, not scalp
-% fat and skull.
-find_brain :- already_skull_stripped, copy(head, brain_filled), !.
+% fat and skull. Skull stripping may remove the CSF with the skull (Colin27's ch2better:
+% every CSF voxel is 0), so the brain is the tissue with the holes of its coronal sections
+% filled: there the ventricles are enclosed by brain while the interhemispheric fissure
+% and the sulci open to the surface. (Axial sections would fill the fissure wherever the
+% corpus callosum closes it front and back: streaks of "CSF" across a sagittal slice.)
+find_brain :-
+    scene(whole_head_candidate), already_skull_stripped, brain_only_mask(brain_filled),
+    retract(scene(whole_head_candidate)), assertz(scene(brain_only)),
+    assertz(scene_note(info, 'the volume is already skull-stripped (brain only): skull stripping skipped')), !.
 
 % Window on intensity, then separation of the brain from extracerebral tissue of the
 % same intensity by erosion, the largest core, and dilation back (reconstruction).
@@ -134,7 +210,7 @@ find_brain :-
     % enclosed by brain in axial sections, and brain_filled includes them (figure 2.2).
     close(b0, 3, b1), fill_holes(b1, slice(axial), b2), fill_holes(b2, volume, brain_raw),
     verify_brain_result(brain_raw),
-    copy(brain_raw, brain_filled), !.
+    copy(brain_raw, brain_filled), settle_scene, !.
 
 % The chapter's method (its rule, its names and order; figure 2.5): Marr-Hildreth edges
 % divide each axial slice into regions; the largest brain-like region of a slice of the
@@ -159,7 +235,7 @@ find_brain :-
     aggregate_all_brain_regions(regions, start, W, brain_regions),
     refine_brain_result(brain_regions, brain_raw),
     verify_brain_result(brain_raw),
-    copy(brain_raw, brain_filled), !.
+    copy(brain_raw, brain_filled), settle_scene, !.
 
 apply_marr_hildreth_operator(S, K, E) :- marr_hildreth(t1, S, K, slice(axial), E).
 divide_image_into_anatomically_meaningful_regions(E, R) :-
@@ -178,11 +254,36 @@ refine_brain_result(M, Out) :-
     largest_component(r3, 6, Out).
 
 
+% The tissue of a skull-stripped volume: above the background, one piece; a cavity is
+% inside the brain (a ventricle) when brain encloses it in its axial, coronal and sagittal
+% sections alike, then what 3-D still encloses is filled.
+brain_only_mask(B) :-
+    robust_range(t1, all, P2, P98), T is P2 + 0.10 * (P98 - P2),
+    threshold(t1, T, inf, st0), largest_component(st0, 26, st1),
+    fill_holes(st1, slice(axial), sa), fill_holes(st1, slice(coronal), sc), fill_holes(st1, slice(sagittal), ss),
+    and(sa, sc, sac), and(sac, ss, st2), fill_holes(st2, volume, B).
+
+% The ventricles lie deep in the brain's envelope. In a skull-stripped volume the
+% interhemispheric fissure is outside the brain mask yet no farther from the ventricles
+% than the corpus callosum is thick (5-10 mm), so their depth is measured in the mask
+% closed over the fissure (a 5 mm ball bridges a fissure up to 10 mm wide).
+limit(stripped_envelope_close_mm, 5).
+ventricle_envelope(brain_envelope) :- exists(brain_envelope), !.
+ventricle_envelope(brain_envelope) :-
+    scene(brain_only), !, limit(stripped_envelope_close_mm, R), close(brain_filled, R, brain_envelope).
+ventricle_envelope(brain_filled).
+
+no_scalp_in_view :- wm_reference(W), T is 1.2 * W, fraction_above(t1, head, T, B), B =< 0.02.
+
 already_skull_stripped :-
     wm_reference(W),
     depth_shell(head, 2, 10, shell),
     Lo is 0.45 * W, Hi is 1.15 * W, fraction_within(t1, shell, Lo, Hi, F), F >= 0.90,
     T is 1.2 * W, fraction_above(t1, shell, T, B), B =< 0.02.
+
+% The scene of a head whose brain was found by skull stripping.
+settle_scene :- retract(scene(whole_head_candidate)), !, assertz(scene(whole_head)).
+settle_scene.
 
 % The chapter's verification rule, in the chapter's order, plus a size prior.
 verify_brain_result(M) :-
@@ -202,6 +303,8 @@ reasonable_contour_length(M) :-
 comparable_to_adjacent_slices(M) :-
     slice_consistency(M, axial, C, D),
     limit(slice_change_max, Cx), C =< Cx, limit(slice_dice_min, Dm), D >= Dm.
+% A field of view smaller than a brain holds part of one: no size prior (§1).
+plausible_brain_size(_) :- scene(partial), !.
 plausible_brain_size(M) :-
     volume_ml(M, V), limit(brain_min_ml, Vlo), limit(brain_max_ml, Vhi), V >= Vlo, V =< Vhi,
     ratio_ml(M, head, Q), limit(brain_head_ratio_min, Qlo), limit(brain_head_ratio_max, Qhi),
@@ -209,7 +312,7 @@ plausible_brain_size(M) :-
 
 % Labels of label/4 above, outside in (a later emit overwrites an earlier one).
 emit_objects :-
-    emit(head, 1),
+    ( scene(brain_only) -> true ; emit(head, 1) ),
     ( exists(eyes) -> emit(eyes, 10) ; true ),
     ( exists(brain_filled) -> emit_brain ; true ),
     % The nerves' intracranial part runs under the brain, inside brain_filled.
@@ -243,11 +346,11 @@ emit_tissue :-
 % the brain's centre as cores, grown geodesically by a few mm inside the CSF window
 % (partial volume of the narrow horns); verified by volume and symmetry.
 find_ventricles :-
-    wm_reference(W),
+    wm_reference(W), ventricle_envelope(Env),
     candidates(ventricle_depth_mm, Ds), member(D, Ds),
     candidates(ventricle_seed_max, Cs), member(C, Cs),
     Hs is C * W, threshold(t1, -inf, Hs, vdark), and(vdark, brain_filled, vcsf),
-    depth_shell(brain_filled, D, 1000, deep), and(vcsf, deep, vseed),
+    depth_shell(Env, D, 1000, deep), and(vcsf, deep, vseed),
     centroid_mm(brain_filled, Bc), limit(ventricles_seed_dist_mm, Dm),
     components_near(vseed, 26, 0.1, Bc, Dm, vcore),
     window(t1, csf, _, Gw), Hg is Gw * W, threshold(t1, -inf, Hg, gdark), and(gdark, brain_filled, gcsf),

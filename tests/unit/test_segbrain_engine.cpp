@@ -188,3 +188,17 @@ TEST(SegbrainEngine, TraceMeasureOnOperatorExitsAndFailuresWithTheBound) {
   EXPECT_TRUE(fail_with_bound);
   EXPECT_NE(e.last_failing_check().find("check (volume_ml 0.064"), std::string::npos) << e.last_failing_check();
 }
+
+// format_atom/3 (the knowledge base's notes on what it skipped, docs/segbrain.md §1):
+// the text format/2 would log, as an atom; integers print without a decimal point.
+TEST(SegbrainEngine, FormatAtomBuildsText) {
+  Engine e = with("fov(66.4, 82.0, 49.6).");
+  EXPECT_EQ(solve1(e, "fov(A, B, C), Ai is round(A), Bi is round(B), Ci is round(C), "
+                      "format_atom('field of view ~wx~wx~w mm', [Ai, Bi, Ci], X)"),
+            "['field of view 66x82x50 mm']");
+  EXPECT_EQ(solve1(e, "format_atom('~w not sought: ~w', [brainstem, 'no ventricles'], X)"),
+            "['brainstem not sought: no ventricles']");
+  EXPECT_EQ(solve1(e, "format_atom(plain, [], X)"), "[plain]");
+  // The format must be text.
+  EXPECT_THROW(e.prove(parse_term("format_atom(42, [], _)", "goal")), fest::Error);
+}

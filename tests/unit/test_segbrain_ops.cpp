@@ -224,3 +224,28 @@ TEST(SegbrainOps, PhantomIsDeterministicAndLabelled) {
   EXPECT_NEAR(brain * 64 / 1000.0, 4.0 / 3 * M_PI * 58 * 76 * 56 / 1000, 120);
   EXPECT_GT(eye, 0u);
 }
+
+// fill_holes across coronal and sagittal sections (docs/segbrain.md §1, brain-only
+// volumes): a tube open at both ends along one axis is filled only in the sections
+// across that axis, on a grid whose three sizes differ (so a swapped axis shows).
+TEST(SegbrainOps, FillHolesAcrossEachSectionAxis) {
+  Grid g = grid(21, 23, 25);
+  for (int axis = 0; axis < 3; ++axis) {
+    Mask tube(g.size()), filled(g.size());
+    for (std::size_t z = 0; z < g.n[2]; ++z)
+      for (std::size_t y = 0; y < g.n[1]; ++y)
+        for (std::size_t x = 0; x < g.n[0]; ++x) {
+          const double p[3] = {double(x) - 10, double(y) - 11, double(z) - 12};
+          // The two coordinates across the tube's axis.
+          const double u = p[(axis + 1) % 3], v = p[(axis + 2) % 3];
+          const double r = std::hypot(u, v);
+          tube[g.index(x, y, z)] = r >= 5 && r <= 7;
+          filled[g.index(x, y, z)] = r <= 7;
+        }
+    for (int sec = 0; sec < 3; ++sec) {
+      const Mask out = fill_holes_sections(g, tube, sec);
+      if (sec == axis) EXPECT_EQ(out, filled) << "tube along axis " << axis << ", sections across " << sec;
+      else EXPECT_EQ(out, tube) << "tube along axis " << axis << ", sections across " << sec;
+    }
+  }
+}

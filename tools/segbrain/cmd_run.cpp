@@ -210,6 +210,64 @@ Term prepare_engine(Engine& engine, const RunArgs& a) {
   return goal;
 }
 
+// What the knowledge base found the volume to hold and what it left out (docs/segbrain.md
+// §1): scene/1, scene_note(Level, Text) and skipped_object(Object, Reason) facts.
+struct SceneReport {
+  std::string scene;                                           // whole_head, brain_only, partial; "" if none
+  std::vector<std::pair<std::string, std::string>> notes;      // level, text
+  std::vector<std::pair<std::string, std::string>> skipped;    // object, reason
+  // One line: the notes of the given levels, then the skipped objects grouped by reason.
+  std::string line(bool with_info) const {
+    std::string out;
+    auto add = [&out](const std::string& s) { out += (out.empty() ? "" : "; ") + s; };
+    for (const auto& [level, text] : notes)
+      if (with_info || level != "info") add(text);
+    std::vector<std::string> reasons;
+    for (const auto& sk : skipped)
+      if (std::find(reasons.begin(), reasons.end(), sk.second) == reasons.end()) reasons.push_back(sk.second);
+    for (const auto& why : reasons) {
+      std::string objs;
+      for (const auto& [obj, r] : skipped)
+        if (r == why) objs += (objs.empty() ? "" : ", ") + obj;
+      add(objs + " not sought: " + why);
+    }
+    return out;
+  }
+};
+
+std::string term_text(const Term& t) {
+  Term d = deref(t);
+  return d->kind == Kind::atom || d->kind == Kind::string ? d->name : to_string(d);
+}
+
+// All solutions of Goal's arguments (a findall over the dynamic facts).
+std::vector<std::vector<std::string>> facts_of(Engine& engine, const char* pred, std::size_t arity) {
+  std::vector<std::vector<std::string>> out;
+  if (!engine.defines(pred, static_cast<int>(arity))) return out;
+  std::vector<Term> vars;
+  for (std::size_t i = 0; i < arity; ++i) vars.push_back(make_var());
+  Term all = make_var("L");
+  if (!engine.prove(make_compound("findall", {make_list(vars), make_compound(pred, vars), all}))) return out;
+  std::vector<Term> items;
+  list_items(deref(all), items);
+  for (const auto& it : items) {
+    std::vector<Term> args;
+    list_items(deref(it), args);
+    std::vector<std::string> row;
+    for (const auto& x : args) row.push_back(term_text(x));
+    out.push_back(row);
+  }
+  return out;
+}
+
+SceneReport scene_report(Engine& engine) {
+  SceneReport r;
+  for (const auto& f : facts_of(engine, "scene", 1)) r.scene = f[0];
+  for (const auto& f : facts_of(engine, "scene_note", 2)) r.notes.emplace_back(f[0], f[1]);
+  for (const auto& f : facts_of(engine, "skipped_object", 2)) r.skipped.emplace_back(f[0], f[1]);
+  return r;
+}
+
 }  // namespace
 
 int run_segment(const RunArgs& a) {
@@ -274,6 +332,11 @@ int run_segment(const RunArgs& a) {
     if (!engine.last_failing_check().empty()) failure += "; last failing check: " + engine.last_failing_check();
   }
 
+  const SceneReport scene = scene_report(engine);
+  if (!a.quiet) {
+    const std::string line = scene.line(a.verbose);
+    if (!line.empty()) std::fprintf(stderr, "%s: %s\n", kTool, line.c_str());
+  }
   std::vector<std::uint16_t> labels = assemble_labels(ws);
   if (!a.report.empty()) {
     json rep;
@@ -286,6 +349,14 @@ int run_segment(const RunArgs& a) {
     json labs = json::array();
     for (const auto& l : table) labs.push_back({{"index", l.index}, {"name", l.name}, {"parent", l.parent}, {"rgb", l.rgb}});
     rep["labels"] = labs;
+    if (!scene.scene.empty()) rep["scene"] = scene.scene;
+    rep["skull_stripped_input"] = scene.scene == "brain_only";
+    json notes = json::array(), not_sought = json::array();
+    for (const auto& [level, text] : scene.notes) notes.push_back({{"level", level}, {"text", text}});
+    for (const auto& [obj, why] : scene.skipped) not_sought.push_back({{"object", obj}, {"reason", why}});
+    rep["notes"] = notes;
+    rep["not_sought"] = not_sought;
+    rep["summary"] = scene.line(true);
     rep["accepted_by"] = engine.accepted_by();
     rep["skipped"] = engine.skipped();
     rep["counts"] = {{"inferences", engine.counters().inferences}, {"backtracks", engine.counters().backtracks},

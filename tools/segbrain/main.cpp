@@ -126,6 +126,7 @@ int main(int argc, char** argv) {
     for (const std::string& t : run_text.sets) run.sets.push_back(fact_setting(t));
     run.objects = object_names(run_text.objects);
     run.quiet = common.quiet;
+    run.verbose = common.verbose;
     return run_segment(run);
   });
 }
