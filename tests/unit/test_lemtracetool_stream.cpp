@@ -77,7 +77,7 @@ class Stream : public ::testing::Test {
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  std::string run(const FieldGrid& grid, const Case& c, TextFormat f, int threads, std::size_t chunk,
+  std::string run(const FieldGrid& grid, const Case& c, StreamFormat f, int threads, std::size_t chunk,
                   LineTotals* totals = nullptr) {
     const std::string path = (dir_ / "out.txt").string();
     fest::OutputFile out(path);
@@ -94,7 +94,7 @@ TEST_F(Stream, CsvEqualsTheWholeResultReferenceForAnyChunkAndThreads) {
   const Case c = seeds();
   const std::string want = reference_csv(grid, c, TraceOptions{});
   for (int threads : {1, 2, 3})
-    for (std::size_t chunk : {1, 2, 5, 64}) EXPECT_EQ(run(grid, c, TextFormat::csv, threads, chunk), want)
+    for (std::size_t chunk : {1, 2, 5, 64}) EXPECT_EQ(run(grid, c, StreamFormat::csv, threads, chunk), want)
         << threads << " threads, chunk " << chunk;
 }
 
@@ -102,20 +102,20 @@ TEST_F(Stream, JsonIsOneDocumentAndIndependentOfChunkAndThreads) {
   const FieldGrid grid = helix_grid();
   const Case c = seeds();
   LineTotals totals;
-  const std::string want = run(grid, c, TextFormat::json, 1, 1000, &totals);
+  const std::string want = run(grid, c, StreamFormat::json, 1, 1000, &totals);
   const nlohmann::json doc = nlohmann::json::parse(want);
   ASSERT_EQ(doc.size(), c.x.size());
   EXPECT_EQ(doc.dump(1) + "\n", want);  // the layout of the whole-document dump
   EXPECT_EQ(totals.lines, static_cast<int64_t>(c.x.size()));
   for (int threads : {2, 3})
-    for (std::size_t chunk : {1, 4}) EXPECT_EQ(run(grid, c, TextFormat::json, threads, chunk), want);
+    for (std::size_t chunk : {1, 4}) EXPECT_EQ(run(grid, c, StreamFormat::json, threads, chunk), want);
 }
 
 TEST_F(Stream, NoSeedsGiveHeaderOrEmptyArray) {
   const FieldGrid grid = helix_grid();
   const Case none;
-  EXPECT_EQ(run(grid, none, TextFormat::csv, 2, 0), "line,seed,i,x,y,z,t,cell,type,speed\n");
-  EXPECT_EQ(run(grid, none, TextFormat::json, 2, 0), "[]\n");
+  EXPECT_EQ(run(grid, none, StreamFormat::csv, 2, 0), "line,seed,i,x,y,z,t,cell,type,speed\n");
+  EXPECT_EQ(run(grid, none, StreamFormat::json, 2, 0), "[]\n");
 }
 
 }  // namespace
