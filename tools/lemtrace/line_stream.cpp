@@ -152,6 +152,7 @@ formats::VtpPolylineLayout vtp_layout(const VtpSettings& settings) {
 // What the writer thread needs of a line once its points are gone.
 struct LineMeta {
   std::size_t points = 0;
+  int64_t csv_index = -1;             // its number among the lines with points, -1 for none
   double cell_values[3] = {0, 0, 0};  // SeedId, ReasonForTermination, NumberOfCells
 };
 
@@ -162,6 +163,10 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
   const std::size_t n = seeds.x->size();
   threads = std::max(1, threads);
   if (chunk == 0) chunk = std::max<std::size_t>(128, 64 * static_cast<std::size_t>(threads));
+  // With one tracing thread the writer thread formats too: a pipeline, tracing the next
+  // chunk while this one is formatted and written. With more, the workers format (in
+  // parallel, so that the output keeps up with them) and the writer thread only writes.
+  const bool writer_formats = threads == 1;
   grid.locator();
   LineTotals totals;
   std::unique_ptr<formats::VtpPolylineStream> vtp;
@@ -171,23 +176,45 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
   if (format == StreamFormat::csv) pending = "line,seed,i,x,y,z,t,cell,type,speed\n";
   else if (format == StreamFormat::json) pending = n == 0 ? "[]" : "[\n";
   int64_t csv_index = 0;  // CSV numbers the lines that have points
-  std::vector<Polyline> lines;
-  // Two sets of buffers (text, or a VTP line's packed arrays): one being written while
-  // the other is filled; each buffer keeps its capacity from chunk to chunk (no fresh
-  // pages for every line).
+  // Two sets of lines and buffers (text, or a VTP line's packed arrays): one being
+  // written while the other is filled; each buffer keeps its capacity from chunk to
+  // chunk (no fresh pages for every line).
+  std::vector<Polyline> line_sets[2];
   std::vector<std::string> text[2];
   std::vector<LineMeta> meta[2];
   int filling = 0;
   double write_s = 0;  // the writer thread's, read after each get()
+  // One line's text (or packed arrays) into `buf`; the line's points are released.
+  auto format_line = [&](std::string& buf, Polyline& line, const LineMeta& m, std::size_t s) {
+    buf.clear();
+    if (format == StreamFormat::json) {
+      if (s > 0) buf = ",\n";
+      buf += json_element(line, (*seeds.id)[s]);
+    } else if (m.csv_index >= 0) {
+      if (format == StreamFormat::csv) csv_rows(buf, grid, line, m.csv_index, (*seeds.id)[s]);
+      else vtp_pack(buf, grid, line);
+    }
+    line = Polyline{};
+  };
+  auto write_line = [&](const std::string& buf, const LineMeta& m) {
+    if (buf.empty()) return;
+    if (!vtp) {
+      out.write(buf);
+      return;
+    }
+    const std::size_t np = m.points;
+    const char* p = buf.data();
+    const void* arrays[4] = {p, p + 8 * np, p + 16 * np, p + 24 * np};
+    vtp->add_line(np, reinterpret_cast<const double*>(p + 48 * np), arrays, m.cell_values);
+  };
   std::future<void> writing;
-  std::vector<int64_t> index;
   for (std::size_t begin = 0; begin < n; begin += chunk) {
     const std::size_t count = std::min(chunk, n - begin);
-    lines.assign(count, Polyline{});
-    index.assign(count, -1);
+    std::vector<Polyline>& lines = line_sets[filling];
     std::vector<std::string>& tx = text[filling];
     std::vector<LineMeta>& mx = meta[filling];
-    tx.resize(count);
+    lines.assign(count, Polyline{});
+    tx.resize(writer_formats ? 1 : count);
     mx.assign(count, LineMeta{});
     // Trace in parallel; number the lines with points in seed order (the CSV's line
     // column); format in parallel.
@@ -200,44 +227,30 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
     totals.trace_s += seconds_since(t0);
     t0 = SteadyClock::now();
     for (std::size_t j = 0; j < count; ++j) {
-      totals.add(lines[j]);
-      index[j] = lines[j].x.empty() ? -1 : csv_index++;
       const Polyline& l = lines[j];
-      mx[j] = LineMeta{l.x.size(),
+      totals.add(l);
+      mx[j] = LineMeta{l.x.size(), l.x.empty() ? -1 : csv_index++,
                        {static_cast<double>(static_cast<int64_t>((*seeds.id)[begin + j])),
                         static_cast<double>(static_cast<int>(l.reason)), static_cast<double>(l.cells)}};
     }
-    parallel_for(count, threads, [&](std::size_t j) {
-      const std::size_t s = begin + j;
-      tx[j].clear();
-      if (format == StreamFormat::json) {
-        if (s > 0) tx[j] = ",\n";
-        tx[j] += json_element(lines[j], (*seeds.id)[s]);
-      } else if (index[j] >= 0) {
-        if (format == StreamFormat::csv) csv_rows(tx[j], grid, lines[j], index[j], (*seeds.id)[s]);
-        else vtp_pack(tx[j], grid, lines[j]);
-      }
-      lines[j] = Polyline{};
-    });
+    if (!writer_formats)
+      parallel_for(count, threads, [&](std::size_t j) { format_line(tx[j], lines[j], mx[j], begin + j); });
     totals.format_s += seconds_since(t0);
     // The chunk goes to a writer thread, in seed order, so that the disk write overlaps
     // the tracing of the next chunk (one write in flight).
     t0 = SteadyClock::now();
     if (writing.valid()) writing.get();
     totals.wait_s += seconds_since(t0);
-    writing = std::async(std::launch::async, [&out, &tx, &mx, &vtp, &write_s, count, head = std::move(pending)] {
+    writing = std::async(std::launch::async, [&, &L = lines, &T = tx, &M = mx, begin, count, head = std::move(pending)] {
       const auto w0 = SteadyClock::now();
       if (!head.empty()) out.write(head);
       for (std::size_t j = 0; j < count; ++j) {
-        if (tx[j].empty()) continue;
-        if (!vtp) {
-          out.write(tx[j]);
-          continue;
+        if (writer_formats) {
+          format_line(T[0], L[j], M[j], begin + j);
+          write_line(T[0], M[j]);
+        } else {
+          write_line(T[j], M[j]);
         }
-        const std::size_t np = mx[j].points;
-        const char* p = tx[j].data();
-        const void* arrays[4] = {p, p + 8 * np, p + 16 * np, p + 24 * np};
-        vtp->add_line(np, reinterpret_cast<const double*>(p + 48 * np), arrays, mx[j].cell_values);
       }
       write_s += seconds_since(w0);
     });

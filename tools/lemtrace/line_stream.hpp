@@ -1,7 +1,7 @@
 #pragma once
-// Streaming trace output: seeds are traced in chunks, each
-// chunk's lines traced and then formatted in parallel, and the text written in seed
-// order as soon as the chunk is done. The output is the same for any thread count, and
+// Streaming trace output: seeds are traced in chunks, each chunk's lines traced in
+// parallel, formatted (by the workers, or with one thread by the writer thread while the
+// next chunk is traced) and written in seed order as soon as the chunk is done. The output is the same for any thread count, and
 // memory holds only the lines of one chunk, never the whole result.
 
 #include <cstdint>
