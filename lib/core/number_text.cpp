@@ -42,6 +42,11 @@ constexpr char kPairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
+// 10^j for j = -16..17 as the nearest doubles (exact for j >= 0).
+constexpr double kPow10[] = {1e-16, 1e-15, 1e-14, 1e-13, 1e-12, 1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5,
+                             1e-4,  1e-3,  1e-2,  1e-1,  1e0,   1e1,   1e2,   1e3,  1e4,  1e5,  1e6,  1e7,
+                             1e8,   1e9,   1e10,  1e11,  1e12,  1e13,  1e14,  1e15, 1e16, 1e17};
+
 void write4(char* d, std::uint32_t v) {
   std::memcpy(d, kPairs + 2 * (v / 100), 2);
   std::memcpy(d + 2, kPairs + 2 * (v % 100), 2);
@@ -73,6 +78,10 @@ char* write_g17(char* out, double x) noexcept {
   int k = e2 >= 0 ? (e2 * 78913) >> 18 : -((-e2 * 78913 + (1 << 18) - 1) >> 18);
   if (k > 15) k = 15;
   if (k < -15) k = -15;
+  // One comparison with the next power of ten settles the estimate (a third of the
+  // numbers would otherwise take a second `scaled`); near a power of ten below 1, where
+  // the double is not the power itself, the checks on n below still correct it.
+  if (ax >= kPow10[k + 1 + 16]) ++k;
   std::uint64_t n = scaled(m, e, 16 - k);
   if (n >= kTen17) {
     ++k;
@@ -95,8 +104,11 @@ char* write_g17(char* out, double x) noexcept {
     ++k;
   }
   // The 17 digits: the leading one, then two groups of eight in 32-bit arithmetic, two
-  // digits at a time from a table of pairs.
-  char digits[17];
+  // digits at a time from a table of pairs. Past them the buffer holds '0's, so that the
+  // copies below can have fixed sizes (inlined moves instead of memcpy calls; they may
+  // write past the end they return, never past out + 32).
+  char digits[40];
+  std::memset(digits + 16, '0', 24);
   digits[0] = static_cast<char>('0' + n / kTen16);
   const std::uint64_t rest = n % kTen16;
   write8(digits + 1, static_cast<std::uint32_t>(rest / 100000000u));
@@ -108,31 +120,23 @@ char* write_g17(char* out, double x) noexcept {
   if (k >= -4 && k < 17) {  // fixed notation
     if (k >= 0) {
       const int int_digits = k + 1;
-      if (nd <= int_digits) {
-        std::memcpy(p, digits, static_cast<std::size_t>(nd));
-        std::memset(p + nd, '0', static_cast<std::size_t>(int_digits - nd));
-        p += int_digits;
-      } else {
-        std::memcpy(p, digits, static_cast<std::size_t>(int_digits));
-        p += int_digits;
-        *p++ = '.';
-        std::memcpy(p, digits + int_digits, static_cast<std::size_t>(nd - int_digits));
-        p += nd - int_digits;
-      }
-    } else {
-      *p++ = '0';
-      *p++ = '.';
-      std::memset(p, '0', static_cast<std::size_t>(-k - 1));
-      p += -k - 1;
-      std::memcpy(p, digits, static_cast<std::size_t>(nd));
-      p += nd;
+      std::memcpy(p, digits, 17);  // digits[nd..] are '0': whole numbers need no more
+      if (nd <= int_digits) return p + int_digits;
+      p[int_digits] = '.';
+      // At most 17 - int_digits digits after the point: 8 bytes, or 16 when int_digits <= 8.
+      std::memcpy(p + int_digits + 1, digits + int_digits, 8);
+      if (nd - int_digits > 8) std::memcpy(p + int_digits + 9, digits + int_digits + 8, 8);
+      return p + nd + 1;
     }
-    return p;
+    std::memcpy(p, "0.000", 5);
+    p += 1 - k;  // "0." and -k - 1 zeros
+    std::memcpy(p, digits, 17);
+    return p + nd;
   }
   *p++ = digits[0];  // scientific: d.ddde+XX, at least two exponent digits
   if (nd > 1) {
     *p++ = '.';
-    std::memcpy(p, digits + 1, static_cast<std::size_t>(nd - 1));
+    std::memcpy(p, digits + 1, 16);
     p += nd - 1;
   }
   *p++ = 'e';

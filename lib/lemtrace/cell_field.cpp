@@ -24,8 +24,10 @@ double TetGeometry::transit_time() const {
   return v_max > 0 ? h_min / v_max : std::numeric_limits<double>::infinity();
 }
 
-TetGeometry tet_geometry(const TetMesh& mesh, int32_t cell) {
-  TetGeometry g;
+namespace {
+
+// What bary() and interpolate() need: the vertices, their vectors and G = E^{-1}.
+inline void tet_frame(const TetMesh& mesh, int32_t cell, TetGeometry& g) {
   const Tet& t = mesh.tets[static_cast<std::size_t>(cell)];
   for (int k = 0; k < 4; ++k) {
     g.V[k] = mesh.points[static_cast<std::size_t>(t[k])];
@@ -38,6 +40,20 @@ TetGeometry tet_geometry(const TetMesh& mesh, int32_t cell) {
   g.G.row(0) = r1.transpose() * inv_det;
   g.G.row(1) = r2.transpose() * inv_det;
   g.G.row(2) = r3.transpose() * inv_det;
+}
+
+}  // namespace
+
+Vec3 velocity_in_cell(const TetMesh& mesh, int32_t cell, const Vec3& x) {
+  TetGeometry g;
+  tet_frame(mesh, cell, g);
+  return g.interpolate(g.bary(x));
+}
+
+TetGeometry tet_geometry(const TetMesh& mesh, int32_t cell) {
+  TetGeometry g;
+  tet_frame(mesh, cell, g);
+  const Vec3 e1 = g.V[1] - g.V[0], e2 = g.V[2] - g.V[0], e3 = g.V[3] - g.V[0];
   double h2 = std::min({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm(), (g.V[2] - g.V[1]).squaredNorm(),
                         (g.V[3] - g.V[1]).squaredNorm(), (g.V[3] - g.V[2]).squaredNorm()});
   g.h_min = std::sqrt(h2);

@@ -50,6 +50,11 @@ struct TetGeometry {
 
 TetGeometry tet_geometry(const TetMesh& mesh, int32_t cell);
 
+// The piecewise-linear field at x in `cell`: tet_geometry(...).interpolate(bary(x)),
+// the same arithmetic, without the edge lengths and speeds (for the output's Speed and
+// Velocity of every point).
+Vec3 velocity_in_cell(const TetMesh& mesh, int32_t cell, const Vec3& x);
+
 // A x + b of the cell.
 void linear_field(const TetGeometry& g, Mat3& A, Vec3& b);
 

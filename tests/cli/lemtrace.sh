@@ -216,6 +216,40 @@ expect_clean_failure 3 lemtrace
 check "bad input leaves the old file and no temporary" test "$(cat "$WORK/keep.csv")" = old
 check "no temporary" test -z "$(ls "$WORK" | grep 'keep.csv.tmp')"
 
+case_ "streamed VTP: the same file for --threads 1 and 2, and the file VTK's writer makes (fconv reads it back)"
+for th in 1 2; do
+  "$FEST_BIN/lemtrace" "$WORK/h6.vtu" --seed-line 0.1,0,-0.9:0.9,0.1,-0.8:300 --seed-point 5,5,5 --to vtp \
+    --threads $th >"$WORK/v$th.vtp"
+  # The file records the command line (field data LemtraceOptions): same length, one digit apart.
+  LC_ALL=C sed "s/--threads $th/--threads N/" "$WORK/v$th.vtp" >"$WORK/v$th.n.vtp"
+done
+check "vtp, 2 threads = 1 thread (but for the recorded --threads)" cmp -s "$WORK/v1.n.vtp" "$WORK/v2.n.vtp"
+check "vtp, the recorded command lines differ in one byte" test "$(cmp -l "$WORK/v1.vtp" "$WORK/v2.vtp" | wc -l)" -eq 1
+# VTK (fconv converts through the VTK plugin) rewrites the streamed file to the same bytes.
+(cd "$WORK" && "$FEST_BIN/fconv" v1.vtp --to vtp -o v1.vtk-written.vtp) 2>"$err"
+check "fconv's VTK reads the streamed file" test -s "$WORK/v1.vtk-written.vtp"
+check "VTK writes back the same bytes" cmp -s "$WORK/v1.vtp" "$WORK/v1.vtk-written.vtp"
+run fconv --info "$WORK/v1.vtp"
+expect_json '[.points, .cells]' "[$(awk -F, 'NR > 1' "$WORK/t1.csv" | wc -l),$(awk -F, 'NR > 1 { print $1 }' "$WORK/t1.csv" | sort -u | wc -l)]"
+
+case_ "a closed pipe, a full device, a file size limit: exit 4, one line, no half-written file"
+for to in csv vtp; do
+  "$FEST_BIN/lemtrace" "$WORK/h6.vtu" --seed-line 0.1,0,-0.9:0.9,0.1,-0.8:300 --to $to 2>"$err" | head -c 100 >/dev/null
+  rc=${PIPESTATUS[0]}
+  expect_status 4
+  check "$to: one line on a closed pipe" test "$(wc -l <"$err")" -eq 1
+  expect_stderr_has "^lemtrace: error: cannot write: .*(standard output)"
+  run lemtrace "$WORK/h6.vtu" --seed-line 0.1,0,-0.9:0.9,0.1,-0.8:300 --to $to -o /dev/full
+  expect_clean_failure 4 lemtrace
+  echo old >"$WORK/limited.$to"
+  (ulimit -f 200 && "$FEST_BIN/lemtrace" "$WORK/h6.vtu" --seed-line 0.1,0,-0.9:0.9,0.1,-0.8:300 \
+    -o "$WORK/limited.$to" >"$out" 2>"$err")
+  rc=$?
+  expect_clean_failure 4 lemtrace
+  check "$to: the old file is left as it was" test "$(cat "$WORK/limited.$to")" = old
+  check "$to: no temporary left" test -z "$(ls -A "$WORK" | grep 'limited\.'"$to"'\..')"
+done
+
 # ---- bad input -------------------------------------------------------------------------
 tet_grid() {  # $1 = point data section
   cat <<VTK

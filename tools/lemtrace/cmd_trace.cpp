@@ -2,6 +2,10 @@
 
 #include "commands.hpp"
 
+#include <sys/stat.h>
+
+#include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -25,6 +29,19 @@ double peak_memory_mb() {
   while (std::getline(status, line))
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
   return 0;
+}
+
+// Where the VTP's temporaries go: beside the output (one file system, like OutputFile's
+// own temporary), else $TMPDIR or /tmp for standard output.
+std::string temporary_folder(const std::string& output) {
+  if (!is_stdio(output)) {
+    const auto slash = output.find_last_of('/');
+    struct stat st;
+    if (::stat(output.c_str(), &st) != 0 || S_ISREG(st.st_mode))
+      return slash == std::string::npos ? "." : slash == 0 ? "/" : output.substr(0, slash);
+  }
+  const char* tmp = std::getenv("TMPDIR");
+  return tmp != nullptr && *tmp != '\0' ? tmp : "/tmp";
 }
 
 }  // namespace
@@ -51,21 +68,27 @@ int run_trace(const TraceArgs& a) {
   auto t0 = SteadyClock::now();
   grid.locator();
   const double locator_s = seconds_since(t0);
-  // CSV and JSON stream: each chunk of lines is written as it is finished, in seed order
-  // (line_stream.hpp). VTK outputs go through a dataset, built from all the lines.
+  // CSV, JSON and VTP stream: each chunk of lines is written as it is finished, in seed
+  // order (line_stream.hpp). Legacy .vtk goes through a dataset, built from all the lines.
+  // A reader that goes away (a closed pipe) or a full disk is an I/O error, exit 4 with
+  // one message, rather than a death by SIGPIPE or SIGXFSZ half-way through the output.
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   OutputFile out(a.output);
   LineTotals totals;
   t0 = SteadyClock::now();
-  if (to == LineFormat::csv || to == LineFormat::json) {
-    totals = stream_lines(grid, StreamSeeds{&seeds.x, &seeds.t0, &seeds.id}, o, threads,
-                          to == LineFormat::csv ? TextFormat::csv : TextFormat::json, out);
+  if (to != LineFormat::vtk) {
+    const StreamFormat format =
+        to == LineFormat::csv ? StreamFormat::csv : to == LineFormat::json ? StreamFormat::json : StreamFormat::vtp;
+    totals = stream_lines(grid, StreamSeeds{&seeds.x, &seeds.t0, &seeds.id}, o, threads, format, out, 0,
+                          VtpSettings{temporary_folder(a.output), a.command_line});
   } else {
     const std::vector<Polyline> lines = trace_all(grid, seeds.x, seeds.t0, o, threads);
     check_numbers(lines);
     for (const Polyline& l : lines) totals.add(l);
     LineSet set{&lines, &seeds.id, a.command_line};
     const Dataset poly = polylines_to_dataset(grid, set);
-    out.write(formats::write_dataset(poly, to == LineFormat::vtp ? formats::Format::vtp : formats::Format::vtk));
+    out.write(formats::write_dataset(poly, formats::Format::vtk));
   }
   const double trace_s = seconds_since(t0);
 
@@ -88,7 +111,10 @@ int run_trace(const TraceArgs& a) {
         {"locator_calls", totals.locator_calls},
         {"records_computed", grid.records_computed()},
         {"timings_s", {{"read", loaded.read_s}, {"build", loaded.build_s}, {"precompute", loaded.precompute_s},
-                       {"locator", locator_s}, {"trace_and_write", trace_s}}},
+                       {"locator", locator_s}, {"trace_and_write", trace_s},
+                       {"stream", {{"trace", totals.trace_s}, {"format", totals.format_s},
+                                   {"wait_for_writer", totals.wait_s}, {"writer_thread", totals.write_s},
+                                   {"finish", totals.finish_s}}}}},
         {"memory_mb", {{"grid_estimate", static_cast<double>(grid.bytes()) / 1048576.0}, {"peak_rss", peak_memory_mb()}}},
         {"threads", threads}};
     write_output(a.report, report.dump(2) + "\n");

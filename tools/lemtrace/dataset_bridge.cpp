@@ -170,10 +170,7 @@ Dataset dataset_from_generated(const GeneratedGrid& g, const std::string& kind) 
   return grid;
 }
 
-Vec3 velocity_at(const FieldGrid& grid, int32_t cell, const Vec3& x) {
-  const TetGeometry g = tet_geometry(grid.mesh(), cell);
-  return g.interpolate(g.bary(x));
-}
+Vec3 velocity_at(const FieldGrid& grid, int32_t cell, const Vec3& x) { return velocity_in_cell(grid.mesh(), cell, x); }
 
 Dataset polylines_to_dataset(const FieldGrid& grid, const LineSet& set) {
   Dataset poly;

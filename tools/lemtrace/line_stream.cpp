@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cstring>
 #include <future>
+#include <memory>
 #include <string_view>
 #include <iterator>
 
@@ -14,6 +15,8 @@
 #include "core/error.hpp"
 #include "core/number_text.hpp"
 #include "core/parallel_for.hpp"
+#include "core/stopwatch.hpp"
+#include "formats/dataset/vtp_polyline_stream.hpp"
 #include "dataset_bridge.hpp"
 
 namespace fest::lemtrace_tool {
@@ -102,67 +105,171 @@ std::string json_element(const Polyline& line, double seed_id) {
   return out;
 }
 
+namespace {
+
+// The VTP arrays of one line, packed by a worker for the writer thread: IntegrationTime,
+// CellId, Speed, Velocity, then the points (the arrays of polylines_to_dataset).
+constexpr std::size_t vtp_bytes_per_point = 8 + 8 + 8 + 24 + 24;
+
+void vtp_pack(std::string& out, const FieldGrid& grid, const Polyline& line) {
+  const std::size_t n = line.x.size();
+  out.resize(n * vtp_bytes_per_point);
+  char* time = out.data();
+  char* cell = time + 8 * n;
+  char* speed = cell + 8 * n;
+  char* vel = speed + 8 * n;
+  char* pts = vel + 24 * n;
+  const auto& source_cell = grid.mesh().source_cell;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int32_t c = line.cell[i];
+    const Vec3 v = velocity_at(grid, c, line.x[i]);
+    const double s = v.norm();
+    const int64_t id = source_cell[static_cast<std::size_t>(c)];
+    const double xv[3] = {v[0], v[1], v[2]}, xp[3] = {line.x[i][0], line.x[i][1], line.x[i][2]};
+    std::memcpy(time + 8 * i, &line.t[i], 8);
+    std::memcpy(cell + 8 * i, &id, 8);
+    std::memcpy(speed + 8 * i, &s, 8);
+    std::memcpy(vel + 24 * i, xv, 24);
+    std::memcpy(pts + 24 * i, xp, 24);
+  }
+}
+
+formats::VtpPolylineLayout vtp_layout(const VtpSettings& settings) {
+  using formats::VtpType;
+  formats::VtpPolylineLayout l;
+  l.point_data = {{"IntegrationTime", VtpType::float64, 1, false},
+                  {"CellId", VtpType::int64, 1, true},
+                  {"Speed", VtpType::float64, 1, false},
+                  {"Velocity", VtpType::float64, 3, false}};
+  l.cell_data = {{"SeedId", VtpType::int64, 1, true},
+                 {"ReasonForTermination", VtpType::int32, 1, false},
+                 {"NumberOfCells", VtpType::int64, 1, true}};
+  l.field_name = "LemtraceOptions";
+  l.field_text = settings.options;
+  return l;
+}
+
+// What the writer thread needs of a line once its points are gone.
+struct LineMeta {
+  std::size_t points = 0;
+  int64_t csv_index = -1;             // its number among the lines with points, -1 for none
+  double cell_values[3] = {0, 0, 0};  // SeedId, ReasonForTermination, NumberOfCells
+};
+
+}  // namespace
+
 LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const TraceOptions& options, int threads,
-                        TextFormat format, OutputFile& out, std::size_t chunk) {
+                        StreamFormat format, OutputFile& out, std::size_t chunk, const VtpSettings& vtp_settings) {
   const std::size_t n = seeds.x->size();
   threads = std::max(1, threads);
   if (chunk == 0) chunk = std::max<std::size_t>(128, 64 * static_cast<std::size_t>(threads));
+  // With one tracing thread the writer thread formats too: a pipeline, tracing the next
+  // chunk while this one is formatted and written. With more, the workers format (in
+  // parallel, so that the output keeps up with them) and the writer thread only writes.
+  const bool writer_formats = threads == 1;
   grid.locator();
   LineTotals totals;
+  std::unique_ptr<formats::VtpPolylineStream> vtp;
+  if (format == StreamFormat::vtp)
+    vtp = std::make_unique<formats::VtpPolylineStream>(vtp_layout(vtp_settings), vtp_settings.temp_dir);
   std::string pending;  // small pieces (indices, separators), flushed with each line's text
-  if (format == TextFormat::csv) pending = "line,seed,i,x,y,z,t,cell,type,speed\n";
-  else pending = n == 0 ? "[]" : "[\n";
+  if (format == StreamFormat::csv) pending = "line,seed,i,x,y,z,t,cell,type,speed\n";
+  else if (format == StreamFormat::json) pending = n == 0 ? "[]" : "[\n";
   int64_t csv_index = 0;  // CSV numbers the lines that have points
-  std::vector<Polyline> lines;
-  // Two sets of text buffers: one being written while the other is filled; each
-  // buffer keeps its capacity from chunk to chunk (no fresh pages for every line).
+  // Two sets of lines and buffers (text, or a VTP line's packed arrays): one being
+  // written while the other is filled; each buffer keeps its capacity from chunk to
+  // chunk (no fresh pages for every line).
+  std::vector<Polyline> line_sets[2];
   std::vector<std::string> text[2];
+  std::vector<LineMeta> meta[2];
   int filling = 0;
+  double write_s = 0;  // the writer thread's, read after each get()
+  // One line's text (or packed arrays) into `buf`; the line's points are released.
+  auto format_line = [&](std::string& buf, Polyline& line, const LineMeta& m, std::size_t s) {
+    buf.clear();
+    if (format == StreamFormat::json) {
+      if (s > 0) buf = ",\n";
+      buf += json_element(line, (*seeds.id)[s]);
+    } else if (m.csv_index >= 0) {
+      if (format == StreamFormat::csv) csv_rows(buf, grid, line, m.csv_index, (*seeds.id)[s]);
+      else vtp_pack(buf, grid, line);
+    }
+    line = Polyline{};
+  };
+  auto write_line = [&](const std::string& buf, const LineMeta& m) {
+    if (buf.empty()) return;
+    if (!vtp) {
+      out.write(buf);
+      return;
+    }
+    const std::size_t np = m.points;
+    const char* p = buf.data();
+    const void* arrays[4] = {p, p + 8 * np, p + 16 * np, p + 24 * np};
+    vtp->add_line(np, reinterpret_cast<const double*>(p + 48 * np), arrays, m.cell_values);
+  };
   std::future<void> writing;
-  std::vector<int64_t> index;
   for (std::size_t begin = 0; begin < n; begin += chunk) {
     const std::size_t count = std::min(chunk, n - begin);
-    lines.assign(count, Polyline{});
-    index.assign(count, -1);
+    std::vector<Polyline>& lines = line_sets[filling];
     std::vector<std::string>& tx = text[filling];
-    tx.resize(count);
+    std::vector<LineMeta>& mx = meta[filling];
+    lines.assign(count, Polyline{});
+    tx.resize(writer_formats ? 1 : count);
+    mx.assign(count, LineMeta{});
     // Trace in parallel; number the lines with points in seed order (the CSV's line
     // column); format in parallel.
+    auto t0 = SteadyClock::now();
     parallel_for(count, threads, [&](std::size_t j) {
       const std::size_t s = begin + j;
       lines[j] = trace(grid, (*seeds.x)[s], s < seeds.t0->size() ? (*seeds.t0)[s] : 0.0, options);
       check_finite(lines[j], s);
     });
+    totals.trace_s += seconds_since(t0);
+    t0 = SteadyClock::now();
     for (std::size_t j = 0; j < count; ++j) {
-      totals.add(lines[j]);
-      index[j] = lines[j].x.empty() ? -1 : csv_index++;
+      const Polyline& l = lines[j];
+      totals.add(l);
+      mx[j] = LineMeta{l.x.size(), l.x.empty() ? -1 : csv_index++,
+                       {static_cast<double>(static_cast<int64_t>((*seeds.id)[begin + j])),
+                        static_cast<double>(static_cast<int>(l.reason)), static_cast<double>(l.cells)}};
     }
-    parallel_for(count, threads, [&](std::size_t j) {
-      const std::size_t s = begin + j;
-      tx[j].clear();
-      if (format == TextFormat::json) {
-        if (s > 0) tx[j] = ",\n";
-        tx[j] += json_element(lines[j], (*seeds.id)[s]);
-      } else if (index[j] >= 0) {
-        csv_rows(tx[j], grid, lines[j], index[j], (*seeds.id)[s]);
-      }
-      lines[j] = Polyline{};
-    });
-    // The chunk's text goes to a writer thread, in seed order, so that the disk write
-    // overlaps the tracing of the next chunk (one write in flight).
+    if (!writer_formats)
+      parallel_for(count, threads, [&](std::size_t j) { format_line(tx[j], lines[j], mx[j], begin + j); });
+    totals.format_s += seconds_since(t0);
+    // The chunk goes to a writer thread, in seed order, so that the disk write overlaps
+    // the tracing of the next chunk (one write in flight).
+    t0 = SteadyClock::now();
     if (writing.valid()) writing.get();
-    writing = std::async(std::launch::async, [&out, &tx, count, head = std::move(pending)] {
+    totals.wait_s += seconds_since(t0);
+    writing = std::async(std::launch::async, [&, &L = lines, &T = tx, &M = mx, begin, count, head = std::move(pending)] {
+      const auto w0 = SteadyClock::now();
       if (!head.empty()) out.write(head);
-      for (std::size_t j = 0; j < count; ++j)
-        if (!tx[j].empty()) out.write(tx[j]);
+      for (std::size_t j = 0; j < count; ++j) {
+        if (writer_formats) {
+          format_line(T[0], L[j], M[j], begin + j);
+          write_line(T[0], M[j]);
+        } else {
+          write_line(T[j], M[j]);
+        }
+      }
+      write_s += seconds_since(w0);
     });
     pending.clear();
     filling ^= 1;
   }
+  auto t0 = SteadyClock::now();
   if (writing.valid()) writing.get();
-  if (format == TextFormat::json && n > 0) pending += "\n]";
-  if (format == TextFormat::json) pending += '\n';
-  out.write(pending);
+  totals.wait_s += seconds_since(t0);
+  totals.write_s = write_s;
+  t0 = SteadyClock::now();
+  if (vtp) {
+    vtp->finish(out);
+  } else {
+    if (format == StreamFormat::json && n > 0) pending += "\n]";
+    if (format == StreamFormat::json) pending += '\n';
+    out.write(pending);
+  }
+  totals.finish_s = seconds_since(t0);
   return totals;
 }
 
