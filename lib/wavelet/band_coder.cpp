@@ -396,7 +396,7 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
 // -- with the identity table when the token is zero, so no branch follows the data.
 template <bool Approx, bool HasParent>
 bool decode_static_slab(std::string_view tokens, std::string_view signs, std::string_view raw_bits,
-                        const RansEntry* const* tab, std::int64_t* data, const Dims& dims, const Subband& band,
+                        const RansEntry* const* tab, const std::uint32_t* f0, std::int64_t* data, const Dims& dims, const Subband& band,
                         const Subband* parent, const Slab& slab, int limit) {
   RansDecoder tdec(tokens), sdec(signs);
   BitReader raw(raw_bits);
@@ -408,7 +408,6 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
   if (HasParent)
     for (std::size_t k = 0; k < w; ++k) px[k] = std::min(parent->lo[0] + k / 2, parent->hi[0] - 1);
   std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
-  const RansEntry* const identity = identity_decode_table();
   for (std::size_t z = slab.z0; z < slab.z1; ++z)
     for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
       const std::size_t row0 = band.lo[0] + y * sy + z * sz;
@@ -417,7 +416,7 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
         const std::size_t r = (z - slab.z0) * h + (y - band.lo[1]);
         const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
         const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
-        if (tdec.get(tab[kRowTable0 + up_zero + 2 * back_zero])) {
+        if (tdec.get_bit(f0[kRowTable0 + up_zero + 2 * back_zero])) {
           std::fill_n(row, w, 0);
           zero_rows[r] = 1;
           continue;
@@ -456,7 +455,7 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
         }
         m = (m << count) | raw.get(count);
         const int sc = 3 * sa + sign_of(b);
-        const int negative = sdec.get(t == 0 ? identity : tab[kSignTable0 + sc]);
+        const int negative = sdec.get_bit(t == 0 ? kRansTotal : f0[kSignTable0 + sc]);
         const std::uint64_t neg = 0 - static_cast<std::uint64_t>(negative);
         std::int64_t v = static_cast<std::int64_t>((m ^ neg) + static_cast<std::uint64_t>(negative));
         if (Approx) {
@@ -499,12 +498,22 @@ void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims,
   std::vector<RansTable> tables;
   if (!read_tables(desc, tables, table_alphabets())) corrupt(band, slab);
   const auto& alphabets = table_alphabets();
+  // Token tables as lookup tables (one per context that has symbols); the binary ones
+  // (row flags, signs) as the frequency of their 0 (kRansTotal when empty).
   std::size_t used = 0;
-  for (const auto& t : tables) used += std::any_of(t.freq.begin(), t.freq.end(), [](auto f) { return f != 0; });
+  for (int t = 0; t < kTokenTables; ++t) {
+    const auto& f = tables[static_cast<std::size_t>(t)].freq;
+    used += std::any_of(f.begin(), f.end(), [](auto v) { return v != 0; });
+  }
+  std::array<std::uint32_t, kTables> f0{};
+  for (int t = kTokenTables; t < kTables; ++t) {
+    const auto& f = tables[static_cast<std::size_t>(t)].freq;
+    f0[static_cast<std::size_t>(t)] = f[0] == 0 && f[1] == 0 ? kRansTotal : f[0];
+  }
   std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * kRansTotal]);
   std::array<const RansEntry*, kTables> tab{};
   std::size_t next = 0;
-  for (int t = 0; t < kTables; ++t) {
+  for (int t = 0; t < kTokenTables; ++t) {
     const RansTable& table = tables[static_cast<std::size_t>(t)];
     if (std::none_of(table.freq.begin(), table.freq.end(), [](auto f) { return f != 0; })) {
       tab[static_cast<std::size_t>(t)] = identity_decode_table();
@@ -519,11 +528,11 @@ void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims,
                          raw = bytes.substr(pos + ld + lt + ls);
   bool ok;
   if (band.orientation == 0)
-    ok = decode_static_slab<true, false>(tokens, signs, raw, tab.data(), data, dims, band, parent, slab, limit);
+    ok = decode_static_slab<true, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit);
   else if (parent)
-    ok = decode_static_slab<false, true>(tokens, signs, raw, tab.data(), data, dims, band, parent, slab, limit);
+    ok = decode_static_slab<false, true>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit);
   else
-    ok = decode_static_slab<false, false>(tokens, signs, raw, tab.data(), data, dims, band, parent, slab, limit);
+    ok = decode_static_slab<false, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit);
   if (!ok) corrupt(band, slab);
 }
 

@@ -98,19 +98,33 @@ class RansDecoder {
   __attribute__((always_inline)) int get(const RansEntry* table) {
     const RansEntry e = table[x_ & (kRansTotal - 1)];
     x_ = ((e >> 7) & 0xFFF) * (x_ >> kRansBits) + (e >> 19);
-    // Renormalise without a branch on the data: at most one word (freq <= 2^11 keeps
-    // the state >= 2^5 before it, so one 16-bit shift restores >= 2^16).
-    const std::size_t at = pos_ < n_ ? pos_ : n_;
-    const std::uint32_t w = static_cast<std::uint32_t>(p_[at] | (p_[at + 1] << 8));
-    const bool need = x_ < kRansLow;
-    x_ = need ? (x_ << 16) | w : x_;
-    pos_ += need ? 2 : 0;
+    renormalise();
     return static_cast<int>(e & 0x7F);
+  }
+  // A binary symbol whose 0 has frequency f0 (0..kRansTotal), without a table: 1 when
+  // the slot lies at or above f0. f0 = kRansTotal (or 0) leaves the state as it is.
+  __attribute__((always_inline)) int get_bit(std::uint32_t f0) {
+    const std::uint32_t slot = x_ & (kRansTotal - 1);
+    const bool one = slot >= f0;
+    const std::uint32_t freq = one ? kRansTotal - f0 : f0;
+    const std::uint32_t bias = one ? slot - f0 : slot;
+    x_ = freq * (x_ >> kRansBits) + bias;
+    renormalise();
+    return static_cast<int>(one);
   }
   // Every word read, none missing, and the state back where the encoder started.
   bool done() const noexcept { return pos_ == n_ && x_ == kRansLow; }
 
  private:
+  // Without a branch on the data: at most one word (freq <= 2^11 keeps the state >= 2^5
+  // before it, so one 16-bit shift restores >= 2^16).
+  __attribute__((always_inline)) void renormalise() {
+    const std::size_t at = pos_ < n_ ? pos_ : n_;
+    const std::uint32_t w = static_cast<std::uint32_t>(p_[at] | (p_[at + 1] << 8));
+    const bool need = x_ < kRansLow;
+    x_ = need ? (x_ << 16) | w : x_;
+    pos_ += need ? 2 : 0;
+  }
   std::string buf_;
   const std::uint8_t* p_ = nullptr;
   std::size_t n_;
