@@ -443,6 +443,18 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
         const int mc = activity_class(activity);
         const int pc = HasParent ? parent_class(mag(prow[px[k]])) : 0;
         const int t = tdec.get(tab[mc * kParentClasses + pc]);
+        if (!Approx && t == 0) {
+          // A zero: no sign, no raw bits. Zeros come in runs where the data is sparse,
+          // so this branch is mostly predicted there; where the data is dense it is
+          // rarely taken.
+          row[k] = 0;
+          a = 0;
+          ma = 0;
+          sa = 0;
+          d = b;
+          md = mb;
+          continue;
+        }
         const int e = t >> 1;
         if (e > limit) corrupt(band, slab);
         // t = 0, 1: the value itself; t >= 2: the leading one, the second bit, then
