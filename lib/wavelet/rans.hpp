@@ -82,7 +82,8 @@ class RansEncoder {
 using RansEntry = std::uint32_t;
 void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out);
 // The table of a context that has no symbols: symbol 0 with frequency kRansTotal, a step
-// that leaves the state as it is (the sign of a zero coefficient costs nothing).
+// that leaves the state as it is (a damaged stream that reaches such a context decodes
+// zeros and fails the final check instead of reading an unfilled table).
 const RansEntry* identity_decode_table();
 
 class RansDecoder {
