@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <memory>
 
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
 #include "wavelet/range_coder.hpp"
+#include "wavelet/rans.hpp"
 
 namespace fest::wavelet {
 
@@ -37,10 +39,13 @@ int bit_width(std::uint64_t v) noexcept { return v == 0 ? 0 : 64 - __builtin_clz
 // (callgrind's branch simulation counted 4.6 M such mispredictions in decoding the CT
 // head at E = 1, a quarter of the decoder's).
 
-// Neighbourhood activity -> one of kMagClasses classes (0, 1, 2 exactly; then by octave).
-inline int magnitude_class(std::uint64_t s) noexcept {
-  const int octave_class = std::min(kMagClasses - 1, 1 + 64 - __builtin_clzll(s | 1));
-  return s < 3 ? static_cast<int>(s) : octave_class;
+// Neighbourhood activity -> one of kMagClasses classes: 0, 1, 2 exactly, then by octave
+// (1 + bit_width(s), at most 15). Computed without a test on s: bit_width(2s + 1) - 1 is
+// bit_width(s) for every s (no clz of zero; activities stay below 2^63 as exponents are
+// at most 60), and 1 + bit_width(s) = bit_width(s) + (s >= 3) for s >= 3.
+inline int activity_class(std::uint64_t s) noexcept {
+  const int width = 63 - __builtin_clzll(2 * s + 1);
+  return std::min(kMagClasses - 1, width + static_cast<int>(s >= 3));
 }
 
 inline std::uint64_t mag(std::int64_t v) noexcept {
@@ -104,7 +109,7 @@ void walk(const std::int64_t* data, const Dims& dims, const Subband& band, const
         const std::uint64_t p = prow ? mag(prow[px[k]]) : 0;
         const std::uint64_t activity = 2 * mag(a) + mag(b) + mag(c) + mag(d) / 2;
         const std::size_t pos[3] = {band.lo[0] + k, y, z};
-        visit(row0 + k, pos, magnitude_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c, d);
+        visit(row0 + k, pos, activity_class(activity), parent_class(p), 3 * sign_of(a) + sign_of(b), a, b, c, d);
       }
     }
 }
@@ -148,10 +153,100 @@ void put_raw(BitWriter& w, std::uint64_t value, int count) {
   w.put(value, count);
 }
 
-}  // namespace
+// The token of a coefficient for the static coder: 0 for zero, 1 for |v| = 1, and
+// 2e + (the bit below the leading one) for |v| with exponent e = floor(log2 |v|) >= 1:
+// the zero flag, the unary exponent and the second bit of the adaptive coder in one
+// symbol (at most 2 * 62 + 1 < kRansAlphabet).
+inline int token_of(std::uint64_t m) noexcept {
+  if (m == 0) return 0;
+  const int e = bit_width(m) - 1;
+  return e == 0 ? 1 : 2 * e + static_cast<int>((m >> (e - 1)) & 1);
+}
 
-std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
-                        const Slab& slab) {
+// Tables of a static slab: tokens per (activity class, parent class), then the row
+// flags per (y-1, z-1 row zero), then the signs per (x-1, y-1 signs).
+constexpr int kTokenTables = kMagClasses * kParentClasses;
+constexpr int kRowTables = 4;
+constexpr int kSignTables = 9;
+constexpr int kRowTable0 = kTokenTables, kSignTable0 = kTokenTables + kRowTables;
+constexpr int kTables = kTokenTables + kRowTables + kSignTables;
+
+const std::vector<int>& table_alphabets() {
+  static const std::vector<int> a = [] {
+    std::vector<int> v(kTables, 2);
+    std::fill_n(v.begin(), kTokenTables, kRansAlphabet);
+    return v;
+  }();
+  return a;
+}
+
+// Slab modes (the first byte of a slab's bytes, format version 3).
+constexpr char kAdaptiveSlab = 0, kStaticSlab = 1;
+
+// The static coding of a slab: the same walk and contexts as the adaptive one; the
+// symbols go to two rANS streams (T: row flags and tokens, the next context waits for
+// them; S: signs) and the low bits to the raw stream. Empty when some table cannot be
+// written (normalise_table); the caller then keeps the adaptive coding.
+std::string encode_static(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
+                          const Slab& slab) {
+  struct Event {
+    std::uint8_t table, symbol;
+  };
+  std::vector<Event> tev, sev;
+  BitWriter raw;
+  std::vector<std::array<std::uint32_t, kRansAlphabet>> counts(kTables);
+  for (auto& c : counts) c.fill(0);
+  const bool approx = band.orientation == 0;
+  auto skip_row = [&](std::size_t row0, std::size_t w, int ctx) {
+    bool all_zero = true;
+    for (std::size_t k = 0; k < w && all_zero; ++k) all_zero = data[row0 + k] == 0;
+    tev.push_back({static_cast<std::uint8_t>(kRowTable0 + ctx), static_cast<std::uint8_t>(all_zero)});
+    return all_zero;
+  };
+  walk(data, dims, band, parent, slab, skip_row,
+       [&](std::size_t i, const std::size_t* pos, int mc, int pc, int sc, std::int64_t a, std::int64_t b, std::int64_t c,
+           std::int64_t d) {
+         std::int64_t v = data[i];
+         if (approx) v -= approx_prediction(a, b, c, d, pos, band, slab);
+         const std::uint64_t m = mag(v);
+         const int t = token_of(m);
+         tev.push_back({static_cast<std::uint8_t>(mc * kParentClasses + pc), static_cast<std::uint8_t>(t)});
+         if (t == 0) return;
+         const int e = bit_width(m) - 1;
+         if (e >= 2) put_raw(raw, m, e - 1);
+         sev.push_back({static_cast<std::uint8_t>(kSignTable0 + sc), static_cast<std::uint8_t>(v < 0)});
+       });
+  for (const auto& ev : tev) ++counts[ev.table][ev.symbol];
+  for (const auto& ev : sev) ++counts[ev.table][ev.symbol];
+  std::vector<RansTable> tables(kTables);
+  for (int t = 0; t < kTables; ++t)
+    if (!normalise_table(counts[static_cast<std::size_t>(t)].data(), table_alphabets()[static_cast<std::size_t>(t)],
+                         tables[static_cast<std::size_t>(t)]))
+      return {};
+  BitWriter desc;
+  write_tables(desc, tables, table_alphabets());
+  auto code = [&](const std::vector<Event>& events) {
+    RansEncoder enc;
+    for (auto it = events.rbegin(); it != events.rend(); ++it) {
+      const RansTable& tab = tables[it->table];
+      enc.put(tab.cum[it->symbol], tab.freq[it->symbol]);
+    }
+    return enc.finish();
+  };
+  const std::string d = desc.finish(), t = code(tev), s = code(sev);
+  std::string out(1, kStaticSlab);
+  little_endian::put_varint(out, d.size());
+  little_endian::put_varint(out, t.size());
+  little_endian::put_varint(out, s.size());
+  out += d;
+  out += t;
+  out += s;
+  out += raw.finish();
+  return out;
+}
+
+std::string encode_adaptive(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
+                            const Slab& slab) {
   RangeEncoder enc, side;
   BitWriter raw;
   auto models = std::make_unique<Models>();
@@ -179,7 +274,20 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
          }
          side.encode(models->sign[sc], v < 0);
        });
-  return join_streams(enc.finish(), side.finish(), raw.finish());
+  return std::string(1, kAdaptiveSlab) + join_streams(enc.finish(), side.finish(), raw.finish());
+}
+
+}  // namespace
+
+// Both codings, the smaller kept (the static one on a tie: it decodes faster).
+std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
+                        const Slab& slab, SlabCoding coding) {
+  std::string fixed;
+  if (coding != SlabCoding::adaptive) fixed = encode_static(data, dims, band, parent, slab);
+  if (coding == SlabCoding::fixed && !fixed.empty()) return fixed;
+  std::string adaptive = encode_adaptive(data, dims, band, parent, slab);
+  if (!fixed.empty() && fixed.size() <= adaptive.size()) return fixed;
+  return adaptive;
 }
 
 namespace {
@@ -244,7 +352,7 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
         const std::int64_t b = up[k];
         const std::int64_t c = back[k];
         const std::uint64_t activity = 2 * mag(a) + mag(b) + mag(c) + mag(d) / 2;
-        const int mc = magnitude_class(activity);
+        const int mc = activity_class(activity);
         const int pc = HasParent ? parent_class(mag(prow[px[k]])) : 0;
         std::int64_t v = 0;
         if (dec.main.decode(models.zero[static_cast<std::size_t>(mc * kParentClasses + pc)])) {
@@ -283,6 +391,163 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
   return !(dec.main.truncated() || dec.side.truncated() || dec.raw.overrun());
 }
 
+// The static slab's decoder: the walk of decode_band_slab, each coefficient one token
+// from T (a table lookup chosen by the context), its low bits from R and its sign from S
+// -- with the identity table when the token is zero, so no branch follows the data.
+template <bool Approx, bool HasParent>
+bool decode_static_slab(std::string_view tokens, std::string_view signs, std::string_view raw_bits,
+                        const RansEntry* const* tab, const std::uint32_t* f0, std::int64_t* data, const Dims& dims, const Subband& band,
+                        const Subband* parent, const Slab& slab, int limit) {
+  RansDecoder tdec(tokens), sdec(signs);
+  BitReader raw(raw_bits);
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  const std::size_t w = band.hi[0] - band.lo[0];
+  const std::size_t h = band.hi[1] - band.lo[1];
+  const std::vector<std::int64_t> zeros(w, 0);
+  std::vector<std::size_t> px(HasParent ? w : 0);
+  if (HasParent)
+    for (std::size_t k = 0; k < w; ++k) px[k] = std::min(parent->lo[0] + k / 2, parent->hi[0] - 1);
+  std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
+  for (std::size_t z = slab.z0; z < slab.z1; ++z)
+    for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
+      const std::size_t row0 = band.lo[0] + y * sy + z * sz;
+      std::int64_t* row = data + row0;
+      {
+        const std::size_t r = (z - slab.z0) * h + (y - band.lo[1]);
+        const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
+        const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
+        if (tdec.get_bit(f0[kRowTable0 + up_zero + 2 * back_zero])) {
+          std::fill_n(row, w, 0);
+          zero_rows[r] = 1;
+          continue;
+        }
+      }
+      const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data();
+      const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data();
+      const std::int64_t* prow = nullptr;
+      if (HasParent) {
+        const std::size_t py = std::min(parent->lo[1] + (y - band.lo[1]) / 2, parent->hi[1] - 1);
+        const std::size_t pz = std::min(parent->lo[2] + (z - band.lo[2]) / 2, parent->hi[2] - 1);
+        prow = data + py * sy + pz * sz;
+      }
+      // The left neighbour's magnitude and sign and the up-left magnitude are carried
+      // from the previous coefficient (a = x-1, d = (x-1, y-1)).
+      std::int64_t a = 0, d = 0;
+      std::uint64_t ma = 0, md = 0;
+      int sa = 0;
+      for (std::size_t k = 0; k < w; ++k) {
+        const std::int64_t b = up[k];
+        const std::int64_t c = back[k];
+        const std::uint64_t mb = mag(b);
+        const std::uint64_t activity = 2 * ma + mb + mag(c) + md / 2;
+        const int mc = activity_class(activity);
+        const int pc = HasParent ? parent_class(mag(prow[px[k]])) : 0;
+        const int t = tdec.get(tab[mc * kParentClasses + pc]);
+        if (!Approx && t == 0) {
+          // A zero: no sign, no raw bits. Zeros come in runs where the data is sparse,
+          // so this branch is mostly predicted there; where the data is dense it is
+          // rarely taken.
+          row[k] = 0;
+          a = 0;
+          ma = 0;
+          sa = 0;
+          d = b;
+          md = mb;
+          continue;
+        }
+        const int e = t >> 1;
+        if (e > limit) corrupt(band, slab);
+        // t = 0, 1: the value itself; t >= 2: the leading one, the second bit, then
+        // e - 1 raw bits (none below t = 4).
+        std::uint64_t m = t < 2 ? static_cast<std::uint64_t>(t) : static_cast<std::uint64_t>(2 | (t & 1));
+        int count = t < 4 ? 0 : e - 1;
+        if (count > 32) {
+          m = (m << (count - 32)) | raw.get(count - 32);
+          count = 32;
+        }
+        m = (m << count) | raw.get(count);
+        const int sc = 3 * sa + sign_of(b);
+        const int negative = sdec.get_bit(t == 0 ? kRansTotal : f0[kSignTable0 + sc]);
+        const std::uint64_t neg = 0 - static_cast<std::uint64_t>(negative);
+        std::int64_t v = static_cast<std::int64_t>((m ^ neg) + static_cast<std::uint64_t>(negative));
+        if (Approx) {
+          const std::size_t pos[3] = {band.lo[0] + k, y, z};
+          v += approx_prediction(a, b, c, d, pos, band, slab);
+          if (bit_width(static_cast<std::uint64_t>(v < 0 ? -v : v)) - 1 > limit) corrupt(band, slab);
+          m = mag(v);
+          sa = sign_of(v);
+        } else {
+          sa = (t != 0) + negative;  // sign_of(v): 0, 1 positive, 2 negative
+        }
+        row[k] = v;
+        a = v;
+        ma = m;
+        d = b;
+        md = mb;
+      }
+    }
+  return tdec.done() && sdec.done() && !raw.overrun();
+}
+
+// A static slab: varint lengths of the table description D and the rANS streams T and
+// S, then D, T, S and the raw bits to the end. Throws for anything no encoder writes.
+void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
+                   const Subband* parent, const Slab& slab, int limit) {
+  std::size_t pos = 0;
+  auto varint = [&]() {
+    std::uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      if (pos >= bytes.size()) corrupt(band, slab);
+      const auto byte = static_cast<std::uint8_t>(bytes[pos++]);
+      v |= static_cast<std::uint64_t>(byte & 0x7F) << shift;
+      if (!(byte & 0x80)) return v;
+    }
+    corrupt(band, slab);
+  };
+  const std::uint64_t ld = varint(), lt = varint(), ls = varint();
+  if (ld > bytes.size() - pos || lt > bytes.size() - pos - ld || ls > bytes.size() - pos - ld - lt) corrupt(band, slab);
+  BitReader desc(bytes.substr(pos, ld));
+  std::vector<RansTable> tables;
+  if (!read_tables(desc, tables, table_alphabets())) corrupt(band, slab);
+  const auto& alphabets = table_alphabets();
+  // Token tables as lookup tables (one per context that has symbols); the binary ones
+  // (row flags, signs) as the frequency of their 0 (kRansTotal when empty).
+  std::size_t used = 0;
+  for (int t = 0; t < kTokenTables; ++t) {
+    const auto& f = tables[static_cast<std::size_t>(t)].freq;
+    used += std::any_of(f.begin(), f.end(), [](auto v) { return v != 0; });
+  }
+  std::array<std::uint32_t, kTables> f0{};
+  for (int t = kTokenTables; t < kTables; ++t) {
+    const auto& f = tables[static_cast<std::size_t>(t)].freq;
+    f0[static_cast<std::size_t>(t)] = f[0] == 0 && f[1] == 0 ? kRansTotal : f[0];
+  }
+  std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * kRansTotal]);
+  std::array<const RansEntry*, kTables> tab{};
+  std::size_t next = 0;
+  for (int t = 0; t < kTokenTables; ++t) {
+    const RansTable& table = tables[static_cast<std::size_t>(t)];
+    if (std::none_of(table.freq.begin(), table.freq.end(), [](auto f) { return f != 0; })) {
+      tab[static_cast<std::size_t>(t)] = identity_decode_table();
+      continue;
+    }
+    RansEntry* out = storage.get() + next * kRansTotal;
+    fill_decode_table(table, alphabets[static_cast<std::size_t>(t)], out);
+    tab[static_cast<std::size_t>(t)] = out;
+    ++next;
+  }
+  const std::string_view tokens = bytes.substr(pos + ld, lt), signs = bytes.substr(pos + ld + lt, ls),
+                         raw = bytes.substr(pos + ld + lt + ls);
+  bool ok;
+  if (band.orientation == 0)
+    ok = decode_static_slab<true, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit);
+  else if (parent)
+    ok = decode_static_slab<false, true>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit);
+  else
+    ok = decode_static_slab<false, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit);
+  if (!ok) corrupt(band, slab);
+}
+
 // Splits a slab's bytes into its three streams (join_streams); throws for lengths that
 // run past the slab.
 SlabStreams split_streams(std::string_view bytes, const Subband& band, const Slab& slab) {
@@ -307,9 +572,11 @@ SlabStreams split_streams(std::string_view bytes, const Subband& band, const Sla
 
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                  const Subband* parent, const Slab& slab, int max_exponent) {
-  const SlabStreams streams = split_streams(bytes, band, slab);
-  auto models = std::make_unique<Models>();
   const int limit = std::min(max_exponent, kMaxExponent);
+  if (bytes.empty() || (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab)) corrupt(band, slab);
+  if (bytes[0] == kStaticSlab) return decode_static(bytes.substr(1), data, dims, band, parent, slab, limit);
+  const SlabStreams streams = split_streams(bytes.substr(1), band, slab);
+  auto models = std::make_unique<Models>();
   bool ok;
   if (band.orientation == 0) ok = decode_band_slab<true, false>(streams, *models, data, dims, band, parent, slab, limit);
   else if (parent) ok = decode_band_slab<false, true>(streams, *models, data, dims, band, parent, slab, limit);

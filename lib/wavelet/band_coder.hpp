@@ -13,8 +13,10 @@
 // the rows at y-1 and z-1, and codes nothing more for such rows.
 // A band is cut into slabs of kSlabPlanes z-planes, each coded independently, so
 // slabs decode in parallel and a damaged stream spoils one slab only. A slab's bytes are
-// three streams (format version 2): range-coded A (row flags, zero flags, exponents),
-// range-coded B (second bits, signs) and the raw bits R.
+// a mode byte, then for an adaptive slab three streams: range-coded A (row flags, zero
+// flags, exponents), range-coded B (second bits, signs) and the raw bits R; for a static
+// slab the table description, two rANS streams T (row flags, tokens = zero flag,
+// exponent and second bit in one symbol) and S (signs), and the raw bits R.
 
 #include <cstdint>
 #include <string>
@@ -37,10 +39,16 @@ std::vector<Slab> slabs_of(const Subband& band);
 // the band's level is the coarsest.
 const Subband* parent_of(const std::vector<Subband>& bands, const Subband& band) noexcept;
 
+// How a slab is coded (format version 3: its first byte says which): with the adaptive
+// binary range coder, or with static rANS tables counted for the slab and stored with
+// it (one table lookup per coefficient to decode). `smaller` codes both and keeps the
+// smaller (static on a tie); the others force one, for tests.
+enum class SlabCoding { smaller, adaptive, fixed };
+
 // Codes the coefficients of `band` in the z-range of `slab`, read from the pyramid
 // `data` (extent dims). `parent` may be null.
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
-                        const Slab& slab);
+                        const Slab& slab, SlabCoding coding = SlabCoding::smaller);
 
 // Decodes a slab into `data`. Exponents above max_exponent, or a stream that ends too
 // early, throw fest::Error(bad_input) naming the band.

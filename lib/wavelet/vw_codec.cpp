@@ -34,7 +34,7 @@ std::uint64_t VwHeader::total_bytes() const noexcept {
 
 namespace {
 
-constexpr char kMagic[8] = {'\x89', 'V', 'W', '\r', '\n', '\x1a', '\n', '\x02'};
+constexpr char kMagic[8] = {'\x89', 'V', 'W', '\r', '\n', '\x1a', '\n', '\x03'};
 constexpr int kMaxLevels = 16;
 
 std::uint64_t fnv1a(std::string_view s) noexcept {
@@ -251,7 +251,7 @@ std::string write_header(const VwHeader& h, const std::vector<std::uint8_t>& roi
 VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vector<std::uint8_t>* roi,
                       bool check_hash = true) {
   if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
-    if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a version-2 .vw file (version 1 files are no longer read)");
+    if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a version-3 .vw file (versions 1 and 2 are no longer read)");
     throw bad_input("not a .vw file (no \\x89VW magic)");
   }
   Reader r(bytes, ".vw header", 8);

@@ -2,7 +2,7 @@
 // The .vw file (man/man5/fest-vw.5, docs/volwave.md §5): a volume coded by volwave.
 // Bytes <-> types only; no I/O.
 //
-//   header   magic "\x89VW\r\n\x1a\n\x02" (format version 2), mode, wavelet, levels, stored type, key kind,
+//   header   magic "\x89VW\r\n\x1a\n\x03" (format version 3), mode, wavelet, levels, stored type, key kind,
 //            largest coded exponent, dimensions, spacing, origin, direction, quantiser
 //            step and offset, the requested bound, and a table with one row per chunk:
 //            byte length, FNV-1a hash, and the L-infinity and RMS error of a volume
