@@ -34,7 +34,7 @@ std::uint64_t VwHeader::total_bytes() const noexcept {
 
 namespace {
 
-constexpr char kMagic[8] = {'\x89', 'V', 'W', '\r', '\n', '\x1a', '\n', '\x03'};
+constexpr char kMagic[8] = {'\x89', 'V', 'W', '\r', '\n', '\x1a', '\n', static_cast<char>(kVwFormatVersion)};
 constexpr int kMaxLevels = 16;
 
 std::uint64_t fnv1a(std::string_view s) noexcept {

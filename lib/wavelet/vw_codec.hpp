@@ -24,6 +24,9 @@
 
 namespace fest::wavelet {
 
+// The format version, the magic's last byte; `volwave info` reports it.
+inline constexpr int kVwFormatVersion = 3;
+
 enum class Mode : std::uint8_t { lossless = 0, max_error = 1, rmse = 2 };
 const char* mode_name(Mode m) noexcept;  // "lossless", "max-error", "rmse"
 

@@ -70,6 +70,8 @@ check "same bytes with 1 and 3 threads" cmp "$WORK/t1.vw" "$WORK/t3.vw"
 "$V" encode "$WORK/smooth.nrrd" --max-error 0.5 -o "$WORK/full.vw"
 run volwave info "$WORK/full.vw"
 expect_status 0
+# The version info reports is the magic's last byte (fest-vw(5): byte 7).
+expect_json '.version' "$(od -An -tu1 -j7 -N1 "$WORK/full.vw" | tr -d ' ')"
 cp "$out" "$WORK/info.json"
 nchunks=$(jq '.chunks | length' "$WORK/info.json")
 prev=1e300

@@ -29,7 +29,7 @@ int info_command(const InfoOptions& o) {
   const std::size_t voxels = h.dims[0] * h.dims[1] * h.dims[2];
   const double raw = static_cast<double>(voxels * scalar_type_size(h.type));
   nlohmann::json r = {{"format", "vw"},
-                      {"version", 1},
+                      {"version", wavelet::kVwFormatVersion},
                       {"dimensions", h.dims},
                       {"spacing", h.spacing},
                       {"origin", h.origin},
