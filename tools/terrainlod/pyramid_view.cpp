@@ -155,7 +155,7 @@ terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& wher
   return c;
 }
 
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale) {
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale, bool cut_holes) {
   Extraction x;
   const auto t0 = SteadyClock::now();
   x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
@@ -169,6 +169,7 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double 
   const auto t1 = SteadyClock::now();
   for (const auto& s : x.selection.tiles) {
     x.parts.emplace_back(s.id, terrainlod::triangulate(pyr.tile(s.id), s.mask, pyr.geometry(s.id.level)));
+    if (cut_holes && pyr.nodata()) x.hole_triangles += terrainlod::cut_holes(*pyr.nodata(), x.parts.back().second);
     x.triangles += x.parts.back().second.triangles.size();
   }
   x.decode_ms = ms_since(t1);
