@@ -66,6 +66,13 @@ check "drawn area in [2759, 2763.5]" jq -e '.drawn_area >= 2759 - 1e-9 and .draw
 cp "$WORK/hx.json" "$out"
 check "extract reports the triangles left out" jq -e '.hole_triangles > 0' "$out"
 
+case_ "--nodata hole in a camera path: the same holes as the single view"
+cp "$WORK/top.json" "$WORK/path.jsonl"
+run terrainlod extract "$WORK/hole.tlp" --path "$WORK/path.jsonl" -o "$WORK/path%d.obj" --report "$WORK/path.json"
+expect_status 0
+check "path frame 0 = the single view" cmp "$WORK/hole.obj" "$WORK/path0.obj"
+check "path report counts the triangles left out" jq -e '.frames[0].hole_triangles > 0' "$WORK/path.json"
+
 case_ "--nodata hole with --clip and an automatic camera: still nothing over nodata on the lattice"
 run terrainlod extract "$WORK/hole.tlp" --clip -o "$WORK/clip.obj"
 expect_status 0
