@@ -65,6 +65,21 @@ bool NodataMask::any_in_row(std::int64_t j, std::int64_t x0, std::int64_t x1) co
   return r != last && (*r)[0] <= x1;
 }
 
+bool valid_bounds(const NodataMask& m, std::array<int, 4>& box) {
+  bool any = false;
+  for (int j = 0; j < m.height; ++j) {
+    const std::uint32_t a = m.row_begin[static_cast<std::size_t>(j)], b = m.row_begin[static_cast<std::size_t>(j) + 1];
+    // The row's first and last valid columns: around its first and last runs.
+    int lo = 0, hi = m.width - 1;
+    if (a < b && m.runs[a][0] == 0) lo = m.runs[a][1];
+    if (a < b && m.runs[b - 1][1] == m.width) hi = m.runs[b - 1][0] - 1;
+    if (lo > hi) continue;  // the whole row is nodata
+    box = any ? std::array<int, 4>{std::min(box[0], lo), box[1], std::max(box[2], hi), j} : std::array<int, 4>{lo, j, hi, j};
+    any = true;
+  }
+  return any;
+}
+
 NodataMask nodata_mask(const HeightGrid& grid) {
   NodataMask m;
   m.width = grid.width;

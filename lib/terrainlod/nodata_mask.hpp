@@ -44,6 +44,10 @@ struct NodataMask {
   bool at(std::int64_t i, std::int64_t j) const { return any_in_row(j, i, i); }
 };
 
+// The smallest grid box {i0, j0, i1, j1} holding every valid sample (the automatic camera
+// frames only what can be drawn); false when no sample is valid.
+bool valid_bounds(const NodataMask& mask, std::array<int, 4>& box);
+
 // The mask of a conditioned grid (its `valid` flags; none = no nodata).
 NodataMask nodata_mask(const HeightGrid& grid);
 

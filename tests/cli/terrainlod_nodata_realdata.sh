@@ -42,8 +42,14 @@ case_ "meuse.tif --nodata hole: verify (crack-free, mask = DEM's) and an automat
 run terrainlod verify "$WORK/hole.tlp" --dem "$meuse" --cameras 8
 expect_status 0
 expect_json '[.ok, .open_edges, .nodata_mask_matches_dem]' '[true,0,true]'
-run terrainlod extract "$WORK/hole.tlp" --camera-preset overview --clip -o "$WORK/auto.ply" --png "$WORK/auto.png"
+run terrainlod extract "$WORK/hole.tlp" --camera-preset top --clip -o "$WORK/auto.obj" --png "$WORK/auto.png" --report "$WORK/auto.json"
 expect_status 0
+run terrainlod extract "$WORK/fill.tlp" --camera-preset top --clip -o "$WORK/fauto.obj" --report "$WORK/fauto.json"
+expect_status 0
+# From above, the hole pyramid's camera frames the valid samples' box, the filled one's the
+# DEM rectangle (same heights: the same tiles): the first is closer.
+check "top view of the holes closer than of the filled DEM" \
+  sh -c "test \$(jq -n --slurpfile a '$WORK/auto.json' --slurpfile b '$WORK/fauto.json' '\$a[0].camera.eye[2] < \$b[0].camera.eye[2]') = true"
 check "rendering written" test -s "$WORK/auto.png"
 
 finish

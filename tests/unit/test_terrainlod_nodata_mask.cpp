@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -41,6 +42,23 @@ TEST(NodataMask, RoundTripsAndAnswersLikeTheGrid) {
       const int ci = std::min(i, g.width - 1), cj = std::min(j, g.height - 1);
       EXPECT_EQ(d.at(i, j), !g.valid[static_cast<std::size_t>(cj) * g.width + ci]) << i << "," << j;
     }
+}
+
+TEST(NodataMask, ValidBoundsHoldEveryValidSample) {
+  // Valid only in a tilted band: columns 5..30, rows 3..19, a hole inside too.
+  const HeightGrid g = grid_with(37, 23, [](int i, int j) {
+    return i < 5 || i > 30 || j < 3 || j > 19 || (i + j) % 9 == 0 || (i > 10 && i < 14);
+  });
+  int i0 = 99, j0 = 99, i1 = -1, j1 = -1;
+  for (int j = 0; j < g.height; ++j)
+    for (int i = 0; i < g.width; ++i)
+      if (g.valid[static_cast<std::size_t>(j) * g.width + i]) i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+  std::array<int, 4> box{};
+  ASSERT_TRUE(valid_bounds(nodata_mask(g), box));
+  EXPECT_EQ(box, (std::array<int, 4>{i0, j0, i1, j1}));
+  const HeightGrid none = grid_with(4, 4, [](int, int) { return false; });
+  ASSERT_TRUE(valid_bounds(nodata_mask(none), box));
+  EXPECT_EQ(box, (std::array<int, 4>{0, 0, 3, 3}));
 }
 
 TEST(NodataMask, DamagedSectionsAreBadInput) {

@@ -73,8 +73,8 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double 
 void scale_heights(Mesh& mesh, double k);
 
 // The world box a view of the pyramid can draw: the DEM rectangle (clip) or the root
-// tiles' squares (the padding included), heights over every tile (from the tile headers),
-// times z_scale.
+// tiles' squares (the padding included), with holes only the valid samples' part of it,
+// heights over every tile (from the tile headers), times z_scale.
 terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale);
 
 // The count of selected tiles per level, as a JSON array.
