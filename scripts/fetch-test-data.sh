@@ -36,6 +36,7 @@ python-matplotlib-data usr/share/matplotlib/mpl-data/sample_data/topobathy.npz d
 python-matplotlib-data usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg faces/grace_hopper.jpg
 r-cran-stars usr/lib/R/site-library/stars/tif/olinda_dem_utm25s.tif dem/olinda_dem_utm25s.tif
 r-cran-terra usr/lib/R/site-library/terra/ex/elev.tif dem/luxembourg_elev.tif
+r-cran-terra usr/lib/R/site-library/terra/ex/meuse.tif dem/meuse.tif
 blender-data usr/share/blender/datafiles/studiolights/world/city.exr hdr/city.exr
 blender-data usr/share/blender/datafiles/studiolights/world/courtyard.exr hdr/courtyard.exr
 blender-data usr/share/blender/datafiles/studiolights/world/forest.exr hdr/forest.exr

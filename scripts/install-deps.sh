@@ -52,7 +52,7 @@ TEST_TOOL_PKGS=(
   python3-vtk9               # VTK's own readers (PLY STL OBJ, VTK XML and legacy, MetaImage), from /usr/bin/python3
   teem-apps                  # teem-unu: NRRD's reference implementation
   openexr                    # exrheader
-  gdal-bin                   # gdalinfo: TIFF
+  gdal-bin                   # gdalinfo: TIFF; gdal_translate: meuse.tif as ASCII grid for tests/cli/terrainlod_nodata_realdata.sh
   python3-nibabel            # the independent volume reader of tests/cli/fconv_nibabel.sh; its test files are fetched as real data
   libopencv-contrib-dev libapriltag-dev   # cv::aruco and AprilTag 3: anchors of tests/bench/bench_markerpose only
   graphviz                   # dot: tests/cli/patnet.sh checks that `patnet dot` output is valid Graphviz

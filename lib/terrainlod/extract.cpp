@@ -211,4 +211,30 @@ std::size_t count_open_edges(const PyramidLayout& L, const Selection& selection,
   return open;
 }
 
+HoleEdgeCount count_open_edges(const PyramidLayout& L, const Selection& selection, const std::vector<DrawnTriangle>& drawn,
+                               const std::vector<DrawnTriangle>& holes) {
+  using V = TileTriangulation::Vertex;
+  HoleEdgeCount out;
+  // The whole surface first: drawn and left-out triangles meet edge to edge.
+  std::vector<DrawnTriangle> all(drawn);
+  all.insert(all.end(), holes.begin(), holes.end());
+  out.open = count_open_edges(L, selection, all);
+  // Then each edge of a drawn triangle: drawn across (fine), or a hole's triangle across
+  // (a hole edge), or nothing at all (then the whole-surface check above judged it).
+  std::map<std::pair<V, V>, std::array<int, 2>> uses;  // edge -> (drawn, hole) triangles using it
+  auto add = [&](const std::vector<DrawnTriangle>& tris, int k) {
+    for (const auto& t : tris)
+      for (int e = 0; e < 3; ++e) {
+        V a = t.v[static_cast<std::size_t>(e)], b = t.v[static_cast<std::size_t>((e + 1) % 3)];
+        if (b < a) std::swap(a, b);
+        ++uses[{a, b}][static_cast<std::size_t>(k)];
+      }
+  };
+  add(drawn, 0);
+  add(holes, 1);
+  for (const auto& [e, u] : uses)
+    if (u[0] == 1 && u[1] == 1) ++out.hole_edges;
+  return out;
+}
+
 }  // namespace fest::terrainlod

@@ -69,4 +69,14 @@ struct DrawnTriangle {
 std::size_t count_open_edges(const PyramidLayout& layout, const Selection& selection,
                              const std::vector<DrawnTriangle>& triangles);
 
+// The same check for a view with holes (build --nodata hole): `drawn` and `holes` (the
+// triangles left out over nodata) together must be crack-free as above, and an edge of a
+// drawn triangle with nothing drawn across it is accepted only where a hole's triangle
+// lies across it. `open` counts the offending edges, `hole_edges` the accepted ones.
+struct HoleEdgeCount {
+  std::size_t open = 0, hole_edges = 0;
+};
+HoleEdgeCount count_open_edges(const PyramidLayout& layout, const Selection& selection,
+                               const std::vector<DrawnTriangle>& drawn, const std::vector<DrawnTriangle>& holes);
+
 }  // namespace fest::terrainlod

@@ -1,4 +1,4 @@
-// The .tlp archive head and index decoder (lib/terrainlod/tlp_archive): any bytes either
+// The .tlp archive head, index and nodata section decoder (lib/terrainlod/tlp_archive): any bytes either
 // decode or throw fest::Error; nothing reads outside the input.
 
 #include <cstddef>
@@ -14,6 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const TlpHead head = decode_tlp_head(bytes);
     decode_tlp_index(bytes, head.index_at);
+    decode_tlp_nodata(bytes, head);
   } catch (const fest::Error&) {
   }
   return 0;

@@ -265,7 +265,7 @@ add nrrd "$D/volume/lps_ascii.nrrd" "$D/volume/gzip_uint16.nrrd" "$G/raw.nrrd"
 add mha "$D/volume/msb_short.mha" "$D/volume/zlib_float.mha"
 add ebm "$D/ebm/tetrahedron.ebm" "$D/ebm/tetrahedron_attributes_v2.ebm" "$D/ebm/eight_genus2_v2.ebm" \
   "$D/ebm/mushroom_hole.ebm"
-add tlp "$D/terrainlod/tiny.tlp"
+add tlp "$D/terrainlod/tiny.tlp" "$D/terrainlod/tiny_hole.tlp"
 add ltx "$D/brdffit/tiny.ltx"
 add mmb "$D/facefit/seeds/tiny.mmb"
 add json "$D/radiosity/cornell.json"

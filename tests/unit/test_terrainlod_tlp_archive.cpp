@@ -47,9 +47,34 @@ TEST(TlpArchive, DamagedHeadsAreBadInput) {
   EXPECT_THROW(decode_tlp_head("FTLX" + head.substr(4)), fest::Error);
   EXPECT_THROW(decode_tlp_head(head.substr(0, 8)), fest::Error);
   std::string v2 = head;
-  v2[4] = 2;
+  v2[4] = 3;
   EXPECT_THROW(decode_tlp_head(v2), fest::Error);
+  // Version 2 must hold a nodata section after the index.
+  v2[4] = 2;
+  EXPECT_THROW(decode_tlp_nodata(v2, decode_tlp_head(v2)), fest::Error);
   EXPECT_THROW(decode_tlp_head(head.substr(0, head.size() - 1)), fest::Error);
+}
+
+TEST(TlpArchive, NodataSectionMakesVersionTwoAndShiftsTheBlobs) {
+  std::vector<TlpEntry> tiles(1);
+  tiles[0].id = {0, 0, 0};
+  tiles[0].length = 10;
+  const std::string plain = encode_tlp_head("{}", tiles);
+  EXPECT_EQ(plain[4], 1);
+  EXPECT_EQ(decode_tlp_nodata(plain, decode_tlp_head(plain)), "");
+  const std::string section = "FTNMxyz";
+  const std::string head = encode_tlp_head("{}", tiles, section);
+  EXPECT_EQ(head[4], 2);
+  ASSERT_EQ(head.size(), plain.size() + 4 + section.size());
+  const std::string archive = head + std::string(10, 'x');
+  const TlpHead h = decode_tlp_head(archive);
+  EXPECT_EQ(h.version, 2);
+  EXPECT_EQ(decode_tlp_nodata(archive, h), section);
+  const auto index = decode_tlp_index(archive, h.index_at);
+  ASSERT_EQ(index.size(), 1u);
+  EXPECT_EQ(index[0].offset, head.size());
+  // A section running past the end is bad input.
+  EXPECT_THROW(decode_tlp_nodata(head.substr(0, head.size() - 1), h), fest::Error);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "formats/input.hpp"
 #include "pyramid_file.hpp"
 #include "pyramid_options.hpp"
+#include "terrainlod/nodata_mask.hpp"
 #include "terrainlod/progressive_recode.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/texture_pyramid.hpp"
@@ -354,8 +355,8 @@ void for_each_stored_tile(SpilledLevels& spill, const terrainlod::Pyramid& pyr, 
 // and filled in at the end.
 template <typename ForEachTile>
 std::uint64_t write_archive(const std::string& path, const nlohmann::json& manifest, const std::vector<TileEntry>& entries,
-                            ForEachTile&& for_each_tile) {
-  std::string head = terrainlod::encode_tlp_head(manifest.dump(), entries);
+                            std::string_view nodata, ForEachTile&& for_each_tile) {
+  std::string head = terrainlod::encode_tlp_head(manifest.dump(), entries, nodata);
   AtomicFile out(path);
   std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
   if (!f) throw io_error("cannot write {}", path);
@@ -368,7 +369,7 @@ std::uint64_t write_archive(const std::string& path, const nlohmann::json& manif
       if (!texture.empty()) ok = ok && std::fwrite(texture.data(), 1, texture.size(), f) == texture.size();
       file_bytes += blob.size() + texture.size();
     });
-    const std::string final_head = terrainlod::encode_tlp_head(manifest.dump(), entries);
+    const std::string final_head = terrainlod::encode_tlp_head(manifest.dump(), entries, nodata);
     if (final_head.size() != head.size()) throw runtime_failure("archive head changed size");
     ok = ok && std::fseek(f, 0, SEEK_SET) == 0 && std::fwrite(final_head.data(), 1, final_head.size(), f) == final_head.size();
   } catch (...) {
@@ -383,9 +384,10 @@ std::uint64_t write_archive(const std::string& path, const nlohmann::json& manif
 
 // The pyramid as a directory of tile files; returns the tiles' bytes.
 template <typename ForEachTile>
-std::uint64_t write_directory(const BuildArgs& args, const nlohmann::json& manifest, ForEachTile&& for_each_tile) {
-  std::uint64_t file_bytes = 0;
+std::uint64_t write_directory(const BuildArgs& args, const nlohmann::json& manifest, std::string_view nodata, ForEachTile&& for_each_tile) {
+  std::uint64_t file_bytes = nodata.size();
   DirectoryPyramidWriter out(args.output, manifest, args.texture_format == TextureFormat::jpeg ? "jpg" : "png");
+  if (!nodata.empty()) out.add_nodata(nodata);
   for_each_tile([&](const TileEntry& e, std::string_view blob, std::string_view texture) {
     out.add(e.id, blob, texture);
     file_bytes += blob.size() + texture.size();
@@ -400,6 +402,8 @@ struct BuildFigures {
   std::uint64_t file_bytes = 0;
   std::size_t texture_bytes = 0;
   bool archive = false;
+  std::size_t nodata_samples = 0, nodata_bytes = 0;  // --nodata hole: the mask
+  std::string nodata_mode = "fill";
   double read_ms = 0, build_ms = 0, texture_ms = 0, write_ms = 0;
   int threads = 0;
 };
@@ -411,6 +415,7 @@ void write_build_report(const std::string& path, const BuildFigures& b) {
                       {"container", b.archive ? "archive" : "directory"},
                       {"time_ms", {{"read", b.read_ms}, {"build", b.build_ms}, {"texture", b.texture_ms}, {"write", b.write_ms}}},
                       {"threads", b.threads},
+                      {"nodata", {{"mode", b.nodata_mode}, {"samples", b.nodata_samples}, {"mask_bytes", b.nodata_bytes}}},
                       {"peak_rss_kb", peak_rss_kb()}};
   write_output(path, r.dump(2) + "\n");
 }
@@ -423,6 +428,7 @@ int run_build(const BuildArgs& args) {
   fig.archive = args.output.size() >= 4 && args.output.substr(args.output.size() - 4) == ".tlp";
   terrainlod::BuildParams params = build_params(args);
   fig.threads = params.threads;
+  fig.nodata_mode = nodata_mode_name(args.dem.nodata_mode);
 
   const auto t0 = SteadyClock::now();
   TextureSource tex = read_texture_source(args);
@@ -452,8 +458,20 @@ int run_build(const BuildArgs& args) {
   auto for_each_tile = [&](auto&& emit) {
     for_each_stored_tile(spill, pyr, entries, textures, args.coding == Coding::progressive, params.threads, emit);
   };
-  fig.file_bytes = fig.archive ? write_archive(args.output, manifest, entries, for_each_tile)
-                               : write_directory(args, manifest, for_each_tile);
+  // --nodata hole: the geometry is the filled one; the mask says where nothing is drawn
+  // (docs/terrainlod.md §5, holes). Filled pyramids have no section and keep their bytes.
+  std::string nodata;
+  if (args.dem.nodata_mode == NodataMode::hole) {
+    const terrainlod::NodataMask mask = terrainlod::nodata_mask(dem.grid);
+    nodata = terrainlod::encode_nodata_mask(mask);
+    manifest["version"] = 2;
+    manifest["nodata"] = "hole";
+    manifest["nodata_samples"] = mask.samples;
+    fig.nodata_samples = mask.samples;
+    fig.nodata_bytes = nodata.size();
+  }
+  fig.file_bytes = fig.archive ? write_archive(args.output, manifest, entries, nodata, for_each_tile)
+                               : write_directory(args, manifest, nodata, for_each_tile);
   fig.write_ms = ms_since(t2);
   if (!args.report.empty()) write_build_report(args.report, fig);
   return 0;

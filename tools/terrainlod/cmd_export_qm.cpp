@@ -37,7 +37,9 @@ int run_export_qm(const ExportQmArgs& args) {
       f.gy0 = static_cast<std::int64_t>(e.id.y) * g.cells;
       f.cells = g.cells;
       f.origin_x = L.origin_x, f.origin_y = L.origin_y, f.dx = L.dx, f.dy = L.dy;
-      const std::string qm = terrainlod::encode_quantized_mesh(terrainlod::triangulate(pyr.tile(e.id), 0, g), f);
+      terrainlod::TileTriangulation tri = terrainlod::triangulate(pyr.tile(e.id), 0, g);
+      if (pyr.nodata()) terrainlod::cut_holes(*pyr.nodata(), tri);  // --nodata hole: as extract draws it
+      const std::string qm = terrainlod::encode_quantized_mesh(tri, f);
       const fs::path file = tmp / std::to_string(e.id.level) / std::to_string(e.id.x) / (std::to_string(e.id.y) + ".terrain");
       fs::create_directories(file.parent_path());
       std::ofstream out(file, std::ios::binary);

@@ -254,6 +254,7 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
                       {"tiles", x.selection.tiles.size()},
                       {"tiles_per_level", tiles_per_level(pyr, x.selection)},
                       {"triangles", x.triangles},
+                      {"hole_triangles", x.hole_triangles},
                       {"tiles_loaded", pyr.tiles_decoded() - decoded0},
                       {"bytes_loaded", pyr.bytes_touched() - bytes0},
                       {"tiles_evicted", evicted},
@@ -387,6 +388,7 @@ int run_extract(const ExtractArgs& args) {
                                     {"far", cam.far},
                                     {"tau_px", cam.tau_px}}},
                         {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}, {"write", ms_since(t2)}}}};
+    if (pyr.nodata()) r["hole_triangles"] = x.hole_triangles;  // left out over nodata
     write_output(args.report, r.dump(2) + "\n");
   }
   return 0;

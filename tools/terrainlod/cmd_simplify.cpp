@@ -15,6 +15,7 @@
 #include "formats/detect.hpp"
 #include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
+#include "terrainlod/nodata_mask.hpp"
 #include "terrainlod/simplify.hpp"
 
 namespace fest::terrainlod_tool {
@@ -50,13 +51,29 @@ int run_simplify(const SimplifyArgs& args) {
   const terrainlod::SimplifyResult result = terrainlod::simplify_grid(dem.grid, options);
   const double simplify_ms = ms_since(t1);
 
-  const std::string bytes = formats::write_mesh(world_mesh(result.mesh, dem), out.format);
+  // --nodata hole: the triangles over nodata samples are left out (docs/terrainlod.md §5,
+  // holes), and the vertices only they used.
+  terrainlod::Tin drawn = result.mesh;
+  std::size_t hole_triangles = 0;
+  if (args.dem.nodata_mode == NodataMode::hole) {
+    const terrainlod::NodataMask mask = terrainlod::nodata_mask(dem.grid);
+    terrainlod::TileTriangulation tri;
+    for (const auto& p : result.mesh.vertices) tri.vertices.push_back({std::llround(p.x), std::llround(p.y), p.z});
+    tri.triangles = result.mesh.triangles;
+    hole_triangles = terrainlod::cut_holes(mask, tri);
+    drawn.vertices.clear();
+    for (const auto& v : tri.vertices) drawn.vertices.push_back({static_cast<double>(v.gx), static_cast<double>(v.gy), v.z});
+    drawn.triangles = tri.triangles;
+  }
+  const std::string bytes = formats::write_mesh(world_mesh(drawn, dem), out.format);
   nlohmann::json report = {{"dem", dem_json(dem)},
                            {"max_error", args.max_error},
                            {"diagonal", diagonal_name(args.dem.diagonal)},
                            {"start", start_name(args.start)},
-                           {"vertices", result.mesh.vertices.size()},
-                           {"triangles", result.mesh.triangles.size()},
+                           {"vertices", drawn.vertices.size()},
+                           {"triangles", drawn.triangles.size()},
+                           {"nodata", nodata_mode_name(args.dem.nodata_mode)},
+                           {"hole_triangles", hole_triangles},
                            {"collapses", result.collapses},
                            {"max_collapse_error", result.max_error},
                            {"tolerance", result.tolerance},

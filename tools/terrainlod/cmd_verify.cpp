@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "dem_input.hpp"
 #include "pyramid_view.hpp"
+#include "terrainlod/nodata_mask.hpp"
 #include "terrainlod/progressive_recode.hpp"
 #include "terrainlod/tile_codec.hpp"
 
@@ -77,6 +78,12 @@ int run_verify(const VerifyArgs& args) {
   } else {
     j["bad_textures"] = nullptr;
   }
+  // With --dem, a pyramid with holes must hold the DEM's nodata samples, no more, no fewer.
+  if (dem && pyr.nodata()) {
+    const bool same = terrainlod::encode_nodata_mask(terrainlod::nodata_mask(dem->grid)) == terrainlod::encode_nodata_mask(*pyr.nodata());
+    j["nodata_mask_matches_dem"] = same;
+    ok = ok && same;
+  }
   if (ref) {
     j["triangulations_checked"] = triangulations;
     j["tiles_over_bound"] = over;
@@ -95,7 +102,8 @@ int run_verify(const VerifyArgs& args) {
     const auto& root = pyr.tile({0, 0, 0});
     zlo = root.z_min, zhi = root.z_max;
   }
-  std::size_t open_total = 0, tiles_total = 0;
+  std::size_t open_total = 0, tiles_total = 0, hole_edges = 0, hole_triangles = 0, drawn_over_nodata = 0;
+  const terrainlod::NodataMask* nodata = pyr.nodata();
   std::set<int> levels_seen;
   for (int c = 0; c < args.cameras; ++c) {
     terrainlod::Camera cam;
@@ -106,14 +114,26 @@ int run_verify(const VerifyArgs& args) {
     cam.width = 640, cam.height = 480;
     cam.near = 1e-3 * std::max(wx, wy);
     cam.tau_px = 0.25 * std::pow(256.0, u(rng));  // 0.25 .. 64 px: fine and coarse selections
-    const Extraction x = extract_view(pyr, cam);
-    std::vector<terrainlod::DrawnTriangle> tris;
+    // Every triangle of the view, then split by the hole rule (docs/terrainlod.md §5): the
+    // drawn ones must meet edge to edge, and an edge with nothing drawn across must have a
+    // hole's triangle across.
+    const Extraction x = extract_view(pyr, cam, 1, false);
+    std::vector<terrainlod::DrawnTriangle> tris, holes;
     for (const auto& [id, tri] : x.parts)
-      for (const auto& t : tri.triangles)
-        tris.push_back({{tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
-                         tri.vertices[static_cast<std::size_t>(t[2])]},
-                        id});
-    open_total += terrainlod::count_open_edges(L, x.selection, tris);
+      for (const auto& t : tri.triangles) {
+        const terrainlod::DrawnTriangle d{{tri.vertices[static_cast<std::size_t>(t[0])], tri.vertices[static_cast<std::size_t>(t[1])],
+                                           tri.vertices[static_cast<std::size_t>(t[2])]},
+                                          id};
+        const bool hole = nodata && terrainlod::covers_nodata(*nodata, {{{d.v[0].gx, d.v[0].gy}, {d.v[1].gx, d.v[1].gy}, {d.v[2].gx, d.v[2].gy}}});
+        (hole ? holes : tris).push_back(d);
+      }
+    hole_triangles += holes.size();
+    const terrainlod::HoleEdgeCount edges = terrainlod::count_open_edges(L, x.selection, tris, holes);
+    open_total += edges.open;
+    hole_edges += edges.hole_edges;
+    // What extract draws is exactly the triangles kept here.
+    const Extraction drawn = extract_view(pyr, cam);
+    if (drawn.triangles != tris.size()) ++drawn_over_nodata;
     tiles_total += x.selection.tiles.size();
     for (const auto& s : x.selection.tiles) levels_seen.insert(s.id.level);
   }
@@ -122,6 +142,14 @@ int run_verify(const VerifyArgs& args) {
   j["camera_levels_seen"] = levels_seen.size();
   j["open_edges"] = open_total;
   ok = ok && open_total == 0;
+  j["nodata"] = nodata ? "hole" : "fill";
+  if (nodata) {
+    j["nodata_samples"] = nodata->samples;
+    j["hole_triangles"] = hole_triangles;
+    j["hole_edges"] = hole_edges;
+    j["views_drawing_other_triangles"] = drawn_over_nodata;
+    ok = ok && drawn_over_nodata == 0;
+  }
   j["ok"] = ok;
   const std::string text = j.dump(2) + "\n";
   std::fwrite(text.data(), 1, text.size(), stdout);

@@ -18,11 +18,17 @@ enum class Coding { progressive, standalone };
 // How texture tiles are stored.
 enum class TextureFormat { png, jpeg };
 
+// What build does with nodata samples (docs/terrainlod.md §5, holes): fill them with the
+// nearest valid height (drawn), or fill the geometry alike but store the mask and draw
+// no triangle over a nodata sample.
+enum class NodataMode { fill, hole };
+
 // The flag spellings of the enums, as reports print them.
 const char* diagonal_name(terrainlod::DiagonalRule d);
 const char* start_name(terrainlod::StartRule s);
 const char* reference_name(terrainlod::Reference r);
 const char* coding_name(Coding c);
+const char* nodata_mode_name(NodataMode m);
 // "L/X/Y" (X east, Y north, from the south-west) -> a tile id; a usage error otherwise.
 terrainlod::TileId parse_tile(const std::string& text);
 // -o and --to -> the mesh format written (usage error for anything but a mesh format):
@@ -36,8 +42,13 @@ struct DemArgs {
   std::vector<double> origin;     // {x0, y0}: centre of the south-west sample
   double z_scale = 1, z_offset = 0;
   std::optional<double> nodata;   // overrides the file's; NaN accepts NaN heights as nodata
+  NodataMode nodata_mode = NodataMode::fill;  // build: fill or cut holes
   terrainlod::DiagonalRule diagonal = terrainlod::DiagonalRule::shortest;
 };
+
+// --nodata's words (each fill, hole, a number or nan; at most one mode and one value)
+// -> dem.nodata_mode and dem.nodata; a one-line usage error naming the flag otherwise.
+void parse_nodata(const std::vector<std::string>& words, DemArgs& dem);
 
 struct SimplifyArgs {
   DemArgs dem;

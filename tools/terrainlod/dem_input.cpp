@@ -1,6 +1,7 @@
 #include "dem_input.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -41,6 +42,27 @@ const char* diagonal_name(terrainlod::DiagonalRule d) {
     default: return "short";
   }
 }
+
+void parse_nodata(const std::vector<std::string>& words, DemArgs& dem) {
+  bool mode_given = false, value_given = false;
+  for (const std::string& w : words) {
+    if (w == "fill" || w == "hole") {
+      if (mode_given) throw usage_error("--nodata takes one of fill or hole (got both '{}' and another)", w);
+      mode_given = true;
+      dem.nodata_mode = w == "hole" ? NodataMode::hole : NodataMode::fill;
+      continue;
+    }
+    char* end = nullptr;
+    const double v = w.empty() ? 0.0 : std::strtod(w.c_str(), &end);
+    const bool number = !w.empty() && end == w.c_str() + w.size() && (std::isfinite(v) || w == "nan" || w == "NaN" || w == "NAN");
+    if (!number) throw usage_error("--nodata expects fill, hole, a nodata value or nan (got '{}')", w);
+    if (value_given) throw usage_error("--nodata takes one nodata value (got a second, '{}')", w);
+    value_given = true;
+    dem.nodata = v;
+  }
+}
+
+const char* nodata_mode_name(NodataMode m) { return m == NodataMode::hole ? "hole" : "fill"; }
 
 const char* start_name(terrainlod::StartRule s) { return s == terrainlod::StartRule::lattice ? "lattice" : "rtin"; }
 

@@ -26,7 +26,13 @@ const std::vector<std::pair<std::string, tl::Reference>> kReferences{
 const std::vector<std::pair<std::string, Coding>> kCodings{{"progressive", Coding::progressive}, {"standalone", Coding::standalone}};
 const std::vector<std::pair<std::string, TextureFormat>> kTextureFormats{{"png", TextureFormat::png}, {"jpeg", TextureFormat::jpeg}};
 
-void add_dem_options(CLI::App* cmd, DemArgs& d) {
+// --nodata takes words (fill, hole) and a value (a number or nan), separated by commas or
+// given twice; parse_nodata turns them into DemArgs.
+CLI::Option* add_nodata_option(CLI::App* cmd, std::vector<std::string>& words, const std::string& help) {
+  return cmd->add_option("--nodata", words, help)->delimiter(',')->allow_extra_args(false)->type_name("fill|hole|VALUE|nan");
+}
+
+void add_dem_options(CLI::App* cmd, DemArgs& d, std::vector<std::string>& nodata) {
   cmd->add_option("dem", d.path,
                   "DEM: GeoTIFF, ESRI ASCII grid, 16-bit PNG/PGM, .npy, PFM or any raster GDAL reads; - = standard input")
       ->required();
@@ -34,8 +40,10 @@ void add_dem_options(CLI::App* cmd, DemArgs& d) {
   cmd->add_option("--origin", d.origin, "x0,y0: world position of the south-west sample (overrides the file)")->delimiter(',')->allow_extra_args(false);
   cmd->add_option("--z-scale", d.z_scale, "Height = value x scale + offset");
   cmd->add_option("--z-offset", d.z_offset, "Height = value x scale + offset");
-  cmd->add_option("--nodata", d.nodata, "Nodata value (overrides the file's); nan accepts NaN heights as nodata")
-      ->check(fest::cli::accepts_nan);
+  add_nodata_option(cmd, nodata,
+                    "fill (default): nodata samples take the nearest valid height; hole: build keeps that geometry "
+                    "but draws no triangle over a nodata sample. A number: the nodata value (overrides the file's); "
+                    "nan accepts NaN heights as nodata. Both: --nodata hole,-9999");
   fest::cli::enum_words(cmd->add_option("--diagonal", d.diagonal, "Finest triangulation: short (3-D shorter diagonal), alternate, ne"), kDiagonals);
 }
 
@@ -49,9 +57,10 @@ int main(int argc, char** argv) {
   fest::cli::add_common(app, common);
   app.require_subcommand(1);
 
+  std::vector<std::string> simplify_nodata, build_nodata, verify_nodata, stats_nodata;
   SimplifyArgs simplify;
   auto* s = app.add_subcommand("simplify", "Simplify the whole DEM to a mesh within --max-error (vertical, exact)");
-  add_dem_options(s, simplify.dem);
+  add_dem_options(s, simplify.dem, simplify_nodata);
   s->add_option("--max-error", simplify.max_error, "Largest vertical distance from the DEM surface (height units)")
       ->required();
   s->add_option("-o,--output", simplify.output, "Mesh file (.ply .obj .off .stl .drc); - = standard output (PLY)");
@@ -62,7 +71,7 @@ int main(int argc, char** argv) {
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
-  add_dem_options(b, build.dem);
+  add_dem_options(b, build.dem, build_nodata);
   b->add_option("-o,--output", build.output, "PYRAMID.tlp archive, or a directory (pyramid.json + L/X/Y.tlt + L/X/Y.png); written atomically")->required();
   std::string texture;  // an image file or the word hillshade
   auto* tex_opt = b->add_option("--texture", texture,
@@ -135,7 +144,7 @@ int main(int argc, char** argv) {
   v->add_option("--origin", verify.dem.origin, "As for build")->delimiter(',')->allow_extra_args(false);
   v->add_option("--z-scale", verify.dem.z_scale, "As for build");
   v->add_option("--z-offset", verify.dem.z_offset, "As for build");
-  v->add_option("--nodata", verify.dem.nodata, "As for build")->check(fest::cli::accepts_nan);
+  add_nodata_option(v, verify_nodata, "As for build (the holes are the pyramid's: fill or hole changes nothing here)");
   v->add_option("--cameras", verify.cameras, "Random cameras for the crack check")->check(fest::cli::range(0, 1000000));
   v->add_option("--seed", verify.seed, "Seed of the random cameras");
 
@@ -146,7 +155,7 @@ int main(int argc, char** argv) {
 
   StatsArgs stats;
   auto* st = app.add_subcommand("stats", "JSON statistics of a pyramid (.tlp), or of a DEM and its pyramid plan");
-  add_dem_options(st, stats.dem);
+  add_dem_options(st, stats.dem, stats_nodata);
   st->add_option("--tile", stats.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)")->check(fest::cli::range(4, 4096));
   st->add_option("--texels", stats.texels, "Texels per tile side T (power of two >= B; default B)")->check(fest::cli::range(4, 65536));
   st->add_option("--error-fraction", stats.error_fraction, "Allowed error per tile in texels (f)");
@@ -156,6 +165,10 @@ int main(int argc, char** argv) {
     auto format = [](const std::string& name) {
       return name.empty() ? std::nullopt : std::optional<fest::formats::OutputFormat>(fest::formats::output_format_from_name(name));
     };
+    parse_nodata(simplify_nodata, simplify.dem);
+    parse_nodata(build_nodata, build.dem);
+    parse_nodata(verify_nodata, verify.dem);
+    parse_nodata(stats_nodata, stats.dem);
     if (s->parsed()) {
       simplify.to = format(simplify_to);
       return run_simplify(simplify);

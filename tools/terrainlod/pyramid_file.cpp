@@ -72,6 +72,14 @@ void DirectoryPyramidWriter::add(const terrainlod::TileId& id, std::string_view 
   }
 }
 
+void DirectoryPyramidWriter::add_nodata(std::string_view section) {
+  try {
+    write_file(tmp_ / "nodata.bin", section);
+  } catch (const fs::filesystem_error& e) {
+    throw io_error("cannot write the pyramid directory {}: {}", target_.string(), e.code().message());
+  }
+}
+
 void DirectoryPyramidWriter::commit() {
   std::error_code ec;
   const fs::path old = target_.string() + ".old-" + std::to_string(::getpid());
@@ -127,11 +135,33 @@ void PyramidFile::parse_manifest(std::string_view text) {
       throw bad_input("pyramid manifest is inconsistent ({})", name_);
 }
 
+void PyramidFile::parse_nodata(std::string_view section) {
+  std::string mode = "fill";
+  try {
+    const auto it = manifest_.find("nodata");
+    if (it != manifest_.end()) mode = it->get<std::string>();
+  } catch (const nlohmann::json::exception&) {
+    throw bad_input("pyramid manifest's nodata is not a word ({})", name_);
+  }
+  if (mode != "fill" && mode != "hole") throw bad_input("pyramid manifest's nodata is '{}', not fill or hole ({})", quoted_bytes(mode), name_);
+  if (mode == "fill") {
+    if (!section.empty()) throw bad_input("pyramid has a nodata mask but its manifest says nodata fill ({})", name_);
+    return;
+  }
+  if (section.empty()) throw bad_input("pyramid manifest says nodata hole but the pyramid has no nodata mask ({})", name_);
+  nodata_ = naming(name_, [&] { return terrainlod::decode_nodata_mask(section); });
+  if (nodata_.width != manifest_.value("width", -1) || nodata_.height != manifest_.value("height", -1))
+    throw bad_input("pyramid's nodata mask is {} x {} samples, its DEM {} x {} ({})", nodata_.width, nodata_.height,
+                    manifest_.value("width", -1), manifest_.value("height", -1), name_);
+  holes_ = true;
+}
+
 PyramidFile::PyramidFile(std::string bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {
   const std::string_view s(bytes_);
   total_bytes_ = s.size();
   const terrainlod::TlpHead head = naming(name_, [&] { return terrainlod::decode_tlp_head(s); });
   parse_manifest(head.manifest);
+  parse_nodata(naming(name_, [&] { return terrainlod::decode_tlp_nodata(s, head); }));
   for (const TileEntry& e : naming(name_, [&] { return terrainlod::decode_tlp_index(s, head.index_at); })) {
     if (!layout_.exists(e.id)) throw bad_input("pyramid index names tile {}/{}/{} outside the pyramid ({})", e.id.level, e.id.x, e.id.y, name_);
     if (e.offset > s.size() || s.size() - e.offset < e.length)
@@ -158,6 +188,13 @@ PyramidFile PyramidFile::open(const std::string& path) {
   const std::string text = read_input(manifest.string());
   p.total_bytes_ = text.size();
   p.parse_manifest(text);
+  const fs::path mask = fs::path(path) / "nodata.bin";
+  std::string section;
+  if (fs::exists(mask, ec)) {
+    section = read_input(mask.string());
+    p.total_bytes_ += section.size();
+  }
+  p.parse_nodata(section);
   // Every tile of the layout, in transmission order (level, then rows from the south, then
   // columns), must be there with its texture when the manifest says there are textures.
   const auto& L = p.layout_;

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "terrainlod/extract.hpp"
+#include "terrainlod/nodata_mask.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/tile_codec.hpp"
 #include "terrainlod/tlp_archive.hpp"
@@ -36,6 +37,8 @@ class DirectoryPyramidWriter {
   DirectoryPyramidWriter& operator=(const DirectoryPyramidWriter&) = delete;
   // `texture` empty: the tile has none.
   void add(const terrainlod::TileId& id, std::string_view tile, std::string_view texture);
+  // build --nodata hole: the nodata mask's bytes (nodata.bin).
+  void add_nodata(std::string_view section);
   void commit();
 
  private:
@@ -57,6 +60,9 @@ class PyramidFile {
   const terrainlod::PyramidLayout& layout() const { return layout_; }
   terrainlod::TileGeometry geometry(int level) const;
   bool has(const terrainlod::TileId& id) const { return where_.count(id) != 0; }
+  // build --nodata hole: the nodata mask (no triangle is drawn over a nodata sample); null
+  // for a filled pyramid.
+  const terrainlod::NodataMask* nodata() const { return holes_ ? &nodata_ : nullptr; }
   // Decoded once, cached; a progressive tile decodes (and caches) its parent chain first.
   const terrainlod::Tile& tile(const terrainlod::TileId& id);
   // The decoded parent a tile's coding refers to, or null for a standalone tile.
@@ -83,6 +89,8 @@ class PyramidFile {
  private:
   PyramidFile() = default;
   void parse_manifest(std::string_view text);
+  // The manifest's "nodata" ("fill" when absent) against the section's bytes (empty: none).
+  void parse_nodata(std::string_view section);
   std::string tile_path(const terrainlod::TileId& id, const std::string& extension) const;
 
   std::string bytes_;  // the archive
@@ -96,6 +104,8 @@ class PyramidFile {
   mutable std::map<terrainlod::TileId, std::string> files_, texture_files_;  // directory blobs read so far
   terrainlod::PyramidLayout layout_;
   bool textured_ = false;
+  bool holes_ = false;
+  terrainlod::NodataMask nodata_;
   std::string texture_extension_;
   std::size_t total_bytes_ = 0;
   std::size_t touched_ = 0;

@@ -155,7 +155,7 @@ terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& wher
   return c;
 }
 
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale) {
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale, bool cut_holes) {
   Extraction x;
   const auto t0 = SteadyClock::now();
   x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
@@ -169,6 +169,7 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double 
   const auto t1 = SteadyClock::now();
   for (const auto& s : x.selection.tiles) {
     x.parts.emplace_back(s.id, terrainlod::triangulate(pyr.tile(s.id), s.mask, pyr.geometry(s.id.level)));
+    if (cut_holes && pyr.nodata()) x.hole_triangles += terrainlod::cut_holes(*pyr.nodata(), x.parts.back().second);
     x.triangles += x.parts.back().second.triangles.size();
   }
   x.decode_ms = ms_since(t1);
@@ -202,8 +203,17 @@ terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale) {
   // The headers hold floats: widen by a relative hair, as extract_view does.
   const double pad = 1e-6 * (std::abs(z0) + std::abs(z1) + 1);
   z0 -= pad, z1 += pad;
-  return {L.origin_x, L.origin_y, std::min(z0, z1) * z_scale, L.origin_x + cx * L.dx, L.origin_y + cy * L.dy,
-          std::max(z0, z1) * z_scale};
+  // With holes only the valid samples' box can be drawn (every drawn vertex is a valid
+  // sample, or beyond the DEM the padding of a valid edge sample).
+  double x0 = 0, y0 = 0, x1 = cx, y1 = cy;
+  std::array<int, 4> valid{};
+  if (pyr.nodata() && terrainlod::valid_bounds(*pyr.nodata(), valid)) {
+    x0 = valid[0], y0 = valid[1];
+    x1 = valid[2] == pyr.nodata()->width - 1 ? cx : valid[2];
+    y1 = valid[3] == pyr.nodata()->height - 1 ? cy : valid[3];
+  }
+  return {L.origin_x + x0 * L.dx, L.origin_y + y0 * L.dy, std::min(z0, z1) * z_scale, L.origin_x + x1 * L.dx,
+          L.origin_y + y1 * L.dy, std::max(z0, z1) * z_scale};
 }
 
 nlohmann::json tiles_per_level(const PyramidFile& pyr, const terrainlod::Selection& sel) {

@@ -58,20 +58,23 @@ struct Extraction {
   terrainlod::Selection selection;
   std::set<terrainlod::TileId> examined;  // tiles whose box the selection looked at
   std::vector<std::pair<terrainlod::TileId, terrainlod::TileTriangulation>> parts;
-  std::size_t triangles = 0;
+  std::size_t triangles = 0;       // drawn
+  std::size_t hole_triangles = 0;  // not drawn: over nodata (a --nodata hole pyramid)
   double select_ms = 0, decode_ms = 0;
 };
 
 // The tiles a camera selects, closed, and their triangulations decoded. Heights drawn
-// multiplied by z_scale (extract --z-exaggeration) cull with the boxes scaled alike.
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale = 1);
+// multiplied by z_scale (extract --z-exaggeration) cull with the boxes scaled alike. In a
+// pyramid with holes the triangles over nodata are left out (lib/terrainlod/nodata_mask.hpp)
+// unless `cut_holes` is false (verify looks at both sides of a hole's edge).
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale = 1, bool cut_holes = true);
 
 // extract --z-exaggeration: every vertex height multiplied by k.
 void scale_heights(Mesh& mesh, double k);
 
 // The world box a view of the pyramid can draw: the DEM rectangle (clip) or the root
-// tiles' squares (the padding included), heights over every tile (from the tile headers),
-// times z_scale.
+// tiles' squares (the padding included), with holes only the valid samples' part of it,
+// heights over every tile (from the tile headers), times z_scale.
 terrainlod::WorldBox drawn_box(PyramidFile& pyr, bool clip, double z_scale);
 
 // The count of selected tiles per level, as a JSON array.
