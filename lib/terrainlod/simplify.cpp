@@ -475,7 +475,24 @@ class CollapseEngine {
   std::array<MemoSlot, kMemoSlots> memo_{};
   std::uint32_t memo_stamp_ = 0;
   std::size_t memo_used_ = 0;
-  using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
+  // Queue entry: cost, v, w, version, popped smallest first in this lexicographic order
+  // (that of the std::tuple it replaces; the order is total, so any correct heap pops the
+  // same sequence). A plain struct with its own comparison: the tuple's generic operator<
+  // was a twentieth of the engine's instructions.
+  struct Entry {
+    double cost;
+    int v, w;
+    std::uint32_t version;
+  };
+  struct Later {  // a comes out after b (std::greater on the tuple, written out)
+    bool operator()(const Entry& a, const Entry& b) const {
+      if (b.cost < a.cost) return true;
+      if (a.cost < b.cost) return false;
+      if (a.v != b.v) return a.v > b.v;
+      if (a.w != b.w) return a.w > b.w;
+      return a.version > b.version;
+    }
+  };
   Measure measure_;
   const ReferenceSurface& dem_;
   std::vector<double> zref_;  // the reference's height at every vertex (lower bounds)
@@ -488,7 +505,7 @@ class CollapseEngine {
   std::vector<std::uint8_t> live_;   // has a queue entry of the current version
   // Collapsed away (OpenMesh's status flag, without its status() accessor's lookup by name).
   std::vector<std::uint8_t> removed_;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+  std::priority_queue<Entry, std::vector<Entry>, Later> heap_;
   TriangleErrorCache cache_;       // per triangle (three vertex ids)
   TriangleErrorCache edge_cache_;  // per edge (two vertex ids)
   std::vector<TriMesh::VertexHandle> ring_;
