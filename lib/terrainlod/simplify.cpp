@@ -430,11 +430,14 @@ class CollapseEngine {
     for (auto f : m_.vf_range(v)) {
       star_.emplace_back();
       StarFace& sf = star_.back();
-      int k = 0;
-      for (auto u : m_.fv_range(f)) {
+      // The corners in m_.fv_range(f)'s order (from the face's half-edge along next),
+      // without the circulator's lap bookkeeping.
+      auto h = m_.halfedge_handle(f);
+      for (int k = 0; k < 3; ++k, h = m_.next_halfedge_handle(h)) {
+        const auto u = m_.to_vertex_handle(h);
         if (u == v) sf.at_v = k;
         sf.id[k] = u.idx();
-        sf.p[k++] = grid_point(m_, u);
+        sf.p[k] = grid_point(m_, u);
       }
       sf.next = kNext[sf.at_v];
       sf.prev = kPrev[sf.at_v];
