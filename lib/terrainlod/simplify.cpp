@@ -261,14 +261,28 @@ class CollapseEngine {
     const GridPoint& pv = star_pv_;
     // First the new triangles' shapes and a cheap lower bound of the error: the removed
     // sample v lies in one of them, and the new surface must pass within the bound of it.
-    // Most rejected candidates fail here, before any scan. Each new triangle is written
-    // straight into the member buffer `fan_` (sized for the star in refresh()): copying
-    // through local arrays, zero-initialised, was a tenth of the engine's instructions.
-    int n = 0;
+    // Most rejected candidates fail here, before any scan.
     const int vi = star_vi_, wi = w.idx();
     const double zv = zref_[static_cast<std::size_t>(vi)];
+    // The bound is tested on the star's own corners with w in v's place (no copy): most
+    // candidates fail it, and copying every new triangle first was a tenth of the engine's
+    // instructions. The same expressions on the same doubles as on the copies.
     for (const StarFace& sf : star_) {  // v's faces in OpenMesh's order (vf_range)
       if (sf.id[sf.next] == wi || sf.id[sf.prev] == wi) continue;  // the two triangles on edge v-w disappear
+      const GridPoint* c[3] = {&sf.p[0], &sf.p[1], &sf.p[2]};
+      c[sf.at_v] = &pw;
+      const GridPoint &c0 = *c[0], &c1 = *c[1], &c2 = *c[2];
+      const double d = twice_area(c0, c1, c2);
+      if (d < kMinTwiceArea) return kInfinite;  // fold-over
+      const double wa = twice_area(pv, c1, c2), wb = twice_area(c0, pv, c2), wc = twice_area(c0, c1, pv);
+      if (wa >= 0 && wb >= 0 && wc >= 0 && std::abs((wa * c0.z + wb * c1.z + wc * c2.z) / d - zv) > stop)
+        return kInfinite;
+    }
+    // Passed: the new triangles into the member buffer `fan_` (sized for the star in
+    // refresh()).
+    int n = 0;
+    for (const StarFace& sf : star_) {
+      if (sf.id[sf.next] == wi || sf.id[sf.prev] == wi) continue;
       if (n == kMaxFan) return kInfinite;  // a vertex of absurd valence stays (never seen on grids)
       NewTriangle& t = fan_[static_cast<std::size_t>(n)];
       for (int k = 0; k < 3; ++k) {
@@ -277,14 +291,6 @@ class CollapseEngine {
       }
       t.corner[sf.at_v] = pw;
       t.id[sf.at_v] = static_cast<std::uint64_t>(wi);
-      const GridPoint(&corner)[3] = t.corner;
-      const double d = twice_area(corner[0], corner[1], corner[2]);
-      if (d < kMinTwiceArea) return kInfinite;  // fold-over
-      const double wa = twice_area(pv, corner[1], corner[2]), wb = twice_area(corner[0], pv, corner[2]),
-                   wc = twice_area(corner[0], corner[1], pv);
-      if (wa >= 0 && wb >= 0 && wc >= 0 &&
-          std::abs((wa * corner[0].z + wb * corner[1].z + wc * corner[2].z) / d - zv) > stop)
-        return kInfinite;
       ++n;
     }
     // Triangle by triangle, the samples first, then the edges: this order decides which
@@ -418,18 +424,23 @@ class CollapseEngine {
     }
     memo_used_ = 0;
     // v's star for every candidate of this refresh (it does not change meanwhile).
+    // Written in place (no zeroed local copied in), corners through the face's half-edges.
+    static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
     star_.clear();
     for (auto f : m_.vf_range(v)) {
-      StarFace sf;
-      int k = 0;
-      for (auto u : m_.fv_range(f)) {
+      star_.emplace_back();
+      StarFace& sf = star_.back();
+      // The corners in m_.fv_range(f)'s order (from the face's half-edge along next),
+      // without the circulator's lap bookkeeping.
+      auto h = m_.halfedge_handle(f);
+      for (int k = 0; k < 3; ++k, h = m_.next_halfedge_handle(h)) {
+        const auto u = m_.to_vertex_handle(h);
         if (u == v) sf.at_v = k;
         sf.id[k] = u.idx();
-        sf.p[k++] = grid_point(m_, u);
+        sf.p[k] = grid_point(m_, u);
       }
-      sf.next = (sf.at_v + 1) % 3;
-      sf.prev = (sf.at_v + 2) % 3;
-      star_.push_back(sf);
+      sf.next = kNext[sf.at_v];
+      sf.prev = kPrev[sf.at_v];
     }
     if (fan_.size() < star_.size()) fan_.resize(star_.size());
     star_vi_ = vi;
@@ -475,7 +486,24 @@ class CollapseEngine {
   std::array<MemoSlot, kMemoSlots> memo_{};
   std::uint32_t memo_stamp_ = 0;
   std::size_t memo_used_ = 0;
-  using Entry = std::tuple<double, int, int, std::uint32_t>;  // cost, v, w, version (min-heap)
+  // Queue entry: cost, v, w, version, popped smallest first in this lexicographic order
+  // (that of the std::tuple it replaces; the order is total, so any correct heap pops the
+  // same sequence). A plain struct with its own comparison: the tuple's generic operator<
+  // was a twentieth of the engine's instructions.
+  struct Entry {
+    double cost;
+    int v, w;
+    std::uint32_t version;
+  };
+  struct Later {  // a comes out after b (std::greater on the tuple, written out)
+    bool operator()(const Entry& a, const Entry& b) const {
+      if (b.cost < a.cost) return true;
+      if (a.cost < b.cost) return false;
+      if (a.v != b.v) return a.v > b.v;
+      if (a.w != b.w) return a.w > b.w;
+      return a.version > b.version;
+    }
+  };
   Measure measure_;
   const ReferenceSurface& dem_;
   std::vector<double> zref_;  // the reference's height at every vertex (lower bounds)
@@ -488,7 +516,7 @@ class CollapseEngine {
   std::vector<std::uint8_t> live_;   // has a queue entry of the current version
   // Collapsed away (OpenMesh's status flag, without its status() accessor's lookup by name).
   std::vector<std::uint8_t> removed_;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+  std::priority_queue<Entry, std::vector<Entry>, Later> heap_;
   TriangleErrorCache cache_;       // per triangle (three vertex ids)
   TriangleErrorCache edge_cache_;  // per edge (two vertex ids)
   std::vector<TriMesh::VertexHandle> ring_;

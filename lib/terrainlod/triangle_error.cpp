@@ -21,6 +21,11 @@ inline int cell_of(double x, int n) { return std::clamp(static_cast<int>(x), 0, 
 struct RowCrossing {
   int fl = 0, rem = 0;  // x(j) = fl + rem / den, 0 <= rem < den
   int step_q = 0, step_r = 0, den = 1;
+  // Inlined: three calls per triangle, and the out-of-line copy GCC chose cost a call each
+  // (1.5 % of a 10 m simplify's instructions).
+#if defined(__GNUC__)
+  [[gnu::always_inline]]
+#endif
   void start(const GridPoint& p, const GridPoint& q) {
     den = static_cast<int>(q.y - p.y);
     const int dx = static_cast<int>(q.x - p.x);
