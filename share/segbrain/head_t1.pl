@@ -84,7 +84,7 @@ limit(brain_head_ratio_min, 0.30). limit(brain_head_ratio_max, 0.60).
 segment_head :-
     find_head, find_brain,
     ( scene(partial) -> optional(find_midsagittal_and_ventricles) ; find_midsagittal, find_ventricles ),
-    seek(eyes, find_eyes), seek(cerebellum, find_cerebellum), seek(brainstem, find_brainstem),
+    seek(eyes, find_eyes), seek(brainstem, find_brainstem), seek(cerebellum, find_cerebellum),
     seek(optic_nerve, find_optic_nerves), emit_objects.
 find_midsagittal_and_ventricles :- find_midsagittal, find_ventricles.
 
@@ -94,8 +94,8 @@ segment_objects(Os) :-
     find_head,
     ( member(O, Os), O \== head -> find_brain, find_midsagittal ; true ),
     ( member(O2, [ventricles, cerebellum, brainstem]), memberchk(O2, Os) -> find_ventricles ; true ),
-    ( memberchk(cerebellum, Os) -> must_seek(cerebellum), find_cerebellum ; true ),
     ( memberchk(brainstem, Os) -> must_seek(brainstem), find_brainstem ; true ),
+    ( memberchk(cerebellum, Os) -> must_seek(cerebellum), find_cerebellum ; true ),
     ( member(O3, [eyes, optic_nerve]), memberchk(O3, Os) -> must_seek(eyes), find_eyes ; true ),
     ( memberchk(optic_nerve, Os) -> find_optic_nerves ; true ),
     emit_objects.
@@ -377,7 +377,9 @@ find_cerebellum :-
     centroid_mm(ventricles, [_, Av, Sv]),
     limit(cerebellum_top_below_ventricles_mm, Dt), St is Sv - Dt,
     halfspace(s, below, St, low), limit(cerebellum_behind_ventricles_mm, Db), Ab is Av - Db, halfspace(a, below, Ab, back),
-    threshold(t1, Lo, Hi, tis), and(tis, brain_filled, bt), and(bt, low, c1), and(c1, back, cbox),
+    threshold(t1, Lo, Hi, tis), and(tis, brain_filled, cbt0),
+    ( exists(brainstem) -> dilate(brainstem, 1, bsz), and_not(cbt0, bsz, bt) ; copy(cbt0, bt) ),
+    and(bt, low, c1), and(c1, back, cbox),
     candidates(cerebellum_separation_mm, Rs), member(R, Rs),
     erode(cbox, R, ce), largest_component(ce, 6, cc), dilate(cc, R, cd), and(cd, cbox, cb0),
     close(cb0, 2, cb1), fill_holes(cb1, volume, cerebellum),
@@ -386,30 +388,53 @@ verify_cerebellum(C) :-
     volume_ml(C, V), limit(cerebellum_min_ml, Lo), limit(cerebellum_max_ml, Hi), V >= Lo, V =< Hi,
     midsagittal_r(Rm), mirror_dice(C, Rm, D), limit(cerebellum_mirror_dice_min, Dm), D >= Dm.
 
-% Brainstem (figure 2.1), a RECONSTRUCTION calibrated on Colin27 (20 ml, centroid 8 mm
-% from that of the JHU atlas's midbrain, pons and medulla): brain tissue in a column of
-% +-15 mm about the midsagittal plane, below and not in front of the ventricles, apart
-% from the cerebellum; an opening cuts the peduncles; verified by volume and by being
-% taller than deep (elongated along S-I).
-limit(brainstem_top_below_ventricles_mm, 10).
-limit(brainstem_front_of_ventricles_mm, 5).
-limit(brainstem_half_width_mm, 15).
+% Brainstem (figure 2.1), a RECONSTRUCTION calibrated on Colin27 against the JHU atlas's
+% midbrain, pons and medulla (docs/segbrain.md §4): the tissue column about the midline
+% below the diencephalon, apart from the temporal lobes by the ambient and prepontine
+% cisterns and from the cerebellum by the fourth ventricle. Sought BEFORE the cerebellum,
+% which then excludes it (at 0.5 mm the cerebellum, placed first, took the medulla):
+% brain tissue in a region of +-28 mm about the midsagittal plane, 14-60 mm below and
+% from 10 mm in front of to 20 mm behind the ventricles' centroid, eroded by E mm so that
+% thin bridges break; the eroded part inside +-10 mm that touches a seed ball on the
+% midline (30 mm below, 8 mm behind the ventricles' centroid), grown back geodesically
+% by E mm inside the region's tissue. The +-10 mm core column is needed because at 1 mm
+% even a 6 mm erosion leaves the pons joined to the cerebellum (middle peduncles) and the
+% midbrain to the medial temporal lobes: without it the component is 36-190 ml and spans
+% the whole region. So the lateral sides at the pons are still the core's planes moved
+% out by E (rounded, not a real boundary). Verified by volume and by being taller than deep.
+limit(brainstem_top_below_ventricles_mm, 14).
+limit(brainstem_front_of_ventricles_mm, 10).
+limit(brainstem_behind_ventricles_mm, 20).
+limit(brainstem_bottom_below_ventricles_mm, 60).
+limit(brainstem_search_half_width_mm, 28).
+limit(brainstem_seed_below_ventricles_mm, 30).
+limit(brainstem_seed_behind_ventricles_mm, 8).
+limit(brainstem_seed_radius_mm, 6).
+limit(brainstem_core_half_width_mm, 10).
 limit(brainstem_min_ml, 15).  limit(brainstem_max_ml, 50).
-candidates(brainstem_opening_mm, [3, 4, 2]).
+candidates(brainstem_separation_mm, [4, 5, 3, 6]).
 
 find_brainstem :-
     wm_reference(W), window(t1, brain, A, B), Lo is A * W, Hi is B * W,
     midsagittal_r(Rm), centroid_mm(ventricles, [_, Av, Sv]),
     limit(brainstem_top_below_ventricles_mm, Dt), St is Sv - Dt,
     limit(brainstem_front_of_ventricles_mm, Df), Af is Av + Df,
-    limit(brainstem_half_width_mm, Hw), R0 is Rm - Hw, R1 is Rm + Hw,
-    halfspace(s, below, St, bs1), halfspace(a, below, Af, bs2),
+    limit(brainstem_search_half_width_mm, Hw), R0 is Rm - Hw, R1 is Rm + Hw,
+    limit(brainstem_behind_ventricles_mm, Dk), Ak is Av - Dk,
+    limit(brainstem_bottom_below_ventricles_mm, Dm), Sm is Sv - Dm, halfspace(s, above, Sm, bs6),
+    halfspace(s, below, St, bs1), halfspace(a, below, Af, bs2), halfspace(a, above, Ak, bs5),
     halfspace(r, above, R0, bs3), halfspace(r, below, R1, bs4),
     threshold(t1, Lo, Hi, btis), and(btis, brain_filled, bt0),
-    ( exists(cerebellum) -> dilate(cerebellum, 2, cbz), and_not(bt0, cbz, bt1) ; copy(bt0, bt1) ),
-    and(bt1, bs1, bt2), and(bt2, bs2, bt3), and(bt3, bs3, bt4), and(bt4, bs4, bt5),
-    candidates(brainstem_opening_mm, Os), member(O, Os),
-    open(bt5, O, bt6), largest_component(bt6, 6, brainstem),
+    and(bt0, bs1, bt1), and(bt1, bs2, bt2), and(bt2, bs3, bt3), and(bt3, bs4, bt4), and(bt4, bs5, bt5), and(bt5, bs6, bsearch),
+    limit(brainstem_seed_below_ventricles_mm, Ds), Ss is Sv - Ds,
+    limit(brainstem_seed_behind_ventricles_mm, Db), As is Av - Db,
+    limit(brainstem_seed_radius_mm, Rs), ball([Rm, As, Ss], Rs, bseed),
+    candidates(brainstem_separation_mm, Es), member(E, Es),
+    limit(brainstem_core_half_width_mm, Hc), Rc0 is Rm - Hc, Rc1 is Rm + Hc,
+    halfspace(r, above, Rc0, bc1), halfspace(r, below, Rc1, bc2),
+    erode(bsearch, E, bcore0), and(bcore0, bc1, bcore1), and(bcore1, bc2, bcore2),
+    and(bcore2, bseed, bseed1), geodesic_dilate(bseed1, bcore2, 1000, bcore),
+    geodesic_dilate(bcore, bsearch, E, brainstem),
     verify_brainstem(brainstem), !.
 verify_brainstem(M) :-
     volume_ml(M, V), limit(brainstem_min_ml, Lo), limit(brainstem_max_ml, Hi), V >= Lo, V =< Hi,

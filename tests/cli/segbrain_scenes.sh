@@ -19,7 +19,7 @@ check "the header's field of view is 66x82x50 mm ($fov)" test "$fov" = 66x82x50
 check "one line on stderr" test "$(wc -l <"$WORK/stderr")" -eq 1
 expect_stderr_has "field of view $fov mm covers part of the brain"
 expect_stderr_has "no skull in the volume, skull stripping skipped"
-expect_stderr_has "brainstem not sought"
+expect_stderr_has "brainstem, cerebellum not sought"  # in the order they are sought
 check "report: scene partial" test "$(jq -r .scene "$WORK/anat.json")" = partial
 check "report: not skull-stripped input (the crop is)" test "$(jq -r .skull_stripped_input "$WORK/anat.json")" = false
 check "report: the stderr line is the summary" test "segbrain: $(jq -r .summary "$WORK/anat.json")" = "$(cat "$WORK/stderr")"
