@@ -5,9 +5,22 @@
 #include <algorithm>
 #include <memory>
 
-#include "edgebreaker/corner_table.hpp"
 
 namespace fest::edgebreaker {
+namespace {
+
+// next() and prev() of corner_table.hpp for corners known to be >= 0: an unsigned
+// remainder is a multiply and a shift, the signed one needs two more corrections.
+inline int next_corner(int c) {
+  const auto u = static_cast<unsigned>(c);
+  return u % 3u == 2u ? c - 2 : c + 1;
+}
+inline int prev_corner(int c) {
+  const auto u = static_cast<unsigned>(c);
+  return u % 3u == 0u ? c + 2 : c - 1;
+}
+
+}  // namespace
 
 bool reencodes_exactly(const int* V, const int* O, int t, int vertex_count, const Symbol* reversed, std::size_t symbols,
                        const std::vector<HandleEvent>& events) {
@@ -19,19 +32,22 @@ bool reencodes_exactly(const int* V, const int* O, int t, int vertex_count, cons
   // O an involution between corners of different triangles, and each pair of opposite
   // corners across the same edge in reverse (tested once per pair, at its lower corner:
   // the condition is symmetric).
+  // The edge test is made for every corner and folded into one flag (a branch on
+  // "lower corner of its pair" is taken at random, half the time).
+  bool ok = true;
   for (int c = 0; c < static_cast<int>(n); c += 3) {
     const auto a = static_cast<unsigned>(V[c]), b = static_cast<unsigned>(V[c + 1]), d = static_cast<unsigned>(V[c + 2]);
     if (a >= nv || b >= nv || d >= nv || a == b || b == d || d == a) return false;
+    const unsigned across[3][2] = {{b, d}, {d, a}, {a, b}};  // corner j's edge (V[next], V[prev])
     for (int j = 0; j < 3; ++j) {
       const int k = c + j;
       const int o = O[k];
       if (static_cast<unsigned>(o) >= n || static_cast<unsigned>(o - c) < 3u || O[o] != k) return false;
-      if (o > k) {
-        const int kn = j == 2 ? c : k + 1, kp = j == 0 ? c + 2 : k - 1;
-        if (V[kn] != V[prev(o)] || V[kp] != V[next(o)]) return false;
-      }
+      const int on = next_corner(o), op = prev_corner(o);
+      ok &= (static_cast<unsigned>(V[op]) == across[j][0]) & (static_cast<unsigned>(V[on]) == across[j][1]);
     }
   }
+  if (!ok) return false;
 
   // traverse() and the comparisons: every face must come as the next index, every vertex
   // reached as the next index, every symbol and handle event as decoded. While that holds,
@@ -79,20 +95,24 @@ bool reencodes_exactly(const int* V, const int* O, int t, int vertex_count, cons
     while (!stack.empty()) {
       int c = stack.back();
       stack.pop_back();
-      if (c / 3 < k) continue;  // reached through a handle
+      if (c < 3 * k) continue;  // its triangle was reached through a handle
       for (;;) {
-        if (c / 3 != k) return false;  // the face order would not be the identity
+        // The triangle must be the next index, k; then c's place in it gives its next
+        // and previous corners without a remainder, and "seen" is "corner below 3k".
+        const auto j = static_cast<unsigned>(c - 3 * k);
+        if (j >= 3u) return false;  // the face order would not be the identity
         ++k;
+        const int cn = j == 2u ? c - 2 : c + 1, cp = j == 0u ? c + 2 : c - 1;
         const auto v = static_cast<unsigned>(V[c]);
         if (v >= g) {  // not seen: a C, which must reach the next vertex
           if (v != g || sym >= symbols || expected(sym) != Symbol::C) return false;
           first_corner[g++] = c;
           ++sym;
-          c = O[next(c)];
+          c = O[cn];
           continue;
         }
-        const int r = O[next(c)], l = O[prev(c)];
-        const bool right_done = r / 3 < k, left_done = l / 3 < k;
+        const int r = O[cn], l = O[cp];
+        const bool right_done = r < 3 * k, left_done = l < 3 * k;
         const Symbol s = right_done ? (left_done ? Symbol::E : Symbol::R) : (left_done ? Symbol::L : Symbol::S);
         if (sym >= symbols || expected(sym) != s) return false;
         ++sym;
@@ -120,12 +140,17 @@ bool reencodes_exactly(const int* V, const int* O, int t, int vertex_count, cons
   // split each vertex's corners into fans. The walk reached every vertex, and the cycles
   // through the corners it reached them at are one per vertex; they cover all corners
   // exactly when no vertex has a second fan.
+  // One remainder per step: c = next(d) has the residue after d's.
   unsigned covered = 0;
   for (unsigned v = 0; v < nv; ++v) {
     const int start = first_corner[v];
     int c = start;
+    unsigned rc = static_cast<unsigned>(c) % 3u;
     do {
-      c = next(O[next(c)]);
+      const int d = O[rc == 2u ? c - 2 : c + 1];
+      const unsigned rd = static_cast<unsigned>(d) % 3u;
+      c = rd == 2u ? d - 2 : d + 1;
+      rc = rd == 2u ? 0u : rd + 1u;
       if (++covered > n) return false;
     } while (c != start);
   }

@@ -250,7 +250,11 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite, bool vale
   }
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
-  const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
+  // Corners are >= 0 here: unsigned division and remainder (a multiply and a shift).
+  const auto moved = [&](int c) {
+    const unsigned q = static_cast<unsigned>(c) / 3u;
+    return 3 * new_index[q] + (c - 3 * static_cast<int>(q));
+  };
   if (need_index) out.opposite.resize(static_cast<std::size_t>(3 * t));
   for (int f = 0; f < t && need_index; ++f) {  // per triangle: one new_index lookup for its own corners
     const int base = 3 * new_index[static_cast<std::size_t>(f)];
