@@ -145,6 +145,11 @@ class RangeDecoder {
   // (whether a bit is 0 or 1 is what the coder cannot predict, so a branch on it is
   // mispredicted as often as the data is surprising); one byte of renormalisation
   // suffices (see RangeEncoder::bit_at_rate).
+  // Branch-free: the outcome selects range, code and probability by conditional moves
+  // (whether a bit is 0 or 1 is what the coder cannot predict, so a branch on it is
+  // mispredicted as often as the data is surprising); one byte of renormalisation
+  // suffices (see RangeEncoder::bit_at_rate). A caller that branches on the result gets
+  // the selects fused into that branch, which costs nothing more.
   int bit_at_rate(std::uint16_t& p, int shift) {
     const std::uint32_t bound = (range_ >> probability_bits) * p;
     const bool one = code_ >= bound;
@@ -157,6 +162,22 @@ class RangeDecoder {
       code_ = (code_ << 8) | next_byte();
     }
     return one ? 1 : 0;
+  }
+  // The same decision for a caller that only stores the bit: written with a mask, since
+  // GCC turns the selects above into a branch on the outcome even then (for nearly uniform
+  // bits, such as those below a residual's leading one, mispredicted half the time).
+  int bit_value_at_rate(std::uint16_t& p, int shift) {
+    const std::uint32_t bound = (range_ >> probability_bits) * p;
+    const std::uint32_t one = 0u - static_cast<std::uint32_t>(code_ >= bound);  // all ones for a 1
+    const std::uint32_t up = p + (((1u << probability_bits) - p) >> shift), down = p - (p >> shift);
+    code_ -= bound & one;
+    range_ = bound + ((range_ - 2u * bound) & one);  // range - bound for a 1, bound for a 0
+    p = static_cast<std::uint16_t>(up + ((down - up) & one));
+    if (range_ < range_top) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | next_byte();
+    }
+    return static_cast<int>(one & 1u);
   }
   int bypass() {
     range_ >>= 1;

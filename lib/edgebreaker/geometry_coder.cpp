@@ -115,6 +115,14 @@ inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
   ++c.n;
   return b;
 }
+// The same for a bit that is only stored (the two below a residual's leading one, close
+// to uniform): the range decoder's mask form, without a branch on the outcome.
+[[gnu::always_inline]] inline int get_counted_value(RangeDecoder& dec, CountedBit& c) {
+  if (c.n == 15) return dec.bit_value_at_rate(c.p, adapt_shift);
+  const int b = dec.bit_value_at_rate(c.p, counted_shift[c.n]);
+  ++c.n;
+  return b;
+}
 
 // The length k of a coordinate's zigzagged residual is coded around m, the length of the
 // same axis's previous residual: "k == m?", then the side, then unary steps away from m
@@ -204,11 +212,11 @@ struct DistanceCoder {
     if (k <= 1) return -k;  // zigzag 0 -> 0, 1 -> -1
     auto& h = a.high[static_cast<std::size_t>(k)];
     int below = k - 2;
-    const int b0 = get_counted(dec, h[0]);
+    const int b0 = get_counted_value(dec, h[0]);
     std::uint64_t z = 2u | static_cast<std::uint64_t>(b0);
     if (below > 0) {
       --below;
-      z = (z << 1) | static_cast<std::uint64_t>(get_counted(dec, h[static_cast<std::size_t>(1 + b0)]));
+      z = (z << 1) | static_cast<std::uint64_t>(get_counted_value(dec, h[static_cast<std::size_t>(1 + b0)]));
       while (below > 0) {
         const int chunk = std::min(below, 16);
         below -= chunk;

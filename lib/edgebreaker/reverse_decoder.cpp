@@ -7,7 +7,11 @@
 #include "edgebreaker/reverse_decoder_steps.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
+#include <memory>
+
+#include "edgebreaker/reencode_check.hpp"
 
 #include "core/error.hpp"
 
@@ -246,7 +250,11 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite, bool vale
   }
   if (symbol != symbols_) fail("the symbols of the components are interleaved");
 
-  const auto moved = [&](int c) { return 3 * new_index[static_cast<std::size_t>(c / 3)] + c % 3; };
+  // Corners are >= 0 here: unsigned division and remainder (a multiply and a shift).
+  const auto moved = [&](int c) {
+    const unsigned q = static_cast<unsigned>(c) / 3u;
+    return 3 * new_index[q] + (c - 3 * static_cast<int>(q));
+  };
   if (need_index) out.opposite.resize(static_cast<std::size_t>(3 * t));
   for (int f = 0; f < t && need_index; ++f) {  // per triangle: one new_index lookup for its own corners
     const int base = 3 * new_index[static_cast<std::size_t>(f)];
@@ -255,7 +263,15 @@ DecodedConnectivity ReverseDecoder::finish(bool verify, bool opposite, bool vale
 
   if (verify) {
     // Re-encode the decoded corner table itself (not a table rebuilt from the faces, which
-    // could not tell the two edges of a multi-edge apart).
+    // could not tell the two edges of a multi-edge apart). The one-pass check decides
+    // every accepted stream; whatever it does not show goes through the reference check
+    // below, which names the problem.
+    static_assert(sizeof(Triangle) == 3 * sizeof(int), "faces are read as one array of corners");
+    std::unique_ptr<int[]> corners_v(new int[static_cast<std::size_t>(3 * t)]);
+    std::memcpy(corners_v.get(), out.triangles.data(), sizeof(int) * static_cast<std::size_t>(3 * t));
+    if (reencodes_exactly(corners_v.get(), out.opposite.data(), t, out.vertex_count, decoded_.data(), decoded_.size(),
+                          events_))
+      return out;
     CornerTable table;
     table.vertex_count = out.vertex_count;
     table.V.resize(static_cast<std::size_t>(3 * t));

@@ -1,18 +1,19 @@
 // ebcode against Draco 1.5.5 (docs/ebcode.md §6) on its real meshes and the
 // 1.2 M-triangle subdivided bunny, in the same process: one JSON line per mesh and
 // quantisation, with bytes, bits per vertex (connectivity and total), encode and decode
-// throughput (median of 5 runs, one thread) for ebcode --conn auto (and the size with
+// throughput (median of 5 runs, one thread; wall clock and this thread's CPU time) for ebcode --conn auto (and the size with
 // --predict multi against Draco cl10) and Draco cl7/cl10
 // through libdraco, and draco_encoder's file size at cl7 when Debian's `draco` is installed.
 //
-//   build/bin/bench_ebm_vs_draco [TESTDATA_DIR] [--quick]     (default: $FEST_TESTDATA)
+//   build/bin/bench_ebm_vs_draco [TESTDATA_DIR] [--quick] [--runs N] [--only MESH]   (default: $FEST_TESTDATA)
 //   build/bin/bench_ebm_vs_draco [TESTDATA_DIR] --profile MESH QP
 //
 // --profile codes one mesh (a name of the list below, or bunny_sub2) once with each coder
 // and prints nothing else: for valgrind --tool=callgrind, whose inclusive instruction
-// counts of encode_ebm, decode_ebm, draco::Encoder::EncodeMeshToBuffer and
+// counts of encode_ebm, draco::Encoder::EncodeMeshToBuffer and
 // draco::Decoder::DecodeMeshFromBuffer are then exactly one call each (deterministic,
-// unlike wall-clock time on a shared machine).
+// unlike wall-clock time on a shared machine); decode_ebm is called twice, without and
+// with the re-encoding check, inside profile_decode and profile_verified_decode.
 //
 // Draco's connectivity is measured by encoding the same mesh with every position equal:
 // its geometry then costs a few bytes, so the rest is connectivity and header (the
@@ -20,6 +21,7 @@
 // draco_conn_bpv_spec).
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -45,15 +47,30 @@ using namespace fest;
 using namespace fest::edgebreaker;
 using Clock = std::chrono::steady_clock;
 
-double median_ms(int runs, const std::function<void()>& f) {
-  std::vector<double> t;
+// This thread's CPU time in ms: on a shared machine the time slices other processes take
+// are not counted (cache refills after a switch still are).
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
+}
+
+// Median wall-clock and median thread-CPU milliseconds of `runs` calls.
+struct Timing {
+  double wall_ms = 0, cpu_ms = 0;
+};
+Timing median_ms(int runs, const std::function<void()>& f) {
+  std::vector<double> t, c;
   for (int i = 0; i < runs; ++i) {
     const auto start = Clock::now();
+    const double cpu0 = thread_cpu_ms();
     f();
+    c.push_back(thread_cpu_ms() - cpu0);
     t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
   }
   std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  std::sort(c.begin(), c.end());
+  return {t[t.size() / 2], c[c.size() / 2]};
 }
 
 long peak_rss_kb() {
@@ -171,9 +188,9 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
   o.verify = false;  // the decoder's re-encoding check is a test, not part of coding
   EncodeStats stats;
   std::string ebm;
-  const double enc_ms = median_ms(runs, [&] { ebm = encode_ebm(soup, o, &stats); });
-  const double dec_ms = median_ms(runs, [&] { decode_ebm(ebm, true, false); });
-  const double dec_verified_ms = median_ms(runs, [&] { decode_ebm(ebm, true, true); });
+  const Timing enc = median_ms(runs, [&] { ebm = encode_ebm(soup, o, &stats); });
+  const Timing dec = median_ms(runs, [&] { decode_ebm(ebm, true, false); });
+  const Timing dec_verified = median_ms(runs, [&] { decode_ebm(ebm, true, true); });
   const std::size_t conn = stats.section_bytes.count("CONN") ? stats.section_bytes.at("CONN") : 0;
   EncodeOptions om = o;
   om.predictor = Predictor::multi;
@@ -182,31 +199,44 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
   const auto draco_mesh = to_draco(soup, false);
   const auto draco_flat = to_draco(soup, true);
   std::string d7, d10;
-  const double d7_enc = median_ms(runs, [&] { d7 = draco_encode(*draco_mesh, 7, qp); });
-  const double d7_dec = median_ms(runs, [&] { draco_decode(d7); });
-  const double d10_enc = median_ms(runs, [&] { d10 = draco_encode(*draco_mesh, 10, qp); });
-  const double d10_dec = median_ms(runs, [&] { draco_decode(d10); });
+  const Timing d7_enc = median_ms(runs, [&] { d7 = draco_encode(*draco_mesh, 7, qp); });
+  const Timing d7_dec = median_ms(runs, [&] { draco_decode(d7); });
+  const Timing d10_enc = median_ms(runs, [&] { d10 = draco_encode(*draco_mesh, 10, qp); });
+  const Timing d10_dec = median_ms(runs, [&] { draco_decode(d10); });
   const std::size_t d7_conn = draco_encode(*draco_flat, 7, qp).size();
   const long cli = draco_cli_bytes(soup, 7, qp);
 
+  // *_ms: median wall clock; *_cpu_ms: median CPU time of this thread (what to compare on
+  // a loaded machine); M tri/s from the CPU time.
   std::printf(
-      "{\"bench\":\"ebm_vs_draco\",\"mesh\":\"%s\",\"vertices\":%.0f,\"triangles\":%.0f,\"qp\":%d,"
+      "{\"bench\":\"ebm_vs_draco\",\"mesh\":\"%s\",\"vertices\":%.0f,\"triangles\":%.0f,\"qp\":%d,\"runs\":%d,"
       "\"ebm\":{\"bytes\":%zu,\"conn_mode\":\"%s\",\"conn_bpv\":%.4f,\"total_bpv\":%.3f,\"encode_ms\":%.2f,"
-      "\"decode_ms\":%.2f,\"decode_verified_ms\":%.2f,\"encode_mtri_s\":%.3f,\"decode_mtri_s\":%.3f},"
+      "\"decode_ms\":%.2f,\"decode_verified_ms\":%.2f,\"encode_cpu_ms\":%.2f,\"decode_cpu_ms\":%.2f,"
+      "\"decode_verified_cpu_ms\":%.2f,\"encode_mtri_s\":%.3f,\"decode_mtri_s\":%.3f,\"decode_verified_mtri_s\":%.3f},"
       "\"draco_cl7\":{\"bytes\":%zu,\"conn_bpv_flat\":%.4f,\"total_bpv\":%.3f,\"encode_ms\":%.2f,\"decode_ms\":%.2f,"
-      "\"encode_mtri_s\":%.3f,\"decode_mtri_s\":%.3f},"
-      "\"draco_cl10\":{\"bytes\":%zu,\"total_bpv\":%.3f,\"encode_ms\":%.2f,\"decode_ms\":%.2f},"
+      "\"encode_cpu_ms\":%.2f,\"decode_cpu_ms\":%.2f,\"encode_mtri_s\":%.3f,\"decode_mtri_s\":%.3f},"
+      "\"draco_cl10\":{\"bytes\":%zu,\"total_bpv\":%.3f,\"encode_ms\":%.2f,\"decode_ms\":%.2f,\"encode_cpu_ms\":%.2f,"
+      "\"decode_cpu_ms\":%.2f},"
       "\"ebm_multi_bytes\":%zu,\"ebm_multi_over_draco_cl10\":%.4f,\"draco_encoder_cl7_bytes\":%ld,\"draco_conn_bpv_spec\":%.3f,"
-      "\"ebm_over_draco_cl7_bytes\":%.4f,\"conn_vs_draco_cl7\":%.4f,\"peak_rss_kb\":%ld%s}\n",
-      name.c_str(), v, t, qp, ebm.size(), stats.conn_mode.c_str(), 8.0 * static_cast<double>(conn) / v,
-      8.0 * static_cast<double>(ebm.size()) / v, enc_ms, dec_ms, dec_verified_ms, t / enc_ms / 1000.0, t / dec_ms / 1000.0,
-      d7.size(), 8.0 * static_cast<double>(d7_conn) / v, 8.0 * static_cast<double>(d7.size()) / v, d7_enc, d7_dec,
-      t / d7_enc / 1000.0, t / d7_dec / 1000.0, d10.size(), 8.0 * static_cast<double>(d10.size()) / v, d10_enc, d10_dec,
-      multi_bytes, static_cast<double>(multi_bytes) / static_cast<double>(d10.size()), cli, spec_draco_conn(name), static_cast<double>(ebm.size()) / static_cast<double>(d7.size()),
-      static_cast<double>(conn) / static_cast<double>(d7_conn), peak_rss_kb(),
+      "\"ebm_over_draco_cl7_bytes\":%.4f,\"conn_vs_draco_cl7\":%.4f,\"encode_cpu_draco_cl7_over_ebm\":%.3f,"
+      "\"decode_cpu_draco_cl7_over_ebm\":%.3f,\"decode_verified_cpu_draco_cl7_over_ebm\":%.3f,\"peak_rss_kb\":%ld%s}\n",
+      name.c_str(), v, t, qp, runs, ebm.size(), stats.conn_mode.c_str(), 8.0 * static_cast<double>(conn) / v,
+      8.0 * static_cast<double>(ebm.size()) / v, enc.wall_ms, dec.wall_ms, dec_verified.wall_ms, enc.cpu_ms, dec.cpu_ms,
+      dec_verified.cpu_ms, t / enc.cpu_ms / 1000.0, t / dec.cpu_ms / 1000.0, t / dec_verified.cpu_ms / 1000.0, d7.size(),
+      8.0 * static_cast<double>(d7_conn) / v, 8.0 * static_cast<double>(d7.size()) / v, d7_enc.wall_ms, d7_dec.wall_ms,
+      d7_enc.cpu_ms, d7_dec.cpu_ms, t / d7_enc.cpu_ms / 1000.0, t / d7_dec.cpu_ms / 1000.0, d10.size(),
+      8.0 * static_cast<double>(d10.size()) / v, d10_enc.wall_ms, d10_dec.wall_ms, d10_enc.cpu_ms, d10_dec.cpu_ms,
+      multi_bytes, static_cast<double>(multi_bytes) / static_cast<double>(d10.size()), cli, spec_draco_conn(name),
+      static_cast<double>(ebm.size()) / static_cast<double>(d7.size()), static_cast<double>(conn) / static_cast<double>(d7_conn),
+      d7_enc.cpu_ms / enc.cpu_ms, d7_dec.cpu_ms / dec.cpu_ms, d7_dec.cpu_ms / dec_verified.cpu_ms, peak_rss_kb(),
       cli < 0 ? ",\"note\":\"draco_encoder not installed (Debian package draco)\"" : "");
   std::fflush(stdout);
 }
+
+// Each decode in a function of its own, so that callgrind counts them apart (and
+// --toggle-collect can pick one).
+[[gnu::noinline]] MeshSoup profile_decode(const std::string& ebm) { return decode_ebm(ebm, true, false); }
+[[gnu::noinline]] MeshSoup profile_verified_decode(const std::string& ebm) { return decode_ebm(ebm, true, true); }
 
 // One call of each coder (see --profile above).
 void profile(const MeshSoup& soup, int qp) {
@@ -214,7 +244,8 @@ void profile(const MeshSoup& soup, int qp) {
   o.qp = qp;
   o.verify = false;
   const std::string ebm = encode_ebm(soup, o);
-  const MeshSoup back = decode_ebm(ebm, true, false);
+  const MeshSoup back = profile_decode(ebm);
+  const MeshSoup checked = profile_verified_decode(ebm);
   const auto draco_mesh = to_draco(soup, false);
   const std::string d7 = draco_encode(*draco_mesh, 7, qp);
   draco_decode(d7);
@@ -227,11 +258,15 @@ void profile(const MeshSoup& soup, int qp) {
 int main(int argc, char** argv) {
   std::string dir;
   bool quick = false;
+  int runs = 5;
+  std::string only;  // one mesh of the list (or bunny_sub2), for a quicker run
   std::string profile_mesh;
   int profile_qp = 14;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") quick = true;
+    else if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--only" && i + 1 < argc) only = argv[++i];
     else if (a == "--profile" && i + 2 < argc) {
       profile_mesh = argv[++i];
       profile_qp = std::atoi(argv[++i]);
@@ -250,7 +285,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     MeshSoup bunny;
+    if (quick) runs = 1;
     for (const char* name : {"bunny00", "armadillo", "ChineseDragon-10kv", "camel", "fandisk"}) {
+      if (!only.empty() && only != name && !(only == "bunny_sub2" && std::string(name) == "bunny00")) continue;
       const std::string path = dir + "/meshes/" + name + ".off";
       MeshSoup soup;
       try {
@@ -259,10 +296,11 @@ int main(int argc, char** argv) {
         std::printf("{\"bench\":\"ebm_vs_draco\",\"mesh\":\"%s\",\"skipped\":\"%s\"}\n", name, e.what());
         continue;
       }
-      for (int qp : {11, 14}) bench(name, soup, qp, quick ? 1 : 5);
+      if (only != "bunny_sub2")
+        for (int qp : {11, 14}) bench(name, soup, qp, runs);
       if (std::string(name) == "bunny00") bunny = soup;
     }
-    if (!bunny.triangles.empty()) bench("bunny_sub2", subdivide(subdivide(bunny)), 14, quick ? 1 : 5);
+    if (!bunny.triangles.empty() && (only.empty() || only == "bunny_sub2")) bench("bunny_sub2", subdivide(subdivide(bunny)), 14, runs);
   } catch (const Error& e) {
     std::fprintf(stderr, "bench_ebm_vs_draco: error: %s\n", e.what());
     return e.exit_code();
