@@ -112,6 +112,7 @@ int main(int argc, char** argv) {
   NumberTexts trace_numbers;
   add_trace_options(trace_cmd, trace, trace_numbers, false);
   fest::cli::enum_words(trace_cmd->add_option("--method", trace.method, "lem, euler, heun, rk3, rk4 or rk45"), kMethods);
+  fest::cli::add_progress(*trace_cmd, trace.progress);
 
   ProbesArgs probes;
   probes.trace.command_line = command_line;

@@ -16,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -248,6 +249,21 @@ int run_segment(const RunArgs& a) {
   t1.image = to_canonical(in, ro);
   ws.put_root("t1", std::move(t1));
   ws.register_operators(engine);
+  // --progress: the labels emitted so far of the knowledge base's label table (emit/2
+  // wrapped here; a label emitted again or undone by backtracking is not counted twice).
+  Progress bar("segbrain", table.size(), progress_wanted(a.progress) && !a.quiet);
+  std::set<int> labels_done;
+  if (engine.foreigns().count("emit/2")) {
+    ForeignInfo emit = engine.foreigns().at("emit/2");
+    Foreign inner = emit.fn;
+    emit.fn = [&bar, &labels_done, inner](Engine& e, const std::vector<Term>& args) {
+      const bool ok = inner(e, args);
+      if (ok && is_number(args[1])) labels_done.insert(static_cast<int>(number_value(args[1])));
+      bar.set(labels_done.size());
+      return ok;
+    };
+    engine.register_foreign("emit", 2, std::move(emit));
+  }
 
   std::string trace_text;
   if (!a.trace.empty()) engine.set_trace([&](const TraceEvent& e) { trace_text += trace_json(e).dump() + "\n"; });
@@ -269,6 +285,7 @@ int run_segment(const RunArgs& a) {
     throw;
   }
   if (!a.trace.empty()) write_output(a.trace, trace_text);
+  if (ok) bar.finish();
   if (!ok) {
     failure = fmt::format("goal {} failed after {} alternatives", to_string(goal), engine.counters().backtracks);
     if (!engine.last_failing_check().empty()) failure += "; last failing check: " + engine.last_failing_check();

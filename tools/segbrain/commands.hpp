@@ -47,6 +47,7 @@ struct RunArgs {
   double time_limit = 0;
   int threads = 0;  // --threads: 0 = all cores; the output is the same for any count
   bool quiet = false;
+  bool progress = false;  // --progress: a bar of the labels emitted so far
 };
 
 struct KbCheckArgs {
