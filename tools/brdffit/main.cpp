@@ -113,6 +113,7 @@ CLI::App* add_lumitexels(CLI::App& app, LumitexelArgs& ltx) {
                                                 "--atlas path with .ply)");
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
   cli::add_threads(*l, ltx.threads);
+  cli::add_progress(*l, ltx.progress);
   return l;
 }
 
@@ -136,6 +137,7 @@ CLI::App* add_register(CLI::App& app, RegisterArgs& reg) {
   r->add_option("-o,--output", reg.out, "Fitted cam.json (or rig), - = standard output");
   r->add_option("--report", reg.report, "XOR, evaluations, time as JSON");
   cli::add_threads(*r, reg.threads);
+  cli::add_progress(*r, reg.progress);
   return r;
 }
 
