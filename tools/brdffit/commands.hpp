@@ -112,6 +112,7 @@ struct ClusterArgs {
   int clusters = 5;  // 0: auto (split until the gain falls below c.min_gain)
   brdffit::ClusterOptions c;
   int min_samples = 2;
+  bool progress = false;  // --progress: clusters made
 };
 int run_cluster(const ClusterArgs& a);
 

@@ -233,6 +233,7 @@ CLI::App* add_cluster(CLI::App& app, ClusterArgs& cluster) {
   c->add_option("--min-gain", cluster.c.min_gain, "auto: stop when a split gains less (fraction of the 1-cluster error)")->default_val(0.02);
   c->add_option("--min-samples", cluster.min_samples, "Ignore lumitexels with fewer samples")->default_val(2)->check(fest::cli::range(1, 65535));
   add_fit_flags(c, cluster.fit);
+  cli::add_progress(*c, cluster.progress);
   return c;
 }
 
