@@ -65,6 +65,11 @@ pair radiosity radiosity solve "$FEST_FIXTURES/radiosity/cornell.json" --hemicub
 pair lemtrace_csv lemtrace trace "$WORK/h6.vtu" --seed-line 0.2,0.2,0.2:0.8,0.8,0.8:50 -o lines.csv --threads 2
 pair lemtrace_vtp lemtrace trace "$WORK/h6.vtu" --seed-line 0.2,0.2,0.2:0.8,0.8,0.8:50 -o lines.vtp --threads 2
 
+printf 'OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n' >"$WORK/octa.off"
+printf '{"origin":[-2,-2,-2],"axes":[[4,0,0],[0,4,0],[0,0,4]],"dims":[4,4,4]}\n' >"$WORK/zero.json"
+printf 'time lattice\n0 %s\n0.5 %s\n' "$WORK/zero.json" "$WORK/zero.json" >"$WORK/keys.tsv"
+SETUP="mkdir -p frames" pair ffd ffd animate --keys "$WORK/keys.tsv" "$WORK/octa.off" -o frames/f%04d.off
+
 pair volrender volrender mip "$FEST_FIXTURES/volume/gzip_uint16.nrrd" --size 40x30 -o v.png --threads 2
 
 # ---- acquisition: capture run, then hdrmerge session on that session -----------------------
