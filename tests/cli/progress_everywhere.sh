@@ -70,6 +70,11 @@ printf '{"origin":[-2,-2,-2],"axes":[[4,0,0],[0,4,0],[0,0,4]],"dims":[4,4,4]}\n'
 printf 'time lattice\n0 %s\n0.5 %s\n' "$WORK/zero.json" "$WORK/zero.json" >"$WORK/keys.tsv"
 SETUP="mkdir -p frames" pair ffd ffd animate --keys "$WORK/keys.tsv" "$WORK/octa.off" -o frames/f%04d.off
 
+"$FEST_BIN/markerpose" gen --dict 4x4_50 --id 3 --size 0.05 --tilt 20 -o "$WORK/l%d.png" --frames 3 --roll-step 30 ||
+  fail "markerpose gen"
+printf '{"K":[600,0,319.5,0,600,239.5,0,0,1],"width":640,"height":480}' >"$WORK/ideal.json"
+pair markerpose markerpose detect "$WORK/l0.png" "$WORK/l1.png" "$WORK/l2.png" --camera "$WORK/ideal.json" --size 0.05 --threads 2
+
 pair volrender volrender mip "$FEST_FIXTURES/volume/gzip_uint16.nrrd" --size 40x30 -o v.png --threads 2
 
 # ---- acquisition: capture run, then hdrmerge session on that session -----------------------
