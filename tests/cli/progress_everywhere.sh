@@ -77,6 +77,13 @@ pair markerpose markerpose detect "$WORK/l0.png" "$WORK/l1.png" "$WORK/l2.png" -
 
 pair volrender volrender mip "$FEST_FIXTURES/volume/gzip_uint16.nrrd" --size 40x30 -o v.png --threads 2
 
+"$FEST_BIN/facefit" synth -o "$WORK/face" --resolution 16 --faces 12 --train 10 --seed 1 || fail "facefit synth"
+pair facefit_build facefit build -o model.mmb --list "$WORK/face/train.txt" --landmarks "$WORK/face/landmarks.tsv"
+"$FEST_BIN/facefit" project --mesh "$WORK/face/face011.ply" --vertices "$WORK/face/set17.tsv" >"$WORK/lm.tsv" ||
+  fail "facefit project"
+SETUP="printf '%s %s\n' '$WORK/lm.tsv' a.ply '$WORK/lm.tsv' b.tsv >batch.txt" \
+  pair facefit_fit facefit fit -m "$WORK/facefit_build.plain/model.mmb" --batch batch.txt
+
 # ---- acquisition: capture run, then hdrmerge session on that session -----------------------
 
 D="$FEST_FIXTURES/capture"
