@@ -35,7 +35,9 @@ TEST(ProgressCounter, ReportsOnlyOnTheOwningThreadAndEndsAtTheTotal) {
   for (std::size_t i = 0; i < calls.size(); ++i) {
     EXPECT_LE(calls[i].first, 1000u);
     EXPECT_EQ(calls[i].second, 1000u);
-    if (i > 0) EXPECT_GE(calls[i].first, calls[i - 1].first);  // the count never goes back
+    if (i > 0) {
+      EXPECT_GE(calls[i].first, calls[i - 1].first);  // the count never goes back
+    }
   }
   EXPECT_EQ(calls.back(), std::make_pair(std::uint64_t{1000}, std::uint64_t{1000}));
 }
