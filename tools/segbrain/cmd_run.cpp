@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <functional>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -211,6 +213,23 @@ Term prepare_engine(Engine& engine, const RunArgs& a) {
   return goal;
 }
 
+// The find_<object> goals named anywhere in the bodies of the goal's clauses (inside
+// optional/1 and if-then-else too): the steps of --progress.
+std::set<std::string> find_goals(const std::vector<Program>& kb, const Term& goal) {
+  std::set<std::string> out;
+  const std::string top = deref(goal)->name;
+  std::function<void(const Term&)> walk = [&](const Term& t0) {
+    const Term t = deref(t0);
+    if (t->kind != Kind::atom && t->kind != Kind::compound) return;
+    if (t->name.rfind("find_", 0) == 0) out.insert(t->name);
+    for (const Term& arg : t->args) walk(arg);
+  };
+  for (const Program& p : kb)
+    for (const Clause& c : p.clauses)
+      if (deref(c.head)->name == top) walk(c.body);
+  return out;
+}
+
 }  // namespace
 
 int run_segment(const RunArgs& a) {
@@ -249,24 +268,22 @@ int run_segment(const RunArgs& a) {
   t1.image = to_canonical(in, ro);
   ws.put_root("t1", std::move(t1));
   ws.register_operators(engine);
-  // --progress: the labels emitted so far of the knowledge base's label table (emit/2
-  // wrapped here; a label emitted again or undone by backtracking is not counted twice).
-  Progress bar("segbrain", table.size(), progress_wanted(a.progress) && !a.quiet);
-  std::set<int> labels_done;
-  if (engine.foreigns().count("emit/2")) {
-    ForeignInfo emit = engine.foreigns().at("emit/2");
-    Foreign inner = emit.fn;
-    emit.fn = [&bar, &labels_done, inner](Engine& e, const std::vector<Term>& args) {
-      const bool ok = inner(e, args);
-      if (ok && is_number(args[1])) labels_done.insert(static_cast<int>(number_value(args[1])));
-      bar.set(labels_done.size());
-      return ok;
-    };
-    engine.register_foreign("emit", 2, std::move(emit));
-  }
+  // --progress: the steps of the proof are the find_<object> goals its clauses name, each
+  // counted once when it exits or fails (an optional object the knowledge base skips).
+  const bool progress = progress_wanted(a.progress) && !a.quiet;
+  const std::set<std::string> finds = progress ? find_goals(load_kb(a.kb), goal) : std::set<std::string>{};
+  Progress bar("segbrain", finds.size(), progress);
+  std::set<std::string> finds_done;
 
   std::string trace_text;
-  if (!a.trace.empty()) engine.set_trace([&](const TraceEvent& e) { trace_text += trace_json(e).dump() + "\n"; });
+  if (!a.trace.empty() || progress)
+    engine.set_trace([&](const TraceEvent& e) {
+      if (!a.trace.empty()) trace_text += trace_json(e).dump() + "\n";
+      if (progress && std::strcmp(e.port, "call") != 0 && std::strcmp(e.port, "redo") != 0) {
+        const std::string name = e.goal.substr(0, e.goal.find('('));
+        if (finds.count(name) && finds_done.insert(name).second) bar.set(finds_done.size());
+      }
+    });
   engine.set_log([&](const std::string& s) {
     if (!a.quiet) std::fputs(s.c_str(), stderr);
   });
