@@ -325,6 +325,11 @@ ClusterResult cluster_lumitexels(const LumitexelSet& set, const std::vector<FitS
   const double initial = total;
 
   const int target = o.clusters == 0 ? o.max_auto_clusters : o.clusters;
+  // The final bounded refits count as one more step.
+  const auto report = [&] {
+    if (o.progress) o.progress(cs.size(), static_cast<std::uint64_t>(target) + 1);
+  };
+  report();
   while (static_cast<int>(cs.size()) < target) {
     std::size_t worst = 0;
     for (std::size_t j = 1; j < cs.size(); ++j)
@@ -365,6 +370,7 @@ ClusterResult cluster_lumitexels(const LumitexelSet& set, const std::vector<FitS
     cs = std::move(next);
     res.assignment = std::move(next_a);
     total = next_total;
+    report();
     if (total == 0) break;
   }
   // Final BRDFs of the clusters with the bound: what is rendered from them must be

@@ -15,6 +15,7 @@
 #include "brdffit/fit_sample.hpp"
 #include "brdffit/lafortune_fit.hpp"
 #include "brdffit/lumitexel.hpp"
+#include "core/progress_callback.hpp"
 
 namespace fest::brdffit {
 
@@ -33,6 +34,7 @@ struct ClusterOptions {
   std::size_t split_subsample = 25000;  // samples of the refits inside a split's loop (the
                                         // children are refitted on fit.subsample after it)
   FitOptions fit;              // model, starts, subsample, seed, threads of every fit
+  ProgressFn progress;         // clusters made of the target (auto: of max_auto_clusters)
 };
 
 struct MaterialCluster {

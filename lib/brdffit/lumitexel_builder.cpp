@@ -127,9 +127,15 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
     shadow_res = std::clamp(shadow_res, 512, 8192);
   }
   auto t0 = SteadyClock::now();
+  const std::uint64_t steps = 1 + 2 * static_cast<std::uint64_t>(views.size());
+  std::uint64_t step = 0;
+  const auto advance = [&] {
+    if (o.progress) o.progress(++step, steps);
+  };
 
   // 1. Home images.
   const HomeAssignment home = assign_home_images(mesh, views, o.threads);
+  advance();
   for (std::int32_t h : home.image) rep.triangles_with_home += h >= 0;
   rep.seconds.push_back(seconds_since(t0));
   t0 = SteadyClock::now();
@@ -137,6 +143,7 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
   // 2. One lumitexel per home pixel, grouped by triangle.
   std::vector<Lumitexel> points;
   for (std::size_t k = 0; k < views.size(); ++k) {
+    advance();
     bool is_home = false;
     for (std::int32_t h : home.image) is_home = is_home || h == static_cast<std::int32_t>(k);
     if (!is_home) continue;
@@ -239,6 +246,7 @@ LumitexelSet build_lumitexels(const TriangleMesh& mesh, const std::vector<ImageV
       rep.nonfinite_pixels += band_rep[b].nonfinite_pixels;
     }
     for (const PendingSample& ps : per_image[k]) ++count[ps.lumitexel];
+    advance();
   }
 
   // 4. Keep lumitexels with enough samples; samples grouped per lumitexel, images in order.

@@ -26,6 +26,7 @@
 #include "reflectance/camera.hpp"
 #include "reflectance/render.hpp"
 #include "reflectance/triangle_mesh.hpp"
+#include "core/progress_callback.hpp"
 
 namespace fest::brdffit {
 
@@ -48,6 +49,7 @@ struct LumitexelOptions {
   int min_samples = 2;
   int shadow_resolution = 0;  // 0: the largest image side, within 512..8192
   int threads = 1;
+  ProgressFn progress;  // steps: the home images, then every image twice (points, samples)
 };
 
 struct LumitexelReport {

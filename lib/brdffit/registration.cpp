@@ -131,6 +131,18 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
     return s;
   };
 
+  // Progress in simplex runs: the coarse orientation search, then every candidate through
+  // every level and the restarts.
+  const std::uint64_t per_candidate = pyr.masks.size() + static_cast<std::uint64_t>(std::max(0, o.restarts));
+  const std::uint64_t runs =
+      o.automatic ? static_cast<std::uint64_t>(std::max(0, o.orient_samples)) +
+                        per_candidate * static_cast<std::uint64_t>(std::max(1, std::min(o.keep, o.orient_samples)))
+                  : per_candidate;
+  std::uint64_t run = 0;
+  const auto ran = [&](std::uint64_t n) {
+    run += n;
+    if (o.progress) o.progress(std::min(run, runs), runs);
+  };
   std::vector<Candidate> candidates;
   if (!o.automatic) {
     candidates.push_back({pose_parameters(initial), 0});
@@ -150,6 +162,7 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
       c.t = d0 * ray - R * centre;
       const SimplexResult r = nelder_mead(cost_at(0), pose_parameters(c), steps(d0, 2.0), o.coarse_iters);
       candidates.push_back({r.x, r.value});
+      ran(1);
     }
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
@@ -157,6 +170,7 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
   }
   // Every candidate through every level, the simplex restarted at each with smaller steps.
   for (Candidate& cand : candidates) {
+    const std::uint64_t first_run = run;
     for (std::size_t level = 0; level < pyr.masks.size(); ++level) {
       const double shrink = pyr.scales[level] < 1 ? 1.0 / (1 << (pyr.masks.size() - 1 - level)) * 2 : 0.25;
       const double d = distance_of(camera_from_parameters(initial, cand.x), mesh);
@@ -172,7 +186,9 @@ RegistrationResult register_silhouette(const TriangleMesh& mesh, const cv::Mat& 
         }
       cand.x = r.x;
       cand.cost = r.value;
+      if (level + 1 < pyr.masks.size()) ran(1);
     }
+    ran(first_run + per_candidate - run);
   }
   const auto best = std::min_element(candidates.begin(), candidates.end(),
                                      [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
@@ -275,6 +291,7 @@ TurntableFit register_turntable(const TriangleMesh& mesh, const std::vector<cv::
     if (level + 1 == levels) r = nelder_mead(cost_at(level), r.x, s * 0.2, o.iters_per_level);
     x = r.x;
     value = r.value;
+    if (o.progress) o.progress(level + 1, levels);  // the last level's two simplex runs count as one step
   }
   fit.cameras = cameras_of(x, fit.axis_direction, fit.axis_point);
   fit.xor_cost = value;

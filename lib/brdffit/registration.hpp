@@ -14,6 +14,7 @@
 
 #include "reflectance/camera.hpp"
 #include "reflectance/triangle_mesh.hpp"
+#include "core/progress_callback.hpp"
 
 namespace fest::brdffit {
 
@@ -49,6 +50,7 @@ struct RegistrationOptions {
   int restarts = 4;                // extra simplex restarts at full resolution while they gain
   std::uint64_t seed = 1;
   int threads = 1;
+  ProgressFn progress;  // simplex runs done of those planned (restarts that stop early count as run)
 };
 
 struct RegistrationResult {

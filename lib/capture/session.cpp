@@ -31,6 +31,10 @@ SessionOutcome run_session(Turntable& table, LightBank& lights, Camera& camera, 
         if (sink.done(shots[j])) ++outcome.shots_skipped;
         else todo.push_back(&shots[j]);
       }
+      const auto report = [&] {
+        if (options.progress) options.progress(outcome.shots_taken + outcome.shots_skipped, shots.size());
+      };
+      report();
       if (!todo.empty()) {
         const PlannedShot& first = shots[i];
         step = fmt::format("move to angle {} ({} deg)", first.angle_index, first.angle_cmd_deg);
@@ -64,6 +68,7 @@ SessionOutcome run_session(Turntable& table, LightBank& lights, Camera& camera, 
           step = fmt::format("store {}", s->file);
           sink.store(*s, pose, image);
           ++outcome.shots_taken;
+          report();
         }
         step = fmt::format("switch all lights off after angle {}", first.angle_index);
         lights.all_off();

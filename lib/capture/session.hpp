@@ -14,6 +14,7 @@
 #include "capture/plan.hpp"
 #include "capture/turntable.hpp"
 #include "core/error.hpp"
+#include "core/progress_callback.hpp"
 
 namespace fest::capture {
 
@@ -40,6 +41,7 @@ struct SessionOptions {
   int flush_frames = 0;
   std::function<unsigned(const std::string& light)> warmup_ms;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // set by a signal handler: stop between shots
+  ProgressFn progress;  // shots taken or kept from before (--resume) of all the plan's shots
 };
 
 struct SessionOutcome {

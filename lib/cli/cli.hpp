@@ -33,11 +33,18 @@ struct Common {
   bool progress = false;
 };
 
+// --progress on a command with a stage longer than about two seconds: a bar on standard
+// error, drawn anyway when standard error is a terminal (core/progress.hpp progress_wanted).
+inline void add_progress(CLI::App& app, bool& progress) {
+  app.add_flag("--progress", progress,
+               "Progress bar on standard error (default: only when it is a terminal)");
+}
+
 inline void add_common(CLI::App& app, Common& common, bool with_progress = false) {
   app.set_version_flag("--version", std::string(app.get_name()) + " (fest) " FEST_VERSION);
   app.add_flag("-q,--quiet", common.quiet, "Print nothing but errors");
   app.add_flag("-v,--verbose", common.verbose, "Describe what is being done on standard error");
-  if (with_progress) app.add_flag("--progress", common.progress, "Show a progress bar even when standard error is not a terminal");
+  if (with_progress) add_progress(app, common.progress);
   app.get_formatter()->column_width(28);
 }
 

@@ -51,6 +51,11 @@ void Progress::set(std::uint64_t done) {
   draw(false);
 }
 
+void Progress::set(std::uint64_t done, std::uint64_t total) {
+  total_ = total;
+  set(done);
+}
+
 void Progress::finish() {
   if (finished_) return;
   if (total_ > 0) done_ = total_;

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/progress_callback.hpp"
+
 namespace fest {
 
 // Whether a tool should draw progress: asked for explicitly, or stderr is a terminal.
@@ -22,6 +24,12 @@ class Progress {
 
   void advance(std::uint64_t steps = 1);
   void set(std::uint64_t done);
+  void set(std::uint64_t done, std::uint64_t total);  // the total as the stage reports it
+  // What a stage in lib/ reports to (core/progress_callback.hpp): set(done, total). The
+  // Progress must outlive the stage.
+  ProgressFn callback() {
+    return [this](std::uint64_t done, std::uint64_t total) { set(done, total); };
+  }
   void finish();  // draws 100 % and ends the line; idempotent
 
   // The line that would be drawn for `done` of `total`; exposed for tests.

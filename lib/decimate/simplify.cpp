@@ -56,6 +56,11 @@ class Engine {
     version_.assign(ne, 0);
     for (std::size_t e = 0; e < ne; ++e) push(EH(static_cast<int>(e)));
     std::size_t faces = mesh_.n_faces();
+    const std::size_t first_faces = faces;
+    const std::size_t to_remove = first_faces - std::min(first_faces, opt_.target_faces);
+    const auto report = [&] {
+      if (opt_.progress) opt_.progress(std::min(first_faces - faces, to_remove), to_remove);
+    };
     while (!heap_.empty()) {
       if (opt_.target_faces > 0 && faces <= opt_.target_faces) break;
       const Candidate c = heap_.top();
@@ -70,7 +75,9 @@ class Engine {
       faces -= removed;
       ++st_.collapses;
       st_.max_error_estimate = std::max(st_.max_error_estimate, plan.estimate);
+      if (st_.collapses % 4096 == 0) report();
     }
+    report();
     st_.reached_target = opt_.target_faces > 0 && faces <= opt_.target_faces;
   }
 

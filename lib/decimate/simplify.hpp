@@ -11,6 +11,7 @@
 #include <cstddef>
 
 #include "core/mesh.hpp"
+#include "core/progress_callback.hpp"
 
 namespace fest::decimate {
 
@@ -31,6 +32,9 @@ struct SimplifyOptions {
   double min_normal_cos = 0.0;    // a collapse may turn no face by more than acos(this)
   bool optimal_placement = true;  // false: surviving vertex stays where it is (half-edge collapse)
   Weighting weighting = Weighting::sqrt_area;  // area: GH97 section 7; uniform: each plane once
+  // Faces removed of those to remove (input - target_faces; without a face target, of
+  // the input's: an error bound ends the run before).
+  ProgressFn progress;
 };
 
 struct SimplifyStats {

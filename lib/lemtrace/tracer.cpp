@@ -520,8 +520,12 @@ std::vector<Polyline> trace_all(const FieldGrid& grid, const std::vector<Vec3>& 
                                 const TraceOptions& options, int threads) {
   std::vector<Polyline> lines(seeds.size());
   grid.locator();
-  parallel_for(seeds.size(), threads,
-               [&](std::size_t i) { lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options); });
+  ProgressCounter done(options.progress, seeds.size());
+  parallel_for(seeds.size(), threads, [&](std::size_t i) {
+    lines[i] = trace(grid, seeds[i], i < t0.size() ? t0[i] : 0.0, options);
+    done.step();
+  });
+  done.finish();
   return lines;
 }
 

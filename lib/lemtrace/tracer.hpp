@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/progress_callback.hpp"
 #include "lemtrace/exit_search.hpp"
 #include "lemtrace/field_grid.hpp"
 
@@ -48,6 +49,8 @@ struct TraceOptions {
   // §9.2.1 loop ("a time consuming cell search is needed for every evaluation"), for
   // the Table 9.4 comparison.
   bool rk_cell_search = false;
+  // Seeds traced so far of all of them, on the calling thread (trace_all; empty: none).
+  ProgressFn progress;
 };
 
 struct Polyline {

@@ -996,6 +996,7 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
   if (shading && shading->samples != grid.size()) throw std::invalid_argument("shading volume does not match the grid");
   const Caster caster(grid, pyramid, tf, o, surface, ctx, shading);
   const int sub = o.spp == 16 ? 4 : o.spp == 9 ? 3 : o.spp == 4 ? 2 : 1;
+  ProgressCounter tiles_done(o.progress, tile_stats.size());
   parallel_for(tile_stats.size(), o.threads, [&](std::size_t tile) {
     const int tx = static_cast<int>(tile % tiles_x), ty = static_cast<int>(tile / tiles_x);
     RenderStats& st = tile_stats[tile];
@@ -1023,7 +1024,9 @@ RenderedImage render(const ScalarGrid& grid, const MinMaxPyramid* pyramid, const
         }
         img.depth[static_cast<std::size_t>(j) * W + i] = static_cast<float>(depth);
       }
+    tiles_done.step();
   });
+  tiles_done.finish();
   for (const auto& s : tile_stats) {
     img.stats.rays += s.rays, img.stats.samples += s.samples, img.stats.skipped += s.skipped, img.stats.terminated += s.terminated;
   }

@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/progress_callback.hpp"
 #include "raycast/camera.hpp"
 #include "raycast/transfer_function.hpp"
 #include "volume_pyramid/minmax_pyramid.hpp"
@@ -72,6 +73,7 @@ struct RenderOptions {
   // background (transparent with keep_alpha) at infinite depth (the part of a showcase
   // screen another viewer's mirror covers); empty = every pixel.
   std::vector<std::uint8_t> pixel_mask;
+  ProgressFn progress;  // render(): image tiles cast of all, on the calling thread
 };
 
 // The value and the central-difference gradient (index space) of every sample, interleaved

@@ -9,6 +9,7 @@
 #include "brdffit/fit_sample.hpp"
 #include "commands.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "fitted_inputs.hpp"
 #include "formats/table/table_io.hpp"
@@ -27,7 +28,10 @@ int run_cluster(const ClusterArgs& a) {
   const double seconds_read = clock.seconds();
   const std::vector<brdffit::FitSample> local = brdffit::local_samples(set, o.fit.threads);
   check_cluster_options(o);
+  Progress bar("brdffit cluster", 0, progress_wanted(a.progress));
+  o.progress = bar.callback();
   const brdffit::ClusterResult r = brdffit::cluster_lumitexels(set, local, o);
+  bar.finish();
   nlohmann::json out = brdffit::clusters_to_json(r);
   out["lumitexels"] = set.lumitexels.size();
   out["lumitexels_clustered"] = kept;

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/resources.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
@@ -57,7 +58,10 @@ int run_lumitexels(const LumitexelArgs& a) {
     return px;
   };
   brdffit::LumitexelReport rep;
+  Progress bar("brdffit lumitexels", 0, progress_wanted(a.progress));
+  o.progress = bar.callback();
   brdffit::LumitexelSet set = brdffit::build_lumitexels(lm.mesh, views, load, o, &rep);
+  bar.finish();
   set.mesh_sha256 = lm.sha256;
   for (const RigImage& ri : rig.images) set.images.push_back(ri.file);
   nlohmann::json header{{"generator", "brdffit lumitexels"}, {"rig_frame", rig.frame}};

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "formats/table/table_io.hpp"
@@ -19,7 +20,9 @@ namespace fest::brdffit_tool {
 
 int run_register(const RegisterArgs& a) {
   const Stopwatch clock;
-  const brdffit::RegistrationOptions o = with_threads(a.o, a.threads);
+  brdffit::RegistrationOptions o = with_threads(a.o, a.threads);
+  Progress bar("brdffit register", 0, progress_wanted(a.progress));
+  o.progress = bar.callback();
   const LoadedMesh lm = load_mesh(a.mesh);
   nlohmann::json report{{"stage", "register"}};
   if (!a.rig.empty()) {
@@ -46,6 +49,7 @@ int run_register(const RegisterArgs& a) {
     Eigen::Vector3d axis_dir, axis_point;
     brdffit::estimate_turntable_axis(cams, angles, axis_dir, axis_point);
     const brdffit::TurntableFit fit = brdffit::register_turntable(lm.mesh, masks, angles, cams, axis_dir, axis_point, o);
+    bar.finish();
     if (!(fit.xor_cost <= a.max_xor))
       throw runtime_failure("registration did not converge: XOR {:.4f} > --max-xor {} ({})", fit.xor_cost, a.max_xor,
                             a.rig);
@@ -82,6 +86,7 @@ int run_register(const RegisterArgs& a) {
     throw bad_input("the mask is {}x{} but the camera is {}x{} ({})", mask.cols, mask.rows, init.width, init.height,
                     a.mask);
   const brdffit::RegistrationResult r = brdffit::register_silhouette(lm.mesh, mask, init, o);
+  bar.finish();
   if (!(r.xor_cost <= a.max_xor))
     throw runtime_failure("registration did not converge: XOR {:.4f} > --max-xor {} ({})", r.xor_cost, a.max_xor,
                           a.mask);

@@ -43,6 +43,7 @@ struct LumitexelArgs {
   brdffit::LumitexelOptions o;
   double depth_eps_rel = 0.002;
   int threads = 0;
+  bool progress = false;  // --progress: images resampled
 };
 int run_lumitexels(const LumitexelArgs& a);
 
@@ -51,6 +52,7 @@ struct RegisterArgs {
   brdffit::RegistrationOptions o;
   double max_xor = 0.05;
   int threads = 0;
+  bool progress = false;  // --progress: simplex runs
 };
 int run_register(const RegisterArgs& a);
 
@@ -110,6 +112,7 @@ struct ClusterArgs {
   int clusters = 5;  // 0: auto (split until the gain falls below c.min_gain)
   brdffit::ClusterOptions c;
   int min_samples = 2;
+  bool progress = false;  // --progress: clusters made
 };
 int run_cluster(const ClusterArgs& a);
 

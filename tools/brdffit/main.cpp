@@ -113,6 +113,7 @@ CLI::App* add_lumitexels(CLI::App& app, LumitexelArgs& ltx) {
                                                 "--atlas path with .ply)");
   l->add_option("--report", ltx.report, "Counts and timings as JSON");
   cli::add_threads(*l, ltx.threads);
+  cli::add_progress(*l, ltx.progress);
   return l;
 }
 
@@ -136,6 +137,7 @@ CLI::App* add_register(CLI::App& app, RegisterArgs& reg) {
   r->add_option("-o,--output", reg.out, "Fitted cam.json (or rig), - = standard output");
   r->add_option("--report", reg.report, "XOR, evaluations, time as JSON");
   cli::add_threads(*r, reg.threads);
+  cli::add_progress(*r, reg.progress);
   return r;
 }
 
@@ -231,6 +233,7 @@ CLI::App* add_cluster(CLI::App& app, ClusterArgs& cluster) {
   c->add_option("--min-gain", cluster.c.min_gain, "auto: stop when a split gains less (fraction of the 1-cluster error)")->default_val(0.02);
   c->add_option("--min-samples", cluster.min_samples, "Ignore lumitexels with fewer samples")->default_val(2)->check(fest::cli::range(1, 65535));
   add_fit_flags(c, cluster.fit);
+  cli::add_progress(*c, cluster.progress);
   return c;
 }
 

@@ -9,6 +9,7 @@
 #include "capture/session.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "core/tool_main.hpp"
 #include "formats/table/table_io.hpp"
 #include "session_store.hpp"
@@ -105,6 +106,8 @@ int run_command(const RunOptions& o) {
     outcome.message = e.what();
     outcome.failed_step = "open devices";
   }
+  Progress bar("capture run", shots.size(), progress_wanted(o.progress));
+  options.progress = bar.callback();
   if (devices) outcome = capture::run_session(*devices->turntable, *devices->lights, *devices->camera, shots, options, store);
 
   capture::ManifestInfo info = store.info;
@@ -117,6 +120,7 @@ int run_command(const RunOptions& o) {
     throw Error(outcome.status, fmt::format("{} (step: {}; {} shots stored, manifest: {}/manifest.json)", outcome.message,
                                             outcome.failed_step, store.kept(), o.session));
   }
+  bar.finish();
   const std::string manifest = store.write_manifest(info, shots);
   std::fputs(manifest.c_str(), stdout);
   return 0;

@@ -27,6 +27,7 @@ int plan_command(const PlanOptions& o);
 struct RunOptions {
   std::string station, plan, session;
   bool resume = false, dry_run = false, allow_jpeg = false;
+  bool progress = false;  // --progress: shots taken of the plan's
 };
 int run_command(const RunOptions& o);
 

@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
   r->add_flag("--resume", run.resume, "Continue an interrupted session, keeping shots whose files hash as recorded");
   r->add_flag("--dry-run", run.dry_run, "Print the plan, its shots and a time estimate; touch no device");
   r->add_flag("--allow-jpeg", run.allow_jpeg, "Accept a station asking for JPEG (lossy: refused by default)");
+  fest::cli::add_progress(*r, run.progress);
 
   SelftestOptions self;
   CLI::App* s = app.add_subcommand("selftest", "Check every device of the station; a JSON report");

@@ -5,6 +5,7 @@
 #include "compare/mesh_compare.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -67,11 +68,14 @@ int run(const Options& o) {
     throw bad_input("{} non-manifold or degenerate faces cannot be simplified; --drop-nonmanifold drops them ({})", skipped,
                     in.name);
   if (skipped > 0 && !o.quiet) warn("decimate", fmt::format("dropped {} non-manifold or degenerate faces", skipped));
-  const decimate::SimplifyOptions s = simplify_options(o, mesh);
+  decimate::SimplifyOptions s = simplify_options(o, mesh);
+  Progress bar("decimate", 0, progress_wanted(o.progress) && !o.quiet);
+  s.progress = bar.callback();
 
   decimate::SimplifyStats st;
   const Stopwatch watch;
   Mesh out = decimate::simplify(mesh, s, &st);
+  bar.finish();
   const double ms = watch.ms();
   if (st.triangulated_polygons > 0 && !o.quiet)
     warn("decimate", fmt::format("{} polygons were split into triangles", st.triangulated_polygons));

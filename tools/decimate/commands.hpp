@@ -31,6 +31,7 @@ struct Options {
   std::size_t samples = 100000;   // extra surface samples of the measurement
   int threads = 0;
   bool quiet = false;
+  bool progress = false;  // --progress: faces removed
 };
 
 int run(const Options& options);

@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   app.add_option("--report", o.report, "Write counts, time, Hausdorff and RMS error (input vs output) as JSON");
   app.add_option("--samples", o.samples, "Extra area-weighted samples of the error measurement")->default_val(100000)->check(fest::cli::range(0, 100000000));
   fest::cli::add_threads(app, o.threads);
+  fest::cli::add_progress(app, o.progress);
   app.footer("Exit status: 0 success, 2 usage error, 3 bad input, 4 I/O error. See decimate(1).");
   return fest::cli::run(app, argc, argv, [&] {
     ::omerr().disable();

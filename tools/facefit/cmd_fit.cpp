@@ -15,6 +15,7 @@
 #include "core/stopwatch.hpp"
 #include "core/file_io.hpp"
 #include "core/input_name.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "facefit/fit.hpp"
 #include "facefit/render.hpp"
@@ -184,6 +185,7 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
   facefit::FitCache cache;
   std::vector<float> xyz;
   std::optional<formats::IndexedPlyEncoder> ply;
+  Progress bar("facefit fit", jobs.size(), progress_wanted(a.progress));
   for (const auto& [in, out] : jobs) {
     const auto lm = load_landmarks(a, in, model);
     const bool coeffs_only = out.size() > 4 && out.compare(out.size() - 4, 4, ".tsv") == 0;
@@ -202,7 +204,9 @@ int run_batch(const FitArgs& a, const facefit::Model& model, facefit::FitOptions
     } else {
       write_shape(r.shape, model.dims, model.triangles, out, a.to);
     }
+    bar.advance();
   }
+  bar.finish();
   return 0;
 }
 

@@ -51,6 +51,7 @@ struct FitArgs {
   double scale = 1, yaw = 0, noise_sigma = 0, nuisance_sigma = 100, pts_origin = 1;
   bool noise_sigma_given = false, eta_given = false, skip_unmapped = false, fix_basis = false;
   int components = 0, iterations = 5, threads = 0;
+  bool progress = false;  // --progress (--batch): fits done
 };
 int run_fit(const FitArgs& a);
 
@@ -60,6 +61,7 @@ struct BuildArgs {
   int components = 0;
   double variance = 0;
   bool f64 = false;
+  bool progress = false;  // --progress: meshes read, then the PCA
 };
 int run_build(const BuildArgs& a);
 

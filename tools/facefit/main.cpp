@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
   f->add_option("--pts-origin", fit.pts_origin, "Subtracted from .pts coordinates (iBUG: 1)")->default_val(1);
   f->add_flag("--fix-basis", fit.fix_basis, "Renormalise basis columns that are not unit length");
   fest::cli::add_threads(*f, fit.threads);
+  fest::cli::add_progress(*f, fit.progress);
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build a PCA model from meshes in correspondence");
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   b->add_option("--list", build.list, "File listing example meshes, one per line");
   b->add_flag("--f64", build.f64, "Store the basis in double precision (default float32)");
   b->add_option("examples", build.examples, "Example meshes")->allow_extra_args(false);
+  fest::cli::add_progress(*b, build.progress);
 
   ConvertArgs conv;
   auto* c = app.add_subcommand("convert", "Import a model (eos .bin, NumPy .npz, mesh list, .mmb) to .mmb");

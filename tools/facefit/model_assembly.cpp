@@ -12,6 +12,7 @@
 #include "face_files.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "facefit/pca_build.hpp"
 #include "facefit/rng.hpp"
 #include "formats/facemodel/import.hpp"
@@ -28,12 +29,16 @@ facefit::Model build_from_meshes(const std::vector<std::string>& paths, const Bu
   Eigen::VectorXd first = read_shape(paths[0], &triangles);
   Eigen::MatrixXd X(first.size(), static_cast<Eigen::Index>(paths.size()));
   X.col(0) = first;
+  // --progress: the meshes read, then the PCA as one more step.
+  Progress bar("facefit build", paths.size() + 1, progress_wanted(a.progress));
+  bar.advance();
   for (std::size_t i = 1; i < paths.size(); ++i) {
     const Eigen::VectorXd v = read_shape(paths[i]);
     if (v.size() != first.size())
       throw bad_input("'{}' has {} vertices, '{}' has {}: meshes must be in correspondence", paths[i], v.size() / 3, paths[0],
                       first.size() / 3);
     X.col(static_cast<Eigen::Index>(i)) = v;
+    bar.advance();
   }
   facefit::BuildOptions o;
   if (a.components < 0) throw usage_error("--components must be positive");
@@ -42,6 +47,7 @@ facefit::Model build_from_meshes(const std::vector<std::string>& paths, const Bu
   o.variance = a.variance;
   o.float_basis = !a.f64;
   facefit::Model m = facefit::build_model(X, 3, o);
+  bar.finish();
   m.triangles = triangles;
   m.units = a.units;
   m.source = fmt::format("facefit build from {} meshes", paths.size());

@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "ffd/joints.hpp"
@@ -69,6 +70,7 @@ int run_animate(const AnimateOptions& o) {
   const long frames = static_cast<long>(std::floor(duration * o.fps + 1e-9)) + 1;
   std::string manifest = "frame\ttime\tfile\n";
   std::size_t seg = 0;
+  Progress bar("ffd animate", static_cast<std::uint64_t>(frames), progress_wanted(o.progress));
   for (long f = 0; f < frames; ++f) {
     const double t = t0 + static_cast<double>(f) / o.fps;
     while (seg + 1 < keys.size() && t > keys[seg + 1].first) ++seg;
@@ -89,7 +91,9 @@ int run_animate(const AnimateOptions& o) {
     const formats::OutputFormat of = output_format("", name, format);
     formats::store_output(name, formats::write_mesh(mesh, of.format), of.gzip);
     manifest += fmt::format("{}\t{}\t{}\n", f, t, name);
+    bar.advance();
   }
+  bar.finish();
   write_output(o.manifest, manifest);
   return 0;
 }

@@ -69,6 +69,7 @@ struct AnimateOptions {
   std::string manifest = "-";
   ffd::Outside outside = ffd::Outside::none;
   int threads = 0;
+  bool progress = false;  // --progress: frames written
 };
 
 int run_init(const InitOptions& o);

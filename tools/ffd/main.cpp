@@ -111,6 +111,7 @@ int main(int argc, char** argv) {
   sn->add_option("--manifest", an.manifest, "Manifest TSV (frame, time, file); - : standard output");
   add_outside(sn, an.outside, "none or clamp");
   fest::cli::add_threads(*sn, an.threads);
+  fest::cli::add_progress(*sn, an.progress);
 
   app.footer("Exit status: 0 success, 1 failure (--strict joints, size limit), 2 usage error, 3 bad input, 4 I/O error.\n"
              "See ffd(1).");

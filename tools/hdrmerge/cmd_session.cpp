@@ -12,6 +12,7 @@
 #include "core/file_io.hpp"
 #include "core/input_name.hpp"
 #include "core/parallel_for.hpp"
+#include "core/progress.hpp"
 #include "core/sha256.hpp"
 #include "core/threads.hpp"
 #include "formats/image/exr_extras.hpp"
@@ -126,6 +127,8 @@ int run_session(const SessionOptions& a) {
   std::vector<int> mask_angles;
   for (const auto& [angle, shot] : silhouettes) mask_angles.push_back(angle);
   const std::size_t jobs = sets.size() + mask_angles.size();
+  Progress bar("hdrmerge session", jobs, progress_wanted(a.progress));
+  ProgressCounter done(bar.callback(), jobs);
   parallel_for(jobs, resolve_threads(a.threads), [&](std::size_t j) {
     if (j < sets.size()) {
       const ExposureSet& s = sets[j];
@@ -156,7 +159,9 @@ int run_session(const SessionOptions& a) {
       }
       write_output(path, formats::write_image(Image{mask, ColorSpace::srgb}, formats::Format::png));
     }
+    done.step();
   });
+  bar.finish();
 
   for (capture::RigImage& r : rig)
     if (silhouettes.count(r.angle_index))

@@ -68,6 +68,7 @@ struct SessionOptions {
   double lambda = 10;
   bool full_float = false;
   int threads = 0;
+  bool progress = false;  // --progress: sets and masks written
 };
 
 int run_merge(const MergeOptions& o);

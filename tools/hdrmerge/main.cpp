@@ -110,6 +110,7 @@ int main(int argc, char** argv) {
   session_cmd->add_option("--lambda", session.lambda, "Smoothness weight of the response")->check(fest::cli::non_negative);
   session_cmd->add_flag("--float", session.full_float, "EXR with 32-bit float channels instead of half");
   cli::add_threads(*session_cmd, session.threads);
+  cli::add_progress(*session_cmd, session.progress);
 
   SheetOptions sheet;
   auto* sheet_cmd = app.add_subcommand("sheet", "A contact sheet of radiance images: one exposure for all, sRGB, PNG");

@@ -13,6 +13,7 @@
 
 #include "case_loader.hpp"
 #include "comm.hpp"
+#include "core/progress.hpp"
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -200,6 +201,7 @@ struct RunContext {
   lbm::Solver& solver;
   const lbm::UnitTable& units;
   Output& out;
+  Progress* bar = nullptr;  // --progress: steps done of the case's
 };
 
 // The forces and probes CSV as they grow, and each force flag's drag coefficient
@@ -290,6 +292,7 @@ void time_steps(RunContext& x, RunRecords& rec, RunTotals& t) {
   for (long step = 1; step <= c.steps; ++step) {
     x.solver.step();
     t.steps_done = step;
+    if (x.bar) x.bar->set(static_cast<std::uint64_t>(step));
     if (!c.forces.empty()) record_forces(x, rec, step);
     const bool guard = step % c.check_every == 0;
     const bool write = c.output.every > 0 && step % c.output.every == 0;
@@ -368,7 +371,8 @@ int run_command(const RunOptions& o) {
   InitFields init;
   auto solver = lbm::make_solver(solver_setup(o, comm, L, init));
   const lbm::UnitTable units = lbm::unit_table(c, o.precision == lbm::Precision::f32);
-  RunContext x{comm, c, L, *solver, units, out};
+  Progress bar("lbmsim run", static_cast<std::uint64_t>(std::max(0L, c.steps)), comm.root() && progress_wanted(o.progress));
+  RunContext x{comm, c, L, *solver, units, out, &bar};
   RunRecords rec;
   if (!o.forces.empty()) rec.forces_csv = "step,t,flag,Fx,Fy,Fz,CD,CL\n";
   if (!o.probes.empty()) rec.probes_csv = "step,t,probe,x,y,z,rho,ux,uy,uz\n";
@@ -378,6 +382,7 @@ int run_command(const RunOptions& o) {
   RunTotals totals;
   try {
     time_steps(x, rec, totals);
+    bar.finish();
   } catch (const Error& e) {
     if (comm.size() > 1 && e.status() == Status::io) {
       std::fprintf(stderr, "lbmsim: error: %s\n", e.what());

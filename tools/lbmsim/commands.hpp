@@ -26,6 +26,7 @@ struct RunOptions {
   std::vector<lbm::CaseOverride> set;
   std::optional<bool> compress;  // none: the case's
   bool quiet = false;
+  bool progress = false;  // --progress: time steps done (rank 0 draws)
 };
 
 struct CheckOptions {

@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
   fest::cli::enum_words(r->add_option("--precision", run.precision, "Arithmetic: double or float"), kPrecisions);
   r->add_option("--forces", run.forces, "CSV of forces on the case's monitored flags per step (- : standard output)");
   r->add_option("--probes", run.probes, "CSV of the probes per step");
+  fest::cli::add_progress(*r, run.progress);
   r->add_option("--report", run.report, "Write units, timings, MLUPS, mass drift and forces as JSON");
   r->add_option("--set", run_set, "Override a case key: key.sub=value (repeatable)");
   r->add_option("--compress", run_compress, "zlib in .vti: on or off")->check(CLI::IsMember({"on", "off"}));

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/stopwatch.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "line_stream.hpp"
@@ -63,7 +64,9 @@ int run_trace(const TraceArgs& a) {
   const Seeds seeds = load_seeds(a);
   Loaded loaded = load_grid(a.grid, false);
   const FieldGrid& grid = *loaded.grid;
-  const TraceOptions o = trace_options(a);
+  TraceOptions o = trace_options(a);
+  Progress bar("lemtrace trace", seeds.x.size(), progress_wanted(a.progress));
+  o.progress = bar.callback();
   const int threads = resolve_threads(a.grid.threads);
   auto t0 = SteadyClock::now();
   grid.locator();
@@ -90,6 +93,7 @@ int run_trace(const TraceArgs& a) {
     const Dataset poly = polylines_to_dataset(grid, set);
     out.write(formats::write_dataset(poly, formats::Format::vtk));
   }
+  bar.finish();
   const double trace_s = seconds_since(t0);
 
   if (!a.report.empty()) {

@@ -64,6 +64,7 @@ struct TraceArgs {
   LineFormat to = LineFormat::unset;
   std::string report;
   std::string command_line;
+  bool progress = false;  // --progress (trace): seeds traced so far
 };
 
 // --sweep-parallel FROM:TO: count parallel cells for eps = FROM, 10 FROM, ... TO.

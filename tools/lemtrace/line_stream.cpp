@@ -224,6 +224,7 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
       lines[j] = trace(grid, (*seeds.x)[s], s < seeds.t0->size() ? (*seeds.t0)[s] : 0.0, options);
       check_finite(lines[j], s);
     });
+    if (options.progress) options.progress(begin + count, n);
     totals.trace_s += seconds_since(t0);
     t0 = SteadyClock::now();
     for (std::size_t j = 0; j < count; ++j) {

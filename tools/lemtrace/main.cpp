@@ -97,7 +97,9 @@ int main(int argc, char** argv) {
     if (!known) args.insert(args.begin() + 1, trace_name);
   }
   std::string command_line;
-  for (int i = 1; i < argc; ++i) command_line += (i > 1 ? " " : "") + std::string(argv[i]);
+  // The command line the outputs record as provenance; --progress changes nothing in them.
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) != "--progress") command_line += (command_line.empty() ? "" : " ") + std::string(argv[i]);
 
   CLI::App app{"Streamlines on unstructured grids with the locally exact method: the field is linear in each\n"
                "tetrahedron, the path through it is solved in closed form, one step per cell.",
@@ -112,6 +114,7 @@ int main(int argc, char** argv) {
   NumberTexts trace_numbers;
   add_trace_options(trace_cmd, trace, trace_numbers, false);
   fest::cli::enum_words(trace_cmd->add_option("--method", trace.method, "lem, euler, heun, rk3, rk4 or rk45"), kMethods);
+  fest::cli::add_progress(*trace_cmd, trace.progress);
 
   ProbesArgs probes;
   probes.trace.command_line = command_line;

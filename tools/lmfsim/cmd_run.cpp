@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/tool_main.hpp"
 #include "formats/table/table_io.hpp"
 #include "lmfsim/simulate.hpp"
@@ -115,7 +116,10 @@ int cmd_run(const RunOptions& opt) {
   Eigen::VectorXd ds;
   const bool need_eval = !opt.diag.empty() || !opt.forces.empty() || !opt.report.empty();
 
+  // --progress: the simulated time of t_end, in thousandths.
+  fest::Progress bar("lmfsim run", 1000, fest::progress_wanted(opt.progress));
   auto on_frame = [&](int frame, double t, const Eigen::VectorXd& s) {
+    if (sim.t_end > 0) bar.set(static_cast<std::uint64_t>(1000 * std::clamp(t / sim.t_end, 0.0, 1.0)));
     const Energy en = sys.energy(s);
     const double drift = std::abs(en.E() - E0) / Escale;
     max_drift = std::max(max_drift, drift);
@@ -161,6 +165,7 @@ int cmd_run(const RunOptions& opt) {
   RunSummary sum;
   try {
     sum = simulate_run(sys, on_frame);
+    bar.finish();
   } catch (const fest::Error& e) {
     if (opt.stream) {
       emit(true);

@@ -37,6 +37,7 @@ struct RunOptions {
   bool wide = false, stream = false;
   std::string forces, diag, report;
   int threads = 0;  // accepted; the integrator is sequential (one thread)
+  bool progress = false;  // --progress: simulated time of t_end
 };
 
 // Reads the scene JSON (bytes) into a Scene, meshes from files relative to the cwd.

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--diag", run.diag, "Write energy and drift diagnostics per frame to FILE (CSV)");
   run_cmd->add_option("--report", run.report, "Write a JSON summary (steps/s, drift, max |C|) to FILE");
   run_cmd->add_flag("--stream", run.stream, "Write frames as they come; a failure ends the stream with '# ERROR'");
+  fest::cli::add_progress(*run_cmd, run.progress);
   run_cmd->add_option("--threads", run.threads,
                       "Accepted for the common interface; the integrator is sequential and runs one thread")
       ->default_val(0);

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/parallel_for.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -118,7 +119,13 @@ int detect_command(const DetectOptions& o) {
   // Detection per frame in parallel; poses in frame order (the tracker is sequential).
   const Stopwatch detect_clock;
   std::vector<std::vector<markers::Detection>> found(n);
-  parallel_for(n, threads, [&](std::size_t i) { found[i] = markers::detect_markers(decode_grey(frames[i]), det); });
+  Progress bar("markerpose detect", n, progress_wanted(o.progress));
+  ProgressCounter searched(bar.callback(), n);
+  parallel_for(n, threads, [&](std::size_t i) {
+    found[i] = markers::detect_markers(decode_grey(frames[i]), det);
+    searched.step();
+  });
+  bar.finish();
   const double detect_ms = detect_clock.ms();
 
   markers::PoseTracker tracker;

@@ -29,6 +29,7 @@ struct DetectOptions {
   std::string report;
   bool lines = false;               // JSON lines even for one image
   int threads = 0;
+  bool progress = false;  // --progress: frames searched for markers
   bool quiet = false;
 };
 int detect_command(const DetectOptions& o);

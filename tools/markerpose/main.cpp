@@ -32,6 +32,8 @@ std::vector<CLI::Option*> add_detect_flags(CLI::App& cmd, DetectOptions& det) {
   o.push_back(cmd.add_option("--report", det.report, "Counts and detection time as JSON"));
   fest::cli::add_threads(cmd, det.threads);
   o.push_back(cmd.get_option("--threads"));
+  fest::cli::add_progress(cmd, det.progress);
+  o.push_back(cmd.get_option("--progress"));
   return o;
 }
 

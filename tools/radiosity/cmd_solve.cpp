@@ -1,6 +1,7 @@
 // radiosity solve: read a scene, mesh it, shoot to the tolerance (with adaptive rounds),
 // and write the lit meshes, the shot log, the report and a picture.
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -10,6 +11,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -227,10 +229,17 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
 
   radiosity::SolveOptions so = solve_options(args, threads);
   ShotLog log;
+  // --progress: each level's unshot fraction from 1 down to --tol on a log scale, 1000
+  // steps per level (a solve stopped by --max-shots ends short of its level's end).
+  Progress bar("radiosity solve", 1000 * static_cast<std::uint64_t>(so.levels + 1),
+               progress_wanted(args.progress) && !args.quiet);
   so.on_shot = [&](const radiosity::ShotRecord& r, const radiosity::Model&) {
     if (!args.log.empty()) log.add(r);
+    const double part = r.unshot_fraction > 0 && args.tol < 1 ? std::log(std::min(1.0, r.unshot_fraction)) / std::log(args.tol) : 1.0;
+    bar.set(1000 * static_cast<std::uint64_t>(r.level) + static_cast<std::uint64_t>(1000 * std::clamp(part, 0.0, 1.0)));
   };
   const radiosity::SolveStats stats = radiosity::solve(model, ff, so);
+  bar.finish();
   warn_about_convergence(args, stats);
 
   const auto t_out = SteadyClock::now();

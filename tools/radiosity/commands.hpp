@@ -36,6 +36,7 @@ struct SolveArgs {
   bool direct = false;
   bool strict = false;
   bool quiet = false;
+  bool progress = false;  // --progress: the unshot fraction on its way down to --tol
   int threads = 0;
 };
 

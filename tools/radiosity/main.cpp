@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   sv->add_flag("--direct", s.direct, "Also solve (I - rho F) B = E densely and report the largest difference");
   sv->add_flag("--strict", s.strict, "Exit 1 when --max-shots stops the solve before --tol");
   fest::cli::add_threads(*sv, s.threads);
+  fest::cli::add_progress(*sv, s.progress);
 
   CornellArgs c;
   CLI::App* cb = app.add_subcommand("cornell", "Write the built-in Cornell box scene (JSON)");

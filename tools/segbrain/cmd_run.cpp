@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <functional>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -16,6 +18,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -268,6 +271,24 @@ SceneReport scene_report(Engine& engine) {
   return r;
 }
 
+
+// The find_<object> goals named anywhere in the bodies of the goal's clauses (inside
+// optional/1 and if-then-else too): the steps of --progress.
+std::set<std::string> find_goals(const std::vector<Program>& kb, const Term& goal) {
+  std::set<std::string> out;
+  const std::string top = deref(goal)->name;
+  std::function<void(const Term&)> walk = [&](const Term& t0) {
+    const Term t = deref(t0);
+    if (t->kind != Kind::atom && t->kind != Kind::compound) return;
+    if (t->name.rfind("find_", 0) == 0) out.insert(t->name);
+    for (const Term& arg : t->args) walk(arg);
+  };
+  for (const Program& p : kb)
+    for (const Clause& c : p.clauses)
+      if (deref(c.head)->name == top) walk(c.body);
+  return out;
+}
+
 }  // namespace
 
 int run_segment(const RunArgs& a) {
@@ -306,9 +327,22 @@ int run_segment(const RunArgs& a) {
   t1.image = to_canonical(in, ro);
   ws.put_root("t1", std::move(t1));
   ws.register_operators(engine);
+  // --progress: the steps of the proof are the find_<object> goals its clauses name, each
+  // counted once when it exits or fails (an optional object the knowledge base skips).
+  const bool progress = progress_wanted(a.progress) && !a.quiet;
+  const std::set<std::string> finds = progress ? find_goals(load_kb(a.kb), goal) : std::set<std::string>{};
+  Progress bar("segbrain", finds.size(), progress);
+  std::set<std::string> finds_done;
 
   std::string trace_text;
-  if (!a.trace.empty()) engine.set_trace([&](const TraceEvent& e) { trace_text += trace_json(e).dump() + "\n"; });
+  if (!a.trace.empty() || progress)
+    engine.set_trace([&](const TraceEvent& e) {
+      if (!a.trace.empty()) trace_text += trace_json(e).dump() + "\n";
+      if (progress && std::strcmp(e.port, "call") != 0 && std::strcmp(e.port, "redo") != 0) {
+        const std::string name = e.goal.substr(0, e.goal.find('('));
+        if (finds.count(name) && finds_done.insert(name).second) bar.set(finds_done.size());
+      }
+    });
   engine.set_log([&](const std::string& s) {
     if (!a.quiet) std::fputs(s.c_str(), stderr);
   });
@@ -327,6 +361,7 @@ int run_segment(const RunArgs& a) {
     throw;
   }
   if (!a.trace.empty()) write_output(a.trace, trace_text);
+  if (ok) bar.finish();
   if (!ok) {
     failure = fmt::format("goal {} failed after {} alternatives", to_string(goal), engine.counters().backtracks);
     if (!engine.last_failing_check().empty()) failure += "; last failing check: " + engine.last_failing_check();

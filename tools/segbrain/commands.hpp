@@ -48,6 +48,7 @@ struct RunArgs {
   int threads = 0;  // --threads: 0 = all cores; the output is the same for any count
   bool quiet = false;
   bool verbose = false;  // -v: also the scene's notes of level info (e.g. already skull-stripped)
+  bool progress = false;  // --progress: a bar of the find_<object> goals done so far
 };
 
 struct KbCheckArgs {

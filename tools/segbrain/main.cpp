@@ -46,6 +46,8 @@ std::vector<CLI::Option*> add_run_flags(CLI::App& cmd, RunArgs& run, RunFlagText
   o.push_back(cmd.add_option("--time-limit", run.time_limit, "Seconds (0 = none)")->default_val(0));
   fest::cli::add_threads(cmd, run.threads);
   o.push_back(cmd.get_option("--threads"));
+  fest::cli::add_progress(cmd, run.progress);
+  o.push_back(cmd.get_option("--progress"));
   return o;
 }
 

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/input_name.hpp"
+#include "core/progress.hpp"
 #include "core/srgb.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
@@ -251,6 +252,9 @@ struct RenderSetup {
   raycast::RenderOptions options;
   std::string format;
   std::optional<raycast::MeshTracer> mesh;
+  // --progress: every image (frame, eye) is 1000 steps of images x 1000.
+  Progress* bar = nullptr;
+  std::uint64_t images = 1, image = 0;
 };
 
 RenderSetup setup(const RenderArgs& a) {
@@ -310,9 +314,15 @@ FrameResult render_volume(const RenderArgs& a, RenderSetup& S, const LoadedVolum
   t0 = Clock::now();
   if (!a.mesh.empty() && !S.mesh) S.mesh = load_mesh(a);
   const auto* mesh = S.mesh ? &*S.mesh : nullptr;
-  for (const auto& c : F.cameras)
+  for (const auto& c : F.cameras) {
+    if (S.bar)
+      o.progress = [&S](std::uint64_t done, std::uint64_t total) {
+        S.bar->set(S.image * 1000 + (total ? done * 1000 / total : 0), S.images * 1000);
+      };
     F.images.push_back(raycast::render(L.grid, &pyramid, tf, c, o, mesh ? &raycast::MeshTracer::callback : nullptr, mesh,
                                        shading.built() ? &shading : nullptr));
+    ++S.image;
+  }
   F.t_render = seconds_since(t0);
   return F;
 }
@@ -348,6 +358,10 @@ int run_render(const RenderArgs& a) {
   double t_read = 0, t_build = 0, t_render = 0, t_write = 0;
   std::size_t pyramid_bytes = 0, frame_count = 1;
   std::vector<raycast::Camera> cameras;
+  Progress bar("volrender", 0, progress_wanted(a.progress));
+  S.bar = &bar;
+  const std::uint64_t eyes = a.camera.stereo.has_value() ? 2 : 1;
+  S.images = eyes;
   auto account = [&](const FrameResult& F) {
     for (const auto& im : F.images)
       stats.rays += im.stats.rays, stats.samples += im.stats.samples, stats.skipped += im.stats.skipped, stats.terminated += im.stats.terminated;
@@ -374,6 +388,7 @@ int run_render(const RenderArgs& a) {
     vo.frame = -1;
     const formats::VolumeFrames frames(in, vo);
     frame_count = frames.count();
+    S.images = eyes * frame_count;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t t = 0; t < frame_count; ++t) {
       const LoadedVolume L = load_frame(frames, t, name);
@@ -392,6 +407,7 @@ int run_render(const RenderArgs& a) {
       t_write += seconds_since(t0);
     }
   }
+  bar.finish();
   if (!a.camera_json.empty()) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& c : cameras) j.push_back(camera_json(c));

@@ -77,6 +77,7 @@ struct RenderArgs {
   bool no_skip = false;
   Gradients gradients = Gradients::automatic;
   int threads = 0;
+  bool progress = false;  // --progress: tiles cast, over every image
   SliceAxis slice_axis;
   int slice_count = 8;
   std::vector<double> slice_at;

@@ -279,6 +279,7 @@ int main(int argc, char** argv) {
     s->add_option("--report", ra.report, "Write rays, samples, skipped samples and timings as JSON");
     add_camera(s, ra.camera, ct);
     fest::cli::add_threads(*s, ra.threads);
+    fest::cli::add_progress(*s, ra.progress);
   }
   CameraPrintArgs cp;
   CameraText cpt;
