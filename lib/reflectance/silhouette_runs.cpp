@@ -62,6 +62,13 @@ CoverageRuns silhouette_runs(const TriangleMesh& mesh, const PinholeCamera& came
   std::vector<std::vector<PixelRun>> band_runs(static_cast<std::size_t>(bands));
   parallel_bands_indexed(camera.height, threads, [&](int band, int y0, int y1) {
     std::vector<RowSpan> spans;
+    std::size_t rows = 0;  // at most one span per row of a triangle's bounding box: no regrowth
+    for (const auto& tri : mesh.triangles) {
+      const double ymin = std::min({s[tri[0]].y, s[tri[1]].y, s[tri[2]].y});
+      const double ymax = std::max({s[tri[0]].y, s[tri[1]].y, s[tri[2]].y});
+      if (ymax >= y0 && ymin < y1) rows += static_cast<std::size_t>(std::min<double>(ymax, y1) - std::max<double>(ymin, y0)) + 1;
+    }
+    spans.reserve(rows);
     for (const auto& tri : mesh.triangles) {
       const scan::ScreenVertex &a = s[tri[0]], &b = s[tri[1]], &c = s[tri[2]];
       if (!scan::drawable(a, b, c)) continue;

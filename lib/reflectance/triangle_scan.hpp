@@ -54,64 +54,80 @@ inline double edge_function(const ScreenVertex& p, const ScreenVertex& q, int x,
   return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
 }
 
-// The edge p -> q's test at the pixel centre (x, y): not on the outer side.
-inline bool passes(const ScreenVertex& p, const ScreenVertex& q, double sign, int x, int y) {
-  return !(sign * edge_function(p, q, x, y) < 0);
-}
+// One edge p -> q of a triangle, set up once per triangle and once per row, testing
+// pixels in the operations of edge_function (the same roundings, so the same answers).
+class EdgeTest {
+ public:
+  enum Kind { constant, from_column, up_to_column };  // which pixels of a row pass
 
-// Narrows [lo, hi] (columns of row y) to the pixels passing the edge p -> q's test;
-// lo > hi when none does.
-inline void clip_span_to_edge(const ScreenVertex& p, const ScreenVertex& q, double sign, int y, int& lo, int& hi) {
-  const double k = q.y - p.y;  // the edge function is (q.x - p.x)(y - p.y) - k (x - p.x)
+  EdgeTest(const ScreenVertex& p, const ScreenVertex& q, double sign)
+      : px_(p.x), py_(p.y), dx_(q.x - p.x), k_(q.y - p.y), sign_(sign) {
+    kind_ = k_ == 0 ? constant : (-sign * k_ > 0 ? from_column : up_to_column);
+    inv_k_ = k_ == 0 ? 0.0 : 1.0 / k_;
+  }
+  Kind kind() const { return kind_; }
+  void set_row(int y) { row_term_ = dx_ * (y - py_); }
+  bool passes(int x) const { return !(sign_ * (row_term_ - k_ * (x - px_)) < 0); }
+  // Where the edge crosses the row (an estimate: only `passes` decides).
+  double crossing() const { return px_ + row_term_ * inv_k_; }
+
+ private:
+  double px_, py_, dx_, k_, sign_, inv_k_ = 0, row_term_ = 0;
+  Kind kind_;
+};
+
+// Narrows [lo, hi] (columns of the edge's current row) to the pixels passing its test;
+// lo > hi when none does. Each test is monotone along the row, so the walk from the
+// estimated crossing ends at the exact first (last) passing column.
+inline void clip_span_to_edge(const EdgeTest& e, int& lo, int& hi) {
   if (lo > hi) return;
-  if (k == 0) {  // constant along the row: all or nothing
-    if (!passes(p, q, sign, lo, y)) hi = lo - 1;
+  if (e.kind() == EdgeTest::constant) {  // the same at every column: all or nothing
+    if (!e.passes(lo)) hi = lo - 1;
     return;
   }
-  const double crossing = p.x + (q.x - p.x) * (y - p.y) / k;
-  // Start from the crossing clamped into [lo - 1, hi + 1] (NaN-safe), then walk.
-  const auto start = [&](double v) {
-    if (!(v > lo - 1)) return lo - 1;
-    if (!(v < hi + 1)) return hi + 1;
-    return static_cast<int>(v);
-  };
-  if (-sign * k > 0) {  // the test holds from some column on: find the first such column
-    int x = std::max(lo, start(std::ceil(crossing)));
-    while (x > lo && passes(p, q, sign, x - 1, y)) --x;
-    while (x <= hi && !passes(p, q, sign, x, y)) ++x;
+  // The crossing clamped into [lo - 1, hi + 1] (NaN-safe) and truncated; the walks fix
+  // the last unit.
+  const double v = e.crossing();
+  const int start = !(v > lo - 1) ? lo - 1 : (!(v < hi + 1) ? hi + 1 : static_cast<int>(v));
+  if (e.kind() == EdgeTest::from_column) {  // find the first passing column
+    int x = std::max(lo, start);
+    while (x > lo && e.passes(x - 1)) --x;
+    while (x <= hi && !e.passes(x)) ++x;
     lo = x;
-  } else {  // the test holds up to some column: find the last
-    int x = std::min(hi, start(std::floor(crossing)));
-    while (x < hi && passes(p, q, sign, x + 1, y)) ++x;
-    while (x >= lo && !passes(p, q, sign, x, y)) --x;
+  } else {  // find the last passing column
+    int x = std::min(hi, start);
+    while (x < hi && e.passes(x + 1)) ++x;
+    while (x >= lo && !e.passes(x)) --x;
     hi = x;
   }
 }
 
 // Calls span(y, x0, x1) for every row y in [y0, y1) with covered pixels [x0, x1] (x1
-// inclusive) of the triangle (a, b, c) in an image `width` pixels wide. Returns the
-// triangle's signed doubled area (0 or non-finite: nothing is visited).
+// inclusive) of the triangle (a, b, c) in an image `width` pixels wide, rows ascending.
 template <typename Span>
-double scan_spans(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width, int y0, int y1,
-                  Span&& span) {
+void scan_spans(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width, int y0, int y1,
+                Span&& span) {
   const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  if (area == 0 || !std::isfinite(area)) return area;
+  if (area == 0 || !std::isfinite(area)) return;
   const double xmin = std::min({a.x, b.x, c.x}), xmax = std::max({a.x, b.x, c.x});
   const double ymin = std::min({a.y, b.y, c.y}), ymax = std::max({a.y, b.y, c.y});
   const int px0 = std::max(0, static_cast<int>(std::ceil(xmin)));
   const int px1 = std::min(width - 1, static_cast<int>(std::floor(xmax)));
   const int py0 = std::max(y0, static_cast<int>(std::ceil(ymin)));
   const int py1 = std::min(y1 - 1, static_cast<int>(std::floor(ymax)));
-  if (px0 > px1 || py0 > py1) return area;
+  if (px0 > px1 || py0 > py1) return;
   const double sign = area > 0 ? 1.0 : -1.0;
+  EdgeTest e0(b, c, sign), e1(c, a, sign), e2(a, b, sign);  // w0, w1, w2: opposite a, b, c
   for (int y = py0; y <= py1; ++y) {
+    e0.set_row(y);
+    e1.set_row(y);
+    e2.set_row(y);
     int lo = px0, hi = px1;
-    clip_span_to_edge(b, c, sign, y, lo, hi);  // w0, opposite a
-    clip_span_to_edge(c, a, sign, y, lo, hi);  // w1, opposite b
-    clip_span_to_edge(a, b, sign, y, lo, hi);  // w2, opposite c
+    clip_span_to_edge(e0, lo, hi);
+    clip_span_to_edge(e1, lo, hi);
+    clip_span_to_edge(e2, lo, hi);
     if (lo <= hi) span(y, lo, hi);
   }
-  return area;
 }
 
 // Visits every pixel centre (x, y) with y in [y0, y1) inside the triangle with its

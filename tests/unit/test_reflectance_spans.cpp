@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <set>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -21,9 +20,9 @@ using namespace fest::reflectance;
 using scan::ScreenVertex;
 
 // The per-pixel loop: every centre of the clipped bounding box, inclusive on edges.
-std::set<std::pair<int, int>> brute_force(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width,
+std::vector<std::pair<int, int>> brute_force(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width,
                                           int height) {
-  std::set<std::pair<int, int>> out;
+  std::vector<std::pair<int, int>> out;  // row by row, left to right
   const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (area == 0 || !std::isfinite(area)) return out;
   const int px0 = std::max(0, static_cast<int>(std::ceil(std::min({a.x, b.x, c.x}))));
@@ -37,20 +36,20 @@ std::set<std::pair<int, int>> brute_force(const ScreenVertex& a, const ScreenVer
       const double w1 = (a.x - c.x) * (y - c.y) - (a.y - c.y) * (x - c.x);
       const double w2 = (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);
       if (sign * w0 < 0 || sign * w1 < 0 || sign * w2 < 0) continue;
-      out.insert({y, x});
+      out.push_back({y, x});
     }
   return out;
 }
 
-std::set<std::pair<int, int>> by_spans(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width,
+std::vector<std::pair<int, int>> by_spans(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width,
                                        int height) {
-  std::set<std::pair<int, int>> out;
+  std::vector<std::pair<int, int>> out;
   int last_row = -1;
   scan::scan_spans(a, b, c, width, 0, height, [&](int y, int x0, int x1) {
     EXPECT_GT(y, last_row);  // one span per row, rows ascending
     last_row = y;
     EXPECT_LE(x0, x1);
-    for (int x = x0; x <= x1; ++x) out.insert({y, x});
+    for (int x = x0; x <= x1; ++x) out.push_back({y, x});
   });
   return out;
 }
@@ -98,7 +97,7 @@ TEST(RasterSpans, EqualThePerPixelTestOnRandomTriangles) {
   std::uniform_real_distribution<double> tiny(-1e-9, 1e-9);
   const int w = 64, h = 48;
   int covered = 0;
-  for (int k = 0; k < 6000; ++k) {
+  for (int k = 0; k < 3000; ++k) {
     ScreenVertex v[3];
     for (auto& p : v) p = {u(rng), u(rng), 1.0};
     switch (k % 6) {
@@ -126,7 +125,7 @@ TEST(RasterSpans, EqualThePerPixelTestOnRandomTriangles) {
     ASSERT_EQ(by_spans(v[0], v[2], v[1], w, h), brute_force(v[0], v[2], v[1], w, h)) << "triangle " << k << " reversed";
     covered += static_cast<int>(expected.size());
   }
-  EXPECT_GT(covered, 100000);
+  EXPECT_GT(covered, 50000);
 }
 
 TEST(RasterSpans, SilhouetteRunsAreTheFilledSilhouette) {
