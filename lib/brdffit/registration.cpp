@@ -11,6 +11,7 @@
 #include "brdffit/nelder_mead.hpp"
 #include "core/error.hpp"
 #include "reflectance/rasterizer.hpp"
+#include "reflectance/silhouette_runs.hpp"
 
 namespace fest::brdffit {
 
@@ -37,6 +38,7 @@ SilhouettePyramid make_pyramid(const cv::Mat& mask, int levels) {
     p.masks.push_back(m);
     p.scales.push_back(s);
     p.counts.push_back(cv::countNonZero(m));
+    p.runs.push_back(reflectance::runs_of_mask(m.ptr<std::uint8_t>(0), m.cols, m.rows, m.step[0]));
   }
   if (p.counts.back() == 0) throw bad_input("the silhouette mask is empty");
   return p;
@@ -48,13 +50,7 @@ double silhouette_xor(const TriangleMesh& mesh, const PinholeCamera& camera, con
   PinholeCamera c = reflectance::scaled_camera(camera, pyramid.scales[level]);
   c.width = m.cols;
   c.height = m.rows;
-  const std::vector<std::uint8_t> s = reflectance::rasterize_silhouette(mesh, c, threads);
-  std::size_t diff = 0;
-  for (int y = 0; y < m.rows; ++y) {
-    const std::uint8_t* row = m.ptr<std::uint8_t>(y);
-    const std::uint8_t* sil = &s[static_cast<std::size_t>(y) * m.cols];
-    for (int x = 0; x < m.cols; ++x) diff += (row[x] != 0) != (sil[x] != 0);
-  }
+  const std::size_t diff = reflectance::symmetric_difference(reflectance::silhouette_runs(mesh, c, threads), pyramid.runs[level]);
   return static_cast<double>(diff) / std::max(1.0, pyramid.counts[level]);
 }
 

@@ -13,6 +13,7 @@
 #include <opencv2/core.hpp>
 
 #include "reflectance/camera.hpp"
+#include "reflectance/silhouette_runs.hpp"
 #include "reflectance/triangle_mesh.hpp"
 #include "core/progress_callback.hpp"
 
@@ -23,10 +24,13 @@ struct SilhouettePyramid {
   std::vector<cv::Mat> masks;   // CV_8U 0/1, coarsest first
   std::vector<double> scales;   // 1/8 ... 1
   std::vector<double> counts;   // foreground pixels per level
+  std::vector<reflectance::CoverageRuns> runs;  // the masks as runs per row, for the XOR
 };
 SilhouettePyramid make_pyramid(const cv::Mat& mask, int levels = 4);
 
 // XOR(silhouette, mask) / |mask| at one level; `camera` is the full-resolution camera.
+// Counted on runs per row (reflectance::silhouette_runs): the pixels of a filled
+// silhouette image, found without filling one.
 double silhouette_xor(const reflectance::TriangleMesh& mesh, const reflectance::PinholeCamera& camera,
                       const SilhouettePyramid& pyramid, std::size_t level, int threads = 1);
 

@@ -6,62 +6,15 @@
 
 #include "core/error.hpp"
 #include "core/parallel_for.hpp"
+#include "reflectance/triangle_scan.hpp"
 
 namespace fest::reflectance {
 namespace {
 
-constexpr double near_plane = 1e-9;
-
-// Vertices in screen space: pixel x, y and camera depth z (z <= near: not drawable).
-struct ScreenVertex {
-  double x, y, z;
-};
-
-std::vector<ScreenVertex> project_vertices(const TriangleMesh& mesh, const PinholeCamera& cam) {
-  std::vector<ScreenVertex> s(mesh.vertices.size());
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const Eigen::Vector3d xc = cam.to_camera(mesh.vertices[i]);
-    if (xc.z() <= near_plane) {
-      s[i] = {0, 0, xc.z()};
-      continue;
-    }
-    const Eigen::Vector2d p = cam.project_camera(xc);
-    s[i] = {p.x(), p.y(), xc.z()};
-  }
-  return s;
-}
-
-// Visits every pixel centre (x, y) with y in [y0, y1) inside the triangle, with the
-// (unnormalised) edge functions; inclusive on edges for either orientation.
-template <typename Visit>
-void scan_triangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int width, int y0, int y1,
-                   Visit&& visit) {
-  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  if (area == 0 || !std::isfinite(area)) return;
-  const double xmin = std::min({a.x, b.x, c.x}), xmax = std::max({a.x, b.x, c.x});
-  const double ymin = std::min({a.y, b.y, c.y}), ymax = std::max({a.y, b.y, c.y});
-  const int px0 = std::max(0, static_cast<int>(std::ceil(xmin)));
-  const int px1 = std::min(width - 1, static_cast<int>(std::floor(xmax)));
-  const int py0 = std::max(y0, static_cast<int>(std::ceil(ymin)));
-  const int py1 = std::min(y1 - 1, static_cast<int>(std::floor(ymax)));
-  if (px0 > px1 || py0 > py1) return;
-  const double sign = area > 0 ? 1.0 : -1.0;
-  const double inv_area = 1.0 / area;
-  for (int y = py0; y <= py1; ++y) {
-    for (int x = px0; x <= px1; ++x) {
-      // Edge function of edge (p, q) at the pixel centre; w0 is opposite vertex a.
-      const double w0 = (c.x - b.x) * (y - b.y) - (c.y - b.y) * (x - b.x);
-      const double w1 = (a.x - c.x) * (y - c.y) - (a.y - c.y) * (x - c.x);
-      const double w2 = (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);
-      if (sign * w0 < 0 || sign * w1 < 0 || sign * w2 < 0) continue;
-      visit(x, y, w0 * inv_area, w1 * inv_area, w2 * inv_area);
-    }
-  }
-}
-
-bool drawable(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-  return a.z > near_plane && b.z > near_plane && c.z > near_plane;
-}
+using scan::drawable;
+using scan::project_vertices;
+using scan::scan_triangle;
+using scan::ScreenVertex;
 
 }  // namespace
 
@@ -112,8 +65,9 @@ std::vector<std::uint8_t> rasterize_silhouette(const TriangleMesh& mesh, const P
     for (const auto& tri : mesh.triangles) {
       const ScreenVertex &a = s[tri[0]], &b = s[tri[1]], &c = s[tri[2]];
       if (!drawable(a, b, c)) continue;
-      scan_triangle(a, b, c, camera.width, y0, y1, [&](int x, int y, double, double, double) {
-        cover[static_cast<std::size_t>(y) * camera.width + x] = 1;
+      scan::scan_spans(a, b, c, camera.width, y0, y1, [&](int y, int x0, int x1) {
+        std::uint8_t* row = &cover[static_cast<std::size_t>(y) * camera.width];
+        std::fill(row + x0, row + x1 + 1, std::uint8_t{1});
       });
     }
   });
@@ -127,7 +81,8 @@ std::vector<std::uint32_t> projected_pixel_counts(const TriangleMesh& mesh, cons
     const auto& tri = mesh.triangles[t];
     const ScreenVertex &a = s[tri[0]], &b = s[tri[1]], &c = s[tri[2]];
     if (!drawable(a, b, c)) continue;
-    scan_triangle(a, b, c, camera.width, 0, camera.height, [&](int, int, double, double, double) { ++count[t]; });
+    scan::scan_spans(a, b, c, camera.width, 0, camera.height,
+                     [&](int, int x0, int x1) { count[t] += static_cast<std::uint32_t>(x1 - x0 + 1); });
   }
   return count;
 }

@@ -5,7 +5,8 @@
 // cracks), the nearest fragment wins, equal depths go to the lower triangle index: the
 // result is the same for every thread count. Triangles with a vertex at or behind the
 // near plane (z_cam <= 1e-9) are not drawn (the objects of brdffit lie in front of the
-// camera).
+// camera). Triangles are scanned as one span per row (triangle_scan.hpp), the span's ends
+// settled by the per-pixel test itself.
 //
 // The product is a visibility buffer: per pixel the triangle, its camera depth and the
 // perspective-correct barycentric coordinates of the surface point under the pixel
