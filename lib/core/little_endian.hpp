@@ -42,6 +42,20 @@ inline void put_varint(std::string& out, std::uint64_t v) {
   put_u8(out, static_cast<std::uint8_t>(v));
 }
 
+// Any integer type, for containers that check their lengths once up front and then read
+// at known offsets (terrainlod's .tlp index and nodata section). `at + sizeof(T)` must lie
+// within `bytes`: get_le does not check.
+template <class T>
+inline void put_le(std::string& out, T v) {
+  for (std::size_t b = 0; b < sizeof(T); ++b) out.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * b)) & 0xff));
+}
+template <class T>
+inline T get_le(std::string_view bytes, std::size_t at) {
+  std::uint64_t v = 0;
+  for (std::size_t b = 0; b < sizeof(T); ++b) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + b])) << (8 * b);
+  return static_cast<T>(v);
+}
+
 // Reads what the put_ functions write, from `pos` on. Errors has
 //   [[noreturn]] void truncated(std::size_t needed, std::size_t pos) const;
 //   [[noreturn]] void varint_too_long(std::size_t pos) const;

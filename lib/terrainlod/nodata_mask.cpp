@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/little_endian.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -12,16 +13,8 @@ constexpr std::uint8_t kVersion = 1;
 constexpr std::size_t kHeadBytes = 4 + 1 + 4 + 4 + 8;
 constexpr int kMaxSide = 1 << 24;  // samples per side: far beyond any pyramid (levels <= 30, tiles <= 4096)
 
-template <typename T>
-void put_le(std::string& s, T v) {
-  for (std::size_t b = 0; b < sizeof(T); ++b) s.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * b)) & 0xff));
-}
-template <typename T>
-T get_le(std::string_view s, std::size_t at) {
-  std::uint64_t v = 0;
-  for (std::size_t b = 0; b < sizeof(T); ++b) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(s[at + b])) << (8 * b);
-  return static_cast<T>(v);
-}
+using little_endian::get_le;
+using little_endian::put_le;
 
 void put_varint(std::string& s, std::uint32_t v) {
   while (v >= 0x80) {

@@ -1,6 +1,7 @@
 #include "terrainlod/tlp_archive.hpp"
 
 #include "core/error.hpp"
+#include "core/little_endian.hpp"
 
 namespace fest::terrainlod {
 namespace {
@@ -10,16 +11,8 @@ constexpr std::uint8_t kVersion = 1;        // no nodata section
 constexpr std::uint8_t kVersionNodata = 2;  // a nodata section after the index
 constexpr std::size_t kEntryBytes = 1 + 4 + 4 + 8 + 4 + 8 + 4;
 
-template <typename T>
-void put_le(std::string& s, T v) {
-  for (std::size_t b = 0; b < sizeof(T); ++b) s.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * b)) & 0xff));
-}
-template <typename T>
-T get_le(std::string_view s, std::size_t at) {
-  std::uint64_t v = 0;
-  for (std::size_t b = 0; b < sizeof(T); ++b) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(s[at + b])) << (8 * b);
-  return static_cast<T>(v);
-}
+using little_endian::get_le;
+using little_endian::put_le;
 
 }  // namespace
 

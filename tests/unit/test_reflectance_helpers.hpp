@@ -1,7 +1,9 @@
 #pragma once
 // Shared by the reflectance and brdffit geometry tests: meshes whose geometry is known exactly.
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "reflectance/triangle_mesh.hpp"
 
@@ -21,6 +23,31 @@ inline reflectance::TriangleMesh plane(double s, double h, int n) {
       m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
+  return m;
+}
+
+// A unit sphere: an octahedron subdivided `level` times, midpoints pushed out to radius 1
+// (8 * 4^level triangles, no normals). Its silhouette from any side is a disc to within
+// the chord error of the level.
+inline reflectance::TriangleMesh octahedron_sphere(int level) {
+  reflectance::TriangleMesh m;
+  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (int l = 0; l < level; ++l) {
+    std::vector<std::array<std::uint32_t, 3>> next;
+    for (const auto& t : m.triangles) {
+      std::uint32_t mid[3];
+      for (int k = 0; k < 3; ++k) {
+        m.vertices.push_back((m.vertices[t[k]] + m.vertices[t[(k + 1) % 3]]).normalized());
+        mid[k] = static_cast<std::uint32_t>(m.vertices.size() - 1);
+      }
+      next.push_back({t[0], mid[0], mid[2]});
+      next.push_back({t[1], mid[1], mid[0]});
+      next.push_back({t[2], mid[2], mid[1]});
+      next.push_back({mid[0], mid[1], mid[2]});
+    }
+    m.triangles.swap(next);
+  }
   return m;
 }
 

@@ -29,26 +29,9 @@ PinholeCamera camera_at(const Eigen::Vector3d& eye, int w, int h, double f, cons
   return c;
 }
 
+// The shared octahedron sphere with normals (enough for silhouettes and shading).
 TriangleMesh unit_icosphere(int level) {
-  // Subdivided octahedron projected to the unit sphere (enough for silhouettes).
-  TriangleMesh m;
-  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int l = 0; l < level; ++l) {
-    std::vector<std::array<std::uint32_t, 3>> next;
-    for (const auto& t : m.triangles) {
-      std::uint32_t mid[3];
-      for (int k = 0; k < 3; ++k) {
-        m.vertices.push_back((m.vertices[t[k]] + m.vertices[t[(k + 1) % 3]]).normalized());
-        mid[k] = static_cast<std::uint32_t>(m.vertices.size() - 1);
-      }
-      next.push_back({t[0], mid[0], mid[2]});
-      next.push_back({t[1], mid[1], mid[0]});
-      next.push_back({t[2], mid[2], mid[1]});
-      next.push_back({mid[0], mid[1], mid[2]});
-    }
-    m.triangles.swap(next);
-  }
+  TriangleMesh m = fest::test::octahedron_sphere(level);
   compute_vertex_normals(m);
   return m;
 }

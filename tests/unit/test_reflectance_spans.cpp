@@ -13,6 +13,7 @@
 #include "reflectance/rasterizer.hpp"
 #include "reflectance/silhouette_runs.hpp"
 #include "reflectance/triangle_scan.hpp"
+#include "test_reflectance_helpers.hpp"
 
 namespace {
 
@@ -54,27 +55,6 @@ std::vector<std::pair<int, int>> by_spans(const ScreenVertex& a, const ScreenVer
   return out;
 }
 
-TriangleMesh unit_octasphere(int level) {
-  TriangleMesh m;
-  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int l = 0; l < level; ++l) {
-    std::vector<std::array<std::uint32_t, 3>> next;
-    for (const auto& t : m.triangles) {
-      std::uint32_t mid[3];
-      for (int k = 0; k < 3; ++k) {
-        m.vertices.push_back((m.vertices[t[k]] + m.vertices[t[(k + 1) % 3]]).normalized());
-        mid[k] = static_cast<std::uint32_t>(m.vertices.size() - 1);
-      }
-      next.push_back({t[0], mid[0], mid[2]});
-      next.push_back({t[1], mid[1], mid[0]});
-      next.push_back({t[2], mid[2], mid[1]});
-      next.push_back({mid[0], mid[1], mid[2]});
-    }
-    m.triangles.swap(next);
-  }
-  return m;
-}
 
 PinholeCamera looking_at_origin(const Eigen::Vector3d& eye, int w, int h, double f) {
   PinholeCamera c;
@@ -129,7 +109,7 @@ TEST(RasterSpans, EqualThePerPixelTestOnRandomTriangles) {
 }
 
 TEST(RasterSpans, SilhouetteRunsAreTheFilledSilhouette) {
-  const TriangleMesh m = unit_octasphere(4);
+  const TriangleMesh m = fest::test::octahedron_sphere(4);
   for (const Eigen::Vector3d& eye : {Eigen::Vector3d(0.3, -3.5, 1.2), Eigen::Vector3d(2.0, 1.0, -1.5)}) {
     const PinholeCamera cam = looking_at_origin(eye, 173, 131, 120);
     const std::vector<std::uint8_t> filled = rasterize_silhouette(m, cam, 1);
