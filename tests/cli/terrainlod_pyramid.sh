@@ -225,6 +225,13 @@ bad 3 'tile 2/3/3 is truncated: [0-9]+ of [0-9]+ bytes' stats "$WORK/short.tlp"
 bad 3 'is truncated' extract "$WORK/short.tlp" --camera "$WORK/cam.json" -o "$WORK/out.ply"
 printf 'FTLX' >"$WORK/magic.tlp"
 bad 3 'not a terrainlod pyramid \(bad magic\)' decode "$WORK/magic.tlp" --tile 0/0/0 -o "$WORK/out.ply"
+# A manifest key renamed in place (same length, so every offset still holds; the archive
+# has no checksum): refused on opening in fest's words, not by the JSON library (a zzuf
+# variant of mutate.sh got "[json.exception.out_of_range.403]" out of stats).
+perl -pe 's/"lattice_bits"/"lattice_bitz"/' "$WORK/bumps.tlp" >"$WORK/renamed.tlp"
+bad 3 "pyramid manifest is malformed: field 'lattice_bits' missing" stats "$WORK/renamed.tlp"
+perl -pe 's/"width"/"widtx"/' "$WORK/bumps.tlp" >"$WORK/renamed.tlp"
+bad 3 "pyramid manifest is malformed: field 'width' missing" stats "$WORK/renamed.tlp"
 
 case_ "camera looking along its up vector; mask out of range"
 printf '{"eye": [1300, 1600, 300], "target": [1300, 1600, 0]}\n' >"$WORK/down.json"

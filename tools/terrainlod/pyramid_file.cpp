@@ -111,8 +111,14 @@ void PyramidFile::parse_manifest(std::string_view text) {
       layout_.tiles_x.push_back(lv.at("tiles_x").get<int>());
       layout_.tiles_y.push_back(lv.at("tiles_y").get<int>());
       layout_.cells.push_back(lv.at("cells").get<int>());
+      // Read by stats and verify: checked here, so that a damaged manifest is refused on
+      // opening in fest's words, not later by the JSON library.
+      lv.at("eps").get<double>();
+      lv.at("lattice_bits").get<int>();
     }
     manifest_.at("z_quantum").get<double>();
+    manifest_.at("width").get<double>();
+    manifest_.at("height").get<double>();
     const auto tex = manifest_.find("texture");
     if (tex != manifest_.end() && !tex->is_null()) {
       const std::string format = tex->at("format").get<std::string>();
