@@ -48,7 +48,11 @@ TexturedMesh textured_mesh(const PyramidFile& pyr, const terrainlod::Selection& 
   for (const auto& [id, src] : source_of) out.sources.push_back(src);
   std::sort(out.sources.begin(), out.sources.end());
   out.sources.erase(std::unique(out.sources.begin(), out.sources.end()), out.sources.end());
-  for (const auto& [id, tri] : parts) {
+  for (const auto& part : parts) {
+    // Named references, not a structured binding: the lambda below uses them, and clang
+    // before 16 cannot capture a structured binding (the fuzz build uses clang 14).
+    const auto& id = part.first;
+    const auto& tri = part.second;
     const terrainlod::TileId src = source_of.at(id);  // parts are the selection's tiles
     const int k = static_cast<int>(std::lower_bound(out.sources.begin(), out.sources.end(), src) - out.sources.begin());
     // Texture coordinates in the source tile: the tile's own square is the sub-square
