@@ -71,7 +71,9 @@ run_one() {
     [ -d "$d" ] && find "$d" -type f -size -1024k -exec cp -n {} "$corpus/" \; 2>/dev/null
   done
   echo "fuzz.sh: $t for ${seconds}s"
-  "build-fuzz/bin/$t" "$corpus" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+  # The fuzz build's UBSan checks are recoverable: halting on the first one makes an
+  # undefined operation a finding with its input saved, not a line lost in the log.
+  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 "build-fuzz/bin/$t" "$corpus" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
     -timeout=10 -artifact_prefix="build-fuzz/findings/$t-" -print_final_stats=1 \
     >"build-fuzz/$t.log" 2>&1 || echo "fuzz.sh: $t stopped with a finding (see build-fuzz/$t.log)"
   grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "build-fuzz/$t.log" | tail -2 | sed "s/^/$t: /"

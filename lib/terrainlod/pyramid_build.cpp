@@ -285,6 +285,11 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
   const ReferenceSurface ref(padded, params.diagonal);
   double lo = padded.h[0], hi = lo;
   for (double z : padded.h) lo = std::min(lo, z), hi = std::max(hi, z);
+  // Finest height codes must stay within the format's range (tile.hpp).
+  if (std::max(std::fabs(lo), std::fabs(hi)) / params.z_quantum >= std::ldexp(1.0, kMaxHeightBits))
+    throw usage_error("heights up to {} in steps of {} need codes beyond the tile format's 2^{}; a coarser finest height "
+                      "quantum fits them",
+                      std::max(std::fabs(lo), std::fabs(hi)), params.z_quantum, kMaxHeightBits);
   const double tolerance = 1e-9 * std::max(1.0, hi - lo);
 
   for (const auto& lp : plan.level) {
@@ -296,7 +301,10 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
     lv.lattice_bits = log2_int(std::min(texels, lv.cells));
     const bool leaf = lp.level == plan.levels;
     lv.eps = leaf ? params.leaf_error : lp.eps;
-    lv.k = leaf ? 0 : std::max(0, static_cast<int>(std::floor(std::log2(params.height_quantum * lv.eps / pyr.delta_min))));
+    // Clamped as a double: a huge eps / delta_min must not reach the int conversion.
+    lv.k = leaf ? 0
+                : static_cast<int>(std::clamp(std::floor(std::log2(params.height_quantum * lv.eps / pyr.delta_min)), 0.0,
+                                              double{kMaxHeightBits}));
     // Quantization moves a height by at most half a bucket of 2^k finest steps.
     lv.limit = leaf ? lv.eps : std::max(0.0, lv.eps - std::ldexp(pyr.delta_min, lv.k) / 2);
     pyr.level.push_back(lv);
@@ -307,8 +315,13 @@ Pyramid build_pyramid_streaming(const HeightGrid& grid, double dx, double dy, co
   // every coarse border point is also a fine one.
   for (int l = plan.levels - 1; l >= 0; --l) {
     LevelInfo& lv = pyr.level[static_cast<std::size_t>(l)];
-    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level, std::max(1, params.threads)))
+    while ((1 << lv.lattice_bits) < lv.cells && !lattice_fits(ref, padded, lv, pyr.level, std::max(1, params.threads))) {
+      if (lv.lattice_bits == kMaxLatticeBits)
+        throw usage_error("level {} would need a tile lattice finer than 2^{} steps per side to keep its error budget; "
+                          "smaller tiles or a larger tolerance fit",
+                          l, kMaxLatticeBits);
       ++lv.lattice_bits;
+    }
   }
   for (int l = 1; l <= plan.levels; ++l)
     pyr.level[static_cast<std::size_t>(l)].lattice_bits =

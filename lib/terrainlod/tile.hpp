@@ -34,6 +34,16 @@ struct TileVertex {
   std::int64_t code = 0;   // G on the border, H = G >> k inside
 };
 
+// The format's limits (docs/terrainlod.md §4), checked by the builder before it codes and
+// by the decoder before it allocates or adds: a tile lattice of at most 2^13 steps per side
+// (the decoder holds the parent's surface on the child's lattice, (n + 1)^2 integers: 0.5 GB
+// at the limit; a level that needs more is refused at build), and finest height codes G
+// within +-2^52 (heights the double carried exactly), so every prediction (a sum of three
+// codes) and every doubled or shifted code stays inside 64 bits.
+constexpr int kMaxLatticeBits = 13;
+constexpr int kMaxHeightBits = 52;
+constexpr std::int64_t kMaxHeightCode = std::int64_t{1} << kMaxHeightBits;
+
 struct Tile {
   TileId id;
   int lattice_bits = 0;    // n = 2^lattice_bits lattice cells per side

@@ -207,6 +207,13 @@ std::uint64_t rice_cost(const std::vector<std::uint64_t>& values) { return 6 + r
 std::int64_t floor_shift(std::int64_t v, int bits) { return v >> bits; }  // arithmetic: floor(v / 2^bits)
 std::int64_t scale(std::int64_t v, int bits) { return v * (std::int64_t{1} << bits); }
 
+// A decoded height code within the format's range: +-kMaxHeightCode for finest codes G,
+// that shifted right by k for interior codes H.
+std::int64_t checked_height(std::int64_t code, std::int64_t limit, const std::string& name) {
+  if (code > limit || code < -limit) throw bad_input("{}: height code {} is beyond the format's range (+-{})", name, code, limit);
+  return code;
+}
+
 // Height predictors of the progressive coding (one flag bit each in the vertex section).
 enum HeightMode : std::uint64_t { kFromNeighbours = 0, kFromParentSurface = 1 };
 
@@ -244,11 +251,36 @@ std::int64_t predict_height(const TileVertex& v, std::int64_t guess, int k, Heig
 
 std::string tile_name(const TileId& id) { return fmt::format("tile {}/{}/{}", id.level, id.x, id.y); }
 
+// A decoded height code: its prediction plus a Rice-coded residual, refused outside
+// [-limit, limit] (tile.hpp's format limits). Predictions combine at most three codes in
+// range (|p| < 2^55), so checking the residual first keeps the sum inside 64 bits.
+std::int64_t add_height_residual(std::int64_t prediction, std::uint64_t coded, std::int64_t limit, const std::string& name) {
+  const std::int64_t residual = unzigzag(coded);
+  if (residual > 8 * kMaxHeightCode || residual < -8 * kMaxHeightCode)
+    throw bad_input("{}: a height residual of {} is beyond the format's range", name, residual);
+  return checked_height(prediction + residual, limit, name);
+}
+
+// A lattice coordinate from its prediction and a residual, both checked before the sum.
+int add_lattice_residual(int prediction, std::uint64_t coded, int n, const std::string& name) {
+  const std::int64_t residual = unzigzag(coded);
+  if (residual <= -n || residual >= n) throw bad_input("{}: interior vertex off the tile's interior", name);
+  return prediction + static_cast<int>(residual);
+}
+
 // The coding of `tile` with its triangles in the given strip order (vertex ids of the
 // tile), standalone (pv null) or relative to its parent; nullopt where the tile disagrees
 // with its parent (a height the parent fixes differs), so only standalone coding fits.
 std::optional<std::string> encode_with_strips(const Tile& tile, const std::vector<StripTriangle>& strips, const ParentView* pv,
                                               TileSizes* sizes) {
+  // What the decoder refuses is never written (tile.hpp's format limits).
+  if (tile.lattice_bits < 0 || tile.lattice_bits > kMaxLatticeBits || tile.fine_bits > kMaxLatticeBits ||
+      tile.k < 0 || tile.k > kMaxHeightBits)
+    throw runtime_failure("tile encoder: lattice or quantum beyond the format's limits");
+  for (const TileVertex& v : tile.vertices) {
+    const std::int64_t limit = tile.on_border(v) ? kMaxHeightCode : kMaxHeightCode >> tile.k;
+    if (v.code > limit || v.code < -limit) throw runtime_failure("tile encoder: height code beyond the format's range");
+  }
   const int n = tile.n();
   const int nb = 4 * n;
   const bool progressive = pv != nullptr;
@@ -550,8 +582,12 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
                     lr = get_le<std::uint32_t>(bytes, 58);
   const unsigned coding = version == 1 ? 0u : get_le<std::uint8_t>(bytes, 62);
   const std::string name = tile_name(tile.id);
-  if (tile.lattice_bits > 16 || tile.fine_bits > 16 || tile.k > 62 || tile.refinable > 15)
-    throw bad_input("{}: header out of range", name);
+  if (tile.lattice_bits > kMaxLatticeBits || tile.fine_bits > kMaxLatticeBits)
+    throw bad_input("{}: a lattice of 2^{} steps per side is beyond the format's 2^{}", name,
+                    std::max(tile.lattice_bits, tile.fine_bits), kMaxLatticeBits);
+  if (tile.k > kMaxHeightBits || tile.refinable > 15) throw bad_input("{}: header out of range", name);
+  checked_height(g0, kMaxHeightCode, name);
+  const std::int64_t h_limit = kMaxHeightCode >> tile.k;  // interior codes H = floor(G / 2^k)
   if (coding > 1) throw bad_input("{}: unknown coding {}", name, coding);
   const bool progressive = coding == static_cast<unsigned>(TileCoding::progressive);
   const std::size_t expected = header + lv + lc + lr;
@@ -591,12 +627,12 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
       if (iv.parent_border) continue;
       if (iv.child_border) {
         G[static_cast<std::size_t>(border_index(iv.X, iv.Y, n))] =
-            scale(iv.code, pv->parent_k) + static_cast<std::int64_t>(vert.get(pv->parent_k));
+            checked_height(scale(iv.code, pv->parent_k) + static_cast<std::int64_t>(vert.get(pv->parent_k)), kMaxHeightCode, name);
         continue;
       }
       if (!vert.get(1)) continue;
       const std::int64_t code = d >= 0 ? scale(iv.code, d) + static_cast<std::int64_t>(vert.get(d)) : floor_shift(iv.code, -d);
-      present.push_back({iv.X, iv.Y, code});
+      present.push_back({iv.X, iv.Y, checked_height(code, h_limit, name)});
     }
     if (G[0] != kUnknownHeight && G[0] != g0) throw bad_input("{}: its corner height disagrees with its parent's", name);
   }
@@ -622,7 +658,9 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
       if (next >= total) throw bad_input("{}: more new vertices than the header counts", name);
       r = next++;
       if (inherited_left > 0 && gap == 0) {
-        const std::int64_t i = last_inherited + 1 + unzigzag(conn.get_rice(k_inh));
+        const std::int64_t step = unzigzag(conn.get_rice(k_inh));
+        if (step < -n_present - 1 || step > n_present) throw bad_input("{}: bad inherited vertex reference", name);
+        const std::int64_t i = last_inherited + 1 + step;
         if (i < 0 || i >= n_present || present_used[static_cast<std::size_t>(i)])
           throw bad_input("{}: bad inherited vertex reference", name);
         present_used[static_cast<std::size_t>(i)] = 1;
@@ -681,7 +719,8 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
   // The rest of the vertex section: border heights, then the new interior vertices.
   for (int b = 1; b < nb; ++b)
     if (G[static_cast<std::size_t>(b)] == kUnknownHeight)
-      G[static_cast<std::size_t>(b)] = predict_border(G, b, n, border_mode, pv ? &*pv : nullptr) + unzigzag(vert.get_rice(k_b));
+      G[static_cast<std::size_t>(b)] =
+          add_height_residual(predict_border(G, b, n, border_mode, pv ? &*pv : nullptr), vert.get_rice(k_b), kMaxHeightCode, name);
   for (int b = 0; b < nb; ++b) {
     const auto [X, Y] = border_point(b, n);
     tile.vertices[static_cast<std::size_t>(b)] = {X, Y, G[static_cast<std::size_t>(b)]};
@@ -689,10 +728,11 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
   for (std::size_t j = 0; j < new_ids.size(); ++j) {
     const TileVertex guess = predict(tile.vertices, preds[j], n, tile.k, g0);
     TileVertex& v = tile.vertices[static_cast<std::size_t>(new_ids[j])];
-    v.X = guess.X + static_cast<int>(unzigzag(vert.get_rice(k_xy)));
-    v.Y = guess.Y + static_cast<int>(unzigzag(vert.get_rice(k_xy)));
+    v.X = add_lattice_residual(guess.X, vert.get_rice(k_xy), n, name);
+    v.Y = add_lattice_residual(guess.Y, vert.get_rice(k_xy), n, name);
     if (v.X <= 0 || v.Y <= 0 || v.X >= n || v.Y >= n) throw bad_input("{}: interior vertex off the tile's interior", name);
-    v.code = predict_height(v, guess.code, tile.k, height_mode, pv ? &*pv : nullptr) + unzigzag(vert.get_rice(k_h));
+    v.code = add_height_residual(predict_height(v, guess.code, tile.k, height_mode, pv ? &*pv : nullptr), vert.get_rice(k_h),
+                                 h_limit, name);
   }
   tile.triangles.reserve(raw.size());
   for (const auto& q : raw) {
@@ -716,7 +756,7 @@ Tile decode_with_strips(std::string_view bytes, const Tile* parent, std::vector<
       if (k > 40) throw bad_input("{}: bad Rice parameter", name);
       const std::size_t count = static_cast<std::size_t>(step_ratio - 1) * static_cast<std::size_t>(n);
       for (std::size_t i = 0; i < count; ++i) {
-        prev += unzigzag(refine.get_rice(k));
+        prev = add_height_residual(prev, refine.get_rice(k), kMaxHeightCode, name);
         tile.fine_G[s].push_back(prev);
       }
     }

@@ -49,7 +49,7 @@ ParentView parent_view(const Tile& parent, const TileId& child, int child_lattic
   if (!(parent.id == parent_id(child)))
     throw bad_input("{}: tile {}/{}/{} is not its parent", name, parent.id.level, parent.id.x, parent.id.y);
   const int np = parent.n();
-  if (child_lattice_bits > 16 || child_lattice_bits + 1 < parent.lattice_bits)
+  if (child_lattice_bits > kMaxLatticeBits || child_lattice_bits + 1 < parent.lattice_bits)
     throw bad_input("{}: its lattice does not refine its parent's", name);
   ParentView v;
   v.n = 1 << child_lattice_bits;

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "expect_error.hpp"
 #include "terrainlod/progressive_recode.hpp"
 #include "terrainlod/pyramid_build.hpp"
 #include "terrainlod/tile_codec.hpp"
@@ -310,3 +311,45 @@ TEST(TerrainlodProgressive, Version1StandaloneTilesStillDecode) {
 }
 
 }  // namespace
+
+// The format's limits (tile.hpp): a header naming a finer lattice, a larger quantum
+// exponent or a corner height beyond them is refused before anything is allocated, and
+// the encoder never writes what the decoder would refuse.
+TEST(TileCodecLimits, HeaderBeyondTheFormatIsRefused) {
+  const Tile t = lattice_tile({0, 0, 0}, 4, 0, 1, 0, 0);
+  const std::string good = encode_tile(t);
+  ASSERT_NO_THROW(decode_tile(good));
+  auto patched = [&](std::size_t offset, std::uint8_t value) {
+    std::string b = good;
+    b[offset] = static_cast<char>(value);
+    return b;
+  };
+  // Header bytes (tile_codec.cpp): 14 lattice bits, 15 fine bits, 16 k, 26..33 g0.
+  fest::test::expect_bad_input([&] { decode_tile(patched(14, kMaxLatticeBits + 1)); }, "beyond the format's 2^13");
+  fest::test::expect_bad_input([&] { decode_tile(patched(15, 16)); }, "beyond the format's 2^13");
+  fest::test::expect_bad_input([&] { decode_tile(patched(16, kMaxHeightBits + 1)); }, "header out of range");
+  fest::test::expect_bad_input([&] { decode_tile(patched(33, 0x40)); }, "beyond the format's range");  // g0 ~ 2^62
+
+  Tile high = t;
+  high.vertices[0].code = kMaxHeightCode + 1;
+  EXPECT_THROW(encode_tile(high), fest::Error);
+  Tile fine = t;
+  fine.lattice_bits = kMaxLatticeBits + 1;
+  EXPECT_THROW(encode_tile(fine), fest::Error);
+}
+
+// Heights at the very edge of the range survive the round trip (the limit is inclusive).
+TEST(TileCodecLimits, HeightsAtTheLimitRoundTrip) {
+  Tile t = lattice_tile({0, 0, 0}, 4, 3, 1, 0, 0);
+  for (TileVertex& v : t.vertices) {
+    const bool border = v.X == 0 || v.Y == 0 || v.X == 4 || v.Y == 4;
+    const std::int64_t limit = border ? kMaxHeightCode : kMaxHeightCode >> t.k;
+    v.code = (v.X + v.Y) % 2 ? limit : -limit;
+  }
+  const Tile back = decode_tile(encode_tile(t));
+  ASSERT_EQ(back.vertices.size(), t.vertices.size());
+  std::multiset<std::tuple<int, int, std::int64_t>> a, b;
+  for (const auto& v : t.vertices) a.insert({v.X, v.Y, v.code});
+  for (const auto& v : back.vertices) b.insert({v.X, v.Y, v.code});
+  EXPECT_EQ(a, b);
+}
