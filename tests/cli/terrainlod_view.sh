@@ -66,25 +66,7 @@ cp "$WORK/auto.json" "$out"
 expect_json '[.camera.automatic, .camera.width, .camera.height]' '[true,1280,800]'
 # Pinhole projection of every OBJ vertex with the reported camera (docs/terrainlod.md §5).
 project() {  # report obj -> "inside_all fill_x fill_y"
-  python3 - "$1" "$2" <<'PY'
-import json, math, sys
-c = json.load(open(sys.argv[1]))["camera"]
-sub = lambda a, b: [a[i] - b[i] for i in range(3)]
-dot = lambda a, b: sum(a[i] * b[i] for i in range(3))
-cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-norm = lambda a: [x / math.sqrt(dot(a, a)) for x in a]
-f = norm(sub(c["target"], c["eye"])); r = norm(cross(f, c["up"])); u = cross(r, f)
-W, H = c["width"], c["height"]; fpx = (H / 2) / math.tan(math.radians(c["fovy_deg"]) / 2)
-xs, ys, ok = [], [], True
-for line in open(sys.argv[2]):
-    if line.startswith("v "):
-        d = sub([float(v) for v in line.split()[1:4]], c["eye"])
-        z = dot(d, f)
-        x, y = W / 2 + fpx * dot(d, r) / z, H / 2 - fpx * dot(d, u) / z
-        ok = ok and z > c["near"] and 0 <= x <= W and 0 <= y <= H
-        xs.append(x); ys.append(y)
-print(int(ok), (max(xs) - min(xs)) / W, (max(ys) - min(ys)) / H)
-PY
+  python3 "$(dirname "$0")/terrainlod/project.py" "$1" "$2"
 }
 for preset in overview oblique north south east west top; do
   run terrainlod extract "$WORK/odd.tlp" --clip --camera-preset $preset -o "$WORK/p.obj" --report "$WORK/p.json"
