@@ -43,6 +43,16 @@ run radiosity solve "$WORK/meshdir/scene.json" --emission exitance --ff analytic
 expect_status 0
 check "B = 2 to 1e-3, diagonal 3 sqrt 3" jq -e '(.radiosity.min | all(. >= 1.998)) and (.radiosity.max | all(. <= 2.002)) and ((.scene.diagonal - 5.196152) | fabs < 1e-5)' "$WORK/mesh_r.json"
 
+case_ "a glTF mesh whose geometry is in an external .bin, named by a scene in another folder"
+# The quad (10,20,30)-(13,22,30) of fconv_scenes.sh; alone it sees nothing, so B = E = 1.
+mkdir -p "$WORK/gltfscene"
+printf '{"objects": [{"name": "quad", "mesh": "%s", "reflectance": 0.5, "emission": 1}]}' \
+  "$FEST_FIXTURES/mesh/external_buffer/quad.gltf" >"$WORK/gltfscene/scene.json"
+run radiosity solve "$WORK/gltfscene/scene.json" --emission exitance --ff analytic --levels 0 --patch-size 1 \
+  --report "$WORK/gltf_r.json" -o /dev/null
+expect_status 0
+check "B = 1, diagonal sqrt 13" jq -e '(.radiosity.min | all(. > 0.999)) and (.radiosity.max | all(. < 1.001)) and ((.scene.diagonal - 3.605551) | fabs < 1e-5)' "$WORK/gltf_r.json"
+
 case_ "furnace rho 0.9 with the hemicube: mean B = 10 (energy), every element within 5 %"
 sed 's/0.5, 0.5, 0.5/0.9, 0.9, 0.9/' "$EX/furnace.json" >"$WORK/furnace9.json"
 run radiosity solve "$WORK/furnace9.json" --emission exitance --ff hemicube --hemicube-res 128 --tol 1e-4 --max-shots 100000 --levels 0 \

@@ -7,6 +7,7 @@
 #include "core/file_io.hpp"
 #include "core/threads.hpp"
 #include "formats/detect.hpp"
+#include "formats/input.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "radiosity/form_factors.hpp"
 
@@ -15,13 +16,7 @@ namespace {
 
 // One planar polygon of 3 or 4 corners from a mesh file.
 radiosity::Polygon read_polygon(const std::string& path) {
-  const std::string bytes = read_input(path);
-  Mesh mesh;
-  try {
-    mesh = formats::read_mesh(bytes, formats::detect_format(bytes, path));
-  } catch (const Error& e) {
-    throw Error(e.status(), with_location(e.what(), path));
-  }
+  const Mesh mesh = formats::parse(formats::load_input(path), formats::read_mesh);
   if (mesh.n_faces() != 1) throw bad_input("expected one polygon, found {} faces ({})", mesh.n_faces(), path);
   radiosity::Polygon p;
   for (auto vh : mesh.fv_range(*mesh.faces().begin())) {

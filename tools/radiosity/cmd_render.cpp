@@ -9,6 +9,7 @@
 #include "core/input_name.hpp"
 #include "core/threads.hpp"
 #include "formats/detect.hpp"
+#include "formats/input.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "view.hpp"
@@ -16,17 +17,11 @@
 namespace fest::radiosity_tool {
 
 int run_render(const RenderArgs& args) {
-  const std::string bytes = read_input(args.input);
   const std::string where = input_name(args.input);
-  // detect_format names the input in its own message; the reader's messages get it here.
-  const formats::Format format = formats::detect_format(bytes, where);
-  Mesh mesh;
-  try {
-    if (formats::kind_of(format) != formats::Kind::mesh) throw bad_input("not a mesh");
-    mesh = formats::read_mesh(bytes, format);
-  } catch (const Error& e) {
-    throw Error(e.status(), with_location(e.what(), where));
-  }
+  const formats::Input in = formats::load_input(args.input);
+  if (formats::kind_of(in.format) != formats::Kind::mesh) throw bad_input("not a mesh ({})", where);
+  // read_mesh(Input): a glTF's external buffers are found beside the input.
+  const Mesh mesh = formats::parse(in, formats::read_mesh);
   if (!mesh.has_vertex_colors()) throw bad_input("the mesh has no vertex colours to show ({})", where);
   ViewMesh vm;
   for (auto vh : mesh.vertices()) {

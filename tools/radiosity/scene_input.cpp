@@ -9,6 +9,7 @@
 #include "core/file_io.hpp"
 #include "core/input_name.hpp"
 #include "formats/detect.hpp"
+#include "formats/input.hpp"
 #include "formats/mesh/attributed_ply.hpp"
 #include "formats/mesh/mesh_io.hpp"
 #include "radiosity/scene_json.hpp"
@@ -106,13 +107,8 @@ radiosity::Scene read_scene(const std::string& path) {
     if (file.mesh_paths[i].empty()) continue;
     std::filesystem::path mp(file.mesh_paths[i]);
     if (mp.is_relative()) mp = base / mp;
-    const std::string mesh_bytes = read_input(mp.string());
-    Mesh mesh;
-    try {
-      mesh = formats::read_mesh(mesh_bytes, formats::detect_format(mesh_bytes, mp.string()));
-    } catch (const Error& e) {
-      throw Error(e.status(), with_location(e.what(), mp.string()));
-    }
+    // load_input + read_mesh(Input): a glTF's external buffers are found beside the mesh.
+    const Mesh mesh = formats::parse(formats::load_input(mp.string()), formats::read_mesh);
     if (const std::size_t skipped = formats::skipped_faces(mesh); skipped > 0)
       throw bad_input("{} face(s) the mesh structure cannot hold (non-manifold) ({})", skipped, mp.string());
     radiosity::SceneObject& o = file.scene.objects[i];
