@@ -402,7 +402,7 @@ verify_cerebellum(C) :-
 % midbrain to the medial temporal lobes: without it the component is 36-190 ml and spans
 % the whole region. So the lateral sides at the pons are still the core's planes moved
 % out by E (rounded, not a real boundary). Verified by volume and by being taller than deep.
-limit(brainstem_top_below_ventricles_mm, 14).
+limit(brainstem_top_below_ventricles_mm, 10).
 limit(brainstem_front_of_ventricles_mm, 10).
 limit(brainstem_behind_ventricles_mm, 20).
 limit(brainstem_bottom_below_ventricles_mm, 60).
@@ -411,6 +411,7 @@ limit(brainstem_seed_below_ventricles_mm, 30).
 limit(brainstem_seed_behind_ventricles_mm, 8).
 limit(brainstem_seed_radius_mm, 6).
 limit(brainstem_core_half_width_mm, 10).
+limit(brainstem_half_width_max_mm, 16).
 limit(brainstem_min_ml, 15).  limit(brainstem_max_ml, 50).
 candidates(brainstem_separation_mm, [4, 5, 3, 6]).
 
@@ -434,7 +435,9 @@ find_brainstem :-
     halfspace(r, above, Rc0, bc1), halfspace(r, below, Rc1, bc2),
     erode(bsearch, E, bcore0), and(bcore0, bc1, bcore1), and(bcore1, bc2, bcore2),
     and(bcore2, bseed, bseed1), geodesic_dilate(bseed1, bcore2, 1000, bcore),
-    geodesic_dilate(bcore, bsearch, E, brainstem),
+    geodesic_dilate(bcore, bsearch, E, bgrown),
+    limit(brainstem_half_width_max_mm, Wm), lateral_extent(bgrown, bt0, Rm, Wm, brows),
+    and(brows, bsearch, bsides), open(bsides, 1.5, bopen), geodesic_dilate(bcore, bopen, 1000, brainstem),
     verify_brainstem(brainstem), !.
 verify_brainstem(M) :-
     volume_ml(M, V), limit(brainstem_min_ml, Lo), limit(brainstem_max_ml, Hi), V >= Lo, V =< Hi,
