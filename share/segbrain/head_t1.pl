@@ -402,33 +402,33 @@ verify_cerebellum(C) :-
 % midbrain to the medial temporal lobes: without it the component is 36-190 ml and spans
 % the whole region. So the lateral sides at the pons are still the core's planes moved
 % out by E (rounded, not a real boundary). Verified by volume and by being taller than deep.
-limit(brainstem_top_below_ventricles_mm, 10).
-limit(brainstem_front_of_ventricles_mm, 10).
-limit(brainstem_behind_ventricles_mm, 20).
-limit(brainstem_bottom_below_ventricles_mm, 60).
+limit(brainstem_top_below_brain_centre_mm, 12).
+limit(brainstem_front_of_brain_centre_mm, 10).
+limit(brainstem_behind_brain_centre_mm, 20).
+limit(brainstem_bottom_below_brain_centre_mm, 62).
 limit(brainstem_search_half_width_mm, 28).
-limit(brainstem_seed_below_ventricles_mm, 30).
-limit(brainstem_seed_behind_ventricles_mm, 8).
+limit(brainstem_seed_below_brain_centre_mm, 32).
+limit(brainstem_seed_behind_brain_centre_mm, 8).
 limit(brainstem_seed_radius_mm, 6).
 limit(brainstem_core_half_width_mm, 10).
-limit(brainstem_half_width_max_mm, 16).
+limit(brainstem_half_width_max_mm, 14).
 limit(brainstem_min_ml, 15).  limit(brainstem_max_ml, 50).
 candidates(brainstem_separation_mm, [4, 5, 3, 6]).
 
 find_brainstem :-
     wm_reference(W), window(t1, brain, A, B), Lo is A * W, Hi is B * W,
-    midsagittal_r(Rm), centroid_mm(ventricles, [_, Av, Sv]),
-    limit(brainstem_top_below_ventricles_mm, Dt), St is Sv - Dt,
-    limit(brainstem_front_of_ventricles_mm, Df), Af is Av + Df,
+    midsagittal_r(Rm), centroid_mm(brain_filled, [_, Ab, Sb]),
+    limit(brainstem_top_below_brain_centre_mm, Dt), St is Sb - Dt,
+    limit(brainstem_front_of_brain_centre_mm, Df), Af is Ab + Df,
     limit(brainstem_search_half_width_mm, Hw), R0 is Rm - Hw, R1 is Rm + Hw,
-    limit(brainstem_behind_ventricles_mm, Dk), Ak is Av - Dk,
-    limit(brainstem_bottom_below_ventricles_mm, Dm), Sm is Sv - Dm, halfspace(s, above, Sm, bs6),
+    limit(brainstem_behind_brain_centre_mm, Dk), Ak is Ab - Dk,
+    limit(brainstem_bottom_below_brain_centre_mm, Dm), Sm is Sb - Dm, halfspace(s, above, Sm, bs6),
     halfspace(s, below, St, bs1), halfspace(a, below, Af, bs2), halfspace(a, above, Ak, bs5),
     halfspace(r, above, R0, bs3), halfspace(r, below, R1, bs4),
     threshold(t1, Lo, Hi, btis), and(btis, brain_filled, bt0),
     and(bt0, bs1, bt1), and(bt1, bs2, bt2), and(bt2, bs3, bt3), and(bt3, bs4, bt4), and(bt4, bs5, bt5), and(bt5, bs6, bsearch),
-    limit(brainstem_seed_below_ventricles_mm, Ds), Ss is Sv - Ds,
-    limit(brainstem_seed_behind_ventricles_mm, Db), As is Av - Db,
+    limit(brainstem_seed_below_brain_centre_mm, Ds), Ss is Sb - Ds,
+    limit(brainstem_seed_behind_brain_centre_mm, Db), As is Ab - Db,
     limit(brainstem_seed_radius_mm, Rs), ball([Rm, As, Ss], Rs, bseed),
     candidates(brainstem_separation_mm, Es), member(E, Es),
     limit(brainstem_core_half_width_mm, Hc), Rc0 is Rm - Hc, Rc1 is Rm + Hc,
