@@ -389,19 +389,21 @@ verify_cerebellum(C) :-
     midsagittal_r(Rm), mirror_dice(C, Rm, D), limit(cerebellum_mirror_dice_min, Dm), D >= Dm.
 
 % Brainstem (figure 2.1), a RECONSTRUCTION calibrated on Colin27 against the JHU atlas's
-% midbrain, pons and medulla (docs/segbrain.md §4): the tissue column about the midline
-% below the diencephalon, apart from the temporal lobes by the ambient and prepontine
-% cisterns and from the cerebellum by the fourth ventricle. Sought BEFORE the cerebellum,
-% which then excludes it (at 0.5 mm the cerebellum, placed first, took the medulla):
-% brain tissue in a region of +-28 mm about the midsagittal plane, 14-60 mm below and
-% from 10 mm in front of to 20 mm behind the ventricles' centroid, eroded by E mm so that
-% thin bridges break; the eroded part inside +-10 mm that touches a seed ball on the
-% midline (30 mm below, 8 mm behind the ventricles' centroid), grown back geodesically
-% by E mm inside the region's tissue. The +-10 mm core column is needed because at 1 mm
-% even a 6 mm erosion leaves the pons joined to the cerebellum (middle peduncles) and the
-% midbrain to the medial temporal lobes: without it the component is 36-190 ml and spans
-% the whole region. So the lateral sides at the pons are still the core's planes moved
-% out by E (rounded, not a real boundary). Verified by volume and by being taller than deep.
+% midbrain, pons and medulla (docs/segbrain.md §4, §5 "The brainstem"): the tissue column
+% about the midline below the diencephalon, apart from the temporal lobes by the ambient
+% and prepontine cisterns and from the cerebellum by the fourth ventricle. Sought BEFORE
+% the cerebellum, which then excludes it (at 0.5 mm the cerebellum, placed first, took the
+% medulla). Where: brain tissue in a region of +-28 mm about the midsagittal plane, 12-62 mm
+% below and from 10 mm in front of to 20 mm behind the brain's centroid (the ventricles'
+% centroid moved 9 mm between Colin27 at 1 mm and at 0.5 mm, the brain's 0.6 mm), eroded by
+% E mm so that thin bridges break; the eroded part inside +-10 mm that touches a seed ball
+% on the midline (32 mm below, 8 mm behind the brain's centroid), grown back geodesically
+% by E mm inside the region's tissue. (At 1 mm even a 6 mm erosion leaves the pons joined
+% to the cerebellum and the midbrain to the medial temporal lobes: without the +-10 mm core
+% the component spans the whole region.) Its sides: row by row across the midline, the
+% tissue out to the CSF within 14 mm of the plane (the candidate's own half width); rows
+% that run on to 14 mm (a peduncle, the diencephalon) take the chord between the bounded
+% rows above and below. Verified by volume and by being taller than deep.
 limit(brainstem_top_below_brain_centre_mm, 12).
 limit(brainstem_front_of_brain_centre_mm, 10).
 limit(brainstem_behind_brain_centre_mm, 20).
