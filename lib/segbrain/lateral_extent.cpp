@@ -17,7 +17,7 @@ constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
 constexpr double kOpen = -1.0;
 
 bool present(double v) { return !std::isnan(v); }
-bool open(double v) { return v == kOpen; }
+bool is_open_end(double v) { return v == kOpen; }
 
 // Fills the open entries of one line of ends (`count` entries `stride` apart from `first`)
 // by linear interpolation between the nearest closed entries on both sides.
@@ -25,11 +25,11 @@ void interpolate_line(std::vector<double>& ends, std::size_t first, std::size_t 
   std::size_t prev = count;  // index of the last closed entry, count = none
   for (std::size_t k = 0; k < count; ++k) {
     const double v = ends[first + k * stride];
-    if (!present(v) || open(v)) continue;
+    if (!present(v) || is_open_end(v)) continue;
     if (prev != count)
       for (std::size_t m = prev + 1; m < k; ++m) {
         double& e = ends[first + m * stride];
-        if (!open(e)) continue;
+        if (!is_open_end(e)) continue;
         const double a = ends[first + prev * stride];
         e = a + (v - a) * double(m - prev) / double(k - prev);
       }
@@ -93,10 +93,10 @@ Mask lateral_extent(const Grid& g, const Mask& candidate, const Mask& within, do
     for (std::size_t z = 0; z < nz; ++z) {
       std::vector<double> closed;
       for (std::size_t y = 0; y < ny; ++y)
-        if (present(e[y + ny * z]) && !open(e[y + ny * z])) closed.push_back(e[y + ny * z]);
+        if (present(e[y + ny * z]) && !is_open_end(e[y + ny * z])) closed.push_back(e[y + ny * z]);
       const double fill = closed.empty() ? max_half_width_mm : median_of(closed);
       for (std::size_t y = 0; y < ny; ++y)
-        if (open(e[y + ny * z])) e[y + ny * z] = fill;
+        if (is_open_end(e[y + ny * z])) e[y + ny * z] = fill;
     }
     // Median over the rows within 2 mm along S and 1 mm along A: one row's stray end (a
     // vessel, a sulcus of partial volume) does not notch the outline.
