@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "segbrain/filters.hpp"
+#include "segbrain/lateral_extent.hpp"
 #include "segbrain/measures.hpp"
 #include "segbrain/morphology.hpp"
 #include "segbrain/shape.hpp"
@@ -267,6 +268,15 @@ void Workspace::register_operators(Engine& engine) {
   engine.register_foreign("geodesic_dilate", 4, "+Mask, +Within, +RadiusMM, -Out", "growth by at most RadiusMM along paths inside Within",
       [this](Engine& e, const std::vector<Term>& a) {
         return create(e, a[3], mask_object(geodesic_dilate(grid_, mask(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]))));
+      });
+  engine.register_foreign("lateral_extent", 5, "+Mask, +Within, +PlaneRMM, +MaxHalfWidthMM, -Out",
+      "per row along R, each side from the mask's voxel nearest the plane outward while in Within, at most MaxHalfWidthMM; "
+      "sides that reach the limit bridged by interpolation between bounded rows (along S, then A), smoothed",
+      [this](Engine& e, const std::vector<Term>& a) {
+        LateralExtentStats st;
+        Mask m = lateral_extent(grid_, mask(name_of(a[0])), mask(name_of(a[1])), num(e, a[2]), num(e, a[3]), &st);
+        e.measure() = {{"row_sides", double(st.sides)}, {"open_fraction", st.sides ? double(st.open_sides) / double(st.sides) : 0.0}};
+        return create(e, a[4], mask_object(std::move(m)));
       });
   engine.register_foreign("centroid_mm", 2, "+Mask, -[R,A,S]", "mean voxel position (fails for an empty mask)",
       [this](Engine& e, const std::vector<Term>& a) {

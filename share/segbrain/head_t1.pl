@@ -389,52 +389,57 @@ verify_cerebellum(C) :-
     midsagittal_r(Rm), mirror_dice(C, Rm, D), limit(cerebellum_mirror_dice_min, Dm), D >= Dm.
 
 % Brainstem (figure 2.1), a RECONSTRUCTION calibrated on Colin27 against the JHU atlas's
-% midbrain, pons and medulla (docs/segbrain.md §4): the tissue column about the midline
-% below the diencephalon, apart from the temporal lobes by the ambient and prepontine
-% cisterns and from the cerebellum by the fourth ventricle. Sought BEFORE the cerebellum,
-% which then excludes it (at 0.5 mm the cerebellum, placed first, took the medulla):
-% brain tissue in a region of +-28 mm about the midsagittal plane, 14-60 mm below and
-% from 10 mm in front of to 20 mm behind the ventricles' centroid, eroded by E mm so that
-% thin bridges break; the eroded part inside +-10 mm that touches a seed ball on the
-% midline (30 mm below, 8 mm behind the ventricles' centroid), grown back geodesically
-% by E mm inside the region's tissue. The +-10 mm core column is needed because at 1 mm
-% even a 6 mm erosion leaves the pons joined to the cerebellum (middle peduncles) and the
-% midbrain to the medial temporal lobes: without it the component is 36-190 ml and spans
-% the whole region. So the lateral sides at the pons are still the core's planes moved
-% out by E (rounded, not a real boundary). Verified by volume and by being taller than deep.
-limit(brainstem_top_below_ventricles_mm, 14).
-limit(brainstem_front_of_ventricles_mm, 10).
-limit(brainstem_behind_ventricles_mm, 20).
-limit(brainstem_bottom_below_ventricles_mm, 60).
+% midbrain, pons and medulla (docs/segbrain.md §4, §5 "The brainstem"): the tissue column
+% about the midline below the diencephalon, apart from the temporal lobes by the ambient
+% and prepontine cisterns and from the cerebellum by the fourth ventricle. Sought BEFORE
+% the cerebellum, which then excludes it (at 0.5 mm the cerebellum, placed first, took the
+% medulla). Where: brain tissue in a region of +-28 mm about the midsagittal plane, 12-62 mm
+% below and from 10 mm in front of to 20 mm behind the brain's centroid (the ventricles'
+% centroid moved 9 mm between Colin27 at 1 mm and at 0.5 mm, the brain's 0.6 mm), eroded by
+% E mm so that thin bridges break; the eroded part inside +-10 mm that touches a seed ball
+% on the midline (32 mm below, 8 mm behind the brain's centroid), grown back geodesically
+% by E mm inside the region's tissue. (At 1 mm even a 6 mm erosion leaves the pons joined
+% to the cerebellum and the midbrain to the medial temporal lobes: without the +-10 mm core
+% the component spans the whole region.) Its sides: row by row across the midline, the
+% tissue out to the CSF within 14 mm of the plane (the candidate's own half width); rows
+% that run on to 14 mm (a peduncle, the diencephalon) take the chord between the bounded
+% rows above and below. Verified by volume and by being taller than deep.
+limit(brainstem_top_below_brain_centre_mm, 12).
+limit(brainstem_front_of_brain_centre_mm, 10).
+limit(brainstem_behind_brain_centre_mm, 20).
+limit(brainstem_bottom_below_brain_centre_mm, 62).
 limit(brainstem_search_half_width_mm, 28).
-limit(brainstem_seed_below_ventricles_mm, 30).
-limit(brainstem_seed_behind_ventricles_mm, 8).
+limit(brainstem_seed_below_brain_centre_mm, 32).
+limit(brainstem_seed_behind_brain_centre_mm, 8).
 limit(brainstem_seed_radius_mm, 6).
 limit(brainstem_core_half_width_mm, 10).
+limit(brainstem_half_width_max_mm, 14).
 limit(brainstem_min_ml, 15).  limit(brainstem_max_ml, 50).
 candidates(brainstem_separation_mm, [4, 5, 3, 6]).
 
 find_brainstem :-
     wm_reference(W), window(t1, brain, A, B), Lo is A * W, Hi is B * W,
-    midsagittal_r(Rm), centroid_mm(ventricles, [_, Av, Sv]),
-    limit(brainstem_top_below_ventricles_mm, Dt), St is Sv - Dt,
-    limit(brainstem_front_of_ventricles_mm, Df), Af is Av + Df,
+    midsagittal_r(Rm), centroid_mm(brain_filled, [_, Ab, Sb]),
+    limit(brainstem_top_below_brain_centre_mm, Dt), St is Sb - Dt,
+    limit(brainstem_front_of_brain_centre_mm, Df), Af is Ab + Df,
     limit(brainstem_search_half_width_mm, Hw), R0 is Rm - Hw, R1 is Rm + Hw,
-    limit(brainstem_behind_ventricles_mm, Dk), Ak is Av - Dk,
-    limit(brainstem_bottom_below_ventricles_mm, Dm), Sm is Sv - Dm, halfspace(s, above, Sm, bs6),
+    limit(brainstem_behind_brain_centre_mm, Dk), Ak is Ab - Dk,
+    limit(brainstem_bottom_below_brain_centre_mm, Dm), Sm is Sb - Dm, halfspace(s, above, Sm, bs6),
     halfspace(s, below, St, bs1), halfspace(a, below, Af, bs2), halfspace(a, above, Ak, bs5),
     halfspace(r, above, R0, bs3), halfspace(r, below, R1, bs4),
     threshold(t1, Lo, Hi, btis), and(btis, brain_filled, bt0),
     and(bt0, bs1, bt1), and(bt1, bs2, bt2), and(bt2, bs3, bt3), and(bt3, bs4, bt4), and(bt4, bs5, bt5), and(bt5, bs6, bsearch),
-    limit(brainstem_seed_below_ventricles_mm, Ds), Ss is Sv - Ds,
-    limit(brainstem_seed_behind_ventricles_mm, Db), As is Av - Db,
+    limit(brainstem_seed_below_brain_centre_mm, Ds), Ss is Sb - Ds,
+    limit(brainstem_seed_behind_brain_centre_mm, Db), As is Ab - Db,
     limit(brainstem_seed_radius_mm, Rs), ball([Rm, As, Ss], Rs, bseed),
     candidates(brainstem_separation_mm, Es), member(E, Es),
     limit(brainstem_core_half_width_mm, Hc), Rc0 is Rm - Hc, Rc1 is Rm + Hc,
     halfspace(r, above, Rc0, bc1), halfspace(r, below, Rc1, bc2),
     erode(bsearch, E, bcore0), and(bcore0, bc1, bcore1), and(bcore1, bc2, bcore2),
     and(bcore2, bseed, bseed1), geodesic_dilate(bseed1, bcore2, 1000, bcore),
-    geodesic_dilate(bcore, bsearch, E, brainstem),
+    geodesic_dilate(bcore, bsearch, E, bgrown),
+    limit(brainstem_half_width_max_mm, Wm), lateral_extent(bgrown, bt0, Rm, Wm, brows),
+    and(brows, bsearch, bsides), open(bsides, 1.5, bopen), geodesic_dilate(bcore, bopen, 1000, brainstem),
     verify_brainstem(brainstem), !.
 verify_brainstem(M) :-
     volume_ml(M, V), limit(brainstem_min_ml, Lo), limit(brainstem_max_ml, Hi), V >= Lo, V =< Hi,

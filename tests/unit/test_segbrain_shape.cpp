@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "segbrain/lateral_extent.hpp"
 #include "segbrain/morphology.hpp"
 #include "segbrain/shape.hpp"
 
@@ -138,4 +139,58 @@ TEST(SegbrainShape, MirrorDiceAndMidsagittalPlane) {
       }
   Mask all = box(g, 8, 40, 0, 19, 0, 9);  // centroid x 24 -> 36 mm
   EXPECT_NEAR(midsagittal_r_mm(g, img, all, 15), 23 * 1.5, 0.75 + 1e-9);
+}
+
+// docs/segbrain.md §5, "The brainstem": a row's side ends where it leaves the tissue; a
+// side that runs to the limit is the chord between the bounded rows above and below. A
+// column on the plane R = 20 mm; tissue is bounded 6 mm out at the lowest section and 10 mm
+// out at the highest, unbounded in between (limit 12 mm): the last tissue voxel lies
+// 6 - sx and 10 - sx mm out, and the open sections in between get the linear
+// interpolation, e(z) = (6 - sx) + 0.4 z. The smoothing median of a linear profile is the
+// profile itself away from the ends; the same in mm at half the voxel size.
+TEST(SegbrainShape, LateralExtentEndsAtTheBoundaryAndBridgesBetween) {
+  for (double sx : {1.0, 0.5}) {
+    const std::size_t nx = static_cast<std::size_t>(40 / sx) + 1, plane = static_cast<std::size_t>(20 / sx);
+    Grid g = grid(nx, 5, 11, sx, 1, 1);
+    Mask cand(g.size()), within(g.size(), 1);
+    for (std::size_t z = 0; z < 11; ++z)
+      for (std::size_t y = 0; y < 5; ++y) cand[g.index(plane, y, z)] = 1;
+    for (std::size_t y = 0; y < 5; ++y) {
+      const std::size_t low = static_cast<std::size_t>(6 / sx), high = static_cast<std::size_t>(10 / sx);
+      within[g.index(plane - low, y, 0)] = within[g.index(plane + low, y, 0)] = 0;
+      within[g.index(plane - high, y, 10)] = within[g.index(plane + high, y, 10)] = 0;
+    }
+    LateralExtentStats st;
+    Mask out = lateral_extent(g, cand, within, 20.0, 12.0, &st);
+    EXPECT_EQ(st.sides, 110u);
+    EXPECT_EQ(st.open_sides, 90u);  // sections 1..9, both sides, 5 rows each
+    for (std::size_t z = 2; z <= 8; ++z)
+      for (std::size_t y = 0; y < 5; ++y) {
+        const double end = (6 - sx) + 0.4 * double(z);
+        std::size_t n = 0;
+        for (std::size_t x = 0; x < nx; ++x) n += out[g.index(x, y, z)];
+        EXPECT_EQ(n, 2 * static_cast<std::size_t>(std::floor(end / sx + 1e-9)) + 1) << "sx " << sx << " z " << z;
+        EXPECT_TRUE(out[g.index(plane, y, z)]);
+      }
+    // The closed sections themselves: the voxels up to the boundary, not past it (the
+    // window of the lowest section reaches two open sections above it, hence the median
+    // of 6 - sx, 6.4 - sx, 6.8 - sx: 6.4 - sx).
+    std::size_t n0 = 0;
+    for (std::size_t x = 0; x < nx; ++x) n0 += out[g.index(x, 2, 0)];
+    EXPECT_EQ(n0, 2 * static_cast<std::size_t>(std::floor((6.4 - sx) / sx + 1e-9)) + 1) << "sx " << sx;
+  }
+}
+
+// Rows without a candidate voxel stay empty; a section whose rows all run to the limit
+// and have no bounded row above, below or beside them takes the limit itself.
+TEST(SegbrainShape, LateralExtentKeepsEmptyRowsAndFallsBackToTheLimit) {
+  Grid g = grid(31, 3, 3);
+  Mask cand(g.size()), within(g.size(), 1);
+  cand[g.index(15, 1, 1)] = 1;
+  LateralExtentStats st;
+  Mask out = lateral_extent(g, cand, within, 15.0, 4.0, &st);
+  EXPECT_EQ(st.sides, 2u);
+  EXPECT_EQ(st.open_sides, 2u);
+  EXPECT_EQ(count(out), 9u);  // 15 - 4 .. 15 + 4 in the one row
+  for (std::size_t x = 11; x <= 19; ++x) EXPECT_TRUE(out[g.index(x, 1, 1)]);
 }
