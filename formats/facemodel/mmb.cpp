@@ -1,4 +1,5 @@
 #include "formats/facemodel/mmb.hpp"
+#include "core/json_integer.hpp"
 #include "core/quote.hpp"
 #include "core/quote.hpp"
 
@@ -64,7 +65,7 @@ std::map<std::string, ArrayRef> array_table(const nlohmann::json& header, const 
       ref.count *= v;
       ref.shape.push_back(v);
     }
-    const std::uint64_t offset = a["offset"].get<std::uint64_t>();
+    const std::uint64_t offset = fest::json_integer<std::uint64_t>(a["offset"]);
     if (offset % es != 0) throw bad_input("mmb array '{}': offset {} not aligned to its element size", fest::quoted_bytes(name), offset);
     if (offset > size || ref.count * es > size - offset)
       throw bad_input("mmb array '{}': bytes {}..{} lie beyond the end of the file ({} bytes): truncated", fest::quoted_bytes(name), offset,
@@ -143,7 +144,7 @@ face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_pt
     if (!header["landmarks"].is_object()) throw bad_input("mmb header: landmarks must be an object");
     for (const auto& [name, v] : header["landmarks"].items()) {
       if (!v.is_number_unsigned()) throw bad_input("mmb header: landmark '{}' is not a vertex index", fest::quoted_bytes(name));
-      m.landmarks[name] = v.get<std::uint32_t>();
+      m.landmarks[name] = fest::json_integer<std::uint32_t>(v);
     }
   }
 

@@ -1,4 +1,5 @@
 #include "brdffit/ltw_format.hpp"
+#include "core/json_integer.hpp"
 #include "core/quote.hpp"
 
 #include <cmath>
@@ -78,8 +79,8 @@ Projection decode_ltw(std::string_view bytes, nlohmann::json* header_out) {
   Projection p;
   try {
     p.basis.model = model_from_json(h.at("model"));
-    const std::size_t n = h.at("lumitexels").get<std::size_t>();
-    p.basis_size = h.at("basis_size").get<int>();
+    const std::size_t n = json_integer<std::size_t>(h.at("lumitexels"));
+    p.basis_size = json_integer<int>(h.at("basis_size"));
     const std::string mode = h.at("weights").get<std::string>();
     if (mode != "scalar" && mode != "rgb") throw bad_input(".ltw header: weights must be scalar or rgb");
     p.mode = mode == "rgb" ? WeightMode::rgb : WeightMode::scalar;
@@ -93,7 +94,7 @@ Projection decode_ltw(std::string_view bytes, nlohmann::json* header_out) {
       p.basis.brdfs.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), np));
     }
     for (const auto& c : h.at("clusters")) {
-      std::vector<int> list = c.at("basis").get<std::vector<int>>();
+      std::vector<int> list = json_integers<int>(c.at("basis"));
       if (list.empty() || static_cast<int>(list.size()) > p.basis_size) throw bad_input(".ltw header: a cluster's basis list is empty or longer than basis_size");
       for (int k : list)
         if (k < 0 || static_cast<std::size_t>(k) >= p.basis.brdfs.size()) throw bad_input(".ltw header: basis index {} out of range", k);

@@ -1,4 +1,5 @@
 #include "brdffit/ltx_format.hpp"
+#include "core/json_integer.hpp"
 #include "core/quote.hpp"
 
 #include <cmath>
@@ -165,15 +166,16 @@ LumitexelSet decode_ltx(const std::vector<std::uint8_t>& bytes, nlohmann::json* 
   try {
     if (!h.is_object()) throw bad_input("the header is not a JSON object (offset 12)");
     if (h.value("format", "") != "ltx") throw bad_input("the header's \"format\" is not \"ltx\" (offset 12)");
-    if (h.value("version", 0) != 1) throw bad_input("unsupported .ltx version {} (offset 12)", h.value("version", 0));
+    if (const auto version = json_integer_or<std::int64_t>(h, "version", 0); version != 1)
+      throw bad_input("unsupported .ltx version {} (offset 12)", version);
     field = "mesh_sha256";
     set.mesh_sha256 = h.at(field).get<std::string>();
     field = "images";
     set.images = h.at(field).get<std::vector<std::string>>();
     field = "lumitexels";
-    n = h.at(field).get<std::uint64_t>();
+    n = json_integer<std::uint64_t>(h.at(field));
     field = "samples";
-    m = h.at(field).get<std::uint64_t>();
+    m = json_integer<std::uint64_t>(h.at(field));
   } catch (const nlohmann::json::exception& e) {
     throw bad_input("header field \"{}\": {} (offset 12)", field, json_failure_words(e.what(), 0, {}));
   }

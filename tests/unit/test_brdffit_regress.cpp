@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "brdffit/ltw_format.hpp"
 #include "brdffit/rig_json.hpp"
 #include "expect_error.hpp"
 #include "reflectance/view_json.hpp"
@@ -32,4 +33,17 @@ TEST(BrdffitRegress, FuzzFindingsAreBadInput) {
     ++replayed;
   }
   EXPECT_GE(replayed, 8);
+}
+
+// .ltw files that fuzz_ltw found (tests/data/regress/brdffit_ltw/): a header count of
+// 1.2e31 once reached a float-to-size_t cast (undefined; now lib/core/json_integer.hpp).
+TEST(BrdffitRegress, LtwFuzzFindingsAreBadInput) {
+  int replayed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(fest::test::fixture("regress/brdffit_ltw"))) {
+    SCOPED_TRACE(entry.path().filename().string());
+    const std::string bytes = fest::test::slurp(entry.path().string());
+    fest::test::expect_bad_input([&] { fest::brdffit::decode_ltw(bytes); });
+    ++replayed;
+  }
+  EXPECT_GE(replayed, 1);
 }

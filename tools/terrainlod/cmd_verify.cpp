@@ -16,6 +16,7 @@
 #include "terrainlod/nodata_mask.hpp"
 #include "terrainlod/progressive_recode.hpp"
 #include "terrainlod/tile_codec.hpp"
+#include "core/json_integer.hpp"
 
 namespace fest::terrainlod_tool {
 
@@ -32,10 +33,10 @@ int run_verify(const VerifyArgs& args) {
   std::optional<terrainlod::ReferenceSurface> ref;
   if (!args.dem.path.empty()) {
     dem = load_dem(args.dem);
-    if (dem->grid.width != pyr.manifest().at("width").get<int>() || dem->grid.height != pyr.manifest().at("height").get<int>())
+    if (dem->grid.width != json_integer<int>(pyr.manifest().at("width")) || dem->grid.height != json_integer<int>(pyr.manifest().at("height")))
       throw bad_input("DEM is {} x {} samples but the pyramid was built from {} x {} ({})", dem->grid.width, dem->grid.height,
-                      pyr.manifest().at("width").get<int>(), pyr.manifest().at("height").get<int>(), dem->name);
-    padded = terrainlod::pad_grid(dem->grid, pyr.manifest().at("padded").get<int>());
+                      json_integer<int>(pyr.manifest().at("width")), json_integer<int>(pyr.manifest().at("height")), dem->name);
+    padded = terrainlod::pad_grid(dem->grid, json_integer<int>(pyr.manifest().at("padded")));
     ref.emplace(*padded, diagonal_rule(pyr.manifest().value("diagonal", std::string("short"))));
   }
   // The guarantee against the DEM for the reference the pyramid was built with (docs/terrainlod.md §1):

@@ -1,4 +1,5 @@
 #include "pyramid_file.hpp"
+#include "core/json_integer.hpp"
 #include "core/quote.hpp"
 
 #include <filesystem>
@@ -101,20 +102,20 @@ void DirectoryPyramidWriter::commit() {
 void PyramidFile::parse_manifest(std::string_view text) {
   try {
     manifest_ = nlohmann::json::parse(text);
-    layout_.levels = manifest_.at("levels").get<int>();
-    layout_.texels = manifest_.at("texels").get<int>();
+    layout_.levels = json_integer<int>(manifest_.at("levels"));
+    layout_.texels = json_integer<int>(manifest_.at("texels"));
     layout_.origin_x = manifest_.at("origin").at(0).get<double>();
     layout_.origin_y = manifest_.at("origin").at(1).get<double>();
     layout_.dx = manifest_.at("cell_size").at(0).get<double>();
     layout_.dy = manifest_.at("cell_size").at(1).get<double>();
     for (const auto& lv : manifest_.at("level")) {
-      layout_.tiles_x.push_back(lv.at("tiles_x").get<int>());
-      layout_.tiles_y.push_back(lv.at("tiles_y").get<int>());
-      layout_.cells.push_back(lv.at("cells").get<int>());
+      layout_.tiles_x.push_back(json_integer<int>(lv.at("tiles_x")));
+      layout_.tiles_y.push_back(json_integer<int>(lv.at("tiles_y")));
+      layout_.cells.push_back(json_integer<int>(lv.at("cells")));
       // Read by stats and verify: checked here, so that a damaged manifest is refused on
       // opening in fest's words, not later by the JSON library.
       lv.at("eps").get<double>();
-      lv.at("lattice_bits").get<int>();
+      json_integer<int>(lv.at("lattice_bits"));
     }
     manifest_.at("z_quantum").get<double>();
     manifest_.at("width").get<double>();
@@ -156,9 +157,9 @@ void PyramidFile::parse_nodata(std::string_view section) {
   }
   if (section.empty()) throw bad_input("pyramid manifest says nodata hole but the pyramid has no nodata mask ({})", name_);
   nodata_ = naming(name_, [&] { return terrainlod::decode_nodata_mask(section); });
-  if (nodata_.width != manifest_.value("width", -1) || nodata_.height != manifest_.value("height", -1))
+  if (nodata_.width != json_integer_or<std::int64_t>(manifest_, "width", -1) || nodata_.height != json_integer_or<std::int64_t>(manifest_, "height", -1))
     throw bad_input("pyramid's nodata mask is {} x {} samples, its DEM {} x {} ({})", nodata_.width, nodata_.height,
-                    manifest_.value("width", -1), manifest_.value("height", -1), name_);
+                    json_integer_or<std::int64_t>(manifest_, "width", -1), json_integer_or<std::int64_t>(manifest_, "height", -1), name_);
   holes_ = true;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/json_integer.hpp"
 #include "core/stopwatch.hpp"
 #include "terrainlod/dem_clip.hpp"
 #include "formats/image/image_io.hpp"
@@ -36,7 +37,7 @@ OpenMesh::Vec3uc level_colour(int level, int levels) {
 }
 
 Extent extent_of(const PyramidFile& pyr, bool clip) {
-  return {pyr.manifest().at("width").get<std::int64_t>() - 1, pyr.manifest().at("height").get<std::int64_t>() - 1, clip};
+  return {json_integer<std::int64_t>(pyr.manifest().at("width")) - 1, json_integer<std::int64_t>(pyr.manifest().at("height")) - 1, clip};
 }
 
 // Triangulations of several tiles -> one mesh in world coordinates; vertices shared by
@@ -139,8 +140,8 @@ terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& wher
     if (!vec3("eye", c.eye) || !vec3("target", c.target)) throw bad_input("camera needs 'eye' and 'target' ({})", where);
     vec3("up", c.up);
     c.fovy_deg = j.value("fovy_deg", 60.0);
-    c.width = j.value("width", 1920);
-    c.height = j.value("height", 1080);
+    c.width = json_integer_or<int>(j, "width", 1920);
+    c.height = json_integer_or<int>(j, "height", 1080);
     c.near = j.value("near", 1.0);
     c.far = j.value("far", 1e9);
     c.tau_px = j.value("tau_px", 1.0);
