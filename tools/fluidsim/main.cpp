@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"on", "off"}));
   r->add_option("--report", run.report, "Write totals and figures as JSON");
   r->add_option("--stats", run.stats, "Write one JSON line of figures per frame");
-  r->add_flag("--progress", run.progress, "Show a progress bar");
+  fest::cli::add_progress(*r, run.progress);
   fest::cli::add_threads(*r, run.threads);
 
   RenderOptions ren;

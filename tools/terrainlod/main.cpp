@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
                                       "decoding needs the parent) or standalone (every tile decodable alone)"),
                         kCodings);
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
-  b->add_flag("--progress", build.progress, "Progress bar on standard error");
+  fest::cli::add_progress(*b, build.progress);
   fest::cli::add_threads(*b, build.threads);
 
   DecodeArgs decode;
