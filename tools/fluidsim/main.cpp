@@ -145,6 +145,7 @@ int main(int argc, char** argv) {
   d->add_option("--colormap", ren_colormap, "gray, inferno or velocity");
   d->add_option("--sigma", ren.sigma, "Absorb: extinction per unit field per unit length")->check(fest::cli::range(0.0, 1e9));
   d->add_option("--depth", ren.depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
+  fest::cli::add_progress(*d, ren.progress);
 
   InterpOptions ip;
   CLI::App* i = app.add_subcommand("interp", "Linear blend (1-a) A + a B of two frames of identical shape");

@@ -111,6 +111,7 @@ struct ExtractArgs {
   std::string atlas;      // one texture atlas for all drawn tiles (texture coordinates into it)
   std::string camera_preset;  // no --camera: frame the terrain from this side (empty = overview)
   double z_exaggeration = 1;  // heights of the output mesh and rendering multiplied by this
+  bool progress = false;      // --progress: tiles decoded, mesh, picture (a path: frames)
 };
 
 struct VerifyArgs {
@@ -118,6 +119,7 @@ struct VerifyArgs {
   DemArgs dem;            // dem.path empty = no error check against the DEM
   int cameras = 20;
   unsigned seed = 1;
+  bool progress = false;  // --progress: tiles checked, then cameras
 };
 
 struct ExportQmArgs {

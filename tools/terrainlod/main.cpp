@@ -112,6 +112,7 @@ int main(int argc, char** argv) {
   ExtractArgs extract;
   auto* x = app.add_subcommand("extract", "The crack-free mesh a camera needs (view-dependent level of detail)");
   x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp) or directory")->required();
+  fest::cli::add_progress(*x, extract.progress);
   auto* cam_opt = x->add_option("--camera", extract.camera,
                                 "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px "
                                 "(default: a 1280 x 800 view framing the whole terrain, --camera-preset)");
@@ -147,6 +148,7 @@ int main(int argc, char** argv) {
   add_nodata_option(v, verify_nodata, "As for build (the holes are the pyramid's: fill or hole changes nothing here)");
   v->add_option("--cameras", verify.cameras, "Random cameras for the crack check")->check(fest::cli::range(0, 1000000));
   v->add_option("--seed", verify.seed, "Seed of the random cameras");
+  fest::cli::add_progress(*v, verify.progress);
 
   ExportQmArgs qm;
   auto* q = app.add_subcommand("export-qm", "Cesium quantized-mesh-1.0 tiles (base triangulations) and layer.json");
