@@ -69,6 +69,7 @@ struct CheckOptions {
   double nu = 0.01;
   std::string report;
   int threads = 0;       // 0: all cores
+  bool progress = false;  // --progress: cases done
 };
 
 struct BenchOptions {

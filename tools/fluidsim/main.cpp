@@ -170,6 +170,7 @@ int main(int argc, char** argv) {
   c->add_option("--nu", ck.nu, "Viscosity of the decay cases")->check(fest::cli::range(0.0, 10.0));
   c->add_option("--report", ck.report, "Also write the report to this file");
   fest::cli::add_threads(*c, ck.threads);
+  fest::cli::add_progress(*c, ck.progress);
 
   BenchOptions bo;
   std::vector<std::string> bench_poisson;
