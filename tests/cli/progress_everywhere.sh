@@ -111,4 +111,76 @@ pair brdffit_cluster brdffit cluster "$WORK/brdffit_lumitexels.plain/syn.ltx" --
 pair brdffit_register brdffit register --mesh "$WORK/syn/mesh.ply" --rig "$WORK/syn/rig.json" --fix-focal --iters 20 \
   -o rig_back.json --threads 2
 
+# ---- brdffit's materials stages and synth ----------------------------------------------------
+
+"$FEST_BIN/brdffit_testdata" samples onelobe 400 3 0.02 >"$WORK/onelobe.csv" || fail "brdffit_testdata"
+pair brdffit_fit --stdin "$WORK/onelobe.csv" brdffit fit --lobes 2 --starts 2 --threads 2
+pair brdffit_project brdffit project "$WORK/brdffit_lumitexels.plain/syn.ltx" --clusters "$WORK/brdffit_cluster.plain/clusters.json" \
+  -o w.ltw --threads 2
+pair brdffit_normals brdffit normals "$WORK/brdffit_lumitexels.plain/syn.ltx" --svbrdf "$WORK/brdffit_project.plain/w.ltw" \
+  -o n.ply --threads 2
+pair brdffit_synth brdffit synth --sphere 1 --materials 2 --views 3 --lights 1 --width 40 --height 30 --seed 2 -o syn --threads 2
+
+# ---- volumes: volwave, isosurf -------------------------------------------------------------------
+
+V="$FEST_FIXTURES/volume/gzip_uint16.nrrd"
+pair volwave_encode volwave encode "$V" --max-error 2 -o v.vw --threads 2
+pair volwave_encode_rmse volwave encode "$V" --rmse 1 --wavelet cdf97 -o v.vw --threads 2
+pair volwave_decode volwave decode "$WORK/volwave_encode.plain/v.vw" -o v.nrrd --threads 2
+pair volwave_edges volwave edges "$V" --scales 2 -o e.nrrd --threads 2
+pair isosurf_exact isosurf exact "$V" --iso 1000 -o s.ply --threads 2
+pair isosurf_adaptive isosurf adaptive "$V" --iso 1000 --max-error 50 -o s.ply --threads 2
+pair isosurf_progressive isosurf progressive "$V" --iso 1000 --errors 50,0 -o levels --threads 2
+
+# ---- simulations' checks, fluidsim render, feshape fit ------------------------------------------
+
+pair lbmsim_check lbmsim check poiseuille --threads 1
+pair fluidsim_check fluidsim check mass --threads 1
+cat >"$WORK/smoke2d.json" <<'JSON'
+{ "dims": [16, 16], "frame_dt": 0.05, "frames": 4, "viscosity": 0.001,
+  "scalars": [ { "name": "density", "alpha": 0.05,
+                 "sources": [ { "shape": "sphere", "centre": [8, 4], "radius": 2, "rate": 10 } ] } ],
+  "forces": [ { "type": "buoyancy", "scalar": "density", "beta": 1.0 } ] }
+JSON
+"$FEST_BIN/fluidsim" run "$WORK/smoke2d.json" --threads 1 >"$WORK/smoke.stream" || fail "fluidsim run"
+SETUP="mkdir -p png" pair fluidsim_render fluidsim render "$WORK/smoke.stream" -o png/f%02d.png
+pair feshape_fit feshape fit "$FEST_FIXTURES/feshape/squash123.xyz" --grid 5x5 --levels 1 --tau 0.02 -o f.ply --threads 2
+
+# ---- terrainlod: extract one view, a camera path, verify ----------------------------------------
+
+awk 'BEGIN { print "ncols 45\nnrows 37\nxllcorner 0\nyllcorner 0\ncellsize 10";
+  for (r = 0; r < 37; r++) { line = ""; for (i = 0; i < 45; i++) line = line sprintf("%d ", (i * 7 + r * 13) % 11 + (i * r) % 5); print line } }' \
+  >"$WORK/dem.asc"
+"$FEST_BIN/terrainlod" build "$WORK/dem.asc" --tile 16 -o "$WORK/dem.tlp" || fail "terrainlod build"
+pair terrainlod_extract terrainlod extract "$WORK/dem.tlp" -o view.ply --png view.png
+printf '{"eye":[225,185,3000],"target":[225,185,0],"up":[0,1,0],"fovy_deg":20,"width":64,"height":64}\n{"eye":[100,100,800],"target":[225,185,0],"up":[0,0,1],"fovy_deg":40,"width":64,"height":64}\n' \
+  >"$WORK/path.jsonl"
+pair terrainlod_path terrainlod extract "$WORK/dem.tlp" --path "$WORK/path.jsonl" -o f%d.ply
+pair terrainlod_verify terrainlod verify "$WORK/dem.tlp" --dem "$WORK/dem.asc" --cameras 3
+
+# ---- the one -q rule (README "Conventions"): on a terminal the bar is automatic; -q hides it;
+# ---- --progress draws it even with -q. script(1) gives the command a terminal. -----------------
+
+if command -v script >/dev/null 2>&1; then
+  tty_run() {  # NAME ARGS...: the command on a pseudo-terminal; what it drew -> $WORK/NAME.tty
+    local name="$1"; shift
+    script -qec "$*" /dev/null </dev/null >"$WORK/$name.tty" 2>&1
+    echo $? >"$WORK/$name.tty.rc"
+  }
+  F="$FEST_BIN/brdffit fit $WORK/onelobe.csv --lobes 2 --starts 2 --threads 2 -o /dev/null"
+  tty_run auto "$F"
+  tty_run quiet "$FEST_BIN/brdffit -q fit $WORK/onelobe.csv --lobes 2 --starts 2 --threads 2 -o /dev/null"
+  tty_run quiet_progress "$FEST_BIN/brdffit -q fit $WORK/onelobe.csv --lobes 2 --starts 2 --threads 2 -o /dev/null --progress"
+  case_ "-q and --progress on a terminal: automatic bar, hidden by -q, drawn by --progress even with -q"
+  for n in auto quiet quiet_progress; do check "$n: exit 0" test "$(cat "$WORK/$n.tty.rc")" = 0; done
+  check "a terminal gets the bar without asking" grep -Eq '\[#+\] 100%' "$WORK/auto.tty"
+  check "-q hides the automatic bar" bash -c "! grep -Eq '\] +[0-9]+%' '$WORK/quiet.tty'"
+  check "-q --progress draws it" grep -Eq '\[#+\] 100%' "$WORK/quiet_progress.tty"
+  # The same rule in a tool that hid its bar with -q before (decimate): -q --progress draws it.
+  tty_run decimate_qp "$FEST_BIN/decimate -q $FEST_FIXTURES/decimate/cube6_100.off --ratio 0.2 -o $WORK/dq.ply --progress"
+  tty_run decimate_q "$FEST_BIN/decimate -q $FEST_FIXTURES/decimate/cube6_100.off --ratio 0.2 -o $WORK/dq.ply"
+  check "decimate -q --progress draws the bar" grep -Eq '\[#+\] 100%' "$WORK/decimate_qp.tty"
+  check "decimate -q alone draws none" bash -c "! grep -Eq '\] +[0-9]+%' '$WORK/decimate_q.tty'"
+fi
+
 finish
