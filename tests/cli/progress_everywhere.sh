@@ -64,6 +64,7 @@ pair radiosity radiosity solve "$FEST_FIXTURES/radiosity/cornell.json" --hemicub
 "$FEST_BIN/lemtrace" gen helix --n 6 --jitter 0.2 --seed 1 -o "$WORK/h6.vtu" || fail "lemtrace gen"
 pair lemtrace_csv lemtrace trace "$WORK/h6.vtu" --seed-line 0.2,0.2,0.2:0.8,0.8,0.8:50 -o lines.csv --threads 2
 pair lemtrace_vtp lemtrace trace "$WORK/h6.vtu" --seed-line 0.2,0.2,0.2:0.8,0.8,0.8:50 -o lines.vtp --threads 2
+pair lemtrace_classify lemtrace classify "$WORK/h6.vtu" --sweep-parallel 1e-7:1e-1
 
 printf 'OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n' >"$WORK/octa.off"
 printf '{"origin":[-2,-2,-2],"axes":[[4,0,0],[0,4,0],[0,0,4]],"dims":[4,4,4]}\n' >"$WORK/zero.json"
