@@ -96,6 +96,14 @@ SETUP="cp '$D/small_scene.json' '$D/small_station.json' '$D/small_plan.json' ." 
 case_ "capture: the same pictures"
 check "same PNGs" bash -c "cd '$WORK/capture.bar/sess' && for f in \$(find . -name '*.png'); do cmp \"\$f\" '$WORK/capture.plain/sess/'\"\$f\" || exit 1; done"
 SETUP="cp -r '$WORK/capture.plain/sess' ." pair hdrmerge hdrmerge session --manifest sess/manifest.json --threads 2
+# A 64 x 32 radiance ramp over four decades (grey PFM), bracketed into three exposures.
+T=0.01,0.1,1
+python3 -c 'import struct, sys; w, h = 64, 32
+sys.stdout.buffer.write(b"Pf\n%d %d\n-1\n" % (w, h) + b"".join(struct.pack("<f", 10 ** (-2 + 4 * (x + w * y) / (w * h))) for y in range(h) for x in range(w)))' \
+  >"$WORK/rad.pfm" || fail "radiance ramp"
+SETUP="mkdir -p br" pair hdrmerge_bracket hdrmerge bracket "$WORK/rad.pfm" -t "$T" -o br
+pair hdrmerge_merge hdrmerge merge "$WORK"/hdrmerge_bracket.plain/br/e*.png -t "$T" -o m.exr --threads 2
+pair hdrmerge_calibrate hdrmerge calibrate "$WORK"/hdrmerge_bracket.plain/br/e*.png -t "$T"
 
 # ---- segbrain on the phantom of tests/cli/segbrain.sh ---------------------------------------
 
