@@ -168,6 +168,12 @@ printf '{"eye":[225,185,3000],"target":[225,185,0],"up":[0,1,0],"fovy_deg":20,"w
   >"$WORK/path.jsonl"
 pair terrainlod_path terrainlod extract "$WORK/dem.tlp" --path "$WORK/path.jsonl" -o f%d.ply
 pair terrainlod_verify terrainlod verify "$WORK/dem.tlp" --dem "$WORK/dem.asc" --cameras 3
+pair terrainlod_stats terrainlod stats "$WORK/dem.tlp"
+pair terrainlod_export_qm terrainlod export-qm "$WORK/dem.tlp" -o qm
+awk 'BEGIN { print "ncols 257\nnrows 257\nxllcorner 0\nyllcorner 0\ncellsize 10";
+  for (r = 0; r < 257; r++) { line = ""; for (i = 0; i < 257; i++) line = line sprintf("%.2f ", 40 * sin(i / 9.0) * cos(r / 13.0) + (i * r) % 7); print line } }' \
+  >"$WORK/dem257.asc"
+pair terrainlod_simplify terrainlod simplify "$WORK/dem257.asc" --max-error 1 -o s.ply
 
 # ---- softobj tongue --polygonize: frames of the /b i d A m u/ example at 5 frames per second --
 

@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
   s->add_option("--to", simplify_to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
   fest::cli::enum_words(s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)"), kStarts);
+  fest::cli::add_progress(*s, simplify.progress);
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
@@ -154,6 +155,7 @@ int main(int argc, char** argv) {
   auto* q = app.add_subcommand("export-qm", "Cesium quantized-mesh-1.0 tiles (base triangulations) and layer.json");
   q->add_option("pyramid", qm.pyramid, "Pyramid archive (.tlp) or directory")->required();
   q->add_option("-o,--output", qm.output, "Output directory (new or empty; written completely or not at all)")->required();
+  fest::cli::add_progress(*q, qm.progress);
 
   StatsArgs stats;
   auto* st = app.add_subcommand("stats", "JSON statistics of a pyramid (.tlp), or of a DEM and its pyramid plan");
@@ -161,6 +163,7 @@ int main(int argc, char** argv) {
   st->add_option("--tile", stats.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)")->check(fest::cli::range(4, 4096));
   st->add_option("--texels", stats.texels, "Texels per tile side T (power of two >= B; default B)")->check(fest::cli::range(4, 65536));
   st->add_option("--error-fraction", stats.error_fraction, "Allowed error per tile in texels (f)");
+  fest::cli::add_progress(*st, stats.progress);
 
   return fest::cli::run(app, argc, argv, [&] {
     // Format names become formats when the command runs (usage errors naming the word).
