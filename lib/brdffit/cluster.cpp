@@ -199,10 +199,11 @@ double lumitexel_distance(const LumitexelSet& set, const std::vector<FitSample>&
 
 std::vector<std::uint16_t> nearest_clusters(const LumitexelSet& set, const std::vector<FitSample>& local,
                                             const ModelSpec& model, const std::vector<Eigen::VectorXd>& params,
-                                            int threads) {
+                                            int threads, const ProgressFn& progress) {
   std::vector<std::uint16_t> a(set.lumitexels.size(), 0);
   std::vector<ModelEvaluator> fs;
   for (const Eigen::VectorXd& p : params) fs.emplace_back(model, p);
+  ProgressCounter chunks(progress, chunk_count(a.size(), kChunk));
   for_each_chunk(a.size(), kChunk, threads, [&](std::size_t, std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       double best = std::numeric_limits<double>::infinity();
@@ -212,7 +213,9 @@ std::vector<std::uint16_t> nearest_clusters(const LumitexelSet& set, const std::
         if (d < best) best = d, a[i] = static_cast<std::uint16_t>(j);
       }
     }
+    chunks.step();
   });
+  chunks.finish();
   return a;
 }
 

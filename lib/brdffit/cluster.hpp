@@ -74,7 +74,7 @@ double lumitexel_distance(const LumitexelSet& set, const std::vector<FitSample>&
 // Every lumitexel to the cluster of smallest D (ties to the lower index).
 std::vector<std::uint16_t> nearest_clusters(const LumitexelSet& set, const std::vector<FitSample>& local,
                                             const ModelSpec& model, const std::vector<Eigen::VectorXd>& params,
-                                            int threads);
+                                            int threads, const ProgressFn& progress = {});
 
 // One split of a cluster as in docs/brdffit.md §5 without replacing it (the projection's basis uses the
 // two children): returns the children's parameters, or nothing when the cluster cannot be

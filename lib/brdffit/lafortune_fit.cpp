@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -85,7 +86,9 @@ void check_samples(const std::vector<FitSample>& s) {
   }
 }
 
-FitResult levenberg_marquardt(const std::vector<FitSample>& s, Eigen::VectorXd p, const FitOptions& o) {
+// `iteration` (may be empty) hears every LM iteration's number.
+FitResult levenberg_marquardt(const std::vector<FitSample>& s, Eigen::VectorXd p, const FitOptions& o,
+                              const std::function<void(int)>& iteration = {}) {
   const ModelSpec& spec = o.model;
   clamp_to_bounds(spec, p);
   Normal cur = normal_equations(spec, p, s, o.huber_delta, o.threads);
@@ -99,6 +102,7 @@ FitResult levenberg_marquardt(const std::vector<FitSample>& s, Eigen::VectorXd p
   const Eigen::Index np = p.size();
   int it = 0;
   for (; it < o.max_iterations && cur.energy > 0; ++it) {
+    if (iteration) iteration(it);
     const Eigen::MatrixXd a = cur.jtj + mu * Eigen::MatrixXd::Identity(np, np);
     Eigen::VectorXd step = a.ldlt().solve(-cur.jtr);
     if (!step.allFinite()) break;
@@ -329,6 +333,13 @@ FitResult fit_brdf(const std::vector<FitSample>& samples, const FitOptions& o) {
   FitResult best;
   best.energy = std::numeric_limits<double>::infinity();
   Eigen::VectorXd current = base;
+  // Progress: max_iterations steps per start, one start per (exponent, shape) and lobe.
+  const auto per_run = static_cast<std::uint64_t>(std::max(1, o.max_iterations));
+  const std::uint64_t runs = static_cast<std::uint64_t>(o.starts) * static_cast<std::uint64_t>(2 * o.model.lobes - 1);
+  std::uint64_t run = 0;
+  std::function<void(int)> iteration;
+  if (o.progress)
+    iteration = [&](int it) { o.progress(run * per_run + static_cast<std::uint64_t>(it), runs * per_run); };
   for (int k = 0; k < o.model.lobes; ++k) {
     const Eigen::Vector3d peak = residual_peak(o.model, current, s);
     // A mirror lobe first; later lobes may also be the grazing (C_z < 0) kind, as in the
@@ -342,7 +353,9 @@ FitResult fit_brdf(const std::vector<FitSample>& samples, const FitOptions& o) {
         Eigen::VectorXd p = current;
         seed_lobe(o.model, p, k, kStartExponents[st], sxy, sz, peak);
         fit_lobe_amplitude(o.model, p, k, s);
-        FitResult r = levenberg_marquardt(s, p, o);
+        FitResult r = levenberg_marquardt(s, p, o, iteration);
+        ++run;
+        if (o.progress) o.progress(run * per_run, runs * per_run);
         if (r.energy < stage.energy) stage = std::move(r);
       }
     if (!std::isfinite(stage.energy)) throw runtime_failure("the BRDF fit produced NaN or infinity");

@@ -13,6 +13,7 @@
 
 #include "brdffit/fit_sample.hpp"
 #include "brdffit/lafortune_model.hpp"
+#include "core/progress_callback.hpp"
 #include "reflectance/lafortune.hpp"
 
 namespace fest::brdffit {
@@ -26,6 +27,8 @@ struct FitOptions {
   std::size_t subsample = 200000;  // fit on at most this many samples (0 = all)
   std::uint64_t seed = 1;        // of the subsample
   int threads = 1;
+  ProgressFn progress;           // fit_brdf only: LM iterations of every start planned (a
+                                 // start that converges early counts all of its iterations)
 };
 
 struct FitResult {

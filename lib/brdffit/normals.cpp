@@ -127,6 +127,7 @@ NormalResult refine_normals(const LumitexelSet& set, const Projection& p, const 
   const int per = p.values_per_lumitexel();
   std::vector<double> before(n, 0), after(n, 0);
   const std::vector<ModelEvaluator> ev = evaluators_of(p.basis);
+  ProgressCounter chunks(o.progress, chunk_count(n, 512));
   for_each_chunk(n, 512, o.threads, [&](std::size_t, std::size_t b, std::size_t e) {
     std::vector<FitSample> local;
     for (std::size_t i = b; i < e; ++i) {
@@ -153,7 +154,9 @@ NormalResult refine_normals(const LumitexelSet& set, const Projection& p, const 
       res.normals[i] = normal.cast<float>();
       res.refined[i] = 1;
     }
+    chunks.step();
   });
+  chunks.finish();
   for (std::size_t i = 0; i < n; ++i)
     if (res.refined[i]) {
       ++res.refined_count;

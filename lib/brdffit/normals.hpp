@@ -23,6 +23,7 @@ struct NormalOptions {
   int alternate = 1;       // rounds of (projection, normals); 1 = normals only
   ProjectOptions project;  // for re-projection when alternating (nonneg, threshold)
   int threads = 1;
+  ProgressFn progress;     // chunks of lumitexels refined
 };
 
 struct NormalResult {

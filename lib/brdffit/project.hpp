@@ -26,6 +26,7 @@ struct ProjectOptions {
   bool nonneg = false;
   double svd_threshold = 1e-6;  // relative to the largest singular value
   ClusterOptions split;         // the trial split's settings (fit options, threads)
+  ProgressFn progress;          // project_lumitexels: thousandths of nearest clusters, bases, weights
 };
 
 struct Basis {
@@ -77,6 +78,6 @@ struct ProjectionError {
   double projected = 0, per_cluster = 0;
 };
 ProjectionError projection_error(const LumitexelSet& set, const std::vector<FitSample>& local, const Projection& p,
-                                 int threads);
+                                 int threads, const ProgressFn& progress = {});
 
 }  // namespace fest::brdffit

@@ -18,6 +18,7 @@
 #include "cli/number_range.hpp"
 #include "core/error.hpp"
 #include "core/error_detail.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 
@@ -34,10 +35,11 @@ struct Common {
 };
 
 // --progress on a command with a stage longer than about two seconds: a bar on standard
-// error, drawn anyway when standard error is a terminal (core/progress.hpp progress_wanted).
+// error, drawn anyway when standard error is a terminal unless -q (core/progress.hpp
+// progress_wanted: an explicit --progress wins over -q).
 inline void add_progress(CLI::App& app, bool& progress) {
   app.add_flag("--progress", progress,
-               "Progress bar on standard error (default: only when it is a terminal)");
+               "Progress bar on standard error, even with -q (default: on a terminal, unless -q)");
 }
 
 inline void add_common(CLI::App& app, Common& common, bool with_progress = false) {
@@ -77,6 +79,8 @@ int run(CLI::App& app, int argc, char** argv, Body&& body) {
       app.parse(argc, argv);
       if (const CLI::Option* verbose = app.get_option_no_throw("--verbose"); verbose != nullptr && verbose->count() > 0)
         show_error_details(true);
+      if (const CLI::Option* quiet = app.get_option_no_throw("--quiet"); quiet != nullptr && quiet->count() > 0)
+        set_progress_quiet(true);  // -q hides the automatic bar; --progress still draws it
       check_numbers(app);
     } catch (const CLI::ParseError& e) {
       if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);

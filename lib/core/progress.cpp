@@ -8,7 +8,13 @@
 
 namespace fest {
 
-bool progress_wanted(bool requested) { return requested || ::isatty(STDERR_FILENO) == 1; }
+namespace {
+bool quiet_run = false;
+}  // namespace
+
+void set_progress_quiet(bool quiet) { quiet_run = quiet; }
+
+bool progress_wanted(bool requested) { return requested || (!quiet_run && ::isatty(STDERR_FILENO) == 1); }
 
 Progress::Progress(std::string label, std::uint64_t total, bool enabled, std::FILE* out)
     : label_(std::move(label)), total_(total), enabled_(enabled), out_(out) {}

@@ -11,8 +11,14 @@
 
 namespace fest {
 
-// Whether a tool should draw progress: asked for explicitly, or stderr is a terminal.
+// Whether a tool should draw progress: asked for explicitly (--progress), or standard
+// error is a terminal and -q was not given. One rule for every tool (README
+// "Conventions"): -q hides the automatic bar; an explicit --progress draws it even with -q
+// (as wget -q --show-progress: the bar and errors, nothing else).
 bool progress_wanted(bool requested);
+
+// -q/--quiet was given: set once by cli::run after parsing, before any stage starts.
+void set_progress_quiet(bool quiet);
 
 class Progress {
  public:

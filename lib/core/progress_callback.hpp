@@ -8,6 +8,7 @@
 // thread and the callback needs no lock. parallel_for's calling thread takes jobs too, so
 // the count reaches the bar while the loop runs.
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -44,5 +45,16 @@ class ProgressCounter {
   std::thread::id owner_;
   std::atomic<std::uint64_t> done_{0};
 };
+
+// One stage of several that share one bar: the stage reports its own (done, total), the bar
+// sees the whole in thousandths, this stage covering [begin, end) of it (fractions). An
+// empty `fn` gives an empty ProgressFn.
+inline ProgressFn progress_part(const ProgressFn& fn, double begin, double end) {
+  if (!fn) return {};
+  return [fn, begin, end](std::uint64_t done, std::uint64_t total) {
+    const double f = total > 0 ? static_cast<double>(std::min(done, total)) / static_cast<double>(total) : 0.0;
+    fn(static_cast<std::uint64_t>(1000.0 * (begin + (end - begin) * f) + 0.5), 1000);
+  };
+}
 
 }  // namespace fest

@@ -28,7 +28,7 @@ void check_finite(const Model& m) {
 
 // Level G with the equilibrium solver: the smooth surface, data points projected onto it.
 int fit_global_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOptions& o, bool& converged,
-                      double& surface_rms) {
+                      double& surface_rms, const ProgressFn& progress) {
   std::vector<Eigen::Vector2d> uv(points.size());
   double mu = 1e-3, energy = 0;
   int it = 0;
@@ -54,6 +54,7 @@ int fit_global_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, cons
     }
     const bool stepped = global_step_smooth(m, points, uv, mu, energy, o.threads);
     check_finite(m);
+    if (progress) progress(static_cast<std::uint64_t>(it + 1), static_cast<std::uint64_t>(o.max_iter));
     history.push_back(energy);
     const std::size_t h = history.size();
     const bool stalled = h > 10 && history[h - 11] - history[h - 1] <= 1e-3 * history[h - 11];
@@ -69,7 +70,7 @@ int fit_global_smooth(Model& m, const std::vector<Eigen::Vector3d>& points, cons
 
 // A level with local displacements (or level G with the Euler solvers).
 int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOptions& o, bool local,
-              bool& converged) {
+              bool& converged, const ProgressFn& progress) {
   const Eigen::SparseMatrix<double> k = assemble_stiffness(m.mesh, o.weights);
   std::unique_ptr<EulerIntegrator> euler;
   if (o.solver != Solver::equilibrium)
@@ -105,6 +106,8 @@ int fit_level(Model& m, const std::vector<Eigen::Vector3d>& points, const FitOpt
       if (local) solve_local_equilibrium(m, points, assigned, normals, k, o.beta);
     }
     check_finite(m);
+    if (progress && (euler == nullptr || (it + 1) % 1000 == 0))
+      progress(static_cast<std::uint64_t>(it + 1), static_cast<std::uint64_t>(o.max_iter));
     if (max_move(before, m.node_positions()) < o.move_tol) {
       converged = true;
       ++it;
@@ -143,14 +146,21 @@ std::vector<LevelResult> fit(const std::vector<Eigen::Vector3d>& points, Model m
     return a;
   };
   m.d.assign(m.mesh.nodes(), Eigen::Vector3d::Zero());
+  const int shares = (o.global_phase ? 1 : 0) + o.levels + 1;
+  int share = 0;
+  auto level_progress = [&] {
+    const double begin = static_cast<double>(share) / shares;
+    ++share;
+    return progress_part(o.progress, begin, static_cast<double>(share) / shares);
+  };
   if (o.global_phase) {
     const auto t0 = std::chrono::steady_clock::now();
     LevelResult r;
     r.name = "G";
     if (o.solver == Solver::equilibrium)
-      r.iterations = fit_global_smooth(m, points, o, r.converged, r.surface_rms);
+      r.iterations = fit_global_smooth(m, points, o, r.converged, r.surface_rms, level_progress());
     else
-      r.iterations = fit_level(m, points, o, false, r.converged);
+      r.iterations = fit_level(m, points, o, false, r.converged, level_progress());
     finish(std::move(r), t0);
   }
   std::vector<MeshPoint> assigned;
@@ -170,7 +180,7 @@ std::vector<LevelResult> fit(const std::vector<Eigen::Vector3d>& points, Model m
       const std::vector<NewNode> created = rivara_refine(m.mesh, x, selected, o.max_nodes);
       displace_new_nodes(m, x, created);
     }
-    r.iterations = fit_level(m, points, o, true, r.converged);
+    r.iterations = fit_level(m, points, o, true, r.converged, level_progress());
     assigned = finish(std::move(r), t0);
   }
   return out;

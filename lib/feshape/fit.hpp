@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "core/progress_callback.hpp"
 #include "feshape/assignment.hpp"
 #include "feshape/dynamics.hpp"
 #include "feshape/model.hpp"
@@ -37,6 +38,8 @@ struct FitOptions {
   int reassign_every = 1;          // force assignment every k iterations (§1.4)
   bool global_phase = true;        // level G before level 0
   int threads = 1;
+  ProgressFn progress;             // thousandths: one equal share per level (G, 0, 1, ...),
+                                   // within it the iterations of max_iter
 };
 
 struct LevelResult {

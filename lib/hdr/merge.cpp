@@ -21,7 +21,7 @@ struct Tables {
 // table lookups per sample into float accumulators; the exponential runs once per row
 // through OpenCV's vectorised cv::exp.
 void merge_rows(const ExposureStack& stack, const Response& response, const Tables& tables, int row_begin,
-                int row_end, MergeResult& out) {
+                int row_end, MergeResult& out, const ProgressFn& progress = {}) {
   const int p = int(stack.images.size());
   const int channels = response.channels();
   const int width = stack.images.front().cols;
@@ -63,12 +63,15 @@ void merge_rows(const ExposureStack& stack, const Response& response, const Tabl
     }
     cv::Mat row(1, int(samples), CV_32F, out.radiance.ptr<float>(y));
     cv::exp(numerator, row);
+    if (progress && (y - row_begin + 1) % 32 == 0)
+      progress(static_cast<std::uint64_t>(y - row_begin + 1), static_cast<std::uint64_t>(row_end - row_begin));
   }
 }
 
 }  // namespace
 
-MergeResult merge_debevec(const ExposureStack& stack, const Response& response, int threads) {
+MergeResult merge_debevec(const ExposureStack& stack, const Response& response, int threads,
+                          const ProgressFn& progress) {
   validate_stack(stack);
   const cv::Mat& first = stack.images.front();
   const int channels = first.channels();
@@ -92,11 +95,12 @@ MergeResult merge_debevec(const ExposureStack& stack, const Response& response, 
     const int begin = int(std::int64_t(first.rows) * k / workers);
     const int end = int(std::int64_t(first.rows) * (k + 1) / workers);
     if (k + 1 == workers)
-      merge_rows(stack, response, tables, begin, end, out);
+      merge_rows(stack, response, tables, begin, end, out, progress);
     else
       pool.emplace_back([&, begin, end] { merge_rows(stack, response, tables, begin, end, out); });
   }
   for (std::thread& t : pool) t.join();
+  if (progress) progress(1, 1);
   return out;
 }
 

@@ -4,6 +4,7 @@
 // computed with per-exposure lookup tables, in row bands on worker threads; no float
 // copies of the exposures are made.
 
+#include "core/progress_callback.hpp"
 #include "hdr/debevec.hpp"
 #include "hdr/stack.hpp"
 
@@ -19,6 +20,9 @@ struct MergeResult {
 };
 
 // Throws bad_input for an invalid stack or a response with another channel count.
-MergeResult merge_debevec(const ExposureStack& stack, const Response& response, int threads = 1);
+// `progress` hears the rows done of the calling thread's band (the bands are equal and run
+// side by side, so it stands for the whole).
+MergeResult merge_debevec(const ExposureStack& stack, const Response& response, int threads = 1,
+                          const ProgressFn& progress = {});
 
 }  // namespace fest::hdr

@@ -45,6 +45,7 @@ class Extractor {
     std::vector<std::vector<std::array<std::uint32_t, 3>>> tris(jobs);
     std::vector<ExtractStats> job_stats(jobs);
     std::vector<std::vector<float>> centroids(jobs);
+    ProgressCounter jobs_done(opt_.progress, jobs);
     parallel_for(jobs, opt_.threads, [&](std::size_t job) {
       const std::size_t k0 = job * kSlabsPerJob, k1 = std::min(k0 + kSlabsPerJob, slabs);
       Layer lower, upper;
@@ -56,7 +57,9 @@ class Extractor {
         cells_of_slab(k, lower, upper, tris[job], centroids[job], job_stats[job]);
         std::swap(lower, upper);
       }
+      jobs_done.step();
     });
+    jobs_done.finish();
     std::size_t total = 0;
     for (const auto& t : tris) total += t.size();
     s.triangles.reserve(total);

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 
+#include "core/progress_callback.hpp"
 #include "isosurface/cell_loops.hpp"
 #include "isosurface/surface.hpp"
 #include "isosurface/triangulate_loop.hpp"
@@ -24,6 +25,7 @@ struct ExtractOptions {
   FaceRule face_rule = FaceRule::decider;
   Triangulation triangulation = Triangulation::minarea;
   int threads = 1;
+  ProgressFn progress;  // slab jobs done
 };
 
 struct ExtractStats {

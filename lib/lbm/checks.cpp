@@ -60,6 +60,32 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// A check's progress in thousandths that never goes back (a steady-state run's change may
+// rise for a while before it falls).
+class CaseProgress {
+ public:
+  explicit CaseProgress(const ProgressFn& fn) : fn_(fn) {}
+  void at(double fraction) {
+    const auto k = static_cast<std::uint64_t>(1000 * std::clamp(fraction, 0.0, 1.0));
+    if (k > best_ || !started_) {
+      best_ = std::max(best_, k);
+      started_ = true;
+      if (fn_) fn_(best_, 1000);
+    }
+  }
+  // A steady-state run: the change `change` on its way down to `tol` (log scale from 1),
+  // or `steps` of `max_steps`, whichever is further.
+  void converging(double change, double tol, double steps, double max_steps) {
+    const double by_change = change > 0 && std::isfinite(change) ? std::log(std::min(1.0, change)) / std::log(tol) : 0.0;
+    at(std::max(by_change, steps / max_steps));
+  }
+
+ private:
+  ProgressFn fn_;
+  std::uint64_t best_ = 0;
+  bool started_ = false;
+};
+
 // A check's report: its metrics (with the seconds since t0), criteria and verdict.
 json check_report(const std::string& name, json metrics, json criteria, bool pass, SteadyClock::time_point t0) {
   metrics["seconds"] = seconds_since(t0);
@@ -118,15 +144,21 @@ double max_abs(const std::vector<double>& v) {
 
 }  // namespace
 
-json check_poiseuille(const CheckOptions&) {
+json check_poiseuille(const CheckOptions& o) {
   const auto t0 = SteadyClock::now();
   json metrics = json::object(), criteria = json::object();
   bool pass = true;
+  // Progress: the 14 channel runs, H = 16 counted as four of H = 8 (steps grow as H^2):
+  // 35 units in all.
+  CaseProgress progress(o.progress);
+  double runs_done = 0;
+  auto ran = [&](int H) { progress.at((runs_done += H == 16 ? 4 : 1) / 35.0); };
   const double magic = 0.5 + std::sqrt(3.0) / 4.0;
   // BGK: the centre-node error follows (16 Lambda/3 - 1)/(H^2 - 1), Lambda = (tau - 1/2)^2.
   for (double tau : {0.6, 1.0, magic})
     for (int H : {8, 16}) {
       const auto e = poiseuille_errors(2, H, tau, CollisionModel::bgk, 0.1875, Precision::f64);
+      ran(H);
       const double lam = (tau - 0.5) * (tau - 0.5);
       const double expected = (16 * lam / 3 - 1) / (H * H - 1.0);
       const double centre = e[H / 2 - 1];
@@ -147,6 +179,7 @@ json check_poiseuille(const CheckOptions&) {
   for (double tau : {0.6, 1.5})
     for (int H : {8, 16}) {
       const double m = max_abs(poiseuille_errors(2, H, tau, CollisionModel::trt, 0.1875, Precision::f64));
+      ran(H);
       const std::string key = fmt::format("trt_tau{:.1f}_H{}_max_rel_error", tau, H);
       metrics[key] = m;
       criteria[key] = "<= 1e-10";
@@ -155,11 +188,13 @@ json check_poiseuille(const CheckOptions&) {
   // D3Q19 channel (plates at y, periodic x and z): the same law.
   {
     const auto e = poiseuille_errors(3, 8, 0.6, CollisionModel::bgk, 0.1875, Precision::f64);
+    ran(8);
     const double expected = (16 * 0.01 / 3 - 1) / 63.0;
     metrics["d3q19_bgk_tau0.6_H8_centre_rel_error"] = e[3];
     criteria["d3q19_bgk_tau0.6_H8_centre_rel_error"] = "within 1% of (16 Lambda/3 - 1)/(H^2 - 1)";
     pass = pass && std::abs(e[3] - expected) <= 0.01 * std::abs(expected);
     const double m = max_abs(poiseuille_errors(3, 8, 0.6, CollisionModel::trt, 0.1875, Precision::f64));
+    ran(8);
     metrics["d3q19_trt_tau0.6_H8_max_rel_error"] = m;
     criteria["d3q19_trt_tau0.6_H8_max_rel_error"] = "<= 1e-10";
     pass = pass && m <= 1e-10;
@@ -167,7 +202,9 @@ json check_poiseuille(const CheckOptions&) {
   // Single precision: the same centre error within 1e-5.
   {
     const double d = poiseuille_errors(2, 16, 0.6, CollisionModel::bgk, 0.1875, Precision::f64)[7];
+    ran(16);
     const double f = poiseuille_errors(2, 16, 0.6, CollisionModel::bgk, 0.1875, Precision::f32)[7];
+    ran(16);
     metrics["float_minus_double_H16"] = f - d;
     criteria["float_minus_double_H16"] = "|.| <= 5e-5 (single precision stalls once a step changes g by less than half an ulp)";
     pass = pass && std::abs(f - d) <= 5e-5;
@@ -178,7 +215,8 @@ json check_poiseuille(const CheckOptions&) {
 namespace {
 
 // Relative L2 velocity error of the decaying Taylor-Green vortex after T = 1/(2 nu k^2).
-double taylor_green_error(int dim, int N) {
+// `progress` hears the steps done of T.
+double taylor_green_error(int dim, int N, const ProgressFn& progress) {
   Case c = make_case(dim, {N, N, 4}, 0.8, CollisionModel::bgk);
   const double U = 0.64 / N, k = 2 * kPi / N, nu = c.nu();
   const Flags f = shape_flags(c);
@@ -191,7 +229,10 @@ double taylor_green_error(int dim, int N) {
     field(x, y, rho, u);
   });
   const long T = std::lround(1.0 / (2 * nu * k * k));
-  for (long t = 0; t < T; ++t) s->step();
+  for (long t = 0; t < T; ++t) {
+    s->step();
+    if (progress && (t + 1) % 64 == 0) progress(static_cast<std::uint64_t>(t + 1), static_cast<std::uint64_t>(T));
+  }
   std::vector<double> rho, u;
   s->moments(rho, u);
   const double decay = std::exp(-2 * nu * k * k * T);
@@ -215,8 +256,12 @@ double taylor_green_error(int dim, int N) {
 
 }  // namespace
 
-json check_taylor_green(const CheckOptions&) {
+json check_taylor_green(const CheckOptions& o) {
   const auto t0 = SteadyClock::now();
+  // Progress: a run's work grows as N^4 (nodes and steps as N^2), a 3-D one has four layers.
+  double weight_total = 0, weight_done = 0;
+  for (int dim : {2, 3})
+    for (int N : {16, 32, 64}) weight_total += std::pow(N, 4) * (dim == 3 ? 4 : 1);
   json metrics = json::object(), criteria = json::object();
   bool pass = true;
   // Second-order convergence; reference magnitudes of the scheme: 2.08e-2, 5.17e-3, 1.29e-3.
@@ -226,7 +271,10 @@ json check_taylor_green(const CheckOptions&) {
     double e[3];
     const double slack = dim == 2 ? 1.1 : 1.5;
     for (int k = 0; k < 3; ++k) {
-      e[k] = taylor_green_error(dim, sizes[k]);
+      const double weight = std::pow(sizes[k], 4) * (dim == 3 ? 4 : 1);
+      e[k] = taylor_green_error(dim, sizes[k], progress_part(o.progress, weight_done / weight_total,
+                                                             (weight_done + weight) / weight_total));
+      weight_done += weight;
       const std::string key = fmt::format("{}_N{}_rel_l2_error", dim == 2 ? "d2q9" : "d3q19", sizes[k]);
       metrics[key] = e[k];
       criteria[key] = fmt::format("<= {:.3g}", slack * ref[k]);
@@ -254,7 +302,8 @@ Case cavity_case(int N, double re, double U, CollisionModel m) {
 }
 
 // Runs until max |u(t) - u(t - K)| / U < tol (K = 1000) or max_steps.
-long run_steady(Solver& s, double U, double tol, long max_steps, std::vector<double>& rho, std::vector<double>& u) {
+long run_steady(Solver& s, double U, double tol, long max_steps, std::vector<double>& rho, std::vector<double>& u,
+                CaseProgress& progress) {
   std::vector<double> prev;
   s.moments(rho, prev);
   while (s.step_count() < max_steps) {
@@ -263,6 +312,7 @@ long run_steady(Solver& s, double U, double tol, long max_steps, std::vector<dou
     double d = 0;
     for (std::size_t i = 0; i < u.size(); ++i) d = std::max(d, std::abs(u[i] - prev[i]));
     if (!std::isfinite(d)) throw runtime_failure("state became non-finite at step {}", s.step_count());
+    progress.converging(d / U, tol, static_cast<double>(s.step_count()), static_cast<double>(max_steps));
     if (d / U < tol) break;
     prev.swap(u);
   }
@@ -291,7 +341,8 @@ json check_cavity(const CheckOptions& o, double re) {
   const Flags f = shape_flags(c);
   auto s = solver_for(c, f);
   std::vector<double> rho, u;
-  const long steps = run_steady(*s, U, 1e-6, 400000, rho, u);
+  CaseProgress progress(o.progress);
+  const long steps = run_steady(*s, U, 1e-6, 400000, rho, u, progress);
   // Centre lines: nodes at (j + 1/2)/N, mean of the two middle columns (rows) for even N,
   // wall values appended, linear interpolation to Ghia's points (docs/lbmsim.md 3).
   std::vector<double> ys{0.0}, us{0.0}, xs{0.0}, vs{0.0};
@@ -377,6 +428,7 @@ json check_cylinder(const CheckOptions& o) {
   const long max_steps = 60L * nx;
   const double tol = 1e-4;
   double cd = 0, cl = 0, prev_cd = 0, prev_cl = 0;
+  CaseProgress progress(o.progress);
   while (s->step_count() < max_steps) {
     double sum_cd = 0, sum_cl = 0;
     for (long k = 0; k < window / every; ++k) {
@@ -390,6 +442,10 @@ json check_cylinder(const CheckOptions& o) {
     if (!std::isfinite(cd)) throw runtime_failure("state became non-finite at step {}", s->step_count());
     // Steady: C_D to 1e-4 relative, C_L to 2e-5 (a thirtieth of its published interval).
     if (std::abs(cd - prev_cd) < tol * std::abs(cd) && std::abs(cl - prev_cl) < 2e-5) break;
+    // The change in units of its tolerance (1: steady), scaled so that a relative change of
+    // C_D of 1 starts the bar and the tolerance ends it.
+    const double tolerances = std::max(std::abs(cd - prev_cd) / (tol * std::abs(cd)), std::abs(cl - prev_cl) / 2e-5);
+    progress.converging(tolerances * tol, tol, static_cast<double>(s->step_count()), static_cast<double>(max_steps));
     prev_cd = cd, prev_cl = cl;
   }
   std::vector<double> rho, u;
@@ -528,8 +584,19 @@ json run_check(const std::string& name, const CheckOptions& o) {
     if (name == "all") names.insert(names.end(), {"cavity400", "cavity1000"});
     json cases = json::array();
     bool pass = true;
+    // One bar over the cases, each weighted by its time (seconds on 2 threads, measured on a
+    // loaded 2-core machine; the Re 400 and 1000 cavities scaled from 1 thread).
+    auto seconds_of = [](const std::string& n) {
+      return n == "cylinder20" ? 39.0 : n == "cavity1000" ? 60.0 : n == "cavity400" ? 18.0 : n == "taylor-green" ? 4.3
+             : n == "cavity" ? 1.6 : 0.3;
+    };
+    double total = 0, done = 0;
+    for (const std::string& n : names) total += seconds_of(n);
     for (const std::string& n : names) {
-      json r = run_check(n, CheckOptions{});
+      CheckOptions one;
+      one.progress = progress_part(o.progress, done / total, (done + seconds_of(n)) / total);
+      done += seconds_of(n);
+      json r = run_check(n, one);
       pass = pass && r["pass"].get<bool>();
       cases.push_back(r);
     }

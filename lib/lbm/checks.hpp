@@ -8,10 +8,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/progress_callback.hpp"
+
 namespace fest::lbm {
 
 struct CheckOptions {
   int n = 0;  // resolution where a case has one (cavity N, cylinder D); 0: the default
+  // Thousandths of the case: runs done (a case of fixed runs), or, for a case run to a
+  // steady state, how far its change has fallen towards the tolerance on a log scale (or
+  // its steps towards the limit, whichever is further).
+  ProgressFn progress;
 };
 
 nlohmann::json check_poiseuille(const CheckOptions& o);

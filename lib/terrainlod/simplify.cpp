@@ -164,9 +164,11 @@ class CollapseEngine {
     for (const auto& p : start.vertices) zref_.push_back(measure_.height(p));
   }
 
-  SimplifyResult run() {
+  // `progress` (may be empty): thousandths of the bound reached by the collapse costs.
+  SimplifyResult run(const ProgressFn& progress = {}) {
     SimplifyResult result;
     for (auto v : m_.vertices()) refresh(v);
+    std::uint64_t reported = 0;
     while (!heap_.empty()) {
       const auto [cost, vi, wi, version] = heap_.top();
       heap_.pop();
@@ -195,6 +197,10 @@ class CollapseEngine {
       ++result.collapses;
       result.max_error = std::max(result.max_error, cost);
       for (auto u : ring_) mark_dirty(u);
+      if (progress && (result.collapses & 4095) == 0 && limit_ > 0) {
+        const auto at = static_cast<std::uint64_t>(1000 * std::min(1.0, result.max_error / limit_));
+        if (at > reported) progress(reported = at, 1000);
+      }
     }
     // The result in the order OpenMesh's garbage_collection() leaves the mesh in, without
     // running it (the library is built with its assertions, whose property checks compare
@@ -572,7 +578,7 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
     // mesh, as the screen only rejects what the measure would).
     if (auto rtin = rtin_start_mesh(ref, SquareLattice{0, 0, n, 1}, corners, limit, measure)) {
       CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, rtin->tin, rtin->locked, limit, nullptr);
-      SimplifyResult result = engine.run();
+      SimplifyResult result = engine.run(options.progress);
       result.tolerance = tolerance;
       return result;
     }
@@ -581,7 +587,7 @@ SimplifyResult simplify_grid(const HeightGrid& grid, const SimplifyOptions& opti
   std::vector<std::uint8_t> locked(start.vertices.size(), 0);
   for (int c : {0, w - 1, (grid.height - 1) * w, grid.height * w - 1}) locked[static_cast<std::size_t>(c)] = 1;
   CollapseEngine<GridMeasure> engine(GridMeasure{ref}, ref, start, locked, limit, nullptr);
-  SimplifyResult result = engine.run();
+  SimplifyResult result = engine.run(options.progress);
   result.tolerance = tolerance;
   return result;
 }

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/progress_callback.hpp"
 #include "terrainlod/height_grid.hpp"
 #include "terrainlod/reference_surface.hpp"
 #include "terrainlod/tin_reference.hpp"
@@ -40,6 +41,9 @@ struct SimplifyOptions {
   double max_error = 0;  // vertical bound in height units (>= 0)
   DiagonalRule diagonal = DiagonalRule::shortest;
   StartRule start = StartRule::rtin;
+  // Thousandths: the collapses are taken cheapest first, so the cost of the one taken
+  // rises from 0 to the bound; the bar follows it (never going back).
+  ProgressFn progress;
 };
 
 struct SimplifyResult {

@@ -121,6 +121,10 @@ EdgeMap multiscale_edges(const Volume& volume, const EdgeOptions& o) {
   std::vector<std::array<float, 3>> offset(n);  // sub-voxel offset of scale-1 maxima
   EdgeMap out;
   const std::size_t sy = d[0], sz = d[0] * d[1];
+  // Progress: one pass over the z slices per scale (its smoothing and gradient come before
+  // it) and one per chaining step.
+  const std::uint64_t passes = static_cast<std::uint64_t>(J + K - 1), slices = d[2];
+  std::uint64_t pass = 0;
   for (int j = 1; j <= J; ++j) {
     const long hole = 1L << (j - 1);
     for (int a = 0; a < 3; ++a) smooth_axis(s, d, a, hole, threads);
@@ -142,7 +146,9 @@ EdgeMap multiscale_edges(const Volume& volume, const EdgeOptions& o) {
     auto& mx = maxima[static_cast<std::size_t>(j - 1)];
     mx.assign(n, 0);
     const double threshold = out.threshold;
+    ProgressCounter scale_slices(o.progress, slices, pass++ * slices, passes * slices);
     parallel_for(d[2], threads, [&](std::size_t z) {
+      scale_slices.step();
       for (std::size_t y = 0; y < d[1]; ++y)
         for (std::size_t x = 0; x < d[0]; ++x) {
           const std::size_t i = x + y * sy + z * sz;
@@ -161,6 +167,7 @@ EdgeMap multiscale_edges(const Volume& volume, const EdgeOptions& o) {
           }
         }
     });
+    scale_slices.finish();
     out.maxima_per_scale.push_back(static_cast<std::size_t>(std::count(mx.begin(), mx.end(), 1)));
     modulus[static_cast<std::size_t>(j - 1)] = std::move(g.m);
   }
@@ -179,7 +186,9 @@ EdgeMap multiscale_edges(const Volume& volume, const EdgeOptions& o) {
     std::vector<std::uint8_t> next(n, 0);
     std::vector<float> next_alpha(n, 0.f);
     const double ratio = std::log2(scale_sigma(j + 1) / scale_sigma(j));
+    ProgressCounter chain_slices(o.progress, slices, pass++ * slices, passes * slices);
     parallel_for(d[2], threads, [&](std::size_t z) {
+      chain_slices.step();
       for (std::size_t y = 0; y < d[1]; ++y)
         for (std::size_t x = 0; x < d[0]; ++x) {
           const std::size_t i = x + y * sy + z * sz;
@@ -210,6 +219,7 @@ EdgeMap multiscale_edges(const Volume& volume, const EdgeOptions& o) {
           next_alpha[i] = static_cast<float>(a + alpha_sum[best_i]);
         }
     });
+    chain_slices.finish();
     kept = std::move(next);
     alpha_sum = std::move(next_alpha);
   }

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/progress_callback.hpp"
 #include "core/volume.hpp"
 
 namespace fest::wavelet {
@@ -30,6 +31,7 @@ struct EdgeOptions {
   double threshold = -1;   // minimum M_j; < 0: automatic (see edges.cpp)
   int min_scales = 0;      // chain through the first K scales (0: all J)
   int threads = 1;
+  ProgressFn progress;     // z slices taken up by every scale's maxima and every chaining pass
 };
 
 struct EdgePoint {

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/progress_callback.hpp"
 #include "core/volume.hpp"
 #include "wavelet/lifting.hpp"
 #include "wavelet/quantiser.hpp"
@@ -40,6 +41,9 @@ struct EncodeOptions {
   // the voxels whose mask byte is non-zero (mask empty: no region).
   std::vector<std::uint8_t> roi_mask;
   double roi_bound = 0.0;
+  // Thousandths of the whole: quantiser (and its step search), transform, coding, the
+  // error of every truncation point, the check by decoding.
+  ProgressFn progress;
 };
 
 struct ChunkInfo {
@@ -99,8 +103,9 @@ struct DecodeResult {
 // Decodes all complete chunks (at most `max_chunks`, -1 = all). A file whose
 // approximation chunk is incomplete, or a chunk whose hash does not match, throws
 // bad_input.
+// `progress` hears thousandths: the streams decoded, then the inverse transform.
 DecodeResult decode_vw(std::string_view bytes, int threads = 1, int max_chunks = -1,
-                       std::uint64_t max_voxels = kMaxVoxels);
+                       std::uint64_t max_voxels = kMaxVoxels, const ProgressFn& progress = {});
 
 // Recomputes the header's and the complete chunks' hashes in place (fuzzers use it to
 // get past the checksums to the parsers behind them). Leaves unparsable bytes alone.

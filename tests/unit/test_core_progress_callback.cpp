@@ -77,4 +77,30 @@ TEST(Progress, CallbackDrawsTheReportedFraction) {
   EXPECT_NE(text.find("100%"), std::string::npos) << text;
 }
 
+TEST(ProgressPart, OneStageOfSeveralInThousandths) {
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> calls;
+  fest::ProgressFn fn = [&](std::uint64_t done, std::uint64_t total) { calls.emplace_back(done, total); };
+  fest::ProgressFn second = fest::progress_part(fn, 0.25, 0.75);  // the middle half of the bar
+  second(0, 10);
+  second(5, 10);
+  second(12, 10);  // more than the total: the part's end, never beyond
+  second(3, 0);    // an unknown total: the part's start
+  ASSERT_EQ(calls.size(), 4u);
+  EXPECT_EQ(calls[0], std::make_pair(std::uint64_t{250}, std::uint64_t{1000}));
+  EXPECT_EQ(calls[1], std::make_pair(std::uint64_t{500}, std::uint64_t{1000}));
+  EXPECT_EQ(calls[2], std::make_pair(std::uint64_t{750}, std::uint64_t{1000}));
+  EXPECT_EQ(calls[3], std::make_pair(std::uint64_t{250}, std::uint64_t{1000}));
+  EXPECT_FALSE(fest::progress_part({}, 0.0, 1.0)) << "nobody listening stays nobody listening";
+}
+
+// README "Conventions": -q hides the automatic bar, an explicit --progress draws it anyway.
+// (Whether standard error is a terminal decides the rest; neither case below depends on it.)
+TEST(ProgressWanted, ExplicitProgressWinsOverQuiet) {
+  fest::set_progress_quiet(true);
+  EXPECT_TRUE(fest::progress_wanted(true));
+  EXPECT_FALSE(fest::progress_wanted(false)) << "-q: no automatic bar, terminal or not";
+  fest::set_progress_quiet(false);
+  EXPECT_TRUE(fest::progress_wanted(true));
+}
+
 }  // namespace

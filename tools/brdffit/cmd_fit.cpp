@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/input_name.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "fitted_inputs.hpp"
 #include "formats/brdf/merl_io.hpp"
@@ -79,7 +80,10 @@ int run_fit(const FitArgs& a) {
   }
   brdffit::FitOptions in_data_units = o;
   in_data_units.model.max_lobe_albedo = brdffit::albedo_bound_in_data_units(o.model.max_lobe_albedo, samples);
+  Progress bar("brdffit fit", 0, progress_wanted(a.progress));
+  in_data_units.progress = bar.callback();
   const brdffit::FitResult r = brdffit::fit_brdf(samples, in_data_units);
+  bar.finish();
   nlohmann::json out = brdffit::brdf_to_json(r.brdf);
   if (o.model.shared) out["shared_lobe"] = true;
   const double rms = std::sqrt(r.mean_squared);

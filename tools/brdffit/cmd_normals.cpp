@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "fitted_inputs.hpp"
@@ -50,7 +51,7 @@ std::string normals_ply(const brdffit::LumitexelSet& set, const brdffit::NormalR
 int run_normals(const NormalsArgs& a) {
   const Stopwatch clock;
   if (!a.ascii) refuse_binary_terminal(a.output, "use -o or a pipe");
-  const brdffit::NormalOptions o = with_threads(a.n, a.threads);
+  brdffit::NormalOptions o = with_threads(a.n, a.threads);
   nlohmann::json wh;
   const brdffit::Projection p = decoded_from(a.svbrdf, [&] { return brdffit::decode_ltw(read_input(a.svbrdf), &wh); });
   nlohmann::json header;
@@ -60,7 +61,10 @@ int run_normals(const NormalsArgs& a) {
   if (p.cluster.size() != set.lumitexels.size())
     throw bad_input("{} has weights for {} lumitexels, the lumitexel file has {}", a.svbrdf, p.cluster.size(), set.lumitexels.size());
   check_normal_options(o);
+  Progress bar("brdffit normals", 0, progress_wanted(a.progress));
+  o.progress = bar.callback();
   const brdffit::NormalResult r = brdffit::refine_normals(set, p, o);
+  bar.finish();
   write_output(a.output, normals_ply(set, r, a.ascii));
   write_report(a.report, {{"command", "normals"}, {"lumitexels", set.lumitexels.size()}, {"refined", r.refined_count},
                           {"residual_before", r.residual_before}, {"residual_after", r.residual_after},

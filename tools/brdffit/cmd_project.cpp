@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "fitted_inputs.hpp"
@@ -39,8 +40,13 @@ int run_project(const ProjectArgs& a) {
   drop_sparse(set, a.min_samples);
   const std::vector<brdffit::FitSample> local = brdffit::local_samples(set, o.split.fit.threads);
   check_basis(a.basis);
+  // One bar: the projection, then its error (about 7 % of the time).
+  Progress bar("brdffit project", 0, progress_wanted(a.progress));
+  o.progress = progress_part(bar.callback(), 0.0, 0.93);
   const brdffit::Projection p = brdffit::project_lumitexels(set, local, clusters.model, clusters.clusters, o);
-  const brdffit::ProjectionError err = brdffit::projection_error(set, local, p, o.split.fit.threads);
+  const brdffit::ProjectionError err =
+      brdffit::projection_error(set, local, p, o.split.fit.threads, progress_part(bar.callback(), 0.93, 1.0));
+  bar.finish();
   const std::string bytes = brdffit::encode_ltw(p, {{"mesh_sha256", set.mesh_sha256},
                                                      {"error", {{"projected", err.projected}, {"per_cluster", err.per_cluster}}}});
   write_output(a.output, bytes);

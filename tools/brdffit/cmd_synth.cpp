@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "formats/table/table_io.hpp"
 #include "reflectance/environment.hpp"
@@ -80,6 +81,7 @@ int run_synth(const SynthArgs& a) {
   std::mt19937_64 rng(a.seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   int last_angle = -1;
+  Progress bar("brdffit synth", images.size(), progress_wanted(a.progress));
   for (std::size_t k = 0; k < images.size(); ++k) {
     const brdffit::TurntableImage& img = images[k];
     reflectance::Rendering r = reflectance::render(truth_mesh, mats, img.view.camera, img.view.light, ro);
@@ -97,6 +99,7 @@ int run_synth(const SynthArgs& a) {
       write_output((fs::path(a.out) / fmt::format("preview/a{:03}_L{}.png", img.angle_index, img.light)).string(),
                    encode_png(tonemap(r.radiance, 1.0)));
     last_angle = img.angle_index;
+    bar.advance();
     rig["images"].push_back({{"file", file},
                              {"angle_index", img.angle_index},
                              {"angle_deg", img.angle_deg},
@@ -128,6 +131,7 @@ int run_synth(const SynthArgs& a) {
     truth["environment"] = a.env;
     truth["environment_light"] = a.env_light;
   }
+  bar.finish();
   write_output((fs::path(a.out) / "mesh.ply").string(), encode_mesh_ply(given_mesh));
   if (a.perturb_deg > 0) {
     write_output((fs::path(a.out) / "mesh_true.ply").string(), encode_mesh_ply(truth_mesh));

@@ -35,6 +35,7 @@ struct SynthArgs {
   bool previews = false;
   std::string out;
   int threads = 0;
+  bool progress = false;  // --progress: images rendered
 };
 int run_synth(const SynthArgs& a);
 
@@ -103,6 +104,7 @@ struct FitArgs {
   FitFlags fit;
   std::string input = "-", merl, output = "-";
   bool angles = false;
+  bool progress = false;  // --progress: LM iterations of the starts
 };
 int run_fit(const FitArgs& a);
 
@@ -124,6 +126,7 @@ struct ProjectArgs {
   double split_scale = 1.0;
   int split_iters = 10, threads = 0, min_samples = 2;
   std::string report;
+  bool progress = false;  // --progress: nearest clusters, bases, weights, error
 };
 int run_project(const ProjectArgs& a);
 
@@ -133,6 +136,7 @@ struct NormalsArgs {
   int threads = 0;
   bool ascii = false;
   std::string report;
+  bool progress = false;  // --progress: lumitexels refined
 };
 int run_normals(const NormalsArgs& a);
 

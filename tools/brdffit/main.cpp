@@ -92,6 +92,7 @@ CLI::App* add_synth(CLI::App& app, SynthArgs& synth) {
   s->add_flag("--previews", synth.previews, "Also write tone-mapped PNGs into DIR/preview/");
   s->add_option("-o,--output", synth.out, "Dataset folder (created)")->required();
   cli::add_threads(*s, synth.threads);
+  cli::add_progress(*s, synth.progress);
   return s;
 }
 
@@ -213,6 +214,7 @@ CLI::App* add_fit(CLI::App& app, FitArgs& fit) {
   f->add_flag("--angles", fit.angles, "Columns theta_i,phi_i,theta_o,phi_o,r,g,b (radians)");
   f->add_option("-o,--output", fit.output, "brdf.json (- = stdout)")->default_val("-");
   add_fit_flags(f, fit.fit);
+  cli::add_progress(*f, fit.progress);
   return f;
 }
 
@@ -253,6 +255,7 @@ CLI::App* add_project(CLI::App& app, ProjectArgs& project) {
   p->add_option("--min-samples", project.min_samples, "Lumitexels with fewer samples get the pure cluster BRDF")->default_val(2)->check(fest::cli::range(1, 65535));
   p->add_option("--report", project.report, "Write timings and errors as JSON");
   cli::add_threads(*p, project.threads);
+  cli::add_progress(*p, project.progress);
   return p;
 }
 
@@ -268,6 +271,7 @@ CLI::App* add_normals(CLI::App& app, NormalsArgs& normals) {
   n->add_flag("--ascii", normals.ascii, "ASCII PLY instead of binary");
   n->add_option("--report", normals.report, "Write timings and residuals as JSON");
   cli::add_threads(*n, normals.threads);
+  cli::add_progress(*n, normals.progress);
   return n;
 }
 

@@ -69,7 +69,7 @@ int run(const Options& o) {
                     in.name);
   if (skipped > 0 && !o.quiet) warn("decimate", fmt::format("dropped {} non-manifold or degenerate faces", skipped));
   decimate::SimplifyOptions s = simplify_options(o, mesh);
-  Progress bar("decimate", 0, progress_wanted(o.progress) && !o.quiet);
+  Progress bar("decimate", 0, progress_wanted(o.progress));
   s.progress = bar.callback();
 
   decimate::SimplifyStats st;

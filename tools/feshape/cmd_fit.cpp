@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
 #include "feshape/fit.hpp"
@@ -95,10 +96,13 @@ int run_fit(const FitArgs& a) {
   }
   std::vector<feshape::LevelResult> done;  // levels finished so far, for --partial
   std::vector<feshape::LevelResult> levels;
+  Progress bar("feshape fit", 0, progress_wanted(a.progress));
+  o.progress = bar.callback();
   try {
     levels = feshape::fit(points, model, o, [&](const feshape::LevelResult& l) {
       if (!a.partial.empty()) done.push_back(l);
     });
+    bar.finish();
   } catch (const Error& e) {
     // A failure after some levels (the node limit, a breakdown): the last finished level
     // goes to --partial when asked, never to the output.

@@ -42,6 +42,7 @@ struct FitArgs {
   std::string partial;              // on a failure after some levels: the last one
   std::string report;
   int threads = 0;
+  bool progress = false;  // --progress: levels, iterations within each
 };
 
 struct SampleArgs {

@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
   fit->add_option("--partial", fa.partial, "On a failure after some levels (node limit): write the last finished one here");
   fit->add_option("--report", fa.report, "JSON: parameters and the per-level table (nodes, elements, errors)");
   fest::cli::add_threads(*fit, fa.threads);
+  fest::cli::add_progress(*fit, fa.progress);
 
   SampleArgs sa;
   auto* sample = app.add_subcommand("sample", "Points on a deformable superquadric (x y z rows)");

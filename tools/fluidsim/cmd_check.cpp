@@ -1,8 +1,11 @@
 // fluidsim check: the analytic cases of docs/fluidsim.md -> one JSON report.
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "fluidsim/checks.hpp"
 #include "openmp_threads.hpp"
 
@@ -28,12 +31,18 @@ int check_command(const CheckOptions& o) {
       default: return check_interp(co);
     }
   };
+  const std::vector<CheckCase> cases = o.which == CheckCase::all
+                                            ? std::vector<CheckCase>{CheckCase::projection, CheckCase::taylor_green,
+                                                                     CheckCase::abc, CheckCase::mass, CheckCase::stability,
+                                                                     CheckCase::interp}
+                                            : std::vector<CheckCase>{o.which};
+  Progress bar("fluidsim check", cases.size(), progress_wanted(o.progress));
   if (o.which == CheckCase::all) {
     report = {{"check", "all"}, {"cases", json::array()}};
     bool pass = true;
-    for (const CheckCase which : {CheckCase::projection, CheckCase::taylor_green, CheckCase::abc, CheckCase::mass,
-                                  CheckCase::stability, CheckCase::interp}) {
+    for (const CheckCase which : cases) {
       json r = run_one(which);
+      bar.advance();
       pass = pass && r["pass"].get<bool>();
       report["cases"].push_back(r);
     }
@@ -41,6 +50,7 @@ int check_command(const CheckOptions& o) {
   } else {
     report = run_one(o.which);
   }
+  bar.finish();
   const std::string text = report.dump(2) + "\n";
   if (!o.report.empty()) write_output(o.report, text);
   write_output("-", text);

@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/input_name.hpp"
+#include "core/progress.hpp"
 #include "fluidsim/frame.hpp"
 #include "image_data_frame.hpp"
 #include "output_names.hpp"
@@ -110,6 +111,7 @@ int render_command(const RenderOptions& o) {
     lo = o.range[0];
     hi = o.range[1];
   }
+  Progress bar("fluidsim render", frames.size(), progress_wanted(o.progress));
   for (const Frame& f : frames) {
     const Frame& ref = frames.front();
     if (f.size != ref.size || f.dim != ref.dim || f.channel_of(field) < 0)
@@ -119,6 +121,7 @@ int render_command(const RenderOptions& o) {
     const Plane p = render_plane(f.magnitude(field), f.size, f.dim, ro);
     if (o.to == ImageFormat::pfm) {
       images.push_back(formats::write_image(Image{plane_to_float(p), ColorSpace::linear}, formats::Format::pfm));
+      bar.advance();
       continue;
     }
     if (!range_set) {
@@ -132,7 +135,9 @@ int render_command(const RenderOptions& o) {
     }
     images.push_back(formats::write_image(Image{plane_to_rgb(p, lo, hi, o.colormap, o.depth), ColorSpace::srgb},
                                           formats::Format::png));
+    bar.advance();
   }
+  bar.finish();
   if (o.output == "-") {
     std::string all;
     for (const auto& im : images) all += im;

@@ -398,7 +398,7 @@ void write_frames(const RunOptions& o, const Scene& scene, const Layout& layout,
   out.pattern = o.output;
   out.format = o.format;
   const int K = scene.interp;
-  Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress) && !o.quiet);
+  Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress));
   for (long f = 0; f < scene.frames; ++f) {
     const long level = f / K;
     const int phase = static_cast<int>(f % K);

@@ -50,6 +50,7 @@ struct RenderOptions {
   fluidsim::Colormap colormap = fluidsim::Colormap::inferno;
   double sigma = 0.0;   // 0: 4 / (domain length) so a full-density column is mostly opaque
   int depth = 8;
+  bool progress = false;  // --progress: frames rendered
 };
 
 struct InterpOptions {
@@ -68,6 +69,7 @@ struct CheckOptions {
   double nu = 0.01;
   std::string report;
   int threads = 0;       // 0: all cores
+  bool progress = false;  // --progress: cases done
 };
 
 struct BenchOptions {

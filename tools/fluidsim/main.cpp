@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"on", "off"}));
   r->add_option("--report", run.report, "Write totals and figures as JSON");
   r->add_option("--stats", run.stats, "Write one JSON line of figures per frame");
-  r->add_flag("--progress", run.progress, "Show a progress bar");
+  fest::cli::add_progress(*r, run.progress);
   fest::cli::add_threads(*r, run.threads);
 
   RenderOptions ren;
@@ -145,6 +145,7 @@ int main(int argc, char** argv) {
   d->add_option("--colormap", ren_colormap, "gray, inferno or velocity");
   d->add_option("--sigma", ren.sigma, "Absorb: extinction per unit field per unit length")->check(fest::cli::range(0.0, 1e9));
   d->add_option("--depth", ren.depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
+  fest::cli::add_progress(*d, ren.progress);
 
   InterpOptions ip;
   CLI::App* i = app.add_subcommand("interp", "Linear blend (1-a) A + a B of two frames of identical shape");
@@ -169,6 +170,7 @@ int main(int argc, char** argv) {
   c->add_option("--nu", ck.nu, "Viscosity of the decay cases")->check(fest::cli::range(0.0, 10.0));
   c->add_option("--report", ck.report, "Also write the report to this file");
   fest::cli::add_threads(*c, ck.threads);
+  fest::cli::add_progress(*c, ck.progress);
 
   BenchOptions bo;
   std::vector<std::string> bench_poisson;

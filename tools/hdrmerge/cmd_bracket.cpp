@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
@@ -32,10 +33,13 @@ int run_bracket(const BracketOptions& a) {
     cv::merge(planes, radiance.pixels);
   }
   std::vector<std::string> encoded;
+  Progress bar("hdrmerge bracket", times.size(), progress_wanted(a.progress));
   for (std::size_t k = 0; k < times.size(); ++k) {
     const cv::Mat z = hdr::expose(radiance.pixels * a.scale, times[k], a.camera, a.seed + k);
     encoded.push_back(formats::write_image(Image{z, ColorSpace::srgb}, formats::Format::png));
+    bar.advance();
   }
+  bar.finish();
   std::string curve;
   if (!a.response_out.empty()) {
     hdr::Response r;

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -17,6 +18,9 @@
 namespace fest::hdrmerge_tool {
 
 namespace {
+
+// Where the parts of a merge end on its bar (see run_merge).
+constexpr double kReadEnd = 0.3, kResponseEnd = 0.31, kMergeEnd = 0.37;
 
 formats::Format radiance_format(const MergeOptions& a) {
   formats::OutputFormat f{formats::Format::exr, false};
@@ -34,12 +38,21 @@ formats::Format radiance_format(const MergeOptions& a) {
 int run_merge(const MergeOptions& a) {
   const formats::Format format = radiance_format(a);
   const int threads = resolve_threads(a.threads);
-  const hdr::ExposureStack stack = read_stack(a.series.images, a.series.times);
+  // One bar: the images read, the response, the merge, the encoding; where each ends as
+  // measured on seven 6000x3000 exposures (8 s on 2 loaded cores: reading 2.4 s, recovering
+  // the response 0.1 s, the merge 0.5 s, encoding a float EXR 5 s -- one step, formats/
+  // does not report).
+  Progress bar("hdrmerge merge", 0, progress_wanted(a.progress));
+  auto reached = [&bar](double f) { bar.set(static_cast<std::uint64_t>(1000 * f + 0.5), 1000); };
+  const hdr::ExposureStack stack = read_stack(a.series.images, a.series.times, progress_part(bar.callback(), 0.0, kReadEnd));
   const hdr::Response response =
       a.response_in.empty()
           ? recover_response(stack, a.series.method, a.series.samples, a.series.lambda)
           : response_from_table(formats::parse(formats::load_input(a.response_in), formats::read_table));
-  const hdr::MergeResult merged = hdr::merge_debevec(stack, response, threads);
+  reached(kResponseEnd);
+  const hdr::MergeResult merged =
+      hdr::merge_debevec(stack, response, threads, progress_part(bar.callback(), kResponseEnd, kMergeEnd));
+  reached(kMergeEnd);
   formats::ImageWriteOptions w;
   w.exr_half = format == formats::Format::exr && !a.full_float;
   // Everything is encoded before anything is written: a failure leaves no file behind.
@@ -50,6 +63,7 @@ int run_merge(const MergeOptions& a) {
   if (!a.valid_out.empty()) write_output(a.valid_out, valid);
   if (!a.response_out.empty()) write_output(a.response_out, curve);
   write_output(a.output, radiance);
+  bar.finish();
   return 0;
 }
 

@@ -31,11 +31,13 @@ struct MergeOptions {
   bool full_float = false;
   std::string response_in, response_out, valid_out;
   int threads = 0;
+  bool progress = false;  // --progress: images read, response, merge, encoding
 };
 
 struct CalibrateOptions {
   SeriesOptions series;
   std::string output = "-";
+  bool progress = false;  // --progress: images read, then the recovery
 };
 
 struct BracketOptions {
@@ -46,6 +48,7 @@ struct BracketOptions {
   std::uint64_t seed = 1;
   std::string directory;
   std::string response_out;
+  bool progress = false;  // --progress: exposures made and encoded
 };
 
 struct SheetOptions {

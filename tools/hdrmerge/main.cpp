@@ -74,12 +74,14 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("--response-out", merge.response_out, "Also write the response curve used (CSV)");
   merge_cmd->add_option("--valid", merge.valid_out, "Also write the validity map (EXR, fraction of full hat weight)");
   cli::add_threads(*merge_cmd, merge.threads);
+  cli::add_progress(*merge_cmd, merge.progress);
 
   CalibrateOptions calibrate;
   std::vector<std::string> calibrate_times;
   auto* calibrate_cmd = app.add_subcommand("calibrate", "Recover the response curve only: CSV z,gR,gG,gB");
   add_series(calibrate_cmd, calibrate.series, calibrate_times);
   calibrate_cmd->add_option("-o,--output", calibrate.output, "Response CSV, - = standard output");
+  cli::add_progress(*calibrate_cmd, calibrate.progress);
 
   BracketOptions bracket;
   std::vector<std::string> bracket_times;
@@ -96,6 +98,7 @@ int main(int argc, char** argv) {
   bracket_cmd->add_option("--scale", bracket.scale, "Multiply the radiance first")->check(fest::cli::positive);
   bracket_cmd->add_option("--seed", bracket.seed, "Noise seed (exposure k uses seed + k)");
   bracket_cmd->add_option("--response-out", bracket.response_out, "Also write the true response curve (CSV, g(128) = 0)");
+  cli::add_progress(*bracket_cmd, bracket.progress);
 
   SessionOptions session;
   auto* session_cmd = app.add_subcommand(

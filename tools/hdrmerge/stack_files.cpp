@@ -37,7 +37,8 @@ double parse_exposure_time(const std::string& text) {
   throw usage_error("--times: '{}' is not a positive exposure time (seconds, e.g. 0.004 or 1/250)", text);
 }
 
-hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<double>& times) {
+hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<double>& times,
+                              const ProgressFn& progress) {
   hdr::ExposureStack stack;
   stack.times = times;
   if (paths.size() != times.size())
@@ -58,6 +59,7 @@ hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::
       throw bad_input("image is {}x{}x{}, the first of the series {}x{}x{} ({})", m.cols, m.rows, m.channels(),
                       stack.images.front().cols, stack.images.front().rows, stack.images.front().channels(), path);
     stack.images.push_back(m);
+    if (progress) progress(stack.images.size(), paths.size());
   }
   hdr::validate_stack(stack);
   return stack;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/progress_callback.hpp"
 #include "core/table.hpp"
 #include "hdr/debevec.hpp"
 #include "hdr/stack.hpp"
@@ -17,7 +18,9 @@ double parse_exposure_time(const std::string& text);
 // Reads every image (content-detected format) and pairs it with its time (seconds). Throws
 // bad_input naming the file for unreadable or inconsistent images, and for a count
 // mismatch between images and times.
-hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<double>& times);
+// `progress` (may be empty) hears the images read of the series.
+hdr::ExposureStack read_stack(const std::vector<std::string>& paths, const std::vector<double>& times,
+                              const ProgressFn& progress = {});
 
 Table response_table(const hdr::Response& response);
 // Throws bad_input unless the table has 256 rows z = 0..255 and the g columns.

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "isosurface/adaptive.hpp"
@@ -89,6 +90,7 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
   const std::size_t count = errors.empty() ? path.size() : errors.size();
   nlohmann::json levels = nlohmann::json::array();
   std::size_t cumulative = 0;
+  Progress bar("isosurf progressive", count, progress_wanted(o.progress));
   for (std::size_t k = 0; k < count; ++k) {
     t0 = Clock::now();
     isosurface::Surface s;
@@ -113,7 +115,9 @@ int run_progressive(const ExactOptions& o, const AdaptiveArgs& a, const Progress
     if (!errors.empty()) j["max_error"] = errors[k];
     else j["focus"] = path[k];
     levels.push_back(j);
+    bar.advance();
   }
+  bar.finish();
   nlohmann::json manifest = {{"iso", in.iso}, {"source", in.source}, {"format", format}, {"build_s", t_build},
                              {errors.empty() ? "frames" : "levels", levels}};
   write_output((std::filesystem::path(o.output) / "manifest.json").string(), manifest.dump(2) + "\n");

@@ -36,6 +36,7 @@ struct ExactOptions {
   bool no_octree = false;             // brute-force scan (same output; for comparisons)
   int qbits = 14;                     // drc position quantization (0 = lossless)
   int threads = 0;
+  bool progress = false;  // --progress: read, extract, write (progressive: meshes)
   std::string report;
   bool quiet = false;
 };

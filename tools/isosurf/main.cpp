@@ -142,6 +142,7 @@ int main(int argc, char** argv) {
   e->add_option("--report", ex.report, "Write counts, topology, area, volume and timings as JSON");
   add_raw(e, ext);
   fest::cli::add_threads(*e, ex.threads);
+  fest::cli::add_progress(*e, ex.progress);
 
   ExactOptions ad_ex;
   AdaptiveArgs ad;
@@ -175,6 +176,7 @@ int main(int argc, char** argv) {
   edge_rule(d, ad, "Leaf edges with one finest crossing at most: transitions (default) or all (keeps thin features)");
   add_raw(d, adt);
   fest::cli::add_threads(*d, ad_ex.threads);
+  fest::cli::add_progress(*d, ad_ex.progress);
 
   ExactOptions pr_ex;
   AdaptiveArgs pr_ad;
@@ -202,6 +204,7 @@ int main(int argc, char** argv) {
   edge_rule(g, pr_ad, "Leaf edges with one finest crossing at most: transitions (default) or all");
   add_raw(g, prt);
   fest::cli::add_threads(*g, pr_ex.threads);
+  fest::cli::add_progress(*g, pr_ex.progress);
 
   StatsOptions st;
   auto* s = app.add_subcommand("stats", "Topology (boundary/non-manifold edges, components, Euler, genus), area and volume of a mesh as JSON");

@@ -3,6 +3,7 @@
 
 #include "commands.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "lbm/checks.hpp"
 
 namespace fest::lbmsim_tool {
@@ -12,7 +13,10 @@ using nlohmann::json;
 int check_command(const CheckOptions& o) {
   lbm::CheckOptions co;
   co.n = o.n;
+  Progress bar("lbmsim check", 0, progress_wanted(o.progress));
+  co.progress = bar.callback();
   const json report = lbm::run_check(o.which, co);
+  bar.finish();
   const std::string text = report.dump(2) + "\n";
   if (!o.report.empty()) write_output(o.report, text);
   write_output("-", text);

@@ -33,6 +33,7 @@ struct CheckOptions {
   std::string which = "all-fast";
   int n = 0;
   std::string report;
+  bool progress = false;  // --progress: runs done, or convergence towards the steady state
 };
 
 struct BenchOptions {

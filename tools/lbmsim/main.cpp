@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
   c->add_option("--n", ck.n, "Resolution (cavity N, cylinder D in cells)")->check(fest::cli::range(8, 1024));
   c->add_option("--report", ck.report, "Also write the report to this file");
   fest::cli::add_threads(*c, threads);
+  fest::cli::add_progress(*c, ck.progress);
 
   BenchOptions bo;
   CLI::App* b = app.add_subcommand("bench", "Measure MLUPS of a periodic box next to the copy bandwidth; JSON lines");

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/input.hpp"
 #include "trace_inputs.hpp"
@@ -22,7 +23,17 @@ int run_classify(const ClassifyArgs& a) {
   const std::size_t n = grid.mesh().tets.size();
   std::vector<CellRecord> records(n);
   CellRecord scratch;
-  for (std::size_t c = 0; c < n; ++c) records[c] = grid.record(static_cast<int32_t>(c), scratch);
+  // The bar: every cell once, then once more per decade of --sweep-parallel.
+  std::uint64_t decades = 0;
+  if (a.sweep)
+    for (double e = a.sweep->from; e <= a.sweep->to * (1 + 1e-9); e *= 10) ++decades;
+  Progress bar("lemtrace classify", static_cast<std::uint64_t>(n) * (1 + decades), progress_wanted(a.progress));
+  constexpr std::size_t kCellsPerStep = 4096;
+  for (std::size_t c = 0; c < n; ++c) {
+    records[c] = grid.record(static_cast<int32_t>(c), scratch);
+    if ((c + 1) % kCellsPerStep == 0) bar.advance(kCellsPerStep);
+  }
+  bar.set(n);
   std::string out;
   if (!a.sweep) {
     int64_t count[4] = {0, 0, 0, 0};
@@ -42,6 +53,7 @@ int run_classify(const ClassifyArgs& a) {
     const double from = a.sweep->from, upto = a.sweep->to;
     out = "eps_parallel,parallel,percent,extraordinary\n";
     ClassifyParams cp = grid.params();
+    std::uint64_t decade_done = 0;
     for (double e = from; e <= upto * (1 + 1e-9); e *= 10) {
       cp.eps_parallel = e;
       int64_t parallel = 0, extra = 0;
@@ -49,10 +61,13 @@ int run_classify(const ClassifyArgs& a) {
         const CellRecord r = classify(tet_geometry(grid.mesh(), static_cast<int32_t>(c)), cp);
         parallel += r.type == CellType::parallel;
         extra += r.type == CellType::extraordinary;
+        if ((c + 1) % kCellsPerStep == 0) bar.advance(kCellsPerStep);
       }
+      bar.set(static_cast<std::uint64_t>(n) * (++decade_done + 1));
       out += fmt::format("{:g},{},{:.4f},{}\n", e, parallel, n ? 100.0 * static_cast<double>(parallel) / static_cast<double>(n) : 0.0, extra);
     }
   }
+  bar.finish();
   if (!a.output.empty()) {
     const Dataset ug = classified_dataset(grid, records);
     const formats::OutputFormat of = formats::output_format_from_path(a.output);

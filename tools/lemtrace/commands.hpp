@@ -76,6 +76,7 @@ struct ClassifyArgs {
   GridArgs grid;
   std::optional<ParallelSweep> sweep;
   std::string output;
+  bool progress = false;  // --progress: cells classified (once, then once per sweep decade)
 };
 
 struct BenchArgs {

@@ -135,6 +135,7 @@ int main(int argc, char** argv) {
   std::string sweep;
   classify_cmd->add_option("--sweep-parallel", sweep, "Count parallel cells for eps = 10^a .. 10^b: 1e-7:1e-1");
   classify_cmd->add_option("-o,--output", classify.output, "Write the grid with LemType, Eigenvalues, CriticalPointInside (.vtu)");
+  fest::cli::add_progress(*classify_cmd, classify.progress);
 
   BenchArgs bench;
   bench.trace.command_line = command_line;

@@ -232,7 +232,7 @@ int run_solve(const SolveArgs& args, const CameraArgs& camera) {
   // --progress: each level's unshot fraction from 1 down to --tol on a log scale, 1000
   // steps per level (a solve stopped by --max-shots ends short of its level's end).
   Progress bar("radiosity solve", 1000 * static_cast<std::uint64_t>(so.levels + 1),
-               progress_wanted(args.progress) && !args.quiet);
+               progress_wanted(args.progress));
   so.on_shot = [&](const radiosity::ShotRecord& r, const radiosity::Model&) {
     if (!args.log.empty()) log.add(r);
     const double part = r.unshot_fraction > 0 && args.tol < 1 ? std::log(std::min(1.0, r.unshot_fraction)) / std::log(args.tol) : 1.0;

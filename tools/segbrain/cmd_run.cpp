@@ -329,7 +329,7 @@ int run_segment(const RunArgs& a) {
   ws.register_operators(engine);
   // --progress: the steps of the proof are the find_<object> goals its clauses name, each
   // counted once when it exits or fails (an optional object the knowledge base skips).
-  const bool progress = progress_wanted(a.progress) && !a.quiet;
+  const bool progress = progress_wanted(a.progress);
   const std::set<std::string> finds = progress ? find_goals(load_kb(a.kb), goal) : std::set<std::string>{};
   Progress bar("segbrain", finds.size(), progress);
   std::set<std::string> finds_done;

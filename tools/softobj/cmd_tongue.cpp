@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "core/table.hpp"
 #include "formats/input.hpp"
 #include "formats/table/table_io.hpp"
@@ -117,6 +118,9 @@ int run_tongue(const TongueArgs& a) {
   std::vector<TriMesh> meshes(frames.size());
   std::vector<std::size_t> fixed(frames.size());
   std::vector<double> volume(frames.size());
+  Progress bar("softobj tongue", frames.size(), progress_wanted(a.progress));
+  const ProgressFn report = bar.callback();
+  ProgressCounter polygonised(report, frames.size());
   parallel_for(frames.size(), resolve_threads(a.threads), [&](std::size_t i) {
     softobj::TongueParams p = frames[i].params;
     if (palate) {
@@ -137,7 +141,10 @@ int run_tongue(const TongueArgs& a) {
     }
     if (palate) fixed[i] += softobj::palate_pass2(meshes[i], *palate);
     volume[i] = softobj::measure(meshes[i]).volume;
+    polygonised.step();
   });
+  polygonised.finish();
+  bar.finish();
   std::string manifest = "frame\ttime_s\tfile\tvertices\ttriangles\tvolume_mm3\tpenetrations_fixed\n";
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const std::string name = frame_name(a.output, i);

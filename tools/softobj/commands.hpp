@@ -49,6 +49,7 @@ struct TongueArgs {
   double max_deviation = 0;          // deviation-driven refinement tolerance; 0 = off
   int steps = 16;
   int threads = 0;
+  bool progress = false;  // --progress: frames polygonised
 };
 
 struct PalateArgs {

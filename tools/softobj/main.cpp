@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
       ->check(fest::cli::positive);
   tongue->add_option("--steps", ta.steps, "With --polygonize: iso steps")->check(fest::cli::range(1, 1000));
   fest::cli::add_threads(*tongue, ta.threads);
+  fest::cli::add_progress(*tongue, ta.progress);
   tongue->add_option("--palate", ta.palate, "Palate JSON: keep the skeleton inside the virtual palate (pass 1)");
 
   PalateArgs pla;

@@ -236,10 +236,11 @@ struct SpilledLevels {
 
 terrainlod::Pyramid build_and_spill(const LoadedDem& dem, const terrainlod::BuildParams& params, const BuildArgs& args,
                                     SpilledLevels& spill) {
-  Progress bar("build", 0, progress_wanted(args.progress));
+  // The tiles done of all the pyramid's tiles: a bar like every tool's (it was a bare count).
+  Progress bar("terrainlod build", 0, progress_wanted(args.progress));
   terrainlod::Pyramid pyr = terrainlod::build_pyramid_streaming(
       dem.grid, dem.dx, dem.dy, params, [&](terrainlod::Tile&& t, std::string&& blob) { spill.add(t, blob); },
-      [&](std::size_t done, std::size_t) { bar.set(done); });
+      [&](std::size_t done, std::size_t total) { bar.set(done, total); });
   bar.finish();
   return pyr;
 }

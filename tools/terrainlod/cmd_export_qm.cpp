@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "pyramid_view.hpp"
 #include "terrainlod/quantized_mesh.hpp"
 
@@ -30,7 +31,9 @@ int run_export_qm(const ExportQmArgs& args) {
   const fs::path tmp = target.string() + ".part-" + std::to_string(::getpid());
   fs::remove_all(tmp, ec);
   try {
+    Progress bar("terrainlod export-qm", pyr.index().size(), progress_wanted(args.progress));
     for (const auto& e : pyr.index()) {
+      bar.advance();
       const auto g = pyr.geometry(e.id.level);
       terrainlod::QmFrame f;
       f.gx0 = static_cast<std::int64_t>(e.id.x) * g.cells;
@@ -46,6 +49,7 @@ int run_export_qm(const ExportQmArgs& args) {
       out.write(qm.data(), static_cast<std::streamsize>(qm.size()));
       if (!out) throw io_error("cannot write {}", file.string());
     }
+    bar.finish();
     nlohmann::json available = nlohmann::json::array();
     for (int l = 0; l <= L.levels; ++l)
       available.push_back({{{"startX", 0}, {"startY", 0}, {"endX", L.tiles_x[static_cast<std::size_t>(l)] - 1},

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "core/quote.hpp"
 #include "core/file_io.hpp"
 #include "core/stopwatch.hpp"
@@ -224,6 +225,7 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
   const auto& L = pyr.layout();
   std::map<terrainlod::TileId, cv::Mat> texture_cache;
   nlohmann::json frames = nlohmann::json::array();
+  Progress bar("terrainlod extract", cams.size(), progress_wanted(args.progress));
   for (std::size_t k = 0; k < cams.size(); ++k) {
     const std::size_t decoded0 = pyr.tiles_decoded(), bytes0 = pyr.bytes_touched();
     const Extraction x = extract_view(pyr, cams[k], args.z_exaggeration);
@@ -264,7 +266,9 @@ int run_extract_path(const ExtractArgs& args, const formats::OutputFormat& out) 
                       {"tiles_evicted", evicted},
                       {"tiles_cached", pyr.tiles_cached()},
                       {"time_ms", {{"select_close", x.select_ms}, {"decode", x.decode_ms}}}});
+    bar.advance();
   }
+  bar.finish();
   if (!args.report.empty()) write_output(args.report, nlohmann::json({{"frames", frames}}).dump(2) + "\n");
   return 0;
 }
@@ -299,7 +303,13 @@ int run_extract(const ExtractArgs& args) {
   // padded squares too) framed from the preset's side (docs/terrainlod.md §5).
   if (automatic) cam = terrainlod::frame_box(drawn_box(pyr, args.clip, args.z_exaggeration), direction, 1280, 800, 45, 0.04);
   if (args.tau > 0) cam.tau_px = args.tau;
-  const Extraction x = extract_view(pyr, cam, args.z_exaggeration);
+  // One bar: the tiles decoded and triangulated, the mesh built (and the picture drawn),
+  // the mesh coded and written; where each part ends as measured on a 2049^2 fBm pyramid
+  // (1,024 tiles, 8.3 M triangles: 4-6 s decoding, 1.5-3 s mesh and picture, 0.3-1 s writing).
+  Progress bar("terrainlod extract", 0, progress_wanted(args.progress));
+  const double decoded_at = args.png.empty() ? 0.75 : 0.6, pictured_at = args.png.empty() ? 0.85 : 0.9;
+  auto reached = [&bar](double f) { bar.set(static_cast<std::uint64_t>(1000 * f + 0.5), 1000); };
+  const Extraction x = extract_view(pyr, cam, args.z_exaggeration, true, progress_part(bar.callback(), 0.0, decoded_at));
   const auto t2 = SteadyClock::now();
   const Extent extent = extent_of(pyr, args.clip);
   const bool obj_file = out.format == formats::Format::obj && !is_stdio(args.output);
@@ -357,6 +367,7 @@ int run_extract(const ExtractArgs& args) {
   if (!tm) scale_heights(mesh, args.z_exaggeration);
   std::string png;
   if (!args.png.empty()) png = render_png(mesh, cam, tm ? &textures : nullptr);
+  reached(pictured_at);
   Mesh written = mesh;
   if (tm && !args.atlas.empty()) {
     TexturedMesh atlas_mesh{written, tm->sources, tm->face_source, {}, {}};
@@ -368,6 +379,7 @@ int run_extract(const ExtractArgs& args) {
   for (const auto& [file, content] : beside) write_output(file, content);
   formats::store_output(args.output, bytes, out.gzip);
   if (!png.empty()) write_output(args.png, png);
+  bar.finish();
   if (!args.report.empty()) {
     std::size_t closing = 0;
     for (const auto& s : x.selection.tiles) closing += s.closing_only;

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/mesh.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "dem_input.hpp"
 #include "formats/detect.hpp"
@@ -48,7 +49,10 @@ int run_simplify(const SimplifyArgs& args) {
   options.max_error = args.max_error;
   options.diagonal = args.dem.diagonal;
   options.start = args.start;
+  Progress bar("terrainlod simplify", 0, progress_wanted(args.progress));
+  options.progress = bar.callback();
   const terrainlod::SimplifyResult result = terrainlod::simplify_grid(dem.grid, options);
+  bar.finish();
   const double simplify_ms = ms_since(t1);
 
   // --nodata hole: the triangles over nodata samples are left out (docs/terrainlod.md §5,

@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "dem_input.hpp"
 #include "pyramid_options.hpp"
 #include "pyramid_view.hpp"
@@ -22,8 +23,9 @@
 
 namespace fest::terrainlod_tool {
 
-int run_pyramid_stats(const std::string& path) {
+int run_pyramid_stats(const std::string& path, bool progress) {
   PyramidFile pyr = open_pyramid(path);
+  Progress bar("terrainlod stats", pyr.index().size(), progress_wanted(progress));
   const int L = pyr.layout().levels;
   struct Acc {
     std::size_t tiles = 0, vertices = 0, border = 0, triangles = 0, header = 0, vert = 0, conn = 0, refine = 0, texture = 0;
@@ -54,7 +56,9 @@ int run_pyramid_stats(const std::string& path) {
     if (prog.coding == terrainlod::TileCoding::progressive) ++a.progressive_tiles, a.inherited_present += prog.inherited_present;
     a.texture += e.texture_length;
     if (t.eps > 0) a.worst = std::max(a.worst, static_cast<double>(t.err) / t.eps);
+    bar.advance();
   }
+  bar.finish();
   nlohmann::json levels = nlohmann::json::array();
   std::size_t total_v = 0, total_bytes = 0, total_t = 0, total_texture = 0, total_alone = 0, total_prog = 0;
   auto per_vertex = [](std::size_t bytes, std::size_t vertices) { return vertices ? static_cast<double>(bytes) / vertices : 0.0; };
@@ -107,9 +111,9 @@ int run_stats(const StatsArgs& args) {
   // A pyramid archive gets its own statistics; anything else is read as a DEM.
   if (!is_stdio(args.dem.path)) {
     std::error_code ec;
-    if (std::filesystem::is_directory(args.dem.path, ec)) return run_pyramid_stats(args.dem.path);
+    if (std::filesystem::is_directory(args.dem.path, ec)) return run_pyramid_stats(args.dem.path, args.progress);
     std::string head = read_input(args.dem.path);
-    if (head.size() >= 4 && head.compare(0, 4, "FTLP") == 0) return run_pyramid_stats(args.dem.path);
+    if (head.size() >= 4 && head.compare(0, 4, "FTLP") == 0) return run_pyramid_stats(args.dem.path, args.progress);
   }
   terrainlod::PyramidParams params;
   params.tile = args.tile;

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "dem_input.hpp"
 #include "pyramid_view.hpp"
 #include "terrainlod/nodata_mask.hpp"
@@ -46,7 +47,19 @@ int run_verify(const VerifyArgs& args) {
   std::size_t triangulations = 0, reencode_mismatch = 0, over = 0;
   double worst_ratio = 0;
   int level_at = -1;
+  // One bar: the tiles, their textures, then the cameras; where each part ends as measured
+  // on a 2049^2 fBm pyramid (2,700 tiles, 20 cameras): the tiles take a third of the time,
+  // more than half when they are measured against the DEM.
+  Progress bar("terrainlod verify", 0, progress_wanted(args.progress));
+  const double checks_end = args.cameras == 0 ? 1.0 : ref ? 0.55 : 0.33;
+  const double tiles_end = pyr.textured() ? 0.9 * checks_end : checks_end;
+  const ProgressFn tile_progress = progress_part(bar.callback(), 0.0, tiles_end);
+  const ProgressFn texture_progress = progress_part(bar.callback(), tiles_end, checks_end);
+  const ProgressFn camera_progress = progress_part(bar.callback(), checks_end, 1.0);
+  std::uint64_t tiles_done = 0;
+  const std::uint64_t tile_count = pyr.index().size();
   for (const auto& e : pyr.index()) {
+    if (tile_progress) tile_progress(tiles_done++, tile_count);
     if (e.id.level != level_at) keep_parents_only(pyr, level_at = e.id.level);
     const auto& t = pyr.tile(e.id);
     // Coding again in the stored coding (same strip order) gives the same bytes.
@@ -67,12 +80,14 @@ int run_verify(const VerifyArgs& args) {
   // Texture tiles: every one decodes to T x T 8-bit pixels.
   if (pyr.textured()) {
     std::size_t bad_textures = 0;
+    std::uint64_t textures_done = 0;
     for (const auto& e : pyr.index()) {
       try {
         decode_texture(pyr, e.id);
       } catch (const Error&) {
         ++bad_textures;
       }
+      if (texture_progress) texture_progress(++textures_done, tile_count);
     }
     j["bad_textures"] = bad_textures;
     ok = ok && bad_textures == 0;
@@ -107,6 +122,7 @@ int run_verify(const VerifyArgs& args) {
   const terrainlod::NodataMask* nodata = pyr.nodata();
   std::set<int> levels_seen;
   for (int c = 0; c < args.cameras; ++c) {
+    if (camera_progress) camera_progress(static_cast<std::uint64_t>(c), static_cast<std::uint64_t>(args.cameras));
     terrainlod::Camera cam;
     cam.eye = {L.origin_x + u(rng) * wx, L.origin_y + u(rng) * wy, zhi + (0.02 + 0.3 * u(rng)) * std::max(wx, wy)};
     cam.target = {L.origin_x + u(rng) * wx, L.origin_y + u(rng) * wy, zlo + u(rng) * (zhi - zlo)};
@@ -138,6 +154,7 @@ int run_verify(const VerifyArgs& args) {
     tiles_total += x.selection.tiles.size();
     for (const auto& s : x.selection.tiles) levels_seen.insert(s.id.level);
   }
+  bar.finish();
   j["cameras"] = args.cameras;
   j["camera_tiles"] = tiles_total;
   j["camera_levels_seen"] = levels_seen.size();

@@ -58,6 +58,7 @@ struct SimplifyArgs {
   std::string report;
   bool quiet = false;
   terrainlod::StartRule start = terrainlod::StartRule::rtin;  // engine start mesh
+  bool progress = false;  // --progress: the collapse cost on its way to the bound
 };
 
 struct StatsArgs {
@@ -65,6 +66,7 @@ struct StatsArgs {
   int tile = 64;
   int texels = 0;
   double error_fraction = 1.0;
+  bool progress = false;  // --progress: a pyramid's tiles measured
 };
 
 struct BuildArgs {
@@ -111,6 +113,7 @@ struct ExtractArgs {
   std::string atlas;      // one texture atlas for all drawn tiles (texture coordinates into it)
   std::string camera_preset;  // no --camera: frame the terrain from this side (empty = overview)
   double z_exaggeration = 1;  // heights of the output mesh and rendering multiplied by this
+  bool progress = false;      // --progress: tiles decoded, mesh, picture (a path: frames)
 };
 
 struct VerifyArgs {
@@ -118,11 +121,13 @@ struct VerifyArgs {
   DemArgs dem;            // dem.path empty = no error check against the DEM
   int cameras = 20;
   unsigned seed = 1;
+  bool progress = false;  // --progress: tiles checked, then cameras
 };
 
 struct ExportQmArgs {
   std::string pyramid;
   std::string output;     // directory
+  bool progress = false;  // --progress: tiles written
 };
 
 int run_export_qm(const ExportQmArgs& args);
@@ -132,7 +137,7 @@ int run_decode(const DecodeArgs& args);
 int run_extract(const ExtractArgs& args);
 int run_verify(const VerifyArgs& args);
 // `stats` on a pyramid archive (run_stats hands over when the input is one).
-int run_pyramid_stats(const std::string& path);
+int run_pyramid_stats(const std::string& path, bool progress = false);
 int run_stats(const StatsArgs& args);
 
 }  // namespace fest::terrainlod_tool

@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
   s->add_option("--to", simplify_to, "Output format: ply, obj, off, stl or drc");
   s->add_option("--report", simplify.report, "JSON report: counts, times, the re-measured error");
   fest::cli::enum_words(s->add_option("--start", simplify.start, "What the engine decimates from: rtin (a coarse RTIN within the bound) or lattice (every sample)"), kStarts);
+  fest::cli::add_progress(*s, simplify.progress);
 
   BuildArgs build;
   auto* b = app.add_subcommand("build", "Build the tile pyramid of a DEM (.tlp archive)");
@@ -96,7 +97,7 @@ int main(int argc, char** argv) {
                                       "decoding needs the parent) or standalone (every tile decodable alone)"),
                         kCodings);
   b->add_option("--report", build.report, "JSON report: tiles, bytes, times, peak memory");
-  b->add_flag("--progress", build.progress, "Progress bar on standard error");
+  fest::cli::add_progress(*b, build.progress);
   fest::cli::add_threads(*b, build.threads);
 
   DecodeArgs decode;
@@ -112,6 +113,7 @@ int main(int argc, char** argv) {
   ExtractArgs extract;
   auto* x = app.add_subcommand("extract", "The crack-free mesh a camera needs (view-dependent level of detail)");
   x->add_option("pyramid", extract.pyramid, "Pyramid archive (.tlp) or directory")->required();
+  fest::cli::add_progress(*x, extract.progress);
   auto* cam_opt = x->add_option("--camera", extract.camera,
                                 "Camera JSON: eye, target, up, fovy_deg, width, height, near, far, tau_px "
                                 "(default: a 1280 x 800 view framing the whole terrain, --camera-preset)");
@@ -147,11 +149,13 @@ int main(int argc, char** argv) {
   add_nodata_option(v, verify_nodata, "As for build (the holes are the pyramid's: fill or hole changes nothing here)");
   v->add_option("--cameras", verify.cameras, "Random cameras for the crack check")->check(fest::cli::range(0, 1000000));
   v->add_option("--seed", verify.seed, "Seed of the random cameras");
+  fest::cli::add_progress(*v, verify.progress);
 
   ExportQmArgs qm;
   auto* q = app.add_subcommand("export-qm", "Cesium quantized-mesh-1.0 tiles (base triangulations) and layer.json");
   q->add_option("pyramid", qm.pyramid, "Pyramid archive (.tlp) or directory")->required();
   q->add_option("-o,--output", qm.output, "Output directory (new or empty; written completely or not at all)")->required();
+  fest::cli::add_progress(*q, qm.progress);
 
   StatsArgs stats;
   auto* st = app.add_subcommand("stats", "JSON statistics of a pyramid (.tlp), or of a DEM and its pyramid plan");
@@ -159,6 +163,7 @@ int main(int argc, char** argv) {
   st->add_option("--tile", stats.tile, "Leaf tile size B in DEM cells (power of two, 4..4096)")->check(fest::cli::range(4, 4096));
   st->add_option("--texels", stats.texels, "Texels per tile side T (power of two >= B; default B)")->check(fest::cli::range(4, 65536));
   st->add_option("--error-fraction", stats.error_fraction, "Allowed error per tile in texels (f)");
+  fest::cli::add_progress(*st, stats.progress);
 
   return fest::cli::run(app, argc, argv, [&] {
     // Format names become formats when the command runs (usage errors naming the word).

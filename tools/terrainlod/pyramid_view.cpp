@@ -156,7 +156,8 @@ terrainlod::Camera parse_camera(const nlohmann::json& j, const std::string& wher
   return c;
 }
 
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale, bool cut_holes) {
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale, bool cut_holes,
+                        const ProgressFn& progress) {
   Extraction x;
   const auto t0 = SteadyClock::now();
   x.selection = terrainlod::select_tiles(pyr.layout(), cam, [&](const terrainlod::TileId& id) {
@@ -172,6 +173,7 @@ Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double 
     x.parts.emplace_back(s.id, terrainlod::triangulate(pyr.tile(s.id), s.mask, pyr.geometry(s.id.level)));
     if (cut_holes && pyr.nodata()) x.hole_triangles += terrainlod::cut_holes(*pyr.nodata(), x.parts.back().second);
     x.triangles += x.parts.back().second.triangles.size();
+    if (progress) progress(x.parts.size(), x.selection.tiles.size());
   }
   x.decode_ms = ms_since(t1);
   return x;

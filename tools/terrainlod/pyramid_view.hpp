@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
+#include "core/progress_callback.hpp"
 #include "core/mesh.hpp"
 #include "formats/detect.hpp"
 #include "pyramid_file.hpp"
@@ -67,7 +68,9 @@ struct Extraction {
 // multiplied by z_scale (extract --z-exaggeration) cull with the boxes scaled alike. In a
 // pyramid with holes the triangles over nodata are left out (lib/terrainlod/nodata_mask.hpp)
 // unless `cut_holes` is false (verify looks at both sides of a hole's edge).
-Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale = 1, bool cut_holes = true);
+// `progress` hears the selected tiles decoded and triangulated.
+Extraction extract_view(PyramidFile& pyr, const terrainlod::Camera& cam, double z_scale = 1, bool cut_holes = true,
+                        const ProgressFn& progress = {});
 
 // extract --z-exaggeration: every vertex height multiplied by k.
 void scale_heights(Mesh& mesh, double k);

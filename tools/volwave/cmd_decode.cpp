@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "core/tool_main.hpp"
@@ -18,7 +19,9 @@ int decode_command(const DecodeOptions& o) {
   if (o.chunks == 0) throw usage_error("--chunks must be at least 1");
   const std::string bytes = read_input(o.input);
   const Stopwatch watch;
-  const wavelet::DecodeResult d = named(o.input, [&] { return wavelet::decode_vw(bytes, resolve_threads(o.threads), o.chunks); });
+  Progress bar("volwave decode", 0, progress_wanted(o.progress));
+  const wavelet::DecodeResult d = named(o.input, [&] { return wavelet::decode_vw(bytes, resolve_threads(o.threads), o.chunks, kMaxVoxels, bar.callback()); });
+  bar.finish();
   const double seconds = watch.seconds();
   write_any_volume(d.volume, o.output, o.to);
   if (d.truncated && !o.quiet)

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/threads.hpp"
 #include "volume_input.hpp"
 #include "wavelet/edges.hpp"
@@ -20,7 +21,10 @@ int edges_command(const EdgesOptions& o) {
   eo.threshold = o.threshold;
   eo.min_scales = o.min_scales;
   eo.threads = resolve_threads(o.threads);
+  Progress bar("volwave edges", 0, progress_wanted(o.progress));
+  eo.progress = bar.callback();
   const wavelet::EdgeMap e = wavelet::multiscale_edges(v, eo);
+  bar.finish();
   Volume out = v;
   out.type = ScalarType::f32;
   out.voxels = e.modulus;

@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "volume_input.hpp"
@@ -81,7 +82,10 @@ int encode_command(const EncodeOptions& o) {
 
   const Stopwatch watch;
   wavelet::EncodeStats st;
+  Progress bar("volwave encode", 0, progress_wanted(o.progress));
+  eo.progress = bar.callback();
   const std::string bytes = wavelet::encode_vw(v, eo, &st);
+  bar.finish();
   const double seconds = watch.seconds();
   write_output(o.output, bytes);
   if (!o.report.empty()) {

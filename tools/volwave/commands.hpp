@@ -32,6 +32,7 @@ struct EncodeOptions {
   std::optional<double> roi_error;
   std::string report;
   int threads = 0;
+  bool progress = false;  // --progress
   bool quiet = false;
 };
 
@@ -42,6 +43,7 @@ struct DecodeOptions {
   int chunks = -1;  // decode at most this many chunks (a coarser volume)
   std::string report;
   int threads = 0;
+  bool progress = false;  // --progress
   bool quiet = false;
 };
 
@@ -60,6 +62,7 @@ struct EdgesOptions {
   std::string points;      // CSV of sub-voxel edge points
   std::string report;
   int threads = 0;
+  bool progress = false;  // --progress
 };
 
 int encode_command(const EncodeOptions& o);

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   e->add_option("--roi-error", enc.roi_error, "L-infinity bound inside the region (at most --max-error)");
   e->add_option("--report", enc.report, "Write sizes, ratio and measured errors as JSON");
   fest::cli::add_threads(*e, enc.threads);
+  fest::cli::add_progress(*e, enc.progress);
 
   DecodeOptions dec;
   CLI::App* d = app.add_subcommand("decode", "Decompress a .vw file (a truncated one to a coarser volume)");
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
   d->add_option("--chunks", dec.chunks, "Decode only the first K chunks (a coarser volume)")->check(fest::cli::range(1, 100));
   d->add_option("--report", dec.report, "Write chunks used and the stated errors as JSON");
   fest::cli::add_threads(*d, dec.threads);
+  fest::cli::add_progress(*d, dec.progress);
 
   InfoOptions inf;
   CLI::App* i = app.add_subcommand("info", "Describe a .vw file as JSON: geometry, bound, chunks and their errors");
@@ -69,6 +71,7 @@ int main(int argc, char** argv) {
   g->add_option("--points", edg.points, "Also write the sub-voxel edge points as CSV (x,y,z world, modulus, alpha)");
   g->add_option("--report", edg.report, "Write counts and thresholds as JSON");
   fest::cli::add_threads(*g, edg.threads);
+  fest::cli::add_progress(*g, edg.progress);
 
   return fest::cli::run(app, argc, argv, [&] {
     if (*e) {
