@@ -1,6 +1,5 @@
 #include "formats/facemodel/mmb.hpp"
-#include "core/json_integer.hpp"
-#include "core/quote.hpp"
+#include "core/json_value.hpp"
 #include "core/quote.hpp"
 
 #include <cstdint>
@@ -124,9 +123,9 @@ face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_pt
     if (!header.contains(key) || !header[key].is_number_unsigned()) throw bad_input("mmb header: '{}' missing or not a count", key);
     return header[key].get<std::uint64_t>();
   };
-  if (header.value("format", "") != "mmb") throw bad_input("mmb header: format is not \"mmb\"");
+  if (json_string_or(header, "format", "") != "mmb") throw bad_input("mmb header: format is not \"mmb\"");
   if (number("version") != 1) throw bad_input("mmb header: version {} not supported (1 is)", number("version"));
-  if (header.value("sigma_kind", "") != "stddev")
+  if (json_string_or(header, "sigma_kind", "") != "stddev")
     throw bad_input("mmb header: sigma_kind must be \"stddev\" (convert variances with facefit convert)");
 
   face::Model m;
@@ -135,9 +134,9 @@ face::Model decode(const unsigned char* base, std::uint64_t size, std::shared_pt
   m.points = number("points");
   m.components = number("components");
   if (m.points > (std::uint64_t{1} << 32)) throw bad_input("mmb header: too many points");
-  m.units = header.value("units", "mm");
-  m.source = header.value("source", "");
-  m.license = header.value("license", "");
+  m.units = json_string_or(header, "units", "mm");
+  m.source = json_string_or(header, "source", "");
+  m.license = json_string_or(header, "license", "");
   if (header.contains("training_examples") && header["training_examples"].is_number_unsigned())
     m.training_examples = header["training_examples"].get<std::size_t>();
   if (header.contains("landmarks")) {
@@ -191,13 +190,24 @@ std::string pad_to(std::string s, std::size_t multiple, char fill) {
   return s;
 }
 
+// decode, with a header value of the wrong JSON type (a number where a word belongs, a
+// landmark index beyond 32 bits) refused in the reader's words, not the JSON library's.
+face::Model decode_header_words(const unsigned char* base, std::uint64_t size, std::shared_ptr<const void> keep,
+                                const MmbReadOptions& options, std::string* warnings) {
+  try {
+    return decode(base, size, std::move(keep), options, warnings);
+  } catch (const nlohmann::json::exception& e) {
+    throw bad_input("mmb header: {}", json_failure_words(e.what(), 0, {}));
+  }
+}
+
 }  // namespace
 
 face::Model parse_mmb(std::string bytes, const MmbReadOptions& options, std::string* warnings) {
   auto owned = std::make_shared<std::string>(std::move(bytes));
   const auto* base = reinterpret_cast<const unsigned char*>(owned->data());
   // std::string data is at least 8-byte aligned by the allocator (new), enough for f64.
-  return decode(base, owned->size(), owned, options, warnings);
+  return decode_header_words(base, owned->size(), owned, options, warnings);
 }
 
 face::Model read_mmb(const std::string& path, const MmbReadOptions& options, std::string* warnings) {
@@ -220,7 +230,7 @@ face::Model read_mmb(const std::string& path, const MmbReadOptions& options, std
   if (map == MAP_FAILED) throw io_error("cannot map model '{}': {}", path, std::strerror(errno));
   std::shared_ptr<const void> keep(map, [size](const void* p) { ::munmap(const_cast<void*>(p), size); });
   try {
-    return decode(static_cast<const unsigned char*>(map), size, keep, options, warnings);
+    return decode_header_words(static_cast<const unsigned char*>(map), size, keep, options, warnings);
   } catch (const Error& e) {
     if (e.status() != Status::bad_input) throw;
     throw Error(e.status(), with_location(e.what(), path));

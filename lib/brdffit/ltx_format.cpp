@@ -1,5 +1,5 @@
 #include "brdffit/ltx_format.hpp"
-#include "core/json_integer.hpp"
+#include "core/json_value.hpp"
 #include "core/quote.hpp"
 
 #include <cmath>

@@ -35,6 +35,13 @@ struct Parser {
     }
   }
 
+  // A word-valued member (`fallback` when absent).
+  std::string word(const json& obj, const char* member, const std::string& fallback, const std::string& path) const {
+    if (!obj.contains(member)) return fallback;
+    if (!obj[member].is_string()) fail("must be a word (a JSON string)", path + "." + member);
+    return obj[member].get<std::string>();
+  }
+
   double number(const json& v, const std::string& key, double lo, double hi, bool lo_open = false) const {
     if (!v.is_number()) fail("must be a number", key);
     const double x = v.get<double>();
@@ -153,7 +160,7 @@ Scene parse_scene(const json& doc, const std::string& where) {
           const json& j = srcs[k];
           p.check_keys(j, {"shape", "min", "max", "centre", "center", "radius", "rate", "velocity", "start", "end"}, sp);
           Source src;
-          const std::string shape = j.value("shape", "box");
+          const std::string shape = p.word(j, "shape", "box", sp);
           if (shape == "box") {
             src.shape = Source::Shape::box;
             if (!j.contains("min") || !j.contains("max")) p.fail("a box needs \"min\" and \"max\"", sp);
@@ -208,10 +215,10 @@ Scene parse_scene(const json& doc, const std::string& where) {
                    path);
       Force f;
       f.up = s.dim == 2 ? std::array<double, 3>{0, 1, 0} : std::array<double, 3>{0, 0, 1};
-      const std::string type = j.value("type", "");
+      const std::string type = p.word(j, "type", "", path);
       if (type == "buoyancy") {
         f.type = Force::Type::buoyancy;
-        f.scalar = j.value("scalar", s.scalars.front().name);
+        f.scalar = p.word(j, "scalar", s.scalars.front().name, path);
         bool known = false;
         for (const auto& sc : s.scalars) known = known || sc.name == f.scalar;
         if (!known) p.fail(fmt::format("names no scalar \"{}\"", quoted_bytes(f.scalar)), path + ".scalar");

@@ -200,4 +200,12 @@ awk 'NR==1 {print; next} {print $1 "\t150\t150"}' "$WORK/lm5.tsv" >"$WORK/same.t
 run facefit fit -m "$S/model.mmb" --landmarks "$WORK/same.tsv" --camera affine
 expect_clean_failure 1 facefit
 
+case_ "an .mmb header with a number where a word belongs: one line in the reader's words, exit 3"
+# "units": "mm" -> "units": 9999 (same length, so the header length still holds).
+python3 -c "import sys; d=open(sys.argv[1],'rb').read(); open(sys.argv[2],'wb').write(d.replace(b'\"units\": \"mm\"', b'\"units\": 9999', 1))" \
+  "$FEST_FIXTURES/facefit/seeds/tiny.mmb" "$WORK/units_number.mmb"
+run facefit info -m "$WORK/units_number.mmb"
+expect_clean_failure 3 facefit
+expect_stderr_has "mmb header: expected a string, got a number"
+
 finish

@@ -36,7 +36,7 @@ TEST(BrdffitRegress, FuzzFindingsAreBadInput) {
 }
 
 // .ltw files that fuzz_ltw found (tests/data/regress/brdffit_ltw/): a header count of
-// 1.2e31 once reached a float-to-size_t cast (undefined; now lib/core/json_integer.hpp).
+// 1.2e31 once reached a float-to-size_t cast (undefined; now lib/core/json_value.hpp).
 TEST(BrdffitRegress, LtwFuzzFindingsAreBadInput) {
   int replayed = 0;
   for (const auto& entry : std::filesystem::directory_iterator(fest::test::fixture("regress/brdffit_ltw"))) {

@@ -108,6 +108,8 @@ SessionStore::SessionStore(const std::string& folder, bool resume, const json& p
     }
     if (j.header.value("plan", json()) != plan_doc)
       throw bad_input("the plan differs from the one the session was started with ({})", journal);
+    if (j.header.contains("started") && !j.header["started"].is_string())
+      throw bad_input("the session journal's \"started\" is not a time stamp ({})", journal);
     started_ = j.header.value("started", "");
     for (const auto& [file, record] : j.shots) {
       const fs::path p = fs::path(folder) / file;

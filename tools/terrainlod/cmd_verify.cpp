@@ -17,7 +17,7 @@
 #include "terrainlod/nodata_mask.hpp"
 #include "terrainlod/progressive_recode.hpp"
 #include "terrainlod/tile_codec.hpp"
-#include "core/json_integer.hpp"
+#include "core/json_value.hpp"
 
 namespace fest::terrainlod_tool {
 

@@ -1,5 +1,5 @@
 #include "pyramid_file.hpp"
-#include "core/json_integer.hpp"
+#include "core/json_value.hpp"
 #include "core/quote.hpp"
 
 #include <filesystem>
@@ -117,6 +117,8 @@ void PyramidFile::parse_manifest(std::string_view text) {
       lv.at("eps").get<double>();
       json_integer<int>(lv.at("lattice_bits"));
     }
+    // Words stats and verify read later: checked here for the same reason.
+    for (const char* word : {"diagonal", "reference", "coding"}) json_string_or(manifest_, word, "");
     manifest_.at("z_quantum").get<double>();
     manifest_.at("width").get<double>();
     manifest_.at("height").get<double>();

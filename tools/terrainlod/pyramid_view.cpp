@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
-#include "core/json_integer.hpp"
+#include "core/json_value.hpp"
 #include "core/stopwatch.hpp"
 #include "terrainlod/dem_clip.hpp"
 #include "formats/image/image_io.hpp"

@@ -1,4 +1,4 @@
-// json_integer: integers from untrusted JSON are taken only when the target type holds
+// json_value.hpp: integers (and words) from untrusted JSON are taken only when the target type holds
 // them exactly; everything else is the JSON library's own out_of_range / type_error (which
 // callers already put in their words), never a cast that is undefined or wraps.
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/json_integer.hpp"
+#include "core/json_value.hpp"
 
 using fest::json_integer;
 using nlohmann::json;
@@ -52,4 +52,11 @@ TEST(JsonInteger, ArraysAndDefaults) {
   EXPECT_EQ(fest::json_integer_or<int>(o, "w", 1920), 640);
   EXPECT_EQ(fest::json_integer_or<int>(o, "h", 1080), 1080);
   EXPECT_THROW(fest::json_integer_or<int>(o, "bad", 1), json::out_of_range);
+}
+
+TEST(JsonStringOr, WordsOnly) {
+  const json o = json::parse(R"({"units": "cm", "n": 5})");
+  EXPECT_EQ(fest::json_string_or(o, "units", "mm"), "cm");
+  EXPECT_EQ(fest::json_string_or(o, "source", ""), "");
+  EXPECT_THROW(fest::json_string_or(o, "n", ""), json::type_error);
 }

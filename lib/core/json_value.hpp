@@ -1,5 +1,5 @@
 #pragma once
-// Integers read from untrusted JSON. nlohmann's get<integer>() converts a floating-point
+// Integers and strings read from untrusted JSON. nlohmann's get<integer>() converts a floating-point
 // number with a plain cast, which is undefined when the value does not fit (1.2e31 into a
 // size_t: found by fuzz_ltw), and narrows a wide integer by wrapping (4294967297 into an
 // int gives 1). json_integer<T>(j) returns the value only when j is an integer, or a float
@@ -63,6 +63,18 @@ template <typename T, typename Json>
 T json_integer_or(const Json& object, const char* key, T fallback) {
   const auto it = object.find(key);
   return it == object.end() ? fallback : json_integer<T>(*it);
+}
+
+// Object member `key` as a string, or `fallback` when the object has no such member. The
+// library's value(key, "text") throws its type_error when the member is not a string; this
+// does the same (302, "type must be string, but is number"), for callers that put the
+// library's errors in their words, and says so by its name.
+template <typename Json>
+std::string json_string_or(const Json& object, const char* key, const std::string& fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_string()) throw Json::type_error::create(302, std::string("type must be string, but is ") + it->type_name(), &*it);
+  return it->template get<std::string>();
 }
 
 }  // namespace fest
