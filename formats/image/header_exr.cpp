@@ -51,9 +51,17 @@ class ExrHeaderReader {
         throw bad_input("EXR header: attribute '{}' of {} bytes runs past the end of the file", fest::quoted_bytes(name), size);
       const std::string_view value = bytes_.substr(pos_, std::size_t(size));
       check_attribute_size(name, type, value);
-      if (name == "channels" && type == "chlist") {
-        layout.channels = parse_channels(value);
-        have_channels = true;
+      if (type == "chlist") {
+        // OpenEXR reads a channel list by its content, up to its empty name, whatever the
+        // size field says, so every chlist must end exactly where its size does (one that
+        // did not let OpenEXR drift into the next attribute and allocate 1.75 GB for it:
+        // fuzz_image_header, regress/image/).
+        if (name == "channels") {
+          layout.channels = parse_channels(value);
+          have_channels = true;
+        } else {
+          read_channel_list(value);
+        }
       } else if (name == "dataWindow" && type == "box2i" && size == 16) {
         layout.data_window = parse_box(value);
         have_window = true;
@@ -146,7 +154,10 @@ class ExrHeaderReader {
   }
 
   // chlist: repeated { name\0, int32 type, uint8 pLinear, 3 reserved, int32 xs, int32 ys }, then \0.
-  std::vector<ExrChannel> parse_channels(std::string_view v) const {
+  std::vector<ExrChannel> parse_channels(std::string_view v) const { return order_channels(read_channel_list(v)); }
+
+  // A chlist value's channels as stored, checked to end exactly at the value's end.
+  std::vector<ExrChannel> read_channel_list(std::string_view v) const {
     std::vector<ExrChannel> found;
     std::size_t at = 0;
     for (;;) {
@@ -170,7 +181,7 @@ class ExrHeaderReader {
       if (found.size() > 64) throw bad_input("EXR header: more than 64 channels");
       at = end + 17;
     }
-    return order_channels(found);
+    return found;
   }
 
   // A scanline file has one 8-byte offset per chunk of lines right after the header;
