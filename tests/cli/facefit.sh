@@ -208,4 +208,10 @@ run facefit info -m "$WORK/units_number.mmb"
 expect_clean_failure 3 facefit
 expect_stderr_has "mmb header: expected a string, got a number"
 
+case_ "an .npz whose zip directory claims a member larger than the archive: refused before allocating"
+# Found by fuzz_npz_model: a 1,244-byte archive whose stored sigma.npy claims 1.7 GB.
+run facefit convert --from npz "$FEST_FIXTURES/regress/facefit/npz_member_beyond_archive.npz" -o "$WORK/oom.mmb"
+expect_clean_failure 3 facefit
+expect_stderr_has "claims 1601069426 compressed bytes in an archive of 1244"
+
 finish
