@@ -1,6 +1,7 @@
 #include "formats/mesh/attributed_ply.hpp"
 #include "core/quote.hpp"
 
+#include <cmath>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -113,7 +114,11 @@ std::uint64_t read_elements(Source& src, const mesh_detail::PlyHeader& header, A
         const auto& p = e.properties[k];
         double v;
         if (p.is_list) {
-          if (!src.read(p.count_type, v) || !(v >= 0) || !src.can_hold(static_cast<std::uint64_t>(v), p.type))
+          // The count is checked as a double first: a float-typed count of 1e120 must not
+          // reach the integer conversion (undefined; fuzz_radiosity_scene). No list of 2^32
+          // entries can fit the body anyway.
+          if (!src.read(p.count_type, v) || !(v >= 0 && v < 4294967296.0) || v != std::floor(v) ||
+              !src.can_hold(static_cast<std::uint64_t>(v), p.type))
             throw bad_input("PLY body: {} {} has a bad {} list", fest::quoted_bytes(e.name), i + 1, fest::quoted_bytes(p.name));
           const auto n = static_cast<std::uint64_t>(v);
           std::vector<std::uint32_t> list;

@@ -176,7 +176,8 @@ std::vector<StreamFrame> split_frame_stream(std::string_view stream, const std::
         } else if (s[0] == '#') {
           continue;
         } else if (s.rfind("type:", 0) == 0) {
-          const std::string t = s.substr(s.find_first_not_of(' ', 5));
+          const std::size_t word = s.find_first_not_of(' ', 5);  // npos: "type:" with no word
+          const std::string t = word == std::string::npos ? std::string() : s.substr(word);
           if (t == "float") f.float64 = false;
           else if (t == "double") f.float64 = true;
           else throw bad_input("frame type '{}' (float or double expected)", t);

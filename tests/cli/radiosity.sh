@@ -147,4 +147,9 @@ run radiosity solve "$EX/furnace.json" --hemicube-res 7; expect_clean_failure 2 
 run radiosity solve "$EX/furnace.json" --solver jacobi; expect_clean_failure 2 radiosity
 run radiosity frobnicate; expect_clean_failure 2 radiosity
 
+case_ "a PLY whose list count is a float of 1e120: one line, exit 3 (fuzz_radiosity_scene)"
+run radiosity solve "$FEST_FIXTURES/regress/radiosity/ply_list_count_1e120.ply" -o "$WORK/never.ply"
+expect_clean_failure 3 radiosity
+expect_stderr_has "bad vertex_indices list"
+
 finish

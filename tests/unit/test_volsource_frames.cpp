@@ -102,3 +102,15 @@ TEST(VolumeSource, RawVolumeBothByteOrders) {
     EXPECT_NE(std::string(e.what()).find("needs 8 bytes, got 7"), std::string::npos);
   }
 }
+
+// fuzz_volume_source: a frame header line "type: " with no word after it once reached
+// substr(npos) and escaped as std::out_of_range. Now the frame's type is refused by name.
+TEST(VolumeSource, FrameTypeWithoutAWordIsBadInput) {
+  const std::string s = "NRRD0004\ntype: \nkinds: domain domain domain\nencoding: ascii\n\n";
+  try {
+    formats::split_frame_stream(s, "t");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), Status::bad_input) << e.what();
+  }
+}
