@@ -7,15 +7,17 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "core/progress_fn.hpp"
 #include "formats/image/exr_extras.hpp"
 #include "formats/image/image_headers.hpp"
 
 namespace fest::formats::image_detail {
 
 // PNG through libpng (png_codec.cpp): decodes to RGB(A), grey or grey + alpha;
-// encodes 1, 3 or 4 channels with zlib `level` and `strategy` and adaptive filters.
+// encodes 1, 3 or 4 channels with zlib `level` and `strategy` and adaptive filters,
+// reporting (rows written, rows) to `progress`.
 cv::Mat decode_png(std::string_view bytes);
-std::string encode_png(const cv::Mat& pixels, int level, int strategy);
+std::string encode_png(const cv::Mat& pixels, int level, int strategy, const ProgressFn& progress = {});
 
 // JPEG through libjpeg-turbo (jpeg_codec.cpp): 8-bit grey or RGB; quality 1-100.
 cv::Mat decode_jpeg(std::string_view bytes);

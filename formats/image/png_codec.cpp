@@ -30,6 +30,8 @@ struct PngState {
   std::string_view in;  // reading
   std::size_t at = 0;
   std::string* out = nullptr;  // writing
+  const ProgressFn* progress = nullptr;  // writing: told after each row
+  png_uint_32 rows = 0;
   char message[256] = {};
 };
 
@@ -53,6 +55,13 @@ void write_bytes(png_structp png, png_bytep data, png_size_t n) {
 }
 
 void flush_nothing(png_structp) {}
+
+// libpng calls this after each row it has filtered and handed to zlib. Reported every 64
+// rows: the callback draws a bar, which redraws at most ten times a second anyway.
+void row_written(png_structp png, png_uint_32 row, int /*pass*/) {
+  const auto* s = static_cast<const PngState*>(png_get_io_ptr(png));
+  if (row % 64 == 0 || row == s->rows) (*s->progress)(row, s->rows);
+}
 
 bool little_endian() {
   const std::uint16_t one = 1;
@@ -99,6 +108,7 @@ bool write_png(png_structp png, png_infop info, const cv::Mat& pixels, std::vect
                int strategy, PngState& state) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_write_fn(png, &state, write_bytes, flush_nothing);
+  if (state.progress && *state.progress) png_set_write_status_fn(png, row_written);
   png_set_compression_level(png, level);
   png_set_compression_strategy(png, strategy);
   static constexpr int colour_type[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
@@ -132,13 +142,15 @@ cv::Mat decode_png(std::string_view bytes) {
   return pixels;
 }
 
-std::string encode_png(const cv::Mat& pixels, int level, int strategy) {
+std::string encode_png(const cv::Mat& pixels, int level, int strategy, const ProgressFn& progress) {
   const int channels = pixels.channels();
   if (channels < 1 || channels > 4 || (pixels.depth() != CV_8U && pixels.depth() != CV_16U))
     throw runtime_failure("PNG writer: 1 to 4 channels of 8 or 16 bits expected");
   std::string out;
   PngState state;
   state.out = &out;
+  state.progress = &progress;
+  state.rows = png_uint_32(pixels.rows);
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &state, on_error, on_warning);
   if (!png) throw runtime_failure("PNG writer: libpng could not start (out of memory)");
   png_infop info = png_create_info_struct(png);

@@ -14,9 +14,9 @@
 #include <functional>
 #include <thread>
 
-namespace fest {
+#include "core/progress_fn.hpp"
 
-using ProgressFn = std::function<void(std::uint64_t done, std::uint64_t total)>;
+namespace fest {
 
 class ProgressCounter {
  public:

@@ -148,6 +148,13 @@ TONGUE="$(dirname "$0")/../../examples/tongue"
 SETUP="mkdir -p t" pair softobj_tongue softobj tongue --polygonize --palate "$TONGUE/palate.json" -o t/t%02d.ply "$WORK/bidamu.tsv" \
   --threads 2
 
+# ---- formats/: deflating a large PNG (resample writes 4 megapixels and more with a bar) ------
+
+pair resample resample resize "$FEST_FIXTURES/image/pattern_raw.ppm" --size 2400x1800 --filter box -o big.png
+"$FEST_BIN/resample" resize "$FEST_FIXTURES/image/pattern_raw.ppm" --size 2400x1800 --filter box -o "$WORK/big.ppm" ||
+  fail "resample to PPM"
+pair fconv fconv "$WORK/big.ppm" -o big.png
+
 # ---- the one -q rule (README "Conventions"): on a terminal the bar is automatic; -q hides it;
 # ---- --progress draws it even with -q. script(1) gives the command a terminal. -----------------
 

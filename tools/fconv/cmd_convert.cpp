@@ -7,6 +7,7 @@
 #include "convert.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "formats/dataset/dataset_io.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
@@ -31,7 +32,7 @@ std::string convert(const Input& in, Format to, const ConvertOptions& opt) {
       w.jpeg_quality = opt.quality;
       w.flatten = opt.flatten;
       w.background = opt.background;
-      return write_image(parse(in, read_image), to, w);
+      return write_image_with_bar(parse(in, read_image), to, w, progress_wanted(opt.progress));
     }
     case Kind::volume: throw usage_error("internal: volumes are converted by convert_volume");
     case Kind::dataset: {

@@ -24,6 +24,7 @@ struct ConvertOptions {
   bool ascii = false;     // text variant where the format has one
   bool compress = false;  // NRRD (gzip) and MHA (zlib) data
   bool half = false;      // EXR half channels
+  bool progress = false;  // --progress: a bar while a large PNG is deflated
   int quality = 95;       // JPEG output (formats::default_jpeg_quality)
   bool flatten = false;   // --flatten / --background: alpha composited for PGM/PPM/JPEG output
   std::array<double, 3> background{1, 1, 1};  // display values 0-1

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   app.add_option("--to", to,
                  "Output format: ply obj off stl drc | png jpg pgm ppm pam pfm exr tiff | nifti (nii) nifti2 hdr mgh mgz nrrd mha | "
                  "vtu vti vtp vtk | csv tsv json; append .gz to compress (nii.gz)");
+  fest::cli::add_progress(app, opt.progress);
   app.add_flag("--info", info, "Print the input's metadata as JSON instead of converting");
   app.add_flag("--ascii", opt.ascii, "Text variant where the format has one (PLY, STL, PGM/PPM, VTK)");
   app.add_flag("--compress", opt.compress, "Compress the data inside NRRD (gzip) and MHA (zlib) files");

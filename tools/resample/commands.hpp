@@ -30,6 +30,7 @@ struct ImageOutput {
   int quality = 95;                         // --quality: JPEG output, 1-100 (formats::default_jpeg_quality)
   bool flatten = false;                     // --flatten / --background: alpha composited for PGM/PPM/JPEG
   std::array<double, 3> background{1, 1, 1};  // display values 0-1 (--background codes / 255)
+  bool progress = false;                    // --progress: a bar while a large PNG is deflated
 };
 
 // --colorspace of resize: what the stored numbers are (automatic: as the file says), or

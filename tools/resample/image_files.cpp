@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/progress.hpp"
 #include "formats/image/image_io.hpp"
 #include "formats/input.hpp"
 
@@ -68,7 +69,7 @@ void store_image(const Image& image, const std::string& path, Format f, bool hal
   w.flatten = out.flatten;
   w.background = out.background;
   // Encoded completely before anything is written: no partial output on failure.
-  const std::string bytes = write_image(image, f, w);
+  const std::string bytes = write_image_with_bar(image, f, w, progress_wanted(out.progress));
   store_output(path, bytes, false);
 }
 

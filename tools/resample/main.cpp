@@ -50,6 +50,7 @@ void add_output(CLI::App* sub, ImageOutput& o) {
         o.flatten = true;
       },
       "Background R,G,B (sRGB codes 0-255) that --flatten composites over; implies --flatten");
+  fest::cli::add_progress(*sub, o.progress);
 }
 
 const std::vector<std::pair<std::string, MipFilter>> kMipFilters{
