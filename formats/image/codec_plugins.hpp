@@ -11,13 +11,14 @@
 #include <string_view>
 
 #include "core/image.hpp"
+#include "core/progress_fn.hpp"
 #include "formats/image/exr_extras.hpp"
 #include "formats/image/image_headers.hpp"
 
 namespace fest::formats::image_detail {
 
 // Bump when a table below changes.
-inline constexpr int kCodecPluginAbi = 1;
+inline constexpr int kCodecPluginAbi = 2;
 
 struct TiffCodec {
   int abi;
@@ -30,7 +31,7 @@ struct ExrCodec {
   int abi;
   std::size_t size;
   cv::Mat (*decode)(std::string_view bytes);
-  std::string (*encode)(const cv::Mat& pixels, bool half);
+  std::string (*encode)(const cv::Mat& pixels, bool half, const ProgressFn& progress);
   std::string (*write_with_extras)(const cv::Mat& rgb, const ExrExtras& extras, bool half);
   cv::Mat (*read_channel)(std::string_view bytes, const std::string& name);
   ExrExtras (*read_attributes)(std::string_view bytes);

@@ -1,6 +1,8 @@
 // EXR through OpenEXR directly (not OpenCV) so that half/float and the channel layout
 // are ours to choose, on in-memory streams so no temporary file is involved. Every
 // channel is read as 32-bit float; files hold R,G,B(,A) or Y(,A) (header_exr.cpp).
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -96,9 +98,11 @@ void read_window(Imf::InputFile& file, const Imath::Box2i& window, const Imf::Fr
 // Writes a ZIP-compressed EXR of width x height to memory: `describe(header, frame)`
 // adds the channels and attributes to the header and their slices to the frame buffer.
 // ZIP is lossless and deterministic; it compresses 16 lines at a time. What OpenEXR
-// throws is a runtime failure of the writer.
+// throws is a runtime failure of the writer. With a `progress` listener the lines go in
+// 16 blocks at a time, each reported: OpenEXR buffers whole blocks either way, so the
+// bytes are the same as one writePixels(height).
 template <class Describe>
-std::string write_exr_file(int width, int height, Describe&& describe) {
+std::string write_exr_file(int width, int height, Describe&& describe, const ProgressFn& progress = {}) {
   MemoryOutput stream;
   try {
     Imf::Header header(width, height);
@@ -107,7 +111,16 @@ std::string write_exr_file(int width, int height, Describe&& describe) {
     describe(header, frame);
     Imf::OutputFile file(stream, header);
     file.setFrameBuffer(frame);
-    file.writePixels(height);
+    if (!progress) {
+      file.writePixels(height);
+    } else {
+      constexpr int kLinesPerReport = 16 * 16;
+      for (int y = 0; y < height; y += kLinesPerReport) {
+        const int lines = std::min(kLinesPerReport, height - y);
+        file.writePixels(lines);
+        progress(std::uint64_t(y + lines), std::uint64_t(height));
+      }
+    }
   } catch (const std::exception& e) {
     throw runtime_failure("EXR writer: {}", e.what());
   }
@@ -139,7 +152,7 @@ cv::Mat decode_exr(std::string_view bytes) {
   });
 }
 
-std::string encode_exr(const cv::Mat& pixels, bool half) {
+std::string encode_exr(const cv::Mat& pixels, bool half, const ProgressFn& progress) {
   const std::vector<const char*> names = channel_names(pixels.channels());
   const cv::Mat continuous = pixels.isContinuous() ? pixels : pixels.clone();
   std::vector<Imath::half> halves;
@@ -159,7 +172,7 @@ std::string encode_exr(const cv::Mat& pixels, bool half) {
     for (std::size_t c = 0; c < names.size(); ++c)
       frame.insert(names[c], Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * sample_size, x_stride,
                                         x_stride * std::size_t(continuous.cols)));
-  });
+  }, progress);
 }
 
 }  // namespace fest::formats::image_detail

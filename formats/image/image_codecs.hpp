@@ -48,7 +48,7 @@ std::string encode_png_unfiltered(const cv::Mat& pixels, int level, int strategy
 // libfest_exr_plugin.so: callers in the host reach it through exr_codec()
 // (codec_plugins.hpp), and the exr_extras.hpp calls through the last three.
 cv::Mat decode_exr(std::string_view bytes);
-std::string encode_exr(const cv::Mat& pixels, bool half);
+std::string encode_exr(const cv::Mat& pixels, bool half, const ProgressFn& progress);  // (lines written, lines)
 std::string exr_write_with_extras(const cv::Mat& rgb, const ExrExtras& extras, bool half);
 cv::Mat exr_read_channel(std::string_view bytes, const std::string& name);
 ExrExtras exr_read_attributes(std::string_view bytes);

@@ -37,8 +37,8 @@ struct ImageWriteOptions {
   // 0-1, R G B; grey images take its luminance) in linear light instead of refusing it.
   bool flatten = false;
   std::array<double, 3> background{1, 1, 1};
-  // PNG: called with (rows encoded, rows) as zlib works through the image -- deflating a
-  // 50-megapixel image takes tens of seconds, the one writing stage long enough for a bar.
+  // PNG and EXR: called with (rows encoded, rows) as zlib works through the image --
+  // deflating a 50-megapixel PNG takes tens of seconds, a float EXR a third of that.
   ProgressFn progress;
 };
 
@@ -57,9 +57,9 @@ Image read_image(std::string_view bytes, Format format);
 // pixels that are not opaque, unless ImageWriteOptions::flatten asks for compositing.
 std::string write_image(const Image& image, Format format, const ImageWriteOptions& options = {});
 
-// write_image with an "encoding PNG" bar on standard error (core/progress.hpp) for a PNG of
-// 4 megapixels or more, when `bar_wanted` (progress_wanted of the tool's --progress):
-// deflating takes about 2 s per 10 megapixels, the rest of writing is fast.
+// write_image with an "encoding PNG" (or EXR) bar on standard error (core/progress.hpp)
+// for a PNG or EXR of 4 megapixels or more, when `bar_wanted` (progress_wanted of the
+// tool's --progress): deflating takes about 2 s per 10 megapixels, other formats are fast.
 std::string write_image_with_bar(const Image& image, Format format, ImageWriteOptions options, bool bar_wanted);
 
 nlohmann::json describe_image(const Image& image);

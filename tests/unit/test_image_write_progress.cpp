@@ -1,5 +1,6 @@
-// ImageWriteOptions::progress: libpng's row callback reaches the caller as (rows written,
-// rows), rising to (rows, rows), and listening does not change a byte of the file.
+// ImageWriteOptions::progress: libpng's row callback (and OpenEXR's blocks of lines) reach
+// the caller as (rows written, rows), rising to (rows, rows), and listening does not change
+// a byte of the file.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -13,7 +14,7 @@
 namespace fest::formats {
 namespace {
 
-TEST(PngProgress, RowsRiseToTheImageHeightAndTheBytesAreUnchanged) {
+TEST(WriteProgress, RowsRiseToTheImageHeightAndTheBytesAreUnchanged) {
   for (const int depth : {CV_8U, CV_16U}) {
     for (const int channels : {1, 3, 4}) {
       const Image image{fest::test::random_image(37, 301, depth, channels), ColorSpace::srgb};
@@ -38,7 +39,27 @@ TEST(PngProgress, RowsRiseToTheImageHeightAndTheBytesAreUnchanged) {
   }
 }
 
-TEST(PngProgress, TheBarHelperWritesTheSameBytesSilentlyWhenNotWanted) {
+TEST(WriteProgress, ExrLinesRiseInBlocksAndTheBytesAreUnchanged) {
+  cv::Mat pixels(601, 23, CV_32FC3);
+  cv::randu(pixels, cv::Scalar::all(-2.0), cv::Scalar::all(1e4));
+  const Image image{pixels, ColorSpace::linear};
+  for (const bool half : {false, true}) {
+    std::vector<std::uint64_t> done;
+    ImageWriteOptions listening;
+    listening.exr_half = half;
+    listening.progress = [&done](std::uint64_t d, std::uint64_t total) {
+      EXPECT_EQ(total, 601u);
+      done.push_back(d);
+    };
+    ImageWriteOptions silent;
+    silent.exr_half = half;
+    EXPECT_EQ(write_image(image, Format::exr, listening), write_image(image, Format::exr, silent)) << "half " << half;
+    // Blocks of 256 lines (16 of OpenEXR's 16-line ZIP blocks), then the rest.
+    EXPECT_EQ(done, (std::vector<std::uint64_t>{256, 512, 601}));
+  }
+}
+
+TEST(WriteProgress, TheBarHelperWritesTheSameBytesSilentlyWhenNotWanted) {
   // 2048 x 2048: above the 4-megapixel threshold, so the bar is made (not drawn: not wanted).
   const Image image{cv::Mat(2048, 2048, CV_8UC1, cv::Scalar(17)), ColorSpace::srgb};
   testing::internal::CaptureStderr();
