@@ -78,6 +78,11 @@ void check_sizes(const PlyHeader& header, std::size_t body_size) {
   std::uint64_t needed = 0;
   bool all_fixed = true;
   for (const PlyElement& e : header.elements) {
+    // An element without properties takes no bytes, so the body cannot bound its count,
+    // and a reader would loop over instances that hold nothing (fuzz_radiosity_scene: a
+    // propertyless vertex element of 6.7e12 instances, 38 s per input before the fix).
+    if (e.properties.empty() && e.count > 0)
+      throw bad_input("PLY header: element {} declares {} instances but no properties", fest::quoted_bytes(e.name), e.count);
     std::uint64_t per_instance = binary ? e.min_binary_size() : 2 * e.properties.size();
     std::uint64_t total = 0;
     if (!checked_mul(e.count, per_instance, total) || total > body_size + 1 || needed + total > body_size + 1) {

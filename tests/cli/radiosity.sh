@@ -152,4 +152,9 @@ run radiosity solve "$FEST_FIXTURES/regress/radiosity/ply_list_count_1e120.ply" 
 expect_clean_failure 3 radiosity
 expect_stderr_has "bad vertex_indices list"
 
+case_ "fuzz_radiosity_scene finding: a propertyless vertex element of 6.7e12 instances (38 s per input before) is refused at once"
+run radiosity solve "$FEST_FIXTURES/regress/radiosity/ply_propertyless_element_6.7e12.ply" -o "$WORK/never.ply"
+expect_clean_failure 3 radiosity
+expect_stderr_has "declares 6666666666666 instances but no properties"
+
 finish
