@@ -50,9 +50,12 @@ enum class SlabCoding { smaller, adaptive, fixed };
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
                         const Slab& slab, SlabCoding coding = SlabCoding::smaller);
 
-// Decodes a slab into `data`. Exponents above max_exponent, or a stream that ends too
-// early, throw fest::Error(bad_input) naming the band.
+// Decodes a slab into `data`, whose positions in the slab must be zero on entry (rows
+// coded as all zero are not written). Exponents above max_exponent, or a stream that
+// ends too early, throw fest::Error(bad_input) naming the band. `nonzero`, when given,
+// receives a box holding every non-zero coefficient of the slab (from the rows coded
+// as non-zero; the inverse transform skips what lies outside, lifting.hpp).
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent);
+                 const Subband* parent, const Slab& slab, int max_exponent, Box* nonzero = nullptr);
 
 }  // namespace fest::wavelet

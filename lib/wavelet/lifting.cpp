@@ -294,30 +294,87 @@ void inverse_rows(const std::int64_t* src, std::size_t w, std::size_t n, Wavelet
 // cache lines, one memcpy per sample) and transformed from there straight back.
 constexpr std::size_t kRowBlock = 256;
 
+// Where the non-zero samples of a line of n can be after its inverse transform, given
+// that before it they lie in storage positions [a, b) (low half [0, h), high half
+// [h, n)): sample k depends on low samples near k/2 and high samples near k/2 only
+// (CDF 5/3: even 2i on s_i, d_(i-1), d_i; odd 2i+1 on d_i and the even 2i, 2i+2; Haar
+// less), so [2 i_min - 2, 2 i_max + 4) holds them, with a margin.
+void propagate(std::size_t n, std::size_t& a, std::size_t& b) noexcept {
+  if (n < 2 || a >= b) return;
+  const std::size_t h = (n + 1) / 2;
+  std::size_t imin = n, imax = 0;
+  if (a < h) imin = a, imax = std::min(b, h) - 1;
+  if (b > h) imin = std::min(imin, std::max(a, h) - h), imax = std::max(imax, b - h - 1);
+  a = imin >= 1 ? 2 * imin - 2 : 0;
+  b = std::min(n, 2 * imax + 4);
+}
+
 void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
-                       int threads) {
+                       int threads, Box& box) {
   const std::size_t n = c[axis];
-  if (n < 2) return;
+  if (n < 2 || box.empty()) return;
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t stride = axis == 1 ? sy : sz;
-  const std::size_t outer = axis == 1 ? c[2] : c[1];
+  const int outer_axis = axis == 1 ? 2 : 1;
+  const std::size_t outer0 = box.lo[outer_axis], outer = box.hi[outer_axis] - outer0;
   const std::size_t outer_stride = axis == 1 ? sz : sy;
-  parallel_for(outer, threads, [&](std::size_t o) {
+  const std::size_t xb0 = box.lo[0], xb1 = box.hi[0];
+  // Columns outside the box are zero and stay zero; lines run the full length n (the
+  // lifting writes every sample in place).
+  parallel_for(outer, threads, [&](std::size_t oi) {
+    const std::size_t o = outer0 + oi;
     // Left uninitialised (every element is written before it is read): zeroing it cost
     // as much as the transform.
-    const std::unique_ptr<std::int64_t[]> rows(new std::int64_t[n * std::min(kRowBlock, c[0])]);
-    for (std::size_t x0 = 0; x0 < c[0]; x0 += kRowBlock) {
-      const std::size_t w = std::min(kRowBlock, c[0] - x0);
+    const std::unique_ptr<std::int64_t[]> rows(new std::int64_t[n * std::min(kRowBlock, xb1 - xb0)]);
+    for (std::size_t x0 = xb0; x0 < xb1; x0 += kRowBlock) {
+      const std::size_t w = std::min(kRowBlock, xb1 - x0);
       std::int64_t* base = &data[o * outer_stride + x0];
-      // All zero in, all zero out, in place: sparse volumes (a plume in empty space)
-      // skip most of their blocks. Dense data stops looking at its first non-zero.
-      bool zero = true;
-      for (std::size_t k = 0; k < n && zero; ++k) zero = all_zero(base + k * stride, w);
-      if (zero) continue;
-      for (std::size_t k = 0; k < n; ++k) std::memcpy(&rows[k * w], base + k * stride, w * sizeof(std::int64_t));
-      inverse_rows(rows.get(), w, n, wav, base, stride);
+      // Every column (one x) is a line of its own: all zero in, all zero out, in
+      // place. So only the columns from the first to the last holding a non-zero (in
+      // groups of eight) are transformed, and a block without any is skipped: sparse
+      // volumes (a plume in empty space, air around a head) skip most of their work.
+      // A row is only looked at outside the columns already known to be needed, so
+      // dense data stops looking after its first row.
+      const std::size_t groups = (w + 7) / 8;
+      std::size_t glo = groups, ghi = 0;  // groups [glo, ghi) hold non-zeros
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::int64_t* r = base + k * stride;
+        auto nonzero = [&](std::size_t g) { return !all_zero(r + 8 * g, std::min<std::size_t>(8, w - 8 * g)); };
+        for (std::size_t g = 0; g < glo; ++g)
+          if (nonzero(g)) {
+            glo = g;
+            break;
+          }
+        for (std::size_t g = groups; g > std::max(ghi, glo); --g)
+          if (nonzero(g - 1)) {
+            ghi = g;
+            break;
+          }
+      }
+      if (glo >= ghi) continue;
+      const std::size_t x_lo = 8 * glo, x_hi = std::min(w, 8 * ghi), cols = x_hi - x_lo;
+      for (std::size_t k = 0; k < n; ++k)
+        std::memcpy(&rows[k * cols], base + x_lo + k * stride, cols * sizeof(std::int64_t));
+      inverse_rows(rows.get(), cols, n, wav, base + x_lo, stride);
     }
   });
+  propagate(n, box.lo[axis], box.hi[axis]);
+}
+
+// The inverse along x of the lines of the cube `c` inside the box (the others are zero).
+void inverse_axis_x(std::int64_t* data, const Dims& dims, const Dims& c, Wavelet wav, int threads, Box& box) {
+  const std::size_t n = c[0];
+  if (n < 2 || box.empty()) return;
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  parallel_for(box.hi[2] - box.lo[2], threads, [&](std::size_t zi) {
+    const std::size_t z = box.lo[2] + zi;
+    std::vector<std::int64_t> scratch(n);
+    for (std::size_t y = box.lo[1]; y < box.hi[1]; ++y) {
+      std::int64_t* line = data + y * sy + z * sz;
+      if (!all_zero(line + box.lo[0], box.hi[0] - box.lo[0])) inverse_line(line, n, wav, scratch.data());
+    }
+  });
+  propagate(n, box.lo[0], box.hi[0]);
 }
 
 }  // namespace
@@ -334,15 +391,35 @@ void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
   inverse_3d(data.data(), dims, levels, w, threads);
 }
 
+void Box::add(const Box& b) noexcept {
+  if (b.empty()) return;
+  if (empty()) {
+    *this = b;
+    return;
+  }
+  for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], b.lo[a]), hi[a] = std::max(hi[a], b.hi[a]);
+}
+
+void Box::add(std::size_t x0, std::size_t x1, std::size_t y, std::size_t z) noexcept {
+  add(Box{{x0, y, z}, {x1, y + 1, z + 1}});
+}
+
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads) {
-  auto op = [w](std::int64_t* line, std::size_t n, std::int64_t* scratch) {
-    if (!all_zero(line, n)) inverse_line(line, n, w, scratch);
-  };
+  std::vector<Box> all(static_cast<std::size_t>(levels) + 1);
+  for (int l = 0; l <= levels; ++l) all[static_cast<std::size_t>(l)].hi = level_dims(dims, l);
+  inverse_3d(data, dims, levels, w, threads, all);
+}
+
+void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
+                const std::vector<Box>& nonzero) {
+  Box box = nonzero[static_cast<std::size_t>(levels)];
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
-    inverse_axis_rows(data, dims, c, 2, w, threads);
-    inverse_axis_rows(data, dims, c, 1, w, threads);
-    transform_axis(data, dims, c, 0, threads, op);
+    box.add(nonzero[static_cast<std::size_t>(l)]);
+    for (int a = 0; a < 3; ++a) box.hi[a] = std::min(box.hi[a], c[a]);
+    inverse_axis_rows(data, dims, c, 2, w, threads, box);
+    inverse_axis_rows(data, dims, c, 1, w, threads, box);
+    inverse_axis_x(data, dims, c, w, threads, box);
   }
 }
 

@@ -59,6 +59,22 @@ void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
 void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads);
 // The same on a buffer of dims[0] * dims[1] * dims[2] values.
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads);
+
+// A box of pyramid positions [lo, hi); empty when lo >= hi on some axis.
+struct Box {
+  Dims lo{0, 0, 0}, hi{0, 0, 0};
+  bool empty() const noexcept { return lo[0] >= hi[0] || lo[1] >= hi[1] || lo[2] >= hi[2]; }
+  void add(const Box& b) noexcept;                       // the smallest box holding both
+  void add(std::size_t x0, std::size_t x1, std::size_t y, std::size_t z) noexcept;  // a row piece
+};
+
+// The inverse integer transform knowing where the non-zero coefficients lie:
+// nonzero[l] (l < levels) bounds the non-zero detail coefficients of level l and
+// nonzero[levels] the approximation's; every coefficient outside them must be zero.
+// Lines wholly outside the (propagated) boxes are zero in and zero out and are skipped
+// without being looked at (docs/volwave.md §4, format version 4: the plume).
+void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
+                const std::vector<Box>& nonzero);
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 
