@@ -306,16 +306,6 @@ struct Decoders {
   BitReader raw;
 };
 
-// Adds the non-zero coefficients of a decoded row (x from x0) to the slab's box. Only
-// rows coded as non-zero get here, a few in sparse data; dense rows stop at once.
-void extend_box(Box& box, const std::int64_t* row, std::size_t w, std::size_t x0, std::size_t y, std::size_t z) {
-  std::size_t first = 0, last = w;
-  while (first < w && row[first] == 0) ++first;
-  if (first == w) return;
-  while (row[last - 1] == 0) --last;
-  box.add(x0 + first, x0 + last, y, z);
-}
-
 // The decoder's walk: the same order and the same contexts as walk() + encode_slab,
 // specialised for the band kind so the per-coefficient loop has no tests for it. The
 // left neighbours a = x-1 and d = (x-1, y-1) are carried in registers from the previous
@@ -325,7 +315,7 @@ void extend_box(Box& box, const std::int64_t* row, std::size_t w, std::size_t x0
 // registers rather than reload it after every store of a coefficient.
 template <bool Approx, bool HasParent>
 bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* data, const Dims& dims, const Subband& band,
-                      const Subband* parent, const Slab& slab, int limit, Box& box) {
+                      const Subband* parent, const Slab& slab, int limit, RowList& rows) {
   Decoders dec{RangeDecoder(streams.main), RangeDecoder(streams.side), BitReader(streams.raw)};
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t w = band.hi[0] - band.lo[0];
@@ -348,6 +338,7 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
           continue;
         }
       }
+      rows.push_back(y + dims[1] * z);  // coded as holding a non-zero
       const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data();
       const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data();
       const std::int64_t* prow = nullptr;
@@ -396,7 +387,6 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
         a = v;
         d = b;
       }
-      extend_box(box, row, w, band.lo[0], y, z);
     }
   return !(dec.main.truncated() || dec.side.truncated() || dec.raw.overrun());
 }
@@ -407,7 +397,7 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
 template <bool Approx, bool HasParent>
 bool decode_static_slab(std::string_view tokens, std::string_view signs, std::string_view raw_bits,
                         const RansEntry* const* tab, const std::uint32_t* f0, std::int64_t* data, const Dims& dims, const Subband& band,
-                        const Subband* parent, const Slab& slab, int limit, Box& box) {
+                        const Subband* parent, const Slab& slab, int limit, RowList& rows) {
   RansDecoder tdec(tokens), sdec(signs);
   BitReader raw(raw_bits);
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
@@ -431,6 +421,7 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
           continue;
         }
       }
+      rows.push_back(y + dims[1] * z);  // coded as holding a non-zero
       const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data();
       const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data();
       const std::int64_t* prow = nullptr;
@@ -494,7 +485,6 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
         d = b;
         md = mb;
       }
-      extend_box(box, row, w, band.lo[0], y, z);
     }
   return tdec.done() && sdec.done() && !raw.overrun();
 }
@@ -502,7 +492,7 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
 // A static slab: varint lengths of the table description D and the rANS streams T and
 // S, then D, T, S and the raw bits to the end. Throws for anything no encoder writes.
 void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                   const Subband* parent, const Slab& slab, int limit, Box& box) {
+                   const Subband* parent, const Slab& slab, int limit, RowList& rows) {
   std::size_t pos = 0;
   auto varint = [&]() {
     std::uint64_t v = 0;
@@ -550,11 +540,11 @@ void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims,
                          raw = bytes.substr(pos + ld + lt + ls);
   bool ok;
   if (band.orientation == 0)
-    ok = decode_static_slab<true, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, box);
+    ok = decode_static_slab<true, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, rows);
   else if (parent)
-    ok = decode_static_slab<false, true>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, box);
+    ok = decode_static_slab<false, true>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, rows);
   else
-    ok = decode_static_slab<false, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, box);
+    ok = decode_static_slab<false, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, rows);
   if (!ok) corrupt(band, slab);
 }
 
@@ -581,19 +571,18 @@ SlabStreams split_streams(std::string_view bytes, const Subband& band, const Sla
 }  // namespace
 
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent, Box* nonzero) {
+                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows) {
   const int limit = std::min(max_exponent, kMaxExponent);
-  Box local;
-  Box& box = nonzero ? *nonzero : local;
-  box = Box{};
+  RowList local;
+  RowList& rows = nonzero_rows ? *nonzero_rows : local;
   if (bytes.empty() || (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab)) corrupt(band, slab);
-  if (bytes[0] == kStaticSlab) return decode_static(bytes.substr(1), data, dims, band, parent, slab, limit, box);
+  if (bytes[0] == kStaticSlab) return decode_static(bytes.substr(1), data, dims, band, parent, slab, limit, rows);
   const SlabStreams streams = split_streams(bytes.substr(1), band, slab);
   auto models = std::make_unique<Models>();
   bool ok;
-  if (band.orientation == 0) ok = decode_band_slab<true, false>(streams, *models, data, dims, band, parent, slab, limit, box);
-  else if (parent) ok = decode_band_slab<false, true>(streams, *models, data, dims, band, parent, slab, limit, box);
-  else ok = decode_band_slab<false, false>(streams, *models, data, dims, band, parent, slab, limit, box);
+  if (band.orientation == 0) ok = decode_band_slab<true, false>(streams, *models, data, dims, band, parent, slab, limit, rows);
+  else if (parent) ok = decode_band_slab<false, true>(streams, *models, data, dims, band, parent, slab, limit, rows);
+  else ok = decode_band_slab<false, false>(streams, *models, data, dims, band, parent, slab, limit, rows);
   if (!ok) corrupt(band, slab);
 }
 

@@ -52,10 +52,10 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
 
 // Decodes a slab into `data`, whose positions in the slab must be zero on entry (rows
 // coded as all zero are not written). Exponents above max_exponent, or a stream that
-// ends too early, throw fest::Error(bad_input) naming the band. `nonzero`, when given,
-// receives a box holding every non-zero coefficient of the slab (from the rows coded
-// as non-zero; the inverse transform skips what lies outside, lifting.hpp).
+// ends too early, throw fest::Error(bad_input) naming the band. `nonzero_rows`, when
+// given, gets the rows (y + dims[1] * z) coded as holding a non-zero appended: the
+// inverse transform skips the others (lifting.hpp).
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent, Box* nonzero = nullptr);
+                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows = nullptr);
 
 }  // namespace fest::wavelet

@@ -294,50 +294,61 @@ void inverse_rows(const std::int64_t* src, std::size_t w, std::size_t n, Wavelet
 // cache lines, one memcpy per sample) and transformed from there straight back.
 constexpr std::size_t kRowBlock = 256;
 
-// Where the non-zero samples of a line of n can be after its inverse transform, given
-// that before it they lie in storage positions [a, b) (low half [0, h), high half
-// [h, n)): sample k depends on low samples near k/2 and high samples near k/2 only
-// (CDF 5/3: even 2i on s_i, d_(i-1), d_i; odd 2i+1 on d_i and the even 2i, 2i+2; Haar
-// less), so [2 i_min - 2, 2 i_max + 4) holds them, with a margin.
-void propagate(std::size_t n, std::size_t& a, std::size_t& b) noexcept {
-  if (n < 2 || a >= b) return;
+// Which samples of a line of n can be non-zero after its inverse transform, from which
+// can be before it (storage order: low half [0, h), high half [h, n)): sample k
+// depends on low and high samples near k/2 only (CDF 5/3: even 2i on s_i, d_(i-1),
+// d_i; odd 2i+1 on d_i and the evens 2i, 2i+2; Haar less), so a non-zero at low or
+// high index i can reach the samples [2i - 2, 2i + 4) at most, with a margin.
+void propagate(std::size_t n, const std::uint8_t* in, std::uint8_t* out) noexcept {
   const std::size_t h = (n + 1) / 2;
-  std::size_t imin = n, imax = 0;
-  if (a < h) imin = a, imax = std::min(b, h) - 1;
-  if (b > h) imin = std::min(imin, std::max(a, h) - h), imax = std::max(imax, b - h - 1);
-  a = imin >= 1 ? 2 * imin - 2 : 0;
-  b = std::min(n, 2 * imax + 4);
+  std::fill_n(out, n, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!in[k]) continue;
+    const std::size_t i = k < h ? k : k - h;
+    const std::size_t a = i >= 1 ? 2 * i - 2 : 0, b = std::min(n, 2 * i + 4);
+    std::fill(out + a, out + b, 1);
+  }
 }
 
+// Flags of the rows (y + dims[1] * z): 1 where a row of the cube being transformed may
+// hold non-zeros, 0 where it is known to be zero.
+using RowFlags = std::vector<std::uint8_t>;
+
+// The inverse along z (axis 2, one plane of fixed y at a time) or y (axis 1, fixed z)
+// of the cube `c`: only planes with a flagged row are transformed, and in them only the
+// columns (x, in groups of eight) where a flagged row holds a non-zero. Afterwards the
+// flags of each plane say which output rows can be non-zero.
 void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int axis, Wavelet wav,
-                       int threads, Box& box) {
+                       int threads, RowFlags& flags) {
   const std::size_t n = c[axis];
-  if (n < 2 || box.empty()) return;
-  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  if (n < 2) return;
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1], ny = dims[1];
   const std::size_t stride = axis == 1 ? sy : sz;
-  const int outer_axis = axis == 1 ? 2 : 1;
-  const std::size_t outer0 = box.lo[outer_axis], outer = box.hi[outer_axis] - outer0;
+  const std::size_t outer = axis == 1 ? c[2] : c[1];
   const std::size_t outer_stride = axis == 1 ? sz : sy;
-  const std::size_t xb0 = box.lo[0], xb1 = box.hi[0];
-  // Columns outside the box are zero and stay zero; lines run the full length n (the
-  // lifting writes every sample in place).
-  parallel_for(outer, threads, [&](std::size_t oi) {
-    const std::size_t o = outer0 + oi;
+  // Flag of sample k of the lines of plane o.
+  const std::size_t flag_stride = axis == 1 ? 1 : ny, flag_outer = axis == 1 ? ny : 1;
+  parallel_for(outer, threads, [&](std::size_t o) {
+    std::vector<std::uint8_t> in(n), out(n);
+    bool any = false;
+    for (std::size_t k = 0; k < n; ++k) any |= (in[k] = flags[o * flag_outer + k * flag_stride]) != 0;
+    if (!any) return;
     // Left uninitialised (every element is written before it is read): zeroing it cost
     // as much as the transform.
-    const std::unique_ptr<std::int64_t[]> rows(new std::int64_t[n * std::min(kRowBlock, xb1 - xb0)]);
-    for (std::size_t x0 = xb0; x0 < xb1; x0 += kRowBlock) {
-      const std::size_t w = std::min(kRowBlock, xb1 - x0);
+    const std::unique_ptr<std::int64_t[]> rows(new std::int64_t[n * std::min(kRowBlock, c[0])]);
+    bool transformed = false;
+    for (std::size_t x0 = 0; x0 < c[0]; x0 += kRowBlock) {
+      const std::size_t w = std::min(kRowBlock, c[0] - x0);
       std::int64_t* base = &data[o * outer_stride + x0];
       // Every column (one x) is a line of its own: all zero in, all zero out, in
       // place. So only the columns from the first to the last holding a non-zero (in
-      // groups of eight) are transformed, and a block without any is skipped: sparse
-      // volumes (a plume in empty space, air around a head) skip most of their work.
-      // A row is only looked at outside the columns already known to be needed, so
-      // dense data stops looking after its first row.
+      // groups of eight) are transformed, and a block without any is skipped. A row
+      // is only looked at when flagged, and outside the columns already known to be
+      // needed, so dense data stops looking after its first row.
       const std::size_t groups = (w + 7) / 8;
       std::size_t glo = groups, ghi = 0;  // groups [glo, ghi) hold non-zeros
       for (std::size_t k = 0; k < n; ++k) {
+        if (!in[k]) continue;
         const std::int64_t* r = base + k * stride;
         auto nonzero = [&](std::size_t g) { return !all_zero(r + 8 * g, std::min<std::size_t>(8, w - 8 * g)); };
         for (std::size_t g = 0; g < glo; ++g)
@@ -352,33 +363,46 @@ void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int 
           }
       }
       if (glo >= ghi) continue;
-      // Narrowed only when that saves a quarter of the block: the copies of pieces
-      // cost more than they save on dense data (CT head: +14 M instructions in memcpy).
-      std::size_t x_lo = 8 * glo, x_hi = std::min(w, 8 * ghi);
-      if (4 * (x_hi - x_lo) > 3 * w) x_lo = 0, x_hi = w;
-      const std::size_t cols = x_hi - x_lo;
+      transformed = true;
+      const std::size_t x_lo = 8 * glo, x_hi = std::min(w, 8 * ghi), cols = x_hi - x_lo;
       for (std::size_t k = 0; k < n; ++k)
         std::memcpy(&rows[k * cols], base + x_lo + k * stride, cols * sizeof(std::int64_t));
       inverse_rows(rows.get(), cols, n, wav, base + x_lo, stride);
     }
+    if (transformed) propagate(n, in.data(), out.data());
+    else std::fill(out.begin(), out.end(), 0);  // flagged, but zero after all
+    for (std::size_t k = 0; k < n; ++k) flags[o * flag_outer + k * flag_stride] = out[k];
   });
-  propagate(n, box.lo[axis], box.hi[axis]);
 }
 
-// The inverse along x of the lines of the cube `c` inside the box (the others are zero).
-void inverse_axis_x(std::int64_t* data, const Dims& dims, const Dims& c, Wavelet wav, int threads, Box& box) {
+// The inverse along x of the flagged rows of the cube `c` (the others are zero).
+void inverse_axis_x(std::int64_t* data, const Dims& dims, const Dims& c, Wavelet wav, int threads,
+                    const RowFlags& flags) {
   const std::size_t n = c[0];
-  if (n < 2 || box.empty()) return;
-  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
-  parallel_for(box.hi[2] - box.lo[2], threads, [&](std::size_t zi) {
-    const std::size_t z = box.lo[2] + zi;
+  if (n < 2) return;
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1], ny = dims[1];
+  parallel_for(c[2], threads, [&](std::size_t z) {
     std::vector<std::int64_t> scratch(n);
-    for (std::size_t y = box.lo[1]; y < box.hi[1]; ++y) {
+    for (std::size_t y = 0; y < c[1]; ++y) {
+      if (!flags[y + ny * z]) continue;
       std::int64_t* line = data + y * sy + z * sz;
-      if (!all_zero(line + box.lo[0], box.hi[0] - box.lo[0])) inverse_line(line, n, wav, scratch.data());
+      if (!all_zero(line, n)) inverse_line(line, n, wav, scratch.data());
     }
   });
-  propagate(n, box.lo[0], box.hi[0]);
+}
+
+void inverse_3d_rows(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads, RowFlags& flags,
+                     const std::vector<RowList>* add) {
+  if (add)
+    for (std::size_t r : (*add)[static_cast<std::size_t>(levels)]) flags[r] = 1;
+  for (int l = levels - 1; l >= 0; --l) {
+    const Dims c = level_dims(dims, l);
+    if (add)
+      for (std::size_t r : (*add)[static_cast<std::size_t>(l)]) flags[r] = 1;
+    inverse_axis_rows(data, dims, c, 2, w, threads, flags);
+    inverse_axis_rows(data, dims, c, 1, w, threads, flags);
+    inverse_axis_x(data, dims, c, w, threads, flags);
+  }
 }
 
 }  // namespace
@@ -395,36 +419,15 @@ void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
   inverse_3d(data.data(), dims, levels, w, threads);
 }
 
-void Box::add(const Box& b) noexcept {
-  if (b.empty()) return;
-  if (empty()) {
-    *this = b;
-    return;
-  }
-  for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], b.lo[a]), hi[a] = std::max(hi[a], b.hi[a]);
-}
-
-void Box::add(std::size_t x0, std::size_t x1, std::size_t y, std::size_t z) noexcept {
-  add(Box{{x0, y, z}, {x1, y + 1, z + 1}});
-}
-
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads) {
-  std::vector<Box> all(static_cast<std::size_t>(levels) + 1);
-  for (int l = 0; l <= levels; ++l) all[static_cast<std::size_t>(l)].hi = level_dims(dims, l);
-  inverse_3d(data, dims, levels, w, threads, all);
+  RowFlags all(dims[1] * dims[2], 1);
+  inverse_3d_rows(data, dims, levels, w, threads, all, nullptr);
 }
 
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
-                const std::vector<Box>& nonzero) {
-  Box box = nonzero[static_cast<std::size_t>(levels)];
-  for (int l = levels - 1; l >= 0; --l) {
-    const Dims c = level_dims(dims, l);
-    box.add(nonzero[static_cast<std::size_t>(l)]);
-    for (int a = 0; a < 3; ++a) box.hi[a] = std::min(box.hi[a], c[a]);
-    inverse_axis_rows(data, dims, c, 2, w, threads, box);
-    inverse_axis_rows(data, dims, c, 1, w, threads, box);
-    inverse_axis_x(data, dims, c, w, threads, box);
-  }
+                const std::vector<RowList>& nonzero_rows) {
+  RowFlags flags(dims[1] * dims[2], 0);
+  inverse_3d_rows(data, dims, levels, w, threads, flags, &nonzero_rows);
 }
 
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads) {

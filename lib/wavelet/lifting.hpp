@@ -60,21 +60,18 @@ void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
 // The same on a buffer of dims[0] * dims[1] * dims[2] values.
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads);
 
-// A box of pyramid positions [lo, hi); empty when lo >= hi on some axis.
-struct Box {
-  Dims lo{0, 0, 0}, hi{0, 0, 0};
-  bool empty() const noexcept { return lo[0] >= hi[0] || lo[1] >= hi[1] || lo[2] >= hi[2]; }
-  void add(const Box& b) noexcept;                       // the smallest box holding both
-  void add(std::size_t x0, std::size_t x1, std::size_t y, std::size_t z) noexcept;  // a row piece
-};
+// Rows (x lines) of the pyramid are numbered y + dims[1] * z.
+using RowList = std::vector<std::size_t>;
 
-// The inverse integer transform knowing where the non-zero coefficients lie:
-// nonzero[l] (l < levels) bounds the non-zero detail coefficients of level l and
-// nonzero[levels] the approximation's; every coefficient outside them must be zero.
-// Lines wholly outside the (propagated) boxes are zero in and zero out and are skipped
-// without being looked at (docs/volwave.md §4, format version 4: the plume).
+// The inverse integer transform knowing which rows hold non-zero coefficients:
+// nonzero_rows[l] (l < levels) lists the rows holding non-zero detail coefficients of
+// level l, nonzero_rows[levels] those of the approximation; every other row of a
+// level's bands must be zero. The transform follows which rows can be non-zero through
+// every step (a sample depends only on samples near half its index), and lines and
+// planes of rows known to be zero -- zero in, zero out -- are skipped without being
+// looked at (docs/volwave.md §4: the empty space of a plume).
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
-                const std::vector<Box>& nonzero);
+                const std::vector<RowList>& nonzero_rows);
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 

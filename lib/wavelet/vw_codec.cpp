@@ -138,10 +138,10 @@ std::int64_t* coefficients_in(std::vector<double>& buffer) noexcept {
 }
 
 // Coefficients (in `buffer`, as above) -> voxel values in the stored type, in place.
-// `nonzero` (integer wavelets): boxes of the non-zero coefficients per level, as
-// inverse_3d takes them (null: anywhere).
+// `nonzero_rows` (integer wavelets): the rows holding non-zero coefficients per level,
+// as inverse_3d takes them (null: anywhere).
 void reconstruct_in_place(const VwHeader& h, std::vector<double>& buffer, const std::vector<std::uint8_t>& roi,
-                          int threads, const std::vector<Box>* nonzero = nullptr) {
+                          int threads, const std::vector<RowList>* nonzero_rows = nullptr) {
   const std::size_t n = buffer.size();
   std::int64_t* coef = coefficients_in(buffer);
   if (h.wavelet == Wavelet::cdf97) {
@@ -154,7 +154,7 @@ void reconstruct_in_place(const VwHeader& h, std::vector<double>& buffer, const 
     for (auto& v : buffer) v = stored_as(v + h.quantiser.offset, h.type);
     return;
   }
-  if (nonzero) inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero);
+  if (nonzero_rows) inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero_rows);
   else inverse_3d(coef, h.dims, h.levels, h.wavelet, threads);
   if (roi.empty()) {
     dequantise_in_place(buffer.data(), n, h.quantiser, h.type, threads);
@@ -626,9 +626,9 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
   std::size_t stream_total = 0;
   for (int k = 0; k <= h.levels && k < limit; ++k) stream_total += by_chunk[static_cast<std::size_t>(k)].size();
   ProgressCounter streams_decoded(progress_part(progress, 0.0, 0.5), stream_total);
-  // Where the non-zero coefficients are, per level (the approximation's at h.levels):
+  // Which rows hold non-zero coefficients, per level (the approximation's at h.levels):
   // the inverse transform skips the empty space around them.
-  std::vector<Box> nonzero(static_cast<std::size_t>(h.levels) + 1);
+  std::vector<RowList> nonzero_rows(static_cast<std::size_t>(h.levels) + 1);
   for (int k = 0; k <= h.levels && k < limit; ++k) {
     const ChunkInfo& info = h.chunks[static_cast<std::size_t>(k)];
     if (bytes.size() - pos < info.bytes) {
@@ -649,14 +649,16 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
       at += len;
     }
     if (at != chunk.size()) throw bad_input(".vw chunk {}: {} unused bytes", k, chunk.size() - at);
-    std::vector<Box> boxes(streams.size());
+    std::vector<RowList> rows(streams.size());
     parallel_for(streams.size(), threads, [&](std::size_t s) {
       decode_slab(parts[s], coef, h.dims, *streams[s].band, streams[s].parent, streams[s].slab, h.max_exponent,
-                  &boxes[s]);
+                  &rows[s]);
       streams_decoded.step();
     });
-    for (std::size_t s = 0; s < streams.size(); ++s)
-      nonzero[static_cast<std::size_t>(streams[s].band->level)].add(boxes[s]);
+    for (std::size_t s = 0; s < streams.size(); ++s) {
+      RowList& to = nonzero_rows[static_cast<std::size_t>(streams[s].band->level)];
+      to.insert(to.end(), rows[s].begin(), rows[s].end());
+    }
     pos += info.bytes;
     ++decoded;
   }
@@ -670,7 +672,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
   res.volume.direction = h.direction;
   res.volume.type = h.type;
   streams_decoded.finish();
-  reconstruct_in_place(h, buffer, roi, threads, &nonzero);
+  reconstruct_in_place(h, buffer, roi, threads, &nonzero_rows);
   if (progress) progress(1000, 1000);
   res.volume.voxels = std::move(buffer);
   // Outliers apply to the full-resolution volume only.
