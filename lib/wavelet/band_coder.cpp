@@ -306,6 +306,16 @@ struct Decoders {
   BitReader raw;
 };
 
+// The rows of a slab coded as holding a non-zero (zero_rows[r] == 0, r = (z - z0) * h +
+// (y - y0)), as y + dims[1] * z: listed after the walk, not in it, so the walk's loop
+// keeps its registers.
+void list_nonzero_rows(const std::vector<std::uint8_t>& zero_rows, const Subband& band, const Slab& slab,
+                       const Dims& dims, RowList& rows) {
+  const std::size_t h = band.hi[1] - band.lo[1];
+  for (std::size_t r = 0; r < zero_rows.size(); ++r)
+    if (!zero_rows[r]) rows.push_back(band.lo[1] + r % h + dims[1] * (slab.z0 + r / h));
+}
+
 // The decoder's walk: the same order and the same contexts as walk() + encode_slab,
 // specialised for the band kind so the per-coefficient loop has no tests for it. The
 // left neighbours a = x-1 and d = (x-1, y-1) are carried in registers from the previous
@@ -338,7 +348,6 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
           continue;
         }
       }
-      rows.push_back(y + dims[1] * z);  // coded as holding a non-zero
       const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data();
       const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data();
       const std::int64_t* prow = nullptr;
@@ -388,6 +397,7 @@ bool decode_band_slab(const SlabStreams& streams, Models& models, std::int64_t* 
         d = b;
       }
     }
+  list_nonzero_rows(zero_rows, band, slab, dims, rows);
   return !(dec.main.truncated() || dec.side.truncated() || dec.raw.overrun());
 }
 
@@ -421,7 +431,6 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
           continue;
         }
       }
-      rows.push_back(y + dims[1] * z);  // coded as holding a non-zero
       const std::int64_t* up = y > band.lo[1] ? row - sy : zeros.data();
       const std::int64_t* back = z > slab.z0 ? row - sz : zeros.data();
       const std::int64_t* prow = nullptr;
@@ -486,6 +495,7 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
         md = mb;
       }
     }
+  list_nonzero_rows(zero_rows, band, slab, dims, rows);
   return tdec.done() && sdec.done() && !raw.overrun();
 }
 
