@@ -50,9 +50,12 @@ enum class SlabCoding { smaller, adaptive, fixed };
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
                         const Slab& slab, SlabCoding coding = SlabCoding::smaller);
 
-// Decodes a slab into `data`. Exponents above max_exponent, or a stream that ends too
-// early, throw fest::Error(bad_input) naming the band.
+// Decodes a slab into `data`, whose positions in the slab must be zero on entry (rows
+// coded as all zero are not written). Exponents above max_exponent, or a stream that
+// ends too early, throw fest::Error(bad_input) naming the band. `nonzero_rows`, when
+// given, gets the rows (y + dims[1] * z) coded as holding a non-zero appended: the
+// inverse transform skips the others (lifting.hpp).
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent);
+                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows = nullptr);
 
 }  // namespace fest::wavelet

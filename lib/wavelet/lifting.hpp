@@ -59,6 +59,20 @@ void forward_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
 void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, Wavelet w, int threads);
 // The same on a buffer of dims[0] * dims[1] * dims[2] values.
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads);
+
+// Rows (x lines) of the pyramid are numbered y + dims[1] * z.
+using RowList = std::vector<std::size_t>;
+
+// The inverse integer transform knowing which rows hold non-zero coefficients:
+// nonzero_rows[l] (l < levels) lists the rows holding non-zero detail coefficients of
+// level l, nonzero_rows[levels] those of the approximation; every other row of a
+// level's bands must be zero. The transform follows which rows can be non-zero through
+// every step (a sample depends only on samples near half its index), and lines and
+// planes of rows known to be zero -- zero in, zero out -- are skipped without being
+// looked at (docs/volwave.md §4: the empty space of a plume).
+// `row_flags`, when given, receives per row 0 where the result's row is known to be zero.
+void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
+                const std::vector<RowList>& nonzero_rows, std::vector<std::uint8_t>* row_flags = nullptr);
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 

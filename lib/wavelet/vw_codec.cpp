@@ -138,8 +138,10 @@ std::int64_t* coefficients_in(std::vector<double>& buffer) noexcept {
 }
 
 // Coefficients (in `buffer`, as above) -> voxel values in the stored type, in place.
+// `nonzero_rows` (integer wavelets): the rows holding non-zero coefficients per level,
+// as inverse_3d takes them (null: anywhere).
 void reconstruct_in_place(const VwHeader& h, std::vector<double>& buffer, const std::vector<std::uint8_t>& roi,
-                          int threads) {
+                          int threads, const std::vector<RowList>* nonzero_rows = nullptr) {
   const std::size_t n = buffer.size();
   std::int64_t* coef = coefficients_in(buffer);
   if (h.wavelet == Wavelet::cdf97) {
@@ -152,7 +154,15 @@ void reconstruct_in_place(const VwHeader& h, std::vector<double>& buffer, const 
     for (auto& v : buffer) v = stored_as(v + h.quantiser.offset, h.type);
     return;
   }
-  inverse_3d(coef, h.dims, h.levels, h.wavelet, threads);
+  if (nonzero_rows && roi.empty()) {
+    // Rows known to be zero after the transform are not even read by the dequantiser.
+    std::vector<std::uint8_t> row_flags;
+    inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero_rows, &row_flags);
+    dequantise_rows_in_place(buffer.data(), h.dims[0], row_flags, h.quantiser, h.type, threads);
+    return;
+  }
+  if (nonzero_rows) inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero_rows);
+  else inverse_3d(coef, h.dims, h.levels, h.wavelet, threads);
   if (roi.empty()) {
     dequantise_in_place(buffer.data(), n, h.quantiser, h.type, threads);
   } else {
@@ -623,6 +633,9 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
   std::size_t stream_total = 0;
   for (int k = 0; k <= h.levels && k < limit; ++k) stream_total += by_chunk[static_cast<std::size_t>(k)].size();
   ProgressCounter streams_decoded(progress_part(progress, 0.0, 0.5), stream_total);
+  // Which rows hold non-zero coefficients, per level (the approximation's at h.levels):
+  // the inverse transform skips the empty space around them.
+  std::vector<RowList> nonzero_rows(static_cast<std::size_t>(h.levels) + 1);
   for (int k = 0; k <= h.levels && k < limit; ++k) {
     const ChunkInfo& info = h.chunks[static_cast<std::size_t>(k)];
     if (bytes.size() - pos < info.bytes) {
@@ -643,10 +656,16 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
       at += len;
     }
     if (at != chunk.size()) throw bad_input(".vw chunk {}: {} unused bytes", k, chunk.size() - at);
+    std::vector<RowList> rows(streams.size());
     parallel_for(streams.size(), threads, [&](std::size_t s) {
-      decode_slab(parts[s], coef, h.dims, *streams[s].band, streams[s].parent, streams[s].slab, h.max_exponent);
+      decode_slab(parts[s], coef, h.dims, *streams[s].band, streams[s].parent, streams[s].slab, h.max_exponent,
+                  &rows[s]);
       streams_decoded.step();
     });
+    for (std::size_t s = 0; s < streams.size(); ++s) {
+      RowList& to = nonzero_rows[static_cast<std::size_t>(streams[s].band->level)];
+      to.insert(to.end(), rows[s].begin(), rows[s].end());
+    }
     pos += info.bytes;
     ++decoded;
   }
@@ -660,7 +679,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
   res.volume.direction = h.direction;
   res.volume.type = h.type;
   streams_decoded.finish();
-  reconstruct_in_place(h, buffer, roi, threads);
+  reconstruct_in_place(h, buffer, roi, threads, &nonzero_rows);
   if (progress) progress(1000, 1000);
   res.volume.voxels = std::move(buffer);
   // Outliers apply to the full-resolution volume only.
