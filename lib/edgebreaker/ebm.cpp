@@ -886,15 +886,38 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   const int g_count = dec.vertex_count;
 
   std::vector<char> dummy(static_cast<std::size_t>(g_count), 0);
+  Numbering num;
+  bool numbered = false;  // num made, and dec.triangles made the output faces, below
   if (h.dummies > 0) {
     // The decoder's counts: valences(dec.triangles, g_count) without a pass over the faces.
     dummy = decode_hole_flags(section("HOLE"), dec.valence);
     const auto n = static_cast<std::uint64_t>(std::count(dummy.begin(), dummy.end(), 1));
     if (n != h.dummies) throw bad_input("HOLE section marks {} dummy vertices, the header says {}", n, h.dummies);
     // A dummy's triangles form one fan around it: no two dummies share a triangle.
-    for (const Triangle& t : dec.triangles)
-      if (dummy[static_cast<std::size_t>(t[0])] + dummy[static_cast<std::size_t>(t[1])] + dummy[static_cast<std::size_t>(t[2])] > 1)
-        throw bad_input("HOLE section: two dummy vertices share a triangle");
+    if (h.stitch == 0 && static_cast<Predictor>(h.predictor) != Predictor::multi) {
+      // Without stitch pairs the numbering depends on the dummies alone, so it is made
+      // here, and the output faces (those without a dummy, renumbered) in the same pass as
+      // the check, in place: one pass over the faces instead of two, and no second array
+      // (docs/ebcode.md §6). Only the multi-way predictor reads the G faces later.
+      num = number_vertices(dummy, {}, stitch, false, true);
+      numbered = true;
+      Triangle* face = dec.triangles.data();  // never ahead of the face being read
+      const int* output = num.output.data();
+      const char* d = dummy.data();
+      for (const Triangle& t : dec.triangles) {
+        const int on_dummies = d[t[0]] + d[t[1]] + d[t[2]];
+        if (on_dummies != 0) {
+          if (on_dummies > 1) throw bad_input("HOLE section: two dummy vertices share a triangle");
+          continue;
+        }
+        *face++ = {output[t[0]], output[t[1]], output[t[2]]};
+      }
+      dec.triangles.resize(static_cast<std::size_t>(face - dec.triangles.data()));
+    } else {
+      for (const Triangle& t : dec.triangles)
+        if (dummy[static_cast<std::size_t>(t[0])] + dummy[static_cast<std::size_t>(t[1])] + dummy[static_cast<std::size_t>(t[2])] > 1)
+          throw bad_input("HOLE section: two dummy vertices share a triangle");
+    }
   }
   std::vector<int> original_of(static_cast<std::size_t>(g_count), -1);
   {
@@ -917,7 +940,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     }
   }
   const bool plain = h.dummies == 0 && h.stitch == 0;  // output vertex g is G vertex g
-  Numbering num = number_vertices(dummy, original_of, stitch, plain, h.stitch == 0);
+  if (!numbered) num = number_vertices(dummy, original_of, stitch, plain, h.stitch == 0);
   const std::uint64_t expected_vertices = h.vertices;
   const std::uint64_t stitched_count =
       static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true, plain, h.stitch == 0).count);
@@ -979,6 +1002,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   }
   if (plain) {
     out.triangles = std::move(dec.triangles);  // nothing to drop or renumber
+  } else if (numbered) {
+    out.triangles = std::move(dec.triangles);  // compacted and renumbered with the dummy check
   } else {
     // Written through a pointer (push_back's capacity test per face was a tenth of this).
     out.triangles.resize(dec.triangles.size());
