@@ -948,7 +948,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
 
   MeshSoup out;
-  out.positions.assign(static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated), {0.0, 0.0, 0.0});
+  const std::size_t output_count = static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated);
   // One plan for the positions and every attribute (geometry_plan's fields, moved here
   // rather than copied: the decoder needs them for nothing else).
   GeometryPlan plan;
@@ -964,13 +964,32 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     quant.box = h.box;
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor), coding);
-    for (int g = 0; g < g_count; ++g)
-      if (num.output[static_cast<std::size_t>(g)] >= 0)
-        out.positions[static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)])] = quant.restore(q[static_cast<std::size_t>(g)]);
+    if (plain && quant.bits != 0) {
+      // Output vertex g is G vertex g: appended in order rather than zeroed and then
+      // overwritten (the zeros were 1 % of the decode; docs/ebcode.md §6). The same
+      // arithmetic as Quantiser::restore, its constants in locals.
+      const double lo0 = quant.box[0], lo1 = quant.box[1], lo2 = quant.box[2], extent = quant.box[3], steps = quant.steps();
+      std::vector<std::array<double, 3>> positions;
+      positions.reserve(output_count);
+      for (std::size_t g = 0; g < static_cast<std::size_t>(g_count); ++g) {
+        const QPoint& x = q[g];
+        positions.push_back({lo0 + static_cast<double>(x[0]) * extent / steps, lo1 + static_cast<double>(x[1]) * extent / steps,
+                             lo2 + static_cast<double>(x[2]) * extent / steps});
+      }
+      positions.resize(output_count);  // the isolated vertices' places, written below
+      out.positions = std::move(positions);
+    } else {
+      out.positions.assign(output_count, {0.0, 0.0, 0.0});
+      for (int g = 0; g < g_count; ++g)
+        if (num.output[static_cast<std::size_t>(g)] >= 0)
+          out.positions[static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)])] = quant.restore(q[static_cast<std::size_t>(g)]);
+    }
     if (h.isolated > 0) {
       const std::vector<QPoint> iq = decode_point_list(section("ISOL"), static_cast<std::size_t>(h.isolated), h.qp, coding);
       for (std::size_t k = 0; k < iq.size(); ++k) out.positions[static_cast<std::size_t>(num.count) + k] = quant.restore(iq[k]);
     }
+  } else {
+    out.positions.assign(output_count, {0.0, 0.0, 0.0});
   }
   for (const Attribute& a : p.attributes) {
     if (!p.sections.count(a.tag())) throw bad_input(".ebm stream has no {} section", a.tag());
@@ -982,7 +1001,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram, coding);
     const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits, coding)
                                                    : std::vector<QPoint>{};
-    const std::size_t n = out.positions.size();
+    const std::size_t n = output_count;
     const auto store = [&](std::size_t v, const QPoint& x) {
       if (a.kind == 1) {
         out.normals[v] = {a.restore(x, 0), a.restore(x, 1), a.restore(x, 2)};
