@@ -112,25 +112,19 @@ inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
 // decisions go through a separate, out-of-line function: folded into the settled path,
 // GCC turned the shift into a table load and a select on every decision (1.8 % of
 // bunny00's decode instructions; docs/ebcode.md §6).
-[[gnu::noinline]] int get_counted_new(RangeDecoder& dec, CountedBit& c) {
-  const int b = dec.bit_at_rate(c.p, counted_shift[c.n]);
-  ++c.n;
-  return b;
-}
-[[gnu::noinline]] int get_counted_value_new(RangeDecoder& dec, CountedBit& c) {
-  const int b = dec.bit_value_at_rate(c.p, counted_shift[c.n]);
-  ++c.n;
-  return b;
-}
+// The shift of a context that is still new, and its use counted: out of line, and without
+// the range decoder, whose state then stays in registers in the decoding loop (a decoder
+// passed to a call lives in memory throughout).
+[[gnu::noinline]] int new_context_shift(CountedBit& c) { return counted_shift[c.n++]; }
 [[gnu::always_inline]] inline int get_counted(RangeDecoder& dec, CountedBit& c) {
   if (__builtin_expect(c.n == 15, 1)) return dec.bit_at_rate(c.p, adapt_shift);
-  return get_counted_new(dec, c);
+  return dec.bit_at_rate(c.p, new_context_shift(c));
 }
 // The same for a bit that is only stored (the two below a residual's leading one, close
 // to uniform): the range decoder's mask form, without a branch on the outcome.
 [[gnu::always_inline]] inline int get_counted_value(RangeDecoder& dec, CountedBit& c) {
   if (__builtin_expect(c.n == 15, 1)) return dec.bit_value_at_rate(c.p, adapt_shift);
-  return get_counted_value_new(dec, c);
+  return dec.bit_value_at_rate(c.p, new_context_shift(c));
 }
 
 // The length k of a coordinate's zigzagged residual is coded around m, the length of the
