@@ -215,6 +215,8 @@ class RangeDecoder {
     }
   }
 
+  // The unread bytes as two pointers: one register fewer than data, size and position in
+  // the decoders' inner loops, which run short of them (docs/ebcode.md §6).
   const unsigned char* next_;
   const unsigned char* end_;
   std::size_t overrun_ = 0;

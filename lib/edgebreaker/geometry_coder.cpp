@@ -108,13 +108,11 @@ inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
   c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
 }
 // A context that has settled (15 uses, on a large mesh almost every decision) adapts at
-// the fixed rate without looking at the table or counting further. A new context's
-// decisions go through a separate, out-of-line function: folded into the settled path,
-// GCC turned the shift into a table load and a select on every decision (1.8 % of
-// bunny00's decode instructions; docs/ebcode.md §6).
-// The shift of a context that is still new, and its use counted: out of line, and without
-// the range decoder, whose state then stays in registers in the decoding loop (a decoder
-// passed to a call lives in memory throughout).
+// the fixed rate without looking at the table or counting further. A context that is
+// still new gets its shift, and its use counted, from an out-of-line function that does
+// not take the range decoder: inlined, GCC made the shift a table load and a select on
+// every decision; a call that took the decoder kept its state in memory through the
+// whole position loop (17 % of the loop's instructions; docs/ebcode.md §6).
 [[gnu::noinline]] int new_context_shift(CountedBit& c) { return counted_shift[c.n++]; }
 [[gnu::always_inline]] inline int get_counted(RangeDecoder& dec, CountedBit& c) {
   if (__builtin_expect(c.n == 15, 1)) return dec.bit_at_rate(c.p, adapt_shift);
