@@ -125,7 +125,8 @@ class RangeDecoder {
   // (finish).
   enum class FirstByte { implied, stored };
 
-  explicit RangeDecoder(std::string_view bytes, FirstByte first = FirstByte::implied) : bytes_(bytes) {
+  explicit RangeDecoder(std::string_view bytes, FirstByte first = FirstByte::implied)
+      : next_(reinterpret_cast<const unsigned char*>(bytes.data())), end_(next_ + bytes.size()) {
     if (first == FirstByte::stored) next_byte();  // always 0: shifted out of the code register
     for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | next_byte();
   }
@@ -203,7 +204,7 @@ class RangeDecoder {
 
  private:
   std::uint32_t next_byte() {
-    if (pos_ < bytes_.size()) return static_cast<std::uint8_t>(bytes_[pos_++]);
+    if (next_ != end_) return *next_++;
     ++overrun_;
     return 0;
   }
@@ -214,8 +215,10 @@ class RangeDecoder {
     }
   }
 
-  std::string_view bytes_;
-  std::size_t pos_ = 0;
+  // The unread bytes as two pointers: one register fewer than data, size and position in
+  // the decoders' inner loops, which run short of them (docs/ebcode.md §6).
+  const unsigned char* next_;
+  const unsigned char* end_;
   std::size_t overrun_ = 0;
   std::uint32_t code_ = 0;
   std::uint32_t range_ = 0xFFFFFFFFu;

@@ -2,6 +2,7 @@
 // Rossignac's corner table (docs/ebcode.md §1) and the checks that make a triangle list one the
 // chapter's coder can take: closed, manifold, oriented, connected, genus 0.
 
+#include <cstdint>
 #include <vector>
 
 #include "edgebreaker/clers.hpp"
@@ -24,6 +25,11 @@ struct CornerTable {
 // the -1 of an open corner maps as before.
 inline int next(int c) { return c % 3 == 2 ? c - 2 : c + 1; }
 inline int prev(int c) { return c % 3 == 0 ? c + 2 : c - 1; }  // next(next(c)), one remainder
+// prev(c) for a corner c >= 0 (never -1): "c is a multiple of 3" as c times the inverse of
+// 3 modulo 2^32 landing in the first third of the range (one multiply and a compare; the
+// remainder takes a multiply, a shift and a subtraction). The swing of Spirale Reversi's
+// C steps by it (docs/ebcode.md §6).
+inline int prev_nonnegative(int c) { return static_cast<std::uint32_t>(c) * 0xAAAAAAABu <= 0x55555555u ? c + 2 : c - 1; }
 // right(c): the corner across the edge (V[c], V[prev(c)]); left(c): across (V[next(c)], V[c]).
 inline int right(const CornerTable& t, int c) { return t.O[static_cast<std::size_t>(next(c))]; }
 inline int left(const CornerTable& t, int c) { return t.O[static_cast<std::size_t>(prev(c))]; }

@@ -886,15 +886,38 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   const int g_count = dec.vertex_count;
 
   std::vector<char> dummy(static_cast<std::size_t>(g_count), 0);
+  Numbering num;
+  bool numbered = false;  // num made, and dec.triangles made the output faces, below
   if (h.dummies > 0) {
     // The decoder's counts: valences(dec.triangles, g_count) without a pass over the faces.
     dummy = decode_hole_flags(section("HOLE"), dec.valence);
     const auto n = static_cast<std::uint64_t>(std::count(dummy.begin(), dummy.end(), 1));
     if (n != h.dummies) throw bad_input("HOLE section marks {} dummy vertices, the header says {}", n, h.dummies);
     // A dummy's triangles form one fan around it: no two dummies share a triangle.
-    for (const Triangle& t : dec.triangles)
-      if (dummy[static_cast<std::size_t>(t[0])] + dummy[static_cast<std::size_t>(t[1])] + dummy[static_cast<std::size_t>(t[2])] > 1)
-        throw bad_input("HOLE section: two dummy vertices share a triangle");
+    if (h.stitch == 0 && static_cast<Predictor>(h.predictor) != Predictor::multi) {
+      // Without stitch pairs the numbering depends on the dummies alone, so it is made
+      // here, and the output faces (those without a dummy, renumbered) in the same pass as
+      // the check, in place: one pass over the faces instead of two, and no second array
+      // (docs/ebcode.md §6). Only the multi-way predictor reads the G faces later.
+      num = number_vertices(dummy, {}, stitch, false, true);
+      numbered = true;
+      Triangle* face = dec.triangles.data();  // never ahead of the face being read
+      const int* output = num.output.data();
+      const char* d = dummy.data();
+      for (const Triangle& t : dec.triangles) {
+        const int on_dummies = d[t[0]] + d[t[1]] + d[t[2]];
+        if (on_dummies != 0) {
+          if (on_dummies > 1) throw bad_input("HOLE section: two dummy vertices share a triangle");
+          continue;
+        }
+        *face++ = {output[t[0]], output[t[1]], output[t[2]]};
+      }
+      dec.triangles.resize(static_cast<std::size_t>(face - dec.triangles.data()));
+    } else {
+      for (const Triangle& t : dec.triangles)
+        if (dummy[static_cast<std::size_t>(t[0])] + dummy[static_cast<std::size_t>(t[1])] + dummy[static_cast<std::size_t>(t[2])] > 1)
+          throw bad_input("HOLE section: two dummy vertices share a triangle");
+    }
   }
   std::vector<int> original_of(static_cast<std::size_t>(g_count), -1);
   {
@@ -917,7 +940,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     }
   }
   const bool plain = h.dummies == 0 && h.stitch == 0;  // output vertex g is G vertex g
-  Numbering num = number_vertices(dummy, original_of, stitch, plain, h.stitch == 0);
+  if (!numbered) num = number_vertices(dummy, original_of, stitch, plain, h.stitch == 0);
   const std::uint64_t expected_vertices = h.vertices;
   const std::uint64_t stitched_count =
       static_cast<std::uint64_t>(stitch ? num.count : number_vertices(dummy, original_of, true, plain, h.stitch == 0).count);
@@ -925,7 +948,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     throw bad_input("connectivity gives {} vertices, the header says {}", stitched_count + h.isolated, expected_vertices);
 
   MeshSoup out;
-  out.positions.assign(static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated), {0.0, 0.0, 0.0});
+  const std::size_t output_count = static_cast<std::size_t>(num.count) + static_cast<std::size_t>(h.isolated);
   // One plan for the positions and every attribute (geometry_plan's fields, moved here
   // rather than copied: the decoder needs them for nothing else).
   GeometryPlan plan;
@@ -941,13 +964,32 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     quant.box = h.box;
     const std::vector<QPoint> q =
         decode_positions(section("GEOM"), plan, h.qp, static_cast<Predictor>(h.predictor), coding);
-    for (int g = 0; g < g_count; ++g)
-      if (num.output[static_cast<std::size_t>(g)] >= 0)
-        out.positions[static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)])] = quant.restore(q[static_cast<std::size_t>(g)]);
+    if (plain && quant.bits != 0) {
+      // Output vertex g is G vertex g: appended in order rather than zeroed and then
+      // overwritten (the zeros were 1 % of the decode; docs/ebcode.md §6). The same
+      // arithmetic as Quantiser::restore, its constants in locals.
+      const double lo0 = quant.box[0], lo1 = quant.box[1], lo2 = quant.box[2], extent = quant.box[3], steps = quant.steps();
+      std::vector<std::array<double, 3>> positions;
+      positions.reserve(output_count);
+      for (std::size_t g = 0; g < static_cast<std::size_t>(g_count); ++g) {
+        const QPoint& x = q[g];
+        positions.push_back({lo0 + static_cast<double>(x[0]) * extent / steps, lo1 + static_cast<double>(x[1]) * extent / steps,
+                             lo2 + static_cast<double>(x[2]) * extent / steps});
+      }
+      positions.resize(output_count);  // the isolated vertices' places, written below
+      out.positions = std::move(positions);
+    } else {
+      out.positions.assign(output_count, {0.0, 0.0, 0.0});
+      for (int g = 0; g < g_count; ++g)
+        if (num.output[static_cast<std::size_t>(g)] >= 0)
+          out.positions[static_cast<std::size_t>(num.output[static_cast<std::size_t>(g)])] = quant.restore(q[static_cast<std::size_t>(g)]);
+    }
     if (h.isolated > 0) {
       const std::vector<QPoint> iq = decode_point_list(section("ISOL"), static_cast<std::size_t>(h.isolated), h.qp, coding);
       for (std::size_t k = 0; k < iq.size(); ++k) out.positions[static_cast<std::size_t>(num.count) + k] = quant.restore(iq[k]);
     }
+  } else {
+    out.positions.assign(output_count, {0.0, 0.0, 0.0});
   }
   for (const Attribute& a : p.attributes) {
     if (!p.sections.count(a.tag())) throw bad_input(".ebm stream has no {} section", a.tag());
@@ -959,7 +1001,7 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
     const std::vector<QPoint> q = decode_positions(main, plan, a.bits, Predictor::parallelogram, coding);
     const std::vector<QPoint> iq = h.isolated > 0 ? decode_point_list(rest, static_cast<std::size_t>(h.isolated), a.bits, coding)
                                                    : std::vector<QPoint>{};
-    const std::size_t n = out.positions.size();
+    const std::size_t n = output_count;
     const auto store = [&](std::size_t v, const QPoint& x) {
       if (a.kind == 1) {
         out.normals[v] = {a.restore(x, 0), a.restore(x, 1), a.restore(x, 2)};
@@ -979,6 +1021,8 @@ MeshSoup decode_ebm(std::string_view bytes, bool stitch, bool verify, EbmHeader*
   }
   if (plain) {
     out.triangles = std::move(dec.triangles);  // nothing to drop or renumber
+  } else if (numbered) {
+    out.triangles = std::move(dec.triangles);  // compacted and renumbered with the dummy check
   } else {
     // Written through a pointer (push_back's capacity test per face was a tenth of this).
     out.triangles.resize(dec.triangles.size());

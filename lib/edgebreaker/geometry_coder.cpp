@@ -108,20 +108,21 @@ inline void put_counted(RangeEncoder& enc, CountedBit& c, int b) {
   c.n = static_cast<std::uint16_t>(c.n + (c.n < 15 ? 1 : 0));
 }
 // A context that has settled (15 uses, on a large mesh almost every decision) adapts at
-// the fixed rate without looking at the table or counting further.
+// the fixed rate without looking at the table or counting further. A context that is
+// still new gets its shift, and its use counted, from an out-of-line function that does
+// not take the range decoder: inlined, GCC made the shift a table load and a select on
+// every decision; a call that took the decoder kept its state in memory through the
+// whole position loop (17 % of the loop's instructions; docs/ebcode.md §6).
+[[gnu::noinline]] int new_context_shift(CountedBit& c) { return counted_shift[c.n++]; }
 [[gnu::always_inline]] inline int get_counted(RangeDecoder& dec, CountedBit& c) {
-  if (c.n == 15) return dec.bit_at_rate(c.p, adapt_shift);
-  const int b = dec.bit_at_rate(c.p, counted_shift[c.n]);
-  ++c.n;
-  return b;
+  if (__builtin_expect(c.n == 15, 1)) return dec.bit_at_rate(c.p, adapt_shift);
+  return dec.bit_at_rate(c.p, new_context_shift(c));
 }
 // The same for a bit that is only stored (the two below a residual's leading one, close
 // to uniform): the range decoder's mask form, without a branch on the outcome.
 [[gnu::always_inline]] inline int get_counted_value(RangeDecoder& dec, CountedBit& c) {
-  if (c.n == 15) return dec.bit_value_at_rate(c.p, adapt_shift);
-  const int b = dec.bit_value_at_rate(c.p, counted_shift[c.n]);
-  ++c.n;
-  return b;
+  if (__builtin_expect(c.n == 15, 1)) return dec.bit_value_at_rate(c.p, adapt_shift);
+  return dec.bit_value_at_rate(c.p, new_context_shift(c));
 }
 
 // The length k of a coordinate's zigzagged residual is coded around m, the length of the

@@ -51,6 +51,18 @@ class Growing {
     n_ += count;
     return first;
   }
+  // The same for two arrays that are always reserved and extended together, so that their
+  // sizes and capacities are equal (the decoder's V and O): one capacity test for both.
+  static std::size_t extend_pair(Growing& a, Growing& b, std::size_t count) {
+    if (a.n_ + count > a.cap_) {
+      a.grow_for(count);
+      b.grow_for(count);
+    }
+    const std::size_t first = a.n_;
+    a.n_ += count;
+    b.n_ += count;
+    return first;
+  }
   std::size_t size() const noexcept { return n_; }
   T* data() noexcept { return data_.get(); }
   const T* data() const noexcept { return data_.get(); }
@@ -158,7 +170,7 @@ class ReverseDecoder {
   std::size_t next_event_source_;  // events_[next_event_ - 1].source, or -1 when none is left
   std::unordered_map<std::uint32_t, int> pending_;  // split symbol -> corner from its event
 
-  Growing<int> V_, O_;          // corners, three per triangle; O_ is -1 while open
+  Growing<int> V_, O_;          // corners, three per triangle; O_ is -1 while open; always reserved and extended together (extend_pair)
   std::size_t links_ = 0;       // link() calls: each closes two open corners
   Growing<Vertex> vertices_;    // provisional vertex ids
   std::vector<int> closed_at_;  // per C, in decode order: the tip corner that closed it

@@ -17,8 +17,7 @@ namespace fest::edgebreaker {
 // written c + 1 and c + 2 below (the remainder in next() and prev() was a tenth of the
 // decoder's instructions). Its three V entries are written by the caller.
 inline int ReverseDecoder::new_triangle() {
-  const std::size_t c = V_.extend(3);
-  O_.extend(3);
+  const std::size_t c = Growing<int>::extend_pair(V_, O_, 3);
   int* o = O_.data() + c;
   o[0] = o[1] = o[2] = -1;
   return static_cast<int>(c);
@@ -85,7 +84,7 @@ inline int ReverseDecoder::swing_to_open(int a, int j) {
       if (j == a) fail("a loop closed on itself");
       return j;
     }
-    j = prev(o);
+    j = prev_nonnegative(o);  // o != -1 here
   }
   fail("a vertex fan does not end");
 }
