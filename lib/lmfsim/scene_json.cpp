@@ -1,6 +1,7 @@
 #include "lmfsim/scene_json.hpp"
 
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <set>
 
@@ -150,7 +151,9 @@ void read_sim(const json& j, SimSettings& sim) {
   sim.dt = num_or(j, "dt", sim.dt, "sim");
   if (j.contains("every")) {
     const double e = num(j["every"], "sim.every");
-    if (e != std::floor(e) || e < 1) throw bad_input("sim.every: expected a positive integer");
+    // Bounded before the conversion: an int cannot hold 1.7e95 (undefined; fuzz_lmfsim_scene).
+    if (e != std::floor(e) || e < 1 || e > std::numeric_limits<int>::max())
+      throw bad_input("sim.every: expected a whole number from 1 to {}", std::numeric_limits<int>::max());
     sim.every = static_cast<int>(e);
   }
   if (j.contains("integrator")) {
