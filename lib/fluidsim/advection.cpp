@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <omp.h>
+
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif
@@ -131,9 +133,11 @@ struct InteriorBox {
 // while the fields themselves are still sampled and stored in double.
 using Float4 = float __attribute__((vector_size(16)));
 
-std::vector<Float4> pack_velocity(const Layout& L, const Velocity& vel) {
+// Uninitialised storage (new[] of a vector type leaves it so): a std::vector would be
+// zero-filled by one thread before the team fills it, a serial pass over N x 16 bytes.
+std::unique_ptr<Float4[]> pack_velocity(const Layout& L, const Velocity& vel) {
   const std::size_t N = L.count();
-  std::vector<Float4> packed(N);
+  std::unique_ptr<Float4[]> packed(new Float4[N]);
   const double inv_h = 1.0 / L.h;
   if (L.dim == 3) {  // the common case without the per-lane loop
     const double *u = vel[0].data(), *v = vel[1].data(), *w = vel[2].data();
@@ -345,8 +349,8 @@ inline double sample_unwrapped(const Lerp3& s, const double* f) noexcept {
 
 std::array<double, 3> trace_back(const Layout& L, const Velocity& vel, int i, int j, int k, double dt,
                                  int substeps) {
-  const std::vector<Float4> packed = pack_velocity(L, vel);
-  return trace_packed(L, InteriorBox(L), packed.data(), i, j, k, dt, substeps);
+  const std::unique_ptr<Float4[]> packed = pack_velocity(L, vel);
+  return trace_packed(L, InteriorBox(L), packed.get(), i, j, k, dt, substeps);
 }
 
 void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const std::vector<const Field*>& in,
@@ -362,11 +366,11 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
   }
   const double* const* const srcp = src.data();
   double* const* const dstp = dst.data();
-  const std::vector<Float4> packed = pack_velocity(L, vel);
+  const std::unique_ptr<Float4[]> packed = pack_velocity(L, vel);
   const InteriorBox box(L);
   // The float32 fast path: 3-D grids, one substep (substeps confine between stages).
   std::optional<FastTrace> fast;
-  if (box.usable && substeps == 1) fast.emplace(L, box, packed.data());
+  if (box.usable && substeps == 1) fast.emplace(L, box, packed.get());
   const float fdt = static_cast<float>(dt);
   const int rows = L.size[1] * L.size[2];
   // About four chunks per thread, as the seed found necessary for saturation.
@@ -376,7 +380,7 @@ void advect(const Layout& L, const Velocity& vel, double dt, int substeps, const
     const int j = r % L.size[1], k = r / L.size[1];
     const std::size_t row = L.index(0, j, k);
     auto general = [&](int i) {
-      const Lerp3 s = box.lerp_any(L, trace_packed(L, box, packed.data(), i, j, k, dt, substeps));
+      const Lerp3 s = box.lerp_any(L, trace_packed(L, box, packed.get(), i, j, k, dt, substeps));
       for (std::size_t f = 0; f < nf; ++f) dstp[f][row + i] = s(srcp[f]);
     };
     int i = 0;

@@ -66,6 +66,20 @@ void check_finite(const Layout& L, const State& s) {
     if (!all_finite(f)) throw runtime_failure("state became non-finite at step {} (scalar)", s.step);
 }
 
+// `to` = `from`, copied by the team (fresh or resized buffers only where sizes differ).
+void parallel_copy(const Field& from, Field& to) {
+  if (to.size() != from.size()) to.resize(from.size());
+  const double* a = from.data();
+  double* b = to.data();
+#pragma omp parallel for schedule(static) if (from.size() >= kParallelNodes)
+  for (std::size_t n = 0; n < from.size(); ++n) b[n] = a[n];
+}
+
+// A buffer of n values whose contents do not matter (every value is written next).
+void ensure_size(Field& f, std::size_t n) {
+  if (f.size() != n) f.assign(n, 0.0);
+}
+
 }  // namespace
 
 Simulator::Simulator(const Scene& scene, const SimOptions& options)
@@ -194,13 +208,13 @@ void Simulator::add_forces(const State& st, double dt, Velocity& u) const {
   enforce_walls(L, u, scene_.no_slip);
 }
 
-std::vector<Field> Simulator::scalar_sources(const State& st, double dt) const {
-  std::vector<Field> src = st.s;
+void Simulator::scalar_sources(const State& st, double dt, std::vector<Field>& src) const {
+  src.resize(st.s.size());
+  for (std::size_t i = 0; i < st.s.size(); ++i) parallel_copy(st.s[i], src[i]);
   for (std::size_t i = 0; i < scene_.scalars.size(); ++i)
     for (const Source& s : scene_.scalars[i].sources)
       if (active_at(s, st.t) && s.rate != 0.0)
         for_region(layout_, s, [&](std::size_t n, double w) { src[i][n] += dt * s.rate * w; });
-  return src;
 }
 
 void Simulator::finish_scalars(const std::vector<Field>& before, std::vector<Field>& s, double dt) const {
@@ -209,8 +223,12 @@ void Simulator::finish_scalars(const std::vector<Field>& before, std::vector<Fie
     const ScalarSpec& sc = scene_.scalars[i];
     if (options_.mass_correct) {
       const double b = weighted_sum(L, before[i]), a = weighted_sum(L, s[i]);
-      if (a != 0.0 && b != 0.0)
-        for (double& v : s[i]) v *= b / a;
+      if (a != 0.0 && b != 0.0) {
+        const double f = b / a;  // the same product per value as before, on any team
+        double* v = s[i].data();
+#pragma omp parallel for schedule(static) if (L.count() >= kParallelNodes)
+        for (std::size_t n = 0; n < L.count(); ++n) v[n] *= f;
+      }
     }
     if (sc.kappa > 0.0) diffuser(sc.kappa * dt)->scalar(s[i]);
     if (sc.alpha > 0.0) {
@@ -235,13 +253,18 @@ StepStats Simulator::step(State& st, double dt) const {
   const Layout& L = layout_;
   StepStats stats;
   auto t0 = Clock::now();
-  Velocity w = st.u;
+  Velocity w = std::move(spare_u_[0]);
+  for (int c = 0; c < 3; ++c) parallel_copy(st.u[c], w[c]);
   add_forces(st, dt, w);
   stats.ms_force = ms_since(t0);
 
   t0 = Clock::now();
-  const std::vector<Field> sources = scalar_sources(st, dt);
-  std::vector<Field> s_next(sources.size(), L.zeros());
+  std::vector<Field> sources = std::move(spare_s_[0]);
+  scalar_sources(st, dt, sources);
+  // The advected scalars: advect() writes every node.
+  std::vector<Field> s_next = std::move(spare_s_[1]);
+  s_next.resize(sources.size());
+  for (Field& f : s_next) ensure_size(f, L.count());
   stats.ms_scalars = ms_since(t0);
 
   auto diffuse = [&](Velocity& v) {
@@ -259,11 +282,11 @@ StepStats Simulator::step(State& st, double dt) const {
   // every scalar: they all take their value at the same departure point.
   auto advect_self = [&](Velocity& v, bool with_scalars) {
     const auto t = Clock::now();
-    Velocity out;
+    Velocity out = std::move(spare_u_[1]);  // advect() writes every node
     std::vector<const Field*> in;
     std::vector<Field*> to;
     for (int c = 0; c < L.dim; ++c) {
-      out[c] = L.zeros();
+      ensure_size(out[c], L.count());
       in.push_back(&v[c]);
       to.push_back(&out[c]);
     }
@@ -274,6 +297,7 @@ StepStats Simulator::step(State& st, double dt) const {
       }
     advect(L, v, dt, scene_.substeps, in, to);
     for (int c = 0; c < L.dim; ++c) v[c].swap(out[c]);
+    spare_u_[1] = std::move(out);  // v's old buffers, for the next step's advection
     enforce_walls(L, v, scene_.no_slip);
     stats.ms_advect += ms_since(t);
   };
@@ -308,26 +332,35 @@ StepStats Simulator::step(State& st, double dt) const {
   t0 = Clock::now();
   finish_scalars(sources, s_next, dt);
   stats.ms_scalars += ms_since(t0);
-  st.u = std::move(w);
-  st.s = std::move(s_next);
+  std::swap(st.u, w);
+  std::swap(st.s, s_next);
+  spare_u_[0] = std::move(w);  // the old state's buffers, for the next step's copy
+  spare_s_[0] = std::move(sources);
+  spare_s_[1] = std::move(s_next);
   st.t += dt;
   st.step += 1;
   check_finite(L, st);
   return stats;
 }
 
-State blend(const State& x, const State& y, double a) {
-  State out;
-  auto mix = [a](const Field& p, const Field& q) {
-    Field r(p.size());
+void blend(const State& x, const State& y, double a, State& out) {
+  auto mix = [a](const Field& p, const Field& q, Field& r) {
+    if (r.size() != p.size()) r.resize(p.size());
+    const double *pp = p.data(), *qq = q.data();
+    double* rr = r.data();
 #pragma omp parallel for schedule(static) if (r.size() >= kParallelNodes)
-    for (std::size_t n = 0; n < r.size(); ++n) r[n] = (1.0 - a) * p[n] + a * q[n];
-    return r;
+    for (std::size_t n = 0; n < r.size(); ++n) rr[n] = (1.0 - a) * pp[n] + a * qq[n];
   };
-  for (int c = 0; c < 3; ++c) out.u[c] = mix(x.u[c], y.u[c]);
-  for (std::size_t i = 0; i < x.s.size(); ++i) out.s.push_back(mix(x.s[i], y.s[i]));
+  for (int c = 0; c < 3; ++c) mix(x.u[c], y.u[c], out.u[c]);
+  out.s.resize(x.s.size());
+  for (std::size_t i = 0; i < x.s.size(); ++i) mix(x.s[i], y.s[i], out.s[i]);
   out.t = (1.0 - a) * x.t + a * y.t;
   out.step = x.step;
+}
+
+State blend(const State& x, const State& y, double a) {
+  State out;
+  blend(x, y, a, out);
   return out;
 }
 

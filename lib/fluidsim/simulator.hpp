@@ -50,8 +50,8 @@ class Simulator {
 
  private:
   void add_forces(const State& state, double dt, Velocity& u) const;
-  // s + dt S (sources active at the state's time).
-  std::vector<Field> scalar_sources(const State& state, double dt) const;
+  // s + dt S (sources active at the state's time), into `src` (its buffers reused).
+  void scalar_sources(const State& state, double dt, std::vector<Field>& src) const;
   // After advection: optional mass correction, implicit diffusion, dissipation.
   void finish_scalars(const std::vector<Field>& before, std::vector<Field>& s, double dt) const;
   const Diffuser* diffuser(double coefficient) const;  // nu dt or kappa dt
@@ -61,10 +61,19 @@ class Simulator {
   Layout layout_;
   std::unique_ptr<Projector> projector_;
   mutable std::vector<std::unique_ptr<Diffuser>> diffusers_;  // cached per (coefficient)
+  // Buffers a step hands to the next (step() is not reentrant, like the diffuser cache):
+  // the copy of the velocity, the advected velocity, the scalars with their sources and
+  // the advected scalars. Fresh vectors were zero-filled or copied by one thread, a serial
+  // part of every step that would cap the speed-up on many cores (docs/fluidsim.md §6).
+  mutable Velocity spare_u_[2];
+  mutable std::vector<Field> spare_s_[2];
 };
 
 // Linear blend (1 - a) x + a y of every field: the interpolated frames of 2.7.
 State blend(const State& x, const State& y, double a);
+// The same into `out`, whose buffers are reused when their sizes fit (a frame loop keeps
+// one: a fresh State is zero-filled by one thread first).
+void blend(const State& x, const State& y, double a, State& out);
 
 // Maximum speed over the nodes (domain units per second).
 double max_speed(const Layout& layout, const Velocity& u);

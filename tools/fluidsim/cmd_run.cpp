@@ -399,6 +399,7 @@ void write_frames(const RunOptions& o, const Scene& scene, const Layout& layout,
   out.format = o.format;
   const int K = scene.interp;
   Progress progress("fluidsim", static_cast<std::uint64_t>(scene.frames), progress_wanted(o.progress));
+  State blended;  // the interpolated frames' buffers, reused from frame to frame
   for (long f = 0; f < scene.frames; ++f) {
     const long level = f / K;
     const int phase = static_cast<int>(f % K);
@@ -413,8 +414,7 @@ void write_frames(const RunOptions& o, const Scene& scene, const Layout& layout,
     }
     auto t0 = Clock::now();
     // Frame time f * frame_dt: the state itself, or (1 - a) X^n + a X^(n+1).
-    State blended;
-    if (phase != 0) blended = blend(a.state, b->state, static_cast<double>(phase) / K);
+    if (phase != 0) blend(a.state, b->state, static_cast<double>(phase) / K, blended);
     const State& frame_state = phase == 0 ? a.state : blended;
     const double ms_interp = phase == 0 ? 0.0 : ms_since(t0);
     t.total_ms[5] += ms_interp;
