@@ -41,14 +41,14 @@ Diffuser::~Diffuser() = default;
 
 // In place: the solve gathers its whole box before it writes, and the nodes outside the
 // box (the walls of an odd field) keep their values.
-void Diffuser::velocity(int component, Field& f) const { velocity_[component]->solve(layout_, f, f); }
+void Diffuser::velocity(int component, Field& f) const { velocity_[component]->solve(layout_, f, f, &buffers_); }
 
 void Diffuser::velocity(Velocity& u) const {
   std::vector<BoxJob> jobs;
   for (int c = 0; c < layout_.dim; ++c) jobs.push_back({velocity_[c].get(), &u[c], &u[c]});
-  BoxSolver::solve_all(layout_, jobs);
+  BoxSolver::solve_all(layout_, jobs, &buffers_);
 }
 
-void Diffuser::scalar(Field& f) const { scalar_->solve(layout_, f, f); }
+void Diffuser::scalar(Field& f) const { scalar_->solve(layout_, f, f, &buffers_); }
 
 }  // namespace fest::fluidsim

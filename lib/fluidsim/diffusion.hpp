@@ -30,6 +30,7 @@ class Diffuser {
   double coefficient_;
   std::array<std::unique_ptr<BoxSolver>, 3> velocity_;
   std::unique_ptr<BoxSolver> scalar_;
+  mutable BoxBuffers buffers_;  // the solves' work arrays, kept between steps
 };
 
 }  // namespace fest::fluidsim

@@ -177,7 +177,7 @@ int Projector::solve(const Field& rhs, Field& q) const {
   // badly at any count that does not divide 8.
   std::vector<BoxJob> jobs;
   for (const auto& c : classes_) jobs.push_back({c.get(), &rhs, &q});
-  BoxSolver::solve_all(layout_, jobs);
+  BoxSolver::solve_all(layout_, jobs, &buffers_);
   return 0;
 }
 

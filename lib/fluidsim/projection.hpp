@@ -77,6 +77,7 @@ class Projector {
   ProjectionOptions options_;
   int reach_ = 2;
   std::vector<std::unique_ptr<BoxSolver>> classes_;
+  mutable BoxBuffers buffers_;  // the classes' work arrays, kept between steps
   std::vector<std::unique_ptr<MultigridClass>> multigrid_;
   std::array<AxisNeighbours, 3> nb_;
 };

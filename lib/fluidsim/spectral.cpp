@@ -488,20 +488,30 @@ void BoxSolver::eliminate_z(double* X, double* cp, std::size_t p0, std::size_t p
     for (int k = 0; k < m2; ++k) X[k * P + p] = line[k];
 }
 
-void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x) const { solve_all(L, {BoxJob{this, &rhs, &x}}); }
+void BoxSolver::solve(const Layout& L, const Field& rhs, Field& x, BoxBuffers* buffers) const {
+  solve_all(L, {BoxJob{this, &rhs, &x}}, buffers);
+}
 
-void BoxSolver::solve_all(const Layout& L, const std::vector<BoxJob>& jobs) {
+void BoxSolver::solve_all(const Layout& L, const std::vector<BoxJob>& jobs, BoxBuffers* buffers) {
   const std::size_t nb = jobs.size();
   if (nb == 0) return;
   // Each box's ping-pong pair; every value is written before it is read (no zero fill;
-  // the first touch happens in the parallel gather).
-  std::vector<std::unique_ptr<double[]>> store(2 * nb);
+  // the first touch of fresh buffers happens in the parallel gather).
+  BoxBuffers local;
+  BoxBuffers& store = buffers ? *buffers : local;
+  if (store.data.size() < 2 * nb) {
+    store.data.resize(2 * nb);
+    store.size.resize(2 * nb, 0);
+  }
   std::size_t total = 0;
   int longest = 1;
   for (std::size_t b = 0; b < nb; ++b) {
     const BoxSolver& s = *jobs[b].solver;
-    store[2 * b].reset(new double[s.count_]);
-    store[2 * b + 1].reset(new double[s.count_]);
+    for (std::size_t k = 2 * b; k < 2 * b + 2; ++k)
+      if (store.size[k] < s.count_) {
+        store.data[k].reset(new double[s.count_]);
+        store.size[k] = s.count_;
+      }
     total += s.count_;
     for (int a = 0; a < 3; ++a) longest = std::max(longest, s.dim(a));
   }
@@ -518,8 +528,8 @@ void BoxSolver::solve_all(const Layout& L, const std::vector<BoxJob>& jobs) {
     // Every thread keeps its own view of the pairs and swaps it the same way.
     std::vector<double*> X(nb), Y(nb);
     for (std::size_t b = 0; b < nb; ++b) {
-      X[b] = store[2 * b].get();
-      Y[b] = store[2 * b + 1].get();
+      X[b] = store.data[2 * b].get();
+      Y[b] = store.data[2 * b + 1].get();
     }
     for (int st = 0; st < kStages; ++st) {
       const std::vector<int>& f = first[st];
