@@ -155,7 +155,12 @@ int Projector::iterate(const Field& rhs, Field& q) const {
 
 int Projector::solve(const Field& rhs, Field& q) const {
   if (options_.solver == PoissonSolver::gs || options_.solver == PoissonSolver::jacobi) return iterate(rhs, q);
-  q.assign(layout_.count(), 0.0);
+  // Zeros where no class writes (outside the boxes), filled by the team: q is kept from
+  // step to step, so this is the only pass over it before the solve.
+  if (q.size() != layout_.count()) q.resize(layout_.count());
+  double* qv = q.data();
+#pragma omp parallel for schedule(static) if (layout_.count() >= kParallelNodes)
+  for (std::size_t n = 0; n < layout_.count(); ++n) qv[n] = 0.0;
   if (!multigrid_.empty()) {
     int cycles = 0;
     std::exception_ptr failure;
@@ -184,7 +189,8 @@ int Projector::solve(const Field& rhs, Field& q) const {
 ProjectionStats Projector::project(Velocity& u) const {
   ProjectionStats st;
   enforce_walls(layout_, u);
-  Field div, q;
+  Field& div = div_;  // kept between calls: fresh ones are zero-filled by one thread
+  Field& q = q_;
   divergence(layout_, u, div);
   st.max_div_before = max_abs(div);
   st.iterations = solve(div, q);

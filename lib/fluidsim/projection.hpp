@@ -78,6 +78,7 @@ class Projector {
   int reach_ = 2;
   std::vector<std::unique_ptr<BoxSolver>> classes_;
   mutable BoxBuffers buffers_;  // the classes' work arrays, kept between steps
+  mutable Field div_, q_;       // project()'s divergence and potential, likewise
   std::vector<std::unique_ptr<MultigridClass>> multigrid_;
   std::array<AxisNeighbours, 3> nb_;
 };
