@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "sampling/sample_patterns.hpp"
 #include "sampling/srgb.hpp"
+#include "core/cpu_features.hpp"
 
 namespace fest::sampling {
 
@@ -45,7 +46,6 @@ template <typename T>
 __attribute__((target("avx2"))) void scale_bytes_avx2(const std::uint8_t* src, std::size_t n, float scale, float* dst) {
   scale_values(src, n, scale, dst);
 }
-const bool has_avx2 = __builtin_cpu_supports("avx2");
 
 // dst[i] = lut[src[i]] for whole groups of 8 codes (one gather each); returns how many
 // values it did. A table lookup either way: the values are identical.
@@ -66,7 +66,7 @@ template <typename T>
 void scale_row(const T* src, std::size_t n, float scale, float* dst) {
 #if defined(__x86_64__) && defined(__GNUC__)
   if constexpr (std::is_same_v<T, std::uint8_t>)
-    if (has_avx2) return scale_bytes_avx2(src, n, scale, dst);
+    if (cpu_has_avx2()) return scale_bytes_avx2(src, n, scale, dst);
 #endif
   scale_values(src, n, scale, dst);
 }
@@ -86,7 +86,7 @@ void decode_one_row(const cv::Mat& m, int y, const Encoding& enc, const float* l
     std::size_t i = 0;
 #if defined(__x86_64__) && defined(__GNUC__)
     if constexpr (std::is_same_v<T, std::uint8_t>)
-      if (has_avx2) i = lookup_bytes_avx2(src, n, lut, dst);
+      if (cpu_has_avx2()) i = lookup_bytes_avx2(src, n, lut, dst);
 #endif
     for (; i < n; ++i) dst[i] = lut[static_cast<std::size_t>(src[i])];
     return;

@@ -7,6 +7,7 @@
 #endif
 
 #include "sampling/separable_kernels.hpp"
+#include "core/cpu_features.hpp"
 
 namespace fest::sampling {
 
@@ -15,7 +16,6 @@ namespace {
 constexpr int lanes = 8;
 
 #if defined(__x86_64__) && defined(__GNUC__)
-const bool has_avx2 = __builtin_cpu_supports("avx2");
 
 // Lane k adds w[j][k] * src[start[k] + j] for j < count[k]; lanes past their count keep
 // their sum (a blend, not a multiply by 0, which would turn an infinite sample into NaN).
@@ -51,7 +51,7 @@ __attribute__((target("avx2"))) void grey_block(const float* src, const std::int
 
 GreyRowFilter::GreyRowFilter(const WeightTable& t) : t_(t) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (!has_avx2) return;
+  if (!cpu_has_avx2()) return;
   const int blocks = t.n_out / lanes;  // the last n_out % 8 outputs take the scalar loop
   start_.assign(static_cast<std::size_t>(blocks) * lanes, 0);
   count_.assign(static_cast<std::size_t>(blocks) * lanes, 0);

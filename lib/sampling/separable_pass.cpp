@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/cpu_features.hpp"
+
 namespace fest::sampling {
 
 namespace {
@@ -171,7 +173,6 @@ __attribute__((target("avx2"))) void accumulate_rows_avx2(float* dst, const floa
                                                           std::size_t taps, std::size_t begin, std::size_t end) {
   accumulate_rows_with<Lanes8>(dst, src, w, taps, begin, end);
 }
-const bool has_avx2 = __builtin_cpu_supports("avx2");
 #endif
 
 }  // namespace
@@ -179,7 +180,7 @@ const bool has_avx2 = __builtin_cpu_supports("avx2");
 void accumulate_rows(float* dst, const float* const* src, const float* w, std::size_t taps, std::size_t begin,
                      std::size_t end) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (has_avx2) return accumulate_rows_avx2(dst, src, w, taps, begin, end);
+  if (cpu_has_avx2()) return accumulate_rows_avx2(dst, src, w, taps, begin, end);
 #endif
   accumulate_rows_with<Lanes4>(dst, src, w, taps, begin, end);
 }
