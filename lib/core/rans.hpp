@@ -1,6 +1,6 @@
 #pragma once
 // Static rANS, the table-driven coder of a .vw "static" slab (docs/volwave.md §4, format
-// version 3). Range asymmetric numeral systems (Duda 2013) in the layout of ryg_rans:
+// version 3); in lib/core since lib/edgebreaker codes position residuals with it too. Range asymmetric numeral systems (Duda 2013) in the layout of ryg_rans:
 // a 32-bit state kept in [2^16, 2^32), renormalised by 16-bit words, probabilities in
 // units of 1/2^11. The symbol frequencies of every context are counted by the encoder,
 // stored with the slab (write_tables) and fixed for the whole slab, so decoding one
@@ -19,9 +19,9 @@
 #include <string_view>
 #include <vector>
 
-#include "wavelet/range_coder.hpp"
+#include "core/bit_stream.hpp"
 
-namespace fest::wavelet {
+namespace fest::range_coding {
 
 constexpr int kRansBits = 11;
 constexpr std::uint32_t kRansTotal = 1u << kRansBits;  // the frequencies of a table sum to this
@@ -133,4 +133,4 @@ class RansDecoder {
   std::uint32_t x_ = 0;
 };
 
-}  // namespace fest::wavelet
+}  // namespace fest::range_coding
