@@ -52,6 +52,8 @@ class BitReader {
   }
   // More bits were read than the stream holds.
   bool overrun() const noexcept { return consumed_ > available_; }
+  // Bits read so far (where a stream that continues after, say, its tables goes on).
+  std::uint64_t consumed() const noexcept { return consumed_; }
 
  private:
   void refill() {

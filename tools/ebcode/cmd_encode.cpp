@@ -108,6 +108,7 @@ int encode_command(const EncodeOptions& opt) {
   e.strict = opt.strict;
   e.verify = opt.verify;
   e.version = opt.ebm_version;
+  e.geom_version = opt.geom_version;
   EncodeStats stats;
   const SteadyClock::time_point t1 = SteadyClock::now();
   std::string bytes;
