@@ -21,6 +21,8 @@ namespace {
 
 constexpr unsigned char magic[8] = {0x89, 'E', 'B', 'M', 0x0D, 0x0A, 0x1A, 0x0A};
 constexpr std::size_t max_elements = static_cast<std::size_t>(std::numeric_limits<int>::max() / 16);
+// Below this many coded vertices the encoder codes GEOM both ways and compares (encode_ebm).
+constexpr std::size_t geom_compare_below = 4096;
 
 // ---- little-endian writing and bounded reading -------------------------------------
 
@@ -484,13 +486,18 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     for (int g = 0; g < g_count; ++g)
       if (!dummy[static_cast<std::size_t>(g)]) q[static_cast<std::size_t>(g)] = qv[static_cast<std::size_t>(input_of[static_cast<std::size_t>(g)])];
     const GeometryPlan plan = geometry_plan(dec, dummy, num);
-    // .ebm 2.x: GEOM version 3 (one rANS token per residual; docs/ebcode.md §5-§6) unless
-    // it is more than 1/32 larger than version 2: it decodes without a branch on the data,
-    // which is worth a little size (on the bench meshes it is 1 % smaller to 2.5 % larger:
-    // version 2 adapts, and on small meshes 3's stored tables weigh).
+    // .ebm 2.x: GEOM version 3 (one rANS token per residual; docs/ebcode.md §5-§6). It
+    // decodes without a branch on the data, which is worth a little size: on the bench
+    // meshes it is 1 % smaller to 2.5 % larger than version 2 (which adapts; 3's tables
+    // are stored). Below 4096 coded vertices the tables weigh more, so both are coded and
+    // 3 is kept unless it is more than 1/32 larger; above, coding both would cost a fifth
+    // of the encoding time (docs/ebcode.md §6), so 3 is written.
     std::optional<std::string> tokens;
     if (options.version == 2 && options.geom_version != 2) tokens = encode_position_tokens(q, plan, options.qp, options.predictor);
-    if (tokens && options.geom_version == 3) {
+    std::size_t coded = 0;
+    for (int g = 0; g < g_count; ++g)
+      coded += !plan.unusable[static_cast<std::size_t>(g)] && plan.same_as[static_cast<std::size_t>(g)] < 0 ? 1 : 0;
+    if (tokens && (options.geom_version == 3 || coded >= geom_compare_below)) {
       geom = std::move(*tokens);
       geom_tokens = true;
     } else {

@@ -141,8 +141,8 @@ TEST(EdgebreakerResidualTokens, WholeStreamsDecodeAsVersionTwo) {
     EXPECT_EQ(v21[8], 2);
     EXPECT_EQ(v21[9], 1);
     for (bool stitch : {true, false}) expect_same_mesh(decode_ebm(v21, stitch), decode_ebm(v20, stitch));
-    // Automatic: version 3 unless its GEOM is more than 1/32 larger (the containers
-    // differ only in the minor version and GEOM, whose length is a varint or the rest).
+    // Automatic on these small meshes (below 4096 coded vertices): version 3 unless its
+    // GEOM is more than 1/32 larger.
     const std::string chosen = encode_ebm(mesh, options_of(h, 0));
     const std::size_t geom2 = read_ebm_header(v20).section_bytes.at("GEOM"), geom3 = read_ebm_header(v21).section_bytes.at("GEOM");
     EXPECT_EQ(chosen, 32 * geom3 <= 33 * geom2 ? v21 : v20);
@@ -181,6 +181,13 @@ TEST(EdgebreakerResidualTokens, OptionsAndHeaderAreChecked) {
   o.geom_version = 3;
   const std::string v21 = encode_ebm(m, o);
   ASSERT_EQ(v21[9], 1);
+  // From 4096 coded vertices on, the default writes version 3 without coding version 2.
+  const auto big = fest::test::eb::subdivided_icosahedron(5);
+  MeshSoup b;
+  for (int i = 0; i < big.vertex_count; ++i) b.positions.push_back({std::sin(i * 1.0), std::cos(i * 0.7), std::sin(i * 0.3)});
+  b.triangles = big.triangles;
+  ASSERT_GE(b.positions.size(), 4096u);
+  EXPECT_EQ(encode_ebm(b, EncodeOptions{})[9], 1);
   // A 2.0 stream relabelled 2.1 (resealed) is refused or fails the streams' end check.
   o.geom_version = 2;
   std::string relabelled = encode_ebm(m, o);
