@@ -1,12 +1,13 @@
 #pragma once
 // Static rANS, the table-driven coder of a .vw "static" slab (docs/volwave.md §4, format
-// version 3); in lib/core since lib/edgebreaker codes position residuals with it too. Range asymmetric numeral systems (Duda 2013) in the layout of ryg_rans:
-// a 32-bit state kept in [2^16, 2^32), renormalised by 16-bit words, probabilities in
-// units of 1/2^11. The symbol frequencies of every context are counted by the encoder,
-// stored with the slab (write_tables) and fixed for the whole slab, so decoding one
-// symbol is one table lookup, a multiply and an add -- no adaptation, no division and no
-// branch on the symbol (the adaptive binary coder needs one decision per bit of a unary
-// exponent, and the control flow must follow each outcome).
+// version 3) and of .ebm 2.1's position residuals (docs/ebcode.md §5, GEOM version 3).
+// Range asymmetric numeral systems (Duda 2013) in the layout of ryg_rans: a 32-bit state
+// kept in [2^16, 2^32), renormalised by 16-bit words, probabilities in units of 1/2^11.
+// The symbol frequencies of every context are counted by the encoder, stored with the slab
+// (write_tables) and fixed for the whole slab, so decoding one symbol is one table lookup,
+// a multiply and an add -- no adaptation, no division and no branch on the symbol (the
+// adaptive binary coder needs one decision per bit of a unary exponent, and the control
+// flow must follow each outcome).
 //
 // The encoder codes symbols in reverse order (rANS is a stack); the decoder reads them
 // forward. Reading past the end yields zero words and done() is false, so a truncated or
