@@ -671,6 +671,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     for (Symbol s : trav.code.clers) ++stats->histogram[static_cast<std::size_t>(s)];
     stats->genus_sum = static_cast<int>(trav.code.events.size() / 2);
     stats->conn_mode = conn_mode_name(conn_mode);
+    stats->geom_version = !options.geometry ? 0 : options.version == 1 ? 1 : geom_tokens ? 3 : 2;
     stats->section_bytes = sizes;
     stats->total_bytes = out.size();
     stats->max_error = max_error;

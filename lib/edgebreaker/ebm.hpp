@@ -72,6 +72,7 @@ struct EncodeStats {
   std::array<std::size_t, 5> histogram{};  // C, L, E, R, S
   int genus_sum = 0;                       // sum over closed components (after hole filling)
   std::string conn_mode;
+  int geom_version = 0;  // the GEOM coding written (ebm(5)): 1, 2 or 3; 0 without positions
   std::map<std::string, std::size_t> section_bytes;
   std::size_t total_bytes = 0;
   double max_error = 0, rms_error = 0;  // per coordinate, after quantisation

@@ -4,9 +4,11 @@
 // quantisation range, zigzagged, its bit length coded with adaptive binary contexts and
 // the bits below the leading one as two adaptive and the rest bypass bits.
 // Two binarisations of the bit length (ebm(5), GEOM): .ebm 1.x's
-// 6-level tree (six decisions per coordinate), and .ebm 2.x's, which codes the length as
+// 6-level tree (six decisions per coordinate), and .ebm 2.0's, which codes the length as
 // a signed unary distance from the previous length on the axis (about three decisions)
-// with contexts that adapt fast while they are new.
+// with contexts that adapt fast while they are new. .ebm 2.1's GEOM (version 3) codes
+// the same residuals as static rANS tokens instead (residual_tokens.hpp): no decision at
+// all, so nothing for the decoder to branch on.
 
 #include <array>
 #include <cstdint>

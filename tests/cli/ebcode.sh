@@ -179,6 +179,8 @@ for gv in 2 3; do
   "$FEST_BIN/ebdecode" --to plya "$WORK/mh$gv.ebm" -o "$WORK/mh$gv.ply"
 done
 check "identical PLY" cmp "$WORK/mh2.ply" "$WORK/mh3.ply"
+run ebcode --geom-version 3 --qp 11 --report "$WORK/mh3.json" "$WORK/mh.ply" -o "$WORK/mh3b.ebm"
+check "report names GEOM version 3" test "$(jq .geom_version "$WORK/mh3.json")" = 3
 run ebdecode --info "$WORK/mh3.ebm"
 expect_json '.version' '"2.1"'
 run ebdecode --info "$WORK/mh2.ebm"

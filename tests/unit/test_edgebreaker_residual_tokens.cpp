@@ -163,6 +163,41 @@ TEST(EdgebreakerResidualTokens, CommittedStreamsDecode) {
   }
 }
 
+// Holes, copies, isolated vertices and all three attributes in one 2.1 stream: only GEOM
+// changes (ISOL and the attribute sections stay 2.0's), and every predictor decodes to the
+// same mesh as from 2.0.
+TEST(EdgebreakerResidualTokens, EverythingElseAsInVersionTwo) {
+  std::vector<Triangle> t = fest::test::eb::subdivided_icosahedron(2).triangles;
+  t.push_back({0, 1, 160});  // a fin: a hole, a dummy and copies
+  MeshSoup m;
+  for (int v = 0; v < 165; ++v) {  // 162 .. 164 isolated
+    const double a = 0.3 * v;
+    m.positions.push_back({std::sin(a), std::cos(0.7 * a), std::sin(0.2 * a) + 0.01 * v});
+    m.normals.push_back({std::cos(a), std::sin(a) * 0.6, std::sin(a) * 0.8});
+    m.colors.push_back({static_cast<std::uint8_t>(v * 5), static_cast<std::uint8_t>(255 - v), 7});
+    m.texcoords.push_back({0.01 * v, 2.0 - 0.02 * v});
+  }
+  m.triangles = t;
+  for (Predictor p : {Predictor::parallelogram, Predictor::multi, Predictor::delta, Predictor::none}) {
+    SCOPED_TRACE(static_cast<int>(p));
+    EncodeOptions o;
+    o.qp = 9;
+    o.predictor = p;
+    o.geom_version = 2;
+    const std::string v20 = encode_ebm(m, o);
+    o.geom_version = 3;
+    EncodeStats stats;
+    const std::string v21 = encode_ebm(m, o, &stats);
+    EXPECT_EQ(stats.geom_version, 3);
+    ASSERT_EQ(v21[9], 1);
+    const EbmHeader h20 = read_ebm_header(v20), h21 = read_ebm_header(v21);
+    EXPECT_EQ(h21.section_bytes.at("ISOL"), h20.section_bytes.at("ISOL"));
+    EXPECT_EQ(h21.section_bytes.at("NRML"), h20.section_bytes.at("NRML"));
+    EXPECT_EQ(h21.vertices, 165u);
+    for (bool stitch : {true, false}) expect_same_mesh(decode_ebm(v21, stitch), decode_ebm(v20, stitch));
+  }
+}
+
 TEST(EdgebreakerResidualTokens, OptionsAndHeaderAreChecked) {
   const auto t = fest::test::eb::subdivided_icosahedron(2);
   MeshSoup m;
