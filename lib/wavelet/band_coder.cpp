@@ -7,23 +7,10 @@
 
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
-#include "core/rans.hpp"
 #include "wavelet/range_coder.hpp"
+#include "wavelet/rans.hpp"
 
 namespace fest::wavelet {
-
-// The static rANS coder is lib/core's (core/rans.hpp).
-using range_coding::fill_decode_table;
-using range_coding::identity_decode_table;
-using range_coding::kRansAlphabet;
-using range_coding::kRansTotal;
-using range_coding::normalise_table;
-using range_coding::RansDecoder;
-using range_coding::RansEncoder;
-using range_coding::RansEntry;
-using range_coding::RansTable;
-using range_coding::read_tables;
-using range_coding::write_tables;
 
 std::vector<Slab> slabs_of(const Subband& band) {
   std::vector<Slab> out;

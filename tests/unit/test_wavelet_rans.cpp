@@ -1,4 +1,4 @@
-// Static rANS of the .vw static slabs (lib/core/rans.hpp, docs/volwave.md §4): the
+// Static rANS of the .vw static slabs (lib/wavelet/rans.hpp, docs/volwave.md §4): the
 // coder and its table description round-trip, damage is seen, and a slab coded either
 // way decodes to the same coefficients.
 #include <gtest/gtest.h>
@@ -8,23 +8,10 @@
 
 #include "core/error.hpp"
 #include "wavelet/band_coder.hpp"
-#include "core/rans.hpp"
+#include "wavelet/rans.hpp"
 
 using namespace fest;
 using namespace fest::wavelet;
-using fest::range_coding::BitReader;
-using fest::range_coding::BitWriter;
-using fest::range_coding::fill_decode_table;
-using fest::range_coding::identity_decode_table;
-using fest::range_coding::kRansAlphabet;
-using fest::range_coding::kRansTotal;
-using fest::range_coding::normalise_table;
-using fest::range_coding::RansDecoder;
-using fest::range_coding::RansEncoder;
-using fest::range_coding::RansEntry;
-using fest::range_coding::RansTable;
-using fest::range_coding::read_tables;
-using fest::range_coding::write_tables;
 
 namespace {
 
