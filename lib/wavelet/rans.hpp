@@ -1,8 +1,10 @@
 #pragma once
 // The static rANS coder of the .vw static slabs (docs/volwave.md §4) is lib/core's
-// (core/rans.hpp, shared with .ebm 2.1's positions): its names in fest::wavelet.
+// (core/rans.hpp, shared with .ebm 2.1's positions): its names in fest::wavelet, with
+// the bit stream its tables are written to (range_coder.hpp).
 
 #include "core/rans.hpp"
+#include "wavelet/range_coder.hpp"
 
 namespace fest::wavelet {
 
