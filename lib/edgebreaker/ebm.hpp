@@ -42,6 +42,10 @@ struct EncodeOptions {
   std::optional<std::array<float, 4>> box;  // min x, y, z and extent
   bool verify = true;
   int version = 2;  // .ebm major version written: 2 (compact container), or 1 for old readers
+  // GEOM version in a version 2 container (ebm(5)): 0 writes 3 (residual tokens, .ebm
+  // 2.1; quantised positions only), except on meshes below 4096 coded vertices where it is
+  // more than 1/32 larger than 2 (.ebm 2.0, as fest 0.2 wrote it); 2 or 3 forces one.
+  int geom_version = 0;
 };
 
 struct EbmHeader {
@@ -68,6 +72,7 @@ struct EncodeStats {
   std::array<std::size_t, 5> histogram{};  // C, L, E, R, S
   int genus_sum = 0;                       // sum over closed components (after hole filling)
   std::string conn_mode;
+  int geom_version = 0;  // the GEOM coding written (ebm(5)): 1, 2 or 3; 0 without positions
   std::map<std::string, std::size_t> section_bytes;
   std::size_t total_bytes = 0;
   double max_error = 0, rms_error = 0;  // per coordinate, after quantisation

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "edgebreaker/range_coder.hpp"
+#include "edgebreaker/residual_tokens.hpp"
 
 namespace fest::edgebreaker {
 namespace {
@@ -423,16 +424,81 @@ std::vector<QPoint> decode_with(std::string_view bytes, const GeometryPlan& plan
   return bits != 0 ? decode_loop<Coder, true>(bytes, plan, bits, predictor) : decode_loop<Coder, false>(bytes, plan, bits, predictor);
 }
 
+// GEOM version 3: the residuals of encode_with's loop, collected for the two passes of
+// the token coder.
+std::optional<std::string> encode_tokens(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor) {
+  const Domain domain(bits);
+  const Prediction predict(plan, domain, predictor);
+  const bool fast = predictor == Predictor::parallelogram;
+  std::vector<std::int64_t> residuals;
+  residuals.reserve(3 * q.size());
+  QPoint previous{domain.centre(), domain.centre(), domain.centre()};
+  for (std::size_t g = 0; g < q.size(); ++g) {
+    if (plan.unusable[g]) continue;
+    if (plan.same_as[g] < 0) {
+      const QPoint p = predict_at(predict, plan, domain, fast, q, g, previous);
+      for (std::size_t k = 0; k < 3; ++k) residuals.push_back(domain.wrap_residual(q[g][k] - p[k]));
+    }
+    previous = q[g];
+  }
+  return encode_residual_tokens(residuals, bits);
+}
+
+// decode_loop for GEOM version 3 (quantised only, so always wrapped): the token reader's
+// state is a local copy (ResidualTokenReader), and nothing in the loop branches on the
+// data but the predictor's choice of parallelogram.
+std::vector<QPoint> decode_tokens(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor) {
+  const Domain domain(bits);
+  const Prediction predict(plan, domain, predictor);
+  const bool fast = predictor == Predictor::parallelogram;
+  const ResidualTokenDecoder decoder(bytes, bits);
+  ResidualTokenReader in = decoder.reader();
+  const std::int64_t mask = domain.hi;
+  std::vector<QPoint> q(plan.unusable.size(), QPoint{0, 0, 0});
+  const QPoint centre{domain.centre(), domain.centre(), domain.centre()};
+  const QPoint* previous = &centre;  // the last decoded vertex (q does not move)
+  for (std::size_t g = 0; g < q.size(); ++g) {
+    if (plan.unusable[g]) continue;
+    const int same = plan.same_as[g];
+    if (same >= 0) {
+      if (static_cast<std::size_t>(same) >= g) throw bad_input("geometry: a stitch partner comes later");
+      q[g] = q[static_cast<std::size_t>(same)];
+    } else {
+      const QPoint p = predict_at(predict, plan, domain, fast, q, g, *previous);
+      const std::int64_t r0 = in.get(0), r1 = in.get(1), r2 = in.get(2);
+      q[g] = {(p[0] + r0) & mask, (p[1] + r1) & mask, (p[2] + r2) & mask};
+    }
+    previous = &q[g];
+  }
+  if (!in.complete()) throw bad_input("GEOM section: the residual streams do not end with the positions");
+  return q;
+}
+
 }  // namespace
+
+std::optional<std::string> encode_position_tokens(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits,
+                                                  Predictor predictor) {
+  if (bits < 1 || bits > 30) return std::nullopt;
+  return encode_tokens(q, plan, bits, predictor);
+}
 
 std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor,
                              ResidualCoding coding) {
+  if (coding == ResidualCoding::tokens_v3) {
+    auto tokens = encode_position_tokens(q, plan, bits, predictor);
+    if (!tokens) throw runtime_failure("internal: GEOM version 3 cannot code these positions");
+    return std::move(*tokens);
+  }
   return coding == ResidualCoding::tree_v1 ? encode_with<TreeCoder>(q, plan, bits, predictor)
                                            : encode_with<DistanceCoder>(q, plan, bits, predictor);
 }
 
 std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor,
                                      ResidualCoding coding) {
+  if (coding == ResidualCoding::tokens_v3) {
+    if (bits < 1 || bits > 30) throw bad_input("GEOM version 3 needs 1..30 quantisation bits, not {}", bits);
+    return decode_tokens(bytes, plan, bits, predictor);
+  }
   return coding == ResidualCoding::tree_v1 ? decode_with<TreeCoder>(bytes, plan, bits, predictor)
                                            : decode_with<DistanceCoder>(bytes, plan, bits, predictor);
 }

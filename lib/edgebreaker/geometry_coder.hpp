@@ -4,12 +4,15 @@
 // quantisation range, zigzagged, its bit length coded with adaptive binary contexts and
 // the bits below the leading one as two adaptive and the rest bypass bits.
 // Two binarisations of the bit length (ebm(5), GEOM): .ebm 1.x's
-// 6-level tree (six decisions per coordinate), and .ebm 2.x's, which codes the length as
+// 6-level tree (six decisions per coordinate), and .ebm 2.0's, which codes the length as
 // a signed unary distance from the previous length on the axis (about three decisions)
-// with contexts that adapt fast while they are new.
+// with contexts that adapt fast while they are new. .ebm 2.1's GEOM (version 3) codes
+// the same residuals as static rANS tokens instead (residual_tokens.hpp): no decision at
+// all, so nothing for the decoder to branch on.
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,8 +23,10 @@ enum class Predictor : std::uint8_t { parallelogram = 0, multi = 1, delta = 2, n
 
 using QPoint = std::array<std::int64_t, 3>;
 
-// Which residual binarisation a stream uses: the .ebm major version's.
-enum class ResidualCoding : std::uint8_t { tree_v1 = 1, distance_v2 = 2 };
+// Which residual coding a stream uses (GEOM versions, ebm(5)): .ebm 1.x's tree, 2.0's
+// distance (ISOL and the attributes of every 2.x), and 2.1's GEOM residual tokens
+// (residual_tokens.hpp; positions only, qp 1..30).
+enum class ResidualCoding : std::uint8_t { tree_v1 = 1, distance_v2 = 2, tokens_v3 = 3 };
 
 // What the geometry coder needs of the connectivity, per G vertex.
 struct GeometryPlan {
@@ -39,7 +44,12 @@ struct GeometryPlan {
 std::string encode_positions(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits, Predictor predictor,
                              ResidualCoding coding = ResidualCoding::distance_v2);
 
-// Inverse: returns q per G vertex (zeros for unusable ones). Throws bad_input for a
+// GEOM version 3 (residual_tokens.hpp): the same residuals as tokens with stored tables.
+// Nothing when `bits` is 0 or a table cannot be described; the caller keeps version 2.
+std::optional<std::string> encode_position_tokens(const std::vector<QPoint>& q, const GeometryPlan& plan, int bits,
+                                                  Predictor predictor);
+
+// Inverse (any coding): returns q per G vertex (zeros for unusable ones). Throws bad_input for a
 // truncated stream.
 std::vector<QPoint> decode_positions(std::string_view bytes, const GeometryPlan& plan, int bits, Predictor predictor,
                                      ResidualCoding coding = ResidualCoding::distance_v2);

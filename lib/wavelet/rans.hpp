@@ -1,136 +1,25 @@
 #pragma once
-// Static rANS, the table-driven coder of a .vw "static" slab (docs/volwave.md §4, format
-// version 3). Range asymmetric numeral systems (Duda 2013) in the layout of ryg_rans:
-// a 32-bit state kept in [2^16, 2^32), renormalised by 16-bit words, probabilities in
-// units of 1/2^11. The symbol frequencies of every context are counted by the encoder,
-// stored with the slab (write_tables) and fixed for the whole slab, so decoding one
-// symbol is one table lookup, a multiply and an add -- no adaptation, no division and no
-// branch on the symbol (the adaptive binary coder needs one decision per bit of a unary
-// exponent, and the control flow must follow each outcome).
-//
-// The encoder codes symbols in reverse order (rANS is a stack); the decoder reads them
-// forward. Reading past the end yields zero words and done() is false, so a truncated or
-// corrupt stream never reads outside its bytes; done() also checks that the decoder
-// ended in the encoder's initial state, which a damaged stream almost never does.
+// The static rANS coder of the .vw static slabs (docs/volwave.md §4) is lib/core's
+// (core/rans.hpp, shared with .ebm 2.1's positions): its names in fest::wavelet, with
+// the bit stream its tables are written to (range_coder.hpp).
 
-#include <array>
-#include <cstdint>
-#include <string>
-#include <string_view>
-#include <vector>
-
+#include "core/rans.hpp"
 #include "wavelet/range_coder.hpp"
 
 namespace fest::wavelet {
 
-constexpr int kRansBits = 11;
-constexpr std::uint32_t kRansTotal = 1u << kRansBits;  // the frequencies of a table sum to this
-constexpr std::uint32_t kRansLow = 1u << 16;           // the state's lower bound
-constexpr int kRansAlphabet = 128;                     // symbols 0..127
-
-// One context's frequencies: freq[s] >= 1 for every symbol the slab codes in it, the sum
-// kRansTotal; cum[s] = freq[0] + ... + freq[s - 1].
-struct RansTable {
-  std::array<std::uint16_t, kRansAlphabet> freq{};
-  std::array<std::uint16_t, kRansAlphabet> cum{};
-  int implied = 0;  // the symbol whose frequency is kRansTotal minus the others'
-};
-
-// Counts -> a RansTable whose frequencies can be written by write_tables (at most four
-// significant bits each, except the largest, which the reader infers from the sum).
-// Returns false when no such table exists (the caller then codes the slab adaptively).
-bool normalise_table(const std::uint32_t* counts, int alphabet, RansTable& out);
-
-// The tables of a slab, written as bits: per table the used symbols (gaps, Elias gamma),
-// which one has the implied frequency, and the others' frequencies (bit length in four
-// bits, then up to three bits below the leading one).
-void write_tables(BitWriter& w, const std::vector<RansTable>& tables, const std::vector<int>& alphabets);
-// Reads them back; false for a description no encoder writes (a symbol past the
-// alphabet, frequencies that do not sum to kRansTotal, reading past the end).
-bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector<int>& alphabets);
-
-class RansEncoder {
- public:
-  // Pushes one symbol with the interval [cum, cum + freq) of kRansTotal (freq >= 1).
-  void put(std::uint32_t cum, std::uint32_t freq) {
-    const std::uint64_t x_max = (std::uint64_t{kRansLow >> kRansBits} << 16) * freq;
-    if (x_ >= x_max) {
-      words_.push_back(static_cast<std::uint16_t>(x_));
-      x_ >>= 16;
-    }
-    x_ = ((x_ / freq) << kRansBits) + (x_ % freq) + cum;
-  }
-  // The final state (4 bytes, little endian), then the words in the order the decoder
-  // reads them.
-  std::string finish() const {
-    std::string out;
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((x_ >> (8 * i)) & 0xFF));
-    for (auto it = words_.rbegin(); it != words_.rend(); ++it) {
-      out.push_back(static_cast<char>(*it & 0xFF));
-      out.push_back(static_cast<char>(*it >> 8));
-    }
-    return out;
-  }
-
- private:
-  std::uint32_t x_ = kRansLow;
-  std::vector<std::uint16_t> words_;
-};
-
-// A decoding table: kRansTotal entries per context, entry = symbol | freq << 7 |
-// (slot - cum) << 19, so one load gives all a step needs.
-using RansEntry = std::uint32_t;
-void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out);
-// The table of a context that has no symbols: symbol 0 with frequency kRansTotal, a step
-// that leaves the state as it is (a damaged stream that reaches such a context decodes
-// zeros and fails the final check instead of reading an unfilled table).
-const RansEntry* identity_decode_table();
-
-class RansDecoder {
- public:
-  // Keeps a copy of the stream with two zero bytes after it, so the renormalisation can
-  // read a word without a test: past the end it reads those zeros.
-  explicit RansDecoder(std::string_view bytes) : buf_(bytes), n_(bytes.size()) {
-    buf_.append(2, '\0');
-    p_ = reinterpret_cast<const std::uint8_t*>(buf_.data());
-    for (std::size_t i = 0; i < 4 && i < n_; ++i) x_ |= static_cast<std::uint32_t>(p_[i]) << (8 * i);
-    pos_ = 4;
-  }
-  __attribute__((always_inline)) int get(const RansEntry* table) {
-    const RansEntry e = table[x_ & (kRansTotal - 1)];
-    x_ = ((e >> 7) & 0xFFF) * (x_ >> kRansBits) + (e >> 19);
-    renormalise();
-    return static_cast<int>(e & 0x7F);
-  }
-  // A binary symbol whose 0 has frequency f0 (0..kRansTotal), without a table: 1 when
-  // the slot lies at or above f0. f0 = kRansTotal (or 0) leaves the state as it is.
-  __attribute__((always_inline)) int get_bit(std::uint32_t f0) {
-    const std::uint32_t slot = x_ & (kRansTotal - 1);
-    const bool one = slot >= f0;
-    const std::uint32_t freq = one ? kRansTotal - f0 : f0;
-    const std::uint32_t bias = one ? slot - f0 : slot;
-    x_ = freq * (x_ >> kRansBits) + bias;
-    renormalise();
-    return static_cast<int>(one);
-  }
-  // Every word read, none missing, and the state back where the encoder started.
-  bool done() const noexcept { return pos_ == n_ && x_ == kRansLow; }
-
- private:
-  // Without a branch on the data: at most one word (freq <= 2^11 keeps the state >= 2^5
-  // before it, so one 16-bit shift restores >= 2^16).
-  __attribute__((always_inline)) void renormalise() {
-    const std::size_t at = pos_ < n_ ? pos_ : n_;
-    const std::uint32_t w = static_cast<std::uint32_t>(p_[at] | (p_[at + 1] << 8));
-    const bool need = x_ < kRansLow;
-    x_ = need ? (x_ << 16) | w : x_;
-    pos_ += need ? 2 : 0;
-  }
-  std::string buf_;
-  const std::uint8_t* p_ = nullptr;
-  std::size_t n_;
-  std::size_t pos_ = 0;
-  std::uint32_t x_ = 0;
-};
+using range_coding::fill_decode_table;
+using range_coding::identity_decode_table;
+using range_coding::kRansAlphabet;
+using range_coding::kRansBits;
+using range_coding::kRansLow;
+using range_coding::kRansTotal;
+using range_coding::normalise_table;
+using range_coding::RansDecoder;
+using range_coding::RansEncoder;
+using range_coding::RansEntry;
+using range_coding::RansTable;
+using range_coding::read_tables;
+using range_coding::write_tables;
 
 }  // namespace fest::wavelet

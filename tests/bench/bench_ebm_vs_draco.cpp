@@ -210,7 +210,7 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
   // a loaded machine); M tri/s from the CPU time.
   std::printf(
       "{\"bench\":\"ebm_vs_draco\",\"mesh\":\"%s\",\"vertices\":%.0f,\"triangles\":%.0f,\"qp\":%d,\"runs\":%d,"
-      "\"ebm\":{\"bytes\":%zu,\"conn_mode\":\"%s\",\"conn_bpv\":%.4f,\"total_bpv\":%.3f,\"encode_ms\":%.2f,"
+      "\"ebm\":{\"bytes\":%zu,\"geom_version\":%d,\"conn_mode\":\"%s\",\"conn_bpv\":%.4f,\"total_bpv\":%.3f,\"encode_ms\":%.2f,"
       "\"decode_ms\":%.2f,\"decode_verified_ms\":%.2f,\"encode_cpu_ms\":%.2f,\"decode_cpu_ms\":%.2f,"
       "\"decode_verified_cpu_ms\":%.2f,\"encode_mtri_s\":%.3f,\"decode_mtri_s\":%.3f,\"decode_verified_mtri_s\":%.3f},"
       "\"draco_cl7\":{\"bytes\":%zu,\"conn_bpv_flat\":%.4f,\"total_bpv\":%.3f,\"encode_ms\":%.2f,\"decode_ms\":%.2f,"
@@ -220,7 +220,7 @@ void bench(const std::string& name, const MeshSoup& soup, int qp, int runs) {
       "\"ebm_multi_bytes\":%zu,\"ebm_multi_over_draco_cl10\":%.4f,\"draco_encoder_cl7_bytes\":%ld,\"draco_conn_bpv_spec\":%.3f,"
       "\"ebm_over_draco_cl7_bytes\":%.4f,\"conn_vs_draco_cl7\":%.4f,\"encode_cpu_draco_cl7_over_ebm\":%.3f,"
       "\"decode_cpu_draco_cl7_over_ebm\":%.3f,\"decode_verified_cpu_draco_cl7_over_ebm\":%.3f,\"peak_rss_kb\":%ld%s}\n",
-      name.c_str(), v, t, qp, runs, ebm.size(), stats.conn_mode.c_str(), 8.0 * static_cast<double>(conn) / v,
+      name.c_str(), v, t, qp, runs, ebm.size(), ebm[9] == 1 ? 3 : 2, stats.conn_mode.c_str(), 8.0 * static_cast<double>(conn) / v,
       8.0 * static_cast<double>(ebm.size()) / v, enc.wall_ms, dec.wall_ms, dec_verified.wall_ms, enc.cpu_ms, dec.cpu_ms,
       dec_verified.cpu_ms, t / enc.cpu_ms / 1000.0, t / dec.cpu_ms / 1000.0, t / dec_verified.cpu_ms / 1000.0, d7.size(),
       8.0 * static_cast<double>(d7_conn) / v, 8.0 * static_cast<double>(d7.size()) / v, d7_enc.wall_ms, d7_dec.wall_ms,

@@ -171,6 +171,31 @@ check "same bytes as tests/data/ebm/eight_genus2.ebm" cmp "$WORK/e1.ebm" "$FEST_
 run ebcode --ebm-version 3 "$WORK/tet.off"
 expect_clean_failure 2 ebcode
 
+case_ "GEOM version 3 (.ebm 2.1) decodes to the same mesh as GEOM version 2 (.ebm 2.0)"
+"$FEST_BIN/ebdecode" --to plya "$FEST_FIXTURES/ebm/mushroom_hole_v2.ebm" -o "$WORK/mh.ply"
+for gv in 2 3; do
+  run ebcode --geom-version $gv --qp 11 "$WORK/mh.ply" -o "$WORK/mh$gv.ebm"
+  expect_status 0
+  "$FEST_BIN/ebdecode" --to plya "$WORK/mh$gv.ebm" -o "$WORK/mh$gv.ply"
+done
+check "identical PLY" cmp "$WORK/mh2.ply" "$WORK/mh3.ply"
+run ebcode --geom-version 3 --qp 11 --report "$WORK/mh3.json" "$WORK/mh.ply" -o "$WORK/mh3b.ebm"
+check "report names GEOM version 3" test "$(jq .geom_version "$WORK/mh3.json")" = 3
+run ebdecode --info "$WORK/mh3.ebm"
+expect_json '.version' '"2.1"'
+run ebdecode --info "$WORK/mh2.ebm"
+expect_json '.version' '"2.0"'
+run ebcode --geom-version 3 --qp 0 "$WORK/tet.off"
+expect_clean_failure 2 ebcode
+
+# Golden: the SHA-256 of the PLY that ebdecode wrote for these 2.0 streams before GEOM
+# version 3 existed (main at df93ec1); the 2.0 decoder must not change.
+case_ "committed 2.0 streams decode to the same PLY as before 2.1"
+for pair in eight_genus2_v2:8b78edb57fef64ffedc36f5620138bf0a5f5ae9e178fc1ef12dcd1cf14b9a914 mushroom_hole_v2:c06e49b53b88513bf5e415fa392bed81d443e1207634555de87d2afe06f573e4 eight_multi_v2:8b78edb57fef64ffedc36f5620138bf0a5f5ae9e178fc1ef12dcd1cf14b9a914; do
+  "$FEST_BIN/ebdecode" --to plya "$FEST_FIXTURES/ebm/${pair%%:*}.ebm" -o "$WORK/old.ply"
+  check "${pair%%:*}" test "$(sha256sum <"$WORK/old.ply" | cut -c1-64)" = "${pair##*:}"
+done
+
 # --- bad input ------------------------------------------------------------------------
 "$FEST_BIN/ebcode" "$WORK/moebius.off" -o "$WORK/good.ebm"
 size=$(wc -c <"$WORK/good.ebm")

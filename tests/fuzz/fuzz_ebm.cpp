@@ -1,8 +1,9 @@
 // Feeds bytes to the .ebm decoder. The CRC would stop almost every mutation at the door,
 // so the target reseals the stream (recomputes its CRC) first and the fuzzer explores the
 // header, the section parser and the range-coded sections behind it; the corpus should
-// start from real .ebm files (ebcode output; tests/data/ebm holds 1.0 streams and their
-// 2.0 twins). A clean fest::Error is the only allowed failure; a stream that decodes must
+// start from real .ebm files (ebcode output; tests/data/ebm holds 1.0 streams, their
+// 2.0 twins, and 2.1 streams whose GEOM section is version 3: rANS tables, a rANS stream
+// and raw bits, residual_tokens.hpp). A clean fest::Error is the only allowed failure; a stream that decodes must
 // decode again to the same mesh (determinism), and its header must report the counts of
 // that mesh (2.0 does not store them: read_ebm_header decodes; 1.0 checks them).
 #include <cstddef>

@@ -323,7 +323,7 @@ TEST(EdgebreakerEbm, CompactHeaderFieldsAreChecked) {
     reseal_ebm(bad);
     return bad;
   };
-  expect_bad_input([&] { decode_ebm(with(9, 1)); }, "version 2.1");
+  expect_bad_input([&] { decode_ebm(with(9, 2)); }, "version 2.2");
   expect_bad_input([&] { decode_ebm(with(10, static_cast<char>(0x83))); }, "reserved flag");
   expect_bad_input([&] { decode_ebm(with(11, 0x03)); }, "modes byte");
   expect_bad_input([&] { decode_ebm(with(11, 0x42)); }, "modes byte");

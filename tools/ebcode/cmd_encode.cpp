@@ -41,6 +41,7 @@ nlohmann::json report_json(const EncodeOptions& opt, const std::string& input, c
   r["conn_mode"] = stats.conn_mode;
   r["model"] = stats.conn_mode == "static" ? opt.model.name : "";
   r["qp"] = opt.qp;
+  r["geom_version"] = stats.geom_version;
   nlohmann::json sections = nlohmann::json::object();
   for (const auto& [tag, n] : stats.section_bytes) sections[tag] = {{"bytes", n}, {"bits", 8 * n}};
   r["sections"] = sections;
@@ -108,6 +109,7 @@ int encode_command(const EncodeOptions& opt) {
   e.strict = opt.strict;
   e.verify = opt.verify;
   e.version = opt.ebm_version;
+  e.geom_version = opt.geom_version;
   EncodeStats stats;
   const SteadyClock::time_point t1 = SteadyClock::now();
   std::string bytes;

@@ -35,6 +35,7 @@ struct EncodeOptions {
   bool symbols = false;    // write the CLERS string instead of a stream
   bool verify = true;
   int ebm_version = 2;
+  int geom_version = 0;  // EncodeOptions::geom_version
   bool quiet = false;
 };
 

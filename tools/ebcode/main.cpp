@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-verify", no_verify, "Skip re-encoding the decoded connectivity (the cheap check stays)");
   app.add_option("--ebm-version", opt.ebm_version, "Container version: 2 (compact, the default) or 1 (for readers before fest 0.2)")
       ->default_val(2)->check(fest::cli::range(1, 2));
+  app.add_option("--geom-version", opt.geom_version,
+                 "Position coding in a version 2 container: 0 the smaller of 3 (.ebm 2.1) and 2 (.ebm 2.0, for readers before 2.1), or 2 or 3")
+      ->default_val(0)->check(fest::cli::range(0, 3));
 
   ModelOptions mopt;
   std::string mmodel, mto = "tsv", lmax = "-", pmax = "-", smax = "-";

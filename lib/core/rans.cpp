@@ -1,9 +1,9 @@
-#include "wavelet/rans.hpp"
+#include "core/rans.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace fest::wavelet {
+namespace fest::range_coding {
 
 namespace {
 
@@ -161,4 +161,4 @@ const RansEntry* identity_decode_table() {
   return table.data();
 }
 
-}  // namespace fest::wavelet
+}  // namespace fest::range_coding
