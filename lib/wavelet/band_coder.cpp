@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
+#include "wavelet/packed_coder.hpp"
 #include "wavelet/range_coder.hpp"
 #include "wavelet/rans.hpp"
 
@@ -180,8 +181,9 @@ const std::vector<int>& table_alphabets() {
   return a;
 }
 
-// Slab modes (the first byte of a slab's bytes, format version 3).
-constexpr char kAdaptiveSlab = 0, kStaticSlab = 1;
+// Slab modes (the first byte of a slab's bytes; format version 3: 0 and 1, version 4
+// adds 2).
+constexpr char kAdaptiveSlab = 0, kStaticSlab = 1, kPackedSlab = 2;
 
 // The static coding of a slab: the same walk and contexts as the adaptive one; the
 // symbols go to two rANS streams (T: row flags and tokens, the next context waits for
@@ -279,15 +281,31 @@ std::string encode_adaptive(const std::int64_t* data, const Dims& dims, const Su
 
 }  // namespace
 
-// Both codings, the smaller kept (the static one on a tie: it decodes faster).
+// Both context codings, the smaller kept (the static one on a tie: it decodes faster);
+// then the packed coding instead when it costs at most packed_slack more (it decodes
+// several times faster than either, docs/volwave.md §4 "Packed slabs").
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
-                        const Slab& slab, SlabCoding coding) {
+                        const Slab& slab, SlabCoding coding, double packed_slack) {
+  auto packed = [&] {
+    std::string p = encode_packed_slab(data, dims, band, slab);
+    if (!p.empty()) p.insert(p.begin(), kPackedSlab);
+    return p;
+  };
+  if (coding == SlabCoding::packed) {
+    std::string p = packed();
+    if (!p.empty()) return p;
+    coding = SlabCoding::smaller;
+  }
   std::string fixed;
   if (coding != SlabCoding::adaptive) fixed = encode_static(data, dims, band, parent, slab);
   if (coding == SlabCoding::fixed && !fixed.empty()) return fixed;
-  std::string adaptive = encode_adaptive(data, dims, band, parent, slab);
-  if (!fixed.empty() && fixed.size() <= adaptive.size()) return fixed;
-  return adaptive;
+  std::string best = encode_adaptive(data, dims, band, parent, slab);
+  if (!fixed.empty() && fixed.size() <= best.size()) best = std::move(fixed);
+  if (coding == SlabCoding::smaller && packed_slack >= 0 && band.orientation != 0) {
+    std::string p = packed();
+    if (!p.empty() && static_cast<double>(p.size()) <= (1.0 + packed_slack) * static_cast<double>(best.size())) return p;
+  }
+  return best;
 }
 
 namespace {
@@ -594,11 +612,15 @@ SlabStreams split_streams(std::string_view bytes, const Subband& band, const Sla
 }  // namespace
 
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows) {
+                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows,
+                 bool packed_allowed) {
   const int limit = std::min(max_exponent, kMaxExponent);
   RowList local;
   RowList& rows = nonzero_rows ? *nonzero_rows : local;
-  if (bytes.empty() || (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab)) corrupt(band, slab);
+  if (bytes.empty()) corrupt(band, slab);
+  if (bytes[0] == kPackedSlab && packed_allowed)
+    return decode_packed_slab(bytes.substr(1), data, dims, band, slab, limit, rows);
+  if (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab) corrupt(band, slab);
   if (bytes[0] == kStaticSlab) return decode_static(bytes.substr(1), data, dims, band, parent, slab, limit, rows);
   const SlabStreams streams = split_streams(bytes.substr(1), band, slab);
   auto models = std::make_unique<Models>();

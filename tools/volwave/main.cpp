@@ -36,6 +36,14 @@ int main(int argc, char** argv) {
           throw fest::usage_error("--wavelet: unknown wavelet {} (haar, cdf53, cdf97)", w);
       },
       "haar, cdf53 (default) or cdf97 (--rmse only)");
+  e->add_option_function<std::string>(
+      "--favour",
+      [&enc](const std::string& f) {
+        if (f == "speed") enc.favour = fest::wavelet::Favour::speed;
+        else if (f == "size") enc.favour = fest::wavelet::Favour::size;
+        else throw fest::usage_error("--favour: speed or size, not {}", f);
+      },
+      "speed (default: packed slabs where they cost at most 30 % more) or size (the smallest file)");
   e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(fest::cli::range(0, 16));
   e->add_option("--roi-box", enc.roi_box, "Region x0,y0,z0,x1,y1,z1 (voxel indices, inclusive) coded with --roi-error")
       ->delimiter(',')->expected(6)->allow_extra_args(false)->check(fest::cli::range(0, 2147483647));
