@@ -65,20 +65,29 @@ constexpr std::array<std::uint64_t, 256> make_prefix() {
 }
 constexpr std::array<std::uint64_t, 256> kSignPrefix = make_prefix();
 
-// Token contexts: s = 2 k_left + k_up + k_back (0..252) -> one of kPackContexts classes,
-// exact up to 11 (sparse data: which neighbours are zero or 1 bit wide), then in steps of
-// two (dense data: the width drifts slowly).
+// Token contexts: s = 2 k_left + k_up + k_back (0..252) -> one of kPackContexts classes
+// by one of three maps, which the slab names in its first byte (the encoder tries each
+// and keeps the smallest slab): fine -- exact up to 11 (sparse data: which neighbours
+// are zero or 1 bit wide), then in steps of two (dense data: the width drifts slowly),
+// 24 classes; coarse -- 0, 1-2, 3-5, 6-11, 12-23, 24+, 6 classes; and one class. Small
+// slabs cannot pay for 24 tables (their description, and the decoder's filling of a
+// 2048-entry table per class: the plume's 45 packed slabs spent 2.8 M instructions
+// filling tables with the fine map alone).
 constexpr int kPackContexts = 24;
 constexpr int kWidthAlphabet = 64;  // widths 0..63
-constexpr std::array<std::uint8_t, 256> make_contexts() {
-  std::array<std::uint8_t, 256> t{};
+constexpr int kContextMaps = 3;
+constexpr std::array<std::array<std::uint8_t, 256>, kContextMaps> make_contexts() {
+  std::array<std::array<std::uint8_t, 256>, kContextMaps> t{};
   for (int s = 0; s < 256; ++s) {
-    const int c = s < 12 ? s : 12 + (s - 12) / 2;
-    t[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(c < kPackContexts - 1 ? c : kPackContexts - 1);
+    const int fine = s < 12 ? s : 12 + (s - 12) / 2;
+    t[0][static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(fine < kPackContexts - 1 ? fine : kPackContexts - 1);
+    t[1][static_cast<std::size_t>(s)] =
+        static_cast<std::uint8_t>(s == 0 ? 0 : s <= 2 ? 1 : s <= 5 ? 2 : s <= 11 ? 3 : s <= 23 ? 4 : 5);
+    t[2][static_cast<std::size_t>(s)] = 0;
   }
   return t;
 }
-constexpr std::array<std::uint8_t, 256> kContextOf = make_contexts();
+constexpr std::array<std::array<std::uint8_t, 256>, kContextMaps> kContextOf = make_contexts();
 
 constexpr int kRowTable0 = kPackContexts;  // row flags per (y-1, z-1 row zero)
 constexpr int kTables = kPackContexts + 4;
@@ -210,8 +219,10 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
   const std::size_t planes = slab.z1 - slab.z0;
   std::vector<std::uint8_t> widths(planes * h * groups, 0), zero_rows(planes * h, 0);
   const std::vector<std::uint8_t> no_widths(groups, 0);
+  // A token's event holds its s (the map picks the table later), a row flag's its table.
   struct Event {
-    std::uint8_t table, symbol;
+    std::uint8_t s, symbol;
+    bool row;
   };
   std::vector<Event> events;
   BitWriter bits;
@@ -222,7 +233,7 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
       const bool all_zero = std::all_of(row, row + w, [](std::int64_t v) { return v == 0; });
       const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
       const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
-      events.push_back({static_cast<std::uint8_t>(kRowTable0 + up_zero + 2 * back_zero), static_cast<std::uint8_t>(all_zero)});
+      events.push_back({static_cast<std::uint8_t>(kRowTable0 + up_zero + 2 * back_zero), static_cast<std::uint8_t>(all_zero), true});
       if (all_zero) {
         zero_rows[r] = 1;
         continue;
@@ -235,35 +246,43 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
         const int n = static_cast<int>(std::min<std::size_t>(kPackGroup, w - g * kPackGroup));
         const int k = pack_width(row + g * kPackGroup, n);
         const int s = 2 * left + up[g] + back[g];
-        events.push_back({kContextOf[static_cast<std::size_t>(std::min(s, 255))], static_cast<std::uint8_t>(k)});
+        events.push_back({static_cast<std::uint8_t>(s), static_cast<std::uint8_t>(k), false});
         mine[g] = static_cast<std::uint8_t>(k);
         left = k;
         pack_group(bits, row + g * kPackGroup, n, k);
       }
     }
-  std::vector<std::array<std::uint32_t, kRansAlphabet>> counts(kTables);
-  for (auto& c : counts) c.fill(0);
-  for (const auto& e : events) ++counts[e.table][e.symbol];
-  std::vector<RansTable> tables(kTables);
-  for (int t = 0; t < kTables; ++t)
-    if (!normalise_table(counts[static_cast<std::size_t>(t)].data(), alphabets()[static_cast<std::size_t>(t)],
-                         tables[static_cast<std::size_t>(t)]))
-      return {};
-  BitWriter desc;
-  write_tables(desc, tables, alphabets());
-  RansEncoder enc;
-  for (auto it = events.rbegin(); it != events.rend(); ++it) {
-    const RansTable& tab = tables[it->table];
-    enc.put(tab.cum[it->symbol], tab.freq[it->symbol]);
+  const std::string packed = bits.finish();
+  std::string best;
+  for (int map = 0; map < kContextMaps; ++map) {
+    const auto& ctx = kContextOf[static_cast<std::size_t>(map)];
+    auto table_of = [&](const Event& e) { return e.row ? e.s : ctx[e.s]; };
+    std::vector<std::array<std::uint32_t, kRansAlphabet>> counts(kTables);
+    for (auto& c : counts) c.fill(0);
+    for (const auto& e : events) ++counts[table_of(e)][e.symbol];
+    std::vector<RansTable> tables(kTables);
+    bool ok = true;
+    for (int t = 0; t < kTables && ok; ++t)
+      ok = normalise_table(counts[static_cast<std::size_t>(t)].data(), alphabets()[static_cast<std::size_t>(t)],
+                           tables[static_cast<std::size_t>(t)]);
+    if (!ok) continue;
+    BitWriter desc;
+    write_tables(desc, tables, alphabets());
+    RansEncoder enc;
+    for (auto it = events.rbegin(); it != events.rend(); ++it) {
+      const RansTable& tab = tables[table_of(*it)];
+      enc.put(tab.cum[it->symbol], tab.freq[it->symbol]);
+    }
+    const std::string d = desc.finish(), t = enc.finish();
+    std::string out(1, static_cast<char>(map));
+    little_endian::put_varint(out, d.size());
+    little_endian::put_varint(out, t.size());
+    out += d;
+    out += t;
+    out += packed;
+    if (best.empty() || out.size() < best.size()) best = std::move(out);
   }
-  const std::string d = desc.finish(), t = enc.finish();
-  std::string out;
-  little_endian::put_varint(out, d.size());
-  little_endian::put_varint(out, t.size());
-  out += d;
-  out += t;
-  out += bits.finish();
-  return out;
+  return best;
 }
 
 namespace {
@@ -281,6 +300,7 @@ struct Avx2Unpack {
 };
 
 struct PackedTables {
+  const std::uint8_t* context_of = nullptr;  // s -> class (the slab's map)
   std::array<const RansEntry*, kPackContexts> token{};
   std::array<std::uint32_t, 4> row_f0{};
 };
@@ -319,7 +339,7 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens,
       int left = 0;
       for (std::size_t g = 0; g < groups; ++g) {
         const int s = 2 * left + up[g] + back[g];  // <= 4 * 63
-        const int k = tdec.get(tab.token[kContextOf[static_cast<std::size_t>(s)]]);
+        const int k = tdec.get(tab.token[tab.context_of[s]]);
         mine[g] = static_cast<std::uint8_t>(k);
         left = k;
         if (k == 0) continue;  // the positions are zero already
@@ -351,7 +371,10 @@ __attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::s
 void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                         const Slab& slab, int limit, RowList& rows, bool avx2) {
   if (band.orientation == 0) corrupt(band, slab);  // never written for the approximation
-  std::size_t pos = 0;
+  if (bytes.empty() || static_cast<std::uint8_t>(bytes[0]) >= kContextMaps) corrupt(band, slab);
+  PackedTables tab;
+  tab.context_of = kContextOf[static_cast<std::uint8_t>(bytes[0])].data();
+  std::size_t pos = 1;
   auto varint = [&]() {
     std::uint64_t v = 0;
     for (int shift = 0; shift < 64; shift += 7) {
@@ -367,20 +390,24 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   BitReader desc(bytes.substr(pos, ld));
   std::vector<RansTable> tables;
   if (!read_tables(desc, tables, alphabets())) corrupt(band, slab);
-  PackedTables tab;
+  // Which width tables have symbols (an OR over the alphabet, no early exit to predict).
+  std::array<bool, kPackContexts> has{};
   std::size_t used = 0;
-  auto has_symbols = [](const RansTable& t) { return std::any_of(t.freq.begin(), t.freq.end(), [](auto f) { return f != 0; }); };
-  for (int t = 0; t < kPackContexts; ++t) used += has_symbols(tables[static_cast<std::size_t>(t)]);
+  for (int t = 0; t < kPackContexts; ++t) {
+    unsigned any = 0;
+    for (int sym = 0; sym < kWidthAlphabet; ++sym) any |= tables[static_cast<std::size_t>(t)].freq[static_cast<std::size_t>(sym)];
+    has[static_cast<std::size_t>(t)] = any != 0;
+    used += any != 0;
+  }
   std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * kRansTotal]);
   std::size_t next = 0;
   for (int t = 0; t < kPackContexts; ++t) {
-    const RansTable& table = tables[static_cast<std::size_t>(t)];
-    if (!has_symbols(table)) {
+    if (!has[static_cast<std::size_t>(t)]) {
       tab.token[static_cast<std::size_t>(t)] = identity_decode_table();
       continue;
     }
     RansEntry* out = storage.get() + next * kRansTotal;
-    fill_decode_table(table, kWidthAlphabet, out);
+    fill_decode_table(tables[static_cast<std::size_t>(t)], kWidthAlphabet, out);
     tab.token[static_cast<std::size_t>(t)] = out;
     ++next;
   }

@@ -17,8 +17,6 @@
 
 namespace fest::wavelet {
 
-double packed_slack_of(Favour f) noexcept { return f == Favour::size ? 0.0 : kPackedSlackSpeed; }
-
 const char* mode_name(Mode m) noexcept {
   switch (m) {
     case Mode::lossless: return "lossless";

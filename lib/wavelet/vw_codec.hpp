@@ -32,11 +32,9 @@ inline constexpr int kVwOldestReadVersion = 3;
 
 // The encoder's choice per detail-band slab (docs/volwave.md §4 "Packed slabs"): the
 // packed coding when its bytes are at most (1 + slack) times the smaller context coding.
-// speed: kPackedSlackSpeed (the default); size: slack 0 (packed only where it is not
-// larger: the smallest file).
-enum class Favour : std::uint8_t { speed = 0, size = 1 };
-inline constexpr double kPackedSlackSpeed = 0.30;
-double packed_slack_of(Favour f) noexcept;
+// The default (volwave --favour speed); slack 0 packs only where packing is not larger
+// (--favour size: the smallest file).
+inline constexpr double kPackedSlackSpeed = 0.50;
 
 enum class Mode : std::uint8_t { lossless = 0, max_error = 1, rmse = 2 };
 const char* mode_name(Mode m) noexcept;  // "lossless", "max-error", "rmse"
@@ -47,8 +45,8 @@ struct EncodeOptions {
   Wavelet wavelet = Wavelet::cdf53;
   int levels = -1;        // -1: default_levels()
   int threads = 1;
-  // Packed slabs: the slack allowed (see Favour); < 0 never packs (a file version 3's
-  // coders alone would give, in a version-4 container).
+  // Packed slabs: the slack allowed (kPackedSlackSpeed); < 0 never packs (the bytes
+  // version 3's coders alone give, in a version-4 container).
   double packed_slack = kPackedSlackSpeed;
   // Region of interest coded with its own, tighter L-infinity bound (max_error mode):
   // the voxels whose mask byte is non-zero (mask empty: no region).
