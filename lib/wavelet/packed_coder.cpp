@@ -89,13 +89,25 @@ constexpr std::array<std::array<std::uint8_t, 256>, kContextMaps> make_contexts(
 }
 constexpr std::array<std::array<std::uint8_t, 256>, kContextMaps> kContextOf = make_contexts();
 
-constexpr int kRowTable0 = kPackContexts;  // row flags per (y-1, z-1 row zero)
-constexpr int kTables = kPackContexts + 4;
+// The mask of a group's non-zero values (8 bits) as two 4-bit symbols, low half first,
+// each with a table per width class (1, 2, 3-4, 5+) and half.
+constexpr int kMaskTable0 = kPackContexts;
+constexpr int kMaskTables = 8;
+constexpr int kMaskAlphabet = 16;
+constexpr std::array<std::uint8_t, 64> make_width_classes() {
+  std::array<std::uint8_t, 64> t{};
+  for (int k = 0; k < 64; ++k) t[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(k <= 1 ? 0 : k == 2 ? 1 : k <= 4 ? 2 : 3);
+  return t;
+}
+constexpr std::array<std::uint8_t, 64> kWidthClass = make_width_classes();
+constexpr int kRowTable0 = kMaskTable0 + kMaskTables;  // row flags per (y-1, z-1 row zero)
+constexpr int kTables = kRowTable0 + 4;
 
 const std::vector<int>& alphabets() {
   static const std::vector<int> a = [] {
     std::vector<int> v(kTables, 2);
     std::fill_n(v.begin(), kPackContexts, kWidthAlphabet);
+    std::fill_n(v.begin() + kMaskTable0, kMaskTables, kMaskAlphabet);
     return v;
   }();
   return a;
@@ -114,52 +126,58 @@ int pack_width(const std::int64_t* v, int n) noexcept {
   return bit_width(m);
 }
 
+int pack_mask(const std::int64_t* v, int n) noexcept {
+  int mask = 0;
+  for (int i = 0; i < n; ++i) mask |= static_cast<int>(v[i] != 0) << i;
+  return mask;
+}
+
 void pack_group(BitWriter& w, const std::int64_t* v, int n, int k) {
-  if (k == 0) return;
-  for (int i = 0; i < n; ++i) put_bits(w, mag(v[i]), k);
+  if (k <= 1) {
+    if (k == 1)
+      for (int i = 0; i < n; ++i)
+        if (v[i] != 0) w.put(v[i] < 0 ? 1 : 0, 1);
+    return;
+  }
+  for (int i = 0; i < n; ++i)
+    if (v[i] != 0) put_bits(w, mag(v[i]), k);
   for (int i = 0; i < n; ++i)
     if (v[i] != 0) w.put(v[i] < 0 ? 1 : 0, 1);
 }
 
-std::uint64_t unpack_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n, std::int64_t* out) noexcept {
-  std::uint64_t m[kPackGroup];
-  for (int i = 0; i < n; ++i) m[i] = read_wide(base, bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k), k);
-  bp += static_cast<std::uint64_t>(n) * static_cast<unsigned>(k);
-  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
-  int used = 0;
+namespace {
+
+// The generic unpacking (any width, n <= 8 values): value i, when its mask bit is set,
+// is the j-th magnitude (j = the set bits below i, from kSignPrefix) and has the j-th
+// sign; without branches on the mask.
+__attribute__((always_inline)) inline std::uint64_t unpack_generic(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                                   int mask, int n, std::int64_t* out) noexcept {
+  const int b = k - static_cast<int>(k == 1);  // magnitude bits: none for width 1
+  const std::uint64_t one_bit = k == 1;
+  const std::uint64_t pre = kSignPrefix[static_cast<std::size_t>(mask)];
+  const int count = __builtin_popcount(static_cast<unsigned>(mask));
+  const std::uint64_t sp = bp + static_cast<std::uint64_t>(count) * static_cast<unsigned>(b);
+  const std::uint64_t signs = load64(base + (sp >> 3)) >> (sp & 7);
   for (int i = 0; i < n; ++i) {
-    // neg for a zero magnitude reads some other value's bit, but (0 ^ -neg) + neg = 0.
-    const std::uint64_t neg = (signs >> used) & 1;
-    out[i] = static_cast<std::int64_t>((m[i] ^ (0 - neg)) + neg);
-    used += m[i] != 0;
+    const unsigned j = static_cast<unsigned>(pre >> (8 * i)) & 0xFFu;
+    const std::uint64_t nz = 0 - static_cast<std::uint64_t>((mask >> i) & 1);
+    const std::uint64_t m = (read_wide(base, bp + j * static_cast<unsigned>(b), b) + one_bit) & nz;
+    const std::uint64_t neg = (signs >> j) & 1;
+    out[i] = static_cast<std::int64_t>((m ^ (0 - neg)) + neg);  // 0 stays 0 whatever neg
   }
-  return bp + static_cast<std::uint64_t>(used);
+  return sp + static_cast<std::uint64_t>(count);
 }
 
-namespace {
-__attribute__((always_inline)) inline std::uint64_t unpack8_scalar(const std::uint8_t* base, std::uint64_t bp, int k,
-                                                                   std::int64_t* out) noexcept {
-  if (k > 57) return unpack_partial(base, bp, k, kPackGroup, out);
-  std::uint64_t m[kPackGroup];
-  const std::uint64_t mask = (std::uint64_t{1} << k) - 1;
-  for (int i = 0; i < kPackGroup; ++i) {
-    const std::uint64_t p = bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k);
-    m[i] = (load64(base + (p >> 3)) >> (p & 7)) & mask;
-  }
-  bp += static_cast<std::uint64_t>(kPackGroup) * static_cast<unsigned>(k);
-  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
-  int used = 0;
-  for (int i = 0; i < kPackGroup; ++i) {
-    const std::uint64_t neg = (signs >> used) & 1;
-    out[i] = static_cast<std::int64_t>((m[i] ^ (0 - neg)) + neg);
-    used += m[i] != 0;
-  }
-  return bp + static_cast<std::uint64_t>(used);
-}
 }  // namespace
 
-std::uint64_t unpack_group_scalar(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept {
-  return unpack8_scalar(base, bp, k, out);
+std::uint64_t unpack_partial(const std::uint8_t* base, std::uint64_t bp, int k, int mask, int n,
+                             std::int64_t* out) noexcept {
+  return unpack_generic(base, bp, k, mask, n, out);
+}
+
+std::uint64_t unpack_group_scalar(const std::uint8_t* base, std::uint64_t bp, int k, int mask,
+                                  std::int64_t* out) noexcept {
+  return unpack_generic(base, bp, k, mask, kPackGroup, out);
 }
 
 bool packed_avx2_available() noexcept {
@@ -167,48 +185,54 @@ bool packed_avx2_available() noexcept {
   return has;
 }
 
-// Four lanes per instruction: the eight bit positions bp + i k, a gather of the 64 bits
-// at each position's byte, a variable shift and the mask; the sign of lane i is bit
-// (number of non-zero lanes before i) of the sign bits, from kSignPrefix.
 namespace {
-__attribute__((target("avx2"))) inline std::uint64_t unpack8_avx2(const std::uint8_t* base,
-                                                                                std::uint64_t bp, int k,
-                                                                                std::int64_t* out) noexcept {
-  if (k > 57) return unpack_partial(base, bp, k, kPackGroup, out);
-  const __m256i kk = _mm256_set1_epi64x(k);
-  const __m256i p0 = _mm256_add_epi64(_mm256_set1_epi64x(static_cast<long long>(bp)),
-                                      _mm256_mul_epu32(_mm256_setr_epi64x(0, 1, 2, 3), kk));
-  const __m256i p1 = _mm256_add_epi64(p0, _mm256_set1_epi64x(4LL * k));
+
+// Four lanes per instruction: lane i's magnitude starts at bit bp + j_i b (j_i = the set
+// mask bits below i, kSignPrefix), so a gather of the 64 bits at each start's byte, a
+// variable shift and the width's mask give all of them; lanes whose mask bit is clear
+// are zeroed; the sign of lane i is bit j_i of the sign bits.
+__attribute__((target("avx2"))) inline std::uint64_t unpack8_avx2(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                                 int mask, std::int64_t* out) noexcept {
+  if (k > 57) return unpack_generic(base, bp, k, mask, kPackGroup, out);
+  const int b = k - static_cast<int>(k == 1);
+  const std::uint64_t pre = kSignPrefix[static_cast<std::size_t>(mask)];
+  const __m256i j0 = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(static_cast<int>(pre & 0xFFFFFFFFu)));
+  const __m256i j1 = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(static_cast<int>(pre >> 32)));
+  const __m256i bb = _mm256_set1_epi64x(b);
+  const __m256i start = _mm256_set1_epi64x(static_cast<long long>(bp));
+  const __m256i p0 = _mm256_add_epi64(start, _mm256_mul_epu32(j0, bb));
+  const __m256i p1 = _mm256_add_epi64(start, _mm256_mul_epu32(j1, bb));
   const __m256i seven = _mm256_set1_epi64x(7);
-  const __m256i mask = _mm256_set1_epi64x(static_cast<long long>((std::uint64_t{1} << k) - 1));
-  const auto* b = reinterpret_cast<const long long*>(base);
-  __m256i m0 = _mm256_i64gather_epi64(b, _mm256_srli_epi64(p0, 3), 1);
-  __m256i m1 = _mm256_i64gather_epi64(b, _mm256_srli_epi64(p1, 3), 1);
-  m0 = _mm256_and_si256(_mm256_srlv_epi64(m0, _mm256_and_si256(p0, seven)), mask);
-  m1 = _mm256_and_si256(_mm256_srlv_epi64(m1, _mm256_and_si256(p1, seven)), mask);
-  const __m256i zero = _mm256_setzero_si256();
-  const int z = _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(m0, zero))) |
-                (_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(m1, zero))) << 4);
-  const unsigned nz = ~static_cast<unsigned>(z) & 0xFFu;
-  bp += static_cast<std::uint64_t>(kPackGroup) * static_cast<unsigned>(k);
-  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
-  const std::uint64_t pre = kSignPrefix[nz];
-  const __m256i sv = _mm256_set1_epi64x(static_cast<long long>(signs));
+  const __m256i width = _mm256_set1_epi64x(static_cast<long long>((std::uint64_t{1} << b) - 1));
+  const __m256i one_bit = _mm256_set1_epi64x(k == 1);
+  const auto* src = reinterpret_cast<const long long*>(base);
+  __m256i m0 = _mm256_i64gather_epi64(src, _mm256_srli_epi64(p0, 3), 1);
+  __m256i m1 = _mm256_i64gather_epi64(src, _mm256_srli_epi64(p1, 3), 1);
+  m0 = _mm256_add_epi64(_mm256_and_si256(_mm256_srlv_epi64(m0, _mm256_and_si256(p0, seven)), width), one_bit);
+  m1 = _mm256_add_epi64(_mm256_and_si256(_mm256_srlv_epi64(m1, _mm256_and_si256(p1, seven)), width), one_bit);
+  // Lane i keeps its value when mask bit i is set.
   const __m256i one = _mm256_set1_epi64x(1);
-  const __m256i s0 = _mm256_and_si256(
-      _mm256_srlv_epi64(sv, _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(static_cast<int>(pre & 0xFFFFFFFFu)))), one);
-  const __m256i s1 = _mm256_and_si256(
-      _mm256_srlv_epi64(sv, _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(static_cast<int>(pre >> 32)))), one);
-  const __m256i n0 = _mm256_sub_epi64(zero, s0), n1 = _mm256_sub_epi64(zero, s1);
+  const __m256i mv = _mm256_set1_epi64x(mask);
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i nz0 = _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(mv, _mm256_setr_epi64x(0, 1, 2, 3)), one));
+  const __m256i nz1 = _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(mv, _mm256_setr_epi64x(4, 5, 6, 7)), one));
+  m0 = _mm256_and_si256(m0, nz0);
+  m1 = _mm256_and_si256(m1, nz1);
+  const int count = __builtin_popcount(static_cast<unsigned>(mask));
+  const std::uint64_t sp = bp + static_cast<std::uint64_t>(count) * static_cast<unsigned>(b);
+  const __m256i sv = _mm256_set1_epi64x(static_cast<long long>(load64(base + (sp >> 3)) >> (sp & 7)));
+  const __m256i n0 = _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(sv, j0), one));
+  const __m256i n1 = _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(sv, j1), one));
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_sub_epi64(_mm256_xor_si256(m0, n0), n0));
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + 4), _mm256_sub_epi64(_mm256_xor_si256(m1, n1), n1));
-  return bp + static_cast<std::uint64_t>(__builtin_popcount(nz));
+  return sp + static_cast<std::uint64_t>(count);
 }
+
 }  // namespace
 
 __attribute__((target("avx2"))) std::uint64_t unpack_group_avx2(const std::uint8_t* base, std::uint64_t bp, int k,
-                                                                std::int64_t* out) noexcept {
-  return unpack8_avx2(base, bp, k, out);
+                                                                int mask, std::int64_t* out) noexcept {
+  return unpack8_avx2(base, bp, k, mask, out);
 }
 
 std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab) {
@@ -219,10 +243,11 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
   const std::size_t planes = slab.z1 - slab.z0;
   std::vector<std::uint8_t> widths(planes * h * groups, 0), zero_rows(planes * h, 0);
   const std::vector<std::uint8_t> no_widths(groups, 0);
-  // A token's event holds its s (the map picks the table later), a row flag's its table.
+  // A width token's event holds its s (the map picks the table later), the others their
+  // table (fixed).
   struct Event {
     std::uint8_t s, symbol;
-    bool row;
+    bool fixed;
   };
   std::vector<Event> events;
   BitWriter bits;
@@ -249,6 +274,12 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
         events.push_back({static_cast<std::uint8_t>(s), static_cast<std::uint8_t>(k), false});
         mine[g] = static_cast<std::uint8_t>(k);
         left = k;
+        if (k > 0) {
+          const int mask = pack_mask(row + g * kPackGroup, n);
+          const int c = kMaskTable0 + 2 * kWidthClass[static_cast<std::size_t>(k)];
+          events.push_back({static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(mask & 15), true});
+          events.push_back({static_cast<std::uint8_t>(c + 1), static_cast<std::uint8_t>(mask >> 4), true});
+        }
         pack_group(bits, row + g * kPackGroup, n, k);
       }
     }
@@ -256,7 +287,7 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
   std::string best;
   for (int map = 0; map < kContextMaps; ++map) {
     const auto& ctx = kContextOf[static_cast<std::size_t>(map)];
-    auto table_of = [&](const Event& e) { return e.row ? e.s : ctx[e.s]; };
+    auto table_of = [&](const Event& e) { return e.fixed ? e.s : ctx[e.s]; };
     std::vector<std::array<std::uint32_t, kRansAlphabet>> counts(kTables);
     for (auto& c : counts) c.fill(0);
     for (const auto& e : events) ++counts[table_of(e)][e.symbol];
@@ -288,20 +319,21 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
 namespace {
 
 struct ScalarUnpack {
-  static std::uint64_t group(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept {
-    return unpack8_scalar(base, bp, k, out);
+  static std::uint64_t group(const std::uint8_t* base, std::uint64_t bp, int k, int mask, std::int64_t* out) noexcept {
+    return unpack_generic(base, bp, k, mask, kPackGroup, out);
   }
 };
 struct Avx2Unpack {
-  __attribute__((target("avx2"))) static std::uint64_t group(const std::uint8_t* base, std::uint64_t bp,
-                                                                            int k, std::int64_t* out) noexcept {
-    return unpack8_avx2(base, bp, k, out);
+  __attribute__((target("avx2"))) static std::uint64_t group(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                             int mask, std::int64_t* out) noexcept {
+    return unpack8_avx2(base, bp, k, mask, out);
   }
 };
 
 struct PackedTables {
   const std::uint8_t* context_of = nullptr;  // s -> class (the slab's map)
   std::array<const RansEntry*, kPackContexts> token{};
+  std::array<const RansEntry*, kMaskTables> mask{};
   std::array<std::uint32_t, 4> row_f0{};
 };
 
@@ -345,8 +377,15 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens,
         if (k == 0) continue;  // the positions are zero already
         // Checked per group, so the unpacking never reads past the padding.
         if (k > max_width || bp > nbits) return false;
-        if (g < full) bp = Unpack::group(base, bp, k, row + g * kPackGroup);
-        else bp = unpack_partial(base, bp, k, tail, row + g * kPackGroup);
+        const RansEntry* const* mt = &tab.mask[2 * static_cast<std::size_t>(kWidthClass[static_cast<std::size_t>(k)])];
+        const int lo = tdec.get(mt[0]);
+        const int mask = lo | (tdec.get(mt[1]) << 4);
+        if (g < full) {
+          bp = Unpack::group(base, bp, k, mask, row + g * kPackGroup);
+        } else {
+          if (mask >> tail) return false;  // a value past the end of the row
+          bp = unpack_generic(base, bp, k, mask, tail, row + g * kPackGroup);
+        }
       }
     }
   return tdec.done() && (bp + 7) / 8 == nbits / 8;
@@ -390,26 +429,30 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   BitReader desc(bytes.substr(pos, ld));
   std::vector<RansTable> tables;
   if (!read_tables(desc, tables, alphabets())) corrupt(band, slab);
-  // Which width tables have symbols (an OR over the alphabet, no early exit to predict).
-  std::array<bool, kPackContexts> has{};
+  // The width and mask tables as lookup tables (the ones that have symbols; an OR over
+  // the alphabet, no early exit to predict).
+  const auto& alpha = alphabets();
+  std::array<bool, kRowTable0> has{};
   std::size_t used = 0;
-  for (int t = 0; t < kPackContexts; ++t) {
+  for (int t = 0; t < kRowTable0; ++t) {
     unsigned any = 0;
-    for (int sym = 0; sym < kWidthAlphabet; ++sym) any |= tables[static_cast<std::size_t>(t)].freq[static_cast<std::size_t>(sym)];
+    for (int sym = 0; sym < alpha[static_cast<std::size_t>(t)]; ++sym)
+      any |= tables[static_cast<std::size_t>(t)].freq[static_cast<std::size_t>(sym)];
     has[static_cast<std::size_t>(t)] = any != 0;
     used += any != 0;
   }
   std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * kRansTotal]);
   std::size_t next = 0;
-  for (int t = 0; t < kPackContexts; ++t) {
-    if (!has[static_cast<std::size_t>(t)]) {
-      tab.token[static_cast<std::size_t>(t)] = identity_decode_table();
-      continue;
+  for (int t = 0; t < kRowTable0; ++t) {
+    const RansEntry* e = identity_decode_table();
+    if (has[static_cast<std::size_t>(t)]) {
+      RansEntry* out = storage.get() + next * kRansTotal;
+      fill_decode_table(tables[static_cast<std::size_t>(t)], alpha[static_cast<std::size_t>(t)], out);
+      e = out;
+      ++next;
     }
-    RansEntry* out = storage.get() + next * kRansTotal;
-    fill_decode_table(tables[static_cast<std::size_t>(t)], kWidthAlphabet, out);
-    tab.token[static_cast<std::size_t>(t)] = out;
-    ++next;
+    if (t < kPackContexts) tab.token[static_cast<std::size_t>(t)] = e;
+    else tab.mask[static_cast<std::size_t>(t - kMaskTable0)] = e;
   }
   for (int t = 0; t < 4; ++t) {
     const auto& f = tables[static_cast<std::size_t>(kRowTable0 + t)].freq;

@@ -5,9 +5,10 @@
 // that is not is cut into groups of kPackGroup consecutive coefficients; per group one
 // static-rANS token gives its bit width k = bit_width(max |v|) (0: all zero), in a
 // context of cheap neighbours -- the previous group's k in the row and the k of the
-// groups at y-1 and z-1 -- and then the group's magnitudes follow in k bits each, and one
-// sign bit per non-zero magnitude, in a plain bit stream. Decoding a group is one rANS
-// step and a fixed unpacking (four shifts and masks per coefficient, or AVX2 gathers):
+// groups at y-1 and z-1 -- then, for k > 0, two more give the mask of its non-zero
+// values, and the non-zero magnitudes follow in k bits each (none for k = 1) and one sign
+// bit each, in a plain bit stream. Decoding a group is three rANS steps and a fixed
+// unpacking (a shift and a mask per coefficient, four at a time with AVX2 gathers):
 // there is no per-coefficient context chain, which is what the context coders wait on.
 //
 // Bytes of a packed slab (after its mode byte): varint lengths of the table description
@@ -30,20 +31,26 @@ constexpr std::size_t kPackSlack = 80;
 
 // The width of a group: bit_width of its largest magnitude (0 when all are zero).
 int pack_width(const std::int64_t* v, int n) noexcept;
-// Appends n values of width k (|v| < 2^k): the n magnitudes in k bits each, then a sign
-// bit (1 = negative) per non-zero magnitude, in order. Nothing for k = 0.
+// Bit i set when v[i] is non-zero (coded as two 4-bit rANS symbols).
+int pack_mask(const std::int64_t* v, int n) noexcept;
+// Appends the bits of n values of width k (|v| < 2^k): the non-zero magnitudes in k bits
+// each (none for k = 1: they are all 1), then a sign bit (1 = negative) per non-zero
+// value, in order. Nothing for k = 0.
 void pack_group(BitWriter& w, const std::int64_t* v, int n, int k);
 
-// Unpacks a group of kPackGroup values of width k (1..63) starting at bit `bp` of
-// `base` (bits low first, as BitWriter writes them) into out[0..8); `base` must be
-// readable for kPackSlack bytes past bp / 8. Returns the bit position after the group.
-// The scalar and AVX2 versions give the same values (unit-tested); the AVX2 one may only
-// be called where packed_avx2_available().
-std::uint64_t unpack_group_scalar(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept;
-std::uint64_t unpack_group_avx2(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept;
+// Unpacks a group of kPackGroup values of width k (1..63) and non-zero mask `mask`
+// starting at bit `bp` of `base` (bits low first, as BitWriter writes them) into
+// out[0..8); `base` must be readable for kPackSlack bytes past bp / 8. Returns the bit
+// position after the group. The scalar and AVX2 versions give the same values
+// (unit-tested); the AVX2 one may only be called where packed_avx2_available().
+std::uint64_t unpack_group_scalar(const std::uint8_t* base, std::uint64_t bp, int k, int mask,
+                                  std::int64_t* out) noexcept;
+std::uint64_t unpack_group_avx2(const std::uint8_t* base, std::uint64_t bp, int k, int mask,
+                                std::int64_t* out) noexcept;
 bool packed_avx2_available() noexcept;
-// The same for a group of n < kPackGroup values (the end of a row).
-std::uint64_t unpack_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n, std::int64_t* out) noexcept;
+// The same for a group of n < kPackGroup values (the end of a row; mask < 2^n).
+std::uint64_t unpack_partial(const std::uint8_t* base, std::uint64_t bp, int k, int mask, int n,
+                             std::int64_t* out) noexcept;
 
 // Codes a detail band's slab as a packed slab (without the mode byte). Empty for the
 // approximation band (its prediction needs the previous value: the context coders keep

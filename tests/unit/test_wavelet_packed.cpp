@@ -63,13 +63,14 @@ TEST(WaveletPacked, GroupsOfEveryWidthRoundTripScalarAndAvx2Alike) {
       const int k = widths[g], n = static_cast<int>(groups[g].size());
       if (k == 0) continue;
       std::int64_t a[kPackGroup] = {}, b[kPackGroup] = {};
+      const int mask = pack_mask(groups[g].data(), n);
       if (n == kPackGroup) {
-        bs = unpack_group_scalar(base, bs, k, a);
-        if (packed_avx2_available()) bv = unpack_group_avx2(base, bv, k, b);
-        else bv = unpack_group_scalar(base, bv, k, b);
+        bs = unpack_group_scalar(base, bs, k, mask, a);
+        if (packed_avx2_available()) bv = unpack_group_avx2(base, bv, k, mask, b);
+        else bv = unpack_group_scalar(base, bv, k, mask, b);
       } else {
-        bs = unpack_partial(base, bs, k, n, a);
-        bv = unpack_partial(base, bv, k, n, b);
+        bs = unpack_partial(base, bs, k, mask, n, a);
+        bv = unpack_partial(base, bv, k, mask, n, b);
       }
       ASSERT_EQ(bs, bv) << "group " << g << " width " << k;
       for (int i = 0; i < n; ++i) {
