@@ -247,7 +247,7 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
   // table (fixed).
   struct Event {
     std::uint8_t s, symbol;
-    bool fixed;
+    bool fixed, mask;  // mask: in the second rANS stream M
   };
   std::vector<Event> events;
   BitWriter bits;
@@ -258,7 +258,7 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
       const bool all_zero = std::all_of(row, row + w, [](std::int64_t v) { return v == 0; });
       const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
       const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
-      events.push_back({static_cast<std::uint8_t>(kRowTable0 + up_zero + 2 * back_zero), static_cast<std::uint8_t>(all_zero), true});
+      events.push_back({static_cast<std::uint8_t>(kRowTable0 + up_zero + 2 * back_zero), static_cast<std::uint8_t>(all_zero), true, false});
       if (all_zero) {
         zero_rows[r] = 1;
         continue;
@@ -271,14 +271,14 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
         const int n = static_cast<int>(std::min<std::size_t>(kPackGroup, w - g * kPackGroup));
         const int k = pack_width(row + g * kPackGroup, n);
         const int s = 2 * left + up[g] + back[g];
-        events.push_back({static_cast<std::uint8_t>(s), static_cast<std::uint8_t>(k), false});
+        events.push_back({static_cast<std::uint8_t>(s), static_cast<std::uint8_t>(k), false, false});
         mine[g] = static_cast<std::uint8_t>(k);
         left = k;
         if (k > 0) {
           const int mask = pack_mask(row + g * kPackGroup, n);
           const int c = kMaskTable0 + 2 * kWidthClass[static_cast<std::size_t>(k)];
-          events.push_back({static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(mask & 15), true});
-          events.push_back({static_cast<std::uint8_t>(c + 1), static_cast<std::uint8_t>(mask >> 4), true});
+          events.push_back({static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(mask & 15), true, true});
+          events.push_back({static_cast<std::uint8_t>(c + 1), static_cast<std::uint8_t>(mask >> 4), true, true});
         }
         pack_group(bits, row + g * kPackGroup, n, k);
       }
@@ -299,17 +299,21 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
     if (!ok) continue;
     BitWriter desc;
     write_tables(desc, tables, alphabets());
-    RansEncoder enc;
+    // Two rANS states: widths and row flags (T), masks (M), so that a decoder's chain of
+    // state updates through the masks runs beside the one through the widths.
+    RansEncoder enc, menc;
     for (auto it = events.rbegin(); it != events.rend(); ++it) {
       const RansTable& tab = tables[table_of(*it)];
-      enc.put(tab.cum[it->symbol], tab.freq[it->symbol]);
+      (it->mask ? menc : enc).put(tab.cum[it->symbol], tab.freq[it->symbol]);
     }
-    const std::string d = desc.finish(), t = enc.finish();
+    const std::string d = desc.finish(), t = enc.finish(), m = menc.finish();
     std::string out(1, static_cast<char>(map));
     little_endian::put_varint(out, d.size());
     little_endian::put_varint(out, t.size());
+    little_endian::put_varint(out, m.size());
     out += d;
     out += t;
+    out += m;
     out += packed;
     if (best.empty() || out.size() < best.size()) best = std::move(out);
   }
@@ -341,7 +345,7 @@ struct PackedTables {
 // Returns false when a stream does not end where its bytes do. The rANS decoder is local
 // (its address never escapes), so its state can stay in registers.
 template <typename Unpack>
-inline bool decode_rows(const PackedTables& tab, std::string_view tokens,
+inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::string_view masks,
                                                        const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data,
                                                        const Dims& dims, const Subband& band, const Slab& slab,
                                                        int limit, std::vector<std::uint8_t>& zero_rows) {
@@ -353,7 +357,7 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens,
   std::vector<std::uint8_t> widths(planes * h * groups + groups, 0);
   const std::uint8_t* no_widths = widths.data() + planes * h * groups;  // a row of zeros
   const int max_width = limit + 1;
-  RansDecoder tdec(tokens);
+  RansDecoder tdec(tokens), mdec(masks);
   std::uint64_t bp = 0;
   for (std::size_t z = slab.z0; z < slab.z1; ++z)
     for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
@@ -378,8 +382,8 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens,
         // Checked per group, so the unpacking never reads past the padding.
         if (k > max_width || bp > nbits) return false;
         const RansEntry* const* mt = &tab.mask[2 * static_cast<std::size_t>(kWidthClass[static_cast<std::size_t>(k)])];
-        const int lo = tdec.get(mt[0]);
-        const int mask = lo | (tdec.get(mt[1]) << 4);
+        const int lo = mdec.get(mt[0]);
+        const int mask = lo | (mdec.get(mt[1]) << 4);
         if (g < full) {
           bp = Unpack::group(base, bp, k, mask, row + g * kPackGroup);
         } else {
@@ -388,21 +392,21 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens,
         }
       }
     }
-  return tdec.done() && (bp + 7) / 8 == nbits / 8;
+  return tdec.done() && mdec.done() && (bp + 7) / 8 == nbits / 8;
 }
 
 // flatten: everything inlined here, the AVX2 unpacking included (a template cannot carry
 // the target, so the instantiation alone could not inline it).
-__attribute__((target("avx2"), flatten)) bool decode_rows_avx2(const PackedTables& tab, std::string_view tokens,
+__attribute__((target("avx2"), flatten)) bool decode_rows_avx2(const PackedTables& tab, std::string_view tokens, std::string_view masks,
                                                       const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data,
                                                       const Dims& dims, const Subband& band, const Slab& slab, int limit,
                                                       std::vector<std::uint8_t>& zero_rows) {
-  return decode_rows<Avx2Unpack>(tab, tokens, base, nbits, data, dims, band, slab, limit, zero_rows);
+  return decode_rows<Avx2Unpack>(tab, tokens, masks, base, nbits, data, dims, band, slab, limit, zero_rows);
 }
-__attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::string_view tokens, const std::uint8_t* base, std::uint64_t nbits,
+__attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::string_view tokens, std::string_view masks, const std::uint8_t* base, std::uint64_t nbits,
                         std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab, int limit,
                         std::vector<std::uint8_t>& zero_rows) {
-  return decode_rows<ScalarUnpack>(tab, tokens, base, nbits, data, dims, band, slab, limit, zero_rows);
+  return decode_rows<ScalarUnpack>(tab, tokens, masks, base, nbits, data, dims, band, slab, limit, zero_rows);
 }
 
 }  // namespace
@@ -424,8 +428,8 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
     }
     corrupt(band, slab);
   };
-  const std::uint64_t ld = varint(), lt = varint();
-  if (ld > bytes.size() - pos || lt > bytes.size() - pos - ld) corrupt(band, slab);
+  const std::uint64_t ld = varint(), lt = varint(), lm = varint();
+  if (ld > bytes.size() - pos || lt > bytes.size() - pos - ld || lm > bytes.size() - pos - ld - lt) corrupt(band, slab);
   BitReader desc(bytes.substr(pos, ld));
   std::vector<RansTable> tables;
   if (!read_tables(desc, tables, alphabets())) corrupt(band, slab);
@@ -458,8 +462,8 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
     const auto& f = tables[static_cast<std::size_t>(kRowTable0 + t)].freq;
     tab.row_f0[static_cast<std::size_t>(t)] = f[0] == 0 && f[1] == 0 ? kRansTotal : f[0];
   }
-  const std::string_view tokens = bytes.substr(pos + ld, lt);
-  const std::string_view packed = bytes.substr(pos + ld + lt);
+  const std::string_view tokens = bytes.substr(pos + ld, lt), masks = bytes.substr(pos + ld + lt, lm);
+  const std::string_view packed = bytes.substr(pos + ld + lt + lm);
   // A copy with kPackSlack zero bytes after it: the unpacking loads 8 bytes at a time
   // without a test per value.
   std::vector<std::uint8_t> buf(packed.size() + kPackSlack, 0);
@@ -467,8 +471,8 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   const std::uint64_t nbits = 8 * static_cast<std::uint64_t>(packed.size());
   const std::size_t h = band.hi[1] - band.lo[1];
   std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
-  const bool ok = avx2 && packed_avx2_available() ? decode_rows_avx2(tab, tokens, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
-                       : decode_rows_scalar(tab, tokens, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
+  const bool ok = avx2 && packed_avx2_available() ? decode_rows_avx2(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
+                       : decode_rows_scalar(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
   if (!ok) corrupt(band, slab);
   for (std::size_t r = 0; r < zero_rows.size(); ++r)
     if (!zero_rows[r]) rows.push_back(band.lo[1] + r % h + dims[1] * (slab.z0 + r / h));
