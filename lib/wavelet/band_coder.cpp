@@ -282,17 +282,19 @@ std::string encode_adaptive(const std::int64_t* data, const Dims& dims, const Su
 }  // namespace
 
 // Both context codings, the smaller kept (the static one on a tie: it decodes faster);
-// then the packed coding instead when it costs at most packed_slack more (it decodes
-// several times faster than either, docs/volwave.md §4 "Packed slabs").
+// then a packed coding instead (it decodes several times faster than either,
+// docs/volwave.md §4 "Packed slabs"): with packed_slack 0, the smallest packed coding
+// when it is not larger; above 0, the fastest within (1 + packed_slack) times the
+// context coding's bytes -- without masks if that fits, else with them.
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
                         const Slab& slab, SlabCoding coding, double packed_slack) {
-  auto packed = [&] {
-    std::string p = encode_packed_slab(data, dims, band, slab);
+  auto packed = [&](int masks) {
+    std::string p = encode_packed_slab(data, dims, band, slab, masks);
     if (!p.empty()) p.insert(p.begin(), kPackedSlab);
     return p;
   };
   if (coding == SlabCoding::packed) {
-    std::string p = packed();
+    std::string p = packed(-1);
     if (!p.empty()) return p;
     coding = SlabCoding::smaller;
   }
@@ -302,8 +304,17 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
   std::string best = encode_adaptive(data, dims, band, parent, slab);
   if (!fixed.empty() && fixed.size() <= best.size()) best = std::move(fixed);
   if (coding == SlabCoding::smaller && packed_slack >= 0 && band.orientation != 0) {
-    std::string p = packed();
-    if (!p.empty() && static_cast<double>(p.size()) <= (1.0 + packed_slack) * static_cast<double>(best.size())) return p;
+    const double budget = (1.0 + packed_slack) * static_cast<double>(best.size());
+    auto fits = [&](const std::string& p) { return !p.empty() && static_cast<double>(p.size()) <= budget; };
+    if (packed_slack == 0) {
+      std::string p = packed(-1);
+      if (fits(p)) return p;
+    } else {
+      std::string dense = packed(0);
+      if (fits(dense)) return dense;
+      std::string masked = packed(1);
+      if (fits(masked)) return masked;
+    }
   }
   return best;
 }

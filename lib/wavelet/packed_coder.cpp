@@ -132,7 +132,14 @@ int pack_mask(const std::int64_t* v, int n) noexcept {
   return mask;
 }
 
-void pack_group(BitWriter& w, const std::int64_t* v, int n, int k) {
+void pack_group(BitWriter& w, const std::int64_t* v, int n, int k, bool masked) {
+  if (!masked) {
+    if (k == 0) return;
+    for (int i = 0; i < n; ++i) put_bits(w, mag(v[i]), k);
+    for (int i = 0; i < n; ++i)
+      if (v[i] != 0) w.put(v[i] < 0 ? 1 : 0, 1);
+    return;
+  }
   if (k <= 1) {
     if (k == 1)
       for (int i = 0; i < n; ++i)
@@ -235,7 +242,96 @@ __attribute__((target("avx2"))) std::uint64_t unpack_group_avx2(const std::uint8
   return unpack8_avx2(base, bp, k, mask, out);
 }
 
-std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab) {
+// Dense groups (a slab without masks): all n magnitudes in k bits, then a sign bit per
+// non-zero one.
+std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n, std::int64_t* out) noexcept {
+  std::uint64_t m[kPackGroup];
+  for (int i = 0; i < n; ++i) m[i] = read_wide(base, bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k), k);
+  bp += static_cast<std::uint64_t>(n) * static_cast<unsigned>(k);
+  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
+  int used = 0;
+  for (int i = 0; i < n; ++i) {
+    // neg for a zero magnitude reads some other value's bit, but (0 ^ -neg) + neg = 0.
+    const std::uint64_t neg = (signs >> used) & 1;
+    out[i] = static_cast<std::int64_t>((m[i] ^ (0 - neg)) + neg);
+    used += m[i] != 0;
+  }
+  return bp + static_cast<std::uint64_t>(used);
+}
+
+namespace {
+__attribute__((always_inline)) inline std::uint64_t dense8_scalar(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                                   std::int64_t* out) noexcept {
+  if (k > 57) return unpack_dense_partial(base, bp, k, kPackGroup, out);
+  std::uint64_t m[kPackGroup];
+  const std::uint64_t mask = (std::uint64_t{1} << k) - 1;
+  for (int i = 0; i < kPackGroup; ++i) {
+    const std::uint64_t p = bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k);
+    m[i] = (load64(base + (p >> 3)) >> (p & 7)) & mask;
+  }
+  bp += static_cast<std::uint64_t>(kPackGroup) * static_cast<unsigned>(k);
+  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
+  int used = 0;
+  for (int i = 0; i < kPackGroup; ++i) {
+    const std::uint64_t neg = (signs >> used) & 1;
+    out[i] = static_cast<std::int64_t>((m[i] ^ (0 - neg)) + neg);
+    used += m[i] != 0;
+  }
+  return bp + static_cast<std::uint64_t>(used);
+}
+}  // namespace
+
+std::uint64_t unpack_dense_scalar(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept {
+  return dense8_scalar(base, bp, k, out);
+}
+
+
+// Four lanes per instruction: the eight bit positions bp + i k, a gather of the 64 bits
+// at each position's byte, a variable shift and the mask; the sign of lane i is bit
+// (number of non-zero lanes before i) of the sign bits, from kSignPrefix.
+namespace {
+__attribute__((target("avx2"))) inline std::uint64_t dense8_avx2(const std::uint8_t* base,
+                                                                                std::uint64_t bp, int k,
+                                                                                std::int64_t* out) noexcept {
+  if (k > 57) return unpack_dense_partial(base, bp, k, kPackGroup, out);
+  const __m256i kk = _mm256_set1_epi64x(k);
+  const __m256i p0 = _mm256_add_epi64(_mm256_set1_epi64x(static_cast<long long>(bp)),
+                                      _mm256_mul_epu32(_mm256_setr_epi64x(0, 1, 2, 3), kk));
+  const __m256i p1 = _mm256_add_epi64(p0, _mm256_set1_epi64x(4LL * k));
+  const __m256i seven = _mm256_set1_epi64x(7);
+  const __m256i mask = _mm256_set1_epi64x(static_cast<long long>((std::uint64_t{1} << k) - 1));
+  const auto* b = reinterpret_cast<const long long*>(base);
+  __m256i m0 = _mm256_i64gather_epi64(b, _mm256_srli_epi64(p0, 3), 1);
+  __m256i m1 = _mm256_i64gather_epi64(b, _mm256_srli_epi64(p1, 3), 1);
+  m0 = _mm256_and_si256(_mm256_srlv_epi64(m0, _mm256_and_si256(p0, seven)), mask);
+  m1 = _mm256_and_si256(_mm256_srlv_epi64(m1, _mm256_and_si256(p1, seven)), mask);
+  const __m256i zero = _mm256_setzero_si256();
+  const int z = _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(m0, zero))) |
+                (_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(m1, zero))) << 4);
+  const unsigned nz = ~static_cast<unsigned>(z) & 0xFFu;
+  bp += static_cast<std::uint64_t>(kPackGroup) * static_cast<unsigned>(k);
+  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
+  const std::uint64_t pre = kSignPrefix[nz];
+  const __m256i sv = _mm256_set1_epi64x(static_cast<long long>(signs));
+  const __m256i one = _mm256_set1_epi64x(1);
+  const __m256i s0 = _mm256_and_si256(
+      _mm256_srlv_epi64(sv, _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(static_cast<int>(pre & 0xFFFFFFFFu)))), one);
+  const __m256i s1 = _mm256_and_si256(
+      _mm256_srlv_epi64(sv, _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(static_cast<int>(pre >> 32)))), one);
+  const __m256i n0 = _mm256_sub_epi64(zero, s0), n1 = _mm256_sub_epi64(zero, s1);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_sub_epi64(_mm256_xor_si256(m0, n0), n0));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + 4), _mm256_sub_epi64(_mm256_xor_si256(m1, n1), n1));
+  return bp + static_cast<std::uint64_t>(__builtin_popcount(nz));
+}
+}  // namespace
+
+__attribute__((target("avx2"))) std::uint64_t unpack_dense_avx2(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                                std::int64_t* out) noexcept {
+  return dense8_avx2(base, bp, k, out);
+}
+
+std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab,
+                               int masks) {
   if (band.orientation == 0) return {};
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t w = band.hi[0] - band.lo[0], h = band.hi[1] - band.lo[1];
@@ -250,7 +346,7 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
     bool fixed, mask;  // mask: in the second rANS stream M
   };
   std::vector<Event> events;
-  BitWriter bits;
+  BitWriter bits[2];  // without masks (dense groups), with masks
   for (std::size_t z = slab.z0; z < slab.z1; ++z)
     for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
       const std::size_t r = (z - slab.z0) * h + (y - band.lo[1]);
@@ -280,17 +376,22 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
           events.push_back({static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(mask & 15), true, true});
           events.push_back({static_cast<std::uint8_t>(c + 1), static_cast<std::uint8_t>(mask >> 4), true, true});
         }
-        pack_group(bits, row + g * kPackGroup, n, k);
+        pack_group(bits[0], row + g * kPackGroup, n, k, false);
+        pack_group(bits[1], row + g * kPackGroup, n, k, true);
       }
     }
-  const std::string packed = bits.finish();
+  const std::string packed[2] = {bits[0].finish(), bits[1].finish()};
   std::string best;
-  for (int map = 0; map < kContextMaps; ++map) {
+  for (int variant = 0; variant < 2 * kContextMaps; ++variant) {
+    const int map = variant % kContextMaps;
+    const bool masked = variant >= kContextMaps;
+    if (masks >= 0 && masked != (masks == 1)) continue;
     const auto& ctx = kContextOf[static_cast<std::size_t>(map)];
     auto table_of = [&](const Event& e) { return e.fixed ? e.s : ctx[e.s]; };
     std::vector<std::array<std::uint32_t, kRansAlphabet>> counts(kTables);
     for (auto& c : counts) c.fill(0);
-    for (const auto& e : events) ++counts[table_of(e)][e.symbol];
+    for (const auto& e : events)
+      if (masked || !e.mask) ++counts[table_of(e)][e.symbol];
     std::vector<RansTable> tables(kTables);
     bool ok = true;
     for (int t = 0; t < kTables && ok; ++t)
@@ -303,18 +404,19 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
     // state updates through the masks runs beside the one through the widths.
     RansEncoder enc, menc;
     for (auto it = events.rbegin(); it != events.rend(); ++it) {
+      if (it->mask && !masked) continue;
       const RansTable& tab = tables[table_of(*it)];
       (it->mask ? menc : enc).put(tab.cum[it->symbol], tab.freq[it->symbol]);
     }
     const std::string d = desc.finish(), t = enc.finish(), m = menc.finish();
-    std::string out(1, static_cast<char>(map));
+    std::string out(1, static_cast<char>(variant));  // map + 3 * masked
     little_endian::put_varint(out, d.size());
     little_endian::put_varint(out, t.size());
     little_endian::put_varint(out, m.size());
     out += d;
     out += t;
     out += m;
-    out += packed;
+    out += packed[masked];
     if (best.empty() || out.size() < best.size()) best = std::move(out);
   }
   return best;
@@ -326,16 +428,24 @@ struct ScalarUnpack {
   static std::uint64_t group(const std::uint8_t* base, std::uint64_t bp, int k, int mask, std::int64_t* out) noexcept {
     return unpack_generic(base, bp, k, mask, kPackGroup, out);
   }
+  static std::uint64_t dense(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept {
+    return dense8_scalar(base, bp, k, out);
+  }
 };
 struct Avx2Unpack {
   __attribute__((target("avx2"))) static std::uint64_t group(const std::uint8_t* base, std::uint64_t bp, int k,
                                                              int mask, std::int64_t* out) noexcept {
     return unpack8_avx2(base, bp, k, mask, out);
   }
+  __attribute__((target("avx2"))) static std::uint64_t dense(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                             std::int64_t* out) noexcept {
+    return dense8_avx2(base, bp, k, out);
+  }
 };
 
 struct PackedTables {
   const std::uint8_t* context_of = nullptr;  // s -> class (the slab's map)
+  bool masked = false;                       // groups carry a mask of their non-zeros
   std::array<const RansEntry*, kPackContexts> token{};
   std::array<const RansEntry*, kMaskTables> mask{};
   std::array<std::uint32_t, 4> row_f0{};
@@ -381,6 +491,11 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::s
         if (k == 0) continue;  // the positions are zero already
         // Checked per group, so the unpacking never reads past the padding.
         if (k > max_width || bp > nbits) return false;
+        if (!tab.masked) {  // the same for the whole slab: predicted
+          if (g < full) bp = Unpack::dense(base, bp, k, row + g * kPackGroup);
+          else bp = unpack_dense_partial(base, bp, k, tail, row + g * kPackGroup);
+          continue;
+        }
         const RansEntry* const* mt = &tab.mask[2 * static_cast<std::size_t>(kWidthClass[static_cast<std::size_t>(k)])];
         const int lo = mdec.get(mt[0]);
         const int mask = lo | (mdec.get(mt[1]) << 4);
@@ -414,9 +529,10 @@ __attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::s
 void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                         const Slab& slab, int limit, RowList& rows, bool avx2) {
   if (band.orientation == 0) corrupt(band, slab);  // never written for the approximation
-  if (bytes.empty() || static_cast<std::uint8_t>(bytes[0]) >= kContextMaps) corrupt(band, slab);
+  if (bytes.empty() || static_cast<std::uint8_t>(bytes[0]) >= 2 * kContextMaps) corrupt(band, slab);
   PackedTables tab;
-  tab.context_of = kContextOf[static_cast<std::uint8_t>(bytes[0])].data();
+  tab.context_of = kContextOf[static_cast<std::uint8_t>(bytes[0]) % kContextMaps].data();
+  tab.masked = static_cast<std::uint8_t>(bytes[0]) >= kContextMaps;
   std::size_t pos = 1;
   auto varint = [&]() {
     std::uint64_t v = 0;

@@ -33,10 +33,11 @@ constexpr std::size_t kPackSlack = 80;
 int pack_width(const std::int64_t* v, int n) noexcept;
 // Bit i set when v[i] is non-zero (coded as two 4-bit rANS symbols).
 int pack_mask(const std::int64_t* v, int n) noexcept;
-// Appends the bits of n values of width k (|v| < 2^k): the non-zero magnitudes in k bits
-// each (none for k = 1: they are all 1), then a sign bit (1 = negative) per non-zero
+// Appends the bits of n values of width k (|v| < 2^k): `masked` (the mask is coded in
+// the rANS stream): the non-zero magnitudes in k bits each (none for k = 1: they are all
+// 1); else all n magnitudes in k bits each; then a sign bit (1 = negative) per non-zero
 // value, in order. Nothing for k = 0.
-void pack_group(BitWriter& w, const std::int64_t* v, int n, int k);
+void pack_group(BitWriter& w, const std::int64_t* v, int n, int k, bool masked);
 
 // Unpacks a group of kPackGroup values of width k (1..63) and non-zero mask `mask`
 // starting at bit `bp` of `base` (bits low first, as BitWriter writes them) into
@@ -51,11 +52,19 @@ bool packed_avx2_available() noexcept;
 // The same for a group of n < kPackGroup values (the end of a row; mask < 2^n).
 std::uint64_t unpack_partial(const std::uint8_t* base, std::uint64_t bp, int k, int mask, int n,
                              std::int64_t* out) noexcept;
+// The same for groups packed without a mask (dense slabs).
+std::uint64_t unpack_dense_scalar(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept;
+std::uint64_t unpack_dense_avx2(const std::uint8_t* base, std::uint64_t bp, int k, std::int64_t* out) noexcept;
+std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n,
+                                   std::int64_t* out) noexcept;
 
-// Codes a detail band's slab as a packed slab (without the mode byte). Empty for the
+// Codes a detail band's slab as a packed slab (without the mode byte): masks 0 without
+// masks (dense groups: fastest to decode), 1 with them (smaller for sparse data), -1
+// whichever is smaller; each with the smallest of the three context maps. Empty for the
 // approximation band (its prediction needs the previous value: the context coders keep
 // it) and when a token table cannot be written (normalise_table).
-std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab);
+std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab,
+                               int masks = -1);
 
 // Decodes what encode_packed_slab wrote into `data` (positions in the slab zero on
 // entry), appends the rows coded as non-zero to `rows` (as decode_slab does), and

@@ -42,44 +42,51 @@ std::vector<std::int64_t> make_group(std::mt19937_64& rng, int n, int k, double 
 
 TEST(WaveletPacked, GroupsOfEveryWidthRoundTripScalarAndAvx2Alike) {
   std::mt19937_64 rng(17);
-  for (double density : {0.05, 0.3, 1.0}) {
-    std::vector<std::vector<std::int64_t>> groups;
-    std::vector<int> widths;
-    BitWriter w;
-    for (int rep = 0; rep < 4; ++rep)
-      for (int k = 0; k <= 63; ++k)
-        for (int n : {kPackGroup, 1, 5}) {
-          groups.push_back(make_group(rng, n, k, density));
-          ASSERT_EQ(pack_width(groups.back().data(), n), k);
-          widths.push_back(k);
-          pack_group(w, groups.back().data(), n, k);
+  for (bool masked : {false, true})
+    for (double density : {0.05, 0.3, 1.0}) {
+      std::vector<std::vector<std::int64_t>> groups;
+      std::vector<int> widths;
+      BitWriter w;
+      for (int rep = 0; rep < 4; ++rep)
+        for (int k = 0; k <= 63; ++k)
+          for (int n : {kPackGroup, 1, 5}) {
+            groups.push_back(make_group(rng, n, k, density));
+            ASSERT_EQ(pack_width(groups.back().data(), n), k);
+            widths.push_back(k);
+            pack_group(w, groups.back().data(), n, k, masked);
+          }
+      std::string bytes = w.finish();
+      const std::size_t size = bytes.size();
+      bytes.append(kPackSlack, '\0');
+      const auto* base = reinterpret_cast<const std::uint8_t*>(bytes.data());
+      std::uint64_t bs = 0, bv = 0;
+      for (std::size_t g = 0; g < groups.size(); ++g) {
+        const int k = widths[g], n = static_cast<int>(groups[g].size());
+        if (k == 0) continue;
+        std::int64_t a[kPackGroup] = {}, b[kPackGroup] = {};
+        const int mask = pack_mask(groups[g].data(), n);
+        const bool avx2 = packed_avx2_available();
+        if (n == kPackGroup && masked) {
+          bs = unpack_group_scalar(base, bs, k, mask, a);
+          bv = avx2 ? unpack_group_avx2(base, bv, k, mask, b) : unpack_group_scalar(base, bv, k, mask, b);
+        } else if (n == kPackGroup) {
+          bs = unpack_dense_scalar(base, bs, k, a);
+          bv = avx2 ? unpack_dense_avx2(base, bv, k, b) : unpack_dense_scalar(base, bv, k, b);
+        } else if (masked) {
+          bs = unpack_partial(base, bs, k, mask, n, a);
+          bv = unpack_partial(base, bv, k, mask, n, b);
+        } else {
+          bs = unpack_dense_partial(base, bs, k, n, a);
+          bv = unpack_dense_partial(base, bv, k, n, b);
         }
-    std::string bytes = w.finish();
-    const std::size_t size = bytes.size();
-    bytes.append(kPackSlack, '\0');
-    const auto* base = reinterpret_cast<const std::uint8_t*>(bytes.data());
-    std::uint64_t bs = 0, bv = 0;
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      const int k = widths[g], n = static_cast<int>(groups[g].size());
-      if (k == 0) continue;
-      std::int64_t a[kPackGroup] = {}, b[kPackGroup] = {};
-      const int mask = pack_mask(groups[g].data(), n);
-      if (n == kPackGroup) {
-        bs = unpack_group_scalar(base, bs, k, mask, a);
-        if (packed_avx2_available()) bv = unpack_group_avx2(base, bv, k, mask, b);
-        else bv = unpack_group_scalar(base, bv, k, mask, b);
-      } else {
-        bs = unpack_partial(base, bs, k, mask, n, a);
-        bv = unpack_partial(base, bv, k, mask, n, b);
+        ASSERT_EQ(bs, bv) << "group " << g << " width " << k << " masked " << masked;
+        for (int i = 0; i < n; ++i) {
+          ASSERT_EQ(a[i], groups[g][static_cast<std::size_t>(i)]) << "group " << g << " width " << k << " value " << i;
+          ASSERT_EQ(b[i], a[i]);
+        }
       }
-      ASSERT_EQ(bs, bv) << "group " << g << " width " << k;
-      for (int i = 0; i < n; ++i) {
-        ASSERT_EQ(a[i], groups[g][static_cast<std::size_t>(i)]) << "group " << g << " width " << k << " value " << i;
-        ASSERT_EQ(b[i], a[i]);
-      }
+      EXPECT_EQ((bs + 7) / 8, size);
     }
-    EXPECT_EQ((bs + 7) / 8, size);
-  }
   if (!packed_avx2_available()) GTEST_SKIP() << "no AVX2 here: the scalar unpacker alone was checked";
 }
 
