@@ -11,8 +11,12 @@
 // unpacking (a shift and a mask per coefficient, four at a time with AVX2 gathers):
 // there is no per-coefficient context chain, which is what the context coders wait on.
 //
-// Bytes of a packed slab (after its mode byte): varint lengths of the table description
-// D and the rANS stream T, then D, T, and the packed bits P to the end.
+// Bytes of a packed slab (after its mode byte): a variant byte (context map, masks or
+// not), varint lengths of the table description D and the rANS streams T (row flags,
+// widths) and M (masks), then D, T, M, and the packed bits P to the end (fest-vw(5)).
+// A slab is packed either without masks (all magnitudes of a group in k bits: fastest
+// to decode) or with them (smaller where groups are sparse); the encoder keeps what
+// encode_slab's policy asks for.
 
 #include <cstdint>
 #include <string>
