@@ -96,7 +96,8 @@ constexpr int kMaskTables = 8;
 constexpr int kMaskAlphabet = 16;
 constexpr std::array<std::uint8_t, 64> make_width_classes() {
   std::array<std::uint8_t, 64> t{};
-  for (int k = 0; k < 64; ++k) t[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(k <= 1 ? 0 : k == 2 ? 1 : k <= 4 ? 2 : 3);
+  for (int k = 0; k < 64; ++k)
+    t[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(k <= 1 ? 0 : k == 2 ? 1 : k <= 4 ? 2 : 3);
   return t;
 }
 constexpr std::array<std::uint8_t, 64> kWidthClass = make_width_classes();
@@ -221,8 +222,10 @@ __attribute__((target("avx2"))) inline std::uint64_t unpack8_avx2(const std::uin
   const __m256i one = _mm256_set1_epi64x(1);
   const __m256i mv = _mm256_set1_epi64x(mask);
   const __m256i zero = _mm256_setzero_si256();
-  const __m256i nz0 = _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(mv, _mm256_setr_epi64x(0, 1, 2, 3)), one));
-  const __m256i nz1 = _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(mv, _mm256_setr_epi64x(4, 5, 6, 7)), one));
+  const __m256i nz0 =
+      _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(mv, _mm256_setr_epi64x(0, 1, 2, 3)), one));
+  const __m256i nz1 =
+      _mm256_sub_epi64(zero, _mm256_and_si256(_mm256_srlv_epi64(mv, _mm256_setr_epi64x(4, 5, 6, 7)), one));
   m0 = _mm256_and_si256(m0, nz0);
   m1 = _mm256_and_si256(m1, nz1);
   const int count = __builtin_popcount(static_cast<unsigned>(mask));
@@ -244,7 +247,8 @@ __attribute__((target("avx2"))) std::uint64_t unpack_group_avx2(const std::uint8
 
 // Dense groups (a slab without masks): all n magnitudes in k bits, then a sign bit per
 // non-zero one.
-std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n, std::int64_t* out) noexcept {
+std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n,
+                                   std::int64_t* out) noexcept {
   std::uint64_t m[kPackGroup];
   for (int i = 0; i < n; ++i) m[i] = read_wide(base, bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k), k);
   bp += static_cast<std::uint64_t>(n) * static_cast<unsigned>(k);
@@ -285,14 +289,12 @@ std::uint64_t unpack_dense_scalar(const std::uint8_t* base, std::uint64_t bp, in
   return dense8_scalar(base, bp, k, out);
 }
 
-
-// Four lanes per instruction: the eight bit positions bp + i k, a gather of the 64 bits
+// Dense, four lanes per instruction: the eight bit positions bp + i k, a gather of the 64 bits
 // at each position's byte, a variable shift and the mask; the sign of lane i is bit
 // (number of non-zero lanes before i) of the sign bits, from kSignPrefix.
 namespace {
-__attribute__((target("avx2"))) inline std::uint64_t dense8_avx2(const std::uint8_t* base,
-                                                                                std::uint64_t bp, int k,
-                                                                                std::int64_t* out) noexcept {
+__attribute__((target("avx2"))) inline std::uint64_t dense8_avx2(const std::uint8_t* base, std::uint64_t bp, int k,
+                                                                std::int64_t* out) noexcept {
   if (k > 57) return unpack_dense_partial(base, bp, k, kPackGroup, out);
   const __m256i kk = _mm256_set1_epi64x(k);
   const __m256i p0 = _mm256_add_epi64(_mm256_set1_epi64x(static_cast<long long>(bp)),
@@ -354,7 +356,8 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
       const bool all_zero = std::all_of(row, row + w, [](std::int64_t v) { return v == 0; });
       const int up_zero = y > band.lo[1] ? zero_rows[r - 1] : 1;
       const int back_zero = z > slab.z0 ? zero_rows[r - h] : 1;
-      events.push_back({static_cast<std::uint8_t>(kRowTable0 + up_zero + 2 * back_zero), static_cast<std::uint8_t>(all_zero), true, false});
+      events.push_back({static_cast<std::uint8_t>(kRowTable0 + up_zero + 2 * back_zero),
+                        static_cast<std::uint8_t>(all_zero), true, false});
       if (all_zero) {
         zero_rows[r] = 1;
         continue;
@@ -456,9 +459,8 @@ struct PackedTables {
 // (its address never escapes), so its state can stay in registers.
 template <typename Unpack>
 inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::string_view masks,
-                                                       const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data,
-                                                       const Dims& dims, const Subband& band, const Slab& slab,
-                                                       int limit, std::vector<std::uint8_t>& zero_rows) {
+                        const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data, const Dims& dims,
+                        const Subband& band, const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t w = band.hi[0] - band.lo[0], h = band.hi[1] - band.lo[1];
   const std::size_t full = w / kPackGroup, groups = (w + kPackGroup - 1) / kPackGroup;
@@ -512,15 +514,16 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::s
 
 // flatten: everything inlined here, the AVX2 unpacking included (a template cannot carry
 // the target, so the instantiation alone could not inline it).
-__attribute__((target("avx2"), flatten)) bool decode_rows_avx2(const PackedTables& tab, std::string_view tokens, std::string_view masks,
-                                                      const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data,
-                                                      const Dims& dims, const Subband& band, const Slab& slab, int limit,
-                                                      std::vector<std::uint8_t>& zero_rows) {
+__attribute__((target("avx2"), flatten)) bool decode_rows_avx2(
+    const PackedTables& tab, std::string_view tokens, std::string_view masks, const std::uint8_t* base,
+    std::uint64_t nbits, std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab, int limit,
+    std::vector<std::uint8_t>& zero_rows) {
   return decode_rows<Avx2Unpack>(tab, tokens, masks, base, nbits, data, dims, band, slab, limit, zero_rows);
 }
-__attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::string_view tokens, std::string_view masks, const std::uint8_t* base, std::uint64_t nbits,
-                        std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab, int limit,
-                        std::vector<std::uint8_t>& zero_rows) {
+__attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::string_view tokens,
+                                                 std::string_view masks, const std::uint8_t* base, std::uint64_t nbits,
+                                                 std::int64_t* data, const Dims& dims, const Subband& band,
+                                                 const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows) {
   return decode_rows<ScalarUnpack>(tab, tokens, masks, base, nbits, data, dims, band, slab, limit, zero_rows);
 }
 
@@ -587,8 +590,10 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   const std::uint64_t nbits = 8 * static_cast<std::uint64_t>(packed.size());
   const std::size_t h = band.hi[1] - band.lo[1];
   std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
-  const bool ok = avx2 && packed_avx2_available() ? decode_rows_avx2(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
-                       : decode_rows_scalar(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
+  const bool ok =
+      avx2 && packed_avx2_available()
+          ? decode_rows_avx2(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
+          : decode_rows_scalar(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
   if (!ok) corrupt(band, slab);
   for (std::size_t r = 0; r < zero_rows.size(); ++r)
     if (!zero_rows[r]) rows.push_back(band.lo[1] + r % h + dims[1] * (slab.z0 + r / h));
