@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
+#include "wavelet/packed_coder.hpp"
 #include "wavelet/range_coder.hpp"
 #include "wavelet/rans.hpp"
 
@@ -180,8 +181,9 @@ const std::vector<int>& table_alphabets() {
   return a;
 }
 
-// Slab modes (the first byte of a slab's bytes, format version 3).
-constexpr char kAdaptiveSlab = 0, kStaticSlab = 1;
+// Slab modes (the first byte of a slab's bytes; format version 3: 0 and 1, version 4
+// adds 2).
+constexpr char kAdaptiveSlab = 0, kStaticSlab = 1, kPackedSlab = 2;
 
 // The static coding of a slab: the same walk and contexts as the adaptive one; the
 // symbols go to two rANS streams (T: row flags and tokens, the next context waits for
@@ -279,15 +281,46 @@ std::string encode_adaptive(const std::int64_t* data, const Dims& dims, const Su
 
 }  // namespace
 
-// Both codings, the smaller kept (the static one on a tie: it decodes faster).
+// Both context codings, the smaller kept (the static one on a tie: it decodes faster);
+// then a packed coding instead (it decodes several times faster than either,
+// docs/volwave.md §4 "Packed slabs"): with packed_slack 0, the smallest packed coding
+// when it is not larger; above 0, the fastest within (1 + packed_slack) times the
+// context coding's bytes -- without masks if that fits, else with them.
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
-                        const Slab& slab, SlabCoding coding) {
+                        const Slab& slab, SlabCoding coding, double packed_slack) {
+  auto packed = [&](int masks) {
+    std::string p = encode_packed_slab(data, dims, band, slab, masks);
+    if (!p.empty()) p.insert(p.begin(), kPackedSlab);
+    return p;
+  };
+  if (coding == SlabCoding::packed) {
+    std::string p = packed(-1);
+    if (!p.empty()) return p;
+    coding = SlabCoding::smaller;
+  }
   std::string fixed;
   if (coding != SlabCoding::adaptive) fixed = encode_static(data, dims, band, parent, slab);
   if (coding == SlabCoding::fixed && !fixed.empty()) return fixed;
-  std::string adaptive = encode_adaptive(data, dims, band, parent, slab);
-  if (!fixed.empty() && fixed.size() <= adaptive.size()) return fixed;
-  return adaptive;
+  std::string best = encode_adaptive(data, dims, band, parent, slab);
+  if (!fixed.empty() && fixed.size() <= best.size()) best = std::move(fixed);
+  if (coding == SlabCoding::smaller && packed_slack >= 0 && band.orientation != 0) {
+    const double budget = (1.0 + packed_slack) * static_cast<double>(best.size());
+    auto fits = [&](const std::string& p) { return !p.empty() && static_cast<double>(p.size()) <= budget; };
+    if (packed_slack == 0) {
+      std::string p = packed(-1);
+      if (fits(p)) return p;
+    } else {
+      // Dense unless masks save more than half the slack over it (sparse slabs: the
+      // plume's dense slabs are ~1.5 times its masked ones, the heads' at E = 16 ~1.1).
+      std::string dense = packed(0), masked = packed(1);
+      const bool dense_ok = fits(dense), masked_ok = fits(masked);
+      if (dense_ok && (!masked_ok || static_cast<double>(dense.size()) <=
+                                         (1.0 + packed_slack / 2) * static_cast<double>(masked.size())))
+        return dense;
+      if (masked_ok) return masked;
+    }
+  }
+  return best;
 }
 
 namespace {
@@ -594,11 +627,15 @@ SlabStreams split_streams(std::string_view bytes, const Subband& band, const Sla
 }  // namespace
 
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows) {
+                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows,
+                 bool packed_allowed) {
   const int limit = std::min(max_exponent, kMaxExponent);
   RowList local;
   RowList& rows = nonzero_rows ? *nonzero_rows : local;
-  if (bytes.empty() || (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab)) corrupt(band, slab);
+  if (bytes.empty()) corrupt(band, slab);
+  if (bytes[0] == kPackedSlab && packed_allowed)
+    return decode_packed_slab(bytes.substr(1), data, dims, band, slab, limit, rows);
+  if (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab) corrupt(band, slab);
   if (bytes[0] == kStaticSlab) return decode_static(bytes.substr(1), data, dims, band, parent, slab, limit, rows);
   const SlabStreams streams = split_streams(bytes.substr(1), band, slab);
   auto models = std::make_unique<Models>();

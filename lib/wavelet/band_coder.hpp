@@ -39,23 +39,28 @@ std::vector<Slab> slabs_of(const Subband& band);
 // the band's level is the coarsest.
 const Subband* parent_of(const std::vector<Subband>& bands, const Subband& band) noexcept;
 
-// How a slab is coded (format version 3: its first byte says which): with the adaptive
-// binary range coder, or with static rANS tables counted for the slab and stored with
-// it (one table lookup per coefficient to decode). `smaller` codes both and keeps the
-// smaller (static on a tie); the others force one, for tests.
-enum class SlabCoding { smaller, adaptive, fixed };
+// How a slab is coded (its first byte says which): with the adaptive binary range coder,
+// with static rANS tables counted for the slab and stored with it (format version 3), or
+// packed (format version 4, packed_coder.hpp: a width per group of 8 coefficients, then
+// their bits; detail bands only). `smaller` codes the two context codings and keeps the
+// smaller (static on a tie), then takes the packed coding instead when its bytes are at
+// most (1 + packed_slack) times that (packed_slack < 0: never); the others force one
+// (packed falls back to `smaller` for the approximation band), for tests.
+enum class SlabCoding { smaller, adaptive, fixed, packed };
 
 // Codes the coefficients of `band` in the z-range of `slab`, read from the pyramid
 // `data` (extent dims). `parent` may be null.
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
-                        const Slab& slab, SlabCoding coding = SlabCoding::smaller);
+                        const Slab& slab, SlabCoding coding = SlabCoding::smaller, double packed_slack = -1.0);
 
 // Decodes a slab into `data`, whose positions in the slab must be zero on entry (rows
 // coded as all zero are not written). Exponents above max_exponent, or a stream that
 // ends too early, throw fest::Error(bad_input) naming the band. `nonzero_rows`, when
 // given, gets the rows (y + dims[1] * z) coded as holding a non-zero appended: the
-// inverse transform skips the others (lifting.hpp).
+// inverse transform skips the others (lifting.hpp). `packed_allowed` false (files of
+// format version 3) refuses packed slabs as corrupt.
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows = nullptr);
+                 const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows = nullptr,
+                 bool packed_allowed = true);
 
 }  // namespace fest::wavelet

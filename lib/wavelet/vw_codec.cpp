@@ -260,12 +260,17 @@ std::string write_header(const VwHeader& h, const std::vector<std::uint8_t>& roi
 
 VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vector<std::uint8_t>* roi,
                       bool check_hash = true) {
-  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
-    if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a version-3 .vw file (versions 1 and 2 are no longer read)");
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 7) != 0) {
+    if (bytes.size() >= 3 && bytes.substr(1, 2) == "VW") throw bad_input("not a .vw file of version 3 or 4 (versions 1 and 2 are no longer read)");
     throw bad_input("not a .vw file (no \\x89VW magic)");
   }
+  const int version = static_cast<std::uint8_t>(bytes[7]);
+  if (version < kVwOldestReadVersion || version > kVwFormatVersion)
+    throw bad_input("not a .vw file of version 3 or 4 (version {}{})", version,
+                    version < kVwOldestReadVersion ? ": versions 1 and 2 are no longer read" : ": newer than this volwave");
   Reader r(bytes, ".vw header", 8);
   VwHeader h;
+  h.version = version;
   const int mode = r.u8(), wavelet = r.u8(), levels = r.u8(), type = r.u8(), kind = r.u8();
   h.max_exponent = r.u8();
   const int has_roi = r.u8();
@@ -503,7 +508,8 @@ std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats*
   std::vector<std::string> coded(all.size());
   ProgressCounter streams_coded(progress_part(o.progress, transformed_at, coded_at), all.size());
   parallel_for(all.size(), threads, [&](std::size_t i) {
-    coded[i] = encode_slab(coef.data(), h.dims, *all[i]->band, all[i]->parent, all[i]->slab);
+    coded[i] = encode_slab(coef.data(), h.dims, *all[i]->band, all[i]->parent, all[i]->slab, SlabCoding::smaller,
+                           o.packed_slack);
     streams_coded.step();
   });
   streams_coded.finish();
@@ -612,6 +618,36 @@ void reseal_vw(std::string& bytes, std::uint64_t max_voxels) {
   if (header.size() == h.header_bytes) bytes.replace(0, header.size(), header);
 }
 
+SlabCensus slab_census(std::string_view bytes) {
+  const VwHeader h = parse_header(bytes, kMaxVoxels, nullptr);
+  const auto bands = subbands(h.dims, h.levels);
+  const auto by_chunk = streams_by_chunk(bands, h.levels);
+  SlabCensus census;
+  std::size_t pos = h.header_bytes;
+  for (int k = 0; k <= h.levels; ++k) {
+    const std::uint64_t n = h.chunks[static_cast<std::size_t>(k)].bytes;
+    if (bytes.size() - pos < n) break;
+    const std::string_view chunk = bytes.substr(pos, n);
+    const auto& streams = by_chunk[static_cast<std::size_t>(k)];
+    Reader r(chunk, ".vw chunk");
+    std::size_t at = 4 * streams.size();
+    for (const Stream& s : streams) {
+      const std::uint32_t len = r.u32();
+      if (len > chunk.size() - std::min(at, chunk.size())) throw bad_input(".vw chunk {}: a stream runs past the chunk", k);
+      const auto mode = len ? static_cast<std::uint8_t>(chunk[at]) : 0xFF;
+      if (mode <= 2) {
+        const Subband& b = *s.band;
+        census.slabs[mode] += 1;
+        census.bytes[mode] += len;
+        census.coefficients[mode] += (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (s.slab.z1 - s.slab.z0);
+      }
+      at += len;
+    }
+    pos += n;
+  }
+  return census;
+}
+
 DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std::uint64_t max_voxels,
                        const ProgressFn& progress) {
   threads = std::max(1, threads);
@@ -659,7 +695,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
     std::vector<RowList> rows(streams.size());
     parallel_for(streams.size(), threads, [&](std::size_t s) {
       decode_slab(parts[s], coef, h.dims, *streams[s].band, streams[s].parent, streams[s].slab, h.max_exponent,
-                  &rows[s]);
+                  &rows[s], h.version >= 4);
       streams_decoded.step();
     });
     for (std::size_t s = 0; s < streams.size(); ++s) {

@@ -2,7 +2,7 @@
 // The .vw file (man/man5/fest-vw.5, docs/volwave.md §5): a volume coded by volwave.
 // Bytes <-> types only; no I/O.
 //
-//   header   magic "\x89VW\r\n\x1a\n\x03" (format version 3), mode, wavelet, levels, stored type, key kind,
+//   header   magic "\x89VW\r\n\x1a\n\x04" (format version 4; version 3 is still read), mode, wavelet, levels, stored type, key kind,
 //            largest coded exponent, dimensions, spacing, origin, direction, quantiser
 //            step and offset, the requested bound, and a table with one row per chunk:
 //            byte length, FNV-1a hash, and the L-infinity and RMS error of a volume
@@ -25,8 +25,16 @@
 
 namespace fest::wavelet {
 
-// The format version, the magic's last byte; `volwave info` reports it.
-inline constexpr int kVwFormatVersion = 3;
+// The format version written, the magic's last byte. Version 3 files (no packed slabs)
+// are still read; `volwave info` reports a file's own version.
+inline constexpr int kVwFormatVersion = 4;
+inline constexpr int kVwOldestReadVersion = 3;
+
+// The encoder's choice per detail-band slab (docs/volwave.md §4 "Packed slabs"): the
+// packed coding when its bytes are at most (1 + slack) times the smaller context coding.
+// The default (volwave --favour speed); slack 0 packs only where packing is not larger
+// (--favour size: the smallest file).
+inline constexpr double kPackedSlackSpeed = 0.50;
 
 enum class Mode : std::uint8_t { lossless = 0, max_error = 1, rmse = 2 };
 const char* mode_name(Mode m) noexcept;  // "lossless", "max-error", "rmse"
@@ -37,6 +45,9 @@ struct EncodeOptions {
   Wavelet wavelet = Wavelet::cdf53;
   int levels = -1;        // -1: default_levels()
   int threads = 1;
+  // Packed slabs: the slack allowed (kPackedSlackSpeed); < 0 never packs (the bytes
+  // version 3's coders alone give, in a version-4 container).
+  double packed_slack = kPackedSlackSpeed;
   // Region of interest coded with its own, tighter L-infinity bound (max_error mode):
   // the voxels whose mask byte is non-zero (mask empty: no region).
   std::vector<std::uint8_t> roi_mask;
@@ -54,6 +65,7 @@ struct ChunkInfo {
 };
 
 struct VwHeader {
+  int version = kVwFormatVersion;  // the magic's last byte
   Mode mode = Mode::max_error;
   Wavelet wavelet = Wavelet::cdf53;
   int levels = 0;
@@ -106,6 +118,14 @@ struct DecodeResult {
 // `progress` hears thousandths: the streams decoded, then the inverse transform.
 DecodeResult decode_vw(std::string_view bytes, int threads = 1, int max_chunks = -1,
                        std::uint64_t max_voxels = kMaxVoxels, const ProgressFn& progress = {});
+
+// How the coefficient slabs of the complete chunks are coded (`volwave info`): per slab
+// mode (0 adaptive, 1 static, 2 packed; fest-vw(5)) the number of slabs, their bytes and
+// the coefficients they hold. Throws bad_input for a damaged header or chunk table.
+struct SlabCensus {
+  std::array<std::uint64_t, 3> slabs{}, bytes{}, coefficients{};
+};
+SlabCensus slab_census(std::string_view bytes);
 
 // Recomputes the header's and the complete chunks' hashes in place (fuzzers use it to
 // get past the checksums to the parsers behind them). Leaves unparsable bytes alone.

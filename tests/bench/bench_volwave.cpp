@@ -6,7 +6,11 @@
 //   `repeat` single-thread encode/decode CPU times (and volwave's decode wall time on
 //   all cores, decode_wall_threads).
 //
-//   bench_volwave [--bounds 0.5,1,4] [--repeat 3] [--field NAME] [--frame N] VOLUME...
+//   bench_volwave [--bounds 0.5,1,4] [--repeat 3] [--slack 0.3] [--field NAME] [--frame N] VOLUME...
+//
+// --slack: the packed-slab slacks to measure, one volwave row each (EncodeOptions::
+// packed_slack; default kPackedSlackSpeed = --favour speed; 0 = --favour size; a
+// negative slack codes no packed slab, as format version 3's coders alone).
 
 #include <algorithm>
 #include <chrono>
@@ -90,6 +94,7 @@ void line(nlohmann::json j) { std::printf("%s\n", j.dump().c_str()); std::fflush
 int main(int argc, char** argv) {
   std::vector<double> bounds = {0.5, 1, 4, 16};
   int repeat = 3;
+  std::vector<double> slacks = {wavelet::kPackedSlackSpeed};
   std::vector<std::string> files;
   volwave_tool::InputSelect sel;
   for (int i = 1; i < argc; ++i) {
@@ -100,6 +105,14 @@ int main(int argc, char** argv) {
       for (std::size_t p = 0; p < s.size();) {
         const std::size_t q = s.find(',', p);
         bounds.push_back(std::stod(s.substr(p, q - p)));
+        p = q == std::string::npos ? s.size() : q + 1;
+      }
+    } else if (a == "--slack" && i + 1 < argc) {
+      slacks.clear();
+      std::string s = argv[++i];
+      for (std::size_t p = 0; p < s.size();) {
+        const std::size_t q = s.find(',', p);
+        slacks.push_back(std::stod(s.substr(p, q - p)));
         p = q == std::string::npos ? s.size() : q + 1;
       }
     } else if (a == "--repeat" && i + 1 < argc) {
@@ -183,17 +196,18 @@ int main(int argc, char** argv) {
 
       // ---- L-infinity bounds ----
       for (double e : bounds) {
-        {
+        for (double slack : slacks) {
           wavelet::EncodeOptions o;
           o.mode = wavelet::Mode::max_error;
           o.bound = e;
+          o.packed_slack = slack;
           std::string vw;
           const double te = best_of(1, [&] { vw = wavelet::encode_vw(v, o); });
           wavelet::DecodeResult d;
           const double td = best_of(repeat, [&] { d = wavelet::decode_vw(vw, 1); });
           const double tdn = best_of(repeat, [&] { (void)wavelet::decode_vw(vw, cores); }, true);
           nlohmann::json j = base;
-          j.update({{"codec", "volwave-cdf53"}, {"bound", e}, {"bytes", vw.size()}, {"ratio", rawn / vw.size()},
+          j.update({{"codec", "volwave-cdf53"}, {"bound", e}, {"packed_slack", slack}, {"bytes", vw.size()}, {"ratio", rawn / vw.size()},
                     {"max_error", max_abs(v.voxels, d.volume.voxels)}, {"encode_s", te}, {"decode_s", td},
                     {"decode_wall_threads", tdn}, {"threads", cores}});
           line(j);

@@ -127,6 +127,31 @@ run volwave decode "$golden" -o "$WORK/g.nrrd"
 expect_status 0
 check "golden decodes within 0.5" "$FC" "$WORK/smooth.nrrd" "$WORK/g.nrrd" --tol 0.5
 check "encoding again gives the golden bytes" cmp "$golden" "$WORK/full.vw"
+# Format version 3 (no packed slabs) is still read: the same quantised coefficients, so
+# the same voxels as the version-4 golden (the coders are lossless on coefficients).
+case_ "version 3 still decodes"
+run volwave decode "$FEST_FIXTURES/volwave/smooth_e0.5_v3.vw" -o "$WORK/g3.nrrd"
+expect_status 0
+check "version-3 golden decodes within 0.5" "$FC" "$WORK/smooth.nrrd" "$WORK/g3.nrrd" --tol 0.5
+check "version 3 and 4 decode to the same voxels" cmp "$WORK/g.nrrd" "$WORK/g3.nrrd"
+run volwave info "$FEST_FIXTURES/volwave/smooth_e0.5_v3.vw"
+expect_json '.version' 3
+expect_json '.slabs.packed.slabs' 0
+
+# --favour: packed slabs where they cost little (speed) or only where they are not
+# larger (size); the bound holds and the voxels are the same either way.
+for vol in smooth ct; do
+  for f in speed size; do
+    case_ "--favour $f on $vol"
+    run volwave encode "$WORK/$vol.nrrd" --max-error 1 --favour "$f" -o "$WORK/fv_$f.vw"
+    expect_status 0
+    run volwave decode "$WORK/fv_$f.vw" -o "$WORK/fv_$f.nrrd"
+    expect_status 0
+    check "max error <= 1 (fcompare)" "$FC" "$WORK/$vol.nrrd" "$WORK/fv_$f.nrrd" --tol 1
+  done
+  check "$vol: speed and size decode alike" cmp "$WORK/fv_speed.nrrd" "$WORK/fv_size.nrrd"
+  check "$vol: size is not larger" test "$(stat -c %s "$WORK/fv_size.vw")" -le "$(stat -c %s "$WORK/fv_speed.vw")"
+done
 
 # Edges of analytic volumes lie where the mathematics puts them, within half a voxel
 # (sub-voxel points in voxel coordinates from --points; the surfaces of volwave_make.py).
@@ -238,6 +263,13 @@ case_ "not a .vw"; run volwave decode "$WORK/smooth.nrrd" -o "$WORK/x.nrrd"; exp
 case_ "empty .vw"; : >"$WORK/e.vw"; run volwave decode "$WORK/e.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
 case_ "info on garbage"; run volwave info "$WORK/smooth.nrrd"; expect_clean_failure 3 volwave
 case_ "not a volume"; run volwave encode "$WORK/info.json" --max-error 1 -o "$WORK/x.vw"; expect_clean_failure 3 volwave
+case_ "bad --favour"; run volwave encode "$WORK/smooth.nrrd" --max-error 1 --favour fast -o "$WORK/x.vw"; expect_clean_failure 2 volwave
+expect_stderr_has "favour"
+case_ "version 5 .vw"
+python3 -c "
+b=bytearray(open('$WORK/full.vw','rb').read()); b[7]=5; open('$WORK/v5.vw','wb').write(b)"
+run volwave decode "$WORK/v5.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+expect_stderr_has "version 5"
 case_ "unknown flag"; run volwave encode --no-such-flag x; expect_clean_failure 2 volwave
 case_ "missing file"; run volwave encode "$WORK/none.nrrd" --max-error 1 -o "$WORK/x.vw"; expect_clean_failure 4 volwave
 

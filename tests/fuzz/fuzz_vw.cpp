@@ -1,12 +1,13 @@
 // Feeds bytes to the .vw decoder (volwave). The hashes would stop almost every mutation
 // at the door, so the target reseals the header and chunk hashes first and the fuzzer
-// explores the header parser, the chunk tables, the subband slabs of both kinds (format
-// version 3: adaptive range-coded slabs, and static slabs with their rANS table
-// descriptions and streams) and the outlier list behind them; start the corpus from real
-// .vw files (volwave encode output, e.g. tests/data/volwave/: smooth_lossless.vw and
-// sparse_lossless.vw hold static slabs, the others adaptive ones). A clean fest::Error is the only allowed failure; a file that
-// decodes must decode again to the same voxels, and truncations of it must decode or fail
-// cleanly too.
+// explores the header parser, the chunk tables, the subband slabs of every kind
+// (adaptive range-coded slabs, static slabs with their rANS table descriptions and
+// streams, and -- format version 4 -- packed slabs: width tokens and packed bits) and
+// the outlier list behind them; start the corpus from real .vw files (volwave encode
+// output, e.g. tests/data/volwave/: smooth_e0.5.vw is version 4 with packed slabs, the
+// others version 3; smooth_lossless.vw and sparse_lossless.vw hold static slabs). A
+// clean fest::Error is the only allowed failure; a file that decodes must decode again
+// to the same voxels, and truncations of it must decode or fail cleanly too.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>

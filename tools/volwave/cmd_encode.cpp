@@ -52,6 +52,7 @@ int encode_command(const EncodeOptions& o) {
   if (modes != 1) throw usage_error("give exactly one of --max-error, --rmse, --lossless");
   wavelet::EncodeOptions eo;
   eo.wavelet = o.wavelet;
+  eo.packed_slack = o.packed_slack;
   if (o.max_error) {
     if (!(*o.max_error > 0) || !std::isfinite(*o.max_error)) throw usage_error("--max-error must be positive, not {}", *o.max_error);
     eo.mode = wavelet::Mode::max_error;

@@ -29,7 +29,7 @@ int info_command(const InfoOptions& o) {
   const std::size_t voxels = h.dims[0] * h.dims[1] * h.dims[2];
   const double raw = static_cast<double>(voxels * scalar_type_size(h.type));
   nlohmann::json r = {{"format", "vw"},
-                      {"version", wavelet::kVwFormatVersion},
+                      {"version", h.version},
                       {"dimensions", h.dims},
                       {"spacing", h.spacing},
                       {"origin", h.origin},
@@ -50,6 +50,13 @@ int info_command(const InfoOptions& o) {
                       {"rmse", h.chunks.back().rmse},
                       {"chunks", chunks}};
   if (h.roi_step > 0) r["roi_bound"] = h.roi_bound;
+  // How the slabs of the complete chunks are coded (fest-vw(5) slab modes).
+  const wavelet::SlabCensus census = wavelet::slab_census(bytes);
+  const char* names[3] = {"adaptive", "static", "packed"};
+  for (int m = 0; m < 3; ++m)
+    r["slabs"][names[m]] = {{"slabs", census.slabs[static_cast<std::size_t>(m)]},
+                            {"bytes", census.bytes[static_cast<std::size_t>(m)]},
+                            {"coefficients", census.coefficients[static_cast<std::size_t>(m)]}};
   write_output("-", r.dump(2) + "\n");
   return 0;
 }

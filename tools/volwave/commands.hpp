@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "wavelet/lifting.hpp"
+#include "wavelet/vw_codec.hpp"
 
 namespace fest::volwave_tool {
 
@@ -26,6 +27,7 @@ struct EncodeOptions {
   std::optional<double> rmse;
   bool lossless = false;
   wavelet::Wavelet wavelet = wavelet::Wavelet::cdf53;  // --wavelet haar|cdf53|cdf97
+  double packed_slack = wavelet::kPackedSlackSpeed;    // --favour speed|size|SLACK (packed slabs)
   int levels = -1;
   std::vector<long> roi_box;  // x0,y0,z0,x1,y1,z1 voxel indices, inclusive
   std::string roi_mask;       // a volume; non-zero voxels are the region

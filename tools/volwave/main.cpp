@@ -1,6 +1,9 @@
 // volwave: wavelet compression of volumes under a stated error bound, and multiscale
 // edge maps (docs/volwave.md). Flags only; the subcommands live in cmd_*.cpp.
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include "cli/cli.hpp"
 #include "commands.hpp"
 
@@ -36,6 +39,27 @@ int main(int argc, char** argv) {
           throw fest::usage_error("--wavelet: unknown wavelet {} (haar, cdf53, cdf97)", w);
       },
       "haar, cdf53 (default) or cdf97 (--rmse only)");
+  e->add_option_function<std::string>(
+      "--favour",
+      [&enc](const std::string& f) {
+        if (f == "speed") {
+          enc.packed_slack = fest::wavelet::kPackedSlackSpeed;
+        } else if (f == "size") {
+          enc.packed_slack = 0.0;
+        } else {
+          std::size_t used = 0;
+          double v = 0;
+          try {
+            v = std::stod(f, &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          if (used != f.size() || !std::isfinite(v)) throw fest::usage_error("--favour: speed, size or a slack, not {}", f);
+          enc.packed_slack = v;
+        }
+      },
+      "speed (default), size, or a slack S: detail slabs are packed (fastest to decode) when that costs at most "
+      "S more bytes than context coding (speed: S = 0.50; size: 0; < 0: never)");
   e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(fest::cli::range(0, 16));
   e->add_option("--roi-box", enc.roi_box, "Region x0,y0,z0,x1,y1,z1 (voxel indices, inclusive) coded with --roi-error")
       ->delimiter(',')->expected(6)->allow_extra_args(false)->check(fest::cli::range(0, 2147483647));
