@@ -1,6 +1,6 @@
 #pragma once
 // What the processor can run, asked once: the one place where code with a hand-vectorised
-// path (lib/sampling's filters, lib/wavelet's lifting) learns whether AVX2 is there. A
+// path (lib/sampling's filters, lib/wavelet's lifting and packed slabs) learns whether AVX2 is there. A
 // function-local static, so that the answer is ready whenever it is first asked, even
 // from another translation unit's static initialiser.
 

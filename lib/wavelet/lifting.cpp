@@ -10,6 +10,7 @@
 #include <memory>
 #include <string_view>
 
+#include "core/cpu_features.hpp"
 #include "core/parallel_for.hpp"
 
 namespace fest::wavelet {
@@ -272,8 +273,6 @@ void haar_row(const std::int64_t* s, const std::int64_t* d, std::int64_t* e, std
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-const bool has_avx2 = __builtin_cpu_supports("avx2");
-
 __attribute__((target("avx2"))) inline __m256i floor_shift(__m256i v, int k) {
   const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
   return _mm256_xor_si256(_mm256_srli_epi64(_mm256_xor_si256(v, sign), k), sign);
@@ -315,19 +314,19 @@ __attribute__((target("avx2"))) void haar_row_avx2(const std::int64_t* s, const 
 
 void lift_even(const std::int64_t* s, const std::int64_t* l, const std::int64_t* r, std::int64_t* e, std::size_t w) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (has_avx2) return even_row_avx2(s, l, r, e, w);
+  if (cpu_has_avx2()) return even_row_avx2(s, l, r, e, w);
 #endif
   even_row(s, l, r, e, w);
 }
 void lift_odd(const std::int64_t* d, const std::int64_t* e, const std::int64_t* e2, std::int64_t* o, std::size_t w) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (has_avx2) return odd_row_avx2(d, e, e2, o, w);
+  if (cpu_has_avx2()) return odd_row_avx2(d, e, e2, o, w);
 #endif
   odd_row(d, e, e2, o, w);
 }
 void lift_haar(const std::int64_t* s, const std::int64_t* d, std::int64_t* e, std::int64_t* o, std::size_t w) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (has_avx2) return haar_row_avx2(s, d, e, o, w);
+  if (cpu_has_avx2()) return haar_row_avx2(s, d, e, o, w);
 #endif
   haar_row(s, d, e, o, w);
 }

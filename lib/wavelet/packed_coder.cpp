@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/cpu_features.hpp"
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
 #include "wavelet/rans.hpp"
@@ -188,10 +189,7 @@ std::uint64_t unpack_group_scalar(const std::uint8_t* base, std::uint64_t bp, in
   return unpack_generic(base, bp, k, mask, kPackGroup, out);
 }
 
-bool packed_avx2_available() noexcept {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-}
+bool packed_avx2_available() noexcept { return cpu_has_avx2(); }
 
 namespace {
 
