@@ -490,8 +490,11 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
     // decodes without a branch on the data, which is worth a little size: on the bench
     // meshes it is 1 % smaller to 2.5 % larger than version 2 (which adapts; 3's tables
     // are stored). Below 4096 coded vertices the tables weigh more, so both are coded and
-    // 3 is kept unless it is more than 1/32 larger; above, coding both would cost a fifth
-    // of the encoding time (docs/ebcode.md §6), so 3 is written.
+    // the smaller is kept (3 on a tie): such a mesh decodes in well under a millisecond
+    // either way, and its bytes are what a user compares (no larger than Draco's; with a
+    // slack of 1/32 in favour of 3, elephant-with-holes came out 32 bytes above it).
+    // Above, coding both would cost a fifth of the encoding time (docs/ebcode.md §6), so 3
+    // is written.
     std::optional<std::string> tokens;
     if (options.version == 2 && options.geom_version != 2) tokens = encode_position_tokens(q, plan, options.qp, options.predictor);
     std::size_t coded = 0;
@@ -502,7 +505,7 @@ std::string encode_ebm(const MeshSoup& mesh, const EncodeOptions& options, Encod
       geom_tokens = true;
     } else {
       geom = encode_positions(q, plan, options.qp, options.predictor, coding);
-      if (tokens && 32 * tokens->size() <= 33 * geom.size()) {
+      if (tokens && tokens->size() <= geom.size()) {
         geom = std::move(*tokens);
         geom_tokens = true;
       }

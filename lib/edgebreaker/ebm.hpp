@@ -44,7 +44,7 @@ struct EncodeOptions {
   int version = 2;  // .ebm major version written: 2 (compact container), or 1 for old readers
   // GEOM version in a version 2 container (ebm(5)): 0 writes 3 (residual tokens, .ebm
   // 2.1; quantised positions only), except on meshes below 4096 coded vertices where it is
-  // more than 1/32 larger than 2 (.ebm 2.0, as fest 0.2 wrote it); 2 or 3 forces one.
+  // larger than 2 (.ebm 2.0, as fest 0.2 wrote it); 2 or 3 forces one.
   int geom_version = 0;
 };
 

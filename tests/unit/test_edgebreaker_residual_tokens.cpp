@@ -141,11 +141,11 @@ TEST(EdgebreakerResidualTokens, WholeStreamsDecodeAsVersionTwo) {
     EXPECT_EQ(v21[8], 2);
     EXPECT_EQ(v21[9], 1);
     for (bool stitch : {true, false}) expect_same_mesh(decode_ebm(v21, stitch), decode_ebm(v20, stitch));
-    // Automatic on these small meshes (below 4096 coded vertices): version 3 unless its
-    // GEOM is more than 1/32 larger.
+    // Automatic on these small meshes (below 4096 coded vertices): the smaller GEOM, 3 on
+    // a tie.
     const std::string chosen = encode_ebm(mesh, options_of(h, 0));
     const std::size_t geom2 = read_ebm_header(v20).section_bytes.at("GEOM"), geom3 = read_ebm_header(v21).section_bytes.at("GEOM");
-    EXPECT_EQ(chosen, 32 * geom3 <= 33 * geom2 ? v21 : v20);
+    EXPECT_EQ(chosen, geom3 <= geom2 ? v21 : v20);
   }
 }
 
