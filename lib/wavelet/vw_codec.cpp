@@ -650,9 +650,14 @@ SlabCensus slab_census(std::string_view bytes) {
 
 DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std::uint64_t max_voxels,
                        const ProgressFn& progress) {
-  threads = std::max(1, threads);
   std::vector<std::uint8_t> roi;
   const VwHeader h = parse_header(bytes, max_voxels, &roi);
+  // At least 2^19 voxels a thread: parallel_for starts its threads on every call, and a
+  // decode makes dozens of calls (a slab loop per chunk, lifting steps per level and
+  // axis). On the 66^3 plume (287,496 voxels) two threads took 0.94 ms against one
+  // thread's 0.46 ms; the 7.1 M-voxel MRI head decodes 1.55x faster on two.
+  const std::uint64_t voxels = static_cast<std::uint64_t>(h.dims[0]) * h.dims[1] * h.dims[2];
+  threads = static_cast<int>(std::clamp<std::uint64_t>(voxels >> 19, 1, static_cast<std::uint64_t>(std::max(1, threads))));
   DecodeResult res;
   res.chunks_total = static_cast<int>(h.chunks.size());
   const int limit = max_chunks < 0 ? res.chunks_total : std::min(max_chunks, res.chunks_total);
