@@ -10,6 +10,7 @@
 #include "wavelet/packed_coder.hpp"
 #include "wavelet/range_coder.hpp"
 #include "wavelet/rans.hpp"
+#include "wavelet/slab_parts.hpp"
 
 namespace fest::wavelet {
 
@@ -549,20 +550,9 @@ bool decode_static_slab(std::string_view tokens, std::string_view signs, std::st
 // S, then D, T, S and the raw bits to the end. Throws for anything no encoder writes.
 void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                    const Subband* parent, const Slab& slab, int limit, RowList& rows) {
-  std::size_t pos = 0;
-  auto varint = [&]() {
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      if (pos >= bytes.size()) corrupt(band, slab);
-      const auto byte = static_cast<std::uint8_t>(bytes[pos++]);
-      v |= static_cast<std::uint64_t>(byte & 0x7F) << shift;
-      if (!(byte & 0x80)) return v;
-    }
-    corrupt(band, slab);
-  };
-  const std::uint64_t ld = varint(), lt = varint(), ls = varint();
-  if (ld > bytes.size() - pos || lt > bytes.size() - pos - ld || ls > bytes.size() - pos - ld - lt) corrupt(band, slab);
-  BitReader desc(bytes.substr(pos, ld));
+  const auto parts = slab_parts<3>(bytes);
+  if (!parts) corrupt(band, slab);
+  BitReader desc((*parts)[0]);
   std::vector<RansTable> tables;
   if (!read_tables(desc, tables, table_alphabets())) corrupt(band, slab);
   const auto& alphabets = table_alphabets();
@@ -592,8 +582,7 @@ void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims,
     tab[static_cast<std::size_t>(t)] = out;
     ++next;
   }
-  const std::string_view tokens = bytes.substr(pos + ld, lt), signs = bytes.substr(pos + ld + lt, ls),
-                         raw = bytes.substr(pos + ld + lt + ls);
+  const std::string_view tokens = (*parts)[1], signs = (*parts)[2], raw = (*parts)[3];
   bool ok;
   if (band.orientation == 0)
     ok = decode_static_slab<true, false>(tokens, signs, raw, tab.data(), f0.data(), data, dims, band, parent, slab, limit, rows);
@@ -607,21 +596,9 @@ void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims,
 // Splits a slab's bytes into its three streams (join_streams); throws for lengths that
 // run past the slab.
 SlabStreams split_streams(std::string_view bytes, const Subband& band, const Slab& slab) {
-  std::size_t pos = 0;
-  auto varint = [&]() {
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      if (pos >= bytes.size()) corrupt(band, slab);
-      const auto byte = static_cast<std::uint8_t>(bytes[pos++]);
-      v |= static_cast<std::uint64_t>(byte & 0x7F) << shift;
-      if (!(byte & 0x80)) return v;
-    }
-    corrupt(band, slab);
-  };
-  const std::uint64_t la = varint(), lb = varint();
-  if (la > bytes.size() - pos || lb > bytes.size() - pos - la) corrupt(band, slab);
-  const std::string_view a = bytes.substr(pos, la), b = bytes.substr(pos + la, lb), r = bytes.substr(pos + la + lb);
-  return SlabStreams{a, b, r};
+  const auto parts = slab_parts<2>(bytes);
+  if (!parts) corrupt(band, slab);
+  return SlabStreams{(*parts)[0], (*parts)[1], (*parts)[2]};
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
 #include "wavelet/rans.hpp"
+#include "wavelet/slab_parts.hpp"
 
 namespace fest::wavelet {
 
@@ -534,20 +535,9 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   PackedTables tab;
   tab.context_of = kContextOf[static_cast<std::uint8_t>(bytes[0]) % kContextMaps].data();
   tab.masked = static_cast<std::uint8_t>(bytes[0]) >= kContextMaps;
-  std::size_t pos = 1;
-  auto varint = [&]() {
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      if (pos >= bytes.size()) corrupt(band, slab);
-      const auto byte = static_cast<std::uint8_t>(bytes[pos++]);
-      v |= static_cast<std::uint64_t>(byte & 0x7F) << shift;
-      if (!(byte & 0x80)) return v;
-    }
-    corrupt(band, slab);
-  };
-  const std::uint64_t ld = varint(), lt = varint(), lm = varint();
-  if (ld > bytes.size() - pos || lt > bytes.size() - pos - ld || lm > bytes.size() - pos - ld - lt) corrupt(band, slab);
-  BitReader desc(bytes.substr(pos, ld));
+  const auto parts = slab_parts<3>(bytes.substr(1));
+  if (!parts) corrupt(band, slab);
+  BitReader desc((*parts)[0]);
   std::vector<RansTable> tables;
   if (!read_tables(desc, tables, alphabets())) corrupt(band, slab);
   // The width and mask tables as lookup tables (the ones that have symbols; an OR over
@@ -579,8 +569,7 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
     const auto& f = tables[static_cast<std::size_t>(kRowTable0 + t)].freq;
     tab.row_f0[static_cast<std::size_t>(t)] = f[0] == 0 && f[1] == 0 ? kRansTotal : f[0];
   }
-  const std::string_view tokens = bytes.substr(pos + ld, lt), masks = bytes.substr(pos + ld + lt, lm);
-  const std::string_view packed = bytes.substr(pos + ld + lt + lm);
+  const std::string_view tokens = (*parts)[1], masks = (*parts)[2], packed = (*parts)[3];
   // A copy with kPackSlack zero bytes after it: the unpacking loads 8 bytes at a time
   // without a test per value.
   std::vector<std::uint8_t> buf(packed.size() + kPackSlack, 0);
