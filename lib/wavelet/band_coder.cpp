@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "core/error.hpp"
-#include "core/little_endian.hpp"
 #include "wavelet/packed_coder.hpp"
 #include "wavelet/range_coder.hpp"
 #include "wavelet/rans.hpp"
@@ -134,19 +133,6 @@ std::int64_t approx_prediction(std::int64_t a, std::int64_t b, std::int64_t c, s
   return 0;
 }
 
-// The three parts of a slab's stream: varint(length of A), varint(length of B), A, B,
-// then the raw bits to the end. A holds the row flags, zero flags and exponents (the
-// decisions the next coefficient's context waits for), B the second bits and signs.
-std::string join_streams(const std::string& a, const std::string& b, const std::string& raw) {
-  std::string out;
-  little_endian::put_varint(out, a.size());
-  little_endian::put_varint(out, b.size());
-  out += a;
-  out += b;
-  out += raw;
-  return out;
-}
-
 void put_raw(BitWriter& w, std::uint64_t value, int count) {
   if (count > 32) {
     w.put(value >> 32, count - 32);
@@ -238,13 +224,7 @@ std::string encode_static(const std::int64_t* data, const Dims& dims, const Subb
   };
   const std::string d = desc.finish(), t = code(tev), s = code(sev);
   std::string out(1, kStaticSlab);
-  little_endian::put_varint(out, d.size());
-  little_endian::put_varint(out, t.size());
-  little_endian::put_varint(out, s.size());
-  out += d;
-  out += t;
-  out += s;
-  out += raw.finish();
+  append_slab_parts(out, {d, t, s}, raw.finish());
   return out;
 }
 
@@ -277,7 +257,12 @@ std::string encode_adaptive(const std::int64_t* data, const Dims& dims, const Su
          }
          side.encode(models->sign[sc], v < 0);
        });
-  return std::string(1, kAdaptiveSlab) + join_streams(enc.finish(), side.finish(), raw.finish());
+  // Two parts and the raw bits (slab_parts.hpp): A holds the row flags, zero flags and
+  // exponents (the decisions the next coefficient's context waits for), B the second
+  // bits and signs.
+  std::string out(1, kAdaptiveSlab);
+  append_slab_parts(out, {enc.finish(), side.finish()}, raw.finish());
+  return out;
 }
 
 }  // namespace
@@ -331,7 +316,7 @@ namespace {
                   band.orientation, slab.z0, slab.z1 - 1);
 }
 
-// The streams of a slab (join_streams) and their decoders.
+// The streams of a slab (append_slab_parts) and their decoders.
 struct SlabStreams {
   std::string_view main, side, raw;
 };
@@ -593,7 +578,7 @@ void decode_static(std::string_view bytes, std::int64_t* data, const Dims& dims,
   if (!ok) corrupt(band, slab);
 }
 
-// Splits a slab's bytes into its three streams (join_streams); throws for lengths that
+// Splits a slab's bytes into its three streams (append_slab_parts); throws for lengths that
 // run past the slab.
 SlabStreams split_streams(std::string_view bytes, const Subband& band, const Slab& slab) {
   const auto parts = slab_parts<2>(bytes);

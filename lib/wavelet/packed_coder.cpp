@@ -10,7 +10,6 @@
 
 #include "core/cpu_features.hpp"
 #include "core/error.hpp"
-#include "core/little_endian.hpp"
 #include "wavelet/rans.hpp"
 #include "wavelet/slab_parts.hpp"
 
@@ -244,13 +243,12 @@ __attribute__((target("avx2"))) std::uint64_t unpack_group_avx2(const std::uint8
   return unpack8_avx2(base, bp, k, mask, out);
 }
 
-// Dense groups (a slab without masks): all n magnitudes in k bits, then a sign bit per
-// non-zero one.
-std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n,
-                                   std::int64_t* out) noexcept {
-  std::uint64_t m[kPackGroup];
-  for (int i = 0; i < n; ++i) m[i] = read_wide(base, bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k), k);
-  bp += static_cast<std::uint64_t>(n) * static_cast<unsigned>(k);
+namespace {
+// The signs after a dense group's n magnitudes m: one bit per non-zero magnitude, from bit
+// bp on; writes the values and returns the position after the signs.
+__attribute__((always_inline)) inline std::uint64_t apply_dense_signs(const std::uint8_t* base, std::uint64_t bp,
+                                                                      const std::uint64_t* m, int n,
+                                                                      std::int64_t* out) noexcept {
   const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
   int used = 0;
   for (int i = 0; i < n; ++i) {
@@ -260,6 +258,17 @@ std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, i
     used += m[i] != 0;
   }
   return bp + static_cast<std::uint64_t>(used);
+}
+}  // namespace
+
+// Dense groups (a slab without masks): all n magnitudes in k bits, then a sign bit per
+// non-zero one.
+std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, int k, int n,
+                                   std::int64_t* out) noexcept {
+  std::uint64_t m[kPackGroup];
+  for (int i = 0; i < n; ++i) m[i] = read_wide(base, bp + static_cast<std::uint64_t>(i) * static_cast<unsigned>(k), k);
+  bp += static_cast<std::uint64_t>(n) * static_cast<unsigned>(k);
+  return apply_dense_signs(base, bp, m, n, out);
 }
 
 namespace {
@@ -273,14 +282,7 @@ __attribute__((always_inline)) inline std::uint64_t dense8_scalar(const std::uin
     m[i] = (load64(base + (p >> 3)) >> (p & 7)) & mask;
   }
   bp += static_cast<std::uint64_t>(kPackGroup) * static_cast<unsigned>(k);
-  const std::uint64_t signs = load64(base + (bp >> 3)) >> (bp & 7);
-  int used = 0;
-  for (int i = 0; i < kPackGroup; ++i) {
-    const std::uint64_t neg = (signs >> used) & 1;
-    out[i] = static_cast<std::int64_t>((m[i] ^ (0 - neg)) + neg);
-    used += m[i] != 0;
-  }
-  return bp + static_cast<std::uint64_t>(used);
+  return apply_dense_signs(base, bp, m, kPackGroup, out);
 }
 }  // namespace
 
@@ -412,13 +414,7 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
     }
     const std::string d = desc.finish(), t = enc.finish(), m = menc.finish();
     std::string out(1, static_cast<char>(variant));  // map + 3 * masked
-    little_endian::put_varint(out, d.size());
-    little_endian::put_varint(out, t.size());
-    little_endian::put_varint(out, m.size());
-    out += d;
-    out += t;
-    out += m;
-    out += packed[masked];
+    append_slab_parts(out, {d, t, m}, packed[masked]);
     if (best.empty() || out.size() < best.size()) best = std::move(out);
   }
   return best;

@@ -1,15 +1,26 @@
 #pragma once
 // Every coded slab (adaptive, static and packed; docs/volwave.md §4, fest-vw(5)) starts
 // with N varint lengths, then the N parts they measure, then the rest of its bytes (the
-// raw bits). One reader of that layout for the three decoders.
+// raw bits). One writer and one reader of that layout for the three coders.
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
+#include <string>
 #include <string_view>
 
+#include "core/little_endian.hpp"
+
 namespace fest::wavelet {
+
+// Appends the lengths of `parts`, the parts, then `rest` (whose length the reader infers).
+inline void append_slab_parts(std::string& out, std::initializer_list<std::string_view> parts, std::string_view rest) {
+  for (std::string_view p : parts) little_endian::put_varint(out, p.size());
+  for (std::string_view p : parts) out += p;
+  out += rest;
+}
 
 // The N parts and the rest, or nothing when a varint is longer than 64 bits or runs out,
 // or a part runs past the bytes (the caller names the corrupt band and slab).
