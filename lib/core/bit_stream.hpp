@@ -50,6 +50,11 @@ class BitReader {
     consumed_ += static_cast<std::uint64_t>(count);
     return v;
   }
+  // The next `count` (0..32) bits without reading them (get(count) returns the same).
+  __attribute__((always_inline)) std::uint64_t peek(int count) {
+    if (filled_ < count) refill();
+    return acc_ & ((std::uint64_t{1} << count) - 1);
+  }
   // More bits were read than the stream holds.
   bool overrun() const noexcept { return consumed_ > available_; }
   // Bits read so far (where a stream that continues after, say, its tables goes on).

@@ -11,12 +11,12 @@ int bit_width(std::uint32_t v) noexcept { return v == 0 ? 0 : 32 - __builtin_clz
 
 // A frequency as written: its bit length (1..12) and up to three bits below the leading
 // one; the bits further down are zero.
-std::uint32_t representable(std::uint32_t f) noexcept {
+std::uint32_t representable(std::uint32_t f, std::uint32_t total) noexcept {
   const int n = bit_width(f);
   if (n <= 4) return f;
   const int drop = n - 4;
   std::uint32_t r = ((f + (1u << (drop - 1))) >> drop) << drop;  // to nearest
-  return std::min<std::uint32_t>(r, kRansTotal);
+  return std::min<std::uint32_t>(r, total);
 }
 
 // Elias gamma of v >= 1: the bit length minus one in unary (ones, then a zero), then the
@@ -29,18 +29,22 @@ void put_gamma(BitWriter& w, std::uint32_t v) {
 }
 
 bool get_gamma(BitReader& r, std::uint32_t& v) {
-  int n = 0;
-  while (r.get(1)) {
-    if (++n > 12) return false;  // nothing written here is that long
-  }
+  // The unary part: the ones before the first zero (at most 12: nothing written here is
+  // longer), counted in one peek.
+  const int n = __builtin_ctzll(~r.peek(13));
+  if (n > 12) return false;
+  (void)r.get(n + 1);
   v = (1u << n) | static_cast<std::uint32_t>(r.get(n));
   return !r.overrun();
 }
 
 }  // namespace
 
-bool normalise_table(const std::uint32_t* counts, int alphabet, RansTable& out) {
-  out = RansTable{};
+bool normalise_table(const std::uint32_t* counts, int alphabet, RansTable& out, int bits) {
+  out.freq.fill(0);
+  out.cum.fill(0);
+  out.implied = 0;
+  const std::uint32_t scale = 1u << bits;
   std::uint64_t total = 0;
   int used = 0, largest = -1;
   for (int s = 0; s < alphabet; ++s) {
@@ -54,13 +58,13 @@ bool normalise_table(const std::uint32_t* counts, int alphabet, RansTable& out) 
   std::uint32_t sum = 0;
   for (int s = 0; s < alphabet; ++s) {
     if (!counts[s] || s == largest) continue;
-    const double exact = static_cast<double>(counts[s]) * kRansTotal / static_cast<double>(total);
-    const auto f = representable(std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(exact))));
+    const double exact = static_cast<double>(counts[s]) * scale / static_cast<double>(total);
+    const auto f = representable(std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(exact))), scale);
     out.freq[static_cast<std::size_t>(s)] = static_cast<std::uint16_t>(f);
     sum += f;
   }
-  if (sum >= kRansTotal) return false;
-  out.freq[static_cast<std::size_t>(largest)] = static_cast<std::uint16_t>(kRansTotal - sum);
+  if (sum >= scale) return false;
+  out.freq[static_cast<std::size_t>(largest)] = static_cast<std::uint16_t>(scale - sum);
   out.implied = largest;
   std::uint32_t cum = 0;
   for (int s = 0; s < alphabet; ++s) {
@@ -97,18 +101,24 @@ void write_tables(BitWriter& w, const std::vector<RansTable>& tables, const std:
   }
 }
 
-bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector<int>& alphabets) {
-  tables.assign(alphabets.size(), RansTable{});
+bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector<int>& alphabets, int bits) {
+  const std::uint32_t scale = 1u << bits;
+  tables.resize(alphabets.size());
   for (std::size_t t = 0; t < tables.size(); ++t) {
     RansTable& tab = tables[t];
+    const auto alphabet = static_cast<std::size_t>(alphabets[t]);
+    std::fill_n(tab.freq.begin(), alphabet, std::uint16_t{0});
+    std::fill_n(tab.cum.begin(), alphabet, std::uint16_t{0});
+    tab.implied = 0;
     std::uint32_t count = 0;
     if (!get_gamma(r, count)) return false;
     const std::uint32_t n = count - 1;
     if (n == 0) continue;
     if (n > static_cast<std::uint32_t>(alphabets[t])) return false;
-    std::vector<int> used(n);
+    std::array<int, kRansAlphabet> used;
     int prev = -1;
-    for (auto& s : used) {
+    for (std::uint32_t i = 0; i < n; ++i) {
+      int& s = used[i];
       std::uint32_t gap = 0;
       if (!get_gamma(r, gap)) return false;
       s = prev + static_cast<int>(gap);
@@ -125,15 +135,15 @@ bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector
     for (std::uint32_t i = 0; i < n; ++i) {
       if (i == implied) continue;
       const int len = static_cast<int>(r.get(4)) + 1;  // 1..16
-      if (len > kRansBits + 1) return false;
+      if (len > bits) return false;  // below the implied one's share: < 2^bits
       const int kept = std::min(len - 1, 3);
       const std::uint32_t top = static_cast<std::uint32_t>(r.get(kept)) | (1u << kept);
       const std::uint32_t f = top << (len - 1 - kept);
       sum += f;
-      if (sum >= kRansTotal) return false;
+      if (sum >= scale) return false;
       tab.freq[static_cast<std::size_t>(used[i])] = static_cast<std::uint16_t>(f);
     }
-    tab.freq[static_cast<std::size_t>(used[implied])] = static_cast<std::uint16_t>(kRansTotal - sum);
+    tab.freq[static_cast<std::size_t>(used[implied])] = static_cast<std::uint16_t>(scale - sum);
     tab.implied = used[implied];
     std::uint32_t cum = 0;
     for (int s = 0; s < alphabets[t]; ++s) {
@@ -144,7 +154,7 @@ bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector
   return !r.overrun();
 }
 
-void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out) {
+void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out, int /*bits: the frequencies say it*/) {
   for (int s = 0; s < alphabet; ++s) {
     const std::uint32_t f = t.freq[static_cast<std::size_t>(s)], c = t.cum[static_cast<std::size_t>(s)];
     const RansEntry base = static_cast<RansEntry>(s) | (f << 7);
@@ -152,13 +162,15 @@ void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out) {
   }
 }
 
-const RansEntry* identity_decode_table() {
-  static const std::array<RansEntry, kRansTotal> table = [] {
-    std::array<RansEntry, kRansTotal> t{};
-    for (std::uint32_t k = 0; k < kRansTotal; ++k) t[k] = (kRansTotal << 7) | (k << 19);
+const RansEntry* identity_decode_table(int bits) {
+  // One table per precision, 2^bits entries from offset 2^bits (4094 entries in all).
+  static const std::array<RansEntry, 2 * kRansTotal> tables = [] {
+    std::array<RansEntry, 2 * kRansTotal> t{};
+    for (int b = 0; b <= kRansBits; ++b)
+      for (std::uint32_t k = 0; k < (1u << b); ++k) t[(1u << b) + k] = ((1u << b) << 7) | (k << 19);
     return t;
   }();
-  return table.data();
+  return tables.data() + (std::size_t{1} << std::clamp(bits, 0, kRansBits));
 }
 
 }  // namespace fest::range_coding

@@ -28,38 +28,52 @@ constexpr int kRansBits = 11;
 constexpr std::uint32_t kRansTotal = 1u << kRansBits;  // the frequencies of a table sum to this
 constexpr std::uint32_t kRansLow = 1u << 16;           // the state's lower bound
 constexpr int kRansAlphabet = 128;                     // symbols 0..127
+// A coder may state a lower precision: frequencies in units of 1/2^bits, bits in
+// [kRansMinBits, kRansBits]. A decoding table has 2^bits entries, so a stream of a few
+// hundred symbols over a dozen contexts (a small slab) need not fill 2048 entries per
+// context to read them (docs/volwave.md §4, format version 5). Every step stays one
+// lookup, a multiply and an add, and still renormalises by at most one word: after a
+// step the state is >= 2^(16 - bits) >= 2^5, so one 16-bit shift restores >= 2^16.
+constexpr int kRansMinBits = 5;
 
 // One context's frequencies: freq[s] >= 1 for every symbol the slab codes in it, the sum
-// kRansTotal; cum[s] = freq[0] + ... + freq[s - 1].
+// kRansTotal (2^bits); cum[s] = freq[0] + ... + freq[s - 1]. Only the entries below the
+// table's alphabet are set (by normalise_table and read_tables): a decoder reads three
+// dozen tables per slab, and zeroing 128 entries of each was 4 % of a small volume's
+// decode.
 struct RansTable {
-  std::array<std::uint16_t, kRansAlphabet> freq{};
-  std::array<std::uint16_t, kRansAlphabet> cum{};
-  int implied = 0;  // the symbol whose frequency is kRansTotal minus the others'
+  RansTable() noexcept {}  // user-provided: a vector of tables is not zero-filled first
+  std::array<std::uint16_t, kRansAlphabet> freq;
+  std::array<std::uint16_t, kRansAlphabet> cum;
+  int implied = 0;  // the symbol whose frequency is 2^bits minus the others'
 };
 
-// Counts -> a RansTable whose frequencies can be written by write_tables (at most four
-// significant bits each, except the largest, which the reader infers from the sum).
-// Returns false when no such table exists (the caller then codes the slab adaptively).
-bool normalise_table(const std::uint32_t* counts, int alphabet, RansTable& out);
+// Counts -> a RansTable whose frequencies (summing to 2^bits) can be written by
+// write_tables (at most four significant bits each, except the largest, which the reader
+// infers from the sum). Returns false when no such table exists (more used symbols than
+// the precision has room for; the caller then codes another way).
+bool normalise_table(const std::uint32_t* counts, int alphabet, RansTable& out, int bits = kRansBits);
 
 // The tables of a slab, written as bits: per table the used symbols (gaps, Elias gamma),
 // which one has the implied frequency, and the others' frequencies (bit length in four
 // bits, then up to three bits below the leading one).
 void write_tables(BitWriter& w, const std::vector<RansTable>& tables, const std::vector<int>& alphabets);
 // Reads them back; false for a description no encoder writes (a symbol past the
-// alphabet, frequencies that do not sum to kRansTotal, reading past the end).
-bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector<int>& alphabets);
+// alphabet, frequencies that do not sum to 2^bits, reading past the end).
+bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector<int>& alphabets,
+                 int bits = kRansBits);
 
 class RansEncoder {
  public:
-  // Pushes one symbol with the interval [cum, cum + freq) of kRansTotal (freq >= 1).
+  explicit RansEncoder(int bits = kRansBits) : bits_(bits) {}
+  // Pushes one symbol with the interval [cum, cum + freq) of 2^bits (freq >= 1).
   void put(std::uint32_t cum, std::uint32_t freq) {
-    const std::uint64_t x_max = (std::uint64_t{kRansLow >> kRansBits} << 16) * freq;
+    const std::uint64_t x_max = (std::uint64_t{kRansLow >> bits_} << 16) * freq;
     if (x_ >= x_max) {
       words_.push_back(static_cast<std::uint16_t>(x_));
       x_ >>= 16;
     }
-    x_ = ((x_ / freq) << kRansBits) + (x_ % freq) + cum;
+    x_ = ((x_ / freq) << bits_) + (x_ % freq) + cum;
   }
   // The final state (4 bytes, little endian), then the words in the order the decoder
   // reads them.
@@ -74,43 +88,45 @@ class RansEncoder {
   }
 
  private:
+  int bits_;
   std::uint32_t x_ = kRansLow;
   std::vector<std::uint16_t> words_;
 };
 
-// A decoding table: kRansTotal entries per context, entry = symbol | freq << 7 |
+// A decoding table: 2^bits entries per context, entry = symbol | freq << 7 |
 // (slot - cum) << 19, so one load gives all a step needs.
 using RansEntry = std::uint32_t;
-void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out);
-// The table of a context that has no symbols: symbol 0 with frequency kRansTotal, a step
+void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out, int bits = kRansBits);
+// The table of a context that has no symbols: symbol 0 with frequency 2^bits, a step
 // that leaves the state as it is (a damaged stream that reaches such a context decodes
 // zeros and fails the final check instead of reading an unfilled table).
-const RansEntry* identity_decode_table();
+const RansEntry* identity_decode_table(int bits = kRansBits);
 
 class RansDecoder {
  public:
   // Keeps a copy of the stream with two zero bytes after it, so the renormalisation can
   // read a word without a test: past the end it reads those zeros.
-  explicit RansDecoder(std::string_view bytes) : buf_(bytes), n_(bytes.size()) {
+  explicit RansDecoder(std::string_view bytes, int bits = kRansBits)
+      : buf_(bytes), n_(bytes.size()), bits_(bits), slot_mask_((1u << bits) - 1) {
     buf_.append(2, '\0');
     p_ = reinterpret_cast<const std::uint8_t*>(buf_.data());
     for (std::size_t i = 0; i < 4 && i < n_; ++i) x_ |= static_cast<std::uint32_t>(p_[i]) << (8 * i);
     pos_ = 4;
   }
   __attribute__((always_inline)) int get(const RansEntry* table) {
-    const RansEntry e = table[x_ & (kRansTotal - 1)];
-    x_ = ((e >> 7) & 0xFFF) * (x_ >> kRansBits) + (e >> 19);
+    const RansEntry e = table[x_ & slot_mask_];
+    x_ = ((e >> 7) & 0xFFF) * (x_ >> bits_) + (e >> 19);
     renormalise();
     return static_cast<int>(e & 0x7F);
   }
-  // A binary symbol whose 0 has frequency f0 (0..kRansTotal), without a table: 1 when
-  // the slot lies at or above f0. f0 = kRansTotal (or 0) leaves the state as it is.
+  // A binary symbol whose 0 has frequency f0 (0..2^bits), without a table: 1 when the
+  // slot lies at or above f0. f0 = 2^bits (or 0) leaves the state as it is.
   __attribute__((always_inline)) int get_bit(std::uint32_t f0) {
-    const std::uint32_t slot = x_ & (kRansTotal - 1);
+    const std::uint32_t slot = x_ & slot_mask_;
     const bool one = slot >= f0;
-    const std::uint32_t freq = one ? kRansTotal - f0 : f0;
+    const std::uint32_t freq = one ? slot_mask_ + 1 - f0 : f0;
     const std::uint32_t bias = one ? slot - f0 : slot;
-    x_ = freq * (x_ >> kRansBits) + bias;
+    x_ = freq * (x_ >> bits_) + bias;
     renormalise();
     return static_cast<int>(one);
   }
@@ -130,6 +146,8 @@ class RansDecoder {
   std::string buf_;
   const std::uint8_t* p_ = nullptr;
   std::size_t n_;
+  int bits_;
+  std::uint32_t slot_mask_;
   std::size_t pos_ = 0;
   std::uint32_t x_ = 0;
 };

@@ -8,8 +8,7 @@
 #include <cstring>
 #include <limits>
 
-#include <zlib.h>
-
+#include "core/crc32.hpp"
 #include "core/error.hpp"
 #include "core/little_endian.hpp"
 #include "edgebreaker/prepare.hpp"
@@ -40,18 +39,6 @@ struct SectionErrors {
   const char* what;
 };
 using Reader = little_endian::Reader<SectionErrors>;
-
-std::uint32_t crc32_of(std::string_view bytes) {
-  uLong crc = crc32(0L, Z_NULL, 0);
-  // zlib takes uInt lengths: feed in chunks.
-  std::size_t pos = 0;
-  while (pos < bytes.size()) {
-    const std::size_t n = std::min<std::size_t>(bytes.size() - pos, 1u << 30);
-    crc = crc32(crc, reinterpret_cast<const Bytef*>(bytes.data() + pos), static_cast<uInt>(n));
-    pos += n;
-  }
-  return static_cast<std::uint32_t>(crc);
-}
 
 // ---- .ebm 2.x flags byte ----------------------------------------------------------------
 // bit 0 geometry, 1 exclusion, 2 holes, 3 stitch, 4 events, 5 isolated, 6 several

@@ -275,7 +275,7 @@ std::string encode_adaptive(const std::int64_t* data, const Dims& dims, const Su
 std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Subband* parent,
                         const Slab& slab, SlabCoding coding, double packed_slack) {
   auto packed = [&](int masks) {
-    std::string p = encode_packed_slab(data, dims, band, slab, masks);
+    std::string p = encode_packed_slab(data, dims, band, slab, masks, std::max(0.0, packed_slack));
     if (!p.empty()) p.insert(p.begin(), kPackedSlab);
     return p;
   };
@@ -590,13 +590,14 @@ SlabStreams split_streams(std::string_view bytes, const Subband& band, const Sla
 
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                  const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows,
-                 bool packed_allowed) {
+                 int format_version) {
   const int limit = std::min(max_exponent, kMaxExponent);
   RowList local;
   RowList& rows = nonzero_rows ? *nonzero_rows : local;
   if (bytes.empty()) corrupt(band, slab);
-  if (bytes[0] == kPackedSlab && packed_allowed)
-    return decode_packed_slab(bytes.substr(1), data, dims, band, slab, limit, rows);
+  if (bytes[0] == kPackedSlab && format_version >= 4)
+    return decode_packed_slab(bytes.substr(1), data, dims, band, slab, limit, rows, packed_avx2_available(),
+                              format_version >= 5);
   if (bytes[0] != kAdaptiveSlab && bytes[0] != kStaticSlab) corrupt(band, slab);
   if (bytes[0] == kStaticSlab) return decode_static(bytes.substr(1), data, dims, band, parent, slab, limit, rows);
   const SlabStreams streams = split_streams(bytes.substr(1), band, slab);

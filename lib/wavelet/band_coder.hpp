@@ -57,10 +57,11 @@ std::string encode_slab(const std::int64_t* data, const Dims& dims, const Subban
 // coded as all zero are not written). Exponents above max_exponent, or a stream that
 // ends too early, throw fest::Error(bad_input) naming the band. `nonzero_rows`, when
 // given, gets the rows (y + dims[1] * z) coded as holding a non-zero appended: the
-// inverse transform skips the others (lifting.hpp). `packed_allowed` false (files of
-// format version 3) refuses packed slabs as corrupt.
+// inverse transform skips the others (lifting.hpp). `format_version`, the .vw file's:
+// below 4 packed slabs are refused as corrupt, below 5 packed slabs stating a table
+// precision below 11 bits.
 void decode_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
                  const Subband* parent, const Slab& slab, int max_exponent, RowList* nonzero_rows = nullptr,
-                 bool packed_allowed = true);
+                 int format_version = 5);
 
 }  // namespace fest::wavelet

@@ -115,6 +115,35 @@ const std::vector<int>& alphabets() {
   return a;
 }
 
+// The first byte of a packed slab: the context map, masks or not, and (format version 5)
+// the table precision, 11 - bits in [0, kPrecisionSteps).
+constexpr int kPrecisionSteps = kRansBits - kRansMinBits + 1;
+constexpr int packed_variant(int map, bool masked, int bits) noexcept {
+  return map + kContextMaps * static_cast<int>(masked) + 2 * kContextMaps * (kRansBits - bits);
+}
+
+// Table precision for a slab decoded quickly: the decoder fills 2^bits entries per table
+// with symbols, then decodes each symbol with one lookup (a few ns, against a fraction of
+// a ns per entry filled). With 2^bits about four entries per symbol decoded, filling
+// costs a fifth of the decoding at most; 2048 entries per table are kept where the slab
+// has that many symbols per table (the heads' slabs), and lower precisions are what the
+// plume's 35 small slabs need (280 tables of 2048 entries filled to decode ~20,000
+// symbols). The row flags are read without a table and are not counted.
+int fast_precision(const std::vector<std::array<std::uint32_t, kRansAlphabet>>& counts) noexcept {
+  std::uint64_t symbols = 0;
+  int tables = 0;
+  for (int t = 0; t < kRowTable0; ++t) {
+    std::uint64_t n = 0;
+    for (std::uint32_t c : counts[static_cast<std::size_t>(t)]) n += c;
+    symbols += n;
+    tables += n > 0;
+  }
+  if (tables == 0) return kRansBits;
+  int bits = kRansMinBits;
+  while (bits < kRansBits && (std::uint64_t{1} << bits) * static_cast<std::uint64_t>(tables) < 4 * symbols) ++bits;
+  return bits;
+}
+
 [[noreturn]] void corrupt(const Subband& band, const Slab& slab) {
   throw bad_input("corrupt or truncated coefficient stream (level {} band {}, planes {}-{}, packed)", band.level,
                   band.orientation, slab.z0, slab.z1 - 1);
@@ -334,7 +363,7 @@ __attribute__((target("avx2"))) std::uint64_t unpack_dense_avx2(const std::uint8
 }
 
 std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab,
-                               int masks) {
+                               int masks, double precision_slack) {
   if (band.orientation == 0) return {};
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t w = band.hi[0] - band.lo[0], h = band.hi[1] - band.lo[1];
@@ -385,37 +414,55 @@ std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const
       }
     }
   const std::string packed[2] = {bits[0].finish(), bits[1].finish()};
-  std::string best;
-  for (int variant = 0; variant < 2 * kContextMaps; ++variant) {
-    const int map = variant % kContextMaps;
-    const bool masked = variant >= kContextMaps;
-    if (masks >= 0 && masked != (masks == 1)) continue;
-    const auto& ctx = kContextOf[static_cast<std::size_t>(map)];
-    auto table_of = [&](const Event& e) { return e.fixed ? e.s : ctx[e.s]; };
-    std::vector<std::array<std::uint32_t, kRansAlphabet>> counts(kTables);
+  // The symbol counts per table with one context map, with or without masks.
+  using Counts = std::vector<std::array<std::uint32_t, kRansAlphabet>>;
+  auto count = [&](const std::array<std::uint8_t, 256>& ctx, bool masked) {
+    Counts counts(kTables);
     for (auto& c : counts) c.fill(0);
     for (const auto& e : events)
-      if (masked || !e.mask) ++counts[table_of(e)][e.symbol];
+      if (masked || !e.mask) ++counts[e.fixed ? e.s : ctx[e.s]][e.symbol];
+    return counts;
+  };
+  // Codes the events at one table precision; empty when a table cannot be written at it.
+  auto code = [&](const Counts& counts, int map, bool masked, int precision) -> std::string {
     std::vector<RansTable> tables(kTables);
-    bool ok = true;
-    for (int t = 0; t < kTables && ok; ++t)
-      ok = normalise_table(counts[static_cast<std::size_t>(t)].data(), alphabets()[static_cast<std::size_t>(t)],
-                           tables[static_cast<std::size_t>(t)]);
-    if (!ok) continue;
+    for (int t = 0; t < kTables; ++t)
+      if (!normalise_table(counts[static_cast<std::size_t>(t)].data(), alphabets()[static_cast<std::size_t>(t)],
+                           tables[static_cast<std::size_t>(t)], precision))
+        return {};
     BitWriter desc;
     write_tables(desc, tables, alphabets());
     // Two rANS states: widths and row flags (T), masks (M), so that a decoder's chain of
     // state updates through the masks runs beside the one through the widths.
-    RansEncoder enc, menc;
+    const auto& ctx = kContextOf[static_cast<std::size_t>(map)];
+    RansEncoder enc(precision), menc(precision);
     for (auto it = events.rbegin(); it != events.rend(); ++it) {
       if (it->mask && !masked) continue;
-      const RansTable& tab = tables[table_of(*it)];
+      const RansTable& tab = tables[it->fixed ? it->s : ctx[it->s]];
       (it->mask ? menc : enc).put(tab.cum[it->symbol], tab.freq[it->symbol]);
     }
     const std::string d = desc.finish(), t = enc.finish(), m = menc.finish();
-    std::string out(1, static_cast<char>(variant));  // map + 3 * masked
+    std::string out(1, static_cast<char>(packed_variant(map, masked, precision)));
     append_slab_parts(out, {d, t, m}, packed[masked]);
-    if (best.empty() || out.size() < best.size()) best = std::move(out);
+    return out;
+  };
+  std::string best;
+  for (int v = 0; v < 2 * kContextMaps; ++v) {
+    const int map = v % kContextMaps;
+    const bool masked = v >= kContextMaps;
+    if (masks >= 0 && masked != (masks == 1)) continue;
+    const Counts counts = count(kContextOf[static_cast<std::size_t>(map)], masked);
+    std::string chosen = code(counts, map, masked, kRansBits);
+    // A small slab also at a lower precision (docs/volwave.md §4, "Table precision"),
+    // kept when at most (1 + precision_slack) times the bytes.
+    const int fast = fast_precision(counts);
+    if (fast < kRansBits) {
+      std::string quick = code(counts, map, masked, fast);
+      if (!quick.empty() && (chosen.empty() || static_cast<double>(quick.size()) <=
+                                                   (1.0 + precision_slack) * static_cast<double>(chosen.size())))
+        chosen = std::move(quick);
+    }
+    if (!chosen.empty() && (best.empty() || chosen.size() < best.size())) best = std::move(chosen);
   }
   return best;
 }
@@ -453,7 +500,7 @@ struct PackedTables {
 // Returns false when a stream does not end where its bytes do. The rANS decoder is local
 // (its address never escapes), so its state can stay in registers.
 template <typename Unpack>
-inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::string_view masks,
+inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::string_view masks, int bits,
                         const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data, const Dims& dims,
                         const Subband& band, const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
@@ -464,7 +511,7 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::s
   std::vector<std::uint8_t> widths(planes * h * groups + groups, 0);
   const std::uint8_t* no_widths = widths.data() + planes * h * groups;  // a row of zeros
   const int max_width = limit + 1;
-  RansDecoder tdec(tokens), mdec(masks);
+  RansDecoder tdec(tokens, bits), mdec(masks, bits);
   std::uint64_t bp = 0;
   for (std::size_t z = slab.z0; z < slab.z1; ++z)
     for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y) {
@@ -510,32 +557,36 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::s
 // flatten: everything inlined here, the AVX2 unpacking included (a template cannot carry
 // the target, so the instantiation alone could not inline it).
 __attribute__((target("avx2"), flatten)) bool decode_rows_avx2(
-    const PackedTables& tab, std::string_view tokens, std::string_view masks, const std::uint8_t* base,
+    const PackedTables& tab, std::string_view tokens, std::string_view masks, int bits, const std::uint8_t* base,
     std::uint64_t nbits, std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab, int limit,
     std::vector<std::uint8_t>& zero_rows) {
-  return decode_rows<Avx2Unpack>(tab, tokens, masks, base, nbits, data, dims, band, slab, limit, zero_rows);
+  return decode_rows<Avx2Unpack>(tab, tokens, masks, bits, base, nbits, data, dims, band, slab, limit, zero_rows);
 }
 __attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::string_view tokens,
-                                                 std::string_view masks, const std::uint8_t* base, std::uint64_t nbits,
+                                                 std::string_view masks, int bits, const std::uint8_t* base,
+                                                 std::uint64_t nbits,
                                                  std::int64_t* data, const Dims& dims, const Subband& band,
                                                  const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows) {
-  return decode_rows<ScalarUnpack>(tab, tokens, masks, base, nbits, data, dims, band, slab, limit, zero_rows);
+  return decode_rows<ScalarUnpack>(tab, tokens, masks, bits, base, nbits, data, dims, band, slab, limit, zero_rows);
 }
 
 }  // namespace
 
 void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                        const Slab& slab, int limit, RowList& rows, bool avx2) {
+                        const Slab& slab, int limit, RowList& rows, bool avx2, bool precision_allowed) {
   if (band.orientation == 0) corrupt(band, slab);  // never written for the approximation
-  if (bytes.empty() || static_cast<std::uint8_t>(bytes[0]) >= 2 * kContextMaps) corrupt(band, slab);
+  const int variant = bytes.empty() ? 255 : static_cast<std::uint8_t>(bytes[0]);
+  if (variant >= 2 * kContextMaps * (precision_allowed ? kPrecisionSteps : 1)) corrupt(band, slab);
   PackedTables tab;
-  tab.context_of = kContextOf[static_cast<std::uint8_t>(bytes[0]) % kContextMaps].data();
-  tab.masked = static_cast<std::uint8_t>(bytes[0]) >= kContextMaps;
+  tab.context_of = kContextOf[static_cast<std::size_t>(variant % kContextMaps)].data();
+  tab.masked = variant % (2 * kContextMaps) >= kContextMaps;
+  const int bits = kRansBits - variant / (2 * kContextMaps);
+  const std::uint32_t entries = 1u << bits;
   const auto parts = slab_parts<3>(bytes.substr(1));
   if (!parts) corrupt(band, slab);
   BitReader desc((*parts)[0]);
   std::vector<RansTable> tables;
-  if (!read_tables(desc, tables, alphabets())) corrupt(band, slab);
+  if (!read_tables(desc, tables, alphabets(), bits)) corrupt(band, slab);
   // The width and mask tables as lookup tables (the ones that have symbols; an OR over
   // the alphabet, no early exit to predict).
   const auto& alpha = alphabets();
@@ -548,13 +599,13 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
     has[static_cast<std::size_t>(t)] = any != 0;
     used += any != 0;
   }
-  std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * kRansTotal]);
+  std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * entries]);
   std::size_t next = 0;
   for (int t = 0; t < kRowTable0; ++t) {
-    const RansEntry* e = identity_decode_table();
+    const RansEntry* e = identity_decode_table(bits);
     if (has[static_cast<std::size_t>(t)]) {
-      RansEntry* out = storage.get() + next * kRansTotal;
-      fill_decode_table(tables[static_cast<std::size_t>(t)], alpha[static_cast<std::size_t>(t)], out);
+      RansEntry* out = storage.get() + next * entries;
+      fill_decode_table(tables[static_cast<std::size_t>(t)], alpha[static_cast<std::size_t>(t)], out, bits);
       e = out;
       ++next;
     }
@@ -563,7 +614,7 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   }
   for (int t = 0; t < 4; ++t) {
     const auto& f = tables[static_cast<std::size_t>(kRowTable0 + t)].freq;
-    tab.row_f0[static_cast<std::size_t>(t)] = f[0] == 0 && f[1] == 0 ? kRansTotal : f[0];
+    tab.row_f0[static_cast<std::size_t>(t)] = f[0] == 0 && f[1] == 0 ? entries : f[0];
   }
   const std::string_view tokens = (*parts)[1], masks = (*parts)[2], packed = (*parts)[3];
   // A copy with kPackSlack zero bytes after it: the unpacking loads 8 bytes at a time
@@ -575,8 +626,8 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
   const bool ok =
       avx2 && packed_avx2_available()
-          ? decode_rows_avx2(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
-          : decode_rows_scalar(tab, tokens, masks, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
+          ? decode_rows_avx2(tab, tokens, masks, bits, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
+          : decode_rows_scalar(tab, tokens, masks, bits, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
   if (!ok) corrupt(band, slab);
   for (std::size_t r = 0; r < zero_rows.size(); ++r)
     if (!zero_rows[r]) rows.push_back(band.lo[1] + r % h + dims[1] * (slab.z0 + r / h));

@@ -64,18 +64,23 @@ std::uint64_t unpack_dense_partial(const std::uint8_t* base, std::uint64_t bp, i
 
 // Codes a detail band's slab as a packed slab (without the mode byte): masks 0 without
 // masks (dense groups: fastest to decode), 1 with them (smaller for sparse data), -1
-// whichever is smaller; each with the smallest of the three context maps. Empty for the
-// approximation band (its prediction needs the previous value: the context coders keep
-// it) and when a token table cannot be written (normalise_table).
+// whichever is smaller; each with the smallest of the three context maps. A slab with
+// few symbols per table is also coded at a lower table precision (format version 5;
+// docs/volwave.md §4 "Table precision"), kept when at most (1 + precision_slack) times
+// the bytes of full precision. Empty for the approximation band (its prediction needs
+// the previous value: the context coders keep it) and when a token table cannot be
+// written (normalise_table).
 std::string encode_packed_slab(const std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab,
-                               int masks = -1);
+                               int masks = -1, double precision_slack = 0.0);
 
 // Decodes what encode_packed_slab wrote into `data` (positions in the slab zero on
 // entry), appends the rows coded as non-zero to `rows` (as decode_slab does), and
 // throws fest::Error(bad_input) for anything no encoder writes: a width above
-// limit + 1, streams too short or too long, a damaged table. `avx2` picks the unpacker
-// (the results are the same; false is for tests).
+// limit + 1, streams too short or too long, a damaged table, a reduced table precision
+// when `precision_allowed` is false (version 4 files). `avx2` picks the unpacker (the
+// results are the same; false is for tests).
 void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& dims, const Subband& band,
-                        const Slab& slab, int limit, RowList& rows, bool avx2 = packed_avx2_available());
+                        const Slab& slab, int limit, RowList& rows, bool avx2 = packed_avx2_available(),
+                        bool precision_allowed = true);
 
 }  // namespace fest::wavelet

@@ -12,6 +12,7 @@ using range_coding::fill_decode_table;
 using range_coding::identity_decode_table;
 using range_coding::kRansAlphabet;
 using range_coding::kRansBits;
+using range_coding::kRansMinBits;
 using range_coding::kRansLow;
 using range_coding::kRansTotal;
 using range_coding::normalise_table;

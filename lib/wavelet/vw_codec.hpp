@@ -26,8 +26,9 @@
 namespace fest::wavelet {
 
 // The format version written, the magic's last byte. Version 3 files (no packed slabs)
-// are still read; `volwave info` reports a file's own version.
-inline constexpr int kVwFormatVersion = 4;
+// and version 4 files (packed slabs at full table precision, FNV-1a checksums) are
+// still read; `volwave info` reports a file's own version.
+inline constexpr int kVwFormatVersion = 5;
 inline constexpr int kVwOldestReadVersion = 3;
 
 // The encoder's choice per detail-band slab (docs/volwave.md §4 "Packed slabs"): the

@@ -127,16 +127,29 @@ run volwave decode "$golden" -o "$WORK/g.nrrd"
 expect_status 0
 check "golden decodes within 0.5" "$FC" "$WORK/smooth.nrrd" "$WORK/g.nrrd" --tol 0.5
 check "encoding again gives the golden bytes" cmp "$golden" "$WORK/full.vw"
-# Format version 3 (no packed slabs) is still read: the same quantised coefficients, so
-# the same voxels as the version-4 golden (the coders are lossless on coefficients).
+# Format versions 3 (no packed slabs) and 4 (packed slabs at full table precision,
+# FNV-1a checksums) are still read: the same quantised coefficients, so the same voxels
+# as the version-5 golden (the coders are lossless on coefficients).
 case_ "version 3 still decodes"
 run volwave decode "$FEST_FIXTURES/volwave/smooth_e0.5_v3.vw" -o "$WORK/g3.nrrd"
 expect_status 0
 check "version-3 golden decodes within 0.5" "$FC" "$WORK/smooth.nrrd" "$WORK/g3.nrrd" --tol 0.5
-check "version 3 and 4 decode to the same voxels" cmp "$WORK/g.nrrd" "$WORK/g3.nrrd"
+check "version 3 and 5 decode to the same voxels" cmp "$WORK/g.nrrd" "$WORK/g3.nrrd"
 run volwave info "$FEST_FIXTURES/volwave/smooth_e0.5_v3.vw"
 expect_json '.version' 3
 expect_json '.slabs.packed.slabs' 0
+case_ "version 4 still decodes"
+run volwave decode "$FEST_FIXTURES/volwave/smooth_e0.5_v4.vw" -o "$WORK/g4.nrrd"
+expect_status 0
+check "version 4 and 5 decode to the same voxels" cmp "$WORK/g.nrrd" "$WORK/g4.nrrd"
+run volwave info "$FEST_FIXTURES/volwave/smooth_e0.5_v4.vw"
+expect_json '.version' 4
+# A version-4 file whose chunk checksum is FNV-1a's: one byte of a chunk changed is
+# still caught.
+python3 -c "
+b=bytearray(open('$FEST_FIXTURES/volwave/smooth_e0.5_v4.vw','rb').read()); b[-20]^=1; open('$WORK/g4bad.vw','wb').write(b)"
+run volwave decode "$WORK/g4bad.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+expect_stderr_has "checksum"
 
 # --favour: packed slabs where they cost little (speed) or only where they are not
 # larger (size); the bound holds and the voxels are the same either way.
@@ -265,11 +278,11 @@ case_ "info on garbage"; run volwave info "$WORK/smooth.nrrd"; expect_clean_fail
 case_ "not a volume"; run volwave encode "$WORK/info.json" --max-error 1 -o "$WORK/x.vw"; expect_clean_failure 3 volwave
 case_ "bad --favour"; run volwave encode "$WORK/smooth.nrrd" --max-error 1 --favour fast -o "$WORK/x.vw"; expect_clean_failure 2 volwave
 expect_stderr_has "favour"
-case_ "version 5 .vw"
+case_ "version 6 .vw"
 python3 -c "
-b=bytearray(open('$WORK/full.vw','rb').read()); b[7]=5; open('$WORK/v5.vw','wb').write(b)"
-run volwave decode "$WORK/v5.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
-expect_stderr_has "version 5"
+b=bytearray(open('$WORK/full.vw','rb').read()); b[7]=6; open('$WORK/v6.vw','wb').write(b)"
+run volwave decode "$WORK/v6.vw" -o "$WORK/x.nrrd"; expect_clean_failure 3 volwave
+expect_stderr_has "version 6"
 case_ "unknown flag"; run volwave encode --no-such-flag x; expect_clean_failure 2 volwave
 case_ "missing file"; run volwave encode "$WORK/none.nrrd" --max-error 1 -o "$WORK/x.vw"; expect_clean_failure 4 volwave
 

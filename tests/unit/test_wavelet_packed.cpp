@@ -1,4 +1,4 @@
-// Packed slabs of .vw format version 4 (lib/wavelet/packed_coder.hpp, docs/volwave.md §4
+// Packed slabs of .vw format versions 4 and 5 (lib/wavelet/packed_coder.hpp, docs/volwave.md §4
 // "Packed slabs"): groups of every width round-trip through the scalar and the AVX2
 // unpacker alike, packed slabs decode to their coefficients, damage is refused, and a
 // whole file decodes to the same voxels whichever slabs the encoder packed.
@@ -154,6 +154,56 @@ TEST(WaveletPacked, SlabsRoundTripAndRefuseDamage) {
     }
   }
   EXPECT_GT(packed, 10);
+}
+
+// Format version 5: a slab with few symbols per table may state a lower table precision
+// (docs/volwave.md §4 "Table precision"). Every precision decodes to the coefficients,
+// and a version-4 file cannot hold one.
+TEST(WaveletPacked, ReducedTablePrecisionRoundTripsAndIsRefusedInVersion4) {
+  const Dims dims{37, 30, 20};
+  const auto bands = subbands(dims, 2);
+  std::vector<std::int64_t> data(dims[0] * dims[1] * dims[2], 0);
+  // Sparse: a few small values in a few rows, so each table holds a handful of symbols.
+  std::mt19937_64 rng(9);
+  for (std::size_t i = 0; i < data.size(); i += 1 + rng() % 97) data[i] = static_cast<std::int64_t>(rng() % 7) - 3;
+  int reduced = 0;
+  for (const auto& band : bands) {
+    if (band.orientation == 0) continue;
+    for (const auto& slab : slabs_of(band)) {
+      for (double slack : {0.0, 0.5, 1e9}) {
+        const std::string bytes = encode_packed_slab(data.data(), dims, band, slab, -1, slack);
+        ASSERT_FALSE(bytes.empty());
+        const int variant = static_cast<std::uint8_t>(bytes[0]);
+        ASSERT_LT(variant, 6 * 7);  // 3 maps x masks x precisions 11..5
+        RowList rows;
+        std::vector<std::int64_t> out(data.size(), 0), out_s(data.size(), 0);
+        decode_packed_slab(bytes, out.data(), dims, band, slab, 40, rows);
+        decode_packed_slab(bytes, out_s.data(), dims, band, slab, 40, rows, false);
+        for (std::size_t z = slab.z0; z < slab.z1; ++z)
+          for (std::size_t y = band.lo[1]; y < band.hi[1]; ++y)
+            for (std::size_t x = band.lo[0]; x < band.hi[0]; ++x) {
+              const std::size_t i = x + dims[0] * (y + dims[1] * z);
+              ASSERT_EQ(out[i], data[i]) << variant;
+              ASSERT_EQ(out_s[i], data[i]) << variant;
+            }
+        std::vector<std::int64_t> junk(data.size(), 0);
+        if (variant >= 6) {
+          ++reduced;
+          EXPECT_THROW(decode_packed_slab(bytes, junk.data(), dims, band, slab, 40, rows,
+                                          packed_avx2_available(), false),
+                       Error);
+        } else {
+          EXPECT_NO_THROW(decode_packed_slab(bytes, junk.data(), dims, band, slab, 40, rows,
+                                             packed_avx2_available(), false));
+        }
+        // A precision no encoder writes (variant 42 and above) is refused.
+        std::string beyond = bytes;
+        beyond[0] = static_cast<char>(42 + variant % 6);
+        EXPECT_THROW(decode_packed_slab(beyond, junk.data(), dims, band, slab, 40, rows), Error);
+      }
+    }
+  }
+  EXPECT_GT(reduced, 5);  // the sparse slabs do take lower precisions
 }
 
 TEST(WaveletPacked, FilesDecodeToTheSameVoxelsWhateverIsPacked) {

@@ -42,6 +42,8 @@ TEST(WaveletRans, TablesAndSymbolsRoundTrip) {
   std::vector<RansTable> tables(4);  // the fourth stays empty
   const std::vector<int> alphabets{kRansAlphabet, kRansAlphabet, kRansAlphabet, 2};
   for (int t = 0; t < 3; ++t) ASSERT_TRUE(normalise_table(ev.counts[t].data(), kRansAlphabet, tables[static_cast<std::size_t>(t)]));
+  const std::uint32_t no_counts[2] = {0, 0};
+  ASSERT_TRUE(normalise_table(no_counts, 2, tables[3]));
   // Every table sums to kRansTotal, every coded symbol keeps a frequency >= 1.
   for (int t = 0; t < 3; ++t) {
     std::uint32_t sum = 0;
@@ -59,10 +61,11 @@ TEST(WaveletRans, TablesAndSymbolsRoundTrip) {
   BitReader r(desc);
   std::vector<RansTable> back;
   ASSERT_TRUE(read_tables(r, back, alphabets));
-  for (std::size_t t = 0; t < tables.size(); ++t) {
-    EXPECT_EQ(back[t].freq, tables[t].freq) << t;
-    EXPECT_EQ(back[t].cum, tables[t].cum) << t;
-  }
+  for (std::size_t t = 0; t < tables.size(); ++t)
+    for (int s = 0; s < alphabets[t]; ++s) {  // the entries a table's alphabet has
+      EXPECT_EQ(back[t].freq[static_cast<std::size_t>(s)], tables[t].freq[static_cast<std::size_t>(s)]) << t;
+      EXPECT_EQ(back[t].cum[static_cast<std::size_t>(s)], tables[t].cum[static_cast<std::size_t>(s)]) << t;
+    }
   RansEncoder enc;
   for (auto it = ev.seq.rbegin(); it != ev.seq.rend(); ++it) {
     const RansTable& tab = tables[static_cast<std::size_t>(it->first)];
