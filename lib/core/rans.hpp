@@ -104,15 +104,23 @@ const RansEntry* identity_decode_table(int bits = kRansBits);
 
 class RansDecoder {
  public:
-  // Keeps a copy of the stream with two zero bytes after it, so the renormalisation can
-  // read a word without a test: past the end it reads those zeros.
+  // Reads `bytes` in place (they must outlive the decoder). The renormalisation reads a
+  // word without a test: at or past the end it reads the stream's last word again (or a
+  // zero-padded copy of a stream shorter than a word). A valid stream never uses such a
+  // word -- the decoder reads exactly the words the encoder wrote -- and one that does
+  // has moved its position past the end, so done() is false.
   explicit RansDecoder(std::string_view bytes, int bits = kRansBits)
-      : buf_(bytes), n_(bytes.size()), bits_(bits), slot_mask_((1u << bits) - 1) {
-    buf_.append(2, '\0');
-    p_ = reinterpret_cast<const std::uint8_t*>(buf_.data());
+      : n_(bytes.size()), last_word_(n_ >= 2 ? n_ - 2 : 0), bits_(bits), slot_mask_((1u << bits) - 1) {
+    p_ = reinterpret_cast<const std::uint8_t*>(bytes.data());
+    if (n_ < 2) {
+      for (std::size_t i = 0; i < n_; ++i) short_[i] = p_[i];
+      p_ = short_;
+    }
     for (std::size_t i = 0; i < 4 && i < n_; ++i) x_ |= static_cast<std::uint32_t>(p_[i]) << (8 * i);
     pos_ = 4;
   }
+  RansDecoder(const RansDecoder&) = delete;  // p_ may point into the object itself
+  RansDecoder& operator=(const RansDecoder&) = delete;
   __attribute__((always_inline)) int get(const RansEntry* table) {
     const RansEntry e = table[x_ & slot_mask_];
     x_ = ((e >> 7) & 0xFFF) * (x_ >> bits_) + (e >> 19);
@@ -137,15 +145,15 @@ class RansDecoder {
   // Without a branch on the data: at most one word (freq <= 2^11 keeps the state >= 2^5
   // before it, so one 16-bit shift restores >= 2^16).
   __attribute__((always_inline)) void renormalise() {
-    const std::size_t at = pos_ < n_ ? pos_ : n_;
+    const std::size_t at = pos_ < last_word_ ? pos_ : last_word_;
     const std::uint32_t w = static_cast<std::uint32_t>(p_[at] | (p_[at + 1] << 8));
     const bool need = x_ < kRansLow;
     x_ = need ? (x_ << 16) | w : x_;
     pos_ += need ? 2 : 0;
   }
-  std::string buf_;
   const std::uint8_t* p_ = nullptr;
-  std::size_t n_;
+  std::uint8_t short_[2] = {0, 0};
+  std::size_t n_, last_word_;
   int bits_;
   std::uint32_t slot_mask_;
   std::size_t pos_ = 0;

@@ -502,13 +502,14 @@ struct PackedTables {
 template <typename Unpack>
 inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::string_view masks, int bits,
                         const std::uint8_t* base, std::uint64_t nbits, std::int64_t* data, const Dims& dims,
-                        const Subband& band, const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows) {
+                        const Subband& band, const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows,
+                        std::vector<std::uint8_t>& widths) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::size_t w = band.hi[0] - band.lo[0], h = band.hi[1] - band.lo[1];
   const std::size_t full = w / kPackGroup, groups = (w + kPackGroup - 1) / kPackGroup;
   const int tail = static_cast<int>(w - full * kPackGroup);
   const std::size_t planes = slab.z1 - slab.z0;
-  std::vector<std::uint8_t> widths(planes * h * groups + groups, 0);
+  widths.assign(planes * h * groups + groups, 0);
   const std::uint8_t* no_widths = widths.data() + planes * h * groups;  // a row of zeros
   const int max_width = limit + 1;
   RansDecoder tdec(tokens, bits), mdec(masks, bits);
@@ -559,15 +560,31 @@ inline bool decode_rows(const PackedTables& tab, std::string_view tokens, std::s
 __attribute__((target("avx2"), flatten)) bool decode_rows_avx2(
     const PackedTables& tab, std::string_view tokens, std::string_view masks, int bits, const std::uint8_t* base,
     std::uint64_t nbits, std::int64_t* data, const Dims& dims, const Subband& band, const Slab& slab, int limit,
-    std::vector<std::uint8_t>& zero_rows) {
-  return decode_rows<Avx2Unpack>(tab, tokens, masks, bits, base, nbits, data, dims, band, slab, limit, zero_rows);
+    std::vector<std::uint8_t>& zero_rows, std::vector<std::uint8_t>& widths) {
+  return decode_rows<Avx2Unpack>(tab, tokens, masks, bits, base, nbits, data, dims, band, slab, limit, zero_rows,
+                                 widths);
 }
 __attribute__((flatten)) bool decode_rows_scalar(const PackedTables& tab, std::string_view tokens,
                                                  std::string_view masks, int bits, const std::uint8_t* base,
-                                                 std::uint64_t nbits,
-                                                 std::int64_t* data, const Dims& dims, const Subband& band,
-                                                 const Slab& slab, int limit, std::vector<std::uint8_t>& zero_rows) {
-  return decode_rows<ScalarUnpack>(tab, tokens, masks, bits, base, nbits, data, dims, band, slab, limit, zero_rows);
+                                                 std::uint64_t nbits, std::int64_t* data, const Dims& dims,
+                                                 const Subband& band, const Slab& slab, int limit,
+                                                 std::vector<std::uint8_t>& zero_rows,
+                                                 std::vector<std::uint8_t>& widths) {
+  return decode_rows<ScalarUnpack>(tab, tokens, masks, bits, base, nbits, data, dims, band, slab, limit, zero_rows,
+                                   widths);
+}
+
+// What decode_packed_slab needs besides the slab's bytes, kept between slabs.
+struct PackedScratch {
+  std::vector<RansTable> tables;
+  std::vector<RansEntry> storage;
+  std::vector<std::uint8_t> packed, zero_rows, widths;
+};
+
+// Makes v at least n long without shrinking it (a shrink and a regrow would zero-fill).
+template <typename T>
+void grow(std::vector<T>& v, std::size_t n) {
+  if (v.size() < n) v.resize(n);
 }
 
 }  // namespace
@@ -585,26 +602,23 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   const auto parts = slab_parts<3>(bytes.substr(1));
   if (!parts) corrupt(band, slab);
   BitReader desc((*parts)[0]);
-  std::vector<RansTable> tables;
+  // The working storage of a slab, kept per thread: a small volume's decode is dozens of
+  // slabs, and their allocations were 4 % of it.
+  thread_local PackedScratch scratch;
+  std::vector<RansTable>& tables = scratch.tables;
   if (!read_tables(desc, tables, alphabets(), bits)) corrupt(band, slab);
-  // The width and mask tables as lookup tables (the ones that have symbols; an OR over
-  // the alphabet, no early exit to predict).
+  // The width and mask tables as lookup tables (the ones that have symbols: a table
+  // without any has the implied symbol's frequency 0).
   const auto& alpha = alphabets();
-  std::array<bool, kRowTable0> has{};
   std::size_t used = 0;
-  for (int t = 0; t < kRowTable0; ++t) {
-    unsigned any = 0;
-    for (int sym = 0; sym < alpha[static_cast<std::size_t>(t)]; ++sym)
-      any |= tables[static_cast<std::size_t>(t)].freq[static_cast<std::size_t>(sym)];
-    has[static_cast<std::size_t>(t)] = any != 0;
-    used += any != 0;
-  }
-  std::unique_ptr<RansEntry[]> storage(new RansEntry[std::max<std::size_t>(used, 1) * entries]);
+  for (int t = 0; t < kRowTable0; ++t) used += tables[static_cast<std::size_t>(t)].freq[static_cast<std::size_t>(tables[static_cast<std::size_t>(t)].implied)] != 0;
+  grow(scratch.storage, std::max<std::size_t>(used, 1) * entries);
   std::size_t next = 0;
   for (int t = 0; t < kRowTable0; ++t) {
+    const RansTable& table = tables[static_cast<std::size_t>(t)];
     const RansEntry* e = identity_decode_table(bits);
-    if (has[static_cast<std::size_t>(t)]) {
-      RansEntry* out = storage.get() + next * entries;
+    if (table.freq[static_cast<std::size_t>(table.implied)] != 0) {
+      RansEntry* out = scratch.storage.data() + next * entries;
       fill_decode_table(tables[static_cast<std::size_t>(t)], alpha[static_cast<std::size_t>(t)], out, bits);
       e = out;
       ++next;
@@ -619,15 +633,20 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   const std::string_view tokens = (*parts)[1], masks = (*parts)[2], packed = (*parts)[3];
   // A copy with kPackSlack zero bytes after it: the unpacking loads 8 bytes at a time
   // without a test per value.
-  std::vector<std::uint8_t> buf(packed.size() + kPackSlack, 0);
+  std::vector<std::uint8_t>& buf = scratch.packed;
+  grow(buf, packed.size() + kPackSlack);
   std::memcpy(buf.data(), packed.data(), packed.size());
+  std::memset(buf.data() + packed.size(), 0, kPackSlack);
   const std::uint64_t nbits = 8 * static_cast<std::uint64_t>(packed.size());
   const std::size_t h = band.hi[1] - band.lo[1];
-  std::vector<std::uint8_t> zero_rows((slab.z1 - slab.z0) * h, 0);
+  std::vector<std::uint8_t>& zero_rows = scratch.zero_rows;
+  zero_rows.assign((slab.z1 - slab.z0) * h, 0);
   const bool ok =
       avx2 && packed_avx2_available()
-          ? decode_rows_avx2(tab, tokens, masks, bits, buf.data(), nbits, data, dims, band, slab, limit, zero_rows)
-          : decode_rows_scalar(tab, tokens, masks, bits, buf.data(), nbits, data, dims, band, slab, limit, zero_rows);
+          ? decode_rows_avx2(tab, tokens, masks, bits, buf.data(), nbits, data, dims, band, slab, limit, zero_rows,
+                             scratch.widths)
+          : decode_rows_scalar(tab, tokens, masks, bits, buf.data(), nbits, data, dims, band, slab, limit, zero_rows,
+                               scratch.widths);
   if (!ok) corrupt(band, slab);
   for (std::size_t r = 0; r < zero_rows.size(); ++r)
     if (!zero_rows[r]) rows.push_back(band.lo[1] + r % h + dims[1] * (slab.z0 + r / h));
