@@ -16,6 +16,9 @@ N=${2:-64}
 REPEAT=${3:-3}
 CASES=,${4:-ct,mri,plume,lbm},
 want() { [[ $CASES == *",$1,"* ]]; }
+for c in ${CASES//,/ }; do
+  case $c in ct|mri|plume|lbm|lbm-centred) ;; *) echo "volwave.sh: unknown case '$c' (ct, mri, plume, lbm, lbm-centred)" >&2; exit 2 ;; esac
+done
 DATA=${FEST_TESTDATA:-${XDG_CACHE_HOME:-$HOME/.cache}/fest/testdata}
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/volwave-bench.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT
@@ -42,9 +45,9 @@ fi
 
 # lbmsim: D3Q19 flow past a sphere (diameter 16, Bouzidi walls) in a 96x64x64 duct with
 # no-slip walls, a parabolic inlet (U_max 0.08, Mach 0.14) and a pressure outlet; TRT,
-# Re = U_max D / nu = 100, float arithmetic, 1500 steps (fluid at the mean inlet speed
-# 4/9 U_max has travelled ~53 cells: a developing wake behind the sphere at x = 24).
-# The field is the speed |u| of the last step (0 inside the sphere, up to ~0.084 in the
+# Re = U_max D / nu = 100, float arithmetic, 1500 steps (the recirculation behind the
+# sphere at x = 16..32 ends near x = 45; the wake's velocity deficit reaches the outlet).
+# The field is the speed |u| of the last step (0 inside the sphere, up to ~0.087 in the
 # duct's core): the scalar one renders and isosurfaces in a flow. It is in lattice
 # units, so the bounds are fractions of its range (1e-5 of the range is ~110 float32
 # ulps of the maximum). About 35 s on one core.
