@@ -6,8 +6,12 @@
 //   `repeat` single-thread encode/decode CPU times (and volwave's decode wall time on
 //   all cores, decode_wall_threads).
 //
-//   bench_volwave [--bounds 0.5,1,4] [--repeat 3] [--slack 0.3] [--field NAME] [--frame N] VOLUME...
+//   bench_volwave [--bounds 0.5,1,4 | --range-bounds 1e-4,1e-2] [--repeat 3] [--slack 0.3]
+//                 [--field NAME] [--frame N] VOLUME...
 //
+// --range-bounds: the bounds as fractions of each volume's value range (max - min), for
+// fields whose units say nothing (a lattice speed of 0.08); each row then also carries
+// the fraction as bound_of_range.
 // --slack: the packed-slab slacks to measure, one volwave row each (EncodeOptions::
 // packed_slack; default kPackedSlackSpeed = --favour speed; 0 = --favour size; a
 // negative slack codes no packed slab, as format version 3's coders alone).
@@ -93,13 +97,15 @@ void line(nlohmann::json j) { std::printf("%s\n", j.dump().c_str()); std::fflush
 
 int main(int argc, char** argv) {
   std::vector<double> bounds = {0.5, 1, 4, 16};
+  bool of_range = false;  // bounds are fractions of the value range (--range-bounds)
   int repeat = 3;
   std::vector<double> slacks = {wavelet::kPackedSlackSpeed};
   std::vector<std::string> files;
   volwave_tool::InputSelect sel;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--bounds" && i + 1 < argc) {
+    if ((a == "--bounds" || a == "--range-bounds") && i + 1 < argc) {
+      of_range = a == "--range-bounds";
       bounds.clear();
       std::string s = argv[++i];
       for (std::size_t p = 0; p < s.size();) {
@@ -195,7 +201,9 @@ int main(int argc, char** argv) {
       }
 
       // ---- L-infinity bounds ----
-      for (double e : bounds) {
+      for (double fraction : bounds) {
+        const double e = of_range ? fraction * (vmax - vmin) : fraction;
+        if (of_range) base["bound_of_range"] = fraction;
         for (double slack : slacks) {
           wavelet::EncodeOptions o;
           o.mode = wavelet::Mode::max_error;

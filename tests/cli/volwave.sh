@@ -237,6 +237,45 @@ if [ -x "$FEST_BIN/fluidsim" ]; then
   expect_stderr_has "components"
 fi
 
+# An lbmsim frame stream (D3Q19 flow past an off-centre sphere in a 32x20x20 duct, 300
+# steps, a fraction of a second): its frames list velocity:3, pressure:1, speed:1, so the
+# scalar fields sit at channels 3 and 4. The reference is a second run of the same case
+# written by lbmsim's own NRRD writer (one file per field; lbmsim is deterministic), so
+# the comparison does not go through volwave's frame-stream reader.
+if [ -x "$FEST_BIN/lbmsim" ]; then
+  cat >"$WORK/duct.json" <<'JSON'
+{ "lattice": "d3q19", "size": [32, 20, 20], "collision": { "model": "trt", "nu": 0.02 },
+  "faces": { "x-": { "velocity": { "profile": "parabolic", "u": 0.05 } }, "x+": { "pressure": { "rho": 1.0 } },
+             "y-": "wall", "y+": "wall", "z-": "wall", "z+": "wall" },
+  "geometry": [ { "sphere": { "center": [10, 9, 11], "radius": 4 } } ],
+  "init": { "u": [0.02, 0, 0] }, "steps": 300 }
+JSON
+  "$FEST_BIN/lbmsim" -q run "$WORK/duct.json" --fields speed,velocity,pressure --precision float --threads 1 -o - >"$WORK/duct.stream"
+  "$FEST_BIN/lbmsim" -q run "$WORK/duct.json" --fields speed,pressure --precision float --threads 1 -o "$WORK/duct.nrrd"
+  case_ "lbmsim stream needs --field"
+  run volwave encode "$WORK/duct.stream" --max-error 1e-4 -o "$WORK/d.vw"
+  expect_clean_failure 3 volwave
+  expect_stderr_has "name one with --field"
+  # Speed peaks near 0.05 (the inlet's U_max): 1e-4 is 1/500 of it, 1e-6 ~270 float32 ulps.
+  for f in speed:1e-4 speed:1e-6 pressure:1e-6; do
+    field=${f%:*} e=${f#*:}
+    case_ "lbmsim $field, bound $e"
+    run volwave encode "$WORK/duct.stream" --field "$field" --max-error "$e" -o "$WORK/d.vw"
+    expect_status 0
+    run volwave decode "$WORK/d.vw" -o "$WORK/d.nrrd"
+    expect_status 0
+    check "fcompare max-abs <= $e against lbmsim's NRRD" "$FC" "$WORK/duct_$field.nrrd" "$WORK/d.nrrd" --tol "$e"
+    case_ "lbmsim $field lossless"
+    run volwave encode "$WORK/duct.stream" --field "$field" --lossless -o "$WORK/dl.vw"
+    expect_status 0
+    check "lossy file smaller than the lossless one" test "$(stat -c %s "$WORK/d.vw")" -lt "$(stat -c %s "$WORK/dl.vw")"
+    run volwave decode "$WORK/dl.vw" -o "$WORK/dl.nrrd"
+    expect_status 0
+    check "data bytes identical to lbmsim's NRRD" cmp <(tail -c 51200 "$WORK/duct_$field.nrrd") <(tail -c 51200 "$WORK/dl.nrrd")  # 32*20*20 float32
+    check "fcompare exact" "$FC" "$WORK/duct_$field.nrrd" "$WORK/dl.nrrd" --tol 0
+  done
+fi
+
 # Standard input and output.
 case_ "pipes"
 "$V" encode --max-error 1 <"$WORK/ct.nrrd" | "$V" decode >"$WORK/p.nrrd"
