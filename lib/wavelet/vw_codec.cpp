@@ -15,6 +15,7 @@
 #include "core/error_stats.hpp"
 #include "core/parallel_for.hpp"
 #include "wavelet/band_coder.hpp"
+#include "wavelet/rans.hpp"
 
 namespace fest::wavelet {
 
@@ -647,6 +648,11 @@ SlabCensus slab_census(std::string_view bytes) {
         census.slabs[mode] += 1;
         census.bytes[mode] += len;
         census.coefficients[mode] += (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (s.slab.z1 - s.slab.z0);
+        // A packed slab's variant byte names its precision (fest-vw(5)).
+        if (mode == 2 && len >= 2) {
+          const int bits = kRansBits - static_cast<std::uint8_t>(chunk[at + 1]) / 6;
+          if (bits >= kRansMinBits && bits <= kRansBits) census.packed_by_precision[static_cast<std::size_t>(bits - kRansMinBits)] += 1;
+        }
       }
       at += len;
     }

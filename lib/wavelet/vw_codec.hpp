@@ -125,6 +125,8 @@ DecodeResult decode_vw(std::string_view bytes, int threads = 1, int max_chunks =
 // the coefficients they hold. Throws bad_input for a damaged header or chunk table.
 struct SlabCensus {
   std::array<std::uint64_t, 3> slabs{}, bytes{}, coefficients{};
+  // Packed slabs per rANS table precision (index bits - 5, bits 5..11; version 5).
+  std::array<std::uint64_t, 7> packed_by_precision{};
 };
 SlabCensus slab_census(std::string_view bytes);
 

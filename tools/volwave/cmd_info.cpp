@@ -57,6 +57,10 @@ int info_command(const InfoOptions& o) {
     r["slabs"][names[m]] = {{"slabs", census.slabs[static_cast<std::size_t>(m)]},
                             {"bytes", census.bytes[static_cast<std::size_t>(m)]},
                             {"coefficients", census.coefficients[static_cast<std::size_t>(m)]}};
+  // Packed slabs per rANS table precision, "11" the full one (version 5 chooses lower
+  // ones for slabs with few symbols; docs/volwave.md §4).
+  for (std::size_t i = 0; i < census.packed_by_precision.size(); ++i)
+    if (census.packed_by_precision[i] > 0) r["slabs"]["packed"]["table_bits"][std::to_string(i + 5)] = census.packed_by_precision[i];
   write_output("-", r.dump(2) + "\n");
   return 0;
 }
