@@ -494,6 +494,21 @@ void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int 
   const std::size_t outer_stride = axis == 1 ? sz : sy;
   // Flag of sample k of the lines of plane o.
   const std::size_t flag_stride = axis == 1 ? 1 : ny, flag_outer = axis == 1 ? ny : 1;
+  // Which planes hold a flagged row, by loops over contiguous flags (gathering a plane's
+  // flags along z is strided: 13 instructions a flag on the plume, where 60 % of the
+  // planes hold none).
+  std::vector<std::uint8_t> plane_flagged(outer, 0);
+  const std::uint8_t* f = flags.data();
+  for (std::size_t z = 0; z < c[2]; ++z) {
+    const std::uint8_t* row_flags = f + ny * z;
+    if (axis == 1) {
+      std::uint8_t any = 0;
+      for (std::size_t y = 0; y < c[1]; ++y) any |= row_flags[y];
+      plane_flagged[z] = any;
+    } else {
+      for (std::size_t y = 0; y < c[1]; ++y) plane_flagged[y] |= row_flags[y];
+    }
+  }
   for_each_range(outer, threads, [&](std::size_t begin, std::size_t end) {
     std::vector<std::uint8_t> in(n), out(n);
     std::vector<const std::int64_t*> src(n);
@@ -501,9 +516,9 @@ void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int 
     // as much as the transform. Allocated at the first plane that needs it.
     std::unique_ptr<std::int64_t[]> rows;
     for (std::size_t o = begin; o < end; ++o) {
-      bool any = false;
-      for (std::size_t k = 0; k < n; ++k) any |= (in[k] = flags[o * flag_outer + k * flag_stride]) != 0;
-      if (!any) continue;
+      if (!plane_flagged[o]) continue;
+      std::uint8_t* plane_flags = flags.data() + o * flag_outer;
+      for (std::size_t k = 0; k < n; ++k) in[k] = plane_flags[k * flag_stride];
       propagate(n, in.data(), out.data());
       bool transformed = false;
       for (std::size_t x0 = 0; x0 < c[0]; x0 += kRowBlock) {
@@ -533,7 +548,7 @@ void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int 
         }
       }
       if (!transformed) std::fill(out.begin(), out.end(), 0);  // flagged, but zero after all
-      for (std::size_t k = 0; k < n; ++k) flags[o * flag_outer + k * flag_stride] = out[k];
+      for (std::size_t k = 0; k < n; ++k) plane_flags[k * flag_stride] = out[k];
     }
   });
 }
