@@ -330,34 +330,50 @@ void interleave(const std::int64_t* e, const std::int64_t* o, std::int64_t* x, s
   interleave_row(e, o, x, w);
 }
 
-}  // namespace
-
-// A line's low and high halves are contiguous, so its lifting steps are the row steps
-// above with w = h or m (AVX2 where the CPU has it), into scratch, and the samples are
-// interleaved back at the end: the same integers, element by element, as the
-// interleaved scalar loops this replaced, at a third of their instructions on the
-// plume's lines along x (docs/volwave.md §2).
-void inverse_line(std::int64_t* x, std::size_t n, Wavelet w, std::int64_t* scratch) {
-  if (n < 2) return;
+// The lifting of the outputs [2p, n) of a line x of n, for inverse_line (p = 0) and the
+// lines along x of a sparse volume (inverse_axis_x): the even samples e_i = x'[2i],
+// i in [p, h), and the odd ones o_i = x'[2i + 1], i in [p, m), into scratch at i and
+// h + i; x is only read. A line's low and high halves are contiguous, so the steps are
+// the row steps above with w = the count (AVX2 where the CPU has it); the symmetric
+// extension (d[-1] -> d[0], d[m] -> d[m-1], x[n] -> x[n-2]) only touches the first and
+// last samples, done apart. The same integers, element by element, as the interleaved
+// scalar loops this replaced, at a third of their instructions on the plume's lines
+// (docs/volwave.md §2). p < m.
+void lift_line(const std::int64_t* x, std::size_t n, Wavelet w, std::int64_t* scratch, std::size_t p) {
   const std::size_t h = (n + 1) / 2, m = n / 2;
   const std::int64_t* s = x;
   const std::int64_t* d = x + h;
-  std::int64_t* e = scratch;      // x[2i], i < h
-  std::int64_t* o = scratch + h;  // x[2i + 1], i < m
+  std::int64_t* e = scratch;
+  std::int64_t* o = scratch + h;
   if (w == Wavelet::haar) {
-    lift_haar(s, d, e, o, m);
+    lift_haar(s + p, d + p, e + p, o + p, m - p);
     if (h > m) e[m] = s[m];
-  } else {
-    // The symmetric extension (d[-1] -> d[0], d[m] -> d[m-1], x[n] -> x[n-2]) only
-    // touches the first and last samples: those are done apart.
-    e[0] = s[0] - floor4(d[0] + d[0] + 2);
-    lift_even(s + 1, d, d + 1, e + 1, m - 1);
-    if (h > m) e[m] = s[m] - floor4(d[m - 1] + d[m - 1] + 2);
-    lift_odd(d, e, e + 1, o, m - 1);
-    o[m - 1] = d[m - 1] + floor2(e[m - 1] + (h > m ? e[m] : e[m - 1]));
+    return;
   }
-  interleave(e, o, x, m);
-  if (h > m) x[n - 1] = e[m];
+  std::size_t i = p;
+  if (i == 0) {
+    e[0] = s[0] - floor4(d[0] + d[0] + 2);
+    i = 1;
+  }
+  if (m > i) lift_even(s + i, d + i - 1, d + i, e + i, m - i);
+  if (h > m) e[m] = s[m] - floor4(d[m - 1] + d[m - 1] + 2);
+  if (m - 1 > p) lift_odd(d + p, e + p, e + p + 1, o + p, m - 1 - p);
+  o[m - 1] = d[m - 1] + floor2(e[m - 1] + (h > m ? e[m] : e[m - 1]));
+}
+
+// x[2p, n) from lift_line's scratch.
+void place_line(const std::int64_t* scratch, std::size_t n, std::size_t p, std::int64_t* x) {
+  const std::size_t h = (n + 1) / 2, m = n / 2;
+  interleave(scratch + p, scratch + h + p, x + 2 * p, m - p);
+  if (h > m) x[n - 1] = scratch[m];
+}
+
+}  // namespace
+
+void inverse_line(std::int64_t* x, std::size_t n, Wavelet w, std::int64_t* scratch) {
+  if (n < 2) return;
+  lift_line(x, n, w, scratch, 0);
+  place_line(scratch, n, 0, x);
 }
 
 namespace {
@@ -553,25 +569,62 @@ void inverse_axis_rows(std::int64_t* data, const Dims& dims, const Dims& c, int 
   });
 }
 
-// The inverse along x of the flagged rows of the cube `c` (the others are zero).
-void inverse_axis_x(std::int64_t* data, const Dims& dims, const Dims& c, Wavelet wav, int threads,
-                    const RowFlags& flags) {
+// The index of the first non-zero of p[0, count), count if none: eight values a test
+// (all_zero), then one at a time. Only from the front: a scan from the back as well
+// (to narrow the lines' ends too) made the MRI head's decode 3 % slower in CPU time --
+// its rows, read from memory, end in runs of zeros, and the scans against the stream
+// of the lifting defeat the prefetcher -- for 0.13 M instructions of the plume's 8.8 M.
+std::size_t first_nonzero(const std::int64_t* p, std::size_t count) noexcept {
+  std::size_t i = 0;
+  while (i + 8 <= count && all_zero(p + i, 8)) i += 8;
+  while (i < count && p[i] == 0) ++i;
+  return i;
+}
+
+// The inverse along x of the flagged rows of the cube `c` (the others are zero). A row
+// is lifted from the first output that can be non-zero on (propagate's reach, from the
+// first non-zeros of its low and high halves); the inputs before it, known to turn to
+// zero, are zeroed. A row found all zero loses its flag. `spans`, when given (the last
+// level), receives per row the columns outside which the result is zero.
+void inverse_axis_x(std::int64_t* data, const Dims& dims, const Dims& c, Wavelet wav, int threads, RowFlags& flags,
+                    std::vector<RowSpan>* spans) {
   const std::size_t n = c[0];
-  if (n < 2) return;
   const std::size_t sy = dims[0], sz = dims[0] * dims[1], ny = dims[1];
+  if (n < 2) {
+    if (spans)
+      for (std::size_t r = 0; r < flags.size(); ++r) (*spans)[r] = flags[r] ? RowSpan{0, 1} : RowSpan{};
+    return;
+  }
+  const std::size_t h = (n + 1) / 2, m = n / 2;
   for_each_range(c[2], threads, [&](std::size_t begin, std::size_t end) {
     std::vector<std::int64_t> scratch(n);
     for (std::size_t z = begin; z < end; ++z)
       for (std::size_t y = 0; y < c[1]; ++y) {
-        if (!flags[y + ny * z]) continue;
+        const std::size_t r = y + ny * z;
+        if (!flags[r]) continue;
         std::int64_t* line = data + y * sy + z * sz;
-        if (!all_zero(line, n)) inverse_line(line, n, wav, scratch.data());
+        // The high half is looked at only up to the low half's first non-zero (the
+        // first index of either is what counts), so a dense row costs two tests.
+        const std::size_t lo = first_nonzero(line, h), hi = first_nonzero(line + h, std::min(m, lo));
+        if (lo == h && hi == m) {
+          flags[r] = 0;
+          if (spans) (*spans)[r] = RowSpan{};
+          continue;
+        }
+        const std::size_t first = std::min(lo, hi);
+        const std::size_t a = first >= 1 ? 2 * first - 2 : 0;
+        lift_line(line, n, wav, scratch.data(), a / 2);
+        // The inputs before a turn to zero: low ones from lo on; no high one, since
+        // a < h + first.
+        if (lo < a) std::fill(line + lo, line + std::min(h, a), 0);
+        place_line(scratch.data(), n, a / 2, line);
+        if (spans) (*spans)[r] = RowSpan{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(n)};
       }
   });
 }
 
 void inverse_3d_rows(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads, RowFlags& flags,
-                     const std::vector<RowList>* add) {
+                     const std::vector<RowList>* add, std::vector<RowSpan>* spans) {
   if (add)
     for (std::size_t r : (*add)[static_cast<std::size_t>(levels)]) flags[r] = 1;
   for (int l = levels - 1; l >= 0; --l) {
@@ -580,8 +633,11 @@ void inverse_3d_rows(std::int64_t* data, const Dims& dims, int levels, Wavelet w
       for (std::size_t r : (*add)[static_cast<std::size_t>(l)]) flags[r] = 1;
     inverse_axis_rows(data, dims, c, 2, w, threads, flags);
     inverse_axis_rows(data, dims, c, 1, w, threads, flags);
-    inverse_axis_x(data, dims, c, w, threads, flags);
+    inverse_axis_x(data, dims, c, w, threads, flags, l == 0 ? spans : nullptr);
   }
+  if (spans && levels == 0)
+    for (std::size_t r = 0; r < flags.size(); ++r)
+      (*spans)[r] = flags[r] ? RowSpan{0, static_cast<std::uint32_t>(dims[0])} : RowSpan{};
 }
 
 }  // namespace
@@ -600,14 +656,14 @@ void inverse_3d(std::vector<std::int64_t>& data, const Dims& dims, int levels, W
 
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads) {
   RowFlags all(dims[1] * dims[2], 1);
-  inverse_3d_rows(data, dims, levels, w, threads, all, nullptr);
+  inverse_3d_rows(data, dims, levels, w, threads, all, nullptr, nullptr);
 }
 
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
-                const std::vector<RowList>& nonzero_rows, std::vector<std::uint8_t>* row_flags) {
+                const std::vector<RowList>& nonzero_rows, std::vector<RowSpan>* row_spans) {
   RowFlags flags(dims[1] * dims[2], 0);
-  inverse_3d_rows(data, dims, levels, w, threads, flags, &nonzero_rows);
-  if (row_flags) *row_flags = std::move(flags);
+  if (row_spans) row_spans->assign(flags.size(), RowSpan{});
+  inverse_3d_rows(data, dims, levels, w, threads, flags, &nonzero_rows, row_spans);
 }
 
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads) {
