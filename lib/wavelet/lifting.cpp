@@ -390,8 +390,10 @@ namespace {
 // depends only on samples near half its index, so on the plume most of a line's outputs
 // are skipped this way. Every even row is settled (computed, zeroed or already zero)
 // before the odd rows read it.
-void inverse_rows(const std::int64_t* const* in, std::size_t w, std::size_t n, Wavelet wav, std::int64_t* dst,
-                  std::size_t stride, const std::uint8_t* in_flags, const std::uint8_t* out_flags) {
+template <typename Steps>
+__attribute__((always_inline)) inline void inverse_rows_with(const std::int64_t* const* in, std::size_t w, std::size_t n,
+                                                             Wavelet wav, std::int64_t* dst, std::size_t stride,
+                                                             const std::uint8_t* in_flags, const std::uint8_t* out_flags) {
   const std::size_t h = (n + 1) / 2, m = n / 2;
   auto s = [&](std::size_t i) { return in[i]; };
   auto d = [&](std::size_t i) { return in[h + i]; };
@@ -402,7 +404,7 @@ void inverse_rows(const std::int64_t* const* in, std::size_t w, std::size_t n, W
   if (wav == Wavelet::haar) {
     for (std::size_t i = 0; i < m; ++i) {
       if (out_flags[2 * i] | out_flags[2 * i + 1]) {
-        lift_haar(s(i), d(i), out(2 * i), out(2 * i + 1), w);
+        Steps::haar(s(i), d(i), out(2 * i), out(2 * i + 1), w);
       } else {
         settle_zero(2 * i);
         settle_zero(2 * i + 1);
@@ -423,7 +425,7 @@ void inverse_rows(const std::int64_t* const* in, std::size_t w, std::size_t n, W
     }
     const std::int64_t* left = d(i > 0 ? i - 1 : 0);
     const std::int64_t* right = d(i < m ? i : m - 1);
-    lift_even(s(i), left, right, out(2 * i), w);
+    Steps::even(s(i), left, right, out(2 * i), w);
   }
   for (std::size_t i = 0; i < m; ++i) {
     if (!out_flags[2 * i + 1]) {
@@ -432,8 +434,55 @@ void inverse_rows(const std::int64_t* const* in, std::size_t w, std::size_t n, W
     }
     const std::int64_t* e = out(2 * i);
     const std::int64_t* e2 = out(2 * i + 2 < n ? 2 * i + 2 : 2 * i);
-    lift_odd(d(i), e, e2, out(2 * i + 1), w);
+    Steps::odd(d(i), e, e2, out(2 * i + 1), w);
   }
+}
+
+// The row steps as types, so that inverse_rows is compiled once per instruction set with
+// its steps inlined: dispatching per row (a call, the CPU test, the scalar tail's test)
+// cost as much as the AVX2 loop on the plume's short runs of columns.
+struct ScalarSteps {
+  static void even(const std::int64_t* s, const std::int64_t* l, const std::int64_t* r, std::int64_t* e, std::size_t w) {
+    even_row(s, l, r, e, w);
+  }
+  static void odd(const std::int64_t* d, const std::int64_t* e, const std::int64_t* e2, std::int64_t* o, std::size_t w) {
+    odd_row(d, e, e2, o, w);
+  }
+  static void haar(const std::int64_t* s, const std::int64_t* d, std::int64_t* e, std::int64_t* o, std::size_t w) {
+    haar_row(s, d, e, o, w);
+  }
+};
+void inverse_rows_scalar(const std::int64_t* const* in, std::size_t w, std::size_t n, Wavelet wav, std::int64_t* dst,
+                         std::size_t stride, const std::uint8_t* in_flags, const std::uint8_t* out_flags) {
+  inverse_rows_with<ScalarSteps>(in, w, n, wav, dst, stride, in_flags, out_flags);
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+struct Avx2Steps {
+  __attribute__((target("avx2"))) static void even(const std::int64_t* s, const std::int64_t* l, const std::int64_t* r,
+                                                   std::int64_t* e, std::size_t w) {
+    even_row_avx2(s, l, r, e, w);
+  }
+  __attribute__((target("avx2"))) static void odd(const std::int64_t* d, const std::int64_t* e, const std::int64_t* e2,
+                                                  std::int64_t* o, std::size_t w) {
+    odd_row_avx2(d, e, e2, o, w);
+  }
+  __attribute__((target("avx2"))) static void haar(const std::int64_t* s, const std::int64_t* d, std::int64_t* e,
+                                                   std::int64_t* o, std::size_t w) {
+    haar_row_avx2(s, d, e, o, w);
+  }
+};
+__attribute__((target("avx2"))) void inverse_rows_avx2(const std::int64_t* const* in, std::size_t w, std::size_t n,
+                                                       Wavelet wav, std::int64_t* dst, std::size_t stride,
+                                                       const std::uint8_t* in_flags, const std::uint8_t* out_flags) {
+  inverse_rows_with<Avx2Steps>(in, w, n, wav, dst, stride, in_flags, out_flags);
+}
+#endif
+void inverse_rows(const std::int64_t* const* in, std::size_t w, std::size_t n, Wavelet wav, std::int64_t* dst,
+                  std::size_t stride, const std::uint8_t* in_flags, const std::uint8_t* out_flags) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (cpu_has_avx2()) return inverse_rows_avx2(in, w, n, wav, dst, stride, in_flags, out_flags);
+#endif
+  inverse_rows_scalar(in, w, n, wav, dst, stride, in_flags, out_flags);
 }
 
 // The inverse integer transform of one level along y or z: blocks of up to kRowBlock
