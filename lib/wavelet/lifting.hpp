@@ -70,9 +70,13 @@ using RowList = std::vector<std::size_t>;
 // every step (a sample depends only on samples near half its index), and lines and
 // planes of rows known to be zero -- zero in, zero out -- are skipped without being
 // looked at (docs/volwave.md §4: the empty space of a plume).
-// `row_flags`, when given, receives per row 0 where the result's row is known to be zero.
+// `row_spans`, when given, receives per row the columns [begin, end) outside which the
+// result's row is known to be zero (begin == end: all of it).
+struct RowSpan {
+  std::uint32_t begin = 0, end = 0;
+};
 void inverse_3d(std::int64_t* data, const Dims& dims, int levels, Wavelet w, int threads,
-                const std::vector<RowList>& nonzero_rows, std::vector<std::uint8_t>* row_flags = nullptr);
+                const std::vector<RowList>& nonzero_rows, std::vector<RowSpan>* row_spans = nullptr);
 void forward_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 void inverse_3d(std::vector<double>& data, const Dims& dims, int levels, int threads);
 

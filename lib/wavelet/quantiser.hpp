@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/volume.hpp"
+#include "wavelet/lifting.hpp"
 
 namespace fest::wavelet {
 
@@ -60,9 +61,9 @@ void dequantise(const std::vector<std::int64_t>& keys, const Quantiser& q, Scala
 // The same in place: `buffer` holds n int64 keys (their bytes) and is overwritten with
 // their values (the decoder's one buffer for coefficients and voxels).
 void dequantise_in_place(double* buffer, std::size_t n, const Quantiser& q, ScalarType type, int threads);
-// The same, row by row (rows of `row_length` keys): a row whose flag is 0 holds only
-// zero keys and is not read (the inverse transform's row flags, lifting.hpp).
-void dequantise_rows_in_place(double* buffer, std::size_t row_length, const std::vector<std::uint8_t>& row_flags,
+// The same, row by row (rows of `row_length` keys): outside its span a row holds only
+// zero keys, which are not read (the inverse transform's row spans, lifting.hpp).
+void dequantise_rows_in_place(double* buffer, std::size_t row_length, const std::vector<RowSpan>& row_spans,
                                const Quantiser& q, ScalarType type, int threads);
 
 }  // namespace fest::wavelet

@@ -162,10 +162,11 @@ void reconstruct_in_place(const VwHeader& h, std::vector<double>& buffer, const 
     return;
   }
   if (nonzero_rows && roi.empty()) {
-    // Rows known to be zero after the transform are not even read by the dequantiser.
-    std::vector<std::uint8_t> row_flags;
-    inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero_rows, &row_flags);
-    dequantise_rows_in_place(buffer.data(), h.dims[0], row_flags, h.quantiser, h.type, threads);
+    // The parts of rows known to be zero after the transform are not even read by the
+    // dequantiser.
+    std::vector<RowSpan> row_spans;
+    inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero_rows, &row_spans);
+    dequantise_rows_in_place(buffer.data(), h.dims[0], row_spans, h.quantiser, h.type, threads);
     return;
   }
   if (nonzero_rows) inverse_3d(coef, h.dims, h.levels, h.wavelet, threads, *nonzero_rows);

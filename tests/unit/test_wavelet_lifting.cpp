@@ -137,49 +137,55 @@ TEST(WaveletLifting, Inverse3dMatchesLineByLineDefinition) {
 // skips the rows it can prove zero; the result must be the line-by-line definition's,
 // also where the non-zeros are a few sparse blobs, single samples at band edges (the
 // lifting's reach at the boundaries) or negative (the AVX2 floor division), and the row
-// flags it returns must cover every non-zero row of the result.
+// spans it returns must cover every non-zero of the result.
 TEST(WaveletLifting, Inverse3dWithRowListsMatchesLineByLineDefinition) {
   std::mt19937_64 rng(29);
-  for (const Dims dims : {Dims{66, 66, 66}, Dims{300, 5, 7}, Dims{6, 9, 300}, Dims{17, 1, 12}, Dims{33, 17, 2}}) {
-    const std::size_t n = dims[0] * dims[1] * dims[2];
-    const int levels = 3;
-    for (int trial = 0; trial < 4; ++trial) {
-      std::vector<std::int64_t> x(n, 0);
-      // A few non-zero coefficients anywhere in the pyramid (trial 0: the corners and
-      // last samples of every axis too).
-      const std::size_t count = trial == 0 ? 3 : 1 + rng() % 40;
-      for (std::size_t k = 0; k < count; ++k) x[rng() % n] = static_cast<std::int64_t>(rng() % 2001) - 1000;
-      if (trial == 0) x[0] = -7, x[n - 1] = 5, x[dims[0] - 1] = -3;
-      // Rows listed per level as the decoder lists them: a non-zero's row goes to the
-      // level of its band, the coarsest level whose cube holds the coefficient.
-      std::vector<RowList> rows(static_cast<std::size_t>(levels) + 1);
-      for (std::size_t i = 0; i < n; ++i) {
-        if (x[i] == 0) continue;
-        const std::size_t px = i % dims[0], py = i / dims[0] % dims[1], pz = i / (dims[0] * dims[1]);
-        int level = 0;
-        for (int l = levels; l >= 0; --l) {
-          const Dims c = level_dims(dims, l);
-          if (px < c[0] && py < c[1] && pz < c[2]) {
-            level = l;
-            break;
+  for (const Dims dims : {Dims{66, 66, 66}, Dims{300, 5, 7}, Dims{6, 9, 300}, Dims{17, 1, 12}, Dims{33, 17, 2},
+                          Dims{1, 9, 12}, Dims{2, 3, 5}, Dims{41, 3, 3}})
+    for (const int levels : {0, 1, 3}) {
+      const std::size_t n = dims[0] * dims[1] * dims[2];
+      for (int trial = 0; trial < 4; ++trial) {
+        std::vector<std::int64_t> x(n, 0);
+        // A few non-zero coefficients anywhere in the pyramid (trial 0: the corners and
+        // last samples of every axis too).
+        const std::size_t count = trial == 0 ? 3 : trial == 3 ? n / 3 : 1 + rng() % 40;  // trial 3: dense
+        for (std::size_t k = 0; k < count; ++k) x[rng() % n] = static_cast<std::int64_t>(rng() % 2001) - 1000;
+        if (trial == 0) x[0] = -7, x[n - 1] = 5, x[dims[0] - 1] = -3;
+        // Rows listed per level as the decoder lists them: a non-zero's row goes to the
+        // level of its band, the coarsest level whose cube holds the coefficient.
+        std::vector<RowList> rows(static_cast<std::size_t>(levels) + 1);
+        for (std::size_t i = 0; i < n; ++i) {
+          if (x[i] == 0) continue;
+          const std::size_t px = i % dims[0], py = i / dims[0] % dims[1], pz = i / (dims[0] * dims[1]);
+          int level = 0;
+          for (int l = levels; l >= 0; --l) {
+            const Dims c = level_dims(dims, l);
+            if (px < c[0] && py < c[1] && pz < c[2]) {
+              level = l;
+              break;
+            }
           }
+          rows[static_cast<std::size_t>(level)].push_back(py + dims[1] * pz);
         }
-        rows[static_cast<std::size_t>(level)].push_back(py + dims[1] * pz);
-      }
-      for (Wavelet w : {Wavelet::haar, Wavelet::cdf53}) {
-        const std::vector<std::int64_t> want = inverse_by_lines(x, dims, levels, w);
-        for (int threads : {1, 2}) {
-          std::vector<std::int64_t> y = x;
-          std::vector<std::uint8_t> flags;
-          inverse_3d(y.data(), dims, levels, w, threads, rows, &flags);
-          EXPECT_EQ(want, y) << wavelet_name(w) << " " << dims[0] << "x" << dims[1] << "x" << dims[2] << " trial " << trial;
-          ASSERT_EQ(flags.size(), dims[1] * dims[2]);
-          for (std::size_t r = 0; r < flags.size(); ++r) {
-            if (flags[r]) continue;
-            for (std::size_t i = 0; i < dims[0]; ++i) ASSERT_EQ(y[i + dims[0] * r], 0) << "row " << r << " flagged zero";
+        for (Wavelet w : {Wavelet::haar, Wavelet::cdf53}) {
+          const std::vector<std::int64_t> want = inverse_by_lines(x, dims, levels, w);
+          for (int threads : {1, 2}) {
+            std::vector<std::int64_t> y = x;
+            std::vector<RowSpan> spans;
+            inverse_3d(y.data(), dims, levels, w, threads, rows, &spans);
+            EXPECT_EQ(want, y) << wavelet_name(w) << " " << dims[0] << "x" << dims[1] << "x" << dims[2] << " levels "
+                               << levels << " trial " << trial;
+            ASSERT_EQ(spans.size(), dims[1] * dims[2]);
+            for (std::size_t r = 0; r < spans.size(); ++r) {
+              ASSERT_LE(spans[r].begin, spans[r].end);
+              ASSERT_LE(spans[r].end, dims[0]);
+              for (std::size_t i = 0; i < dims[0]; ++i) {
+                if (i >= spans[r].begin && i < spans[r].end) continue;
+                ASSERT_EQ(y[i + dims[0] * r], 0) << "row " << r << " x " << i << " outside its span";
+              }
+            }
           }
         }
       }
     }
-  }
 }
