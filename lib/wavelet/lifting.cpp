@@ -678,8 +678,13 @@ void inverse_3d_rows(std::int64_t* data, const Dims& dims, int levels, Wavelet w
     for (std::size_t r : (*add)[static_cast<std::size_t>(levels)]) flags[r] = 1;
   for (int l = levels - 1; l >= 0; --l) {
     const Dims c = level_dims(dims, l);
+    // The passes clear the flags of rows they find zero inside the cube, but such a row
+    // goes on past c[0] with the finer levels' details: the rows holding those are
+    // flagged again here (all rows, when the caller does not know which).
     if (add)
       for (std::size_t r : (*add)[static_cast<std::size_t>(l)]) flags[r] = 1;
+    else
+      std::fill(flags.begin(), flags.end(), 1);
     inverse_axis_rows(data, dims, c, 2, w, threads, flags);
     inverse_axis_rows(data, dims, c, 1, w, threads, flags);
     inverse_axis_x(data, dims, c, w, threads, flags, l == 0 ? spans : nullptr);
