@@ -135,8 +135,8 @@ TEST(WaveletLifting, Inverse3dMatchesLineByLineDefinition) {
 
 // The same without row lists (the encoder's reconstructions), on pyramids whose rows are
 // zero in a coarse level's cube but not past it: a pass that finds a row zero inside the
-// cube must not skip the row's finer details (it did, 18:40 UTC 2026-11-29: the encoder
-// then stored thousands of voxels as outliers, the plume's file grew 1.8x).
+// cube must not skip the row's finer details (a first version of the sparse inverse did:
+// the encoder then stored thousands of voxels as outliers, the plume's file grew 1.8x).
 TEST(WaveletLifting, Inverse3dOfSparseRowsMatchesLineByLineDefinition) {
   std::mt19937_64 rng(31);
   for (const Dims dims : {Dims{66, 66, 66}, Dims{37, 30, 20}, Dims{65, 64, 63}})
