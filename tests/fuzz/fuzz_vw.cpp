@@ -2,10 +2,12 @@
 // at the door, so the target reseals the header and chunk hashes first and the fuzzer
 // explores the header parser, the chunk tables, the subband slabs of every kind
 // (adaptive range-coded slabs, static slabs with their rANS table descriptions and
-// streams, and -- format version 4 -- packed slabs: width tokens and packed bits) and
-// the outlier list behind them; start the corpus from real .vw files (volwave encode
-// output, e.g. tests/data/volwave/: smooth_e0.5.vw is version 4 with packed slabs, the
-// others version 3; smooth_lossless.vw and sparse_lossless.vw hold static slabs). A
+// streams, and -- format versions 4 and 5 -- packed slabs: width tokens and packed
+// bits, with tables of 2^5..2^11 entries in version 5) and the outlier list behind them;
+// start the corpus from real .vw files (volwave encode output, e.g. tests/data/volwave/:
+// smooth_e0.5.vw and sparse_e1e-3_v5.vw are version 5 with packed slabs at lower table
+// precisions, smooth_e0.5_v4.vw version 4, the others version 3; smooth_lossless.vw and
+// sparse_lossless.vw hold static slabs). A
 // clean fest::Error is the only allowed failure; a file that decodes must decode again
 // to the same voxels, and truncations of it must decode or fail cleanly too.
 #include <cstddef>
