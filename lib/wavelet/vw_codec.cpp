@@ -1,6 +1,7 @@
 #include "wavelet/vw_codec.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -234,7 +235,39 @@ std::vector<std::vector<Stream>> streams_by_chunk(const std::vector<Subband>& ba
   return out;
 }
 
+// The geometry a version-5 header leaves out when it has its default value (bits of the
+// byte that versions 3 and 4 keep reserved and zero): a 66^3 plume's header went from 404
+// bytes to ~180, a twentieth of its file at E = 1e-2 (docs/volwave.md §5).
+constexpr std::uint8_t kHasSpacing = 1, kHasOrigin = 2, kHasDirection = 4;
+constexpr std::array<double, 3> kUnitSpacing{1, 1, 1}, kZeroOrigin{0, 0, 0};
+constexpr std::array<double, 9> kIdentity{1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+template <std::size_t N>
+bool same_bits(const std::array<double, N>& a, const std::array<double, N>& b) noexcept {
+  return std::memcmp(a.data(), b.data(), sizeof a) == 0;  // -0.0 is stored, not defaulted
+}
+
+// A coefficient chunk's streams: their lengths (uint32 up to version 4, varints from
+// version 5), then their bytes, which must fill the chunk exactly.
+std::vector<std::string_view> split_chunk(std::string_view chunk, std::size_t count, int version, int k) {
+  Reader r(chunk, ".vw chunk");
+  std::vector<std::uint64_t> lengths(count);
+  if (version < 5 && chunk.size() < 4 * count)
+    throw bad_input(".vw chunk {}: {} bytes cannot list {} streams", k, chunk.size(), count);
+  for (auto& len : lengths) len = version >= 5 ? r.varint() : r.u32();
+  std::size_t at = r.pos();
+  std::vector<std::string_view> parts(count);
+  for (std::size_t s = 0; s < count; ++s) {
+    if (lengths[s] > chunk.size() - at) throw bad_input(".vw chunk {}: stream {} runs past the chunk", k, s);
+    parts[s] = chunk.substr(at, static_cast<std::size_t>(lengths[s]));
+    at += static_cast<std::size_t>(lengths[s]);
+  }
+  if (at != chunk.size()) throw bad_input(".vw chunk {}: {} unused bytes", k, chunk.size() - at);
+  return parts;
+}
+
 std::string write_header(const VwHeader& h, const std::vector<std::uint8_t>& roi) {
+  const bool compact = h.version >= 5;
   Writer w;
   w.out.append(kMagic, 7);
   w.u8(static_cast<std::uint8_t>(h.version));
@@ -245,25 +278,40 @@ std::string write_header(const VwHeader& h, const std::vector<std::uint8_t>& roi
   w.u8(static_cast<std::uint8_t>(h.quantiser.kind));
   w.u8(static_cast<std::uint8_t>(h.max_exponent));
   w.u8(roi.empty() ? 0 : 1);
-  w.u8(0);
-  for (auto d : h.dims) w.u64(d);
-  for (double v : h.spacing) w.f64(v);
-  for (double v : h.origin) w.f64(v);
-  for (double v : h.direction) w.f64(v);
+  const std::uint8_t geometry = !compact ? 0
+                                         : static_cast<std::uint8_t>((same_bits(h.spacing, kUnitSpacing) ? 0 : kHasSpacing) |
+                                                                     (same_bits(h.origin, kZeroOrigin) ? 0 : kHasOrigin) |
+                                                                     (same_bits(h.direction, kIdentity) ? 0 : kHasDirection));
+  w.u8(geometry);
+  for (auto d : h.dims) compact ? w.varint(d) : w.u64(d);
+  if (!compact || (geometry & kHasSpacing))
+    for (double v : h.spacing) w.f64(v);
+  if (!compact || (geometry & kHasOrigin))
+    for (double v : h.origin) w.f64(v);
+  if (!compact || (geometry & kHasDirection))
+    for (double v : h.direction) w.f64(v);
   w.f64(h.quantiser.step);
   w.f64(h.quantiser.offset);
   w.f64(h.bound);
-  w.f64(h.roi_step);
-  w.f64(h.roi_bound);
-  w.u32(static_cast<std::uint32_t>(h.chunks.size()));
+  if (!compact || !roi.empty()) {
+    w.f64(h.roi_step);
+    w.f64(h.roi_bound);
+  }
+  compact ? w.varint(h.chunks.size()) : w.u32(static_cast<std::uint32_t>(h.chunks.size()));
   for (const auto& c : h.chunks) {
-    w.u64(c.bytes);
-    w.u64(c.hash);
+    if (compact) {
+      w.varint(c.bytes);
+      w.u32(static_cast<std::uint32_t>(c.hash));
+    } else {
+      w.u64(c.bytes);
+      w.u64(c.hash);
+    }
     w.f64(c.max_error);
     w.f64(c.rmse);
   }
   if (!roi.empty()) write_runs(w, roi);
-  w.u64(checksum(w.out, h.version));
+  const std::uint64_t sum = checksum(w.out, h.version);
+  compact ? w.u32(static_cast<std::uint32_t>(sum)) : w.u64(sum);
   return w.out;
 }
 
@@ -283,7 +331,9 @@ VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vec
   const int mode = r.u8(), wavelet = r.u8(), levels = r.u8(), type = r.u8(), kind = r.u8();
   h.max_exponent = r.u8();
   const int has_roi = r.u8();
-  r.u8();
+  const bool compact = version >= 5;
+  const int geometry = r.u8();  // reserved (ignored) before version 5
+  if (compact && geometry > 7) throw bad_input(".vw header: bad geometry flags {}", geometry);
   if (mode > 2) throw bad_input(".vw header: unknown mode {}", mode);
   if (wavelet > 2) throw bad_input(".vw header: unknown wavelet {}", wavelet);
   if (levels > kMaxLevels) throw bad_input(".vw header: {} levels (at most {})", levels, kMaxLevels);
@@ -298,34 +348,42 @@ VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vec
   h.quantiser.kind = static_cast<KeyKind>(kind);
   std::uint64_t voxels = 1;
   for (auto& d : h.dims) {
-    const std::uint64_t v = r.u64();
+    const std::uint64_t v = compact ? r.varint() : r.u64();
     if (v == 0 || v > max_voxels) throw bad_input(".vw header: dimension {} out of range", v);
     d = static_cast<std::size_t>(v);
     voxels *= v;
     if (voxels > max_voxels) throw bad_input(".vw header: more than {} voxels", max_voxels);
   }
-  for (double& v : h.spacing) v = r.f64();
-  for (double& v : h.origin) v = r.f64();
-  for (double& v : h.direction) v = r.f64();
+  h.spacing = kUnitSpacing;
+  h.origin = kZeroOrigin;
+  h.direction = kIdentity;
+  if (!compact || (geometry & kHasSpacing))
+    for (double& v : h.spacing) v = r.f64();
+  if (!compact || (geometry & kHasOrigin))
+    for (double& v : h.origin) v = r.f64();
+  if (!compact || (geometry & kHasDirection))
+    for (double& v : h.direction) v = r.f64();
   h.quantiser.step = r.f64();
   h.quantiser.offset = r.f64();
   h.bound = r.f64();
-  h.roi_step = r.f64();
-  h.roi_bound = r.f64();
+  if (!compact || has_roi) {
+    h.roi_step = r.f64();
+    h.roi_bound = r.f64();
+  }
   if (!(h.quantiser.step > 0) || !std::isfinite(h.quantiser.step) || !std::isfinite(h.quantiser.offset))
     throw bad_input(".vw header: bad quantiser step {} / offset {}", h.quantiser.step, h.quantiser.offset);
   if (has_roi && (!(h.roi_step > 0) || !std::isfinite(h.roi_step)))
     throw bad_input(".vw header: bad region step {}", h.roi_step);
   if (h.wavelet == Wavelet::cdf97 && h.quantiser.kind != KeyKind::scaled)
     throw bad_input(".vw header: cdf97 with float bit keys");
-  const std::uint32_t nchunks = r.u32();
-  if (nchunks != static_cast<std::uint32_t>(levels) + 2)
+  const std::uint64_t nchunks = compact ? r.varint() : r.u32();
+  if (nchunks != static_cast<std::uint64_t>(levels) + 2)
     throw bad_input(".vw header: {} chunks for {} levels (expected {})", nchunks, levels, levels + 2);
   std::uint64_t declared = 0;
-  for (std::uint32_t i = 0; i < nchunks; ++i) {
+  for (std::uint64_t i = 0; i < nchunks; ++i) {
     ChunkInfo c;
-    c.bytes = r.u64();
-    c.hash = r.u64();
+    c.bytes = compact ? r.varint() : r.u64();
+    c.hash = compact ? r.u32() : r.u64();
     c.max_error = r.f64();
     c.rmse = r.f64();
     if (c.bytes > (1ull << 48)) throw bad_input(".vw header: chunk {} claims {} bytes", i, c.bytes);
@@ -339,7 +397,7 @@ VwHeader parse_header(std::string_view bytes, std::uint64_t max_voxels, std::vec
   std::vector<std::uint8_t> mask;
   if (has_roi) mask = read_runs(r, static_cast<std::size_t>(voxels));
   const std::size_t end = r.pos();
-  const std::uint64_t hash = r.u64();
+  const std::uint64_t hash = compact ? r.u32() : r.u64();
   if (check_hash && hash != checksum(bytes.substr(0, end), h.version)) throw bad_input(".vw header: checksum mismatch (damaged header)");
   h.header_bytes = r.pos();
   if (roi) *roi = std::move(mask);
@@ -526,7 +584,11 @@ std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats*
   std::size_t next = 0;
   for (const auto& c : by_chunk) {
     Writer w;
-    for (std::size_t k = 0; k < c.size(); ++k) w.u32(static_cast<std::uint32_t>(coded[next + k].size()));
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      // Version 5: varint lengths (most slabs of a small volume are under 128 bytes).
+      if (h.version >= 5) w.varint(coded[next + k].size());
+      else w.u32(static_cast<std::uint32_t>(coded[next + k].size()));
+    }
     for (std::size_t k = 0; k < c.size(); ++k) w.out += coded[next + k];
     next += c.size();
     chunks.push_back(std::move(w.out));
@@ -638,24 +700,22 @@ SlabCensus slab_census(std::string_view bytes) {
     if (bytes.size() - pos < n) break;
     const std::string_view chunk = bytes.substr(pos, n);
     const auto& streams = by_chunk[static_cast<std::size_t>(k)];
-    Reader r(chunk, ".vw chunk");
-    std::size_t at = 4 * streams.size();
-    for (const Stream& s : streams) {
-      const std::uint32_t len = r.u32();
-      if (len > chunk.size() - std::min(at, chunk.size())) throw bad_input(".vw chunk {}: a stream runs past the chunk", k);
-      const auto mode = len ? static_cast<std::uint8_t>(chunk[at]) : 0xFF;
+    const std::vector<std::string_view> parts = split_chunk(chunk, streams.size(), h.version, k);
+    for (std::size_t i = 0; i < streams.size(); ++i) {
+      const std::string_view part = parts[i];
+      const auto mode = part.empty() ? 0xFF : static_cast<std::uint8_t>(part[0]);
       if (mode <= 2) {
-        const Subband& b = *s.band;
+        const Subband& b = *streams[i].band;
+        const Slab& slab = streams[i].slab;
         census.slabs[mode] += 1;
-        census.bytes[mode] += len;
-        census.coefficients[mode] += (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (s.slab.z1 - s.slab.z0);
+        census.bytes[mode] += part.size();
+        census.coefficients[mode] += (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (slab.z1 - slab.z0);
         // A packed slab's variant byte names its precision (fest-vw(5)).
-        if (mode == 2 && len >= 2) {
-          const int bits = kRansBits - static_cast<std::uint8_t>(chunk[at + 1]) / 6;
+        if (mode == 2 && part.size() >= 2) {
+          const int bits = kRansBits - static_cast<std::uint8_t>(part[1]) / 6;
           if (bits >= kRansMinBits && bits <= kRansBits) census.packed_by_precision[static_cast<std::size_t>(bits - kRansMinBits)] += 1;
         }
       }
-      at += len;
     }
     pos += n;
   }
@@ -700,17 +760,7 @@ DecodeResult decode_vw(std::string_view bytes, int threads, int max_chunks, std:
     const std::string_view chunk = bytes.substr(pos, info.bytes);
     if (checksum(chunk, h.version) != info.hash) throw bad_input(".vw chunk {}: checksum mismatch (damaged data)", k);
     const auto& streams = by_chunk[static_cast<std::size_t>(k)];
-    Reader r(chunk, ".vw chunk");
-    std::vector<std::string_view> parts(streams.size());
-    std::size_t at = 4 * streams.size();
-    if (chunk.size() < at) throw bad_input(".vw chunk {}: {} bytes cannot list {} streams", k, chunk.size(), streams.size());
-    for (std::size_t s = 0; s < streams.size(); ++s) {
-      const std::uint32_t len = r.u32();
-      if (len > chunk.size() - at) throw bad_input(".vw chunk {}: stream {} runs past the chunk", k, s);
-      parts[s] = chunk.substr(at, len);
-      at += len;
-    }
-    if (at != chunk.size()) throw bad_input(".vw chunk {}: {} unused bytes", k, chunk.size() - at);
+    const std::vector<std::string_view> parts = split_chunk(chunk, streams.size(), h.version, k);
     std::vector<RowList> rows(streams.size());
     parallel_for(streams.size(), threads, [&](std::size_t s) {
       decode_slab(parts[s], coef, h.dims, *streams[s].band, streams[s].parent, streams[s].slab, h.max_exponent,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -405,4 +406,38 @@ TEST(WaveletCodec, ResealedMutationsFailCleanly) {
     }
   }
   EXPECT_GT(decoded, 0);
+}
+
+// Version 5 leaves out geometry at its default (unit spacing, zero origin, identity
+// direction) and stores anything else exactly, -0.0 and a rotated direction included;
+// the header shrinks by the doubles left out.
+TEST(WaveletCodec, HeaderGeometryDefaultsAndStoredValuesRoundTrip) {
+  Volume v = test_volume(ScalarType::f32);
+  EncodeOptions o;
+  o.bound = 1.0;
+  auto header_bytes = [](const std::string& bytes) { return read_vw_header(bytes).header_bytes; };
+  v.spacing = {1, 1, 1};
+  v.origin = {0, 0, 0};
+  v.direction = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const std::string plain = encode_vw(v, o);
+  const DecodeResult d0 = decode_vw(plain, 1);
+  EXPECT_EQ(d0.volume.spacing, v.spacing);
+  EXPECT_EQ(d0.volume.origin, v.origin);
+  EXPECT_EQ(d0.volume.direction, v.direction);
+  const std::vector<std::pair<std::string, std::function<void(Volume&)>>> changes = {
+      {"spacing", [](Volume& x) { x.spacing = {0.5, 0.7, 1.2}; }},
+      {"origin", [](Volume& x) { x.origin = {-3, 4, 5}; }},
+      {"origin -0", [](Volume& x) { x.origin = {-0.0, 0, 0}; }},
+      {"direction", [](Volume& x) { x.direction = {0, 1, 0, -1, 0, 0, 0, 0, 1}; }}};
+  for (const auto& [name, change] : changes) {
+    Volume w = v;
+    change(w);
+    const std::string bytes = encode_vw(w, o);
+    const DecodeResult d = decode_vw(bytes, 1);
+    EXPECT_EQ(0, std::memcmp(d.volume.spacing.data(), w.spacing.data(), sizeof w.spacing)) << name;
+    EXPECT_EQ(0, std::memcmp(d.volume.origin.data(), w.origin.data(), sizeof w.origin)) << name;
+    EXPECT_EQ(0, std::memcmp(d.volume.direction.data(), w.direction.data(), sizeof w.direction)) << name;
+    const std::size_t stored = name == "direction" ? 72 : 24;
+    EXPECT_EQ(header_bytes(bytes), header_bytes(plain) + stored) << name;
+  }
 }
