@@ -441,3 +441,33 @@ TEST(WaveletCodec, HeaderGeometryDefaultsAndStoredValuesRoundTrip) {
     EXPECT_EQ(header_bytes(bytes), header_bytes(plain) + stored) << name;
   }
 }
+
+// Without a stated level count, a volume that is zero on most of its rows (a plume in
+// empty space) is also coded with one level and the smaller file kept; a dense volume
+// keeps the default depth. Either way the bound holds.
+TEST(WaveletCodec, SparseVolumesMayTakeOneLevel) {
+  Volume sparse;
+  sparse.resize(48, 40, 36);
+  sparse.type = ScalarType::f32;
+  std::mt19937_64 rng(8);
+  std::normal_distribution<double> g(0.0, 0.05);
+  for (std::size_t z = 0; z < 36; ++z)
+    for (std::size_t y = 0; y < 40; ++y)
+      for (std::size_t x = 0; x < 48; ++x) {
+        const double r2 = std::pow(x - 20.0, 2) + std::pow(y - 18.0, 2) + std::pow(z - 10.0, 2);
+        if (r2 < 64) sparse.at(x, y, z) = static_cast<float>(std::exp(-r2 / 30.0) + g(rng));  // a blob; zero around
+      }
+  const Volume dense = test_volume(ScalarType::f32, 48, 40, 36);
+  for (double bound : {1e-3, 1e-2}) {
+    EncodeOptions o;
+    o.bound = bound;
+    const std::string chosen = encode_vw(sparse, o);
+    EncodeOptions deep = o;
+    deep.levels = default_levels(sparse.dims);
+    const std::string by_default = encode_vw(sparse, deep);
+    EXPECT_EQ(read_vw_header(chosen).levels, 1) << bound;
+    EXPECT_LE(chosen.size(), by_default.size()) << bound;
+    EXPECT_LE(max_abs(sparse, decode_vw(chosen, 1).volume), bound);
+    EXPECT_EQ(read_vw_header(encode_vw(dense, o)).levels, default_levels(dense.dims)) << bound;
+  }
+}

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
       },
       "speed (default), size, or a slack S: detail slabs are packed (fastest to decode) when that costs at most "
       "S more bytes than context coding (speed: S = 0.50; size: 0; < 0: never)");
-  e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8)")->check(fest::cli::range(0, 16));
+  e->add_option("--levels", enc.levels, "Decomposition levels (default: until no axis exceeds 8; sparse volumes may take 1)")->check(fest::cli::range(0, 16));
   e->add_option("--roi-box", enc.roi_box, "Region x0,y0,z0,x1,y1,z1 (voxel indices, inclusive) coded with --roi-error")
       ->delimiter(',')->expected(6)->allow_extra_args(false)->check(fest::cli::range(0, 2147483647));
   e->add_option("--roi-mask", enc.roi_mask, "Region as a volume: its non-zero voxels are coded with --roi-error");
