@@ -464,6 +464,22 @@ bool mostly_zero_rows(const Volume& volume, double bound, int threads) {
                         keys.begin() + static_cast<std::ptrdiff_t>((r + 1) * width), [](std::int64_t k) { return k == 0; });
   return 2 * zero >= rows;
 }
+
+// Codes `volume` with `levels` and with the default depth and keeps the smaller file (the
+// first on a tie); `split` is where the first encoding ends on the progress bar.
+std::string smaller_of_levels(const Volume& volume, const EncodeOptions& o, int levels, double split,
+                              EncodeStats* stats) {
+  EncodeOptions few = o, deep = o;
+  few.levels = levels;
+  deep.levels = default_levels(volume.dims);
+  few.progress = progress_part(o.progress, 0.0, split);
+  deep.progress = progress_part(o.progress, split, 1.0);
+  EncodeStats s_few, s_deep;
+  std::string a = encode_vw(volume, few, &s_few), b = encode_vw(volume, deep, &s_deep);
+  const bool first = a.size() <= b.size();
+  if (stats) *stats = first ? s_few : s_deep;
+  return first ? a : b;
+}
 }  // namespace
 
 std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats* stats) {
@@ -471,18 +487,8 @@ std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats*
   // thousand distinct floats) codes better with no transform at all (MED prediction on
   // the keys) than through a wavelet of bit patterns; smooth data the other way round.
   // Without a stated level count, both are tried and the smaller kept.
-  if (o.mode == Mode::lossless && o.levels < 0 && plan_lossless(volume).kind == KeyKind::float32_bits) {
-    EncodeOptions flat = o, deep = o;
-    flat.levels = 0;
-    deep.levels = default_levels(volume.dims);
-    flat.progress = progress_part(o.progress, 0.0, 0.4);  // no transform: the cheaper one
-    deep.progress = progress_part(o.progress, 0.4, 1.0);
-    EncodeStats s0, s1;
-    std::string a = encode_vw(volume, flat, &s0), b = encode_vw(volume, deep, &s1);
-    const bool first = a.size() <= b.size();
-    if (stats) *stats = first ? s0 : s1;
-    return first ? a : b;
-  }
+  if (o.mode == Mode::lossless && o.levels < 0 && plan_lossless(volume).kind == KeyKind::float32_bits)
+    return smaller_of_levels(volume, o, 0, 0.4, stats);  // no transform: the cheaper one
   // Sparse data under a bound: one level of the wavelet, the rest of the approximation
   // band left to the context coder's prediction, codes a smoke plume 12-18 % smaller
   // than the default depth and decodes it faster (its approximation band is mostly zero
@@ -491,18 +497,8 @@ std::string encode_vw(const Volume& volume, const EncodeOptions& o, EncodeStats*
   // without a stated level count, a volume whose keys are all zero on at least half of
   // its rows is also coded with one level, and the smaller file kept.
   if (o.mode == Mode::max_error && o.levels < 0 && wavelet_is_integer(o.wavelet) && default_levels(volume.dims) > 1 &&
-      mostly_zero_rows(volume, o.bound, std::max(1, o.threads))) {
-    EncodeOptions one = o, deep = o;
-    one.levels = 1;
-    deep.levels = default_levels(volume.dims);
-    one.progress = progress_part(o.progress, 0.0, 0.5);
-    deep.progress = progress_part(o.progress, 0.5, 1.0);
-    EncodeStats s1, sd;
-    std::string a = encode_vw(volume, one, &s1), b = encode_vw(volume, deep, &sd);
-    const bool first = a.size() <= b.size();
-    if (stats) *stats = first ? s1 : sd;
-    return first ? a : b;
-  }
+      mostly_zero_rows(volume, o.bound, std::max(1, o.threads)))
+    return smaller_of_levels(volume, o, 1, 0.5, stats);
   const std::size_t n = volume.size();
   if (n == 0 || volume.voxels.size() != n) throw bad_input("volume has {} voxels for dimensions {}x{}x{}", volume.voxels.size(),
                                                           volume.dims[0], volume.dims[1], volume.dims[2]);
