@@ -156,17 +156,18 @@ Quantiser plan_lossless(const Volume& volume) {
   return q;
 }
 
+std::int64_t key_of(const Quantiser& q, double v) noexcept {
+  return q.kind == KeyKind::float32_bits ? float_key(static_cast<float>(v))
+                                         : static_cast<std::int64_t>(std::llround((v - q.offset) / q.step));
+}
+
 std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int threads) {
   std::vector<std::int64_t> keys(volume.voxels.size());
   const std::size_t block = 1 << 16;
   const std::size_t n = keys.size();
   parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
     const std::size_t end = std::min(n, (b + 1) * block);
-    for (std::size_t i = b * block; i < end; ++i) {
-      const double v = volume.voxels[i];
-      keys[i] = q.kind == KeyKind::float32_bits ? float_key(static_cast<float>(v))
-                                                : static_cast<std::int64_t>(std::llround((v - q.offset) / q.step));
-    }
+    for (std::size_t i = b * block; i < end; ++i) keys[i] = key_of(q, volume.voxels[i]);
   });
   return keys;
 }

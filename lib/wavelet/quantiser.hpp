@@ -53,6 +53,8 @@ Quantiser plan_step(const Volume& volume, double step);
 // float32 bits; throws bad_input for float64 values that float32 cannot hold.
 Quantiser plan_lossless(const Volume& volume);
 
+// The key of one value.
+std::int64_t key_of(const Quantiser& q, double v) noexcept;
 // Keys of every voxel (x fastest), `threads` >= 1.
 std::vector<std::int64_t> quantise(const Volume& volume, const Quantiser& q, int threads);
 // Values from keys, already converted to `type`.

@@ -453,16 +453,21 @@ double search_step(double target, double first, const Eval& rmse_of, const Progr
 namespace {
 // Whether the keys of `volume` under the bound are all zero on at least half of its rows
 // (x lines): the empty space of a plume, not the noisy background of a CT head.
+// Row by row, without a copy of the keys (the encoder holds enough of those).
 bool mostly_zero_rows(const Volume& volume, double bound, int threads) {
   const std::size_t n = volume.size();
   if (n == 0 || volume.voxels.size() != n || !(bound > 0) || !std::isfinite(bound)) return false;  // refused later
-  const std::vector<std::int64_t> keys = quantise(volume, plan_max_error(volume, bound), threads);
+  const Quantiser q = plan_max_error(volume, bound);
   const std::size_t width = volume.dims[0], rows = n / width;
-  std::size_t zero = 0;
-  for (std::size_t r = 0; r < rows; ++r)
-    zero += std::all_of(keys.begin() + static_cast<std::ptrdiff_t>(r * width),
-                        keys.begin() + static_cast<std::ptrdiff_t>((r + 1) * width), [](std::int64_t k) { return k == 0; });
-  return 2 * zero >= rows;
+  std::vector<std::uint8_t> zero(rows, 0);
+  const std::size_t block = std::max<std::size_t>(1, (std::size_t{1} << 16) / width);  // rows a job
+  parallel_for((rows + block - 1) / block, threads, [&](std::size_t b) {
+    for (std::size_t r = b * block; r < std::min(rows, (b + 1) * block); ++r) {
+      const double* row = volume.voxels.data() + r * width;
+      zero[r] = std::all_of(row, row + width, [&](double v) { return key_of(q, v) == 0; });
+    }
+  });
+  return 2 * static_cast<std::size_t>(std::count(zero.begin(), zero.end(), 1)) >= rows;
 }
 
 // Codes `volume` with `levels` and with the default depth and keeps the smaller file (the
