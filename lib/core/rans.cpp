@@ -154,7 +154,7 @@ bool read_tables(BitReader& r, std::vector<RansTable>& tables, const std::vector
   return !r.overrun();
 }
 
-void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out, int /*bits: the frequencies say it*/) {
+void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out) {
   for (int s = 0; s < alphabet; ++s) {
     const std::uint32_t f = t.freq[static_cast<std::size_t>(s)], c = t.cum[static_cast<std::size_t>(s)];
     const RansEntry base = static_cast<RansEntry>(s) | (f << 7);

@@ -93,10 +93,10 @@ class RansEncoder {
   std::vector<std::uint16_t> words_;
 };
 
-// A decoding table: 2^bits entries per context, entry = symbol | freq << 7 |
-// (slot - cum) << 19, so one load gives all a step needs.
+// A decoding table: 2^bits entries per context (as many as the frequencies sum to),
+// entry = symbol | freq << 7 | (slot - cum) << 19, so one load gives all a step needs.
 using RansEntry = std::uint32_t;
-void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out, int bits = kRansBits);
+void fill_decode_table(const RansTable& t, int alphabet, RansEntry* out);
 // The table of a context that has no symbols: symbol 0 with frequency 2^bits, a step
 // that leaves the state as it is (a damaged stream that reaches such a context decodes
 // zeros and fails the final check instead of reading an unfilled table).

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 #include "core/cpu_features.hpp"
@@ -610,16 +609,19 @@ void decode_packed_slab(std::string_view bytes, std::int64_t* data, const Dims& 
   // The width and mask tables as lookup tables (the ones that have symbols: a table
   // without any has the implied symbol's frequency 0).
   const auto& alpha = alphabets();
+  auto has_symbols = [&](int t) {
+    const RansTable& table = tables[static_cast<std::size_t>(t)];
+    return table.freq[static_cast<std::size_t>(table.implied)] != 0;
+  };
   std::size_t used = 0;
-  for (int t = 0; t < kRowTable0; ++t) used += tables[static_cast<std::size_t>(t)].freq[static_cast<std::size_t>(tables[static_cast<std::size_t>(t)].implied)] != 0;
+  for (int t = 0; t < kRowTable0; ++t) used += has_symbols(t);
   grow(scratch.storage, std::max<std::size_t>(used, 1) * entries);
   std::size_t next = 0;
   for (int t = 0; t < kRowTable0; ++t) {
-    const RansTable& table = tables[static_cast<std::size_t>(t)];
     const RansEntry* e = identity_decode_table(bits);
-    if (table.freq[static_cast<std::size_t>(table.implied)] != 0) {
+    if (has_symbols(t)) {
       RansEntry* out = scratch.storage.data() + next * entries;
-      fill_decode_table(tables[static_cast<std::size_t>(t)], alpha[static_cast<std::size_t>(t)], out, bits);
+      fill_decode_table(tables[static_cast<std::size_t>(t)], alpha[static_cast<std::size_t>(t)], out);
       e = out;
       ++next;
     }
