@@ -70,6 +70,17 @@ double best_of(int repeat, const std::function<void()>& f, bool wall = false) {
   return best;
 }
 
+// "0.5,1,4" -> {0.5, 1, 4}.
+std::vector<double> number_list(const std::string& s) {
+  std::vector<double> out;
+  for (std::size_t p = 0; p < s.size();) {
+    const std::size_t q = s.find(',', p);
+    out.push_back(std::stod(s.substr(p, q - p)));
+    p = q == std::string::npos ? s.size() : q + 1;
+  }
+  return out;
+}
+
 double max_abs(const std::vector<double>& a, const std::vector<double>& b) {
   double m = 0;
   for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
@@ -112,21 +123,9 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if ((a == "--bounds" || a == "--range-bounds") && i + 1 < argc) {
       of_range = a == "--range-bounds";
-      bounds.clear();
-      std::string s = argv[++i];
-      for (std::size_t p = 0; p < s.size();) {
-        const std::size_t q = s.find(',', p);
-        bounds.push_back(std::stod(s.substr(p, q - p)));
-        p = q == std::string::npos ? s.size() : q + 1;
-      }
+      bounds = number_list(argv[++i]);
     } else if (a == "--slack" && i + 1 < argc) {
-      slacks.clear();
-      std::string s = argv[++i];
-      for (std::size_t p = 0; p < s.size();) {
-        const std::size_t q = s.find(',', p);
-        slacks.push_back(std::stod(s.substr(p, q - p)));
-        p = q == std::string::npos ? s.size() : q + 1;
-      }
+      slacks = number_list(argv[++i]);
     } else if (a == "--repeat" && i + 1 < argc) {
       repeat = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--frame" && i + 1 < argc) {

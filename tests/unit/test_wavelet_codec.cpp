@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -39,6 +40,24 @@ Volume test_volume(ScalarType type, std::size_t nx = 23, std::size_t ny = 17, st
         v.at(x, y, z) = val;
       }
   return v;
+}
+
+// Keys the AVX2 dequantisers must send the scalar way or treat with care: around +-2^51
+// (where the exact conversion through the 2^52 + 2^51 bias stops) and far past it.
+constexpr std::int64_t kEdgeKey = std::int64_t{1} << 51;
+constexpr std::int64_t kSpecialKeys[] = {0, 1, -1, kEdgeKey - 1, -kEdgeKey + 1, kEdgeKey, -kEdgeKey, kEdgeKey + 1,
+                                         -kEdgeKey - 1, std::numeric_limits<std::int64_t>::max() / 4,
+                                         -(std::int64_t{1} << 60)};
+
+// The values of `keys` by dequantise and by dequantise_in_place (first and second).
+std::pair<std::vector<double>, std::vector<double>> dequantise_both_ways(const std::vector<std::int64_t>& keys,
+                                                                         const Quantiser& q, ScalarType type) {
+  std::vector<double> got;
+  dequantise(keys, q, type, got, 1);
+  std::vector<double> in_place(keys.size());
+  if (!keys.empty()) std::memcpy(in_place.data(), keys.data(), 8 * keys.size());  // data() may be null when empty
+  dequantise_in_place(in_place.data(), keys.size(), q, type, 1);
+  return {got, in_place};
 }
 
 double max_abs(const Volume& a, const Volume& b) {
@@ -314,9 +333,6 @@ TEST(WaveletCodec, DequantiserAvx2MatchesScalar) {
   // past +-2^51, where the AVX2 conversion does not hold and its lanes go the scalar way;
   // lengths leave tails of 0-3 keys; in place and not.
   std::mt19937_64 rng(11);
-  const std::int64_t edge = std::int64_t{1} << 51;
-  const std::int64_t specials[] = {0, 1, -1, edge - 1, -edge + 1, edge, -edge, edge + 1, -edge - 1,
-                                   std::numeric_limits<std::int64_t>::max() / 4, -(std::int64_t{1} << 60)};
   for (ScalarType type : {ScalarType::u8, ScalarType::i16, ScalarType::u16, ScalarType::i32})
     for (double step : {1.0, 2.0, 7.0, 1e6})
       for (double offset : {0.0, -0.0, -3.0, 129.0, -40000.0})
@@ -326,13 +342,9 @@ TEST(WaveletCodec, DequantiserAvx2MatchesScalar) {
           q.offset = offset;
           std::vector<std::int64_t> keys(n);
           for (std::size_t i = 0; i < n; ++i)
-            keys[i] = i % 5 == 4 ? specials[rng() % std::size(specials)]
+            keys[i] = i % 5 == 4 ? kSpecialKeys[rng() % std::size(kSpecialKeys)]
                                  : static_cast<std::int64_t>(rng() % 200001) - 100000;
-          std::vector<double> got;
-          dequantise(keys, q, type, got, 1);
-          std::vector<double> in_place(n);
-          if (n > 0) std::memcpy(in_place.data(), keys.data(), 8 * n);  // data() may be null when empty
-          dequantise_in_place(in_place.data(), n, q, type, 1);
+          const auto [got, in_place] = dequantise_both_ways(keys, q, type);
           ASSERT_EQ(got.size(), n);
           const double lo = stored_as(-1e300, type), hi = stored_as(1e300, type);
           for (std::size_t i = 0; i < n; ++i) {
@@ -350,9 +362,6 @@ TEST(WaveletCodec, DequantiserAvx2MatchesScalarFloat32) {
   // lie just below the overflow threshold, zeros, keys past +-2^51 (the scalar way), and
   // tails of 0-3 keys, in place and not.
   std::mt19937_64 rng(13);
-  const std::int64_t edge = std::int64_t{1} << 51;
-  const std::int64_t specials[] = {0, 1, -1, edge - 1, -edge + 1, edge, -edge, edge + 1, -edge - 1,
-                                   std::numeric_limits<std::int64_t>::max() / 4, -(std::int64_t{1} << 60)};
   const double fmax = static_cast<double>(std::numeric_limits<float>::max());
   for (double step : {2e-3, 0.1, 1.0 / 3.0, 1e20, fmax / 1000.0, fmax * (1 + 0.5e-7) / 1000.0})
     for (double offset : {0.0, -0.0, 0.37, -1e5, fmax})
@@ -362,14 +371,10 @@ TEST(WaveletCodec, DequantiserAvx2MatchesScalarFloat32) {
         q.offset = offset;
         std::vector<std::int64_t> keys(n);
         for (std::size_t i = 0; i < n; ++i)
-          keys[i] = i % 5 == 4 ? specials[rng() % std::size(specials)]
+          keys[i] = i % 5 == 4 ? kSpecialKeys[rng() % std::size(kSpecialKeys)]
                   : i % 5 == 3 ? static_cast<std::int64_t>(rng() % 2001) - 1000 + (rng() % 2 ? 1000 : -1000)
                                : static_cast<std::int64_t>(rng() % 200001) - 100000;
-        std::vector<double> got;
-        dequantise(keys, q, ScalarType::f32, got, 1);
-        std::vector<double> in_place(n);
-        if (n > 0) std::memcpy(in_place.data(), keys.data(), 8 * n);  // data() may be null when empty
-        dequantise_in_place(in_place.data(), n, q, ScalarType::f32, 1);
+        const auto [got, in_place] = dequantise_both_ways(keys, q, ScalarType::f32);
         ASSERT_EQ(got.size(), n);
         for (std::size_t i = 0; i < n; ++i) {
           const double want = stored_as(key_value(q, keys[i]), ScalarType::f32);
